@@ -1,0 +1,19 @@
+//! creepbench: a harness that validates and benchmarks wheel–rail rolling-contact models.
+//!
+//! The data flow is one straight path, one module per stage:
+//! [`scene`] (file, validated) → [`problem`] (resolved: Hertz, Kalker, grid, samples) →
+//! [`solvers`] (UBA, FASTSIM, CONTACT-style, external) → [`history`] → [`metrics`] →
+//! [`harness`] (reference and golden comparison, report). [`physics`] is shared by all solvers.
+
+pub mod error;
+pub mod harness;
+pub mod history;
+pub mod metrics;
+pub mod output;
+pub mod physics;
+pub mod pipeline;
+pub mod problem;
+pub mod scene;
+pub mod solvers;
+
+pub use error::{Error, InputError};

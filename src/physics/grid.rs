@@ -1,0 +1,79 @@
+//! The rectangular grid over the ellipse's bounding box (thesis App. B, Eq. B.1–B.2).
+//!
+//! Element (i, j), i = 0..mx along x (rolling direction), j = 0..my along y, flat index
+//! `k = j*mx + i`, centre `x_i = −a + dx/2 + i dx`, `y_j = −b + dy/2 + j dy`. Material enters at
+//! the leading edge x = −a and moves in +x (the thesis's and the UBA's orientation).
+
+/// A grid of `mx × my` piecewise-constant elements covering `[−a, a] × [−b, b]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Grid {
+    pub mx: usize,
+    pub my: usize,
+    pub a_mm: f64,
+    pub b_mm: f64,
+    pub dx_mm: f64,
+    pub dy_mm: f64,
+    /// Element centres along x [mm], `mx` values.
+    pub x_mm: Vec<f64>,
+    /// Element centres along y [mm], `my` values.
+    pub y_mm: Vec<f64>,
+}
+
+impl Grid {
+    /// The grid of thesis App. B: `dx = 2a/mx`, `dy = 2b/my`, centres at `−a + dx/2 + k dx`.
+    pub fn new(mx: usize, my: usize, a_mm: f64, b_mm: f64) -> Self {
+        let dx_mm = 2.0 * a_mm / mx as f64;
+        let dy_mm = 2.0 * b_mm / my as f64;
+        let x_mm = (0..mx).map(|i| -a_mm + dx_mm * (i as f64 + 0.5)).collect();
+        let y_mm = (0..my).map(|j| -b_mm + dy_mm * (j as f64 + 0.5)).collect();
+        Self {
+            mx,
+            my,
+            a_mm,
+            b_mm,
+            dx_mm,
+            dy_mm,
+            x_mm,
+            y_mm,
+        }
+    }
+
+    /// Number of elements.
+    pub fn len(&self) -> usize {
+        self.mx * self.my
+    }
+
+    /// Always false for a valid grid (mx, my ≥ 1).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Element area [mm²].
+    pub fn element_area_mm2(&self) -> f64 {
+        self.dx_mm * self.dy_mm
+    }
+
+    /// Flat index of element (i, j).
+    #[inline]
+    pub fn index(&self, i: usize, j: usize) -> usize {
+        j * self.mx + i
+    }
+
+    /// `1 − (x/a)² − (y/b)²` at the centre of element (i, j) for an ellipse with semi-axes
+    /// `a_mm`, `b_mm` (may differ from the grid's when the load varies); > 0 inside.
+    #[inline]
+    pub fn ellipse_level(&self, i: usize, j: usize, a_mm: f64, b_mm: f64) -> f64 {
+        let (x, y) = (self.x_mm[i] / a_mm, self.y_mm[j] / b_mm);
+        1.0 - x * x - y * y
+    }
+
+    /// Half-length of the ellipse chord at row j: `a √(1 − (y_j/b)²)` [mm], 0 outside.
+    pub fn chord_half_length_mm(&self, j: usize, a_mm: f64, b_mm: f64) -> f64 {
+        let t = 1.0 - (self.y_mm[j] / b_mm).powi(2);
+        if t > 0.0 {
+            a_mm * t.sqrt()
+        } else {
+            0.0
+        }
+    }
+}

@@ -1,0 +1,213 @@
+//! Hertz's normal contact (thesis ch. 2.2): semi-axes and peak pressure from the radii, and the
+//! undeformed distance that yields prescribed semi-axes.
+
+use super::material::Material;
+use ellip::{ellipke, elliprd};
+use std::f64::consts::PI;
+
+/// Principal radii of wheel and rail [mm] (thesis Fig. 2.4; the rail is straight along x).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Radii {
+    /// Wheel rolling radius R_wx.
+    pub r_wx_mm: f64,
+    /// Wheel transverse radius R_wy.
+    pub r_wy_mm: f64,
+    /// Rail transverse radius R_ry.
+    pub r_ry_mm: f64,
+}
+
+/// A Hertzian contact ellipse under a load.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct HertzContact {
+    /// Semi-axis along x, the rolling direction [mm].
+    pub a_mm: f64,
+    /// Semi-axis along y [mm].
+    pub b_mm: f64,
+    /// Normal load [N].
+    pub fn_n: f64,
+}
+
+/// Failure of the Hertz solve (only for inputs the scene validation lets through by mistake).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("Hertz: {0}")]
+pub struct HertzError(pub String);
+
+impl HertzContact {
+    /// Peak of the ellipsoidal (Hertz) pressure `p0 = 3 FN / (2 π a b)` [MPa] (thesis Eq. 2.17).
+    pub fn p0_mpa(&self) -> f64 {
+        1.5 * self.fn_n / (PI * self.a_mm * self.b_mm)
+    }
+
+    /// The same ellipse at another load: both semi-axes scale with `(FN'/FN)^(1/3)` (Hertz).
+    pub fn at_load(&self, fn_n: f64) -> HertzContact {
+        let s = (fn_n / self.fn_n).cbrt();
+        HertzContact {
+            a_mm: self.a_mm * s,
+            b_mm: self.b_mm * s,
+            fn_n,
+        }
+    }
+
+    /// Semi-axes from the radii, the load and the material (thesis Eq. 2.13–2.19): the ratio
+    /// `B/A = ((a/b)² E(e) − K(e)) / (K(e) − E(e))` fixes the eccentricity, Eq. 2.13 with
+    /// `A = M/(π E*)` the size. K and E are the complete elliptic integrals of parameter `m = e²`.
+    pub fn from_radii(radii: &Radii, fn_n: f64, material: &Material) -> Result<Self, HertzError> {
+        let curv_x = 0.5 / radii.r_wx_mm; // A (rail straight: 1/R_rx = 0)
+        let curv_y = 0.5 * (1.0 / radii.r_wy_mm + 1.0 / radii.r_ry_mm); // B
+        if !(curv_x > 0.0 && curv_y > 0.0) || !fn_n.is_finite() || fn_n <= 0.0 {
+            return Err(HertzError(format!(
+                "curvatures A = {curv_x} /mm and B = {curv_y} /mm must be positive (convex contact)"
+            )));
+        }
+        let e_star = material.e_star_mpa();
+        // Solve with the long axis along the direction of the smaller curvature, then map back.
+        let (small, large) = if curv_y >= curv_x {
+            (curv_x, curv_y)
+        } else {
+            (curv_y, curv_x)
+        };
+        let m = solve_eccentricity(large / small)?;
+        let (k_int, e_int) = complete_ke_over_m(m);
+        // Eq. 2.13: A = p0 b (K − E) / (E* e² a²) with p0 = 3FN/(2πab)  ⇒  a³ = 3FN (K−E)/(2π E* e² A).
+        let long = (3.0 * fn_n * (k_int - e_int) / (2.0 * PI * e_star * small)).cbrt();
+        let short = long * (1.0 - m).sqrt();
+        let (a_mm, b_mm) = if curv_y >= curv_x {
+            (long, short)
+        } else {
+            (short, long)
+        };
+        Ok(HertzContact { a_mm, b_mm, fn_n })
+    }
+
+    /// Curvatures (A, B) [1/mm] of the undeformed distance `h = A x² + B y²` for which Hertz's
+    /// theory gives exactly this ellipse under this load (inverse of Eq. 2.13–2.14, written with
+    /// Carlson's R_D so that a = b is regular): `A = FN R_D(0, b², a²)/(2π E*)`, B likewise.
+    pub fn undeformed_curvatures(&self, material: &Material) -> (f64, f64) {
+        let e_star = material.e_star_mpa();
+        let (a2, b2) = (self.a_mm * self.a_mm, self.b_mm * self.b_mm);
+        let rd = |x: f64, y: f64, z: f64| elliprd(x, y, z).unwrap_or(f64::NAN);
+        let c = self.fn_n / (2.0 * PI * e_star);
+        (c * rd(0.0, b2, a2), c * rd(0.0, a2, b2))
+    }
+}
+
+/// `((K − E)/m, ((1/(1−m)) E − K)/m)` for parameter m = e² ∈ [0, 1): the two brackets of
+/// Eq. 2.13–2.14 divided by e². For small m the Legendre forms cancel, so there the exact
+/// identities `(K−E)/m = R_D(0, 1−m, 1)/3` and `(E/(1−m) − K)/m = R_D(0, 1, 1−m)/3` are used.
+fn complete_ke_over_m(m: f64) -> (f64, f64) {
+    if m < 1e-3 {
+        let rd = |y: f64, z: f64| elliprd(0.0, y, z).unwrap_or(f64::NAN) / 3.0;
+        (rd(1.0 - m, 1.0), rd(1.0, 1.0 - m))
+    } else {
+        let (k, e) = ellipke(m).unwrap_or((f64::NAN, f64::NAN));
+        ((k - e) / m, (e / (1.0 - m) - k) / m)
+    }
+}
+
+/// Eq. 2.19: find m = e² with `((a/b)² E − K)/(K − E) = ratio` (ratio ≥ 1), by bisection.
+fn solve_eccentricity(ratio: f64) -> Result<f64, HertzError> {
+    if !ratio.is_finite() || ratio < 1.0 {
+        return Err(HertzError(format!(
+            "curvature ratio {ratio} must be finite and >= 1"
+        )));
+    }
+    let f = |m: f64| {
+        let (ke, ek) = complete_ke_over_m(m);
+        ek / ke - ratio
+    };
+    let (mut lo, mut hi) = (0.0_f64, 1.0 - 1e-15);
+    if f(hi) < 0.0 {
+        return Err(HertzError(format!(
+            "curvature ratio {ratio} is beyond b/a = 3e-8"
+        )));
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if f(mid) > 0.0 {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+        if hi - lo < 1e-16 {
+            break;
+        }
+    }
+    Ok(0.5 * (lo + hi))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn thesis() -> (Radii, Material) {
+        (
+            Radii {
+                r_wx_mm: 575.0,
+                r_wy_mm: 500.0,
+                r_ry_mm: 300.0,
+            },
+            Material::from_e(210000.0, 0.28),
+        )
+    }
+
+    /// Thesis 4.1.1: a = 8.56, b = 4.08 mm (rounded); the exact two-body solution is 8.556 / 4.070.
+    #[test]
+    fn thesis_ellipse_from_radii() {
+        let (r, mat) = thesis();
+        let h = HertzContact::from_radii(&r, 100_000.0, &mat).unwrap();
+        assert!((h.a_mm / 8.556 - 1.0).abs() < 0.003, "a = {}", h.a_mm);
+        assert!((h.b_mm / 4.070 - 1.0).abs() < 0.003, "b = {}", h.b_mm);
+    }
+
+    /// The curvatures that give an ellipse, fed back through Eq. 2.19 and 2.13, give it again.
+    #[test]
+    fn curvatures_round_trip() {
+        let mat = Material::from_g(82000.0, 0.28);
+        for (a, b) in [(8.56, 4.08), (5.888, 5.888), (3.0, 9.0), (10.0, 0.4)] {
+            let h = HertzContact {
+                a_mm: a,
+                b_mm: b,
+                fn_n: 1e5,
+            };
+            let (ca, cb) = h.undeformed_curvatures(&mat);
+            // A = 1/(2 R_wx), B = (1/R_wy + 1/R_ry)/2 with R_ry → ∞.
+            let r = Radii {
+                r_wx_mm: 0.5 / ca,
+                r_wy_mm: 0.5 / cb,
+                r_ry_mm: f64::INFINITY,
+            };
+            let back = HertzContact::from_radii(&r, 1e5, &mat).unwrap();
+            assert!((back.a_mm / a - 1.0).abs() < 1e-9, "{a} {b}: {back:?}");
+            assert!((back.b_mm / b - 1.0).abs() < 1e-9, "{a} {b}: {back:?}");
+        }
+    }
+
+    /// Circle: a³ = 3 FN R / (4 E*) with R = 1/(2A) (Johnson 1985, Eq. 4.22).
+    #[test]
+    fn circle_limit() {
+        let mat = Material::from_g(82000.0, 0.28);
+        let r = Radii {
+            r_wx_mm: 400.0,
+            r_wy_mm: 400.0,
+            r_ry_mm: f64::INFINITY,
+        };
+        let h = HertzContact::from_radii(&r, 1e5, &mat).unwrap();
+        let a = (3.0 * 1e5 * 400.0 / (4.0 * mat.e_star_mpa())).cbrt();
+        assert!(
+            (h.a_mm / a - 1.0).abs() < 1e-9 && (h.b_mm / a - 1.0).abs() < 1e-9,
+            "{h:?} vs {a}"
+        );
+    }
+
+    /// The small-m identities agree with the Legendre forms where both are accurate.
+    #[test]
+    fn identities_match_legendre() {
+        for m in [2e-3, 1e-2, 0.3] {
+            let (k, e) = ellipke(m).unwrap();
+            let rd1 = elliprd(0.0, 1.0 - m, 1.0).unwrap() / 3.0;
+            let rd2 = elliprd(0.0, 1.0, 1.0 - m).unwrap() / 3.0;
+            assert!(((k - e) / m / rd1 - 1.0).abs() < 1e-9);
+            assert!(((e / (1.0 - m) - k) / m / rd2 - 1.0).abs() < 1e-9);
+        }
+    }
+}

@@ -1,0 +1,239 @@
+//! Kalker's creepage coefficients c11, c22, c23 and the flexibilities of the simplified theory.
+//!
+//! Sources: thesis App. A (Kalker's Table A1, Kalker 1990 p. 125) and the polynomial fit Eq. 2.36;
+//! flexibilities Eq. 2.35 (Kalker) or Eq. 3.5 (the thesis's own, kept as an option).
+
+use super::material::Material;
+use std::f64::consts::PI;
+
+/// Where c11, c22, c23 come from (`[model] coefficients`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum CoefficientSource {
+    /// Table A1, quadratic in ν through ν = 0, 0.25, 0.5 and linear in the axis ratio.
+    Table,
+    /// The polynomial fit Eq. 2.36 (made for ν = 0.27, valid for 1/25 ≤ b/a ≤ 25).
+    Fit,
+}
+
+/// Which flexibilities L1, L2, L3 the simplified models use (`[model] flexibility`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum FlexibilityModel {
+    /// Kalker's simplified theory, Eq. 2.35: `L1 = 8a/(3 c11 G)`, `L2 = 8a/(3 c22 G)`,
+    /// `L3 = π a √(a/b) / (4 c23 G)`.
+    Kalker,
+    /// Thesis Eq. 3.5: `L1 = L2 = 2b(1+ν)/E`, `L3 = b(1+ν)(1−2ν)/((1−ν)E)`. Not Kalker's.
+    Thesis,
+}
+
+/// Kalker's creepage coefficients [-].
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Coefficients {
+    pub c11: f64,
+    pub c22: f64,
+    pub c23: f64,
+}
+
+/// Flexibilities of the brush [mm³/N] (τ = u / L).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Flexibilities {
+    pub l1_mm3_n: f64,
+    pub l2_mm3_n: f64,
+    pub l3_mm3_n: f64,
+}
+
+/// Axis-ratio rows of Table A1 as one monotone parameter s: s = a/b for a ≤ b (upper half,
+/// s = 0.1 … 0.9) and s = 2 − b/a for a ≥ b (lower half, s = 1.0 … 1.9).
+/// Each row: c11, c22, c23 at ν = 0, 0.25, 0.5.
+#[rustfmt::skip]
+const TABLE_A1: [[[f64; 3]; 3]; 19] = [
+    [[2.51, 3.31, 4.85], [2.51, 2.52, 2.53], [0.334, 0.473, 0.731]], // a/b = 0.1
+    [[2.59, 3.37, 4.81], [2.59, 2.63, 2.66], [0.483, 0.603, 0.809]],
+    [[2.68, 3.44, 4.80], [2.68, 2.75, 2.81], [0.607, 0.715, 0.889]],
+    [[2.78, 3.53, 4.82], [2.78, 2.88, 2.98], [0.720, 0.823, 0.977]],
+    [[2.88, 3.62, 4.83], [2.88, 3.01, 3.14], [0.827, 0.929, 1.07]],
+    [[2.98, 3.72, 4.91], [2.98, 3.14, 3.31], [0.930, 1.03, 1.18]],
+    [[3.09, 3.81, 4.97], [3.09, 3.28, 3.48], [1.03, 1.14, 1.29]],
+    [[3.19, 3.91, 5.05], [3.19, 3.41, 3.65], [1.13, 1.25, 1.40]],
+    [[3.29, 4.01, 5.12], [3.29, 3.54, 3.82], [1.23, 1.36, 1.51]],    // a/b = 0.9
+    [[3.40, 4.12, 5.20], [3.40, 3.67, 3.98], [1.33, 1.47, 1.63]],    // a = b
+    [[3.51, 4.22, 5.30], [3.51, 3.81, 4.16], [1.44, 1.59, 1.77]],    // b/a = 0.9
+    [[3.65, 4.36, 5.42], [3.65, 3.99, 4.39], [1.58, 1.75, 1.94]],
+    [[3.82, 4.54, 5.58], [3.82, 4.21, 4.67], [1.76, 1.95, 2.18]],
+    [[4.06, 4.78, 5.80], [4.06, 4.50, 5.04], [2.01, 2.23, 2.50]],
+    [[4.37, 5.10, 6.11], [4.37, 4.90, 5.56], [2.35, 2.62, 2.96]],
+    [[4.84, 5.57, 6.57], [4.84, 5.48, 6.31], [2.88, 3.24, 3.70]],
+    [[5.57, 6.34, 7.34], [5.57, 6.40, 7.51], [3.79, 4.32, 5.01]],
+    [[6.96, 7.78, 8.82], [6.96, 8.14, 9.79], [5.72, 6.63, 7.89]],
+    [[10.7, 11.7, 12.9], [10.7, 12.8, 16.0], [12.2, 14.6, 18.0]],    // b/a = 0.1
+];
+
+/// Quadratic Lagrange interpolation in ν through the table's ν = 0, 0.25, 0.5.
+fn in_poisson(v: [f64; 3], nu: f64) -> f64 {
+    let (l0, l1, l2) = (
+        (nu - 0.25) * (nu - 0.5) / ((0.0 - 0.25) * (0.0 - 0.5)),
+        (nu - 0.0) * (nu - 0.5) / ((0.25 - 0.0) * (0.25 - 0.5)),
+        (nu - 0.0) * (nu - 0.25) / ((0.5 - 0.0) * (0.5 - 0.25)),
+    );
+    l0 * v[0] + l1 * v[1] + l2 * v[2]
+}
+
+fn table_row(row: usize, nu: f64) -> [f64; 3] {
+    let r = &TABLE_A1[row];
+    [
+        in_poisson(r[0], nu),
+        in_poisson(r[1], nu),
+        in_poisson(r[2], nu),
+    ]
+}
+
+/// Kalker's g → 0 closed forms (Table A1, first and last rows), Λ = ln(16/g²).
+/// `slender_x`: a/b → 0 (upper half); otherwise b/a → 0 (lower half).
+fn asymptotic(g: f64, nu: f64, slender_x: bool) -> [f64; 3] {
+    let lam = (16.0 / (g * g)).ln();
+    let ln4 = 4.0_f64.ln();
+    if slender_x {
+        [
+            PI * PI / (4.0 * (1.0 - nu)),
+            PI * PI / 4.0,
+            PI * g.sqrt() / (3.0 * (1.0 - nu)) * (1.0 + nu * (0.5 * lam + ln4 - 5.0)),
+        ]
+    } else {
+        [
+            2.0 * PI / ((lam - 2.0 * nu) * g) * (1.0 + (3.0 - ln4) / (lam - 2.0 * nu)),
+            2.0 * PI / g * (1.0 + (1.0 - nu) * (3.0 - ln4) / ((1.0 - nu) * lam - 2.0 * nu)),
+            2.0 * PI / (3.0 * g * g.sqrt()) * ((1.0 - nu) * lam - 2.0 + 4.0 * nu),
+        ]
+    }
+}
+
+impl Coefficients {
+    /// Table A1 for semi-axes a (x) and b (y) and Poisson's ratio ν ∈ [0, 0.5]: quadratic in ν,
+    /// linear in the axis-ratio parameter s between rows. Beyond the table (axis ratio < 0.1)
+    /// Kalker's g → 0 closed forms are used, shifted by a correction that vanishes linearly as
+    /// g → 0 so that the table's 0.1 row is met continuously.
+    pub fn from_table(a_mm: f64, b_mm: f64, nu: f64) -> Self {
+        let s = if a_mm <= b_mm {
+            a_mm / b_mm
+        } else {
+            2.0 - b_mm / a_mm
+        };
+        let v = if s < 0.1 || s > 1.9 {
+            let slender_x = s < 0.1;
+            let g = if slender_x { s } else { 2.0 - s };
+            let edge = table_row(if slender_x { 0 } else { 18 }, nu);
+            let asym_edge = asymptotic(0.1, nu, slender_x);
+            let asym = asymptotic(g, nu, slender_x);
+            let w = g / 0.1;
+            [0, 1, 2].map(|c| asym[c] + (edge[c] - asym_edge[c]) * w)
+        } else {
+            let pos = (s - 0.1) / 0.1;
+            let row = (pos.floor() as usize).min(17);
+            let t = pos - row as f64;
+            let (lo, hi) = (table_row(row, nu), table_row(row + 1, nu));
+            [0, 1, 2].map(|c| lo[c] + t * (hi[c] - lo[c]))
+        };
+        Coefficients {
+            c11: v[0],
+            c22: v[1],
+            c23: v[2],
+        }
+    }
+
+    /// The polynomial fit Eq. 2.36 (ν = 0.27; stated for 1/25 ≤ b/a ≤ 25).
+    pub fn from_fit(a_mm: f64, b_mm: f64) -> Self {
+        let r = b_mm / a_mm;
+        Coefficients {
+            c11: 3.2893 + 0.975 / r - 0.012 / (r * r),
+            c22: 2.4014 + 1.3179 / r - 0.02 / (r * r),
+            c23: 0.4147 + 1.0184 / r + 0.0565 / (r * r) - 0.0013 / (r * r * r),
+        }
+    }
+
+    /// Coefficients from the chosen source.
+    pub fn new(source: CoefficientSource, a_mm: f64, b_mm: f64, nu: f64) -> Self {
+        match source {
+            CoefficientSource::Table => Self::from_table(a_mm, b_mm, nu),
+            CoefficientSource::Fit => Self::from_fit(a_mm, b_mm),
+        }
+    }
+}
+
+impl Flexibilities {
+    /// Flexibilities for an ellipse a × b [mm] (thesis Eq. 2.35 or Eq. 3.5).
+    pub fn new(
+        model: FlexibilityModel,
+        c: &Coefficients,
+        a_mm: f64,
+        b_mm: f64,
+        mat: &Material,
+    ) -> Self {
+        let (g, nu, e) = (mat.g_mpa, mat.poisson, mat.e_mpa);
+        match model {
+            FlexibilityModel::Kalker => Flexibilities {
+                l1_mm3_n: 8.0 * a_mm / (3.0 * c.c11 * g),
+                l2_mm3_n: 8.0 * a_mm / (3.0 * c.c22 * g),
+                l3_mm3_n: PI * a_mm * (a_mm / b_mm).sqrt() / (4.0 * c.c23 * g),
+            },
+            FlexibilityModel::Thesis => Flexibilities {
+                l1_mm3_n: b_mm * 2.0 * (1.0 + nu) / e,
+                l2_mm3_n: b_mm * 2.0 * (1.0 + nu) / e,
+                l3_mm3_n: b_mm * (1.0 + nu) * (1.0 - 2.0 * nu) / ((1.0 - nu) * e),
+            },
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn table_nodes_are_reproduced() {
+        // b/a = 0.5, ν = 0.25: 5.10, 4.90, 2.62 (Table A1); a = b, ν = 0: 3.40, 3.40, 1.33.
+        let c = Coefficients::from_table(2.0, 1.0, 0.25);
+        assert!(
+            (c.c11 - 5.10).abs() < 1e-12
+                && (c.c22 - 4.90).abs() < 1e-12
+                && (c.c23 - 2.62).abs() < 1e-12
+        );
+        let c = Coefficients::from_table(1.0, 1.0, 0.0);
+        assert!((c.c11 - 3.40).abs() < 1e-12 && (c.c23 - 1.33).abs() < 1e-12);
+        // a/b = 0.3, ν = 0.5 (upper half): 4.80, 2.81, 0.889.
+        let c = Coefficients::from_table(0.3, 1.0, 0.5);
+        assert!(
+            (c.c11 - 4.80).abs() < 1e-12
+                && (c.c22 - 2.81).abs() < 1e-12
+                && (c.c23 - 0.889).abs() < 1e-12
+        );
+    }
+
+    #[test]
+    fn table_beyond_range_is_continuous_and_reaches_the_limits() {
+        let at = |r: f64| Coefficients::from_table(1.0, r, 0.28);
+        let (inside, outside) = (at(0.1 + 1e-9), at(0.1 - 1e-9));
+        assert!((inside.c11 - outside.c11).abs() < 1e-6 && (inside.c23 - outside.c23).abs() < 1e-6);
+        let slender = Coefficients::from_table(1e-6, 1.0, 0.28);
+        assert!(
+            (slender.c11 - PI * PI / (4.0 * 0.72)).abs() < 1e-3,
+            "{slender:?}"
+        );
+        assert!((slender.c22 - PI * PI / 4.0).abs() < 1e-3);
+        let c = at(1.0 / 25.0);
+        assert!(c.c11.is_finite() && c.c11 > 11.7 && c.c23 > 14.6, "{c:?}");
+    }
+
+    #[test]
+    fn fit_close_to_table_near_poisson_027() {
+        // The fit was made for ν = 0.27; over the table's range it follows the table within ~3 %.
+        for r in [0.2, 0.4766, 1.0, 2.0, 5.0] {
+            let (t, f) = (
+                Coefficients::from_table(1.0, r, 0.27),
+                Coefficients::from_fit(1.0, r),
+            );
+            assert!((f.c11 / t.c11 - 1.0).abs() < 0.03, "b/a {r}: {t:?} {f:?}");
+            assert!((f.c22 / t.c22 - 1.0).abs() < 0.03, "b/a {r}: {t:?} {f:?}");
+        }
+    }
+}

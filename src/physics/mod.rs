@@ -1,0 +1,18 @@
+//! Contact physics written once and shared by every solver: material constants, Hertz,
+//! Kalker's coefficients and flexibilities, the grid, the pressure and the traction bound.
+//!
+//! Units throughout: mm, N, MPa (N/mm²), s; creepages dimensionless, spin in 1/mm.
+
+pub mod bound;
+pub mod grid;
+pub mod hertz;
+pub mod kalker;
+pub mod material;
+pub mod pressure;
+
+pub use bound::project_to_bound;
+pub use grid::Grid;
+pub use hertz::{HertzContact, Radii};
+pub use kalker::{CoefficientSource, Coefficients, Flexibilities, FlexibilityModel};
+pub use material::Material;
+pub use pressure::PressureShape;

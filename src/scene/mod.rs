@@ -1,0 +1,438 @@
+//! Step 1 of the pipeline: the scene file (interface.md), parsed and validated.
+//!
+//! Every field is checked (type, range, NaN/inf, unknown keys); errors name the field, the value
+//! and what is allowed, and become exit status 2.
+
+pub mod reader;
+pub mod table;
+
+use crate::error::InputError;
+use crate::physics::{CoefficientSource, FlexibilityModel, PressureShape, Radii};
+use crate::solvers::brush::LeadingEdge;
+use reader::{Range, Section};
+use std::path::{Path, PathBuf};
+
+/// Names of the built-in solvers.
+pub const BUILTIN_SOLVERS: [&str; 3] = ["uba", "fastsim", "contact"];
+/// Metric names (interface.md, "Metric definitions").
+pub const METRICS: [&str; 4] = [
+    "delay_ratio",
+    "loop_area",
+    "steady_value",
+    "settling_time_s",
+];
+
+/// Largest grid accepted along either axis.
+pub const MAX_ELEMENTS_PER_AXIS: usize = 512;
+
+/// Contact geometry: semi-axes directly, or radii through Hertz.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Geometry {
+    SemiAxes { a_mm: f64, b_mm: f64 },
+    Radii(Radii),
+}
+
+/// Elastic constants as given.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MaterialSpec {
+    pub g_mpa: Option<f64>,
+    pub e_mpa: Option<f64>,
+    pub poisson: f64,
+}
+
+/// The creepage history kinds.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Creepage {
+    /// cx = `c_before` at t = 0, then `c` at every step k ≥ 1.
+    Step { c: f64, steps: usize, c_before: f64 },
+    /// cx(t_k) = c0 + cp sin(2π F t_k), k = 1..ceil(periods/(F dt)).
+    Sine {
+        c0: f64,
+        cp: f64,
+        freq_hz: f64,
+        periods: f64,
+    },
+    /// Steady rolling at `points` evenly spaced cx from `from` to `to`.
+    Sweep { from: f64, to: f64, points: usize },
+    /// A CSV table `t_s,cx[,cy,cs,fn_n,mu]`, interpolated at t_k = k dt.
+    Table {
+        file: PathBuf,
+        rows: table::CreepageTable,
+    },
+}
+
+/// The initial tangential state.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum InitKind {
+    Zero,
+    Steady,
+}
+
+/// Model options of the simplified models (`[model]`).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct ModelOptions {
+    pub flexibility: FlexibilityModel,
+    pub coefficients: CoefficientSource,
+    pub pressure: PressureShape,
+    /// Where the simplified models start each row (default: the grid's edge, as CONTACT's FASTSIM).
+    pub leading_edge: LeadingEdge,
+}
+
+impl Default for ModelOptions {
+    fn default() -> Self {
+        Self {
+            flexibility: FlexibilityModel::Kalker,
+            coefficients: CoefficientSource::Table,
+            pressure: PressureShape::Parabolic,
+            leading_edge: LeadingEdge::Grid,
+        }
+    }
+}
+
+/// Options of the CONTACT-style solver (`[contact_solver]`, optional).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct ContactSolverOptions {
+    /// Stop when the largest traction change relative to max μ pn falls below this.
+    pub tolerance: f64,
+    /// Iteration limit per time step; reaching it flags the step as not converged.
+    pub max_iterations: usize,
+}
+
+impl Default for ContactSolverOptions {
+    fn default() -> Self {
+        Self {
+            tolerance: 1e-7,
+            max_iterations: 1000,
+        }
+    }
+}
+
+/// An external model (`[external.NAME] command = [...]`): any executable that reads scene.json
+/// and writes a history CSV in the `simulate` format.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExternalSolver {
+    pub name: String,
+    /// Program and arguments; a relative program path is resolved against the scene's folder.
+    pub command: Vec<String>,
+}
+
+/// A validated scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scene {
+    pub name: String,
+    pub solvers: Vec<String>,
+    /// Metrics asked for; `None` = those that fit the creepage kind.
+    pub metrics: Option<Vec<String>>,
+    pub geometry: Geometry,
+    pub fn_n: f64,
+    pub mu: f64,
+    pub material: MaterialSpec,
+    pub mx: usize,
+    pub my: usize,
+    pub v_mm_s: f64,
+    pub courant: f64,
+    pub creepage: Creepage,
+    pub cy: f64,
+    pub cs_per_mm: f64,
+    pub init: InitKind,
+    pub model: ModelOptions,
+    pub contact_solver: ContactSolverOptions,
+    pub external: Vec<ExternalSolver>,
+    /// Folder of the scene file (relative paths in the scene are resolved against it).
+    pub dir: PathBuf,
+}
+
+const CREEPAGE_LIMIT: Range = Range::new(-1.0, true, 1.0, true);
+const SPIN_LIMIT: Range = Range::new(-10.0, true, 10.0, true);
+
+fn is_valid_name(s: &str) -> bool {
+    !s.is_empty()
+        && s.len() <= 100
+        && s.bytes()
+            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'_')
+}
+
+impl Scene {
+    /// Read and validate a scene file.
+    pub fn from_file(path: &Path) -> Result<Scene, InputError> {
+        let text = std::fs::read_to_string(path).map_err(|e| {
+            InputError::new(
+                "scene",
+                path.display(),
+                format!("a readable scene file (TOML): {e}"),
+            )
+        })?;
+        let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        Scene::from_toml(&text, &dir)
+    }
+
+    /// Parse and validate scene text; `dir` resolves relative paths.
+    pub fn from_toml(text: &str, dir: &Path) -> Result<Scene, InputError> {
+        let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| {
+            let msg = e.message().to_string();
+            let at = e
+                .span()
+                .map(|s| format!("byte {}", s.start))
+                .unwrap_or_else(|| "?".into());
+            InputError::new(
+                "scene",
+                format!("malformed TOML at {at}"),
+                format!("valid TOML ({msg})"),
+            )
+        })?;
+        let mut top = Section::new("", &doc);
+
+        let name = top.str("name", "a name of [a-z0-9_]+")?;
+        if !is_valid_name(name) {
+            return Err(InputError::new(
+                "name",
+                format!("{name:?}"),
+                "1 to 100 characters of [a-z0-9_]",
+            ));
+        }
+        let mut external = Vec::new();
+        if let Some(mut ext) = top.opt_table("external")? {
+            for key in ext.keys() {
+                if !is_valid_name(&key) || BUILTIN_SOLVERS.contains(&key.as_str()) {
+                    return Err(InputError::new(
+                        ext.field(&key),
+                        format!("{key:?}"),
+                        "an external solver name of [a-z0-9_]+ other than uba, fastsim, contact",
+                    ));
+                }
+                let mut t = ext.table(&key)?;
+                let command = t
+                    .opt_str_list("command", "program and its arguments")?
+                    .filter(|c| !c.is_empty())
+                    .ok_or_else(|| {
+                        InputError::new(
+                            t.field("command"),
+                            "missing or empty",
+                            "a non-empty array: program and arguments",
+                        )
+                    })?;
+                t.finish()?;
+                external.push(ExternalSolver { name: key, command });
+            }
+            ext.finish()?;
+        }
+        let solver_names: Vec<String> = BUILTIN_SOLVERS
+            .iter()
+            .map(|s| s.to_string())
+            .chain(external.iter().map(|e| e.name.clone()))
+            .collect();
+        let allowed_solvers = format!(
+            "a non-empty list of distinct names from {}",
+            solver_names.join(", ")
+        );
+        let solvers = top
+            .opt_str_list("solvers", &allowed_solvers)?
+            .ok_or_else(|| InputError::new("solvers", "missing", allowed_solvers.clone()))?;
+        if solvers.is_empty() {
+            return Err(InputError::new("solvers", "[]", allowed_solvers));
+        }
+        for (n, s) in solvers.iter().enumerate() {
+            if !solver_names.contains(s) || solvers[..n].contains(s) {
+                return Err(InputError::new(
+                    format!("solvers[{n}]"),
+                    format!("{s:?}"),
+                    allowed_solvers,
+                ));
+            }
+        }
+        let metrics = top.opt_str_list("metrics", &format!("names from {}", METRICS.join(", ")))?;
+        if let Some(ms) = &metrics {
+            for (n, m) in ms.iter().enumerate() {
+                if !METRICS.contains(&m.as_str()) || ms[..n].contains(m) {
+                    return Err(InputError::new(
+                        format!("metrics[{n}]"),
+                        format!("{m:?}"),
+                        format!("distinct names from {}", METRICS.join(", ")),
+                    ));
+                }
+            }
+        }
+
+        // [contact]
+        let mut c = top.table("contact")?;
+        let len = Range::new(0.0, false, 1e4, true);
+        let geometry = if c.has("a_mm") || c.has("b_mm") || !c.has("r_wx_mm") {
+            let a_mm = c.f64("a_mm", len)?;
+            let b_mm = c.f64("b_mm", len)?;
+            for k in ["r_wx_mm", "r_wy_mm", "r_ry_mm"] {
+                if c.has(k) {
+                    return Err(InputError::new(
+                        c.field(k),
+                        "given",
+                        "either a_mm and b_mm, or the radii r_wx_mm, r_wy_mm, r_ry_mm, not both",
+                    ));
+                }
+            }
+            Geometry::SemiAxes { a_mm, b_mm }
+        } else {
+            let radius = Range::new(0.0, false, f64::INFINITY, true);
+            Geometry::Radii(Radii {
+                r_wx_mm: c.f64("r_wx_mm", Range::new(0.0, false, 1e9, true))?,
+                r_wy_mm: c.f64("r_wy_mm", radius)?,
+                r_ry_mm: c.f64("r_ry_mm", radius)?,
+            })
+        };
+        let fn_n = c.f64("fn_n", Range::new(0.0, false, 1e9, true))?;
+        let mu = c.f64("mu", Range::new(0.0, false, 1e3, true))?;
+        c.finish()?;
+
+        // [material]
+        let mut m = top.table("material")?;
+        let g_mpa = m.opt_f64("g_mpa", Range::new(0.0, false, 1e7, true))?;
+        let e_mpa = m.opt_f64("e_mpa", Range::new(0.0, false, 1e7, true))?;
+        let poisson = m.f64("poisson", Range::new(0.0, true, 0.5, false))?;
+        if g_mpa.is_none() && e_mpa.is_none() {
+            return Err(InputError::new(
+                "material.g_mpa",
+                "missing",
+                "g_mpa (or e_mpa, from which g_mpa = e/(2(1+poisson)))",
+            ));
+        }
+        m.finish()?;
+
+        // [grid]
+        let mut g = top.table("grid")?;
+        let mx = g.usize("mx", 1, MAX_ELEMENTS_PER_AXIS)?;
+        let my = g.usize("my", 1, MAX_ELEMENTS_PER_AXIS)?;
+        g.finish()?;
+
+        // [rolling]
+        let (mut v_mm_s, mut courant) = (1000.0, 1.0);
+        if let Some(mut r) = top.opt_table("rolling")? {
+            v_mm_s = r
+                .opt_f64("v_mm_s", Range::new(0.0, false, 1e6, true))?
+                .unwrap_or(v_mm_s);
+            courant = r
+                .opt_f64("courant", Range::new(0.0, false, 100.0, true))?
+                .unwrap_or(courant);
+            r.finish()?;
+        }
+        if courant > 1.0 && solvers.iter().any(|s| s == "uba") {
+            return Err(InputError::new(
+                "rolling.courant",
+                courant,
+                "(0, 1] when the scene runs uba: the explicit upwind scheme is stable only for courant <= 1",
+            ));
+        }
+
+        // [creepage]
+        let mut cr = top.table("creepage")?;
+        let kind = cr.choice("kind", &["step", "sine", "sweep", "table"])?;
+        let creepage = match kind {
+            "step" => Creepage::Step {
+                c: cr.f64("c", CREEPAGE_LIMIT)?,
+                steps: cr.usize("steps", 1, 10_000_000)?,
+                c_before: cr.opt_f64("c_before", CREEPAGE_LIMIT)?.unwrap_or(0.0),
+            },
+            "sine" => Creepage::Sine {
+                c0: cr.f64("c0", CREEPAGE_LIMIT)?,
+                cp: cr.f64("cp", CREEPAGE_LIMIT)?,
+                freq_hz: cr.f64("freq_hz", Range::new(0.0, false, 1e6, true))?,
+                periods: cr.f64("periods", Range::new(0.0, false, 1e4, true))?,
+            },
+            "sweep" => Creepage::Sweep {
+                from: cr.f64("from", CREEPAGE_LIMIT)?,
+                to: cr.f64("to", CREEPAGE_LIMIT)?,
+                points: cr.usize("points", 1, 1_000_000)?,
+            },
+            _ => {
+                let file = cr.str("file", "a CSV path relative to the scene file")?;
+                let path = dir.join(file);
+                let rows = table::CreepageTable::from_file(&path, &cr.field("file"))?;
+                Creepage::Table { file: path, rows }
+            }
+        };
+        let cy = cr.opt_f64("cy", CREEPAGE_LIMIT)?.unwrap_or(0.0);
+        let cs_per_mm = cr.opt_f64("cs", SPIN_LIMIT)?.unwrap_or(0.0);
+        cr.finish()?;
+
+        // [init]
+        let mut init = InitKind::Zero;
+        if let Some(mut i) = top.opt_table("init")? {
+            init = match i.opt_choice("kind", &["zero", "steady"])? {
+                Some("steady") => InitKind::Steady,
+                _ => InitKind::Zero,
+            };
+            i.finish()?;
+        }
+
+        // [model]
+        let mut model = ModelOptions::default();
+        if let Some(mut md) = top.opt_table("model")? {
+            if let Some(f) = md.opt_choice("flexibility", &["kalker", "thesis"])? {
+                model.flexibility = if f == "thesis" {
+                    FlexibilityModel::Thesis
+                } else {
+                    FlexibilityModel::Kalker
+                };
+            }
+            if let Some(c) = md.opt_choice("coefficients", &["table", "fit"])? {
+                model.coefficients = if c == "fit" {
+                    CoefficientSource::Fit
+                } else {
+                    CoefficientSource::Table
+                };
+            }
+            if let Some(p) = md.opt_choice("pressure", &["parabolic", "ellipsoidal"])? {
+                model.pressure = if p == "ellipsoidal" {
+                    PressureShape::Ellipsoidal
+                } else {
+                    PressureShape::Parabolic
+                };
+            }
+            if let Some(e) = md.opt_choice("leading_edge", &["grid", "exact"])? {
+                model.leading_edge = if e == "exact" {
+                    LeadingEdge::Exact
+                } else {
+                    LeadingEdge::Grid
+                };
+            }
+            md.finish()?;
+        }
+
+        // [contact_solver]
+        let mut contact_solver = ContactSolverOptions::default();
+        if let Some(mut cs) = top.opt_table("contact_solver")? {
+            if let Some(t) = cs.opt_f64("tolerance", Range::new(1e-14, true, 1e-2, true))? {
+                contact_solver.tolerance = t;
+            }
+            if let Some(n) = cs.opt_usize("max_iterations", 1, 1_000_000)? {
+                contact_solver.max_iterations = n;
+            }
+            cs.finish()?;
+        }
+        top.finish()?;
+
+        Ok(Scene {
+            name: name.to_string(),
+            solvers,
+            metrics,
+            geometry,
+            fn_n,
+            mu,
+            material: MaterialSpec {
+                g_mpa,
+                e_mpa,
+                poisson,
+            },
+            mx,
+            my,
+            v_mm_s,
+            courant,
+            creepage,
+            cy,
+            cs_per_mm,
+            init,
+            model,
+            contact_solver,
+            external,
+            dir: dir.to_path_buf(),
+        })
+    }
+}

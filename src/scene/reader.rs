@@ -1,0 +1,276 @@
+//! A strict reader over a TOML table: typed getters with range checks, and unknown-key errors.
+//! Every error names the dotted field, the value given and what is allowed.
+
+use crate::error::InputError;
+use std::collections::BTreeSet;
+use toml::{Table, Value};
+
+/// One TOML table being read; keys not consumed are reported by [`Section::finish`].
+pub struct Section<'a> {
+    path: String,
+    table: &'a Table,
+    used: BTreeSet<String>,
+}
+
+/// A numeric range with its wording.
+#[derive(Debug, Clone, Copy)]
+pub struct Range {
+    pub min: f64,
+    pub min_inclusive: bool,
+    pub max: f64,
+    pub max_inclusive: bool,
+}
+
+impl Range {
+    pub const fn new(min: f64, min_inclusive: bool, max: f64, max_inclusive: bool) -> Self {
+        Self {
+            min,
+            min_inclusive,
+            max,
+            max_inclusive,
+        }
+    }
+    /// (0, max]
+    pub const fn positive_to(max: f64) -> Self {
+        Self::new(0.0, false, max, true)
+    }
+    pub fn contains(&self, v: f64) -> bool {
+        v.is_finite()
+            && (if self.min_inclusive {
+                v >= self.min
+            } else {
+                v > self.min
+            })
+            && (if self.max_inclusive {
+                v <= self.max
+            } else {
+                v < self.max
+            })
+    }
+    pub fn describe(&self) -> String {
+        let lo = if self.min_inclusive { '[' } else { '(' };
+        let hi = if self.max_inclusive { ']' } else { ')' };
+        format!(
+            "a finite number in {lo}{}, {}{hi}",
+            fmt_num(self.min),
+            fmt_num(self.max)
+        )
+    }
+}
+
+fn fmt_num(v: f64) -> String {
+    if v.is_infinite() {
+        if v > 0.0 {
+            "inf".into()
+        } else {
+            "-inf".into()
+        }
+    } else {
+        format!("{v}")
+    }
+}
+
+fn show(v: &Value) -> String {
+    match v {
+        Value::String(s) => format!("{s:?}"),
+        other => other.to_string(),
+    }
+}
+
+impl<'a> Section<'a> {
+    pub fn new(path: impl Into<String>, table: &'a Table) -> Self {
+        Self {
+            path: path.into(),
+            table,
+            used: BTreeSet::new(),
+        }
+    }
+
+    /// Dotted name of `key` in this section.
+    pub fn field(&self, key: &str) -> String {
+        if self.path.is_empty() {
+            key.to_string()
+        } else {
+            format!("{}.{}", self.path, key)
+        }
+    }
+
+    fn get(&mut self, key: &str) -> Option<&'a Value> {
+        self.used.insert(key.to_string());
+        self.table.get(key)
+    }
+
+    pub fn has(&self, key: &str) -> bool {
+        self.table.contains_key(key)
+    }
+
+    fn missing(&self, key: &str, allowed: &str) -> InputError {
+        InputError::new(self.field(key), "missing", format!("required: {allowed}"))
+    }
+
+    /// An optional number (integer or float) within `range`.
+    pub fn opt_f64(&mut self, key: &str, range: Range) -> Result<Option<f64>, InputError> {
+        let Some(v) = self.get(key) else {
+            return Ok(None);
+        };
+        let x = match v {
+            Value::Float(f) => *f,
+            Value::Integer(i) => *i as f64,
+            other => {
+                return Err(InputError::new(
+                    self.field(key),
+                    show(other),
+                    range.describe(),
+                ))
+            }
+        };
+        if !range.contains(x) {
+            return Err(InputError::new(
+                self.field(key),
+                fmt_num(x),
+                range.describe(),
+            ));
+        }
+        Ok(Some(x))
+    }
+
+    /// A required number within `range`.
+    pub fn f64(&mut self, key: &str, range: Range) -> Result<f64, InputError> {
+        self.opt_f64(key, range)?
+            .ok_or_else(|| self.missing(key, &range.describe()))
+    }
+
+    /// An optional whole number in `[min, max]`.
+    pub fn opt_usize(
+        &mut self,
+        key: &str,
+        min: usize,
+        max: usize,
+    ) -> Result<Option<usize>, InputError> {
+        let allowed = format!("a whole number in [{min}, {max}]");
+        let Some(v) = self.get(key) else {
+            return Ok(None);
+        };
+        match v {
+            Value::Integer(i) if *i >= min as i64 && *i <= max as i64 => Ok(Some(*i as usize)),
+            other => Err(InputError::new(self.field(key), show(other), allowed)),
+        }
+    }
+
+    /// A required whole number in `[min, max]`.
+    pub fn usize(&mut self, key: &str, min: usize, max: usize) -> Result<usize, InputError> {
+        self.opt_usize(key, min, max)?
+            .ok_or_else(|| self.missing(key, &format!("a whole number in [{min}, {max}]")))
+    }
+
+    /// An optional string.
+    pub fn opt_str(&mut self, key: &str, allowed: &str) -> Result<Option<&'a str>, InputError> {
+        match self.get(key) {
+            None => Ok(None),
+            Some(Value::String(s)) => Ok(Some(s.as_str())),
+            Some(other) => Err(InputError::new(
+                self.field(key),
+                show(other),
+                allowed.to_string(),
+            )),
+        }
+    }
+
+    /// A required string.
+    pub fn str(&mut self, key: &str, allowed: &str) -> Result<&'a str, InputError> {
+        self.opt_str(key, allowed)?
+            .ok_or_else(|| self.missing(key, allowed))
+    }
+
+    /// An optional string that must be one of `choices`.
+    pub fn opt_choice(
+        &mut self,
+        key: &str,
+        choices: &[&str],
+    ) -> Result<Option<&'a str>, InputError> {
+        let allowed = format!("one of {}", choices.join(", "));
+        match self.opt_str(key, &allowed)? {
+            None => Ok(None),
+            Some(s) if choices.contains(&s) => Ok(Some(s)),
+            Some(s) => Err(InputError::new(self.field(key), format!("{s:?}"), allowed)),
+        }
+    }
+
+    /// A required string that must be one of `choices`.
+    pub fn choice(&mut self, key: &str, choices: &[&str]) -> Result<&'a str, InputError> {
+        let allowed = format!("one of {}", choices.join(", "));
+        self.opt_choice(key, choices)?
+            .ok_or_else(|| self.missing(key, &allowed))
+    }
+
+    /// An optional array of strings, each checked by `check`.
+    pub fn opt_str_list(
+        &mut self,
+        key: &str,
+        allowed: &str,
+    ) -> Result<Option<Vec<String>>, InputError> {
+        let Some(v) = self.get(key) else {
+            return Ok(None);
+        };
+        let Value::Array(items) = v else {
+            return Err(InputError::new(
+                self.field(key),
+                show(v),
+                format!("an array of strings: {allowed}"),
+            ));
+        };
+        items
+            .iter()
+            .enumerate()
+            .map(|(n, item)| match item {
+                Value::String(s) => Ok(s.clone()),
+                other => Err(InputError::new(
+                    format!("{}[{n}]", self.field(key)),
+                    show(other),
+                    allowed.to_string(),
+                )),
+            })
+            .collect::<Result<Vec<_>, _>>()
+            .map(Some)
+    }
+
+    /// An optional sub-table.
+    pub fn opt_table(&mut self, key: &str) -> Result<Option<Section<'a>>, InputError> {
+        match self.get(key) {
+            None => Ok(None),
+            Some(Value::Table(t)) => Ok(Some(Section::new(self.field(key), t))),
+            Some(other) => Err(InputError::new(
+                self.field(key),
+                show(other),
+                "a table ([section])",
+            )),
+        }
+    }
+
+    /// A required sub-table.
+    pub fn table(&mut self, key: &str) -> Result<Section<'a>, InputError> {
+        self.opt_table(key)?
+            .ok_or_else(|| self.missing(key, "a table ([section])"))
+    }
+
+    /// Keys of this table (for sections whose keys are names, like `[external]`).
+    pub fn keys(&self) -> Vec<String> {
+        self.table.keys().cloned().collect()
+    }
+
+    /// Fails on the first key that was never read.
+    pub fn finish(self) -> Result<(), InputError> {
+        let mut known: Vec<&str> = self.used.iter().map(String::as_str).collect();
+        known.sort_unstable();
+        for (k, v) in self.table {
+            if !self.used.contains(k) {
+                return Err(InputError::new(
+                    self.field(k),
+                    show(v),
+                    format!("no such key here; known keys: {}", known.join(", ")),
+                ));
+            }
+        }
+        Ok(())
+    }
+}

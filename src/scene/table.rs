@@ -1,0 +1,164 @@
+//! The `table` creepage kind: a CSV `t_s,cx[,cy,cs,fn_n,mu]` read and validated row by row.
+
+use crate::error::InputError;
+use std::path::Path;
+
+/// Columns a creepage table may have; `t_s` and `cx` are required.
+pub const COLUMNS: [&str; 6] = ["t_s", "cx", "cy", "cs", "fn_n", "mu"];
+
+/// A validated table: strictly increasing times, finite values in range.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CreepageTable {
+    pub t_s: Vec<f64>,
+    /// One optional series per column after `t_s` (cx is always present).
+    pub cx: Vec<f64>,
+    pub cy: Option<Vec<f64>>,
+    pub cs: Option<Vec<f64>>,
+    pub fn_n: Option<Vec<f64>>,
+    pub mu: Option<Vec<f64>>,
+}
+
+impl CreepageTable {
+    /// Read `path`; errors name `field` (the scene key), the row and column.
+    pub fn from_file(path: &Path, field: &str) -> Result<Self, InputError> {
+        let text = std::fs::read_to_string(path).map_err(|e| {
+            InputError::new(
+                field,
+                path.display(),
+                format!("an existing, readable CSV file ({e})"),
+            )
+        })?;
+        Self::from_csv(&text, &format!("{field} ({})", path.display()))
+    }
+
+    /// Parse CSV text.
+    pub fn from_csv(text: &str, origin: &str) -> Result<Self, InputError> {
+        let mut rdr = csv::ReaderBuilder::new()
+            .trim(csv::Trim::All)
+            .from_reader(text.as_bytes());
+        let header: Vec<String> = rdr
+            .headers()
+            .map_err(|e| {
+                InputError::new(
+                    origin,
+                    "unreadable header",
+                    format!("a CSV header line ({e})"),
+                )
+            })?
+            .iter()
+            .map(str::to_string)
+            .collect();
+        for (n, h) in header.iter().enumerate() {
+            if !COLUMNS.contains(&h.as_str()) || header[..n].contains(h) {
+                return Err(InputError::new(
+                    format!("{origin} header"),
+                    format!("{h:?}"),
+                    format!("distinct columns from {}", COLUMNS.join(", ")),
+                ));
+            }
+        }
+        for req in ["t_s", "cx"] {
+            if !header.iter().any(|h| h == req) {
+                return Err(InputError::new(
+                    format!("{origin} header"),
+                    header.join(","),
+                    format!("must include column {req}"),
+                ));
+            }
+        }
+        let mut cols: Vec<Vec<f64>> = vec![Vec::new(); header.len()];
+        for (r, rec) in rdr.records().enumerate() {
+            let row = r + 2; // 1-based line number, header is line 1
+            let rec = rec.map_err(|e| {
+                InputError::new(
+                    format!("{origin} line {row}"),
+                    "malformed",
+                    format!("a CSV row of {} numbers ({e})", header.len()),
+                )
+            })?;
+            if rec.len() != header.len() {
+                return Err(InputError::new(
+                    format!("{origin} line {row}"),
+                    rec.len(),
+                    format!("{} fields", header.len()),
+                ));
+            }
+            for (c, cell) in rec.iter().enumerate() {
+                let name = &header[c];
+                let v: f64 = cell.parse().map_err(|_| {
+                    InputError::new(
+                        format!("{origin} line {row} column {name}"),
+                        format!("{cell:?}"),
+                        "a number",
+                    )
+                })?;
+                let ok = match name.as_str() {
+                    "t_s" => v.is_finite() && v >= 0.0,
+                    "cx" | "cy" => v.is_finite() && v.abs() <= 1.0,
+                    "cs" => v.is_finite() && v.abs() <= 10.0,
+                    _ => v.is_finite() && v > 0.0, // fn_n, mu
+                };
+                if !ok {
+                    let allowed = match name.as_str() {
+                        "t_s" => "a finite time >= 0",
+                        "cx" | "cy" => "a finite creepage in [-1, 1]",
+                        "cs" => "a finite spin in [-10, 10] 1/mm",
+                        _ => "a finite number > 0",
+                    };
+                    return Err(InputError::new(
+                        format!("{origin} line {row} column {name}"),
+                        v,
+                        allowed,
+                    ));
+                }
+                cols[c].push(v);
+            }
+        }
+        let col = |name: &str| {
+            header
+                .iter()
+                .position(|h| h == name)
+                .map(|i| cols[i].clone())
+        };
+        let t_s = col("t_s").unwrap_or_default();
+        if t_s.is_empty() {
+            return Err(InputError::new(origin, "no data rows", "at least one row"));
+        }
+        for w in 1..t_s.len() {
+            if t_s[w] <= t_s[w - 1] {
+                return Err(InputError::new(
+                    format!("{origin} line {} column t_s", w + 2),
+                    t_s[w],
+                    format!("strictly increasing times (previous {})", t_s[w - 1]),
+                ));
+            }
+        }
+        Ok(CreepageTable {
+            cx: col("cx").unwrap_or_default(),
+            cy: col("cy"),
+            cs: col("cs"),
+            fn_n: col("fn_n"),
+            mu: col("mu"),
+            t_s,
+        })
+    }
+
+    /// Linear interpolation of `series` at time `t` (held constant before the first row).
+    pub fn interpolate(&self, series: &[f64], t: f64) -> f64 {
+        let ts = &self.t_s;
+        if t <= ts[0] {
+            return series[0];
+        }
+        let k = ts.partition_point(|&x| x <= t);
+        if k >= ts.len() {
+            return series[ts.len() - 1];
+        }
+        let (t0, t1) = (ts[k - 1], ts[k]);
+        series[k - 1] + (series[k] - series[k - 1]) * (t - t0) / (t1 - t0)
+    }
+
+    /// Last time in the table [s].
+    pub fn end_s(&self) -> f64 {
+        *self.t_s.last().unwrap_or(&0.0)
+    }
+}
