@@ -14,26 +14,14 @@ pub struct InputError {
 }
 
 impl InputError {
-    pub fn new(
-        field: impl Into<String>,
-        value: impl fmt::Display,
-        allowed: impl Into<String>,
-    ) -> Self {
-        Self {
-            field: field.into(),
-            value: value.to_string(),
-            allowed: allowed.into(),
-        }
+    pub fn new(field: impl Into<String>, value: impl fmt::Display, allowed: impl Into<String>) -> Self {
+        Self { field: field.into(), value: value.to_string(), allowed: allowed.into() }
     }
 }
 
 impl fmt::Display for InputError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "`{}` = {}: allowed: {}",
-            self.field, self.value, self.allowed
-        )
+        write!(f, "`{}` = {}: allowed: {}", self.field, self.value, self.allowed)
     }
 }
 
@@ -47,11 +35,7 @@ pub enum Error {
     Input(#[from] InputError),
     /// A solver could not produce a trustworthy result (exit status 1).
     #[error("solver `{solver}` failed on scene `{scene}`: {message}")]
-    Solve {
-        scene: String,
-        solver: String,
-        message: String,
-    },
+    Solve { scene: String, solver: String, message: String },
     /// A gated comparison drifted (exit status 1).
     #[error("{0}")]
     Drift(String),

@@ -4,16 +4,7 @@
 use crate::problem::Sample;
 
 /// The fixed leading columns of `<solver>.csv` (interface.md); extra columns follow.
-pub const COLUMNS: [&str; 8] = [
-    "step",
-    "t_s",
-    "cx",
-    "cy",
-    "cs",
-    "fn_n",
-    "fx_over_fn",
-    "fy_over_fn",
-];
+pub const COLUMNS: [&str; 8] = ["step", "t_s", "cx", "cy", "cs", "fn_n", "fx_over_fn", "fy_over_fn"];
 
 /// One row: the loading and the traction coefficients, plus solver-specific extra values.
 #[derive(Debug, Clone, PartialEq)]
@@ -112,52 +103,30 @@ impl History {
 
     /// Parse a history CSV (ours, a golden file, or an external model's output).
     pub fn from_csv(solver: &str, text: &str) -> Result<History, String> {
-        let mut rdr = csv::ReaderBuilder::new()
-            .trim(csv::Trim::All)
-            .from_reader(text.as_bytes());
-        let header: Vec<String> = rdr
-            .headers()
-            .map_err(|e| format!("header: {e}"))?
-            .iter()
-            .map(str::to_string)
-            .collect();
+        let mut rdr = csv::ReaderBuilder::new().trim(csv::Trim::All).from_reader(text.as_bytes());
+        let header: Vec<String> =
+            rdr.headers().map_err(|e| format!("header: {e}"))?.iter().map(str::to_string).collect();
         if header.len() < COLUMNS.len() || header[..COLUMNS.len()] != COLUMNS {
-            return Err(format!(
-                "header must start with {} (got {})",
-                COLUMNS.join(","),
-                header.join(",")
-            ));
+            return Err(format!("header must start with {} (got {})", COLUMNS.join(","), header.join(",")));
         }
-        let mut h = History {
-            solver: solver.into(),
-            extra_columns: header[COLUMNS.len()..].to_vec(),
-            rows: Vec::new(),
-        };
+        let mut h =
+            History { solver: solver.into(), extra_columns: header[COLUMNS.len()..].to_vec(), rows: Vec::new() };
         for (n, rec) in rdr.records().enumerate() {
             let line = n + 2;
             let rec = rec.map_err(|e| format!("line {line}: {e}"))?;
             if rec.len() != header.len() {
-                return Err(format!(
-                    "line {line}: {} fields, header has {}",
-                    rec.len(),
-                    header.len()
-                ));
+                return Err(format!("line {line}: {} fields, header has {}", rec.len(), header.len()));
             }
             let num = |c: usize| -> Result<f64, String> {
-                let v: f64 = rec[c].parse().map_err(|_| {
-                    format!(
-                        "line {line} column {}: {:?} is not a number",
-                        header[c], &rec[c]
-                    )
-                })?;
+                let v: f64 = rec[c]
+                    .parse()
+                    .map_err(|_| format!("line {line} column {}: {:?} is not a number", header[c], &rec[c]))?;
                 Ok(v)
             };
-            let step = rec[0].parse::<usize>().map_err(|_| {
-                format!("line {line} column step: {:?} is not a step index", &rec[0])
-            })?;
-            let extra = (COLUMNS.len()..header.len())
-                .map(num)
-                .collect::<Result<Vec<_>, _>>()?;
+            let step = rec[0]
+                .parse::<usize>()
+                .map_err(|_| format!("line {line} column step: {:?} is not a step index", &rec[0]))?;
+            let extra = (COLUMNS.len()..header.len()).map(num).collect::<Result<Vec<_>, _>>()?;
             h.rows.push(Row {
                 step,
                 t_s: num(1)?,

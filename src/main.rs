@@ -6,11 +6,7 @@ use creepbench::{output, pipeline};
 use std::path::PathBuf;
 
 #[derive(Parser)]
-#[command(
-    name = "creepbench",
-    version,
-    about = "Validate and benchmark wheel-rail creep-force models"
-)]
+#[command(name = "creepbench", version, about = "Validate and benchmark wheel-rail creep-force models")]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -49,11 +45,7 @@ fn simulate(scene: PathBuf, solvers: Vec<String>, out: PathBuf) -> Result<(), Er
 fn main() {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Simulate {
-            scene,
-            solvers,
-            out,
-        } => simulate(scene, solvers, out),
+        Command::Simulate { scene, solvers, out } => simulate(scene, solvers, out),
     };
     if let Err(e) = result {
         eprintln!("error: {e}");

@@ -33,11 +33,7 @@ pub fn peak_time(t: &[f64], y: &[f64], t0: f64, t1: f64) -> Option<f64> {
         return Some(t[idx]);
     }
     let (off, _) = parabola_peak(y[idx - 1], y[idx], y[idx + 1]);
-    let h = if off >= 0.0 {
-        t[idx + 1] - t[idx]
-    } else {
-        t[idx] - t[idx - 1]
-    };
+    let h = if off >= 0.0 { t[idx + 1] - t[idx] } else { t[idx] - t[idx - 1] };
     Some(t[idx] + off * h)
 }
 
@@ -67,18 +63,10 @@ pub fn loop_integral(t: &[f64], cx: &[f64], f: &[f64], t0: f64, t1: f64) -> Opti
         Some(y[k - 1] + w * (y[k] - y[k - 1]))
     };
     let mut pts = vec![(interp(cx, t0)?, interp(f, t0)?)];
-    pts.extend(
-        (0..t.len())
-            .filter(|&k| t[k] > t0 && t[k] < t1)
-            .map(|k| (cx[k], f[k])),
-    );
+    pts.extend((0..t.len()).filter(|&k| t[k] > t0 && t[k] < t1).map(|k| (cx[k], f[k])));
     pts.push((interp(cx, t1)?, interp(f, t1)?));
     pts.push(pts[0]);
-    Some(
-        pts.windows(2)
-            .map(|w| 0.5 * (w[0].1 + w[1].1) * (w[1].0 - w[0].0))
-            .sum(),
-    )
+    Some(pts.windows(2).map(|w| 0.5 * (w[0].1 + w[1].1) * (w[1].0 - w[0].0)).sum())
 }
 
 /// Settling time: the first time after which |f − f_last| stays within 1 % of |f_last|.
@@ -100,27 +88,16 @@ pub fn compute(problem: &Problem, h: &History) -> Vec<Metric> {
     let mut out = Vec::new();
     let mut push = |name: &str, value: Option<f64>, step: Option<usize>| {
         if let Some(value) = value {
-            out.push(Metric {
-                solver: h.solver.clone(),
-                name: name.into(),
-                value,
-                step,
-            });
+            out.push(Metric { solver: h.solver.clone(), name: name.into(), value, step });
         }
     };
     for m in &problem.metrics {
         match m.as_str() {
-            "delay_ratio" => push(
-                m,
-                problem.period_s().and_then(|p| delay_ratio(&t, &cx, &f, p)),
-                None,
-            ),
+            "delay_ratio" => push(m, problem.period_s().and_then(|p| delay_ratio(&t, &cx, &f, p)), None),
             "loop_area" => {
                 let value = problem.period_s().and_then(|p| {
                     let periods = (t.last().copied().unwrap_or(0.0) / p + 1e-9).floor();
-                    (periods >= 1.0)
-                        .then(|| loop_integral(&t, &cx, &f, (periods - 1.0) * p, periods * p))
-                        .flatten()
+                    (periods >= 1.0).then(|| loop_integral(&t, &cx, &f, (periods - 1.0) * p, periods * p)).flatten()
                 });
                 push(m, value.map(f64::abs), None)
             }
@@ -159,10 +136,7 @@ mod tests {
     fn parabola_recovers_sine_peak() {
         let dt = 0.013;
         let t: Vec<f64> = (0..400).map(|k| k as f64 * dt).collect();
-        let y: Vec<f64> = t
-            .iter()
-            .map(|&x| (2.0 * std::f64::consts::PI * (x - 0.1)).sin())
-            .collect();
+        let y: Vec<f64> = t.iter().map(|&x| (2.0 * std::f64::consts::PI * (x - 0.1)).sin()).collect();
         let tp = peak_time(&t, &y, 1.0, 2.0).unwrap();
         assert!((tp - 1.35).abs() < 2e-4, "{tp}");
     }
@@ -183,14 +157,8 @@ mod tests {
         // cx = cos θ, f = sin θ traced counter-clockwise: ∮ f dcx = −π.
         let n = 2000;
         let t: Vec<f64> = (0..=n).map(|k| k as f64 / n as f64).collect();
-        let cx: Vec<f64> = t
-            .iter()
-            .map(|&x| (2.0 * std::f64::consts::PI * x).cos())
-            .collect();
-        let f: Vec<f64> = t
-            .iter()
-            .map(|&x| (2.0 * std::f64::consts::PI * x).sin())
-            .collect();
+        let cx: Vec<f64> = t.iter().map(|&x| (2.0 * std::f64::consts::PI * x).cos()).collect();
+        let f: Vec<f64> = t.iter().map(|&x| (2.0 * std::f64::consts::PI * x).sin()).collect();
         let a = loop_integral(&t, &cx, &f, 0.0, 1.0).unwrap();
         assert!((a + std::f64::consts::PI).abs() < 1e-4, "{a}");
     }

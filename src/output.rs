@@ -86,11 +86,7 @@ pub fn scene_json(p: &Problem, solvers_ran: &[String]) -> String {
         model: p.model,
         contact_solver: p.contact_solver,
         metrics: &p.metrics,
-        skipped_metrics: p
-            .skipped_metrics
-            .iter()
-            .map(|(m, w)| [m.as_str(), w.as_str()])
-            .collect(),
+        skipped_metrics: p.skipped_metrics.iter().map(|(m, w)| [m.as_str(), w.as_str()]).collect(),
         warnings: &p.warnings,
         history: p.initial.iter().chain(p.samples.iter()).copied().collect(),
     };
@@ -98,11 +94,7 @@ pub fn scene_json(p: &Problem, solvers_ran: &[String]) -> String {
 }
 
 /// Write `files` (name, contents) as the folder `dir/name`, atomically replacing an old one.
-pub fn write_folder_atomically(
-    dir: &Path,
-    name: &str,
-    files: &[(String, String)],
-) -> std::io::Result<PathBuf> {
+pub fn write_folder_atomically(dir: &Path, name: &str, files: &[(String, String)]) -> std::io::Result<PathBuf> {
     std::fs::create_dir_all(dir)?;
     let target = dir.join(name);
     let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
@@ -131,11 +123,7 @@ pub fn write_folder_atomically(
 }
 
 /// The files of one simulated scene: scene.json, `<solver>.csv` and metrics.csv.
-pub fn scene_files(
-    p: &Problem,
-    histories: &[History],
-    metrics: &[Metric],
-) -> Vec<(String, String)> {
+pub fn scene_files(p: &Problem, histories: &[History], metrics: &[Metric]) -> Vec<(String, String)> {
     let ran: Vec<String> = histories.iter().map(|h| h.solver.clone()).collect();
     let mut files = vec![("scene.json".to_string(), scene_json(p, &ran))];
     for h in histories {

@@ -45,18 +45,12 @@ pub fn run(problem: Problem) -> Result<SceneResult, Error> {
     let mut wall_s = Vec::new();
     let mut all_metrics = Vec::new();
     for name in &problem.solvers {
-        let solver = solvers::by_name(name, &problem)
-            .ok_or_else(|| Error::other(format!("unknown solver {name}")))?;
+        let solver = solvers::by_name(name, &problem).ok_or_else(|| Error::other(format!("unknown solver {name}")))?;
         let start = Instant::now();
         let h = solver.run(&problem)?;
         wall_s.push(start.elapsed().as_secs_f64());
         all_metrics.extend(metrics::compute(&problem, &h));
         histories.push(h);
     }
-    Ok(SceneResult {
-        problem,
-        histories,
-        wall_s,
-        metrics: all_metrics,
-    })
+    Ok(SceneResult { problem, histories, wall_s, metrics: all_metrics })
 }

@@ -4,9 +4,7 @@
 
 use crate::error::InputError;
 use crate::physics::{Coefficients, Flexibilities, Grid, HertzContact, Material};
-use crate::scene::{
-    ContactSolverOptions, Creepage, ExternalSolver, Geometry, InitKind, ModelOptions, Scene,
-};
+use crate::scene::{ContactSolverOptions, Creepage, ExternalSolver, Geometry, InitKind, ModelOptions, Scene};
 use std::path::PathBuf;
 
 /// Largest number of time steps (or sweep points) one scene may ask for.
@@ -84,30 +82,16 @@ impl Problem {
     /// Resolve a validated scene.
     pub fn resolve(scene: &Scene) -> Result<Problem, InputError> {
         let material = match (scene.material.g_mpa, scene.material.e_mpa) {
-            (Some(g), Some(e)) => Material {
-                g_mpa: g,
-                poisson: scene.material.poisson,
-                e_mpa: e,
-            },
+            (Some(g), Some(e)) => Material { g_mpa: g, poisson: scene.material.poisson, e_mpa: e },
             (Some(g), None) => Material::from_g(g, scene.material.poisson),
             (None, Some(e)) => Material::from_e(e, scene.material.poisson),
             (None, None) => unreachable!("validated by the scene reader"),
         };
         let hertz = match &scene.geometry {
-            Geometry::SemiAxes { a_mm, b_mm } => HertzContact {
-                a_mm: *a_mm,
-                b_mm: *b_mm,
-                fn_n: scene.fn_n,
-            },
-            Geometry::Radii(r) => {
-                HertzContact::from_radii(r, scene.fn_n, &material).map_err(|e| {
-                    InputError::new(
-                        "contact.r_wx_mm",
-                        format!("{r:?}"),
-                        format!("radii of a convex contact ({e})"),
-                    )
-                })?
-            }
+            Geometry::SemiAxes { a_mm, b_mm } => HertzContact { a_mm: *a_mm, b_mm: *b_mm, fn_n: scene.fn_n },
+            Geometry::Radii(r) => HertzContact::from_radii(r, scene.fn_n, &material).map_err(|e| {
+                InputError::new("contact.r_wx_mm", format!("{r:?}"), format!("radii of a convex contact ({e})"))
+            })?,
         };
         let mut warnings = Vec::new();
         let ratio = hertz.b_mm / hertz.a_mm;
@@ -122,57 +106,27 @@ impl Problem {
                 ));
             }
         }
-        let coefficients = Coefficients::new(
-            scene.model.coefficients,
-            hertz.a_mm,
-            hertz.b_mm,
-            material.poisson,
-        );
+        if scene.model.coefficients == crate::physics::CoefficientSource::Table && !(0.1..=10.0).contains(&ratio) {
+            warnings.push(format!(
+                "b/a = {ratio:.4} is beyond Kalker's Table A1 (0.1 … 10): c11, c22, c23 are extrapolated"
+            ));
+        }
+        let coefficients = Coefficients::new(scene.model.coefficients, hertz.a_mm, hertz.b_mm, material.poisson);
         let grid = Grid::new(scene.mx, scene.my, hertz.a_mm, hertz.b_mm);
         let dq_mm = scene.courant * grid.dx_mm;
         let dt_s = dq_mm / scene.v_mm_s;
-        let base = Sample {
-            step: 0,
-            t_s: 0.0,
-            cx: 0.0,
-            cy: scene.cy,
-            cs: scene.cs_per_mm,
-            fn_n: scene.fn_n,
-            mu: scene.mu,
-        };
+        let base =
+            Sample { step: 0, t_s: 0.0, cx: 0.0, cy: scene.cy, cs: scene.cs_per_mm, fn_n: scene.fn_n, mu: scene.mu };
         let too_many = |n: f64| {
-            InputError::new(
-                "creepage",
-                format!("{n:.0} steps"),
-                format!("at most {MAX_STEPS} steps (dt = {dt_s:e} s)"),
-            )
+            InputError::new("creepage", format!("{n:.0} steps"), format!("at most {MAX_STEPS} steps (dt = {dt_s:e} s)"))
         };
         let (kind, freq_hz, initial, samples) = match &scene.creepage {
             Creepage::Step { c, steps, c_before } => {
-                let s: Vec<Sample> = (1..=*steps)
-                    .map(|k| Sample {
-                        step: k,
-                        t_s: k as f64 * dt_s,
-                        cx: *c,
-                        ..base
-                    })
-                    .collect();
-                (
-                    LoadingKind::Step,
-                    None,
-                    Some(Sample {
-                        cx: *c_before,
-                        ..base
-                    }),
-                    s,
-                )
+                let s: Vec<Sample> =
+                    (1..=*steps).map(|k| Sample { step: k, t_s: k as f64 * dt_s, cx: *c, ..base }).collect();
+                (LoadingKind::Step, None, Some(Sample { cx: *c_before, ..base }), s)
             }
-            Creepage::Sine {
-                c0,
-                cp,
-                freq_hz,
-                periods,
-            } => {
+            Creepage::Sine { c0, cp, freq_hz, periods } => {
                 let n = (periods / (freq_hz * dt_s)).ceil();
                 if n > MAX_STEPS as f64 {
                     return Err(too_many(n));
@@ -181,12 +135,7 @@ impl Problem {
                 let s = (1..=n as usize)
                     .map(|k| {
                         let t = k as f64 * dt_s;
-                        Sample {
-                            step: k,
-                            t_s: t,
-                            cx: c0 + cp * (w * t).sin(),
-                            ..base
-                        }
+                        Sample { step: k, t_s: t, cx: c0 + cp * (w * t).sin(), ..base }
                     })
                     .collect();
                 if 1.0 / (freq_hz * dt_s) < 3.0 {
@@ -195,27 +144,13 @@ impl Problem {
                         1.0 / (freq_hz * dt_s)
                     ));
                 }
-                (
-                    LoadingKind::Sine,
-                    Some(*freq_hz),
-                    Some(Sample { cx: *c0, ..base }),
-                    s,
-                )
+                (LoadingKind::Sine, Some(*freq_hz), Some(Sample { cx: *c0, ..base }), s)
             }
             Creepage::Sweep { from, to, points } => {
                 let s = (1..=*points)
                     .map(|k| {
-                        let f = if *points > 1 {
-                            (k - 1) as f64 / (*points - 1) as f64
-                        } else {
-                            0.0
-                        };
-                        Sample {
-                            step: k,
-                            t_s: 0.0,
-                            cx: from + (to - from) * f,
-                            ..base
-                        }
+                        let f = if *points > 1 { (k - 1) as f64 / (*points - 1) as f64 } else { 0.0 };
+                        Sample { step: k, t_s: 0.0, cx: from + (to - from) * f, ..base }
                     })
                     .collect();
                 (LoadingKind::Sweep, None, None, s)
@@ -227,9 +162,7 @@ impl Problem {
                 }
                 let at = |k: usize| {
                     let t = k as f64 * dt_s;
-                    let get = |s: &Option<Vec<f64>>, d: f64| {
-                        s.as_ref().map_or(d, |v| rows.interpolate(v, t))
-                    };
+                    let get = |s: &Option<Vec<f64>>, d: f64| s.as_ref().map_or(d, |v| rows.interpolate(v, t));
                     Sample {
                         step: k,
                         t_s: t,
@@ -252,12 +185,7 @@ impl Problem {
                         warnings.push(format!("creepage table: fn_n exceeds contact.fn_n = {} N; the grid covers the nominal ellipse only, so larger contacts are clipped to it", scene.fn_n));
                     }
                 }
-                (
-                    LoadingKind::Table,
-                    None,
-                    Some(at(0)),
-                    (1..=n as usize).map(at).collect(),
-                )
+                (LoadingKind::Table, None, Some(at(0)), (1..=n as usize).map(at).collect())
             }
         };
         let (metrics, skipped_metrics) = select_metrics(scene, kind, freq_hz, samples.len(), dt_s);
@@ -290,45 +218,21 @@ impl Problem {
 
     /// The contact at load `fn_n` (the ellipse scales with FN^(1/3), coefficients do not change).
     pub fn local_contact(&self, fn_n: f64) -> LocalContact {
-        let hertz = if fn_n == self.hertz.fn_n {
-            self.hertz
-        } else {
-            self.hertz.at_load(fn_n)
-        };
-        let flex = Flexibilities::new(
-            self.model.flexibility,
-            &self.coefficients,
-            hertz.a_mm,
-            hertz.b_mm,
-            &self.material,
-        );
-        let pressure_mpa = self
-            .model
-            .pressure
-            .on_grid(&self.grid, fn_n, hertz.a_mm, hertz.b_mm);
-        LocalContact {
-            hertz,
-            flex,
-            pressure_mpa,
-        }
+        let hertz = if fn_n == self.hertz.fn_n { self.hertz } else { self.hertz.at_load(fn_n) };
+        let flex =
+            Flexibilities::new(self.model.flexibility, &self.coefficients, hertz.a_mm, hertz.b_mm, &self.material);
+        let pressure_mpa = self.model.pressure.on_grid(&self.grid, fn_n, hertz.a_mm, hertz.b_mm);
+        LocalContact { hertz, flex, pressure_mpa }
     }
 
     /// Flexibilities at the nominal load.
     pub fn flexibilities(&self) -> Flexibilities {
-        Flexibilities::new(
-            self.model.flexibility,
-            &self.coefficients,
-            self.hertz.a_mm,
-            self.hertz.b_mm,
-            &self.material,
-        )
+        Flexibilities::new(self.model.flexibility, &self.coefficients, self.hertz.a_mm, self.hertz.b_mm, &self.material)
     }
 
     /// Peak of the simplified models' pressure at the nominal load [MPa].
     pub fn pressure_peak_mpa(&self) -> f64 {
-        self.model
-            .pressure
-            .peak_mpa(self.hertz.fn_n, self.hertz.a_mm, self.hertz.b_mm)
+        self.model.pressure.peak_mpa(self.hertz.fn_n, self.hertz.a_mm, self.hertz.b_mm)
     }
 
     /// Whether the creepage history is a transient (time-marching) one.
@@ -359,9 +263,7 @@ fn select_metrics(
                 let periods = n as f64 * dt_s * f;
                 let need = if m == "delay_ratio" { 2.0 } else { 1.0 };
                 if periods + 1e-9 < need {
-                    return Err(format!(
-                        "needs at least {need} periods, the history has {periods:.2}"
-                    ));
+                    return Err(format!("needs at least {need} periods, the history has {periods:.2}"));
                 }
                 Ok(())
             }

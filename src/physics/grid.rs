@@ -26,16 +26,7 @@ impl Grid {
         let dy_mm = 2.0 * b_mm / my as f64;
         let x_mm = (0..mx).map(|i| -a_mm + dx_mm * (i as f64 + 0.5)).collect();
         let y_mm = (0..my).map(|j| -b_mm + dy_mm * (j as f64 + 0.5)).collect();
-        Self {
-            mx,
-            my,
-            a_mm,
-            b_mm,
-            dx_mm,
-            dy_mm,
-            x_mm,
-            y_mm,
-        }
+        Self { mx, my, a_mm, b_mm, dx_mm, dy_mm, x_mm, y_mm }
     }
 
     /// Number of elements.

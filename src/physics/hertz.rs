@@ -41,11 +41,7 @@ impl HertzContact {
     /// The same ellipse at another load: both semi-axes scale with `(FN'/FN)^(1/3)` (Hertz).
     pub fn at_load(&self, fn_n: f64) -> HertzContact {
         let s = (fn_n / self.fn_n).cbrt();
-        HertzContact {
-            a_mm: self.a_mm * s,
-            b_mm: self.b_mm * s,
-            fn_n,
-        }
+        HertzContact { a_mm: self.a_mm * s, b_mm: self.b_mm * s, fn_n }
     }
 
     /// Semi-axes from the radii, the load and the material (thesis Eq. 2.13–2.19): the ratio
@@ -61,21 +57,13 @@ impl HertzContact {
         }
         let e_star = material.e_star_mpa();
         // Solve with the long axis along the direction of the smaller curvature, then map back.
-        let (small, large) = if curv_y >= curv_x {
-            (curv_x, curv_y)
-        } else {
-            (curv_y, curv_x)
-        };
+        let (small, large) = if curv_y >= curv_x { (curv_x, curv_y) } else { (curv_y, curv_x) };
         let m = solve_eccentricity(large / small)?;
-        let (k_int, e_int) = complete_ke_over_m(m);
+        let (k_minus_e_over_m, _) = complete_ke_over_m(m);
         // Eq. 2.13: A = p0 b (K − E) / (E* e² a²) with p0 = 3FN/(2πab)  ⇒  a³ = 3FN (K−E)/(2π E* e² A).
-        let long = (3.0 * fn_n * (k_int - e_int) / (2.0 * PI * e_star * small)).cbrt();
+        let long = (3.0 * fn_n * k_minus_e_over_m / (2.0 * PI * e_star * small)).cbrt();
         let short = long * (1.0 - m).sqrt();
-        let (a_mm, b_mm) = if curv_y >= curv_x {
-            (long, short)
-        } else {
-            (short, long)
-        };
+        let (a_mm, b_mm) = if curv_y >= curv_x { (long, short) } else { (short, long) };
         Ok(HertzContact { a_mm, b_mm, fn_n })
     }
 
@@ -107,9 +95,7 @@ fn complete_ke_over_m(m: f64) -> (f64, f64) {
 /// Eq. 2.19: find m = e² with `((a/b)² E − K)/(K − E) = ratio` (ratio ≥ 1), by bisection.
 fn solve_eccentricity(ratio: f64) -> Result<f64, HertzError> {
     if !ratio.is_finite() || ratio < 1.0 {
-        return Err(HertzError(format!(
-            "curvature ratio {ratio} must be finite and >= 1"
-        )));
+        return Err(HertzError(format!("curvature ratio {ratio} must be finite and >= 1")));
     }
     let f = |m: f64| {
         let (ke, ek) = complete_ke_over_m(m);
@@ -117,9 +103,7 @@ fn solve_eccentricity(ratio: f64) -> Result<f64, HertzError> {
     };
     let (mut lo, mut hi) = (0.0_f64, 1.0 - 1e-15);
     if f(hi) < 0.0 {
-        return Err(HertzError(format!(
-            "curvature ratio {ratio} is beyond b/a = 3e-8"
-        )));
+        return Err(HertzError(format!("curvature ratio {ratio} is beyond b/a = 3e-8")));
     }
     for _ in 0..200 {
         let mid = 0.5 * (lo + hi);
@@ -140,14 +124,7 @@ mod tests {
     use super::*;
 
     fn thesis() -> (Radii, Material) {
-        (
-            Radii {
-                r_wx_mm: 575.0,
-                r_wy_mm: 500.0,
-                r_ry_mm: 300.0,
-            },
-            Material::from_e(210000.0, 0.28),
-        )
+        (Radii { r_wx_mm: 575.0, r_wy_mm: 500.0, r_ry_mm: 300.0 }, Material::from_e(210000.0, 0.28))
     }
 
     /// Thesis 4.1.1: a = 8.56, b = 4.08 mm (rounded); the exact two-body solution is 8.556 / 4.070.
@@ -164,18 +141,10 @@ mod tests {
     fn curvatures_round_trip() {
         let mat = Material::from_g(82000.0, 0.28);
         for (a, b) in [(8.56, 4.08), (5.888, 5.888), (3.0, 9.0), (10.0, 0.4)] {
-            let h = HertzContact {
-                a_mm: a,
-                b_mm: b,
-                fn_n: 1e5,
-            };
+            let h = HertzContact { a_mm: a, b_mm: b, fn_n: 1e5 };
             let (ca, cb) = h.undeformed_curvatures(&mat);
             // A = 1/(2 R_wx), B = (1/R_wy + 1/R_ry)/2 with R_ry → ∞.
-            let r = Radii {
-                r_wx_mm: 0.5 / ca,
-                r_wy_mm: 0.5 / cb,
-                r_ry_mm: f64::INFINITY,
-            };
+            let r = Radii { r_wx_mm: 0.5 / ca, r_wy_mm: 0.5 / cb, r_ry_mm: f64::INFINITY };
             let back = HertzContact::from_radii(&r, 1e5, &mat).unwrap();
             assert!((back.a_mm / a - 1.0).abs() < 1e-9, "{a} {b}: {back:?}");
             assert!((back.b_mm / b - 1.0).abs() < 1e-9, "{a} {b}: {back:?}");
@@ -186,23 +155,16 @@ mod tests {
     #[test]
     fn circle_limit() {
         let mat = Material::from_g(82000.0, 0.28);
-        let r = Radii {
-            r_wx_mm: 400.0,
-            r_wy_mm: 400.0,
-            r_ry_mm: f64::INFINITY,
-        };
+        let r = Radii { r_wx_mm: 400.0, r_wy_mm: 400.0, r_ry_mm: f64::INFINITY };
         let h = HertzContact::from_radii(&r, 1e5, &mat).unwrap();
         let a = (3.0 * 1e5 * 400.0 / (4.0 * mat.e_star_mpa())).cbrt();
-        assert!(
-            (h.a_mm / a - 1.0).abs() < 1e-9 && (h.b_mm / a - 1.0).abs() < 1e-9,
-            "{h:?} vs {a}"
-        );
+        assert!((h.a_mm / a - 1.0).abs() < 1e-9 && (h.b_mm / a - 1.0).abs() < 1e-9, "{h:?} vs {a}");
     }
 
     /// The small-m identities agree with the Legendre forms where both are accurate.
     #[test]
     fn identities_match_legendre() {
-        for m in [2e-3, 1e-2, 0.3] {
+        for m in [2e-3_f64, 1e-2, 0.3] {
             let (k, e) = ellipke(m).unwrap();
             let rd1 = elliprd(0.0, 1.0 - m, 1.0).unwrap() / 3.0;
             let rd2 = elliprd(0.0, 1.0, 1.0 - m).unwrap() / 3.0;

@@ -81,52 +81,27 @@ fn in_poisson(v: [f64; 3], nu: f64) -> f64 {
 
 fn table_row(row: usize, nu: f64) -> [f64; 3] {
     let r = &TABLE_A1[row];
-    [
-        in_poisson(r[0], nu),
-        in_poisson(r[1], nu),
-        in_poisson(r[2], nu),
-    ]
-}
-
-/// Kalker's g → 0 closed forms (Table A1, first and last rows), Λ = ln(16/g²).
-/// `slender_x`: a/b → 0 (upper half); otherwise b/a → 0 (lower half).
-fn asymptotic(g: f64, nu: f64, slender_x: bool) -> [f64; 3] {
-    let lam = (16.0 / (g * g)).ln();
-    let ln4 = 4.0_f64.ln();
-    if slender_x {
-        [
-            PI * PI / (4.0 * (1.0 - nu)),
-            PI * PI / 4.0,
-            PI * g.sqrt() / (3.0 * (1.0 - nu)) * (1.0 + nu * (0.5 * lam + ln4 - 5.0)),
-        ]
-    } else {
-        [
-            2.0 * PI / ((lam - 2.0 * nu) * g) * (1.0 + (3.0 - ln4) / (lam - 2.0 * nu)),
-            2.0 * PI / g * (1.0 + (1.0 - nu) * (3.0 - ln4) / ((1.0 - nu) * lam - 2.0 * nu)),
-            2.0 * PI / (3.0 * g * g.sqrt()) * ((1.0 - nu) * lam - 2.0 + 4.0 * nu),
-        ]
-    }
+    [in_poisson(r[0], nu), in_poisson(r[1], nu), in_poisson(r[2], nu)]
 }
 
 impl Coefficients {
     /// Table A1 for semi-axes a (x) and b (y) and Poisson's ratio ν ∈ [0, 0.5]: quadratic in ν,
-    /// linear in the axis-ratio parameter s between rows. Beyond the table (axis ratio < 0.1)
-    /// Kalker's g → 0 closed forms are used, shifted by a correction that vanishes linearly as
-    /// g → 0 so that the table's 0.1 row is met continuously.
+    /// linear in the axis-ratio parameter s between rows. Beyond the table (axis ratio < 0.1) it
+    /// is extrapolated: for a/b → 0 towards Kalker's limits c11 = π²/(4(1−ν)), c22 = π²/4
+    /// (linearly) and c23 ∝ √(a/b); for b/a → 0 by the power law through the 0.2 and 0.1 rows.
+    /// (The g → 0 closed forms as printed in the thesis's App. A do not meet the table, so they
+    /// are not used.)
     pub fn from_table(a_mm: f64, b_mm: f64, nu: f64) -> Self {
-        let s = if a_mm <= b_mm {
-            a_mm / b_mm
-        } else {
-            2.0 - b_mm / a_mm
-        };
-        let v = if s < 0.1 || s > 1.9 {
-            let slender_x = s < 0.1;
-            let g = if slender_x { s } else { 2.0 - s };
-            let edge = table_row(if slender_x { 0 } else { 18 }, nu);
-            let asym_edge = asymptotic(0.1, nu, slender_x);
-            let asym = asymptotic(g, nu, slender_x);
-            let w = g / 0.1;
-            [0, 1, 2].map(|c| asym[c] + (edge[c] - asym_edge[c]) * w)
+        let s = if a_mm <= b_mm { a_mm / b_mm } else { 2.0 - b_mm / a_mm };
+        let v = if s < 0.1 {
+            let w = s / 0.1;
+            let edge = table_row(0, nu);
+            let limit = [PI * PI / (4.0 * (1.0 - nu)), PI * PI / 4.0];
+            [limit[0] + w * (edge[0] - limit[0]), limit[1] + w * (edge[1] - limit[1]), edge[2] * w.sqrt()]
+        } else if s > 1.9 {
+            let g = 2.0 - s;
+            let (r1, r2) = (table_row(18, nu), table_row(17, nu));
+            [0, 1, 2].map(|c| r1[c] * (0.1 / g).powf((r1[c] / r2[c]).ln() / 2f64.ln()))
         } else {
             let pos = (s - 0.1) / 0.1;
             let row = (pos.floor() as usize).min(17);
@@ -134,11 +109,7 @@ impl Coefficients {
             let (lo, hi) = (table_row(row, nu), table_row(row + 1, nu));
             [0, 1, 2].map(|c| lo[c] + t * (hi[c] - lo[c]))
         };
-        Coefficients {
-            c11: v[0],
-            c22: v[1],
-            c23: v[2],
-        }
+        Coefficients { c11: v[0], c22: v[1], c23: v[2] }
     }
 
     /// The polynomial fit Eq. 2.36 (ν = 0.27; stated for 1/25 ≤ b/a ≤ 25).
@@ -162,13 +133,7 @@ impl Coefficients {
 
 impl Flexibilities {
     /// Flexibilities for an ellipse a × b [mm] (thesis Eq. 2.35 or Eq. 3.5).
-    pub fn new(
-        model: FlexibilityModel,
-        c: &Coefficients,
-        a_mm: f64,
-        b_mm: f64,
-        mat: &Material,
-    ) -> Self {
+    pub fn new(model: FlexibilityModel, c: &Coefficients, a_mm: f64, b_mm: f64, mat: &Material) -> Self {
         let (g, nu, e) = (mat.g_mpa, mat.poisson, mat.e_mpa);
         match model {
             FlexibilityModel::Kalker => Flexibilities {
@@ -193,33 +158,27 @@ mod tests {
     fn table_nodes_are_reproduced() {
         // b/a = 0.5, ν = 0.25: 5.10, 4.90, 2.62 (Table A1); a = b, ν = 0: 3.40, 3.40, 1.33.
         let c = Coefficients::from_table(2.0, 1.0, 0.25);
-        assert!(
-            (c.c11 - 5.10).abs() < 1e-12
-                && (c.c22 - 4.90).abs() < 1e-12
-                && (c.c23 - 2.62).abs() < 1e-12
-        );
+        assert!((c.c11 - 5.10).abs() < 1e-12 && (c.c22 - 4.90).abs() < 1e-12 && (c.c23 - 2.62).abs() < 1e-12);
         let c = Coefficients::from_table(1.0, 1.0, 0.0);
         assert!((c.c11 - 3.40).abs() < 1e-12 && (c.c23 - 1.33).abs() < 1e-12);
         // a/b = 0.3, ν = 0.5 (upper half): 4.80, 2.81, 0.889.
         let c = Coefficients::from_table(0.3, 1.0, 0.5);
-        assert!(
-            (c.c11 - 4.80).abs() < 1e-12
-                && (c.c22 - 2.81).abs() < 1e-12
-                && (c.c23 - 0.889).abs() < 1e-12
-        );
+        assert!((c.c11 - 4.80).abs() < 1e-12 && (c.c22 - 2.81).abs() < 1e-12 && (c.c23 - 0.889).abs() < 1e-12);
     }
 
     #[test]
     fn table_beyond_range_is_continuous_and_reaches_the_limits() {
         let at = |r: f64| Coefficients::from_table(1.0, r, 0.28);
         let (inside, outside) = (at(0.1 + 1e-9), at(0.1 - 1e-9));
-        assert!((inside.c11 - outside.c11).abs() < 1e-6 && (inside.c23 - outside.c23).abs() < 1e-6);
-        let slender = Coefficients::from_table(1e-6, 1.0, 0.28);
         assert!(
-            (slender.c11 - PI * PI / (4.0 * 0.72)).abs() < 1e-3,
-            "{slender:?}"
+            (inside.c11 - outside.c11).abs() < 1e-6 && (inside.c23 - outside.c23).abs() < 1e-6,
+            "{inside:?} {outside:?}"
         );
-        assert!((slender.c22 - PI * PI / 4.0).abs() < 1e-3);
+        let slender = Coefficients::from_table(1e-6, 1.0, 0.28);
+        assert!((slender.c11 - PI * PI / (4.0 * 0.72)).abs() < 1e-3, "{slender:?}");
+        assert!((slender.c22 - PI * PI / 4.0).abs() < 1e-3 && slender.c23 < 0.01);
+        let (a, b) = (at(0.1 + 1e-9), at(0.1 - 1e-9));
+        assert!((a.c22 - b.c22).abs() < 1e-6, "{a:?} {b:?}");
         let c = at(1.0 / 25.0);
         assert!(c.c11.is_finite() && c.c11 > 11.7 && c.c23 > 14.6, "{c:?}");
     }
@@ -228,10 +187,7 @@ mod tests {
     fn fit_close_to_table_near_poisson_027() {
         // The fit was made for ν = 0.27; over the table's range it follows the table within ~3 %.
         for r in [0.2, 0.4766, 1.0, 2.0, 5.0] {
-            let (t, f) = (
-                Coefficients::from_table(1.0, r, 0.27),
-                Coefficients::from_fit(1.0, r),
-            );
+            let (t, f) = (Coefficients::from_table(1.0, r, 0.27), Coefficients::from_fit(1.0, r));
             assert!((f.c11 / t.c11 - 1.0).abs() < 0.03, "b/a {r}: {t:?} {f:?}");
             assert!((f.c22 / t.c22 - 1.0).abs() < 0.03, "b/a {r}: {t:?} {f:?}");
         }

@@ -14,20 +14,12 @@ pub struct Material {
 impl Material {
     /// From G and ν; E follows as `2 G (1 + ν)`.
     pub fn from_g(g_mpa: f64, poisson: f64) -> Self {
-        Self {
-            g_mpa,
-            poisson,
-            e_mpa: 2.0 * g_mpa * (1.0 + poisson),
-        }
+        Self { g_mpa, poisson, e_mpa: 2.0 * g_mpa * (1.0 + poisson) }
     }
 
     /// From E and ν; G follows as `E / (2 (1 + ν))`.
     pub fn from_e(e_mpa: f64, poisson: f64) -> Self {
-        Self {
-            g_mpa: e_mpa / (2.0 * (1.0 + poisson)),
-            poisson,
-            e_mpa,
-        }
+        Self { g_mpa: e_mpa / (2.0 * (1.0 + poisson)), poisson, e_mpa }
     }
 
     /// Two-body contact modulus E* [MPa] with `1/E* = 2 (1 − ν²) / E` (two identical bodies).

@@ -15,12 +15,7 @@ use std::path::{Path, PathBuf};
 /// Names of the built-in solvers.
 pub const BUILTIN_SOLVERS: [&str; 3] = ["uba", "fastsim", "contact"];
 /// Metric names (interface.md, "Metric definitions").
-pub const METRICS: [&str; 4] = [
-    "delay_ratio",
-    "loop_area",
-    "steady_value",
-    "settling_time_s",
-];
+pub const METRICS: [&str; 4] = ["delay_ratio", "loop_area", "steady_value", "settling_time_s"];
 
 /// Largest grid accepted along either axis.
 pub const MAX_ELEMENTS_PER_AXIS: usize = 512;
@@ -46,19 +41,11 @@ pub enum Creepage {
     /// cx = `c_before` at t = 0, then `c` at every step k ≥ 1.
     Step { c: f64, steps: usize, c_before: f64 },
     /// cx(t_k) = c0 + cp sin(2π F t_k), k = 1..ceil(periods/(F dt)).
-    Sine {
-        c0: f64,
-        cp: f64,
-        freq_hz: f64,
-        periods: f64,
-    },
+    Sine { c0: f64, cp: f64, freq_hz: f64, periods: f64 },
     /// Steady rolling at `points` evenly spaced cx from `from` to `to`.
     Sweep { from: f64, to: f64, points: usize },
     /// A CSV table `t_s,cx[,cy,cs,fn_n,mu]`, interpolated at t_k = k dt.
-    Table {
-        file: PathBuf,
-        rows: table::CreepageTable,
-    },
+    Table { file: PathBuf, rows: table::CreepageTable },
 }
 
 /// The initial tangential state.
@@ -101,10 +88,7 @@ pub struct ContactSolverOptions {
 
 impl Default for ContactSolverOptions {
     fn default() -> Self {
-        Self {
-            tolerance: 1e-7,
-            max_iterations: 1000,
-        }
+        Self { tolerance: 1e-7, max_iterations: 1000 }
     }
 }
 
@@ -147,22 +131,14 @@ const CREEPAGE_LIMIT: Range = Range::new(-1.0, true, 1.0, true);
 const SPIN_LIMIT: Range = Range::new(-10.0, true, 10.0, true);
 
 fn is_valid_name(s: &str) -> bool {
-    !s.is_empty()
-        && s.len() <= 100
-        && s.bytes()
-            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'_')
+    !s.is_empty() && s.len() <= 100 && s.bytes().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'_')
 }
 
 impl Scene {
     /// Read and validate a scene file.
     pub fn from_file(path: &Path) -> Result<Scene, InputError> {
-        let text = std::fs::read_to_string(path).map_err(|e| {
-            InputError::new(
-                "scene",
-                path.display(),
-                format!("a readable scene file (TOML): {e}"),
-            )
-        })?;
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| InputError::new("scene", path.display(), format!("a readable scene file (TOML): {e}")))?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         Scene::from_toml(&text, &dir)
     }
@@ -171,25 +147,14 @@ impl Scene {
     pub fn from_toml(text: &str, dir: &Path) -> Result<Scene, InputError> {
         let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| {
             let msg = e.message().to_string();
-            let at = e
-                .span()
-                .map(|s| format!("byte {}", s.start))
-                .unwrap_or_else(|| "?".into());
-            InputError::new(
-                "scene",
-                format!("malformed TOML at {at}"),
-                format!("valid TOML ({msg})"),
-            )
+            let at = e.span().map(|s| format!("byte {}", s.start)).unwrap_or_else(|| "?".into());
+            InputError::new("scene", format!("malformed TOML at {at}"), format!("valid TOML ({msg})"))
         })?;
         let mut top = Section::new("", &doc);
 
         let name = top.str("name", "a name of [a-z0-9_]+")?;
         if !is_valid_name(name) {
-            return Err(InputError::new(
-                "name",
-                format!("{name:?}"),
-                "1 to 100 characters of [a-z0-9_]",
-            ));
+            return Err(InputError::new("name", format!("{name:?}"), "1 to 100 characters of [a-z0-9_]"));
         }
         let mut external = Vec::new();
         if let Some(mut ext) = top.opt_table("external")? {
@@ -217,15 +182,9 @@ impl Scene {
             }
             ext.finish()?;
         }
-        let solver_names: Vec<String> = BUILTIN_SOLVERS
-            .iter()
-            .map(|s| s.to_string())
-            .chain(external.iter().map(|e| e.name.clone()))
-            .collect();
-        let allowed_solvers = format!(
-            "a non-empty list of distinct names from {}",
-            solver_names.join(", ")
-        );
+        let solver_names: Vec<String> =
+            BUILTIN_SOLVERS.iter().map(|s| s.to_string()).chain(external.iter().map(|e| e.name.clone())).collect();
+        let allowed_solvers = format!("a non-empty list of distinct names from {}", solver_names.join(", "));
         let solvers = top
             .opt_str_list("solvers", &allowed_solvers)?
             .ok_or_else(|| InputError::new("solvers", "missing", allowed_solvers.clone()))?;
@@ -234,11 +193,7 @@ impl Scene {
         }
         for (n, s) in solvers.iter().enumerate() {
             if !solver_names.contains(s) || solvers[..n].contains(s) {
-                return Err(InputError::new(
-                    format!("solvers[{n}]"),
-                    format!("{s:?}"),
-                    allowed_solvers,
-                ));
+                return Err(InputError::new(format!("solvers[{n}]"), format!("{s:?}"), allowed_solvers));
             }
         }
         let metrics = top.opt_str_list("metrics", &format!("names from {}", METRICS.join(", ")))?;
@@ -305,12 +260,8 @@ impl Scene {
         // [rolling]
         let (mut v_mm_s, mut courant) = (1000.0, 1.0);
         if let Some(mut r) = top.opt_table("rolling")? {
-            v_mm_s = r
-                .opt_f64("v_mm_s", Range::new(0.0, false, 1e6, true))?
-                .unwrap_or(v_mm_s);
-            courant = r
-                .opt_f64("courant", Range::new(0.0, false, 100.0, true))?
-                .unwrap_or(courant);
+            v_mm_s = r.opt_f64("v_mm_s", Range::new(0.0, false, 1e6, true))?.unwrap_or(v_mm_s);
+            courant = r.opt_f64("courant", Range::new(0.0, false, 100.0, true))?.unwrap_or(courant);
             r.finish()?;
         }
         if courant > 1.0 && solvers.iter().any(|s| s == "uba") {
@@ -366,32 +317,16 @@ impl Scene {
         let mut model = ModelOptions::default();
         if let Some(mut md) = top.opt_table("model")? {
             if let Some(f) = md.opt_choice("flexibility", &["kalker", "thesis"])? {
-                model.flexibility = if f == "thesis" {
-                    FlexibilityModel::Thesis
-                } else {
-                    FlexibilityModel::Kalker
-                };
+                model.flexibility = if f == "thesis" { FlexibilityModel::Thesis } else { FlexibilityModel::Kalker };
             }
             if let Some(c) = md.opt_choice("coefficients", &["table", "fit"])? {
-                model.coefficients = if c == "fit" {
-                    CoefficientSource::Fit
-                } else {
-                    CoefficientSource::Table
-                };
+                model.coefficients = if c == "fit" { CoefficientSource::Fit } else { CoefficientSource::Table };
             }
             if let Some(p) = md.opt_choice("pressure", &["parabolic", "ellipsoidal"])? {
-                model.pressure = if p == "ellipsoidal" {
-                    PressureShape::Ellipsoidal
-                } else {
-                    PressureShape::Parabolic
-                };
+                model.pressure = if p == "ellipsoidal" { PressureShape::Ellipsoidal } else { PressureShape::Parabolic };
             }
             if let Some(e) = md.opt_choice("leading_edge", &["grid", "exact"])? {
-                model.leading_edge = if e == "exact" {
-                    LeadingEdge::Exact
-                } else {
-                    LeadingEdge::Grid
-                };
+                model.leading_edge = if e == "exact" { LeadingEdge::Exact } else { LeadingEdge::Grid };
             }
             md.finish()?;
         }
@@ -416,11 +351,7 @@ impl Scene {
             geometry,
             fn_n,
             mu,
-            material: MaterialSpec {
-                g_mpa,
-                e_mpa,
-                poisson,
-            },
+            material: MaterialSpec { g_mpa, e_mpa, poisson },
             mx,
             my,
             v_mm_s,

@@ -23,12 +23,7 @@ pub struct Range {
 
 impl Range {
     pub const fn new(min: f64, min_inclusive: bool, max: f64, max_inclusive: bool) -> Self {
-        Self {
-            min,
-            min_inclusive,
-            max,
-            max_inclusive,
-        }
+        Self { min, min_inclusive, max, max_inclusive }
     }
     /// (0, max]
     pub const fn positive_to(max: f64) -> Self {
@@ -36,25 +31,13 @@ impl Range {
     }
     pub fn contains(&self, v: f64) -> bool {
         v.is_finite()
-            && (if self.min_inclusive {
-                v >= self.min
-            } else {
-                v > self.min
-            })
-            && (if self.max_inclusive {
-                v <= self.max
-            } else {
-                v < self.max
-            })
+            && (if self.min_inclusive { v >= self.min } else { v > self.min })
+            && (if self.max_inclusive { v <= self.max } else { v < self.max })
     }
     pub fn describe(&self) -> String {
         let lo = if self.min_inclusive { '[' } else { '(' };
         let hi = if self.max_inclusive { ']' } else { ')' };
-        format!(
-            "a finite number in {lo}{}, {}{hi}",
-            fmt_num(self.min),
-            fmt_num(self.max)
-        )
+        format!("a finite number in {lo}{}, {}{hi}", fmt_num(self.min), fmt_num(self.max))
     }
 }
 
@@ -79,11 +62,7 @@ fn show(v: &Value) -> String {
 
 impl<'a> Section<'a> {
     pub fn new(path: impl Into<String>, table: &'a Table) -> Self {
-        Self {
-            path: path.into(),
-            table,
-            used: BTreeSet::new(),
-        }
+        Self { path: path.into(), table, used: BTreeSet::new() }
     }
 
     /// Dotted name of `key` in this section.
@@ -116,37 +95,21 @@ impl<'a> Section<'a> {
         let x = match v {
             Value::Float(f) => *f,
             Value::Integer(i) => *i as f64,
-            other => {
-                return Err(InputError::new(
-                    self.field(key),
-                    show(other),
-                    range.describe(),
-                ))
-            }
+            other => return Err(InputError::new(self.field(key), show(other), range.describe())),
         };
         if !range.contains(x) {
-            return Err(InputError::new(
-                self.field(key),
-                fmt_num(x),
-                range.describe(),
-            ));
+            return Err(InputError::new(self.field(key), fmt_num(x), range.describe()));
         }
         Ok(Some(x))
     }
 
     /// A required number within `range`.
     pub fn f64(&mut self, key: &str, range: Range) -> Result<f64, InputError> {
-        self.opt_f64(key, range)?
-            .ok_or_else(|| self.missing(key, &range.describe()))
+        self.opt_f64(key, range)?.ok_or_else(|| self.missing(key, &range.describe()))
     }
 
     /// An optional whole number in `[min, max]`.
-    pub fn opt_usize(
-        &mut self,
-        key: &str,
-        min: usize,
-        max: usize,
-    ) -> Result<Option<usize>, InputError> {
+    pub fn opt_usize(&mut self, key: &str, min: usize, max: usize) -> Result<Option<usize>, InputError> {
         let allowed = format!("a whole number in [{min}, {max}]");
         let Some(v) = self.get(key) else {
             return Ok(None);
@@ -159,8 +122,7 @@ impl<'a> Section<'a> {
 
     /// A required whole number in `[min, max]`.
     pub fn usize(&mut self, key: &str, min: usize, max: usize) -> Result<usize, InputError> {
-        self.opt_usize(key, min, max)?
-            .ok_or_else(|| self.missing(key, &format!("a whole number in [{min}, {max}]")))
+        self.opt_usize(key, min, max)?.ok_or_else(|| self.missing(key, &format!("a whole number in [{min}, {max}]")))
     }
 
     /// An optional string.
@@ -168,26 +130,17 @@ impl<'a> Section<'a> {
         match self.get(key) {
             None => Ok(None),
             Some(Value::String(s)) => Ok(Some(s.as_str())),
-            Some(other) => Err(InputError::new(
-                self.field(key),
-                show(other),
-                allowed.to_string(),
-            )),
+            Some(other) => Err(InputError::new(self.field(key), show(other), allowed.to_string())),
         }
     }
 
     /// A required string.
     pub fn str(&mut self, key: &str, allowed: &str) -> Result<&'a str, InputError> {
-        self.opt_str(key, allowed)?
-            .ok_or_else(|| self.missing(key, allowed))
+        self.opt_str(key, allowed)?.ok_or_else(|| self.missing(key, allowed))
     }
 
     /// An optional string that must be one of `choices`.
-    pub fn opt_choice(
-        &mut self,
-        key: &str,
-        choices: &[&str],
-    ) -> Result<Option<&'a str>, InputError> {
+    pub fn opt_choice(&mut self, key: &str, choices: &[&str]) -> Result<Option<&'a str>, InputError> {
         let allowed = format!("one of {}", choices.join(", "));
         match self.opt_str(key, &allowed)? {
             None => Ok(None),
@@ -199,36 +152,23 @@ impl<'a> Section<'a> {
     /// A required string that must be one of `choices`.
     pub fn choice(&mut self, key: &str, choices: &[&str]) -> Result<&'a str, InputError> {
         let allowed = format!("one of {}", choices.join(", "));
-        self.opt_choice(key, choices)?
-            .ok_or_else(|| self.missing(key, &allowed))
+        self.opt_choice(key, choices)?.ok_or_else(|| self.missing(key, &allowed))
     }
 
     /// An optional array of strings, each checked by `check`.
-    pub fn opt_str_list(
-        &mut self,
-        key: &str,
-        allowed: &str,
-    ) -> Result<Option<Vec<String>>, InputError> {
+    pub fn opt_str_list(&mut self, key: &str, allowed: &str) -> Result<Option<Vec<String>>, InputError> {
         let Some(v) = self.get(key) else {
             return Ok(None);
         };
         let Value::Array(items) = v else {
-            return Err(InputError::new(
-                self.field(key),
-                show(v),
-                format!("an array of strings: {allowed}"),
-            ));
+            return Err(InputError::new(self.field(key), show(v), format!("an array of strings: {allowed}")));
         };
         items
             .iter()
             .enumerate()
             .map(|(n, item)| match item {
                 Value::String(s) => Ok(s.clone()),
-                other => Err(InputError::new(
-                    format!("{}[{n}]", self.field(key)),
-                    show(other),
-                    allowed.to_string(),
-                )),
+                other => Err(InputError::new(format!("{}[{n}]", self.field(key)), show(other), allowed.to_string())),
             })
             .collect::<Result<Vec<_>, _>>()
             .map(Some)
@@ -239,18 +179,13 @@ impl<'a> Section<'a> {
         match self.get(key) {
             None => Ok(None),
             Some(Value::Table(t)) => Ok(Some(Section::new(self.field(key), t))),
-            Some(other) => Err(InputError::new(
-                self.field(key),
-                show(other),
-                "a table ([section])",
-            )),
+            Some(other) => Err(InputError::new(self.field(key), show(other), "a table ([section])")),
         }
     }
 
     /// A required sub-table.
     pub fn table(&mut self, key: &str) -> Result<Section<'a>, InputError> {
-        self.opt_table(key)?
-            .ok_or_else(|| self.missing(key, "a table ([section])"))
+        self.opt_table(key)?.ok_or_else(|| self.missing(key, "a table ([section])"))
     }
 
     /// Keys of this table (for sections whose keys are names, like `[external]`).

@@ -21,30 +21,17 @@ pub struct CreepageTable {
 impl CreepageTable {
     /// Read `path`; errors name `field` (the scene key), the row and column.
     pub fn from_file(path: &Path, field: &str) -> Result<Self, InputError> {
-        let text = std::fs::read_to_string(path).map_err(|e| {
-            InputError::new(
-                field,
-                path.display(),
-                format!("an existing, readable CSV file ({e})"),
-            )
-        })?;
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| InputError::new(field, path.display(), format!("an existing, readable CSV file ({e})")))?;
         Self::from_csv(&text, &format!("{field} ({})", path.display()))
     }
 
     /// Parse CSV text.
     pub fn from_csv(text: &str, origin: &str) -> Result<Self, InputError> {
-        let mut rdr = csv::ReaderBuilder::new()
-            .trim(csv::Trim::All)
-            .from_reader(text.as_bytes());
+        let mut rdr = csv::ReaderBuilder::new().trim(csv::Trim::All).from_reader(text.as_bytes());
         let header: Vec<String> = rdr
             .headers()
-            .map_err(|e| {
-                InputError::new(
-                    origin,
-                    "unreadable header",
-                    format!("a CSV header line ({e})"),
-                )
-            })?
+            .map_err(|e| InputError::new(origin, "unreadable header", format!("a CSV header line ({e})")))?
             .iter()
             .map(str::to_string)
             .collect();
@@ -86,11 +73,7 @@ impl CreepageTable {
             for (c, cell) in rec.iter().enumerate() {
                 let name = &header[c];
                 let v: f64 = cell.parse().map_err(|_| {
-                    InputError::new(
-                        format!("{origin} line {row} column {name}"),
-                        format!("{cell:?}"),
-                        "a number",
-                    )
+                    InputError::new(format!("{origin} line {row} column {name}"), format!("{cell:?}"), "a number")
                 })?;
                 let ok = match name.as_str() {
                     "t_s" => v.is_finite() && v >= 0.0,
@@ -105,21 +88,12 @@ impl CreepageTable {
                         "cs" => "a finite spin in [-10, 10] 1/mm",
                         _ => "a finite number > 0",
                     };
-                    return Err(InputError::new(
-                        format!("{origin} line {row} column {name}"),
-                        v,
-                        allowed,
-                    ));
+                    return Err(InputError::new(format!("{origin} line {row} column {name}"), v, allowed));
                 }
                 cols[c].push(v);
             }
         }
-        let col = |name: &str| {
-            header
-                .iter()
-                .position(|h| h == name)
-                .map(|i| cols[i].clone())
-        };
+        let col = |name: &str| header.iter().position(|h| h == name).map(|i| cols[i].clone());
         let t_s = col("t_s").unwrap_or_default();
         if t_s.is_empty() {
             return Err(InputError::new(origin, "no data rows", "at least one row"));

@@ -15,30 +15,20 @@ pub struct SlipRates {
 
 impl SlipRates {
     pub fn new(cx: f64, cy: f64, cs_per_mm: f64, flex: &Flexibilities) -> Self {
-        SlipRates {
-            cx_l1: cx / flex.l1_mm3_n,
-            cy_l2: cy / flex.l2_mm3_n,
-            cs_l3: cs_per_mm / flex.l3_mm3_n,
-        }
+        SlipRates { cx_l1: cx / flex.l1_mm3_n, cy_l2: cy / flex.l2_mm3_n, cs_l3: cs_per_mm / flex.l3_mm3_n }
     }
 
     /// Traction gained over one element length dx at centre (x, y), source at the centre
     /// (the UBA's discretisation, Eq. 3.9–3.10 times dt·V = dx at courant 1).
     #[inline]
     pub fn over_element(&self, x: f64, y: f64, dx: f64) -> (f64, f64) {
-        (
-            (self.cx_l1 - self.cs_l3 * y) * dx,
-            (self.cy_l2 + self.cs_l3 * x) * dx,
-        )
+        ((self.cx_l1 - self.cs_l3 * y) * dx, (self.cy_l2 + self.cs_l3 * x) * dx)
     }
 
     /// Traction gained rolling from x0 to x1 at row y, integrated exactly (thesis Eq. 2.34).
     #[inline]
     pub fn between(&self, x0: f64, x1: f64, y: f64) -> (f64, f64) {
-        (
-            (self.cx_l1 - self.cs_l3 * y) * (x1 - x0),
-            self.cy_l2 * (x1 - x0) + 0.5 * self.cs_l3 * (x1 * x1 - x0 * x0),
-        )
+        ((self.cx_l1 - self.cs_l3 * y) * (x1 - x0), self.cy_l2 * (x1 - x0) + 0.5 * self.cs_l3 * (x1 * x1 - x0 * x0))
     }
 }
 
@@ -105,10 +95,7 @@ pub struct Tractions {
 
 impl Tractions {
     pub fn zero(n: usize) -> Self {
-        Tractions {
-            tx: vec![0.0; n],
-            ty: vec![0.0; n],
-        }
+        Tractions { tx: vec![0.0; n], ty: vec![0.0; n] }
     }
 }
 

@@ -29,10 +29,8 @@ impl Solver for External {
 
     fn run(&self, problem: &Problem) -> Result<History, Error> {
         let fail = |m: String| super::fail(problem, &self.spec.name, m);
-        let dir = tempfile::Builder::new()
-            .prefix("creepbench-ext")
-            .tempdir()
-            .map_err(|e| fail(format!("temp dir: {e}")))?;
+        let dir =
+            tempfile::Builder::new().prefix("creepbench-ext").tempdir().map_err(|e| fail(format!("temp dir: {e}")))?;
         let scene_json = dir.path().join("scene.json");
         let out_csv = dir.path().join(format!("{}.csv", self.spec.name));
         let json = crate::output::scene_json(problem, &problem.solvers);
@@ -55,10 +53,9 @@ impl Solver for External {
         if !status.success() {
             return Err(fail(format!("{} exited with {status}", program.display())));
         }
-        let text = std::fs::read_to_string(&out_csv)
-            .map_err(|e| fail(format!("no output {}: {e}", out_csv.display())))?;
-        let h = History::from_csv(&self.spec.name, &text)
-            .map_err(|e| fail(format!("output CSV: {e}")))?;
+        let text =
+            std::fs::read_to_string(&out_csv).map_err(|e| fail(format!("no output {}: {e}", out_csv.display())))?;
+        let h = History::from_csv(&self.spec.name, &text).map_err(|e| fail(format!("output CSV: {e}")))?;
         let expected: Vec<usize> = problem
             .initial
             .filter(|_| problem.init == crate::scene::InitKind::Steady)
@@ -67,11 +64,7 @@ impl Solver for External {
             .map(|s| s.step)
             .collect();
         let got: Vec<usize> = h.rows.iter().map(|r| r.step).collect();
-        let got_core: Vec<usize> = got
-            .iter()
-            .copied()
-            .filter(|&s| s != 0 || expected.first() == Some(&0))
-            .collect();
+        let got_core: Vec<usize> = got.iter().copied().filter(|&s| s != 0 || expected.first() == Some(&0)).collect();
         if got_core != expected {
             return Err(fail(format!(
                 "output has steps {}..{} ({} rows), the scene has {} steps",
@@ -81,15 +74,8 @@ impl Solver for External {
                 expected.len()
             )));
         }
-        if let Some(r) = h
-            .rows
-            .iter()
-            .find(|r| !r.fx_over_fn.is_finite() || !r.fy_over_fn.is_finite())
-        {
-            return Err(fail(format!(
-                "non-finite traction coefficient at step {}",
-                r.step
-            )));
+        if let Some(r) = h.rows.iter().find(|r| !r.fx_over_fn.is_finite() || !r.fy_over_fn.is_finite()) {
+            return Err(fail(format!("non-finite traction coefficient at step {}", r.step)));
         }
         Ok(h)
     }

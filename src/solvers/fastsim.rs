@@ -49,9 +49,7 @@ impl Solver for Fastsim {
         let mut h = History::new(self.name(), &EXTRA);
         let mut t = Tractions::zero(problem.grid.len());
         let mut local = problem.local_contact(problem.hertz.fn_n);
-        let initial = problem
-            .initial
-            .filter(|_| problem.init == crate::scene::InitKind::Steady);
+        let initial = problem.initial.filter(|_| problem.init == crate::scene::InitKind::Steady);
         for s in initial.iter().chain(problem.samples.iter()) {
             if s.fn_n != local.hertz.fn_n {
                 local = problem.local_contact(s.fn_n);

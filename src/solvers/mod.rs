@@ -35,9 +35,5 @@ pub fn by_name(name: &str, problem: &Problem) -> Option<Box<dyn Solver>> {
 
 /// A solver failure for `problem`.
 pub(crate) fn fail(problem: &Problem, solver: &str, message: impl Into<String>) -> Error {
-    Error::Solve {
-        scene: problem.name.clone(),
-        solver: solver.into(),
-        message: message.into(),
-    }
+    Error::Solve { scene: problem.name.clone(), solver: solver.into(), message: message.into() }
 }

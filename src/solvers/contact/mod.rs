@@ -15,10 +15,6 @@ impl Solver for ContactSolver {
     }
 
     fn run(&self, problem: &Problem) -> Result<History, Error> {
-        Err(super::fail(
-            problem,
-            "contact",
-            "the CONTACT-style solver is not available in this build yet",
-        ))
+        Err(super::fail(problem, "contact", "the CONTACT-style solver is not available in this build yet"))
     }
 }

@@ -1,0 +1,57 @@
+//! Speed targets (issues 2 and 4): UBA ≤ 2 ns per element-step, FASTSIM ≤ 5 µs per creepage at
+//! 22×22; the CONTACT-style solver per step at 22, 44, 88 on sine_f30_mu10.
+//! Run: `cargo bench --bench solvers` (criterion prints time per iteration; divide the UBA time
+//! by mx·my for ns per element-step — scripts/bench_table.sh does it).
+
+use creepbench::problem::Problem;
+use creepbench::scene::Scene;
+use creepbench::solvers::brush::{SlipRates, Tractions};
+use creepbench::solvers::{fastsim::Fastsim, uba};
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use std::hint::black_box;
+use std::path::Path;
+
+fn problem(grid: usize) -> Problem {
+    let text = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/thesis/sine_f30_mu10.toml"))
+        .unwrap();
+    let text = text.replace("mx = 22", &format!("mx = {grid}")).replace("my = 22", &format!("my = {grid}"));
+    Problem::resolve(&Scene::from_toml(&text, Path::new(".")).unwrap()).unwrap()
+}
+
+fn bench_uba(c: &mut Criterion) {
+    let mut g = c.benchmark_group("uba_step");
+    for grid in [22, 44, 88] {
+        let p = problem(grid);
+        let local = p.local_contact(p.hertz.fn_n);
+        let rates = SlipRates::new(0.005, 0.0, 0.0, &local.flex);
+        let (mut t, mut u) = (Tractions::zero(p.grid.len()), Tractions::zero(p.grid.len()));
+        let mut prep = uba::Prepared::new(&p.grid, &local.pressure_mpa, 1.0);
+        g.throughput(Throughput::Elements((grid * grid) as u64));
+        g.bench_with_input(BenchmarkId::from_parameter(grid), &grid, |b, _| {
+            b.iter(|| {
+                let ab = (p.hertz.a_mm, p.hertz.b_mm);
+                let n = uba::step(&p.grid, &mut prep, black_box(&rates), 1.0, p.model.leading_edge, ab, &t, &mut u);
+                std::mem::swap(&mut t, &mut u);
+                n
+            })
+        });
+    }
+    g.finish();
+}
+
+fn bench_fastsim(c: &mut Criterion) {
+    let mut g = c.benchmark_group("fastsim_creepage");
+    for grid in [22, 44, 88] {
+        let p = problem(grid);
+        let local = p.local_contact(p.hertz.fn_n);
+        let sample = p.samples[3];
+        let mut t = Tractions::zero(p.grid.len());
+        g.bench_with_input(BenchmarkId::from_parameter(grid), &grid, |b, _| {
+            b.iter(|| Fastsim::solve(&p, black_box(&sample), &local, &mut t))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench_uba, bench_fastsim);
+criterion_main!(benches);

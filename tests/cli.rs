@@ -1,0 +1,174 @@
+//! `creepbench simulate` end to end: the interface.md contract, bad input, determinism.
+
+mod common;
+use common::*;
+use std::path::Path;
+use std::process::Command;
+
+fn creepbench(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_creepbench")).args(args).output().expect("runs")
+}
+
+/// Every thesis scene runs with uba and fastsim and writes the files interface.md promises.
+#[test]
+fn simulate_every_thesis_scene() {
+    let out = tempfile::tempdir().unwrap();
+    let mut n = 0;
+    for entry in std::fs::read_dir(root().join("scenes/thesis")).unwrap() {
+        let path = entry.unwrap().path();
+        let o = creepbench(&[
+            "simulate",
+            path.to_str().unwrap(),
+            "--solver",
+            "uba",
+            "--solver",
+            "fastsim",
+            "--out",
+            out.path().to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}: {}", path.display(), String::from_utf8_lossy(&o.stderr));
+        let name = path.file_stem().unwrap().to_str().unwrap();
+        let dir = out.path().join(name);
+        for solver in ["uba", "fastsim"] {
+            let text = std::fs::read_to_string(dir.join(format!("{solver}.csv"))).unwrap();
+            assert!(text.starts_with("step,t_s,cx,cy,cs,fn_n,fx_over_fn,fy_over_fn"), "{name}/{solver}.csv header");
+            let rows = text.lines().count() - 1;
+            let reference_rows = reference(name, "step").len();
+            assert_eq!(rows, reference_rows, "{name}/{solver}: {rows} rows, CONTACT has {reference_rows}");
+        }
+        assert!(!dir.join("contact.csv").exists(), "contact was narrowed away");
+        let json: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(dir.join("scene.json")).unwrap()).unwrap();
+        for key in ["a_mm", "b_mm", "p0_mpa", "c11", "c22", "c23", "dx_mm", "dy_mm", "dt_s", "n_steps"] {
+            assert!(json[key].is_number(), "{name}: scene.json lacks {key}");
+        }
+        assert_eq!(json["solvers"], serde_json::json!(["uba", "fastsim"]));
+        let metrics = std::fs::read_to_string(dir.join("metrics.csv")).unwrap();
+        assert!(metrics.starts_with("solver,metric,value"));
+        n += 1;
+    }
+    assert_eq!(n, 41, "one scene per CONTACT case");
+}
+
+/// The CSVs are byte-identical run to run.
+#[test]
+fn simulate_is_deterministic() {
+    let (a, b) = (tempfile::tempdir().unwrap(), tempfile::tempdir().unwrap());
+    let scene = root().join("scenes/thesis/sine_f30_mu10.toml");
+    for d in [&a, &b] {
+        let o = creepbench(&[
+            "simulate",
+            scene.to_str().unwrap(),
+            "--solver",
+            "uba",
+            "--solver",
+            "fastsim",
+            "--out",
+            d.path().to_str().unwrap(),
+        ]);
+        assert!(o.status.success());
+    }
+    for f in ["uba.csv", "fastsim.csv", "metrics.csv", "scene.json"] {
+        let read = |d: &Path| std::fs::read(d.join("sine_f30_mu10").join(f)).unwrap();
+        assert_eq!(read(a.path()), read(b.path()), "{f} differs");
+    }
+}
+
+fn base() -> String {
+    scene_text("bad", "[\"uba\", \"fastsim\"]", 0.4, 22, "kind = \"step\"\nc = 0.005\nsteps = 10", "")
+}
+
+/// Bad input: exit 2, a message naming the field, the value and what is allowed, nothing written.
+#[test]
+fn bad_input_exits_2_and_writes_nothing() {
+    let cases: Vec<(String, &str, &str)> = vec![
+        (base().replace("fn_n = 100000.0", "fn_n = -5.0"), "contact.fn_n", "-5"),
+        (base().replace("mu = 0.4", "mu = nan"), "contact.mu", "NaN"),
+        (base().replace("mu = 0.4", "mu = inf"), "contact.mu", "inf"),
+        (base().replace("[grid]", "[grid]\nmz = 3"), "grid.mz", "no such key"),
+        (base().replace("mx = 22", "mx = \"22\""), "grid.mx", "whole number"),
+        (base().replace("mx = 22", "mx = 0"), "grid.mx", "[1, 512]"),
+        (base().replace("[\"uba\", \"fastsim\"]", "[\"uba\", \"brush\"]"), "solvers[1]", "\"brush\""),
+        (base() + "[rolling]\ncourant = 1.5\n", "rolling.courant", "courant <= 1"),
+        (
+            base().replace("kind = \"step\"\nc = 0.005\nsteps = 10", "kind = \"table\"\nfile = \"missing.csv\""),
+            "creepage.file",
+            "missing.csv",
+        ),
+        (base().replace("kind = \"step\"", "kind = \"ramp\""), "creepage.kind", "step, sine, sweep, table"),
+        (base().replace("poisson = 0.28", "poisson = 0.5"), "material.poisson", "[0, 0.5)"),
+        (base().replace("name = \"bad\"", "name = \"Bad Name\""), "name", "[a-z0-9_]"),
+        (base() + "[model]\npressure = \"hertzian\"\n", "model.pressure", "parabolic, ellipsoidal"),
+        ("name = \"x\"\nsolvers = [\"uba\"\n".to_string(), "scene", "malformed TOML"),
+        (base().replace("[material]\ng_mpa = 82000.0\n", "[material]\n"), "material.g_mpa", "missing"),
+        (base().replace("c = 0.005", "c = 2.0"), "creepage.c", "[-1, 1]"),
+        (base().replace("steps = 10", "steps = 10.5"), "creepage.steps", "whole number"),
+        (base() + "unknown_top = 1\n", "unknown_top", "no such key"),
+    ];
+    for (text, field, expect) in cases {
+        let dir = tempfile::tempdir().unwrap();
+        let scene = dir.path().join("scene.toml");
+        std::fs::write(&scene, &text).unwrap();
+        let out = dir.path().join("out");
+        let o = creepbench(&["simulate", scene.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{field}: exit {:?}, stderr {err}", o.status.code());
+        assert!(err.contains(field), "message must name {field}: {err}");
+        assert!(err.contains(expect), "message must contain {expect:?}: {err}");
+        assert!(!err.contains("panicked"), "{err}");
+        assert!(!out.exists() || std::fs::read_dir(&out).unwrap().next().is_none(), "{field}: output written");
+    }
+}
+
+/// A table file with a bad cell names the file, line and column.
+#[test]
+fn bad_table_names_line_and_column() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("t.csv"), "t_s,cx,fn_n\n0,0,100000\n0.01,0.005,-3\n").unwrap();
+    let text = base().replace("kind = \"step\"\nc = 0.005\nsteps = 10", "kind = \"table\"\nfile = \"t.csv\"");
+    std::fs::write(dir.path().join("s.toml"), text).unwrap();
+    let o = creepbench(&[
+        "simulate",
+        dir.path().join("s.toml").to_str().unwrap(),
+        "--out",
+        dir.path().join("o").to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("line 3 column fn_n") && err.contains("-3"), "{err}");
+}
+
+/// A table may vary FN and μ in time; the history follows it.
+#[test]
+fn table_kind_varies_load_and_friction() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("t.csv"), "t_s,cx,fn_n,mu\n0,0.002,100000,0.4\n0.02,0.002,50000,0.2\n").unwrap();
+    let text = base().replace("kind = \"step\"\nc = 0.005\nsteps = 10", "kind = \"table\"\nfile = \"t.csv\"");
+    std::fs::write(dir.path().join("s.toml"), text).unwrap();
+    let o = creepbench(&[
+        "simulate",
+        dir.path().join("s.toml").to_str().unwrap(),
+        "--out",
+        dir.path().join("o").to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let h = creepbench::history::History::from_csv(
+        "uba",
+        &std::fs::read_to_string(dir.path().join("o/bad/uba.csv")).unwrap(),
+    )
+    .unwrap();
+    let dt: f64 = 2.0 * 8.56 / 22.0 / 1000.0;
+    assert_eq!(h.rows.len(), (0.02 / dt).floor() as usize);
+    let last = h.rows.last().unwrap();
+    assert!(last.fn_n < 52000.0 && last.fn_n > 50000.0, "fn interpolated: {}", last.fn_n);
+    assert!(last.fx_over_fn <= 0.2 + 1e-12);
+}
+
+/// --solver must name one of the scene's solvers.
+#[test]
+fn solver_flag_is_validated() {
+    let scene = root().join("scenes/thesis/step_mu04.toml");
+    let o = creepbench(&["simulate", scene.to_str().unwrap(), "--solver", "nope", "--out", "/nonexistent/x"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--solver"));
+}
