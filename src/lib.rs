@@ -5,6 +5,7 @@
 //! [`solvers`] (UBA, FASTSIM, CONTACT-style, external) → [`history`] → [`metrics`] →
 //! [`harness`] (reference and golden comparison, report). [`physics`] is shared by all solvers.
 
+pub mod commands;
 pub mod error;
 pub mod harness;
 pub mod history;

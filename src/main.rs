@@ -1,20 +1,39 @@
-//! The `creepbench` command line.
+//! The `creepbench` command line (interface.md; README "Commands").
 
 use clap::{Parser, Subcommand};
-use creepbench::error::Error;
-use creepbench::{output, pipeline};
+use creepbench::commands;
+use creepbench::harness::suite::{Shard, DEFAULT_SUITE};
 use std::path::PathBuf;
 
 #[derive(Parser)]
-#[command(name = "creepbench", version, about = "Validate and benchmark wheel-rail creep-force models")]
+#[command(name = "creepbench", version, about = "Validate and benchmark wheel-rail creep-force models against CONTACT")]
 struct Cli {
     #[command(subcommand)]
     command: Command,
 }
 
+#[derive(clap::Args)]
+struct SuiteArgs {
+    /// Folder of scene files.
+    #[arg(long, default_value = DEFAULT_SUITE)]
+    suite: PathBuf,
+    /// Reference data (CONTACT, thesis).
+    #[arg(long, default_value = "reference")]
+    reference: PathBuf,
+    /// Golden data (this project's blessed results).
+    #[arg(long, default_value = "golden")]
+    golden: PathBuf,
+    /// Run only shard i of n (deterministic by scene name), e.g. 1/2.
+    #[arg(long)]
+    shard: Option<Shard>,
+    /// No progress bar.
+    #[arg(long)]
+    quiet: bool,
+}
+
 #[derive(Subcommand)]
 enum Command {
-    /// Run one scene and write DIR/<name>/{scene.json,<solver>.csv,metrics.csv}.
+    /// Run one scene and write OUT/<name>/{scene.json,<solver>.csv,metrics.csv}.
     Simulate {
         /// The scene file (TOML).
         scene: PathBuf,
@@ -25,27 +44,58 @@ enum Command {
         #[arg(long, default_value = "out")]
         out: PathBuf,
     },
-}
-
-fn simulate(scene: PathBuf, solvers: Vec<String>, out: PathBuf) -> Result<(), Error> {
-    let problem = pipeline::load(&scene, &solvers)?;
-    for w in &problem.warnings {
-        eprintln!("warning: {w}");
-    }
-    let result = pipeline::run(problem)?;
-    let files = output::scene_files(&result.problem, &result.histories, &result.metrics);
-    let dir = output::write_folder_atomically(&out, &result.problem.name, &files)?;
-    for (h, w) in result.histories.iter().zip(&result.wall_s) {
-        eprintln!("{}: {} rows in {:.3} s", h.solver, h.rows.len(), w);
-    }
-    println!("{}", dir.display());
-    Ok(())
+    /// Run the suite (default: the thesis scenes) and write the report (reports/validation.md).
+    Run {
+        #[command(flatten)]
+        suite: SuiteArgs,
+        /// Where the per-scene results go.
+        #[arg(long, default_value = "out/results")]
+        results: PathBuf,
+        /// Where the report goes.
+        #[arg(long, default_value = "reports")]
+        report: PathBuf,
+    },
+    /// Run the suite and compare with golden/ (or --against DIR) and the references; exit 1 on drift.
+    Check {
+        #[command(flatten)]
+        suite: SuiteArgs,
+        /// Compare with this result folder (from `run --results`) instead of golden/.
+        #[arg(long)]
+        against: Option<PathBuf>,
+    },
+    /// Run the suite and write its results into golden/ (the only command that writes golden data).
+    Bless {
+        #[command(flatten)]
+        suite: SuiteArgs,
+    },
+    /// Build one report from the result folders of several shards.
+    Merge {
+        /// Result folders written by `run --shard i/n --results DIR`.
+        #[arg(required = true)]
+        dirs: Vec<PathBuf>,
+        #[arg(long, default_value = "reference")]
+        reference: PathBuf,
+        #[arg(long, default_value = "golden")]
+        golden: PathBuf,
+        #[arg(long, default_value = "reports")]
+        report: PathBuf,
+    },
 }
 
 fn main() {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Simulate { scene, solvers, out } => simulate(scene, solvers, out),
+        Command::Simulate { scene, solvers, out } => {
+            commands::simulate(&scene, &solvers, &out).map(|d| println!("{}", d.display()))
+        }
+        Command::Run { suite: s, results, report } => {
+            commands::run(&s.suite, &s.reference, &results, &report, s.shard, &s.golden, !s.quiet)
+        }
+        Command::Check { suite: s, against } => {
+            commands::check(&s.suite, &s.reference, &s.golden, against.as_deref(), s.shard, !s.quiet)
+        }
+        Command::Bless { suite: s } => commands::bless(&s.suite, &s.golden, s.shard, !s.quiet),
+        Command::Merge { dirs, reference, golden, report } => commands::merge(&dirs, &reference, &report, &golden),
     };
     if let Err(e) = result {
         eprintln!("error: {e}");

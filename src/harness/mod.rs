@@ -1,1 +1,12 @@
-//! Steps 6–7 of the pipeline: comparison against reference and golden data, and the report.
+//! Steps 6–7 of the pipeline: running a suite of scenes, comparing their results with
+//! reference data (CONTACT, thesis) and golden data (this project's blessed results), and the
+//! Markdown report. Only solver outputs (histories, metrics) are used here, never solver internals.
+
+pub mod compare;
+pub mod plot;
+pub mod reference;
+pub mod report;
+pub mod results;
+pub mod sections;
+pub mod suite;
+pub mod tolerances;

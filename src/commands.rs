@@ -1,0 +1,236 @@
+//! The subcommands behind the CLI: simulate, run, check, bless, merge.
+
+use crate::error::{Error, InputError};
+use crate::harness::compare::{self, Against, Finding};
+use crate::harness::reference::References;
+use crate::harness::report::{self, ReportInput};
+use crate::harness::results::{self, StoredScene};
+use crate::harness::sections;
+use crate::harness::suite::{self, Shard};
+use crate::{output, pipeline};
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// `creepbench simulate`: one scene into `out/<name>/`.
+pub fn simulate(scene: &Path, solvers: &[String], out: &Path) -> Result<PathBuf, Error> {
+    let problem = pipeline::load(scene, solvers)?;
+    for w in &problem.warnings {
+        eprintln!("warning: {w}");
+    }
+    let result = pipeline::run(problem)?;
+    let files = output::scene_files(&result.problem, &result.histories, &result.metrics);
+    let dir = output::write_folder_atomically(out, &result.problem.name, &files)?;
+    for (h, w) in result.histories.iter().zip(&result.wall_s) {
+        eprintln!("{}: {} rows in {:.3} s", h.solver, h.rows.len(), w);
+    }
+    Ok(dir)
+}
+
+/// Run a suite (or one shard) and return its results as stored scenes.
+fn run_suite(suite_dir: &Path, shard: Option<Shard>, progress: bool) -> Result<Vec<StoredScene>, Error> {
+    let files = suite::scene_files(suite_dir, shard)?;
+    if files.is_empty() {
+        return Err(InputError::new(
+            "--suite",
+            suite_dir.display(),
+            "a folder with at least one scene (*.toml) in this shard",
+        )
+        .into());
+    }
+    let start = Instant::now();
+    let results = suite::run(&files, progress)?;
+    eprintln!("ran {} scene(s) in {:.2} s", results.len(), start.elapsed().as_secs_f64());
+    Ok(results.iter().map(StoredScene::from_result).collect())
+}
+
+fn write_results(dir: &Path, scenes: &[StoredScene], with_timing: bool) -> Result<(), Error> {
+    for s in scenes {
+        let mut files: Vec<(String, String)> =
+            vec![("scene.json".into(), serde_json::to_string_pretty(&s.scene).unwrap_or_default() + "\n")];
+        for (solver, h) in &s.histories {
+            files.push((format!("{solver}.csv"), h.to_csv()));
+        }
+        let metrics: Vec<crate::metrics::Metric> = s
+            .metrics
+            .iter()
+            .map(|((solver, name, step), v)| crate::metrics::Metric {
+                solver: solver.clone(),
+                name: name.clone(),
+                value: *v,
+                step: *step,
+            })
+            .collect();
+        files.push(("metrics.csv".into(), crate::metrics::to_csv(&metrics)));
+        if with_timing {
+            let mut t = String::from("solver,wall_s,steps\n");
+            for (solver, w) in &s.wall_s {
+                t.push_str(&format!("{solver},{w},{}\n", s.histories.get(solver).map(|h| h.rows.len()).unwrap_or(0)));
+            }
+            files.push(("timing.csv".into(), t));
+        }
+        output::write_folder_atomically(dir, &s.name, &files)?;
+    }
+    Ok(())
+}
+
+fn findings(
+    scenes: &[StoredScene],
+    refs: &References,
+    baseline: Option<(&Path, Against)>,
+) -> Result<Vec<Finding>, Error> {
+    let mut out = Vec::new();
+    for s in scenes {
+        out.extend(compare::against_references(s, refs)?);
+        if let Some((dir, against)) = baseline {
+            let theirs = if dir.join(&s.name).join("scene.json").exists() {
+                Some(results::read_scene(dir, &s.name)?)
+            } else {
+                None
+            };
+            out.extend(compare::against_results(s, theirs.as_ref(), against));
+        }
+    }
+    Ok(out)
+}
+
+/// Build the report from stored scenes.
+pub fn build_report(
+    scenes: &[StoredScene],
+    refs: &References,
+    out: &Path,
+    golden: Option<&Path>,
+) -> Result<PathBuf, Error> {
+    let findings = findings(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
+    std::fs::create_dir_all(out.join("figures"))?;
+    let mut extra = vec![("The thesis's figures beside ours".to_string(), sections::thesis_beside_ours(refs))];
+    if let Some(s) = sections::error_vs_time(scenes, refs, &out.join("figures")) {
+        extra.push(("Error against run time".into(), s));
+    }
+    extra.push(("Timing".into(), sections::timing(scenes, refs)));
+    // The report writer recreates figures/; keep the error plot by writing it after.
+    let svg = std::fs::read(out.join("figures/error_vs_time.svg")).ok();
+    report::write(out, &ReportInput { scenes, refs, findings: &findings, extra_sections: extra })?;
+    if let Some(svg) = svg {
+        std::fs::write(out.join("figures/error_vs_time.svg"), svg)?;
+    }
+    Ok(out.join("validation.md"))
+}
+
+/// `creepbench run`: the suite (default: the thesis scenes) → results folders and the report.
+pub fn run(
+    suite_dir: &Path,
+    reference: &Path,
+    results_dir: &Path,
+    report_dir: &Path,
+    shard: Option<Shard>,
+    golden: &Path,
+    progress: bool,
+) -> Result<(), Error> {
+    let refs = References::load(reference)?;
+    let scenes = run_suite(suite_dir, shard, progress)?;
+    write_results(results_dir, &scenes, true)?;
+    eprintln!("results in {}", results_dir.display());
+    if shard.is_some() {
+        eprintln!("shard done; build the report with `creepbench merge {} ...`", results_dir.display());
+        return Ok(());
+    }
+    let md = build_report(&scenes, &refs, report_dir, Some(golden))?;
+    println!("{}", md.display());
+    Ok(())
+}
+
+/// `creepbench merge`: one report from the result folders of several shards.
+pub fn merge(dirs: &[PathBuf], reference: &Path, report_dir: &Path, golden: &Path) -> Result<(), Error> {
+    let refs = References::load(reference)?;
+    let mut scenes = Vec::new();
+    for d in dirs {
+        for name in results::scene_names(d) {
+            if scenes.iter().any(|s: &StoredScene| s.name == name) {
+                return Err(InputError::new("merge", d.join(&name).display(), "each scene in one shard only").into());
+            }
+            scenes.push(results::read_scene(d, &name)?);
+        }
+    }
+    scenes.sort_by(|a, b| a.name.cmp(&b.name));
+    let md = build_report(&scenes, &refs, report_dir, Some(golden))?;
+    println!("{}", md.display());
+    Ok(())
+}
+
+/// `creepbench check`: run the suite, compare with golden/ (or `against`) and the references;
+/// print the worst point per scene and solver; fail on gated drift.
+pub fn check(
+    suite_dir: &Path,
+    reference: &Path,
+    golden: &Path,
+    against: Option<&Path>,
+    shard: Option<Shard>,
+    progress: bool,
+) -> Result<(), Error> {
+    let refs = References::load(reference)?;
+    let baseline = match against {
+        Some(dir) => {
+            if !dir.is_dir() {
+                return Err(InputError::new(
+                    "--against",
+                    dir.display(),
+                    "a folder of results written by `creepbench run` (--results)",
+                )
+                .into());
+            }
+            (dir, Against::Previous)
+        }
+        None => {
+            if !golden.is_dir() {
+                return Err(InputError::new(
+                    "--golden",
+                    golden.display(),
+                    "the golden folder (create it with `creepbench bless`)",
+                )
+                .into());
+            }
+            (golden, Against::Golden)
+        }
+    };
+    let scenes = run_suite(suite_dir, shard, progress)?;
+    let all = findings(&scenes, &refs, Some(baseline))?;
+    let worst = compare::worst_per_group(&all);
+    print!("{}", compare::table(&worst));
+    let fails = compare::failures(&all);
+    let gated = all.iter().filter(|f| f.gated).count();
+    if against.is_some() {
+        let moved: Vec<&Finding> = all.iter().filter(|f| f.against == Against::Previous && f.diff > 0.0).collect();
+        println!("\n{} quantities moved against {} (largest first):", moved.len(), baseline.0.display());
+        let mut moved = moved;
+        moved.sort_by(|a, b| b.diff.total_cmp(&a.diff));
+        for f in moved.iter().take(30) {
+            println!(
+                "  {} {} {} step {}: {} -> {} (|diff| {:.3e})",
+                f.scene,
+                f.solver,
+                f.quantity,
+                f.step.map(|s| s.to_string()).unwrap_or("-".into()),
+                f.theirs,
+                f.ours,
+                f.diff
+            );
+        }
+    }
+    println!("\n{} gated comparisons, {} failed", gated, fails.len());
+    if fails.is_empty() {
+        Ok(())
+    } else {
+        for f in &fails {
+            eprintln!("{f}");
+        }
+        Err(Error::Drift(format!("{} gated comparison(s) drifted", fails.len())))
+    }
+}
+
+/// `creepbench bless`: write the suite's results as the new golden data (the only writer of golden/).
+pub fn bless(suite_dir: &Path, golden: &Path, shard: Option<Shard>, progress: bool) -> Result<(), Error> {
+    let scenes = run_suite(suite_dir, shard, progress)?;
+    write_results(golden, &scenes, false)?;
+    eprintln!("blessed {} scene(s) into {}", scenes.len(), golden.display());
+    Ok(())
+}

@@ -1,0 +1,81 @@
+//! A suite: the scene files of a folder, optionally one shard of them, run in parallel.
+
+use crate::error::{Error, InputError};
+use crate::pipeline::{self, SceneResult};
+use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
+use std::path::{Path, PathBuf};
+
+/// The default suite: the thesis scenes.
+pub const DEFAULT_SUITE: &str = "scenes/thesis";
+
+/// `--shard i/n`: this run takes the scenes whose name hashes to i − 1 modulo n.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Shard {
+    pub index: usize,
+    pub count: usize,
+}
+
+impl std::str::FromStr for Shard {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        let (i, n) = s.split_once('/').ok_or_else(|| format!("--shard {s:?}: expected i/n, e.g. 1/2"))?;
+        let (i, n): (usize, usize) = (
+            i.parse().map_err(|_| format!("--shard {s:?}: i must be a whole number"))?,
+            n.parse().map_err(|_| format!("--shard {s:?}: n must be a whole number"))?,
+        );
+        if n == 0 || i == 0 || i > n {
+            return Err(format!("--shard {s:?}: need 1 <= i <= n"));
+        }
+        Ok(Shard { index: i, count: n })
+    }
+}
+
+impl Shard {
+    /// Whether `scene` belongs to this shard (FNV-1a of the name: stable across machines).
+    pub fn takes(&self, scene: &str) -> bool {
+        let h = scene.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| (h ^ b as u64).wrapping_mul(0x100_0000_01b3));
+        (h % self.count as u64) as usize == self.index - 1
+    }
+}
+
+/// The scene files of `dir` (sorted by name), restricted to `shard`.
+pub fn scene_files(dir: &Path, shard: Option<Shard>) -> Result<Vec<PathBuf>, Error> {
+    let entries = std::fs::read_dir(dir)
+        .map_err(|e| InputError::new("--suite", dir.display(), format!("a folder of scene files ({e})")))?;
+    let mut files: Vec<PathBuf> = entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    files.sort();
+    if let Some(s) = shard {
+        files.retain(|p| s.takes(p.file_stem().and_then(|n| n.to_str()).unwrap_or("")));
+    }
+    Ok(files)
+}
+
+/// Validate every scene first (bad input stops the run before anything is computed), then run
+/// them in parallel. The results come back in the files' order whatever the thread count.
+pub fn run(files: &[PathBuf], progress: bool) -> Result<Vec<SceneResult>, Error> {
+    let problems = files.iter().map(|f| pipeline::load(f, &[])).collect::<Result<Vec<_>, _>>()?;
+    let bar = if progress && files.len() > 1 {
+        let b = ProgressBar::new(problems.len() as u64);
+        b.set_style(
+            ProgressStyle::with_template("{bar:40} {pos}/{len} scenes {elapsed} {msg}")
+                .unwrap_or_else(|_| ProgressStyle::default_bar()),
+        );
+        b
+    } else {
+        ProgressBar::hidden()
+    };
+    let results = problems
+        .into_par_iter()
+        .map(|p| {
+            let r = pipeline::run(p);
+            bar.inc(1);
+            r
+        })
+        .collect::<Result<Vec<_>, _>>();
+    bar.finish_and_clear();
+    results
+}
