@@ -27,13 +27,14 @@ pub fn simulate(scene: &Path, solvers: &[String], out: &Path) -> Result<PathBuf,
 }
 
 /// Run a suite (or one shard) and return its results as stored scenes.
-fn run_suite(suite_dir: &Path, shard: Option<Shard>, progress: bool) -> Result<Vec<StoredScene>, Error> {
+fn run_suite(suite_dir: &[PathBuf], shard: Option<Shard>, progress: bool) -> Result<Vec<StoredScene>, Error> {
     let files = suite::scene_files(suite_dir, shard)?;
     if files.is_empty() {
+        let dirs: Vec<String> = suite_dir.iter().map(|d| d.display().to_string()).collect();
         return Err(InputError::new(
             "--suite",
-            suite_dir.display(),
-            "a folder with at least one scene (*.toml) in this shard",
+            dirs.join(", "),
+            "folders with at least one scene (*.toml) in this shard",
         )
         .into());
     }
@@ -106,6 +107,12 @@ pub fn build_report(
     if let Some(s) = sections::error_vs_time(scenes, refs, &out.join("figures")) {
         extra.push(("Error against run time".into(), s));
     }
+    if let Some(s) = sections::grid_convergence(scenes, refs) {
+        extra.push(("Convergence under grid refinement".into(), s));
+    }
+    if let Some(s) = sections::stability(scenes) {
+        extra.push(("Stability".into(), s));
+    }
     extra.push(("Timing".into(), sections::timing(scenes, refs)));
     // The report writer recreates figures/; keep the error plot by writing it after.
     let svg = std::fs::read(out.join("figures/error_vs_time.svg")).ok();
@@ -118,7 +125,7 @@ pub fn build_report(
 
 /// `creepbench run`: the suite (default: the thesis scenes) → results folders and the report.
 pub fn run(
-    suite_dir: &Path,
+    suite_dir: &[PathBuf],
     reference: &Path,
     results_dir: &Path,
     report_dir: &Path,
@@ -160,7 +167,7 @@ pub fn merge(dirs: &[PathBuf], reference: &Path, report_dir: &Path, golden: &Pat
 /// `creepbench check`: run the suite, compare with golden/ (or `against`) and the references;
 /// print the worst point per scene and solver; fail on gated drift.
 pub fn check(
-    suite_dir: &Path,
+    suite_dir: &[PathBuf],
     reference: &Path,
     golden: &Path,
     against: Option<&Path>,
@@ -228,7 +235,7 @@ pub fn check(
 }
 
 /// `creepbench bless`: write the suite's results as the new golden data (the only writer of golden/).
-pub fn bless(suite_dir: &Path, golden: &Path, shard: Option<Shard>, progress: bool) -> Result<(), Error> {
+pub fn bless(suite_dir: &[PathBuf], golden: &Path, shard: Option<Shard>, progress: bool) -> Result<(), Error> {
     let scenes = run_suite(suite_dir, shard, progress)?;
     write_results(golden, &scenes, false)?;
     eprintln!("blessed {} scene(s) into {}", scenes.len(), golden.display());

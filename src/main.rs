@@ -2,7 +2,7 @@
 
 use clap::{Parser, Subcommand};
 use creepbench::commands;
-use creepbench::harness::suite::{Shard, DEFAULT_SUITE};
+use creepbench::harness::suite::{Shard, DEFAULT_SUITES};
 use std::path::PathBuf;
 
 #[derive(Parser)]
@@ -14,9 +14,9 @@ struct Cli {
 
 #[derive(clap::Args)]
 struct SuiteArgs {
-    /// Folder of scene files.
-    #[arg(long, default_value = DEFAULT_SUITE)]
-    suite: PathBuf,
+    /// Folder(s) of scene files (repeatable).
+    #[arg(long, default_values = DEFAULT_SUITES)]
+    suite: Vec<PathBuf>,
     /// Reference data (CONTACT, thesis).
     #[arg(long, default_value = "reference")]
     reference: PathBuf,

@@ -80,6 +80,22 @@ pub fn settling_time(t: &[f64], f: &[f64]) -> Option<f64> {
     })
 }
 
+/// Oscillation index of a time history: the fraction of interior steps where the first
+/// difference of f changes sign between significant differences (> 1e-9 of the range of f).
+/// A smooth response scores about 2 per period (its extrema); a step-to-step sawtooth scores ~1.
+pub fn oscillation_index(f: &[f64]) -> f64 {
+    if f.len() < 3 {
+        return 0.0;
+    }
+    let (lo, hi) = f.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
+    let tiny = 1e-9 * (hi - lo).max(f64::MIN_POSITIVE);
+    let changes = f.windows(3).filter(|w| {
+        let (d0, d1) = (w[1] - w[0], w[2] - w[1]);
+        d0.abs() > tiny && d1.abs() > tiny && d0 * d1 < 0.0
+    });
+    changes.count() as f64 / (f.len() - 2) as f64
+}
+
 /// The metrics the problem asks for, computed on one history.
 pub fn compute(problem: &Problem, h: &History) -> Vec<Metric> {
     let t = h.column("t_s").unwrap_or_default();
@@ -111,6 +127,10 @@ pub fn compute(problem: &Problem, h: &History) -> Vec<Metric> {
                 // From the first step after the initial state.
                 let k0 = h.rows.iter().position(|r| r.step >= 1).unwrap_or(0);
                 push(m, settling_time(&t[k0..], &f[k0..]), None)
+            }
+            "oscillation_index" => {
+                let k0 = h.rows.iter().position(|r| r.step >= 1).unwrap_or(0);
+                push(m, Some(oscillation_index(&f[k0..])), None)
             }
             _ => {}
         }

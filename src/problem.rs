@@ -268,6 +268,7 @@ fn select_metrics(
                 Ok(())
             }
             "settling_time_s" if kind != LoadingKind::Step => Err("step creepage only".into()),
+            "oscillation_index" if kind == LoadingKind::Sweep => Err("time histories only".into()),
             _ => Ok(()),
         }
     };

@@ -4,10 +4,10 @@ use crate::error::{Error, InputError};
 use crate::pipeline::{self, SceneResult};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
-/// The default suite: the thesis scenes.
-pub const DEFAULT_SUITE: &str = "scenes/thesis";
+/// The default suites: the thesis scenes and the stability scenes.
+pub const DEFAULT_SUITES: [&str; 2] = ["scenes/thesis", "scenes/stability"];
 
 /// `--shard i/n`: this run takes the scenes whose name hashes to i − 1 modulo n.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -39,15 +39,17 @@ impl Shard {
     }
 }
 
-/// The scene files of `dir` (sorted by name), restricted to `shard`.
-pub fn scene_files(dir: &Path, shard: Option<Shard>) -> Result<Vec<PathBuf>, Error> {
-    let entries = std::fs::read_dir(dir)
-        .map_err(|e| InputError::new("--suite", dir.display(), format!("a folder of scene files ({e})")))?;
-    let mut files: Vec<PathBuf> = entries
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    files.sort();
+/// The scene files of the folders `dirs` (sorted by scene name), restricted to `shard`.
+pub fn scene_files(dirs: &[PathBuf], shard: Option<Shard>) -> Result<Vec<PathBuf>, Error> {
+    let mut files: Vec<PathBuf> = Vec::new();
+    for dir in dirs {
+        let entries = std::fs::read_dir(dir)
+            .map_err(|e| InputError::new("--suite", dir.display(), format!("a folder of scene files ({e})")))?;
+        files.extend(
+            entries.filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.extension().is_some_and(|x| x == "toml")),
+        );
+    }
+    files.sort_by(|a, b| a.file_name().cmp(&b.file_name()));
     if let Some(s) = shard {
         files.retain(|p| s.takes(p.file_stem().and_then(|n| n.to_str()).unwrap_or("")));
     }

@@ -15,7 +15,7 @@ use std::path::{Path, PathBuf};
 /// Names of the built-in solvers.
 pub const BUILTIN_SOLVERS: [&str; 3] = ["uba", "fastsim", "contact"];
 /// Metric names (interface.md, "Metric definitions").
-pub const METRICS: [&str; 4] = ["delay_ratio", "loop_area", "steady_value", "settling_time_s"];
+pub const METRICS: [&str; 5] = ["delay_ratio", "loop_area", "steady_value", "settling_time_s", "oscillation_index"];
 
 /// Largest grid accepted along either axis.
 pub const MAX_ELEMENTS_PER_AXIS: usize = 512;

@@ -154,3 +154,36 @@ pub fn coefficients(t: &Tractions, pressure: &[f64]) -> (f64, f64) {
 pub fn loaded(pressure: &[f64]) -> usize {
     pressure.iter().filter(|&&p| p > 0.0).count()
 }
+
+/// Spatial sawtooth indicator of a traction field: the fraction of interior loaded elements
+/// (along x, in each row) where the first difference of τx changes sign between significant
+/// differences. A smooth field scores near 0 (one change per row at most, at the peak); the
+/// odd-even mode of an unstable (e.g. downwind) scheme scores near 1 — even when the traction
+/// bound keeps |τ| ≤ μp, so bound checks alone would not see it.
+pub fn sawtooth_index(grid: &Grid, pressure: &[f64], t: &Tractions) -> f64 {
+    let scale = t.tx.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    if scale == 0.0 {
+        return 0.0;
+    }
+    let tiny = 1e-9 * scale;
+    let (mut changes, mut interior) = (0usize, 0usize);
+    for j in 0..grid.my {
+        for i in 1..grid.mx.saturating_sub(1) {
+            let k = grid.index(i, j);
+            if pressure[k - 1] <= 0.0 || pressure[k] <= 0.0 || pressure[k + 1] <= 0.0 {
+                continue;
+            }
+            interior += 1;
+            let (d0, d1) = (t.tx[k] - t.tx[k - 1], t.tx[k + 1] - t.tx[k]);
+            if d0.abs() > tiny && d1.abs() > tiny && d0 * d1 < 0.0 {
+                changes += 1;
+            }
+        }
+    }
+    let rows_with_peak = grid.my as f64;
+    if interior == 0 {
+        0.0
+    } else {
+        ((changes as f64 - rows_with_peak).max(0.0) / interior as f64).min(1.0)
+    }
+}

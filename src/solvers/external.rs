@@ -2,7 +2,8 @@
 //! history CSV in the `simulate` format. Protocol (README, "Bring your own model"):
 //! the command is run in the scene's folder as `COMMAND... SCENE_JSON OUT_CSV`; it must exit 0
 //! and leave OUT_CSV with the header `step,t_s,cx,cy,cs,fn_n,fx_over_fn,fy_over_fn[,...]` and
-//! one row per step of the scene (the step column must match the scene's steps).
+//! one row per step of the scene (the step column must match the scene's steps; a row for
+//! step 0, the initial state, is dropped unless the scene starts from a steady state).
 
 use super::Solver;
 use crate::error::Error;
@@ -55,22 +56,21 @@ impl Solver for External {
         }
         let text =
             std::fs::read_to_string(&out_csv).map_err(|e| fail(format!("no output {}: {e}", out_csv.display())))?;
-        let h = History::from_csv(&self.spec.name, &text).map_err(|e| fail(format!("output CSV: {e}")))?;
-        let expected: Vec<usize> = problem
-            .initial
-            .filter(|_| problem.init == crate::scene::InitKind::Steady)
-            .iter()
-            .chain(problem.samples.iter())
-            .map(|s| s.step)
-            .collect();
+        let mut h = History::from_csv(&self.spec.name, &text).map_err(|e| fail(format!("output CSV: {e}")))?;
+        // Step 0 (the initial state) is part of the output only when the scene starts steady.
+        let with_initial = problem.init == crate::scene::InitKind::Steady && problem.initial.is_some();
+        if !with_initial {
+            h.rows.retain(|r| r.step != 0);
+        }
+        let expected: Vec<usize> =
+            with_initial.then_some(0).into_iter().chain(problem.samples.iter().map(|s| s.step)).collect();
         let got: Vec<usize> = h.rows.iter().map(|r| r.step).collect();
-        let got_core: Vec<usize> = got.iter().copied().filter(|&s| s != 0 || expected.first() == Some(&0)).collect();
-        if got_core != expected {
+        if got != expected {
             return Err(fail(format!(
-                "output has steps {}..{} ({} rows), the scene has {} steps",
-                got.first().unwrap_or(&0),
-                got.last().unwrap_or(&0),
+                "output has {} rows (steps {:?}..{:?}); the scene has {} steps",
                 got.len(),
+                got.first(),
+                got.last(),
                 expected.len()
             )));
         }

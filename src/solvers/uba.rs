@@ -25,7 +25,7 @@ use crate::scene::InitKind;
 pub struct Uba;
 
 /// Extra columns of `uba.csv`.
-pub const EXTRA: [&str; 2] = ["n_adhesion", "n_slip"];
+pub const EXTRA: [&str; 3] = ["n_adhesion", "n_slip", "sawtooth"];
 
 /// What a UBA step needs of the pressure, prepared once per load and friction: the loaded runs
 /// of each row, the bound μ p per element (and its square), whether an element's upstream
@@ -182,7 +182,8 @@ impl Solver for Uba {
         let mut scratch = Tractions::zero(grid.len());
         let row = |s: &Sample, t: &Tractions, local: &LocalContact, n_loaded: usize, n_slip: usize| {
             let (fx, fy) = brush::coefficients(t, &local.pressure_mpa);
-            Row::new(s, fx, fy, vec![(n_loaded - n_slip) as f64, n_slip as f64])
+            let saw = brush::sawtooth_index(&problem.grid, &local.pressure_mpa, t);
+            Row::new(s, fx, fy, vec![(n_loaded - n_slip) as f64, n_slip as f64, saw])
         };
         let mut local = problem.local_contact(problem.hertz.fn_n);
         if !problem.is_transient() {
