@@ -44,6 +44,13 @@ impl Grid {
         self.dx_mm * self.dy_mm
     }
 
+    /// Element centres in flat order `k = j*mx + i`: (x [mm], y [mm]).
+    pub fn centres(&self) -> (Vec<f64>, Vec<f64>) {
+        let x = (0..self.len()).map(|k| self.x_mm[k % self.mx]).collect();
+        let y = (0..self.len()).map(|k| self.y_mm[k / self.mx]).collect();
+        (x, y)
+    }
+
     /// Flat index of element (i, j).
     #[inline]
     pub fn index(&self, i: usize, j: usize) -> usize {

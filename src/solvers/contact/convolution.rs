@@ -1,0 +1,522 @@
+//! Discrete convolution `u = A p` of piecewise-constant grid tractions with a translation-invariant
+//! influence [`Kernel`]: `u_(i,j) = sum_(I,J) A(i - I, j - J) p_(I,J)` for all `mx*my` output
+//! elements, input taken as zero outside a given element set (Kalker 1990, eq. 5.22).
+//! Units: p in MPa, A in mm/MPa, u in mm.
+//!
+//! Two paths with identical results (to round-off): direct summation, cost `O(n_active * mx*my)`,
+//! and a zero-padded 2-D FFT (rustfft) with precomputed kernel spectra, cost `O(N log N)`
+//! (Press et al., "Numerical Recipes", sec. 13.1, convolution by FFT with zero padding).
+//! The tangential pair is transformed as one complex field `px + i py` (two real FFTs for one).
+
+use super::influence::Kernel;
+use super::ContactError;
+use rustfft::num_complex::Complex;
+use rustfft::{Fft, FftPlanner};
+use std::sync::Arc;
+
+/// Which summation path a [`Convolver`] uses.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ConvPath {
+    /// Direct summation over the active sources.
+    Direct,
+    /// Zero-padded 2-D FFT.
+    Fft,
+}
+
+/// Grid size (number of elements `mx*my`) from which the FFT path is chosen automatically.
+/// Measured with `examples/conv_crossover.rs` (release, 2-core Xeon, all elements active, tangential
+/// pair): 8x8 direct 3.3 us / FFT 3.7 us; 12x12 15 / 6 us; 22x22 155 / 26 us; 44x44 3.4 ms / 0.10 ms;
+/// 88x88 48 ms / 0.52 ms. The crossover lies near 10x10.
+pub const FFT_CROSSOVER_ELEMENTS: usize = 10 * 10;
+
+/// Automatic path choice by grid size (see [`FFT_CROSSOVER_ELEMENTS`]).
+pub fn auto_path(mx: usize, my: usize) -> ConvPath {
+    if mx * my >= FFT_CROSSOVER_ELEMENTS {
+        ConvPath::Fft
+    } else {
+        ConvPath::Direct
+    }
+}
+
+/// Smallest integer `>= n` whose prime factors are 2, 3, 5 or 7 (fast FFT length).
+#[allow(clippy::manual_is_multiple_of)] // is_multiple_of needs Rust 1.87; keep MSRV 1.80
+fn fft_len(n: usize) -> usize {
+    let mut m = n.max(1);
+    loop {
+        let mut r = m;
+        for p in [2, 3, 5, 7] {
+            while r % p == 0 {
+                r /= p;
+            }
+        }
+        if r == 1 {
+            return m;
+        }
+        m += 1;
+    }
+}
+
+/// FFT plans, kernel spectra and work buffers of the FFT path.
+struct FftData {
+    nx: usize,
+    ny: usize,
+    fwd_x: Arc<dyn Fft<f64>>,
+    inv_x: Arc<dyn Fft<f64>>,
+    fwd_y: Arc<dyn Fft<f64>>,
+    inv_y: Arc<dyn Fft<f64>>,
+    /// Kernel spectra in transposed layout `[kx][ky]`, scaled by `1/(nx*ny)`.
+    szz: Vec<Complex<f64>>,
+    sxx: Vec<Complex<f64>>,
+    syy: Vec<Complex<f64>>,
+    sxy: Vec<Complex<f64>>,
+    /// Packed tangential operator: `U(k) = alpha(k) Z(k) + beta(k) conj(Z(-k))` for
+    /// `Z = FFT(px + i py)`, `U = FFT(ux + i uy)`: `alpha = (Sxx + Syy)/2`,
+    /// `beta = (Sxx - Syy)/2 + i Sxy`.
+    salpha: Vec<Complex<f64>>,
+    sbeta: Vec<Complex<f64>>,
+    /// Row-major `[y][x]` work buffer, `nx*ny`.
+    buf: Vec<Complex<f64>>,
+    /// Transposed `[x][y]` work buffer, `nx*ny`.
+    buft: Vec<Complex<f64>>,
+    /// Second transposed buffer for the tangential pair.
+    buft2: Vec<Complex<f64>>,
+    scratch: Vec<Complex<f64>>,
+}
+
+impl FftData {
+    fn new(kernel: &Kernel) -> FftData {
+        let (mx, my) = (kernel.mx, kernel.my);
+        let nx = fft_len(2 * mx - 1);
+        let ny = fft_len(2 * my - 1);
+        let mut planner = FftPlanner::<f64>::new();
+        let fwd_x = planner.plan_fft_forward(nx);
+        let inv_x = planner.plan_fft_inverse(nx);
+        let fwd_y = planner.plan_fft_forward(ny);
+        let inv_y = planner.plan_fft_inverse(ny);
+        let scratch_len =
+            [&fwd_x, &inv_x, &fwd_y, &inv_y].iter().map(|f| f.get_inplace_scratch_len()).max().unwrap_or(0);
+        let zero = Complex::new(0.0, 0.0);
+        let mut d = FftData {
+            nx,
+            ny,
+            fwd_x,
+            inv_x,
+            fwd_y,
+            inv_y,
+            szz: Vec::new(),
+            sxx: Vec::new(),
+            syy: Vec::new(),
+            sxy: Vec::new(),
+            salpha: Vec::new(),
+            sbeta: Vec::new(),
+            buf: vec![zero; nx * ny],
+            buft: vec![zero; nx * ny],
+            buft2: vec![zero; nx * ny],
+            scratch: vec![zero; scratch_len],
+        };
+        let scale = 1.0 / (nx * ny) as f64;
+        d.szz = d.kernel_spectrum(kernel, &kernel.zz, scale);
+        d.sxx = d.kernel_spectrum(kernel, &kernel.xx, scale);
+        d.syy = d.kernel_spectrum(kernel, &kernel.yy, scale);
+        d.sxy = d.kernel_spectrum(kernel, &kernel.xy, scale);
+        d.pack_pair();
+        d
+    }
+
+    /// Computes the packed tangential spectra `alpha`, `beta` from `Sxx`, `Syy`, `Sxy`.
+    fn pack_pair(&mut self) {
+        let i = Complex::new(0.0, 1.0);
+        self.salpha = self.sxx.iter().zip(&self.syy).map(|(a, b)| (a + b) * 0.5).collect();
+        self.sbeta = self.sxx.iter().zip(&self.syy).zip(&self.sxy).map(|((a, b), c)| (a - b) * 0.5 + i * c).collect();
+    }
+
+    /// Spectrum of one kernel component placed circularly (offset `d` at index `d mod n`).
+    fn kernel_spectrum(&mut self, kernel: &Kernel, comp: &[f64], scale: f64) -> Vec<Complex<f64>> {
+        let (mx, my, nx, ny) = (kernel.mx, kernel.my, self.nx, self.ny);
+        let zero = Complex::new(0.0, 0.0);
+        self.buf.iter_mut().for_each(|c| *c = zero);
+        for dj in -(my as isize - 1)..=(my as isize - 1) {
+            let row = dj.rem_euclid(ny as isize) as usize;
+            for di in -(mx as isize - 1)..=(mx as isize - 1) {
+                let col = di.rem_euclid(nx as isize) as usize;
+                self.buf[row * nx + col] = Complex::new(comp[kernel.index(di, dj)] * scale, 0.0);
+            }
+        }
+        self.fwd_x.process_with_scratch(&mut self.buf, &mut self.scratch);
+        transpose(&self.buf, &mut self.buft, nx, ny, ny);
+        self.fwd_y.process_with_scratch(&mut self.buft, &mut self.scratch);
+        self.buft.clone()
+    }
+
+    /// Forward transform of the field in `buf` (only its first `my` rows may be non-zero) into
+    /// `buft` (layout `[kx][ky]`).
+    fn forward(&mut self, my: usize) {
+        let nx = self.nx;
+        self.fwd_x.process_with_scratch(&mut self.buf[..my * nx], &mut self.scratch);
+        transpose(&self.buf, &mut self.buft, nx, self.ny, my);
+        self.fwd_y.process_with_scratch(&mut self.buft, &mut self.scratch);
+    }
+
+    /// Inverse transform of the spectrum in `buft` into the first `my` rows of `buf`.
+    fn inverse(&mut self, my: usize) {
+        let (nx, ny) = (self.nx, self.ny);
+        self.inv_y.process_with_scratch(&mut self.buft, &mut self.scratch);
+        // Transpose back only the first my rows (x-major -> y-major).
+        for j in 0..my {
+            for i in 0..nx {
+                self.buf[j * nx + i] = self.buft[i * ny + j];
+            }
+        }
+        self.inv_x.process_with_scratch(&mut self.buf[..my * nx], &mut self.scratch);
+    }
+}
+
+/// Transposes the first `rows` rows of the row-major `[ny][nx]` array `src` into `dst` laid out
+/// `[nx][ny]`; the other entries of `dst` are set to zero.
+fn transpose(src: &[Complex<f64>], dst: &mut [Complex<f64>], nx: usize, ny: usize, rows: usize) {
+    let zero = Complex::new(0.0, 0.0);
+    for i in 0..nx {
+        let d = &mut dst[i * ny..(i + 1) * ny];
+        for (j, v) in d.iter_mut().enumerate().take(rows) {
+            *v = src[j * nx + i];
+        }
+        for v in d.iter_mut().skip(rows) {
+            *v = zero;
+        }
+    }
+}
+
+/// Evaluates `u = A p` on an `mx x my` grid for one kernel, by direct summation or FFT. Holds
+/// every buffer it needs, so that [`Convolver::normal`] and [`Convolver::tangential`] do not
+/// allocate.
+pub struct Convolver {
+    mx: usize,
+    my: usize,
+    path: ConvPath,
+    nkx: usize,
+    kzz: Vec<f64>,
+    kxx: Vec<f64>,
+    kyy: Vec<f64>,
+    kxy: Vec<f64>,
+    active: Vec<usize>,
+    fft: Option<FftData>,
+}
+
+impl Convolver {
+    /// Convolver for `kernel` with an explicit path.
+    pub fn new(kernel: &Kernel, path: ConvPath) -> Result<Convolver, ContactError> {
+        let (mx, my) = (kernel.mx, kernel.my);
+        let nk = (2 * mx - 1) * (2 * my - 1);
+        if mx == 0
+            || my == 0
+            || kernel.zz.len() != nk
+            || kernel.xx.len() != nk
+            || kernel.yy.len() != nk
+            || kernel.xy.len() != nk
+        {
+            return Err(ContactError::SizeMismatch(format!("kernel arrays must have (2mx-1)(2my-1) = {nk} entries")));
+        }
+        let fft = match path {
+            ConvPath::Fft => Some(FftData::new(kernel)),
+            ConvPath::Direct => None,
+        };
+        Ok(Convolver {
+            mx,
+            my,
+            path,
+            nkx: 2 * mx - 1,
+            kzz: kernel.zz.clone(),
+            kxx: kernel.xx.clone(),
+            kyy: kernel.yy.clone(),
+            kxy: kernel.xy.clone(),
+            active: Vec::with_capacity(mx * my),
+            fft,
+        })
+    }
+
+    /// FFT-path operator whose spectra are the inverse of `kernel`'s (per frequency: `1/Azz`, and
+    /// the inverse of the 2x2 tangential symbol), i.e. the inverse of the periodised convolution:
+    /// an approximate inverse of `A` used as preconditioner (symbols clamped to stay positive).
+    pub fn inverse_of(kernel: &Kernel) -> Result<Convolver, ContactError> {
+        let mut c = Convolver::new(kernel, ConvPath::Fft)?;
+        let f = c.fft.as_mut().ok_or_else(|| ContactError::InvalidInput("FFT data missing for the FFT path".into()))?;
+        let scale = 1.0 / (f.nx * f.ny) as f64;
+        let amax = f.sxx.iter().chain(&f.syy).fold(0.0f64, |m, v| m.max(v.re));
+        let zmax = f.szz.iter().fold(0.0f64, |m, v| m.max(v.re));
+        let floor = 1e-3;
+        for idx in 0..f.szz.len() {
+            // Spectra are stored scaled by 1/(nx ny); the inverse must carry the same scale.
+            let z = f.szz[idx].re.max(floor * zmax);
+            f.szz[idx] = Complex::new(scale * scale / z, 0.0);
+            let a = f.sxx[idx].re.max(floor * amax);
+            let d = f.syy[idx].re.max(floor * amax);
+            let mut b = f.sxy[idx].re;
+            let lim = 0.99 * (a * d).sqrt();
+            b = b.clamp(-lim, lim);
+            let det = a * d - b * b;
+            f.sxx[idx] = Complex::new(scale * scale * d / det, 0.0);
+            f.syy[idx] = Complex::new(scale * scale * a / det, 0.0);
+            f.sxy[idx] = Complex::new(-scale * scale * b / det, 0.0);
+        }
+        f.pack_pair();
+        Ok(c)
+    }
+
+    /// Convolver with the path chosen by grid size ([`auto_path`]).
+    pub fn auto(kernel: &Kernel) -> Result<Convolver, ContactError> {
+        Convolver::new(kernel, auto_path(kernel.mx, kernel.my))
+    }
+
+    /// The path in use.
+    pub fn path(&self) -> ConvPath {
+        self.path
+    }
+
+    fn check(&self, name: &str, v: &[f64]) -> Result<(), ContactError> {
+        if v.len() != self.mx * self.my {
+            return Err(ContactError::SizeMismatch(format!(
+                "{name} has {} entries, grid has {}",
+                v.len(),
+                self.mx * self.my
+            )));
+        }
+        Ok(())
+    }
+
+    fn check_mask(&self, mask: Option<&[bool]>) -> Result<(), ContactError> {
+        match mask {
+            Some(m) if m.len() != self.mx * self.my => {
+                Err(ContactError::SizeMismatch(format!("mask has {} entries, grid has {}", m.len(), self.mx * self.my)))
+            }
+            _ => Ok(()),
+        }
+    }
+
+    /// Normal displacement `u = Azz p` [mm] for pressure `p` [MPa] (zero where `mask` is false).
+    pub fn normal(&mut self, p: &[f64], mask: Option<&[bool]>, u: &mut [f64]) -> Result<(), ContactError> {
+        self.check("p", p)?;
+        self.check("u", u)?;
+        self.check_mask(mask)?;
+        #[allow(clippy::unnecessary_map_or)] // is_none_or needs Rust 1.82; keep MSRV 1.80
+        let on = |k: usize| mask.map_or(true, |m| m[k]);
+        match self.path {
+            ConvPath::Direct => {
+                self.active.clear();
+                for (k, &v) in p.iter().enumerate() {
+                    if on(k) && v != 0.0 {
+                        self.active.push(k);
+                    }
+                }
+                u.iter_mut().for_each(|v| *v = 0.0);
+                let (mx, my, nkx) = (self.mx, self.my, self.nkx);
+                for &k in &self.active {
+                    let (ii, jj) = (k % mx, k / mx);
+                    let pk = p[k];
+                    for j in 0..my {
+                        let base = (j + my - 1 - jj) * nkx + (mx - 1 - ii);
+                        let krow = &self.kzz[base..base + mx];
+                        let urow = &mut u[j * mx..(j + 1) * mx];
+                        for (uv, kv) in urow.iter_mut().zip(krow) {
+                            *uv += kv * pk;
+                        }
+                    }
+                }
+            }
+            ConvPath::Fft => {
+                let (mx, my) = (self.mx, self.my);
+                let f = self
+                    .fft
+                    .as_mut()
+                    .ok_or_else(|| ContactError::InvalidInput("FFT data missing for the FFT path".into()))?;
+                let nx = f.nx;
+                let zero = Complex::new(0.0, 0.0);
+                for j in 0..my {
+                    let row = &mut f.buf[j * nx..(j + 1) * nx];
+                    for (i, c) in row.iter_mut().enumerate() {
+                        *c = if i < mx && on(j * mx + i) { Complex::new(p[j * mx + i], 0.0) } else { zero };
+                    }
+                }
+                f.forward(my);
+                for (c, s) in f.buft.iter_mut().zip(&f.szz) {
+                    *c *= s;
+                }
+                f.inverse(my);
+                for j in 0..my {
+                    for i in 0..mx {
+                        u[j * mx + i] = f.buf[j * nx + i].re;
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Tangential displacements `ux = Axx px + Axy py`, `uy = Axy px + Ayy py` [mm] for tractions
+    /// `px`, `py` [MPa] (zero where `mask` is false).
+    pub fn tangential(
+        &mut self,
+        px: &[f64],
+        py: &[f64],
+        mask: Option<&[bool]>,
+        ux: &mut [f64],
+        uy: &mut [f64],
+    ) -> Result<(), ContactError> {
+        self.check("px", px)?;
+        self.check("py", py)?;
+        self.check("ux", ux)?;
+        self.check("uy", uy)?;
+        self.check_mask(mask)?;
+        #[allow(clippy::unnecessary_map_or)] // is_none_or needs Rust 1.82; keep MSRV 1.80
+        let on = |k: usize| mask.map_or(true, |m| m[k]);
+        match self.path {
+            ConvPath::Direct => {
+                self.active.clear();
+                for k in 0..px.len() {
+                    if on(k) && (px[k] != 0.0 || py[k] != 0.0) {
+                        self.active.push(k);
+                    }
+                }
+                ux.iter_mut().for_each(|v| *v = 0.0);
+                uy.iter_mut().for_each(|v| *v = 0.0);
+                let (mx, my, nkx) = (self.mx, self.my, self.nkx);
+                for &k in &self.active {
+                    let (ii, jj) = (k % mx, k / mx);
+                    let (sx, sy) = (px[k], py[k]);
+                    for j in 0..my {
+                        let base = (j + my - 1 - jj) * nkx + (mx - 1 - ii);
+                        let kxx = &self.kxx[base..base + mx];
+                        let kxy = &self.kxy[base..base + mx];
+                        let kyy = &self.kyy[base..base + mx];
+                        let uxr = &mut ux[j * mx..(j + 1) * mx];
+                        let uyr = &mut uy[j * mx..(j + 1) * mx];
+                        for i in 0..mx {
+                            uxr[i] += kxx[i] * sx + kxy[i] * sy;
+                            uyr[i] += kxy[i] * sx + kyy[i] * sy;
+                        }
+                    }
+                }
+            }
+            ConvPath::Fft => {
+                let (mx, my) = (self.mx, self.my);
+                let f = self
+                    .fft
+                    .as_mut()
+                    .ok_or_else(|| ContactError::InvalidInput("FFT data missing for the FFT path".into()))?;
+                let (nx, ny) = (f.nx, f.ny);
+                let zero = Complex::new(0.0, 0.0);
+                for j in 0..my {
+                    let row = &mut f.buf[j * nx..(j + 1) * nx];
+                    for (i, c) in row.iter_mut().enumerate() {
+                        *c = if i < mx && on(j * mx + i) { Complex::new(px[j * mx + i], py[j * mx + i]) } else { zero };
+                    }
+                }
+                f.forward(my);
+                // U(k) = alpha(k) Z(k) + beta(k) conj(Z(-k)) (see `salpha`, `sbeta`).
+                for kx in 0..nx {
+                    let mkx = (nx - kx) % nx;
+                    let row = &f.buft[kx * ny..(kx + 1) * ny];
+                    let mrow = &f.buft[mkx * ny..(mkx + 1) * ny];
+                    let out = &mut f.buft2[kx * ny..(kx + 1) * ny];
+                    let al = &f.salpha[kx * ny..(kx + 1) * ny];
+                    let be = &f.sbeta[kx * ny..(kx + 1) * ny];
+                    out[0] = al[0] * row[0] + be[0] * mrow[0].conj();
+                    for ((((o, z), zm), a), b) in
+                        out[1..].iter_mut().zip(&row[1..]).zip(mrow[1..].iter().rev()).zip(&al[1..]).zip(&be[1..])
+                    {
+                        *o = a * z + b * zm.conj();
+                    }
+                }
+                std::mem::swap(&mut f.buft, &mut f.buft2);
+                f.inverse(my);
+                for j in 0..my {
+                    for i in 0..mx {
+                        let c = f.buf[j * nx + i];
+                        ux[j * mx + i] = c.re;
+                        uy[j * mx + i] = c.im;
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Small deterministic pseudo-random generator (xorshift64*), values in [-1, 1).
+    struct Rng(u64);
+    impl Rng {
+        fn next(&mut self) -> f64 {
+            self.0 ^= self.0 >> 12;
+            self.0 ^= self.0 << 25;
+            self.0 ^= self.0 >> 27;
+            let v = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d);
+            (v >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+        }
+    }
+
+    fn compare(mx: usize, my: usize, shift: f64) {
+        let k = Kernel::new(mx, my, 0.7, 0.4, 82000.0, 0.28, shift).unwrap();
+        let mut d = Convolver::new(&k, ConvPath::Direct).unwrap();
+        let mut f = Convolver::new(&k, ConvPath::Fft).unwrap();
+        let n = mx * my;
+        let mut rng = Rng(0x9e37_79b9_7f4a_7c15 ^ (n as u64));
+        let px: Vec<f64> = (0..n).map(|_| 500.0 * rng.next()).collect();
+        let py: Vec<f64> = (0..n).map(|_| 500.0 * rng.next()).collect();
+        let mask: Vec<bool> = (0..n).map(|_| rng.next() > -0.4).collect();
+        for m in [None, Some(mask.as_slice())] {
+            let (mut a, mut b) = (vec![0.0; n], vec![0.0; n]);
+            d.normal(&px, m, &mut a).unwrap();
+            f.normal(&px, m, &mut b).unwrap();
+            let scale = a.iter().fold(0.0f64, |s, v| s.max(v.abs()));
+            let err = a.iter().zip(&b).fold(0.0f64, |s, (x, y)| s.max((x - y).abs()));
+            assert!(err <= 1e-12 * scale, "normal {mx}x{my}: {err} vs {scale}");
+            let (mut ax, mut ay, mut bx, mut by) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+            d.tangential(&px, &py, m, &mut ax, &mut ay).unwrap();
+            f.tangential(&px, &py, m, &mut bx, &mut by).unwrap();
+            let scale = ax.iter().chain(&ay).fold(0.0f64, |s, v| s.max(v.abs()));
+            let err = ax.iter().zip(&bx).chain(ay.iter().zip(&by)).fold(0.0f64, |s, (x, y)| s.max((x - y).abs()));
+            assert!(err <= 1e-12 * scale, "tangential {mx}x{my}: {err} vs {scale}");
+        }
+    }
+
+    #[test]
+    fn direct_and_fft_agree() {
+        compare(22, 22, 0.0);
+        compare(44, 44, 0.0);
+        compare(30, 17, 0.0);
+        compare(22, 22, 0.7);
+        compare(13, 29, 0.35);
+    }
+
+    #[test]
+    fn direct_matches_dense_matrix() {
+        let (mx, my) = (6, 5);
+        let k = Kernel::new(mx, my, 0.7, 0.4, 82000.0, 0.28, 0.0).unwrap();
+        let mut c = Convolver::new(&k, ConvPath::Direct).unwrap();
+        let n = mx * my;
+        let mut rng = Rng(7);
+        let px: Vec<f64> = (0..n).map(|_| rng.next()).collect();
+        let py: Vec<f64> = (0..n).map(|_| rng.next()).collect();
+        let (mut ux, mut uy) = (vec![0.0; n], vec![0.0; n]);
+        c.tangential(&px, &py, None, &mut ux, &mut uy).unwrap();
+        for j in 0..my {
+            for i in 0..mx {
+                let (mut sx, mut sy) = (0.0, 0.0);
+                for jj in 0..my {
+                    for ii in 0..mx {
+                        let (_, xx, yy, xy) = k.coeffs(i, j, ii, jj);
+                        let q = jj * mx + ii;
+                        sx += xx * px[q] + xy * py[q];
+                        sy += xy * px[q] + yy * py[q];
+                    }
+                }
+                assert!((sx - ux[j * mx + i]).abs() < 1e-18);
+                assert!((sy - uy[j * mx + i]).abs() < 1e-18);
+            }
+        }
+        assert!(c.normal(&px[1..], None, &mut ux).is_err());
+    }
+}

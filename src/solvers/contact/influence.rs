@@ -1,0 +1,314 @@
+//! Influence coefficients of a uniformly loaded `dx x dy` rectangle on the surface of an elastic
+//! half-space, combined for two identical bodies (closed forms of Boussinesq and Cerruti
+//! integrated over the rectangle; Kalker 1990, sec. 5.2; Johnson, "Contact Mechanics", eqs. 3.19
+//! and 3.75). Units: coefficients in mm/MPa (displacement in mm per traction in MPa).
+//!
+//! With `X = x_field - x_source`, `Y = y_field - y_source`, `r = sqrt(X^2 + Y^2)` and `I[f]` the
+//! integral of `f(X', Y')` over the source rectangle (`X' in [X - dx/2, X + dx/2]`, likewise `Y'`):
+//!
+//! * `Azz = (1-nu)/(pi G) I[1/r]`
+//! * `Axx = 1/(pi G) (I[X^2/r^3] + (1-nu) I[Y^2/r^3])`
+//! * `Ayy = 1/(pi G) (I[Y^2/r^3] + (1-nu) I[X^2/r^3])`
+//! * `Axy = Ayx = nu/(pi G) I[XY/r^3]`
+//!
+//! `G` is the combined shear modulus [MPa] and `nu` Poisson's ratio of the (identical) bodies.
+
+use super::ContactError;
+
+/// Antiderivative of `X^2/r^3` (d^2/dXdY): `Y ln(X + r)`, written as `Y asinh(X/|Y|)`; the dropped
+/// term `Y ln|Y|` depends on `Y` alone and cancels in the corner double difference. The asinh form
+/// has no cancellation where `X + r -> 0` (X < 0, |Y| << |X|).
+fn f_xx(x: f64, y: f64) -> f64 {
+    if y == 0.0 {
+        0.0
+    } else {
+        y * (x / y.abs()).asinh()
+    }
+}
+
+/// Antiderivative of `Y^2/r^3`: `X ln(Y + r)` in the asinh form `X asinh(Y/|X|)` (see [`f_xx`]).
+fn f_yy(x: f64, y: f64) -> f64 {
+    f_xx(y, x)
+}
+
+/// Antiderivative of `X Y / r^3`: `-r`.
+fn f_xy(x: f64, y: f64) -> f64 {
+    -x.hypot(y)
+}
+
+/// Corner double difference `F(X+hx, Y+hy) - F(X-hx, Y+hy) - F(X+hx, Y-hy) + F(X-hx, Y-hy)`,
+/// i.e. the integral over the rectangle of the mixed derivative of `F`.
+fn double_diff(f: fn(f64, f64) -> f64, x: f64, y: f64, hx: f64, hy: f64) -> f64 {
+    // Sum the terms with equal Y first: they are the closest in value.
+    (f(x + hx, y + hy) - f(x - hx, y + hy)) - (f(x + hx, y - hy) - f(x - hx, y - hy))
+}
+
+/// Integrals of the four Boussinesq/Cerruti integrands over a `dx x dy` rectangle centred at
+/// offset `(x, y)` [mm] from the field point; each in mm (they have the dimension of a length).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RectIntegrals {
+    /// `I[1/r]` [mm]
+    pub one_over_r: f64,
+    /// `I[X^2/r^3]` [mm]
+    pub xx: f64,
+    /// `I[Y^2/r^3]` [mm]
+    pub yy: f64,
+    /// `I[XY/r^3]` [mm]
+    pub xy: f64,
+}
+
+/// Closed-form rectangle integrals at offset `X = x`, `Y = y` [mm] for a `dx x dy` [mm] element
+/// (Kalker 1990, eq. 5.20: corner double differences of the antiderivatives).
+pub fn rect_integrals(x: f64, y: f64, dx: f64, dy: f64) -> RectIntegrals {
+    let (hx, hy) = (0.5 * dx, 0.5 * dy);
+    let xx = double_diff(f_xx, x, y, hx, hy);
+    let yy = double_diff(f_yy, x, y, hx, hy);
+    RectIntegrals { one_over_r: xx + yy, xx, yy, xy: double_diff(f_xy, x, y, hx, hy) }
+}
+
+/// Translation-invariant influence kernel over the grid offsets `di = i - I` in
+/// `-(mx-1)..=(mx-1)`, `dj = j - J` in `-(my-1)..=(my-1)`, evaluated at
+/// `X = di*dx - shift_mm`, `Y = dj*dy`. Storage index `(dj + my - 1)*(2mx - 1) + (di + mx - 1)`.
+/// Coefficients in mm/MPa. `shift_mm = 0` is the ordinary kernel (u = A p); `shift_mm = dq` gives
+/// the kernel of the displacement at the previous position of the material (u' = A_s p').
+#[derive(Debug, Clone, PartialEq)]
+pub struct Kernel {
+    /// Elements along x of the grid the kernel serves.
+    pub mx: usize,
+    /// Elements along y of the grid the kernel serves.
+    pub my: usize,
+    /// Element size along x [mm].
+    pub dx_mm: f64,
+    /// Element size along y [mm].
+    pub dy_mm: f64,
+    /// Shift of the field point against the rolling direction [mm] (0 or dq).
+    pub shift_mm: f64,
+    /// Normal-normal coefficients `Azz` [mm/MPa].
+    pub zz: Vec<f64>,
+    /// Tangential `Axx` [mm/MPa].
+    pub xx: Vec<f64>,
+    /// Tangential `Ayy` [mm/MPa].
+    pub yy: Vec<f64>,
+    /// Tangential coupling `Axy = Ayx` [mm/MPa].
+    pub xy: Vec<f64>,
+}
+
+impl Kernel {
+    /// Builds the kernel for an `mx x my` grid of `dx x dy` [mm] elements, combined shear modulus
+    /// `g_mpa` [MPa], Poisson's ratio `nu`, field-point shift `shift_mm` [mm] (Kalker 1990, sec. 5.2).
+    pub fn new(
+        mx: usize,
+        my: usize,
+        dx_mm: f64,
+        dy_mm: f64,
+        g_mpa: f64,
+        nu: f64,
+        shift_mm: f64,
+    ) -> Result<Kernel, ContactError> {
+        if mx == 0 || my == 0 {
+            return Err(ContactError::InvalidInput(format!("kernel needs mx, my >= 1 (got {mx} x {my})")));
+        }
+        if !(dx_mm.is_finite() && dx_mm > 0.0 && dy_mm.is_finite() && dy_mm > 0.0) {
+            return Err(ContactError::InvalidInput(format!(
+                "element size must be finite and > 0 (dx = {dx_mm}, dy = {dy_mm})"
+            )));
+        }
+        if !(g_mpa.is_finite() && g_mpa > 0.0) {
+            return Err(ContactError::InvalidInput(format!("shear modulus G must be finite and > 0 (got {g_mpa})")));
+        }
+        if !(nu.is_finite() && (-1.0..0.5).contains(&nu)) {
+            return Err(ContactError::InvalidInput(format!("Poisson's ratio must lie in [-1, 0.5) (got {nu})")));
+        }
+        if !shift_mm.is_finite() {
+            return Err(ContactError::InvalidInput(format!("kernel shift must be finite (got {shift_mm})")));
+        }
+        let nkx = 2 * mx - 1;
+        let nky = 2 * my - 1;
+        let n = nkx * nky;
+        let mut zz = Vec::with_capacity(n);
+        let mut xx = Vec::with_capacity(n);
+        let mut yy = Vec::with_capacity(n);
+        let mut xy = Vec::with_capacity(n);
+        let c = 1.0 / (std::f64::consts::PI * g_mpa);
+        for kj in 0..nky {
+            let dj = kj as f64 - (my - 1) as f64;
+            let y = dj * dy_mm;
+            for ki in 0..nkx {
+                let di = ki as f64 - (mx - 1) as f64;
+                let x = di * dx_mm - shift_mm;
+                let r = rect_integrals(x, y, dx_mm, dy_mm);
+                zz.push(c * (1.0 - nu) * r.one_over_r);
+                xx.push(c * (r.xx + (1.0 - nu) * r.yy));
+                yy.push(c * (r.yy + (1.0 - nu) * r.xx));
+                xy.push(c * nu * r.xy);
+            }
+        }
+        if zz.iter().chain(xx.iter()).chain(yy.iter()).chain(xy.iter()).any(|v| !v.is_finite()) {
+            return Err(ContactError::NonFinite("influence coefficients".into()));
+        }
+        Ok(Kernel { mx, my, dx_mm, dy_mm, shift_mm, zz, xx, yy, xy })
+    }
+
+    /// Row length of the kernel storage, `2mx - 1`.
+    pub fn nkx(&self) -> usize {
+        2 * self.mx - 1
+    }
+
+    /// Number of kernel rows, `2my - 1`.
+    pub fn nky(&self) -> usize {
+        2 * self.my - 1
+    }
+
+    /// Storage index of offset `(di, dj)`; `di` in `-(mx-1)..=(mx-1)`, `dj` in `-(my-1)..=(my-1)`.
+    pub fn index(&self, di: isize, dj: isize) -> usize {
+        (dj + self.my as isize - 1) as usize * self.nkx() + (di + self.mx as isize - 1) as usize
+    }
+
+    /// Coefficient set `(zz, xx, yy, xy)` [mm/MPa] for field element `(i, j)` and source `(ii, jj)`.
+    pub fn coeffs(&self, i: usize, j: usize, ii: usize, jj: usize) -> (f64, f64, f64, f64) {
+        let k = self.index(i as isize - ii as isize, j as isize - jj as isize);
+        (self.zz[k], self.xx[k], self.yy[k], self.xy[k])
+    }
+
+    /// Element-wise difference `self - other` [mm/MPa] of two kernels of the same grid (the steady
+    /// rolling operator `A - A_shift`, Kalker 1990, eq. 5.40); `shift_mm` of the result is the
+    /// difference of the shifts.
+    pub fn difference(&self, other: &Kernel) -> Result<Kernel, ContactError> {
+        if self.mx != other.mx || self.my != other.my || self.zz.len() != other.zz.len() {
+            return Err(ContactError::SizeMismatch("kernels of different grids cannot be subtracted".into()));
+        }
+        let sub = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x - y).collect();
+        Ok(Kernel {
+            mx: self.mx,
+            my: self.my,
+            dx_mm: self.dx_mm,
+            dy_mm: self.dy_mm,
+            shift_mm: self.shift_mm - other.shift_mm,
+            zz: sub(&self.zz, &other.zz),
+            xx: sub(&self.xx, &other.xx),
+            yy: sub(&self.yy, &other.yy),
+            xy: sub(&self.xy, &other.xy),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Gauss-Legendre nodes/weights on [-1, 1] (8 points).
+    const GL_X: [f64; 8] = [
+        -0.960_289_856_497_536_3,
+        -0.796_666_477_413_626_7,
+        -0.525_532_409_916_329,
+        -0.183_434_642_495_649_8,
+        0.183_434_642_495_649_8,
+        0.525_532_409_916_329,
+        0.796_666_477_413_626_7,
+        0.960_289_856_497_536_3,
+    ];
+    const GL_W: [f64; 8] = [
+        0.101_228_536_290_376_3,
+        0.222_381_034_453_374_5,
+        0.313_706_645_877_887_3,
+        0.362_683_783_378_362,
+        0.362_683_783_378_362,
+        0.313_706_645_877_887_3,
+        0.222_381_034_453_374_5,
+        0.101_228_536_290_376_3,
+    ];
+
+    /// Composite Gauss-Legendre integral of f over [x0,x1] x [y0,y1] with n x n panels.
+    fn quad2(f: &dyn Fn(f64, f64) -> f64, x0: f64, x1: f64, y0: f64, y1: f64, n: usize) -> f64 {
+        let (hx, hy) = ((x1 - x0) / n as f64, (y1 - y0) / n as f64);
+        let mut s = 0.0;
+        for pi in 0..n {
+            for pj in 0..n {
+                let cx = x0 + (pi as f64 + 0.5) * hx;
+                let cy = y0 + (pj as f64 + 0.5) * hy;
+                for a in 0..8 {
+                    for b in 0..8 {
+                        let x = cx + 0.5 * hx * GL_X[a];
+                        let y = cy + 0.5 * hy * GL_X[b];
+                        s += GL_W[a] * GL_W[b] * f(x, y);
+                    }
+                }
+            }
+        }
+        s * 0.25 * hx * hy
+    }
+
+    #[test]
+    fn antiderivatives_match_quadrature() {
+        let (dx, dy) = (0.78, 0.37);
+        // Offsets off the singularity, including X + r -> 0 regions (X << 0, Y ~ 0).
+        let offsets = [
+            (1.5, 0.9),
+            (-2.3, 0.4),
+            (-9.0 * dx, 0.0),
+            (-30.0 * dx, 0.2 * dy),
+            (4.0 * dx, -7.0 * dy),
+            (0.0, 3.0 * dy),
+            (-2.0 * dx, -2.0 * dy),
+            (-100.0 * dx, 1e-3),
+        ];
+        for &(x, y) in &offsets {
+            let r = rect_integrals(x, y, dx, dy);
+            let q = |f: &dyn Fn(f64, f64) -> f64| quad2(f, x - dx / 2.0, x + dx / 2.0, y - dy / 2.0, y + dy / 2.0, 8);
+            let r3 = |a: f64, b: f64| (a * a + b * b).powf(1.5);
+            let e1 = q(&|a, b| 1.0 / a.hypot(b));
+            let exx = q(&|a, b| a * a / r3(a, b));
+            let eyy = q(&|a, b| b * b / r3(a, b));
+            let exy = q(&|a, b| a * b / r3(a, b));
+            let scale = e1.abs();
+            for (got, want, what) in
+                [(r.one_over_r, e1, "1/r"), (r.xx, exx, "X^2/r^3"), (r.yy, eyy, "Y^2/r^3"), (r.xy, exy, "XY/r^3")]
+            {
+                assert!(
+                    (got - want).abs() <= 1e-11 * scale,
+                    "{what} at ({x}, {y}): closed form {got}, quadrature {want}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn self_term_of_square_is_4h_asinh1() {
+        // Integral of 1/r over a square of side h about its centre: 4 h asinh(1).
+        let h = 0.7;
+        let r = rect_integrals(0.0, 0.0, h, h);
+        assert!((r.one_over_r - 4.0 * h * 1f64.asinh()).abs() < 1e-14);
+        assert!((r.xx - r.yy).abs() < 1e-15);
+        assert!(r.xy.abs() < 1e-15);
+        // Singular self term also checked against polar integration: split the square into 8
+        // triangles, each integral of 1/r over a right triangle with apex at the centre = h/2*asinh(1).
+        assert!((r.one_over_r - 8.0 * 0.5 * h * 1f64.asinh()).abs() < 1e-14);
+    }
+
+    #[test]
+    fn kernel_symmetry_and_shift() {
+        let k = Kernel::new(5, 4, 0.8, 0.5, 82000.0, 0.28, 0.0).unwrap();
+        for dj in -3isize..=3 {
+            for di in -4isize..=4 {
+                let a = k.index(di, dj);
+                let b = k.index(-di, -dj);
+                assert_eq!(k.zz[a], k.zz[b]);
+                assert!((k.xy[a] - k.xy[b]).abs() < 1e-22);
+                let c = k.index(-di, dj);
+                assert!((k.xy[a] + k.xy[c]).abs() < 1e-20);
+            }
+        }
+        assert!(k.xx[k.index(0, 0)] > 0.0 && k.yy[k.index(0, 0)] > 0.0);
+        // Shift by a whole element reproduces the unshifted kernel one column over.
+        let ks = Kernel::new(5, 4, 0.8, 0.5, 82000.0, 0.28, 0.8).unwrap();
+        for dj in -3isize..=3 {
+            for di in -3isize..=4 {
+                let a = ks.index(di, dj);
+                let b = k.index(di - 1, dj);
+                assert!((ks.xx[a] - k.xx[b]).abs() < 1e-15 * k.xx[k.index(0, 0)]);
+            }
+        }
+        assert!(Kernel::new(5, 4, 0.8, 0.5, -1.0, 0.28, 0.0).is_err());
+        assert!(Kernel::new(5, 4, f64::NAN, 0.5, 1.0, 0.28, 0.0).is_err());
+    }
+}

@@ -1,0 +1,236 @@
+//! Normal contact problem with prescribed total force on the element grid (Kalker 1990, sec. 5.3):
+//! find pressures `pn_k >= 0` [MPa] and the approach `delta` [mm] with
+//! `e_k = h_k + (Azz pn)_k - delta >= 0`, `pn_k e_k = 0`, `sum(pn) dx dy = FN` [N].
+//! Solved by the bound-constrained conjugate-gradient method of Polonsky & Keer (Wear 231 (1999)
+//! 206-219, sec. 3; the same scheme as CONTACT's NormCG), with `u = Azz pn` by [`Convolver`].
+
+use super::convolution::Convolver;
+use super::influence::Kernel;
+use super::ContactError;
+
+/// Iteration controls of [`solve_normal`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NormalParams {
+    /// Stop when `sum|pn - pn_prev| / sum(pn) < tol` (default 1e-10).
+    pub tol: f64,
+    /// Maximum number of CG iterations (default 2000).
+    pub max_iter: usize,
+}
+
+impl Default for NormalParams {
+    fn default() -> Self {
+        NormalParams { tol: 1e-10, max_iter: 2000 }
+    }
+}
+
+/// Result of [`solve_normal`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct NormalSolution {
+    /// Element pressures [MPa], flat index `k = j*mx + i`; contact area = elements with `pn > 0`.
+    pub pn_mpa: Vec<f64>,
+    /// Rigid approach `delta` [mm]: mean of `h + Azz pn` over the contact elements.
+    pub approach_mm: f64,
+    /// CG iterations used.
+    pub iterations: usize,
+    /// Final relative pressure change `sum|dpn| / sum(pn)`.
+    pub residual: f64,
+    /// Whether `residual < tol` was reached within `max_iter`.
+    pub converged: bool,
+}
+
+/// Solves the normal problem for prescribed total force `fn_n` [N] and undeformed distance
+/// `h_mm` [mm] per element, with the (unshifted) influence kernel `kernel` (its `zz` part).
+/// Polonsky & Keer (1999), CG steps restricted to the current contact set, negative pressures
+/// clipped, overlap elements re-entered, total force imposed by scaling after every step.
+pub fn solve_normal(
+    h_mm: &[f64],
+    kernel: &Kernel,
+    fn_n: f64,
+    params: &NormalParams,
+) -> Result<NormalSolution, ContactError> {
+    let n = kernel.mx * kernel.my;
+    if h_mm.len() != n {
+        return Err(ContactError::SizeMismatch(format!("h has {} entries, grid has {n}", h_mm.len())));
+    }
+    if !(fn_n.is_finite() && fn_n > 0.0) {
+        return Err(ContactError::InvalidInput(format!("total normal force must be finite and > 0 (got {fn_n} N)")));
+    }
+    if let Some(k) = h_mm.iter().position(|v| !v.is_finite()) {
+        return Err(ContactError::InvalidInput(format!("undeformed distance is not finite at element {k}")));
+    }
+    if !(params.tol.is_finite() && params.tol > 0.0) || params.max_iter == 0 {
+        return Err(ContactError::InvalidInput("normal solver needs tol > 0 and max_iter >= 1".into()));
+    }
+    let area = kernel.dx_mm * kernel.dy_mm;
+    let mut conv = Convolver::auto(kernel)?;
+
+    // Start: uniform pressure carrying FN on all elements.
+    let mut p = vec![fn_n / (area * n as f64); n];
+    let mut p_old = vec![0.0; n];
+    let mut u = vec![0.0; n];
+    let mut g = vec![0.0; n];
+    let mut t = vec![0.0; n];
+    let mut r = vec![0.0; n];
+    let mut g_old = 1.0;
+    let mut delta_flag = false;
+    let mut residual = f64::INFINITY;
+    let mut iterations = 0;
+    let mut converged = false;
+
+    while iterations < params.max_iter {
+        iterations += 1;
+        conv.normal(&p, None, &mut u)?;
+        let mut nc = 0usize;
+        let mut gsum = 0.0;
+        for k in 0..n {
+            g[k] = u[k] + h_mm[k];
+            if p[k] > 0.0 {
+                nc += 1;
+                gsum += g[k];
+            }
+        }
+        if nc == 0 {
+            return Err(ContactError::NoContact(
+                "no grid element carries load (grid too coarse to hold any contact?)".into(),
+            ));
+        }
+        let gbar = gsum / nc as f64;
+        let mut gg = 0.0;
+        for k in 0..n {
+            g[k] -= gbar;
+            if p[k] > 0.0 {
+                gg += g[k] * g[k];
+            }
+        }
+        let beta = if delta_flag && g_old > 0.0 { gg / g_old } else { 0.0 };
+        for k in 0..n {
+            t[k] = if p[k] > 0.0 { g[k] + beta * t[k] } else { 0.0 };
+        }
+        g_old = gg;
+        conv.normal(&t, None, &mut r)?;
+        let mut rsum = 0.0;
+        for k in 0..n {
+            if p[k] > 0.0 {
+                rsum += r[k];
+            }
+        }
+        let rbar = rsum / nc as f64;
+        let (mut num, mut den) = (0.0, 0.0);
+        for k in 0..n {
+            if p[k] > 0.0 {
+                num += g[k] * t[k];
+                den += (r[k] - rbar) * t[k];
+            }
+        }
+        let tau = if den != 0.0 { num / den } else { 0.0 };
+        if !tau.is_finite() {
+            return Err(ContactError::NonFinite("normal CG step length".into()));
+        }
+        p_old.copy_from_slice(&p);
+        for k in 0..n {
+            if p[k] > 0.0 {
+                p[k] = (p[k] - tau * t[k]).max(0.0);
+            }
+        }
+        // Overlapping elements outside the contact set re-enter (Polonsky & Keer, step 9).
+        let mut n_overlap = 0usize;
+        for k in 0..n {
+            if p[k] <= 0.0 && g[k] < 0.0 {
+                p[k] -= tau * g[k];
+                n_overlap += 1;
+            }
+        }
+        delta_flag = n_overlap == 0;
+        let total: f64 = p.iter().sum::<f64>() * area;
+        if !(total.is_finite() && total > 0.0) {
+            return Err(ContactError::NoContact(
+                "no grid element can carry load (grid too coarse to hold any contact?)".into(),
+            ));
+        }
+        let scale = fn_n / total;
+        let mut dsum = 0.0;
+        let mut psum = 0.0;
+        for k in 0..n {
+            p[k] *= scale;
+            dsum += (p[k] - p_old[k]).abs();
+            psum += p[k];
+        }
+        residual = dsum / psum;
+        if residual < params.tol {
+            converged = true;
+            break;
+        }
+    }
+
+    // Approach: mean of h + u over the final contact set.
+    conv.normal(&p, None, &mut u)?;
+    let (mut s, mut c) = (0.0, 0usize);
+    for k in 0..n {
+        if p[k] > 0.0 {
+            s += h_mm[k] + u[k];
+            c += 1;
+        }
+    }
+    if c == 0 {
+        return Err(ContactError::NoContact(
+            "no grid element carries load (grid too coarse to hold any contact?)".into(),
+        ));
+    }
+    let approach_mm = s / c as f64;
+    if !approach_mm.is_finite() || p.iter().any(|v| !v.is_finite()) {
+        return Err(ContactError::NonFinite("normal pressure".into()));
+    }
+    Ok(NormalSolution { pn_mpa: p, approach_mm, iterations, residual, converged })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tiny_grids_give_finite_answers_or_errors() {
+        // A single element carries the whole load.
+        let k = Kernel::new(1, 1, 2.0, 1.0, 82000.0, 0.28, 0.0).unwrap();
+        let sol = solve_normal(&[0.0], &k, 500.0, &NormalParams::default()).unwrap();
+        assert!(sol.converged && (sol.pn_mpa[0] - 250.0).abs() < 1e-12);
+        assert!(sol.approach_mm.is_finite() && sol.approach_mm > 0.0);
+        // Two elements, one far away: it carries nothing.
+        let k = Kernel::new(2, 1, 1.0, 1.0, 82000.0, 0.28, 0.0).unwrap();
+        let sol = solve_normal(&[0.0, 10.0], &k, 100.0, &NormalParams::default()).unwrap();
+        assert!(sol.pn_mpa[1] == 0.0 && (sol.pn_mpa[0] - 100.0).abs() < 1e-9);
+        // A kernel without stiffness cannot give a finite solution: error or flagged, never NaN.
+        let mut k0 = Kernel::new(3, 3, 1.0, 1.0, 82000.0, 0.28, 0.0).unwrap();
+        k0.zz.iter_mut().for_each(|v| *v = 0.0);
+        match solve_normal(&[0.0; 9], &k0, 100.0, &NormalParams::default()) {
+            Ok(s) => assert!(s.pn_mpa.iter().all(|v| v.is_finite())),
+            Err(e) => assert!(!e.to_string().is_empty()),
+        }
+        assert!(solve_normal(&[0.0; 4], &k0, 100.0, &NormalParams::default()).is_err());
+    }
+
+    #[test]
+    fn hertz_pressure_on_small_grid() {
+        let grid = crate::physics::Grid::new(16, 16, 8.56, 4.08);
+        let (fnn, g, nu) = (100_000.0, 82000.0, 0.28);
+        let h = super::super::undeformed_distance(
+            &grid,
+            &crate::physics::HertzContact { a_mm: 8.56, b_mm: 4.08, fn_n: fnn },
+            &crate::physics::Material::from_g(g, nu),
+        );
+        let k = Kernel::new(16, 16, grid.dx_mm, grid.dy_mm, g, nu, 0.0).unwrap();
+        let sol = solve_normal(&h, &k, fnn, &NormalParams::default()).unwrap();
+        assert!(sol.converged);
+        let total: f64 = sol.pn_mpa.iter().sum::<f64>() * grid.element_area_mm2();
+        assert!((total - fnn).abs() < 1e-9 * fnn);
+        assert!(sol.pn_mpa.iter().all(|&v| v >= 0.0));
+        let p0 = 3.0 * fnn / (2.0 * std::f64::consts::PI * 8.56 * 4.08);
+        let pmax = sol.pn_mpa.iter().cloned().fold(0.0, f64::max);
+        assert!((pmax / p0 - 1.0).abs() < 0.02, "pmax {pmax} p0 {p0}");
+        // Errors, never NaN.
+        assert!(solve_normal(&h, &k, 0.0, &NormalParams::default()).is_err());
+        assert!(solve_normal(&h, &k, f64::NAN, &NormalParams::default()).is_err());
+        let mut hb = h.clone();
+        hb[3] = f64::NAN;
+        assert!(solve_normal(&hb, &k, fnn, &NormalParams::default()).is_err());
+    }
+}
