@@ -74,26 +74,6 @@ fn write_results(dir: &Path, scenes: &[StoredScene], with_timing: bool) -> Resul
     Ok(())
 }
 
-fn findings(
-    scenes: &[StoredScene],
-    refs: &References,
-    baseline: Option<(&Path, Against)>,
-) -> Result<Vec<Finding>, Error> {
-    let mut out = Vec::new();
-    for s in scenes {
-        out.extend(compare::against_references(s, refs)?);
-        if let Some((dir, against)) = baseline {
-            let theirs = if dir.join(&s.name).join("scene.json").exists() {
-                Some(results::read_scene(dir, &s.name)?)
-            } else {
-                None
-            };
-            out.extend(compare::against_results(s, theirs.as_ref(), against));
-        }
-    }
-    Ok(out)
-}
-
 /// Build the report from stored scenes.
 pub fn build_report(
     scenes: &[StoredScene],
@@ -101,7 +81,7 @@ pub fn build_report(
     out: &Path,
     golden: Option<&Path>,
 ) -> Result<PathBuf, Error> {
-    let findings = findings(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
+    let findings = compare::evaluate(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
     std::fs::create_dir_all(out.join("figures"))?;
     let mut extra = vec![("The thesis's figures beside ours".to_string(), sections::thesis_beside_ours(refs))];
     if let Some(s) = sections::error_vs_time(scenes, refs, &out.join("figures")) {
@@ -200,7 +180,7 @@ pub fn check(
         }
     };
     let scenes = run_suite(suite_dir, shard, progress)?;
-    let all = findings(&scenes, &refs, Some(baseline))?;
+    let all = compare::evaluate(&scenes, &refs, Some(baseline))?;
     let worst = compare::worst_per_group(&all);
     print!("{}", compare::table(&worst));
     let fails = compare::failures(&all);

@@ -172,3 +172,49 @@ fn solver_flag_is_validated() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("--solver"));
 }
+
+/// `run` gives byte-identical result CSVs with 1 and 2 rayon threads.
+#[test]
+fn run_is_identical_with_one_or_two_threads() {
+    let tmp = tempfile::tempdir().unwrap();
+    let suite = tmp.path().join("suite");
+    std::fs::create_dir_all(&suite).unwrap();
+    for name in ["step_mu04", "sine_f60_mu10", "steady_fastsim_g22", "step_circle"] {
+        std::fs::copy(root().join(format!("scenes/thesis/{name}.toml")), suite.join(format!("{name}.toml"))).unwrap();
+    }
+    let mut outs = Vec::new();
+    for threads in ["1", "2"] {
+        let res = tmp.path().join(format!("res{threads}"));
+        let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
+            .args([
+                "run",
+                "--suite",
+                suite.to_str().unwrap(),
+                "--reference",
+                root().join("reference").to_str().unwrap(),
+            ])
+            .args([
+                "--results",
+                res.to_str().unwrap(),
+                "--report",
+                tmp.path().join(format!("rep{threads}")).to_str().unwrap(),
+                "--quiet",
+            ])
+            .env("RAYON_NUM_THREADS", threads)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        outs.push(res);
+    }
+    for name in ["step_mu04", "sine_f60_mu10", "steady_fastsim_g22", "step_circle"] {
+        for f in std::fs::read_dir(outs[0].join(name)).unwrap() {
+            let f = f.unwrap().file_name();
+            if f == "timing.csv" {
+                continue; // wall times, kept apart for exactly this reason
+            }
+            let a = std::fs::read(outs[0].join(name).join(&f)).unwrap();
+            let b = std::fs::read(outs[1].join(name).join(&f)).unwrap();
+            assert_eq!(a, b, "{name}/{f:?} differs between 1 and 2 threads");
+        }
+    }
+}
