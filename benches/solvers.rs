@@ -39,6 +39,34 @@ fn bench_uba(c: &mut Criterion) {
     g.finish();
 }
 
+/// One transient step of the CONTACT-style solver on sine_f30_mu10 (state after 10 steps from
+/// zero traction; the normal solve and kernels are set up outside the timing).
+fn bench_contact(c: &mut Criterion) {
+    use creepbench::solvers::contact::{influence::Kernel, normal, tangential, undeformed_distance};
+    let mut g = c.benchmark_group("contact_step");
+    for grid in [22, 44, 88] {
+        let p = problem(grid);
+        let (gr, m) = (&p.grid, &p.material);
+        let k0 = Kernel::new(gr.mx, gr.my, gr.dx_mm, gr.dy_mm, m.g_mpa, m.poisson, 0.0).unwrap();
+        let ks = Kernel::new(gr.mx, gr.my, gr.dx_mm, gr.dy_mm, m.g_mpa, m.poisson, p.dq_mm).unwrap();
+        let h = undeformed_distance(gr, &p.hertz, m);
+        let pn = normal::solve_normal(&h, &k0, p.hertz.fn_n, &normal::NormalParams::default()).unwrap().pn_mpa;
+        let (x, y) = gr.centres();
+        let mut solver = tangential::TangentialSolver::new(&k0, &ks, &pn, &x, &y).unwrap();
+        let params = |k: usize| tangential::TangentialParams::new(1.0, p.samples[k].cx, 0.0, 0.0, p.dq_mm);
+        let (mut px, mut py) = (vec![0.0; gr.len()], vec![0.0; gr.len()]);
+        for k in 0..10 {
+            let r = solver.transient_step(&params(k), &px, &py).unwrap();
+            (px, py) = (r.px, r.py);
+        }
+        let next = params(10);
+        g.bench_with_input(BenchmarkId::from_parameter(grid), &grid, |b, _| {
+            b.iter(|| solver.transient_step(black_box(&next), &px, &py).unwrap().iterations)
+        });
+    }
+    g.finish();
+}
+
 fn bench_fastsim(c: &mut Criterion) {
     let mut g = c.benchmark_group("fastsim_creepage");
     for grid in [22, 44, 88] {
@@ -54,4 +82,9 @@ fn bench_fastsim(c: &mut Criterion) {
 }
 
 criterion_group!(benches, bench_uba, bench_fastsim);
-criterion_main!(benches);
+criterion_group! {
+    name = contact;
+    config = Criterion::default().sample_size(10);
+    targets = bench_contact
+}
+criterion_main!(benches, contact);

@@ -80,6 +80,7 @@ pub fn build_report(
     refs: &References,
     out: &Path,
     golden: Option<&Path>,
+    scaling: bool,
 ) -> Result<PathBuf, Error> {
     let findings = compare::evaluate(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
     std::fs::create_dir_all(out.join("figures"))?;
@@ -94,11 +95,17 @@ pub fn build_report(
         extra.push(("Stability".into(), s));
     }
     extra.push(("Timing".into(), sections::timing(scenes, refs)));
-    // The report writer recreates figures/; keep the error plot by writing it after.
-    let svg = std::fs::read(out.join("figures/error_vs_time.svg")).ok();
+    if scaling {
+        extra.push(("Cost per step against grid size".into(), sections::scaling(&out.join("figures"))));
+    }
+    // The report writer recreates figures/; keep the section plots by writing them after.
+    let svgs: Vec<(String, Vec<u8>)> = ["error_vs_time.svg", "cost_per_step.svg"]
+        .iter()
+        .filter_map(|f| Some((f.to_string(), std::fs::read(out.join("figures").join(f)).ok()?)))
+        .collect();
     report::write(out, &ReportInput { scenes, refs, findings: &findings, extra_sections: extra })?;
-    if let Some(svg) = svg {
-        std::fs::write(out.join("figures/error_vs_time.svg"), svg)?;
+    for (f, svg) in svgs {
+        std::fs::write(out.join("figures").join(f), svg)?;
     }
     Ok(out.join("validation.md"))
 }
@@ -121,7 +128,7 @@ pub fn run(
         eprintln!("shard done; build the report with `creepbench merge {} ...`", results_dir.display());
         return Ok(());
     }
-    let md = build_report(&scenes, &refs, report_dir, Some(golden))?;
+    let md = build_report(&scenes, &refs, report_dir, Some(golden), true)?;
     println!("{}", md.display());
     Ok(())
 }
@@ -139,7 +146,7 @@ pub fn merge(dirs: &[PathBuf], reference: &Path, report_dir: &Path, golden: &Pat
         }
     }
     scenes.sort_by(|a, b| a.name.cmp(&b.name));
-    let md = build_report(&scenes, &refs, report_dir, Some(golden))?;
+    let md = build_report(&scenes, &refs, report_dir, Some(golden), false)?;
     println!("{}", md.display());
     Ok(())
 }

@@ -214,3 +214,49 @@ pub fn grid_convergence(scenes: &[StoredScene], refs: &References) -> Option<Str
     }
     Some(s)
 }
+
+/// Cost per step against element count (22² … 176²) for each built-in solver, with the fitted
+/// growth exponent (least squares on log–log). Measured now, on this machine: the cost per step
+/// is the difference of two runs of different length, so set-up (kernels, normal solve) cancels.
+pub fn scaling(figs: &Path) -> String {
+    let grids = [22usize, 44, 88, 176];
+    let mut s = String::from("Wall time per time step against the number of grid elements, step creepage 0.005 from zero traction on the default contact (μ 0.4). Per step = (T(n₂) − T(n₁))/(n₂ − n₁), so set-up cancels. Exponent: slope of log(time) against log(elements).\n\n| solver | 22² | 44² | 88² | 176² | exponent |\n|---|---|---|---|---|---|\n");
+    let mut series = Vec::new();
+    for (solver, n1, n2) in [("uba", 20usize, 420usize), ("fastsim", 20, 220), ("contact", 2, 6)] {
+        let mut pts = Vec::new();
+        for &g in &grids {
+            let t = |n: usize| -> Option<f64> {
+                let text = format!("name = \"scaling\"\nsolvers = [\"{solver}\"]\n[contact]\na_mm = 8.56\nb_mm = 4.08\nfn_n = 100000.0\nmu = 0.4\n[material]\ng_mpa = 82000.0\npoisson = 0.28\n[grid]\nmx = {g}\nmy = {g}\n[creepage]\nkind = \"step\"\nc = 0.005\nsteps = {n}\n");
+                let p = Problem::resolve(&Scene::from_toml(&text, Path::new(".")).ok()?).ok()?;
+                let sv = solvers::by_name(solver, &p)?;
+                let start = std::time::Instant::now();
+                sv.run(&p).ok()?;
+                Some(start.elapsed().as_secs_f64())
+            };
+            if let (Some(a), Some(b)) = (t(n1), t(n2)) {
+                pts.push(((g * g) as f64, ((b - a) / (n2 - n1) as f64).max(1e-12)));
+            }
+        }
+        let logs: Vec<(f64, f64)> = pts.iter().map(|(n, t)| (n.ln(), t.ln())).collect();
+        let m = logs.len() as f64;
+        let (sx, sy) = (logs.iter().map(|p| p.0).sum::<f64>() / m, logs.iter().map(|p| p.1).sum::<f64>() / m);
+        let slope = logs.iter().map(|p| (p.0 - sx) * (p.1 - sy)).sum::<f64>()
+            / logs.iter().map(|p| (p.0 - sx).powi(2)).sum::<f64>();
+        let cells: Vec<String> = pts
+            .iter()
+            .map(|(_, t)| if *t < 1e-3 { format!("{:.2} µs", t * 1e6) } else { format!("{:.2} ms", t * 1e3) })
+            .collect();
+        let _ = writeln!(s, "| {solver} | {} | {slope:.2} |", cells.join(" | "));
+        series.push(Series {
+            label: solver.into(),
+            points: pts.iter().map(|(n, t)| (*n, t.log10())).collect(),
+            markers: false,
+        });
+    }
+    let _ = std::fs::write(
+        figs.join("cost_per_step.svg"),
+        line_chart("Cost per step against elements", "elements (log)", "log10(seconds per step)", &series, true),
+    );
+    s.push_str("\n![cost per step](figures/cost_per_step.svg)\n");
+    s
+}
