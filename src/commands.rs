@@ -104,6 +104,7 @@ pub fn build_report(
         .filter_map(|f| Some((f.to_string(), std::fs::read(out.join("figures").join(f)).ok()?)))
         .collect();
     report::write(out, &ReportInput { scenes, refs, findings: &findings, extra_sections: extra })?;
+    crate::harness::table::write(out, &crate::harness::table::rows(scenes, &findings))?;
     for (f, svg) in svgs {
         std::fs::write(out.join("figures").join(f), svg)?;
     }
@@ -162,30 +163,14 @@ pub fn check(
     progress: bool,
 ) -> Result<(), Error> {
     let refs = References::load(reference)?;
-    let baseline = match against {
-        Some(dir) => {
-            if !dir.is_dir() {
-                return Err(InputError::new(
-                    "--against",
-                    dir.display(),
-                    "a folder of results written by `creepbench run` (--results)",
-                )
-                .into());
-            }
-            (dir, Against::Previous)
-        }
-        None => {
-            if !golden.is_dir() {
-                return Err(InputError::new(
-                    "--golden",
-                    golden.display(),
-                    "the golden folder (create it with `creepbench bless`)",
-                )
-                .into());
-            }
-            (golden, Against::Golden)
-        }
+    let (dir, key, what, kind) = match against {
+        Some(dir) => (dir, "--against", "a folder of results written by `creepbench run` (--results)", Against::Previous),
+        None => (golden, "--golden", "the golden folder (create it with `creepbench bless`)", Against::Golden),
     };
+    if !dir.is_dir() {
+        return Err(InputError::new(key, dir.display(), what).into());
+    }
+    let baseline = (dir, kind);
     let scenes = run_suite(suite_dir, shard, progress)?;
     let all = compare::evaluate(&scenes, &refs, Some(baseline))?;
     let worst = compare::worst_per_group(&all);

@@ -80,20 +80,29 @@ pub fn settling_time(t: &[f64], f: &[f64]) -> Option<f64> {
     })
 }
 
-/// Oscillation index of a time history: the fraction of interior steps where the first
-/// difference of f changes sign between significant differences (> 1e-9 of the range of f).
-/// A smooth response scores about 2 per period (its extrema); a step-to-step sawtooth scores ~1.
+/// Number of turns in a sequence: places where the first difference changes sign between two
+/// differences larger than `tiny` (shared by the oscillation and sawtooth indicators).
+pub fn turns(values: impl IntoIterator<Item = f64>, tiny: f64) -> usize {
+    let mut it = values.into_iter();
+    let (Some(mut a), Some(mut b)) = (it.next(), it.next()) else { return 0 };
+    let mut n = 0;
+    for c in it {
+        let (d0, d1) = (b - a, c - b);
+        n += usize::from(d0.abs() > tiny && d1.abs() > tiny && d0 * d1 < 0.0);
+        (a, b) = (b, c);
+    }
+    n
+}
+
+/// Oscillation index of a time history: the fraction of interior steps where f turns
+/// (differences > 1e-9 of the range of f). A smooth response scores about 2 per period (its
+/// extrema); a step-to-step sawtooth scores ~1.
 pub fn oscillation_index(f: &[f64]) -> f64 {
     if f.len() < 3 {
         return 0.0;
     }
     let (lo, hi) = f.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
-    let tiny = 1e-9 * (hi - lo).max(f64::MIN_POSITIVE);
-    let changes = f.windows(3).filter(|w| {
-        let (d0, d1) = (w[1] - w[0], w[2] - w[1]);
-        d0.abs() > tiny && d1.abs() > tiny && d0 * d1 < 0.0
-    });
-    changes.count() as f64 / (f.len() - 2) as f64
+    turns(f.iter().copied(), 1e-9 * (hi - lo).max(f64::MIN_POSITIVE)) as f64 / (f.len() - 2) as f64
 }
 
 /// The metrics the problem asks for, computed on one history.

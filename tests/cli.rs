@@ -120,6 +120,11 @@ fn bad_input_exits_2_and_writes_nothing() {
     }
 }
 
+/// `simulate DIR/s.toml --out DIR/o`.
+fn simulate_in(dir: &Path) -> std::process::Output {
+    creepbench(&["simulate", dir.join("s.toml").to_str().unwrap(), "--out", dir.join("o").to_str().unwrap()])
+}
+
 /// A table file with a bad cell names the file, line and column.
 #[test]
 fn bad_table_names_line_and_column() {
@@ -127,12 +132,7 @@ fn bad_table_names_line_and_column() {
     std::fs::write(dir.path().join("t.csv"), "t_s,cx,fn_n\n0,0,100000\n0.01,0.005,-3\n").unwrap();
     let text = base().replace("kind = \"step\"\nc = 0.005\nsteps = 10", "kind = \"table\"\nfile = \"t.csv\"");
     std::fs::write(dir.path().join("s.toml"), text).unwrap();
-    let o = creepbench(&[
-        "simulate",
-        dir.path().join("s.toml").to_str().unwrap(),
-        "--out",
-        dir.path().join("o").to_str().unwrap(),
-    ]);
+    let o = simulate_in(dir.path());
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(err.contains("line 3 column fn_n") && err.contains("-3"), "{err}");
@@ -145,12 +145,7 @@ fn table_kind_varies_load_and_friction() {
     std::fs::write(dir.path().join("t.csv"), "t_s,cx,fn_n,mu\n0,0.002,100000,0.4\n0.02,0.002,50000,0.2\n").unwrap();
     let text = base().replace("kind = \"step\"\nc = 0.005\nsteps = 10", "kind = \"table\"\nfile = \"t.csv\"");
     std::fs::write(dir.path().join("s.toml"), text).unwrap();
-    let o = creepbench(&[
-        "simulate",
-        dir.path().join("s.toml").to_str().unwrap(),
-        "--out",
-        dir.path().join("o").to_str().unwrap(),
-    ]);
+    let o = simulate_in(dir.path());
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let h = creepbench::history::History::from_csv(
         "uba",

@@ -168,16 +168,18 @@ pub fn sawtooth_index(grid: &Grid, pressure: &[f64], t: &Tractions) -> f64 {
     let tiny = 1e-9 * scale;
     let (mut changes, mut interior) = (0usize, 0usize);
     for j in 0..grid.my {
-        for i in 1..grid.mx.saturating_sub(1) {
-            let k = grid.index(i, j);
-            if pressure[k - 1] <= 0.0 || pressure[k] <= 0.0 || pressure[k + 1] <= 0.0 {
-                continue;
+        // Each maximal run of three or more loaded elements along x.
+        let mut i = 0;
+        while i < grid.mx {
+            let start = i;
+            while i < grid.mx && pressure[grid.index(i, j)] > 0.0 {
+                i += 1;
             }
-            interior += 1;
-            let (d0, d1) = (t.tx[k] - t.tx[k - 1], t.tx[k + 1] - t.tx[k]);
-            if d0.abs() > tiny && d1.abs() > tiny && d0 * d1 < 0.0 {
-                changes += 1;
+            if i - start >= 3 {
+                interior += i - start - 2;
+                changes += crate::metrics::turns((start..i).map(|ii| t.tx[grid.index(ii, j)]), tiny);
             }
+            i += 1;
         }
     }
     let rows_with_peak = grid.my as f64;
