@@ -164,7 +164,9 @@ pub fn check(
 ) -> Result<(), Error> {
     let refs = References::load(reference)?;
     let (dir, key, what, kind) = match against {
-        Some(dir) => (dir, "--against", "a folder of results written by `creepbench run` (--results)", Against::Previous),
+        Some(dir) => {
+            (dir, "--against", "a folder of results written by `creepbench run` (--results)", Against::Previous)
+        }
         None => (golden, "--golden", "the golden folder (create it with `creepbench bless`)", Against::Golden),
     };
     if !dir.is_dir() {

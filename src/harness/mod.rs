@@ -8,6 +8,6 @@ pub mod reference;
 pub mod report;
 pub mod results;
 pub mod sections;
-pub mod table;
 pub mod suite;
+pub mod table;
 pub mod tolerances;

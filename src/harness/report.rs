@@ -146,8 +146,8 @@ pub fn write(dir: &Path, input: &ReportInput) -> std::io::Result<()> {
             match f {
                 Some(f) => {
                     let mark = if f.gated && !f.passed() { " ✗" } else { "" };
-                    let _ =
-                        write!(md, " {:.5}{mark} | {} |", f.diff, f.step.map(|k| k.to_string()).unwrap_or_default());
+                    let v = if f.diff < 1e-3 { format!("{:.1e}", f.diff) } else { format!("{:.4}", f.diff) };
+                    let _ = write!(md, " {v}{mark} | {} |", f.step.map(|k| k.to_string()).unwrap_or_default());
                 }
                 None => {
                     let _ = write!(md, " — | |");
@@ -161,7 +161,7 @@ pub fn write(dir: &Path, input: &ReportInput) -> std::io::Result<()> {
     // Delay ratios and loop areas.
     let sines: Vec<&StoredScene> = input.scenes.iter().filter(|s| s.period_s().is_some()).collect();
     if !sines.is_empty() {
-        let _ = writeln!(md, "## Delay ratios\n\nTime from the maximum of cx to the next maximum of f in the second period, over the period (parabolic peak interpolation). Thesis Table 4.2 (CONTACT, μ = 1, 22×22): 0.040 / 0.128 / 0.220 at 10 / 30 / 60 Hz. Where f saturates at μ near the creepage peak the delay is ill-defined (flat top).\n");
+        let _ = writeln!(md, "## Delay ratios\n\nTime from the maximum of cx to the next maximum of f in the second period, over the period (parabolic peak interpolation). Thesis Table 4.2 (CONTACT, μ = 1, 22×22): 0.040 / 0.128 / 0.220 at 10 / 30 / 60 Hz. † f reaches μ (within 3 %): the maximum is a flat top and the delay ill-defined (reported, not gated).\n");
         table_head(&mut md, &["scene", "thesis", "CONTACT"], &solvers);
         for sc in &sines {
             let p = sc.period_s().unwrap_or(1.0);
@@ -177,8 +177,15 @@ pub fn write(dir: &Path, input: &ReportInput) -> std::io::Result<()> {
                     metrics::delay_ratio(&h.column("t_s")?, &h.column("cx")?, &h.column("fx_over_fn")?, p)
                 });
             let _ = write!(md, "| {} | {} | {} |", sc.name, fmt(thesis, 3), fmt(contact, 4));
+            let mu = sc.scene["mu"].as_f64().unwrap_or(f64::INFINITY);
             for s in &solvers {
-                let _ = write!(md, " {} |", fmt(sc.metrics.get(&(s.clone(), "delay_ratio".into(), None)).copied(), 4));
+                let flat = sc
+                    .histories
+                    .get(s)
+                    .and_then(|h| h.column("fx_over_fn"))
+                    .is_some_and(|f| f.iter().any(|v| v.abs() >= 0.97 * mu));
+                let d = fmt(sc.metrics.get(&(s.clone(), "delay_ratio".into(), None)).copied(), 4);
+                let _ = write!(md, " {d}{} |", if flat { " †" } else { "" });
             }
             md.push('\n');
         }

@@ -22,11 +22,26 @@ pub fn rows(scenes: &[StoredScene], findings: &[Finding]) -> Vec<TableRow> {
     let mut out = Vec::new();
     for s in scenes {
         for ((solver, metric, step), v) in &s.metrics {
-            out.push(TableRow { scene: s.name.clone(), solver: solver.clone(), quantity: metric.clone(), step: *step, value: *v });
+            out.push(TableRow {
+                scene: s.name.clone(),
+                solver: solver.clone(),
+                quantity: metric.clone(),
+                step: *step,
+                value: *v,
+            });
         }
     }
-    for f in findings.iter().filter(|f| matches!(f.against, Against::Contact | Against::ContactFastsim) && f.quantity == "fx_over_fn") {
-        out.push(TableRow { scene: f.scene.clone(), solver: f.solver.clone(), quantity: "max_abs_error_vs_contact".into(), step: f.step, value: f.diff });
+    for f in findings
+        .iter()
+        .filter(|f| matches!(f.against, Against::Contact | Against::ContactFastsim) && f.quantity == "fx_over_fn")
+    {
+        out.push(TableRow {
+            scene: f.scene.clone(),
+            solver: f.solver.clone(),
+            quantity: "max_abs_error_vs_contact".into(),
+            step: f.step,
+            value: f.diff,
+        });
     }
     out.sort_by(|a, b| (&a.scene, &a.solver, &a.quantity, a.step).cmp(&(&b.scene, &b.solver, &b.quantity, b.step)));
     out
@@ -36,7 +51,14 @@ pub fn rows(scenes: &[StoredScene], findings: &[Finding]) -> Vec<TableRow> {
 pub fn write(dir: &Path, rows: &[TableRow]) -> std::io::Result<()> {
     let mut s = String::from("scene,solver,quantity,step,value\n");
     for r in rows {
-        s.push_str(&format!("{},{},{},{},{}\n", r.scene, r.solver, r.quantity, r.step.map(|k| k.to_string()).unwrap_or_default(), r.value));
+        s.push_str(&format!(
+            "{},{},{},{},{}\n",
+            r.scene,
+            r.solver,
+            r.quantity,
+            r.step.map(|k| k.to_string()).unwrap_or_default(),
+            r.value
+        ));
     }
     std::fs::write(dir.join("results.csv"), s)?;
     #[cfg(feature = "polars")]
