@@ -4,6 +4,20 @@
 //! `k = j*mx + i`, centre `x_i = −a + dx/2 + i dx`, `y_j = −b + dy/2 + j dy`. Material enters at
 //! the leading edge x = −a and moves in +x (the thesis's and the UBA's orientation).
 
+/// Where a row's integration starts (`[model] leading_edge`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum LeadingEdge {
+    /// The grid's own edge: the element upstream of a row's first loaded element carries zero
+    /// traction, so that element gets one full element length of slip. This is the fixed point
+    /// of the UBA's upwind scheme and what CONTACT's FASTSIM does on a grid (it reproduces
+    /// CONTACT's `steady_fastsim_g22` to 1e-4).
+    Grid,
+    /// The ellipse's exact leading edge `x = −a √(1 − y²/b²)` of each row (Kalker's strip
+    /// integration). For the UBA: a ghost value upstream, the exact linear profile at x − dx.
+    Exact,
+}
+
 /// A grid of `mx × my` piecewise-constant elements covering `[−a, a] × [−b, b]`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Grid {

@@ -11,7 +11,7 @@ pub mod material;
 pub mod pressure;
 
 pub use bound::project_to_bound;
-pub use grid::Grid;
+pub use grid::{Grid, LeadingEdge};
 pub use hertz::{HertzContact, Radii};
 pub use kalker::{CoefficientSource, Coefficients, Flexibilities, FlexibilityModel};
 pub use material::Material;

@@ -7,8 +7,7 @@ pub mod reader;
 pub mod table;
 
 use crate::error::InputError;
-use crate::physics::{CoefficientSource, FlexibilityModel, PressureShape, Radii};
-use crate::solvers::brush::LeadingEdge;
+use crate::physics::{CoefficientSource, FlexibilityModel, LeadingEdge, PressureShape, Radii};
 use reader::{Range, Section};
 use std::path::{Path, PathBuf};
 

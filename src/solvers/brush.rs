@@ -2,6 +2,7 @@
 //! rolling distance, the steady march along each row from the leading edge with the traction
 //! bound, and the traction coefficients. The two solvers differ only in how they march.
 
+pub use crate::physics::LeadingEdge;
 use crate::physics::{project_to_bound, Flexibilities, Grid};
 
 /// Rigid slip per unit rolling distance divided by the flexibility [MPa/mm]
@@ -30,20 +31,6 @@ impl SlipRates {
     pub fn between(&self, x0: f64, x1: f64, y: f64) -> (f64, f64) {
         ((self.cx_l1 - self.cs_l3 * y) * (x1 - x0), self.cy_l2 * (x1 - x0) + 0.5 * self.cs_l3 * (x1 * x1 - x0 * x0))
     }
-}
-
-/// Where a row's integration starts (`[model] leading_edge`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum LeadingEdge {
-    /// The grid's own edge: the element upstream of a row's first loaded element carries zero
-    /// traction, so that element gets one full element length of slip. This is the fixed point
-    /// of the UBA's upwind scheme and what CONTACT's FASTSIM does on a grid (it reproduces
-    /// CONTACT's `steady_fastsim_g22` to 1e-4).
-    Grid,
-    /// The ellipse's exact leading edge `x = −a √(1 − y²/b²)` of each row (Kalker's strip
-    /// integration). For the UBA: a ghost value upstream, the exact linear profile at x − dx.
-    Exact,
 }
 
 /// How a solver integrates the slip rate over one element.
