@@ -10,10 +10,6 @@ def scene(r):
     out = [HEAD.format(name=name), f'name = "{name}"']
     if r["method"] == "fastsim_parabolic":
         out.append('solvers = ["uba", "fastsim"]')
-    elif name == "steady_exact_g88":
-        # The exact solver's steady sweep at 88x88 takes minutes (CONTACT's took 25.6 min): it is
-        # left out of the default suite; its CONTACT result still grades UBA and FASTSIM.
-        out.append('solvers = ["uba", "fastsim"]')
     else:
         out.append('solvers = ["uba", "fastsim", "contact"]')
     out += ["", "[contact]", f"a_mm = {float(r['a_mm'])!r}", f"b_mm = {float(r['b_mm'])!r}",

@@ -50,7 +50,7 @@ impl HertzContact {
     pub fn from_radii(radii: &Radii, fn_n: f64, material: &Material) -> Result<Self, HertzError> {
         let curv_x = 0.5 / radii.r_wx_mm; // A (rail straight: 1/R_rx = 0)
         let curv_y = 0.5 * (1.0 / radii.r_wy_mm + 1.0 / radii.r_ry_mm); // B
-        if !(curv_x > 0.0 && curv_y > 0.0) || !fn_n.is_finite() || fn_n <= 0.0 {
+        if !(curv_x > 0.0 && curv_y > 0.0 && fn_n.is_finite() && fn_n > 0.0) {
             return Err(HertzError(format!(
                 "curvatures A = {curv_x} /mm and B = {curv_y} /mm must be positive (convex contact)"
             )));

@@ -47,6 +47,7 @@ pub struct Flexibilities {
 /// s = 0.1 … 0.9) and s = 2 − b/a for a ≥ b (lower half, s = 1.0 … 1.9).
 /// Each row: c11, c22, c23 at ν = 0, 0.25, 0.5.
 #[rustfmt::skip]
+#[allow(clippy::approx_constant)] // 3.14 is Kalker's c22 at b/a = 0.5, ν = 0.5, not π
 const TABLE_A1: [[[f64; 3]; 3]; 19] = [
     [[2.51, 3.31, 4.85], [2.51, 2.52, 2.53], [0.334, 0.473, 0.731]], // a/b = 0.1
     [[2.59, 3.37, 4.81], [2.59, 2.63, 2.66], [0.483, 0.603, 0.809]],
