@@ -39,7 +39,7 @@ pub fn auto_path(mx: usize, my: usize) -> ConvPath {
 }
 
 /// Smallest integer `>= n` whose prime factors are 2, 3, 5 or 7 (fast FFT length).
-#[allow(clippy::manual_is_multiple_of)] // is_multiple_of needs Rust 1.87; keep MSRV 1.80
+#[allow(clippy::manual_is_multiple_of)] // is_multiple_of needs Rust 1.87; MSRV is 1.82
 fn fft_len(n: usize) -> usize {
     let mut m = n.max(1);
     loop {
@@ -297,8 +297,7 @@ impl Convolver {
         self.check("p", p)?;
         self.check("u", u)?;
         self.check_mask(mask)?;
-        #[allow(clippy::unnecessary_map_or)] // is_none_or needs Rust 1.82; keep MSRV 1.80
-        let on = |k: usize| mask.map_or(true, |m| m[k]);
+        let on = |k: usize| mask.is_none_or(|m| m[k]);
         match self.path {
             ConvPath::Direct => {
                 self.active.clear();
@@ -366,8 +365,7 @@ impl Convolver {
         self.check("ux", ux)?;
         self.check("uy", uy)?;
         self.check_mask(mask)?;
-        #[allow(clippy::unnecessary_map_or)] // is_none_or needs Rust 1.82; keep MSRV 1.80
-        let on = |k: usize| mask.map_or(true, |m| m[k]);
+        let on = |k: usize| mask.is_none_or(|m| m[k]);
         match self.path {
             ConvPath::Direct => {
                 self.active.clear();

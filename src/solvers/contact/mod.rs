@@ -7,8 +7,11 @@
 //!   distance per step;
 //! - [`convolution`]: u = A p by direct sums (small grids) or zero-padded 2-D FFT;
 //! - [`normal`]: the normal problem for the prescribed FN (bound-constrained CG, as NormCG);
-//! - [`tangential`]: steady and transient rolling with Coulomb friction per time step
-//!   (projected Gauss–Seidel as ConvexGS, and a projected CG with FFT products as TangCG).
+//! - [`tangential`]: steady and transient rolling with Coulomb friction per time step:
+//!   transient steps by a projected CG with FFT products (as CONTACT's TangCG, falling back to
+//!   projected Gauss–Seidel as ConvexGS); steady rolling by an Anderson-accelerated projected
+//!   iteration (Walker & Ni 2011) that undoes the one-element shift along adhesion rows, always
+//!   verified by Gauss–Seidel sweeps to the same tolerance.
 //!
 //! This file maps a resolved [`Problem`] onto them and writes the history. The undeformed
 //! distance comes from the shared Hertz module, the grid from the shared physics.
