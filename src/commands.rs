@@ -44,36 +44,6 @@ fn run_suite(suite_dir: &[PathBuf], shard: Option<Shard>, progress: bool) -> Res
     Ok(results.iter().map(StoredScene::from_result).collect())
 }
 
-fn write_results(dir: &Path, scenes: &[StoredScene], with_timing: bool) -> Result<(), Error> {
-    for s in scenes {
-        let mut files: Vec<(String, String)> =
-            vec![("scene.json".into(), serde_json::to_string_pretty(&s.scene).unwrap_or_default() + "\n")];
-        for (solver, h) in &s.histories {
-            files.push((format!("{solver}.csv"), h.to_csv()));
-        }
-        let metrics: Vec<crate::metrics::Metric> = s
-            .metrics
-            .iter()
-            .map(|((solver, name, step), v)| crate::metrics::Metric {
-                solver: solver.clone(),
-                name: name.clone(),
-                value: *v,
-                step: *step,
-            })
-            .collect();
-        files.push(("metrics.csv".into(), crate::metrics::to_csv(&metrics)));
-        if with_timing {
-            let mut t = String::from("solver,wall_s,steps\n");
-            for (solver, w) in &s.wall_s {
-                t.push_str(&format!("{solver},{w},{}\n", s.histories.get(solver).map(|h| h.rows.len()).unwrap_or(0)));
-            }
-            files.push(("timing.csv".into(), t));
-        }
-        output::write_folder_atomically(dir, &s.name, &files)?;
-    }
-    Ok(())
-}
-
 /// Build the report from stored scenes.
 pub fn build_report(
     scenes: &[StoredScene],
@@ -123,7 +93,7 @@ pub fn run(
 ) -> Result<(), Error> {
     let refs = References::load(reference)?;
     let scenes = run_suite(suite_dir, shard, progress)?;
-    write_results(results_dir, &scenes, true)?;
+    results::write_scenes(results_dir, &scenes, true)?;
     eprintln!("results in {}", results_dir.display());
     if shard.is_some() {
         eprintln!("shard done; build the report with `creepbench merge {} ...`", results_dir.display());
@@ -211,7 +181,7 @@ pub fn check(
 /// `creepbench bless`: write the suite's results as the new golden data (the only writer of golden/).
 pub fn bless(suite_dir: &[PathBuf], golden: &Path, shard: Option<Shard>, progress: bool) -> Result<(), Error> {
     let scenes = run_suite(suite_dir, shard, progress)?;
-    write_results(golden, &scenes, false)?;
+    results::write_scenes(golden, &scenes, false)?;
     eprintln!("blessed {} scene(s) into {}", scenes.len(), golden.display());
     Ok(())
 }

@@ -23,17 +23,35 @@ pub struct StoredScene {
     pub wall_s: BTreeMap<String, f64>,
 }
 
-/// Write one scene's results as `dir/<name>/` (atomically).
-pub fn write_scene(dir: &Path, r: &SceneResult, with_timing: bool) -> Result<(), Error> {
-    let mut files = output::scene_files(&r.problem, &r.histories, &r.metrics);
-    if with_timing {
-        let mut t = String::from("solver,wall_s,steps\n");
-        for (h, w) in r.histories.iter().zip(&r.wall_s) {
-            t.push_str(&format!("{},{w},{}\n", h.solver, h.rows.len()));
+/// Write each scene's results as `dir/<name>/` (atomically): scene.json, `<solver>.csv`,
+/// metrics.csv, and with `with_timing` the wall times in timing.csv.
+pub fn write_scenes(dir: &Path, scenes: &[StoredScene], with_timing: bool) -> Result<(), Error> {
+    for s in scenes {
+        let mut files: Vec<(String, String)> =
+            vec![("scene.json".into(), serde_json::to_string_pretty(&s.scene).unwrap_or_default() + "\n")];
+        for (solver, h) in &s.histories {
+            files.push((format!("{solver}.csv"), h.to_csv()));
         }
-        files.push(("timing.csv".into(), t));
+        let metrics: Vec<crate::metrics::Metric> = s
+            .metrics
+            .iter()
+            .map(|((solver, name, step), v)| crate::metrics::Metric {
+                solver: solver.clone(),
+                name: name.clone(),
+                value: *v,
+                step: *step,
+            })
+            .collect();
+        files.push(("metrics.csv".into(), crate::metrics::to_csv(&metrics)));
+        if with_timing {
+            let mut t = String::from("solver,wall_s,steps\n");
+            for (solver, w) in &s.wall_s {
+                t.push_str(&format!("{solver},{w},{}\n", s.histories.get(solver).map(|h| h.rows.len()).unwrap_or(0)));
+            }
+            files.push(("timing.csv".into(), t));
+        }
+        output::write_folder_atomically(dir, &s.name, &files)?;
     }
-    output::write_folder_atomically(dir, &r.problem.name, &files)?;
     Ok(())
 }
 
