@@ -56,12 +56,12 @@ fn bench_contact(c: &mut Criterion) {
         let params = |k: usize| tangential::TangentialParams::new(1.0, p.samples[k].cx, 0.0, 0.0, p.dq_mm);
         let (mut px, mut py) = (vec![0.0; gr.len()], vec![0.0; gr.len()]);
         for k in 0..10 {
-            let r = solver.transient_step(&params(k), &px, &py).unwrap();
+            let r = solver.transient_step(&params(k), &px, &py, None).unwrap();
             (px, py) = (r.px, r.py);
         }
         let next = params(10);
         g.bench_with_input(BenchmarkId::from_parameter(grid), &grid, |b, _| {
-            b.iter(|| solver.transient_step(black_box(&next), &px, &py).unwrap().iterations)
+            b.iter(|| solver.transient_step(black_box(&next), &px, &py, None).unwrap().iterations)
         });
     }
     g.finish();

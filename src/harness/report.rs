@@ -11,8 +11,11 @@ use std::collections::BTreeMap;
 use std::fmt::Write;
 use std::path::Path;
 
-/// Scene groups of the report: (title, predicate on the scene name).
-const GROUPS: &[(&str, fn(&str) -> bool)] = &[
+/// A scene group of the report: (title, predicate on the scene name).
+type Group = (&'static str, fn(&str) -> bool);
+
+/// Scene groups of the report.
+const GROUPS: &[Group] = &[
     ("Step response: friction", |n| n.starts_with("step_mu")),
     ("Step response: load, shape and creepage", |n| n.starts_with("step_") && !n.starts_with("step_mu")),
     ("Sine: frequency at μ = 1", |n| n.starts_with("sine_f") && n.ends_with("_mu10")),

@@ -18,7 +18,7 @@ pub struct StoredScene {
     /// Histories by solver name.
     pub histories: BTreeMap<String, History>,
     /// (solver, metric, step) → value.
-    pub metrics: BTreeMap<(String, String, Option<usize>), f64>,
+    pub metrics: MetricMap,
     /// Wall time per solver [s], when recorded.
     pub wall_s: BTreeMap<String, f64>,
 }
@@ -55,8 +55,11 @@ pub fn write_scenes(dir: &Path, scenes: &[StoredScene], with_timing: bool) -> Re
     Ok(())
 }
 
+/// Metric values of a metrics.csv by (solver, metric, step).
+pub type MetricMap = BTreeMap<(String, String, Option<usize>), f64>;
+
 /// Parse metrics.csv text.
-pub fn parse_metrics(text: &str) -> Result<BTreeMap<(String, String, Option<usize>), f64>, String> {
+pub fn parse_metrics(text: &str) -> Result<MetricMap, String> {
     let mut out = BTreeMap::new();
     let mut rdr = csv::ReaderBuilder::new().flexible(true).from_reader(text.as_bytes());
     for rec in rdr.records() {

@@ -24,8 +24,8 @@ pub enum ConvPath {
 }
 
 /// Grid size (number of elements `mx*my`) from which the FFT path is chosen automatically.
-/// Measured with `examples/conv_crossover.rs` (release, 2-core Xeon, all elements active, tangential
-/// pair): 8x8 direct 3.3 us / FFT 3.7 us; 12x12 15 / 6 us; 22x22 155 / 26 us; 44x44 3.4 ms / 0.10 ms;
+/// Measured (release, 2-core Xeon, all elements active, tangential pair, FFT length then `2m-1`):
+/// 8x8 direct 3.3 us / FFT 3.7 us; 12x12 15 / 6 us; 22x22 155 / 26 us; 44x44 3.4 ms / 0.10 ms;
 /// 88x88 48 ms / 0.52 ms. The crossover lies near 10x10.
 pub const FFT_CROSSOVER_ELEMENTS: usize = 10 * 10;
 
@@ -38,56 +38,84 @@ pub fn auto_path(mx: usize, my: usize) -> ConvPath {
     }
 }
 
-/// Smallest integer `>= n` whose prime factors are 2, 3, 5 or 7 (fast FFT length).
+/// Smallest even integer `>= n` whose prime factors are 2, 3, 5, 7 or 11 (fast FFT length).
+/// Even lengths are markedly faster with rustfft's AVX kernels: measured (release, 2-core Xeon,
+/// tangential pair, `2m-1` vs the length chosen here) m = 22: 43 -> 44: 49 -> 18 us; m = 44:
+/// 87 -> 88: 144 -> 69 us; m = 88: 175 -> 176: 364 -> 306 us; m = 128: 255 -> 256: 1180 -> 594 us.
 #[allow(clippy::manual_is_multiple_of)] // is_multiple_of needs Rust 1.87; MSRV is 1.82
 fn fft_len(n: usize) -> usize {
-    let mut m = n.max(1);
+    let mut m = n.max(2);
     loop {
         let mut r = m;
-        for p in [2, 3, 5, 7] {
+        for p in [2, 3, 5, 7, 11] {
             while r % p == 0 {
                 r /= p;
             }
         }
-        if r == 1 {
+        if r == 1 && m % 2 == 0 {
             return m;
         }
         m += 1;
     }
 }
 
+/// Floating-point type of an FFT path: `f64` for products with `A`, `f32` for the preconditioner.
+trait Real: rustfft::FftNum {
+    fn of(v: f64) -> Self;
+    fn get(self) -> f64;
+}
+
+impl Real for f64 {
+    #[inline(always)]
+    fn of(v: f64) -> f64 {
+        v
+    }
+    #[inline(always)]
+    fn get(self) -> f64 {
+        self
+    }
+}
+
+impl Real for f32 {
+    #[inline(always)]
+    fn of(v: f64) -> f32 {
+        v as f32
+    }
+    #[inline(always)]
+    fn get(self) -> f64 {
+        f64::from(self)
+    }
+}
+
 /// FFT plans, kernel spectra and work buffers of the FFT path.
-struct FftData {
+struct FftData<T: Real> {
     nx: usize,
     ny: usize,
-    fwd_x: Arc<dyn Fft<f64>>,
-    inv_x: Arc<dyn Fft<f64>>,
-    fwd_y: Arc<dyn Fft<f64>>,
-    inv_y: Arc<dyn Fft<f64>>,
+    fwd_x: Arc<dyn Fft<T>>,
+    inv_x: Arc<dyn Fft<T>>,
+    fwd_y: Arc<dyn Fft<T>>,
+    inv_y: Arc<dyn Fft<T>>,
     /// Kernel spectra in transposed layout `[kx][ky]`, scaled by `1/(nx*ny)`.
-    szz: Vec<Complex<f64>>,
-    sxx: Vec<Complex<f64>>,
-    syy: Vec<Complex<f64>>,
-    sxy: Vec<Complex<f64>>,
+    szz: Vec<Complex<T>>,
+    sxx: Vec<Complex<T>>,
+    syy: Vec<Complex<T>>,
+    sxy: Vec<Complex<T>>,
     /// Packed tangential operator: `U(k) = alpha(k) Z(k) + beta(k) conj(Z(-k))` for
     /// `Z = FFT(px + i py)`, `U = FFT(ux + i uy)`: `alpha = (Sxx + Syy)/2`,
     /// `beta = (Sxx - Syy)/2 + i Sxy`.
-    salpha: Vec<Complex<f64>>,
-    sbeta: Vec<Complex<f64>>,
+    salpha: Vec<Complex<T>>,
+    sbeta: Vec<Complex<T>>,
     /// Row-major `[y][x]` work buffer, `nx*ny`.
-    buf: Vec<Complex<f64>>,
+    buf: Vec<Complex<T>>,
     /// Transposed `[x][y]` work buffer, `nx*ny`.
-    buft: Vec<Complex<f64>>,
+    buft: Vec<Complex<T>>,
     /// Second transposed buffer for the tangential pair.
-    buft2: Vec<Complex<f64>>,
-    scratch: Vec<Complex<f64>>,
+    buft2: Vec<Complex<T>>,
+    scratch: Vec<Complex<T>>,
 }
 
-impl FftData {
-    fn new(kernel: &Kernel) -> FftData {
-        let (mx, my) = (kernel.mx, kernel.my);
-        let nx = fft_len(2 * mx - 1);
-        let ny = fft_len(2 * my - 1);
+impl FftData<f64> {
+    fn new(kernel: &Kernel, nx: usize, ny: usize) -> FftData<f64> {
         let mut planner = FftPlanner::<f64>::new();
         let fwd_x = planner.plan_fft_forward(nx);
         let inv_x = planner.plan_fft_inverse(nx);
@@ -130,7 +158,7 @@ impl FftData {
         self.sbeta = self.sxx.iter().zip(&self.syy).zip(&self.sxy).map(|((a, b), c)| (a - b) * 0.5 + i * c).collect();
     }
 
-    /// Spectrum of one kernel component placed circularly (offset `d` at index `d mod n`).
+    /// Spectrum of one kernel component placed circularly (offset `d` added at index `d mod n`).
     fn kernel_spectrum(&mut self, kernel: &Kernel, comp: &[f64], scale: f64) -> Vec<Complex<f64>> {
         let (mx, my, nx, ny) = (kernel.mx, kernel.my, self.nx, self.ny);
         let zero = Complex::new(0.0, 0.0);
@@ -139,7 +167,7 @@ impl FftData {
             let row = dj.rem_euclid(ny as isize) as usize;
             for di in -(mx as isize - 1)..=(mx as isize - 1) {
                 let col = di.rem_euclid(nx as isize) as usize;
-                self.buf[row * nx + col] = Complex::new(comp[kernel.index(di, dj)] * scale, 0.0);
+                self.buf[row * nx + col] += Complex::new(comp[kernel.index(di, dj)] * scale, 0.0);
             }
         }
         self.fwd_x.process_with_scratch(&mut self.buf, &mut self.scratch);
@@ -148,6 +176,40 @@ impl FftData {
         self.buft.clone()
     }
 
+    /// The same operator in single precision (plans, spectra and buffers in `f32`).
+    fn to_f32(&self) -> FftData<f32> {
+        let mut planner = FftPlanner::<f32>::new();
+        let (nx, ny) = (self.nx, self.ny);
+        let fwd_x = planner.plan_fft_forward(nx);
+        let inv_x = planner.plan_fft_inverse(nx);
+        let fwd_y = planner.plan_fft_forward(ny);
+        let inv_y = planner.plan_fft_inverse(ny);
+        let scratch_len =
+            [&fwd_x, &inv_x, &fwd_y, &inv_y].iter().map(|f| f.get_inplace_scratch_len()).max().unwrap_or(0);
+        let down = |v: &[Complex<f64>]| v.iter().map(|c| Complex::new(c.re as f32, c.im as f32)).collect();
+        let zero = Complex::new(0.0f32, 0.0);
+        FftData {
+            nx,
+            ny,
+            fwd_x,
+            inv_x,
+            fwd_y,
+            inv_y,
+            szz: down(&self.szz),
+            sxx: down(&self.sxx),
+            syy: down(&self.syy),
+            sxy: down(&self.sxy),
+            salpha: down(&self.salpha),
+            sbeta: down(&self.sbeta),
+            buf: vec![zero; nx * ny],
+            buft: vec![zero; nx * ny],
+            buft2: vec![zero; nx * ny],
+            scratch: vec![zero; scratch_len],
+        }
+    }
+}
+
+impl<T: Real> FftData<T> {
     /// Forward transform of the field in `buf` (only its first `my` rows may be non-zero) into
     /// `buft` (layout `[kx][ky]`).
     fn forward(&mut self, my: usize) {
@@ -173,8 +235,8 @@ impl FftData {
 
 /// Transposes the first `rows` rows of the row-major `[ny][nx]` array `src` into `dst` laid out
 /// `[nx][ny]`; the other entries of `dst` are set to zero.
-fn transpose(src: &[Complex<f64>], dst: &mut [Complex<f64>], nx: usize, ny: usize, rows: usize) {
-    let zero = Complex::new(0.0, 0.0);
+fn transpose<T: Real>(src: &[Complex<T>], dst: &mut [Complex<T>], nx: usize, ny: usize, rows: usize) {
+    let zero = Complex::new(T::zero(), T::zero());
     for i in 0..nx {
         let d = &mut dst[i * ny..(i + 1) * ny];
         for (j, v) in d.iter_mut().enumerate().take(rows) {
@@ -199,7 +261,9 @@ pub struct Convolver {
     kyy: Vec<f64>,
     kxy: Vec<f64>,
     active: Vec<usize>,
-    fft: Option<FftData>,
+    fft: Option<FftData<f64>>,
+    /// Single-precision copy used instead of `fft` by [`Convolver::tangential`] (preconditioner).
+    fft32: Option<FftData<f32>>,
 }
 
 impl Convolver {
@@ -217,7 +281,7 @@ impl Convolver {
             return Err(ContactError::SizeMismatch(format!("kernel arrays must have (2mx-1)(2my-1) = {nk} entries")));
         }
         let fft = match path {
-            ConvPath::Fft => Some(FftData::new(kernel)),
+            ConvPath::Fft => Some(FftData::new(kernel, fft_len(2 * mx - 1), fft_len(2 * my - 1))),
             ConvPath::Direct => None,
         };
         Ok(Convolver {
@@ -231,12 +295,16 @@ impl Convolver {
             kxy: kernel.xy.clone(),
             active: Vec::with_capacity(mx * my),
             fft,
+            fft32: None,
         })
     }
 
     /// FFT-path operator whose spectra are the inverse of `kernel`'s (per frequency: `1/Azz`, and
     /// the inverse of the 2x2 tangential symbol), i.e. the inverse of the periodised convolution:
     /// an approximate inverse of `A` used as preconditioner (symbols clamped to stay positive).
+    /// Its [`Convolver::tangential`] runs in single precision: a preconditioner changes only the
+    /// path to the solution (measured: the same CG iterations per step to 1e-7 on the thesis
+    /// cases), and the `f32` transforms are about twice as fast.
     pub fn inverse_of(kernel: &Kernel) -> Result<Convolver, ContactError> {
         let mut c = Convolver::new(kernel, ConvPath::Fft)?;
         let f = c.fft.as_mut().ok_or_else(|| ContactError::InvalidInput("FFT data missing for the FFT path".into()))?;
@@ -259,6 +327,17 @@ impl Convolver {
             f.sxy[idx] = Complex::new(-scale * scale * b / det, 0.0);
         }
         f.pack_pair();
+        c.fft32 = Some(f.to_f32());
+        Ok(c)
+    }
+
+    /// Convolver with the path chosen by grid size ([`auto_path`]) whose
+    /// [`Convolver::tangential`] runs in single precision on the FFT path: for the products inside
+    /// an iteration whose residual is recomputed exactly every few steps (the CG's search
+    /// directions), where an error of 1e-7 relative to the correction is harmless.
+    pub fn single_precision(kernel: &Kernel) -> Result<Convolver, ContactError> {
+        let mut c = Convolver::auto(kernel)?;
+        c.fft32 = c.fft.as_ref().map(FftData::to_f32);
         Ok(c)
     }
 
@@ -400,43 +479,112 @@ impl Convolver {
                     .fft
                     .as_mut()
                     .ok_or_else(|| ContactError::InvalidInput("FFT data missing for the FFT path".into()))?;
-                let (nx, ny) = (f.nx, f.ny);
-                let zero = Complex::new(0.0, 0.0);
-                for j in 0..my {
-                    let row = &mut f.buf[j * nx..(j + 1) * nx];
-                    for (i, c) in row.iter_mut().enumerate() {
-                        *c = if i < mx && on(j * mx + i) { Complex::new(px[j * mx + i], py[j * mx + i]) } else { zero };
-                    }
-                }
-                f.forward(my);
-                // U(k) = alpha(k) Z(k) + beta(k) conj(Z(-k)) (see `salpha`, `sbeta`).
-                for kx in 0..nx {
-                    let mkx = (nx - kx) % nx;
-                    let row = &f.buft[kx * ny..(kx + 1) * ny];
-                    let mrow = &f.buft[mkx * ny..(mkx + 1) * ny];
-                    let out = &mut f.buft2[kx * ny..(kx + 1) * ny];
-                    let al = &f.salpha[kx * ny..(kx + 1) * ny];
-                    let be = &f.sbeta[kx * ny..(kx + 1) * ny];
-                    out[0] = al[0] * row[0] + be[0] * mrow[0].conj();
-                    for ((((o, z), zm), a), b) in
-                        out[1..].iter_mut().zip(&row[1..]).zip(mrow[1..].iter().rev()).zip(&al[1..]).zip(&be[1..])
-                    {
-                        *o = a * z + b * zm.conj();
-                    }
-                }
-                std::mem::swap(&mut f.buft, &mut f.buft2);
-                f.inverse(my);
-                for j in 0..my {
-                    for i in 0..mx {
-                        let c = f.buf[j * nx + i];
-                        ux[j * mx + i] = c.re;
-                        uy[j * mx + i] = c.im;
-                    }
+                match self.fft32.as_mut() {
+                    Some(f32data) => tangential_dispatch(f32data, mx, my, px, py, mask, ux, uy),
+                    None => tangential_dispatch(f, mx, my, px, py, mask, ux, uy),
                 }
             }
         }
         Ok(())
     }
+}
+
+/// FFT path of [`Convolver::tangential`]: AVX2 build if available, else the baseline one (the
+/// same operations, no reductions and no fused multiply-adds, so bit-identical results).
+#[allow(clippy::too_many_arguments)]
+fn tangential_dispatch<T: Real>(
+    f: &mut FftData<T>,
+    mx: usize,
+    my: usize,
+    px: &[f64],
+    py: &[f64],
+    mask: Option<&[bool]>,
+    ux: &mut [f64],
+    uy: &mut [f64],
+) {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: AVX2 is available (checked above).
+        unsafe { tangential_fft_avx2(f, mx, my, px, py, mask, ux, uy) };
+        return;
+    }
+    tangential_fft(f, mx, my, px, py, mask, ux, uy);
+}
+
+/// FFT path of [`Convolver::tangential`] (see there).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn tangential_fft<T: Real>(
+    f: &mut FftData<T>,
+    mx: usize,
+    my: usize,
+    px: &[f64],
+    py: &[f64],
+    mask: Option<&[bool]>,
+    ux: &mut [f64],
+    uy: &mut [f64],
+) {
+    let (nx, ny) = (f.nx, f.ny);
+    let zero = Complex::new(T::zero(), T::zero());
+    for j in 0..my {
+        let (head, tail) = f.buf[j * nx..(j + 1) * nx].split_at_mut(mx);
+        let (rx, ry) = (&px[j * mx..(j + 1) * mx], &py[j * mx..(j + 1) * mx]);
+        match mask {
+            Some(m) => {
+                for (((c, &x), &y), &on) in head.iter_mut().zip(rx).zip(ry).zip(&m[j * mx..(j + 1) * mx]) {
+                    *c = if on { Complex::new(T::of(x), T::of(y)) } else { zero };
+                }
+            }
+            None => {
+                for ((c, &x), &y) in head.iter_mut().zip(rx).zip(ry) {
+                    *c = Complex::new(T::of(x), T::of(y));
+                }
+            }
+        }
+        tail.fill(zero);
+    }
+    f.forward(my);
+    // U(k) = alpha(k) Z(k) + beta(k) conj(Z(-k)) (see `salpha`, `sbeta`).
+    for kx in 0..nx {
+        let mkx = (nx - kx) % nx;
+        let row = &f.buft[kx * ny..(kx + 1) * ny];
+        let mrow = &f.buft[mkx * ny..(mkx + 1) * ny];
+        let out = &mut f.buft2[kx * ny..(kx + 1) * ny];
+        let al = &f.salpha[kx * ny..(kx + 1) * ny];
+        let be = &f.sbeta[kx * ny..(kx + 1) * ny];
+        out[0] = al[0] * row[0] + be[0] * mrow[0].conj();
+        for ((((o, z), zm), a), b) in
+            out[1..].iter_mut().zip(&row[1..]).zip(mrow[1..].iter().rev()).zip(&al[1..]).zip(&be[1..])
+        {
+            *o = *a * *z + *b * zm.conj();
+        }
+    }
+    std::mem::swap(&mut f.buft, &mut f.buft2);
+    f.inverse(my);
+    for j in 0..my {
+        let row = &f.buf[j * nx..j * nx + mx];
+        for ((c, x), y) in row.iter().zip(&mut ux[j * mx..(j + 1) * mx]).zip(&mut uy[j * mx..(j + 1) * mx]) {
+            *x = c.re.get();
+            *y = c.im.get();
+        }
+    }
+}
+
+/// [`tangential_fft`] compiled for AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[allow(clippy::too_many_arguments)]
+unsafe fn tangential_fft_avx2<T: Real>(
+    f: &mut FftData<T>,
+    mx: usize,
+    my: usize,
+    px: &[f64],
+    py: &[f64],
+    mask: Option<&[bool]>,
+    ux: &mut [f64],
+    uy: &mut [f64],
+) {
+    tangential_fft(f, mx, my, px, py, mask, ux, uy)
 }
 
 #[cfg(test)]
@@ -487,6 +635,28 @@ mod tests {
         compare(30, 17, 0.0);
         compare(22, 22, 0.7);
         compare(13, 29, 0.35);
+    }
+
+    #[test]
+    fn single_precision_preconditioner_matches_double() {
+        // The preconditioner's f32 transforms against the same operator in f64: relative
+        // difference at the level of f32 round-off.
+        let (mx, my) = (30, 22);
+        let k = Kernel::new(mx, my, 0.6, 0.4, 82000.0, 0.28, 0.0).unwrap();
+        let mut c32 = Convolver::inverse_of(&k).unwrap();
+        let mut c64 = Convolver::inverse_of(&k).unwrap();
+        c64.fft32 = None;
+        let n = mx * my;
+        let mut rng = Rng(11);
+        let px: Vec<f64> = (0..n).map(|_| rng.next()).collect();
+        let py: Vec<f64> = (0..n).map(|_| rng.next()).collect();
+        let (mut ax, mut ay, mut bx, mut by) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        c32.tangential(&px, &py, None, &mut ax, &mut ay).unwrap();
+        c64.tangential(&px, &py, None, &mut bx, &mut by).unwrap();
+        let scale = bx.iter().chain(&by).fold(0.0f64, |s, v| s.max(v.abs()));
+        let err = ax.iter().zip(&bx).chain(ay.iter().zip(&by)).fold(0.0f64, |s, (x, y)| s.max((x - y).abs()));
+        assert!(scale > 0.0 && err <= 1e-5 * scale, "f32 vs f64: {err} vs {scale}");
+        assert!(err > 0.0, "the f32 path was not used");
     }
 
     #[test]

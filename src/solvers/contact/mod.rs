@@ -186,18 +186,21 @@ impl ContactSolver {
             record(&mut h, &s0, &l, &r);
             (prev_x, prev_y) = (r.px, r.py);
         }
+        let mut older: Option<(Vec<f64>, Vec<f64>)> = None;
         for s in &problem.samples {
             if s.fn_n != l.fn_n {
                 l = load(problem, &k0, &ks, s.fn_n)?;
+                older = None;
             }
             let r = l
                 .solver
-                .transient_step(&params(s), &prev_x, &prev_y)
+                .transient_step(&params(s), &prev_x, &prev_y, older.as_ref().map(|(a, b)| (a.as_slice(), b.as_slice())))
                 .map_err(|e| fail(problem, format!("step {}: {e}", s.step)))?;
             if r.px.iter().chain(&r.py).any(|v| !v.is_finite()) {
                 return Err(fail(problem, format!("non-finite traction at step {}", s.step)));
             }
             record(&mut h, s, &l, &r);
+            older = Some((std::mem::take(&mut prev_x), std::mem::take(&mut prev_y)));
             (prev_x, prev_y) = (r.px, r.py);
         }
         Ok((h, fields))
