@@ -116,32 +116,7 @@ struct FftData<T: Real> {
 
 impl FftData<f64> {
     fn new(kernel: &Kernel, nx: usize, ny: usize) -> FftData<f64> {
-        let mut planner = FftPlanner::<f64>::new();
-        let fwd_x = planner.plan_fft_forward(nx);
-        let inv_x = planner.plan_fft_inverse(nx);
-        let fwd_y = planner.plan_fft_forward(ny);
-        let inv_y = planner.plan_fft_inverse(ny);
-        let scratch_len =
-            [&fwd_x, &inv_x, &fwd_y, &inv_y].iter().map(|f| f.get_inplace_scratch_len()).max().unwrap_or(0);
-        let zero = Complex::new(0.0, 0.0);
-        let mut d = FftData {
-            nx,
-            ny,
-            fwd_x,
-            inv_x,
-            fwd_y,
-            inv_y,
-            szz: Vec::new(),
-            sxx: Vec::new(),
-            syy: Vec::new(),
-            sxy: Vec::new(),
-            salpha: Vec::new(),
-            sbeta: Vec::new(),
-            buf: vec![zero; nx * ny],
-            buft: vec![zero; nx * ny],
-            buft2: vec![zero; nx * ny],
-            scratch: vec![zero; scratch_len],
-        };
+        let mut d = FftData::<f64>::empty(nx, ny);
         let scale = 1.0 / (nx * ny) as f64;
         d.szz = d.kernel_spectrum(kernel, &kernel.zz, scale);
         d.sxx = d.kernel_spectrum(kernel, &kernel.xx, scale);
@@ -178,16 +153,25 @@ impl FftData<f64> {
 
     /// The same operator in single precision (plans, spectra and buffers in `f32`).
     fn to_f32(&self) -> FftData<f32> {
-        let mut planner = FftPlanner::<f32>::new();
-        let (nx, ny) = (self.nx, self.ny);
+        let down = |v: &[Complex<f64>]| v.iter().map(|c| Complex::new(c.re as f32, c.im as f32)).collect();
+        let mut d = FftData::<f32>::empty(self.nx, self.ny);
+        (d.szz, d.sxx, d.syy, d.sxy) = (down(&self.szz), down(&self.sxx), down(&self.syy), down(&self.sxy));
+        (d.salpha, d.sbeta) = (down(&self.salpha), down(&self.sbeta));
+        d
+    }
+}
+
+impl<T: Real> FftData<T> {
+    /// Plans and zeroed work buffers for `nx x ny` transforms; no spectra yet.
+    fn empty(nx: usize, ny: usize) -> FftData<T> {
+        let mut planner = FftPlanner::<T>::new();
         let fwd_x = planner.plan_fft_forward(nx);
         let inv_x = planner.plan_fft_inverse(nx);
         let fwd_y = planner.plan_fft_forward(ny);
         let inv_y = planner.plan_fft_inverse(ny);
         let scratch_len =
             [&fwd_x, &inv_x, &fwd_y, &inv_y].iter().map(|f| f.get_inplace_scratch_len()).max().unwrap_or(0);
-        let down = |v: &[Complex<f64>]| v.iter().map(|c| Complex::new(c.re as f32, c.im as f32)).collect();
-        let zero = Complex::new(0.0f32, 0.0);
+        let zero = Complex::new(T::zero(), T::zero());
         FftData {
             nx,
             ny,
@@ -195,21 +179,19 @@ impl FftData<f64> {
             inv_x,
             fwd_y,
             inv_y,
-            szz: down(&self.szz),
-            sxx: down(&self.sxx),
-            syy: down(&self.syy),
-            sxy: down(&self.sxy),
-            salpha: down(&self.salpha),
-            sbeta: down(&self.sbeta),
+            szz: Vec::new(),
+            sxx: Vec::new(),
+            syy: Vec::new(),
+            sxy: Vec::new(),
+            salpha: Vec::new(),
+            sbeta: Vec::new(),
             buf: vec![zero; nx * ny],
             buft: vec![zero; nx * ny],
             buft2: vec![zero; nx * ny],
             scratch: vec![zero; scratch_len],
         }
     }
-}
 
-impl<T: Real> FftData<T> {
     /// Forward transform of the field in `buf` (only its first `my` rows may be non-zero) into
     /// `buft` (layout `[kx][ky]`).
     fn forward(&mut self, my: usize) {
@@ -479,9 +461,10 @@ impl Convolver {
                     .fft
                     .as_mut()
                     .ok_or_else(|| ContactError::InvalidInput("FFT data missing for the FFT path".into()))?;
+                let io = PairIo { mx, my, px, py, mask, ux, uy };
                 match self.fft32.as_mut() {
-                    Some(f32data) => tangential_dispatch(f32data, mx, my, px, py, mask, ux, uy),
-                    None => tangential_dispatch(f, mx, my, px, py, mask, ux, uy),
+                    Some(f32data) => tangential_dispatch(f32data, io),
+                    None => tangential_dispatch(f, io),
                 }
             }
         }
@@ -489,41 +472,33 @@ impl Convolver {
     }
 }
 
-/// FFT path of [`Convolver::tangential`]: AVX2 build if available, else the baseline one (the
-/// same operations, no reductions and no fused multiply-adds, so bit-identical results).
-#[allow(clippy::too_many_arguments)]
-fn tangential_dispatch<T: Real>(
-    f: &mut FftData<T>,
+/// Arguments of the tangential FFT path: grid size, input tractions and mask, output displacements.
+struct PairIo<'a> {
     mx: usize,
     my: usize,
-    px: &[f64],
-    py: &[f64],
-    mask: Option<&[bool]>,
-    ux: &mut [f64],
-    uy: &mut [f64],
-) {
+    px: &'a [f64],
+    py: &'a [f64],
+    mask: Option<&'a [bool]>,
+    ux: &'a mut [f64],
+    uy: &'a mut [f64],
+}
+
+/// FFT path of [`Convolver::tangential`]: AVX2 build if available, else the baseline one (the
+/// same operations, no reductions and no fused multiply-adds, so bit-identical results).
+fn tangential_dispatch<T: Real>(f: &mut FftData<T>, io: PairIo) {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") {
         // SAFETY: AVX2 is available (checked above).
-        unsafe { tangential_fft_avx2(f, mx, my, px, py, mask, ux, uy) };
+        unsafe { tangential_fft_avx2(f, io) };
         return;
     }
-    tangential_fft(f, mx, my, px, py, mask, ux, uy);
+    tangential_fft(f, io);
 }
 
 /// FFT path of [`Convolver::tangential`] (see there).
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn tangential_fft<T: Real>(
-    f: &mut FftData<T>,
-    mx: usize,
-    my: usize,
-    px: &[f64],
-    py: &[f64],
-    mask: Option<&[bool]>,
-    ux: &mut [f64],
-    uy: &mut [f64],
-) {
+fn tangential_fft<T: Real>(f: &mut FftData<T>, io: PairIo) {
+    let PairIo { mx, my, px, py, mask, ux, uy } = io;
     let (nx, ny) = (f.nx, f.ny);
     let zero = Complex::new(T::zero(), T::zero());
     for j in 0..my {
@@ -573,18 +548,8 @@ fn tangential_fft<T: Real>(
 /// [`tangential_fft`] compiled for AVX2.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-#[allow(clippy::too_many_arguments)]
-unsafe fn tangential_fft_avx2<T: Real>(
-    f: &mut FftData<T>,
-    mx: usize,
-    my: usize,
-    px: &[f64],
-    py: &[f64],
-    mask: Option<&[bool]>,
-    ux: &mut [f64],
-    uy: &mut [f64],
-) {
-    tangential_fft(f, mx, my, px, py, mask, ux, uy)
+unsafe fn tangential_fft_avx2<T: Real>(f: &mut FftData<T>, io: PairIo) {
+    tangential_fft(f, io)
 }
 
 #[cfg(test)]
