@@ -161,7 +161,7 @@ pub fn stability(scenes: &[StoredScene]) -> Option<String> {
     if stab.is_empty() {
         return None;
     }
-    let mut s = String::from("Extreme and stiff cases (`scenes/stability/`). The traction bound keeps |τ| ≤ μp even when a scheme has blown up, so the bound proves nothing; the indicators do: *oscillation* is the fraction of steps where f turns (a smooth response: about 2 per period; a step-to-step sawtooth: about 1), *sawtooth* the largest fraction of loaded elements where the UBA's τx field zig-zags along x. A courant number above 1 is refused before anything runs (exit 2).\n\n| scene | solver | steps | all finite | max \\|f\\|/μ | last f | oscillation | sawtooth | iterations max | not converged | warnings |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+    let mut s = String::from("Extreme and stiff cases (`scenes/stability/`). The traction bound keeps |τ| ≤ μp even when a scheme has blown up, so the bound proves nothing; the indicators do: *oscillation* is the fraction of steps where f turns (a smooth response: about 2 per period; a step-to-step sawtooth: about 1; changes below 1e-6 of max |f|, the jitter of a converged iterative solver, do not count), *sawtooth* the largest fraction of loaded elements where the UBA's τx field zig-zags along x. A courant number above 1 is refused before anything runs (exit 2).\n\n| scene | solver | steps | all finite | max \\|f\\|/μ | last f | oscillation | sawtooth | iterations max | not converged | warnings |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
     for sc in stab {
         let mu = sc.scene["mu"].as_f64().unwrap_or(f64::NAN);
         let warnings: Vec<String> = sc.scene["warnings"]

@@ -10,8 +10,9 @@
 //! - [`tangential`]: steady and transient rolling with Coulomb friction per time step:
 //!   transient steps by a projected CG with FFT products (as CONTACT's TangCG, falling back to
 //!   projected Gauss–Seidel as ConvexGS); steady rolling by an Anderson-accelerated projected
-//!   iteration (Walker & Ni 2011) that undoes the one-element shift along adhesion rows, always
-//!   verified by Gauss–Seidel sweeps to the same tolerance.
+//!   iteration (Walker & Ni 2011) that undoes the one-element shift along adhesion rows, stopped
+//!   by the same local-change test, Gauss–Seidel sweeps taking over if it stalls. Each transient
+//!   step starts from the last two steps' tractions extrapolated in time.
 //!
 //! This file maps a resolved [`Problem`] onto them and writes the history. The undeformed
 //! distance comes from the shared Hertz module, the grid from the shared physics.
