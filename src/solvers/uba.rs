@@ -28,14 +28,13 @@ pub struct Uba;
 pub const EXTRA: [&str; 3] = ["n_adhesion", "n_slip", "sawtooth"];
 
 /// What a UBA step needs of the pressure, prepared once per load and friction: the loaded runs
-/// of each row, the bound μ p per element (and its square), whether an element's upstream
+/// of each row, the bound μ p per element, whether an element's upstream
 /// neighbour is loaded, and the element centres in flat order.
 #[derive(Debug, Clone)]
 pub struct Prepared {
     /// (row j, first i, one past the last i) of each contiguous loaded run.
     runs: Vec<(usize, usize, usize)>,
     bound: Vec<f64>,
-    bound2: Vec<f64>,
     /// 1.0 where the upstream element (i − 1, same row) is loaded, else 0.0 (ghost inflow).
     upstream: Vec<f64>,
     x_mm: Vec<f64>,
@@ -68,10 +67,9 @@ impl Prepared {
             }
         }
         let bound: Vec<f64> = pressure.iter().map(|p| mu * p.max(0.0)).collect();
-        let bound2 = bound.iter().map(|g| g * g).collect();
         let x_mm = (0..n).map(|k| grid.x_mm[k % grid.mx]).collect();
         let y_mm = (0..n).map(|k| grid.y_mm[k / grid.mx]).collect();
-        Prepared { runs, bound, bound2, upstream, x_mm, y_mm, ghost_x: vec![0.0; n], ghost_y: vec![0.0; n] }
+        Prepared { runs, bound, upstream, x_mm, y_mm, ghost_x: vec![0.0; n], ghost_y: vec![0.0; n] }
     }
 
     /// Number of loaded elements.
@@ -116,7 +114,7 @@ pub fn step(
 fn flat_body(p: &Prepared, ox: &[f64], oy: &[f64], nx: &mut [f64], ny: &mut [f64], k: [f64; 5]) -> usize {
     let n = ox.len();
     let (oy, nx, ny) = (&oy[..n], &mut nx[..n], &mut ny[..n]);
-    let (g, g2, up, xs, ys) = (&p.bound[..n], &p.bound2[..n], &p.upstream[..n], &p.x_mm[..n], &p.y_mm[..n]);
+    let (g, up, xs, ys) = (&p.bound[..n], &p.upstream[..n], &p.x_mm[..n], &p.y_mm[..n]);
     let (gx, gy) = (&p.ghost_x[..n], &p.ghost_y[..n]);
     let [c, sx0, sx1, sy0, sy1] = k;
     let mut slips = 0usize;
@@ -131,7 +129,7 @@ fn flat_body(p: &Prepared, ox: &[f64], oy: &[f64], nx: &mut [f64], ny: &mut [f64
         let scale = (g[m] / n2.sqrt()).min(1.0);
         nx[m] = vx * scale;
         ny[m] = vy * scale;
-        slips += ((n2 > g2[m]) & (g[m] > 0.0)) as usize;
+        slips += ((n2 > g[m] * g[m]) & (g[m] > 0.0)) as usize;
     }
     slips
 }
