@@ -73,12 +73,13 @@ pub fn run(files: &[PathBuf], progress: bool) -> Result<Vec<SceneResult>, Error>
     };
     // Longest first, each worker taking the next scene when it is free (greedy list scheduling,
     // Graham's LPT rule): the costly 88x88 scenes start at once instead of ending the run alone.
-    let mut order: Vec<(usize, Problem)> = problems.into_iter().enumerate().collect();
-    order.sort_by(|a, b| estimated_cost(&b.1).total_cmp(&estimated_cost(&a.1)).then(a.0.cmp(&b.0)));
+    let mut order: Vec<(f64, usize, Problem)> =
+        problems.into_iter().enumerate().map(|(i, p)| (estimated_cost(&p), i, p)).collect();
+    order.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
     let mut results = order
         .into_iter()
         .par_bridge()
-        .map(|(i, p)| {
+        .map(|(_, i, p)| {
             let r = pipeline::run(p);
             bar.inc(1);
             (i, r)

@@ -333,40 +333,35 @@ impl Convolver {
         self.path
     }
 
-    fn check(&self, name: &str, v: &[f64]) -> Result<(), ContactError> {
-        if v.len() != self.mx * self.my {
-            return Err(ContactError::SizeMismatch(format!(
-                "{name} has {} entries, grid has {}",
-                v.len(),
-                self.mx * self.my
-            )));
+    /// Every array must have `mx*my` entries, and so must the mask if given.
+    fn check(&self, arrays: &[(&str, &[f64])], mask: Option<&[bool]>) -> Result<(), ContactError> {
+        let n = self.mx * self.my;
+        for (name, v) in arrays {
+            if v.len() != n {
+                return Err(ContactError::SizeMismatch(format!("{name} has {} entries, grid has {n}", v.len())));
+            }
         }
-        Ok(())
-    }
-
-    fn check_mask(&self, mask: Option<&[bool]>) -> Result<(), ContactError> {
         match mask {
-            Some(m) if m.len() != self.mx * self.my => {
-                Err(ContactError::SizeMismatch(format!("mask has {} entries, grid has {}", m.len(), self.mx * self.my)))
+            Some(m) if m.len() != n => {
+                Err(ContactError::SizeMismatch(format!("mask has {} entries, grid has {n}", m.len())))
             }
             _ => Ok(()),
         }
     }
 
+    /// The sources of the direct path: elements inside the mask where `nonzero` holds.
+    fn collect_active(&mut self, mask: Option<&[bool]>, nonzero: impl Fn(usize) -> bool) {
+        self.active.clear();
+        let n = self.mx * self.my;
+        self.active.extend((0..n).filter(|&k| mask.is_none_or(|m| m[k]) && nonzero(k)));
+    }
+
     /// Normal displacement `u = Azz p` [mm] for pressure `p` [MPa] (zero where `mask` is false).
     pub fn normal(&mut self, p: &[f64], mask: Option<&[bool]>, u: &mut [f64]) -> Result<(), ContactError> {
-        self.check("p", p)?;
-        self.check("u", u)?;
-        self.check_mask(mask)?;
-        let on = |k: usize| mask.is_none_or(|m| m[k]);
+        self.check(&[("p", p), ("u", u)], mask)?;
         match self.path {
             ConvPath::Direct => {
-                self.active.clear();
-                for (k, &v) in p.iter().enumerate() {
-                    if on(k) && v != 0.0 {
-                        self.active.push(k);
-                    }
-                }
+                self.collect_active(mask, |k| p[k] != 0.0);
                 u.iter_mut().for_each(|v| *v = 0.0);
                 let (mx, my, nkx) = (self.mx, self.my, self.nkx);
                 for &k in &self.active {
@@ -393,7 +388,11 @@ impl Convolver {
                 for j in 0..my {
                     let row = &mut f.buf[j * nx..(j + 1) * nx];
                     for (i, c) in row.iter_mut().enumerate() {
-                        *c = if i < mx && on(j * mx + i) { Complex::new(p[j * mx + i], 0.0) } else { zero };
+                        *c = if i < mx && mask.is_none_or(|m| m[j * mx + i]) {
+                            Complex::new(p[j * mx + i], 0.0)
+                        } else {
+                            zero
+                        };
                     }
                 }
                 f.forward(my);
@@ -421,20 +420,10 @@ impl Convolver {
         ux: &mut [f64],
         uy: &mut [f64],
     ) -> Result<(), ContactError> {
-        self.check("px", px)?;
-        self.check("py", py)?;
-        self.check("ux", ux)?;
-        self.check("uy", uy)?;
-        self.check_mask(mask)?;
-        let on = |k: usize| mask.is_none_or(|m| m[k]);
+        self.check(&[("px", px), ("py", py), ("ux", ux), ("uy", uy)], mask)?;
         match self.path {
             ConvPath::Direct => {
-                self.active.clear();
-                for k in 0..px.len() {
-                    if on(k) && (px[k] != 0.0 || py[k] != 0.0) {
-                        self.active.push(k);
-                    }
-                }
+                self.collect_active(mask, |k| px[k] != 0.0 || py[k] != 0.0);
                 ux.iter_mut().for_each(|v| *v = 0.0);
                 uy.iter_mut().for_each(|v| *v = 0.0);
                 let (mx, my, nkx) = (self.mx, self.my, self.nkx);

@@ -304,46 +304,24 @@ struct Spans {
     rows: Vec<(usize, usize, usize)>,
 }
 
-/// Applies the slip change caused by a traction change `(dpx, dpy)` at element `(ii, jj)` to all
-/// contact rows: `s_m -= K(m - k) dp`.
+/// Applies the slip change caused by a traction change `dp` at element `k` to all contact rows:
+/// `s_m -= K(m - k) dp`.
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn update_slip_generic(
-    sp: &Spans,
-    kxx: &[f64],
-    kxy: &[f64],
-    kyy: &[f64],
-    sx: &mut [f64],
-    sy: &mut [f64],
-    ii: usize,
-    jj: usize,
-    dpx: f64,
-    dpy: f64,
-) {
+fn update_slip_generic(sp: &Spans, op: &Operator, sx: &mut [f64], sy: &mut [f64], k: usize, dp: (f64, f64)) {
+    let (ii, jj) = (k % sp.mx, k / sp.mx);
     for &(j, lo, hi) in &sp.rows {
         let base = (j + sp.my - 1 - jj) * sp.nkx + (sp.mx - 1 - ii);
         let (kb, ke) = (base + lo, base + hi);
         let (eb, ee) = (j * sp.mx + lo, j * sp.mx + hi);
-        axpy2(&mut sx[eb..ee], &mut sy[eb..ee], &kxx[kb..ke], &kxy[kb..ke], &kyy[kb..ke], dpx, dpy);
+        axpy2(&mut sx[eb..ee], &mut sy[eb..ee], &op.xx[kb..ke], &op.xy[kb..ke], &op.yy[kb..ke], dp.0, dp.1);
     }
 }
 
+/// [`update_slip_generic`] compiled for AVX2 and FMA.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-#[allow(clippy::too_many_arguments)]
-unsafe fn update_slip_avx2(
-    sp: &Spans,
-    kxx: &[f64],
-    kxy: &[f64],
-    kyy: &[f64],
-    sx: &mut [f64],
-    sy: &mut [f64],
-    ii: usize,
-    jj: usize,
-    dpx: f64,
-    dpy: f64,
-) {
-    update_slip_generic(sp, kxx, kxy, kyy, sx, sy, ii, jj, dpx, dpy)
+unsafe fn update_slip_avx2(sp: &Spans, op: &Operator, sx: &mut [f64], sy: &mut [f64], k: usize, dp: (f64, f64)) {
+    update_slip_generic(sp, op, sx, sy, k, dp)
 }
 
 /// Work arrays of the conjugate-gradient solver.
@@ -360,7 +338,9 @@ struct CgWork {
     zy: Vec<f64>,
     zrx: Vec<f64>,
     zry: Vec<f64>,
-    lam: Vec<f64>,
+    /// Weight of the FFT part of the preconditioner: 1 on adhesion elements, on slip elements
+    /// `sqrt((d - lambda/g) / d)` (0 if degenerate); set by `cg_residual`.
+    wt: Vec<f64>,
     /// Slip elements, set by `cg_residual`: unit tangent `t` of the bound circle at `p`, the
     /// curvature term `lambda/g` and the tangential stiffness `t.D t + lambda/g`.
     tx: Vec<f64>,
@@ -384,7 +364,7 @@ impl CgWork {
             zy: vec![0.0; n],
             zrx: vec![0.0; n],
             zry: vec![0.0; n],
-            lam: vec![0.0; n],
+            wt: vec![0.0; n],
             tx: vec![0.0; n],
             ty: vec![0.0; n],
             curv: vec![0.0; n],
@@ -668,15 +648,16 @@ fn extrapolation_factor(older: &SteadyPoint, last: &SteadyPoint, next: &Tangenti
     if c[0] != last.creep[0] || last.creep[0] != older.creep[0] {
         return 0.0;
     }
-    let d1: Vec<f64> = (1..4).map(|i| last.creep[i] - older.creep[i]).collect();
-    let d2: Vec<f64> = (1..4).map(|i| c[i] - last.creep[i]).collect();
-    let n1 = d1.iter().map(|v| v * v).sum::<f64>();
+    let d1: [f64; 3] = std::array::from_fn(|i| last.creep[i + 1] - older.creep[i + 1]);
+    let d2: [f64; 3] = std::array::from_fn(|i| c[i + 1] - last.creep[i + 1]);
+    let dot = |a: &[f64; 3], b: &[f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let n1 = dot(&d1, &d1);
     if n1 <= 0.0 {
         return 0.0;
     }
-    let r = d1.iter().zip(&d2).map(|(a, b)| a * b).sum::<f64>() / n1;
-    let off = d2.iter().zip(&d1).map(|(b, a)| (b - r * a).powi(2)).sum::<f64>();
-    if off <= 1e-18 * n1.max(d2.iter().map(|v| v * v).sum::<f64>()) && r.is_finite() {
+    let r = dot(&d1, &d2) / n1;
+    let off: [f64; 3] = std::array::from_fn(|i| d2[i] - r * d1[i]);
+    if dot(&off, &off) <= 1e-18 * n1.max(dot(&d2, &d2)) && r.is_finite() {
         r
     } else {
         0.0
@@ -946,12 +927,9 @@ impl TangentialSolver {
                 }
             }
             None if !self.steady_prev.is_empty() => {
-                let last = &self.steady_prev[self.steady_prev.len() - 1];
-                let r = match self.steady_prev.first() {
-                    Some(older) if self.steady_prev.len() == 2 => extrapolation_factor(older, last, params),
-                    _ => 0.0,
-                };
-                let older = &self.steady_prev[0];
+                // With one point only, older = last and r = 0: the previous solution itself.
+                let (older, last) = (&self.steady_prev[0], &self.steady_prev[self.steady_prev.len() - 1]);
+                let r = if self.steady_prev.len() == 2 { extrapolation_factor(older, last, params) } else { 0.0 };
                 for &k in &self.contact {
                     self.px[k] = last.px[k] + r * (last.px[k] - older.px[k]);
                     self.py[k] = last.py[k] + r * (last.py[k] - older.py[k]);
@@ -961,9 +939,9 @@ impl TangentialSolver {
         }
         self.clip_to_bound(params.mu);
         let gmax = self.contact.iter().map(|&k| params.mu * self.pn[k]).fold(0.0, f64::max);
-        let mut accel = (0, false, f64::INFINITY);
+        let (mut evals, mut converged) = (0, None);
         if params.steady_method == SteadyMethod::Accelerated && gmax > 0.0 {
-            accel = self.steady_anderson(params)?;
+            (evals, converged) = self.steady_anderson(params)?;
         }
         // s = w - (A - A_s) p.
         self.conv0.tangential(&self.px, &self.py, Some(&self.mask), &mut self.ux, &mut self.uy)?;
@@ -973,12 +951,13 @@ impl TangentialSolver {
             self.sy[k] = -(self.uy[k] - self.vy[k]);
         }
         self.add_rigid_slip(params, true);
-        let res = if accel.1 {
-            self.finish(accel.0, accel.2, true)?
-        } else {
-            let mut r = self.gauss_seidel(params, true)?;
-            r.iterations += accel.0;
-            r
+        let res = match converged {
+            Some(residual) => self.finish(evals, residual, true)?,
+            None => {
+                let mut r = self.gauss_seidel(params, true)?;
+                r.iterations += evals;
+                r
+            }
         };
         let mut point = if self.steady_prev.len() == 2 {
             self.steady_prev.remove(0)
@@ -1000,8 +979,9 @@ impl TangentialSolver {
     /// Safeguards: a residual above [`STEADY_BLOWUP`] times the best one (or non-finite) restarts
     /// the history from the best map value, at most [`STEADY_MAX_RESTARTS`] times; no halving of
     /// the best residual within [`STEADY_STALL`] evaluations ends the iteration. Returns
-    /// `(map evaluations, converged)`; the caller verifies and finishes with Gauss-Seidel.
-    fn steady_anderson(&mut self, params: &TangentialParams) -> Result<(usize, bool, f64), ContactError> {
+    /// `(map evaluations, Some(final residual) if it met the test)`; if not, the caller continues
+    /// with Gauss-Seidel.
+    fn steady_anderson(&mut self, params: &TangentialParams) -> Result<(usize, Option<f64>), ContactError> {
         let stop_tol = params.tol;
         let max_evals = params.max_iter.min(STEADY_MAX_EVALS);
         let mu = params.mu;
@@ -1018,14 +998,12 @@ impl TangentialSolver {
         let mut progress_eval = 0;
         let mut restarts = 0;
         let mut evals = 0;
-        let mut ok = false;
-        let mut final_res = f64::INFINITY;
+        let mut converged = None;
         while evals < max_evals {
             let res = self.steady_map(params, &mut aa)?;
             evals += 1;
             if res < stop_tol {
-                ok = true;
-                final_res = res;
+                converged = Some(res);
                 break;
             }
             if res < best_res {
@@ -1063,7 +1041,7 @@ impl TangentialSolver {
                 }
             }
         }
-        let result = if ok {
+        let result = if converged.is_some() {
             Some(&aa.x)
         } else if best_res.is_finite() {
             Some(&aa.best)
@@ -1077,7 +1055,7 @@ impl TangentialSolver {
             }
         }
         self.aa = Some(aa);
-        Ok((evals, ok, final_res))
+        Ok((evals, converged))
     }
 
     /// The fixed-point map of the accelerated steady solver at the iterate `aa.x` (packed; on or
@@ -1193,7 +1171,8 @@ impl TangentialSolver {
     }
 
     /// Residual and diagonally preconditioned residual of the reduced problem (adhesion: the slip
-    /// itself; slip: its component along the bound circle), into `cg.r`, `cg.z`, `cg.lam`. Returns
+    /// itself; slip: its component along the bound circle), into `cg.r`, `cg.z`, and the slip
+    /// elements' tangent, curvature, stiffness and preconditioner weight (see `apply_prec`). Returns
     /// `max |z|` (the change a local Gauss-Seidel solve would make, to first order) [MPa].
     fn cg_residual(&mut self, dxx: f64, dyy: f64, mu: f64) -> f64 {
         let mut zmax = 0.0f64;
@@ -1208,25 +1187,25 @@ impl TangentialSolver {
                     w.ry[k] = 0.0;
                     w.zx[k] = 0.0;
                     w.zy[k] = 0.0;
-                    w.lam[k] = 0.0;
-                    (w.tx[k], w.ty[k], w.curv[k], w.stiff[k]) = (0.0, 0.0, 0.0, 0.0);
+                    (w.tx[k], w.ty[k], w.curv[k], w.stiff[k], w.wt[k]) = (0.0, 0.0, 0.0, 0.0, 0.0);
                     continue;
                 }
                 let (nx, ny) = (self.px[k] / a, self.py[k] / a);
                 let (tx, ty) = (-ny, nx);
                 let st = tx * sx + ty * sy;
                 let lam = (nx * sx + ny * sy).max(0.0);
-                w.lam[k] = lam;
                 w.rx[k] = st * tx;
                 w.ry[k] = st * ty;
                 let d = dxx * tx * tx + dyy * ty * ty + lam / g;
-                (w.tx[k], w.ty[k], w.curv[k], w.stiff[k]) = (tx, ty, lam / g, d);
+                let curv = lam / g;
+                (w.tx[k], w.ty[k], w.curv[k], w.stiff[k]) = (tx, ty, curv, d);
+                w.wt[k] = (1.0 - curv / d).sqrt();
                 let zt = st / d;
                 w.zx[k] = zt * tx;
                 w.zy[k] = zt * ty;
                 zmax = zmax.max(zt.abs());
             } else {
-                w.lam[k] = 0.0;
+                w.wt[k] = 1.0;
                 w.rx[k] = sx;
                 w.ry[k] = sy;
                 w.zx[k] = sx / dxx;
@@ -1237,8 +1216,8 @@ impl TangentialSolver {
         zmax
     }
 
-    /// Preconditioned residual `z = S M S r + (I - S^2) D_c^-1 r` into `cg.z` (needs `cg.r`,
-    /// `cg.lam` from [`TangentialSolver::cg_residual`]): `M` the FFT inverse of the periodised `A`,
+    /// Preconditioned residual `z = S M S r + (I - S^2) D_c^-1 r` into `cg.z` (needs `cg.r` and
+    /// the weights `S` from [`TangentialSolver::cg_residual`]): `M` the FFT inverse of the periodised `A`,
     /// `D_c` the diagonal stiffness (slip elements: `t.D t + lambda/g` along the tangent `t`), `S = I`
     /// on adhesion elements and `sqrt(t.D t / (t.D t + lambda/g))` on slip elements, whose part is
     /// projected onto `t`. Symmetric positive definite; the FFT part for slip elements that barely
@@ -1249,12 +1228,9 @@ impl TangentialSolver {
     /// the slip elements (`S = I`) needs 2-3 times as many on the large-slip cases.
     fn apply_prec(&mut self) -> Result<(), ContactError> {
         let w = &mut self.cg;
-        // Weight s = sqrt((d - lambda/g) / d) of the slip elements' FFT part (0 if degenerate).
-        let weight = |w: &CgWork, k: usize| if w.stiff[k] > 0.0 { (1.0 - w.curv[k] / w.stiff[k]).sqrt() } else { 0.0 };
         for &k in &self.contact {
-            let s = if self.slip[k] { weight(w, k) } else { 1.0 };
-            w.qx[k] = s * w.rx[k];
-            w.qy[k] = s * w.ry[k];
+            w.qx[k] = w.wt[k] * w.rx[k];
+            w.qy[k] = w.wt[k] * w.ry[k];
         }
         self.prec.tangential(&w.qx, &w.qy, Some(&self.mask), &mut w.zrx, &mut w.zry)?;
         for &k in &self.contact {
@@ -1262,8 +1238,7 @@ impl TangentialSolver {
                 w.zx[k] = w.zrx[k];
                 w.zy[k] = w.zry[k];
             } else if w.stiff[k] > 0.0 {
-                let (tx, ty) = (w.tx[k], w.ty[k]);
-                let s = weight(w, k);
+                let (tx, ty, s) = (w.tx[k], w.ty[k], w.wt[k]);
                 let zt =
                     s * (tx * w.zrx[k] + ty * w.zry[k]) + (1.0 - s * s) * (tx * w.rx[k] + ty * w.ry[k]) / w.stiff[k];
                 w.zx[k] = zt * tx;
@@ -1477,7 +1452,6 @@ impl TangentialSolver {
         let omega = if steady { 1.0 } else { params.omega };
         let mu = params.mu;
         let gmax = self.contact.iter().map(|&k| mu * self.pn[k]).fold(0.0, f64::max);
-        let mx = self.mx;
         let mut iterations = 0;
         let mut residual = f64::INFINITY;
         let mut converged = false;
@@ -1541,29 +1515,13 @@ impl TangentialSolver {
                 }
                 self.px[k] = nx;
                 self.py[k] = ny;
-                let (ii, jj) = (k % mx, k / mx);
                 #[cfg(target_arch = "x86_64")]
-                {
-                    if self.use_avx2 {
-                        // SAFETY: the CPU supports AVX2 and FMA (checked at construction).
-                        unsafe {
-                            update_slip_avx2(
-                                &self.spans,
-                                &op.xx,
-                                &op.xy,
-                                &op.yy,
-                                &mut self.sx,
-                                &mut self.sy,
-                                ii,
-                                jj,
-                                dpx,
-                                dpy,
-                            )
-                        };
-                        continue;
-                    }
+                if self.use_avx2 {
+                    // SAFETY: the CPU supports AVX2 and FMA (checked at construction).
+                    unsafe { update_slip_avx2(&self.spans, op, &mut self.sx, &mut self.sy, k, (dpx, dpy)) };
+                    continue;
                 }
-                update_slip_generic(&self.spans, &op.xx, &op.xy, &op.yy, &mut self.sx, &mut self.sy, ii, jj, dpx, dpy);
+                update_slip_generic(&self.spans, op, &mut self.sx, &mut self.sy, k, (dpx, dpy));
             }
             if !dmax.is_finite() {
                 return Err(ContactError::NonFinite("tangential Gauss-Seidel diverged".into()));
