@@ -9,6 +9,7 @@ pub mod hertz;
 pub mod kalker;
 pub mod material;
 pub mod pressure;
+pub mod slip;
 
 pub use bound::project_to_bound;
 pub use grid::{Grid, LeadingEdge};
@@ -16,3 +17,4 @@ pub use hertz::{HertzContact, Radii};
 pub use kalker::{CoefficientSource, Coefficients, Flexibilities, FlexibilityModel};
 pub use material::Material;
 pub use pressure::PressureShape;
+pub use slip::RigidSlip;

@@ -5,6 +5,7 @@ pub mod brush;
 pub mod contact;
 pub mod external;
 pub mod fastsim;
+pub mod termination;
 pub mod uba;
 
 use crate::error::Error;
