@@ -11,7 +11,7 @@ def scene(r):
     if r["method"] == "fastsim_parabolic":
         out.append('solvers = ["uba", "fastsim"]')
     else:
-        out.append('solvers = ["uba", "fastsim", "contact"]')
+        out.append('solvers = ["uba", "fastsim", "contact", "linear"]')
     out += ["", "[contact]", f"a_mm = {float(r['a_mm'])!r}", f"b_mm = {float(r['b_mm'])!r}",
             f"fn_n = {float(r['fn_n'])!r}", f"mu = {float(r['mu'])!r}",
             "", "[material]", "g_mpa = 82000.0", "poisson = 0.28",

@@ -2,12 +2,13 @@
 
 use crate::error::{Error, InputError};
 use crate::harness::compare::{self, Against, Finding};
-use crate::harness::reference::References;
+use crate::harness::references::References;
 use crate::harness::report::{self, ReportInput};
 use crate::harness::results::{self, StoredScene};
 use crate::harness::sections;
 use crate::harness::suite::{self, Shard};
-use crate::{output, pipeline};
+use crate::harness::table;
+use crate::pipeline;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -18,10 +19,10 @@ pub fn simulate(scene: &Path, solvers: &[String], out: &Path) -> Result<PathBuf,
         eprintln!("warning: {w}");
     }
     let result = pipeline::run(problem)?;
-    let files = output::scene_files(&result.problem, &result.histories, &result.metrics);
-    let dir = output::write_folder_atomically(out, &result.problem.name, &files)?;
-    for (h, w) in result.histories.iter().zip(&result.wall_s) {
-        eprintln!("{}: {} rows in {:.3} s", h.solver, h.rows.len(), w);
+    let stored = StoredScene::from_result(&result);
+    let dir = results::write_scenes(out, std::slice::from_ref(&stored), false)?.remove(0);
+    for (h, t) in result.histories.iter().zip(&result.timing) {
+        eprintln!("{}: {} rows in {:.3} s", h.solver, h.rows.len(), t.wall_s);
     }
     Ok(dir)
 }
@@ -44,44 +45,23 @@ fn run_suite(suite_dir: &[PathBuf], shard: Option<Shard>, progress: bool) -> Res
     Ok(results.iter().map(StoredScene::from_result).collect())
 }
 
-/// Build the report from stored scenes.
+/// Build the report from stored scenes and reference data (it runs no model).
 pub fn build_report(
     scenes: &[StoredScene],
     refs: &References,
     out: &Path,
     golden: Option<&Path>,
-    scaling: bool,
 ) -> Result<PathBuf, Error> {
     let findings = compare::evaluate(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
-    std::fs::create_dir_all(out.join("figures"))?;
-    let mut extra = vec![("The thesis's figures beside ours".to_string(), sections::thesis_beside_ours(refs))];
-    if let Some(s) = sections::error_vs_time(scenes, refs, &out.join("figures")) {
-        extra.push(("Error against run time".into(), s));
-    }
-    if let Some(s) = sections::grid_convergence(scenes, refs) {
-        extra.push(("Convergence under grid refinement".into(), s));
-    }
-    if let Some(s) = sections::stability(scenes) {
-        extra.push(("Stability".into(), s));
-    }
-    extra.push(("Timing".into(), sections::timing(scenes, refs)));
-    if scaling {
-        extra.push(("Cost per step against grid size".into(), sections::scaling(&out.join("figures"))));
-    }
-    // The report writer recreates figures/; keep the section plots by writing them after.
-    let svgs: Vec<(String, Vec<u8>)> = ["error_vs_time.svg", "cost_per_step.svg"]
-        .iter()
-        .filter_map(|f| Some((f.to_string(), std::fs::read(out.join("figures").join(f)).ok()?)))
-        .collect();
-    report::write(out, &ReportInput { scenes, refs, findings: &findings, extra_sections: extra })?;
-    crate::harness::table::write(out, &crate::harness::table::rows(scenes, &findings))?;
-    for (f, svg) in svgs {
-        std::fs::write(out.join("figures").join(f), svg)?;
-    }
+    let input = ReportInput { scenes, refs, findings: &findings, sections: sections::all(scenes, refs) };
+    let report = report::build(&input);
+    std::fs::create_dir_all(out).map_err(Error::io(out))?;
+    report.write(out).map_err(Error::io(out))?;
+    table::write(out, &table::rows(scenes, &findings)).map_err(Error::io(out.join("results.csv")))?;
     Ok(out.join("validation.md"))
 }
 
-/// `creepbench run`: the suite (default: the thesis scenes) → results folders and the report.
+/// `creepbench run`: the suites → result folders, then the report from those results.
 pub fn run(
     suite_dir: &[PathBuf],
     reference: &Path,
@@ -99,25 +79,32 @@ pub fn run(
         eprintln!("shard done; build the report with `creepbench merge {} ...`", results_dir.display());
         return Ok(());
     }
-    let md = build_report(&scenes, &refs, report_dir, Some(golden), true)?;
+    let stored = read_results(&[results_dir.to_path_buf()])?;
+    let md = build_report(&stored, &refs, report_dir, Some(golden))?;
     println!("{}", md.display());
     Ok(())
 }
 
-/// `creepbench merge`: one report from the result folders of several shards.
-pub fn merge(dirs: &[PathBuf], reference: &Path, report_dir: &Path, golden: &Path) -> Result<(), Error> {
-    let refs = References::load(reference)?;
-    let mut scenes = Vec::new();
+/// Every scene folder of the result folders `dirs` (each scene in one folder only).
+fn read_results(dirs: &[PathBuf]) -> Result<Vec<StoredScene>, Error> {
+    let mut scenes: Vec<StoredScene> = Vec::new();
     for d in dirs {
         for name in results::scene_names(d) {
-            if scenes.iter().any(|s: &StoredScene| s.name == name) {
+            if scenes.iter().any(|s| s.name == name) {
                 return Err(InputError::new("merge", d.join(&name).display(), "each scene in one shard only").into());
             }
             scenes.push(results::read_scene(d, &name)?);
         }
     }
     scenes.sort_by(|a, b| a.name.cmp(&b.name));
-    let md = build_report(&scenes, &refs, report_dir, Some(golden), false)?;
+    Ok(scenes)
+}
+
+/// `creepbench merge`: one report from the result folders of several shards.
+pub fn merge(dirs: &[PathBuf], reference: &Path, report_dir: &Path, golden: &Path) -> Result<(), Error> {
+    let refs = References::load(reference)?;
+    let scenes = read_results(dirs)?;
+    let md = build_report(&scenes, &refs, report_dir, Some(golden))?;
     println!("{}", md.display());
     Ok(())
 }
@@ -150,9 +137,9 @@ pub fn check(
     let fails = compare::failures(&all);
     let gated = all.iter().filter(|f| f.gated).count();
     if against.is_some() {
-        let moved: Vec<&Finding> = all.iter().filter(|f| f.against == Against::Previous && f.diff > 0.0).collect();
+        let mut moved: Vec<&Finding> =
+            all.iter().filter(|f| f.against == Against::Previous && f.diff > 0.0).collect();
         println!("\n{} quantities moved against {} (largest first):", moved.len(), baseline.0.display());
-        let mut moved = moved;
         moved.sort_by(|a, b| b.diff.total_cmp(&a.diff));
         for f in moved.iter().take(30) {
             println!(
@@ -174,7 +161,7 @@ pub fn check(
         for f in &fails {
             eprintln!("{f}");
         }
-        Err(Error::Drift(format!("{} gated comparison(s) drifted", fails.len())))
+        Err(Error::Drift { count: fails.len() })
     }
 }
 

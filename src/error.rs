@@ -1,9 +1,11 @@
 //! Error types and the exit-status contract (interface.md): 2 for invalid input, 1 otherwise.
 
 use std::fmt;
+use std::path::PathBuf;
 
 /// Invalid user input: names the field, the value given and what is allowed.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("`{field}` = {value}: allowed: {allowed}")]
 pub struct InputError {
     /// Dotted path of the field, e.g. `contact.fn_n` (prefixed by the file where known).
     pub field: String,
@@ -19,13 +21,22 @@ impl InputError {
     }
 }
 
-impl fmt::Display for InputError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "`{}` = {}: allowed: {}", self.field, self.value, self.allowed)
-    }
+/// A data file that does not have the expected form (a history, metrics, a reference table).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum FormatError {
+    #[error("header must start with {expected} (got {got})")]
+    Header { expected: String, got: String },
+    #[error("lacks column {column}")]
+    MissingColumn { column: String },
+    #[error("line {line}: {fields} fields, the header has {expected}")]
+    FieldCount { line: usize, fields: usize, expected: usize },
+    #[error("line {line} column {column}: {value:?} is not {what}")]
+    Value { line: usize, column: String, value: String, what: &'static str },
+    #[error("line {line}: {message}")]
+    Csv { line: usize, message: String },
+    #[error("{0}")]
+    Json(String),
 }
-
-impl std::error::Error for InputError {}
 
 /// Every failure of the tool.
 #[derive(Debug, thiserror::Error)]
@@ -33,15 +44,21 @@ pub enum Error {
     /// Bad input (exit status 2).
     #[error("invalid input: {0}")]
     Input(#[from] InputError),
-    /// A solver could not produce a trustworthy result (exit status 1).
-    #[error("solver `{solver}` failed on scene `{scene}`: {message}")]
-    Solve { scene: String, solver: String, message: String },
-    /// A gated comparison drifted (exit status 1).
-    #[error("{0}")]
-    Drift(String),
-    /// Anything else: I/O, formats (exit status 1).
-    #[error("{0}")]
-    Other(String),
+    /// A built-in model could not produce a trustworthy result (exit status 1).
+    #[error("solver `{solver}` failed on scene `{scene}`: {source}")]
+    Solve { scene: String, solver: String, source: crate::solvers::SolveError },
+    /// An external model failed or wrote unusable output (exit status 1).
+    #[error("external model `{solver}` failed on scene `{scene}`: {message}")]
+    External { scene: String, solver: String, message: String },
+    /// Gated comparisons drifted (exit status 1).
+    #[error("{count} gated comparison(s) drifted")]
+    Drift { count: usize },
+    /// A file could not be read or written.
+    #[error("{}: {source}", path.display())]
+    Io { path: PathBuf, source: std::io::Error },
+    /// A data file has not the expected form.
+    #[error("{}: {source}", path.display())]
+    Format { path: PathBuf, source: FormatError },
 }
 
 impl Error {
@@ -53,14 +70,16 @@ impl Error {
         }
     }
 
-    pub fn other(msg: impl fmt::Display) -> Self {
-        Error::Other(msg.to_string())
+    /// An I/O error on `path`.
+    pub fn io(path: impl Into<PathBuf>) -> impl FnOnce(std::io::Error) -> Error {
+        let path = path.into();
+        move |source| Error::Io { path, source }
     }
-}
 
-impl From<std::io::Error> for Error {
-    fn from(e: std::io::Error) -> Self {
-        Error::Other(format!("I/O: {e}"))
+    /// A format error in `path`.
+    pub fn format(path: impl Into<PathBuf>) -> impl FnOnce(FormatError) -> Error {
+        let path = path.into();
+        move |source| Error::Format { path, source }
     }
 }
 

@@ -1,10 +1,25 @@
 //! Step 4 of the pipeline: a solver's output, one row per time step (or sweep point), in the
 //! `<solver>.csv` format of interface.md.
 
+use crate::error::FormatError;
 use crate::problem::Sample;
+
+/// A short, single-line excerpt of a value for messages (never a whole file).
+pub fn excerpt(v: &str) -> String {
+    let one_line: String = v.chars().map(|c| if c.is_control() { '?' } else { c }).collect();
+    if one_line.chars().count() <= 60 {
+        one_line
+    } else {
+        format!("{}… ({} bytes)", one_line.chars().take(60).collect::<String>(), v.len())
+    }
+}
 
 /// The fixed leading columns of `<solver>.csv` (interface.md); extra columns follow.
 pub const COLUMNS: [&str; 8] = ["step", "t_s", "cx", "cy", "cs", "fn_n", "fx_over_fn", "fy_over_fn"];
+
+/// The friction coefficient of the row: written by creepbench right after [`COLUMNS`]
+/// (optional in an external model's output, which gets the scene's).
+pub const MU: &str = "mu";
 
 /// One row: the loading and the traction coefficients, plus solver-specific extra values.
 #[derive(Debug, Clone, PartialEq)]
@@ -15,6 +30,8 @@ pub struct Row {
     pub cy: f64,
     pub cs: f64,
     pub fn_n: f64,
+    /// Coulomb friction coefficient at this row (NaN where a source does not give it).
+    pub mu: f64,
     /// Tx / FN (thesis Eq. 2.30–2.31, 3.12), positive for positive cx.
     pub fx_over_fn: f64,
     pub fy_over_fn: f64,
@@ -32,6 +49,7 @@ impl Row {
             cy: sample.cy,
             cs: sample.cs,
             fn_n: sample.fn_n,
+            mu: sample.mu,
             fx_over_fn,
             fy_over_fn,
             extra,
@@ -67,6 +85,7 @@ impl History {
                 "cy" => r.cy,
                 "cs" => r.cs,
                 "fn_n" => r.fn_n,
+                "mu" => r.mu,
                 "fx_over_fn" => r.fx_over_fn,
                 "fy_over_fn" => r.fy_over_fn,
                 _ => return None,
@@ -82,6 +101,8 @@ impl History {
     /// so the text is bit-identical for bit-identical results.
     pub fn to_csv(&self) -> String {
         let mut out = COLUMNS.join(",");
+        out.push(',');
+        out.push_str(MU);
         for c in &self.extra_columns {
             out.push(',');
             out.push_str(c);
@@ -89,8 +110,8 @@ impl History {
         out.push('\n');
         for r in &self.rows {
             out.push_str(&format!(
-                "{},{},{},{},{},{},{},{}",
-                r.step, r.t_s, r.cx, r.cy, r.cs, r.fn_n, r.fx_over_fn, r.fy_over_fn
+                "{},{},{},{},{},{},{},{},{}",
+                r.step, r.t_s, r.cx, r.cy, r.cs, r.fn_n, r.fx_over_fn, r.fy_over_fn, r.mu
             ));
             for v in &r.extra {
                 out.push(',');
@@ -102,31 +123,31 @@ impl History {
     }
 
     /// Parse a history CSV (ours, a golden file, or an external model's output).
-    pub fn from_csv(solver: &str, text: &str) -> Result<History, String> {
+    pub fn from_csv(solver: &str, text: &str) -> Result<History, FormatError> {
         let mut rdr = csv::ReaderBuilder::new().trim(csv::Trim::All).from_reader(text.as_bytes());
-        let header: Vec<String> =
-            rdr.headers().map_err(|e| format!("header: {e}"))?.iter().map(str::to_string).collect();
+        let header: Vec<String> = rdr
+            .headers()
+            .map_err(|e| FormatError::Csv { line: 1, message: e.to_string() })?
+            .iter()
+            .map(str::to_string)
+            .collect();
         if header.len() < COLUMNS.len() || header[..COLUMNS.len()] != COLUMNS {
-            return Err(format!("header must start with {} (got {})", COLUMNS.join(","), header.join(",")));
+            return Err(FormatError::Header { expected: COLUMNS.join(","), got: excerpt(&header.join(",")) });
         }
+        let has_mu = header.get(COLUMNS.len()).is_some_and(|c| c == MU);
+        let first_extra = COLUMNS.len() + usize::from(has_mu);
         let mut h =
-            History { solver: solver.into(), extra_columns: header[COLUMNS.len()..].to_vec(), rows: Vec::new() };
+            History { solver: solver.into(), extra_columns: header[first_extra..].to_vec(), rows: Vec::new() };
         for (n, rec) in rdr.records().enumerate() {
             let line = n + 2;
-            let rec = rec.map_err(|e| format!("line {line}: {e}"))?;
+            let rec = rec.map_err(|e| FormatError::Csv { line, message: e.to_string() })?;
             if rec.len() != header.len() {
-                return Err(format!("line {line}: {} fields, header has {}", rec.len(), header.len()));
+                return Err(FormatError::FieldCount { line, fields: rec.len(), expected: header.len() });
             }
-            let num = |c: usize| -> Result<f64, String> {
-                let v: f64 = rec[c]
-                    .parse()
-                    .map_err(|_| format!("line {line} column {}: {:?} is not a number", header[c], &rec[c]))?;
-                Ok(v)
-            };
-            let step = rec[0]
-                .parse::<usize>()
-                .map_err(|_| format!("line {line} column step: {:?} is not a step index", &rec[0]))?;
-            let extra = (COLUMNS.len()..header.len()).map(num).collect::<Result<Vec<_>, _>>()?;
+            let bad = |c: usize, what| FormatError::Value { line, column: header[c].clone(), value: excerpt(&rec[c]), what };
+            let num = |c: usize| rec[c].parse::<f64>().map_err(|_| bad(c, "a number"));
+            let step = rec[0].parse::<usize>().map_err(|_| bad(0, "a step index"))?;
+            let extra = (first_extra..header.len()).map(num).collect::<Result<Vec<_>, _>>()?;
             h.rows.push(Row {
                 step,
                 t_s: num(1)?,
@@ -134,6 +155,7 @@ impl History {
                 cy: num(3)?,
                 cs: num(4)?,
                 fn_n: num(5)?,
+                mu: if has_mu { num(COLUMNS.len())? } else { f64::NAN },
                 fx_over_fn: num(6)?,
                 fy_over_fn: num(7)?,
                 extra,

@@ -1,21 +1,30 @@
-//! The straight path scene → resolved problem → solver → history → metrics, for one scene.
+//! The straight path scene → resolved problem → models → histories → metrics, for one scene.
 
 use crate::error::{Error, InputError};
 use crate::history::History;
-use crate::metrics::{self, Metric};
+use crate::metrics::{self, Metric, MetricDef, MetricKind};
 use crate::problem::Problem;
 use crate::scene::Scene;
-use crate::solvers;
+use crate::solvers::{self, external::External, sample_loop};
 use std::path::Path;
 use std::time::Instant;
+
+/// Wall times of one model's run [s] (kept out of the CSVs, which stay deterministic).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Timing {
+    /// The whole run.
+    pub wall_s: f64,
+    /// Building the model and loading the first contact (kernels, normal problem).
+    pub setup_s: f64,
+}
 
 /// One scene's results.
 #[derive(Debug, Clone)]
 pub struct SceneResult {
     pub problem: Problem,
     pub histories: Vec<History>,
-    /// Wall time per solver [s] (not written to the CSVs, which stay deterministic).
-    pub wall_s: Vec<f64>,
+    /// Per model, in the order of `histories`.
+    pub timing: Vec<Timing>,
     pub metrics: Vec<Metric>,
 }
 
@@ -39,18 +48,35 @@ pub fn load(path: &Path, only: &[String]) -> Result<Problem, Error> {
     Ok(problem)
 }
 
-/// Run the problem's solvers (only those it lists) and compute its metrics.
+/// Run the problem's models (only those it lists) and compute its metrics.
 pub fn run(problem: Problem) -> Result<SceneResult, Error> {
-    let mut histories = Vec::new();
-    let mut wall_s = Vec::new();
-    let mut all_metrics = Vec::new();
+    let field_metrics: Vec<&'static MetricDef> = problem
+        .metrics
+        .iter()
+        .filter_map(|m| metrics::by_name(m))
+        .filter(|m| matches!(m.kind, MetricKind::Field(_)))
+        .collect();
+    let (mut histories, mut timing, mut all_metrics) = (Vec::new(), Vec::new(), Vec::new());
     for name in &problem.solvers {
-        let solver = solvers::by_name(name, &problem).ok_or_else(|| Error::other(format!("unknown solver {name}")))?;
-        let start = Instant::now();
-        let h = solver.run(&problem)?;
-        wall_s.push(start.elapsed().as_secs_f64());
-        all_metrics.extend(metrics::compute(&problem, &h));
+        let fail = |source| Error::Solve { scene: problem.name.clone(), solver: name.clone(), source };
+        let (h, t, field) = match solvers::builtin(name) {
+            Some(def) => {
+                let r = sample_loop::run(&problem, def, &field_metrics, None).map_err(fail)?;
+                (r.history, Timing { wall_s: r.wall_s, setup_s: r.setup_s }, r.field_metrics)
+            }
+            None => {
+                let spec = problem.external.iter().find(|e| &e.name == name).ok_or_else(|| {
+                    InputError::new("solvers", name, format!("a built-in model ({}) or an [external.NAME] of the scene", solvers::builtin_names().join(", ")))
+                })?;
+                let start = Instant::now();
+                let h = External::new(spec.clone()).run(&problem)?;
+                let wall_s = start.elapsed().as_secs_f64();
+                (h, Timing { wall_s, setup_s: 0.0 }, Vec::new())
+            }
+        };
+        all_metrics.extend(metrics::compute(&problem.metrics, &problem.loading, &h, &field));
         histories.push(h);
+        timing.push(t);
     }
-    Ok(SceneResult { problem, histories, wall_s, metrics: all_metrics })
+    Ok(SceneResult { problem, histories, timing, metrics: all_metrics })
 }

@@ -1,28 +1,22 @@
 //! Comparisons of a scene's results with golden data, a previous result set, CONTACT and the
 //! thesis. Each comparison yields its worst point as a [`Finding`].
 
-use super::reference::References;
-use super::results::StoredScene;
+use super::references::References;
+use super::results::{self, StoredScene};
 use super::tolerances;
 use crate::error::Error;
 use crate::history::History;
-use crate::metrics;
 use std::collections::BTreeMap;
 
 /// What results are compared against.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Against {
     /// golden/: this project's blessed results.
     Golden,
     /// Another result set (`check --against DIR`): drift between two model versions.
     Previous,
-    /// CONTACT, exact theory (reference/contact).
-    Contact,
-    /// CONTACT's FASTSIM with the parabolic bound (reference/contact/steady_fastsim_g22).
-    ContactFastsim,
-    /// The thesis's published figures (reference/thesis).
-    Thesis,
+    /// A reference set from outside the project, by its label (`references`).
+    Reference(&'static str),
 }
 
 impl Against {
@@ -30,10 +24,13 @@ impl Against {
         match self {
             Against::Golden => "golden",
             Against::Previous => "previous",
-            Against::Contact => "CONTACT",
-            Against::ContactFastsim => "CONTACT FASTSIM",
-            Against::Thesis => "thesis",
+            Against::Reference(label) => label,
         }
+    }
+
+    /// Whether this is a comparison with CONTACT (exact theory or its FASTSIM).
+    pub fn is_contact(self) -> bool {
+        matches!(self, Against::Reference(l) if l.starts_with("CONTACT"))
     }
 }
 
@@ -72,14 +69,16 @@ impl Finding {
     }
 }
 
-struct Ctx<'a> {
-    scene: &'a str,
-    solver: &'a str,
-    against: Against,
+/// The scene, model and baseline of a comparison.
+pub struct Ctx<'a> {
+    pub scene: &'a str,
+    pub solver: &'a str,
+    pub against: Against,
 }
 
 impl Ctx<'_> {
-    fn finding(&self, quantity: &str, step: Option<usize>, ours: f64, theirs: f64, note: &str) -> Finding {
+    /// One compared value, judged by the tolerance rule of this comparison.
+    pub fn finding(&self, quantity: &str, step: Option<usize>, ours: f64, theirs: f64, note: &str) -> Finding {
         let rule = tolerances::rule(self.against, self.solver, quantity);
         Finding {
             scene: self.scene.into(),
@@ -98,7 +97,7 @@ impl Ctx<'_> {
 
     /// Worst difference of one column over the steps both histories have. Steps present in only
     /// one of them make the finding unmatched (NaN) when `require_same_steps`.
-    fn column(&self, ours: &History, theirs: &History, col: &str, require_same_steps: bool) -> Option<Finding> {
+    pub fn column(&self, ours: &History, theirs: &History, col: &str, require_same_steps: bool) -> Option<Finding> {
         let (a, b) = (ours.column(col)?, theirs.column(col)?);
         let tb: BTreeMap<usize, f64> = theirs.rows.iter().map(|r| r.step).zip(b).collect();
         let mut worst: Option<Finding> = None;
@@ -122,6 +121,10 @@ impl Ctx<'_> {
     }
 }
 
+/// Columns compared with a baseline besides the model's extra columns: the loading (a changed
+/// loading is a changed scene) and the traction coefficients.
+const BASELINE_COLUMNS: [&str; 8] = ["t_s", "cx", "cy", "cs", "fn_n", "mu", "fx_over_fn", "fy_over_fn"];
+
 /// Compare `ours` with a stored result set of the same scene (golden or previous): every
 /// history column and every metric.
 pub fn against_results(ours: &StoredScene, theirs: Option<&StoredScene>, against: Against) -> Vec<Finding> {
@@ -137,8 +140,8 @@ pub fn against_results(ours: &StoredScene, theirs: Option<&StoredScene>, against
             out.push(f);
             continue;
         };
-        for col in ["fx_over_fn", "fy_over_fn"].iter().map(|s| s.to_string()).chain(h.extra_columns.iter().cloned()) {
-            if col == "fx_over_fn" || th.extra_columns.contains(&col) || col == "fy_over_fn" {
+        for col in BASELINE_COLUMNS.iter().map(|s| s.to_string()).chain(h.extra_columns.iter().cloned()) {
+            if BASELINE_COLUMNS.contains(&col.as_str()) || th.extra_columns.contains(&col) {
                 out.extend(ctx.column(h, th, &col, true));
             }
         }
@@ -161,63 +164,6 @@ pub fn against_results(ours: &StoredScene, theirs: Option<&StoredScene>, against
     out
 }
 
-/// Compare every solver of a scene with the CONTACT reference of the same name, if any, and the
-/// sine scenes' delay ratios with the thesis's Table 4.2 (μ = 1 scenes).
-pub fn against_references(ours: &StoredScene, refs: &References) -> Result<Vec<Finding>, Error> {
-    let mut out = Vec::new();
-    let Some(case) = refs.cases.get(&ours.name) else { return Ok(out) };
-    let Some(contact) = refs.contact_history(&ours.name)? else { return Ok(out) };
-    let against = if case.method == "fastsim_parabolic" { Against::ContactFastsim } else { Against::Contact };
-    let period = ours.period_s();
-    let t = contact.column("t_s").unwrap_or_default();
-    let (cx, f) = (contact.column("cx").unwrap_or_default(), contact.column("fx_over_fn").unwrap_or_default());
-    let contact_delay = period.and_then(|p| metrics::delay_ratio(&t, &cx, &f, p));
-    // Where f saturates at μ near the creepage peak the delay is ill-defined (flat top).
-    let mu = ours.scene["mu"].as_f64().unwrap_or(f64::INFINITY);
-    let f_peak = f.iter().fold(0.0f64, |a, &b| a.max(b.abs()));
-    let saturated = f_peak >= 0.97 * mu;
-    for (solver, h) in &ours.histories {
-        let ctx = Ctx { scene: &ours.name, solver, against };
-        out.extend(ctx.column(h, &contact, "fx_over_fn", false));
-        let metric = |name: &str| ours.metrics.get(&(solver.clone(), name.to_string(), None)).copied();
-        if let (Some(ours_d), Some(ref_d)) = (metric("delay_ratio"), contact_delay) {
-            let mut fd =
-                ctx.finding("delay_ratio", None, ours_d, ref_d, "CONTACT's delay from its history, same definition");
-            if saturated {
-                fd.gated = false;
-                fd.note = format!("f reaches {:.0} % of mu: the maximum is a flat top and the delay ill-defined (reference README); reported only", 100.0 * f_peak / mu);
-            }
-            out.push(fd);
-        }
-        if let (Some(ours_a), Some(ref_a)) = (metric("loop_area"), case.loop_area) {
-            out.push(ctx.finding("loop_area", None, ours_a, ref_a.abs(), "cases.csv loop_area (absolute value)"));
-        }
-        if let (Some(v), Some(rv)) = (metric("steady_value"), f.last()) {
-            if case.kind != "steady" {
-                out.push(ctx.finding("steady_value", None, v, *rv, ""));
-            }
-        }
-        if let (Some(v), Some(rv)) = (metric("settling_time_s"), metrics::settling_time(&t, &f)) {
-            out.push(ctx.finding("settling_time_s", None, v, rv, ""));
-        }
-        if let (Some(ours_d), Some(p)) = (metric("delay_ratio"), period) {
-            if let Some(td) = refs.thesis_delays.iter().find(|d| (1.0 / d.freq_hz - p).abs() < 1e-9 * p) {
-                if ours.scene["mu"].as_f64() == Some(1.0) && case.mx == 22 {
-                    let tctx = Ctx { scene: &ours.name, solver, against: Against::Thesis };
-                    out.push(tctx.finding(
-                        "delay_ratio",
-                        None,
-                        ours_d,
-                        td.delay_ratio,
-                        "thesis Table 4.2 (CONTACT, mu = 1)",
-                    ));
-                }
-            }
-        }
-    }
-    Ok(out)
-}
-
 /// Every comparison of a result set: with the references and, if given, with a baseline result
 /// folder (golden/ or a previous run).
 pub fn evaluate(
@@ -227,10 +173,12 @@ pub fn evaluate(
 ) -> Result<Vec<Finding>, Error> {
     let mut out = Vec::new();
     for s in scenes {
-        out.extend(against_references(s, refs)?);
+        for set in refs.sets() {
+            out.extend(set.compare(s));
+        }
         if let Some((dir, against)) = baseline {
             let theirs = if dir.join(&s.name).join("scene.json").exists() {
-                Some(super::results::read_scene(dir, &s.name)?)
+                Some(results::read_scene(dir, &s.name)?)
             } else {
                 None
             };

@@ -4,7 +4,7 @@
 
 pub mod compare;
 pub mod plot;
-pub mod reference;
+pub mod references;
 pub mod report;
 pub mod results;
 pub mod sections;

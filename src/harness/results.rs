@@ -1,72 +1,107 @@
 //! Result folders on disk: one folder per scene in the `simulate` format, plus `timing.csv`
-//! (wall times, kept apart so that the other files stay bit-identical run to run).
-//! `run` writes them, `check --against` and the report read them, shards are merged from them.
+//! (wall times, kept apart so that the other files stay bit-identical run to run). `simulate`,
+//! `run` and `bless` write them; `check --against`, `merge` and the report read them.
 
-use crate::error::Error;
+use crate::error::{Error, FormatError};
 use crate::history::History;
+use crate::metrics::Metric;
 use crate::output;
-use crate::pipeline::SceneResult;
+use crate::pipeline::{SceneResult, Timing};
+use crate::problem::ResolvedScene;
 use std::collections::BTreeMap;
-use std::path::Path;
-
-/// A scene's results as read back from disk.
-#[derive(Debug, Clone, Default)]
-pub struct StoredScene {
-    pub name: String,
-    /// scene.json as parsed JSON.
-    pub scene: serde_json::Value,
-    /// Histories by solver name.
-    pub histories: BTreeMap<String, History>,
-    /// (solver, metric, step) → value.
-    pub metrics: MetricMap,
-    /// Wall time per solver [s], when recorded.
-    pub wall_s: BTreeMap<String, f64>,
-}
-
-/// Write each scene's results as `dir/<name>/` (atomically): scene.json, `<solver>.csv`,
-/// metrics.csv, and with `with_timing` the wall times in timing.csv.
-pub fn write_scenes(dir: &Path, scenes: &[StoredScene], with_timing: bool) -> Result<(), Error> {
-    for s in scenes {
-        let mut files: Vec<(String, String)> =
-            vec![("scene.json".into(), serde_json::to_string_pretty(&s.scene).unwrap_or_default() + "\n")];
-        for (solver, h) in &s.histories {
-            files.push((format!("{solver}.csv"), h.to_csv()));
-        }
-        let metrics: Vec<crate::metrics::Metric> = s
-            .metrics
-            .iter()
-            .map(|((solver, name, step), v)| crate::metrics::Metric {
-                solver: solver.clone(),
-                name: name.clone(),
-                value: *v,
-                step: *step,
-            })
-            .collect();
-        files.push(("metrics.csv".into(), crate::metrics::to_csv(&metrics)));
-        if with_timing {
-            let mut t = String::from("solver,wall_s,steps\n");
-            for (solver, w) in &s.wall_s {
-                t.push_str(&format!("{solver},{w},{}\n", s.histories.get(solver).map(|h| h.rows.len()).unwrap_or(0)));
-            }
-            files.push(("timing.csv".into(), t));
-        }
-        output::write_folder_atomically(dir, &s.name, &files)?;
-    }
-    Ok(())
-}
+use std::path::{Path, PathBuf};
 
 /// Metric values of a metrics.csv by (solver, metric, step).
 pub type MetricMap = BTreeMap<(String, String, Option<usize>), f64>;
 
+/// A scene's results as stored on disk.
+#[derive(Debug, Clone)]
+pub struct StoredScene {
+    pub name: String,
+    /// scene.json.
+    pub scene: ResolvedScene,
+    /// Histories by solver name.
+    pub histories: BTreeMap<String, History>,
+    pub metrics: MetricMap,
+    /// Wall times per solver, when recorded (timing.csv).
+    pub timing: BTreeMap<String, Timing>,
+}
+
+impl StoredScene {
+    /// From an in-memory result.
+    pub fn from_result(r: &SceneResult) -> StoredScene {
+        let ran: Vec<String> = r.histories.iter().map(|h| h.solver.clone()).collect();
+        StoredScene {
+            name: r.problem.name.clone(),
+            scene: ResolvedScene::of(&r.problem, &ran),
+            histories: r.histories.iter().map(|h| (h.solver.clone(), h.clone())).collect(),
+            metrics: r.metrics.iter().map(|m| ((m.solver.clone(), m.name.clone(), m.step), m.value)).collect(),
+            timing: r.histories.iter().zip(&r.timing).map(|(h, t)| (h.solver.clone(), *t)).collect(),
+        }
+    }
+
+    /// A scalar metric of one solver.
+    pub fn metric(&self, solver: &str, name: &str) -> Option<f64> {
+        self.metrics.get(&(solver.to_string(), name.to_string(), None)).copied()
+    }
+
+    /// The files of the result folder: scene.json, `<solver>.csv`, metrics.csv and, with
+    /// `with_timing`, timing.csv.
+    pub fn files(&self, with_timing: bool) -> Vec<(String, String)> {
+        let mut files = vec![("scene.json".to_string(), self.scene.to_json())];
+        for (solver, h) in &self.histories {
+            files.push((format!("{solver}.csv"), h.to_csv()));
+        }
+        let metrics: Vec<Metric> = self
+            .metrics
+            .iter()
+            .map(|((solver, name, step), v)| Metric { solver: solver.clone(), name: name.clone(), value: *v, step: *step })
+            .collect();
+        files.push(("metrics.csv".into(), crate::metrics::to_csv(&metrics)));
+        if with_timing {
+            let mut t = String::from("solver,wall_s,steps,setup_s\n");
+            for (solver, w) in &self.timing {
+                let steps = self.histories.get(solver).map(|h| h.rows.len()).unwrap_or(0);
+                t.push_str(&format!("{solver},{},{steps},{}\n", w.wall_s, w.setup_s));
+            }
+            files.push(("timing.csv".into(), t));
+        }
+        files
+    }
+}
+
+/// Write each scene's results as `dir/<name>/` (each folder atomically).
+pub fn write_scenes(dir: &Path, scenes: &[StoredScene], with_timing: bool) -> Result<Vec<PathBuf>, Error> {
+    scenes
+        .iter()
+        .map(|s| output::write_folder_atomically(dir, &s.name, &s.files(with_timing)).map_err(Error::io(dir.join(&s.name))))
+        .collect()
+}
+
 /// Parse metrics.csv text.
-pub fn parse_metrics(text: &str) -> Result<MetricMap, String> {
+pub fn parse_metrics(text: &str) -> Result<MetricMap, FormatError> {
     let mut out = BTreeMap::new();
     let mut rdr = csv::ReaderBuilder::new().flexible(true).from_reader(text.as_bytes());
-    for rec in rdr.records() {
-        let rec = rec.map_err(|e| e.to_string())?;
-        let value: f64 = rec.get(2).unwrap_or("").parse().map_err(|_| format!("bad value in {rec:?}"))?;
-        let step = rec.get(3).filter(|s| !s.is_empty()).and_then(|s| s.parse().ok());
-        out.insert((rec[0].to_string(), rec[1].to_string(), step), value);
+    for (n, rec) in rdr.records().enumerate() {
+        let line = n + 2;
+        let rec = rec.map_err(|e| FormatError::Csv { line, message: e.to_string() })?;
+        let field = |i: usize| rec.get(i).unwrap_or("");
+        let value: f64 = field(2).parse().map_err(|_| FormatError::Value {
+            line,
+            column: "value".into(),
+            value: crate::history::excerpt(field(2)),
+            what: "a number",
+        })?;
+        let step = match field(3) {
+            "" => None,
+            s => Some(s.parse::<usize>().map_err(|_| FormatError::Value {
+                line,
+                column: "step".into(),
+                value: crate::history::excerpt(s),
+                what: "a step index",
+            })?),
+        };
+        out.insert((field(0).to_string(), field(1).to_string(), step), value);
     }
     Ok(out)
 }
@@ -74,28 +109,28 @@ pub fn parse_metrics(text: &str) -> Result<MetricMap, String> {
 /// Read `dir/<name>/` back.
 pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
     let d = dir.join(name);
-    let read =
-        |f: &str| std::fs::read_to_string(d.join(f)).map_err(|e| Error::other(format!("{}: {e}", d.join(f).display())));
-    let scene: serde_json::Value = serde_json::from_str(&read("scene.json")?)
-        .map_err(|e| Error::other(format!("{}/scene.json: {e}", d.display())))?;
-    let mut s = StoredScene { name: name.into(), scene, ..Default::default() };
-    let solvers: Vec<String> = s.scene["solvers"]
-        .as_array()
-        .map(|a| a.iter().filter_map(|v| v.as_str().map(String::from)).collect())
-        .unwrap_or_default();
-    for solver in solvers {
-        let text = read(&format!("{solver}.csv"))?;
-        let h = History::from_csv(&solver, &text)
-            .map_err(|e| Error::other(format!("{}/{solver}.csv: {e}", d.display())))?;
-        s.histories.insert(solver, h);
+    let read = |f: &str| std::fs::read_to_string(d.join(f)).map_err(Error::io(d.join(f)));
+    let scene = ResolvedScene::from_json(&read("scene.json")?)
+        .map_err(|e| Error::Format { path: d.join("scene.json"), source: FormatError::Json(e.to_string()) })?;
+    let mut s = StoredScene {
+        name: name.into(),
+        histories: BTreeMap::new(),
+        metrics: BTreeMap::new(),
+        timing: BTreeMap::new(),
+        scene,
+    };
+    for solver in &s.scene.solvers {
+        let file = d.join(format!("{solver}.csv"));
+        let h = History::from_csv(solver, &read(&format!("{solver}.csv"))?).map_err(Error::format(&file))?;
+        s.histories.insert(solver.clone(), h);
     }
-    s.metrics =
-        parse_metrics(&read("metrics.csv")?).map_err(|e| Error::other(format!("{}/metrics.csv: {e}", d.display())))?;
+    s.metrics = parse_metrics(&read("metrics.csv")?).map_err(Error::format(d.join("metrics.csv")))?;
     if let Ok(t) = read("timing.csv") {
         for line in t.lines().skip(1) {
             let parts: Vec<&str> = line.split(',').collect();
-            if let (Some(n), Some(w)) = (parts.first(), parts.get(1).and_then(|w| w.parse().ok())) {
-                s.wall_s.insert(n.to_string(), w);
+            let num = |i: usize| parts.get(i).and_then(|w| w.parse::<f64>().ok());
+            if let (Some(n), Some(wall_s)) = (parts.first(), num(1)) {
+                s.timing.insert(n.to_string(), Timing { wall_s, setup_s: num(3).unwrap_or(0.0) });
             }
         }
     }
@@ -114,24 +149,4 @@ pub fn scene_names(dir: &Path) -> Vec<String> {
         .collect();
     names.sort();
     names
-}
-
-impl StoredScene {
-    /// From an in-memory result (no disk round trip).
-    pub fn from_result(r: &SceneResult) -> StoredScene {
-        let ran: Vec<String> = r.histories.iter().map(|h| h.solver.clone()).collect();
-        let scene = serde_json::from_str(&output::scene_json(&r.problem, &ran)).unwrap_or_default();
-        StoredScene {
-            name: r.problem.name.clone(),
-            scene,
-            histories: r.histories.iter().map(|h| (h.solver.clone(), h.clone())).collect(),
-            metrics: r.metrics.iter().map(|m| ((m.solver.clone(), m.name.clone(), m.step), m.value)).collect(),
-            wall_s: r.histories.iter().zip(&r.wall_s).map(|(h, w)| (h.solver.clone(), *w)).collect(),
-        }
-    }
-
-    /// Sine period [s], if the scene is a sine.
-    pub fn period_s(&self) -> Option<f64> {
-        self.scene["freq_hz"].as_f64().map(|f| 1.0 / f)
-    }
 }

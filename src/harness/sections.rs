@@ -1,48 +1,57 @@
-//! Report sections computed from several scenes at once: the thesis's figures beside ours,
-//! error against run time, and timing.
+//! Report sections computed from several stored scenes at once: the thesis's figures beside
+//! ours, error against run time, grid convergence, stability, timing and cost per step. Each
+//! reads stored results and reference data only; the studies they need are scenes of the suite
+//! `scenes/report/` (named `report_*`), run and stored like any other.
 
 use super::plot::{line_chart, Series};
-use super::reference::References;
+use super::references::References;
 use super::results::StoredScene;
 use crate::history::History;
-use crate::physics::{HertzContact, Material, Radii};
-use crate::problem::Problem;
-use crate::scene::Scene;
-use crate::solvers;
+use std::collections::BTreeMap;
 use std::fmt::Write;
-use std::path::Path;
 
-fn uba_at(cx: f64, steps: usize, model: &str) -> Option<f64> {
-    let text = format!(
-        "name = \"t\"\nsolvers = [\"uba\"]\n[contact]\na_mm = 8.56\nb_mm = 4.08\nfn_n = 100000.0\nmu = 0.4\n[material]\ng_mpa = 82000.0\ne_mpa = 210000.0\npoisson = 0.28\n[grid]\nmx = 22\nmy = 22\n[creepage]\nkind = \"step\"\nc = {cx}\nsteps = {steps}\n[model]\n{model}\n"
-    );
-    let p = Problem::resolve(&Scene::from_toml(&text, Path::new(".")).ok()?).ok()?;
-    let h = solvers::by_name("uba", &p)?.run(&p).ok()?;
-    h.rows.get(steps - 1).map(|r| r.fx_over_fn)
+/// A section of the report: title, Markdown body, figures (file name, SVG).
+#[derive(Debug, Clone, Default)]
+pub struct Section {
+    pub title: String,
+    pub body: String,
+    pub figures: Vec<(String, String)>,
 }
 
+impl Section {
+    fn new(title: &str, body: String) -> Section {
+        Section { title: title.into(), body, figures: Vec::new() }
+    }
+}
+
+fn find<'a>(scenes: &'a [StoredScene], name: &str) -> Option<&'a StoredScene> {
+    scenes.iter().find(|s| s.name == name)
+}
+
+/// The Table 4.3 studies: (scene, label).
+const TABLE_4_3: [(&str, &str); 4] = [
+    ("report_t43_kalker_parabolic", "Kalker L, parabolic bound (default)"),
+    ("report_t43_kalker_ellipsoidal", "Kalker L, ellipsoidal bound"),
+    ("report_t43_thesis_parabolic", "thesis Eq. 3.5 L, parabolic bound"),
+    ("report_t43_thesis_ellipsoidal", "thesis Eq. 3.5 L, ellipsoidal bound"),
+];
+
 /// The thesis's own figures beside this project's, with what explains the differences.
-pub fn thesis_beside_ours(refs: &References) -> String {
+pub fn thesis_beside_ours(scenes: &[StoredScene], refs: &References) -> Section {
     let mut s = String::new();
-    let mat = Material::from_e(210000.0, 0.28);
-    let h = HertzContact::from_radii(&Radii { r_wx_mm: 575.0, r_wy_mm: 500.0, r_ry_mm: 300.0 }, 1e5, &mat).ok();
-    let fig = |k: &str| refs.thesis_figures.get(k).copied();
+    let fig = |k: &str| refs.thesis.figure(k);
     let _ = writeln!(s, "| figure | thesis | this project | note |\n|---|---|---|---|");
-    if let Some(h) = h {
-        let _ = writeln!(s, "| Hertz a, b from R_wx 575, R_wy 500, R_ry 300 mm, 100 kN, E 210 GPa, ν 0.28 | {} / {} mm | {:.3} / {:.3} mm | two-body modulus 1/E* = 2(1−ν²)/E; the thesis rounds |", fig("hertz_a_mm").unwrap_or(f64::NAN), fig("hertz_b_mm").unwrap_or(f64::NAN), h.a_mm, h.b_mm);
+    if let Some(h) = find(scenes, "report_hertz_radii") {
+        let _ = writeln!(s, "| Hertz a, b from R_wx 575, R_wy 500, R_ry 300 mm, 100 kN, E 210 GPa, ν 0.28 | {} / {} mm | {:.3} / {:.3} mm | two-body modulus 1/E* = 2(1−ν²)/E; the thesis rounds |", fig("hertz_a_mm").unwrap_or(f64::NAN), fig("hertz_b_mm").unwrap_or(f64::NAN), h.scene.a_mm, h.scene.b_mm);
     }
     let t43 = fig("table_4_3_f_step29_cx001");
-    for (label, model) in [
-        ("Kalker L, parabolic bound (default)", "flexibility = \"kalker\"\npressure = \"parabolic\""),
-        ("Kalker L, ellipsoidal bound", "flexibility = \"kalker\"\npressure = \"ellipsoidal\""),
-        ("thesis Eq. 3.5 L, parabolic bound", "flexibility = \"thesis\"\npressure = \"parabolic\""),
-        ("thesis Eq. 3.5 L, ellipsoidal bound", "flexibility = \"thesis\"\npressure = \"ellipsoidal\""),
-    ] {
+    for (name, label) in TABLE_4_3 {
+        let ours = find(scenes, name).and_then(|sc| sc.histories.get("uba")?.rows.iter().find(|r| r.step == 29)).map(|r| r.fx_over_fn);
         let _ = writeln!(
             s,
-            "| Table 4.3: UBA f after 29 steps at cx = 0.01, μ 0.4 — {label} | {} | {} | |",
+            "| Table 4.3: UBA f after 29 steps at cx = 0.01, μ 0.4 — {label} | {} | {} | `{name}` |",
             t43.map(|v| format!("{v:.6}")).unwrap_or_default(),
-            uba_at(0.01, 29, model).map(|v| format!("{v:.6}")).unwrap_or_default()
+            ours.map(|v| format!("{v:.6}")).unwrap_or_default()
         );
     }
     let _ = writeln!(
@@ -55,7 +64,7 @@ pub fn thesis_beside_ours(refs: &References) -> String {
         s,
         "\nWith the parabolic bound every element slips at cx = 0.01 on this grid, so f = μ = 0.4 exactly; the thesis's 0.399757 keeps some adhesion, which only the ellipsoidal bound (whose slope at the edge is infinite) or other flexibilities give. The thesis never states its pressure, and its two validation figures (4.24/4.25 against FASTSIM, 4.27/4.28 against CONTACT) need different choices, so both stay options (`[model]`) and the defaults follow the CONTACT data: the parabolic bound and Kalker's flexibilities, the ones CONTACT's FASTSIM uses."
     );
-    s
+    Section::new("The thesis's figures beside ours", s)
 }
 
 /// Max |f − f_ref| at the times of `h`, `reference` linearly interpolated in time.
@@ -78,19 +87,18 @@ fn error_against(h: &History, reference: &History) -> f64 {
 }
 
 /// Error against run time: each solver on grids 22/44/88 of sine_f30_mu10, error against the
-/// finest CONTACT reference (88×88), wall time per simulated second. Writes its plot.
-pub fn error_vs_time(scenes: &[StoredScene], refs: &References, figs: &Path) -> Option<String> {
-    let fine = refs.contact_history("sine_f30_mu10_g88").ok().flatten()?;
+/// finest CONTACT reference (88×88), wall time per simulated second.
+pub fn error_vs_time(scenes: &[StoredScene], refs: &References) -> Option<Section> {
+    let fine = refs.contact.history("sine_f30_mu10_g88")?;
     let names = [("sine_f30_mu10", 22), ("sine_f30_mu10_g44", 44), ("sine_f30_mu10_g88", 88)];
     let mut s = String::from("Scene sine_f30_mu10 (30 Hz, μ = 1) on 22×22, 44×44 and 88×88 grids. Error: max |f − f_CONTACT,88×88| over the steps (the reference interpolated in time); cost: wall time per simulated second of rolling (this machine, one thread per scene). CONTACT's own runs of the same scenes are listed for scale (`contact_wall_s` includes start-up and file output).\n\n| solver | grid | max error | wall s per simulated s | wall ms per step |\n|---|---|---|---|---|\n");
-    let mut curves: std::collections::BTreeMap<String, Vec<(f64, f64)>> = Default::default();
+    let mut curves: BTreeMap<String, Vec<(f64, f64)>> = Default::default();
     for (name, grid) in names {
-        let Some(sc) = scenes.iter().find(|s| s.name == name) else { continue };
-        let sim_s =
-            sc.scene["history"].as_array().and_then(|a| a.last()).and_then(|r| r["t_s"].as_f64()).unwrap_or(f64::NAN);
+        let Some(sc) = find(scenes, name) else { continue };
+        let sim_s = sc.scene.history.last().map(|r| r.t_s).unwrap_or(f64::NAN);
         for (solver, h) in &sc.histories {
-            let err = error_against(h, &fine);
-            let wall = sc.wall_s.get(solver).copied().unwrap_or(f64::NAN);
+            let err = error_against(h, fine);
+            let wall = sc.timing.get(solver).map(|t| t.wall_s).unwrap_or(f64::NAN);
             let _ = writeln!(
                 s,
                 "| {solver} | {grid} | {err:.5} | {:.3} | {:.3} |",
@@ -99,9 +107,8 @@ pub fn error_vs_time(scenes: &[StoredScene], refs: &References, figs: &Path) -> 
             );
             curves.entry(solver.clone()).or_default().push((wall / sim_s, err.max(1e-9).log10()));
         }
-        if let Some(c) = refs.cases.get(name) {
-            let ch = refs.contact_history(name).ok().flatten();
-            let err = ch.as_ref().map(|h| error_against(h, &fine)).unwrap_or(f64::NAN);
+        if let (Some(c), Some(ch)) = (refs.contact.cases.get(name), refs.contact.history(name)) {
+            let err = error_against(ch, fine);
             let _ = writeln!(
                 s,
                 "| CONTACT (reference run) | {grid} | {err:.5} | {:.3} | {:.3} |",
@@ -115,29 +122,26 @@ pub fn error_vs_time(scenes: &[StoredScene], refs: &References, figs: &Path) -> 
     }
     let series: Vec<Series> =
         curves.into_iter().map(|(label, points)| Series { markers: label == "CONTACT", label, points }).collect();
-    let _ = std::fs::write(
-        figs.join("error_vs_time.svg"),
-        line_chart(
-            "Error against run time (sine_f30_mu10)",
-            "wall s per simulated s (log)",
-            "log10 max |f - f_CONTACT,88|",
-            &series,
-            true,
-        ),
+    let svg = line_chart(
+        "Error against run time (sine_f30_mu10)",
+        "wall s per simulated s (log)",
+        "log10 max |f - f_CONTACT,88|",
+        &series,
+        true,
     );
     s.push_str("\n![error against run time](figures/error_vs_time.svg)\n");
-    Some(s)
+    Some(Section { title: "Error against run time".into(), body: s, figures: vec![("error_vs_time.svg".into(), svg)] })
 }
 
 /// Wall time per scene and solver, with CONTACT's time for the same case.
-pub fn timing(scenes: &[StoredScene], refs: &References) -> String {
+pub fn timing(scenes: &[StoredScene], refs: &References) -> Section {
     let mut s = String::from("Wall time of each solver over the whole scene on this machine (scenes run in parallel on 2 cores, so figures include contention), and CONTACT's own time for the case (`contact_wall_s`, whole run incl. start-up and output).\n\n| scene | steps | solver | wall s | ms per step | CONTACT s | CONTACT ms per step |\n|---|---|---|---|---|---|---|\n");
     let mut total = 0.0;
     for sc in scenes {
         for (solver, h) in &sc.histories {
-            let w = sc.wall_s.get(solver).copied().unwrap_or(f64::NAN);
+            let w = sc.timing.get(solver).map(|t| t.wall_s).unwrap_or(f64::NAN);
             total += if w.is_finite() { w } else { 0.0 };
-            let c = refs.cases.get(&sc.name);
+            let c = refs.contact.cases.get(&sc.name);
             let _ = writeln!(
                 s,
                 "| {} | {} | {solver} | {w:.4} | {:.4} | {} | {} |",
@@ -150,95 +154,84 @@ pub fn timing(scenes: &[StoredScene], refs: &References) -> String {
         }
     }
     let _ = writeln!(s, "\nSum of solver wall times: {total:.2} s.");
-    s
+    Section::new("Timing", s)
 }
 
 /// The stability suite (scenes named `stab_*`): per scene and solver, whether every value is
-/// finite, the largest |f|/μ, the oscillation and sawtooth indicators and, for the CONTACT-style
-/// solver, the iteration counts and convergence flags.
-pub fn stability(scenes: &[StoredScene]) -> Option<String> {
+/// finite, the largest |f|/μ, the oscillation and sawtooth indicators and, for the iterating
+/// models, the iteration counts and the solves that hit the iteration limit.
+pub fn stability(scenes: &[StoredScene]) -> Option<Section> {
     let stab: Vec<&StoredScene> = scenes.iter().filter(|s| s.name.starts_with("stab_")).collect();
     if stab.is_empty() {
         return None;
     }
-    let mut s = String::from("Extreme and stiff cases (`scenes/stability/`). The traction bound keeps |τ| ≤ μp even when a scheme has blown up, so the bound proves nothing; the indicators do: *oscillation* is the fraction of steps where f turns (a smooth response: about 2 per period; a step-to-step sawtooth: about 1; changes below 1e-6 of max |f|, the jitter of a converged iterative solver, do not count), *sawtooth* the largest fraction of loaded elements where the UBA's τx field zig-zags along x. A courant number above 1 is refused before anything runs (exit 2).\n\n| scene | solver | steps | all finite | max \\|f\\|/μ | last f | oscillation | sawtooth | iterations max | not converged | warnings |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+    let mut s = String::from("Extreme and stiff cases (`scenes/stability/`). The traction bound keeps |τ| ≤ μp even when a scheme has blown up, so the bound proves nothing; the indicators do: *oscillation* is the fraction of steps where f turns (a smooth response: about 2 per period; a step-to-step sawtooth: about 1; changes below 1e-6 of max |f|, the jitter of a converged iterative solver, do not count), *sawtooth* the largest fraction of loaded elements where the traction field τx zig-zags along x. A courant number above 1 is refused before anything runs (exit 2).\n\n| scene | solver | steps | all finite | max \\|f\\|/μ | last f | oscillation | sawtooth | iterations max | iteration limit hit | warnings |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
     for sc in stab {
-        let mu = sc.scene["mu"].as_f64().unwrap_or(f64::NAN);
-        let warnings: Vec<String> = sc.scene["warnings"]
-            .as_array()
-            .map(|a| a.iter().filter_map(|w| w.as_str().map(String::from)).collect())
-            .unwrap_or_default();
         for (solver, h) in &sc.histories {
-            let f = h.column("fx_over_fn").unwrap_or_default();
-            let fy = h.column("fy_over_fn").unwrap_or_default();
             let finite = h
                 .rows
                 .iter()
                 .all(|r| r.fx_over_fn.is_finite() && r.fy_over_fn.is_finite() && r.extra.iter().all(|v| v.is_finite()));
-            let max_f = f.iter().zip(&fy).map(|(a, b)| (a * a + b * b).sqrt()).fold(0.0, f64::max);
+            let max_f = h.rows.iter().map(|r| r.fx_over_fn.hypot(r.fy_over_fn) / r.mu).fold(0.0, f64::max);
             let col_max = |c: &str| h.column(c).map(|v| v.into_iter().fold(0.0, f64::max));
-            let not_conv = h.column("converged").map(|v| v.iter().filter(|&&c| c < 0.5).count());
-            let osc = sc.metrics.get(&(solver.clone(), "oscillation_index".into(), None)).copied();
+            let limit = h.column("termination").map(|v| v.iter().filter(|&&c| c == crate::solvers::Termination::IterationLimit.code()).count());
+            let metric = |m: &str| sc.metric(solver, m).map(|v| format!("{v:.3}")).unwrap_or("—".into());
             let _ = writeln!(
                 s,
                 "| {} | {solver} | {} | {} | {:.6} | {:.6} | {} | {} | {} | {} | {} |",
                 sc.name,
                 h.rows.len(),
                 if finite { "yes" } else { "**no**" },
-                max_f / mu,
-                f.last().copied().unwrap_or(f64::NAN),
-                osc.map(|v| format!("{v:.3}")).unwrap_or("—".into()),
-                col_max("sawtooth").map(|v| format!("{v:.3}")).unwrap_or("—".into()),
+                max_f,
+                h.rows.last().map(|r| r.fx_over_fn).unwrap_or(f64::NAN),
+                metric("oscillation_index"),
+                metric("sawtooth_index"),
                 col_max("iterations").map(|v| format!("{v:.0}")).unwrap_or("—".into()),
-                not_conv.map(|v| v.to_string()).unwrap_or("—".into()),
-                warnings.join("; ").replace('|', "/")
+                limit.map(|v| v.to_string()).unwrap_or("—".into()),
+                sc.scene.warnings.join("; ").replace('|', "/")
             );
         }
     }
-    Some(s)
+    Some(Section::new("Stability", s))
 }
 
 /// Convergence under grid refinement: the steady sweeps on 22, 44 and 88 against CONTACT's 88×88.
-pub fn grid_convergence(scenes: &[StoredScene], refs: &References) -> Option<String> {
-    let fine = refs.contact_history("steady_exact_g88").ok().flatten()?;
-    let ff = fine.column("fx_over_fn")?;
+pub fn grid_convergence(scenes: &[StoredScene], refs: &References) -> Option<Section> {
+    let ff = refs.contact.history("steady_exact_g88")?.column("fx_over_fn")?;
     let mut s = String::from("Steady sweeps cx = 0 … 0.01 (μ 0.4) on 22×22, 44×44 and 88×88: max |f − f_CONTACT,88×88| over the 101 creepages, and each grid's own CONTACT result for scale.\n\n| grid | solver | max error vs CONTACT 88×88 |\n|---|---|---|\n");
+    let max_err = |h: &History| h.column("fx_over_fn").map(|c| c.iter().zip(&ff).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max));
     for (name, grid) in [("steady_exact_g22", 22), ("steady_exact_g44", 44), ("steady_exact_g88", 88)] {
-        if let Some(c) = refs.contact_history(name).ok().flatten() {
-            let e = c.column("fx_over_fn")?.iter().zip(&ff).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+        if let Some(e) = refs.contact.history(name).and_then(max_err) {
             let _ = writeln!(s, "| {grid} | CONTACT | {e:.5} |");
         }
-        let Some(sc) = scenes.iter().find(|x| x.name == name) else { continue };
+        let Some(sc) = find(scenes, name) else { continue };
         for (solver, h) in &sc.histories {
-            let e = h.column("fx_over_fn")?.iter().zip(&ff).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
-            let _ = writeln!(s, "| {grid} | {solver} | {e:.5} |");
-        }
-    }
-    Some(s)
-}
-
-/// Cost per step against element count (22² … 176²) for each built-in solver, with the fitted
-/// growth exponent (least squares on log–log). Measured now, on this machine: the cost per step
-/// is the difference of two runs of different length, so set-up (kernels, normal solve) cancels.
-pub fn scaling(figs: &Path) -> String {
-    let grids = [22usize, 44, 88, 176];
-    let mut s = String::from("Wall time per time step against the number of grid elements, step creepage 0.005 from zero traction on the default contact (μ 0.4). Per step = (T(n₂) − T(n₁))/(n₂ − n₁), so set-up cancels. Exponent: slope of log(time) against log(elements).\n\n| solver | 22² | 44² | 88² | 176² | exponent |\n|---|---|---|---|---|---|\n");
-    let mut series = Vec::new();
-    for (solver, n1, n2) in [("uba", 20usize, 420usize), ("fastsim", 20, 220), ("contact", 2, 6)] {
-        let mut pts = Vec::new();
-        for &g in &grids {
-            let t = |n: usize| -> Option<f64> {
-                let text = format!("name = \"scaling\"\nsolvers = [\"{solver}\"]\n[contact]\na_mm = 8.56\nb_mm = 4.08\nfn_n = 100000.0\nmu = 0.4\n[material]\ng_mpa = 82000.0\npoisson = 0.28\n[grid]\nmx = {g}\nmy = {g}\n[creepage]\nkind = \"step\"\nc = 0.005\nsteps = {n}\n");
-                let p = Problem::resolve(&Scene::from_toml(&text, Path::new(".")).ok()?).ok()?;
-                let sv = solvers::by_name(solver, &p)?;
-                let start = std::time::Instant::now();
-                sv.run(&p).ok()?;
-                Some(start.elapsed().as_secs_f64())
-            };
-            if let (Some(a), Some(b)) = (t(n1), t(n2)) {
-                pts.push(((g * g) as f64, ((b - a) / (n2 - n1) as f64).max(1e-12)));
+            if let Some(e) = max_err(h) {
+                let _ = writeln!(s, "| {grid} | {solver} | {e:.5} |");
             }
         }
+    }
+    Some(Section::new("Convergence under grid refinement", s))
+}
+
+/// Cost per step against element count from the stored `report_scaling_<solver>_g<n>` scenes:
+/// per step = (wall − set-up) / steps, with the fitted growth exponent (least squares, log–log).
+pub fn scaling(scenes: &[StoredScene]) -> Option<Section> {
+    let mut per_solver: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
+    for sc in scenes.iter().filter(|s| s.name.starts_with("report_scaling_")) {
+        for (solver, h) in &sc.histories {
+            let Some(t) = sc.timing.get(solver) else { continue };
+            let per_step = ((t.wall_s - t.setup_s) / h.rows.len().max(1) as f64).max(1e-12);
+            per_solver.entry(solver.clone()).or_default().push(((sc.scene.mx * sc.scene.my) as f64, per_step));
+        }
+    }
+    if per_solver.is_empty() {
+        return None;
+    }
+    let mut s = String::from("Wall time per time step against the number of grid elements (scenes `report_scaling_*`: step creepage 0.005 from zero traction on the default contact, μ 0.4): (wall − set-up)/steps, set-up being the model's construction and first load (kernels, normal problem), measured by the sample loop. Exponent: slope of log(time) against log(elements). Scenes run in parallel with the rest of the suite, so the figures include contention.\n\n| solver | elements: time per step | exponent |\n|---|---|---|\n");
+    let mut series = Vec::new();
+    for (solver, mut pts) in per_solver {
+        pts.sort_by(|a, b| a.0.total_cmp(&b.0));
         let logs: Vec<(f64, f64)> = pts.iter().map(|(n, t)| (n.ln(), t.ln())).collect();
         let m = logs.len() as f64;
         let (sx, sy) = (logs.iter().map(|p| p.0).sum::<f64>() / m, logs.iter().map(|p| p.1).sum::<f64>() / m);
@@ -246,19 +239,26 @@ pub fn scaling(figs: &Path) -> String {
             / logs.iter().map(|p| (p.0 - sx).powi(2)).sum::<f64>();
         let cells: Vec<String> = pts
             .iter()
-            .map(|(_, t)| if *t < 1e-3 { format!("{:.2} µs", t * 1e6) } else { format!("{:.2} ms", t * 1e3) })
+            .map(|(n, t)| {
+                let v = if *t < 1e-3 { format!("{:.2} µs", t * 1e6) } else { format!("{:.2} ms", t * 1e3) };
+                format!("{n:.0}: {v}")
+            })
             .collect();
-        let _ = writeln!(s, "| {solver} | {} | {slope:.2} |", cells.join(" | "));
-        series.push(Series {
-            label: solver.into(),
-            points: pts.iter().map(|(n, t)| (*n, t.log10())).collect(),
-            markers: false,
-        });
+        let _ = writeln!(s, "| {solver} | {} | {slope:.2} |", cells.join(", "));
+        series.push(Series { label: solver, points: pts.iter().map(|(n, t)| (*n, t.log10())).collect(), markers: false });
     }
-    let _ = std::fs::write(
-        figs.join("cost_per_step.svg"),
-        line_chart("Cost per step against elements", "elements (log)", "log10(seconds per step)", &series, true),
-    );
+    let svg = line_chart("Cost per step against elements", "elements (log)", "log10(seconds per step)", &series, true);
     s.push_str("\n![cost per step](figures/cost_per_step.svg)\n");
-    s
+    Some(Section { title: "Cost per step against grid size".into(), body: s, figures: vec![("cost_per_step.svg".into(), svg)] })
+}
+
+/// Every section, in the report's order.
+pub fn all(scenes: &[StoredScene], refs: &References) -> Vec<Section> {
+    let mut out = vec![thesis_beside_ours(scenes, refs)];
+    out.extend(error_vs_time(scenes, refs));
+    out.extend(grid_convergence(scenes, refs));
+    out.extend(stability(scenes));
+    out.push(timing(scenes, refs));
+    out.extend(scaling(scenes));
+    out
 }

@@ -7,8 +7,8 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use std::path::PathBuf;
 
-/// The default suites: the thesis scenes and the stability scenes.
-pub const DEFAULT_SUITES: [&str; 2] = ["scenes/thesis", "scenes/stability"];
+/// The default suites: the thesis scenes, the stability scenes and the studies behind the report.
+pub const DEFAULT_SUITES: [&str; 3] = ["scenes/thesis", "scenes/stability", "scenes/report"];
 
 /// `--shard i/n`: this run takes the scenes whose name hashes to i − 1 modulo n.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -17,16 +17,21 @@ pub struct Shard {
     pub count: usize,
 }
 
+/// A `--shard` value that is not `i/n` with 1 ≤ i ≤ n.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("--shard {given:?}: expected i/n with whole numbers 1 <= i <= n, e.g. 1/2")]
+pub struct ShardError {
+    pub given: String,
+}
+
 impl std::str::FromStr for Shard {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        let (i, n) = s.split_once('/').ok_or_else(|| format!("--shard {s:?}: expected i/n, e.g. 1/2"))?;
-        let (i, n): (usize, usize) = (
-            i.parse().map_err(|_| format!("--shard {s:?}: i must be a whole number"))?,
-            n.parse().map_err(|_| format!("--shard {s:?}: n must be a whole number"))?,
-        );
+    type Err = ShardError;
+    fn from_str(s: &str) -> Result<Self, ShardError> {
+        let bad = || ShardError { given: crate::history::excerpt(s) };
+        let (i, n) = s.split_once('/').ok_or_else(bad)?;
+        let (i, n): (usize, usize) = (i.parse().map_err(|_| bad())?, n.parse().map_err(|_| bad())?);
         if n == 0 || i == 0 || i > n {
-            return Err(format!("--shard {s:?}: need 1 <= i <= n"));
+            return Err(bad());
         }
         Ok(Shard { index: i, count: n })
     }
@@ -74,7 +79,7 @@ pub fn run(files: &[PathBuf], progress: bool) -> Result<Vec<SceneResult>, Error>
     // Longest first, each worker taking the next scene when it is free (greedy list scheduling,
     // Graham's LPT rule): the costly 88x88 scenes start at once instead of ending the run alone.
     let mut order: Vec<(f64, usize, Problem)> =
-        problems.into_iter().enumerate().map(|(i, p)| (estimated_cost(&p), i, p)).collect();
+        problems.into_iter().enumerate().map(|(i, p)| (crate::solvers::estimated_cost(&p), i, p)).collect();
     order.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
     let mut results = order
         .into_iter()
@@ -89,14 +94,4 @@ pub fn run(files: &[PathBuf], progress: bool) -> Result<Vec<SceneResult>, Error>
     // Back to file order, so that output never depends on the schedule.
     results.sort_by_key(|(i, _)| *i);
     results.into_iter().map(|(_, r)| r).collect()
-}
-
-/// Relative cost of a scene for scheduling only: the exact-theory solver dominates, about
-/// `N log N` per step for `N = mx*my` elements (a steady point counts as 3 steps); the brush
-/// solvers cost about `N` per step.
-fn estimated_cost(p: &Problem) -> f64 {
-    let n = (p.grid.mx * p.grid.my) as f64;
-    let rows = (p.samples.len() + usize::from(p.initial.is_some())) as f64;
-    let per_row = if p.is_transient() { 1.0 } else { 3.0 };
-    p.solvers.iter().map(|s| if s == "contact" { rows * per_row * n * n.max(2.0).ln() } else { 0.01 * rows * n }).sum()
 }

@@ -2,7 +2,7 @@
 //! |f − f_CONTACT| where a reference exists), written as CSV and, with the optional `polars`
 //! feature, as a polars DataFrame saved to Parquet for users who analyse in Python.
 
-use super::compare::{Against, Finding};
+use super::compare::Finding;
 use super::results::StoredScene;
 use std::path::Path;
 
@@ -33,7 +33,7 @@ pub fn rows(scenes: &[StoredScene], findings: &[Finding]) -> Vec<TableRow> {
     }
     for f in findings
         .iter()
-        .filter(|f| matches!(f.against, Against::Contact | Against::ContactFastsim) && f.quantity == "fx_over_fn")
+        .filter(|f| f.against.is_contact() && f.quantity == "fx_over_fn")
     {
         out.push(TableRow {
             scene: f.scene.clone(),

@@ -34,17 +34,17 @@ pub const RULES: &[Rule] = &[
     Rule { against: Against::Golden, solver: "*", quantity: "residual", abs: INF, rel: 0.0, gated: false, why: "final residuals are reported, not gated" },
     Rule { against: Against::Golden, solver: "*", quantity: "*", abs: 1e-9, rel: 1e-7, gated: true, why: "results are deterministic; the slack only absorbs floating-point differences between CPUs and libm versions" },
     // CONTACT's exact theory on identical grids (issue 3).
-    Rule { against: Against::Contact, solver: "contact", quantity: "fx_over_fn", abs: 0.002, rel: 0.0, gated: true, why: "issue 3: max |f - f_CONTACT| <= 0.002 over every step (aim 0.0005)" },
-    Rule { against: Against::Contact, solver: "contact", quantity: "delay_ratio", abs: 0.005, rel: 0.0, gated: true, why: "issue 3: delay ratios within 0.005 of CONTACT's" },
-    Rule { against: Against::Contact, solver: "contact", quantity: "loop_area", abs: 0.0, rel: 0.02, gated: true, why: "issue 3: loop areas within 2 %" },
-    Rule { against: Against::Contact, solver: "contact", quantity: "steady_value", abs: 0.002, rel: 0.0, gated: true, why: "same bound as every step" },
+    Rule { against: Against::Reference("CONTACT"), solver: "contact", quantity: "fx_over_fn", abs: 0.002, rel: 0.0, gated: true, why: "issue 3: max |f - f_CONTACT| <= 0.002 over every step (aim 0.0005)" },
+    Rule { against: Against::Reference("CONTACT"), solver: "contact", quantity: "delay_ratio", abs: 0.005, rel: 0.0, gated: true, why: "issue 3: delay ratios within 0.005 of CONTACT's" },
+    Rule { against: Against::Reference("CONTACT"), solver: "contact", quantity: "loop_area", abs: 0.0, rel: 0.02, gated: true, why: "issue 3: loop areas within 2 %" },
+    Rule { against: Against::Reference("CONTACT"), solver: "contact", quantity: "steady_value", abs: 0.002, rel: 0.0, gated: true, why: "same bound as every step" },
     // CONTACT's FASTSIM with the parabolic bound (issue 2).
-    Rule { against: Against::ContactFastsim, solver: "fastsim", quantity: "fx_over_fn", abs: 0.0015, rel: 0.0, gated: true, why: "issue 2: FASTSIM within 0.0015 of CONTACT's FASTSIM at every creepage" },
-    Rule { against: Against::ContactFastsim, solver: "uba", quantity: "fx_over_fn", abs: 0.0015, rel: 0.0, gated: true, why: "the steady UBA is FASTSIM's grid march (same discretisation)" },
+    Rule { against: Against::Reference("CONTACT FASTSIM"), solver: "fastsim", quantity: "fx_over_fn", abs: 0.0015, rel: 0.0, gated: true, why: "issue 2: FASTSIM within 0.0015 of CONTACT's FASTSIM at every creepage" },
+    Rule { against: Against::Reference("CONTACT FASTSIM"), solver: "uba", quantity: "fx_over_fn", abs: 0.0015, rel: 0.0, gated: true, why: "the steady UBA is FASTSIM's grid march (same discretisation)" },
     // The simplified models against the exact theory, and the thesis's figures: reported, not gated.
-    Rule { against: Against::Contact, solver: "*", quantity: "*", abs: INF, rel: 0.0, gated: false, why: "simplified models differ from the exact theory by design; the report shows by how much" },
-    Rule { against: Against::ContactFastsim, solver: "*", quantity: "*", abs: INF, rel: 0.0, gated: false, why: "reported" },
-    Rule { against: Against::Thesis, solver: "*", quantity: "*", abs: INF, rel: 0.0, gated: false, why: "the thesis's figures were read off its plots and used another grid treatment; reported beside ours" },
+    Rule { against: Against::Reference("CONTACT"), solver: "*", quantity: "*", abs: INF, rel: 0.0, gated: false, why: "simplified models differ from the exact theory by design; the report shows by how much" },
+    Rule { against: Against::Reference("CONTACT FASTSIM"), solver: "*", quantity: "*", abs: INF, rel: 0.0, gated: false, why: "reported" },
+    Rule { against: Against::Reference("thesis"), solver: "*", quantity: "*", abs: INF, rel: 0.0, gated: false, why: "the thesis's figures were read off its plots and used another grid treatment; reported beside ours" },
 ];
 
 /// The first rule covering this comparison.

@@ -5,7 +5,7 @@
 //! the leading edge x = −a and moves in +x (the thesis's and the UBA's orientation).
 
 /// Where a row's integration starts (`[model] leading_edge`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum LeadingEdge {
     /// The grid's own edge: the element upstream of a row's first loaded element carries zero

@@ -6,7 +6,7 @@ use ellip::{ellipke, elliprd};
 use std::f64::consts::PI;
 
 /// Principal radii of wheel and rail [mm] (thesis Fig. 2.4; the rail is straight along x).
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Radii {
     /// Wheel rolling radius R_wx.
     pub r_wx_mm: f64,
@@ -17,7 +17,7 @@ pub struct Radii {
 }
 
 /// A Hertzian contact ellipse under a load.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct HertzContact {
     /// Semi-axis along x, the rolling direction [mm].
     pub a_mm: f64,

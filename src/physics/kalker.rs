@@ -7,7 +7,7 @@ use super::material::Material;
 use std::f64::consts::PI;
 
 /// Where c11, c22, c23 come from (`[model] coefficients`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum CoefficientSource {
     /// Table A1, quadratic in ν through ν = 0, 0.25, 0.5 and linear in the axis ratio.
@@ -17,7 +17,7 @@ pub enum CoefficientSource {
 }
 
 /// Which flexibilities L1, L2, L3 the simplified models use (`[model] flexibility`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum FlexibilityModel {
     /// Kalker's simplified theory, Eq. 2.35: `L1 = 8a/(3 c11 G)`, `L2 = 8a/(3 c22 G)`,
@@ -28,7 +28,7 @@ pub enum FlexibilityModel {
 }
 
 /// Kalker's creepage coefficients [-].
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Coefficients {
     pub c11: f64,
     pub c22: f64,
@@ -36,7 +36,7 @@ pub struct Coefficients {
 }
 
 /// Flexibilities of the brush [mm³/N] (τ = u / L).
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Flexibilities {
     pub l1_mm3_n: f64,
     pub l2_mm3_n: f64,

@@ -4,6 +4,7 @@
 //! Units throughout: mm, N, MPa (N/mm²), s; creepages dimensionless, spin in 1/mm.
 
 pub mod bound;
+pub mod geometry;
 pub mod grid;
 pub mod hertz;
 pub mod kalker;
@@ -12,6 +13,7 @@ pub mod pressure;
 pub mod slip;
 
 pub use bound::project_to_bound;
+pub use geometry::{ContactGeometry, HertzEllipse, Planform};
 pub use grid::{Grid, LeadingEdge};
 pub use hertz::{HertzContact, Radii};
 pub use kalker::{CoefficientSource, Coefficients, Flexibilities, FlexibilityModel};

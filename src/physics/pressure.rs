@@ -4,7 +4,7 @@ use super::grid::Grid;
 use std::f64::consts::PI;
 
 /// Shape of the pressure that bounds the tangential traction, `μ p`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum PressureShape {
     /// Kalker's parabolic pressure `p = 2FN/(πab) (1 − x²/a² − y²/b²)` (thesis Eq. 2.32–2.33).

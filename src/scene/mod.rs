@@ -11,11 +11,6 @@ use crate::physics::{CoefficientSource, FlexibilityModel, LeadingEdge, PressureS
 use reader::{Range, Section};
 use std::path::{Path, PathBuf};
 
-/// Names of the built-in solvers.
-pub const BUILTIN_SOLVERS: [&str; 3] = ["uba", "fastsim", "contact"];
-/// Metric names (interface.md, "Metric definitions").
-pub const METRICS: [&str; 5] = ["delay_ratio", "loop_area", "steady_value", "settling_time_s", "oscillation_index"];
-
 /// Largest grid accepted along either axis.
 pub const MAX_ELEMENTS_PER_AXIS: usize = 512;
 
@@ -48,7 +43,7 @@ pub enum Creepage {
 }
 
 /// The initial tangential state.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum InitKind {
     Zero,
@@ -56,7 +51,7 @@ pub enum InitKind {
 }
 
 /// Model options of the simplified models (`[model]`).
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct ModelOptions {
     pub flexibility: FlexibilityModel,
     pub coefficients: CoefficientSource,
@@ -77,7 +72,7 @@ impl Default for ModelOptions {
 }
 
 /// Options of the CONTACT-style solver (`[contact_solver]`, optional).
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct ContactSolverOptions {
     /// Stop when the largest traction change relative to max μ pn falls below this.
     pub tolerance: f64,
@@ -158,11 +153,14 @@ impl Scene {
         let mut external = Vec::new();
         if let Some(mut ext) = top.opt_table("external")? {
             for key in ext.keys() {
-                if !is_valid_name(&key) || BUILTIN_SOLVERS.contains(&key.as_str()) {
+                if !is_valid_name(&key) || crate::solvers::builtin(&key).is_some() {
                     return Err(InputError::new(
                         ext.field(&key),
                         format!("{key:?}"),
-                        "an external solver name of [a-z0-9_]+ other than uba, fastsim, contact",
+                        format!(
+                            "an external solver name of [a-z0-9_]+ other than the built-in {}",
+                            crate::solvers::builtin_names().join(", ")
+                        ),
                     ));
                 }
                 let mut t = ext.table(&key)?;
@@ -181,8 +179,11 @@ impl Scene {
             }
             ext.finish()?;
         }
-        let solver_names: Vec<String> =
-            BUILTIN_SOLVERS.iter().map(|s| s.to_string()).chain(external.iter().map(|e| e.name.clone())).collect();
+        let solver_names: Vec<String> = crate::solvers::builtin_names()
+            .into_iter()
+            .map(String::from)
+            .chain(external.iter().map(|e| e.name.clone()))
+            .collect();
         let allowed_solvers = format!("a non-empty list of distinct names from {}", solver_names.join(", "));
         let solvers = top
             .opt_str_list("solvers", &allowed_solvers)?
@@ -195,14 +196,15 @@ impl Scene {
                 return Err(InputError::new(format!("solvers[{n}]"), format!("{s:?}"), allowed_solvers));
             }
         }
-        let metrics = top.opt_str_list("metrics", &format!("names from {}", METRICS.join(", ")))?;
+        let metric_names = crate::metrics::names().join(", ");
+        let metrics = top.opt_str_list("metrics", &format!("names from {metric_names}"))?;
         if let Some(ms) = &metrics {
             for (n, m) in ms.iter().enumerate() {
-                if !METRICS.contains(&m.as_str()) || ms[..n].contains(m) {
+                if crate::metrics::by_name(m).is_none() || ms[..n].contains(m) {
                     return Err(InputError::new(
                         format!("metrics[{n}]"),
                         format!("{m:?}"),
-                        format!("distinct names from {}", METRICS.join(", ")),
+                        format!("distinct names from {metric_names}"),
                     ));
                 }
             }
@@ -262,13 +264,6 @@ impl Scene {
             v_mm_s = r.opt_f64("v_mm_s", Range::new(0.0, false, 1e6, true))?.unwrap_or(v_mm_s);
             courant = r.opt_f64("courant", Range::new(0.0, false, 100.0, true))?.unwrap_or(courant);
             r.finish()?;
-        }
-        if courant > 1.0 && solvers.iter().any(|s| s == "uba") {
-            return Err(InputError::new(
-                "rolling.courant",
-                courant,
-                "(0, 1] when the scene runs uba: the explicit upwind scheme is stable only for courant <= 1",
-            ));
         }
 
         // [creepage]

@@ -5,10 +5,9 @@
 //! one row per step of the scene (the step column must match the scene's steps; a row for
 //! step 0, the initial state, is dropped unless the scene starts from a steady state).
 
-use super::Solver;
 use crate::error::Error;
 use crate::history::History;
-use crate::problem::Problem;
+use crate::problem::{Problem, ResolvedScene};
 use crate::scene::ExternalSolver;
 use std::process::Command;
 
@@ -23,18 +22,20 @@ impl External {
     }
 }
 
-impl Solver for External {
-    fn name(&self) -> &str {
+impl External {
+    /// The model's name in the scene.
+    pub fn name(&self) -> &str {
         &self.spec.name
     }
 
-    fn run(&self, problem: &Problem) -> Result<History, Error> {
-        let fail = |m: String| super::fail(problem, &self.spec.name, m);
+    /// Run the model over the whole scene and read its history back.
+    pub fn run(&self, problem: &Problem) -> Result<History, Error> {
+        let fail = |m: String| Error::External { scene: problem.name.clone(), solver: self.spec.name.clone(), message: m };
         let dir =
             tempfile::Builder::new().prefix("creepbench-ext").tempdir().map_err(|e| fail(format!("temp dir: {e}")))?;
         let scene_json = dir.path().join("scene.json");
         let out_csv = dir.path().join(format!("{}.csv", self.spec.name));
-        let json = crate::output::scene_json(problem, &problem.solvers);
+        let json = ResolvedScene::of(problem, &problem.solvers).to_json();
         std::fs::write(&scene_json, json).map_err(|e| fail(format!("writing scene.json: {e}")))?;
         let mut program = std::path::PathBuf::from(&self.spec.command[0]);
         if program.components().count() > 1 && program.is_relative() {
@@ -58,12 +59,11 @@ impl Solver for External {
             std::fs::read_to_string(&out_csv).map_err(|e| fail(format!("no output {}: {e}", out_csv.display())))?;
         let mut h = History::from_csv(&self.spec.name, &text).map_err(|e| fail(format!("output CSV: {e}")))?;
         // Step 0 (the initial state) is part of the output only when the scene starts steady.
-        let with_initial = problem.init == crate::scene::InitKind::Steady && problem.initial.is_some();
+        let with_initial = problem.loading.steady_start().is_some();
         if !with_initial {
             h.rows.retain(|r| r.step != 0);
         }
-        let expected: Vec<usize> =
-            with_initial.then_some(0).into_iter().chain(problem.samples.iter().map(|s| s.step)).collect();
+        let expected: Vec<usize> = problem.loading.rows().map(|s| s.step).collect();
         let got: Vec<usize> = h.rows.iter().map(|r| r.step).collect();
         if got != expected {
             return Err(fail(format!(
@@ -76,6 +76,9 @@ impl Solver for External {
         }
         if let Some(r) = h.rows.iter().find(|r| !r.fx_over_fn.is_finite() || !r.fy_over_fn.is_finite()) {
             return Err(fail(format!("non-finite traction coefficient at step {}", r.step)));
+        }
+        for (r, s) in h.rows.iter_mut().zip(problem.loading.rows()) {
+            r.mu = s.mu;
         }
         Ok(h)
     }

@@ -1,62 +1,70 @@
 //! FASTSIM: Kalker's simplified theory for steady rolling (thesis 2.3.6, Kalker 1990 ch. 3).
 //! Each row is integrated element by element from its leading edge, with the traction bound μ p;
-//! by default from the grid's edge as CONTACT's FASTSIM does (`[model] leading_edge`). On a transient scene it gives the
-//! quasi-steady response at every step's creepage: it has no memory.
+//! by default from the grid's edge as CONTACT's FASTSIM does (`[model] leading_edge`). On a
+//! transient scene it gives the quasi-steady response at every step's creepage: it has no memory.
 
-use super::brush::{self, Integration, SlipRates, Tractions};
-use super::Solver;
-use crate::error::Error;
-use crate::history::{History, Row};
-use crate::problem::{Problem, Sample};
+use super::brush::{self, Integration, Tractions};
+use super::stepper::{FieldView, Step, Stepper};
+use super::termination::Termination;
+use super::{always, linear_in_elements, ModelDef, SolveError};
+use crate::problem::{LocalContact, Problem, Sample};
 
 /// Kalker's FASTSIM on the scene's grid.
-pub struct Fastsim;
+pub const MODEL: ModelDef = ModelDef {
+    name: "fastsim",
+    summary: "Kalker's simplified theory for steady rolling, FASTSIM (Kalker 1982; thesis 2.3.6), quasi-steady at every step",
+    extra_columns: &["n_adhesion", "n_slip"],
+    iterative: false,
+    check: always,
+    cost_per_row: linear_in_elements,
+    build,
+};
 
-/// Extra columns of `fastsim.csv`.
-pub const EXTRA: [&str; 2] = ["n_adhesion", "n_slip"];
-
-impl Fastsim {
-    /// Steady tractions for one sample; returns (fx/FN, fy/FN, n_adhesion, n_slip).
-    pub fn solve(
-        problem: &Problem,
-        sample: &Sample,
-        local: &crate::problem::LocalContact,
-        t: &mut Tractions,
-    ) -> (f64, f64, usize, usize) {
-        let rates = SlipRates::new(sample.cx, sample.cy, sample.cs, &local.flex);
-        let ab = (local.hertz.a_mm, local.hertz.b_mm);
-        let n_slip = brush::steady_march(
-            &problem.grid,
-            &local.pressure_mpa,
-            sample.mu,
-            &rates,
-            problem.model.leading_edge,
-            Integration::Exact,
-            ab,
-            t,
-        );
-        let (fx, fy) = brush::coefficients(t, &local.pressure_mpa);
-        (fx, fy, brush::loaded(&local.pressure_mpa) - n_slip, n_slip)
-    }
+fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
+    let local = p.local_contact(p.loading.first().fn_n);
+    Ok(Box::new(Fastsim { p, local, t: Tractions::zero(p.grid.len()) }))
 }
 
-impl Solver for Fastsim {
-    fn name(&self) -> &str {
-        "fastsim"
+struct Fastsim<'a> {
+    p: &'a Problem,
+    local: LocalContact,
+    t: Tractions,
+}
+
+impl Stepper for Fastsim<'_> {
+    fn load(&mut self, at: &Sample) -> Result<(), SolveError> {
+        if at.fn_n != self.local.planform.ellipse.fn_n {
+            self.local = self.p.local_contact(at.fn_n);
+        }
+        Ok(())
     }
 
-    fn run(&self, problem: &Problem) -> Result<History, Error> {
-        let mut h = History::new(self.name(), &EXTRA);
-        let mut t = Tractions::zero(problem.grid.len());
-        let mut local = problem.local_contact(problem.hertz.fn_n);
-        let initial = problem.initial.filter(|_| problem.init == crate::scene::InitKind::Steady);
-        for s in initial.iter().chain(problem.samples.iter()) {
-            if s.fn_n != local.hertz.fn_n {
-                local = problem.local_contact(s.fn_n);
-            }
-            let (fx, fy, na, ns) = Self::solve(problem, s, &local, &mut t);
-            h.rows.push(Row::new(s, fx, fy, vec![na as f64, ns as f64]));
-        }
-        Ok(h)
+    fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        let rates = brush::slip_rates(at, &self.local.flex);
+        let how = (self.p.model.leading_edge, Integration::Exact);
+        let n_slip = brush::steady_march(&self.p.grid, &self.local.planform, at.mu, &rates, how, &mut self.t);
+        let (fx, fy) = self.t.coefficients(&self.local.planform);
+        let n_loaded = self.local.planform.loaded();
+        Ok(Step {
+            fx_over_fn: fx,
+            fy_over_fn: fy,
+            extra: vec![(n_loaded - n_slip) as f64, n_slip as f64],
+            termination: Termination::Direct,
+        })
+    }
+
+    /// No memory: the steady response at this step's creepage.
+    fn transient(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        self.steady(at)
+    }
+
+    fn field(&self) -> Option<FieldView<'_>> {
+        Some(FieldView {
+            grid: &self.p.grid,
+            pressure_mpa: &self.local.planform.pressure_mpa,
+            tx_mpa: &self.t.tx,
+            ty_mpa: &self.t.ty,
+            state: None,
+        })
     }
 }

@@ -1,40 +1,84 @@
-//! Step 3 of the pipeline: the solvers, interchangeable behind one small trait. The harness only
-//! sees [`Solver::run`]: a resolved [`Problem`] in, a [`History`] out.
+//! Step 3 of the pipeline: the models, registered in one place. A built-in model is a
+//! [`Stepper`] plus a [`ModelDef`] (name, source, extra columns, applicability, cost, builder);
+//! [`sample_loop`] runs every one of them the same way. External models (`[external.NAME]`) run
+//! as a process over the whole scene ([`external`]).
 
 pub mod brush;
 pub mod contact;
 pub mod external;
 pub mod fastsim;
+pub mod linear;
+pub mod sample_loop;
+pub mod stepper;
 pub mod termination;
 pub mod uba;
 
-use crate::error::Error;
-use crate::history::History;
+pub use sample_loop::ModelRun;
+pub use stepper::{FieldView, Step, Stepper};
+pub use termination::Termination;
+
+use crate::error::InputError;
 use crate::problem::Problem;
 
-/// A creep-force model run over a whole scene.
-pub trait Solver: Send + Sync {
-    /// The name used in scenes (`solvers = [...]`) and for `<name>.csv`.
-    fn name(&self) -> &str;
-    /// March (or sweep) the problem's creepage history.
-    fn run(&self, problem: &Problem) -> Result<History, Error>;
+/// Why a model could not produce a trustworthy result.
+#[derive(Debug, thiserror::Error)]
+pub enum SolveError {
+    /// A traction coefficient came out NaN or infinite.
+    #[error("non-finite traction coefficient at step {step}")]
+    NonFinite { step: usize },
+    /// The exact-theory solver failed.
+    #[error(transparent)]
+    Contact(#[from] contact::ContactRunError),
 }
 
-/// The solver of that name for this problem: a built-in one or one of the scene's external models.
-pub fn by_name(name: &str, problem: &Problem) -> Option<Box<dyn Solver>> {
-    match name {
-        "uba" => Some(Box::new(uba::Uba)),
-        "fastsim" => Some(Box::new(fastsim::Fastsim)),
-        "contact" => Some(Box::new(contact::ContactSolver)),
-        other => problem
-            .external
-            .iter()
-            .find(|e| e.name == other)
-            .map(|e| Box::new(external::External::new(e.clone())) as Box<dyn Solver>),
-    }
+/// A built-in model: everything the tool needs to know of it, in one record.
+pub struct ModelDef {
+    /// The name in scenes (`solvers = [...]`) and of `<name>.csv`.
+    pub name: &'static str,
+    /// What the model is, with its source, in one line (report, README).
+    pub summary: &'static str,
+    /// Columns of `<name>.csv` after the interface's (and `mu`), in order.
+    pub extra_columns: &'static [&'static str],
+    /// Whether its solves iterate: its history then ends with a `termination` column.
+    pub iterative: bool,
+    /// Refuses a problem the model cannot run, naming the scene field.
+    pub check: fn(&Problem) -> Result<(), InputError>,
+    /// Relative cost of one history row, for scheduling a suite (longest first).
+    pub cost_per_row: fn(&Problem) -> f64,
+    /// The stepper for this problem.
+    pub build: for<'a> fn(&'a Problem) -> Result<Box<dyn Stepper + 'a>, SolveError>,
 }
 
-/// A solver failure for `problem`.
-pub(crate) fn fail(problem: &Problem, solver: &str, message: impl Into<String>) -> Error {
-    Error::Solve { scene: problem.name.clone(), solver: solver.into(), message: message.into() }
+/// Every built-in model. Adding one: its file and one line here.
+pub const MODELS: &[&ModelDef] = &[&uba::MODEL, &fastsim::MODEL, &contact::MODEL, &linear::MODEL];
+
+/// The built-in model of that name.
+pub fn builtin(name: &str) -> Option<&'static ModelDef> {
+    MODELS.iter().copied().find(|m| m.name == name)
+}
+
+/// Names of the built-in models, in registry order.
+pub fn builtin_names() -> Vec<&'static str> {
+    MODELS.iter().map(|m| m.name).collect()
+}
+
+/// Every built-in model the problem names must accept it (e.g. the UBA needs courant ≤ 1).
+pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
+    problem.solvers.iter().filter_map(|s| builtin(s)).try_for_each(|m| (m.check)(problem))
+}
+
+/// Relative cost of running the problem's models, for scheduling only.
+pub fn estimated_cost(problem: &Problem) -> f64 {
+    let rows = problem.loading.rows().count() as f64;
+    problem.solvers.iter().filter_map(|s| builtin(s)).map(|m| rows * (m.cost_per_row)(problem)).sum()
+}
+
+/// Accepts every problem.
+pub fn always(_: &Problem) -> Result<(), InputError> {
+    Ok(())
+}
+
+/// Cost of a model that touches every grid element a constant number of times per row.
+pub fn linear_in_elements(p: &Problem) -> f64 {
+    0.01 * p.grid.len() as f64
 }

@@ -13,19 +13,111 @@
 //! `τ_i ← τ_i − C (τ_i − τ_{i−1}) + C dx k_i`, `k = (cx/L1 − cs y/L3, cy/L2 + cs x/L3)`;
 //! at C = 1 material moves exactly one element per step: `τ_i ← τ_{i−1} + dx k_i`.
 
-use super::brush::{self, Integration, LeadingEdge, SlipRates, Tractions};
-use super::Solver;
-use crate::error::Error;
-use crate::history::{History, Row};
-use crate::physics::Grid;
+use super::brush::{self, Integration, LeadingEdge, Tractions};
+use super::stepper::{FieldView, Step, Stepper};
+use super::termination::Termination;
+use super::{linear_in_elements, ModelDef, SolveError};
+use crate::error::InputError;
+use crate::physics::{Grid, Planform, RigidSlip};
 use crate::problem::{LocalContact, Problem, Sample};
-use crate::scene::InitKind;
 
 /// The Unsteady Brush Algorithm.
-pub struct Uba;
+pub const MODEL: ModelDef = ModelDef {
+    name: "uba",
+    summary: "Unsteady Brush Algorithm (Diaz de la Fuente 2012, ch. 3): explicit upwind transport of the tangential tractions with the traction bound",
+    extra_columns: &["n_adhesion", "n_slip"],
+    iterative: false,
+    check,
+    cost_per_row: linear_in_elements,
+    build,
+};
 
-/// Extra columns of `uba.csv`.
-pub const EXTRA: [&str; 3] = ["n_adhesion", "n_slip", "sawtooth"];
+/// The explicit scheme is stable only for courant ≤ 1 (CFL).
+fn check(p: &Problem) -> Result<(), InputError> {
+    let c = p.rolling.courant;
+    if c > 0.0 && c <= 1.0 {
+        return Ok(());
+    }
+    Err(InputError::new(
+        "rolling.courant",
+        c,
+        "(0, 1] when the scene runs uba: the explicit upwind scheme is stable only for courant <= 1",
+    ))
+}
+
+fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
+    let n = p.grid.len();
+    let local = p.local_contact(p.loading.first().fn_n);
+    let prep = Prepared::new(&p.grid, &local.planform.pressure_mpa, p.loading.first().mu);
+    Ok(Box::new(Uba { p, local, prep, t: Tractions::zero(n), scratch: Tractions::zero(n) }))
+}
+
+/// The UBA's state: the contact at the current load, the prepared step and the tractions.
+struct Uba<'a> {
+    p: &'a Problem,
+    local: LocalContact,
+    prep: Prepared,
+    t: Tractions,
+    scratch: Tractions,
+}
+
+impl Uba<'_> {
+    fn row(&self, n_slip: usize) -> Step {
+        let (fx, fy) = self.t.coefficients(&self.local.planform);
+        let n_loaded = self.prep.loaded();
+        Step {
+            fx_over_fn: fx,
+            fy_over_fn: fy,
+            extra: vec![(n_loaded - n_slip) as f64, n_slip as f64],
+            termination: Termination::Direct,
+        }
+    }
+}
+
+impl Stepper for Uba<'_> {
+    fn load(&mut self, at: &Sample) -> Result<(), SolveError> {
+        if at.fn_n != self.local.planform.ellipse.fn_n {
+            self.local = self.p.local_contact(at.fn_n);
+            // Elements that left the contact carry nothing.
+            for (k, p) in self.local.planform.pressure_mpa.iter().enumerate() {
+                if *p <= 0.0 {
+                    for v in [&mut self.t.tx, &mut self.t.ty, &mut self.scratch.tx, &mut self.scratch.ty] {
+                        v[k] = 0.0;
+                    }
+                }
+            }
+        }
+        self.prep = Prepared::new(&self.p.grid, &self.local.planform.pressure_mpa, at.mu);
+        Ok(())
+    }
+
+    /// The fixed point of [`step`] for any C ∈ (0, 1], marched directly.
+    fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        let rates = brush::slip_rates(at, &self.local.flex);
+        let how = (self.p.model.leading_edge, Integration::Centre);
+        let n_slip = brush::steady_march(&self.p.grid, &self.local.planform, at.mu, &rates, how, &mut self.t);
+        Ok(self.row(n_slip))
+    }
+
+    fn transient(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        let rates = brush::slip_rates(at, &self.local.flex);
+        let scheme = (self.p.rolling.courant, self.p.model.leading_edge);
+        let n_slip =
+            step((&self.p.grid, &self.local.planform), &mut self.prep, &rates, scheme, &self.t, &mut self.scratch);
+        std::mem::swap(&mut self.t, &mut self.scratch);
+        Ok(self.row(n_slip))
+    }
+
+    fn field(&self) -> Option<FieldView<'_>> {
+        Some(FieldView {
+            grid: &self.p.grid,
+            pressure_mpa: &self.local.planform.pressure_mpa,
+            tx_mpa: &self.t.tx,
+            ty_mpa: &self.t.ty,
+            state: None,
+        })
+    }
+}
 
 /// What a UBA step needs of the pressure, prepared once per load and friction: the loaded runs
 /// of each row, the bound μ p per element, whether an element's upstream
@@ -81,29 +173,26 @@ impl Prepared {
 /// One explicit upwind step (corrected Eq. 3.9–3.10) with the traction bound, from `old` into
 /// `new` (double-buffered: every update reads only old values, so the loop is one flat,
 /// branch-free pass over the grid that the compiler vectorises). `edge` sets the inflow value
-/// upstream of each row's first loaded element; `ab` is the ellipse of the pressure.
+/// upstream of each row's first loaded element of the planform.
 /// Returns the number of elements on the bound. `courant` must be in (0, 1].
-#[allow(clippy::too_many_arguments)]
 pub fn step(
-    grid: &Grid,
+    (grid, planform): (&Grid, &Planform),
     prep: &mut Prepared,
-    rates: &SlipRates,
-    courant: f64,
-    edge: LeadingEdge,
-    ab: (f64, f64),
+    rates: &RigidSlip,
+    (courant, edge): (f64, LeadingEdge),
     old: &Tractions,
     new: &mut Tractions,
 ) -> usize {
     if edge == LeadingEdge::Exact {
         for &(j, first, _) in &prep.runs {
-            let (gx, gy) = brush::ghost(grid, edge, rates, first, j, ab.0, ab.1);
+            let (gx, gy) = brush::ghost(grid, planform, edge, rates, first, j);
             prep.ghost_x[grid.index(first, j)] = gx;
             prep.ghost_y[grid.index(first, j)] = gy;
         }
     }
     // Source per step, C·dx·k(x, y) (Eq. 3.4): kx = cx/L1 − cs y/L3, ky = cy/L2 + cs x/L3.
     let (c, cdx) = (courant, courant * grid.dx_mm);
-    let consts = [c, cdx * rates.cx_l1, -cdx * rates.cs_l3, cdx * rates.cy_l2, cdx * rates.cs_l3];
+    let consts = [c, cdx * rates.cx, -cdx * rates.cs, cdx * rates.cy, cdx * rates.cs];
     flat_step(prep, &old.tx, &old.ty, &mut new.tx, &mut new.ty, consts)
 }
 
@@ -151,80 +240,3 @@ fn flat_step(p: &Prepared, ox: &[f64], oy: &[f64], nx: &mut [f64], ny: &mut [f64
     flat_body(p, ox, oy, nx, ny, k)
 }
 
-/// The UBA's steady state: the fixed point of [`step`] for any C ∈ (0, 1], marched directly.
-pub fn steady(
-    grid: &Grid,
-    local: &LocalContact,
-    mu: f64,
-    rates: &SlipRates,
-    edge: LeadingEdge,
-    t: &mut Tractions,
-) -> usize {
-    let ab = (local.hertz.a_mm, local.hertz.b_mm);
-    brush::steady_march(grid, &local.pressure_mpa, mu, rates, edge, Integration::Centre, ab, t)
-}
-
-impl Solver for Uba {
-    fn name(&self) -> &str {
-        "uba"
-    }
-
-    fn run(&self, problem: &Problem) -> Result<History, Error> {
-        if !(problem.courant > 0.0 && problem.courant <= 1.0) {
-            return Err(super::fail(problem, "uba", format!("courant {} outside (0, 1]", problem.courant)));
-        }
-        let grid = &problem.grid;
-        let edge = problem.model.leading_edge;
-        let mut h = History::new(self.name(), &EXTRA);
-        let mut t = Tractions::zero(grid.len());
-        let mut scratch = Tractions::zero(grid.len());
-        let row = |s: &Sample, t: &Tractions, local: &LocalContact, n_loaded: usize, n_slip: usize| {
-            let (fx, fy) = brush::coefficients(t, &local.pressure_mpa);
-            let saw = brush::sawtooth_index(&problem.grid, &local.pressure_mpa, t);
-            Row::new(s, fx, fy, vec![(n_loaded - n_slip) as f64, n_slip as f64, saw])
-        };
-        let mut local = problem.local_contact(problem.hertz.fn_n);
-        if !problem.is_transient() {
-            let n_loaded = brush::loaded(&local.pressure_mpa);
-            for s in &problem.samples {
-                let rates = SlipRates::new(s.cx, s.cy, s.cs, &local.flex);
-                let n_slip = steady(grid, &local, s.mu, &rates, edge, &mut t);
-                h.rows.push(row(s, &t, &local, n_loaded, n_slip));
-            }
-            return Ok(h);
-        }
-        let first = problem.initial.unwrap_or(problem.samples[0]);
-        local = problem.local_contact(first.fn_n);
-        let mut prep = Prepared::new(grid, &local.pressure_mpa, first.mu);
-        let mut prep_mu = first.mu;
-        if let (InitKind::Steady, Some(s0)) = (problem.init, problem.initial) {
-            let rates = SlipRates::new(s0.cx, s0.cy, s0.cs, &local.flex);
-            let n_slip = steady(grid, &local, s0.mu, &rates, edge, &mut t);
-            h.rows.push(row(&s0, &t, &local, prep.loaded(), n_slip));
-        }
-        for s in &problem.samples {
-            if s.fn_n != local.hertz.fn_n || s.mu != prep_mu {
-                if s.fn_n != local.hertz.fn_n {
-                    local = problem.local_contact(s.fn_n);
-                    // Elements that left the contact carry nothing.
-                    for (k, p) in local.pressure_mpa.iter().enumerate() {
-                        if *p <= 0.0 {
-                            t.tx[k] = 0.0;
-                            t.ty[k] = 0.0;
-                            scratch.tx[k] = 0.0;
-                            scratch.ty[k] = 0.0;
-                        }
-                    }
-                }
-                prep = Prepared::new(grid, &local.pressure_mpa, s.mu);
-                prep_mu = s.mu;
-            }
-            let rates = SlipRates::new(s.cx, s.cy, s.cs, &local.flex);
-            let ab = (local.hertz.a_mm, local.hertz.b_mm);
-            let n_slip = step(grid, &mut prep, &rates, problem.courant, edge, ab, &t, &mut scratch);
-            std::mem::swap(&mut t, &mut scratch);
-            h.rows.push(row(s, &t, &local, prep.loaded(), n_slip));
-        }
-        Ok(h)
-    }
-}

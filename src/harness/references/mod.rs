@@ -1,0 +1,55 @@
+//! Reference data from outside the project (reference/README.md), read only. Each reference set
+//! is one file implementing [`ReferenceSet`]: it loads its data and compares stored results with
+//! it; [`References::sets`] is the registry the gate and the report iterate.
+
+pub mod contact;
+pub mod thesis;
+
+use super::compare::Finding;
+use super::results::StoredScene;
+use crate::error::Error;
+use crate::history::History;
+use std::path::Path;
+
+/// Default location of the reference data.
+pub const DEFAULT_DIR: &str = "reference";
+
+/// A set of reference results.
+pub trait ReferenceSet: Send + Sync {
+    /// Short label of the set (findings, the report).
+    fn label(&self) -> &'static str;
+    /// Every comparison of a stored scene with this set (none when it holds nothing for it).
+    fn compare(&self, scene: &StoredScene) -> Vec<Finding>;
+    /// The set's own history of a scene, if it has one (plots, error tables).
+    fn history(&self, scene: &str) -> Option<&History>;
+}
+
+/// Every reference set the project holds.
+#[derive(Debug, Clone, Default)]
+pub struct References {
+    pub contact: contact::ContactCases,
+    pub thesis: thesis::ThesisTables,
+}
+
+impl References {
+    /// Load every set from `dir`.
+    pub fn load(dir: &Path) -> Result<References, Error> {
+        Ok(References { contact: contact::ContactCases::load(dir)?, thesis: thesis::ThesisTables::load(dir)? })
+    }
+
+    /// The registry: every set, in the order of the report. Adding a set: its file, a field and
+    /// a line here.
+    pub fn sets(&self) -> [&dyn ReferenceSet; 2] {
+        [&self.contact, &self.thesis]
+    }
+
+    /// The first history any set holds for a scene (drawn as markers in the plots).
+    pub fn history(&self, scene: &str) -> Option<&History> {
+        self.sets().into_iter().find_map(|s| s.history(scene))
+    }
+}
+
+/// Read a reference file (typed error naming it).
+fn read(path: &Path) -> Result<String, Error> {
+    std::fs::read_to_string(path).map_err(Error::io(path))
+}

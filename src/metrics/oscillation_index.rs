@@ -1,0 +1,79 @@
+//! `oscillation_index`, a stability diagnostic (computed when a scene lists it): the fraction of
+//! interior steps where f turns, from the first step after the initial state.
+
+use super::{HistoryColumns, MetricDef, MetricKind, MetricValue};
+use crate::problem::Loading;
+
+pub const METRIC: MetricDef = MetricDef {
+    name: "oscillation_index",
+    default: false,
+    fits: |l, _| if l.is_transient() { Ok(()) } else { Err("time histories only".into()) },
+    kind: MetricKind::History(compute),
+};
+
+fn compute(_: &Loading, h: &HistoryColumns) -> Vec<MetricValue> {
+    vec![(None, oscillation_index(&h.f[h.first_step..]))]
+}
+
+/// Number of turns in a sequence: sign changes between consecutive first differences larger than
+/// `tiny`, smaller ones skipped (so a rounded extremum counts once even when its middle
+/// difference is tiny, and jitter below `tiny` counts nothing). Shared by the oscillation and
+/// sawtooth indicators.
+pub fn turns(values: impl IntoIterator<Item = f64>, tiny: f64) -> usize {
+    let mut it = values.into_iter();
+    let Some(mut prev) = it.next() else { return 0 };
+    let mut last_sign = 0.0f64;
+    let mut n = 0;
+    for v in it {
+        let d = v - prev;
+        prev = v;
+        if d.abs() > tiny {
+            let sign = d.signum();
+            n += usize::from(last_sign != 0.0 && sign != last_sign);
+            last_sign = sign;
+        }
+    }
+    n
+}
+
+/// Oscillation index of a time history: the fraction of interior steps where f turns. A smooth
+/// response scores about 2 per period (its extrema); a step-to-step sawtooth scores ~1.
+/// Differences count only above [`OSCILLATION_FLOOR`] of `max |f|` (and above 1e-9 of the range
+/// of f): an iterative solver converged to its tolerance (the exact-theory solver's default
+/// 1e-7 of the traction bound) leaves a jitter of that order on a plateau, which is not an
+/// oscillation.
+pub fn oscillation_index(f: &[f64]) -> f64 {
+    if f.len() < 3 {
+        return 0.0;
+    }
+    let (lo, hi) = f.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
+    let scale = lo.abs().max(hi.abs());
+    let tiny = (1e-9 * (hi - lo)).max(OSCILLATION_FLOOR * scale).max(f64::MIN_POSITIVE);
+    turns(f.iter().copied(), tiny) as f64 / (f.len() - 2) as f64
+}
+
+/// Noise floor of [`oscillation_index`], relative to `max |f|`: ten times the exact-theory
+/// solver's default tolerance.
+pub const OSCILLATION_FLOOR: f64 = 1e-6;
+
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn oscillation_index_sees_sawtooth_not_convergence_jitter() {
+        // A plateau at 0.4 with solver jitter of 1e-11 (tolerance level): no turns.
+        let jitter: Vec<f64> = (0..40).map(|i| 0.4 + if i % 2 == 0 { 1e-11 } else { -1e-11 }).collect();
+        assert_eq!(oscillation_index(&jitter), 0.0);
+        // The same plateau with a 1e-4 sawtooth: every interior step turns.
+        let saw: Vec<f64> = (0..40).map(|i| 0.4 + if i % 2 == 0 { 1e-4 } else { -1e-4 }).collect();
+        assert!((oscillation_index(&saw) - 1.0).abs() < 1e-12);
+        // A smooth sine over 3 periods of 60 steps: 6 extrema in 178 interior steps.
+        let sine: Vec<f64> =
+            (0..180).map(|i| 0.3 + 0.1 * (2.0 * std::f64::consts::PI * (i as f64 + 0.3) / 60.0).sin()).collect();
+        assert!((oscillation_index(&sine) - 6.0 / 178.0).abs() < 1e-12, "{}", oscillation_index(&sine));
+        // A rounded peak whose middle difference is below the floor still counts once.
+        assert_eq!(turns([0.0, 0.5, 1.0, 1.0 + 1e-9, 0.5, 0.0], 1e-6), 1);
+    }
+}

@@ -1,0 +1,15 @@
+//! `steady_value` (interface.md): f at the last step (step and sine kinds) or at each point
+//! (sweep, with the point's step).
+
+use super::{HistoryColumns, MetricDef, MetricKind, MetricValue};
+use crate::problem::{Loading, LoadingKind};
+
+pub const METRIC: MetricDef = MetricDef { name: "steady_value", default: true, fits: |_, _| Ok(()), kind: MetricKind::History(compute) };
+
+fn compute(l: &Loading, h: &HistoryColumns) -> Vec<MetricValue> {
+    if l.kind == LoadingKind::Sweep {
+        h.steps.iter().zip(&h.f).map(|(k, v)| (Some(*k), *v)).collect()
+    } else {
+        h.f.last().map(|v| (None, *v)).into_iter().collect()
+    }
+}

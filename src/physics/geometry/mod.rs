@@ -1,0 +1,62 @@
+//! The geometry seam: what every solver needs of the contact's shape, behind one trait. The
+//! exact-theory solver takes the undeformed distance per element; the simplified models take a
+//! planform (their pressure on the grid, each row's leading edge, the ellipse that sets their
+//! flexibilities). Hertz's ellipse is one geometry ([`hertz::HertzEllipse`]); an element-wise
+//! geometry is one more file here plus its scene keys.
+
+pub mod hertz;
+
+use super::{Grid, HertzContact, Material, PressureShape};
+use std::fmt::Debug;
+
+pub use hertz::HertzEllipse;
+
+/// The simplified models' contact at one load.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Planform {
+    /// The ellipse at this load: its semi-axes set the flexibilities (thesis Eq. 2.35).
+    pub ellipse: HertzContact,
+    /// Pressure per element [MPa], flat order; zero outside the contact.
+    pub pressure_mpa: Vec<f64>,
+    /// Σ pressure over the grid [MPa], the denominator of the traction coefficients (Eq. 3.12).
+    pub pressure_sum_mpa: f64,
+    /// Half-length of the contact chord of each grid row [mm] (0 where the row has no contact):
+    /// the row's exact leading edge is at x = −half chord (`[model] leading_edge = "exact"`).
+    pub half_chord_mm: Vec<f64>,
+}
+
+impl Planform {
+    /// A planform from its pressure, summing it once in flat order.
+    pub fn new(ellipse: HertzContact, pressure_mpa: Vec<f64>, half_chord_mm: Vec<f64>) -> Self {
+        let pressure_sum_mpa = pressure_mpa.iter().sum();
+        Planform { ellipse, pressure_mpa, pressure_sum_mpa, half_chord_mm }
+    }
+
+    /// Number of loaded elements (p > 0).
+    pub fn loaded(&self) -> usize {
+        self.pressure_mpa.iter().filter(|&&p| p > 0.0).count()
+    }
+
+    /// Traction coefficients `(Σ τx / Σ p, Σ τy / Σ p)` from the traction sums (thesis Eq. 3.12).
+    pub fn coefficients(&self, sum_tx: f64, sum_ty: f64) -> (f64, f64) {
+        if self.pressure_sum_mpa <= 0.0 {
+            return (0.0, 0.0);
+        }
+        (sum_tx / self.pressure_sum_mpa, sum_ty / self.pressure_sum_mpa)
+    }
+}
+
+/// A contact geometry: the undeformed distance and the planform at any load.
+pub trait ContactGeometry: Send + Sync + Debug {
+    /// Name written to scene.json (`geometry`).
+    fn kind(&self) -> &'static str;
+    /// The ellipse at the scene's nominal load: it sizes the grid and gives Kalker's
+    /// coefficients (Table A1 is tabulated by the axis ratio).
+    fn nominal(&self) -> HertzContact;
+    /// The ellipse at load `fn_n` [N].
+    fn ellipse_at(&self, fn_n: f64) -> HertzContact;
+    /// Undeformed distance [mm] at every element centre at load `fn_n`, flat order.
+    fn undeformed_distance_mm(&self, grid: &Grid, fn_n: f64, material: &Material) -> Vec<f64>;
+    /// The simplified models' planform at load `fn_n` with pressure shape `shape`.
+    fn planform(&self, grid: &Grid, fn_n: f64, shape: PressureShape) -> Planform;
+}

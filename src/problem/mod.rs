@@ -1,0 +1,151 @@
+//! Step 2 of the pipeline: the resolved problem. The contact geometry, Kalker's coefficients,
+//! the grid, the rolling step and the sampled loading, computed once from a validated scene and
+//! handed to every solver unchanged ("identical grids"). Grouped by concern as CONTACT's problem
+//! data: material, geometry, grid, rolling, loading, model options, solver options.
+
+pub mod loading;
+pub mod resolved;
+
+pub use loading::{Loading, LoadingKind, Sample, MAX_STEPS};
+pub use resolved::ResolvedScene;
+
+use crate::error::InputError;
+use crate::physics::{
+    CoefficientSource, Coefficients, ContactGeometry, Flexibilities, Grid, HertzContact, HertzEllipse, Material,
+    Planform,
+};
+use crate::scene::{ContactSolverOptions, ExternalSolver, Geometry, ModelOptions, Scene};
+use std::path::PathBuf;
+use std::sync::Arc;
+
+/// The simplified models' contact at one load: planform and flexibilities.
+#[derive(Debug, Clone)]
+pub struct LocalContact {
+    pub planform: Planform,
+    pub flex: Flexibilities,
+}
+
+/// Rolling: speed and the rolling distance per time step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rolling {
+    pub v_mm_s: f64,
+    /// Courant number V dt / dx.
+    pub courant: f64,
+    pub dt_s: f64,
+    /// Rolling distance per step [mm] = courant·dx.
+    pub dq_mm: f64,
+}
+
+/// Everything a solver needs, resolved once.
+#[derive(Debug, Clone)]
+pub struct Problem {
+    pub name: String,
+    pub solvers: Vec<String>,
+    pub metrics: Vec<String>,
+    /// Metrics the scene left out, with the reason (for the report).
+    pub skipped_metrics: Vec<(String, String)>,
+    pub material: Material,
+    pub geometry: Arc<dyn ContactGeometry>,
+    pub coefficients: Coefficients,
+    pub grid: Grid,
+    pub rolling: Rolling,
+    /// The scene's nominal loading (contact.fn_n, contact.mu, the constant cy and cs).
+    pub nominal: Sample,
+    pub loading: Loading,
+    pub model: ModelOptions,
+    pub contact_solver: ContactSolverOptions,
+    pub external: Vec<ExternalSolver>,
+    pub scene_dir: PathBuf,
+    pub warnings: Vec<String>,
+}
+
+impl Problem {
+    /// Resolve a validated scene.
+    pub fn resolve(scene: &Scene) -> Result<Problem, InputError> {
+        let material = match (scene.material.g_mpa, scene.material.e_mpa) {
+            (Some(g), Some(e)) => Material { g_mpa: g, poisson: scene.material.poisson, e_mpa: e },
+            (Some(g), None) => Material::from_g(g, scene.material.poisson),
+            (None, Some(e)) => Material::from_e(e, scene.material.poisson),
+            (None, None) => return Err(InputError::new("material.g_mpa", "missing", "g_mpa or e_mpa")),
+        };
+        let hertz = match &scene.geometry {
+            Geometry::SemiAxes { a_mm, b_mm } => HertzContact { a_mm: *a_mm, b_mm: *b_mm, fn_n: scene.fn_n },
+            Geometry::Radii(r) => HertzContact::from_radii(r, scene.fn_n, &material).map_err(|e| {
+                InputError::new("contact.r_wx_mm", format!("{r:?}"), format!("radii of a convex contact ({e})"))
+            })?,
+        };
+        let mut warnings = Vec::new();
+        let ratio = hertz.b_mm / hertz.a_mm;
+        if scene.model.coefficients == CoefficientSource::Fit {
+            if !(1.0 / 25.0..=25.0).contains(&ratio) {
+                return Err(InputError::new("model.coefficients", "\"fit\"", format!("the fit Eq. 2.36 holds for 1/25 <= b/a <= 25; this contact has b/a = {ratio:.4}: use \"table\"")));
+            }
+            if (scene.material.poisson - 0.27).abs() > 0.02 {
+                warnings.push(format!(
+                    "model.coefficients = fit was made for poisson 0.27, scene has {}",
+                    scene.material.poisson
+                ));
+            }
+        }
+        if scene.model.coefficients == CoefficientSource::Table && !(0.1..=10.0).contains(&ratio) {
+            warnings.push(format!(
+                "b/a = {ratio:.4} is beyond Kalker's Table A1 (0.1 … 10): c11, c22, c23 are extrapolated"
+            ));
+        }
+        let coefficients = Coefficients::new(scene.model.coefficients, hertz.a_mm, hertz.b_mm, material.poisson);
+        let grid = Grid::new(scene.mx, scene.my, hertz.a_mm, hertz.b_mm);
+        let dq_mm = scene.courant * grid.dx_mm;
+        let dt_s = dq_mm / scene.v_mm_s;
+        let loading = Loading::sample(scene, dt_s, &mut warnings)?;
+        let (metrics, skipped_metrics) = crate::metrics::select(scene.metrics.as_deref(), &loading, dt_s);
+        for (m, why) in &skipped_metrics {
+            if scene.metrics.as_ref().is_some_and(|asked| asked.contains(m)) {
+                warnings.push(format!("metric {m} left out: {why}"));
+            }
+        }
+        let nominal =
+            Sample { step: 0, t_s: 0.0, cx: 0.0, cy: scene.cy, cs: scene.cs_per_mm, fn_n: scene.fn_n, mu: scene.mu };
+        let problem = Problem {
+            name: scene.name.clone(),
+            solvers: scene.solvers.clone(),
+            metrics,
+            skipped_metrics,
+            material,
+            geometry: Arc::new(HertzEllipse { nominal: hertz }),
+            coefficients,
+            grid,
+            rolling: Rolling { v_mm_s: scene.v_mm_s, courant: scene.courant, dt_s, dq_mm },
+            nominal,
+            loading,
+            model: scene.model,
+            contact_solver: scene.contact_solver,
+            external: scene.external.clone(),
+            scene_dir: scene.dir.clone(),
+            warnings,
+        };
+        crate::solvers::check_applicable(&problem)?;
+        Ok(problem)
+    }
+
+    /// The contact ellipse at the nominal load.
+    pub fn hertz(&self) -> HertzContact {
+        self.geometry.nominal()
+    }
+
+    /// The simplified models' contact at load `fn_n`.
+    pub fn local_contact(&self, fn_n: f64) -> LocalContact {
+        let planform = self.geometry.planform(&self.grid, fn_n, self.model.pressure);
+        let flex = self.flexibilities_of(&planform.ellipse);
+        LocalContact { planform, flex }
+    }
+
+    /// Flexibilities of the simplified models for an ellipse (thesis Eq. 2.35 or 3.5).
+    pub fn flexibilities_of(&self, e: &HertzContact) -> Flexibilities {
+        Flexibilities::new(self.model.flexibility, &self.coefficients, e.a_mm, e.b_mm, &self.material)
+    }
+
+    /// Flexibilities at the nominal load.
+    pub fn flexibilities(&self) -> Flexibilities {
+        self.flexibilities_of(&self.hertz())
+    }
+}

@@ -1,0 +1,125 @@
+//! The resolved scene as one typed record: written as scene.json by `simulate`, `run` and
+//! `bless` (interface.md: at least a_mm, b_mm, p0_mpa, c11, c22, c23, dx_mm, dy_mm, dt_s,
+//! n_steps and the solvers that ran), read back by the harness and by external models.
+
+use super::{LoadingKind, Problem, Sample};
+use crate::scene::{ContactSolverOptions, InitKind, ModelOptions};
+use serde::{Deserialize, Serialize};
+
+/// scene.json.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ResolvedScene {
+    pub name: String,
+    pub solvers: Vec<String>,
+    pub kind: LoadingKind,
+    pub a_mm: f64,
+    pub b_mm: f64,
+    pub fn_n: f64,
+    /// The scene's nominal μ (`contact.mu`); a table may vary μ per step (`history`).
+    pub mu: f64,
+    /// Hertz peak pressure 3FN/(2πab) [MPa].
+    pub p0_mpa: f64,
+    /// Peak of the simplified models' pressure (`model.pressure`) [MPa].
+    pub p_model_peak_mpa: f64,
+    pub g_mpa: f64,
+    pub e_mpa: f64,
+    pub poisson: f64,
+    pub c11: f64,
+    pub c22: f64,
+    pub c23: f64,
+    pub l1_mm3_n: f64,
+    pub l2_mm3_n: f64,
+    pub l3_mm3_n: f64,
+    pub mx: usize,
+    pub my: usize,
+    pub dx_mm: f64,
+    pub dy_mm: f64,
+    pub v_mm_s: f64,
+    pub courant: f64,
+    pub dq_mm: f64,
+    pub dt_s: f64,
+    pub n_steps: usize,
+    pub freq_hz: Option<f64>,
+    pub init: InitKind,
+    pub model: ModelOptions,
+    pub contact_solver: ContactSolverOptions,
+    pub metrics: Vec<String>,
+    /// (metric, why it was left out).
+    pub skipped_metrics: Vec<(String, String)>,
+    pub warnings: Vec<String>,
+    /// The contact geometry's kind (`hertz`; absent in result folders written before it existed).
+    #[serde(default = "hertz")]
+    pub geometry: String,
+    /// The loading at every row (step 0 = the initial state at t = 0, when the scene has one).
+    pub history: Vec<Sample>,
+}
+
+fn hertz() -> String {
+    "hertz".into()
+}
+
+impl ResolvedScene {
+    /// The record of `p`, naming the solvers that ran.
+    pub fn of(p: &Problem, solvers_ran: &[String]) -> ResolvedScene {
+        let h = p.hertz();
+        let flex = p.flexibilities();
+        ResolvedScene {
+            name: p.name.clone(),
+            solvers: solvers_ran.to_vec(),
+            kind: p.loading.kind,
+            a_mm: h.a_mm,
+            b_mm: h.b_mm,
+            fn_n: h.fn_n,
+            mu: p.nominal.mu,
+            p0_mpa: h.p0_mpa(),
+            p_model_peak_mpa: p.model.pressure.peak_mpa(h.fn_n, h.a_mm, h.b_mm),
+            g_mpa: p.material.g_mpa,
+            e_mpa: p.material.e_mpa,
+            poisson: p.material.poisson,
+            c11: p.coefficients.c11,
+            c22: p.coefficients.c22,
+            c23: p.coefficients.c23,
+            l1_mm3_n: flex.l1_mm3_n,
+            l2_mm3_n: flex.l2_mm3_n,
+            l3_mm3_n: flex.l3_mm3_n,
+            mx: p.grid.mx,
+            my: p.grid.my,
+            dx_mm: p.grid.dx_mm,
+            dy_mm: p.grid.dy_mm,
+            v_mm_s: p.rolling.v_mm_s,
+            courant: p.rolling.courant,
+            dq_mm: p.rolling.dq_mm,
+            dt_s: p.rolling.dt_s,
+            n_steps: p.loading.samples.len(),
+            freq_hz: p.loading.freq_hz,
+            init: p.loading.init,
+            model: p.model,
+            contact_solver: p.contact_solver,
+            metrics: p.metrics.clone(),
+            skipped_metrics: p.skipped_metrics.clone(),
+            warnings: p.warnings.clone(),
+            geometry: p.geometry.kind().to_string(),
+            history: p.loading.initial.iter().chain(p.loading.samples.iter()).copied().collect(),
+        }
+    }
+
+    /// scene.json text (pretty, shortest round-trip numbers, newline-terminated).
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).expect("a ResolvedScene always serialises") + "\n"
+    }
+
+    /// Parse scene.json text.
+    pub fn from_json(text: &str) -> Result<ResolvedScene, serde_json::Error> {
+        serde_json::from_str(text)
+    }
+
+    /// Sine period [s], if the scene is a sine.
+    pub fn period_s(&self) -> Option<f64> {
+        self.freq_hz.map(|f| 1.0 / f)
+    }
+
+    /// Largest μ over the rows (a table may vary it).
+    pub fn mu_max(&self) -> f64 {
+        self.history.iter().map(|s| s.mu).fold(0.0, f64::max)
+    }
+}

@@ -1,0 +1,210 @@
+//! The exact-theory solver as a stepper: the influence kernels once per grid, the normal problem
+//! once per load, then one tangential solve per sample (steady: [`TangentialSolver::steady`];
+//! transient: [`TangentialSolver::transient_step`] from the last two steps' tractions).
+
+use super::influence::Kernel;
+use super::normal::{solve_normal, NormalParams};
+use super::tangential::{ElementState, StepResult, TangentialParams, TangentialSolver};
+use super::ContactError;
+use crate::history::History;
+use crate::problem::{Problem, Sample};
+use crate::solvers::sample_loop::{self, Observer};
+use crate::solvers::stepper::{FieldView, Step, Stepper};
+use crate::solvers::termination::Termination;
+use crate::solvers::{always, ModelDef, SolveError};
+
+/// Kalker's exact theory for quasi-identical half-spaces (CONTACT-style).
+pub const MODEL: ModelDef = ModelDef {
+    name: "contact",
+    summary: "Kalker's exact theory on the same grid (CONTACT-style: half-space influence coefficients, normal problem, transient rolling with Coulomb friction)",
+    extra_columns: &["n_adhesion", "n_slip", "iterations", "residual", "pn_max_mpa"],
+    iterative: true,
+    check: always,
+    cost_per_row,
+    build,
+};
+
+/// About `N log N` per transient step for `N` elements (FFT products); a steady point about 3 steps.
+fn cost_per_row(p: &Problem) -> f64 {
+    let n = p.grid.len() as f64;
+    let per_row = if p.loading.is_transient() { 1.0 } else { 3.0 };
+    per_row * n * n.max(2.0).ln()
+}
+
+/// Failures of the exact-theory solver.
+#[derive(Debug, thiserror::Error)]
+pub enum ContactRunError {
+    #[error("influence kernels: {0}")]
+    Kernel(#[source] ContactError),
+    #[error("normal problem at FN = {fn_n} N: {source}")]
+    Normal { fn_n: f64, source: ContactError },
+    #[error("normal problem at FN = {fn_n} N did not converge in {iterations} iterations (residual {residual:.2e})")]
+    NormalNotConverged { fn_n: f64, iterations: usize, residual: f64 },
+    #[error("no element of the {mx}x{my} grid carries load at FN = {fn_n} N")]
+    NoContact { mx: usize, my: usize, fn_n: f64 },
+    #[error("tangential problem at FN = {fn_n} N: {source}")]
+    Setup { fn_n: f64, source: ContactError },
+    #[error("step {step}: {source}")]
+    Step { step: usize, source: ContactError },
+}
+
+/// The normal solution and the tangential solver for one load.
+struct Loaded {
+    fn_n: f64,
+    pn: Vec<f64>,
+    pn_sum: f64,
+    pn_max: f64,
+    solver: TangentialSolver,
+}
+
+struct Contact<'a> {
+    p: &'a Problem,
+    k0: Kernel,
+    ks: Kernel,
+    loaded: Option<Loaded>,
+    /// The last solve (the previous traction of the next transient step).
+    last: Option<StepResult>,
+    /// The tractions of the step before the last (extrapolated warm start).
+    older: Option<(Vec<f64>, Vec<f64>)>,
+    zero: Vec<f64>,
+}
+
+fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
+    let (g, m) = (&p.grid, &p.material);
+    let kernel = |shift: f64| {
+        Kernel::new(g.mx, g.my, g.dx_mm, g.dy_mm, m.g_mpa, m.poisson, shift).map_err(ContactRunError::Kernel)
+    };
+    let (k0, ks) = (kernel(0.0)?, kernel(p.rolling.dq_mm)?);
+    Ok(Box::new(Contact { p, k0, ks, loaded: None, last: None, older: None, zero: vec![0.0; g.len()] }))
+}
+
+impl Contact<'_> {
+    fn params(&self, s: &Sample) -> TangentialParams {
+        let mut t = TangentialParams::new(s.mu, s.cx, s.cy, s.cs, self.p.rolling.dq_mm);
+        t.tol = self.p.contact_solver.tolerance;
+        t.max_iter = self.p.contact_solver.max_iterations;
+        t
+    }
+
+    fn loaded(&self) -> &Loaded {
+        self.loaded.as_ref().expect("the sample loop loads before it solves")
+    }
+
+    fn record(&mut self, r: StepResult) -> Step {
+        let l = self.loaded();
+        let step = Step {
+            fx_over_fn: r.px.iter().sum::<f64>() / l.pn_sum,
+            fy_over_fn: r.py.iter().sum::<f64>() / l.pn_sum,
+            extra: vec![r.n_adhesion as f64, r.n_slip as f64, r.iterations as f64, r.residual, l.pn_max],
+            termination: termination(r.converged, false),
+        };
+        self.last = Some(r);
+        step
+    }
+}
+
+impl Stepper for Contact<'_> {
+    fn load(&mut self, at: &Sample) -> Result<(), SolveError> {
+        if self.loaded.as_ref().is_some_and(|l| l.fn_n == at.fn_n) {
+            return Ok(());
+        }
+        let (p, fn_n) = (self.p, at.fn_n);
+        let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
+        let normal = solve_normal(&h, &self.k0, fn_n, &NormalParams::default())
+            .map_err(|source| ContactRunError::Normal { fn_n, source })?;
+        if !normal.converged {
+            let (iterations, residual) = (normal.iterations, normal.residual);
+            return Err(ContactRunError::NormalNotConverged { fn_n, iterations, residual }.into());
+        }
+        let pn_sum: f64 = normal.pn_mpa.iter().sum();
+        if pn_sum <= 0.0 {
+            return Err(ContactRunError::NoContact { mx: p.grid.mx, my: p.grid.my, fn_n }.into());
+        }
+        let (x, y) = p.grid.centres();
+        let solver = TangentialSolver::new(&self.k0, &self.ks, &normal.pn_mpa, &x, &y)
+            .map_err(|source| ContactRunError::Setup { fn_n, source })?;
+        let pn_max = normal.pn_mpa.iter().fold(0.0f64, |a, &b| a.max(b));
+        self.loaded = Some(Loaded { fn_n, pn: normal.pn_mpa, pn_sum, pn_max, solver });
+        self.older = None;
+        Ok(())
+    }
+
+    fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        let params = self.params(at);
+        let l = self.loaded.as_mut().expect("the sample loop loads before it solves");
+        let r = l.solver.steady(&params, None).map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        self.older = None;
+        Ok(self.record(r))
+    }
+
+    fn transient(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        let params = self.params(at);
+        let (px, py) = match &self.last {
+            Some(r) => (&r.px, &r.py),
+            None => (&self.zero, &self.zero),
+        };
+        let older = self.older.as_ref().map(|(a, b)| (a.as_slice(), b.as_slice()));
+        let l = self.loaded.as_mut().expect("the sample loop loads before it solves");
+        let r = l
+            .solver
+            .transient_step(&params, px, py, older)
+            .map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        if r.px.iter().chain(&r.py).any(|v| !v.is_finite()) {
+            return Err(SolveError::NonFinite { step: at.step });
+        }
+        self.older = Some(match self.last.take() {
+            Some(prev) => (prev.px, prev.py),
+            None => (self.zero.clone(), self.zero.clone()),
+        });
+        Ok(self.record(r))
+    }
+
+    fn field(&self) -> Option<FieldView<'_>> {
+        let (l, r) = (self.loaded.as_ref()?, self.last.as_ref()?);
+        Some(FieldView {
+            grid: &self.p.grid,
+            pressure_mpa: &l.pn,
+            tx_mpa: &r.px,
+            ty_mpa: &r.py,
+            state: Some(&r.state),
+        })
+    }
+}
+
+/// The traction field of one step, for field comparisons with CONTACT (tests, reports).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Field {
+    pub step: usize,
+    pub pn_mpa: Vec<f64>,
+    pub px_mpa: Vec<f64>,
+    pub py_mpa: Vec<f64>,
+    pub state: Vec<ElementState>,
+}
+
+/// Run the problem with the exact-theory solver, keeping the fields of the steps `keep` selects.
+pub fn run_with_fields(problem: &Problem, keep: &dyn Fn(usize) -> bool) -> Result<(History, Vec<Field>), SolveError> {
+    let mut fields = Vec::new();
+    let mut observe = |s: &Sample, v: &FieldView| {
+        if keep(s.step) {
+            fields.push(Field {
+                step: s.step,
+                pn_mpa: v.pressure_mpa.to_vec(),
+                px_mpa: v.tx_mpa.to_vec(),
+                py_mpa: v.ty_mpa.to_vec(),
+                state: v.state.map(<[ElementState]>::to_vec).unwrap_or_default(),
+            });
+        }
+    };
+    let observer: &mut Observer = &mut observe;
+    let run = sample_loop::run(problem, &MODEL, &[], Some(observer))?;
+    Ok((run.history, fields))
+}
+
+/// The termination of a tangential solve from its flags.
+pub fn termination(converged: bool, fell_back: bool) -> Termination {
+    match (converged, fell_back) {
+        (false, _) => Termination::IterationLimit,
+        (true, true) => Termination::FallbackConverged,
+        (true, false) => Termination::Converged,
+    }
+}

@@ -1,0 +1,85 @@
+//! The one sample loop (as argmin's `Executor`): it owns the stepping of every built-in model —
+//! the steady initial state, sweep points, transient steps, a reload when FN or μ changes — and
+//! writes the history, the termination of every solve and the field metrics the scene asks for.
+
+use super::stepper::FieldView;
+use super::{ModelDef, SolveError};
+use crate::history::{History, Row};
+use crate::metrics::MetricDef;
+use crate::problem::{Problem, Sample};
+use std::time::Instant;
+
+/// The history of one model run, its field metrics and its timing.
+#[derive(Debug, Clone)]
+pub struct ModelRun {
+    pub history: History,
+    /// (metric, largest value over every solve) for the field metrics asked for.
+    pub field_metrics: Vec<(&'static str, f64)>,
+    /// Wall time of building the model and loading the first contact [s].
+    pub setup_s: f64,
+    /// Wall time of the whole run [s].
+    pub wall_s: f64,
+}
+
+/// Something that watches each solve's field (tests, field comparisons).
+pub type Observer<'o> = dyn FnMut(&Sample, &FieldView) + 'o;
+
+/// Run `def` over the problem's samples.
+pub fn run(
+    problem: &Problem,
+    def: &ModelDef,
+    field_metrics: &[&'static MetricDef],
+    observer: Option<&mut Observer>,
+) -> Result<ModelRun, SolveError> {
+    let start = Instant::now();
+    let mut stepper = (def.build)(problem)?;
+    let loading = &problem.loading;
+    let first = loading.first();
+    stepper.load(first)?;
+    let setup_s = start.elapsed().as_secs_f64();
+    let mut columns: Vec<&str> = def.extra_columns.to_vec();
+    if def.iterative {
+        columns.push("termination");
+    }
+    let mut history = History::new(def.name, &columns);
+    history.rows.reserve(loading.samples.len() + 1);
+    let mut field_values: Vec<(&'static str, f64)> = field_metrics.iter().map(|m| (m.name, 0.0)).collect();
+    let mut observer = observer;
+    let mut loaded = (first.fn_n, first.mu);
+    let steady_start = loading.steady_start();
+    let sweep = !loading.is_transient();
+    for (s, steady) in steady_start.map(|s| (s, true)).into_iter().chain(loading.samples.iter().map(|s| (s, sweep))) {
+        if (s.fn_n, s.mu) != loaded {
+            stepper.load(s)?;
+            loaded = (s.fn_n, s.mu);
+        }
+        let step = if steady { stepper.steady(s)? } else { stepper.transient(s)? };
+        if !(step.fx_over_fn.is_finite() && step.fy_over_fn.is_finite()) {
+            return Err(SolveError::NonFinite { step: s.step });
+        }
+        let mut extra = step.extra;
+        if def.iterative {
+            extra.push(step.termination.code());
+        }
+        history.rows.push(Row::new(s, step.fx_over_fn, step.fy_over_fn, extra));
+        if !field_values.is_empty() || observer.is_some() {
+            if let Some(view) = stepper.field() {
+                for ((_, v), m) in field_values.iter_mut().zip(field_metrics) {
+                    if let crate::metrics::MetricKind::Field(f) = m.kind {
+                        *v = v.max(f(&view));
+                    }
+                }
+                if let Some(o) = observer.as_deref_mut() {
+                    o(s, &view);
+                }
+            }
+        }
+    }
+    let has_field = stepper.field().is_some();
+    Ok(ModelRun {
+        history,
+        field_metrics: if has_field { field_values } else { Vec::new() },
+        setup_s,
+        wall_s: start.elapsed().as_secs_f64(),
+    })
+}

@@ -1,0 +1,48 @@
+//! The one small trait every built-in model implements (as argmin's `Solver`: the loop is not
+//! the model's). A stepper solves one sample at a time — steady rolling or one time step from its
+//! own state — and is told when the load or the friction changes; [`super::sample_loop`] owns
+//! the order of the samples.
+
+use super::termination::Termination;
+use super::SolveError;
+use crate::physics::Grid;
+use crate::problem::Sample;
+
+pub use super::contact::tangential::ElementState;
+
+/// What one solve gives.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Step {
+    /// Fx/FN and Fy/FN (thesis Eq. 3.12).
+    pub fx_over_fn: f64,
+    pub fy_over_fn: f64,
+    /// Values of the model's extra columns ([`super::ModelDef::extra_columns`]), in order.
+    pub extra: Vec<f64>,
+    pub termination: Termination,
+}
+
+/// The traction field of the last solve, for the metrics of a field (e.g. the sawtooth
+/// indicator) and for field comparisons with CONTACT.
+#[derive(Debug, Clone, Copy)]
+pub struct FieldView<'a> {
+    pub grid: &'a Grid,
+    /// The pressure that bounds the traction [MPa] (the model's own).
+    pub pressure_mpa: &'a [f64],
+    pub tx_mpa: &'a [f64],
+    pub ty_mpa: &'a [f64],
+    /// Adhesion / slip / exterior per element, where the model tells them apart.
+    pub state: Option<&'a [ElementState]>,
+}
+
+/// A creep-force model that solves one sample at a time.
+pub trait Stepper {
+    /// Set up the contact for this sample's load and friction: called before the first solve and
+    /// again whenever FN or μ changes.
+    fn load(&mut self, at: &Sample) -> Result<(), SolveError>;
+    /// Steady rolling at this sample (sweep points, the steady initial state).
+    fn steady(&mut self, at: &Sample) -> Result<Step, SolveError>;
+    /// One time step from the model's current state to this sample.
+    fn transient(&mut self, at: &Sample) -> Result<Step, SolveError>;
+    /// The traction field of the last solve, if the model has one.
+    fn field(&self) -> Option<FieldView<'_>>;
+}
