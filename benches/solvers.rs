@@ -5,8 +5,8 @@
 
 use creepbench::problem::Problem;
 use creepbench::scene::Scene;
-use creepbench::solvers::brush::{SlipRates, Tractions};
-use creepbench::solvers::{fastsim::Fastsim, uba};
+use creepbench::solvers::brush::{self, Tractions};
+use creepbench::solvers::{fastsim, sample_loop, uba};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use std::hint::black_box;
 use std::path::Path;
@@ -22,15 +22,15 @@ fn bench_uba(c: &mut Criterion) {
     let mut g = c.benchmark_group("uba_step");
     for grid in [22, 44, 88] {
         let p = problem(grid);
-        let local = p.local_contact(p.hertz.fn_n);
-        let rates = SlipRates::new(0.005, 0.0, 0.0, &local.flex);
+        let local = p.local_contact(p.hertz().fn_n);
+        let rates = brush::rates(0.005, 0.0, 0.0, &local.flex);
         let (mut t, mut u) = (Tractions::zero(p.grid.len()), Tractions::zero(p.grid.len()));
-        let mut prep = uba::Prepared::new(&p.grid, &local.pressure_mpa, 1.0);
+        let mut prep = uba::Prepared::new(&p.grid, &local.planform.pressure_mpa, 1.0);
         g.throughput(Throughput::Elements((grid * grid) as u64));
         g.bench_with_input(BenchmarkId::from_parameter(grid), &grid, |b, _| {
             b.iter(|| {
-                let ab = (p.hertz.a_mm, p.hertz.b_mm);
-                let n = uba::step(&p.grid, &mut prep, black_box(&rates), 1.0, p.model.leading_edge, ab, &t, &mut u);
+                let scheme = (1.0, p.model.leading_edge);
+                let n = uba::step((&p.grid, &local.planform), &mut prep, black_box(&rates), scheme, &t, &mut u);
                 std::mem::swap(&mut t, &mut u);
                 n
             })
@@ -42,18 +42,19 @@ fn bench_uba(c: &mut Criterion) {
 /// One transient step of the CONTACT-style solver on sine_f30_mu10 (state after 10 steps from
 /// zero traction; the normal solve and kernels are set up outside the timing).
 fn bench_contact(c: &mut Criterion) {
-    use creepbench::solvers::contact::{influence::Kernel, normal, tangential, undeformed_distance};
+    use creepbench::physics::ContactGeometry;
+    use creepbench::solvers::contact::{influence::Kernel, normal, tangential};
     let mut g = c.benchmark_group("contact_step");
     for grid in [22, 44, 88] {
         let p = problem(grid);
         let (gr, m) = (&p.grid, &p.material);
         let k0 = Kernel::new(gr.mx, gr.my, gr.dx_mm, gr.dy_mm, m.g_mpa, m.poisson, 0.0).unwrap();
-        let ks = Kernel::new(gr.mx, gr.my, gr.dx_mm, gr.dy_mm, m.g_mpa, m.poisson, p.dq_mm).unwrap();
-        let h = undeformed_distance(gr, &p.hertz, m);
-        let pn = normal::solve_normal(&h, &k0, p.hertz.fn_n, &normal::NormalParams::default()).unwrap().pn_mpa;
+        let ks = Kernel::new(gr.mx, gr.my, gr.dx_mm, gr.dy_mm, m.g_mpa, m.poisson, p.rolling.dq_mm).unwrap();
+        let h = p.geometry.undeformed_distance_mm(gr, p.hertz().fn_n, m);
+        let pn = normal::solve_normal(&h, &k0, p.hertz().fn_n, &normal::NormalParams::default()).unwrap().pn_mpa;
         let (x, y) = gr.centres();
         let mut solver = tangential::TangentialSolver::new(&k0, &ks, &pn, &x, &y).unwrap();
-        let params = |k: usize| tangential::TangentialParams::new(1.0, p.samples[k].cx, 0.0, 0.0, p.dq_mm);
+        let params = |k: usize| tangential::TangentialParams::new(1.0, p.loading.samples[k].cx, 0.0, 0.0, p.rolling.dq_mm);
         let (mut px, mut py) = (vec![0.0; gr.len()], vec![0.0; gr.len()]);
         let (mut ox, mut oy) = (px.clone(), py.clone());
         for k in 0..10 {
@@ -75,17 +76,35 @@ fn bench_fastsim(c: &mut Criterion) {
     let mut g = c.benchmark_group("fastsim_creepage");
     for grid in [22, 44, 88] {
         let p = problem(grid);
-        let local = p.local_contact(p.hertz.fn_n);
-        let sample = p.samples[3];
-        let mut t = Tractions::zero(p.grid.len());
+        let sample = p.loading.samples[3];
+        let mut model = (fastsim::MODEL.build)(&p).unwrap();
+        model.load(&sample).unwrap();
         g.bench_with_input(BenchmarkId::from_parameter(grid), &grid, |b, _| {
-            b.iter(|| Fastsim::solve(&p, black_box(&sample), &local, &mut t))
+            b.iter(|| model.steady(black_box(&sample)).unwrap().fx_over_fn)
         });
     }
     g.finish();
 }
 
-criterion_group!(benches, bench_uba, bench_fastsim);
+/// A whole UBA run through the sample loop (set-up, every step, the history rows): 176×176,
+/// sine 10 Hz, 3 periods, steady start. Divide by steps × elements for ns per element-step.
+fn bench_uba_run(c: &mut Criterion) {
+    let text = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/thesis/sine_f10_mu04.toml"))
+        .unwrap()
+        .replace("mx = 22", "mx = 176")
+        .replace("my = 22", "my = 176")
+        .replace("solvers = [\"uba\", \"fastsim\", \"contact\", \"linear\"]", "solvers = [\"uba\"]");
+    let p = Problem::resolve(&Scene::from_toml(&text, Path::new(".")).unwrap()).unwrap();
+    let elements = (p.grid.len() * p.loading.rows().count()) as u64;
+    let mut g = c.benchmark_group("uba_run");
+    g.sample_size(10).throughput(Throughput::Elements(elements));
+    g.bench_function("sine_f10_176", |b| {
+        b.iter(|| sample_loop::run(&p, &uba::MODEL, &[], None).unwrap().history.rows.len())
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench_uba, bench_fastsim, bench_uba_run);
 criterion_group! {
     name = contact;
     config = Criterion::default().sample_size(10);

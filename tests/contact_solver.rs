@@ -6,7 +6,7 @@ use common::*;
 use creepbench::metrics;
 use creepbench::pipeline;
 use creepbench::solvers::contact::tangential::ElementState;
-use creepbench::solvers::contact::ContactSolver;
+use creepbench::solvers::contact::run_with_fields;
 
 fn thesis_problem(name: &str) -> creepbench::problem::Problem {
     let mut p = pipeline::load(&root().join(format!("scenes/thesis/{name}.toml")), &[]).unwrap();
@@ -18,9 +18,9 @@ fn thesis_problem(name: &str) -> creepbench::problem::Problem {
 /// max |f − f_CONTACT| ≤ 0.002 (issue 3), and the aim 0.0005 is reached too.
 #[test]
 fn totals_match_contact_everywhere() {
-    let refs = creepbench::harness::reference::References::load(&root().join("reference")).unwrap();
+    let refs = creepbench::harness::references::References::load(&root().join("reference")).unwrap();
     let mut worst_all: f64 = 0.0;
-    for (name, case) in &refs.cases {
+    for (name, case) in &refs.contact.cases {
         if case.method != "exact" || name.ends_with("_g88") {
             continue; // 88×88: CONTACT's steady sweep took 25 min; the 88 sine case runs in the report
         }
@@ -47,13 +47,13 @@ fn totals_match_contact_everywhere() {
 /// CONTACT's history), loop areas of every sine case within 2 % of cases.csv.
 #[test]
 fn delay_ratios_and_loop_areas_match_contact() {
-    let refs = creepbench::harness::reference::References::load(&root().join("reference")).unwrap();
+    let refs = creepbench::harness::references::References::load(&root().join("reference")).unwrap();
     for (name, case) in
-        refs.cases.iter().filter(|(n, c)| c.kind == "sine" && !n.ends_with("_g88") && !n.ends_with("_g44"))
+        refs.contact.cases.iter().filter(|(n, c)| c.kind == "sine" && !n.ends_with("_g88") && !n.ends_with("_g44"))
     {
         let p = thesis_problem(name);
         let h = run(&p, "contact");
-        let m = metrics::compute(&p, &h);
+        let m = metrics::compute(&p.metrics, &p.loading, &h, &[]);
         let get = |n: &str| m.iter().find(|x| x.name == n).map(|x| x.value).unwrap();
         let area = get("loop_area");
         let ref_area = case.loop_area.unwrap().abs();
@@ -74,8 +74,8 @@ fn delay_ratios_and_loop_areas_match_contact() {
 /// reference README computed independently (cases.csv), and its delay table (0.049, 0.145, 0.207).
 #[test]
 fn metric_definitions_reproduce_the_reference_readme() {
-    let refs = creepbench::harness::reference::References::load(&root().join("reference")).unwrap();
-    for (name, case) in refs.cases.iter().filter(|(_, c)| c.kind == "sine") {
+    let refs = creepbench::harness::references::References::load(&root().join("reference")).unwrap();
+    for (name, case) in refs.contact.cases.iter().filter(|(_, c)| c.kind == "sine") {
         let period = 1.0 / case.freq_hz.unwrap();
         let (t, cx, fr) = (reference(name, "t_s"), reference(name, "cx"), reference(name, "fx_over_fn"));
         let periods = (t.last().unwrap() / period + 1e-9).floor();
@@ -90,7 +90,7 @@ fn metric_definitions_reproduce_the_reference_readme() {
         ("sine_f30_mu10_g44", 0.150),
         ("sine_f30_mu10_g88", 0.153),
     ] {
-        let period = 1.0 / refs.cases[name].freq_hz.unwrap();
+        let period = 1.0 / refs.contact.cases[name].freq_hz.unwrap();
         let d = metrics::delay_ratio(
             &reference(name, "t_s"),
             &reference(name, "cx"),
@@ -106,11 +106,11 @@ fn metric_definitions_reproduce_the_reference_readme() {
 /// contact elements as CONTACT's field file (x mirrored: CONTACT's leading edge is +a).
 #[test]
 fn normal_problem_matches_contact() {
-    let refs = creepbench::harness::reference::References::load(&root().join("reference")).unwrap();
-    for (name, case) in refs.cases.iter().filter(|(n, c)| c.method == "exact" && !n.ends_with("_g88")) {
+    let refs = creepbench::harness::references::References::load(&root().join("reference")).unwrap();
+    for (name, case) in refs.contact.cases.iter().filter(|(n, c)| c.method == "exact" && !n.ends_with("_g88")) {
         let mut p = thesis_problem(name);
-        p.samples.truncate(1);
-        p.init = creepbench::scene::InitKind::Zero;
+        p.loading.samples.truncate(1);
+        p.loading.init = creepbench::scene::InitKind::Zero;
         let h = run(&p, "contact");
         let pn_max = h.column("pn_max_mpa").unwrap()[0];
         println!("{name:<20} pn_max {pn_max:.3} vs CONTACT {:.2}", case.pn_max_mpa);
@@ -118,7 +118,7 @@ fn normal_problem_matches_contact() {
     }
     // Contact set and element pressures against the field file of step_mu04 (step 1).
     let p = thesis_problem("step_mu04");
-    let (_, fields) = ContactSolver::run_with_fields(&p, &|s| s == 1 || s == 10).unwrap();
+    let (_, fields) = run_with_fields(&p, &|s| s == 1 || s == 10).unwrap();
     let field = read_field("step_mu04");
     let g = &p.grid;
     let (mut n_ours, mut n_theirs, mut worst_pn) = (0, 0, 0.0f64);
@@ -167,7 +167,7 @@ fn read_field(name: &str) -> Vec<(usize, usize, usize, f64, f64, f64, char)> {
 #[test]
 fn steady_field_matches_contact() {
     let p = thesis_problem("steady_exact_g22");
-    let (_, fields) = ContactSolver::run_with_fields(&p, &|s| s == 51).unwrap();
+    let (_, fields) = run_with_fields(&p, &|s| s == 51).unwrap();
     let g = &p.grid;
     let mut worst: f64 = 0.0;
     for (step, ix, iy, _pn, px, _py, _state) in read_field("steady_exact_g22") {

@@ -1,11 +1,13 @@
-//! The CI gate: the default suites (scenes/thesis and scenes/stability) run once, compared with
-//! golden/ and with every reference that applies exactly as `creepbench check` does, and one insta
-//! snapshot per scene of its rounded metrics and iteration counts.
+//! The CI gate: the default suites run once, compared with golden/ and with every reference that
+//! applies exactly as `creepbench check` does, and one insta snapshot per scene of its rounded
+//! metrics and row counts. Iteration counts and terminations have one regression oracle, golden/
+//! (gated at 5 % + 2 iterations, the slack floating-point differences between CPUs need; an exact
+//! snapshot would fail on another CPU for no model change).
 
 mod common;
 use common::*;
 use creepbench::harness::compare::{self, Against};
-use creepbench::harness::reference::References;
+use creepbench::harness::references::References;
 use creepbench::harness::results::StoredScene;
 use creepbench::harness::suite;
 
@@ -26,23 +28,13 @@ fn snapshot(s: &StoredScene) -> String {
     }
     for (solver, h) in &s.histories {
         out.push_str(&format!("{solver} rows = {}\n", h.rows.len()));
-        if let Some(it) = h.column("iterations") {
-            out.push_str(&format!(
-                "{solver} iterations total = {} max = {}\n",
-                it.iter().sum::<f64>(),
-                it.iter().fold(0.0f64, |a, &b| a.max(b))
-            ));
-        }
-        if let Some(c) = h.column("converged") {
-            out.push_str(&format!("{solver} unconverged steps = {}\n", c.iter().filter(|&&x| x < 0.5).count()));
-        }
     }
     out
 }
 
 #[test]
 fn suite_matches_golden_references_and_snapshots() {
-    let dirs = vec![root().join("scenes/thesis"), root().join("scenes/stability")];
+    let dirs: Vec<_> = suite::DEFAULT_SUITES.iter().map(|d| root().join(d)).collect();
     let files = suite::scene_files(&dirs, None).unwrap();
     let results = suite::run(&files, false).unwrap();
     let scenes: Vec<StoredScene> = results.iter().map(StoredScene::from_result).collect();

@@ -4,7 +4,7 @@
 mod common;
 use common::*;
 use creepbench::physics::{project_to_bound, Coefficients, HertzContact, Material, Radii};
-use creepbench::solvers::brush::{self, Integration, LeadingEdge, SlipRates, Tractions};
+use creepbench::solvers::brush::{self, Integration, LeadingEdge, Tractions};
 use proptest::prelude::*;
 
 fn contact_problem(mu: f64, b_over_a: f64, grid: usize) -> creepbench::problem::Problem {
@@ -29,15 +29,14 @@ proptest! {
     #[test]
     fn steady_march_is_odd(cx in -0.02f64..0.02, cy in -0.02f64..0.02, cs in -0.01f64..0.01, mu in 0.05f64..2.0) {
         let p = contact_problem(mu, 0.48, 12);
-        let local = p.local_contact(p.hertz.fn_n);
+        let local = p.local_contact(p.hertz().fn_n);
         let (mut t1, mut t2) = (Tractions::zero(p.grid.len()), Tractions::zero(p.grid.len()));
         for (edge, integ) in [(LeadingEdge::Grid, Integration::Centre), (LeadingEdge::Exact, Integration::Exact)] {
-            let ab = (p.hertz.a_mm, p.hertz.b_mm);
-            brush::steady_march(&p.grid, &local.pressure_mpa, mu, &SlipRates::new(cx, cy, cs, &local.flex), edge, integ, ab, &mut t1);
-            brush::steady_march(&p.grid, &local.pressure_mpa, mu, &SlipRates::new(-cx, -cy, -cs, &local.flex), edge, integ, ab, &mut t2);
+            brush::steady_march(&p.grid, &local.planform, mu, &brush::rates(cx, cy, cs, &local.flex), (edge, integ), &mut t1);
+            brush::steady_march(&p.grid, &local.planform, mu, &brush::rates(-cx, -cy, -cs, &local.flex), (edge, integ), &mut t2);
             for k in 0..p.grid.len() {
                 prop_assert!((t1.tx[k] + t2.tx[k]).abs() < 1e-9 && (t1.ty[k] + t2.ty[k]).abs() < 1e-9);
-                let g = mu * local.pressure_mpa[k];
+                let g = mu * local.planform.pressure_mpa[k];
                 prop_assert!((t1.tx[k].powi(2) + t1.ty[k].powi(2)).sqrt() <= g * (1.0 + 1e-12) + 1e-300);
             }
         }
@@ -47,15 +46,15 @@ proptest! {
     #[test]
     fn uba_bound_holds(steps in proptest::collection::vec((-0.02f64..0.02, -0.01f64..0.01, -0.005f64..0.005), 1..30), mu in 0.05f64..1.0, courant in 0.1f64..1.0) {
         let p = contact_problem(mu, 0.48, 10);
-        let local = p.local_contact(p.hertz.fn_n);
-        let mut prep = creepbench::solvers::uba::Prepared::new(&p.grid, &local.pressure_mpa, mu);
+        let local = p.local_contact(p.hertz().fn_n);
+        let mut prep = creepbench::solvers::uba::Prepared::new(&p.grid, &local.planform.pressure_mpa, mu);
         let (mut t, mut u) = (Tractions::zero(p.grid.len()), Tractions::zero(p.grid.len()));
         for (cx, cy, cs) in steps {
-            let rates = SlipRates::new(cx, cy, cs, &local.flex);
-            creepbench::solvers::uba::step(&p.grid, &mut prep, &rates, courant, LeadingEdge::Grid, (p.hertz.a_mm, p.hertz.b_mm), &t, &mut u);
+            let rates = brush::rates(cx, cy, cs, &local.flex);
+            creepbench::solvers::uba::step((&p.grid, &local.planform), &mut prep, &rates, (courant, LeadingEdge::Grid), &t, &mut u);
             std::mem::swap(&mut t, &mut u);
             for k in 0..p.grid.len() {
-                let g = mu * local.pressure_mpa[k];
+                let g = mu * local.planform.pressure_mpa[k];
                 prop_assert!((t.tx[k].powi(2) + t.ty[k].powi(2)).sqrt() <= g * (1.0 + 1e-12) + 1e-300);
             }
         }
@@ -69,7 +68,7 @@ proptest! {
             .replace("b_mm = 4.08", &format!("b_mm = {}", 8.56 * b_over_a));
         let p = problem(&text);
         let f0 = f(&run(&p, "fastsim"))[0];
-        let lin = p.material.g_mpa * p.hertz.a_mm * p.hertz.b_mm * p.coefficients.c11 * 1e-7 / p.hertz.fn_n;
+        let lin = p.material.g_mpa * p.hertz().a_mm * p.hertz().b_mm * p.coefficients.c11 * 1e-7 / p.hertz().fn_n;
         prop_assert!((f0 / lin - 1.0).abs() < 0.015, "b/a {}: ratio {}", b_over_a, f0 / lin);
     }
 

@@ -3,7 +3,7 @@
 mod common;
 use common::*;
 use creepbench::physics::project_to_bound;
-use creepbench::solvers::brush::{SlipRates, Tractions};
+use creepbench::solvers::brush::{Tractions};
 use creepbench::solvers::uba;
 
 const SWEEP: &str = "kind = \"sweep\"\nfrom = 0.0\nto = 0.01\npoints = 101";
@@ -38,7 +38,7 @@ fn fastsim_slope_is_linear_theory() {
         ));
         let f0 = f(&run(&p, "fastsim"))[0];
         let c11 = p.coefficients.c11;
-        let linear = p.material.g_mpa * p.hertz.a_mm * p.hertz.b_mm * c11 * 1e-7 / p.hertz.fn_n;
+        let linear = p.material.g_mpa * p.hertz().a_mm * p.hertz().b_mm * c11 * 1e-7 / p.hertz().fn_n;
         let ratio = f0 / linear;
         println!("grid {grid} edge {edge}: slope / linear theory = {ratio:.5} (c11 = {c11:.4})");
         if edge == "exact" || grid == 200 {
@@ -110,19 +110,19 @@ fn uba_respects_the_traction_bound() {
         "kind = \"step\"\nc = 0.02\nsteps = 50\ncy = -0.01\ncs = 0.002",
         "",
     ));
-    let local = p.local_contact(p.hertz.fn_n);
+    let local = p.local_contact(p.hertz().fn_n);
     let (mut t, mut u) = (Tractions::zero(p.grid.len()), Tractions::zero(p.grid.len()));
-    let rates = SlipRates::new(0.02, -0.01, 0.002, &local.flex);
-    let mut prep = uba::Prepared::new(&p.grid, &local.pressure_mpa, 0.3);
+    let rates = creepbench::solvers::brush::rates(0.02, -0.01, 0.002, &local.flex);
+    let mut prep = uba::Prepared::new(&p.grid, &local.planform.pressure_mpa, 0.3);
     for _ in 0..50 {
-        uba::step(&p.grid, &mut prep, &rates, 1.0, p.model.leading_edge, (p.hertz.a_mm, p.hertz.b_mm), &u, &mut t);
+        uba::step((&p.grid, &local.planform), &mut prep, &rates, (1.0, p.model.leading_edge), &u, &mut t);
         std::mem::swap(&mut t, &mut u);
         let t = &u;
         for k in 0..p.grid.len() {
-            let g = 0.3 * local.pressure_mpa[k];
+            let g = 0.3 * local.planform.pressure_mpa[k];
             let m = (t.tx[k].powi(2) + t.ty[k].powi(2)).sqrt();
             assert!(m <= g * (1.0 + 1e-12), "element {k}: |tau| {m} > mu p {g}");
-            if local.pressure_mpa[k] == 0.0 {
+            if local.planform.pressure_mpa[k] == 0.0 {
                 assert_eq!((t.tx[k], t.ty[k]), (0.0, 0.0));
             }
         }
@@ -180,7 +180,7 @@ fn larger_mu_settles_later() {
     for mu in [0.1, 0.2, 0.3, 0.4, 0.5, 0.6] {
         let text = scene_text("m", "[\"uba\"]", mu, 22, "kind = \"step\"\nc = 0.005\nsteps = 44", "");
         let p = problem(&format!("metrics = [\"settling_time_s\"]\n{text}"));
-        let m = creepbench::metrics::compute(&p, &run(&p, "uba"));
+        let m = creepbench::metrics::compute(&p.metrics, &p.loading, &run(&p, "uba"), &[]);
         let ts = m.iter().find(|m| m.name == "settling_time_s").unwrap().value;
         println!("mu {mu}: settling {ts:.5} s");
         assert!(ts > last, "mu {mu}: {ts} s not later than {last} s");

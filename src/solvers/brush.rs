@@ -9,7 +9,12 @@ use crate::problem::Sample;
 /// The rigid slip over the flexibilities [MPa/mm] (the left side of thesis Eq. 3.4/3.6):
 /// `kx = cx/L1 − cs y/L3`, `ky = cy/L2 + cs x/L3`.
 pub fn slip_rates(s: &Sample, flex: &Flexibilities) -> RigidSlip {
-    RigidSlip::new(s.cx, s.cy, s.cs).over_flexibilities(flex.l1_mm3_n, flex.l2_mm3_n, flex.l3_mm3_n)
+    rates(s.cx, s.cy, s.cs, flex)
+}
+
+/// [`slip_rates`] of creepages (cx, cy, cs [1/mm]).
+pub fn rates(cx: f64, cy: f64, cs_per_mm: f64, flex: &Flexibilities) -> RigidSlip {
+    RigidSlip::new(cx, cy, cs_per_mm).over_flexibilities(flex.l1_mm3_n, flex.l2_mm3_n, flex.l3_mm3_n)
 }
 
 /// How a solver integrates the slip rate over one element.

@@ -41,7 +41,8 @@ pub fn problem(text: &str) -> Problem {
 }
 
 pub fn run(problem: &Problem, solver: &str) -> History {
-    solvers::by_name(solver, problem).expect("solver").run(problem).expect("solver run")
+    let model = solvers::builtin(solver).expect("a built-in model");
+    solvers::sample_loop::run(problem, model, &[], None).expect("solver run").history
 }
 
 pub fn f(h: &History) -> Vec<f64> {

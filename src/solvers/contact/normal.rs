@@ -212,9 +212,10 @@ mod tests {
     fn hertz_pressure_on_small_grid() {
         let grid = crate::physics::Grid::new(16, 16, 8.56, 4.08);
         let (fnn, g, nu) = (100_000.0, 82000.0, 0.28);
-        let h = super::super::undeformed_distance(
+        let h = crate::physics::ContactGeometry::undeformed_distance_mm(
+            &crate::physics::HertzEllipse { nominal: crate::physics::HertzContact { a_mm: 8.56, b_mm: 4.08, fn_n: fnn } },
             &grid,
-            &crate::physics::HertzContact { a_mm: 8.56, b_mm: 4.08, fn_n: fnn },
+            fnn,
             &crate::physics::Material::from_g(g, nu),
         );
         let k = Kernel::new(16, 16, grid.dx_mm, grid.dy_mm, g, nu, 0.0).unwrap();

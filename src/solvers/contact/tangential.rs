@@ -1539,7 +1539,7 @@ impl TangentialSolver {
 mod tests {
     use super::super::normal::{solve_normal, NormalParams};
     use super::*;
-    use crate::physics::{Grid, HertzContact, Material};
+    use crate::physics::Grid;
 
     #[test]
     fn slip_solve_hits_bound_and_direction() {
@@ -1619,10 +1619,11 @@ mod tests {
     fn hertz_setup(mx: usize, my: usize, courant: f64) -> (Kernel, Kernel, Vec<f64>, Grid) {
         let (a, b, fnn, g, nu) = (6.0, 3.5, 50_000.0, 82000.0, 0.28);
         let grid = Grid::new(mx, my, a, b);
-        let h = super::super::undeformed_distance(
+        let h = crate::physics::ContactGeometry::undeformed_distance_mm(
+            &crate::physics::HertzEllipse { nominal: crate::physics::HertzContact { a_mm: a, b_mm: b, fn_n: fnn } },
             &grid,
-            &HertzContact { a_mm: a, b_mm: b, fn_n: fnn },
-            &Material::from_g(g, nu),
+            fnn,
+            &crate::physics::Material::from_g(g, nu),
         );
         let k0 = Kernel::new(mx, my, grid.dx_mm, grid.dy_mm, g, nu, 0.0).unwrap();
         let dq = courant * grid.dx_mm;
