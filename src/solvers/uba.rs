@@ -62,8 +62,8 @@ struct Uba<'a> {
 }
 
 impl Uba<'_> {
-    fn row(&self, n_slip: usize) -> Step {
-        let (fx, fy) = self.t.coefficients(&self.local.planform);
+    fn row(&self, n_slip: usize, (sum_tx, sum_ty): (f64, f64)) -> Step {
+        let (fx, fy) = self.local.planform.coefficients(sum_tx, sum_ty);
         let n_loaded = self.prep.loaded();
         Step {
             fx_over_fn: fx,
@@ -96,16 +96,16 @@ impl Stepper for Uba<'_> {
         let rates = brush::slip_rates(at, &self.local.flex);
         let how = (self.p.model.leading_edge, Integration::Centre);
         let n_slip = brush::steady_march(&self.p.grid, &self.local.planform, at.mu, &rates, how, &mut self.t);
-        Ok(self.row(n_slip))
+        Ok(self.row(n_slip, (self.t.tx.iter().sum(), self.t.ty.iter().sum())))
     }
 
     fn transient(&mut self, at: &Sample) -> Result<Step, SolveError> {
         let rates = brush::slip_rates(at, &self.local.flex);
         let scheme = (self.p.rolling.courant, self.p.model.leading_edge);
-        let n_slip =
+        let sums =
             step((&self.p.grid, &self.local.planform), &mut self.prep, &rates, scheme, &self.t, &mut self.scratch);
         std::mem::swap(&mut self.t, &mut self.scratch);
-        Ok(self.row(n_slip))
+        Ok(self.row(sums.n_slip, (sums.sum_tx, sums.sum_ty)))
     }
 
     fn field(&self) -> Option<FieldView<'_>> {
@@ -174,7 +174,7 @@ impl Prepared {
 /// `new` (double-buffered: every update reads only old values, so the loop is one flat,
 /// branch-free pass over the grid that the compiler vectorises). `edge` sets the inflow value
 /// upstream of each row's first loaded element of the planform.
-/// Returns the number of elements on the bound. `courant` must be in (0, 1].
+/// Returns the number of elements on the bound and the traction sums. `courant` must be in (0, 1].
 pub fn step(
     (grid, planform): (&Grid, &Planform),
     prep: &mut Prepared,
@@ -182,8 +182,9 @@ pub fn step(
     (courant, edge): (f64, LeadingEdge),
     old: &Tractions,
     new: &mut Tractions,
-) -> usize {
-    if edge == LeadingEdge::Exact {
+) -> StepSums {
+    let ghost = edge == LeadingEdge::Exact;
+    if ghost {
         for &(j, first, _) in &prep.runs {
             let (gx, gy) = brush::ghost(grid, planform, edge, rates, first, j);
             prep.ghost_x[grid.index(first, j)] = gx;
@@ -193,14 +194,37 @@ pub fn step(
     // Source per step, C·dx·k(x, y) (Eq. 3.4): kx = cx/L1 − cs y/L3, ky = cy/L2 + cs x/L3.
     let (c, cdx) = (courant, courant * grid.dx_mm);
     let consts = [c, cdx * rates.cx, -cdx * rates.cs, cdx * rates.cy, cdx * rates.cs];
-    flat_step(prep, &old.tx, &old.ty, &mut new.tx, &mut new.ty, consts)
+    let spin = rates.cs != 0.0;
+    let io = (old.tx.as_slice(), old.ty.as_slice(), new.tx.as_mut_slice(), new.ty.as_mut_slice());
+    match (ghost, spin) {
+        (false, false) => flat_step::<false, false>(prep, io, consts),
+        (false, true) => flat_step::<false, true>(prep, io, consts),
+        (true, false) => flat_step::<true, false>(prep, io, consts),
+        (true, true) => flat_step::<true, true>(prep, io, consts),
+    }
 }
 
-/// The flat pass: `consts` = [C, C·dx·cx/L1, −C·dx·cs/L3, C·dx·cy/L2, C·dx·cs/L3].
+/// What a step returns besides the new tractions: the elements on the bound and the traction
+/// sums Σ τx, Σ τy (fused into the pass: four partial sums, fixed order).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StepSums {
+    pub n_slip: usize,
+    pub sum_tx: f64,
+    pub sum_ty: f64,
+}
+
+/// Old tractions (x, y) in, new tractions (x, y) out.
+type Io<'a> = (&'a [f64], &'a [f64], &'a mut [f64], &'a mut [f64]);
+
+/// The flat pass: `consts` = [C, C·dx·cx/L1, −C·dx·cs/L3, C·dx·cy/L2, C·dx·cs/L3]. `GHOST`:
+/// rows start from a ghost inflow value (exact leading edge), else from zero; `SPIN`: the source
+/// varies with x and y, else it is constant (fewer streams over the grid). The traction sums
+/// follow in one pass of four partial sums (a fixed order: deterministic, and vectorised where a
+/// single running sum would wait on every addition).
 /// Compiled twice, plain and (when the CPU has it) with AVX2: the same IEEE operations and no
 /// fused multiply-add, so both give bit-identical results.
 #[inline(always)]
-fn flat_body(p: &Prepared, ox: &[f64], oy: &[f64], nx: &mut [f64], ny: &mut [f64], k: [f64; 5]) -> usize {
+fn flat_body<const GHOST: bool, const SPIN: bool>(p: &Prepared, (ox, oy, nx, ny): Io, k: [f64; 5]) -> StepSums {
     let n = ox.len();
     let (oy, nx, ny) = (&oy[..n], &mut nx[..n], &mut ny[..n]);
     let (g, up, xs, ys) = (&p.bound[..n], &p.upstream[..n], &p.x_mm[..n], &p.y_mm[..n]);
@@ -209,10 +233,12 @@ fn flat_body(p: &Prepared, ox: &[f64], oy: &[f64], nx: &mut [f64], ny: &mut [f64
     let mut slips = 0usize;
     for m in 0..n {
         let (px, py) = if m > 0 { (ox[m - 1], oy[m - 1]) } else { (0.0, 0.0) };
-        let ux = up[m] * px + gx[m];
-        let uy = up[m] * py + gy[m];
-        let vx = ox[m] + c * (ux - ox[m]) + (sx0 + sx1 * ys[m]);
-        let vy = oy[m] + c * (uy - oy[m]) + (sy0 + sy1 * xs[m]);
+        let (inx, iny) = if GHOST { (gx[m], gy[m]) } else { (0.0, 0.0) };
+        let ux = up[m] * px + inx;
+        let uy = up[m] * py + iny;
+        let (srcx, srcy) = if SPIN { (sx0 + sx1 * ys[m], sy0 + sy1 * xs[m]) } else { (sx0, sy0) };
+        let vx = ox[m] + c * (ux - ox[m]) + srcx;
+        let vy = oy[m] + c * (uy - oy[m]) + srcy;
         let n2 = vx * vx + vy * vy;
         // Direction-keeping projection (Eq. 2.29): scale = min(1, g/|v|); unloaded (g = 0) → 0.
         let scale = (g[m] / n2.sqrt()).min(1.0);
@@ -220,23 +246,37 @@ fn flat_body(p: &Prepared, ox: &[f64], oy: &[f64], nx: &mut [f64], ny: &mut [f64
         ny[m] = vy * scale;
         slips += ((n2 > g[m] * g[m]) & (g[m] > 0.0)) as usize;
     }
-    slips
+    StepSums { n_slip: slips, sum_tx: sum4(nx), sum_ty: sum4(ny) }
+}
+
+/// Σ v with four partial sums over consecutive elements, combined as (s0 + s1) + (s2 + s3).
+#[inline(always)]
+fn sum4(v: &[f64]) -> f64 {
+    let mut acc = [0.0f64; 4];
+    let chunks = v.chunks_exact(4);
+    let tail: f64 = chunks.remainder().iter().sum();
+    for c in chunks {
+        for l in 0..4 {
+            acc[l] += c[l];
+        }
+    }
+    (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-unsafe fn flat_avx2(p: &Prepared, ox: &[f64], oy: &[f64], nx: &mut [f64], ny: &mut [f64], k: [f64; 5]) -> usize {
-    flat_body(p, ox, oy, nx, ny, k)
+unsafe fn flat_avx2<const GHOST: bool, const SPIN: bool>(p: &Prepared, io: Io, k: [f64; 5]) -> StepSums {
+    flat_body::<GHOST, SPIN>(p, io, k)
 }
 
-fn flat_step(p: &Prepared, ox: &[f64], oy: &[f64], nx: &mut [f64], ny: &mut [f64], k: [f64; 5]) -> usize {
+fn flat_step<const GHOST: bool, const SPIN: bool>(p: &Prepared, io: Io, k: [f64; 5]) -> StepSums {
     #[cfg(target_arch = "x86_64")]
     {
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the CPU supports AVX2 (checked just above).
-            return unsafe { flat_avx2(p, ox, oy, nx, ny, k) };
+            return unsafe { flat_avx2::<GHOST, SPIN>(p, io, k) };
         }
     }
-    flat_body(p, ox, oy, nx, ny, k)
+    flat_body::<GHOST, SPIN>(p, io, k)
 }
 
