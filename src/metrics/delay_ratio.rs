@@ -2,7 +2,7 @@
 //! period (peaks by parabolic interpolation through the three samples around each maximum), over
 //! the period.
 
-use super::{HistoryColumns, MetricDef, MetricKind, MetricValue};
+use super::{HistoryColumns, MetricDef, MetricKind, MetricValue, OSCILLATION_FLOOR};
 use crate::problem::Loading;
 
 pub const METRIC: MetricDef = MetricDef {
@@ -27,12 +27,15 @@ fn parabola_peak(y0: f64, y1: f64, y2: f64) -> (f64, f64) {
 }
 
 /// Time of the largest sample of `y` with t in [t0, t1), refined by a parabola through it and
-/// its two neighbours. `None` if the window holds no sample.
+/// its two neighbours. Samples within [`OSCILLATION_FLOOR`] of the largest (relative to it) tie
+/// and the earliest wins: on a flat top (f saturated at μ) the peak is where the top begins,
+/// not wherever round-off puts the largest sample. `None` if the window holds no sample.
 pub fn peak_time(t: &[f64], y: &[f64], t0: f64, t1: f64) -> Option<f64> {
     let eps = 1e-12 * t1.abs().max(1e-30);
-    let idx = (0..t.len())
-        .filter(|&k| t[k] >= t0 - eps && t[k] < t1 - eps)
-        .max_by(|&a, &b| y[a].total_cmp(&y[b]).then(b.cmp(&a)))?;
+    let window = || (0..t.len()).filter(|&k| t[k] >= t0 - eps && t[k] < t1 - eps);
+    let top = window().map(|k| y[k]).max_by(f64::total_cmp)?;
+    let tie = OSCILLATION_FLOOR * top.abs();
+    let idx = window().find(|&k| y[k] >= top - tie)?;
     if idx == 0 || idx + 1 >= t.len() {
         return Some(t[idx]);
     }
