@@ -44,7 +44,9 @@ fn every_stability_scene_is_finite_and_bounded() {
                 let max = it.iter().fold(0.0f64, |a, &b| a.max(b));
                 assert!(max < 1000.0, "{name}/{}: {max} iterations", h.solver);
             }
-            if let Some(max) = metric(&h.solver, "sawtooth_index") {
+            // An aliased loading (fewer than 3 steps per period) imprints a real zig-zag on the
+            // field as the material carries it along x: no stability verdict there.
+            if let Some(max) = metric(&h.solver, "sawtooth_index").filter(|_| !aliasing) {
                 assert!(max < 0.2, "{name}/{}: sawtooth index {max}", h.solver);
             }
             let osc = metric(&h.solver, "oscillation_index").expect("the stability scenes list oscillation_index");
