@@ -22,7 +22,7 @@ impl InputError {
 }
 
 /// A data file that does not have the expected form (a history, metrics, a reference table).
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, thiserror::Error)]
 pub enum FormatError {
     #[error("header must start with {expected} (got {got})")]
     Header { expected: String, got: String },
@@ -32,10 +32,10 @@ pub enum FormatError {
     FieldCount { line: usize, fields: usize, expected: usize },
     #[error("line {line} column {column}: {value:?} is not {what}")]
     Value { line: usize, column: String, value: String, what: &'static str },
-    #[error("line {line}: {message}")]
-    Csv { line: usize, message: String },
-    #[error("{0}")]
-    Json(String),
+    #[error("line {line}: {source}")]
+    Csv { line: usize, source: csv::Error },
+    #[error(transparent)]
+    Json(#[from] serde_json::Error),
 }
 
 /// Every failure of the tool.

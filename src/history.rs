@@ -127,7 +127,7 @@ impl History {
         let mut rdr = csv::ReaderBuilder::new().trim(csv::Trim::All).from_reader(text.as_bytes());
         let header: Vec<String> = rdr
             .headers()
-            .map_err(|e| FormatError::Csv { line: 1, message: e.to_string() })?
+            .map_err(|e| FormatError::Csv { line: 1, source: e })?
             .iter()
             .map(str::to_string)
             .collect();
@@ -140,7 +140,7 @@ impl History {
             History { solver: solver.into(), extra_columns: header[first_extra..].to_vec(), rows: Vec::new() };
         for (n, rec) in rdr.records().enumerate() {
             let line = n + 2;
-            let rec = rec.map_err(|e| FormatError::Csv { line, message: e.to_string() })?;
+            let rec = rec.map_err(|e| FormatError::Csv { line, source: e })?;
             if rec.len() != header.len() {
                 return Err(FormatError::FieldCount { line, fields: rec.len(), expected: header.len() });
             }

@@ -84,7 +84,7 @@ pub fn parse_metrics(text: &str) -> Result<MetricMap, FormatError> {
     let mut rdr = csv::ReaderBuilder::new().flexible(true).from_reader(text.as_bytes());
     for (n, rec) in rdr.records().enumerate() {
         let line = n + 2;
-        let rec = rec.map_err(|e| FormatError::Csv { line, message: e.to_string() })?;
+        let rec = rec.map_err(|e| FormatError::Csv { line, source: e })?;
         let field = |i: usize| rec.get(i).unwrap_or("");
         let value: f64 = field(2).parse().map_err(|_| FormatError::Value {
             line,
@@ -111,7 +111,7 @@ pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
     let d = dir.join(name);
     let read = |f: &str| std::fs::read_to_string(d.join(f)).map_err(Error::io(d.join(f)));
     let scene = ResolvedScene::from_json(&read("scene.json")?)
-        .map_err(|e| Error::Format { path: d.join("scene.json"), source: FormatError::Json(e.to_string()) })?;
+        .map_err(|e| Error::Format { path: d.join("scene.json"), source: FormatError::Json(e) })?;
     let mut s = StoredScene {
         name: name.into(),
         histories: BTreeMap::new(),

@@ -37,7 +37,7 @@ pub struct MetricDef {
     /// Computed unless the scene lists its metrics; the others (diagnostics) only when listed.
     pub default: bool,
     /// Why the metric does not fit this loading (with time step `dt_s`), if it does not.
-    pub fits: fn(&Loading, f64) -> Result<(), String>,
+    pub fits: fn(&Loading, f64) -> Result<(), Unfit>,
     pub kind: MetricKind,
 }
 
@@ -61,12 +61,25 @@ pub fn names() -> Vec<&'static str> {
     METRICS.iter().map(|m| m.name).collect()
 }
 
+/// Why a metric does not fit a loading.
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+pub enum Unfit {
+    #[error("needs a sine creepage")]
+    NeedsSine,
+    #[error("needs at least {need} periods, the history has {have:.2}")]
+    TooFewPeriods { need: f64, have: f64 },
+    #[error("step creepage only")]
+    StepOnly,
+    #[error("time histories only")]
+    TimeHistoryOnly,
+}
+
 /// A sine needs `need` periods in its history.
-fn needs_periods(l: &Loading, dt_s: f64, need: f64) -> Result<(), String> {
-    let Some(f) = l.freq_hz else { return Err("needs a sine creepage".into()) };
-    let periods = l.samples.len() as f64 * dt_s * f;
-    if periods + 1e-9 < need {
-        return Err(format!("needs at least {need} periods, the history has {periods:.2}"));
+fn needs_periods(l: &Loading, dt_s: f64, need: f64) -> Result<(), Unfit> {
+    let Some(f) = l.freq_hz else { return Err(Unfit::NeedsSine) };
+    let have = l.samples.len() as f64 * dt_s * f;
+    if have + 1e-9 < need {
+        return Err(Unfit::TooFewPeriods { need, have });
     }
     Ok(())
 }
@@ -80,7 +93,7 @@ pub fn select(asked: Option<&[String]>, loading: &Loading, dt_s: f64) -> (Vec<St
             for m in asked {
                 match by_name(m).map(|d| (d.fits)(loading, dt_s)) {
                     Some(Ok(())) => take.push(m.clone()),
-                    Some(Err(why)) => skip.push((m.clone(), why)),
+                    Some(Err(why)) => skip.push((m.clone(), why.to_string())),
                     None => skip.push((m.clone(), "unknown metric".into())),
                 }
             }
@@ -93,7 +106,7 @@ pub fn select(asked: Option<&[String]>, loading: &Loading, dt_s: f64) -> (Vec<St
                 match (m.fits)(loading, dt_s) {
                     Ok(()) if m.default => take.push(m.name.to_string()),
                     Ok(()) => skip.push((m.name.to_string(), "a diagnostic, computed when the scene lists it".into())),
-                    Err(why) => skip.push((m.name.to_string(), why)),
+                    Err(why) => skip.push((m.name.to_string(), why.to_string())),
                 }
             }
         }

@@ -7,7 +7,7 @@ use crate::problem::Loading;
 pub const METRIC: MetricDef = MetricDef {
     name: "oscillation_index",
     default: false,
-    fits: |l, _| if l.is_transient() { Ok(()) } else { Err("time histories only".into()) },
+    fits: |l, _| if l.is_transient() { Ok(()) } else { Err(super::Unfit::TimeHistoryOnly) },
     kind: MetricKind::History(compute),
 };
 

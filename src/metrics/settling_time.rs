@@ -7,7 +7,7 @@ use crate::problem::{Loading, LoadingKind};
 pub const METRIC: MetricDef = MetricDef {
     name: "settling_time_s",
     default: true,
-    fits: |l, _| if l.kind == LoadingKind::Step { Ok(()) } else { Err("step creepage only".into()) },
+    fits: |l, _| if l.kind == LoadingKind::Step { Ok(()) } else { Err(super::Unfit::StepOnly) },
     kind: MetricKind::History(compute),
 };
 

@@ -46,7 +46,7 @@ impl ContactCases {
         let path = dir.join("contact/cases.csv");
         let text = read(&path)?;
         let mut rdr = csv::Reader::from_reader(text.as_bytes());
-        let bad = |e: csv::Error| Error::Format { path: path.clone(), source: FormatError::Csv { line: 0, message: e.to_string() } };
+        let bad = |e: csv::Error| Error::Format { path: path.clone(), source: FormatError::Csv { line: 0, source: e } };
         let head: Vec<String> = rdr.headers().map_err(bad)?.iter().map(String::from).collect();
         let col = |n: &str| head.iter().position(|h| h == n);
         let mut out = ContactCases::default();
@@ -85,7 +85,7 @@ fn read_history(path: &Path, steady: bool) -> Result<History, Error> {
     let mut rdr = csv::Reader::from_reader(text.as_bytes());
     let head: Vec<String> = match rdr.headers() {
         Ok(h) => h.iter().map(String::from).collect(),
-        Err(e) => return Err(fail(FormatError::Csv { line: 1, message: e.to_string() })),
+        Err(e) => return Err(fail(FormatError::Csv { line: 1, source: e })),
     };
     let col = |n: &str| {
         head.iter().position(|h| h == n).ok_or_else(|| FormatError::MissingColumn { column: n.to_string() })
@@ -99,7 +99,7 @@ fn read_history(path: &Path, steady: bool) -> Result<History, Error> {
     let mut rows = Vec::new();
     for (line, rec) in rdr.records().enumerate() {
         let line = line + 2;
-        let rec = rec.map_err(|e| FormatError::Csv { line, message: e.to_string() });
+        let rec = rec.map_err(|e| FormatError::Csv { line, source: e });
         let row = rec.and_then(|rec| {
             let n = |i: usize| {
                 rec[i].parse::<f64>().map_err(|_| FormatError::Value {
