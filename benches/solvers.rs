@@ -42,7 +42,6 @@ fn bench_uba(c: &mut Criterion) {
 /// One transient step of the CONTACT-style solver on sine_f30_mu10 (state after 10 steps from
 /// zero traction; the normal solve and kernels are set up outside the timing).
 fn bench_contact(c: &mut Criterion) {
-    use creepbench::physics::ContactGeometry;
     use creepbench::solvers::contact::{influence::Kernel, normal, tangential};
     let mut g = c.benchmark_group("contact_step");
     for grid in [22, 44, 88] {

@@ -11,10 +11,9 @@ pub use resolved::ResolvedScene;
 
 use crate::error::InputError;
 use crate::physics::{
-    CoefficientSource, Coefficients, ContactGeometry, Flexibilities, Grid, HertzContact, HertzEllipse, Material,
-    Planform,
+    CoefficientSource, Coefficients, ContactGeometry, Flexibilities, Grid, HertzContact, Material, Planform,
 };
-use crate::scene::{ContactSolverOptions, ExternalSolver, Geometry, ModelOptions, Scene};
+use crate::scene::{ContactSolverOptions, ExternalSolver, ModelOptions, Scene};
 use std::path::PathBuf;
 use std::sync::Arc;
 
@@ -68,12 +67,8 @@ impl Problem {
             (None, Some(e)) => Material::from_e(e, scene.material.poisson),
             (None, None) => return Err(InputError::new("material.g_mpa", "missing", "g_mpa or e_mpa")),
         };
-        let hertz = match &scene.geometry {
-            Geometry::SemiAxes { a_mm, b_mm } => HertzContact { a_mm: *a_mm, b_mm: *b_mm, fn_n: scene.fn_n },
-            Geometry::Radii(r) => HertzContact::from_radii(r, scene.fn_n, &material).map_err(|e| {
-                InputError::new("contact.r_wx_mm", format!("{r:?}"), format!("radii of a convex contact ({e})"))
-            })?,
-        };
+        let geometry = scene.geometry.build(scene.fn_n, &material)?;
+        let hertz = geometry.nominal();
         let mut warnings = Vec::new();
         let ratio = hertz.b_mm / hertz.a_mm;
         if scene.model.coefficients == CoefficientSource::Fit {
@@ -111,7 +106,7 @@ impl Problem {
             metrics,
             skipped_metrics,
             material,
-            geometry: Arc::new(HertzEllipse { nominal: hertz }),
+            geometry,
             coefficients,
             grid,
             rolling: Rolling { v_mm_s: scene.v_mm_s, courant: scene.courant, dt_s, dq_mm },

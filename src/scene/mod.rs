@@ -7,19 +7,13 @@ pub mod reader;
 pub mod table;
 
 use crate::error::InputError;
+use crate::physics::geometry::GeometrySpec;
 use crate::physics::{CoefficientSource, FlexibilityModel, LeadingEdge, PressureShape, Radii};
 use reader::{Range, Section};
 use std::path::{Path, PathBuf};
 
 /// Largest grid accepted along either axis.
 pub const MAX_ELEMENTS_PER_AXIS: usize = 512;
-
-/// Contact geometry: semi-axes directly, or radii through Hertz.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Geometry {
-    SemiAxes { a_mm: f64, b_mm: f64 },
-    Radii(Radii),
-}
 
 /// Elastic constants as given.
 #[derive(Debug, Clone, PartialEq)]
@@ -102,7 +96,7 @@ pub struct Scene {
     pub solvers: Vec<String>,
     /// Metrics asked for; `None` = those that fit the creepage kind.
     pub metrics: Option<Vec<String>>,
-    pub geometry: Geometry,
+    pub geometry: GeometrySpec,
     pub fn_n: f64,
     pub mu: f64,
     pub material: MaterialSpec,
@@ -225,10 +219,10 @@ impl Scene {
                     ));
                 }
             }
-            Geometry::SemiAxes { a_mm, b_mm }
+            GeometrySpec::SemiAxes { a_mm, b_mm }
         } else {
             let radius = Range::new(0.0, false, f64::INFINITY, true);
-            Geometry::Radii(Radii {
+            GeometrySpec::Radii(Radii {
                 r_wx_mm: c.f64("r_wx_mm", Range::new(0.0, false, 1e9, true))?,
                 r_wy_mm: c.f64("r_wy_mm", radius)?,
                 r_ry_mm: c.f64("r_ry_mm", radius)?,

@@ -6,10 +6,34 @@
 
 pub mod hertz;
 
-use super::{Grid, HertzContact, Material, PressureShape};
+use super::{Grid, HertzContact, Material, PressureShape, Radii};
+use crate::error::InputError;
 use std::fmt::Debug;
+use std::sync::Arc;
 
 pub use hertz::HertzEllipse;
+
+/// The geometry as a scene gives it.
+#[derive(Debug, Clone, PartialEq)]
+pub enum GeometrySpec {
+    /// Hertz's ellipse by its semi-axes (`contact.a_mm`, `contact.b_mm`).
+    SemiAxes { a_mm: f64, b_mm: f64 },
+    /// Hertz's ellipse from the principal radii (`contact.r_wx_mm`, …) and the load.
+    Radii(Radii),
+}
+
+impl GeometrySpec {
+    /// The contact geometry at the nominal load `fn_n` [N]; errors name the scene field.
+    pub fn build(&self, fn_n: f64, material: &Material) -> Result<Arc<dyn ContactGeometry>, InputError> {
+        let nominal = match self {
+            GeometrySpec::SemiAxes { a_mm, b_mm } => HertzContact { a_mm: *a_mm, b_mm: *b_mm, fn_n },
+            GeometrySpec::Radii(r) => HertzContact::from_radii(r, fn_n, material).map_err(|e| {
+                InputError::new("contact.r_wx_mm", format!("{r:?}"), format!("radii of a convex contact ({e})"))
+            })?,
+        };
+        Ok(Arc::new(HertzEllipse { nominal }))
+    }
+}
 
 /// The simplified models' contact at one load.
 #[derive(Debug, Clone, PartialEq)]
