@@ -2,6 +2,7 @@
 //! reference data (CONTACT, thesis) and golden data (this project's blessed results), and the
 //! Markdown report. Only solver outputs (histories, metrics) are used here, never solver internals.
 
+pub mod against;
 pub mod compare;
 pub mod plot;
 pub mod references;

@@ -1,7 +1,7 @@
 //! Every tolerance of the gates, in one reviewed place. A comparison passes when
 //! `|ours − theirs| ≤ abs + rel·|theirs|`. Changing a number here is a reviewed decision: say why.
 
-use super::compare::Against;
+use super::against::Against;
 
 /// One rule: which comparison it covers, its tolerance, and whether a miss fails the gate.
 #[derive(Debug, Clone, Copy)]
