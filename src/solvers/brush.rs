@@ -5,6 +5,7 @@
 pub use crate::physics::LeadingEdge;
 use crate::physics::{project_to_bound, Flexibilities, Grid, Planform, RigidSlip};
 use crate::problem::Sample;
+use crate::solvers::{FieldView, Step, Termination};
 
 /// The rigid slip over the flexibilities [MPa/mm] (the left side of thesis Eq. 3.4/3.6):
 /// `kx = cx/L1 − cs y/L3`, `ky = cy/L2 + cs x/L3`.
@@ -64,9 +65,26 @@ impl Tractions {
         Tractions { tx: vec![0.0; n], ty: vec![0.0; n] }
     }
 
-    /// Traction coefficients over the planform's pressure (thesis Eq. 3.12).
-    pub fn coefficients(&self, planform: &Planform) -> (f64, f64) {
-        planform.coefficients(self.tx.iter().sum(), self.ty.iter().sum())
+    /// The field view of these tractions on the planform's pressure.
+    pub fn view<'a>(&'a self, grid: &'a Grid, planform: &'a Planform) -> FieldView<'a> {
+        FieldView { grid, pressure_mpa: &planform.pressure_mpa, tx_mpa: &self.tx, ty_mpa: &self.ty, state: None }
+    }
+
+    /// Σ τx, Σ τy (one running sum each, flat order).
+    pub fn sums(&self) -> (f64, f64) {
+        (self.tx.iter().sum(), self.ty.iter().sum())
+    }
+}
+
+/// A brush model's solve: the coefficients from the traction sums over the planform, and the
+/// adhesion and slip counts (the extra columns `n_adhesion, n_slip`).
+pub fn step(planform: &Planform, (sum_tx, sum_ty): (f64, f64), n_loaded: usize, n_slip: usize) -> Step {
+    let (fx, fy) = planform.coefficients(sum_tx, sum_ty);
+    Step {
+        fx_over_fn: fx,
+        fy_over_fn: fy,
+        extra: vec![(n_loaded - n_slip) as f64, n_slip as f64],
+        termination: Termination::Direct,
     }
 }
 

@@ -5,7 +5,6 @@
 
 use super::brush::{self, Integration, Tractions};
 use super::stepper::{FieldView, Step, Stepper};
-use super::termination::Termination;
 use super::{always, linear_in_elements, ModelDef, SolveError};
 use crate::problem::{LocalContact, Problem, Sample};
 
@@ -43,14 +42,7 @@ impl Stepper for Fastsim<'_> {
         let rates = brush::slip_rates(at, &self.local.flex);
         let how = (self.p.model.leading_edge, Integration::Exact);
         let n_slip = brush::steady_march(&self.p.grid, &self.local.planform, at.mu, &rates, how, &mut self.t);
-        let (fx, fy) = self.t.coefficients(&self.local.planform);
-        let n_loaded = self.local.planform.loaded();
-        Ok(Step {
-            fx_over_fn: fx,
-            fy_over_fn: fy,
-            extra: vec![(n_loaded - n_slip) as f64, n_slip as f64],
-            termination: Termination::Direct,
-        })
+        Ok(brush::step(&self.local.planform, self.t.sums(), self.local.planform.loaded(), n_slip))
     }
 
     /// No memory: the steady response at this step's creepage.
@@ -59,12 +51,6 @@ impl Stepper for Fastsim<'_> {
     }
 
     fn field(&self) -> Option<FieldView<'_>> {
-        Some(FieldView {
-            grid: &self.p.grid,
-            pressure_mpa: &self.local.planform.pressure_mpa,
-            tx_mpa: &self.t.tx,
-            ty_mpa: &self.t.ty,
-            state: None,
-        })
+        Some(self.t.view(&self.p.grid, &self.local.planform))
     }
 }

@@ -15,7 +15,6 @@
 
 use super::brush::{self, Integration, LeadingEdge, Tractions};
 use super::stepper::{FieldView, Step, Stepper};
-use super::termination::Termination;
 use super::{linear_in_elements, ModelDef, SolveError};
 use crate::error::InputError;
 use crate::physics::{Grid, Planform, RigidSlip};
@@ -62,15 +61,8 @@ struct Uba<'a> {
 }
 
 impl Uba<'_> {
-    fn row(&self, n_slip: usize, (sum_tx, sum_ty): (f64, f64)) -> Step {
-        let (fx, fy) = self.local.planform.coefficients(sum_tx, sum_ty);
-        let n_loaded = self.prep.loaded();
-        Step {
-            fx_over_fn: fx,
-            fy_over_fn: fy,
-            extra: vec![(n_loaded - n_slip) as f64, n_slip as f64],
-            termination: Termination::Direct,
-        }
+    fn row(&self, n_slip: usize, sums: (f64, f64)) -> Step {
+        brush::step(&self.local.planform, sums, self.prep.loaded(), n_slip)
     }
 }
 
@@ -96,7 +88,7 @@ impl Stepper for Uba<'_> {
         let rates = brush::slip_rates(at, &self.local.flex);
         let how = (self.p.model.leading_edge, Integration::Centre);
         let n_slip = brush::steady_march(&self.p.grid, &self.local.planform, at.mu, &rates, how, &mut self.t);
-        Ok(self.row(n_slip, (self.t.tx.iter().sum(), self.t.ty.iter().sum())))
+        Ok(self.row(n_slip, self.t.sums()))
     }
 
     fn transient(&mut self, at: &Sample) -> Result<Step, SolveError> {
@@ -109,13 +101,7 @@ impl Stepper for Uba<'_> {
     }
 
     fn field(&self) -> Option<FieldView<'_>> {
-        Some(FieldView {
-            grid: &self.p.grid,
-            pressure_mpa: &self.local.planform.pressure_mpa,
-            tx_mpa: &self.t.tx,
-            ty_mpa: &self.t.ty,
-            state: None,
-        })
+        Some(self.t.view(&self.p.grid, &self.local.planform))
     }
 }
 
