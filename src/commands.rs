@@ -104,6 +104,10 @@ fn read_results(dirs: &[PathBuf]) -> Result<Vec<StoredScene>, Error> {
 pub fn merge(dirs: &[PathBuf], reference: &Path, report_dir: &Path, golden: &Path) -> Result<(), Error> {
     let refs = References::load(reference)?;
     let scenes = read_results(dirs)?;
+    if scenes.is_empty() {
+        let given: Vec<String> = dirs.iter().map(|d| d.display().to_string()).collect();
+        return Err(InputError::new("merge", given.join(", "), "result folders written by `creepbench run --results DIR`, holding at least one scene").into());
+    }
     let md = build_report(&scenes, &refs, report_dir, Some(golden))?;
     println!("{}", md.display());
     Ok(())

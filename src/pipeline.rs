@@ -30,8 +30,14 @@ pub struct SceneResult {
 
 /// Read, validate and resolve a scene file; `only` narrows its solver list.
 pub fn load(path: &Path, only: &[String]) -> Result<Problem, Error> {
-    let scene = Scene::from_file(path)?;
-    let mut problem = Problem::resolve(&scene)?;
+    let in_file = |mut e: InputError| {
+        if !e.field.starts_with(&path.display().to_string()) {
+            e.field = format!("{}: {}", path.display(), e.field);
+        }
+        e
+    };
+    let scene = Scene::from_file(path).map_err(in_file)?;
+    let mut problem = Problem::resolve(&scene).map_err(in_file)?;
     if !only.is_empty() {
         for s in only {
             if !problem.solvers.contains(s) {

@@ -66,6 +66,17 @@ pub fn scene_files(dirs: &[PathBuf], shard: Option<Shard>) -> Result<Vec<PathBuf
 /// them in parallel. The results come back in the files' order whatever the thread count.
 pub fn run(files: &[PathBuf], progress: bool) -> Result<Vec<SceneResult>, Error> {
     let problems = files.iter().map(|f| pipeline::load(f, &[])).collect::<Result<Vec<_>, _>>()?;
+    // Two scenes of one name would write one result folder: refuse before anything runs.
+    for (i, p) in problems.iter().enumerate() {
+        if let Some(j) = problems[..i].iter().position(|q| q.name == p.name) {
+            return Err(InputError::new(
+                "name",
+                format!("{:?} in both {} and {}", p.name, files[j].display(), files[i].display()),
+                "distinct scene names in one run",
+            )
+            .into());
+        }
+    }
     let bar = if progress && files.len() > 1 {
         let b = ProgressBar::new(problems.len() as u64);
         b.set_style(
