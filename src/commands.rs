@@ -15,10 +15,14 @@ use std::time::Instant;
 /// `creepbench simulate`: one scene into `out/<name>/`.
 pub fn simulate(scene: &Path, solvers: &[String], out: &Path) -> Result<PathBuf, Error> {
     let problem = pipeline::load(scene, solvers)?;
+    let before = problem.warnings.len();
     for w in &problem.warnings {
         eprintln!("warning: {w}");
     }
     let result = pipeline::run(problem)?;
+    for w in &result.problem.warnings[before..] {
+        eprintln!("warning: {w}");
+    }
     let stored = StoredScene::from_result(&result);
     let dir = results::write_scenes(out, std::slice::from_ref(&stored), false)?.remove(0);
     for (h, t) in result.histories.iter().zip(&result.timing) {

@@ -16,10 +16,22 @@ pub struct InputError {
 }
 
 impl InputError {
+    /// An input error; the value is cut to a short excerpt (a message never echoes a whole input).
     pub fn new(field: impl Into<String>, value: impl fmt::Display, allowed: impl Into<String>) -> Self {
-        Self { field: field.into(), value: value.to_string(), allowed: allowed.into() }
+        Self { field: field.into(), value: excerpt(&value.to_string()), allowed: allowed.into() }
     }
 }
+
+/// A short, single-line excerpt of a value for messages (never a whole file).
+pub fn excerpt(v: &str) -> String {
+    let one_line: String = v.chars().map(|c| if c.is_control() { '?' } else { c }).collect();
+    if one_line.chars().count() <= 60 {
+        one_line
+    } else {
+        format!("{}… ({} bytes)", one_line.chars().take(60).collect::<String>(), v.len())
+    }
+}
+
 
 /// A data file that does not have the expected form (a history, metrics, a reference table).
 #[derive(Debug, thiserror::Error)]

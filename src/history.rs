@@ -1,18 +1,9 @@
 //! Step 4 of the pipeline: a solver's output, one row per time step (or sweep point), in the
 //! `<solver>.csv` format of interface.md.
 
-use crate::error::FormatError;
+use crate::error::{excerpt, FormatError};
 use crate::problem::Sample;
 
-/// A short, single-line excerpt of a value for messages (never a whole file).
-pub fn excerpt(v: &str) -> String {
-    let one_line: String = v.chars().map(|c| if c.is_control() { '?' } else { c }).collect();
-    if one_line.chars().count() <= 60 {
-        one_line
-    } else {
-        format!("{}… ({} bytes)", one_line.chars().take(60).collect::<String>(), v.len())
-    }
-}
 
 /// The fixed leading columns of `<solver>.csv` (interface.md); extra columns follow.
 pub const COLUMNS: [&str; 8] = ["step", "t_s", "cx", "cy", "cs", "fn_n", "fx_over_fn", "fy_over_fn"];

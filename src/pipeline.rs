@@ -5,7 +5,7 @@ use crate::history::History;
 use crate::metrics::{self, Metric, MetricDef, MetricKind};
 use crate::problem::Problem;
 use crate::scene::Scene;
-use crate::solvers::{self, external::External, sample_loop};
+use crate::solvers::{self, external::External, sample_loop, Termination};
 use std::path::Path;
 use std::time::Instant;
 
@@ -55,7 +55,7 @@ pub fn load(path: &Path, only: &[String]) -> Result<Problem, Error> {
 }
 
 /// Run the problem's models (only those it lists) and compute its metrics.
-pub fn run(problem: Problem) -> Result<SceneResult, Error> {
+pub fn run(mut problem: Problem) -> Result<SceneResult, Error> {
     let field_metrics: Vec<&'static MetricDef> = problem
         .metrics
         .iter()
@@ -80,6 +80,15 @@ pub fn run(problem: Problem) -> Result<SceneResult, Error> {
                 (h, Timing { wall_s, setup_s: 0.0 }, Vec::new())
             }
         };
+        let limit = Termination::IterationLimit.code();
+        let stuck = h.column("termination").map_or(0, |t| t.iter().filter(|&&c| c == limit).count());
+        if stuck > 0 {
+            problem.warnings.push(format!(
+                "{name}: {stuck} of {} solves reached the iteration limit (contact_solver.max_iterations = {}); those rows are not converged",
+                h.rows.len(),
+                problem.contact_solver.max_iterations
+            ));
+        }
         all_metrics.extend(metrics::compute(&problem.metrics, &problem.loading, &h, &field));
         histories.push(h);
         timing.push(t);

@@ -89,7 +89,7 @@ pub fn parse_metrics(text: &str) -> Result<MetricMap, FormatError> {
         let value: f64 = field(2).parse().map_err(|_| FormatError::Value {
             line,
             column: "value".into(),
-            value: crate::history::excerpt(field(2)),
+            value: crate::error::excerpt(field(2)),
             what: "a number",
         })?;
         let step = match field(3) {
@@ -97,7 +97,7 @@ pub fn parse_metrics(text: &str) -> Result<MetricMap, FormatError> {
             s => Some(s.parse::<usize>().map_err(|_| FormatError::Value {
                 line,
                 column: "step".into(),
-                value: crate::history::excerpt(s),
+                value: crate::error::excerpt(s),
                 what: "a step index",
             })?),
         };

@@ -27,7 +27,7 @@ pub struct ShardError {
 impl std::str::FromStr for Shard {
     type Err = ShardError;
     fn from_str(s: &str) -> Result<Self, ShardError> {
-        let bad = || ShardError { given: crate::history::excerpt(s) };
+        let bad = || ShardError { given: crate::error::excerpt(s) };
         let (i, n) = s.split_once('/').ok_or_else(bad)?;
         let (i, n): (usize, usize) = (i.parse().map_err(|_| bad())?, n.parse().map_err(|_| bad())?);
         if n == 0 || i == 0 || i > n {

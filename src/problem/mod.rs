@@ -17,6 +17,9 @@ use crate::scene::{ContactSolverOptions, ExternalSolver, ModelOptions, Scene};
 use std::path::PathBuf;
 use std::sync::Arc;
 
+/// Largest relative difference between a given E and 2 G (1 + ν) when both are given.
+pub const E_G_TOLERANCE: f64 = 1e-3;
+
 /// The simplified models' contact at one load: planform and flexibilities.
 #[derive(Debug, Clone)]
 pub struct LocalContact {
@@ -62,7 +65,19 @@ impl Problem {
     /// Resolve a validated scene.
     pub fn resolve(scene: &Scene) -> Result<Problem, InputError> {
         let material = match (scene.material.g_mpa, scene.material.e_mpa) {
-            (Some(g), Some(e)) => Material { g_mpa: g, poisson: scene.material.poisson, e_mpa: e },
+            (Some(g), Some(e)) => {
+                // E = 2G(1 + ν) for an isotropic material; the thesis's own Table 4.1 pair
+                // (G 82000, E 210000, ν 0.28) is 4e-4 off, a rounding of the printed values.
+                let from_g = 2.0 * g * (1.0 + scene.material.poisson);
+                if ((e - from_g) / from_g).abs() > E_G_TOLERANCE {
+                    return Err(InputError::new(
+                        "material.e_mpa",
+                        e,
+                        format!("E = 2 G (1 + poisson) = {from_g} within {E_G_TOLERANCE:e} relative, or only one of g_mpa and e_mpa"),
+                    ));
+                }
+                Material { g_mpa: g, poisson: scene.material.poisson, e_mpa: e }
+            }
             (Some(g), None) => Material::from_g(g, scene.material.poisson),
             (None, Some(e)) => Material::from_e(e, scene.material.poisson),
             (None, None) => return Err(InputError::new("material.g_mpa", "missing", "g_mpa or e_mpa")),
@@ -118,8 +133,29 @@ impl Problem {
             scene_dir: scene.dir.clone(),
             warnings,
         };
+        problem.check_derived()?;
         crate::solvers::check_applicable(&problem)?;
         Ok(problem)
+    }
+
+    /// Quantities derived from valid inputs can still be absurd (an axis ratio of 1e-20, a speed
+    /// of 5e-324 mm/s): refuse them here, naming the input, before anything is computed.
+    fn check_derived(&self) -> Result<(), InputError> {
+        let h = self.hertz();
+        let c = &self.coefficients;
+        let f = self.flexibilities();
+        let positive = |v: &[f64]| v.iter().all(|x| x.is_finite() && *x > 0.0);
+        if !positive(&[h.a_mm, h.b_mm, h.p0_mpa(), self.grid.dx_mm, self.grid.dy_mm]) {
+            return Err(InputError::new("contact", format!("a = {} mm, b = {} mm, p0 = {} MPa", h.a_mm, h.b_mm, h.p0_mpa()), "a contact whose semi-axes, element sizes and peak pressure are finite and positive"));
+        }
+        if !positive(&[c.c11, c.c22, c.c23, f.l1_mm3_n, f.l2_mm3_n, f.l3_mm3_n]) {
+            return Err(InputError::new("contact.b_mm", format!("b/a = {:e}", h.b_mm / h.a_mm), format!("an axis ratio for which Kalker's coefficients and the flexibilities are finite and positive (c11 {}, c22 {}, c23 {})", c.c11, c.c22, c.c23)));
+        }
+        let t_end = self.loading.samples.last().map_or(0.0, |s| s.t_s);
+        if !(positive(&[self.rolling.dt_s, self.rolling.dq_mm]) && t_end.is_finite()) {
+            return Err(InputError::new("rolling.v_mm_s", format!("{:e}", self.rolling.v_mm_s), format!("a speed for which the time step courant dx / v and the history's times are finite (dt = {:e} s)", self.rolling.dt_s)));
+        }
+        Ok(())
     }
 
     /// The contact ellipse at the nominal load.

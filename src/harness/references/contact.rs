@@ -105,7 +105,7 @@ fn read_history(path: &Path, steady: bool) -> Result<History, Error> {
                 rec[i].parse::<f64>().map_err(|_| FormatError::Value {
                     line,
                     column: head[i].clone(),
-                    value: crate::history::excerpt(&rec[i]),
+                    value: crate::error::excerpt(&rec[i]),
                     what: "a number",
                 })
             };
