@@ -139,7 +139,11 @@ pub fn check(
     }
     let baseline = (dir, kind);
     let scenes = run_suite(suite_dir, shard, progress)?;
-    let all = compare::evaluate(&scenes, &refs, Some(baseline))?;
+    let mut all = compare::evaluate(&scenes, &refs, Some(baseline))?;
+    let suites: Vec<String> =
+        suite_dir.iter().filter_map(|d| d.file_name().map(|n| n.to_string_lossy().to_string())).collect();
+    let expected = |name: &str, suite: &str| shard.is_none_or(|s| s.takes(name)) && suites.iter().any(|x| x == suite);
+    all.extend(compare::missing_scenes(dir, &scenes, kind, expected)?);
     let worst = compare::worst_per_group(&all);
     print!("{}", compare::table(&worst));
     let fails = compare::failures(&all);

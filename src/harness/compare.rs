@@ -70,6 +70,14 @@ impl Ctx<'_> {
         }
     }
 
+    /// A comparison that cannot be made (a missing or extra baseline item): never passes.
+    pub fn unmatched(&self, quantity: &str, note: String) -> Finding {
+        let mut f = self.finding(quantity, None, f64::NAN, f64::NAN, "");
+        f.diff = f64::NAN;
+        f.note = note;
+        f
+    }
+
     /// Worst difference of one column over the steps both histories have. Steps present in only
     /// one of them make the finding unmatched (NaN) when `require_same_steps`.
     pub fn column(&self, ours: &History, theirs: &History, col: &str, require_same_steps: bool) -> Option<Finding> {
@@ -104,17 +112,23 @@ const BASELINE_COLUMNS: [&str; 8] = ["t_s", "cx", "cy", "cs", "fn_n", "mu", "fx_
 /// history column and every metric.
 pub fn against_results(ours: &StoredScene, theirs: Option<&StoredScene>, against: Against) -> Vec<Finding> {
     let mut out = Vec::new();
+    if let Some(t) = theirs {
+        out.extend(expected_sets(ours, t, against));
+    }
     for (solver, h) in &ours.histories {
         let ctx = Ctx { scene: &ours.name, solver, against };
         let Some(th) = theirs.and_then(|t| t.histories.get(solver)) else {
-            let mut f = ctx.finding("fx_over_fn", None, f64::NAN, f64::NAN, "");
-            f.note = format!(
+            let note = format!(
                 "no {} data for this scene and solver (run `creepbench bless` to accept new results)",
                 against.label()
             );
-            out.push(f);
+            out.push(ctx.unmatched("fx_over_fn", note));
             continue;
         };
+        if h.extra_columns != th.extra_columns {
+            let note = format!("columns differ: here {:?}, there {:?}", h.extra_columns, th.extra_columns);
+            out.push(ctx.unmatched("columns", note));
+        }
         for col in BASELINE_COLUMNS.iter().map(|s| s.to_string()).chain(h.extra_columns.iter().cloned()) {
             if BASELINE_COLUMNS.contains(&col.as_str()) || th.extra_columns.contains(&col) {
                 out.extend(ctx.column(h, th, &col, true));
@@ -128,8 +142,8 @@ pub fn against_results(ours: &StoredScene, theirs: Option<&StoredScene>, against
                 match t.metrics.get(&(s.clone(), name.clone(), *step)) {
                     Some(tv) => out.push(ctx.finding(name, *step, *v, *tv, "")),
                     None => {
-                        let mut f = ctx.finding(name, *step, *v, f64::NAN, "missing there");
-                        f.diff = f64::NAN;
+                        let mut f = ctx.unmatched(name, "missing there".into());
+                        (f.step, f.ours) = (*step, *v);
                         out.push(f);
                     }
                 }
@@ -137,6 +151,50 @@ pub fn against_results(ours: &StoredScene, theirs: Option<&StoredScene>, against
         }
     }
     out
+}
+
+/// What a baseline holds that this result set does not: solvers, metric values, and a scene.json
+/// that differs (a changed scene is a changed baseline).
+fn expected_sets(ours: &StoredScene, theirs: &StoredScene, against: Against) -> Vec<Finding> {
+    let mut out = Vec::new();
+    let scene_ctx = Ctx { scene: &ours.name, solver: "-", against };
+    for solver in theirs.histories.keys().filter(|s| !ours.histories.contains_key(*s)) {
+        out.push(scene_ctx.unmatched("solvers", format!("{} has {solver}.csv, this run has no such solver", against.label())));
+    }
+    for (solver, name, step) in theirs.metrics.keys().filter(|k| !ours.metrics.contains_key(*k)) {
+        let ctx = Ctx { scene: &ours.name, solver, against };
+        let mut f = ctx.unmatched(name, format!("{} has this metric value, this run has not", against.label()));
+        f.step = *step;
+        out.push(f);
+    }
+    let (a, b) = (serde_json::to_value(&ours.scene), serde_json::to_value(&theirs.scene));
+    if let (Ok(serde_json::Value::Object(a)), Ok(serde_json::Value::Object(b))) = (a, b) {
+        let differ: Vec<&String> = a.keys().chain(b.keys().filter(|k| !a.contains_key(*k))).filter(|k| a.get(*k) != b.get(*k)).collect();
+        if !differ.is_empty() {
+            out.push(scene_ctx.unmatched("scene.json", format!("resolved scene differs in {differ:?}")));
+        }
+    }
+    out
+}
+
+/// The scenes of a baseline folder that this result set lacks, among those it is `expected` to
+/// produce (by name and suite folder: a shard expects its own, a suite the scenes blessed from
+/// it): each is a failure, so a baseline does not vanish unnoticed.
+pub fn missing_scenes(
+    dir: &std::path::Path,
+    scenes: &[StoredScene],
+    against: Against,
+    expected: impl Fn(&str, &str) -> bool,
+) -> Result<Vec<Finding>, Error> {
+    let mut out = Vec::new();
+    for n in results::scene_names(dir).into_iter().filter(|n| !scenes.iter().any(|s| &s.name == n)) {
+        let theirs = results::read_scene(dir, &n)?;
+        if expected(&n, &theirs.scene.suite) {
+            let ctx = Ctx { scene: &n, solver: "-", against };
+            out.push(ctx.unmatched("scene", format!("{} has this scene of suite {:?}, the run did not produce it", against.label(), theirs.scene.suite)));
+        }
+    }
+    Ok(out)
 }
 
 /// Every comparison of a result set: with the references and, if given, with a baseline result

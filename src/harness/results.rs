@@ -119,6 +119,16 @@ pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
         timing: BTreeMap::new(),
         scene,
     };
+    // Every history in the folder is one scene.json lists: an extra file is not silently ignored.
+    for entry in std::fs::read_dir(&d).map_err(Error::io(&d))?.flatten() {
+        let file = entry.file_name().to_string_lossy().to_string();
+        if let Some(stem) = file.strip_suffix(".csv") {
+            if !["metrics", "timing"].contains(&stem) && !s.scene.solvers.iter().any(|x| x == stem) {
+                let source = FormatError::MissingColumn { column: format!("{stem} in scene.json's solvers (the folder holds {file})") };
+                return Err(Error::Format { path: d.join("scene.json"), source });
+            }
+        }
+    }
     for solver in &s.scene.solvers {
         let file = d.join(format!("{solver}.csv"));
         let h = History::from_csv(solver, &read(&format!("{solver}.csv"))?).map_err(Error::format(&file))?;

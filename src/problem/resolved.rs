@@ -50,6 +50,10 @@ pub struct ResolvedScene {
     /// The contact geometry's kind (`hertz`; absent in result folders written before it existed).
     #[serde(default = "hertz")]
     pub geometry: String,
+    /// The name of the folder of the scene file: its suite (`thesis`, `stability`, …), so that
+    /// `check` knows which blessed scenes a suite must produce.
+    #[serde(default)]
+    pub suite: String,
     /// The loading at every row (step 0 = the initial state at t = 0, when the scene has one).
     pub history: Vec<Sample>,
 }
@@ -99,6 +103,7 @@ impl ResolvedScene {
             skipped_metrics: p.skipped_metrics.clone(),
             warnings: p.warnings.clone(),
             geometry: p.geometry.kind().to_string(),
+            suite: p.scene_dir.file_name().map(|n| n.to_string_lossy().to_string()).unwrap_or_default(),
             history: p.loading.initial.iter().chain(p.loading.samples.iter()).copied().collect(),
         }
     }
