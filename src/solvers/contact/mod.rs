@@ -19,6 +19,7 @@
 //! Axes: leading edge at x = −a, material moving in +x (CONTACT rolls the other way: mirror x
 //! when comparing fields).
 
+pub mod anderson;
 pub mod convolution;
 pub mod influence;
 pub mod normal;
@@ -31,35 +32,41 @@ use crate::physics::{Grid, HertzContact, Material};
 use crate::problem::{Problem, Sample};
 use crate::scene::InitKind;
 use influence::Kernel;
-use normal::{solve_normal, NormalParams};
+use normal::{NormalParams, NormalSolver};
 use std::fmt;
 use tangential::{ElementState, StepResult, TangentialParams, TangentialSolver};
 
 /// Errors of the contact core; no function of these modules panics on bad numbers.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ContactError {
-    /// An input value is out of range or not finite (which, and why).
-    InvalidInput(String),
-    /// Array lengths do not match the grid (what was expected).
-    SizeMismatch(String),
+    /// An input value is out of range or not finite.
+    #[error("invalid input: {name} = {value} (must be {requirement})")]
+    OutOfRange { name: &'static str, value: f64, requirement: &'static str },
+    /// An input array holds a non-finite value.
+    #[error("invalid input: {name} is not finite at element {index}")]
+    NotFinite { name: &'static str, index: usize },
+    /// A grid needs at least one element along each axis.
+    #[error("invalid input: a grid of {mx} x {my} elements (needs mx, my >= 1)")]
+    EmptyGrid { mx: usize, my: usize },
+    /// An array's length does not match the grid.
+    #[error("size mismatch: {name} has {len} entries, expected {expected}")]
+    SizeMismatch { name: &'static str, len: usize, expected: usize },
+    /// Two kernels belong to different grids (elements along x and y).
+    #[error("size mismatch: kernels of a {}x{} and a {}x{} grid (or of different element sizes)", expected.0, expected.1, got.0, got.1)]
+    GridMismatch { expected: (usize, usize), got: (usize, usize) },
+    /// The rolling step of a solve differs from the shift of the solver's shifted kernel.
+    #[error("invalid input: dq = {dq_mm} mm differs from the shifted kernel's shift {shift_mm} mm")]
+    ShiftMismatch { dq_mm: f64, shift_mm: f64 },
     /// No grid element can carry load (e.g. the grid is too coarse to hold any contact).
-    NoContact(String),
+    #[error("no contact: no grid element carries load")]
+    NoContact,
     /// A computation produced a non-finite number (where).
-    NonFinite(String),
+    #[error("non-finite result: {0}")]
+    NonFinite(&'static str),
+    /// A convolver on the FFT path has no FFT data (an internal inconsistency).
+    #[error("internal: FFT data missing for the FFT path")]
+    MissingFft,
 }
-
-impl fmt::Display for ContactError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            ContactError::InvalidInput(s) => write!(f, "invalid input: {s}"),
-            ContactError::SizeMismatch(s) => write!(f, "size mismatch: {s}"),
-            ContactError::NoContact(s) => write!(f, "no contact: {s}"),
-            ContactError::NonFinite(s) => write!(f, "non-finite result: {s}"),
-        }
-    }
-}
-
-impl std::error::Error for ContactError {}
 
 /// Hertzian undeformed distance `h = A x² + B y²` [mm] at the element centres, with the
 /// curvatures that give the ellipse `hertz` under its load (shared Hertz module).
@@ -87,23 +94,30 @@ pub struct Field {
     pub state: Vec<ElementState>,
 }
 
-/// The normal solution and the tangential solver for one load.
+/// The normal solution of one load (set into the tangential solver by [`load`]).
 struct Loaded {
     fn_n: f64,
     pn: Vec<f64>,
     pn_sum: f64,
     pn_max: f64,
-    solver: TangentialSolver,
 }
 
 fn fail(problem: &Problem, e: impl fmt::Display) -> Error {
     super::fail(problem, "contact", e.to_string())
 }
 
-fn load(problem: &Problem, k0: &Kernel, ks: &Kernel, fn_n: f64) -> Result<Loaded, Error> {
+/// Solves the normal problem at `fn_n` and sets its pressure into the tangential solver; the
+/// kernels and plans of both solvers are built once per run.
+fn load(
+    problem: &Problem,
+    normal: &mut NormalSolver,
+    solver: &mut TangentialSolver,
+    fn_n: f64,
+) -> Result<Loaded, Error> {
     let hertz = if fn_n == problem.hertz.fn_n { problem.hertz } else { problem.hertz.at_load(fn_n) };
     let h = undeformed_distance(&problem.grid, &hertz, &problem.material);
-    let normal = solve_normal(&h, k0, fn_n, &NormalParams::default())
+    let normal = normal
+        .solve(&h, fn_n, &NormalParams::default())
         .map_err(|e| fail(problem, format!("normal problem at FN = {fn_n} N: {e}")))?;
     if !normal.converged {
         return Err(fail(
@@ -121,10 +135,9 @@ fn load(problem: &Problem, k0: &Kernel, ks: &Kernel, fn_n: f64) -> Result<Loaded
             format!("no element of the {}x{} grid carries load", problem.grid.mx, problem.grid.my),
         ));
     }
-    let (x, y) = problem.grid.centres();
-    let solver = TangentialSolver::new(k0, ks, &normal.pn_mpa, &x, &y).map_err(|e| fail(problem, e))?;
+    solver.set_pressure(&normal.pn_mpa).map_err(|e| fail(problem, e))?;
     let pn_max = normal.pn_mpa.iter().fold(0.0f64, |a, &b| a.max(b));
-    Ok(Loaded { fn_n, pn: normal.pn_mpa, pn_sum, pn_max, solver })
+    Ok(Loaded { fn_n, pn: normal.pn_mpa, pn_sum, pn_max })
 }
 
 impl ContactSolver {
@@ -136,6 +149,9 @@ impl ContactSolver {
             Kernel::new(g.mx, g.my, g.dx_mm, g.dy_mm, mat.g_mpa, mat.poisson, shift).map_err(|e| fail(problem, e))
         };
         let (k0, ks) = (kernel(0.0)?, kernel(problem.dq_mm)?);
+        let (x, y) = g.centres();
+        let mut solver = TangentialSolver::new(&k0, &ks, &x, &y).map_err(|e| fail(problem, e))?;
+        let mut normal = NormalSolver::new(&k0).map_err(|e| fail(problem, e))?;
         let params = |s: &Sample| {
             let mut p = TangentialParams::new(s.mu, s.cx, s.cy, s.cs, problem.dq_mm);
             p.tol = problem.contact_solver.tolerance;
@@ -152,7 +168,7 @@ impl ContactSolver {
                 r.n_slip as f64,
                 r.iterations as f64,
                 r.residual,
-                f64::from(u8::from(r.converged)),
+                f64::from(u8::from(r.termination.converged())),
                 l.pn_max,
             ];
             h.rows.push(Row::new(s, fx, fy, extra));
@@ -167,14 +183,13 @@ impl ContactSolver {
             }
         };
         let first = problem.initial.unwrap_or(problem.samples[0]);
-        let mut l = load(problem, &k0, &ks, first.fn_n)?;
+        let mut l = load(problem, &mut normal, &mut solver, first.fn_n)?;
         if !problem.is_transient() {
             for s in &problem.samples {
                 if s.fn_n != l.fn_n {
-                    l = load(problem, &k0, &ks, s.fn_n)?;
+                    l = load(problem, &mut normal, &mut solver, s.fn_n)?;
                 }
-                let r =
-                    l.solver.steady(&params(s), None).map_err(|e| fail(problem, format!("step {}: {e}", s.step)))?;
+                let r = solver.steady(&params(s), None).map_err(|e| fail(problem, format!("step {}: {e}", s.step)))?;
                 record(&mut h, s, &l, &r);
             }
             return Ok((h, fields));
@@ -183,18 +198,17 @@ impl ContactSolver {
         let (mut prev_x, mut prev_y) = (vec![0.0; n], vec![0.0; n]);
         if let (InitKind::Steady, Some(s0)) = (problem.init, problem.initial) {
             let r =
-                l.solver.steady(&params(&s0), None).map_err(|e| fail(problem, format!("initial steady state: {e}")))?;
+                solver.steady(&params(&s0), None).map_err(|e| fail(problem, format!("initial steady state: {e}")))?;
             record(&mut h, &s0, &l, &r);
             (prev_x, prev_y) = (r.px, r.py);
         }
         let mut older: Option<(Vec<f64>, Vec<f64>)> = None;
         for s in &problem.samples {
             if s.fn_n != l.fn_n {
-                l = load(problem, &k0, &ks, s.fn_n)?;
+                l = load(problem, &mut normal, &mut solver, s.fn_n)?;
                 older = None;
             }
-            let r = l
-                .solver
+            let r = solver
                 .transient_step(&params(s), &prev_x, &prev_y, older.as_ref().map(|(a, b)| (a.as_slice(), b.as_slice())))
                 .map_err(|e| fail(problem, format!("step {}: {e}", s.step)))?;
             if r.px.iter().chain(&r.py).any(|v| !v.is_finite()) {
