@@ -11,16 +11,16 @@
 //! * adhesion `s_k = 0, |p_k| <= g_k`; slip `|p_k| = g_k, s_k = lambda p_k/|p_k|`, `lambda >= 0`.
 //!
 //! The modules:
-//! * [`element`]: the local 2x2 problem of one element with the others fixed (stick, or slip on
+//! * `element`: the local 2x2 problem of one element with the others fixed (stick, or slip on
 //!   the bound by a safeguarded Newton iteration), shared by every method;
-//! * [`operator`]: the FFT products and coefficient operators, built once per grid, and the
+//! * `operator`: the FFT products and coefficient operators, built once per grid, and the
 //!   incremental slip update;
-//! * [`gauss_seidel`]: projected Gauss–Seidel with exact incremental slip updates (CONTACT's
+//! * `gauss_seidel`: projected Gauss–Seidel with exact incremental slip updates (CONTACT's
 //!   ConvexGS); transient steps sweep each row leading edge first, steady rolling trailing edge
 //!   first (the other order diverges for `A - A_s`); the fallback of the two methods below;
-//! * [`cg`]: transient steps by a preconditioned projected conjugate-gradient method on the
+//! * `cg`: transient steps by a preconditioned projected conjugate-gradient method on the
 //!   adhesion tractions and the slip directions (CONTACT's TangCG type), FFT products;
-//! * [`steady`]: steady rolling by an Anderson-accelerated (Walker & Ni 2011) preconditioned
+//! * `steady`: steady rolling by an Anderson-accelerated (Walker & Ni 2011) preconditioned
 //!   projected fixed-point map that inverts the shift along the adhesion rows.
 //!
 //! All stop when the largest traction change a local solve would make, relative to `max(g)`, is
@@ -73,7 +73,7 @@ pub struct TangentialParams {
 /// Solver choice for steady rolling.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum SteadyMethod {
-    /// Anderson-accelerated preconditioned projected fixed-point iteration ([`steady`]),
+    /// Anderson-accelerated preconditioned projected fixed-point iteration (`steady`),
     /// Gauss–Seidel sweeps taking over if the acceleration stalls.
     #[default]
     Accelerated,
@@ -85,10 +85,10 @@ pub enum SteadyMethod {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Method {
     /// FFT-based projected conjugate gradients on the adhesion set and the slip directions
-    /// (TangCG type, [`cg`]), falling back to Gauss–Seidel if it does not converge.
+    /// (TangCG type, `cg`), falling back to Gauss–Seidel if it does not converge.
     #[default]
     ConjugateGradient,
-    /// Projected Gauss–Seidel with exact incremental slip updates (ConvexGS, [`gauss_seidel`]).
+    /// Projected Gauss–Seidel with exact incremental slip updates (ConvexGS, `gauss_seidel`).
     GaussSeidel,
 }
 
