@@ -1,19 +1,43 @@
-//! The traction bound |τ| ≤ μ p (thesis Eq. 2.27, 3.11) and its direction-keeping projection.
+//! The traction bound |τ| ≤ g = μ p (thesis Eq. 2.27, 3.11) and its direction-keeping
+//! projections, written once for every solver.
+//!
+//! One policy for degenerate input, in every routine here: a traction is inside the bound only if
+//! `τx² + τy² ≤ g²` holds (so a NaN traction or a NaN bound is outside; `g` is `μ p ≥ 0`), and a
+//! traction that is outside is projected to zero when the bound is not positive (`g ≤ 0` or NaN)
+//! or the traction's modulus is not finite (NaN, or an overflowing square).
+
+/// Whether the traction (τx, τy) lies on or inside the disk of radius `g` (`τx² + τy² ≤ g²`).
+#[inline(always)]
+pub fn within_bound(tx: f64, ty: f64, g: f64) -> bool {
+    tx * tx + ty * ty <= g * g
+}
 
 /// Project the traction (τx, τy) onto the disk of radius `g = μ p` keeping its direction
 /// (thesis Eq. 2.29, written without the quadrant cases: τ ← g τ/|τ| when |τ| > g).
 /// Returns the projected traction and whether the bound was active (the element slips).
 #[inline]
 pub fn project_to_bound(tx: f64, ty: f64, g: f64) -> (f64, f64, bool) {
-    let n2 = tx * tx + ty * ty;
-    if n2 > g * g {
-        if g <= 0.0 {
-            return (0.0, 0.0, true);
-        }
-        let s = g / n2.sqrt();
-        (tx * s, ty * s, true)
-    } else {
+    if within_bound(tx, ty, g) {
         (tx, ty, false)
+    } else {
+        let (x, y) = scale_to_bound(tx, ty, g);
+        (x, y, true)
+    }
+}
+
+/// Scale the traction (τx, τy) onto the circle `|τ| = g` keeping its direction: `g τ/|τ|`
+/// (thesis Eq. 2.29 for an element known to slip). The zero traction has no direction and stays
+/// zero; otherwise the module policy applies (zero for `g ≤ 0`, NaN `g` or a non-finite `|τ|`).
+#[inline]
+pub fn scale_to_bound(tx: f64, ty: f64, g: f64) -> (f64, f64) {
+    let a = (tx * tx + ty * ty).sqrt();
+    if !(g > 0.0 && a.is_finite()) {
+        (0.0, 0.0)
+    } else if a > 0.0 {
+        let s = g / a;
+        (tx * s, ty * s)
+    } else {
+        (tx, ty)
     }
 }
 
@@ -29,5 +53,30 @@ mod tests {
         assert!((y / x - (-4.0 / 3.0)).abs() < 1e-12);
         assert_eq!(project_to_bound(0.3, 0.4, 1.0), (0.3, 0.4, false));
         assert_eq!(project_to_bound(1.0, 0.0, 0.0), (0.0, 0.0, true));
+    }
+
+    #[test]
+    fn one_policy_for_degenerate_input() {
+        assert_eq!(project_to_bound(0.0, 0.0, 0.0), (0.0, 0.0, false));
+        assert_eq!(project_to_bound(f64::NAN, 1.0, 2.0), (0.0, 0.0, true));
+        assert_eq!(project_to_bound(1.0, 1.0, f64::NAN), (0.0, 0.0, true));
+        assert_eq!(project_to_bound(1e300, -1e300, 2.0), (0.0, 0.0, true));
+        assert_eq!(project_to_bound(2.0, 0.0, -1.0), (0.0, 0.0, true));
+        assert_eq!(scale_to_bound(0.0, 0.0, 2.0), (0.0, 0.0));
+        assert_eq!(scale_to_bound(0.5, 0.0, 2.0), (2.0, 0.0));
+        assert_eq!(scale_to_bound(0.5, 0.0, 0.0), (0.0, 0.0));
+        assert_eq!(scale_to_bound(f64::NAN, 0.0, 1.0), (0.0, 0.0));
+    }
+
+    /// The projection scales by `g / sqrt(τx² + τy²)`: the arithmetic every solver used before.
+    #[test]
+    fn scale_factor_is_g_over_the_modulus() {
+        let (tx, ty, g): (f64, f64, f64) = (0.7310, -1.913, 0.3127);
+        let s = g / (tx * tx + ty * ty).sqrt();
+        assert_eq!(project_to_bound(tx, ty, g), (tx * s, ty * s, true));
+        assert_eq!(scale_to_bound(0.1 * tx, 0.1 * ty, g), {
+            let s = g / ((0.1 * tx) * (0.1 * tx) + (0.1 * ty) * (0.1 * ty)).sqrt();
+            (0.1 * tx * s, 0.1 * ty * s)
+        });
     }
 }

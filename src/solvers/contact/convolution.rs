@@ -23,10 +23,8 @@ pub enum ConvPath {
     Fft,
 }
 
-/// Grid size (number of elements `mx*my`) from which the FFT path is chosen automatically.
-/// Measured (release, 2-core Xeon, all elements active, tangential pair, FFT length then `2m-1`):
-/// 8x8 direct 3.3 us / FFT 3.7 us; 12x12 15 / 6 us; 22x22 155 / 26 us; 44x44 3.4 ms / 0.10 ms;
-/// 88x88 48 ms / 0.52 ms. The crossover lies near 10x10.
+/// Grid size (number of elements `mx*my`) from which the FFT path is chosen automatically: the
+/// crossover of the direct sum's `O(n^2)` and the FFT's `O(N log N)` cost, near 10x10.
 pub const FFT_CROSSOVER_ELEMENTS: usize = 10 * 10;
 
 /// Automatic path choice by grid size (see [`FFT_CROSSOVER_ELEMENTS`]).
@@ -38,10 +36,8 @@ pub fn auto_path(mx: usize, my: usize) -> ConvPath {
     }
 }
 
-/// Smallest even integer `>= n` whose prime factors are 2, 3, 5, 7 or 11 (fast FFT length).
-/// Even lengths are markedly faster with rustfft's AVX kernels: measured (release, 2-core Xeon,
-/// tangential pair, `2m-1` vs the length chosen here) m = 22: 43 -> 44: 49 -> 18 us; m = 44:
-/// 87 -> 88: 144 -> 69 us; m = 88: 175 -> 176: 364 -> 306 us; m = 128: 255 -> 256: 1180 -> 594 us.
+/// Smallest even integer `>= n` whose prime factors are 2, 3, 5, 7 or 11 (fast FFT length; even
+/// lengths suit rustfft's AVX kernels).
 #[allow(clippy::manual_is_multiple_of)] // is_multiple_of needs Rust 1.87; MSRV is 1.82
 fn fft_len(n: usize) -> usize {
     let mut m = n.max(2);
@@ -252,15 +248,13 @@ impl Convolver {
     /// Convolver for `kernel` with an explicit path.
     pub fn new(kernel: &Kernel, path: ConvPath) -> Result<Convolver, ContactError> {
         let (mx, my) = (kernel.mx, kernel.my);
+        if mx == 0 || my == 0 {
+            return Err(ContactError::EmptyGrid { mx, my });
+        }
         let nk = (2 * mx - 1) * (2 * my - 1);
-        if mx == 0
-            || my == 0
-            || kernel.zz.len() != nk
-            || kernel.xx.len() != nk
-            || kernel.yy.len() != nk
-            || kernel.xy.len() != nk
-        {
-            return Err(ContactError::SizeMismatch(format!("kernel arrays must have (2mx-1)(2my-1) = {nk} entries")));
+        let lengths = [&kernel.zz, &kernel.xx, &kernel.yy, &kernel.xy].map(|v| v.len());
+        if let Some(&len) = lengths.iter().find(|&&l| l != nk) {
+            return Err(ContactError::SizeMismatch { name: "kernel array", len, expected: nk });
         }
         let fft = match path {
             ConvPath::Fft => Some(FftData::new(kernel, fft_len(2 * mx - 1), fft_len(2 * my - 1))),
@@ -285,11 +279,10 @@ impl Convolver {
     /// the inverse of the 2x2 tangential symbol), i.e. the inverse of the periodised convolution:
     /// an approximate inverse of `A` used as preconditioner (symbols clamped to stay positive).
     /// Its [`Convolver::tangential`] runs in single precision: a preconditioner changes only the
-    /// path to the solution (measured: the same CG iterations per step to 1e-7 on the thesis
-    /// cases), and the `f32` transforms are about twice as fast.
+    /// path to the solution, not the solution.
     pub fn inverse_of(kernel: &Kernel) -> Result<Convolver, ContactError> {
         let mut c = Convolver::new(kernel, ConvPath::Fft)?;
-        let f = c.fft.as_mut().ok_or_else(|| ContactError::InvalidInput("FFT data missing for the FFT path".into()))?;
+        let f = c.fft.as_mut().ok_or(ContactError::MissingFft)?;
         let scale = 1.0 / (f.nx * f.ny) as f64;
         let amax = f.sxx.iter().chain(&f.syy).fold(0.0f64, |m, v| m.max(v.re));
         let zmax = f.szz.iter().fold(0.0f64, |m, v| m.max(v.re));
@@ -334,17 +327,15 @@ impl Convolver {
     }
 
     /// Every array must have `mx*my` entries, and so must the mask if given.
-    fn check(&self, arrays: &[(&str, &[f64])], mask: Option<&[bool]>) -> Result<(), ContactError> {
+    fn check(&self, arrays: &[(&'static str, &[f64])], mask: Option<&[bool]>) -> Result<(), ContactError> {
         let n = self.mx * self.my;
-        for (name, v) in arrays {
+        for &(name, v) in arrays {
             if v.len() != n {
-                return Err(ContactError::SizeMismatch(format!("{name} has {} entries, grid has {n}", v.len())));
+                return Err(ContactError::SizeMismatch { name, len: v.len(), expected: n });
             }
         }
         match mask {
-            Some(m) if m.len() != n => {
-                Err(ContactError::SizeMismatch(format!("mask has {} entries, grid has {n}", m.len())))
-            }
+            Some(m) if m.len() != n => Err(ContactError::SizeMismatch { name: "mask", len: m.len(), expected: n }),
             _ => Ok(()),
         }
     }
@@ -379,10 +370,7 @@ impl Convolver {
             }
             ConvPath::Fft => {
                 let (mx, my) = (self.mx, self.my);
-                let f = self
-                    .fft
-                    .as_mut()
-                    .ok_or_else(|| ContactError::InvalidInput("FFT data missing for the FFT path".into()))?;
+                let f = self.fft.as_mut().ok_or(ContactError::MissingFft)?;
                 let nx = f.nx;
                 let zero = Complex::new(0.0, 0.0);
                 for j in 0..my {
@@ -446,10 +434,7 @@ impl Convolver {
             }
             ConvPath::Fft => {
                 let (mx, my) = (self.mx, self.my);
-                let f = self
-                    .fft
-                    .as_mut()
-                    .ok_or_else(|| ContactError::InvalidInput("FFT data missing for the FFT path".into()))?;
+                let f = self.fft.as_mut().ok_or(ContactError::MissingFft)?;
                 let io = PairIo { mx, my, px, py, mask, ux, uy };
                 match self.fft32.as_mut() {
                     Some(f32data) => tangential_dispatch(f32data, io),

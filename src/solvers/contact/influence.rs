@@ -106,21 +106,21 @@ impl Kernel {
         shift_mm: f64,
     ) -> Result<Kernel, ContactError> {
         if mx == 0 || my == 0 {
-            return Err(ContactError::InvalidInput(format!("kernel needs mx, my >= 1 (got {mx} x {my})")));
+            return Err(ContactError::EmptyGrid { mx, my });
         }
-        if !(dx_mm.is_finite() && dx_mm > 0.0 && dy_mm.is_finite() && dy_mm > 0.0) {
-            return Err(ContactError::InvalidInput(format!(
-                "element size must be finite and > 0 (dx = {dx_mm}, dy = {dy_mm})"
-            )));
-        }
-        if !(g_mpa.is_finite() && g_mpa > 0.0) {
-            return Err(ContactError::InvalidInput(format!("shear modulus G must be finite and > 0 (got {g_mpa})")));
+        let positive = "finite and > 0";
+        for (name, value) in
+            [("element size dx [mm]", dx_mm), ("element size dy [mm]", dy_mm), ("shear modulus G [MPa]", g_mpa)]
+        {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(ContactError::OutOfRange { name, value, requirement: positive });
+            }
         }
         if !(nu.is_finite() && (-1.0..0.5).contains(&nu)) {
-            return Err(ContactError::InvalidInput(format!("Poisson's ratio must lie in [-1, 0.5) (got {nu})")));
+            return Err(ContactError::OutOfRange { name: "Poisson's ratio", value: nu, requirement: "in [-1, 0.5)" });
         }
         if !shift_mm.is_finite() {
-            return Err(ContactError::InvalidInput(format!("kernel shift must be finite (got {shift_mm})")));
+            return Err(ContactError::OutOfRange { name: "kernel shift [mm]", value: shift_mm, requirement: "finite" });
         }
         let nkx = 2 * mx - 1;
         let nky = 2 * my - 1;
@@ -144,7 +144,7 @@ impl Kernel {
             }
         }
         if zz.iter().chain(xx.iter()).chain(yy.iter()).chain(xy.iter()).any(|v| !v.is_finite()) {
-            return Err(ContactError::NonFinite("influence coefficients".into()));
+            return Err(ContactError::NonFinite("influence coefficients"));
         }
         Ok(Kernel { mx, my, dx_mm, dy_mm, shift_mm, zz, xx, yy, xy })
     }
@@ -175,7 +175,7 @@ impl Kernel {
     /// difference of the shifts.
     pub fn difference(&self, other: &Kernel) -> Result<Kernel, ContactError> {
         if self.mx != other.mx || self.my != other.my || self.zz.len() != other.zz.len() {
-            return Err(ContactError::SizeMismatch("kernels of different grids cannot be subtracted".into()));
+            return Err(ContactError::GridMismatch { expected: (self.mx, self.my), got: (other.mx, other.my) });
         }
         let sub = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x - y).collect();
         Ok(Kernel {

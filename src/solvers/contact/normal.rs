@@ -38,149 +38,178 @@ pub struct NormalSolution {
     pub converged: bool,
 }
 
+/// The normal solver of one grid: the convolver of the unshifted kernel's `zz` part, built once
+/// and used for every load.
+pub struct NormalSolver {
+    conv: Convolver,
+    n: usize,
+    area_mm2: f64,
+}
+
 /// Solves the normal problem for prescribed total force `fn_n` [N] and undeformed distance
-/// `h_mm` [mm] per element, with the (unshifted) influence kernel `kernel` (its `zz` part).
-/// Polonsky & Keer (1999), CG steps restricted to the current contact set, negative pressures
-/// clipped, overlap elements re-entered, total force imposed by scaling after every step.
+/// `h_mm` [mm] per element with the (unshifted) influence kernel `kernel` (its `zz` part), building
+/// the convolver for this one call (see [`NormalSolver`] to keep it).
 pub fn solve_normal(
     h_mm: &[f64],
     kernel: &Kernel,
     fn_n: f64,
     params: &NormalParams,
 ) -> Result<NormalSolution, ContactError> {
-    let n = kernel.mx * kernel.my;
-    if h_mm.len() != n {
-        return Err(ContactError::SizeMismatch(format!("h has {} entries, grid has {n}", h_mm.len())));
-    }
-    if !(fn_n.is_finite() && fn_n > 0.0) {
-        return Err(ContactError::InvalidInput(format!("total normal force must be finite and > 0 (got {fn_n} N)")));
-    }
-    if let Some(k) = h_mm.iter().position(|v| !v.is_finite()) {
-        return Err(ContactError::InvalidInput(format!("undeformed distance is not finite at element {k}")));
-    }
-    if !(params.tol.is_finite() && params.tol > 0.0) || params.max_iter == 0 {
-        return Err(ContactError::InvalidInput("normal solver needs tol > 0 and max_iter >= 1".into()));
-    }
-    let area = kernel.dx_mm * kernel.dy_mm;
-    let mut conv = Convolver::auto(kernel)?;
+    NormalSolver::new(kernel)?.solve(h_mm, fn_n, params)
+}
 
-    // Start: uniform pressure carrying FN on all elements.
-    let mut p = vec![fn_n / (area * n as f64); n];
-    let mut p_old = vec![0.0; n];
-    let mut u = vec![0.0; n];
-    let mut g = vec![0.0; n];
-    let mut t = vec![0.0; n];
-    let mut r = vec![0.0; n];
-    let mut g_old = 1.0;
-    let mut delta_flag = false;
-    let mut residual = f64::INFINITY;
-    let mut iterations = 0;
-    let mut converged = false;
+impl NormalSolver {
+    /// The solver for the grid of the unshifted kernel `kernel`.
+    pub fn new(kernel: &Kernel) -> Result<NormalSolver, ContactError> {
+        Ok(NormalSolver {
+            conv: Convolver::auto(kernel)?,
+            n: kernel.mx * kernel.my,
+            area_mm2: kernel.dx_mm * kernel.dy_mm,
+        })
+    }
 
-    while iterations < params.max_iter {
-        iterations += 1;
+    /// Solves the normal problem for prescribed total force `fn_n` [N] and undeformed distance
+    /// `h_mm` [mm] per element. Polonsky & Keer (1999), CG steps restricted to the current
+    /// contact set, negative pressures clipped, overlap elements re-entered, total force imposed
+    /// by scaling after every step.
+    pub fn solve(&mut self, h_mm: &[f64], fn_n: f64, params: &NormalParams) -> Result<NormalSolution, ContactError> {
+        let (n, area, conv) = (self.n, self.area_mm2, &mut self.conv);
+        if h_mm.len() != n {
+            return Err(ContactError::SizeMismatch { name: "h", len: h_mm.len(), expected: n });
+        }
+        if !(fn_n.is_finite() && fn_n > 0.0) {
+            return Err(ContactError::OutOfRange {
+                name: "total normal force [N]",
+                value: fn_n,
+                requirement: "finite and > 0",
+            });
+        }
+        if let Some(index) = h_mm.iter().position(|v| !v.is_finite()) {
+            return Err(ContactError::NotFinite { name: "undeformed distance", index });
+        }
+        if !(params.tol.is_finite() && params.tol > 0.0) {
+            return Err(ContactError::OutOfRange {
+                name: "normal tol",
+                value: params.tol,
+                requirement: "finite and > 0",
+            });
+        }
+        if params.max_iter == 0 {
+            return Err(ContactError::OutOfRange { name: "normal max_iter", value: 0.0, requirement: ">= 1" });
+        }
+
+        // Start: uniform pressure carrying FN on all elements.
+        let mut p = vec![fn_n / (area * n as f64); n];
+        let mut p_old = vec![0.0; n];
+        let mut u = vec![0.0; n];
+        let mut g = vec![0.0; n];
+        let mut t = vec![0.0; n];
+        let mut r = vec![0.0; n];
+        let mut g_old = 1.0;
+        let mut delta_flag = false;
+        let mut residual = f64::INFINITY;
+        let mut iterations = 0;
+        let mut converged = false;
+
+        while iterations < params.max_iter {
+            iterations += 1;
+            conv.normal(&p, None, &mut u)?;
+            let mut nc = 0usize;
+            let mut gsum = 0.0;
+            for k in 0..n {
+                g[k] = u[k] + h_mm[k];
+                if p[k] > 0.0 {
+                    nc += 1;
+                    gsum += g[k];
+                }
+            }
+            if nc == 0 {
+                return Err(ContactError::NoContact);
+            }
+            let gbar = gsum / nc as f64;
+            let mut gg = 0.0;
+            for k in 0..n {
+                g[k] -= gbar;
+                if p[k] > 0.0 {
+                    gg += g[k] * g[k];
+                }
+            }
+            let beta = if delta_flag && g_old > 0.0 { gg / g_old } else { 0.0 };
+            for k in 0..n {
+                t[k] = if p[k] > 0.0 { g[k] + beta * t[k] } else { 0.0 };
+            }
+            g_old = gg;
+            conv.normal(&t, None, &mut r)?;
+            let mut rsum = 0.0;
+            for k in 0..n {
+                if p[k] > 0.0 {
+                    rsum += r[k];
+                }
+            }
+            let rbar = rsum / nc as f64;
+            let (mut num, mut den) = (0.0, 0.0);
+            for k in 0..n {
+                if p[k] > 0.0 {
+                    num += g[k] * t[k];
+                    den += (r[k] - rbar) * t[k];
+                }
+            }
+            let tau = if den != 0.0 { num / den } else { 0.0 };
+            if !tau.is_finite() {
+                return Err(ContactError::NonFinite("normal CG step length"));
+            }
+            p_old.copy_from_slice(&p);
+            for k in 0..n {
+                if p[k] > 0.0 {
+                    p[k] = (p[k] - tau * t[k]).max(0.0);
+                }
+            }
+            // Overlapping elements outside the contact set re-enter (Polonsky & Keer, step 9).
+            let mut n_overlap = 0usize;
+            for k in 0..n {
+                if p[k] <= 0.0 && g[k] < 0.0 {
+                    p[k] -= tau * g[k];
+                    n_overlap += 1;
+                }
+            }
+            delta_flag = n_overlap == 0;
+            let total: f64 = p.iter().sum::<f64>() * area;
+            if !(total.is_finite() && total > 0.0) {
+                return Err(ContactError::NoContact);
+            }
+            let scale = fn_n / total;
+            let mut dsum = 0.0;
+            let mut psum = 0.0;
+            for k in 0..n {
+                p[k] *= scale;
+                dsum += (p[k] - p_old[k]).abs();
+                psum += p[k];
+            }
+            residual = dsum / psum;
+            if residual < params.tol {
+                converged = true;
+                break;
+            }
+        }
+
+        // Approach: mean of h + u over the final contact set.
         conv.normal(&p, None, &mut u)?;
-        let mut nc = 0usize;
-        let mut gsum = 0.0;
-        for k in 0..n {
-            g[k] = u[k] + h_mm[k];
-            if p[k] > 0.0 {
-                nc += 1;
-                gsum += g[k];
-            }
-        }
-        if nc == 0 {
-            return Err(ContactError::NoContact(
-                "no grid element carries load (grid too coarse to hold any contact?)".into(),
-            ));
-        }
-        let gbar = gsum / nc as f64;
-        let mut gg = 0.0;
-        for k in 0..n {
-            g[k] -= gbar;
-            if p[k] > 0.0 {
-                gg += g[k] * g[k];
-            }
-        }
-        let beta = if delta_flag && g_old > 0.0 { gg / g_old } else { 0.0 };
-        for k in 0..n {
-            t[k] = if p[k] > 0.0 { g[k] + beta * t[k] } else { 0.0 };
-        }
-        g_old = gg;
-        conv.normal(&t, None, &mut r)?;
-        let mut rsum = 0.0;
+        let (mut s, mut c) = (0.0, 0usize);
         for k in 0..n {
             if p[k] > 0.0 {
-                rsum += r[k];
+                s += h_mm[k] + u[k];
+                c += 1;
             }
         }
-        let rbar = rsum / nc as f64;
-        let (mut num, mut den) = (0.0, 0.0);
-        for k in 0..n {
-            if p[k] > 0.0 {
-                num += g[k] * t[k];
-                den += (r[k] - rbar) * t[k];
-            }
+        if c == 0 {
+            return Err(ContactError::NoContact);
         }
-        let tau = if den != 0.0 { num / den } else { 0.0 };
-        if !tau.is_finite() {
-            return Err(ContactError::NonFinite("normal CG step length".into()));
+        let approach_mm = s / c as f64;
+        if !approach_mm.is_finite() || p.iter().any(|v| !v.is_finite()) {
+            return Err(ContactError::NonFinite("normal pressure"));
         }
-        p_old.copy_from_slice(&p);
-        for k in 0..n {
-            if p[k] > 0.0 {
-                p[k] = (p[k] - tau * t[k]).max(0.0);
-            }
-        }
-        // Overlapping elements outside the contact set re-enter (Polonsky & Keer, step 9).
-        let mut n_overlap = 0usize;
-        for k in 0..n {
-            if p[k] <= 0.0 && g[k] < 0.0 {
-                p[k] -= tau * g[k];
-                n_overlap += 1;
-            }
-        }
-        delta_flag = n_overlap == 0;
-        let total: f64 = p.iter().sum::<f64>() * area;
-        if !(total.is_finite() && total > 0.0) {
-            return Err(ContactError::NoContact(
-                "no grid element can carry load (grid too coarse to hold any contact?)".into(),
-            ));
-        }
-        let scale = fn_n / total;
-        let mut dsum = 0.0;
-        let mut psum = 0.0;
-        for k in 0..n {
-            p[k] *= scale;
-            dsum += (p[k] - p_old[k]).abs();
-            psum += p[k];
-        }
-        residual = dsum / psum;
-        if residual < params.tol {
-            converged = true;
-            break;
-        }
+        Ok(NormalSolution { pn_mpa: p, approach_mm, iterations, residual, converged })
     }
-
-    // Approach: mean of h + u over the final contact set.
-    conv.normal(&p, None, &mut u)?;
-    let (mut s, mut c) = (0.0, 0usize);
-    for k in 0..n {
-        if p[k] > 0.0 {
-            s += h_mm[k] + u[k];
-            c += 1;
-        }
-    }
-    if c == 0 {
-        return Err(ContactError::NoContact(
-            "no grid element carries load (grid too coarse to hold any contact?)".into(),
-        ));
-    }
-    let approach_mm = s / c as f64;
-    if !approach_mm.is_finite() || p.iter().any(|v| !v.is_finite()) {
-        return Err(ContactError::NonFinite("normal pressure".into()));
-    }
-    Ok(NormalSolution { pn_mpa: p, approach_mm, iterations, residual, converged })
 }
 
 #[cfg(test)]

@@ -3,14 +3,13 @@
 //! transient: [`TangentialSolver::transient_step`] from the last two steps' tractions).
 
 use super::influence::Kernel;
-use super::normal::{solve_normal, NormalParams};
+use super::normal::{NormalParams, NormalSolver};
 use super::tangential::{ElementState, StepResult, TangentialParams, TangentialSolver};
 use super::ContactError;
 use crate::history::History;
 use crate::problem::{Problem, Sample};
 use crate::solvers::sample_loop::{self, Observer};
 use crate::solvers::stepper::{FieldView, Step, Stepper};
-use crate::solvers::termination::Termination;
 use crate::solvers::{always, ModelDef, SolveError};
 
 /// Kalker's exact theory for quasi-identical half-spaces (CONTACT-style).
@@ -48,19 +47,20 @@ pub enum ContactRunError {
     Step { step: usize, source: ContactError },
 }
 
-/// The normal solution and the tangential solver for one load.
+/// The normal solution at one load.
 struct Loaded {
     fn_n: f64,
     pn: Vec<f64>,
     pn_sum: f64,
     pn_max: f64,
-    solver: TangentialSolver,
 }
 
+/// The solver's state: the normal and tangential solvers (kernels and FFT plans built once per
+/// grid), the normal solution of the current load, the last two steps' tractions.
 struct Contact<'a> {
     p: &'a Problem,
-    k0: Kernel,
-    ks: Kernel,
+    normal: NormalSolver,
+    tangential: TangentialSolver,
     loaded: Option<Loaded>,
     /// The last solve (the previous traction of the next transient step).
     last: Option<StepResult>,
@@ -75,7 +75,10 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
         Kernel::new(g.mx, g.my, g.dx_mm, g.dy_mm, m.g_mpa, m.poisson, shift).map_err(ContactRunError::Kernel)
     };
     let (k0, ks) = (kernel(0.0)?, kernel(p.rolling.dq_mm)?);
-    Ok(Box::new(Contact { p, k0, ks, loaded: None, last: None, older: None, zero: vec![0.0; g.len()] }))
+    let normal = NormalSolver::new(&k0).map_err(ContactRunError::Kernel)?;
+    let (x, y) = g.centres();
+    let tangential = TangentialSolver::new(&k0, &ks, &x, &y).map_err(ContactRunError::Kernel)?;
+    Ok(Box::new(Contact { p, normal, tangential, loaded: None, last: None, older: None, zero: vec![0.0; g.len()] }))
 }
 
 impl Contact<'_> {
@@ -96,7 +99,7 @@ impl Contact<'_> {
             fx_over_fn: r.px.iter().sum::<f64>() / l.pn_sum,
             fy_over_fn: r.py.iter().sum::<f64>() / l.pn_sum,
             extra: vec![r.n_adhesion as f64, r.n_slip as f64, r.iterations as f64, r.residual, l.pn_max],
-            termination: termination(r.converged, false),
+            termination: r.termination,
         };
         self.last = Some(r);
         step
@@ -110,7 +113,9 @@ impl Stepper for Contact<'_> {
         }
         let (p, fn_n) = (self.p, at.fn_n);
         let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
-        let normal = solve_normal(&h, &self.k0, fn_n, &NormalParams::default())
+        let normal = self
+            .normal
+            .solve(&h, fn_n, &NormalParams::default())
             .map_err(|source| ContactRunError::Normal { fn_n, source })?;
         if !normal.converged {
             let (iterations, residual) = (normal.iterations, normal.residual);
@@ -120,19 +125,17 @@ impl Stepper for Contact<'_> {
         if pn_sum <= 0.0 {
             return Err(ContactRunError::NoContact { mx: p.grid.mx, my: p.grid.my, fn_n }.into());
         }
-        let (x, y) = p.grid.centres();
-        let solver = TangentialSolver::new(&self.k0, &self.ks, &normal.pn_mpa, &x, &y)
-            .map_err(|source| ContactRunError::Setup { fn_n, source })?;
+        self.tangential.set_pressure(&normal.pn_mpa).map_err(|source| ContactRunError::Setup { fn_n, source })?;
         let pn_max = normal.pn_mpa.iter().fold(0.0f64, |a, &b| a.max(b));
-        self.loaded = Some(Loaded { fn_n, pn: normal.pn_mpa, pn_sum, pn_max, solver });
+        self.loaded = Some(Loaded { fn_n, pn: normal.pn_mpa, pn_sum, pn_max });
         self.older = None;
         Ok(())
     }
 
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
         let params = self.params(at);
-        let l = self.loaded.as_mut().expect("the sample loop loads before it solves");
-        let r = l.solver.steady(&params, None).map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        let r =
+            self.tangential.steady(&params, None).map_err(|source| ContactRunError::Step { step: at.step, source })?;
         self.older = None;
         Ok(self.record(r))
     }
@@ -144,9 +147,8 @@ impl Stepper for Contact<'_> {
             None => (&self.zero, &self.zero),
         };
         let older = self.older.as_ref().map(|(a, b)| (a.as_slice(), b.as_slice()));
-        let l = self.loaded.as_mut().expect("the sample loop loads before it solves");
-        let r = l
-            .solver
+        let r = self
+            .tangential
             .transient_step(&params, px, py, older)
             .map_err(|source| ContactRunError::Step { step: at.step, source })?;
         if r.px.iter().chain(&r.py).any(|v| !v.is_finite()) {
@@ -198,13 +200,4 @@ pub fn run_with_fields(problem: &Problem, keep: &dyn Fn(usize) -> bool) -> Resul
     let observer: &mut Observer = &mut observe;
     let run = sample_loop::run(problem, &MODEL, &[], Some(observer))?;
     Ok((run.history, fields))
-}
-
-/// The termination of a tangential solve from its flags.
-pub fn termination(converged: bool, fell_back: bool) -> Termination {
-    match (converged, fell_back) {
-        (false, _) => Termination::IterationLimit,
-        (true, true) => Termination::FallbackConverged,
-        (true, false) => Termination::Converged,
-    }
 }

@@ -1,0 +1,638 @@
+//! Tangential rolling-contact problem with Coulomb friction for one transient time step or for
+//! steady rolling (Kalker 1990, sec. 5.4; Vollebregt & Kalker, CONTACT user guide), organised as
+//! CONTACT's tangential solvers: one file per method around one element solver and one set of
+//! operators.
+//!
+//! Per contact element `k` (pn_k > 0), traction bound `g_k = mu pn_k` [MPa]:
+//! * rigid slip of the step `w_k = dq (cx - cs y_k, cy + cs x_k)` [mm] ([`RigidSlip`]);
+//! * transient: previous displacement `u'_k = (A_s p')_k`, kernel shifted by `dq` (material that is
+//!   at `x_k` now was at `x_k - dq`), slip `s_k = w_k + u'_k - (A p)_k` [mm];
+//! * steady rolling: the fixed point `p' = p`, `s = w - (A - A_s) p`;
+//! * adhesion `s_k = 0, |p_k| <= g_k`; slip `|p_k| = g_k, s_k = lambda p_k/|p_k|`, `lambda >= 0`.
+//!
+//! The modules:
+//! * `element`: the local 2x2 problem of one element with the others fixed (stick, or slip on
+//!   the bound by a safeguarded Newton iteration), shared by every method;
+//! * `operator`: the FFT products and coefficient operators, built once per grid, and the
+//!   incremental slip update;
+//! * `gauss_seidel`: projected Gauss–Seidel with exact incremental slip updates (CONTACT's
+//!   ConvexGS); transient steps sweep each row leading edge first, steady rolling trailing edge
+//!   first (the other order diverges for `A - A_s`); the fallback of the two methods below;
+//! * `cg`: transient steps by a preconditioned projected conjugate-gradient method on the
+//!   adhesion tractions and the slip directions (CONTACT's TangCG type), FFT products;
+//! * `steady`: steady rolling by an Anderson-accelerated (Walker & Ni 2011) preconditioned
+//!   projected fixed-point map that inverts the shift along the adhesion rows.
+//!
+//! All stop when the largest traction change a local solve would make, relative to `max(g)`, is
+//! below `tol` (Gauss–Seidel: `max|delta p|` of the last sweep; CG: the preconditioned residual at
+//! an exact slip re-evaluation; accelerated steady: every element's local solve at the exact slip
+//! of the iterate). The bound is enforced by the crate's one projection, [`crate::physics::bound`].
+
+mod cg;
+mod element;
+mod gauss_seidel;
+mod operator;
+mod steady;
+
+use super::convolution::Convolver;
+use super::influence::Kernel;
+use super::ContactError;
+use crate::physics::bound::project_to_bound;
+use crate::physics::RigidSlip;
+use crate::solvers::termination::Termination;
+use cg::CgWork;
+use operator::{Plans, Spans};
+use steady::SteadyWork;
+
+/// Parameters of one tangential solve. Creepages are dimensionless (`cs` in 1/mm).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TangentialParams {
+    /// Coulomb friction coefficient (>= 0).
+    pub mu: f64,
+    /// Longitudinal creepage [-].
+    pub cx: f64,
+    /// Lateral creepage [-].
+    pub cy: f64,
+    /// Spin creepage [1/mm].
+    pub cs: f64,
+    /// Rolling distance per time step `dq` [mm]; must equal the shift of the shifted kernel.
+    pub dq_mm: f64,
+    /// Stop when the largest traction change a local solve would make, `max|delta p| / max(g)`,
+    /// is below `tol` (default 1e-7; Gauss–Seidel: over the last sweep).
+    pub tol: f64,
+    /// Maximum Gauss–Seidel sweeps or CG iterations (default 1000); a CG that does not converge
+    /// continues with up to as many Gauss–Seidel sweeps. The accelerated steady solver makes at
+    /// most `min(max_iter, 400)` map evaluations before up to `max_iter` Gauss–Seidel sweeps.
+    pub max_iter: usize,
+    /// Solver for transient steps (default [`Method::ConjugateGradient`]).
+    pub method: Method,
+    /// Solver for steady rolling (default [`SteadyMethod::Accelerated`]).
+    pub steady_method: SteadyMethod,
+}
+
+/// Solver choice for steady rolling.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum SteadyMethod {
+    /// Anderson-accelerated preconditioned projected fixed-point iteration (`steady`),
+    /// Gauss–Seidel sweeps taking over if the acceleration stalls.
+    #[default]
+    Accelerated,
+    /// Projected Gauss–Seidel only (trailing edge first).
+    GaussSeidel,
+}
+
+/// Solver choice for transient steps.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Method {
+    /// FFT-based projected conjugate gradients on the adhesion set and the slip directions
+    /// (TangCG type, `cg`), falling back to Gauss–Seidel if it does not converge.
+    #[default]
+    ConjugateGradient,
+    /// Projected Gauss–Seidel with exact incremental slip updates (ConvexGS, `gauss_seidel`).
+    GaussSeidel,
+}
+
+impl TangentialParams {
+    /// Parameters with the default tolerance 1e-7, 1000 iterations and the default methods.
+    pub fn new(mu: f64, cx: f64, cy: f64, cs: f64, dq_mm: f64) -> TangentialParams {
+        TangentialParams {
+            mu,
+            cx,
+            cy,
+            cs,
+            dq_mm,
+            tol: 1e-7,
+            max_iter: 1000,
+            method: Method::default(),
+            steady_method: SteadyMethod::default(),
+        }
+    }
+
+    fn validate(&self) -> Result<(), ContactError> {
+        let values =
+            [("mu", self.mu), ("cx", self.cx), ("cy", self.cy), ("cs", self.cs), ("dq", self.dq_mm), ("tol", self.tol)];
+        if let Some(&(name, value)) = values.iter().find(|(_, v)| !v.is_finite()) {
+            return Err(ContactError::OutOfRange { name, value, requirement: "finite" });
+        }
+        if self.mu < 0.0 {
+            return Err(ContactError::OutOfRange { name: "friction coefficient", value: self.mu, requirement: ">= 0" });
+        }
+        if self.dq_mm <= 0.0 {
+            return Err(ContactError::OutOfRange {
+                name: "rolling step dq [mm]",
+                value: self.dq_mm,
+                requirement: "> 0",
+            });
+        }
+        if self.tol <= 0.0 {
+            return Err(ContactError::OutOfRange { name: "tol", value: self.tol, requirement: "> 0" });
+        }
+        if self.max_iter == 0 {
+            return Err(ContactError::OutOfRange { name: "max_iter", value: 0.0, requirement: ">= 1" });
+        }
+        Ok(())
+    }
+
+    /// The rigid slip per unit rolling distance (Kalker 1990, Eq. 1.6).
+    fn rigid_slip(&self) -> RigidSlip {
+        RigidSlip::new(self.cx, self.cy, self.cs)
+    }
+}
+
+/// State of one grid element after a solve.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ElementState {
+    /// Outside the contact area (pn = 0).
+    Exterior,
+    /// Adhesion: zero slip, `|p| <= g`.
+    Adhesion,
+    /// Slip: `|p| = g`.
+    Slip,
+}
+
+/// Result of one tangential solve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StepResult {
+    /// Longitudinal traction per element [MPa] (flat index `k = j*mx + i`).
+    pub px: Vec<f64>,
+    /// Lateral traction per element [MPa].
+    pub py: Vec<f64>,
+    /// Slip of the step per element, x [mm] (steady: slip over a distance dq).
+    pub sx: Vec<f64>,
+    /// Slip of the step per element, y [mm].
+    pub sy: Vec<f64>,
+    /// Element states.
+    pub state: Vec<ElementState>,
+    /// Gauss–Seidel sweeps, CG iterations or, for accelerated steady rolling, map evaluations,
+    /// plus the Gauss–Seidel sweeps that took over from them.
+    pub iterations: usize,
+    /// Final relative change `max|delta p| / max(g)`.
+    pub residual: f64,
+    /// How the solve ended: converged, converged by the Gauss–Seidel fallback after the CG or the
+    /// accelerated steady iteration stalled, or at the iteration limit.
+    pub termination: Termination,
+    /// Number of elements in adhesion.
+    pub n_adhesion: usize,
+    /// Number of elements in slip.
+    pub n_slip: usize,
+}
+
+impl StepResult {
+    /// Total tangential force `(Fx, Fy)` [N] for element area `dxdy` [mm^2].
+    pub fn force_n(&self, dxdy_mm2: f64) -> (f64, f64) {
+        (self.px.iter().sum::<f64>() * dxdy_mm2, self.py.iter().sum::<f64>() * dxdy_mm2)
+    }
+}
+
+/// The grid and the contact area of the current load.
+struct Layout {
+    mx: usize,
+    my: usize,
+    dx_mm: f64,
+    /// Rolling distance per step `dq` [mm], the shift of the shifted kernel.
+    shift_mm: f64,
+    /// Element centres [mm].
+    x_mm: Vec<f64>,
+    y_mm: Vec<f64>,
+    /// Pressure of the current load [MPa].
+    pn: Vec<f64>,
+    /// Contact elements (`pn > 0`) row by row, `i` ascending (leading edge first).
+    contact: Vec<usize>,
+    /// Contact elements row by row, `i` descending within a row (trailing edge first).
+    contact_down: Vec<usize>,
+    /// `pn > 0` per grid element.
+    mask: Vec<bool>,
+    /// Contact spans per row, for the incremental slip update.
+    spans: Spans,
+}
+
+impl Layout {
+    fn n(&self) -> usize {
+        self.mx * self.my
+    }
+
+    /// Courant number `dq/dx`.
+    fn courant(&self) -> f64 {
+        self.shift_mm / self.dx_mm
+    }
+
+    /// The largest traction bound `max(mu pn)` [MPa].
+    fn gmax(&self, mu: f64) -> f64 {
+        self.contact.iter().map(|&k| mu * self.pn[k]).fold(0.0, f64::max)
+    }
+
+    /// Replaces the contact area by the elements with `pn > 0` of a new pressure.
+    fn set_pressure(&mut self, pn_mpa: &[f64]) -> Result<(), ContactError> {
+        let (mx, my, n) = (self.mx, self.my, self.n());
+        check_grid_array("pn", pn_mpa, n)?;
+        if let Some(&value) = pn_mpa.iter().find(|&&v| v < 0.0) {
+            return Err(ContactError::OutOfRange { name: "pressure [MPa]", value, requirement: ">= 0" });
+        }
+        self.pn.clear();
+        self.pn.extend_from_slice(pn_mpa);
+        self.contact.clear();
+        self.contact.extend((0..n).filter(|&k| pn_mpa[k] > 0.0));
+        if self.contact.is_empty() {
+            return Err(ContactError::NoContact);
+        }
+        self.contact_down.clear();
+        for j in 0..my {
+            self.contact_down.extend((0..mx).rev().map(|i| j * mx + i).filter(|&k| pn_mpa[k] > 0.0));
+        }
+        self.mask.clear();
+        self.mask.extend(pn_mpa.iter().map(|&v| v > 0.0));
+        self.spans = Spans::new(mx, my, pn_mpa);
+        Ok(())
+    }
+
+    /// Rigid slip of the step `w_k = dq (cx - cs y_k, cy + cs x_k)` [mm] added into `(bx, by)`.
+    fn add_rigid_slip(&self, p: &TangentialParams, bx: &mut [f64], by: &mut [f64]) {
+        let (dq, w) = (p.dq_mm, p.rigid_slip());
+        for &k in &self.contact {
+            let (wx, wy) = w.at(self.x_mm[k], self.y_mm[k]);
+            bx[k] += dq * wx;
+            by[k] += dq * wy;
+        }
+    }
+}
+
+/// A grid array must have `n` finite entries.
+fn check_grid_array(name: &'static str, v: &[f64], n: usize) -> Result<(), ContactError> {
+    if v.len() != n {
+        return Err(ContactError::SizeMismatch { name, len: v.len(), expected: n });
+    }
+    match v.iter().position(|z| !z.is_finite()) {
+        Some(index) => Err(ContactError::NotFinite { name, index }),
+        None => Ok(()),
+    }
+}
+
+/// The iterate every method works on: tractions, slip and element division over the grid, and
+/// two grid buffers for products (`v` holds `b = w + u'` during a transient step).
+struct State {
+    px: Vec<f64>,
+    py: Vec<f64>,
+    sx: Vec<f64>,
+    sy: Vec<f64>,
+    ux: Vec<f64>,
+    uy: Vec<f64>,
+    vx: Vec<f64>,
+    vy: Vec<f64>,
+    slip: Vec<bool>,
+}
+
+impl State {
+    fn new(n: usize) -> State {
+        State {
+            px: vec![0.0; n],
+            py: vec![0.0; n],
+            sx: vec![0.0; n],
+            sy: vec![0.0; n],
+            ux: vec![0.0; n],
+            uy: vec![0.0; n],
+            vx: vec![0.0; n],
+            vy: vec![0.0; n],
+            slip: vec![false; n],
+        }
+    }
+
+    /// Projects the tractions of the contact elements onto their bounds `mu pn`.
+    fn clip_to_bound(&mut self, lay: &Layout, mu: f64) {
+        for &k in &lay.contact {
+            (self.px[k], self.py[k], _) = project_to_bound(self.px[k], self.py[k], mu * lay.pn[k]);
+        }
+    }
+
+    /// Exact slip `s = b - A p` with `b` in `(vx, vy)` (transient steps).
+    fn recompute_slip(&mut self, lay: &Layout, conv0: &mut Convolver) -> Result<(), ContactError> {
+        conv0.tangential(&self.px, &self.py, Some(&lay.mask), &mut self.ux, &mut self.uy)?;
+        for &k in &lay.contact {
+            self.sx[k] = self.vx[k] - self.ux[k];
+            self.sy[k] = self.vy[k] - self.uy[k];
+        }
+        Ok(())
+    }
+
+    /// Packs the current tractions, slip and element division into a [`StepResult`].
+    fn finish(
+        &self,
+        lay: &Layout,
+        iterations: usize,
+        residual: f64,
+        termination: Termination,
+    ) -> Result<StepResult, ContactError> {
+        let n = lay.n();
+        let mut state = vec![ElementState::Exterior; n];
+        let (mut n_adhesion, mut n_slip) = (0, 0);
+        let (mut px, mut py, mut sx, mut sy) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        for &k in &lay.contact {
+            if self.slip[k] {
+                state[k] = ElementState::Slip;
+                n_slip += 1;
+            } else {
+                state[k] = ElementState::Adhesion;
+                n_adhesion += 1;
+            }
+            (sx[k], sy[k]) = (self.sx[k], self.sy[k]);
+            (px[k], py[k]) = (self.px[k], self.py[k]);
+        }
+        if px.iter().chain(&py).any(|v| !v.is_finite()) {
+            return Err(ContactError::NonFinite("tangential traction"));
+        }
+        Ok(StepResult { px, py, sx, sy, state, iterations, residual, termination, n_adhesion, n_slip })
+    }
+}
+
+/// How one method's iteration ended.
+#[derive(Debug, Clone, Copy)]
+struct Outcome {
+    iterations: usize,
+    residual: f64,
+    converged: bool,
+}
+
+/// A converged steady solution and its parameters `[mu, cx, cy, cs]` (warm start of the next
+/// point of a sweep).
+struct SteadyPoint {
+    creep: [f64; 4],
+    px: Vec<f64>,
+    py: Vec<f64>,
+}
+
+/// Linear extrapolation factor `r` for the warm start `p_n + r (p_n - p_(n-1))` of the next steady
+/// point: `r = (c - c_n).(c_n - c_(n-1)) / |c_n - c_(n-1)|^2` when the next creepage vector `c`
+/// continues the line through the last two (same `mu`, collinear within 1e-9), else 0.
+fn extrapolation_factor(older: &SteadyPoint, last: &SteadyPoint, next: &TangentialParams) -> f64 {
+    let c = [next.mu, next.cx, next.cy, next.cs];
+    if c[0] != last.creep[0] || last.creep[0] != older.creep[0] {
+        return 0.0;
+    }
+    let d1: [f64; 3] = std::array::from_fn(|i| last.creep[i + 1] - older.creep[i + 1]);
+    let d2: [f64; 3] = std::array::from_fn(|i| c[i + 1] - last.creep[i + 1]);
+    let dot = |a: &[f64; 3], b: &[f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let n1 = dot(&d1, &d1);
+    if n1 <= 0.0 {
+        return 0.0;
+    }
+    let r = dot(&d1, &d2) / n1;
+    let off: [f64; 3] = std::array::from_fn(|i| d2[i] - r * d1[i]);
+    if dot(&off, &off) <= 1e-18 * n1.max(dot(&d2, &d2)) && r.is_finite() {
+        r
+    } else {
+        0.0
+    }
+}
+
+/// Transient / steady tangential solver for a fixed grid and kernels. Build once per grid
+/// ([`TangentialSolver::new`]: kernels, FFT plans, operators), give it the pressure of each load
+/// ([`TangentialSolver::set_pressure`]: contact area, spans, masks), then call
+/// [`TangentialSolver::transient_step`] per time step or [`TangentialSolver::steady`] per creepage
+/// point. Buffers are reused between calls.
+pub struct TangentialSolver {
+    layout: Layout,
+    plans: Plans,
+    state: State,
+    cg: CgWork,
+    /// Work of the accelerated steady solver (allocated on first use per load).
+    steady: Option<SteadyWork>,
+    /// The last two steady solutions (warm start of the next steady point).
+    steady_prev: Vec<SteadyPoint>,
+}
+
+impl TangentialSolver {
+    /// Sets up the solver for a grid. `k0`: unshifted kernel; `ks`: kernel shifted by `dq` [mm]
+    /// (`ks.shift_mm = dq`); `x_mm`, `y_mm`: element centres [mm] (flat index `k = j*mx + i`).
+    /// No load yet: call [`TangentialSolver::set_pressure`] before solving.
+    pub fn new(k0: &Kernel, ks: &Kernel, x_mm: &[f64], y_mm: &[f64]) -> Result<TangentialSolver, ContactError> {
+        let (mx, my) = (k0.mx, k0.my);
+        let n = mx * my;
+        if ks.mx != mx || ks.my != my || ks.dx_mm != k0.dx_mm || ks.dy_mm != k0.dy_mm {
+            return Err(ContactError::GridMismatch { expected: (mx, my), got: (ks.mx, ks.my) });
+        }
+        if k0.shift_mm != 0.0 {
+            return Err(ContactError::OutOfRange {
+                name: "shift of the unshifted kernel [mm]",
+                value: k0.shift_mm,
+                requirement: "= 0",
+            });
+        }
+        if ks.shift_mm.is_nan() || ks.shift_mm <= 0.0 {
+            return Err(ContactError::OutOfRange {
+                name: "shift dq of the shifted kernel [mm]",
+                value: ks.shift_mm,
+                requirement: "> 0",
+            });
+        }
+        check_grid_array("x", x_mm, n)?;
+        check_grid_array("y", y_mm, n)?;
+        let plans = Plans::new(k0, ks)?;
+        let layout = Layout {
+            mx,
+            my,
+            dx_mm: k0.dx_mm,
+            shift_mm: ks.shift_mm,
+            x_mm: x_mm.to_vec(),
+            y_mm: y_mm.to_vec(),
+            pn: vec![0.0; n],
+            contact: Vec::with_capacity(n),
+            contact_down: Vec::with_capacity(n),
+            mask: vec![false; n],
+            spans: Spans::new(mx, my, &vec![0.0; n]),
+        };
+        Ok(TangentialSolver {
+            layout,
+            plans,
+            state: State::new(n),
+            cg: CgWork::new(n),
+            steady: None,
+            steady_prev: Vec::with_capacity(2),
+        })
+    }
+
+    /// Sets the load: pressure per element [MPa] (contact = `pn > 0`). Forgets everything of the
+    /// previous load (work arrays, steady warm start), so that the next solve is the one a newly
+    /// built solver would make.
+    pub fn set_pressure(&mut self, pn_mpa: &[f64]) -> Result<(), ContactError> {
+        let n = self.layout.n();
+        self.layout.contact.clear();
+        self.layout.set_pressure(pn_mpa)?;
+        self.state = State::new(n);
+        self.cg = CgWork::new(n);
+        self.steady = None;
+        self.steady_prev.clear();
+        Ok(())
+    }
+
+    /// Number of contact elements.
+    pub fn n_contact(&self) -> usize {
+        self.layout.contact.len()
+    }
+
+    /// Courant number `dq/dx`.
+    pub fn courant(&self) -> f64 {
+        self.layout.courant()
+    }
+
+    fn check_params(&self, p: &TangentialParams) -> Result<(), ContactError> {
+        p.validate()?;
+        let shift = self.layout.shift_mm;
+        if (p.dq_mm - shift).abs() > 1e-9 * shift {
+            return Err(ContactError::ShiftMismatch { dq_mm: p.dq_mm, shift_mm: shift });
+        }
+        if self.layout.contact.is_empty() {
+            return Err(ContactError::NoContact);
+        }
+        Ok(())
+    }
+
+    /// One transient rolling step: previous tractions `prev_px`, `prev_py` [MPa] (on the grid, at
+    /// the previous time, contact-fixed coordinates) and, if given, those of the step before.
+    /// Warm start: the previous traction, or its linear extrapolation `2 p_n - p_(n-1)` in time
+    /// when the step before is given; clipped to the traction bound.
+    pub fn transient_step(
+        &mut self,
+        params: &TangentialParams,
+        prev_px: &[f64],
+        prev_py: &[f64],
+        older: Option<(&[f64], &[f64])>,
+    ) -> Result<StepResult, ContactError> {
+        self.check_params(params)?;
+        let (lay, st) = (&self.layout, &mut self.state);
+        let n = lay.n();
+        check_grid_array("previous traction px", prev_px, n)?;
+        check_grid_array("previous traction py", prev_py, n)?;
+        if let Some((ox, oy)) = older {
+            check_grid_array("older traction px", ox, n)?;
+            check_grid_array("older traction py", oy, n)?;
+        }
+        // u' = A_s p' (previous displacement at the previous position of the material).
+        self.plans.convs.tangential(prev_px, prev_py, None, &mut st.vx, &mut st.vy)?;
+        // b = w + u' (stored in vx, vy).
+        lay.add_rigid_slip(params, &mut st.vx, &mut st.vy);
+        st.px.fill(0.0);
+        st.py.fill(0.0);
+        for &k in &lay.contact {
+            (st.px[k], st.py[k]) = match older {
+                Some((ox, oy)) => (2.0 * prev_px[k] - ox[k], 2.0 * prev_py[k] - oy[k]),
+                None => (prev_px[k], prev_py[k]),
+            };
+        }
+        st.clip_to_bound(lay, params.mu);
+        // s = b - A p.
+        st.recompute_slip(lay, &mut self.plans.conv0)?;
+        let op = &self.plans.transient;
+        if params.method == Method::GaussSeidel || lay.gmax(params.mu) <= 0.0 {
+            let o = gauss_seidel::solve(lay, op, &lay.contact, st, params)?;
+            return st.finish(lay, o.iterations, o.residual, primary(o.converged));
+        }
+        let o = cg::solve(lay, &mut self.plans, st, &mut self.cg, params)?;
+        if o.converged {
+            return st.finish(lay, o.iterations, o.residual, Termination::Converged);
+        }
+        // Fall back to Gauss–Seidel from the current iterate (slip exact).
+        st.recompute_slip(lay, &mut self.plans.conv0)?;
+        let gs = gauss_seidel::solve(lay, &self.plans.transient, &lay.contact, st, params)?;
+        st.finish(lay, o.iterations + gs.iterations, gs.residual, fallback(gs.converged))
+    }
+
+    /// Steady rolling at the given creepages: `s = w - (A - A_s) p`. Warm start from `start`
+    /// (tractions [MPa]) if given, else from the previous steady solution of this solver (linearly
+    /// extrapolated from the last two when the creepage continues their line), else zero.
+    /// Solver per [`TangentialParams::steady_method`]; if the accelerated iteration fails its test,
+    /// Gauss–Seidel sweeps continue from its best iterate.
+    pub fn steady(
+        &mut self,
+        params: &TangentialParams,
+        start: Option<(&[f64], &[f64])>,
+    ) -> Result<StepResult, ContactError> {
+        self.check_params(params)?;
+        let n = self.layout.n();
+        if let Some((sx0, sy0)) = start {
+            check_grid_array("start traction px", sx0, n)?;
+            check_grid_array("start traction py", sy0, n)?;
+        }
+        self.warm_start(params, start);
+        let (lay, st) = (&self.layout, &mut self.state);
+        st.clip_to_bound(lay, params.mu);
+        let gmax = lay.gmax(params.mu);
+        let accelerate = params.steady_method == SteadyMethod::Accelerated && gmax > 0.0;
+        let (mut evals, mut converged) = (0, None);
+        if accelerate {
+            let work = self.steady.get_or_insert_with(|| SteadyWork::new(n, lay.contact.len()));
+            (evals, converged) = steady::solve(lay, &mut self.plans, st, work, params)?;
+        }
+        // s = w - (A - A_s) p.
+        self.plans.conv0.tangential(&st.px, &st.py, Some(&lay.mask), &mut st.ux, &mut st.uy)?;
+        self.plans.convs.tangential(&st.px, &st.py, Some(&lay.mask), &mut st.vx, &mut st.vy)?;
+        for &k in &lay.contact {
+            st.sx[k] = -(st.ux[k] - st.vx[k]);
+            st.sy[k] = -(st.uy[k] - st.vy[k]);
+        }
+        lay.add_rigid_slip(params, &mut st.sx, &mut st.sy);
+        let res = match converged {
+            Some(residual) => st.finish(lay, evals, residual, Termination::Converged)?,
+            None => {
+                let gs = gauss_seidel::solve(lay, &self.plans.steady, &lay.contact_down, st, params)?;
+                let termination = if accelerate { fallback(gs.converged) } else { primary(gs.converged) };
+                st.finish(lay, gs.iterations + evals, gs.residual, termination)?
+            }
+        };
+        let mut point = if self.steady_prev.len() == 2 {
+            self.steady_prev.remove(0)
+        } else {
+            SteadyPoint { creep: [0.0; 4], px: vec![0.0; n], py: vec![0.0; n] }
+        };
+        point.creep = [params.mu, params.cx, params.cy, params.cs];
+        point.px.copy_from_slice(&res.px);
+        point.py.copy_from_slice(&res.py);
+        self.steady_prev.push(point);
+        Ok(res)
+    }
+
+    /// The start of a steady solve into `(px, py)`: `start` if given, else the previous steady
+    /// solution (extrapolated along the creepage line from the last two), else zero.
+    fn warm_start(&mut self, params: &TangentialParams, start: Option<(&[f64], &[f64])>) {
+        let (lay, st) = (&self.layout, &mut self.state);
+        st.px.fill(0.0);
+        st.py.fill(0.0);
+        match start {
+            Some((sx0, sy0)) => {
+                for &k in &lay.contact {
+                    st.px[k] = sx0[k];
+                    st.py[k] = sy0[k];
+                }
+            }
+            None if !self.steady_prev.is_empty() => {
+                // With one point only, older = last and r = 0: the previous solution itself.
+                let (older, last) = (&self.steady_prev[0], &self.steady_prev[self.steady_prev.len() - 1]);
+                let r = if self.steady_prev.len() == 2 { extrapolation_factor(older, last, params) } else { 0.0 };
+                for &k in &lay.contact {
+                    st.px[k] = last.px[k] + r * (last.px[k] - older.px[k]);
+                    st.py[k] = last.py[k] + r * (last.py[k] - older.py[k]);
+                }
+            }
+            None => {}
+        }
+    }
+}
+
+/// The termination of a method that ran alone.
+fn primary(converged: bool) -> Termination {
+    if converged {
+        Termination::Converged
+    } else {
+        Termination::IterationLimit
+    }
+}
+
+/// The termination of the Gauss–Seidel fallback after a method stalled.
+fn fallback(converged: bool) -> Termination {
+    if converged {
+        Termination::FallbackConverged
+    } else {
+        Termination::IterationLimit
+    }
+}
+
+#[cfg(test)]
+mod tests;
