@@ -4,9 +4,6 @@
 use crate::error::InputError;
 use crate::scene::{Creepage, InitKind, Scene};
 
-/// Largest number of time steps (or sweep points) one scene may ask for.
-pub const MAX_STEPS: usize = 2_000_000;
-
 /// The loading at one instant (or one sweep point).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Sample {
@@ -49,18 +46,26 @@ impl Loading {
     pub fn sample(scene: &Scene, dt_s: f64, warnings: &mut Vec<String>) -> Result<Loading, InputError> {
         let base =
             Sample { step: 0, t_s: 0.0, cx: 0.0, cy: scene.cy, cs: scene.cs_per_mm, fn_n: scene.fn_n, mu: scene.mu };
+        let max = scene.limits.max_steps;
         let too_many = |n: f64| {
-            InputError::new("creepage", format!("{n:.0} steps"), format!("at most {MAX_STEPS} steps (dt = {dt_s:e} s)"))
+            InputError::new(
+                "creepage",
+                format!("{n:.0} steps"),
+                format!("at most {max} steps or points (dt = {dt_s:e} s); [limits] max_steps raises the limit"),
+            )
         };
         let (kind, freq_hz, initial, samples) = match &scene.creepage {
             Creepage::Step { c, steps, c_before } => {
+                if *steps > max {
+                    return Err(too_many(*steps as f64));
+                }
                 let s: Vec<Sample> =
                     (1..=*steps).map(|k| Sample { step: k, t_s: k as f64 * dt_s, cx: *c, ..base }).collect();
                 (LoadingKind::Step, None, Some(Sample { cx: *c_before, ..base }), s)
             }
             Creepage::Sine { c0, cp, freq_hz, periods } => {
                 let n = (periods / (freq_hz * dt_s)).ceil();
-                if n > MAX_STEPS as f64 {
+                if n > max as f64 {
                     return Err(too_many(n));
                 }
                 let w = 2.0 * std::f64::consts::PI * freq_hz;
@@ -79,6 +84,9 @@ impl Loading {
                 (LoadingKind::Sine, Some(*freq_hz), Some(Sample { cx: *c0, ..base }), s)
             }
             Creepage::Sweep { from, to, points } => {
+                if *points > max {
+                    return Err(too_many(*points as f64));
+                }
                 let s = (1..=*points)
                     .map(|k| {
                         let f = if *points > 1 { (k - 1) as f64 / (*points - 1) as f64 } else { 0.0 };
@@ -89,7 +97,7 @@ impl Loading {
             }
             Creepage::Table { rows, .. } => {
                 let n = (rows.end_s() / dt_s + 1e-9).floor();
-                if n > MAX_STEPS as f64 {
+                if n > max as f64 {
                     return Err(too_many(n));
                 }
                 let at = |k: usize| {

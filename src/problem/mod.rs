@@ -6,14 +6,14 @@
 pub mod loading;
 pub mod resolved;
 
-pub use loading::{Loading, LoadingKind, Sample, MAX_STEPS};
+pub use loading::{Loading, LoadingKind, Sample};
 pub use resolved::ResolvedScene;
 
 use crate::error::InputError;
 use crate::physics::{
     CoefficientSource, Coefficients, ContactGeometry, Flexibilities, Grid, HertzContact, Material, Planform,
 };
-use crate::scene::{ContactSolverOptions, ExternalSolver, ModelOptions, Scene};
+use crate::scene::{ContactSolverOptions, ExternalSolver, Limits, ModelOptions, Scene};
 use std::path::PathBuf;
 use std::sync::Arc;
 
@@ -57,6 +57,7 @@ pub struct Problem {
     pub model: ModelOptions,
     pub contact_solver: ContactSolverOptions,
     pub external: Vec<ExternalSolver>,
+    pub limits: Limits,
     pub scene_dir: PathBuf,
     pub warnings: Vec<String>,
 }
@@ -130,6 +131,7 @@ impl Problem {
             model: scene.model,
             contact_solver: scene.contact_solver,
             external: scene.external.clone(),
+            limits: scene.limits,
             scene_dir: scene.dir.clone(),
             warnings,
         };

@@ -80,6 +80,25 @@ impl Default for ContactSolverOptions {
     }
 }
 
+/// Largest step or point count any scene may ask for, even with `[limits] max_steps`.
+pub const HARD_MAX_STEPS: usize = 100_000_000;
+
+/// How large a scene may be (`[limits]`): one step limit for every creepage kind and a limit on
+/// the exact-theory solver's estimated run time; raising them is an explicit choice.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Limits {
+    /// Time steps or sweep points (default 2 million).
+    pub max_steps: usize,
+    /// Estimated wall time of one model run [s] (default 600).
+    pub max_estimated_s: f64,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits { max_steps: 2_000_000, max_estimated_s: 600.0 }
+    }
+}
+
 /// An external model (`[external.NAME] command = [...]`): any executable that reads scene.json
 /// and writes a history CSV in the `simulate` format.
 #[derive(Debug, Clone, PartialEq)]
@@ -111,6 +130,7 @@ pub struct Scene {
     pub model: ModelOptions,
     pub contact_solver: ContactSolverOptions,
     pub external: Vec<ExternalSolver>,
+    pub limits: Limits,
     /// Folder of the scene file (relative paths in the scene are resolved against it).
     pub dir: PathBuf,
 }
@@ -266,7 +286,7 @@ impl Scene {
         let creepage = match kind {
             "step" => Creepage::Step {
                 c: cr.f64("c", CREEPAGE_LIMIT)?,
-                steps: cr.usize("steps", 1, 10_000_000)?,
+                steps: cr.usize("steps", 1, HARD_MAX_STEPS)?,
                 c_before: cr.opt_f64("c_before", CREEPAGE_LIMIT)?.unwrap_or(0.0),
             },
             "sine" => Creepage::Sine {
@@ -278,7 +298,7 @@ impl Scene {
             "sweep" => Creepage::Sweep {
                 from: cr.f64("from", CREEPAGE_LIMIT)?,
                 to: cr.f64("to", CREEPAGE_LIMIT)?,
-                points: cr.usize("points", 1, 1_000_000)?,
+                points: cr.usize("points", 1, HARD_MAX_STEPS)?,
             },
             _ => {
                 let file = cr.str("file", "a CSV path relative to the scene file")?;
@@ -330,6 +350,17 @@ impl Scene {
             }
             cs.finish()?;
         }
+        // [limits]
+        let mut limits = Limits::default();
+        if let Some(mut l) = top.opt_table("limits")? {
+            if let Some(n) = l.opt_usize("max_steps", 1, HARD_MAX_STEPS)? {
+                limits.max_steps = n;
+            }
+            if let Some(t) = l.opt_f64("max_estimated_s", Range::new(0.0, false, 1e7, true))? {
+                limits.max_estimated_s = t;
+            }
+            l.finish()?;
+        }
         top.finish()?;
 
         Ok(Scene {
@@ -351,6 +382,7 @@ impl Scene {
             model,
             contact_solver,
             external,
+            limits,
             dir: dir.to_path_buf(),
         })
     }

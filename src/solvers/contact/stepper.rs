@@ -10,7 +10,8 @@ use crate::history::History;
 use crate::problem::{Problem, Sample};
 use crate::solvers::sample_loop::{self, Observer};
 use crate::solvers::stepper::{FieldView, Step, Stepper};
-use crate::solvers::{always, ModelDef, SolveError};
+use crate::error::InputError;
+use crate::solvers::{ModelDef, SolveError};
 
 /// Kalker's exact theory for quasi-identical half-spaces (CONTACT-style).
 pub const MODEL: ModelDef = ModelDef {
@@ -18,10 +19,27 @@ pub const MODEL: ModelDef = ModelDef {
     summary: "Kalker's exact theory on the same grid (CONTACT-style: half-space influence coefficients, normal problem, transient rolling with Coulomb friction)",
     extra_columns: &["n_adhesion", "n_slip", "iterations", "residual", "pn_max_mpa"],
     iterative: true,
-    check: always,
+    check,
     cost_per_row,
     build,
 };
+
+/// Wall time per unit of [`cost_per_row`] [s], the 88×88 transient step of the `contact_step`
+/// bench divided by its N log N: turns the cost into the estimate `[limits]` bounds.
+const SECONDS_PER_COST: f64 = 1.3e-7;
+
+/// A run estimated to take longer than `[limits] max_estimated_s` is refused before it starts.
+fn check(p: &Problem) -> Result<(), InputError> {
+    let estimated_s = p.loading.rows().count() as f64 * cost_per_row(p) * SECONDS_PER_COST;
+    if estimated_s <= p.limits.max_estimated_s {
+        return Ok(());
+    }
+    Err(InputError::new(
+        "limits.max_estimated_s",
+        p.limits.max_estimated_s,
+        format!("a limit above the exact-theory solver's estimated {estimated_s:.0} s for {} rows on {}x{} elements (raise it to run this scene)", p.loading.rows().count(), p.grid.mx, p.grid.my),
+    ))
+}
 
 /// About `N log N` per transient step for `N` elements (FFT products); a steady point about 3 steps.
 fn cost_per_row(p: &Problem) -> f64 {
