@@ -7,16 +7,22 @@ pub const EXCERPT_CHARS: usize = 60;
 /// `value` quoted on one line, at most [`EXCERPT_CHARS`] characters of it, control and
 /// bidirectional-formatting characters escaped, and `… (N bytes)` after the quote when cut.
 pub fn excerpt(value: &str) -> String {
-    excerpt_chars(value, EXCERPT_CHARS)
+    shorten(value, EXCERPT_CHARS, true)
 }
 
-/// [`excerpt`] with another length: for whole messages of other parsers that may quote values.
-pub fn excerpt_chars(value: &str, max_chars: usize) -> String {
-    let mut out = String::from("\"");
+/// `text` on one line, unquoted, at most `max_chars` characters, escaped and cut like
+/// [`excerpt`]: for whole messages of other parsers, which may quote values of any length.
+pub fn one_line(text: &str, max_chars: usize) -> String {
+    shorten(text, max_chars, false)
+}
+
+fn shorten(value: &str, max_chars: usize, quoted: bool) -> String {
+    let quote = if quoted { "\"" } else { "" };
+    let mut out = String::from(quote);
     let mut shown = 0;
     let mut cut = false;
     for c in value.chars() {
-        let piece = escaped(c);
+        let piece = escaped(c, quoted);
         let n = piece.chars().count();
         if shown + n > max_chars {
             cut = true;
@@ -26,18 +32,19 @@ pub fn excerpt_chars(value: &str, max_chars: usize) -> String {
         out.push_str(&piece);
     }
     if cut {
-        out.push_str(&format!("…\" ({} bytes)", value.len()));
+        out.push_str(&format!("…{quote} ({} bytes)", value.len()));
     } else {
-        out.push('"');
+        out.push_str(quote);
     }
     out
 }
 
-/// One character as shown: itself, or an escape that cannot act on a terminal.
-fn escaped(c: char) -> String {
+/// One character as shown: itself, or an escape that cannot act on a terminal (and, inside
+/// quotes, backslash and quote escaped).
+fn escaped(c: char, quoted: bool) -> String {
     match c {
-        '\\' => "\\\\".into(),
-        '"' => "\\\"".into(),
+        '\\' if quoted => "\\\\".into(),
+        '"' if quoted => "\\\"".into(),
         '\n' => "\\n".into(),
         '\r' => "\\r".into(),
         '\t' => "\\t".into(),
@@ -78,6 +85,12 @@ mod tests {
     }
 
     #[test]
+    fn a_message_is_kept_on_one_line_without_quotes() {
+        assert_eq!(one_line("line 3: \"x\"\nnext", 100), "line 3: \"x\"\\nnext");
+        assert_eq!(one_line(&"y".repeat(500), 10), format!("{}… (500 bytes)", "y".repeat(10)));
+    }
+
+    #[test]
     fn multibyte_characters_are_never_split() {
         let e = excerpt(&"é".repeat(100));
         assert_eq!(e.matches('é').count(), EXCERPT_CHARS);
@@ -86,7 +99,7 @@ mod tests {
 
     #[test]
     fn an_escape_is_never_cut_in_half() {
-        let e = excerpt_chars("ab\u{1b}", 4);
+        let e = shorten("ab\u{1b}", 4, true);
         assert_eq!(e, "\"ab…\" (3 bytes)");
     }
 }

@@ -248,7 +248,8 @@ fn rename_noreplace(from: &Path, to: &Path) -> io::Result<()> {
 /// exchange it holds the old tree).
 struct Staging {
     path: PathBuf,
-    _marker: File,
+    /// The built tree's marker, locked while this run works on it.
+    marker: File,
     _registration: Registration,
     /// Whether `path` now holds the old tree (or nothing) rather than the one built.
     installed: bool,
@@ -266,9 +267,7 @@ impl Staging {
             }
             let registration = interrupt::register_folder(path.clone());
             match lock_marker(&path, true) {
-                Ok(marker) => {
-                    return Ok(Staging { path, _marker: marker, _registration: registration, installed: false })
-                }
+                Ok(marker) => return Ok(Staging { path, marker, _registration: registration, installed: false }),
                 // A concurrent cleanup took the folder before its marker was locked: another name.
                 Err(e) if matches!(e.kind(), io::ErrorKind::NotFound | io::ErrorKind::WouldBlock) => last = Some(e),
                 Err(e) => return Err(io_error("creating the marker in", &path)(e)),
@@ -341,11 +340,22 @@ impl Drop for Staging {
         // An old tree swapped out may still be locked by a concurrent run that built it (it
         // removes its own old tree first): wait for it rather than leave the tree behind.
         if self.installed {
-            if let Ok(marker) = File::open(self.path.join(MARKER)) {
-                let _ = marker.lock();
+            if let Ok(old) = File::open(self.path.join(MARKER)) {
+                if !same_file(&old, &self.marker) {
+                    let _ = old.lock();
+                }
             }
         }
         let _ = fs::remove_dir_all(&self.path);
+    }
+}
+
+/// Whether two open files are the same file (a second lock on one's own marker would wait forever).
+fn same_file(a: &File, b: &File) -> bool {
+    use std::os::unix::fs::MetadataExt;
+    match (a.metadata(), b.metadata()) {
+        (Ok(a), Ok(b)) => a.dev() == b.dev() && a.ino() == b.ino(),
+        _ => false,
     }
 }
 
