@@ -161,6 +161,9 @@ fn fifo(path: &Path) {
     mknodat(CWD, path, FileType::Fifo, Mode::RUSR | Mode::WUSR, 0).unwrap();
 }
 
+/// A hostile file: what it is, its path, the size limit it is read with, the error expected.
+type ReadCase = (&'static str, PathBuf, u64, fn(&ReadError) -> bool);
+
 #[test]
 fn hostile_files_are_refused_quickly_naming_the_file_and_never_quoting_it() {
     let tmp = tempfile::tempdir().unwrap();
@@ -183,7 +186,7 @@ fn hostile_files_are_refused_quickly_naming_the_file_and_never_quoting_it() {
     fs::write(path("over_limit.toml"), format!("{secret}{}", "a".repeat(1000))).unwrap();
 
     let mib = 1 << 20;
-    let cases: Vec<(&str, PathBuf, u64, fn(&ReadError) -> bool)> = vec![
+    let cases: Vec<ReadCase> = vec![
         ("FIFO as scene file", path("scene.toml"), mib, |e| {
             matches!(e, ReadError::NotRegular { kind: FileKind::Fifo, .. })
         }),
