@@ -36,30 +36,36 @@ impl Solver for External {
     }
 
     fn run(&self, problem: &Problem) -> Result<History, Error> {
-        let model = &self.spec.name;
-        let fail = |m: String| super::fail(problem, model, m);
-        // Removed on return, and by the interrupt handler if creepbench is stopped meanwhile.
+        let fail = |m: String| super::fail(problem, &self.spec.name, m);
         let dir =
             tempfile::Builder::new().prefix("creepbench-ext").tempdir().map_err(|e| fail(format!("temp dir: {e}")))?;
-        let _cleanup = interrupt::register_folder(dir.path().to_path_buf());
-        let scene_json = dir.path().join("scene.json");
-        let out_csv = dir.path().join(format!("{model}.csv"));
-        let json = crate::output::scene_json(problem, &problem.solvers);
-        std::fs::write(&scene_json, json).map_err(|e| fail(format!("writing scene.json: {e}")))?;
-        let mut program = std::path::PathBuf::from(&self.spec.command[0]);
-        if program.components().count() > 1 && program.is_relative() {
-            program = problem.scene_dir.join(program);
-        }
-        let mut command = Command::new(&program);
-        command
-            .args(&self.spec.command[1..])
-            .arg(&scene_json)
-            .arg(&out_csv)
-            .current_dir(if problem.scene_dir.as_os_str().is_empty() { Path::new(".") } else { &problem.scene_dir });
-        process::run(command, TIMEOUT, MODEL_OUTPUT_LIMIT_BYTES).map_err(|e| fail(e.to_string()))?;
-        let h = read_output(model, &out_csv).map_err(&fail)?;
-        validate(h, problem, &out_csv).map_err(fail)
+        // Removed by the interrupt handler if creepbench is stopped meanwhile, else just below.
+        let cleanup = interrupt::register_folder(dir.path().to_path_buf());
+        let result = run_in(&self.spec, problem, dir.path()).map_err(fail);
+        drop(dir);
+        drop(cleanup);
+        result
     }
+}
+
+/// Run the model in the temporary folder `dir` and read its validated output.
+fn run_in(spec: &ExternalSolver, problem: &Problem, dir: &Path) -> Result<History, String> {
+    let scene_json = dir.join("scene.json");
+    let out_csv = dir.join(format!("{}.csv", spec.name));
+    let json = crate::output::scene_json(problem, &problem.solvers);
+    std::fs::write(&scene_json, json).map_err(|e| format!("writing scene.json: {e}"))?;
+    let mut program = std::path::PathBuf::from(&spec.command[0]);
+    if program.components().count() > 1 && program.is_relative() {
+        program = problem.scene_dir.join(program);
+    }
+    let mut command = Command::new(&program);
+    command
+        .args(&spec.command[1..])
+        .arg(&scene_json)
+        .arg(&out_csv)
+        .current_dir(if problem.scene_dir.as_os_str().is_empty() { Path::new(".") } else { &problem.scene_dir });
+    process::run(command, TIMEOUT, MODEL_OUTPUT_LIMIT_BYTES).map_err(|e| e.to_string())?;
+    validate(read_output(&spec.name, &out_csv)?, problem, &out_csv)
 }
 
 /// Longest run of a model on one scene.
