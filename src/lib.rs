@@ -14,6 +14,7 @@ pub mod output;
 pub mod physics;
 pub mod pipeline;
 pub mod problem;
+pub mod safety;
 pub mod scene;
 pub mod solvers;
 

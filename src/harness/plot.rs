@@ -18,31 +18,65 @@ const COLORS: [RGBColor; 6] = [
     RGBColor(255, 127, 14),
 ];
 
+/// Largest magnitude plotted: larger values are drawn at it, so that an axis span and its
+/// padding stay finite (an infinite or NaN range makes plotters' tick search never end).
+const PLOT_LIMIT: f64 = 1e300;
+/// Smallest positive x on a log axis, and the widest log axis in decades: the ratio of the
+/// ends stays finite, and so does the count of decades plotters steps through.
+const LOG_DECADES: i32 = 300;
+/// A span below this fraction of the values' magnitude is drawn as if all values were equal.
+const NEGLIGIBLE_SPAN: f64 = 1e-9;
+
+/// A point as plotted: `None` for non-finite values (and x ≤ 0 on a log axis), magnitudes
+/// clamped to [`PLOT_LIMIT`].
+fn plottable((x, y): (f64, f64), log_x: bool) -> Option<(f64, f64)> {
+    if !x.is_finite() || !y.is_finite() || (log_x && x <= 0.0) {
+        return None;
+    }
+    let x = if log_x { x.clamp(10f64.powi(-LOG_DECADES), PLOT_LIMIT) } else { x.clamp(-PLOT_LIMIT, PLOT_LIMIT) };
+    Some((x, y.clamp(-PLOT_LIMIT, PLOT_LIMIT)))
+}
+
+/// Axis ranges: finite, increasing, with a finite span, whatever the values.
 fn bounds(series: &[Series], log_x: bool) -> ((f64, f64), (f64, f64)) {
-    let pts = series
-        .iter()
-        .flat_map(|s| s.points.iter())
-        .filter(|p| p.0.is_finite() && p.1.is_finite() && (!log_x || p.0 > 0.0));
+    let pts = series.iter().flat_map(|s| s.points.iter()).filter_map(|&p| plottable(p, log_x));
     let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
-    for &(x, y) in pts {
+    for (x, y) in pts {
         x0 = x0.min(x);
         x1 = x1.max(x);
         y0 = y0.min(y);
         y1 = y1.max(y);
     }
     if !x0.is_finite() {
-        return ((0.0, 1.0), (0.0, 1.0));
+        return (if log_x { (1.0, 10.0) } else { (0.0, 1.0) }, (0.0, 1.0));
     }
-    let pad = |a: f64, b: f64| {
-        if b > a {
-            ((b - a) * 0.05, (b - a) * 0.05)
-        } else {
-            (0.5 * a.abs().max(1e-9), 0.5 * a.abs().max(1e-9))
-        }
-    };
-    let (py0, py1) = pad(y0, y1);
-    let (px0, px1) = if log_x { (0.0, 0.0) } else { pad(x0, x1) };
-    ((x0 - px0, x1 + px1), (y0 - py0, y1 + py1))
+    let x = if log_x { log_axis(x0, x1) } else { linear_axis(x0, x1) };
+    (x, linear_axis(y0, y1))
+}
+
+/// A linear axis over finite `lo ≤ hi` (|·| ≤ [`PLOT_LIMIT`]) padded by 5 %; values (nearly)
+/// equal get an axis of ± half their magnitude around them, or ± 1 around zero.
+fn linear_axis(lo: f64, hi: f64) -> (f64, f64) {
+    let magnitude = lo.abs().max(hi.abs());
+    let span = hi - lo;
+    if span > NEGLIGIBLE_SPAN * magnitude {
+        let pad = 0.05 * span;
+        return (lo - pad, hi + pad);
+    }
+    let mid = 0.5 * (lo + hi);
+    let half = if magnitude > 1e-290 { 0.5 * magnitude } else { 1.0 };
+    (mid - half, mid + half)
+}
+
+/// A log axis over positive `lo ≤ hi`: at most [`LOG_DECADES`] decades (cut at the small end),
+/// equal values get a decade around them.
+fn log_axis(lo: f64, hi: f64) -> (f64, f64) {
+    let lo = lo.max(hi / 10f64.powi(LOG_DECADES));
+    if hi > lo * (1.0 + NEGLIGIBLE_SPAN) {
+        (lo, hi)
+    } else {
+        (lo / 10f64.sqrt(), hi * 10f64.sqrt())
+    }
 }
 
 /// A line chart as SVG text. `log_x` puts x on a log scale (positive x only).
@@ -82,12 +116,7 @@ fn draw(
                 .map_err(|e| e.to_string())?;
             for (k, s) in series.iter().enumerate() {
                 let color = COLORS[k % COLORS.len()];
-                let pts: Vec<(f64, f64)> = s
-                    .points
-                    .iter()
-                    .copied()
-                    .filter(|p| p.0.is_finite() && p.1.is_finite() && (!log_x || p.0 > 0.0))
-                    .collect();
+                let pts: Vec<(f64, f64)> = s.points.iter().filter_map(|&p| plottable(p, log_x)).collect();
                 if s.markers {
                     chart
                         .draw_series(pts.iter().map(|&p| Circle::new(p, 2, color.filled())))
@@ -116,4 +145,70 @@ fn draw(
         body!(builder.build_cartesian_2d(x0..x1, y0..y1).map_err(|e| e.to_string())?);
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::time::Duration;
+
+    fn series(points: &[(f64, f64)]) -> Vec<Series> {
+        vec![Series { label: "s".into(), points: points.to_vec(), markers: false }]
+    }
+
+    const BIG: f64 = 1.7e308;
+
+    /// Hostile histories: huge finite values, non-finite ones, all equal, empty.
+    fn hostile() -> Vec<(&'static str, Vec<Series>)> {
+        vec![
+            ("±1.7e308", series(&[(0.0, -BIG), (1.0, BIG), (2.0, 0.0)])),
+            ("huge x", series(&[(-BIG, 0.0), (BIG, 1.0)])),
+            ("f64::MAX", series(&[(f64::MIN, f64::MIN), (f64::MAX, f64::MAX)])),
+            ("NaN and inf", series(&[(f64::NAN, 1.0), (1.0, f64::INFINITY), (f64::NEG_INFINITY, 2.0)])),
+            ("NaN with one finite point", series(&[(f64::NAN, f64::NAN), (3.0, 4.0)])),
+            ("all equal", series(&[(1.0, 0.3), (1.0, 0.3), (1.0, 0.3)])),
+            ("all zero", series(&[(0.0, 0.0), (0.0, 0.0)])),
+            ("all 1e300", series(&[(1e300, 1e300), (1e300, 1e300)])),
+            ("subnormal", series(&[(5e-324, 5e-324), (1e-323, -5e-324)])),
+            ("huge and nearly equal", series(&[(0.0, 1e300), (1.0, 1e300 * (1.0 + 1e-15))])),
+            ("empty series", series(&[])),
+            ("no series", vec![]),
+        ]
+    }
+
+    #[test]
+    fn axis_ranges_are_finite_and_increasing_for_hostile_values() {
+        for (name, s) in hostile() {
+            for log_x in [false, true] {
+                let ((x0, x1), (y0, y1)) = bounds(&s, log_x);
+                for (lo, hi) in [(x0, x1), (y0, y1)] {
+                    assert!(lo.is_finite() && hi.is_finite() && lo < hi, "{name} log_x={log_x}: {lo}..{hi}");
+                    assert!((hi - lo).is_finite(), "{name}: span of {lo}..{hi}");
+                    assert!(hi - lo > 1e-9 * lo.abs().max(hi.abs()), "{name}: negligible span {lo}..{hi}");
+                }
+                if log_x {
+                    assert!(x0 > 0.0 && (x1 / x0).is_finite(), "{name}: log axis {x0}..{x1}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn charts_of_hostile_values_finish() {
+        // Drawn on another thread with a deadline: a range that sends plotters' tick search into
+        // an endless loop fails the test instead of hanging it.
+        let (tx, rx) = std::sync::mpsc::channel();
+        std::thread::spawn(move || {
+            for (name, s) in hostile() {
+                for log_x in [false, true] {
+                    let svg = line_chart(name, "x", "y", &s, log_x);
+                    tx.send((name, log_x, svg.len())).unwrap();
+                }
+            }
+        });
+        for _ in 0..2 * hostile().len() {
+            let (name, log_x, len) = rx.recv_timeout(Duration::from_secs(30)).expect("a chart never finished");
+            assert!(len > 100, "{name} log_x={log_x}: empty svg");
+        }
+    }
 }

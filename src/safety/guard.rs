@@ -1,0 +1,106 @@
+//! Protected folders: no command but `bless` may write under golden/, whatever its flags say
+//! (`--out golden`, `--results golden/x`, a symbolic link into it, `a/../golden`).
+
+use std::io;
+use std::path::{Component, Path, PathBuf};
+
+/// A write that would land in a protected folder, or a path that could not be resolved.
+#[derive(Debug, thiserror::Error)]
+pub enum GuardError {
+    #[error("refusing to write {}: it is inside {}, which only `creepbench bless` writes", path.display(), protected.display())]
+    Inside { path: PathBuf, protected: PathBuf },
+    #[error("cannot resolve {}: {source}", path.display())]
+    Io {
+        path: PathBuf,
+        #[source]
+        source: io::Error,
+    },
+}
+
+/// An error if `path` is `protected` or lies inside it, both resolved as far as they exist
+/// (symbolic links followed, `.` and `..` applied), so that no spelling gets around the guard.
+pub fn guard_not_under(path: &Path, protected: &Path) -> Result<(), GuardError> {
+    let resolved = resolve(path)?;
+    if resolved.starts_with(resolve(protected)?) {
+        return Err(GuardError::Inside { path: path.into(), protected: protected.into() });
+    }
+    Ok(())
+}
+
+/// `path` made absolute: its longest existing ancestor canonicalised, the rest applied lexically.
+fn resolve(path: &Path) -> Result<PathBuf, GuardError> {
+    let io_err = |source| GuardError::Io { path: path.into(), source };
+    let absolute = std::path::absolute(path).map_err(io_err)?;
+    let mut existing = absolute.as_path();
+    let mut rest = Vec::new();
+    let mut resolved = loop {
+        match existing.canonicalize() {
+            Ok(p) => break p,
+            Err(e) if e.kind() == io::ErrorKind::NotFound || e.kind() == io::ErrorKind::NotADirectory => {
+                match (existing.parent(), existing.file_name()) {
+                    (Some(parent), Some(name)) => {
+                        rest.push(Component::Normal(name));
+                        existing = parent;
+                    }
+                    // `..` as last component, or the root: apply lexically below.
+                    _ => match existing.parent() {
+                        Some(parent) => {
+                            rest.push(Component::ParentDir);
+                            existing = parent;
+                        }
+                        None => break existing.to_path_buf(),
+                    },
+                }
+            }
+            Err(e) => return Err(io_err(e)),
+        }
+    };
+    for c in rest.into_iter().rev() {
+        match c {
+            Component::ParentDir => {
+                resolved.pop();
+            }
+            Component::Normal(n) => resolved.push(n),
+            _ => {}
+        }
+    }
+    Ok(resolved)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_spelling_of_a_path_inside_is_refused() {
+        let tmp = tempfile::tempdir().unwrap();
+        let root = tmp.path();
+        std::fs::create_dir_all(root.join("golden/step")).unwrap();
+        std::fs::create_dir_all(root.join("out")).unwrap();
+        std::os::unix::fs::symlink(root.join("golden"), root.join("out/link")).unwrap();
+        let golden = root.join("golden");
+        for inside in [
+            root.join("golden"),
+            root.join("golden/step"),
+            root.join("golden/new/deeper"),
+            root.join("out/../golden/x"),
+            root.join("out/link"),
+            root.join("out/link/new"),
+            root.join("./golden/."),
+            root.join("missing/../golden/x"),
+        ] {
+            let e = guard_not_under(&inside, &golden).unwrap_err();
+            assert!(matches!(e, GuardError::Inside { .. }), "{}: {e}", inside.display());
+        }
+        for outside in [root.join("out"), root.join("golden2"), root.join("out/golden"), root.to_path_buf()] {
+            guard_not_under(&outside, &golden).unwrap_or_else(|e| panic!("{}: {e}", outside.display()));
+        }
+    }
+
+    #[test]
+    fn a_relative_path_is_resolved_against_the_working_folder() {
+        let here = std::env::current_dir().unwrap();
+        assert!(guard_not_under(Path::new("golden/x"), &here.join("golden")).is_err());
+        assert!(guard_not_under(Path::new("results"), &here.join("golden")).is_ok());
+    }
+}

@@ -1,0 +1,13 @@
+//! The gate protects its own data (issue 11): bounded reads that never block, short excerpts in
+//! messages, result folders replaced atomically and only when creepbench wrote them, protected
+//! folders, folder locks, external processes with a timeout and no orphans, checksum manifests.
+//! One job per file; the commands call these, nothing here knows about scenes or solvers.
+
+pub mod excerpt;
+pub mod folder;
+pub mod guard;
+pub mod interrupt;
+pub mod lock;
+pub mod manifest;
+pub mod process;
+pub mod read;
