@@ -9,12 +9,15 @@ use crate::harness::sections;
 use crate::harness::suite::{self, Shard};
 use crate::harness::table;
 use crate::pipeline;
+use crate::safety::{folder, guard, lock};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 /// `creepbench simulate`: one scene into `out/<name>/`.
-pub fn simulate(scene: &Path, solvers: &[String], out: &Path) -> Result<PathBuf, Error> {
+pub fn simulate(scene: &Path, solvers: &[String], out: &Path, golden: &Path) -> Result<PathBuf, Error> {
     let problem = pipeline::load(scene, solvers)?;
+    // The folder written is out/<name>: a scene named after a protected folder cannot reach it.
+    guard::guard_not_under(&out.join(&problem.name), golden)?;
     let before = problem.warnings.len();
     for w in &problem.warnings {
         eprintln!("warning: {w}");
@@ -75,8 +78,13 @@ pub fn run(
     golden: &Path,
     progress: bool,
 ) -> Result<(), Error> {
+    guard::guard_not_under(results_dir, golden)?;
+    guard::guard_not_under(report_dir, golden)?;
     let refs = References::load(reference)?;
     let scenes = run_suite(suite_dir, shard, progress)?;
+    std::fs::create_dir_all(results_dir).map_err(Error::io(results_dir))?;
+    // Runs into one folder take turns rather than fail on each other's half-written scenes.
+    let _lock = lock::lock_folder(results_dir, lock::DEFAULT_LOCK_WAIT)?;
     results::write_scenes(results_dir, &scenes, true)?;
     eprintln!("results in {}", results_dir.display());
     if shard.is_some() {
@@ -106,6 +114,7 @@ fn read_results(dirs: &[PathBuf]) -> Result<Vec<StoredScene>, Error> {
 
 /// `creepbench merge`: one report from the result folders of several shards.
 pub fn merge(dirs: &[PathBuf], reference: &Path, report_dir: &Path, golden: &Path) -> Result<(), Error> {
+    guard::guard_not_under(report_dir, golden)?;
     let refs = References::load(reference)?;
     let scenes = read_results(dirs)?;
     if scenes.is_empty() {
@@ -140,8 +149,7 @@ pub fn check(
     let baseline = (dir, kind);
     let scenes = run_suite(suite_dir, shard, progress)?;
     let mut all = compare::evaluate(&scenes, &refs, Some(baseline))?;
-    let suites: Vec<String> =
-        suite_dir.iter().filter_map(|d| d.file_name().map(|n| n.to_string_lossy().to_string())).collect();
+    let suites = suite_names(suite_dir);
     let expected = |name: &str, suite: &str| shard.is_none_or(|s| s.takes(name)) && suites.iter().any(|x| x == suite);
     all.extend(compare::missing_scenes(dir, &scenes, kind, expected)?);
     let worst = compare::worst_per_group(&all);
@@ -177,10 +185,39 @@ pub fn check(
     }
 }
 
-/// `creepbench bless`: write the suite's results as the new golden data (the only writer of golden/).
+/// `creepbench bless`: write the suite's results as the new golden data (the only writer of
+/// golden/). All or nothing: the new tree is built beside the old one — this run's scenes plus
+/// the blessed scenes of other suites and shards — and swapped in with one atomic exchange.
 pub fn bless(suite_dir: &[PathBuf], golden: &Path, shard: Option<Shard>, progress: bool) -> Result<(), Error> {
     let scenes = run_suite(suite_dir, shard, progress)?;
-    results::write_scenes(golden, &scenes, false)?;
-    eprintln!("blessed {} scene(s) into {}", scenes.len(), golden.display());
+    let suites = suite_names(suite_dir);
+    let mut kept = Vec::new();
+    for name in results::scene_names(golden) {
+        let old = results::read_scene(golden, &name)?;
+        let rerun = shard.is_none_or(|s| s.takes(&name)) && suites.contains(&old.scene.suite);
+        if !rerun && !scenes.iter().any(|s| s.name == name) {
+            kept.push(name);
+        }
+    }
+    folder::replace_tree_atomically(golden, |new: &Path| -> Result<(), Error> {
+        for name in &kept {
+            results::copy_scene(golden, new, name)?;
+        }
+        results::write_scenes(new, &scenes, false)?;
+        Ok(())
+    })?;
+    eprintln!("blessed {} scene(s) into {} ({} kept from other suites or shards)", scenes.len(), golden.display(), kept.len());
+    Ok(())
+}
+
+/// The folder names of the suites (a blessed scene records its suite's).
+fn suite_names(suite_dir: &[PathBuf]) -> Vec<String> {
+    suite_dir.iter().filter_map(|d| d.file_name().map(|n| n.to_string_lossy().to_string())).collect()
+}
+
+/// `creepbench manifest DIR`: write DIR/MANIFEST.sha256 (reviewed with the data it lists).
+pub fn manifest(dir: &Path) -> Result<(), Error> {
+    let n = crate::safety::manifest::write(dir).map_err(|source| Error::Manifest { dir: dir.to_path_buf(), source })?;
+    eprintln!("{n} file(s) listed in {}", dir.join(crate::safety::manifest::MANIFEST).display());
     Ok(())
 }

@@ -71,13 +71,28 @@ pub enum Error {
     /// A data file has not the expected form.
     #[error("{}: {source}", path.display())]
     Format { path: PathBuf, source: FormatError },
+    /// A file refused by the bounded reader (not a regular file, too large, not text).
+    #[error(transparent)]
+    Read(#[from] crate::safety::read::ReadError),
+    /// A result folder that could not be written safely.
+    #[error(transparent)]
+    Folder(#[from] crate::safety::folder::FolderError),
+    /// A write into a protected folder (golden/ outside `bless`): exit status 2.
+    #[error(transparent)]
+    Guard(#[from] crate::safety::guard::GuardError),
+    /// A result folder in use by another run.
+    #[error(transparent)]
+    Lock(#[from] crate::safety::lock::LockError),
+    /// Reference data that do not match their reviewed checksums.
+    #[error("{}: {source} (a reviewed change of reference data updates the manifest: `creepbench manifest {}`)", dir.display(), dir.display())]
+    Manifest { dir: PathBuf, source: crate::safety::manifest::ManifestError },
 }
 
 impl Error {
     /// Process exit status for this error (interface.md).
     pub fn exit_code(&self) -> i32 {
         match self {
-            Error::Input(_) => 2,
+            Error::Input(_) | Error::Guard(_) => 2,
             _ => 1,
         }
     }

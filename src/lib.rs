@@ -10,7 +10,6 @@ pub mod error;
 pub mod harness;
 pub mod history;
 pub mod metrics;
-pub mod output;
 pub mod physics;
 pub mod pipeline;
 pub mod problem;

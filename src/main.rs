@@ -43,6 +43,9 @@ enum Command {
         /// Output folder.
         #[arg(long, default_value = "out")]
         out: PathBuf,
+        /// The golden folder, which simulate never writes into.
+        #[arg(long, default_value = "golden")]
+        golden: PathBuf,
     },
     /// Run the suite (default: the thesis scenes) and write the report (reports/validation.md).
     Run {
@@ -80,13 +83,23 @@ enum Command {
         #[arg(long, default_value = "reports")]
         report: PathBuf,
     },
+    /// Write DIR/MANIFEST.sha256, the checksums reference data are verified against.
+    Manifest {
+        /// The folder (default: the reference data).
+        #[arg(default_value = "reference")]
+        dir: PathBuf,
+    },
 }
 
 fn main() {
     let cli = Cli::parse();
+    // An interrupted run kills the external models it started and removes their folders.
+    if let Err(e) = creepbench::safety::interrupt::install() {
+        eprintln!("warning: {e}");
+    }
     let result = match cli.command {
-        Command::Simulate { scene, solvers, out } => {
-            commands::simulate(&scene, &solvers, &out).map(|d| println!("{}", d.display()))
+        Command::Simulate { scene, solvers, out, golden } => {
+            commands::simulate(&scene, &solvers, &out, &golden).map(|d| println!("{}", d.display()))
         }
         Command::Run { suite: s, results, report } => {
             commands::run(&s.suite, &s.reference, &results, &report, s.shard, &s.golden, !s.quiet)
@@ -96,6 +109,7 @@ fn main() {
         }
         Command::Bless { suite: s } => commands::bless(&s.suite, &s.golden, s.shard, !s.quiet),
         Command::Merge { dirs, reference, golden, report } => commands::merge(&dirs, &reference, &report, &golden),
+        Command::Manifest { dir } => commands::manifest(&dir),
     };
     if let Err(e) = result {
         eprintln!("error: {e}");

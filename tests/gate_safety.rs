@@ -522,6 +522,7 @@ fn hostile_result_folder_targets_are_refused_and_left_intact() {
     fs::create_dir_all(d.join("golden/step")).unwrap();
     fs::write(d.join("golden/step/uba.csv"), "gold").unwrap();
     fs::create_dir_all(d.join("src")).unwrap();
+    fs::write(d.join("src/main.rs"), "fn main() {}").unwrap();
     fs::write(d.join("notes"), "a file").unwrap();
     fs::create_dir_all(d.join("other")).unwrap();
     std::os::unix::fs::symlink(d.join("other"), d.join("linked")).unwrap();
@@ -531,13 +532,15 @@ fn hostile_result_folder_targets_are_refused_and_left_intact() {
     for (name, expected) in [
         ("golden", "no .creepbench-result file"),
         ("src", "no .creepbench-result file"),
-        ("empty", "no .creepbench-result file"),
         ("notes", "is not a directory"),
         ("linked", "is not a directory"),
     ] {
         let e = folder::write_result_folder(d, name, files).unwrap_err();
         assert!(e.to_string().contains(expected) && e.to_string().contains(name), "{name}: {e}");
     }
+    // An empty directory holds nothing to lose: it is replaced (a golden/ made for a first bless).
+    folder::write_result_folder(d, "empty", files).unwrap();
+    assert_eq!(fs::read_to_string(d.join("empty/uba.csv")).unwrap(), "1");
     for name in ["", ".", "..", "../golden", "a/b", "/tmp", ".golden.creepbench-new-1-1", long.as_str()] {
         let e = folder::write_result_folder(d, name, files).unwrap_err();
         assert!(matches!(e, FolderError::BadName { .. }), "{name}: {e}");

@@ -5,7 +5,8 @@
 use crate::error::{Error, FormatError};
 use crate::history::History;
 use crate::metrics::Metric;
-use crate::output;
+use crate::safety::folder;
+use crate::safety::read::{read_text, GOLDEN_LIMIT_BYTES};
 use crate::pipeline::{SceneResult, Timing};
 use crate::problem::ResolvedScene;
 use std::collections::BTreeMap;
@@ -70,12 +71,21 @@ impl StoredScene {
     }
 }
 
-/// Write each scene's results as `dir/<name>/` (each folder atomically).
+/// Write each scene's results as `dir/<name>/`, each folder atomically and marked as a result
+/// folder (a directory creepbench did not write is never replaced).
 pub fn write_scenes(dir: &Path, scenes: &[StoredScene], with_timing: bool) -> Result<Vec<PathBuf>, Error> {
-    scenes
-        .iter()
-        .map(|s| output::write_folder_atomically(dir, &s.name, &s.files(with_timing)).map_err(Error::io(dir.join(&s.name))))
-        .collect()
+    scenes.iter().map(|s| Ok(folder::write_result_folder(dir, &s.name, s.files(with_timing))?)).collect()
+}
+
+/// The scenes of a blessed tree that a new bless keeps: those it does not produce again.
+pub fn copy_scene(from: &Path, to: &Path, name: &str) -> Result<(), Error> {
+    let (src, dst) = (from.join(name), to.join(name));
+    std::fs::create_dir_all(&dst).map_err(Error::io(&dst))?;
+    for entry in std::fs::read_dir(&src).map_err(Error::io(&src))?.flatten() {
+        let target = dst.join(entry.file_name());
+        std::fs::copy(entry.path(), &target).map_err(Error::io(&target))?;
+    }
+    Ok(())
 }
 
 /// Parse metrics.csv text.
@@ -109,7 +119,7 @@ pub fn parse_metrics(text: &str) -> Result<MetricMap, FormatError> {
 /// Read `dir/<name>/` back.
 pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
     let d = dir.join(name);
-    let read = |f: &str| std::fs::read_to_string(d.join(f)).map_err(Error::io(d.join(f)));
+    let read = |f: &str| read_text(&d.join(f), GOLDEN_LIMIT_BYTES, "result file");
     let scene = ResolvedScene::from_json(&read("scene.json")?)
         .map_err(|e| Error::Format { path: d.join("scene.json"), source: FormatError::Json(e) })?;
     let mut s = StoredScene {

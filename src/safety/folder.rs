@@ -118,6 +118,8 @@ fn check_replaceable(found: &Path, target: &Path) -> Result<bool, FolderError> {
         Ok(m) if !m.is_dir() => Err(FolderError::NotADirectory { path: target.into() }),
         Ok(_) => match fs::symlink_metadata(found.join(MARKER)) {
             Ok(m) if m.is_file() => Ok(true),
+            // An empty directory holds nothing to lose (e.g. a golden/ made for a first bless).
+            _ if fs::read_dir(found).is_ok_and(|mut d| d.next().is_none()) => Ok(true),
             _ => Err(FolderError::NotOurs { path: target.into() }),
         },
     }

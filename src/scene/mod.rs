@@ -145,7 +145,7 @@ fn is_valid_name(s: &str) -> bool {
 impl Scene {
     /// Read and validate a scene file.
     pub fn from_file(path: &Path) -> Result<Scene, InputError> {
-        let text = std::fs::read_to_string(path)
+        let text = crate::safety::read::read_text(path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")
             .map_err(|e| InputError::new("scene", path.display(), format!("a readable scene file (TOML): {e}")))?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         Scene::from_toml(&text, &dir)

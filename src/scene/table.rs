@@ -21,7 +21,7 @@ pub struct CreepageTable {
 impl CreepageTable {
     /// Read `path`; errors name `field` (the scene key), the row and column.
     pub fn from_file(path: &Path, field: &str) -> Result<Self, InputError> {
-        let text = std::fs::read_to_string(path)
+        let text = crate::safety::read::read_text(path, crate::safety::read::TABLE_LIMIT_BYTES, "creepage table")
             .map_err(|e| InputError::new(field, path.display(), format!("an existing, readable CSV file ({e})")))?;
         Self::from_csv(&text, &format!("{field} ({})", path.display()))
     }

@@ -34,6 +34,9 @@ pub struct References {
 impl References {
     /// Load every set from `dir`.
     pub fn load(dir: &Path) -> Result<References, Error> {
+        // Every file against the reviewed checksums: a changed, missing or extra reference file
+        // fails until its manifest is updated in a reviewed commit.
+        crate::safety::manifest::verify(dir).map_err(|source| Error::Manifest { dir: dir.to_path_buf(), source })?;
         Ok(References { contact: contact::ContactCases::load(dir)?, thesis: thesis::ThesisTables::load(dir)? })
     }
 
@@ -49,7 +52,7 @@ impl References {
     }
 }
 
-/// Read a reference file (typed error naming it).
+/// Read a reference file (bounded; typed error naming it).
 fn read(path: &Path) -> Result<String, Error> {
-    std::fs::read_to_string(path).map_err(Error::io(path))
+    Ok(crate::safety::read::read_text(path, crate::safety::read::REFERENCE_LIMIT_BYTES, "reference file")?)
 }
