@@ -51,6 +51,9 @@ fn set_field(text: &str, line: usize, col: usize, value: &str) -> String {
     lines.join("\n") + "\n"
 }
 
+/// A named mutation of the baseline and the text a failure must name.
+type Case = (&'static str, Box<dyn Fn(&Path)>, &'static str);
+
 fn edit(path: &Path, f: impl Fn(String) -> String) {
     let text = std::fs::read_to_string(path).unwrap();
     std::fs::write(path, f(text)).unwrap();
@@ -60,7 +63,7 @@ fn edit(path: &Path, f: impl Fn(String) -> String) {
 fn every_mutation_of_a_baseline_fails_the_gate() {
     let scenes = ours();
     assert!(failures_after(&scenes, |_| {}).is_empty(), "the untouched baseline passes");
-    let cases: Vec<(&str, Box<dyn Fn(&Path)>, &str)> = vec![
+    let cases: Vec<Case> = vec![
         ("scene folder removed", Box::new(|d: &Path| std::fs::remove_dir_all(d.join("step_mu04")).unwrap()), "fx_over_fn|no golden data"),
         ("loading column edited", Box::new(|d: &Path| edit(&d.join("step_mu04/uba.csv"), |t| t.replacen(",0.005,", ",0.5,", 1))), "cx|"),
         ("mu column edited", Box::new(|d: &Path| edit(&d.join("step_mu04/uba.csv"), |t| set_field(&t, 2, 8, "0.5"))), "mu|"),
