@@ -17,6 +17,7 @@ use super::brush::{self, Integration, LeadingEdge, Tractions};
 use super::stepper::{FieldView, Step, Stepper};
 use super::{linear_in_elements, ModelDef, SolveError};
 use crate::error::InputError;
+use crate::physics::bound::bound_factor;
 use crate::physics::{Grid, Planform, RigidSlip};
 use crate::problem::{LocalContact, Problem, Sample};
 
@@ -227,7 +228,7 @@ fn flat_body<const GHOST: bool, const SPIN: bool>(p: &Prepared, (ox, oy, nx, ny)
         let vy = oy[m] + c * (uy - oy[m]) + srcy;
         let n2 = vx * vx + vy * vy;
         // Direction-keeping projection (Eq. 2.29): scale = min(1, g/|v|); unloaded (g = 0) → 0.
-        let scale = (g[m] / n2.sqrt()).min(1.0);
+        let scale = bound_factor(n2, g[m]);
         nx[m] = vx * scale;
         ny[m] = vy * scale;
         slips += ((n2 > g[m] * g[m]) & (g[m] > 0.0)) as usize;
