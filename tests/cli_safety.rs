@@ -142,3 +142,20 @@ fn bless_keeps_the_blessed_scenes_of_other_suites_and_replaces_its_own() {
     let leftovers: Vec<_> = std::fs::read_dir(w.path()).unwrap().flatten().filter(|e| e.file_name().to_string_lossy().contains("creepbench")).collect();
     assert!(leftovers.is_empty(), "{leftovers:?}");
 }
+
+#[test]
+fn an_external_model_that_never_exits_is_stopped_at_its_scene_timeout() {
+    let w = tempfile::tempdir().unwrap();
+    std::fs::write(w.path().join("hang.sh"), "#!/bin/sh\nsleep 1000\n").unwrap();
+    let text = scene_text("hang", "[\"hang\"]", 0.4, 8, "kind = \"step\"\nc = 0.005\nsteps = 4", "[external.hang]\ncommand = [\"sh\", \"hang.sh\"]\ntimeout_s = 0.5");
+    std::fs::write(w.path().join("s.toml"), text).unwrap();
+    let start = std::time::Instant::now();
+    let o = creepbench(w.path(), &["simulate", "s.toml", "--out", "out"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(start.elapsed().as_secs() < 10, "{:?}", start.elapsed());
+    assert!(stderr(&o).contains("hang") && stderr(&o).contains("0.5 s"), "{}", stderr(&o));
+    assert!(!w.path().join("out/hang").exists(), "no partial output");
+    let bad = std::fs::read_to_string(w.path().join("s.toml")).unwrap().replace("timeout_s = 0.5", "timeout_s = -1");
+    std::fs::write(w.path().join("s.toml"), bad).unwrap();
+    assert_eq!(creepbench(w.path(), &["simulate", "s.toml"]).status.code(), Some(2));
+}

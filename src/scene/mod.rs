@@ -106,6 +106,8 @@ pub struct ExternalSolver {
     pub name: String,
     /// Program and arguments; a relative program path is resolved against the scene's folder.
     pub command: Vec<String>,
+    /// Longest run on this scene [s] (`timeout_s`, default 600); then its process group is killed.
+    pub timeout_s: f64,
 }
 
 /// A validated scene.
@@ -188,8 +190,11 @@ impl Scene {
                             "a non-empty array: program and arguments",
                         )
                     })?;
+                let timeout_s = t
+                    .opt_f64("timeout_s", Range::new(0.0, false, 86400.0, true))?
+                    .unwrap_or(crate::safety::process::DEFAULT_TIMEOUT.as_secs_f64());
                 t.finish()?;
-                external.push(ExternalSolver { name: key, command });
+                external.push(ExternalSolver { name: key, command, timeout_s });
             }
             ext.finish()?;
         }

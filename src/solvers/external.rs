@@ -63,12 +63,10 @@ fn run_in(spec: &ExternalSolver, problem: &Problem, dir: &Path) -> Result<Histor
         .arg(&scene_json)
         .arg(&out_csv)
         .current_dir(if problem.scene_dir.as_os_str().is_empty() { Path::new(".") } else { &problem.scene_dir });
-    process::run(command, TIMEOUT, MODEL_OUTPUT_LIMIT_BYTES).map_err(|e| e.to_string())?;
+    process::run(command, Duration::from_secs_f64(spec.timeout_s), MODEL_OUTPUT_LIMIT_BYTES).map_err(|e| e.to_string())?;
     validate(read_output(&spec.name, &out_csv)?, problem, &out_csv)
 }
 
-/// Longest run of a model on one scene.
-const TIMEOUT: Duration = process::DEFAULT_TIMEOUT;
 /// Models copy the loading from scene.json: it must come back equal to this relative tolerance.
 const LOADING_RTOL: f64 = 1e-9;
 /// Longest message of the CSV parser quoted in an error.
