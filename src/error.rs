@@ -22,6 +22,17 @@ impl InputError {
     }
 }
 
+/// A column name as given, only if it looks like one (letters, digits, `_`, up to 40
+/// characters): a file that is no table (say /etc/passwd given as one) is never quoted.
+pub fn name_excerpt(v: &str) -> String {
+    let name_like = !v.is_empty() && v.len() <= 40 && v.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_');
+    if name_like {
+        format!("{v:?}")
+    } else {
+        format!("a field that is not a column name ({} bytes)", v.len())
+    }
+}
+
 /// A short, single-line excerpt of a value for messages (never a whole file).
 pub fn excerpt(v: &str) -> String {
     let one_line: String = v.chars().map(|c| if c.is_control() { '?' } else { c }).collect();

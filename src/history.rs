@@ -123,7 +123,8 @@ impl History {
             .map(str::to_string)
             .collect();
         if header.len() < COLUMNS.len() || header[..COLUMNS.len()] != COLUMNS {
-            return Err(FormatError::Header { expected: COLUMNS.join(","), got: excerpt(&header.join(",")) });
+            let got = header.iter().map(|h| crate::error::name_excerpt(h)).collect::<Vec<_>>().join(", ");
+            return Err(FormatError::Header { expected: COLUMNS.join(","), got: excerpt(&got) });
         }
         let has_mu = header.get(COLUMNS.len()).is_some_and(|c| c == MU);
         let first_extra = COLUMNS.len() + usize::from(has_mu);

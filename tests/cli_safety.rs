@@ -94,6 +94,18 @@ fn special_files_are_refused_at_once() {
 }
 
 #[test]
+fn a_file_that_is_no_table_is_never_quoted() {
+    let w = tempfile::tempdir().unwrap();
+    std::fs::write(w.path().join("secret.csv"), "root:x:0:0:root:/root:/bin/bash\nTOKEN=abc123\n").unwrap();
+    let text = scene_text("t", "[\"uba\"]", 0.4, 8, "kind = \"table\"\nfile = \"secret.csv\"", "");
+    std::fs::write(w.path().join("s.toml"), text).unwrap();
+    let o = creepbench(w.path(), &["simulate", "s.toml"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("root:x") && !stderr(&o).contains("abc123"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("header column 1"), "{}", stderr(&o));
+}
+
+#[test]
 fn a_changed_reference_file_fails_until_its_manifest_is_updated() {
     let w = tempfile::tempdir().unwrap();
     let r = w.path().join("reference");

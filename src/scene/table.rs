@@ -38,8 +38,8 @@ impl CreepageTable {
         for (n, h) in header.iter().enumerate() {
             if !COLUMNS.contains(&h.as_str()) || header[..n].contains(h) {
                 return Err(InputError::new(
-                    format!("{origin} header"),
-                    format!("{h:?}"),
+                    format!("{origin} header column {}", n + 1),
+                    crate::error::name_excerpt(h),
                     format!("distinct columns from {}", COLUMNS.join(", ")),
                 ));
             }
@@ -48,7 +48,7 @@ impl CreepageTable {
             if !header.iter().any(|h| h == req) {
                 return Err(InputError::new(
                     format!("{origin} header"),
-                    header.join(","),
+                    format!("{} columns", header.len()),
                     format!("must include column {req}"),
                 ));
             }
