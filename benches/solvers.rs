@@ -54,7 +54,8 @@ fn bench_contact(c: &mut Criterion) {
         let (x, y) = gr.centres();
         let mut solver = tangential::TangentialSolver::new(&k0, &ks, &x, &y).unwrap();
         solver.set_pressure(&pn).unwrap();
-        let params = |k: usize| tangential::TangentialParams::new(1.0, p.loading.samples[k].cx, 0.0, 0.0, p.rolling.dq_mm);
+        let params =
+            |k: usize| tangential::TangentialParams::new(1.0, p.loading.samples[k].cx, 0.0, 0.0, p.rolling.dq_mm);
         let (mut px, mut py) = (vec![0.0; gr.len()], vec![0.0; gr.len()]);
         let (mut ox, mut oy) = (px.clone(), py.clone());
         for k in 0..10 {

@@ -119,7 +119,12 @@ pub fn merge(dirs: &[PathBuf], reference: &Path, report_dir: &Path, golden: &Pat
     let scenes = read_results(dirs)?;
     if scenes.is_empty() {
         let given: Vec<String> = dirs.iter().map(|d| d.display().to_string()).collect();
-        return Err(InputError::new("merge", given.join(", "), "result folders written by `creepbench run --results DIR`, holding at least one scene").into());
+        return Err(InputError::new(
+            "merge",
+            given.join(", "),
+            "result folders written by `creepbench run --results DIR`, holding at least one scene",
+        )
+        .into());
     }
     let md = build_report(&scenes, &refs, report_dir, Some(golden))?;
     println!("{}", md.display());
@@ -157,8 +162,7 @@ pub fn check(
     let fails = compare::failures(&all);
     let gated = all.iter().filter(|f| f.gated).count();
     if against.is_some() {
-        let mut moved: Vec<&Finding> =
-            all.iter().filter(|f| f.against == Against::Previous && f.diff > 0.0).collect();
+        let mut moved: Vec<&Finding> = all.iter().filter(|f| f.against == Against::Previous && f.diff > 0.0).collect();
         println!("\n{} quantities moved against {} (largest first):", moved.len(), baseline.0.display());
         moved.sort_by(|a, b| b.diff.total_cmp(&a.diff));
         for f in moved.iter().take(30) {
@@ -206,7 +210,12 @@ pub fn bless(suite_dir: &[PathBuf], golden: &Path, shard: Option<Shard>, progres
         results::write_scenes(new, &scenes, false)?;
         Ok(())
     })?;
-    eprintln!("blessed {} scene(s) into {} ({} kept from other suites or shards)", scenes.len(), golden.display(), kept.len());
+    eprintln!(
+        "blessed {} scene(s) into {} ({} kept from other suites or shards)",
+        scenes.len(),
+        golden.display(),
+        kept.len()
+    );
     Ok(())
 }
 

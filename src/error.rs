@@ -43,7 +43,6 @@ pub fn excerpt(v: &str) -> String {
     }
 }
 
-
 /// A data file that does not have the expected form (a history, metrics, a reference table).
 #[derive(Debug, thiserror::Error)]
 pub enum FormatError {

@@ -4,7 +4,6 @@
 use crate::error::{excerpt, FormatError};
 use crate::problem::Sample;
 
-
 /// The fixed leading columns of `<solver>.csv` (interface.md); extra columns follow.
 pub const COLUMNS: [&str; 8] = ["step", "t_s", "cx", "cy", "cs", "fn_n", "fx_over_fn", "fy_over_fn"];
 
@@ -116,27 +115,23 @@ impl History {
     /// Parse a history CSV (ours, a golden file, or an external model's output).
     pub fn from_csv(solver: &str, text: &str) -> Result<History, FormatError> {
         let mut rdr = csv::ReaderBuilder::new().trim(csv::Trim::All).from_reader(text.as_bytes());
-        let header: Vec<String> = rdr
-            .headers()
-            .map_err(|e| FormatError::Csv { line: 1, source: e })?
-            .iter()
-            .map(str::to_string)
-            .collect();
+        let header: Vec<String> =
+            rdr.headers().map_err(|e| FormatError::Csv { line: 1, source: e })?.iter().map(str::to_string).collect();
         if header.len() < COLUMNS.len() || header[..COLUMNS.len()] != COLUMNS {
             let got = header.iter().map(|h| crate::error::name_excerpt(h)).collect::<Vec<_>>().join(", ");
             return Err(FormatError::Header { expected: COLUMNS.join(","), got: excerpt(&got) });
         }
         let has_mu = header.get(COLUMNS.len()).is_some_and(|c| c == MU);
         let first_extra = COLUMNS.len() + usize::from(has_mu);
-        let mut h =
-            History { solver: solver.into(), extra_columns: header[first_extra..].to_vec(), rows: Vec::new() };
+        let mut h = History { solver: solver.into(), extra_columns: header[first_extra..].to_vec(), rows: Vec::new() };
         for (n, rec) in rdr.records().enumerate() {
             let line = n + 2;
             let rec = rec.map_err(|e| FormatError::Csv { line, source: e })?;
             if rec.len() != header.len() {
                 return Err(FormatError::FieldCount { line, fields: rec.len(), expected: header.len() });
             }
-            let bad = |c: usize, what| FormatError::Value { line, column: header[c].clone(), value: excerpt(&rec[c]), what };
+            let bad =
+                |c: usize, what| FormatError::Value { line, column: header[c].clone(), value: excerpt(&rec[c]), what };
             let num = |c: usize| rec[c].parse::<f64>().map_err(|_| bad(c, "a number"));
             let step = rec[0].parse::<usize>().map_err(|_| bad(0, "a step index"))?;
             let extra = (first_extra..header.len()).map(num).collect::<Result<Vec<_>, _>>()?;

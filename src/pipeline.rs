@@ -72,7 +72,14 @@ pub fn run(mut problem: Problem) -> Result<SceneResult, Error> {
             }
             None => {
                 let spec = problem.external.iter().find(|e| &e.name == name).ok_or_else(|| {
-                    InputError::new("solvers", name, format!("a built-in model ({}) or an [external.NAME] of the scene", solvers::builtin_names().join(", ")))
+                    InputError::new(
+                        "solvers",
+                        name,
+                        format!(
+                            "a built-in model ({}) or an [external.NAME] of the scene",
+                            solvers::builtin_names().join(", ")
+                        ),
+                    )
                 })?;
                 let start = Instant::now();
                 let h = External::new(spec.clone()).run(&problem)?;

@@ -69,7 +69,11 @@ fn a_folder_creepbench_did_not_write_is_never_replaced() {
     let o = creepbench(w.path(), &["simulate", "s.toml", "--out", "."]);
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
     assert_eq!(std::fs::read_to_string(w.path().join("src")).unwrap(), "a file");
-    let hidden: Vec<_> = std::fs::read_dir(w.path()).unwrap().flatten().filter(|e| e.file_name().to_string_lossy().starts_with('.')).collect();
+    let hidden: Vec<_> = std::fs::read_dir(w.path())
+        .unwrap()
+        .flatten()
+        .filter(|e| e.file_name().to_string_lossy().starts_with('.'))
+        .collect();
     assert!(hidden.is_empty(), "{hidden:?}");
     // Its own earlier result is replaced.
     let w = workspace("mine");
@@ -148,10 +152,15 @@ fn bless_keeps_the_blessed_scenes_of_other_suites_and_replaces_its_own() {
     std::fs::copy(w.path().join("s.toml"), w.path().join("suite/x.toml")).unwrap();
     let o = creepbench(w.path(), &["bless", "--suite", "suite", "--quiet"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let mut names: Vec<String> = std::fs::read_dir(&g).unwrap().flatten().map(|e| e.file_name().to_string_lossy().to_string()).collect();
+    let mut names: Vec<String> =
+        std::fs::read_dir(&g).unwrap().flatten().map(|e| e.file_name().to_string_lossy().to_string()).collect();
     names.sort();
     assert_eq!(names, [".creepbench-result", "other", "x"], "this suite's scenes replaced, the other suite's kept");
-    let leftovers: Vec<_> = std::fs::read_dir(w.path()).unwrap().flatten().filter(|e| e.file_name().to_string_lossy().contains("creepbench")).collect();
+    let leftovers: Vec<_> = std::fs::read_dir(w.path())
+        .unwrap()
+        .flatten()
+        .filter(|e| e.file_name().to_string_lossy().contains("creepbench"))
+        .collect();
     assert!(leftovers.is_empty(), "{leftovers:?}");
 }
 
@@ -159,7 +168,14 @@ fn bless_keeps_the_blessed_scenes_of_other_suites_and_replaces_its_own() {
 fn an_external_model_that_never_exits_is_stopped_at_its_scene_timeout() {
     let w = tempfile::tempdir().unwrap();
     std::fs::write(w.path().join("hang.sh"), "#!/bin/sh\nsleep 1000\n").unwrap();
-    let text = scene_text("hang", "[\"hang\"]", 0.4, 8, "kind = \"step\"\nc = 0.005\nsteps = 4", "[external.hang]\ncommand = [\"sh\", \"hang.sh\"]\ntimeout_s = 0.5");
+    let text = scene_text(
+        "hang",
+        "[\"hang\"]",
+        0.4,
+        8,
+        "kind = \"step\"\nc = 0.005\nsteps = 4",
+        "[external.hang]\ncommand = [\"sh\", \"hang.sh\"]\ntimeout_s = 0.5",
+    );
     std::fs::write(w.path().join("s.toml"), text).unwrap();
     let start = std::time::Instant::now();
     let o = creepbench(w.path(), &["simulate", "s.toml", "--out", "out"]);

@@ -5,8 +5,8 @@ mod common;
 use common::*;
 use creepbench::metrics;
 use creepbench::pipeline;
-use creepbench::solvers::contact::tangential::ElementState;
 use creepbench::solvers::contact::run_with_fields;
+use creepbench::solvers::contact::tangential::ElementState;
 use creepbench::solvers::Termination;
 
 fn thesis_problem(name: &str) -> creepbench::problem::Problem {

@@ -33,7 +33,8 @@ fn failures_after(scenes: &[StoredScene], mutate: impl Fn(&Path)) -> Vec<Finding
         Ok(f) => f,
         Err(e) => {
             // An unreadable baseline is an error of its own: report it as one failure.
-            let mut f = compare::Ctx { scene: "-", solver: "-", against: Against::Golden }.unmatched("folder", e.to_string());
+            let mut f =
+                compare::Ctx { scene: "-", solver: "-", against: Against::Golden }.unmatched("folder", e.to_string());
             f.gated = true;
             vec![f]
         }
@@ -64,19 +65,75 @@ fn every_mutation_of_a_baseline_fails_the_gate() {
     let scenes = ours();
     assert!(failures_after(&scenes, |_| {}).is_empty(), "the untouched baseline passes");
     let cases: Vec<Case> = vec![
-        ("scene folder removed", Box::new(|d: &Path| std::fs::remove_dir_all(d.join("step_mu04")).unwrap()), "fx_over_fn|no golden data"),
-        ("loading column edited", Box::new(|d: &Path| edit(&d.join("step_mu04/uba.csv"), |t| t.replacen(",0.005,", ",0.5,", 1))), "cx|"),
-        ("mu column edited", Box::new(|d: &Path| edit(&d.join("step_mu04/uba.csv"), |t| set_field(&t, 2, 8, "0.5"))), "mu|"),
-        ("metric value added", Box::new(|d: &Path| edit(&d.join("step_mu04/metrics.csv"), |t| t + "uba,loop_area,1,\n")), "loop_area|"),
-        ("metric value removed", Box::new(|d: &Path| edit(&d.join("step_mu04/metrics.csv"), |t| t.lines().filter(|l| !l.starts_with("uba,steady_value")).map(|l| format!("{l}\n")).collect())), "steady_value|"),
-        ("scene.json edited", Box::new(|d: &Path| edit(&d.join("step_mu04/scene.json"), |t| t.replace("\"courant\": 1.0", "\"courant\": 0.9"))), "scene.json|"),
-        ("header-only history", Box::new(|d: &Path| edit(&d.join("step_mu04/contact.csv"), |t| t.lines().next().unwrap().to_string() + "\n")), "steps differ"),
-        ("history column removed", Box::new(|d: &Path| edit(&d.join("step_mu04/contact.csv"), |t| t.lines().map(|l| l.rsplit_once(',').unwrap().0.to_string() + "\n").collect())), "columns differ"),
-        ("extra history file", Box::new(|d: &Path| std::fs::copy(d.join("step_mu04/uba.csv"), d.join("step_mu04/other.csv")).map(|_| ()).unwrap()), "other.csv"),
-        ("solver history added to scene.json", Box::new(|d: &Path| {
-            std::fs::copy(d.join("steady_fastsim_g22/uba.csv"), d.join("steady_fastsim_g22/contact.csv")).unwrap();
-            edit(&d.join("steady_fastsim_g22/scene.json"), |t| t.replace("\"fastsim\"\n  ]", "\"fastsim\",\n    \"contact\"\n  ]"));
-        }), "solvers|"),
+        (
+            "scene folder removed",
+            Box::new(|d: &Path| std::fs::remove_dir_all(d.join("step_mu04")).unwrap()),
+            "fx_over_fn|no golden data",
+        ),
+        (
+            "loading column edited",
+            Box::new(|d: &Path| edit(&d.join("step_mu04/uba.csv"), |t| t.replacen(",0.005,", ",0.5,", 1))),
+            "cx|",
+        ),
+        (
+            "mu column edited",
+            Box::new(|d: &Path| edit(&d.join("step_mu04/uba.csv"), |t| set_field(&t, 2, 8, "0.5"))),
+            "mu|",
+        ),
+        (
+            "metric value added",
+            Box::new(|d: &Path| edit(&d.join("step_mu04/metrics.csv"), |t| t + "uba,loop_area,1,\n")),
+            "loop_area|",
+        ),
+        (
+            "metric value removed",
+            Box::new(|d: &Path| {
+                edit(&d.join("step_mu04/metrics.csv"), |t| {
+                    t.lines().filter(|l| !l.starts_with("uba,steady_value")).map(|l| format!("{l}\n")).collect()
+                })
+            }),
+            "steady_value|",
+        ),
+        (
+            "scene.json edited",
+            Box::new(|d: &Path| {
+                edit(&d.join("step_mu04/scene.json"), |t| t.replace("\"courant\": 1.0", "\"courant\": 0.9"))
+            }),
+            "scene.json|",
+        ),
+        (
+            "header-only history",
+            Box::new(|d: &Path| {
+                edit(&d.join("step_mu04/contact.csv"), |t| t.lines().next().unwrap().to_string() + "\n")
+            }),
+            "steps differ",
+        ),
+        (
+            "history column removed",
+            Box::new(|d: &Path| {
+                edit(&d.join("step_mu04/contact.csv"), |t| {
+                    t.lines().map(|l| l.rsplit_once(',').unwrap().0.to_string() + "\n").collect()
+                })
+            }),
+            "columns differ",
+        ),
+        (
+            "extra history file",
+            Box::new(|d: &Path| {
+                std::fs::copy(d.join("step_mu04/uba.csv"), d.join("step_mu04/other.csv")).map(|_| ()).unwrap()
+            }),
+            "other.csv",
+        ),
+        (
+            "solver history added to scene.json",
+            Box::new(|d: &Path| {
+                std::fs::copy(d.join("steady_fastsim_g22/uba.csv"), d.join("steady_fastsim_g22/contact.csv")).unwrap();
+                edit(&d.join("steady_fastsim_g22/scene.json"), |t| {
+                    t.replace("\"fastsim\"\n  ]", "\"fastsim\",\n    \"contact\"\n  ]")
+                });
+            }),
+            "solvers|",
+        ),
     ];
     for (what, mutate, needle) in cases {
         let fails = failures_after(&scenes, mutate);

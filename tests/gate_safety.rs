@@ -280,7 +280,8 @@ fn run_model(problem: &Problem) -> Result<creepbench::history::History, String> 
 
 /// The rows a correct model writes: the scene's loading, traction 0.1, 0.
 fn good_rows(p: &Problem) -> Vec<Vec<String>> {
-    p.loading.samples
+    p.loading
+        .samples
         .iter()
         .map(|s| {
             [s.step.to_string(), s.t_s.to_string(), s.cx.to_string(), s.cy.to_string(), s.cs.to_string()]
@@ -355,7 +356,11 @@ fn hostile_model_output_is_refused_naming_model_file_step_and_column() {
             "column \"a\" appears twice",
         ),
         ("cx differs from the scene", set(3, 2, "0.5"), "step 4 column \"cx\": \"0.5\" differs from the scene's 0.005"),
-        ("fn_n off by 1e-6", set(0, 5, &(p.loading.samples[0].fn_n * (1.0 + 1e-6)).to_string()), "step 1 column \"fn_n\""),
+        (
+            "fn_n off by 1e-6",
+            set(0, 5, &(p.loading.samples[0].fn_n * (1.0 + 1e-6)).to_string()),
+            "step 1 column \"fn_n\"",
+        ),
         ("cy not zero", set(5, 3, "0.001"), "step 6 column \"cy\""),
         ("cs not zero", set(5, 4, "1e-30"), "step 6 column \"cs\""),
         ("t_s shifted", set(1, 1, &(p.loading.samples[1].t_s * 2.0).to_string()), "step 2 column \"t_s\""),
@@ -456,7 +461,11 @@ fn a_model_that_never_exits_is_killed_with_its_whole_group_at_the_timeout() {
     let grandchild = wait_for_pid(&tmp.path().join("grandchild"), Duration::ZERO);
     // A killed process lingers until its parent (or init, for the grandchild) reaps it.
     let gone = || !alive(leader) && !alive(grandchild) && group_members(leader).is_empty();
-    assert!(wait_until(Duration::from_secs(2), gone), "leader {leader} or grandchild {grandchild} alive: {:?}", group_members(leader));
+    assert!(
+        wait_until(Duration::from_secs(2), gone),
+        "leader {leader} or grandchild {grandchild} alive: {:?}",
+        group_members(leader)
+    );
     let e = process::run(Command::new("/nonexistent/model"), Duration::from_secs(1), 1 << 20).unwrap_err();
     assert!(matches!(e, ProcessError::Spawn { .. }), "{e}");
 }

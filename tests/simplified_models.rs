@@ -3,7 +3,7 @@
 mod common;
 use common::*;
 use creepbench::physics::project_to_bound;
-use creepbench::solvers::brush::{Tractions};
+use creepbench::solvers::brush::Tractions;
 use creepbench::solvers::uba;
 
 const SWEEP: &str = "kind = \"sweep\"\nfrom = 0.0\nto = 0.01\npoints = 101";
@@ -17,7 +17,11 @@ fn fastsim_matches_contact_fastsim() {
     let theirs = reference("steady_fastsim_g22", "fx_over_fn");
     let (err, k) = max_abs_diff(&ours, &theirs);
     println!("FASTSIM vs CONTACT FASTSIM: max |df| = {err:.3e} at cx = {:.4}", k as f64 * 1e-4);
-    let rule = creepbench::harness::tolerances::rule(creepbench::harness::references::contact::FASTSIM, "fastsim", "fx_over_fn");
+    let rule = creepbench::harness::tolerances::rule(
+        creepbench::harness::references::contact::FASTSIM,
+        "fastsim",
+        "fx_over_fn",
+    );
     assert!(err <= rule.abs, "max |df| = {err} at point {k}");
 }
 

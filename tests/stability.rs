@@ -4,9 +4,9 @@
 
 mod common;
 use common::*;
+use creepbench::metrics::sawtooth_index::sawtooth_index;
 use creepbench::physics::project_to_bound;
 use creepbench::pipeline;
-use creepbench::metrics::sawtooth_index::sawtooth_index;
 use creepbench::solvers::brush::{self, Tractions};
 use creepbench::solvers::{sample_loop, FieldView};
 
@@ -22,9 +22,8 @@ fn every_stability_scene_is_finite_and_bounded() {
         let mu = p.loading.mu_max();
         let aliasing = p.warnings.iter().any(|w| w.contains("aliased"));
         let r = pipeline::run(p).unwrap_or_else(|e| panic!("{name}: {e}"));
-        let metric = |solver: &str, m: &str| {
-            r.metrics.iter().find(|x| x.solver == solver && x.name == m).map(|x| x.value)
-        };
+        let metric =
+            |solver: &str, m: &str| r.metrics.iter().find(|x| x.solver == solver && x.name == m).map(|x| x.value);
         for h in &r.histories {
             for row in &h.rows {
                 assert!(
@@ -99,11 +98,14 @@ fn sawtooth_indicator_catches_the_downwind_scheme() {
         }
     }
     let bound_ok = (0..g.len()).all(|k| t.tx[k].abs() <= 0.4 * local.planform.pressure_mpa[k] * (1.0 + 1e-12));
-    let field = FieldView { grid: g, pressure_mpa: &local.planform.pressure_mpa, tx_mpa: &t.tx, ty_mpa: &t.ty, state: None };
+    let field =
+        FieldView { grid: g, pressure_mpa: &local.planform.pressure_mpa, tx_mpa: &t.tx, ty_mpa: &t.ty, state: None };
     let saw = sawtooth_index(&field);
     assert!(bound_ok, "the bound holds even for the unstable scheme");
     assert!(saw > 0.5, "downwind sawtooth index {saw}");
-    let upwind = sample_loop::run(&p, &creepbench::solvers::uba::MODEL, &[&creepbench::metrics::sawtooth_index::METRIC], None).unwrap();
+    let upwind =
+        sample_loop::run(&p, &creepbench::solvers::uba::MODEL, &[&creepbench::metrics::sawtooth_index::METRIC], None)
+            .unwrap();
     let up_saw = upwind.field_metrics[0].1;
     assert!(up_saw < 0.05, "upwind sawtooth index {up_saw}");
 }

@@ -159,7 +159,10 @@ fn expected_sets(ours: &StoredScene, theirs: &StoredScene, against: Against) -> 
     let mut out = Vec::new();
     let scene_ctx = Ctx { scene: &ours.name, solver: "-", against };
     for solver in theirs.histories.keys().filter(|s| !ours.histories.contains_key(*s)) {
-        out.push(scene_ctx.unmatched("solvers", format!("{} has {solver}.csv, this run has no such solver", against.label())));
+        out.push(
+            scene_ctx
+                .unmatched("solvers", format!("{} has {solver}.csv, this run has no such solver", against.label())),
+        );
     }
     for (solver, name, step) in theirs.metrics.keys().filter(|k| !ours.metrics.contains_key(*k)) {
         let ctx = Ctx { scene: &ours.name, solver, against };
@@ -169,7 +172,8 @@ fn expected_sets(ours: &StoredScene, theirs: &StoredScene, against: Against) -> 
     }
     let (a, b) = (serde_json::to_value(&ours.scene), serde_json::to_value(&theirs.scene));
     if let (Ok(serde_json::Value::Object(a)), Ok(serde_json::Value::Object(b))) = (a, b) {
-        let differ: Vec<&String> = a.keys().chain(b.keys().filter(|k| !a.contains_key(*k))).filter(|k| a.get(*k) != b.get(*k)).collect();
+        let differ: Vec<&String> =
+            a.keys().chain(b.keys().filter(|k| !a.contains_key(*k))).filter(|k| a.get(*k) != b.get(*k)).collect();
         if !differ.is_empty() {
             out.push(scene_ctx.unmatched("scene.json", format!("resolved scene differs in {differ:?}")));
         }
@@ -191,7 +195,14 @@ pub fn missing_scenes(
         let theirs = results::read_scene(dir, &n)?;
         if expected(&n, &theirs.scene.suite) {
             let ctx = Ctx { scene: &n, solver: "-", against };
-            out.push(ctx.unmatched("scene", format!("{} has this scene of suite {:?}, the run did not produce it", against.label(), theirs.scene.suite)));
+            out.push(ctx.unmatched(
+                "scene",
+                format!(
+                    "{} has this scene of suite {:?}, the run did not produce it",
+                    against.label(),
+                    theirs.scene.suite
+                ),
+            ));
         }
     }
     Ok(out)

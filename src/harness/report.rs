@@ -160,12 +160,10 @@ pub fn build(input: &ReportInput) -> Report {
         }
         let _ = write!(md, "| {} |", sc.name);
         for s in &solvers {
-            let f = input.findings.iter().find(|f| {
-                f.scene == sc.name
-                    && &f.solver == s
-                    && f.against.is_contact()
-                    && f.quantity == "fx_over_fn"
-            });
+            let f = input
+                .findings
+                .iter()
+                .find(|f| f.scene == sc.name && &f.solver == s && f.against.is_contact() && f.quantity == "fx_over_fn");
             match f {
                 Some(f) => {
                     let mark = if f.gated && !f.passed() { " ✗" } else { "" };
@@ -189,12 +187,14 @@ pub fn build(input: &ReportInput) -> Report {
         for sc in &sines {
             let p = sc.scene.period_s().unwrap_or(1.0);
             let thesis = input.refs.thesis.delay_for(sc);
-            let contact = input.refs.contact.history(&sc.name).and_then(|h| {
-                metrics::delay_ratio(&h.column("t_s")?, &h.column("cx")?, &h.column("fx_over_fn")?, p)
-            });
+            let contact =
+                input.refs.contact.history(&sc.name).and_then(|h| {
+                    metrics::delay_ratio(&h.column("t_s")?, &h.column("cx")?, &h.column("fx_over_fn")?, p)
+                });
             let _ = write!(md, "| {} | {} | {} |", sc.name, fmt(thesis, 3), fmt(contact, 4));
             for s in &solvers {
-                let flat = sc.histories.get(s).is_some_and(|h| h.rows.iter().any(|r| r.fx_over_fn.abs() >= 0.97 * r.mu));
+                let flat =
+                    sc.histories.get(s).is_some_and(|h| h.rows.iter().any(|r| r.fx_over_fn.abs() >= 0.97 * r.mu));
                 let d = fmt(sc.metrics.get(&(s.clone(), "delay_ratio".into(), None)).copied(), 4);
                 let _ = write!(md, " {d}{} |", if flat { " †" } else { "" });
             }
@@ -249,7 +249,10 @@ pub fn build(input: &ReportInput) -> Report {
                 );
             }
             // Sine scenes show their loop; the time history only where the delay is the subject.
-            if sc.scene.period_s().is_none() || title.starts_with("Sine: frequency at μ = 1") || title == "Grid refinement" {
+            if sc.scene.period_s().is_none()
+                || title.starts_with("Sine: frequency at μ = 1")
+                || title == "Grid refinement"
+            {
                 let file = format!("{}_{}.svg", sc.name, if sweep { "sweep" } else { "history" });
                 figures.push((file.clone(), line_chart(&sc.name, xl, "f = Fx/FN", &series, false)));
                 let _ = writeln!(md, "![{}](figures/{file})", sc.name);
@@ -281,8 +284,7 @@ pub fn build(input: &ReportInput) -> Report {
     let _ = writeln!(md, "## What each scene left out\n\nOnly what a scene lists is computed: solvers it does not name are not run, metrics that do not fit its creepage are not computed.\n\n| scene | solvers not run | metrics left out |\n|---|---|---|");
     for sc in input.scenes {
         let ran: Vec<&str> = sc.histories.keys().map(String::as_str).collect();
-        let not_run: Vec<&str> =
-            crate::solvers::builtin_names().into_iter().filter(|s| !ran.contains(s)).collect();
+        let not_run: Vec<&str> = crate::solvers::builtin_names().into_iter().filter(|s| !ran.contains(s)).collect();
         let skipped: Vec<String> = sc.scene.skipped_metrics.iter().map(|(m, why)| format!("{m} ({why})")).collect();
         let _ = writeln!(
             md,

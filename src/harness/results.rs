@@ -5,10 +5,10 @@
 use crate::error::{Error, FormatError};
 use crate::history::History;
 use crate::metrics::Metric;
-use crate::safety::folder;
-use crate::safety::read::{read_text, GOLDEN_LIMIT_BYTES};
 use crate::pipeline::{SceneResult, Timing};
 use crate::problem::ResolvedScene;
+use crate::safety::folder;
+use crate::safety::read::{read_text, GOLDEN_LIMIT_BYTES};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -56,7 +56,12 @@ impl StoredScene {
         let metrics: Vec<Metric> = self
             .metrics
             .iter()
-            .map(|((solver, name, step), v)| Metric { solver: solver.clone(), name: name.clone(), value: *v, step: *step })
+            .map(|((solver, name, step), v)| Metric {
+                solver: solver.clone(),
+                name: name.clone(),
+                value: *v,
+                step: *step,
+            })
             .collect();
         files.push(("metrics.csv".into(), crate::metrics::to_csv(&metrics)));
         if with_timing {
@@ -134,7 +139,9 @@ pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
         let file = entry.file_name().to_string_lossy().to_string();
         if let Some(stem) = file.strip_suffix(".csv") {
             if !["metrics", "timing"].contains(&stem) && !s.scene.solvers.iter().any(|x| x == stem) {
-                let source = FormatError::MissingColumn { column: format!("{stem} in scene.json's solvers (the folder holds {file})") };
+                let source = FormatError::MissingColumn {
+                    column: format!("{stem} in scene.json's solvers (the folder holds {file})"),
+                };
                 return Err(Error::Format { path: d.join("scene.json"), source });
             }
         }

@@ -46,7 +46,9 @@ pub fn thesis_beside_ours(scenes: &[StoredScene], refs: &References) -> Section 
     }
     let t43 = fig("table_4_3_f_step29_cx001");
     for (name, label) in TABLE_4_3 {
-        let ours = find(scenes, name).and_then(|sc| sc.histories.get("uba")?.rows.iter().find(|r| r.step == 29)).map(|r| r.fx_over_fn);
+        let ours = find(scenes, name)
+            .and_then(|sc| sc.histories.get("uba")?.rows.iter().find(|r| r.step == 29))
+            .map(|r| r.fx_over_fn);
         let _ = writeln!(
             s,
             "| Table 4.3: UBA f after 29 steps at cx = 0.01, μ 0.4 — {label} | {} | {} | `{name}` |",
@@ -174,7 +176,9 @@ pub fn stability(scenes: &[StoredScene]) -> Option<Section> {
                 .all(|r| r.fx_over_fn.is_finite() && r.fy_over_fn.is_finite() && r.extra.iter().all(|v| v.is_finite()));
             let max_f = h.rows.iter().map(|r| r.fx_over_fn.hypot(r.fy_over_fn) / r.mu).fold(0.0, f64::max);
             let col_max = |c: &str| h.column(c).map(|v| v.into_iter().fold(0.0, f64::max));
-            let limit = h.column("termination").map(|v| v.iter().filter(|&&c| c == crate::solvers::Termination::IterationLimit.code()).count());
+            let limit = h
+                .column("termination")
+                .map(|v| v.iter().filter(|&&c| c == crate::solvers::Termination::IterationLimit.code()).count());
             let metric = |m: &str| sc.metric(solver, m).map(|v| format!("{v:.3}")).unwrap_or("—".into());
             let _ = writeln!(
                 s,
@@ -199,7 +203,8 @@ pub fn stability(scenes: &[StoredScene]) -> Option<Section> {
 pub fn grid_convergence(scenes: &[StoredScene], refs: &References) -> Option<Section> {
     let ff = refs.contact.history("steady_exact_g88")?.column("fx_over_fn")?;
     let mut s = String::from("Steady sweeps cx = 0 … 0.01 (μ 0.4) on 22×22, 44×44 and 88×88: max |f − f_CONTACT,88×88| over the 101 creepages, and each grid's own CONTACT result for scale.\n\n| grid | solver | max error vs CONTACT 88×88 |\n|---|---|---|\n");
-    let max_err = |h: &History| h.column("fx_over_fn").map(|c| c.iter().zip(&ff).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max));
+    let max_err =
+        |h: &History| h.column("fx_over_fn").map(|c| c.iter().zip(&ff).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max));
     for (name, grid) in [("steady_exact_g22", 22), ("steady_exact_g44", 44), ("steady_exact_g88", 88)] {
         if let Some(e) = refs.contact.history(name).and_then(max_err) {
             let _ = writeln!(s, "| {grid} | CONTACT | {e:.5} |");
@@ -245,11 +250,19 @@ pub fn scaling(scenes: &[StoredScene]) -> Option<Section> {
             })
             .collect();
         let _ = writeln!(s, "| {solver} | {} | {slope:.2} |", cells.join(", "));
-        series.push(Series { label: solver, points: pts.iter().map(|(n, t)| (*n, t.log10())).collect(), markers: false });
+        series.push(Series {
+            label: solver,
+            points: pts.iter().map(|(n, t)| (*n, t.log10())).collect(),
+            markers: false,
+        });
     }
     let svg = line_chart("Cost per step against elements", "elements (log)", "log10(seconds per step)", &series, true);
     s.push_str("\n![cost per step](figures/cost_per_step.svg)\n");
-    Some(Section { title: "Cost per step against grid size".into(), body: s, figures: vec![("cost_per_step.svg".into(), svg)] })
+    Some(Section {
+        title: "Cost per step against grid size".into(),
+        body: s,
+        figures: vec![("cost_per_step.svg".into(), svg)],
+    })
 }
 
 /// Every section, in the report's order.

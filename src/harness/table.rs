@@ -31,10 +31,7 @@ pub fn rows(scenes: &[StoredScene], findings: &[Finding]) -> Vec<TableRow> {
             });
         }
     }
-    for f in findings
-        .iter()
-        .filter(|f| f.against.is_contact() && f.quantity == "fx_over_fn")
-    {
+    for f in findings.iter().filter(|f| f.against.is_contact() && f.quantity == "fx_over_fn") {
         out.push(TableRow {
             scene: f.scene.clone(),
             solver: f.solver.clone(),

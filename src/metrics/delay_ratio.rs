@@ -54,7 +54,6 @@ pub fn delay_ratio(t: &[f64], cx: &[f64], f: &[f64], period_s: f64) -> Option<f6
     Some((tf - tc) / period_s)
 }
 
-
 #[cfg(test)]
 mod tests {
     use super::*;

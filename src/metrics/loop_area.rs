@@ -40,7 +40,6 @@ pub fn loop_integral(t: &[f64], cx: &[f64], f: &[f64], t0: f64, t1: f64) -> Opti
     Some(pts.windows(2).map(|w| 0.5 * (w[0].1 + w[1].1) * (w[1].0 - w[0].0)).sum())
 }
 
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -56,7 +56,6 @@ pub fn oscillation_index(f: &[f64]) -> f64 {
 /// solver's default tolerance.
 pub const OSCILLATION_FLOOR: f64 = 1e-6;
 
-
 #[cfg(test)]
 mod tests {
     use super::*;

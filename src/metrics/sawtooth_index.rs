@@ -9,12 +9,8 @@ use super::oscillation_index::turns;
 use super::{MetricDef, MetricKind};
 use crate::solvers::FieldView;
 
-pub const METRIC: MetricDef = MetricDef {
-    name: "sawtooth_index",
-    default: false,
-    fits: |_, _| Ok(()),
-    kind: MetricKind::Field(sawtooth_index),
-};
+pub const METRIC: MetricDef =
+    MetricDef { name: "sawtooth_index", default: false, fits: |_, _| Ok(()), kind: MetricKind::Field(sawtooth_index) };
 
 /// The indicator of one traction field.
 pub fn sawtooth_index(v: &FieldView) -> f64 {

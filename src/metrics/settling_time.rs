@@ -27,7 +27,6 @@ pub fn settling_time(t: &[f64], f: &[f64]) -> Option<f64> {
     })
 }
 
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -4,7 +4,8 @@
 use super::{HistoryColumns, MetricDef, MetricKind, MetricValue};
 use crate::problem::{Loading, LoadingKind};
 
-pub const METRIC: MetricDef = MetricDef { name: "steady_value", default: true, fits: |_, _| Ok(()), kind: MetricKind::History(compute) };
+pub const METRIC: MetricDef =
+    MetricDef { name: "steady_value", default: true, fits: |_, _| Ok(()), kind: MetricKind::History(compute) };
 
 fn compute(l: &Loading, h: &HistoryColumns) -> Vec<MetricValue> {
     if l.kind == LoadingKind::Sweep {

@@ -30,6 +30,9 @@ impl RigidSlip {
     /// The slip rolled from x0 to x1 along row y, integrated exactly (thesis Eq. 2.34).
     #[inline]
     pub fn between(&self, x0_mm: f64, x1_mm: f64, y_mm: f64) -> (f64, f64) {
-        ((self.cx - self.cs * y_mm) * (x1_mm - x0_mm), self.cy * (x1_mm - x0_mm) + 0.5 * self.cs * (x1_mm * x1_mm - x0_mm * x0_mm))
+        (
+            (self.cx - self.cs * y_mm) * (x1_mm - x0_mm),
+            self.cy * (x1_mm - x0_mm) + 0.5 * self.cs * (x1_mm * x1_mm - x0_mm * x0_mm),
+        )
     }
 }

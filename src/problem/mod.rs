@@ -148,14 +148,25 @@ impl Problem {
         let f = self.flexibilities();
         let positive = |v: &[f64]| v.iter().all(|x| x.is_finite() && *x > 0.0);
         if !positive(&[h.a_mm, h.b_mm, h.p0_mpa(), self.grid.dx_mm, self.grid.dy_mm]) {
-            return Err(InputError::new("contact", format!("a = {} mm, b = {} mm, p0 = {} MPa", h.a_mm, h.b_mm, h.p0_mpa()), "a contact whose semi-axes, element sizes and peak pressure are finite and positive"));
+            return Err(InputError::new(
+                "contact",
+                format!("a = {} mm, b = {} mm, p0 = {} MPa", h.a_mm, h.b_mm, h.p0_mpa()),
+                "a contact whose semi-axes, element sizes and peak pressure are finite and positive",
+            ));
         }
         if !positive(&[c.c11, c.c22, c.c23, f.l1_mm3_n, f.l2_mm3_n, f.l3_mm3_n]) {
             return Err(InputError::new("contact.b_mm", format!("b/a = {:e}", h.b_mm / h.a_mm), format!("an axis ratio for which Kalker's coefficients and the flexibilities are finite and positive (c11 {}, c22 {}, c23 {})", c.c11, c.c22, c.c23)));
         }
         let t_end = self.loading.samples.last().map_or(0.0, |s| s.t_s);
         if !(positive(&[self.rolling.dt_s, self.rolling.dq_mm]) && t_end.is_finite()) {
-            return Err(InputError::new("rolling.v_mm_s", format!("{:e}", self.rolling.v_mm_s), format!("a speed for which the time step courant dx / v and the history's times are finite (dt = {:e} s)", self.rolling.dt_s)));
+            return Err(InputError::new(
+                "rolling.v_mm_s",
+                format!("{:e}", self.rolling.v_mm_s),
+                format!(
+                    "a speed for which the time step courant dx / v and the history's times are finite (dt = {:e} s)",
+                    self.rolling.dt_s
+                ),
+            ));
         }
         Ok(())
     }

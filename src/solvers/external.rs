@@ -35,7 +35,8 @@ impl External {
 
     /// Run the model over the whole scene and read its validated history back.
     pub fn run(&self, problem: &Problem) -> Result<History, Error> {
-        let fail = |m: String| Error::External { scene: problem.name.clone(), solver: self.spec.name.clone(), message: m };
+        let fail =
+            |m: String| Error::External { scene: problem.name.clone(), solver: self.spec.name.clone(), message: m };
         let dir =
             tempfile::Builder::new().prefix("creepbench-ext").tempdir().map_err(|e| fail(format!("temp dir: {e}")))?;
         // Removed by the interrupt handler if creepbench is stopped meanwhile, else just below.
@@ -63,7 +64,8 @@ fn run_in(spec: &ExternalSolver, problem: &Problem, dir: &Path) -> Result<Histor
         .arg(&scene_json)
         .arg(&out_csv)
         .current_dir(if problem.scene_dir.as_os_str().is_empty() { Path::new(".") } else { &problem.scene_dir });
-    process::run(command, Duration::from_secs_f64(spec.timeout_s), MODEL_OUTPUT_LIMIT_BYTES).map_err(|e| e.to_string())?;
+    process::run(command, Duration::from_secs_f64(spec.timeout_s), MODEL_OUTPUT_LIMIT_BYTES)
+        .map_err(|e| e.to_string())?;
     validate(read_output(&spec.name, &out_csv)?, problem, &out_csv)
 }
 

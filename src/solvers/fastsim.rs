@@ -11,7 +11,8 @@ use crate::problem::{LocalContact, Problem, Sample};
 /// Kalker's FASTSIM on the scene's grid.
 pub const MODEL: ModelDef = ModelDef {
     name: "fastsim",
-    summary: "Kalker's simplified theory for steady rolling, FASTSIM (Kalker 1982; thesis 2.3.6), quasi-steady at every step",
+    summary:
+        "Kalker's simplified theory for steady rolling, FASTSIM (Kalker 1982; thesis 2.3.6), quasi-steady at every step",
     extra_columns: &["n_adhesion", "n_slip"],
     iterative: false,
     check: always,

@@ -266,4 +266,3 @@ fn flat_step<const GHOST: bool, const SPIN: bool>(p: &Prepared, io: Io, k: [f64;
     }
     flat_body::<GHOST, SPIN>(p, io, k)
 }
-

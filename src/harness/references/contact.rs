@@ -87,10 +87,21 @@ fn read_history(path: &Path, steady: bool) -> Result<History, Error> {
         Ok(h) => h.iter().map(String::from).collect(),
         Err(e) => return Err(fail(FormatError::Csv { line: 1, source: e })),
     };
-    let col = |n: &str| {
-        head.iter().position(|h| h == n).ok_or_else(|| FormatError::MissingColumn { column: n.to_string() })
-    };
-    let cols = (|| Ok::<_, FormatError>([col("step")?, col("t_s")?, col("cx")?, col("cy")?, col("fn_n")?, col("fx_over_fn")?, col("fy_over_fn")?, col("n_adhesion")?, col("n_slip")?]))();
+    let col =
+        |n: &str| head.iter().position(|h| h == n).ok_or_else(|| FormatError::MissingColumn { column: n.to_string() });
+    let cols = (|| {
+        Ok::<_, FormatError>([
+            col("step")?,
+            col("t_s")?,
+            col("cx")?,
+            col("cy")?,
+            col("fn_n")?,
+            col("fx_over_fn")?,
+            col("fy_over_fn")?,
+            col("n_adhesion")?,
+            col("n_slip")?,
+        ])
+    })();
     let [cs, ct, cx, cy, fnn, fx, fy, na, ns] = match cols {
         Ok(c) => c,
         Err(e) => return Err(fail(e)),
@@ -149,15 +160,21 @@ impl ReferenceSet for ContactCases {
         // Where f reaches μ near the creepage peak the delay is ill-defined (flat top); μ per
         // step from the scene's own loading (a table may vary it).
         let mu_at: BTreeMap<usize, f64> = ours.scene.history.iter().map(|s| (s.step, s.mu)).collect();
-        let flat = contact.rows.iter().filter_map(|r| Some(r.fx_over_fn.abs() / mu_at.get(&r.step)?)).fold(0.0, f64::max);
+        let flat =
+            contact.rows.iter().filter_map(|r| Some(r.fx_over_fn.abs() / mu_at.get(&r.step)?)).fold(0.0, f64::max);
         let saturated = flat >= 0.97;
         for (solver, h) in &ours.histories {
             let ctx = Ctx { scene: &ours.name, solver, against };
             out.extend(ctx.column(h, contact, "fx_over_fn", false));
             let metric = |name: &str| ours.metric(solver, name);
             if let (Some(ours_d), Some(ref_d)) = (metric("delay_ratio"), contact_delay) {
-                let mut fd =
-                    ctx.finding("delay_ratio", None, ours_d, ref_d, "CONTACT's delay from its history, same definition");
+                let mut fd = ctx.finding(
+                    "delay_ratio",
+                    None,
+                    ours_d,
+                    ref_d,
+                    "CONTACT's delay from its history, same definition",
+                );
                 if saturated {
                     fd.gated = false;
                     fd.note = format!("f reaches {:.0} % of mu: the maximum is a flat top and the delay ill-defined (reference README); reported only", 100.0 * flat);

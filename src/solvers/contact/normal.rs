@@ -242,7 +242,9 @@ mod tests {
         let grid = crate::physics::Grid::new(16, 16, 8.56, 4.08);
         let (fnn, g, nu) = (100_000.0, 82000.0, 0.28);
         let h = crate::physics::ContactGeometry::undeformed_distance_mm(
-            &crate::physics::HertzEllipse { nominal: crate::physics::HertzContact { a_mm: 8.56, b_mm: 4.08, fn_n: fnn } },
+            &crate::physics::HertzEllipse {
+                nominal: crate::physics::HertzContact { a_mm: 8.56, b_mm: 4.08, fn_n: fnn },
+            },
             &grid,
             fnn,
             &crate::physics::Material::from_g(g, nu),

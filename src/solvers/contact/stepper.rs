@@ -6,11 +6,11 @@ use super::influence::Kernel;
 use super::normal::{NormalParams, NormalSolver};
 use super::tangential::{ElementState, StepResult, TangentialParams, TangentialSolver};
 use super::ContactError;
+use crate::error::InputError;
 use crate::history::History;
 use crate::problem::{Problem, Sample};
 use crate::solvers::sample_loop::{self, Observer};
 use crate::solvers::stepper::{FieldView, Step, Stepper};
-use crate::error::InputError;
 use crate::solvers::{ModelDef, SolveError};
 
 /// Kalker's exact theory for quasi-identical half-spaces (CONTACT-style).
@@ -181,13 +181,7 @@ impl Stepper for Contact<'_> {
 
     fn field(&self) -> Option<FieldView<'_>> {
         let (l, r) = (self.loaded.as_ref()?, self.last.as_ref()?);
-        Some(FieldView {
-            grid: &self.p.grid,
-            pressure_mpa: &l.pn,
-            tx_mpa: &r.px,
-            ty_mpa: &r.py,
-            state: Some(&r.state),
-        })
+        Some(FieldView { grid: &self.p.grid, pressure_mpa: &l.pn, tx_mpa: &r.px, ty_mpa: &r.py, state: Some(&r.state) })
     }
 }
 
