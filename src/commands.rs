@@ -197,8 +197,8 @@ pub fn bless(suite_dir: &[PathBuf], golden: &Path, shard: Option<Shard>, progres
     let suites = suite_names(suite_dir);
     let mut kept = Vec::new();
     for name in results::scene_names(golden) {
-        let old = results::read_scene(golden, &name)?;
-        let rerun = shard.is_none_or(|s| s.takes(&name)) && suites.contains(&old.scene.suite);
+        let old = results::read_resolved(golden, &name)?;
+        let rerun = shard.is_none_or(|s| s.takes(&name)) && suites.contains(&old.suite);
         if !rerun && !scenes.iter().any(|s| s.name == name) {
             kept.push(name);
         }

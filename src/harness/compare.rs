@@ -192,16 +192,12 @@ pub fn missing_scenes(
 ) -> Result<Vec<Finding>, Error> {
     let mut out = Vec::new();
     for n in results::scene_names(dir).into_iter().filter(|n| !scenes.iter().any(|s| &s.name == n)) {
-        let theirs = results::read_scene(dir, &n)?;
-        if expected(&n, &theirs.scene.suite) {
+        let theirs = results::read_resolved(dir, &n)?;
+        if expected(&n, &theirs.suite) {
             let ctx = Ctx { scene: &n, solver: "-", against };
             out.push(ctx.unmatched(
                 "scene",
-                format!(
-                    "{} has this scene of suite {:?}, the run did not produce it",
-                    against.label(),
-                    theirs.scene.suite
-                ),
+                format!("{} has this scene of suite {:?}, the run did not produce it", against.label(), theirs.suite),
             ));
         }
     }

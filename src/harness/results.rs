@@ -121,12 +121,18 @@ pub fn parse_metrics(text: &str) -> Result<MetricMap, FormatError> {
     Ok(out)
 }
 
+/// Only the scene.json of `dir/<name>/` (which suite it is of, without reading its histories).
+pub fn read_resolved(dir: &Path, name: &str) -> Result<ResolvedScene, Error> {
+    let path = dir.join(name).join("scene.json");
+    let text = read_text(&path, GOLDEN_LIMIT_BYTES, "result file")?;
+    ResolvedScene::from_json(&text).map_err(|e| Error::Format { path, source: FormatError::Json(e) })
+}
+
 /// Read `dir/<name>/` back.
 pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
     let d = dir.join(name);
     let read = |f: &str| read_text(&d.join(f), GOLDEN_LIMIT_BYTES, "result file");
-    let scene = ResolvedScene::from_json(&read("scene.json")?)
-        .map_err(|e| Error::Format { path: d.join("scene.json"), source: FormatError::Json(e) })?;
+    let scene = read_resolved(dir, name)?;
     let mut s = StoredScene {
         name: name.into(),
         histories: BTreeMap::new(),

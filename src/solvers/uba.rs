@@ -47,9 +47,10 @@ fn check(p: &Problem) -> Result<(), InputError> {
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let n = p.grid.len();
-    let local = p.local_contact(p.loading.first().fn_n);
-    let prep = Prepared::new(&p.grid, &local.planform.pressure_mpa, p.loading.first().mu);
-    Ok(Box::new(Uba { p, local, prep, t: Tractions::zero(n), scratch: Tractions::zero(n) }))
+    let first = p.loading.first();
+    let local = p.local_contact(first.fn_n);
+    let prep = Prepared::new(&p.grid, &local.planform.pressure_mpa, first.mu);
+    Ok(Box::new(Uba { p, local, prep, prep_mu: first.mu, t: Tractions::zero(n), scratch: Tractions::zero(n) }))
 }
 
 /// The UBA's state: the contact at the current load, the prepared step and the tractions.
@@ -57,6 +58,8 @@ struct Uba<'a> {
     p: &'a Problem,
     local: LocalContact,
     prep: Prepared,
+    /// The μ `prep` was made for.
+    prep_mu: f64,
     t: Tractions,
     scratch: Tractions,
 }
@@ -79,8 +82,11 @@ impl Stepper for Uba<'_> {
                     }
                 }
             }
+            self.prep = Prepared::new(&self.p.grid, &self.local.planform.pressure_mpa, at.mu);
+        } else if at.mu != self.prep_mu {
+            self.prep = Prepared::new(&self.p.grid, &self.local.planform.pressure_mpa, at.mu);
         }
-        self.prep = Prepared::new(&self.p.grid, &self.local.planform.pressure_mpa, at.mu);
+        self.prep_mu = at.mu;
         Ok(())
     }
 

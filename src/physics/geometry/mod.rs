@@ -44,6 +44,8 @@ pub struct Planform {
     pub pressure_mpa: Vec<f64>,
     /// Σ pressure over the grid [MPa], the denominator of the traction coefficients (Eq. 3.12).
     pub pressure_sum_mpa: f64,
+    /// Number of loaded elements (p > 0).
+    pub loaded: usize,
     /// Half-length of the contact chord of each grid row [mm] (0 where the row has no contact):
     /// the row's exact leading edge is at x = −half chord (`[model] leading_edge = "exact"`).
     pub half_chord_mm: Vec<f64>,
@@ -53,12 +55,8 @@ impl Planform {
     /// A planform from its pressure, summing it once in flat order.
     pub fn new(ellipse: HertzContact, pressure_mpa: Vec<f64>, half_chord_mm: Vec<f64>) -> Self {
         let pressure_sum_mpa = pressure_mpa.iter().sum();
-        Planform { ellipse, pressure_mpa, pressure_sum_mpa, half_chord_mm }
-    }
-
-    /// Number of loaded elements (p > 0).
-    pub fn loaded(&self) -> usize {
-        self.pressure_mpa.iter().filter(|&&p| p > 0.0).count()
+        let loaded = pressure_mpa.iter().filter(|&&p| p > 0.0).count();
+        Planform { ellipse, pressure_mpa, pressure_sum_mpa, loaded, half_chord_mm }
     }
 
     /// Traction coefficients `(Σ τx / Σ p, Σ τy / Σ p)` from the traction sums (thesis Eq. 3.12).
