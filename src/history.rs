@@ -11,6 +11,10 @@ pub const COLUMNS: [&str; 8] = ["step", "t_s", "cx", "cy", "cs", "fn_n", "fx_ove
 /// (optional in an external model's output, which gets the scene's).
 pub const MU: &str = "mu";
 
+/// The spin-moment column [N·mm] every built-in model writes last (optional for external
+/// models): the references' sign convention, [`crate::physics::moment`].
+pub const MZ: &str = "mz_nmm";
+
 /// One row: the loading and the traction coefficients, plus solver-specific extra values.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {

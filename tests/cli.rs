@@ -89,7 +89,7 @@ fn bad_input_exits_2_and_writes_nothing() {
         (base().replace("mx = 22", "mx = \"22\""), "grid.mx", "whole number"),
         (base().replace("mx = 22", "mx = 0"), "grid.mx", "[1, 512]"),
         (base().replace("[\"uba\", \"fastsim\"]", "[\"uba\", \"brush\"]"), "solvers[1]", "\"brush\""),
-        (base() + "[rolling]\ncourant = 1.5\n", "rolling.courant", "courant <= 1"),
+        (base() + "[rolling]\ncourant = 80\n", "rolling.courant", "(0, 64]"),
         (
             base().replace("kind = \"step\"\nc = 0.005\nsteps = 10", "kind = \"table\"\nfile = \"missing.csv\""),
             "creepage.file",

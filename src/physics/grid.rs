@@ -2,7 +2,10 @@
 //!
 //! Element (i, j), i = 0..mx along x (rolling direction), j = 0..my along y, flat index
 //! `k = j*mx + i`, centre `x_i = −a + dx/2 + i dx`, `y_j = −b + dy/2 + j dy`. Material enters at
-//! the leading edge x = −a and moves in +x (the thesis's and the UBA's orientation).
+//! the leading edge x = −a and moves in +x (the thesis's and the UBA's orientation). CONTACT's x
+//! (and the spin convention of the outputs) runs the other way: `x_C = −x`, material entering at
+//! `x_C = +a`; the conversion happens in the rigid slip ([`crate::physics::RigidSlip`]), the
+//! x–y coupling of the influence coefficients and the spin moment, nowhere else.
 
 /// Where a row's integration starts (`[model] leading_edge`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]

@@ -1,5 +1,6 @@
 //! Contact physics written once and shared by every solver: material constants, Hertz,
-//! Kalker's coefficients and flexibilities, the grid, the pressure and the traction bound.
+//! Kalker's coefficients and flexibilities, the grid, the pressure, the rigid slip, the traction
+//! bound and the spin moment.
 //!
 //! Units throughout: mm, N, MPa (N/mm²), s; creepages dimensionless, spin in 1/mm.
 
@@ -9,6 +10,7 @@ pub mod grid;
 pub mod hertz;
 pub mod kalker;
 pub mod material;
+pub mod moment;
 pub mod pressure;
 pub mod slip;
 
@@ -18,5 +20,6 @@ pub use grid::{Grid, LeadingEdge};
 pub use hertz::{HertzContact, Radii};
 pub use kalker::{CoefficientSource, Coefficients, Flexibilities, FlexibilityModel};
 pub use material::Material;
+pub use moment::moment_sum;
 pub use pressure::PressureShape;
 pub use slip::RigidSlip;

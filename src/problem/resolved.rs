@@ -27,6 +27,9 @@ pub struct ResolvedScene {
     pub c11: f64,
     pub c22: f64,
     pub c23: f64,
+    /// Kalker's spin–moment coefficient (absent in results written before it was added).
+    #[serde(default)]
+    pub c33: f64,
     pub l1_mm3_n: f64,
     pub l2_mm3_n: f64,
     pub l3_mm3_n: f64,
@@ -83,6 +86,7 @@ impl ResolvedScene {
             c11: p.coefficients.c11,
             c22: p.coefficients.c22,
             c23: p.coefficients.c23,
+            c33: p.coefficients.c33,
             l1_mm3_n: flex.l1_mm3_n,
             l2_mm3_n: flex.l2_mm3_n,
             l3_mm3_n: flex.l3_mm3_n,

@@ -3,12 +3,12 @@
 //! with the traction bound, and the traction field. The two solvers differ only in how they march.
 
 pub use crate::physics::LeadingEdge;
-use crate::physics::{project_to_bound, Flexibilities, Grid, Planform, RigidSlip};
+use crate::physics::{moment_sum, project_to_bound, Flexibilities, Grid, Planform, RigidSlip};
 use crate::problem::Sample;
 use crate::solvers::{FieldView, Step, Termination};
 
 /// The rigid slip over the flexibilities [MPa/mm] (the left side of thesis Eq. 3.4/3.6):
-/// `kx = cx/L1 − cs y/L3`, `ky = cy/L2 + cs x/L3`.
+/// `kx = cx/L1 − cs y/L3`, `ky = cy/L2 − cs x/L3` (grid x; CONTACT's spin sign, [`RigidSlip`]).
 pub fn slip_rates(s: &Sample, flex: &Flexibilities) -> RigidSlip {
     rates(s.cx, s.cy, s.cs, flex)
 }
@@ -76,13 +76,26 @@ impl Tractions {
     }
 }
 
-/// A brush model's solve: the coefficients from the traction sums over the planform, and the
-/// adhesion and slip counts (the extra columns `n_adhesion, n_slip`).
-pub fn step(planform: &Planform, (sum_tx, sum_ty): (f64, f64), n_loaded: usize, n_slip: usize) -> Step {
+/// A brush model's solve: the coefficients from the traction sums over the planform, the spin
+/// moment scaled the same way (`FN Σ m / Σ p`, so that it is consistent with f = Σ τ / Σ p),
+/// and the adhesion and slip counts (the extra columns `n_adhesion, n_slip`).
+pub fn step(
+    (grid, planform): (&Grid, &Planform),
+    t: &Tractions,
+    (sum_tx, sum_ty): (f64, f64),
+    n_loaded: usize,
+    n_slip: usize,
+) -> Step {
     let (fx, fy) = planform.coefficients(sum_tx, sum_ty);
+    let mz_nmm = if planform.pressure_sum_mpa > 0.0 {
+        planform.ellipse.fn_n * moment_sum(grid, &t.tx, &t.ty) / planform.pressure_sum_mpa
+    } else {
+        0.0
+    };
     Step {
         fx_over_fn: fx,
         fy_over_fn: fy,
+        mz_nmm,
         extra: vec![(n_loaded - n_slip) as f64, n_slip as f64],
         termination: Termination::Direct,
     }

@@ -43,7 +43,8 @@ impl Stepper for Fastsim<'_> {
         let rates = brush::slip_rates(at, &self.local.flex);
         let how = (self.p.model.leading_edge, Integration::Exact);
         let n_slip = brush::steady_march(&self.p.grid, &self.local.planform, at.mu, &rates, how, &mut self.t);
-        Ok(brush::step(&self.local.planform, self.t.sums(), self.local.planform.loaded, n_slip))
+        let (grid, planform) = (&self.p.grid, &self.local.planform);
+        Ok(brush::step((grid, planform), &self.t, self.t.sums(), planform.loaded, n_slip))
     }
 
     /// No memory: the steady response at this step's creepage.

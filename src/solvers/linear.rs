@@ -1,6 +1,7 @@
 //! Kalker's linear theory of rolling contact (Kalker 1967; Kalker 1990, sec. 1.5 and Table A1
 //! via the thesis's App. A): `Fx = G a b C11 cx`, `Fy = G a b C22 cy + G (ab)^(3/2) C23 cs`,
-//! divided by FN, the (fx, fy) vector then saturated at μ (direction kept). Steady, no memory: on
+//! `Mz = −G (ab)^(3/2) C23 cy + G (ab)^2 C33 cs` (the references' sign convention), forces
+//! divided by FN, the (fx, fy) vector then saturated at μ (direction kept, Mz scaled alike). Steady, no memory: on
 //! a time history it gives the steady value at every step. Signs: positive creepage and positive
 //! spin give positive coefficients (CONTACT's convention, C23 > 0).
 
@@ -13,7 +14,7 @@ use crate::problem::{Problem, Sample};
 /// Kalker's linear theory, saturated at μ.
 pub const MODEL: ModelDef = ModelDef {
     name: "linear",
-    summary: "Kalker's linear theory (Kalker 1967; C11, C22, C23 of Table A1), f saturated at μ",
+    summary: "Kalker's linear theory (Kalker 1967; C11, C22, C23, C33 of Table A1), f saturated at μ",
     extra_columns: &[],
     iterative: false,
     check: always,
@@ -22,20 +23,21 @@ pub const MODEL: ModelDef = ModelDef {
 };
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
-    Ok(Box::new(Linear { p, scale: (0.0, 0.0) }))
+    Ok(Box::new(Linear { p, scale: (0.0, 0.0, 0.0) }))
 }
 
 struct Linear<'a> {
     p: &'a Problem,
-    /// (G a b / FN, G (ab)^(3/2) / FN) at the current load.
-    scale: (f64, f64),
+    /// (G a b / FN, G (ab)^(3/2) / FN, G (ab)^2 / FN) at the current load.
+    scale: (f64, f64, f64),
 }
 
 impl Stepper for Linear<'_> {
     fn load(&mut self, at: &Sample) -> Result<(), SolveError> {
         let e = self.p.geometry.ellipse_at(at.fn_n);
         let gab = self.p.material.g_mpa * e.a_mm * e.b_mm;
-        self.scale = (gab / at.fn_n, gab * (e.a_mm * e.b_mm).sqrt() / at.fn_n);
+        let ab = e.a_mm * e.b_mm;
+        self.scale = (gab / at.fn_n, gab * ab.sqrt() / at.fn_n, gab * ab / at.fn_n);
         Ok(())
     }
 
@@ -43,8 +45,16 @@ impl Stepper for Linear<'_> {
         let c = &self.p.coefficients;
         let fx = self.scale.0 * c.c11 * at.cx;
         let fy = self.scale.0 * c.c22 * at.cy + self.scale.1 * c.c23 * at.cs;
-        let (fx, fy, _) = project_to_bound(fx, fy, at.mu);
-        Ok(Step { fx_over_fn: fx, fy_over_fn: fy, extra: Vec::new(), termination: Termination::Direct })
+        let mz_over_fn = -self.scale.1 * c.c23 * at.cy + self.scale.2 * c.c33 * at.cs;
+        let (sx, sy, _) = project_to_bound(fx, fy, at.mu);
+        let saturation = if fx != 0.0 || fy != 0.0 { sx.hypot(sy) / fx.hypot(fy) } else { 1.0 };
+        Ok(Step {
+            fx_over_fn: sx,
+            fy_over_fn: sy,
+            mz_nmm: mz_over_fn * saturation * at.fn_n,
+            extra: Vec::new(),
+            termination: Termination::Direct,
+        })
     }
 
     fn transient(&mut self, at: &Sample) -> Result<Step, SolveError> {

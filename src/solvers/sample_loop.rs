@@ -4,7 +4,7 @@
 
 use super::stepper::FieldView;
 use super::{ModelDef, SolveError};
-use crate::history::{History, Row};
+use crate::history::{History, Row, MZ};
 use crate::metrics::MetricDef;
 use crate::problem::{Problem, Sample};
 use std::time::Instant;
@@ -41,6 +41,7 @@ pub fn run(
     if def.iterative {
         columns.push("termination");
     }
+    columns.push(MZ);
     let mut history = History::new(def.name, &columns);
     history.rows.reserve(loading.samples.len() + 1);
     let mut field_values: Vec<(&'static str, f64)> = field_metrics.iter().map(|m| (m.name, 0.0)).collect();
@@ -61,6 +62,7 @@ pub fn run(
         if def.iterative {
             extra.push(step.termination.code());
         }
+        extra.push(step.mz_nmm);
         history.rows.push(Row::new(s, step.fx_over_fn, step.fy_over_fn, extra));
         if !field_values.is_empty() || observer.is_some() {
             if let Some(view) = stepper.field() {

@@ -16,6 +16,9 @@ pub struct Step {
     /// Fx/FN and Fy/FN (thesis Eq. 3.12).
     pub fx_over_fn: f64,
     pub fy_over_fn: f64,
+    /// Moment about z of the tractions [N·mm], the references' sign convention
+    /// ([`crate::physics::moment`]).
+    pub mz_nmm: f64,
     /// Values of the model's extra columns ([`super::ModelDef::extra_columns`]), in order.
     pub extra: Vec<f64>,
     pub termination: Termination,

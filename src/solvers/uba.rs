@@ -9,8 +9,10 @@
 //! growing odd-even mode is what appears as a sawtooth (clipped by the bound, hence bounded but
 //! wrong). Eq. 3.10 also prints Δy where the transport is along x for both components.
 //!
-//! Update for each loaded element, with Courant number C = V dt / dx ≤ 1:
-//! `τ_i ← τ_i − C (τ_i − τ_{i−1}) + C dx k_i`, `k = (cx/L1 − cs y/L3, cy/L2 + cs x/L3)`;
+//! Update for each loaded element, with Courant number C = V dt / dx ≤ 1 (a larger time step is
+//! split into ceil(C) sub-steps):
+//! `τ_i ← τ_i − C (τ_i − τ_{i−1}) + C dx k_i`, `k = (cx/L1 − cs y/L3, cy/L2 − cs x/L3)`
+//! (the thesis's Eq. 3.4 with its spin sign converted to CONTACT's, see [`crate::physics::RigidSlip`]);
 //! at C = 1 material moves exactly one element per step: `τ_i ← τ_{i−1} + dx k_i`.
 
 use super::brush::{self, Integration, LeadingEdge, Tractions};
@@ -32,17 +34,28 @@ pub const MODEL: ModelDef = ModelDef {
     build,
 };
 
-/// The explicit scheme is stable only for courant ≤ 1 (CFL).
+/// Largest Courant number the UBA accepts: it sub-steps (see [`substeps`]), and a scene asking
+/// for more than this many sub-steps per time step is almost certainly a unit mistake.
+const MAX_COURANT: f64 = 64.0;
+
+/// The explicit scheme is stable only for a Courant number ≤ 1 (CFL); larger time steps are
+/// split into `ceil(courant)` equal sub-steps.
 fn check(p: &Problem) -> Result<(), InputError> {
     let c = p.rolling.courant;
-    if c > 0.0 && c <= 1.0 {
+    if c > 0.0 && c <= MAX_COURANT {
         return Ok(());
     }
     Err(InputError::new(
         "rolling.courant",
         c,
-        "(0, 1] when the scene runs uba: the explicit upwind scheme is stable only for courant <= 1",
+        format!("(0, {MAX_COURANT}] when the scene runs uba (its upwind step is stable for courant <= 1; larger steps are split into ceil(courant) sub-steps)"),
     ))
+}
+
+/// Sub-steps per time step and the Courant number of each: `n = ceil(C)`, `C/n ≤ 1`.
+fn substeps(courant: f64) -> (usize, f64) {
+    let n = courant.ceil().max(1.0) as usize;
+    (n, courant / n as f64)
 }
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
@@ -66,7 +79,7 @@ struct Uba<'a> {
 
 impl Uba<'_> {
     fn row(&self, n_slip: usize, sums: (f64, f64)) -> Step {
-        brush::step(&self.local.planform, sums, self.prep.loaded(), n_slip)
+        brush::step((&self.p.grid, &self.local.planform), &self.t, sums, self.prep.loaded(), n_slip)
     }
 }
 
@@ -98,12 +111,17 @@ impl Stepper for Uba<'_> {
         Ok(self.row(n_slip, self.t.sums()))
     }
 
+    /// One time step: `ceil(C)` explicit sub-steps of Courant number `C/ceil(C)` each.
     fn transient(&mut self, at: &Sample) -> Result<Step, SolveError> {
         let rates = brush::slip_rates(at, &self.local.flex);
-        let scheme = (self.p.rolling.courant, self.p.model.leading_edge);
-        let sums =
-            step((&self.p.grid, &self.local.planform), &mut self.prep, &rates, scheme, &self.t, &mut self.scratch);
-        std::mem::swap(&mut self.t, &mut self.scratch);
+        let (n, courant) = substeps(self.p.rolling.courant);
+        let scheme = (courant, self.p.model.leading_edge);
+        let mut sums = StepSums { n_slip: 0, sum_tx: 0.0, sum_ty: 0.0 };
+        for _ in 0..n {
+            sums =
+                step((&self.p.grid, &self.local.planform), &mut self.prep, &rates, scheme, &self.t, &mut self.scratch);
+            std::mem::swap(&mut self.t, &mut self.scratch);
+        }
         Ok(self.row(sums.n_slip, (sums.sum_tx, sums.sum_ty)))
     }
 
@@ -184,10 +202,11 @@ pub fn step(
             prep.ghost_y[grid.index(first, j)] = gy;
         }
     }
-    // Source per step, C·dx·k(x, y) (Eq. 3.4): kx = cx/L1 − cs y/L3, ky = cy/L2 + cs x/L3.
+    // Source per step, C·dx·k(x, y) (Eq. 3.4), k the rigid slip over the flexibilities.
     let (c, cdx) = (courant, courant * grid.dx_mm);
-    let consts = [c, cdx * rates.cx, -cdx * rates.cs, cdx * rates.cy, cdx * rates.cs];
-    let spin = rates.cs != 0.0;
+    let [kx0, kx_y, ky0, ky_x] = rates.affine();
+    let consts = [c, cdx * kx0, cdx * kx_y, cdx * ky0, cdx * ky_x];
+    let spin = kx_y != 0.0 || ky_x != 0.0;
     let io = (old.tx.as_slice(), old.ty.as_slice(), new.tx.as_mut_slice(), new.ty.as_mut_slice());
     match (ghost, spin) {
         (false, false) => flat_step::<false, false>(prep, io, consts),
@@ -209,7 +228,7 @@ pub struct StepSums {
 /// Old tractions (x, y) in, new tractions (x, y) out.
 type Io<'a> = (&'a [f64], &'a [f64], &'a mut [f64], &'a mut [f64]);
 
-/// The flat pass: `consts` = [C, C·dx·cx/L1, −C·dx·cs/L3, C·dx·cy/L2, C·dx·cs/L3]. `GHOST`:
+/// The flat pass: `consts` = [C, C·dx·kx0, C·dx·dkx/dy, C·dx·ky0, C·dx·dky/dx] ([`RigidSlip::affine`]). `GHOST`:
 /// rows start from a ghost inflow value (exact leading edge), else from zero; `SPIN`: the source
 /// varies with x and y, else it is constant (fewer streams over the grid). The traction sums
 /// follow in one pass of four partial sums (a fixed order: deterministic, and vectorised where a

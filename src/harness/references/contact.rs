@@ -65,7 +65,7 @@ impl ContactCases {
                 pn_max_mpa: num("pn_max_mpa").unwrap_or(f64::NAN),
                 freq_hz: num("freq_hz"),
             };
-            let h = read_history(&dir.join(format!("contact/{}.csv", c.name)), c.kind == "steady")?;
+            let h = read_history(&dir.join(format!("contact/{}.csv", c.name)), usize::from(c.kind == "steady"), &[])?;
             out.histories.insert(c.name.clone(), h);
             out.cases.insert(c.name.clone(), c);
         }
@@ -78,8 +78,10 @@ impl ContactCases {
     }
 }
 
-/// A CONTACT history CSV as a [`History`] named "CONTACT".
-fn read_history(path: &Path, steady: bool) -> Result<History, Error> {
+/// A CONTACT history CSV (the reference READMEs' format) as a [`History`] named "CONTACT": steps
+/// shifted by `step_offset` (the thesis sweeps number from 0, ours from 1), `cs` and `mu` read
+/// where the file has them, and the extra columns `n_adhesion, n_slip` plus `extra`.
+pub(super) fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> Result<History, Error> {
     let text = read(path)?;
     let fail = Error::format(path);
     let mut rdr = csv::Reader::from_reader(text.as_bytes());
@@ -87,31 +89,23 @@ fn read_history(path: &Path, steady: bool) -> Result<History, Error> {
         Ok(h) => h.iter().map(String::from).collect(),
         Err(e) => return Err(fail(FormatError::Csv { line: 1, source: e })),
     };
-    let col =
-        |n: &str| head.iter().position(|h| h == n).ok_or_else(|| FormatError::MissingColumn { column: n.to_string() });
+    let find = |n: &str| head.iter().position(|h| h == n);
+    let col = |n: &str| find(n).ok_or_else(|| FormatError::MissingColumn { column: n.to_string() });
     let cols = (|| {
-        Ok::<_, FormatError>([
-            col("step")?,
-            col("t_s")?,
-            col("cx")?,
-            col("cy")?,
-            col("fn_n")?,
-            col("fx_over_fn")?,
-            col("fy_over_fn")?,
-            col("n_adhesion")?,
-            col("n_slip")?,
-        ])
+        let lead = ["step", "t_s", "cx", "cy", "fn_n", "fx_over_fn", "fy_over_fn", "n_adhesion", "n_slip"];
+        lead.iter().chain(extra).map(|n| col(n)).collect::<Result<Vec<usize>, FormatError>>()
     })();
-    let [cs, ct, cx, cy, fnn, fx, fy, na, ns] = match cols {
+    let cols = match cols {
         Ok(c) => c,
         Err(e) => return Err(fail(e)),
     };
-    let mut h = History::new("CONTACT", &["n_adhesion", "n_slip"]);
-    let mut rows = Vec::new();
+    let (cs_col, mu_col) = (find("cs"), find("mu"));
+    let mut extra_names = vec!["n_adhesion", "n_slip"];
+    extra_names.extend_from_slice(extra);
+    let mut h = History::new("CONTACT", &extra_names);
     for (line, rec) in rdr.records().enumerate() {
         let line = line + 2;
-        let rec = rec.map_err(|e| FormatError::Csv { line, source: e });
-        let row = rec.and_then(|rec| {
+        let row = rec.map_err(|e| FormatError::Csv { line, source: e }).and_then(|rec| {
             let n = |i: usize| {
                 rec[i].parse::<f64>().map_err(|_| FormatError::Value {
                     line,
@@ -120,25 +114,25 @@ fn read_history(path: &Path, steady: bool) -> Result<History, Error> {
                     what: "a number",
                 })
             };
+            let opt = |c: Option<usize>, default: f64| c.map_or(Ok(default), n);
             Ok(Row {
-                step: n(cs)? as usize + usize::from(steady),
-                t_s: n(ct)?,
-                cx: n(cx)?,
-                cy: n(cy)?,
-                cs: 0.0,
-                fn_n: n(fnn)?,
-                mu: f64::NAN,
-                fx_over_fn: n(fx)?,
-                fy_over_fn: n(fy)?,
-                extra: vec![n(na)?, n(ns)?],
+                step: n(cols[0])? as usize + step_offset,
+                t_s: n(cols[1])?,
+                cx: n(cols[2])?,
+                cy: n(cols[3])?,
+                cs: opt(cs_col, 0.0)?,
+                fn_n: n(cols[4])?,
+                mu: opt(mu_col, f64::NAN)?,
+                fx_over_fn: n(cols[5])?,
+                fy_over_fn: n(cols[6])?,
+                extra: cols[7..].iter().map(|&c| n(c)).collect::<Result<Vec<f64>, FormatError>>()?,
             })
         });
         match row {
-            Ok(r) => rows.push(r),
+            Ok(r) => h.rows.push(r),
             Err(e) => return Err(Error::Format { path: path.to_path_buf(), source: e }),
         }
     }
-    h.rows = rows;
     Ok(h)
 }
 

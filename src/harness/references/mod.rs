@@ -3,6 +3,7 @@
 //! it; [`References::sets`] is the registry the gate and the report iterate.
 
 pub mod contact;
+pub mod envelope;
 pub mod thesis;
 
 use super::compare::Finding;
@@ -28,6 +29,7 @@ pub trait ReferenceSet: Send + Sync {
 #[derive(Debug, Clone, Default)]
 pub struct References {
     pub contact: contact::ContactCases,
+    pub envelope: envelope::EnvelopeCases,
     pub thesis: thesis::ThesisTables,
 }
 
@@ -37,13 +39,17 @@ impl References {
         // Every file against the reviewed checksums: a changed, missing or extra reference file
         // fails until its manifest is updated in a reviewed commit.
         crate::safety::manifest::verify(dir).map_err(|source| Error::Manifest { dir: dir.to_path_buf(), source })?;
-        Ok(References { contact: contact::ContactCases::load(dir)?, thesis: thesis::ThesisTables::load(dir)? })
+        Ok(References {
+            contact: contact::ContactCases::load(dir)?,
+            envelope: envelope::EnvelopeCases::load(dir)?,
+            thesis: thesis::ThesisTables::load(dir)?,
+        })
     }
 
     /// The registry: every set, in the order of the report. Adding a set: its file, a field and
     /// a line here.
-    pub fn sets(&self) -> [&dyn ReferenceSet; 2] {
-        [&self.contact, &self.thesis]
+    pub fn sets(&self) -> [&dyn ReferenceSet; 3] {
+        [&self.contact, &self.envelope, &self.thesis]
     }
 
     /// The first history any set holds for a scene (drawn as markers in the plots).

@@ -12,6 +12,10 @@
 //! * `Axy = Ayx = nu/(pi G) I[XY/r^3]`
 //!
 //! `G` is the combined shear modulus [MPa] and `nu` Poisson's ratio of the (identical) bodies.
+//!
+//! The grid's x runs against CONTACT's (`x_C = −x`, [`crate::physics::Grid`]) while the tangential
+//! components are CONTACT's flipped ones (the references' sign convention): of the formulas above,
+//! written in CONTACT's frame, only `Axy` is odd in X, so in grid coordinates it changes sign.
 
 use super::ContactError;
 
@@ -140,7 +144,7 @@ impl Kernel {
                 zz.push(c * (1.0 - nu) * r.one_over_r);
                 xx.push(c * (r.xx + (1.0 - nu) * r.yy));
                 yy.push(c * (r.yy + (1.0 - nu) * r.xx));
-                xy.push(c * nu * r.xy);
+                xy.push(-c * nu * r.xy);
             }
         }
         if zz.iter().chain(xx.iter()).chain(yy.iter()).chain(xy.iter()).any(|v| !v.is_finite()) {

@@ -7,6 +7,7 @@ use super::normal::{NormalParams, NormalSolver};
 use super::tangential::{ElementState, StepResult, TangentialParams, TangentialSolver};
 use super::ContactError;
 use crate::error::InputError;
+use crate::physics::moment_sum;
 use crate::history::History;
 use crate::problem::{Problem, Sample};
 use crate::solvers::sample_loop::{self, Observer};
@@ -116,6 +117,7 @@ impl Contact<'_> {
         let step = Step {
             fx_over_fn: r.px.iter().sum::<f64>() / l.pn_sum,
             fy_over_fn: r.py.iter().sum::<f64>() / l.pn_sum,
+            mz_nmm: moment_sum(&self.p.grid, &r.px, &r.py) * self.p.grid.element_area_mm2(),
             extra: vec![r.n_adhesion as f64, r.n_slip as f64, r.iterations as f64, r.residual, l.pn_max],
             termination: r.termination,
         };

@@ -4,9 +4,12 @@
 //! operators.
 //!
 //! Per contact element `k` (pn_k > 0), traction bound `g_k = mu pn_k` [MPa]:
-//! * rigid slip of the step `w_k = dq (cx - cs y_k, cy + cs x_k)` [mm] ([`RigidSlip`]);
+//! * rigid slip of the step `w_k = dq (cx - cs y_k, cy - cs (x_k - dq/6))` [mm] ([`RigidSlip`] in
+//!   grid coordinates, spin evaluated `dq/6` downstream of the centre as CONTACT does);
 //! * transient: previous displacement `u'_k = (A_s p')_k`, kernel shifted by `dq` (material that is
-//!   at `x_k` now was at `x_k - dq`), slip `s_k = w_k + u'_k - (A p)_k` [mm];
+//!   at `x_k` now was at `x_k - dq`), slip `s_k = w_k + u'_k - (A p)_k` [mm]; for `dq > dx`
+//!   material that entered the contact during the step slips only from the leading edge on:
+//!   `s_k = facdt_k w_k + u_edge - (A p)_k` ([`Entering`]);
 //! * steady rolling: the fixed point `p' = p`, `s = w - (A - A_s) p`;
 //! * adhesion `s_k = 0, |p_k| <= g_k`; slip `|p_k| = g_k, s_k = lambda p_k/|p_k|`, `lambda >= 0`.
 //!
@@ -184,6 +187,26 @@ impl StepResult {
     }
 }
 
+/// CONTACT's default offset of the spin term, as a fraction of `dq` (m_sdis.f90, `set_tang_rhs`:
+/// `w_y = CETA + CPHI (x_C + FACPHI dq)`, FACPHI = 1/6 for rolling): the spin slip accumulated
+/// over a step is evaluated between the element centre and its upstream position.
+const FACPHI: f64 = 1.0 / 6.0;
+
+/// Elements whose centre is closer than `dq` to a leading edge (only when `dq > dx`): their
+/// material was outside the contact at the previous time. CONTACT's leading-edge correction
+/// (m_leadedge.f90 `sxbnd`/`subnd`, m_stang.f90 eq. 1b): the rigid slip counts only over the
+/// fraction `facdt = min(1, (i - i0 + 1) dx / dq)` of the step spent inside (the edge taken at the
+/// exterior element `i0 - 1` upstream of the segment's first element `i0`), and the previous
+/// displacement is that of the unshifted kernel at the edge element, `(A p')_(i0-1)`. No
+/// correction for `i < 2` (the potential contact must hold an exterior element upstream), and
+/// `u_edge = 0` for segments starting at `i0 < 2`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Entering {
+    k: usize,
+    facdt: f64,
+    edge: Option<usize>,
+}
+
 /// The grid and the contact area of the current load.
 struct Layout {
     mx: usize,
@@ -204,6 +227,8 @@ struct Layout {
     mask: Vec<bool>,
     /// Contact spans per row, for the incremental slip update.
     spans: Spans,
+    /// Elements that enter the contact during a transient step (`dq > dx` only).
+    entering: Vec<Entering>,
 }
 
 impl Layout {
@@ -242,16 +267,58 @@ impl Layout {
         self.mask.clear();
         self.mask.extend(pn_mpa.iter().map(|&v| v > 0.0));
         self.spans = Spans::new(mx, my, pn_mpa);
+        self.entering = self.find_entering();
         Ok(())
     }
 
-    /// Rigid slip of the step `w_k = dq (cx - cs y_k, cy + cs x_k)` [mm] added into `(bx, by)`.
-    fn add_rigid_slip(&self, p: &TangentialParams, bx: &mut [f64], by: &mut [f64]) {
+    /// The [`Entering`] elements of the current contact area.
+    fn find_entering(&self) -> Vec<Entering> {
+        let mut out = Vec::new();
+        if self.shift_mm <= self.dx_mm {
+            return out;
+        }
+        for j in 0..self.my {
+            let mut i0 = 0;
+            for i in 0..self.mx {
+                let k = j * self.mx + i;
+                if !self.mask[k] {
+                    continue;
+                }
+                if i == 0 || !self.mask[k - 1] {
+                    i0 = i;
+                }
+                let facdt = ((i - i0 + 1) as f64 * self.dx_mm / self.shift_mm).min(1.0);
+                if i >= 2 && facdt < 0.9999 {
+                    out.push(Entering { k, facdt, edge: (i0 >= 2).then(|| j * self.mx + i0 - 1) });
+                }
+            }
+        }
+        out
+    }
+
+    /// Rigid slip of the step `dq w_k` [mm] added into `(bx, by)`, the spin term at the offset
+    /// [`FACPHI`]. With `edge_u = A p'` (transient steps), the [`Entering`] elements get
+    /// `facdt dq w_k + (A p')_edge` instead of `dq w_k + u'_k`.
+    fn add_rigid_slip(
+        &self,
+        p: &TangentialParams,
+        edge_u: Option<(&[f64], &[f64])>,
+        bx: &mut [f64],
+        by: &mut [f64],
+    ) {
         let (dq, w) = (p.dq_mm, p.rigid_slip());
+        let offset_mm = FACPHI * dq;
         for &k in &self.contact {
-            let (wx, wy) = w.at(self.x_mm[k], self.y_mm[k]);
+            let (wx, wy) = w.at(self.x_mm[k] - offset_mm, self.y_mm[k]);
             bx[k] += dq * wx;
             by[k] += dq * wy;
+        }
+        let Some((ux, uy)) = edge_u else { return };
+        for e in &self.entering {
+            let (wx, wy) = w.at(self.x_mm[e.k] - offset_mm, self.y_mm[e.k]);
+            let (ex, ey) = e.edge.map_or((0.0, 0.0), |m| (ux[m], uy[m]));
+            bx[e.k] = e.facdt * dq * wx + ex;
+            by[e.k] = e.facdt * dq * wy + ey;
         }
     }
 }
@@ -438,6 +505,7 @@ impl TangentialSolver {
             contact_down: Vec::with_capacity(n),
             mask: vec![false; n],
             spans: Spans::new(mx, my, &vec![0.0; n]),
+            entering: Vec::new(),
         };
         Ok(TangentialSolver {
             layout,
@@ -507,8 +575,12 @@ impl TangentialSolver {
         }
         // u' = A_s p' (previous displacement at the previous position of the material).
         self.plans.convs.tangential(prev_px, prev_py, None, &mut st.vx, &mut st.vy)?;
+        // A p' at the leading edges, for material that entered during the step (dq > dx).
+        if !lay.entering.is_empty() {
+            self.plans.conv0.tangential(prev_px, prev_py, None, &mut st.ux, &mut st.uy)?;
+        }
         // b = w + u' (stored in vx, vy).
-        lay.add_rigid_slip(params, &mut st.vx, &mut st.vy);
+        lay.add_rigid_slip(params, Some((&st.ux, &st.uy)), &mut st.vx, &mut st.vy);
         st.px.fill(0.0);
         st.py.fill(0.0);
         for &k in &lay.contact {
@@ -568,7 +640,7 @@ impl TangentialSolver {
             st.sx[k] = -(st.ux[k] - st.vx[k]);
             st.sy[k] = -(st.uy[k] - st.vy[k]);
         }
-        lay.add_rigid_slip(params, &mut st.sx, &mut st.sy);
+        lay.add_rigid_slip(params, None, &mut st.sx, &mut st.sy);
         let res = match converged {
             Some(residual) => st.finish(lay, evals, residual, Termination::Converged)?,
             None => {

@@ -190,7 +190,7 @@ fn map(
         st.sx[k] = -st.ux[k];
         st.sy[k] = -st.uy[k];
     }
-    lay.add_rigid_slip(params, &mut st.sx, &mut st.sy);
+    lay.add_rigid_slip(params, None, &mut st.sx, &mut st.sy);
     // Local solves; the adhesion slip goes into (w.sx, w.sy) for the preconditioner.
     let mut res = 0.0f64;
     let mut finite = true;
