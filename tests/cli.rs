@@ -104,6 +104,16 @@ fn bad_input_exits_2_and_writes_nothing() {
         (base().replace("c = 0.005", "c = 2.0"), "creepage.c", "[-1, 1]"),
         (base().replace("steps = 10", "steps = 10.5"), "creepage.steps", "whole number"),
         (base() + "unknown_top = 1\n", "unknown_top", "no such key"),
+        (base().replace("mx = 22", "mx = 22\nscale = 0.5"), "grid.scale", "[1, 10]"),
+        (base().replace("steps = 10", "steps = 10\ncx = 0.001"), "creepage.cx", "only with kind = \"sweep\""),
+        (
+            base().replace(
+                "kind = \"step\"\nc = 0.005\nsteps = 10",
+                "kind = \"sweep\"\nfrom = 0\nto = 0.01\npoints = 3\nover = \"cq\"",
+            ),
+            "creepage.over",
+            "cx, cy, cs",
+        ),
     ];
     for (text, field, expect) in cases {
         let dir = tempfile::tempdir().unwrap();

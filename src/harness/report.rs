@@ -52,6 +52,13 @@ fn xy(h: &History, x: &str, y: &str) -> Vec<(f64, f64)> {
     h.column(x).unwrap_or_default().into_iter().zip(h.column(y).unwrap_or_default()).collect()
 }
 
+/// A sweep's plot axis: the creepage its direction moves most ((cx, cy, cs) order on ties).
+fn swept_axis(direction: [f64; 3]) -> (&'static str, &'static str) {
+    let axes = [("cx", "cx [-]"), ("cy", "cy [-]"), ("cs", "cs [1/mm]")];
+    let k = (1..3).fold(0, |k, i| if direction[i].abs() > direction[k].abs() { i } else { k });
+    axes[k]
+}
+
 fn last_period(h: &History, period: f64) -> Vec<(f64, f64)> {
     let t_end = h.rows.last().map(|r| r.t_s).unwrap_or(0.0);
     let periods = (t_end / period + 1e-9).floor();
@@ -238,7 +245,8 @@ pub fn build(input: &ReportInput) -> Report {
             let contact = input.refs.history(&sc.name);
             let mut series: Vec<Series> = Vec::new();
             let sweep = sc.scene.kind == LoadingKind::Sweep;
-            let (x, xl) = if sweep { ("cx", "cx [-]") } else { ("t_s", "t [s]") };
+            let (x, xl) =
+                if sweep { swept_axis(sc.scene.sweep_direction.unwrap_or([1.0, 0.0, 0.0])) } else { ("t_s", "t [s]") };
             for (name, h) in &sc.histories {
                 series.push(Series { label: name.clone(), points: thin(xy(h, x, "fx_over_fn"), 300), markers: false });
             }

@@ -1,11 +1,13 @@
-//! The rectangular grid over the ellipse's bounding box (thesis App. B, Eq. B.1–B.2).
+//! The rectangular grid, the potential contact: the ellipse's bounding box (thesis App. B,
+//! Eq. B.1–B.2), or `[grid] scale` times it (CONTACT's SCALE).
 //!
 //! Element (i, j), i = 0..mx along x (rolling direction), j = 0..my along y, flat index
-//! `k = j*mx + i`, centre `x_i = −a + dx/2 + i dx`, `y_j = −b + dy/2 + j dy`. Material enters at
-//! the leading edge x = −a and moves in +x (the thesis's and the UBA's orientation). CONTACT's x
-//! (and the spin convention of the outputs) runs the other way: `x_C = −x`, material entering at
-//! `x_C = +a`; the conversion happens in the rigid slip ([`crate::physics::RigidSlip`]), the
-//! x–y coupling of the influence coefficients and the spin moment, nowhere else.
+//! `k = j*mx + i`, centre `x_i = −hx + dx/2 + i dx`, `y_j = −hy + dy/2 + j dy` with the grid's
+//! half-extents hx, hy (a, b at scale 1). Material enters at the leading edge x = −hx and moves
+//! in +x (the thesis's and the UBA's orientation). CONTACT's x (and the spin convention of the
+//! outputs) runs the other way: `x_C = −x`, material entering at `x_C = +hx`; the conversion
+//! happens in the rigid slip ([`crate::physics::RigidSlip`]), the x–y coupling of the influence
+//! coefficients and the spin moment, nowhere else.
 
 /// Where a row's integration starts (`[model] leading_edge`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
@@ -21,13 +23,15 @@ pub enum LeadingEdge {
     Exact,
 }
 
-/// A grid of `mx × my` piecewise-constant elements covering `[−a, a] × [−b, b]`.
+/// A grid of `mx × my` piecewise-constant elements covering `[−hx, hx] × [−hy, hy]`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Grid {
     pub mx: usize,
     pub my: usize,
-    pub a_mm: f64,
-    pub b_mm: f64,
+    /// Half-extent hx along x [mm] (not the ellipse's semi-axis: `scale · a`).
+    pub half_x_mm: f64,
+    /// Half-extent hy along y [mm] (`scale · b`).
+    pub half_y_mm: f64,
     pub dx_mm: f64,
     pub dy_mm: f64,
     /// Element centres along x [mm], `mx` values.
@@ -37,13 +41,14 @@ pub struct Grid {
 }
 
 impl Grid {
-    /// The grid of thesis App. B: `dx = 2a/mx`, `dy = 2b/my`, centres at `−a + dx/2 + k dx`.
-    pub fn new(mx: usize, my: usize, a_mm: f64, b_mm: f64) -> Self {
-        let dx_mm = 2.0 * a_mm / mx as f64;
-        let dy_mm = 2.0 * b_mm / my as f64;
-        let x_mm = (0..mx).map(|i| -a_mm + dx_mm * (i as f64 + 0.5)).collect();
-        let y_mm = (0..my).map(|j| -b_mm + dy_mm * (j as f64 + 0.5)).collect();
-        Self { mx, my, a_mm, b_mm, dx_mm, dy_mm, x_mm, y_mm }
+    /// The grid of thesis App. B over half-extents hx, hy: `dx = 2hx/mx`, `dy = 2hy/my`, centres
+    /// at `−hx + dx/2 + k dx` (hx = a, hy = b: the ellipse's bounding box).
+    pub fn new(mx: usize, my: usize, half_x_mm: f64, half_y_mm: f64) -> Self {
+        let dx_mm = 2.0 * half_x_mm / mx as f64;
+        let dy_mm = 2.0 * half_y_mm / my as f64;
+        let x_mm = (0..mx).map(|i| -half_x_mm + dx_mm * (i as f64 + 0.5)).collect();
+        let y_mm = (0..my).map(|j| -half_y_mm + dy_mm * (j as f64 + 0.5)).collect();
+        Self { mx, my, half_x_mm, half_y_mm, dx_mm, dy_mm, x_mm, y_mm }
     }
 
     /// Number of elements.

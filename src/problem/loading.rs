@@ -2,7 +2,12 @@
 //! (steady points), each sample carrying every loading quantity (creepages, FN, μ).
 
 use crate::error::InputError;
+use crate::physics::{ContactGeometry, Grid};
 use crate::scene::{Creepage, InitKind, Scene};
+
+/// A table covers step k when `k dt <= t_end (1 + TABLE_END_REL)`: its last time may be printed
+/// rounded (10 significant digits are 5e-11 relative) and still cover the step it was written for.
+pub const TABLE_END_REL: f64 = 1e-8;
 
 /// The loading at one instant (or one sweep point).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -34,6 +39,8 @@ pub struct Loading {
     pub kind: LoadingKind,
     /// Sine frequency [Hz] (sine kind only).
     pub freq_hz: Option<f64>,
+    /// The sweep's direction in (cx, cy, cs) (sweep kind only).
+    pub sweep_direction: Option<[f64; 3]>,
     /// The state at t = 0 (transient kinds), from which `init` starts.
     pub initial: Option<Sample>,
     /// Steps k = 1..N (transient) or sweep points.
@@ -42,8 +49,15 @@ pub struct Loading {
 }
 
 impl Loading {
-    /// Sample the scene's creepage history at `t_k = k dt`; warnings go to `warnings`.
-    pub fn sample(scene: &Scene, dt_s: f64, warnings: &mut Vec<String>) -> Result<Loading, InputError> {
+    /// Sample the scene's creepage history at `t_k = k dt`; warnings go to `warnings` (a table
+    /// whose largest FN gives a contact beyond `grid`, `geometry`'s ellipse at that load).
+    pub fn sample(
+        scene: &Scene,
+        dt_s: f64,
+        geometry: &dyn ContactGeometry,
+        grid: &Grid,
+        warnings: &mut Vec<String>,
+    ) -> Result<Loading, InputError> {
         let base =
             Sample { step: 0, t_s: 0.0, cx: 0.0, cy: scene.cy, cs: scene.cs_per_mm, fn_n: scene.fn_n, mu: scene.mu };
         let max = scene.limits.max_steps;
@@ -54,6 +68,7 @@ impl Loading {
                 format!("at most {max} steps or points (dt = {dt_s:e} s); [limits] max_steps raises the limit"),
             )
         };
+        let mut sweep_direction = None;
         let (kind, freq_hz, initial, samples) = match &scene.creepage {
             Creepage::Step { c, steps, c_before } => {
                 if *steps > max {
@@ -83,20 +98,21 @@ impl Loading {
                 }
                 (LoadingKind::Sine, Some(*freq_hz), Some(Sample { cx: *c0, ..base }), s)
             }
-            Creepage::Sweep { from, to, points } => {
+            Creepage::Sweep { points, direction, .. } => {
                 if *points > max {
                     return Err(too_many(*points as f64));
                 }
                 let s = (1..=*points)
                     .map(|k| {
-                        let f = if *points > 1 { (k - 1) as f64 / (*points - 1) as f64 } else { 0.0 };
-                        Sample { step: k, t_s: 0.0, cx: from + (to - from) * f, ..base }
+                        let [cx, cy, cs] = scene.sweep_point(k).unwrap_or_default();
+                        Sample { step: k, t_s: 0.0, cx, cy, cs, ..base }
                     })
                     .collect();
+                sweep_direction = Some(*direction);
                 (LoadingKind::Sweep, None, None, s)
             }
             Creepage::Table { rows, .. } => {
-                let n = (rows.end_s() / dt_s + 1e-9).floor();
+                let n = table_steps(rows.end_s(), dt_s);
                 if n > max as f64 {
                     return Err(too_many(n));
                 }
@@ -117,18 +133,26 @@ impl Loading {
                     return Err(InputError::new(
                         "creepage.file",
                         format!("table ending at t = {} s", rows.end_s()),
-                        format!("a table reaching at least one step, t >= dt = {dt_s:e} s"),
+                        format!("a table reaching at least one step, t >= dt = {dt_s:e} s (within {TABLE_END_REL:e} relative)"),
                     ));
                 }
-                if let Some(f) = &rows.fn_n {
-                    if f.iter().any(|&x| x > scene.fn_n * (1.0 + 1e-12)) {
-                        warnings.push(format!("creepage table: fn_n exceeds contact.fn_n = {} N; the grid covers the nominal ellipse only, so larger contacts are clipped to it", scene.fn_n));
+                if let Some(fn_max) = rows.fn_n.as_ref().map(|f| f.iter().fold(0.0, |a: f64, &b| a.max(b))) {
+                    let (e, nominal) = (geometry.ellipse_at(fn_max), geometry.nominal());
+                    let fits = |semi: f64, half: f64| semi <= half * (1.0 + 1e-12);
+                    if !(fits(e.a_mm, grid.half_x_mm) && fits(e.b_mm, grid.half_y_mm)) {
+                        // The smallest scale (rounded up to 0.001) whose grid holds that ellipse.
+                        let need = (e.a_mm / nominal.a_mm).max(e.b_mm / nominal.b_mm);
+                        let need = (need * 1000.0 * (1.0 + 1e-9)).ceil() / 1000.0;
+                        warnings.push(format!(
+                            "creepage table: fn_n up to {fn_max} N gives a contact of a = {:.4} mm, b = {:.4} mm, beyond the grid's half-extents {:.4} x {:.4} mm ([grid] scale = {} times the ellipse at contact.fn_n = {} N); the contact is clipped to the grid: [grid] scale = {need} or more covers it",
+                            e.a_mm, e.b_mm, grid.half_x_mm, grid.half_y_mm, scene.grid_scale, scene.fn_n
+                        ));
                     }
                 }
                 (LoadingKind::Table, None, Some(at(0)), (1..=n as usize).map(at).collect())
             }
         };
-        Ok(Loading { kind, freq_hz, initial, samples, init: scene.init })
+        Ok(Loading { kind, freq_hz, sweep_direction, initial, samples, init: scene.init })
     }
 
     /// Whether the loading is a time history (not a steady sweep).
@@ -159,5 +183,19 @@ impl Loading {
     /// Largest μ over the rows (a table may vary it).
     pub fn mu_max(&self) -> f64 {
         self.rows().map(|s| s.mu).fold(0.0, f64::max)
+    }
+}
+
+/// Steps a table ending at `t_end_s` covers: the largest n with `n dt <= t_end (1 + TABLE_END_REL)`.
+fn table_steps(t_end_s: f64, dt_s: f64) -> f64 {
+    let end = t_end_s * (1.0 + TABLE_END_REL);
+    let n = (end / dt_s).floor();
+    // The division rounds (by less than one step): settle n on the times the samples use, k dt.
+    if n >= 1.0 && n * dt_s > end {
+        n - 1.0
+    } else if (n + 1.0) * dt_s <= end {
+        n + 1.0
+    } else {
+        n
     }
 }

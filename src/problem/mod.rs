@@ -50,6 +50,8 @@ pub struct Problem {
     pub geometry: Arc<dyn ContactGeometry>,
     pub coefficients: Coefficients,
     pub grid: Grid,
+    /// The grid's extent in nominal semi-axes (`[grid] scale`, default 1).
+    pub grid_scale: f64,
     pub rolling: Rolling,
     /// The scene's nominal loading (contact.fn_n, contact.mu, the constant cy and cs).
     pub nominal: Sample,
@@ -104,10 +106,11 @@ impl Problem {
             ));
         }
         let coefficients = Coefficients::new(scene.model.coefficients, hertz.a_mm, hertz.b_mm, material.poisson);
-        let grid = Grid::new(scene.mx, scene.my, hertz.a_mm, hertz.b_mm);
+        // The potential contact: `[grid] scale` times the nominal ellipse's bounding box.
+        let grid = Grid::new(scene.mx, scene.my, scene.grid_scale * hertz.a_mm, scene.grid_scale * hertz.b_mm);
         let dq_mm = scene.courant * grid.dx_mm;
         let dt_s = dq_mm / scene.v_mm_s;
-        let loading = Loading::sample(scene, dt_s, &mut warnings)?;
+        let loading = Loading::sample(scene, dt_s, geometry.as_ref(), &grid, &mut warnings)?;
         let (metrics, skipped_metrics) = crate::metrics::select(scene.metrics.as_deref(), &loading, dt_s);
         for (m, why) in &skipped_metrics {
             if scene.metrics.as_ref().is_some_and(|asked| asked.contains(m)) {
@@ -125,6 +128,7 @@ impl Problem {
             geometry,
             coefficients,
             grid,
+            grid_scale: scene.grid_scale,
             rolling: Rolling { v_mm_s: scene.v_mm_s, courant: scene.courant, dt_s, dq_mm },
             nominal,
             loading,

@@ -37,12 +37,19 @@ pub struct ResolvedScene {
     pub my: usize,
     pub dx_mm: f64,
     pub dy_mm: f64,
+    /// The grid's extent in nominal semi-axes (`[grid] scale`; 1 in folders written before it).
+    #[serde(default = "one")]
+    pub grid_scale: f64,
     pub v_mm_s: f64,
     pub courant: f64,
     pub dq_mm: f64,
     pub dt_s: f64,
     pub n_steps: usize,
     pub freq_hz: Option<f64>,
+    /// A sweep's direction in (cx, cy, cs): creepage = constants + t·direction (sweep kind only;
+    /// a sweep written before it existed is read as the cx sweep [1, 0, 0]).
+    #[serde(default)]
+    pub sweep_direction: Option<[f64; 3]>,
     pub init: InitKind,
     pub model: ModelOptions,
     pub contact_solver: ContactSolverOptions,
@@ -63,6 +70,10 @@ pub struct ResolvedScene {
 
 fn hertz() -> String {
     "hertz".into()
+}
+
+fn one() -> f64 {
+    1.0
 }
 
 impl ResolvedScene {
@@ -94,12 +105,14 @@ impl ResolvedScene {
             my: p.grid.my,
             dx_mm: p.grid.dx_mm,
             dy_mm: p.grid.dy_mm,
+            grid_scale: p.grid_scale,
             v_mm_s: p.rolling.v_mm_s,
             courant: p.rolling.courant,
             dq_mm: p.rolling.dq_mm,
             dt_s: p.rolling.dt_s,
             n_steps: p.loading.samples.len(),
             freq_hz: p.loading.freq_hz,
+            sweep_direction: p.loading.sweep_direction,
             init: p.loading.init,
             model: p.model,
             contact_solver: p.contact_solver,
@@ -117,9 +130,13 @@ impl ResolvedScene {
         serde_json::to_string_pretty(self).expect("a ResolvedScene always serialises") + "\n"
     }
 
-    /// Parse scene.json text.
+    /// Parse scene.json text (a sweep without `sweep_direction` is the cx sweep it was written as).
     pub fn from_json(text: &str) -> Result<ResolvedScene, serde_json::Error> {
-        serde_json::from_str(text)
+        let mut scene: ResolvedScene = serde_json::from_str(text)?;
+        if scene.kind == LoadingKind::Sweep && scene.sweep_direction.is_none() {
+            scene.sweep_direction = Some([1.0, 0.0, 0.0]);
+        }
+        Ok(scene)
     }
 
     /// Sine period [s], if the scene is a sine.

@@ -30,9 +30,11 @@ pub enum Creepage {
     Step { c: f64, steps: usize, c_before: f64 },
     /// cx(t_k) = c0 + cp sin(2π F t_k), k = 1..ceil(periods/(F dt)).
     Sine { c0: f64, cp: f64, freq_hz: f64, periods: f64 },
-    /// Steady rolling at `points` evenly spaced cx from `from` to `to`.
-    Sweep { from: f64, to: f64, points: usize },
-    /// A CSV table `t_s,cx[,cy,cs,fn_n,mu]`, interpolated at t_k = k dt.
+    /// Steady rolling at `points` evenly spaced t from `from` to `to`, at the creepage
+    /// `[cx, cy, cs] + t·direction` (cy, cs the scene's constants; see [`Scene::sweep_point`]).
+    Sweep { from: f64, to: f64, points: usize, direction: [f64; 3], cx: f64 },
+    /// A CSV table `t_s,cx[,cy,cs,fn_n,mu]`, interpolated at t_k = k dt up to its last time
+    /// (within `problem::loading::TABLE_END_REL`).
     Table { file: PathBuf, rows: table::CreepageTable },
 }
 
@@ -123,6 +125,8 @@ pub struct Scene {
     pub material: MaterialSpec,
     pub mx: usize,
     pub my: usize,
+    /// The grid covers `grid_scale` times the nominal ellipse's bounding box (CONTACT's SCALE).
+    pub grid_scale: f64,
     pub v_mm_s: f64,
     pub courant: f64,
     pub creepage: Creepage,
@@ -139,6 +143,19 @@ pub struct Scene {
 
 const CREEPAGE_LIMIT: Range = Range::new(-1.0, true, 1.0, true);
 const SPIN_LIMIT: Range = Range::new(-10.0, true, 10.0, true);
+/// Any finite number (a sweep's parameter and direction; the points are checked).
+const FINITE: Range = Range::new(f64::NEG_INFINITY, false, f64::INFINITY, false);
+/// `[grid] scale`: the grid's extent in nominal semi-axes.
+const GRID_SCALE: Range = Range::new(1.0, true, 10.0, true);
+
+/// A number for a message: plain, or in exponent form when very large or small.
+fn compact(v: f64) -> String {
+    if v != 0.0 && !(1e-6..1e9).contains(&v.abs()) {
+        format!("{v:e}")
+    } else {
+        format!("{v}")
+    }
+}
 
 fn is_valid_name(s: &str) -> bool {
     !s.is_empty() && s.len() <= 100 && s.bytes().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'_')
@@ -275,6 +292,7 @@ impl Scene {
         let mut g = top.table("grid")?;
         let mx = g.usize("mx", 1, MAX_ELEMENTS_PER_AXIS)?;
         let my = g.usize("my", 1, MAX_ELEMENTS_PER_AXIS)?;
+        let grid_scale = g.opt_f64("scale", GRID_SCALE)?.unwrap_or(1.0);
         g.finish()?;
 
         // [rolling]
@@ -300,11 +318,34 @@ impl Scene {
                 freq_hz: cr.f64("freq_hz", Range::new(0.0, false, 1e6, true))?,
                 periods: cr.f64("periods", Range::new(0.0, false, 1e4, true))?,
             },
-            "sweep" => Creepage::Sweep {
-                from: cr.f64("from", CREEPAGE_LIMIT)?,
-                to: cr.f64("to", CREEPAGE_LIMIT)?,
-                points: cr.usize("points", 1, HARD_MAX_STEPS)?,
-            },
+            "sweep" => {
+                let from = cr.f64("from", FINITE)?;
+                let to = cr.f64("to", FINITE)?;
+                let points = cr.usize("points", 1, HARD_MAX_STEPS)?;
+                let over = cr.opt_choice("over", &["cx", "cy", "cs"])?;
+                let direction = match (over, cr.opt_f64_array::<3>("direction", FINITE)?) {
+                    (Some(o), Some(d)) => {
+                        return Err(InputError::new(
+                            cr.field("direction"),
+                            format!("{d:?} with over = {o:?}"),
+                            "either creepage.over or creepage.direction, not both",
+                        ))
+                    }
+                    (None, Some(d)) if d.iter().all(|&x| x == 0.0) => {
+                        return Err(InputError::new(
+                            cr.field("direction"),
+                            format!("{d:?}"),
+                            "three finite numbers [dcx, dcy, dcs], not all zero",
+                        ))
+                    }
+                    (None, Some(d)) => d,
+                    (Some("cy"), None) => [0.0, 1.0, 0.0],
+                    (Some("cs"), None) => [0.0, 0.0, 1.0],
+                    _ => [1.0, 0.0, 0.0],
+                };
+                let cx = cr.opt_f64("cx", CREEPAGE_LIMIT)?.unwrap_or(0.0);
+                Creepage::Sweep { from, to, points, direction, cx }
+            }
             _ => {
                 let file = cr.str("file", "a CSV path relative to the scene file")?;
                 let path = dir.join(file);
@@ -312,6 +353,12 @@ impl Scene {
                 Creepage::Table { file: path, rows }
             }
         };
+        if kind != "sweep" {
+            let only_sweep = format!("only with kind = \"sweep\" (kind {kind:?} sets cx itself)");
+            for key in ["cx", "over", "direction"] {
+                cr.refuse(key, &only_sweep)?;
+            }
+        }
         let cy = cr.opt_f64("cy", CREEPAGE_LIMIT)?.unwrap_or(0.0);
         let cs_per_mm = cr.opt_f64("cs", SPIN_LIMIT)?.unwrap_or(0.0);
         cr.finish()?;
@@ -368,7 +415,7 @@ impl Scene {
         }
         top.finish()?;
 
-        Ok(Scene {
+        let scene = Scene {
             name: name.to_string(),
             solvers,
             metrics,
@@ -378,6 +425,7 @@ impl Scene {
             material: MaterialSpec { g_mpa, e_mpa, poisson },
             mx,
             my,
+            grid_scale,
             v_mm_s,
             courant,
             creepage,
@@ -389,6 +437,57 @@ impl Scene {
             external,
             limits,
             dir: dir.to_path_buf(),
-        })
+        };
+        scene.check_sweep_points()?;
+        Ok(scene)
+    }
+
+    /// Creepage `[cx, cy, cs]` of sweep point k = 1..=points: `[cx, cy, cs] + t·direction`, t from
+    /// `from` to `to` evenly (`None` for the other kinds). A zero direction component keeps its
+    /// constant and a zero constant gives d·t, bit for bit: the cx sweep gives exactly the
+    /// cx = from + (to − from)·(k − 1)/(points − 1) of scenes written before `over`/`direction`.
+    pub fn sweep_point(&self, k: usize) -> Option<[f64; 3]> {
+        let Creepage::Sweep { from, to, points, direction, cx } = &self.creepage else {
+            return None;
+        };
+        let f = if *points > 1 { (k - 1) as f64 / (*points - 1) as f64 } else { 0.0 };
+        let t = from + (to - from) * f;
+        let add = |c: f64, d: f64| {
+            if d == 0.0 {
+                c
+            } else if c == 0.0 {
+                d * t
+            } else {
+                c + d * t
+            }
+        };
+        Some([add(*cx, direction[0]), add(self.cy, direction[1]), add(self.cs_per_mm, direction[2])])
+    }
+
+    /// Every sweep point within the creepage ranges. The points are monotone in t, so the first
+    /// and the last (computed as they are sampled) bound them all; the error names the end.
+    fn check_sweep_points(&self) -> Result<(), InputError> {
+        let Creepage::Sweep { from, to, points, .. } = &self.creepage else {
+            return Ok(());
+        };
+        for (k, key, t) in [(1, "from", from), (*points, "to", to)] {
+            let key = if *points == 1 { "from" } else { key };
+            let point = self.sweep_point(k).unwrap_or_default();
+            let limits = [("cx", CREEPAGE_LIMIT), ("cy", CREEPAGE_LIMIT), ("cs", SPIN_LIMIT)];
+            for ((name, range), v) in limits.iter().zip(point) {
+                if !range.contains(v) {
+                    return Err(InputError::new(
+                        format!("creepage.{key}"),
+                        format!("{} (sweep point {k}: {name} = {})", compact(*t), compact(v)),
+                        format!(
+                            "a sweep whose every point [cx, cy, cs] + t·direction has cx and cy {}, cs {} [1/mm]",
+                            CREEPAGE_LIMIT.describe(),
+                            SPIN_LIMIT.describe()
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(())
     }
 }

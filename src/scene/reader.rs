@@ -108,6 +108,31 @@ impl<'a> Section<'a> {
         self.opt_f64(key, range)?.ok_or_else(|| self.missing(key, &range.describe()))
     }
 
+    /// An optional array of exactly `N` numbers (integer or float), each within `range`.
+    pub fn opt_f64_array<const N: usize>(&mut self, key: &str, range: Range) -> Result<Option<[f64; N]>, InputError> {
+        let Some(v) = self.get(key) else {
+            return Ok(None);
+        };
+        let allowed = format!("an array of {N} numbers, each {}", range.describe());
+        let items = match v {
+            Value::Array(items) if items.len() == N => items,
+            other => return Err(InputError::new(self.field(key), show(other), allowed)),
+        };
+        let mut out = [0.0; N];
+        for (n, item) in items.iter().enumerate() {
+            let x = match item {
+                Value::Float(f) => *f,
+                Value::Integer(i) => *i as f64,
+                other => return Err(InputError::new(format!("{}[{n}]", self.field(key)), show(other), allowed)),
+            };
+            if !range.contains(x) {
+                return Err(InputError::new(format!("{}[{n}]", self.field(key)), fmt_num(x), allowed));
+            }
+            out[n] = x;
+        }
+        Ok(Some(out))
+    }
+
     /// An optional whole number in `[min, max]`.
     pub fn opt_usize(&mut self, key: &str, min: usize, max: usize) -> Result<Option<usize>, InputError> {
         let allowed = format!("a whole number in [{min}, {max}]");
@@ -172,6 +197,15 @@ impl<'a> Section<'a> {
             })
             .collect::<Result<Vec<_>, _>>()
             .map(Some)
+    }
+
+    /// Refuses `key` when present (a key this section allows only in other cases): the error
+    /// names it, its value and `allowed`.
+    pub fn refuse(&mut self, key: &str, allowed: &str) -> Result<(), InputError> {
+        match self.get(key) {
+            None => Ok(()),
+            Some(v) => Err(InputError::new(self.field(key), show(v), allowed.to_string())),
+        }
     }
 
     /// An optional sub-table.

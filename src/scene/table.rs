@@ -117,7 +117,8 @@ impl CreepageTable {
         })
     }
 
-    /// Linear interpolation of `series` at time `t` (held constant before the first row).
+    /// Linear interpolation of `series` at time `t`, held at the first row before it and at the
+    /// last row beyond it (a step just past a rounded last time takes the last row's values).
     pub fn interpolate(&self, series: &[f64], t: f64) -> f64 {
         let ts = &self.t_s;
         if t <= ts[0] {

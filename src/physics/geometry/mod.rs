@@ -72,8 +72,8 @@ impl Planform {
 pub trait ContactGeometry: Send + Sync + Debug {
     /// Name written to scene.json (`geometry`).
     fn kind(&self) -> &'static str;
-    /// The ellipse at the scene's nominal load: it sizes the grid and gives Kalker's
-    /// coefficients (Table A1 is tabulated by the axis ratio).
+    /// The ellipse at the scene's nominal load: it sizes the grid (times `[grid] scale`) and
+    /// gives Kalker's coefficients (Table A1 is tabulated by the axis ratio).
     fn nominal(&self) -> HertzContact;
     /// The ellipse at load `fn_n` [N].
     fn ellipse_at(&self, fn_n: f64) -> HertzContact;
