@@ -17,11 +17,11 @@ fn thesis_problem(name: &str) -> creepbench::problem::Problem {
 
 /// The gate's rule for the exact-theory solver against CONTACT (one place for the numbers).
 fn gate(quantity: &str) -> creepbench::harness::tolerances::Rule {
-    creepbench::harness::tolerances::rule(creepbench::harness::references::contact::EXACT, "contact", quantity)
+    creepbench::harness::tolerances::rule(creepbench::harness::references::contact::EXACT, "*", "contact", quantity)
 }
 
 /// Every step of every transient case at 22×22 and every point of the steady sweeps at 22 and 44:
-/// max |f − f_CONTACT| ≤ 0.002 (issue 3), and the aim 0.0005 is reached too.
+/// max |f − f_CONTACT| within the gate's tolerance (1e-5, issue 12; issue 3 asked for 0.002).
 #[test]
 fn totals_match_contact_everywhere() {
     let refs = creepbench::harness::references::References::load(&root().join("reference")).unwrap();
@@ -43,7 +43,6 @@ fn totals_match_contact_everywhere() {
         );
         assert!(term.iter().all(|&c| c == Termination::Converged.code()), "{name}: a step did not converge first time");
         assert!(err <= gate("fx_over_fn").abs, "{name}: {err} at row {k}");
-        assert!(err <= 0.0005, "{name}: the aim 0.0005 missed: {err} at row {k}");
         worst_all = worst_all.max(err);
     }
     println!("worst over all cases: {worst_all:.2e}");

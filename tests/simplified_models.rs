@@ -19,6 +19,7 @@ fn fastsim_matches_contact_fastsim() {
     println!("FASTSIM vs CONTACT FASTSIM: max |df| = {err:.3e} at cx = {:.4}", k as f64 * 1e-4);
     let rule = creepbench::harness::tolerances::rule(
         creepbench::harness::references::contact::FASTSIM,
+        "steady_fastsim_g22",
         "fastsim",
         "fx_over_fn",
     );

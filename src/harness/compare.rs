@@ -54,7 +54,7 @@ pub struct Ctx<'a> {
 impl Ctx<'_> {
     /// One compared value, judged by the tolerance rule of this comparison.
     pub fn finding(&self, quantity: &str, step: Option<usize>, ours: f64, theirs: f64, note: &str) -> Finding {
-        let rule = tolerances::rule(self.against, self.solver, quantity);
+        let rule = tolerances::rule(self.against, self.scene, self.solver, quantity);
         Finding {
             scene: self.scene.into(),
             solver: self.solver.into(),

@@ -45,10 +45,7 @@ impl RigidSlip {
     #[inline]
     pub fn between(&self, x0_mm: f64, x1_mm: f64, y_mm: f64) -> (f64, f64) {
         let [wx0, wx_y, wy0, wy_x] = self.affine();
-        (
-            (wx0 + wx_y * y_mm) * (x1_mm - x0_mm),
-            wy0 * (x1_mm - x0_mm) + 0.5 * wy_x * (x1_mm * x1_mm - x0_mm * x0_mm),
-        )
+        ((wx0 + wx_y * y_mm) * (x1_mm - x0_mm), wy0 * (x1_mm - x0_mm) + 0.5 * wy_x * (x1_mm * x1_mm - x0_mm * x0_mm))
     }
 }
 

@@ -85,7 +85,9 @@ impl ReferenceSet for EnvelopeCases {
                         .rows
                         .iter()
                         .zip(m)
-                        .filter_map(|(r, v)| Some(ctx.finding(MZ_OVER_FN_A, Some(r.step), v, *theirs_mz.get(&r.step)?, "mz / (FN a)")))
+                        .filter_map(|(r, v)| {
+                            Some(ctx.finding(MZ_OVER_FN_A, Some(r.step), v, *theirs_mz.get(&r.step)?, "mz / (FN a)"))
+                        })
                         .max_by(|a, b| a.severity().total_cmp(&b.severity()));
                     out.extend(worst);
                 }

@@ -299,13 +299,7 @@ impl Layout {
     /// Rigid slip of the step `dq w_k` [mm] added into `(bx, by)`, the spin term at the offset
     /// [`FACPHI`]. With `edge_u = A p'` (transient steps), the [`Entering`] elements get
     /// `facdt dq w_k + (A p')_edge` instead of `dq w_k + u'_k`.
-    fn add_rigid_slip(
-        &self,
-        p: &TangentialParams,
-        edge_u: Option<(&[f64], &[f64])>,
-        bx: &mut [f64],
-        by: &mut [f64],
-    ) {
+    fn add_rigid_slip(&self, p: &TangentialParams, edge_u: Option<(&[f64], &[f64])>, bx: &mut [f64], by: &mut [f64]) {
         let (dq, w) = (p.dq_mm, p.rigid_slip());
         let offset_mm = FACPHI * dq;
         for &k in &self.contact {
