@@ -1,5 +1,7 @@
 //! Speed targets (issues 2 and 4): UBA ≤ 2 ns per element-step, FASTSIM ≤ 5 µs per creepage at
-//! 22×22; the CONTACT-style solver per step at 22, 44, 88 on sine_f30_mu10.
+//! 22×22; the CONTACT-style solver per step at 22, 44, 88 on sine_f30_mu10; one steady
+//! combined-creepage case (cx, cy and spin) at 11×11 and 25×25 from zero traction (issue 12:
+//! ≤ 0.2 ms and ≤ 5 ms; CONTACT single-threaded 1.9 ms and 28 ms).
 //! Run: `cargo bench --bench solvers` (criterion prints time per iteration; divide the UBA time
 //! by mx·my for ns per element-step — scripts/bench_table.sh does it).
 
@@ -39,21 +41,30 @@ fn bench_uba(c: &mut Criterion) {
     g.finish();
 }
 
+/// The exact solver's tangential solver on the problem's grid at its nominal load (kernels, FFT
+/// plans and the normal solve, all outside the timing).
+fn tangential_solver(p: &Problem) -> creepbench::solvers::contact::tangential::TangentialSolver {
+    use creepbench::solvers::contact::{influence::Kernel, normal, tangential};
+    let (gr, m) = (&p.grid, &p.material);
+    let k0 = Kernel::new(gr.mx, gr.my, gr.dx_mm, gr.dy_mm, m.g_mpa, m.poisson, 0.0).unwrap();
+    let ks = Kernel::new(gr.mx, gr.my, gr.dx_mm, gr.dy_mm, m.g_mpa, m.poisson, p.rolling.dq_mm).unwrap();
+    let h = p.geometry.undeformed_distance_mm(gr, p.hertz().fn_n, m);
+    let pn = normal::solve_normal(&h, &k0, p.hertz().fn_n, &normal::NormalParams::default()).unwrap().pn_mpa;
+    let (x, y) = gr.centres();
+    let mut solver = tangential::TangentialSolver::new(&k0, &ks, &x, &y).unwrap();
+    solver.set_pressure(&pn).unwrap();
+    solver
+}
+
 /// One transient step of the CONTACT-style solver on sine_f30_mu10 (state after 10 steps from
 /// zero traction; the normal solve and kernels are set up outside the timing).
 fn bench_contact(c: &mut Criterion) {
-    use creepbench::solvers::contact::{influence::Kernel, normal, tangential};
+    use creepbench::solvers::contact::tangential;
     let mut g = c.benchmark_group("contact_step");
     for grid in [22, 44, 88] {
         let p = problem(grid);
-        let (gr, m) = (&p.grid, &p.material);
-        let k0 = Kernel::new(gr.mx, gr.my, gr.dx_mm, gr.dy_mm, m.g_mpa, m.poisson, 0.0).unwrap();
-        let ks = Kernel::new(gr.mx, gr.my, gr.dx_mm, gr.dy_mm, m.g_mpa, m.poisson, p.rolling.dq_mm).unwrap();
-        let h = p.geometry.undeformed_distance_mm(gr, p.hertz().fn_n, m);
-        let pn = normal::solve_normal(&h, &k0, p.hertz().fn_n, &normal::NormalParams::default()).unwrap().pn_mpa;
-        let (x, y) = gr.centres();
-        let mut solver = tangential::TangentialSolver::new(&k0, &ks, &x, &y).unwrap();
-        solver.set_pressure(&pn).unwrap();
+        let gr = &p.grid;
+        let mut solver = tangential_solver(&p);
         let params =
             |k: usize| tangential::TangentialParams::new(1.0, p.loading.samples[k].cx, 0.0, 0.0, p.rolling.dq_mm);
         let (mut px, mut py) = (vec![0.0; gr.len()], vec![0.0; gr.len()]);
@@ -68,6 +79,24 @@ fn bench_contact(c: &mut Criterion) {
         // As in a run: warm start extrapolated from the last two steps.
         g.bench_with_input(BenchmarkId::from_parameter(grid), &grid, |b, _| {
             b.iter(|| solver.transient_step(black_box(&next), &px, &py, Some((&ox, &oy))).unwrap().iterations)
+        });
+    }
+    g.finish();
+}
+
+/// Steady rolling with cx = 0.002, cy = 0.001, cs = 0.0005/mm, μ 0.4 on the thesis contact, from
+/// zero traction each time (no warm start from a previous point); normal solve outside the timing.
+fn bench_steady_combined(c: &mut Criterion) {
+    use creepbench::solvers::contact::tangential;
+    let mut g = c.benchmark_group("contact_steady_combined");
+    for grid in [11, 25] {
+        let p = problem(grid);
+        let gr = &p.grid;
+        let mut solver = tangential_solver(&p);
+        let params = tangential::TangentialParams::new(0.4, 0.002, 0.001, 0.0005, p.rolling.dq_mm);
+        let zero = vec![0.0; gr.len()];
+        g.bench_with_input(BenchmarkId::from_parameter(grid), &grid, |b, _| {
+            b.iter(|| solver.steady(black_box(&params), Some((&zero, &zero))).unwrap().iterations)
         });
     }
     g.finish();
@@ -109,6 +138,6 @@ criterion_group!(benches, bench_uba, bench_fastsim, bench_uba_run);
 criterion_group! {
     name = contact;
     config = Criterion::default().sample_size(10);
-    targets = bench_contact
+    targets = bench_contact, bench_steady_combined
 }
 criterion_main!(benches, contact);

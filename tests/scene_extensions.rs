@@ -102,8 +102,9 @@ fn cy_sweep_runs_every_model() {
     }
 }
 
-/// scene.json records the direction and reads back equal; golden sweeps written before it read as
-/// the cx sweep, golden time histories without one, both at grid scale 1.
+/// scene.json records the direction and reads back equal; result folders written before it
+/// (tests/fixtures: scene.json of golden/steady_exact_g22 and step_mu01 at f95dd0c) read as the cx
+/// sweep and a time history without one, both at grid scale 1 and c33 absent (0).
 #[test]
 fn scene_json_records_direction_and_reads_old_files() {
     let p = problem(&sweep("direction = [0.0, 1.0, 0.5]"));
@@ -112,13 +113,13 @@ fn scene_json_records_direction_and_reads_old_files() {
     assert_eq!(back.sweep_direction, Some([0.0, 1.0, 0.5]));
     assert_eq!(back, ResolvedScene::of(&p, &p.solvers));
     let old = |name: &str| {
-        let text = std::fs::read_to_string(root().join("golden").join(name).join("scene.json")).unwrap();
+        let text = std::fs::read_to_string(root().join("tests/fixtures").join(name)).unwrap();
         assert!(!text.contains("sweep_direction") && !text.contains("grid_scale"), "{name}: written before both");
         ResolvedScene::from_json(&text).unwrap()
     };
-    let s = old("steady_exact_g22");
+    let s = old("scene_v1_sweep.json");
     assert_eq!((s.kind, s.sweep_direction, s.grid_scale), (LoadingKind::Sweep, Some([1.0, 0.0, 0.0]), 1.0));
-    let s = old("step_mu01");
+    let s = old("scene_v1_step.json");
     assert_eq!((s.sweep_direction, s.grid_scale), (None, 1.0));
 }
 

@@ -4,6 +4,7 @@
 
 pub mod against;
 pub mod compare;
+pub mod envelope;
 pub mod plot;
 pub mod references;
 pub mod report;
