@@ -1,7 +1,8 @@
 //! Speed targets (issues 2 and 4): UBA ≤ 2 ns per element-step, FASTSIM ≤ 5 µs per creepage at
 //! 22×22; the CONTACT-style solver per step at 22, 44, 88 on sine_f30_mu10; one steady
 //! combined-creepage case (cx, cy and spin) at 11×11 and 25×25 from zero traction (issue 12:
-//! ≤ 0.2 ms and ≤ 5 ms; CONTACT single-threaded 1.9 ms and 28 ms).
+//! ≤ 0.2 ms and ≤ 5 ms; CONTACT single-threaded 1.9 ms and 28 ms); a transient step on a
+//! non-Hertzian and a Hertzian contact on the same 30 × 28 grid (issue 13: no slower per element).
 //! Run: `cargo bench --bench solvers` (criterion prints time per iteration; divide the UBA time
 //! by mx·my for ns per element-step — scripts/bench_table.sh does it).
 
@@ -27,7 +28,7 @@ fn bench_uba(c: &mut Criterion) {
         let local = p.local_contact(p.hertz().fn_n);
         let rates = brush::rates(0.005, 0.0, 0.0, &local.flex);
         let (mut t, mut u) = (Tractions::zero(p.grid.len()), Tractions::zero(p.grid.len()));
-        let mut prep = uba::Prepared::new(&p.grid, &local.planform.pressure_mpa, 1.0);
+        let mut prep = uba::Prepared::new(&p.grid, &local, 1.0);
         g.throughput(Throughput::Elements((grid * grid) as u64));
         g.bench_with_input(BenchmarkId::from_parameter(grid), &grid, |b, _| {
             b.iter(|| {
@@ -56,30 +57,62 @@ fn tangential_solver(p: &Problem) -> creepbench::solvers::contact::tangential::T
     solver
 }
 
-/// One transient step of the CONTACT-style solver on sine_f30_mu10 (state after 10 steps from
-/// zero traction; the normal solve and kernels are set up outside the timing).
-fn bench_contact(c: &mut Criterion) {
+/// One transient step of the exact solver at creepage `cx` and friction `mu` after 10 steps from
+/// zero traction (kernels, FFT plans and the normal solve outside the timing), warm-started from
+/// the last two steps as in a run.
+fn bench_transient_step(
+    g: &mut criterion::BenchmarkGroup<criterion::measurement::WallTime>,
+    id: &str,
+    p: &Problem,
+    mu: f64,
+) {
     use creepbench::solvers::contact::tangential;
+    let gr = &p.grid;
+    let mut solver = tangential_solver(p);
+    let params = |k: usize| tangential::TangentialParams::new(mu, p.loading.samples[k].cx, 0.0, 0.0, p.rolling.dq_mm);
+    let (mut px, mut py) = (vec![0.0; gr.len()], vec![0.0; gr.len()]);
+    let (mut ox, mut oy) = (px.clone(), py.clone());
+    for k in 0..10 {
+        let older = (k > 0).then_some((ox.as_slice(), oy.as_slice()));
+        let r = solver.transient_step(&params(k), &px, &py, older).unwrap();
+        (ox, oy) = (std::mem::take(&mut px), std::mem::take(&mut py));
+        (px, py) = (r.px, r.py);
+    }
+    let next = params(10);
+    g.throughput(Throughput::Elements(gr.len() as u64));
+    g.bench_function(id, |b| {
+        b.iter(|| solver.transient_step(black_box(&next), &px, &py, Some((&ox, &oy))).unwrap().iterations)
+    });
+}
+
+/// One transient step of the CONTACT-style solver on sine_f30_mu10 at 22, 44, 88.
+fn bench_contact(c: &mut Criterion) {
     let mut g = c.benchmark_group("contact_step");
     for grid in [22, 44, 88] {
-        let p = problem(grid);
-        let gr = &p.grid;
-        let mut solver = tangential_solver(&p);
-        let params =
-            |k: usize| tangential::TangentialParams::new(1.0, p.loading.samples[k].cx, 0.0, 0.0, p.rolling.dq_mm);
-        let (mut px, mut py) = (vec![0.0; gr.len()], vec![0.0; gr.len()]);
-        let (mut ox, mut oy) = (px.clone(), py.clone());
-        for k in 0..10 {
-            let older = (k > 0).then_some((ox.as_slice(), oy.as_slice()));
-            let r = solver.transient_step(&params(k), &px, &py, older).unwrap();
-            (ox, oy) = (std::mem::take(&mut px), std::mem::take(&mut py));
-            (px, py) = (r.px, r.py);
-        }
-        let next = params(10);
-        // As in a run: warm start extrapolated from the last two steps.
-        g.bench_with_input(BenchmarkId::from_parameter(grid), &grid, |b, _| {
-            b.iter(|| solver.transient_step(black_box(&next), &px, &py, Some((&ox, &oy))).unwrap().iterations)
-        });
+        bench_transient_step(&mut g, &grid.to_string(), &problem(grid), 1.0);
+    }
+    g.finish();
+}
+
+/// Issue 13: the exact solver per element-step on a non-Hertzian contact (two wells, 60 kN, two
+/// patches; `scenes/nonhertz/nh_two_sweep_cy_cs` geometry) against the Hertzian thesis contact on
+/// the same 30 × 28 grid, both at step 10 of sine_f30_mu10's loading and μ 0.35.
+fn bench_contact_shape(c: &mut Criterion) {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let hertz = std::fs::read_to_string(root.join("scenes/thesis/sine_f30_mu10.toml"))
+        .unwrap()
+        .replace("mx = 22", "mx = 30")
+        .replace("my = 22", "my = 28");
+    let table = std::fs::read_to_string(root.join("scenes/thesis/sine_f30_mu10.toml")).unwrap();
+    let creepage = &table[table.find("[creepage]").unwrap()..];
+    let nh = std::fs::read_to_string(root.join("scenes/nonhertz/nh_two_sweep_cy_cs.toml")).unwrap();
+    let nh = format!("{}{creepage}", &nh[..nh.find("[creepage]").unwrap()]);
+    let dir = root.join("scenes/nonhertz");
+    let mut g = c.benchmark_group("contact_shape_30x28");
+    for (id, text, dir) in [("hertz", hertz, Path::new(".")), ("nonhertz", nh, dir.as_path())] {
+        let p = Problem::resolve(&Scene::from_toml(&text, dir).unwrap()).unwrap();
+        assert_eq!((p.grid.mx, p.grid.my), (30, 28));
+        bench_transient_step(&mut g, id, &p, 0.35);
     }
     g.finish();
 }
@@ -138,6 +171,6 @@ criterion_group!(benches, bench_uba, bench_fastsim, bench_uba_run);
 criterion_group! {
     name = contact;
     config = Criterion::default().sample_size(10);
-    targets = bench_contact, bench_steady_combined
+    targets = bench_contact, bench_steady_combined, bench_contact_shape
 }
 criterion_main!(benches, contact);

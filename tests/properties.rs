@@ -32,8 +32,8 @@ proptest! {
         let local = p.local_contact(p.hertz().fn_n);
         let (mut t1, mut t2) = (Tractions::zero(p.grid.len()), Tractions::zero(p.grid.len()));
         for (edge, integ) in [(LeadingEdge::Grid, Integration::Centre), (LeadingEdge::Exact, Integration::Exact)] {
-            brush::steady_march(&p.grid, &local.planform, mu, &brush::rates(cx, cy, cs, &local.flex), (edge, integ), &mut t1);
-            brush::steady_march(&p.grid, &local.planform, mu, &brush::rates(-cx, -cy, -cs, &local.flex), (edge, integ), &mut t2);
+            brush::steady_march(&p.grid, &local, mu, &brush::rates(cx, cy, cs, &local.flex), (edge, integ), &mut t1);
+            brush::steady_march(&p.grid, &local, mu, &brush::rates(-cx, -cy, -cs, &local.flex), (edge, integ), &mut t2);
             for k in 0..p.grid.len() {
                 prop_assert!((t1.tx[k] + t2.tx[k]).abs() < 1e-9 && (t1.ty[k] + t2.ty[k]).abs() < 1e-9);
                 let g = mu * local.planform.pressure_mpa[k];
@@ -47,7 +47,7 @@ proptest! {
     fn uba_bound_holds(steps in proptest::collection::vec((-0.02f64..0.02, -0.01f64..0.01, -0.005f64..0.005), 1..30), mu in 0.05f64..1.0, courant in 0.1f64..1.0) {
         let p = contact_problem(mu, 0.48, 10);
         let local = p.local_contact(p.hertz().fn_n);
-        let mut prep = creepbench::solvers::uba::Prepared::new(&p.grid, &local.planform.pressure_mpa, mu);
+        let mut prep = creepbench::solvers::uba::Prepared::new(&p.grid, &local, mu);
         let (mut t, mut u) = (Tractions::zero(p.grid.len()), Tractions::zero(p.grid.len()));
         for (cx, cy, cs) in steps {
             let rates = brush::rates(cx, cy, cs, &local.flex);

@@ -119,7 +119,7 @@ fn uba_respects_the_traction_bound() {
     let local = p.local_contact(p.hertz().fn_n);
     let (mut t, mut u) = (Tractions::zero(p.grid.len()), Tractions::zero(p.grid.len()));
     let rates = creepbench::solvers::brush::rates(0.02, -0.01, 0.002, &local.flex);
-    let mut prep = uba::Prepared::new(&p.grid, &local.planform.pressure_mpa, 0.3);
+    let mut prep = uba::Prepared::new(&p.grid, &local, 0.3);
     for _ in 0..50 {
         uba::step((&p.grid, &local.planform), &mut prep, &rates, (1.0, p.model.leading_edge), &u, &mut t);
         std::mem::swap(&mut t, &mut u);

@@ -1,9 +1,11 @@
-//! The report's envelope section (issue 12): every solver against CONTACT on the envelope cases
-//! (lateral creepage, spin, combined creepage, friction and load that change in time, other
-//! Courant numbers and grids): the worst difference per case in fx/fn, fy/fn and mz/(FN a), and
-//! one figure per case with CONTACT's points. Reads stored results and reference data only.
+//! The report's sections on CONTACT's case sets (issues 12, 13): the envelope (lateral creepage,
+//! spin, combined creepage, friction and load that change in time, other Courant numbers and
+//! grids) and the non-Hertzian contacts. Every solver against CONTACT: the worst difference per
+//! case in fx/fn, fy/fn and mz/(FN a), one figure per case with CONTACT's points, and a map of the
+//! contact patch where the set ships CONTACT's field. Reads stored results and reference data only.
 
-use super::plot::{line_chart, Series};
+use super::plot::{line_chart, patch_map, PatchCell, Series};
+use super::references::envelope::EnvelopeCases;
 use super::references::References;
 use super::results::StoredScene;
 use super::sections::Section;
@@ -47,10 +49,39 @@ fn axis(sc: &StoredScene) -> (&'static str, &'static str) {
     [("cx", "cx [-]"), ("cy", "cy [-]"), ("cs", "cs [1/mm]")][k]
 }
 
+/// What differs between the case-set sections.
+struct Spec {
+    title: &'static str,
+    intro: &'static str,
+    /// Prefix of the figure files.
+    prefix: &'static str,
+}
+
+const ENVELOPE: Spec = Spec {
+    title: "Envelope: lateral creepage, spin, friction and load in time, Courant number",
+    intro: "CONTACT's cases beyond the thesis family (`reference/contact_envelope/`, scenes in `scenes/envelope/`). Per case and solver: the worst |Δ| over every step or sweep point of fx/fn, fy/fn and mz/(FN a) (a: the nominal semi-axis along x; step in brackets). Gated for `contact` at 1e-5 (two cases carry a named, measured known gap: `src/harness/tolerances.rs`); the fast models are reported. Signs: CONTACT's (a positive spin gives a positive fy, Kalker's C23 > 0).",
+    prefix: "envelope",
+};
+
+const NONHERTZ: Spec = Spec {
+    title: "Non-Hertzian contacts: patches from lateral profiles",
+    intro: "CONTACT's cases on non-Hertzian contacts (`reference/contact_nonhertz/`, scenes in `scenes/nonhertz/`): h = a1 x² + g(y) with g linear between the points of a lateral profile, the normal problem solved on the grid (several patches that merge as the load rises in `nh_two_fn_ramp`). Per case and solver: the worst |Δ| of fx/fn, fy/fn and mz/(FN a) (a: the equivalent ellipse's semi-axis along x, Kik & Piotrowski). Gated for `contact` at 1e-5; the fast models run on the exact normal pressure with the flexibilities of the equivalent ellipse (`[model] nonhertz_flexibility`, README) and are reported. The patch maps are CONTACT's fields (shade: pressure; red outline: slip).",
+    prefix: "nonhertz",
+};
+
 /// The envelope section, if any stored scene is an envelope case.
 pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
+    case_section(scenes, &refs.envelope, &ENVELOPE)
+}
+
+/// The non-Hertzian section, if any stored scene is a non-Hertzian case.
+pub fn nonhertz_section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
+    case_section(scenes, &refs.nonhertz, &NONHERTZ)
+}
+
+fn case_section(scenes: &[StoredScene], set: &EnvelopeCases, spec: &Spec) -> Option<Section> {
     let cases: Vec<(&StoredScene, &History)> =
-        scenes.iter().filter_map(|s| Some((s, refs.envelope.histories.get(&s.name)?))).collect();
+        scenes.iter().filter_map(|s| Some((s, set.histories.get(&s.name)?))).collect();
     if cases.is_empty() {
         return None;
     }
@@ -58,7 +89,7 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
     solvers.sort_by_key(|s| crate::solvers::MODELS.iter().position(|m| m.name == *s).unwrap_or(usize::MAX));
     solvers.dedup();
     let mut body = String::new();
-    let _ = writeln!(body, "CONTACT's cases beyond the thesis family (`reference/contact_envelope/`, scenes in `scenes/envelope/`). Per case and solver: the worst |Δ| over every step or sweep point of fx/fn, fy/fn and mz/(FN a) (a: the nominal semi-axis along x; step in brackets). Gated for `contact` at 1e-5 (two cases carry a named, measured known gap: `src/harness/tolerances.rs`); the fast models are reported. Signs: CONTACT's (a positive spin gives a positive fy, Kalker's C23 > 0).\n");
+    let _ = writeln!(body, "{}\n", spec.intro);
     let _ = write!(body, "| case | what |");
     for s in &solvers {
         let _ = write!(body, " {s}: fx | fy | mz |");
@@ -68,7 +99,7 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
     let mut pictures = String::new();
     for (sc, contact) in &cases {
         let a_mm = sc.scene.a_mm;
-        let note = refs.envelope.notes.get(&sc.name).map(String::as_str).unwrap_or("");
+        let note = set.notes.get(&sc.name).map(String::as_str).unwrap_or("");
         let _ = write!(body, "| {} | {} |", sc.name, note);
         for s in &solvers {
             for col in ["fx_over_fn", "fy_over_fn", MZ] {
@@ -101,15 +132,18 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
                     h.column(x).unwrap_or_default().into_iter().zip(h.column(col).unwrap_or_default()).collect();
                 series.push(Series { label: name.clone(), points, markers: false });
             }
-            let file = format!("envelope_{}_{}.svg", sc.name, &col[..2]);
+            let file = format!("{}_{}_{}.svg", spec.prefix, sc.name, &col[..2]);
             figures.push((file.clone(), line_chart(&format!("{} — {note}", sc.name), xl, label, &series, false)));
             let _ = writeln!(pictures, "![{} {label}](figures/{file})", sc.name);
         }
+        for (step, field) in set.fields.get(&sc.name).into_iter().flatten() {
+            let cells: Vec<PatchCell> = field.iter().map(|c| (c.x_mm, c.y_mm, c.pn_mpa, c.state == 'S')).collect();
+            let file = format!("{}_{}_patch_{step}.svg", spec.prefix, sc.name);
+            let title = format!("{}, step {step}: CONTACT's patch", sc.name);
+            figures.push((file.clone(), patch_map(&title, &cells, (sc.scene.dx_mm, sc.scene.dy_mm))));
+            let _ = writeln!(pictures, "![{} patch, step {step}](figures/{file})", sc.name);
+        }
     }
     let _ = writeln!(body, "\n{pictures}");
-    Some(Section {
-        title: "Envelope: lateral creepage, spin, friction and load in time, Courant number".into(),
-        body,
-        figures,
-    })
+    Some(Section { title: spec.title.into(), body, figures })
 }

@@ -147,6 +147,73 @@ fn draw(
     Ok(())
 }
 
+/// One element of a patch map: centre (x, y) [mm], pressure [MPa], whether it slips.
+pub type PatchCell = (f64, f64, f64, bool);
+
+/// A contact patch as a map of elements `dx × dy` [mm]: the pressure as shade (white at zero,
+/// dark at the largest), slipping elements outlined in red, adhesion unmarked.
+pub fn patch_map(title: &str, cells: &[PatchCell], (dx, dy): (f64, f64)) -> String {
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (520, 440)).into_drawing_area();
+        if let Err(e) = draw_patch(&root, title, cells, (dx, dy)) {
+            eprintln!("warning: patch map {title:?}: {e}");
+        }
+        let _ = root.present();
+    }
+    svg
+}
+
+fn draw_patch(
+    root: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>,
+    title: &str,
+    cells: &[PatchCell],
+    (dx, dy): (f64, f64),
+) -> Result<(), String> {
+    root.fill(&WHITE).map_err(|e| e.to_string())?;
+    let finite: Vec<PatchCell> =
+        cells.iter().copied().filter(|c| c.0.is_finite() && c.1.is_finite() && c.2.is_finite()).collect();
+    let span = |f: fn(&PatchCell) -> f64, h: f64| {
+        let (lo, hi) =
+            finite.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), c| (lo.min(f(c)), hi.max(f(c))));
+        if lo.is_finite() && h.is_finite() && h > 0.0 {
+            (lo - h, hi + h)
+        } else {
+            (0.0, 1.0)
+        }
+    };
+    let ((x0, x1), (y0, y1)) = (span(|c| c.0, dx), span(|c| c.1, dy));
+    let p_max = finite.iter().fold(0.0f64, |m, c| m.max(c.2));
+    let mut chart = ChartBuilder::on(root)
+        .caption(format!("{title} (p max {p_max:.0} MPa)"), ("sans-serif", 15))
+        .margin(10)
+        .x_label_area_size(36)
+        .y_label_area_size(46)
+        .build_cartesian_2d(x0..x1, y0..y1)
+        .map_err(|e| e.to_string())?;
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .x_desc("x [mm] (CONTACT)")
+        .y_desc("y [mm]")
+        .draw()
+        .map_err(|e| e.to_string())?;
+    let corners = |c: &PatchCell| [(c.0 - dx / 2.0, c.1 - dy / 2.0), (c.0 + dx / 2.0, c.1 + dy / 2.0)];
+    chart
+        .draw_series(finite.iter().filter(|c| c.2 > 0.0).map(|c| {
+            let t = if p_max > 0.0 { c.2 / p_max } else { 0.0 };
+            let shade = (235.0 - 200.0 * t).round().clamp(0.0, 255.0) as u8;
+            Rectangle::new(corners(c), RGBColor(shade, shade, shade.saturating_add(40)).filled())
+        }))
+        .map_err(|e| e.to_string())?;
+    chart
+        .draw_series(
+            finite.iter().filter(|c| c.3).map(|c| Rectangle::new(corners(c), RGBColor(214, 39, 40).stroke_width(1))),
+        )
+        .map_err(|e| e.to_string())?;
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -240,7 +240,11 @@ pub fn build(input: &ReportInput) -> Report {
         let members: Vec<&StoredScene> = input
             .scenes
             .iter()
-            .filter(|s| group_of(&s.name) == title && !input.refs.envelope.histories.contains_key(&s.name))
+            .filter(|s| {
+                group_of(&s.name) == title
+                    && !input.refs.envelope.histories.contains_key(&s.name)
+                    && !input.refs.nonhertz.histories.contains_key(&s.name)
+            })
             .collect();
         if members.is_empty() || title == STUDIES {
             continue;

@@ -269,6 +269,7 @@ pub fn scaling(scenes: &[StoredScene]) -> Option<Section> {
 pub fn all(scenes: &[StoredScene], refs: &References) -> Vec<Section> {
     let mut out = vec![thesis_beside_ours(scenes, refs)];
     out.extend(super::envelope::section(scenes, refs));
+    out.extend(super::envelope::nonhertz_section(scenes, refs));
     out.extend(error_vs_time(scenes, refs));
     out.extend(grid_convergence(scenes, refs));
     out.extend(stability(scenes));

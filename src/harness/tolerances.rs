@@ -52,6 +52,11 @@ pub const RULES: &[Rule] = &[
     Rule { scene: "*", against: Against::Reference("CONTACT envelope"), solver: "contact", quantity: "fy_over_fn", abs: 1e-5, rel: 0.0, gated: true, why: "issue 12: fy/fn likewise" },
     Rule { scene: "*", against: Against::Reference("CONTACT envelope"), solver: "contact", quantity: "mz_over_fn_a", abs: 1e-5, rel: 0.0, gated: true, why: "issue 12: the spin moment gated like f, as mz/(FN a)" },
     Rule { scene: "*", against: Against::Reference("CONTACT envelope"), solver: "*", quantity: "*", abs: INF, rel: 0.0, gated: false, why: "the fast models against the exact theory on the envelope: reported per case, not gated (issue 12)" },
+    // CONTACT's exact theory on non-Hertzian contacts (issue 13): as the envelope.
+    Rule { scene: "*", against: Against::Reference("CONTACT non-Hertzian"), solver: "contact", quantity: "fx_over_fn", abs: 1e-5, rel: 0.0, gated: true, why: "issue 13: the exact solver within 1e-5 of CONTACT in fx/fn at every step of every non-Hertzian case" },
+    Rule { scene: "*", against: Against::Reference("CONTACT non-Hertzian"), solver: "contact", quantity: "fy_over_fn", abs: 1e-5, rel: 0.0, gated: true, why: "issue 13: fy/fn likewise" },
+    Rule { scene: "*", against: Against::Reference("CONTACT non-Hertzian"), solver: "contact", quantity: "mz_over_fn_a", abs: 1e-5, rel: 0.0, gated: true, why: "issue 13: the spin moment as mz/(FN a), a the equivalent ellipse's" },
+    Rule { scene: "*", against: Against::Reference("CONTACT non-Hertzian"), solver: "*", quantity: "*", abs: INF, rel: 0.0, gated: false, why: "the fast models on non-Hertzian contacts: reported per case, not gated (issue 13)" },
     // CONTACT's FASTSIM with the parabolic bound (issue 2).
     Rule { scene: "*", against: Against::Reference("CONTACT FASTSIM"), solver: "fastsim", quantity: "fx_over_fn", abs: 0.0015, rel: 0.0, gated: true, why: "issue 2: FASTSIM within 0.0015 of CONTACT's FASTSIM at every creepage" },
     Rule { scene: "*", against: Against::Reference("CONTACT FASTSIM"), solver: "uba", quantity: "fx_over_fn", abs: 0.0015, rel: 0.0, gated: true, why: "the steady UBA is FASTSIM's grid march (same discretisation)" },

@@ -23,7 +23,8 @@ pub enum LeadingEdge {
     Exact,
 }
 
-/// A grid of `mx × my` piecewise-constant elements covering `[−hx, hx] × [−hy, hy]`.
+/// A grid of `mx × my` piecewise-constant elements covering `[−hx, hx] × [−hy, hy]` (or the
+/// given edges, [`Grid::from_edges`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Grid {
     pub mx: usize,
@@ -44,11 +45,25 @@ impl Grid {
     /// The grid of thesis App. B over half-extents hx, hy: `dx = 2hx/mx`, `dy = 2hy/my`, centres
     /// at `−hx + dx/2 + k dx` (hx = a, hy = b: the ellipse's bounding box).
     pub fn new(mx: usize, my: usize, half_x_mm: f64, half_y_mm: f64) -> Self {
-        let dx_mm = 2.0 * half_x_mm / mx as f64;
-        let dy_mm = 2.0 * half_y_mm / my as f64;
-        let x_mm = (0..mx).map(|i| -half_x_mm + dx_mm * (i as f64 + 0.5)).collect();
-        let y_mm = (0..my).map(|j| -half_y_mm + dy_mm * (j as f64 + 0.5)).collect();
+        Self::from_edges(mx, my, [-half_x_mm, half_x_mm], [-half_y_mm, half_y_mm])
+    }
+
+    /// A grid over `[x_lo, x_hi] × [y_lo, y_hi]` in grid coordinates (an explicitly given
+    /// potential contact, CONTACT's IPOTCN = 1 with x mirrored: `[x_lo, x_hi] = [−x1_C, −x0_C]`):
+    /// `dx = (x_hi − x_lo)/mx`, centres at `x_lo + dx/2 + i dx`.
+    pub fn from_edges(mx: usize, my: usize, [x_lo, x_hi]: [f64; 2], [y_lo, y_hi]: [f64; 2]) -> Self {
+        let dx_mm = (x_hi - x_lo) / mx as f64;
+        let dy_mm = (y_hi - y_lo) / my as f64;
+        let x_mm = (0..mx).map(|i| x_lo + dx_mm * (i as f64 + 0.5)).collect();
+        let y_mm = (0..my).map(|j| y_lo + dy_mm * (j as f64 + 0.5)).collect();
+        let (half_x_mm, half_y_mm) = (0.5 * (x_hi - x_lo), 0.5 * (y_hi - y_lo));
         Self { mx, my, half_x_mm, half_y_mm, dx_mm, dy_mm, x_mm, y_mm }
+    }
+
+    /// Whether element (i, j) lies on the grid's boundary.
+    pub fn on_edge(&self, k: usize) -> bool {
+        let (i, j) = (k % self.mx, k / self.mx);
+        i == 0 || j == 0 || i + 1 == self.mx || j + 1 == self.my
     }
 
     /// Number of elements.

@@ -27,6 +27,28 @@ pub enum FlexibilityModel {
     Thesis,
 }
 
+/// How the simplified models set the flexibility of each strip (grid row) on a contact that is
+/// not Hertz's ellipse (`[model] nonhertz_flexibility`; an ellipse always uses its own).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PatchFlexibility {
+    /// Per strip from its local half-length: `L(y) = L · a(y)/a_e`, Kalker's L of the
+    /// equivalent ellipse scaled as Kalker's `L ∝ a` for a strip of half-length a(y) (the strip
+    /// idea of FaStrip: Sichani, Enblom & Berg, Vehicle System Dynamics 54(6), 2016).
+    Strip,
+    /// Uniform, Kalker's L of the equivalent ellipse (Kik & Piotrowski 2008), as CONTACT's FASTSIM
+    /// on non-Hertzian contacts (m_scontc.f90: `equiv_ellipse`, then `simpflex`). The default:
+    /// closer to the exact solver than `Strip` on the CONTACT non-Hertzian cases (README).
+    #[default]
+    EquivalentEllipse,
+}
+
+impl PatchFlexibility {
+    pub fn is_default(&self) -> bool {
+        *self == PatchFlexibility::default()
+    }
+}
+
 /// Kalker's creepage coefficients [-].
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Coefficients {

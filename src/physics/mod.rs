@@ -1,12 +1,13 @@
 //! Contact physics written once and shared by every solver: material constants, Hertz,
 //! Kalker's coefficients and flexibilities, the grid, the pressure, the rigid slip, the traction
-//! bound and the spin moment.
+//! bound, the spin moment and the elastic half-space (influence coefficients, the normal problem).
 //!
 //! Units throughout: mm, N, MPa (N/mm²), s; creepages dimensionless, spin in 1/mm.
 
 pub mod bound;
 pub mod geometry;
 pub mod grid;
+pub mod halfspace;
 pub mod hertz;
 pub mod kalker;
 pub mod material;
@@ -18,7 +19,7 @@ pub use bound::project_to_bound;
 pub use geometry::{ContactGeometry, HertzEllipse, Planform};
 pub use grid::{Grid, LeadingEdge};
 pub use hertz::{HertzContact, Radii};
-pub use kalker::{CoefficientSource, Coefficients, Flexibilities, FlexibilityModel};
+pub use kalker::{CoefficientSource, Coefficients, Flexibilities, FlexibilityModel, PatchFlexibility};
 pub use material::Material;
 pub use moment::moment_sum;
 pub use pressure::PressureShape;

@@ -136,7 +136,12 @@ impl Loading {
                         format!("a table reaching at least one step, t >= dt = {dt_s:e} s (within {TABLE_END_REL:e} relative)"),
                     ));
                 }
-                if let Some(fn_max) = rows.fn_n.as_ref().map(|f| f.iter().fold(0.0, |a: f64, &b| a.max(b))) {
+                if let Some(fn_max) = rows
+                    .fn_n
+                    .as_ref()
+                    .filter(|_| geometry.elliptic())
+                    .map(|f| f.iter().fold(0.0, |a: f64, &b| a.max(b)))
+                {
                     let (e, nominal) = (geometry.ellipse_at(fn_max), geometry.nominal());
                     let fits = |semi: f64, half: f64| semi <= half * (1.0 + 1e-12);
                     if !(fits(e.a_mm, grid.half_x_mm) && fits(e.b_mm, grid.half_y_mm)) {

@@ -11,7 +11,8 @@ pub use resolved::ResolvedScene;
 
 use crate::error::InputError;
 use crate::physics::{
-    CoefficientSource, Coefficients, ContactGeometry, Flexibilities, Grid, HertzContact, Material, Planform,
+    CoefficientSource, Coefficients, ContactGeometry, Flexibilities, Grid, HertzContact, Material, PatchFlexibility,
+    Planform,
 };
 use crate::scene::{ContactSolverOptions, ExternalSolver, Limits, ModelOptions, Scene};
 use std::path::PathBuf;
@@ -25,6 +26,9 @@ pub const E_G_TOLERANCE: f64 = 1e-3;
 pub struct LocalContact {
     pub planform: Planform,
     pub flex: Flexibilities,
+    /// Per grid row, the rigid slip's factor over `flex` (`L/L(y)`; 1 on an ellipse and with
+    /// uniform flexibilities, [`crate::physics::PatchFlexibility`]).
+    pub row_gain: Vec<f64>,
 }
 
 /// Rolling: speed and the rolling distance per time step.
@@ -36,6 +40,42 @@ pub struct Rolling {
     pub dt_s: f64,
     /// Rolling distance per step [mm] = courant·dx.
     pub dq_mm: f64,
+}
+
+/// A contact given per element: every load of the history gives a normal contact (else an input
+/// error naming the load), and a contact that reaches the grid's edge is cut by it (a warning
+/// with the share of the load there).
+fn check_loads(
+    geometry: &dyn ContactGeometry,
+    loading: &Loading,
+    warnings: &mut Vec<String>,
+) -> Result<(), InputError> {
+    let mut loads: Vec<f64> = loading.rows().map(|s| s.fn_n).collect();
+    loads.sort_by(f64::total_cmp);
+    loads.dedup();
+    let mut worst = (0.0, 0.0);
+    for fn_n in loads {
+        let share = geometry.edge_load_share(fn_n);
+        if !share.is_finite() || geometry.planform_error(fn_n).is_some() {
+            let why = geometry.planform_error(fn_n).unwrap_or_else(|| "a non-finite pressure".into());
+            return Err(InputError::new(
+                "contact.fn_n",
+                fn_n,
+                format!("a load the geometry's normal problem can carry on this grid ({why})"),
+            ));
+        }
+        if share > worst.1 {
+            worst = (fn_n, share);
+        }
+    }
+    if worst.1 > 0.0 {
+        warnings.push(format!(
+            "the contact reaches the grid's edge: at FN = {} N, {:.3} % of the load sits on boundary elements; widen [grid] x_mm, y_mm so the grid holds the contact",
+            worst.0,
+            100.0 * worst.1
+        ));
+    }
+    Ok(())
 }
 
 /// Everything a solver needs, resolved once.
@@ -85,7 +125,7 @@ impl Problem {
             (None, Some(e)) => Material::from_e(e, scene.material.poisson),
             (None, None) => return Err(InputError::new("material.g_mpa", "missing", "g_mpa or e_mpa")),
         };
-        let geometry = scene.geometry.build(scene.fn_n, &material)?;
+        let (geometry, grid) = scene.geometry.build(scene.fn_n, &material, (scene.mx, scene.my), scene.extent)?;
         let hertz = geometry.nominal();
         let mut warnings = Vec::new();
         let ratio = hertz.b_mm / hertz.a_mm;
@@ -106,11 +146,12 @@ impl Problem {
             ));
         }
         let coefficients = Coefficients::new(scene.model.coefficients, hertz.a_mm, hertz.b_mm, material.poisson);
-        // The potential contact: `[grid] scale` times the nominal ellipse's bounding box.
-        let grid = Grid::new(scene.mx, scene.my, scene.grid_scale * hertz.a_mm, scene.grid_scale * hertz.b_mm);
         let dq_mm = scene.courant * grid.dx_mm;
         let dt_s = dq_mm / scene.v_mm_s;
         let loading = Loading::sample(scene, dt_s, geometry.as_ref(), &grid, &mut warnings)?;
+        if !geometry.elliptic() {
+            check_loads(geometry.as_ref(), &loading, &mut warnings)?;
+        }
         let (metrics, skipped_metrics) = crate::metrics::select(scene.metrics.as_deref(), &loading, dt_s);
         for (m, why) in &skipped_metrics {
             if scene.metrics.as_ref().is_some_and(|asked| asked.contains(m)) {
@@ -184,7 +225,11 @@ impl Problem {
     pub fn local_contact(&self, fn_n: f64) -> LocalContact {
         let planform = self.geometry.planform(&self.grid, fn_n, self.model.pressure);
         let flex = self.flexibilities_of(&planform.ellipse);
-        LocalContact { planform, flex }
+        let strips = !self.geometry.elliptic() && self.model.nonhertz_flexibility == PatchFlexibility::Strip;
+        let a_mm = planform.ellipse.a_mm;
+        let row_gain =
+            planform.half_length_mm.iter().map(|&h| if strips && h > 0.0 { a_mm / h } else { 1.0 }).collect();
+        LocalContact { planform, flex, row_gain }
     }
 
     /// Flexibilities of the simplified models for an ellipse (thesis Eq. 2.35 or 3.5).

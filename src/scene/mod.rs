@@ -3,12 +3,13 @@
 //! Every field is checked (type, range, NaN/inf, unknown keys); errors name the field, the value
 //! and what is allowed, and become exit status 2.
 
+pub mod geometry;
 pub mod reader;
 pub mod table;
 
 use crate::error::InputError;
-use crate::physics::geometry::GeometrySpec;
-use crate::physics::{CoefficientSource, FlexibilityModel, LeadingEdge, PressureShape, Radii};
+use crate::physics::geometry::{Extent, GeometrySpec};
+use crate::physics::{CoefficientSource, FlexibilityModel, LeadingEdge, PatchFlexibility, PressureShape, Radii};
 use reader::{Range, Section};
 use std::path::{Path, PathBuf};
 
@@ -54,6 +55,9 @@ pub struct ModelOptions {
     pub pressure: PressureShape,
     /// Where the simplified models start each row (default: the grid's edge, as CONTACT's FASTSIM).
     pub leading_edge: LeadingEdge,
+    /// Strip flexibilities on a contact that is not an ellipse (default: the equivalent ellipse's).
+    #[serde(default, skip_serializing_if = "PatchFlexibility::is_default")]
+    pub nonhertz_flexibility: PatchFlexibility,
 }
 
 impl Default for ModelOptions {
@@ -63,6 +67,7 @@ impl Default for ModelOptions {
             coefficients: CoefficientSource::Table,
             pressure: PressureShape::Parabolic,
             leading_edge: LeadingEdge::Grid,
+            nonhertz_flexibility: PatchFlexibility::EquivalentEllipse,
         }
     }
 }
@@ -127,6 +132,8 @@ pub struct Scene {
     pub my: usize,
     /// The grid covers `grid_scale` times the nominal ellipse's bounding box (CONTACT's SCALE).
     pub grid_scale: f64,
+    /// The potential contact: `Scale(grid_scale)`, or explicit edges for a geometry per element.
+    pub extent: Extent,
     pub v_mm_s: f64,
     pub courant: f64,
     pub creepage: Creepage,
@@ -246,10 +253,53 @@ impl Scene {
             }
         }
 
+        // [grid] (first: a geometry per element fills it)
+        let mut g = top.table("grid")?;
+        let mx = g.usize("mx", 1, MAX_ELEMENTS_PER_AXIS)?;
+        let my = g.usize("my", 1, MAX_ELEMENTS_PER_AXIS)?;
+        let grid_scale = g.opt_f64("scale", GRID_SCALE)?.unwrap_or(1.0);
+        let edge = Range::new(-1e4, true, 1e4, true);
+        let extent = match (g.opt_f64_array::<2>("x_mm", edge)?, g.opt_f64_array::<2>("y_mm", edge)?) {
+            (None, None) => Extent::Scale(grid_scale),
+            (Some(x_mm), Some(y_mm)) => {
+                for (key, [lo, hi]) in [("x_mm", x_mm), ("y_mm", y_mm)] {
+                    if hi <= lo {
+                        return Err(InputError::new(
+                            g.field(key),
+                            format!("[{lo}, {hi}]"),
+                            "edges [low, high] with low < high [mm]",
+                        ));
+                    }
+                }
+                g.refuse("scale", "not with explicit edges x_mm, y_mm (scale sizes a grid from the ellipse)")?;
+                Extent::Edges { x_mm, y_mm }
+            }
+            (x, _) => {
+                let missing = if x.is_none() { "x_mm" } else { "y_mm" };
+                return Err(InputError::new(
+                    g.field(missing),
+                    "missing",
+                    "both edges x_mm = [x0, x1] and y_mm = [y0, y1], or neither",
+                ));
+            }
+        };
+        g.finish()?;
+
+        // [geometry]: a contact given per element
+        let element_geometry = match top.opt_table("geometry")? {
+            Some(section) => Some(geometry::read(section, dir, (mx, my))?),
+            None => None,
+        };
+
         // [contact]
         let mut c = top.table("contact")?;
         let len = Range::new(0.0, false, 1e4, true);
-        let geometry = if c.has("a_mm") || c.has("b_mm") || !c.has("r_wx_mm") {
+        let geometry = if let Some(spec) = element_geometry {
+            for k in ["a_mm", "b_mm", "r_wx_mm", "r_wy_mm", "r_ry_mm"] {
+                c.refuse(k, "not with a [geometry] given per element (its contact follows from the normal problem)")?;
+            }
+            spec
+        } else if c.has("a_mm") || c.has("b_mm") || !c.has("r_wx_mm") {
             let a_mm = c.f64("a_mm", len)?;
             let b_mm = c.f64("b_mm", len)?;
             for k in ["r_wx_mm", "r_wy_mm", "r_ry_mm"] {
@@ -287,13 +337,6 @@ impl Scene {
             ));
         }
         m.finish()?;
-
-        // [grid]
-        let mut g = top.table("grid")?;
-        let mx = g.usize("mx", 1, MAX_ELEMENTS_PER_AXIS)?;
-        let my = g.usize("my", 1, MAX_ELEMENTS_PER_AXIS)?;
-        let grid_scale = g.opt_f64("scale", GRID_SCALE)?.unwrap_or(1.0);
-        g.finish()?;
 
         // [rolling]
         let (mut v_mm_s, mut courant) = (1000.0, 1.0);
@@ -388,6 +431,10 @@ impl Scene {
             if let Some(e) = md.opt_choice("leading_edge", &["grid", "exact"])? {
                 model.leading_edge = if e == "exact" { LeadingEdge::Exact } else { LeadingEdge::Grid };
             }
+            if let Some(f) = md.opt_choice("nonhertz_flexibility", &["strip", "equivalent_ellipse"])? {
+                model.nonhertz_flexibility =
+                    if f == "strip" { PatchFlexibility::Strip } else { PatchFlexibility::EquivalentEllipse };
+            }
             md.finish()?;
         }
 
@@ -426,6 +473,7 @@ impl Scene {
             mx,
             my,
             grid_scale,
+            extent,
             v_mm_s,
             courant,
             creepage,

@@ -4,7 +4,7 @@
 
 pub use crate::physics::LeadingEdge;
 use crate::physics::{moment_sum, project_to_bound, Flexibilities, Grid, Planform, RigidSlip};
-use crate::problem::Sample;
+use crate::problem::{LocalContact, Sample};
 use crate::solvers::{FieldView, Step, Termination};
 
 /// The rigid slip over the flexibilities [MPa/mm] (the left side of thesis Eq. 3.4/3.6):
@@ -47,7 +47,7 @@ pub fn ghost(grid: &Grid, planform: &Planform, edge: LeadingEdge, rates: &RigidS
         LeadingEdge::Grid => (0.0, 0.0),
         LeadingEdge::Exact => {
             let x = grid.x_mm[i];
-            let x_le = (-planform.half_chord_mm[j]).clamp(x - grid.dx_mm, x);
+            let x_le = planform.leading_edge_mm[j].clamp(x - grid.dx_mm, x);
             rates.between(x_le, x - grid.dx_mm, grid.y_mm[j])
         }
     }
@@ -102,19 +102,21 @@ pub fn step(
 }
 
 /// Steady rolling by marching each row from its leading edge, with the traction bound `μ p`
-/// after every element (thesis 2.3.6 and Eq. 2.29). Returns the number of slipping elements.
+/// after every element (thesis 2.3.6 and Eq. 2.29), the slip of row j times `row_gain[j]`.
+/// Returns the number of slipping elements.
 pub fn steady_march(
     grid: &Grid,
-    planform: &Planform,
+    local: &LocalContact,
     mu: f64,
     rates: &RigidSlip,
     (edge, integration): (LeadingEdge, Integration),
     out: &mut Tractions,
 ) -> usize {
+    let planform = &local.planform;
     let pressure = &planform.pressure_mpa;
     let mut n_slip = 0;
     for j in 0..grid.my {
-        let y = grid.y_mm[j];
+        let (y, gain) = (grid.y_mm[j], local.row_gain[j]);
         let (mut tx, mut ty) = (0.0, 0.0);
         let mut upstream_loaded = false;
         for i in 0..grid.mx {
@@ -126,10 +128,11 @@ pub fn steady_march(
                 continue;
             }
             if !upstream_loaded {
-                (tx, ty) = ghost(grid, planform, edge, rates, i, j);
+                let (gx, gy) = ghost(grid, planform, edge, rates, i, j);
+                (tx, ty) = (gain * gx, gain * gy);
             }
             let (dtx, dty) = integration.increment(rates, grid.x_mm[i], y, grid.dx_mm);
-            let (px, py, slip) = project_to_bound(tx + dtx, ty + dty, mu * pressure[k]);
+            let (px, py, slip) = project_to_bound(tx + gain * dtx, ty + gain * dty, mu * pressure[k]);
             (tx, ty) = (px, py);
             out.tx[k] = tx;
             out.ty[k] = ty;

@@ -62,7 +62,7 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let n = p.grid.len();
     let first = p.loading.first();
     let local = p.local_contact(first.fn_n);
-    let prep = Prepared::new(&p.grid, &local.planform.pressure_mpa, first.mu);
+    let prep = Prepared::new(&p.grid, &local, first.mu);
     Ok(Box::new(Uba { p, local, prep, prep_mu: first.mu, t: Tractions::zero(n), scratch: Tractions::zero(n) }))
 }
 
@@ -95,9 +95,9 @@ impl Stepper for Uba<'_> {
                     }
                 }
             }
-            self.prep = Prepared::new(&self.p.grid, &self.local.planform.pressure_mpa, at.mu);
+            self.prep = Prepared::new(&self.p.grid, &self.local, at.mu);
         } else if at.mu != self.prep_mu {
-            self.prep = Prepared::new(&self.p.grid, &self.local.planform.pressure_mpa, at.mu);
+            self.prep = Prepared::new(&self.p.grid, &self.local, at.mu);
         }
         self.prep_mu = at.mu;
         Ok(())
@@ -107,7 +107,7 @@ impl Stepper for Uba<'_> {
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
         let rates = brush::slip_rates(at, &self.local.flex);
         let how = (self.p.model.leading_edge, Integration::Centre);
-        let n_slip = brush::steady_march(&self.p.grid, &self.local.planform, at.mu, &rates, how, &mut self.t);
+        let n_slip = brush::steady_march(&self.p.grid, &self.local, at.mu, &rates, how, &mut self.t);
         Ok(self.row(n_slip, self.t.sums()))
     }
 
@@ -142,13 +142,16 @@ pub struct Prepared {
     upstream: Vec<f64>,
     x_mm: Vec<f64>,
     y_mm: Vec<f64>,
+    /// The row's slip factor per element ([`LocalContact::row_gain`]).
+    gain: Vec<f64>,
     /// Inflow (ghost) traction per element, non-zero only at run starts with the exact edge.
     ghost_x: Vec<f64>,
     ghost_y: Vec<f64>,
 }
 
 impl Prepared {
-    pub fn new(grid: &Grid, pressure: &[f64], mu: f64) -> Self {
+    pub fn new(grid: &Grid, local: &LocalContact, mu: f64) -> Self {
+        let pressure = &local.planform.pressure_mpa;
         let n = grid.len();
         let mut runs = Vec::new();
         let mut upstream = vec![0.0; n];
@@ -172,7 +175,8 @@ impl Prepared {
         let bound: Vec<f64> = pressure.iter().map(|p| mu * p.max(0.0)).collect();
         let x_mm = (0..n).map(|k| grid.x_mm[k % grid.mx]).collect();
         let y_mm = (0..n).map(|k| grid.y_mm[k / grid.mx]).collect();
-        Prepared { runs, bound, upstream, x_mm, y_mm, ghost_x: vec![0.0; n], ghost_y: vec![0.0; n] }
+        let gain = (0..n).map(|k| local.row_gain[k / grid.mx]).collect();
+        Prepared { runs, bound, upstream, x_mm, y_mm, gain, ghost_x: vec![0.0; n], ghost_y: vec![0.0; n] }
     }
 
     /// Number of loaded elements.
@@ -198,8 +202,9 @@ pub fn step(
     if ghost {
         for &(j, first, _) in &prep.runs {
             let (gx, gy) = brush::ghost(grid, planform, edge, rates, first, j);
-            prep.ghost_x[grid.index(first, j)] = gx;
-            prep.ghost_y[grid.index(first, j)] = gy;
+            let k = grid.index(first, j);
+            prep.ghost_x[k] = prep.gain[k] * gx;
+            prep.ghost_y[k] = prep.gain[k] * gy;
         }
     }
     // Source per step, C·dx·k(x, y) (Eq. 3.4), k the rigid slip over the flexibilities.
@@ -239,7 +244,7 @@ type Io<'a> = (&'a [f64], &'a [f64], &'a mut [f64], &'a mut [f64]);
 fn flat_body<const GHOST: bool, const SPIN: bool>(p: &Prepared, (ox, oy, nx, ny): Io, k: [f64; 5]) -> StepSums {
     let n = ox.len();
     let (oy, nx, ny) = (&oy[..n], &mut nx[..n], &mut ny[..n]);
-    let (g, up, xs, ys) = (&p.bound[..n], &p.upstream[..n], &p.x_mm[..n], &p.y_mm[..n]);
+    let (g, up, xs, ys, gain) = (&p.bound[..n], &p.upstream[..n], &p.x_mm[..n], &p.y_mm[..n], &p.gain[..n]);
     let (gx, gy) = (&p.ghost_x[..n], &p.ghost_y[..n]);
     let [c, sx0, sx1, sy0, sy1] = k;
     let mut slips = 0usize;
@@ -249,6 +254,7 @@ fn flat_body<const GHOST: bool, const SPIN: bool>(p: &Prepared, (ox, oy, nx, ny)
         let ux = up[m] * px + inx;
         let uy = up[m] * py + iny;
         let (srcx, srcy) = if SPIN { (sx0 + sx1 * ys[m], sy0 + sy1 * xs[m]) } else { (sx0, sy0) };
+        let (srcx, srcy) = (gain[m] * srcx, gain[m] * srcy);
         let vx = ox[m] + c * (ux - ox[m]) + srcx;
         let vy = oy[m] + c * (uy - oy[m]) + srcy;
         let n2 = vx * vx + vy * vy;

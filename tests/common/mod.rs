@@ -65,3 +65,44 @@ pub fn max_abs_diff(a: &[f64], b: &[f64]) -> (f64, usize) {
         .map(|(k, (x, y))| ((x - y).abs(), k))
         .fold((0.0, 0), |m, v| if v.0 > m.0 { v } else { m })
 }
+
+/// The exact solver's fields of the scene file `scene` (relative to the root) against CONTACT's
+/// field file `field_csv`, element by element in the mirrored frame (element i ↔ CONTACT's
+/// ix = mx − i): pressure and both traction components within `tol` of μ p_max, and the same
+/// adhesion/slip division. Returns (elements compared, largest difference over μ p_max).
+#[allow(dead_code)]
+pub fn compare_fields_with_contact(scene: &str, field_csv: &str, tol: f64) -> (usize, f64) {
+    use creepbench::solvers::contact::tangential::ElementState;
+    let path = root().join(scene);
+    let sc = creepbench::scene::Scene::from_file(&path).unwrap();
+    let p = Problem::resolve(&sc).unwrap();
+    let mut rdr = csv::Reader::from_path(root().join(field_csv)).unwrap();
+    let rows: Vec<csv::StringRecord> = rdr.records().map(Result::unwrap).collect();
+    let steps: Vec<usize> = rows.iter().map(|r| r[0].parse().unwrap()).collect();
+    let (_, fields) = creepbench::solvers::contact::run_with_fields(&p, &|s| steps.contains(&s)).unwrap();
+    let g = &p.grid;
+    let (mut n, mut worst) = (0, 0.0f64);
+    for (r, step) in rows.iter().zip(&steps) {
+        let num = |i: usize| r[i].parse::<f64>().unwrap();
+        let (ix, iy) = (num(1) as usize, num(2) as usize);
+        let fld = fields.iter().find(|f| f.step == *step).expect("the step was kept");
+        let mu = p.loading.rows().find(|s| s.step == *step).unwrap().mu;
+        let scale = mu * fld.pn_mpa.iter().fold(0.0f64, |m, &v| m.max(v));
+        let k = g.index(g.mx - ix, iy - 1);
+        for (ours, theirs, what) in
+            [(fld.pn_mpa[k], num(5), "pn"), (fld.px_mpa[k], num(6), "px"), (fld.py_mpa[k], num(7), "py")]
+        {
+            let d = (ours - theirs).abs() / scale;
+            assert!(d < tol, "{scene} step {step} ({ix}, {iy}) {what}: {ours} vs {theirs}");
+            worst = worst.max(d);
+        }
+        let ours = match fld.state[k] {
+            ElementState::Exterior => "E",
+            ElementState::Adhesion => "A",
+            ElementState::Slip => "S",
+        };
+        assert_eq!(ours, &r[8], "{scene} step {step} ({ix}, {iy}) state");
+        n += 1;
+    }
+    (n, worst)
+}

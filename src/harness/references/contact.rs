@@ -81,7 +81,7 @@ impl ContactCases {
 /// A CONTACT history CSV (the reference READMEs' format) as a [`History`] named "CONTACT": steps
 /// shifted by `step_offset` (the thesis sweeps number from 0, ours from 1), `cs` and `mu` read
 /// where the file has them, and the extra columns `n_adhesion, n_slip` plus `extra`.
-pub(super) fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> Result<History, Error> {
+pub fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> Result<History, Error> {
     let text = read(path)?;
     let fail = Error::format(path);
     let mut rdr = csv::Reader::from_reader(text.as_bytes());
@@ -91,10 +91,8 @@ pub(super) fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> R
     };
     let find = |n: &str| head.iter().position(|h| h == n);
     let col = |n: &str| find(n).ok_or_else(|| FormatError::MissingColumn { column: n.to_string() });
-    let cols = (|| {
-        let lead = ["step", "t_s", "cx", "cy", "fn_n", "fx_over_fn", "fy_over_fn", "n_adhesion", "n_slip"];
-        lead.iter().chain(extra).map(|n| col(n)).collect::<Result<Vec<usize>, FormatError>>()
-    })();
+    let lead = ["step", "t_s", "cx", "cy", "fn_n", "fx_over_fn", "fy_over_fn", "n_adhesion", "n_slip"];
+    let cols = lead.iter().chain(extra).map(|n| col(n)).collect::<Result<Vec<usize>, FormatError>>();
     let cols = match cols {
         Ok(c) => c,
         Err(e) => return Err(fail(e)),

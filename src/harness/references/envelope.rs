@@ -1,8 +1,9 @@
-//! CONTACT's results beyond the thesis family (reference/contact_envelope: cases.csv, one history
-//! per case; its README gives the inputs): lateral creepage, spin and combined creepage, friction
-//! and load that change in time, other Courant numbers and grids. Every model's fx/fn, fy/fn and
-//! spin moment are compared at every step; the exact solver is gated (issue 12: 1e-5), the others
-//! reported.
+//! CONTACT's case sets beyond the thesis family, one folder each (cases.csv, one history per case;
+//! its README gives the inputs): `contact_envelope` (lateral creepage, spin and combined
+//! creepage, friction and load that change in time, other Courant numbers and grids) and
+//! `contact_nonhertz` (non-Hertzian contacts from lateral profiles). Every model's fx/fn, fy/fn
+//! and spin moment are compared at every step; the exact solver is gated (issues 12, 13: 1e-5),
+//! the others reported.
 
 use super::contact::read_history;
 use super::{read, ReferenceSet};
@@ -15,23 +16,59 @@ use std::path::Path;
 
 /// CONTACT's exact theory on the envelope cases.
 pub const ENVELOPE: Against = Against::Reference("CONTACT envelope");
+/// CONTACT's exact theory on the non-Hertzian cases.
+pub const NONHERTZ: Against = Against::Reference("CONTACT non-Hertzian");
 
 /// The spin moment made dimensionless, `mz / (FN a)` (a: the nominal semi-axis along x), so that
 /// one tolerance fits every case; the quantity name of its findings.
 pub const MZ_OVER_FN_A: &str = "mz_over_fn_a";
 
-/// Every envelope case's history, by case name.
+/// Every case's history of one CONTACT case set, by case name.
 #[derive(Debug, Clone, Default)]
 pub struct EnvelopeCases {
+    /// Its comparisons' label ([`ENVELOPE`], [`NONHERTZ`]).
+    pub against: Option<Against>,
     pub histories: BTreeMap<String, History>,
     /// The cases' notes (cases.csv `note`), for the report.
     pub notes: BTreeMap<String, String>,
+    /// The element fields of the cases that ship a `<case>_field.csv`, per step (patch maps).
+    pub fields: BTreeMap<String, Vec<(usize, Vec<FieldCell>)>>,
+}
+
+/// One element of a CONTACT field file: centre in CONTACT's coordinates, pressure, state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FieldCell {
+    pub x_mm: f64,
+    pub y_mm: f64,
+    pub pn_mpa: f64,
+    /// CONTACT's element state: 'E' exterior, 'A' adhesion, 'S' slip.
+    pub state: char,
+}
+
+/// A field file `step,ix,iy,x_mm,y_mm,pn_mpa,px_mpa,py_mpa,state`, grouped by step.
+fn read_field(path: &Path) -> Result<Vec<(usize, Vec<FieldCell>)>, Error> {
+    let text = read(path)?;
+    let bad = |line: usize, e: csv::Error| Error::Format {
+        path: path.to_path_buf(),
+        source: FormatError::Csv { line, source: e },
+    };
+    let mut rdr = csv::Reader::from_reader(text.as_bytes());
+    let mut out: Vec<(usize, Vec<FieldCell>)> = Vec::new();
+    for (n, rec) in rdr.deserialize::<(usize, usize, usize, f64, f64, f64, f64, f64, char)>().enumerate() {
+        let (step, _, _, x_mm, y_mm, pn_mpa, _, _, state) = rec.map_err(|e| bad(n + 2, e))?;
+        let cell = FieldCell { x_mm, y_mm, pn_mpa, state };
+        match out.last_mut() {
+            Some((k, cells)) if *k == step => cells.push(cell),
+            _ => out.push((step, vec![cell])),
+        }
+    }
+    Ok(out)
 }
 
 impl EnvelopeCases {
-    /// Load reference/contact_envelope/cases.csv and every case's history (with `mz_nmm`).
-    pub fn load(dir: &Path) -> Result<EnvelopeCases, Error> {
-        let path = dir.join("contact_envelope/cases.csv");
+    /// Load `dir/folder/cases.csv` and every case's history (with `mz_nmm`), compared as `against`.
+    pub fn load(dir: &Path, folder: &str, against: Against) -> Result<EnvelopeCases, Error> {
+        let path = dir.join(folder).join("cases.csv");
         let text = read(&path)?;
         let mut rdr = csv::Reader::from_reader(text.as_bytes());
         let bad = |e: csv::Error| Error::Format { path: path.clone(), source: FormatError::Csv { line: 0, source: e } };
@@ -42,12 +79,16 @@ impl EnvelopeCases {
             let column = if head.iter().any(|h| h == "name") { "note" } else { "name" };
             return Err(Error::Format { path, source: FormatError::MissingColumn { column: column.into() } });
         };
-        let mut out = EnvelopeCases::default();
+        let mut out = EnvelopeCases { against: Some(against), ..EnvelopeCases::default() };
         for rec in rdr.records() {
             let rec = rec.map_err(bad)?;
             let (name, note) = (rec.get(name_col).unwrap_or(""), rec.get(note_col).unwrap_or(""));
-            let h = read_history(&dir.join(format!("contact_envelope/{name}.csv")), 0, &[MZ])?;
+            let h = read_history(&dir.join(folder).join(format!("{name}.csv")), 0, &[MZ])?;
             out.histories.insert(name.to_string(), h);
+            let field = dir.join(folder).join(format!("{name}_field.csv"));
+            if field.is_file() {
+                out.fields.insert(name.to_string(), read_field(&field)?);
+            }
             out.notes.insert(name.to_string(), note.to_string());
         }
         Ok(out)
@@ -62,7 +103,10 @@ fn mz_over_fn_a(h: &History, a_mm: f64) -> Option<Vec<f64>> {
 
 impl ReferenceSet for EnvelopeCases {
     fn label(&self) -> &'static str {
-        "CONTACT envelope"
+        match self.against {
+            Some(Against::Reference(label)) => label,
+            _ => "CONTACT case set (not loaded)",
+        }
     }
 
     fn compare(&self, ours: &StoredScene) -> Vec<Finding> {
@@ -76,7 +120,7 @@ impl ReferenceSet for EnvelopeCases {
             None => BTreeMap::new(),
         };
         for (solver, h) in &ours.histories {
-            let ctx = Ctx { scene: &ours.name, solver, against: ENVELOPE };
+            let ctx = Ctx { scene: &ours.name, solver, against: self.against.unwrap_or(ENVELOPE) };
             out.extend(ctx.column(h, contact, "fx_over_fn", true));
             out.extend(ctx.column(h, contact, "fy_over_fn", true));
             match mz_over_fn_a(h, a_mm) {

@@ -30,6 +30,7 @@ pub trait ReferenceSet: Send + Sync {
 pub struct References {
     pub contact: contact::ContactCases,
     pub envelope: envelope::EnvelopeCases,
+    pub nonhertz: envelope::EnvelopeCases,
     pub thesis: thesis::ThesisTables,
 }
 
@@ -41,15 +42,16 @@ impl References {
         crate::safety::manifest::verify(dir).map_err(|source| Error::Manifest { dir: dir.to_path_buf(), source })?;
         Ok(References {
             contact: contact::ContactCases::load(dir)?,
-            envelope: envelope::EnvelopeCases::load(dir)?,
+            envelope: envelope::EnvelopeCases::load(dir, "contact_envelope", envelope::ENVELOPE)?,
+            nonhertz: envelope::EnvelopeCases::load(dir, "contact_nonhertz", envelope::NONHERTZ)?,
             thesis: thesis::ThesisTables::load(dir)?,
         })
     }
 
     /// The registry: every set, in the order of the report. Adding a set: its file, a field and
     /// a line here.
-    pub fn sets(&self) -> [&dyn ReferenceSet; 3] {
-        [&self.contact, &self.envelope, &self.thesis]
+    pub fn sets(&self) -> [&dyn ReferenceSet; 4] {
+        [&self.contact, &self.envelope, &self.nonhertz, &self.thesis]
     }
 
     /// The first history any set holds for a scene (drawn as markers in the plots).

@@ -37,7 +37,8 @@ impl ContactGeometry for HertzEllipse {
     fn planform(&self, grid: &Grid, fn_n: f64, shape: PressureShape) -> Planform {
         let e = self.ellipse_at(fn_n);
         let pressure = shape.on_grid(grid, fn_n, e.a_mm, e.b_mm);
-        let half_chord = (0..grid.my).map(|j| grid.chord_half_length_mm(j, e.a_mm, e.b_mm)).collect();
-        Planform::new(e, pressure, half_chord)
+        let half_chord: Vec<f64> = (0..grid.my).map(|j| grid.chord_half_length_mm(j, e.a_mm, e.b_mm)).collect();
+        let leading_edge = half_chord.iter().map(|h| -h).collect();
+        Planform::new(e, pressure, leading_edge, half_chord)
     }
 }

@@ -1,17 +1,22 @@
 //! The geometry seam: what every solver needs of the contact's shape, behind one trait. The
 //! exact-theory solver takes the undeformed distance per element; the simplified models take a
 //! planform (their pressure on the grid, each row's leading edge, the ellipse that sets their
-//! flexibilities). Hertz's ellipse is one geometry ([`hertz::HertzEllipse`]); an element-wise
-//! geometry is one more file here plus its scene keys.
+//! flexibilities). Hertz's ellipse is one geometry ([`hertz::HertzEllipse`]); an undeformed
+//! distance per element on an explicit grid is the other ([`element::ElementGeometry`]), made
+//! from a lateral profile ([`profile::Profile`]) or given element by element.
 
+pub mod element;
 pub mod hertz;
+pub mod profile;
 
 use super::{Grid, HertzContact, Material, PressureShape, Radii};
 use crate::error::InputError;
 use std::fmt::Debug;
 use std::sync::Arc;
 
+pub use element::ElementGeometry;
 pub use hertz::HertzEllipse;
+pub use profile::Profile;
 
 /// The geometry as a scene gives it.
 #[derive(Debug, Clone, PartialEq)]
@@ -20,19 +25,105 @@ pub enum GeometrySpec {
     SemiAxes { a_mm: f64, b_mm: f64 },
     /// Hertz's ellipse from the principal radii (`contact.r_wx_mm`, …) and the load.
     Radii(Radii),
+    /// `h = a1 x² + g(y)`, g linear between the rows of a profile (`[geometry] kind = "profile"`).
+    Profile { a1_per_mm: f64, profile: Profile },
+    /// h per element (`[geometry] kind = "field"`), in CONTACT's element order: index
+    /// `(iy − 1) mx + (ix − 1)`, ix along CONTACT's x.
+    Field { h_mm: Vec<f64> },
+}
+
+/// The potential contact as a scene gives it (`[grid]`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Extent {
+    /// `scale` times the bounding box of the nominal ellipse (CONTACT's SCALE).
+    Scale(f64),
+    /// Explicit edges in CONTACT's coordinates (`x_mm = [x0, x1]`, `y_mm = [y0, y1]`).
+    Edges { x_mm: [f64; 2], y_mm: [f64; 2] },
 }
 
 impl GeometrySpec {
-    /// The contact geometry at the nominal load `fn_n` [N]; errors name the scene field.
-    pub fn build(&self, fn_n: f64, material: &Material) -> Result<Arc<dyn ContactGeometry>, InputError> {
-        let nominal = match self {
-            GeometrySpec::SemiAxes { a_mm, b_mm } => HertzContact { a_mm: *a_mm, b_mm: *b_mm, fn_n },
-            GeometrySpec::Radii(r) => HertzContact::from_radii(r, fn_n, material).map_err(|e| {
+    /// Whether this geometry is given per element (on an explicit grid) rather than as an ellipse.
+    pub fn is_elementwise(&self) -> bool {
+        matches!(self, GeometrySpec::Profile { .. } | GeometrySpec::Field { .. })
+    }
+
+    /// The contact geometry at the nominal load `fn_n` [N] and its grid of `mx × my` elements
+    /// over `extent`; errors name the scene field.
+    pub fn build(
+        &self,
+        fn_n: f64,
+        material: &Material,
+        (mx, my): (usize, usize),
+        extent: Extent,
+    ) -> Result<(Arc<dyn ContactGeometry>, Grid), InputError> {
+        let nominal = match (self, extent) {
+            (GeometrySpec::SemiAxes { a_mm, b_mm }, Extent::Scale(_)) => {
+                HertzContact { a_mm: *a_mm, b_mm: *b_mm, fn_n }
+            }
+            (GeometrySpec::Radii(r), Extent::Scale(_)) => HertzContact::from_radii(r, fn_n, material).map_err(|e| {
                 InputError::new("contact.r_wx_mm", format!("{r:?}"), format!("radii of a convex contact ({e})"))
             })?,
+            (_, Extent::Edges { x_mm: [x0, x1], y_mm }) if self.is_elementwise() => {
+                let grid = Grid::from_edges(mx, my, [-x1, -x0], y_mm);
+                let (kind, h_mm) = match self {
+                    GeometrySpec::Profile { a1_per_mm, profile } => {
+                        if !profile.covers(&grid) {
+                            let (lo, hi) = (profile.y_mm[0], profile.y_mm[profile.y_mm.len() - 1]);
+                            return Err(InputError::new(
+                                "geometry.profile",
+                                format!("y_mm from {lo} to {hi}"),
+                                format!(
+                                    "a profile covering every element centre of the grid, y from {} to {} mm",
+                                    grid.y_mm[0],
+                                    grid.y_mm[grid.my - 1]
+                                ),
+                            ));
+                        }
+                        ("profile", profile.undeformed_distance_mm(&grid, *a1_per_mm))
+                    }
+                    GeometrySpec::Field { h_mm } => ("field", field_in_grid_order(&grid, h_mm)),
+                    _ => unreachable!("is_elementwise"),
+                };
+                let geometry = ElementGeometry::new(kind, h_mm, grid.clone(), material, fn_n).map_err(|e| {
+                    InputError::new(
+                        "contact.fn_n",
+                        fn_n,
+                        format!("a load the {kind} geometry's normal problem can carry on this grid ({e})"),
+                    )
+                })?;
+                return Ok((Arc::new(geometry), grid));
+            }
+            (_, Extent::Edges { .. }) => {
+                return Err(InputError::new(
+                    "grid.x_mm",
+                    "given",
+                    "grid edges only with a [geometry] given per element (an ellipse sizes its own grid: [grid] scale)",
+                ))
+            }
+            (_, Extent::Scale(_)) => {
+                return Err(InputError::new(
+                    "grid.x_mm",
+                    "missing",
+                    "the grid's edges x_mm = [x0, x1], y_mm = [y0, y1] for a [geometry] given per element",
+                ))
+            }
         };
-        Ok(Arc::new(HertzEllipse { nominal }))
+        let Extent::Scale(scale) = extent else { unreachable!("matched above") };
+        let grid = Grid::new(mx, my, scale * nominal.a_mm, scale * nominal.b_mm);
+        Ok((Arc::new(HertzEllipse { nominal }), grid))
     }
+}
+
+/// A field in CONTACT's element order (ix along CONTACT's x) in this grid's flat order
+/// (i along the grid's x = −x_C: i = mx − ix).
+fn field_in_grid_order(grid: &Grid, h_contact: &[f64]) -> Vec<f64> {
+    let mut h = vec![0.0; grid.len()];
+    for j in 0..grid.my {
+        for i in 0..grid.mx {
+            h[grid.index(i, j)] = h_contact[j * grid.mx + (grid.mx - 1 - i)];
+        }
+    }
+    h
 }
 
 /// The simplified models' contact at one load.
@@ -46,17 +137,25 @@ pub struct Planform {
     pub pressure_sum_mpa: f64,
     /// Number of loaded elements (p > 0).
     pub loaded: usize,
-    /// Half-length of the contact chord of each grid row [mm] (0 where the row has no contact):
-    /// the row's exact leading edge is at x = −half chord (`[model] leading_edge = "exact"`).
-    pub half_chord_mm: Vec<f64>,
+    /// x of each grid row's leading edge [mm] (`[model] leading_edge = "exact"`; the ellipse's
+    /// `−a √(1 − y²/b²)`, or the upstream face of the row's first loaded element).
+    pub leading_edge_mm: Vec<f64>,
+    /// Half-length of each grid row's contact [mm] (0 where the row has no contact): a strip's
+    /// flexibility scales with it on non-Hertzian contacts.
+    pub half_length_mm: Vec<f64>,
 }
 
 impl Planform {
     /// A planform from its pressure, summing it once in flat order.
-    pub fn new(ellipse: HertzContact, pressure_mpa: Vec<f64>, half_chord_mm: Vec<f64>) -> Self {
+    pub fn new(
+        ellipse: HertzContact,
+        pressure_mpa: Vec<f64>,
+        leading_edge_mm: Vec<f64>,
+        half_length_mm: Vec<f64>,
+    ) -> Self {
         let pressure_sum_mpa = pressure_mpa.iter().sum();
         let loaded = pressure_mpa.iter().filter(|&&p| p > 0.0).count();
-        Planform { ellipse, pressure_mpa, pressure_sum_mpa, loaded, half_chord_mm }
+        Planform { ellipse, pressure_mpa, pressure_sum_mpa, loaded, leading_edge_mm, half_length_mm }
     }
 
     /// Traction coefficients `(Σ τx / Σ p, Σ τy / Σ p)` from the traction sums (thesis Eq. 3.12).
@@ -72,6 +171,20 @@ impl Planform {
 pub trait ContactGeometry: Send + Sync + Debug {
     /// Name written to scene.json (`geometry`).
     fn kind(&self) -> &'static str;
+    /// Whether the contact is Hertz's ellipse (the simplified models' flexibilities are then
+    /// the ellipse's, uniform over the contact).
+    fn elliptic(&self) -> bool {
+        true
+    }
+    /// Share of the load at `fn_n` carried by elements on the grid's boundary: the grid cuts the
+    /// contact when it is not zero.
+    fn edge_load_share(&self, _fn_n: f64) -> f64 {
+        0.0
+    }
+    /// Why the contact at `fn_n` cannot be formed (a normal problem that fails), if it cannot.
+    fn planform_error(&self, _fn_n: f64) -> Option<String> {
+        None
+    }
     /// The ellipse at the scene's nominal load: it sizes the grid (times `[grid] scale`) and
     /// gives Kalker's coefficients (Table A1 is tabulated by the axis ratio).
     fn nominal(&self) -> HertzContact;

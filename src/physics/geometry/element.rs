@@ -1,0 +1,170 @@
+//! A non-Hertzian contact: the undeformed distance given per element on an explicit grid
+//! (CONTACT's IPOTCN = 1 with IBASE = 9), the normal pressure from the normal problem on it
+//! ([`crate::physics::halfspace::normal`]), so the contact may be any shape and split into
+//! several patches that merge or part as the load changes.
+//!
+//! The simplified models need an ellipse for Kalker's coefficients and flexibilities: the
+//! equivalent ellipse of Kik & Piotrowski (2008), which keeps the contact's area and the ratio of
+//! its length to its width (as CONTACT's `equiv_ellipse`, m_hertz.f90).
+
+use super::{ContactGeometry, Planform};
+use crate::physics::halfspace::influence::Kernel;
+use crate::physics::halfspace::normal::{NormalParams, NormalSolver};
+use crate::physics::halfspace::ContactError;
+use crate::physics::{Grid, HertzContact, Material, PressureShape};
+use std::f64::consts::PI;
+use std::fmt;
+use std::sync::{Arc, Mutex};
+
+/// The normal contact at one load.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NormalContact {
+    pub fn_n: f64,
+    /// Pressure per element [MPa], flat order.
+    pub pn_mpa: Vec<f64>,
+    /// Kik–Piotrowski's equivalent ellipse of the loaded elements.
+    pub ellipse: HertzContact,
+    /// Share of the load carried by elements on the grid's boundary (0 when the grid holds it).
+    pub edge_load_share: f64,
+}
+
+/// An undeformed distance per element on its own grid.
+pub struct ElementGeometry {
+    kind: &'static str,
+    h_mm: Vec<f64>,
+    grid: Grid,
+    nominal: NormalContact,
+    solver: Mutex<NormalSolver>,
+    /// Normal contacts solved so far (a history revisits its loads), by load.
+    cache: Mutex<Vec<Arc<NormalContact>>>,
+}
+
+impl fmt::Debug for ElementGeometry {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("ElementGeometry").field("kind", &self.kind).field("grid", &self.grid).finish_non_exhaustive()
+    }
+}
+
+impl ElementGeometry {
+    /// The geometry `kind` ("profile", "field") with undeformed distance `h_mm` per element of
+    /// `grid` (flat order), loaded by `fn_n` [N] nominally.
+    pub fn new(
+        kind: &'static str,
+        h_mm: Vec<f64>,
+        grid: Grid,
+        material: &Material,
+        fn_n: f64,
+    ) -> Result<ElementGeometry, ContactError> {
+        let kernel = Kernel::new(grid.mx, grid.my, grid.dx_mm, grid.dy_mm, material.g_mpa, material.poisson, 0.0)?;
+        let mut solver = NormalSolver::new(&kernel)?;
+        let nominal = solve(&mut solver, &grid, &h_mm, fn_n)?;
+        let cache = Mutex::new(vec![Arc::new(nominal.clone())]);
+        Ok(ElementGeometry { kind, h_mm, grid, nominal, solver: Mutex::new(solver), cache })
+    }
+
+    /// The normal contact at load `fn_n` [N] (solved once per load).
+    pub fn normal_at(&self, fn_n: f64) -> Result<Arc<NormalContact>, ContactError> {
+        let mut cache = self.cache.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(c) = cache.iter().find(|c| c.fn_n == fn_n) {
+            return Ok(Arc::clone(c));
+        }
+        let mut solver = self.solver.lock().unwrap_or_else(|e| e.into_inner());
+        let c = Arc::new(solve(&mut solver, &self.grid, &self.h_mm, fn_n)?);
+        cache.push(Arc::clone(&c));
+        Ok(c)
+    }
+
+    /// The normal contact at the nominal load.
+    pub fn nominal_contact(&self) -> &NormalContact {
+        &self.nominal
+    }
+
+    /// The normal contact at `fn_n`, or, if it cannot be solved (the problem checks every load
+    /// of a history before any run), an empty contact that carries nothing.
+    fn contact_or_empty(&self, fn_n: f64) -> Arc<NormalContact> {
+        self.normal_at(fn_n).unwrap_or_else(|_| {
+            Arc::new(NormalContact {
+                fn_n,
+                pn_mpa: vec![0.0; self.grid.len()],
+                ellipse: HertzContact { fn_n, ..self.nominal.ellipse },
+                edge_load_share: 0.0,
+            })
+        })
+    }
+}
+
+/// The normal problem at `fn_n`, converged, with its equivalent ellipse.
+fn solve(solver: &mut NormalSolver, grid: &Grid, h_mm: &[f64], fn_n: f64) -> Result<NormalContact, ContactError> {
+    let s = solver.solve(h_mm, fn_n, &NormalParams::default())?;
+    if !s.converged {
+        return Err(ContactError::NonFinite("normal problem (not converged)"));
+    }
+    let total: f64 = s.pn_mpa.iter().sum();
+    let edge: f64 = s.pn_mpa.iter().enumerate().filter(|(k, _)| grid.on_edge(*k)).map(|(_, p)| p).sum();
+    let ellipse = equivalent_ellipse(grid, &s.pn_mpa, fn_n).ok_or(ContactError::NoContact)?;
+    Ok(NormalContact { fn_n, pn_mpa: s.pn_mpa, ellipse, edge_load_share: edge / total })
+}
+
+/// Kik & Piotrowski's equivalent ellipse of the loaded elements: the contact's area A and the
+/// ratio of its extents (length L along x, width W along y, in whole elements) kept,
+/// `a = √(A/π) √(L/W)`, `b = √(A/π) √(W/L)` (CONTACT's `equiv_ellipse`).
+pub fn equivalent_ellipse(grid: &Grid, pn_mpa: &[f64], fn_n: f64) -> Option<HertzContact> {
+    let loaded: Vec<usize> = (0..grid.len()).filter(|&k| pn_mpa[k] > 0.0).collect();
+    if loaded.is_empty() {
+        return None;
+    }
+    let span = |f: &dyn Fn(usize) -> usize| {
+        let (lo, hi) = loaded.iter().fold((usize::MAX, 0), |(lo, hi), &k| (lo.min(f(k)), hi.max(f(k))));
+        (hi - lo + 1) as f64
+    };
+    let length = grid.dx_mm * span(&|k| k % grid.mx);
+    let width = grid.dy_mm * span(&|k| k / grid.mx);
+    let area = grid.element_area_mm2() * loaded.len() as f64;
+    let r = (area / PI).sqrt();
+    Some(HertzContact { a_mm: r * (length / width).sqrt(), b_mm: r * (width / length).sqrt(), fn_n })
+}
+
+impl ContactGeometry for ElementGeometry {
+    fn kind(&self) -> &'static str {
+        self.kind
+    }
+
+    fn elliptic(&self) -> bool {
+        false
+    }
+
+    fn nominal(&self) -> HertzContact {
+        self.nominal.ellipse
+    }
+
+    fn ellipse_at(&self, fn_n: f64) -> HertzContact {
+        self.contact_or_empty(fn_n).ellipse
+    }
+
+    fn undeformed_distance_mm(&self, _grid: &Grid, _fn_n: f64, _material: &Material) -> Vec<f64> {
+        self.h_mm.clone()
+    }
+
+    /// The exact normal pressure (the pressure shape of `[model] pressure` is Hertzian and does
+    /// not apply); each row's leading edge is the upstream face of its first loaded element.
+    fn planform(&self, grid: &Grid, fn_n: f64, _shape: PressureShape) -> Planform {
+        let c = self.contact_or_empty(fn_n);
+        let (mut leading_edge, mut half_length) = (vec![0.0; grid.my], vec![0.0; grid.my]);
+        for j in 0..grid.my {
+            let row = &c.pn_mpa[grid.index(0, j)..grid.index(0, j) + grid.mx];
+            if let (Some(first), Some(last)) = (row.iter().position(|&p| p > 0.0), row.iter().rposition(|&p| p > 0.0)) {
+                leading_edge[j] = grid.x_mm[first] - 0.5 * grid.dx_mm;
+                half_length[j] = 0.5 * (grid.x_mm[last] - grid.x_mm[first] + grid.dx_mm);
+            }
+        }
+        Planform::new(c.ellipse, c.pn_mpa.clone(), leading_edge, half_length)
+    }
+
+    fn edge_load_share(&self, fn_n: f64) -> f64 {
+        self.contact_or_empty(fn_n).edge_load_share
+    }
+
+    fn planform_error(&self, fn_n: f64) -> Option<String> {
+        self.normal_at(fn_n).err().map(|e| e.to_string())
+    }
+}

@@ -1,0 +1,112 @@
+//! `[geometry]`: a contact given per element (interface.md extension). `kind = "profile"`:
+//! `h = a1 x² + g(y)` with g linear between the rows of a CSV `y_mm,g_mm`; `kind = "field"`: h per
+//! element from a CSV `ix,iy,h_mm` (1-based, ix along CONTACT's x, every element once).
+
+use super::reader::{Range, Section};
+use crate::error::InputError;
+use crate::physics::geometry::{GeometrySpec, Profile};
+use std::path::Path;
+
+/// Read the `[geometry]` table; `(mx, my)` is the grid the field must fill.
+pub fn read(mut g: Section, dir: &Path, (mx, my): (usize, usize)) -> Result<GeometrySpec, InputError> {
+    let spec = match g.choice("kind", &["profile", "field"])? {
+        "profile" => {
+            let a1_per_mm = g.f64("a1_per_mm", Range::new(0.0, true, 1e3, true))?;
+            let field = g.field("profile");
+            let file = g.str("profile", "a CSV path (columns y_mm, g_mm) relative to the scene file")?;
+            let cols = read_columns(&dir.join(file), &field, &["y_mm", "g_mm"])?;
+            let (y_mm, g_mm) = (cols[0].clone(), cols[1].clone());
+            if y_mm.len() < 2 {
+                return Err(InputError::new(&field, format!("{} rows", y_mm.len()), "at least two rows"));
+            }
+            if let Some(r) = (1..y_mm.len()).find(|&r| y_mm[r] <= y_mm[r - 1]) {
+                return Err(InputError::new(
+                    format!("{field} line {}", r + 2),
+                    format!("y_mm = {} after {}", y_mm[r], y_mm[r - 1]),
+                    "strictly increasing y_mm",
+                ));
+            }
+            GeometrySpec::Profile { a1_per_mm, profile: Profile { y_mm, g_mm } }
+        }
+        _ => {
+            let field = g.field("field");
+            let file = g.str("field", "a CSV path (columns ix, iy, h_mm) relative to the scene file")?;
+            let cols = read_columns(&dir.join(file), &field, &["ix", "iy", "h_mm"])?;
+            let mut h_mm = vec![f64::NAN; mx * my];
+            for (r, ((&ix, &iy), &h)) in cols[0].iter().zip(&cols[1]).zip(&cols[2]).enumerate() {
+                let line = format!("{field} line {}", r + 2);
+                let index = |v: f64, n: usize| (v.fract() == 0.0 && v >= 1.0 && v <= n as f64).then(|| v as usize - 1);
+                let (Some(i), Some(j)) = (index(ix, mx), index(iy, my)) else {
+                    return Err(InputError::new(
+                        line,
+                        format!("ix = {ix}, iy = {iy}"),
+                        format!("whole numbers 1 ≤ ix ≤ {mx}, 1 ≤ iy ≤ {my} (the grid's elements)"),
+                    ));
+                };
+                if !h_mm[j * mx + i].is_nan() {
+                    return Err(InputError::new(line, format!("ix = {ix}, iy = {iy}"), "every element once"));
+                }
+                h_mm[j * mx + i] = h;
+            }
+            if let Some(k) = h_mm.iter().position(|v| v.is_nan()) {
+                return Err(InputError::new(
+                    &field,
+                    format!("{} of {} elements", cols[0].len(), mx * my),
+                    format!(
+                        "every element of the {mx} x {my} grid (ix = {}, iy = {} is missing)",
+                        k % mx + 1,
+                        k / mx + 1
+                    ),
+                ));
+            }
+            GeometrySpec::Field { h_mm }
+        }
+    };
+    g.finish()?;
+    Ok(spec)
+}
+
+/// The columns `names` (exactly these, in this order) of a CSV of finite numbers.
+fn read_columns(path: &Path, field: &str, names: &[&str]) -> Result<Vec<Vec<f64>>, InputError> {
+    let text = crate::safety::read::read_text(path, crate::safety::read::TABLE_LIMIT_BYTES, "geometry file")
+        .map_err(|e| InputError::new(field, path.display(), format!("an existing, readable CSV file ({e})")))?;
+    let origin = format!("{field} ({})", path.display());
+    let mut rdr = csv::ReaderBuilder::new().trim(csv::Trim::All).from_reader(text.as_bytes());
+    let header: Vec<String> = rdr
+        .headers()
+        .map_err(|e| InputError::new(&origin, "unreadable header", format!("a CSV header line ({e})")))?
+        .iter()
+        .map(str::to_string)
+        .collect();
+    if header != names {
+        return Err(InputError::new(
+            format!("{origin} header"),
+            crate::error::name_excerpt(&header.join(",")),
+            format!("the columns {}", names.join(",")),
+        ));
+    }
+    let mut cols = vec![Vec::new(); names.len()];
+    for (r, rec) in rdr.records().enumerate() {
+        let line = format!("{origin} line {}", r + 2);
+        let rec = rec.map_err(|e| InputError::new(&line, "malformed", format!("{} numbers ({e})", names.len())))?;
+        if rec.len() != names.len() {
+            return Err(InputError::new(&line, rec.len(), format!("{} fields", names.len())));
+        }
+        for (c, cell) in rec.iter().enumerate() {
+            match cell.parse::<f64>() {
+                Ok(v) if v.is_finite() => cols[c].push(v),
+                _ => {
+                    return Err(InputError::new(
+                        format!("{line} column {}", names[c]),
+                        format!("{cell:?}"),
+                        "a finite number",
+                    ))
+                }
+            }
+        }
+    }
+    if cols[0].is_empty() {
+        return Err(InputError::new(&origin, "no rows", "at least one row of numbers"));
+    }
+    Ok(cols)
+}
