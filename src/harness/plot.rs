@@ -81,25 +81,27 @@ fn log_axis(lo: f64, hi: f64) -> (f64, f64) {
 
 /// A line chart as SVG text. `log_x` puts x on a log scale (positive x only).
 pub fn line_chart(title: &str, x_label: &str, y_label: &str, series: &[Series], log_x: bool) -> String {
+    render((720, 420), title, |root| draw(root, title, x_label, y_label, series, log_x))
+}
+
+/// An SVG of `size` drawn by `paint`; a drawing error is a warning naming the figure `title`
+/// (the figure stays, possibly incomplete).
+fn render(size: (u32, u32), title: &str, paint: impl FnOnce(&Area<'_>) -> Result<(), String>) -> String {
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, (720, 420)).into_drawing_area();
-        if let Err(e) = draw(&root, title, x_label, y_label, series, log_x) {
-            eprintln!("warning: plot {title:?}: {e}");
+        let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
+        if let Err(e) = paint(&root) {
+            eprintln!("warning: figure {title:?}: {e}");
         }
         let _ = root.present();
     }
     svg
 }
 
-fn draw(
-    root: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>,
-    title: &str,
-    xl: &str,
-    yl: &str,
-    series: &[Series],
-    log_x: bool,
-) -> Result<(), String> {
+/// The drawing area of an SVG figure.
+type Area<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;
+
+fn draw(root: &Area<'_>, title: &str, xl: &str, yl: &str, series: &[Series], log_x: bool) -> Result<(), String> {
     root.fill(&WHITE).map_err(|e| e.to_string())?;
     let ((x0, x1), (y0, y1)) = bounds(series, log_x);
     let mut builder = ChartBuilder::on(root);
@@ -153,23 +155,10 @@ pub type PatchCell = (f64, f64, f64, bool);
 /// A contact patch as a map of elements `dx × dy` [mm]: the pressure as shade (white at zero,
 /// dark at the largest), slipping elements outlined in red, adhesion unmarked.
 pub fn patch_map(title: &str, cells: &[PatchCell], (dx, dy): (f64, f64)) -> String {
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (520, 440)).into_drawing_area();
-        if let Err(e) = draw_patch(&root, title, cells, (dx, dy)) {
-            eprintln!("warning: patch map {title:?}: {e}");
-        }
-        let _ = root.present();
-    }
-    svg
+    render((520, 440), title, |root| draw_patch(root, title, cells, (dx, dy)))
 }
 
-fn draw_patch(
-    root: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>,
-    title: &str,
-    cells: &[PatchCell],
-    (dx, dy): (f64, f64),
-) -> Result<(), String> {
+fn draw_patch(root: &Area<'_>, title: &str, cells: &[PatchCell], (dx, dy): (f64, f64)) -> Result<(), String> {
     root.fill(&WHITE).map_err(|e| e.to_string())?;
     let finite: Vec<PatchCell> =
         cells.iter().copied().filter(|c| c.0.is_finite() && c.1.is_finite() && c.2.is_finite()).collect();
