@@ -104,6 +104,17 @@ fn field_geometry_from_contacts_input_matches_contact() {
     .replace("file = \"nh_asym", &format!("file = \"{}/scenes/nonhertz/nh_asym", root().display()));
     let p = Problem::resolve(&Scene::from_toml(&text, &dir).unwrap()).unwrap();
     assert_eq!(p.geometry.kind(), "field");
+    // scene.json hands the shape to external models in CONTACT's order, as given.
+    let resolved = creepbench::problem::ResolvedScene::of(&p, &[]);
+    assert_eq!(resolved.undeformed_distance_mm.as_deref(), Some(h.as_slice()));
+    assert_eq!(resolved.grid_edges_mm, Some([[-8.0, 8.0], [-6.0, 5.0]]));
+    // The profile scene's h is CONTACT's input to its printed digits (a1 to 10 digits).
+    let profile =
+        Problem::resolve(&Scene::from_file(&root().join(format!("scenes/nonhertz/{case}.toml"))).unwrap()).unwrap();
+    let from_profile = creepbench::problem::ResolvedScene::of(&profile, &[]).undeformed_distance_mm.unwrap();
+    let worst = from_profile.iter().zip(&h).fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+    println!("profile h against CONTACT's input: worst {worst:.1e} mm");
+    assert!(worst < 1e-9, "{worst}");
     let w = worst_against_contact(&p, case);
     println!("field geometry: fx {:.1e}  fy {:.1e}  mz/(FN a) {:.1e}", w[0], w[1], w[2]);
     assert!(w.iter().all(|&d| d < 1e-5), "{w:?}");

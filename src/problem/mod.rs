@@ -92,6 +92,8 @@ pub struct Problem {
     pub grid: Grid,
     /// The grid's extent in nominal semi-axes (`[grid] scale`, default 1).
     pub grid_scale: f64,
+    /// The grid's edges in CONTACT's coordinates when the scene gives them (`[grid] x_mm, y_mm`).
+    pub grid_edges: Option<([f64; 2], [f64; 2])>,
     pub rolling: Rolling,
     /// The scene's nominal loading (contact.fn_n, contact.mu, the constant cy and cs).
     pub nominal: Sample,
@@ -170,6 +172,10 @@ impl Problem {
             coefficients,
             grid,
             grid_scale: scene.grid_scale,
+            grid_edges: match scene.extent {
+                crate::physics::geometry::Extent::Edges { x_mm, y_mm } => Some((x_mm, y_mm)),
+                crate::physics::geometry::Extent::Scale(_) => None,
+            },
             rolling: Rolling { v_mm_s: scene.v_mm_s, courant: scene.courant, dt_s, dq_mm },
             nominal,
             loading,

@@ -60,6 +60,13 @@ pub struct ResolvedScene {
     /// The contact geometry's kind (`hertz`; absent in result folders written before it existed).
     #[serde(default = "hertz")]
     pub geometry: String,
+    /// A geometry given per element: the grid's edges in CONTACT's coordinates, `[[x0, x1],
+    /// [y0, y1]]`, and the undeformed distance [mm] per element in CONTACT's order (index
+    /// `(iy − 1) mx + (ix − 1)`, ix along CONTACT's x), so that an external model sees the shape.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub grid_edges_mm: Option<[[f64; 2]; 2]>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub undeformed_distance_mm: Option<Vec<f64>>,
     /// The name of the folder of the scene file: its suite (`thesis`, `stability`, …), so that
     /// `check` knows which blessed scenes a suite must produce.
     #[serde(default)]
@@ -120,6 +127,12 @@ impl ResolvedScene {
             skipped_metrics: p.skipped_metrics.clone(),
             warnings: p.warnings.clone(),
             geometry: p.geometry.kind().to_string(),
+            grid_edges_mm: p.grid_edges.map(|(x, y)| [x, y]),
+            undeformed_distance_mm: (!p.geometry.elliptic()).then(|| {
+                let g = &p.grid;
+                let h = p.geometry.undeformed_distance_mm(g, h.fn_n, &p.material);
+                (0..g.len()).map(|k| h[g.index(g.mx - 1 - k % g.mx, k / g.mx)]).collect()
+            }),
             suite: p.scene_dir.file_name().map(|n| n.to_string_lossy().to_string()).unwrap_or_default(),
             history: p.loading.initial.iter().chain(p.loading.samples.iter()).copied().collect(),
         }
