@@ -4,6 +4,9 @@
 //! divided by FN, the (fx, fy) vector then saturated at μ (direction kept, Mz scaled alike). Steady, no memory: on
 //! a time history it gives the steady value at every step. Signs: positive creepage and positive
 //! spin give positive coefficients (CONTACT's convention, C23 > 0).
+//!
+//! [`Saturated`] is the stepper of every law that saturates these linear forces (this one and
+//! the Shen–Hedrick–Elkins law, [`super::she`]): they differ only in the saturation curve.
 
 use super::stepper::{FieldView, Step, Stepper};
 use super::termination::Termination;
@@ -23,16 +26,30 @@ pub const MODEL: ModelDef = ModelDef {
 };
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
-    Ok(Box::new(Linear { p, scale: (0.0, 0.0, 0.0) }))
+    Ok(Box::new(Saturated::new(p, |fx, fy, mu| {
+        let (x, y, _) = project_to_bound(fx, fy, mu);
+        (x, y)
+    })))
 }
 
-struct Linear<'a> {
+/// A saturation law: the linear (fx/FN, fy/FN) and μ in, the saturated pair out (direction kept).
+pub type Law = fn(f64, f64, f64) -> (f64, f64);
+
+/// Kalker's linear forces saturated by a law, Mz scaled as |f| is.
+pub struct Saturated<'a> {
     p: &'a Problem,
+    law: Law,
     /// (G a b / FN, G (ab)^(3/2) / FN, G (ab)^2 / FN) at the current load.
     scale: (f64, f64, f64),
 }
 
-impl Stepper for Linear<'_> {
+impl<'a> Saturated<'a> {
+    pub fn new(p: &'a Problem, law: Law) -> Self {
+        Saturated { p, law, scale: (0.0, 0.0, 0.0) }
+    }
+}
+
+impl Stepper for Saturated<'_> {
     fn load(&mut self, at: &Sample) -> Result<(), SolveError> {
         let e = self.p.geometry.ellipse_at(at.fn_n);
         let gab = self.p.material.g_mpa * e.a_mm * e.b_mm;
@@ -46,7 +63,7 @@ impl Stepper for Linear<'_> {
         let fx = self.scale.0 * c.c11 * at.cx;
         let fy = self.scale.0 * c.c22 * at.cy + self.scale.1 * c.c23 * at.cs;
         let mz_over_fn = -self.scale.1 * c.c23 * at.cy + self.scale.2 * c.c33 * at.cs;
-        let (sx, sy, _) = project_to_bound(fx, fy, at.mu);
+        let (sx, sy) = (self.law)(fx, fy, at.mu);
         let saturation = if fx != 0.0 || fy != 0.0 { sx.hypot(sy) / fx.hypot(fy) } else { 1.0 };
         Ok(Step {
             fx_over_fn: sx,

@@ -9,6 +9,7 @@ pub mod external;
 pub mod fastsim;
 pub mod linear;
 pub mod sample_loop;
+pub mod she;
 pub mod stepper;
 pub mod termination;
 pub mod uba;
@@ -50,7 +51,7 @@ pub struct ModelDef {
 }
 
 /// Every built-in model. Adding one: its file and one line here.
-pub const MODELS: &[&ModelDef] = &[&uba::MODEL, &fastsim::MODEL, &contact::MODEL, &linear::MODEL];
+pub const MODELS: &[&ModelDef] = &[&uba::MODEL, &fastsim::MODEL, &contact::MODEL, &linear::MODEL, &she::MODEL];
 
 /// The built-in model of that name.
 pub fn builtin(name: &str) -> Option<&'static ModelDef> {
