@@ -47,6 +47,31 @@ pub enum InitKind {
     Steady,
 }
 
+/// Polach's parameters (`[model] polach_k_a, polach_k_s, polach_a, polach_b_s_per_m`; Wear 258
+/// (2005) Eq. 1–8): the reductions of the adhesion and slip parts and the falling friction
+/// `μ0 ((1 − A) e^(−B w) + A)`. Defaults: the unreduced curve with constant friction.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct PolachParams {
+    pub k_a: f64,
+    pub k_s: f64,
+    /// μ∞/μ0.
+    pub a: f64,
+    /// B [s/m].
+    pub b_s_per_m: f64,
+}
+
+impl Default for PolachParams {
+    fn default() -> Self {
+        PolachParams { k_a: 1.0, k_s: 1.0, a: 1.0, b_s_per_m: 0.0 }
+    }
+}
+
+impl PolachParams {
+    pub fn is_default(&self) -> bool {
+        *self == PolachParams::default()
+    }
+}
+
 /// Model options of the simplified models (`[model]`).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct ModelOptions {
@@ -58,6 +83,9 @@ pub struct ModelOptions {
     /// Strip flexibilities on a contact that is not an ellipse (default: the equivalent ellipse's).
     #[serde(default, skip_serializing_if = "PatchFlexibility::is_default")]
     pub nonhertz_flexibility: PatchFlexibility,
+    /// Polach's model's parameters.
+    #[serde(default, skip_serializing_if = "PolachParams::is_default")]
+    pub polach: PolachParams,
 }
 
 impl Default for ModelOptions {
@@ -68,6 +96,7 @@ impl Default for ModelOptions {
             pressure: PressureShape::Parabolic,
             leading_edge: LeadingEdge::Grid,
             nonhertz_flexibility: PatchFlexibility::EquivalentEllipse,
+            polach: PolachParams::default(),
         }
     }
 }
@@ -430,6 +459,19 @@ impl Scene {
             }
             if let Some(e) = md.opt_choice("leading_edge", &["grid", "exact"])? {
                 model.leading_edge = if e == "exact" { LeadingEdge::Exact } else { LeadingEdge::Grid };
+            }
+            let unit = Range::new(0.0, false, 1.0, true);
+            if let Some(v) = md.opt_f64("polach_k_a", unit)? {
+                model.polach.k_a = v;
+            }
+            if let Some(v) = md.opt_f64("polach_k_s", unit)? {
+                model.polach.k_s = v;
+            }
+            if let Some(v) = md.opt_f64("polach_a", unit)? {
+                model.polach.a = v;
+            }
+            if let Some(v) = md.opt_f64("polach_b_s_per_m", Range::new(0.0, true, 1e3, true))? {
+                model.polach.b_s_per_m = v;
             }
             if let Some(f) = md.opt_choice("nonhertz_flexibility", &["strip", "equivalent_ellipse"])? {
                 model.nonhertz_flexibility =

@@ -8,6 +8,7 @@ pub mod contact;
 pub mod external;
 pub mod fastsim;
 pub mod linear;
+pub mod polach;
 pub mod sample_loop;
 pub mod she;
 pub mod stepper;
@@ -51,7 +52,8 @@ pub struct ModelDef {
 }
 
 /// Every built-in model. Adding one: its file and one line here.
-pub const MODELS: &[&ModelDef] = &[&uba::MODEL, &fastsim::MODEL, &contact::MODEL, &linear::MODEL, &she::MODEL];
+pub const MODELS: &[&ModelDef] =
+    &[&uba::MODEL, &fastsim::MODEL, &contact::MODEL, &linear::MODEL, &she::MODEL, &polach::MODEL];
 
 /// The built-in model of that name.
 pub fn builtin(name: &str) -> Option<&'static ModelDef> {

@@ -1,0 +1,101 @@
+//! Polach's creep-force model (O. Polach, "Creep forces in simulations of traction vehicles
+//! running on adhesion limit", Wear 258 (2005) 992–1000, Eq. 1–8): the resultant creep force
+//! `F = 2 Q μ / π · (kA ε / (1 + (kA ε)²) + arctan(kS ε))` of the gradient of the tangential stress
+//! in the adhesion area `ε = (2/3) C π a² b / (Q μ) · s`, with the contact shear stiffness from
+//! Kalker's coefficients `C = 3 G / (8 a) · √((c11 sx/s)² + (c22 sy/s)²)` and the resultant
+//! creepage `s = √(sx² + sy²)`; the components along the creepage, `Fx = F sx/s`, `Fy = F sy/s`.
+//! Falling friction with the slip velocity `w = s V`: `μ = μ0 ((1 − A) e^(−B w) + A)`.
+//! Spin enters through Kalker's lateral term as in the linear theory (`sy = cy + (ab)^½ c23/c22 cs`,
+//! the equivalent lateral creepage), as multibody codes commonly do; Polach's own spin correction
+//! is not applied. With kA = kS = 1 the curve has the linear theory's slope at s = 0 and tends to
+//! μ as s grows. Steady, no memory. The model gives no spin moment: its `mz_nmm` is 0.
+
+use super::stepper::{FieldView, Step, Stepper};
+use super::termination::Termination;
+use super::{always, ModelDef, SolveError};
+use crate::problem::{Problem, Sample};
+use crate::scene::PolachParams;
+use std::f64::consts::PI;
+
+/// Polach's model.
+pub const MODEL: ModelDef = ModelDef {
+    name: "polach",
+    summary: "Polach (Wear 258, 2005): resultant creep force 2Qμ/π (kA ε/(1+(kA ε)²) + atan(kS ε)), falling friction μ0((1−A)e^(−Bw)+A)",
+    extra_columns: &[],
+    iterative: false,
+    check: always,
+    cost_per_row: |_| 1e-3,
+    build,
+};
+
+fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
+    Ok(Box::new(Polach { p, a_mm: 0.0, b_mm: 0.0 }))
+}
+
+/// Polach's resultant force over μ Q for the stiffness ratio `eps` (Eq. 1) and reductions kA, kS.
+pub fn resultant(eps: f64, k_a: f64, k_s: f64) -> f64 {
+    let e = k_a * eps;
+    2.0 / PI * (e / (1.0 + e * e) + (k_s * eps).atan())
+}
+
+/// The friction coefficient at slip velocity `w_m_s` [m/s] (Eq. 8): `μ0 ((1 − A) e^(−B w) + A)`.
+pub fn falling_friction(mu0: f64, w_m_s: f64, q: &PolachParams) -> f64 {
+    mu0 * ((1.0 - q.a) * (-q.b_s_per_m * w_m_s).exp() + q.a)
+}
+
+struct Polach<'a> {
+    p: &'a Problem,
+    /// The contact's semi-axes at the current load [mm].
+    a_mm: f64,
+    b_mm: f64,
+}
+
+impl Stepper for Polach<'_> {
+    fn load(&mut self, at: &Sample) -> Result<(), SolveError> {
+        let e = self.p.geometry.ellipse_at(at.fn_n);
+        (self.a_mm, self.b_mm) = (e.a_mm, e.b_mm);
+        Ok(())
+    }
+
+    fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        let (c, q, g) = (&self.p.coefficients, &self.p.model.polach, self.p.material.g_mpa);
+        let (a, b) = (self.a_mm, self.b_mm);
+        let sx = at.cx;
+        let sy = at.cy + (a * b).sqrt() * c.c23 / c.c22 * at.cs;
+        let s = sx.hypot(sy);
+        let (mut fx, mut fy) = (0.0, 0.0);
+        if s > 0.0 {
+            let mu = falling_friction(at.mu, s * self.p.rolling.v_mm_s * 1e-3, q);
+            let stiffness = 3.0 * g / (8.0 * a) * ((c.c11 * sx / s).powi(2) + (c.c22 * sy / s).powi(2)).sqrt();
+            let eps = 2.0 / 3.0 * stiffness * PI * a * a * b / (at.fn_n * mu) * s;
+            let f = mu * resultant(eps, q.k_a, q.k_s);
+            (fx, fy) = (f * sx / s, f * sy / s);
+        }
+        Ok(Step { fx_over_fn: fx, fy_over_fn: fy, mz_nmm: 0.0, extra: Vec::new(), termination: Termination::Direct })
+    }
+
+    fn transient(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        self.steady(at)
+    }
+
+    fn field(&self) -> Option<FieldView<'_>> {
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Polach's curve: the slope 4/π at zero (kA = kS = 1: with ε's definition, the linear
+    /// theory's), 1 as ε grows; kS < 1 lowers the slip part; falling friction A at w → ∞.
+    #[test]
+    fn polach_curve() {
+        assert!((resultant(1e-8, 1.0, 1.0) / 1e-8 - 4.0 / PI).abs() < 1e-6);
+        assert!((resultant(1e9, 1.0, 1.0) - 1.0).abs() < 1e-8);
+        assert!(resultant(2.0, 1.0, 0.4) < resultant(2.0, 1.0, 1.0));
+        let q = PolachParams { k_a: 1.0, k_s: 1.0, a: 0.4, b_s_per_m: 0.6 };
+        assert_eq!(falling_friction(0.5, 0.0, &q), 0.5);
+        assert!((falling_friction(0.5, 1e6, &q) - 0.2).abs() < 1e-12);
+    }
+}
