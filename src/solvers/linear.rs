@@ -10,20 +10,16 @@
 
 use super::stepper::{FieldView, Step, Stepper};
 use super::termination::Termination;
-use super::{always, ModelDef, SolveError};
+use super::{closed_form, ModelDef, SolveError};
 use crate::physics::project_to_bound;
 use crate::problem::{Problem, Sample};
 
 /// Kalker's linear theory, saturated at μ.
-pub const MODEL: ModelDef = ModelDef {
-    name: "linear",
-    summary: "Kalker's linear theory (Kalker 1967; C11, C22, C23, C33 of Table A1), f saturated at μ",
-    extra_columns: &[],
-    iterative: false,
-    check: always,
-    cost_per_row: |_| 1e-3,
+pub const MODEL: ModelDef = closed_form(
+    "linear",
+    "Kalker's linear theory (Kalker 1967; C11, C22, C23, C33 of Table A1), f saturated at μ",
     build,
-};
+);
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     Ok(Box::new(Saturated::new(p, |fx, fy, mu| {

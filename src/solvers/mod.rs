@@ -81,6 +81,21 @@ pub fn always(_: &Problem) -> Result<(), InputError> {
     Ok(())
 }
 
+/// A closed-form law (no grid, no field, no extra columns, any problem): the linear theory and
+/// the creep-force laws beside it.
+pub const fn closed_form(
+    name: &'static str,
+    summary: &'static str,
+    build: for<'a> fn(&'a Problem) -> Result<Box<dyn Stepper + 'a>, SolveError>,
+) -> ModelDef {
+    ModelDef { name, summary, extra_columns: &[], iterative: false, check: always, cost_per_row: negligible, build }
+}
+
+/// Cost of a closed-form law per row (scheduling only).
+fn negligible(_: &Problem) -> f64 {
+    1e-3
+}
+
 /// Cost of a model that touches every grid element a constant number of times per row.
 pub fn linear_in_elements(p: &Problem) -> f64 {
     0.01 * p.grid.len() as f64

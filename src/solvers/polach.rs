@@ -12,21 +12,17 @@
 
 use super::stepper::{FieldView, Step, Stepper};
 use super::termination::Termination;
-use super::{always, ModelDef, SolveError};
+use super::{closed_form, ModelDef, SolveError};
 use crate::problem::{Problem, Sample};
 use crate::scene::PolachParams;
 use std::f64::consts::PI;
 
 /// Polach's model.
-pub const MODEL: ModelDef = ModelDef {
-    name: "polach",
-    summary: "Polach (Wear 258, 2005): resultant creep force 2Qμ/π (kA ε/(1+(kA ε)²) + atan(kS ε)), falling friction μ0((1−A)e^(−Bw)+A)",
-    extra_columns: &[],
-    iterative: false,
-    check: always,
-    cost_per_row: |_| 1e-3,
+pub const MODEL: ModelDef = closed_form(
+    "polach",
+    "Polach (Wear 258, 2005): resultant creep force 2Qμ/π (kA ε/(1+(kA ε)²) + atan(kS ε)), falling friction μ0((1−A)e^(−Bw)+A)",
     build,
-};
+);
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     Ok(Box::new(Polach { p, a_mm: 0.0, b_mm: 0.0 }))

@@ -6,19 +6,15 @@
 
 use super::linear::Saturated;
 use super::stepper::Stepper;
-use super::{always, ModelDef, SolveError};
+use super::{closed_form, ModelDef, SolveError};
 use crate::problem::Problem;
 
 /// Shen–Hedrick–Elkins.
-pub const MODEL: ModelDef = ModelDef {
-    name: "she",
-    summary: "Shen–Hedrick–Elkins (1983): Kalker's linear forces saturated by ε − ε²/3 + ε³/27 (ε = |f_lin|/μ < 3)",
-    extra_columns: &[],
-    iterative: false,
-    check: always,
-    cost_per_row: |_| 1e-3,
+pub const MODEL: ModelDef = closed_form(
+    "she",
+    "Shen–Hedrick–Elkins (1983): Kalker's linear forces saturated by ε − ε²/3 + ε³/27 (ε = |f_lin|/μ < 3)",
     build,
-};
+);
 
 /// |f|/μ of the law for the linear |f|/μ = ε ≥ 0.
 pub fn law(eps: f64) -> f64 {
