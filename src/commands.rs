@@ -131,8 +131,62 @@ pub fn merge(dirs: &[PathBuf], reference: &Path, report_dir: &Path, golden: &Pat
     Ok(())
 }
 
+/// Where `check` writes its verdict besides the console (issue 15).
+#[derive(Debug, Clone, Default)]
+pub struct GateOutputs {
+    /// JUnit XML.
+    pub junit: Option<PathBuf>,
+    /// Every finding as JSON.
+    pub json: Option<PathBuf>,
+    /// A Markdown summary; `$GITHUB_STEP_SUMMARY`, when set, gets it appended too.
+    pub summary: Option<PathBuf>,
+}
+
+impl GateOutputs {
+    /// Every output file the user named, none of them inside golden/.
+    fn check_paths(&self, golden: &Path) -> Result<(), Error> {
+        for p in [&self.junit, &self.json, &self.summary].into_iter().flatten() {
+            guard::guard_not_under(p, golden)?;
+        }
+        Ok(())
+    }
+
+    /// Write each output whole (a temporary file in the same folder, renamed over the target).
+    fn write(&self, all: &[Finding]) -> Result<(), Error> {
+        use crate::harness::gate_output;
+        let outputs = [
+            (&self.junit, gate_output::junit as fn(&[Finding]) -> String),
+            (&self.json, gate_output::json),
+            (&self.summary, gate_output::summary),
+        ];
+        for (path, make) in outputs {
+            if let Some(path) = path {
+                write_whole(path, &make(all))?;
+            }
+        }
+        if let Some(step_summary) = std::env::var_os("GITHUB_STEP_SUMMARY").filter(|v| !v.is_empty()) {
+            let path = PathBuf::from(step_summary);
+            let io = |source| Error::Io { path: path.clone(), source };
+            let mut f = std::fs::OpenOptions::new().append(true).create(true).open(&path).map_err(io)?;
+            std::io::Write::write_all(&mut f, gate_output::summary(all).as_bytes()).map_err(io)?;
+        }
+        Ok(())
+    }
+}
+
+/// Write `text` to `path` whole: a temporary file beside it, then one rename.
+fn write_whole(path: &Path, text: &str) -> Result<(), Error> {
+    let io = |source| Error::Io { path: path.to_path_buf(), source };
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let mut tmp = tempfile::NamedTempFile::new_in(dir).map_err(io)?;
+    std::io::Write::write_all(&mut tmp, text.as_bytes()).map_err(io)?;
+    tmp.persist(path).map_err(|e| io(e.error))?;
+    Ok(())
+}
+
 /// `creepbench check`: run the suite, compare with golden/ (or `against`) and the references;
-/// print the worst point per scene and solver; fail on gated drift.
+/// print the worst point per scene and solver; write the verdict files asked for; fail on gated
+/// drift.
 pub fn check(
     suite_dir: &[PathBuf],
     reference: &Path,
@@ -140,7 +194,9 @@ pub fn check(
     against: Option<&Path>,
     shard: Option<Shard>,
     progress: bool,
+    outputs: &GateOutputs,
 ) -> Result<(), Error> {
+    outputs.check_paths(golden)?;
     let refs = References::load(reference)?;
     let (dir, key, what, kind) = match against {
         Some(dir) => {
@@ -179,6 +235,7 @@ pub fn check(
         }
     }
     println!("\n{} gated comparisons, {} failed", gated, fails.len());
+    outputs.write(&all)?;
     if fails.is_empty() {
         Ok(())
     } else {

@@ -65,6 +65,15 @@ enum Command {
         /// Compare with this result folder (from `run --results`) instead of golden/.
         #[arg(long)]
         against: Option<PathBuf>,
+        /// Write the verdict as JUnit XML (one test case per scene x solver x comparison).
+        #[arg(long)]
+        junit: Option<PathBuf>,
+        /// Write every comparison as JSON.
+        #[arg(long)]
+        json: Option<PathBuf>,
+        /// Write a Markdown summary (also appended to $GITHUB_STEP_SUMMARY when that is set).
+        #[arg(long)]
+        summary: Option<PathBuf>,
     },
     /// Run the suite and write its results into golden/ (the only command that writes golden data).
     Bless {
@@ -104,8 +113,9 @@ fn main() {
         Command::Run { suite: s, results, report } => {
             commands::run(&s.suite, &s.reference, &results, &report, s.shard, &s.golden, !s.quiet)
         }
-        Command::Check { suite: s, against } => {
-            commands::check(&s.suite, &s.reference, &s.golden, against.as_deref(), s.shard, !s.quiet)
+        Command::Check { suite: s, against, junit, json, summary } => {
+            let outputs = commands::GateOutputs { junit, json, summary };
+            commands::check(&s.suite, &s.reference, &s.golden, against.as_deref(), s.shard, !s.quiet, &outputs)
         }
         Command::Bless { suite: s } => commands::bless(&s.suite, &s.golden, s.shard, !s.quiet),
         Command::Merge { dirs, reference, golden, report } => commands::merge(&dirs, &reference, &report, &golden),

@@ -5,6 +5,7 @@
 pub mod against;
 pub mod compare;
 pub mod envelope;
+pub mod gate_output;
 pub mod plot;
 pub mod references;
 pub mod report;
