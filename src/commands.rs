@@ -8,6 +8,7 @@ use crate::harness::results::{self, StoredScene};
 use crate::harness::sections;
 use crate::harness::suite::{self, Shard};
 use crate::harness::table;
+use crate::harness::tolerance_file::{self, FileRule};
 use crate::pipeline;
 use crate::safety::{folder, guard, lock};
 use std::path::{Path, PathBuf};
@@ -58,8 +59,10 @@ pub fn build_report(
     refs: &References,
     out: &Path,
     golden: Option<&Path>,
+    rules: &[FileRule],
 ) -> Result<PathBuf, Error> {
-    let findings = compare::evaluate(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
+    let mut findings = compare::evaluate(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
+    tolerance_file::apply(rules, &mut findings)?;
     let input = ReportInput { scenes, refs, findings: &findings, sections: sections::all(scenes, refs) };
     let report = report::build(&input);
     std::fs::create_dir_all(out).map_err(Error::io(out))?;
@@ -92,7 +95,8 @@ pub fn run(
         return Ok(());
     }
     let stored = read_results(&[results_dir.to_path_buf()])?;
-    let md = build_report(&stored, &refs, report_dir, Some(golden))?;
+    let rules = file_rules(&[], suite_dir, &refs)?;
+    let md = build_report(&stored, &refs, report_dir, Some(golden), &rules)?;
     println!("{}", md.display());
     Ok(())
 }
@@ -126,14 +130,29 @@ pub fn merge(dirs: &[PathBuf], reference: &Path, report_dir: &Path, golden: &Pat
         )
         .into());
     }
-    let md = build_report(&scenes, &refs, report_dir, Some(golden))?;
+    let md = build_report(&scenes, &refs, report_dir, Some(golden), &[])?;
     println!("{}", md.display());
     Ok(())
 }
 
-/// Where `check` writes its verdict besides the console (issue 15).
+/// The tolerance files of a run (`--tolerances`, then each suite's `tolerances.toml`), read and
+/// checked against the comparison labels this project has.
+fn file_rules(given: &[PathBuf], suite_dir: &[PathBuf], refs: &References) -> Result<Vec<FileRule>, Error> {
+    let mut labels = vec![Against::Golden.label(), Against::Previous.label()];
+    labels.extend(refs.sets().iter().map(|s| s.label()));
+    let mut rules = Vec::new();
+    for path in tolerance_file::sources(given, suite_dir) {
+        rules.extend(tolerance_file::load(&path, &labels)?);
+    }
+    Ok(rules)
+}
+
+/// The files `check` reads and writes besides the suite (issue 15): tolerance rules in, the
+/// verdict out.
 #[derive(Debug, Clone, Default)]
-pub struct GateOutputs {
+pub struct GateFiles {
+    /// Tolerance rule files (`--tolerances`), before each suite's `tolerances.toml`.
+    pub tolerances: Vec<PathBuf>,
     /// JUnit XML.
     pub junit: Option<PathBuf>,
     /// Every finding as JSON.
@@ -142,7 +161,7 @@ pub struct GateOutputs {
     pub summary: Option<PathBuf>,
 }
 
-impl GateOutputs {
+impl GateFiles {
     /// Every output file the user named, none of them inside golden/.
     fn check_paths(&self, golden: &Path) -> Result<(), Error> {
         for p in [&self.junit, &self.json, &self.summary].into_iter().flatten() {
@@ -194,10 +213,11 @@ pub fn check(
     against: Option<&Path>,
     shard: Option<Shard>,
     progress: bool,
-    outputs: &GateOutputs,
+    files: &GateFiles,
 ) -> Result<(), Error> {
-    outputs.check_paths(golden)?;
+    files.check_paths(golden)?;
     let refs = References::load(reference)?;
+    let rules = file_rules(&files.tolerances, suite_dir, &refs)?;
     let (dir, key, what, kind) = match against {
         Some(dir) => {
             (dir, "--against", "a folder of results written by `creepbench run` (--results)", Against::Previous)
@@ -213,6 +233,7 @@ pub fn check(
     let suites = suite_names(suite_dir);
     let expected = |name: &str, suite: &str| shard.is_none_or(|s| s.takes(name)) && suites.iter().any(|x| x == suite);
     all.extend(compare::missing_scenes(dir, &scenes, kind, expected)?);
+    tolerance_file::apply(&rules, &mut all)?;
     let worst = compare::worst_per_group(&all);
     print!("{}", compare::table(&worst));
     let fails = compare::failures(&all);
@@ -235,7 +256,7 @@ pub fn check(
         }
     }
     println!("\n{} gated comparisons, {} failed", gated, fails.len());
-    outputs.write(&all)?;
+    files.write(&all)?;
     if fails.is_empty() {
         Ok(())
     } else {

@@ -74,6 +74,10 @@ enum Command {
         /// Write a Markdown summary (also appended to $GITHUB_STEP_SUMMARY when that is set).
         #[arg(long)]
         summary: Option<PathBuf>,
+        /// Tolerance rules (TOML, [[rule]] tables) taking precedence over each suite's
+        /// tolerances.toml and the compiled defaults (repeatable; first match wins).
+        #[arg(long)]
+        tolerances: Vec<PathBuf>,
     },
     /// Run the suite and write its results into golden/ (the only command that writes golden data).
     Bless {
@@ -113,9 +117,9 @@ fn main() {
         Command::Run { suite: s, results, report } => {
             commands::run(&s.suite, &s.reference, &results, &report, s.shard, &s.golden, !s.quiet)
         }
-        Command::Check { suite: s, against, junit, json, summary } => {
-            let outputs = commands::GateOutputs { junit, json, summary };
-            commands::check(&s.suite, &s.reference, &s.golden, against.as_deref(), s.shard, !s.quiet, &outputs)
+        Command::Check { suite: s, against, junit, json, summary, tolerances } => {
+            let files = commands::GateFiles { tolerances, junit, json, summary };
+            commands::check(&s.suite, &s.reference, &s.golden, against.as_deref(), s.shard, !s.quiet, &files)
         }
         Command::Bless { suite: s } => commands::bless(&s.suite, &s.golden, s.shard, !s.quiet),
         Command::Merge { dirs, reference, golden, report } => commands::merge(&dirs, &reference, &report, &golden),

@@ -13,4 +13,5 @@ pub mod results;
 pub mod sections;
 pub mod suite;
 pub mod table;
+pub mod tolerance_file;
 pub mod tolerances;

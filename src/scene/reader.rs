@@ -150,6 +150,15 @@ impl<'a> Section<'a> {
         self.opt_usize(key, min, max)?.ok_or_else(|| self.missing(key, &format!("a whole number in [{min}, {max}]")))
     }
 
+    /// An optional boolean.
+    pub fn opt_bool(&mut self, key: &str) -> Result<Option<bool>, InputError> {
+        match self.get(key) {
+            None => Ok(None),
+            Some(Value::Boolean(b)) => Ok(Some(*b)),
+            Some(other) => Err(InputError::new(self.field(key), show(other), "true or false")),
+        }
+    }
+
     /// An optional string.
     pub fn opt_str(&mut self, key: &str, allowed: &str) -> Result<Option<&'a str>, InputError> {
         match self.get(key) {
