@@ -308,3 +308,15 @@ pub fn manifest(dir: &Path) -> Result<(), Error> {
     eprintln!("{n} file(s) listed in {}", dir.join(crate::safety::manifest::MANIFEST).display());
     Ok(())
 }
+
+/// `creepbench export contact SCENE --out DIR`: the CONTACT module-3 input that computes the scene
+/// (`DIR/<name>.inp`, written whole; never inside golden/).
+pub fn export_contact(scene_path: &Path, out: &Path, golden: &Path) -> Result<PathBuf, Error> {
+    let scene = crate::scene::Scene::from_file(scene_path)?;
+    let problem = crate::problem::Problem::resolve(&scene)?;
+    let path = out.join(format!("{}.inp", problem.name));
+    guard::guard_not_under(&path, golden)?;
+    std::fs::create_dir_all(out).map_err(Error::io(out))?;
+    write_whole(&path, &crate::export::contact::module3_input(&problem))?;
+    Ok(path)
+}

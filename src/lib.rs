@@ -3,10 +3,12 @@
 //! The data flow is one straight path, one module per stage:
 //! [`scene`] (file, validated) → [`problem`] (resolved: Hertz, Kalker, grid, samples) →
 //! [`solvers`] (UBA, FASTSIM, CONTACT-style, external) → [`history`] → [`metrics`] →
-//! [`harness`] (reference and golden comparison, report). [`physics`] is shared by all solvers.
+//! [`harness`] (reference and golden comparison, report). [`physics`] is shared by all solvers;
+//! [`export`] writes a resolved scene as another program's input (CONTACT).
 
 pub mod commands;
 pub mod error;
+pub mod export;
 pub mod harness;
 pub mod history;
 pub mod metrics;

@@ -31,6 +31,21 @@ struct SuiteArgs {
     quiet: bool,
 }
 
+/// What `export` writes.
+#[derive(Subcommand)]
+enum ExportWhat {
+    /// CONTACT module-3 input that computes the scene (one case per history row): OUT/<name>.inp.
+    Contact {
+        /// The scene file.
+        scene: PathBuf,
+        #[arg(long, default_value = "out/contact")]
+        out: PathBuf,
+        /// Refused as an output location (only `bless` writes there).
+        #[arg(long, default_value = "golden")]
+        golden: PathBuf,
+    },
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Run one scene and write OUT/<name>/{scene.json,<solver>.csv,metrics.csv}.
@@ -96,6 +111,11 @@ enum Command {
         #[arg(long, default_value = "reports")]
         report: PathBuf,
     },
+    /// Write another program's input for a scene.
+    Export {
+        #[command(subcommand)]
+        what: ExportWhat,
+    },
     /// Write DIR/MANIFEST.sha256, the checksums reference data are verified against.
     Manifest {
         /// The folder (default: the reference data).
@@ -124,6 +144,9 @@ fn main() {
         Command::Bless { suite: s } => commands::bless(&s.suite, &s.golden, s.shard, !s.quiet),
         Command::Merge { dirs, reference, golden, report } => commands::merge(&dirs, &reference, &report, &golden),
         Command::Manifest { dir } => commands::manifest(&dir),
+        Command::Export { what: ExportWhat::Contact { scene, out, golden } } => {
+            commands::export_contact(&scene, &out, &golden).map(|p| println!("{}", p.display()))
+        }
     };
     if let Err(e) = result {
         eprintln!("error: {e}");
