@@ -4,19 +4,11 @@
 //! it, `$GITHUB_STEP_SUMMARY` appended; and no verdict file inside golden/.
 
 mod common;
-use common::root;
+use common::{root, tempdir};
 use quick_xml::events::Event;
 use std::collections::BTreeMap;
 use std::path::Path;
 use std::process::Command;
-
-/// A fresh empty folder under the target directory.
-fn tempdir(name: &str) -> std::path::PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
 
 fn copy_dir(from: &Path, to: &Path) {
     std::fs::create_dir_all(to).unwrap();

@@ -10,7 +10,6 @@ use creepbench::physics::geometry::element::equivalent_ellipse;
 use creepbench::physics::{ContactGeometry, Grid, HertzContact, HertzEllipse, Material};
 use creepbench::problem::Problem;
 use creepbench::scene::Scene;
-use std::path::Path;
 
 const CASES: [&str; 5] =
     ["nh_flat_sweep_cx", "nh_two_sweep_cy_cs", "nh_asym_step_combined", "nh_kink_sine_cx", "nh_two_fn_ramp"];
@@ -216,12 +215,4 @@ fn nonhertz_input_errors_and_warnings() {
     // A grid that cuts the contact: a warning with the share of the load on its edge.
     let p = resolve(&base.replace("y_mm = [-7.5, 7.5]", "y_mm = [-4.0, 4.0]").replace("my = 30", "my = 16")).unwrap();
     assert!(p.warnings.iter().any(|w| w.contains("grid's edge") && w.contains("% of the load")), "{:?}", p.warnings);
-}
-
-/// A fresh empty folder under the target directory (removed first if it exists).
-fn tempdir(name: &str) -> std::path::PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
 }

@@ -4,17 +4,10 @@
 //! naming the file and the rule.
 
 mod common;
-use common::root;
+use common::{root, tempdir};
 use creepbench::harness::tolerance_file;
 use std::path::Path;
 use std::process::Command;
-
-fn tempdir(name: &str) -> std::path::PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
 
 fn check(rules: &Path, json: &Path) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_creepbench"))

@@ -106,3 +106,12 @@ pub fn compare_fields_with_contact(scene: &str, field_csv: &str, tol: f64) -> (u
     }
     (n, worst)
 }
+
+/// A fresh empty folder under the target's temporary directory (removed first if it exists).
+#[allow(dead_code)]
+pub fn tempdir(name: &str) -> PathBuf {
+    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
