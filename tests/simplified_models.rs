@@ -212,3 +212,35 @@ fn steady_initial_state() {
     let contact0 = reference("sine_f10_mu10", "fx_over_fn")[0];
     assert!((u.rows[0].fx_over_fn - contact0).abs() < 0.02, "{} vs CONTACT {contact0}", u.rows[0].fx_over_fn);
 }
+
+/// FASTSIM with Kalker's single flexibility (Kalker 1982, `[model] flexibilities = "one"`):
+/// L = (|cx| L1 + |cy| L2 + c |cs| L3)/√(cx² + cy² + c² cs²), so one creepage alone gives that
+/// component's own flexibility (the three-flexibility result), and in the linear range (no slip)
+/// each force scales by L_i / L exactly.
+#[test]
+fn fastsim_with_one_flexibility() {
+    let sweep = |over: &str, extra: &str| {
+        let creepage = format!("kind = \"sweep\"\nover = \"{over}\"\nfrom = 1e-6\nto = 1e-6\npoints = 1");
+        let p = problem(&scene_text("one", "[\"fastsim\"]", 0.3, 22, &creepage, extra));
+        let h = run(&p, "fastsim");
+        (h.rows[0].fx_over_fn, h.rows[0].fy_over_fn, p)
+    };
+    let one = "[model]\nflexibilities = \"one\"";
+    for over in ["cx", "cy", "cs"] {
+        let ((x3, y3, _), (x1, y1, _)) = (sweep(over, ""), sweep(over, one));
+        let scale = x3.abs().max(y3.abs());
+        assert!(
+            (x1 - x3).abs() <= 1e-12 * scale && (y1 - y3).abs() <= 1e-12 * scale,
+            "{over}: ({x1}, {y1}) vs ({x3}, {y3})"
+        );
+    }
+    // cx = cy: L = (L1 + L2)/√2.
+    let creepage = "kind = \"sweep\"\ndirection = [1.0, 1.0, 0.0]\nfrom = 1e-6\nto = 1e-6\npoints = 1";
+    let p3 = problem(&scene_text("three", "[\"fastsim\"]", 0.3, 22, creepage, ""));
+    let p1 = problem(&scene_text("one", "[\"fastsim\"]", 0.3, 22, creepage, one));
+    let (h3, h1) = (run(&p3, "fastsim"), run(&p1, "fastsim"));
+    let f = p3.flexibilities();
+    let l = (f.l1_mm3_n + f.l2_mm3_n) / 2f64.sqrt();
+    let (rx, ry) = (h1.rows[0].fx_over_fn / h3.rows[0].fx_over_fn, h1.rows[0].fy_over_fn / h3.rows[0].fy_over_fn);
+    assert!((rx - f.l1_mm3_n / l).abs() < 1e-9 && (ry - f.l2_mm3_n / l).abs() < 1e-9, "{rx} {ry}");
+}

@@ -160,6 +160,18 @@ impl Coefficients {
 }
 
 impl Flexibilities {
+    /// Kalker's single flexibility for the creepages (cx, cy, cs) (Kalker 1982, FASTSIM with one
+    /// flexibility): `L = (|cx| L1 + |cy| L2 + c |cs| L3) / √(cx² + cy² + c² cs²)`, c = √(ab) [mm];
+    /// L1 at zero creepage.
+    pub fn single_mm3_n(&self, (cx, cy, cs_per_mm): (f64, f64, f64), c_mm: f64) -> f64 {
+        let norm = (cx * cx + cy * cy + (c_mm * cs_per_mm).powi(2)).sqrt();
+        if norm > 0.0 {
+            (cx.abs() * self.l1_mm3_n + cy.abs() * self.l2_mm3_n + c_mm * cs_per_mm.abs() * self.l3_mm3_n) / norm
+        } else {
+            self.l1_mm3_n
+        }
+    }
+
     /// Flexibilities for an ellipse a × b [mm] (thesis Eq. 2.35 or Eq. 3.5).
     pub fn new(model: FlexibilityModel, c: &Coefficients, a_mm: f64, b_mm: f64, mat: &Material) -> Self {
         let (g, nu, e) = (mat.g_mpa, mat.poisson, mat.e_mpa);

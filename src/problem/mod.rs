@@ -29,6 +29,9 @@ pub struct LocalContact {
     /// Per grid row, the rigid slip's factor over `flex` (`L/L(y)`; 1 on an ellipse and with
     /// uniform flexibilities, [`crate::physics::PatchFlexibility`]).
     pub row_gain: Vec<f64>,
+    /// `Some(√(ab))` [mm] when the simplified models use Kalker's single flexibility
+    /// ([`Flexibilities::single_mm3_n`]).
+    pub single_flexibility: Option<f64>,
 }
 
 /// Rolling: speed and the rolling distance per time step.
@@ -235,7 +238,9 @@ impl Problem {
         let a_mm = planform.ellipse.a_mm;
         let row_gain =
             planform.half_length_mm.iter().map(|&h| if strips && h > 0.0 { a_mm / h } else { 1.0 }).collect();
-        LocalContact { planform, flex, row_gain }
+        let e = &planform.ellipse;
+        let single_flexibility = self.model.single_flexibility.then(|| (e.a_mm * e.b_mm).sqrt());
+        LocalContact { planform, flex, row_gain, single_flexibility }
     }
 
     /// Flexibilities of the simplified models for an ellipse (thesis Eq. 2.35 or 3.5).

@@ -83,6 +83,9 @@ pub struct ModelOptions {
     /// Strip flexibilities on a contact that is not an ellipse (default: the equivalent ellipse's).
     #[serde(default, skip_serializing_if = "PatchFlexibility::is_default")]
     pub nonhertz_flexibility: PatchFlexibility,
+    /// FASTSIM and the UBA with Kalker's single flexibility instead of three.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub single_flexibility: bool,
     /// Polach's model's parameters.
     #[serde(default, skip_serializing_if = "PolachParams::is_default")]
     pub polach: PolachParams,
@@ -96,6 +99,7 @@ impl Default for ModelOptions {
             pressure: PressureShape::Parabolic,
             leading_edge: LeadingEdge::Grid,
             nonhertz_flexibility: PatchFlexibility::EquivalentEllipse,
+            single_flexibility: false,
             polach: PolachParams::default(),
         }
     }
@@ -459,6 +463,9 @@ impl Scene {
             }
             if let Some(e) = md.opt_choice("leading_edge", &["grid", "exact"])? {
                 model.leading_edge = if e == "exact" { LeadingEdge::Exact } else { LeadingEdge::Grid };
+            }
+            if let Some(n) = md.opt_choice("flexibilities", &["three", "one"])? {
+                model.single_flexibility = n == "one";
             }
             let unit = Range::new(0.0, false, 1.0, true);
             if let Some(v) = md.opt_f64("polach_k_a", unit)? {

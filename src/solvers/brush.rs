@@ -9,8 +9,16 @@ use crate::solvers::{FieldView, Step, Termination};
 
 /// The rigid slip over the flexibilities [MPa/mm] (the left side of thesis Eq. 3.4/3.6):
 /// `kx = cx/L1 − cs y/L3`, `ky = cy/L2 − cs x/L3` (grid x; CONTACT's spin sign, [`RigidSlip`]).
-pub fn slip_rates(s: &Sample, flex: &Flexibilities) -> RigidSlip {
-    rates(s.cx, s.cy, s.cs, flex)
+/// With Kalker's single flexibility ([`LocalContact::single_flexibility`]) every component is
+/// divided by the same L of this sample's creepages.
+pub fn slip_rates(s: &Sample, local: &LocalContact) -> RigidSlip {
+    match local.single_flexibility {
+        None => rates(s.cx, s.cy, s.cs, &local.flex),
+        Some(c_mm) => {
+            let l = local.flex.single_mm3_n((s.cx, s.cy, s.cs), c_mm);
+            RigidSlip::new(s.cx, s.cy, s.cs).over_flexibilities(l, l, l)
+        }
+    }
 }
 
 /// [`slip_rates`] of creepages (cx, cy, cs [1/mm]).

@@ -40,7 +40,7 @@ impl Stepper for Fastsim<'_> {
     }
 
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
-        let rates = brush::slip_rates(at, &self.local.flex);
+        let rates = brush::slip_rates(at, &self.local);
         let how = (self.p.model.leading_edge, Integration::Exact);
         let n_slip = brush::steady_march(&self.p.grid, &self.local, at.mu, &rates, how, &mut self.t);
         let (grid, planform) = (&self.p.grid, &self.local.planform);

@@ -105,7 +105,7 @@ impl Stepper for Uba<'_> {
 
     /// The fixed point of [`step`] for any C ∈ (0, 1], marched directly.
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
-        let rates = brush::slip_rates(at, &self.local.flex);
+        let rates = brush::slip_rates(at, &self.local);
         let how = (self.p.model.leading_edge, Integration::Centre);
         let n_slip = brush::steady_march(&self.p.grid, &self.local, at.mu, &rates, how, &mut self.t);
         Ok(self.row(n_slip, self.t.sums()))
@@ -113,7 +113,7 @@ impl Stepper for Uba<'_> {
 
     /// One time step: `ceil(C)` explicit sub-steps of Courant number `C/ceil(C)` each.
     fn transient(&mut self, at: &Sample) -> Result<Step, SolveError> {
-        let rates = brush::slip_rates(at, &self.local.flex);
+        let rates = brush::slip_rates(at, &self.local);
         let (n, courant) = substeps(self.p.rolling.courant);
         let scheme = (courant, self.p.model.leading_edge);
         let mut sums = StepSums { n_slip: 0, sum_tx: 0.0, sum_ty: 0.0 };
