@@ -244,3 +244,35 @@ fn fastsim_with_one_flexibility() {
     let (rx, ry) = (h1.rows[0].fx_over_fn / h3.rows[0].fx_over_fn, h1.rows[0].fy_over_fn / h3.rows[0].fy_over_fn);
     assert!((rx - f.l1_mm3_n / l).abs() < 1e-9 && (ry - f.l2_mm3_n / l).abs() < 1e-9, "{rx} {ry}");
 }
+
+/// The modified FASTSIM (`[model] slope_reduction = [k0, α, β]`, Spiryagin et al. 2013 as in
+/// CONTACT): with α = 1 the flexibilities are divided by k0, so in the linear range the forces
+/// scale by k0 exactly; the factor follows k0 (α + (1 − α)/(1 + β ε)); bad triples are refused.
+#[test]
+fn modified_fastsim_slope_reduction() {
+    let creepage = "kind = \"sweep\"\ndirection = [1.0, 0.5, 0.0]\nfrom = 1e-6\nto = 1e-6\npoints = 1";
+    let plain = problem(&scene_text("p", "[\"fastsim\"]", 0.3, 22, creepage, ""));
+    let reduced =
+        problem(&scene_text("r", "[\"fastsim\"]", 0.3, 22, creepage, "[model]\nslope_reduction = [0.6, 1.0, 5.0]"));
+    let (h0, h1) = (run(&plain, "fastsim"), run(&reduced, "fastsim"));
+    for (a, b) in [(h0.rows[0].fx_over_fn, h1.rows[0].fx_over_fn), (h0.rows[0].fy_over_fn, h1.rows[0].fy_over_fn)] {
+        assert!((b / a - 0.6).abs() < 1e-12, "{b} / {a}");
+    }
+    // The factor against the formula, by hand: ε = G π a b k0 C11 w / (4 μ FN).
+    let p = problem(&scene_text("r", "[\"fastsim\"]", 0.3, 22, creepage, "[model]\nslope_reduction = [0.8, 0.4, 2.0]"));
+    let local = p.local_contact(p.hertz().fn_n);
+    let slope = local.slope.expect("asked for");
+    let (h, c11, g) = (p.hertz(), p.coefficients.c11, p.material.g_mpa);
+    let (cx, cy, cs) = (0.002, 0.001, 0.0001);
+    let w = (cx * cx + (cy + h.a_mm * cs).powi(2)).sqrt();
+    let eps = g * std::f64::consts::PI * h.a_mm * h.b_mm * 0.8 * c11 * w / (4.0 * 0.3 * h.fn_n);
+    let k = 0.8 * (0.4 + 0.6 / (1.0 + 2.0 * eps));
+    assert!((slope.factor((cx, cy, cs), 0.3) - k).abs() < 1e-14, "{} vs {k}", slope.factor((cx, cy, cs), 0.3));
+    // Spin against the lateral creepage: ν = cy where |cy + a cs| < |cy|.
+    assert_eq!(slope.factor((0.0, 0.001, -1e-5), 0.3), slope.factor((0.0, 0.001, 0.0), 0.3));
+    for bad in ["[0.0, 0.5, 1.0]", "[1.0, 1.5, 1.0]", "[1.0, 0.5, -1.0]"] {
+        let text = scene_text("r", "[\"fastsim\"]", 0.3, 22, creepage, &format!("[model]\nslope_reduction = {bad}"));
+        let e = creepbench::scene::Scene::from_toml(&text, std::path::Path::new(".")).unwrap_err().to_string();
+        assert!(e.contains("model.slope_reduction"), "{bad}: {e}");
+    }
+}

@@ -159,6 +159,29 @@ impl Coefficients {
     }
 }
 
+/// The modified FASTSIM's slope reduction (Spiryagin, Polach, Cole, Vehicle System Dynamics 51(6),
+/// 2013; CONTACT's `fastsim_params`, m_solvpt.f90): `k = k0 (α + (1 − α)/(1 + β ε))` with
+/// `ε = G π a b k0 C11 w / (4 μ FN)`, `w = √(cx² + ν²)`, `ν = cy + a cs` (cy where |cy + a cs| < |cy|).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SlopeReduction {
+    pub k0: f64,
+    pub alpha: f64,
+    pub beta: f64,
+    /// `G π a b k0 C11 / (4 FN)` of the contact at this load.
+    pub eps_scale: f64,
+    pub a_mm: f64,
+}
+
+impl SlopeReduction {
+    /// k for creepages (cx, cy, cs) and friction μ.
+    pub fn factor(&self, (cx, cy, cs_per_mm): (f64, f64, f64), mu: f64) -> f64 {
+        let nu = cy + self.a_mm * cs_per_mm;
+        let nu = if nu.abs() < cy.abs() { cy } else { nu };
+        let eps = self.eps_scale * cx.hypot(nu) / mu;
+        self.k0 * (self.alpha + (1.0 - self.alpha) / (1.0 + self.beta * eps))
+    }
+}
+
 impl Flexibilities {
     /// Kalker's single flexibility for the creepages (cx, cy, cs) (Kalker 1982, FASTSIM with one
     /// flexibility): `L = (|cx| L1 + |cy| L2 + c |cs| L3) / √(cx² + cy² + c² cs²)`, c = √(ab) [mm];

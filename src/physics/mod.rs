@@ -19,7 +19,7 @@ pub use bound::project_to_bound;
 pub use geometry::{ContactGeometry, HertzEllipse, Planform};
 pub use grid::{Grid, LeadingEdge};
 pub use hertz::{HertzContact, Radii};
-pub use kalker::{CoefficientSource, Coefficients, Flexibilities, FlexibilityModel, PatchFlexibility};
+pub use kalker::{CoefficientSource, Coefficients, Flexibilities, FlexibilityModel, PatchFlexibility, SlopeReduction};
 pub use material::Material;
 pub use moment::moment_sum;
 pub use pressure::PressureShape;

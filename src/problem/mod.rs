@@ -32,6 +32,8 @@ pub struct LocalContact {
     /// `Some(√(ab))` [mm] when the simplified models use Kalker's single flexibility
     /// ([`Flexibilities::single_mm3_n`]).
     pub single_flexibility: Option<f64>,
+    /// The modified FASTSIM's slope reduction at this load, if the scene asks for it.
+    pub slope: Option<crate::physics::SlopeReduction>,
 }
 
 /// Rolling: speed and the rolling distance per time step.
@@ -240,7 +242,15 @@ impl Problem {
             planform.half_length_mm.iter().map(|&h| if strips && h > 0.0 { a_mm / h } else { 1.0 }).collect();
         let e = &planform.ellipse;
         let single_flexibility = self.model.single_flexibility.then(|| (e.a_mm * e.b_mm).sqrt());
-        LocalContact { planform, flex, row_gain, single_flexibility }
+        let slope = self.model.slope_reduction.map(|[k0, alpha, beta]| crate::physics::SlopeReduction {
+            k0,
+            alpha,
+            beta,
+            eps_scale: self.material.g_mpa * std::f64::consts::PI * e.a_mm * e.b_mm * k0 * self.coefficients.c11
+                / (4.0 * e.fn_n),
+            a_mm: e.a_mm,
+        });
+        LocalContact { planform, flex, row_gain, single_flexibility, slope }
     }
 
     /// Flexibilities of the simplified models for an ellipse (thesis Eq. 2.35 or 3.5).

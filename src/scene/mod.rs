@@ -83,6 +83,10 @@ pub struct ModelOptions {
     /// Strip flexibilities on a contact that is not an ellipse (default: the equivalent ellipse's).
     #[serde(default, skip_serializing_if = "PatchFlexibility::is_default")]
     pub nonhertz_flexibility: PatchFlexibility,
+    /// The modified FASTSIM's slope reduction `[k0, α, β]` (Spiryagin et al. 2013, as CONTACT's
+    /// M = 2/3 options): flexibilities divided by `k = k0 (α + (1 − α)/(1 + β ε))`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub slope_reduction: Option<[f64; 3]>,
     /// FASTSIM and the UBA with Kalker's single flexibility instead of three.
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub single_flexibility: bool,
@@ -100,6 +104,7 @@ impl Default for ModelOptions {
             leading_edge: LeadingEdge::Grid,
             nonhertz_flexibility: PatchFlexibility::EquivalentEllipse,
             single_flexibility: false,
+            slope_reduction: None,
             polach: PolachParams::default(),
         }
     }
@@ -463,6 +468,18 @@ impl Scene {
             }
             if let Some(e) = md.opt_choice("leading_edge", &["grid", "exact"])? {
                 model.leading_edge = if e == "exact" { LeadingEdge::Exact } else { LeadingEdge::Grid };
+            }
+            if let Some([k0, alpha, beta]) =
+                md.opt_f64_array::<3>("slope_reduction", Range::new(0.0, true, 1e3, true))?
+            {
+                if !(k0 > 0.0 && (0.0..=1.0).contains(&alpha)) {
+                    return Err(InputError::new(
+                        md.field("slope_reduction"),
+                        format!("[{k0}, {alpha}, {beta}]"),
+                        "[k0, alpha, beta] with k0 > 0, 0 <= alpha <= 1, beta >= 0",
+                    ));
+                }
+                model.slope_reduction = Some([k0, alpha, beta]);
             }
             if let Some(n) = md.opt_choice("flexibilities", &["three", "one"])? {
                 model.single_flexibility = n == "one";

@@ -11,13 +11,22 @@ use crate::solvers::{FieldView, Step, Termination};
 /// `kx = cx/L1 − cs y/L3`, `ky = cy/L2 − cs x/L3` (grid x; CONTACT's spin sign, [`RigidSlip`]).
 /// With Kalker's single flexibility ([`LocalContact::single_flexibility`]) every component is
 /// divided by the same L of this sample's creepages.
+/// With the modified FASTSIM's slope reduction ([`LocalContact::slope`]) the flexibilities are
+/// divided by its factor k.
 pub fn slip_rates(s: &Sample, local: &LocalContact) -> RigidSlip {
-    match local.single_flexibility {
-        None => rates(s.cx, s.cy, s.cs, &local.flex),
+    let c = (s.cx, s.cy, s.cs);
+    let (l1, l2, l3) = match local.single_flexibility {
+        None => (local.flex.l1_mm3_n, local.flex.l2_mm3_n, local.flex.l3_mm3_n),
         Some(c_mm) => {
-            let l = local.flex.single_mm3_n((s.cx, s.cy, s.cs), c_mm);
-            RigidSlip::new(s.cx, s.cy, s.cs).over_flexibilities(l, l, l)
+            let l = local.flex.single_mm3_n(c, c_mm);
+            (l, l, l)
         }
+    };
+    let k = local.slope.map_or(1.0, |r| r.factor(c, s.mu));
+    if k == 1.0 {
+        RigidSlip::new(s.cx, s.cy, s.cs).over_flexibilities(l1, l2, l3)
+    } else {
+        RigidSlip::new(s.cx, s.cy, s.cs).over_flexibilities(l1 / k, l2 / k, l3 / k)
     }
 }
 
