@@ -2,12 +2,13 @@
 //! `|ours − theirs| ≤ abs + rel·|theirs|`. Changing a number here is a reviewed decision: say why.
 
 use super::against::Against;
+use super::tolerance_file::glob;
 
 /// One rule: which comparison it covers, its tolerance, and whether a miss fails the gate.
 #[derive(Debug, Clone, Copy)]
 pub struct Rule {
     pub against: Against,
-    /// Scene name, or "*" for any.
+    /// Scene name or `*` pattern ([`glob`], as in tolerance files).
     pub scene: &'static str,
     /// Solver name, or "*" for any.
     pub solver: &'static str,
@@ -72,10 +73,7 @@ pub fn rule(against: Against, scene: &str, solver: &str, quantity: &str) -> Rule
     *RULES
         .iter()
         .find(|r| {
-            r.against == against_key
-                && (r.scene == "*" || r.scene == scene)
-                && (r.solver == "*" || r.solver == solver)
-                && (r.quantity == "*" || r.quantity == quantity)
+            r.against == against_key && glob(r.scene, scene) && glob(r.solver, solver) && glob(r.quantity, quantity)
         })
         .unwrap_or(&Rule {
             scene: "*",

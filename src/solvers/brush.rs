@@ -22,12 +22,9 @@ pub fn slip_rates(s: &Sample, local: &LocalContact) -> RigidSlip {
             (l, l, l)
         }
     };
+    // k = 1 without a slope reduction: l / 1 is l exactly.
     let k = local.slope.map_or(1.0, |r| r.factor(c, s.mu));
-    if k == 1.0 {
-        RigidSlip::new(s.cx, s.cy, s.cs).over_flexibilities(l1, l2, l3)
-    } else {
-        RigidSlip::new(s.cx, s.cy, s.cs).over_flexibilities(l1 / k, l2 / k, l3 / k)
-    }
+    RigidSlip::new(s.cx, s.cy, s.cs).over_flexibilities(l1 / k, l2 / k, l3 / k)
 }
 
 /// [`slip_rates`] of creepages (cx, cy, cs [1/mm]).

@@ -164,6 +164,10 @@ impl ContactGeometry for ElementGeometry {
         self.contact_or_empty(fn_n).edge_load_share
     }
 
+    fn normal_pressure_mpa(&self, fn_n: f64) -> Option<Vec<f64>> {
+        self.normal_at(fn_n).ok().map(|c| c.pn_mpa.clone())
+    }
+
     fn planform_error(&self, fn_n: f64) -> Option<String> {
         self.normal_at(fn_n).err().map(|e| e.to_string())
     }

@@ -181,6 +181,12 @@ pub trait ContactGeometry: Send + Sync + Debug {
     fn edge_load_share(&self, _fn_n: f64) -> f64 {
         0.0
     }
+    /// The normal pressure [MPa] per element at `fn_n` if this geometry has already solved the
+    /// normal problem for it (a geometry given per element does, once per load): the exact solver
+    /// then takes it instead of solving again. `None`: solve it.
+    fn normal_pressure_mpa(&self, _fn_n: f64) -> Option<Vec<f64>> {
+        None
+    }
     /// Why the contact at `fn_n` cannot be formed (a normal problem that fails), if it cannot.
     fn planform_error(&self, _fn_n: f64) -> Option<String> {
         None

@@ -132,22 +132,28 @@ impl Stepper for Contact<'_> {
             return Ok(());
         }
         let (p, fn_n) = (self.p, at.fn_n);
-        let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
-        let normal = self
-            .normal
-            .solve(&h, fn_n, &NormalParams::default())
-            .map_err(|source| ContactRunError::Normal { fn_n, source })?;
-        if !normal.converged {
-            let (iterations, residual) = (normal.iterations, normal.residual);
-            return Err(ContactRunError::NormalNotConverged { fn_n, iterations, residual }.into());
-        }
-        let pn_sum: f64 = normal.pn_mpa.iter().sum();
+        let pn_mpa = match p.geometry.normal_pressure_mpa(fn_n) {
+            Some(pn) => pn,
+            None => {
+                let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
+                let normal = self
+                    .normal
+                    .solve(&h, fn_n, &NormalParams::default())
+                    .map_err(|source| ContactRunError::Normal { fn_n, source })?;
+                if !normal.converged {
+                    let (iterations, residual) = (normal.iterations, normal.residual);
+                    return Err(ContactRunError::NormalNotConverged { fn_n, iterations, residual }.into());
+                }
+                normal.pn_mpa
+            }
+        };
+        let pn_sum: f64 = pn_mpa.iter().sum();
         if pn_sum <= 0.0 {
             return Err(ContactRunError::NoContact { mx: p.grid.mx, my: p.grid.my, fn_n }.into());
         }
-        self.tangential.set_pressure(&normal.pn_mpa).map_err(|source| ContactRunError::Setup { fn_n, source })?;
-        let pn_max = normal.pn_mpa.iter().fold(0.0f64, |a, &b| a.max(b));
-        self.loaded = Some(Loaded { fn_n, pn: normal.pn_mpa, pn_sum, pn_max });
+        self.tangential.set_pressure(&pn_mpa).map_err(|source| ContactRunError::Setup { fn_n, source })?;
+        let pn_max = pn_mpa.iter().fold(0.0f64, |a, &b| a.max(b));
+        self.loaded = Some(Loaded { fn_n, pn: pn_mpa, pn_sum, pn_max });
         self.older = None;
         Ok(())
     }
