@@ -14,9 +14,14 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Through
 use std::hint::black_box;
 use std::path::Path;
 
+/// A thesis scene (a scene file or a study's point) as TOML text.
+fn thesis_text(name: &str) -> String {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/thesis");
+    creepbench::harness::suite::find(&[dir], name).unwrap().text().unwrap()
+}
+
 fn problem(grid: usize) -> Problem {
-    let text = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/thesis/sine_f30_mu10.toml"))
-        .unwrap();
+    let text = thesis_text("sine_f30_mu10");
     let text = text.replace("mx = 22", &format!("mx = {grid}")).replace("my = 22", &format!("my = {grid}"));
     Problem::resolve(&Scene::from_toml(&text, Path::new(".")).unwrap()).unwrap()
 }
@@ -99,14 +104,15 @@ fn bench_contact(c: &mut Criterion) {
 /// the same 30 × 28 grid, both at step 10 of sine_f30_mu10's loading and μ 0.35.
 fn bench_contact_shape(c: &mut Criterion) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let hertz = std::fs::read_to_string(root.join("scenes/thesis/sine_f30_mu10.toml"))
-        .unwrap()
-        .replace("mx = 22", "mx = 30")
-        .replace("my = 22", "my = 28");
-    let table = std::fs::read_to_string(root.join("scenes/thesis/sine_f30_mu10.toml")).unwrap();
-    let creepage = &table[table.find("[creepage]").unwrap()..];
-    let nh = std::fs::read_to_string(root.join("scenes/nonhertz/nh_two_sweep_cy_cs.toml")).unwrap();
-    let nh = format!("{}{creepage}", &nh[..nh.find("[creepage]").unwrap()]);
+    let hertz = thesis_text("sine_f30_mu10").replace("mx = 22", "mx = 30").replace("my = 22", "my = 28");
+    // The non-Hertzian scene with the thesis scene's loading, start and model options.
+    let thesis: toml::Table = thesis_text("sine_f30_mu10").parse().unwrap();
+    let mut nh: toml::Table =
+        std::fs::read_to_string(root.join("scenes/nonhertz/nh_two_sweep_cy_cs.toml")).unwrap().parse().unwrap();
+    for key in ["creepage", "init", "model"] {
+        nh.insert(key.into(), thesis[key].clone());
+    }
+    let nh = nh.to_string();
     let dir = root.join("scenes/nonhertz");
     let mut g = c.benchmark_group("contact_shape_30x28");
     for (id, text, dir) in [("hertz", hertz, Path::new(".")), ("nonhertz", nh, dir.as_path())] {
@@ -152,8 +158,7 @@ fn bench_fastsim(c: &mut Criterion) {
 /// A whole UBA run through the sample loop (set-up, every step, the history rows): 176×176,
 /// sine 10 Hz, 3 periods, steady start. Divide by steps × elements for ns per element-step.
 fn bench_uba_run(c: &mut Criterion) {
-    let text = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/thesis/sine_f10_mu04.toml"))
-        .unwrap()
+    let text = thesis_text("sine_f10_mu04")
         .replace("mx = 22", "mx = 176")
         .replace("my = 22", "my = 176")
         .replace("solvers = [\"uba\", \"fastsim\", \"contact\", \"linear\"]", "solvers = [\"uba\"]");

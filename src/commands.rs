@@ -14,25 +14,62 @@ use crate::safety::{folder, guard, lock};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-/// `creepbench simulate`: one scene into `out/<name>/`.
-pub fn simulate(scene: &Path, solvers: &[String], out: &Path, golden: &Path) -> Result<PathBuf, Error> {
-    let problem = pipeline::load(scene, solvers)?;
-    // The folder written is out/<name>: a scene named after a protected folder cannot reach it.
-    guard::guard_not_under(&out.join(&problem.name), golden)?;
-    let before = problem.warnings.len();
-    for w in &problem.warnings {
-        eprintln!("warning: {w}");
+/// `creepbench simulate`: one scene into `out/<name>/` (a study file: each of its scenes).
+pub fn simulate(scene: &Path, solvers: &[String], out: &Path, golden: &Path) -> Result<Vec<PathBuf>, Error> {
+    let sources = suite::sources_of_file(scene)?;
+    // Every scene validated (and its folder checked) before any runs: bad input writes nothing.
+    let problems = sources.iter().map(|s| pipeline::load_source(s, solvers)).collect::<Result<Vec<_>, _>>()?;
+    for problem in &problems {
+        // The folder written is out/<name>: a scene named after a protected folder cannot reach it.
+        guard::guard_not_under(&out.join(&problem.name), golden)?;
     }
-    let result = pipeline::run(problem)?;
-    for w in &result.problem.warnings[before..] {
-        eprintln!("warning: {w}");
+    let mut dirs = Vec::new();
+    for problem in problems {
+        let before = problem.warnings.len();
+        for w in &problem.warnings {
+            eprintln!("warning: {w}");
+        }
+        let result = pipeline::run(problem)?;
+        for w in &result.problem.warnings[before..] {
+            eprintln!("warning: {w}");
+        }
+        let stored = StoredScene::from_result(&result);
+        dirs.push(results::write_scenes(out, std::slice::from_ref(&stored), false)?.remove(0));
+        for (h, t) in result.histories.iter().zip(&result.timing) {
+            eprintln!("{}: {} rows in {:.3} s", h.solver, h.rows.len(), t.wall_s);
+        }
     }
-    let stored = StoredScene::from_result(&result);
-    let dir = results::write_scenes(out, std::slice::from_ref(&stored), false)?.remove(0);
-    for (h, t) in result.histories.iter().zip(&result.timing) {
-        eprintln!("{}: {} rows in {:.3} s", h.solver, h.rows.len(), t.wall_s);
+    Ok(dirs)
+}
+
+/// `creepbench expand`: a study's scenes as scene files `out/<name>.toml` (none is replaced).
+pub fn expand(study_file: &Path, out: &Path, golden: &Path) -> Result<Vec<PathBuf>, Error> {
+    let sources = suite::sources_of_file(study_file)?;
+    if sources.iter().all(|s| s.study.is_none()) {
+        return Err(InputError::new("STUDY", study_file.display(), "a study file (with a [study] table)").into());
     }
-    Ok(dir)
+    guard::guard_not_under(out, golden)?;
+    let mut files = Vec::new();
+    for s in &sources {
+        pipeline::load_source(s, &[])?;
+        let path = out.join(format!("{}.toml", s.name));
+        if path.exists() {
+            return Err(InputError::new(
+                "--out",
+                path.display(),
+                "a folder without these scene files (expand replaces nothing)",
+            )
+            .into());
+        }
+        let header =
+            format!("# Expanded by `creepbench expand` from {} (study point {}).\n", study_file.display(), s.name);
+        files.push((path, header + &s.text()?));
+    }
+    std::fs::create_dir_all(out).map_err(|source| Error::Io { path: out.to_path_buf(), source })?;
+    for (path, text) in &files {
+        write_whole(path, text)?;
+    }
+    Ok(files.into_iter().map(|(p, _)| p).collect())
 }
 
 /// Run a suite (or one shard) and return its results as stored scenes.

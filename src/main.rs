@@ -48,9 +48,9 @@ enum ExportWhat {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Run one scene and write OUT/<name>/{scene.json,<solver>.csv,metrics.csv}.
+    /// Run one scene and write OUT/<name>/{scene.json,<solver>.csv,metrics.csv} (a study file: each of its scenes).
     Simulate {
-        /// The scene file (TOML).
+        /// The scene file (TOML), or a study file.
         scene: PathBuf,
         /// Run only these of the scene's solvers (repeatable).
         #[arg(long = "solver")]
@@ -59,6 +59,16 @@ enum Command {
         #[arg(long, default_value = "out")]
         out: PathBuf,
         /// The golden folder, which simulate never writes into.
+        #[arg(long, default_value = "golden")]
+        golden: PathBuf,
+    },
+    /// Write a study's scenes as scene files OUT/<name>.toml (replaces none).
+    Expand {
+        /// The study file (TOML with a [study] table).
+        study: PathBuf,
+        #[arg(long, default_value = "out/scenes")]
+        out: PathBuf,
+        /// Refused as an output location (only `bless` writes there).
         #[arg(long, default_value = "golden")]
         golden: PathBuf,
     },
@@ -131,9 +141,11 @@ fn main() {
         eprintln!("warning: {e}");
     }
     let result = match cli.command {
-        Command::Simulate { scene, solvers, out, golden } => {
-            commands::simulate(&scene, &solvers, &out, &golden).map(|d| println!("{}", d.display()))
+        Command::Expand { study, out, golden } => {
+            commands::expand(&study, &out, &golden).map(|files| files.iter().for_each(|f| println!("{}", f.display())))
         }
+        Command::Simulate { scene, solvers, out, golden } => commands::simulate(&scene, &solvers, &out, &golden)
+            .map(|dirs| dirs.iter().for_each(|d| println!("{}", d.display()))),
         Command::Run { suite: s, results, report } => {
             commands::run(&s.suite, &s.reference, &results, &report, s.shard, &s.golden, !s.quiet)
         }

@@ -1,6 +1,7 @@
 //! The straight path scene → resolved problem → models → histories → metrics, for one scene.
 
 use crate::error::{Error, InputError};
+use crate::harness::suite::SceneSource;
 use crate::history::History;
 use crate::metrics::{self, Metric, MetricDef, MetricKind};
 use crate::problem::Problem;
@@ -30,13 +31,32 @@ pub struct SceneResult {
 
 /// Read, validate and resolve a scene file; `only` narrows its solver list.
 pub fn load(path: &Path, only: &[String]) -> Result<Problem, Error> {
+    let source = SceneSource { path: path.to_path_buf(), name: String::new(), study: None };
+    load_source(&source, only)
+}
+
+/// Validate and resolve one scene of a suite (a scene file or a study's point); `only` narrows
+/// its solver list. Errors name the file (and the study point).
+pub fn load_source(source: &SceneSource, only: &[String]) -> Result<Problem, Error> {
+    let path = &source.path;
+    let place = match source.study {
+        None => path.display().to_string(),
+        Some(_) => format!("{} (study point {})", path.display(), source.name),
+    };
     let in_file = |mut e: InputError| {
         if !e.field.starts_with(&path.display().to_string()) {
-            e.field = format!("{}: {}", path.display(), e.field);
+            e.field = format!("{place}: {}", e.field);
         }
         e
     };
-    let scene = Scene::from_file(path).map_err(in_file)?;
+    let scene = match &source.study {
+        None => Scene::from_file(path),
+        Some((doc, points)) => {
+            let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+            Scene::from_table(doc, &dir).map(|s| Scene { studies: points.clone(), ..s })
+        }
+    }
+    .map_err(in_file)?;
     let mut problem = Problem::resolve(&scene).map_err(in_file)?;
     if !only.is_empty() {
         for s in only {

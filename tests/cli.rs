@@ -9,11 +9,12 @@ fn creepbench(args: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_creepbench")).args(args).output().expect("runs")
 }
 
-/// Every thesis scene runs with uba and fastsim and writes the files interface.md promises.
+/// Every thesis scene (the scene files and every study's points) runs with uba and fastsim and
+/// writes the files interface.md promises; every CONTACT case of the thesis family is among them.
 #[test]
 fn simulate_every_thesis_scene() {
     let out = tempfile::tempdir().unwrap();
-    let mut n = 0;
+    let mut names = Vec::new();
     for entry in std::fs::read_dir(root().join("scenes/thesis")).unwrap() {
         let path = entry.unwrap().path();
         let o = creepbench(&[
@@ -27,34 +28,47 @@ fn simulate_every_thesis_scene() {
             out.path().to_str().unwrap(),
         ]);
         assert!(o.status.success(), "{}: {}", path.display(), String::from_utf8_lossy(&o.stderr));
-        let name = path.file_stem().unwrap().to_str().unwrap();
-        let dir = out.path().join(name);
-        for solver in ["uba", "fastsim"] {
-            let text = std::fs::read_to_string(dir.join(format!("{solver}.csv"))).unwrap();
-            assert!(text.starts_with("step,t_s,cx,cy,cs,fn_n,fx_over_fn,fy_over_fn"), "{name}/{solver}.csv header");
-            let rows = text.lines().count() - 1;
-            let reference_rows = reference(name, "step").len();
-            assert_eq!(rows, reference_rows, "{name}/{solver}: {rows} rows, CONTACT has {reference_rows}");
+        let dirs = String::from_utf8(o.stdout).unwrap();
+        assert!(!dirs.trim().is_empty(), "{}: no result folder", path.display());
+        for dir in dirs.lines().map(std::path::PathBuf::from) {
+            let name = dir.file_name().unwrap().to_str().unwrap().to_string();
+            let has_reference = root().join("reference/contact").join(format!("{name}.csv")).exists();
+            for solver in ["uba", "fastsim"] {
+                let text = std::fs::read_to_string(dir.join(format!("{solver}.csv"))).unwrap();
+                assert!(text.starts_with("step,t_s,cx,cy,cs,fn_n,fx_over_fn,fy_over_fn"), "{name}/{solver}.csv header");
+                if has_reference {
+                    let rows = text.lines().count() - 1;
+                    let reference_rows = reference(&name, "step").len();
+                    assert_eq!(rows, reference_rows, "{name}/{solver}: {rows} rows, CONTACT has {reference_rows}");
+                }
+            }
+            assert!(!dir.join("contact.csv").exists(), "contact was narrowed away");
+            let json: serde_json::Value =
+                serde_json::from_str(&std::fs::read_to_string(dir.join("scene.json")).unwrap()).unwrap();
+            for key in ["a_mm", "b_mm", "p0_mpa", "c11", "c22", "c23", "dx_mm", "dy_mm", "dt_s", "n_steps"] {
+                assert!(json[key].is_number(), "{name}: scene.json lacks {key}");
+            }
+            assert_eq!(json["solvers"], serde_json::json!(["uba", "fastsim"]));
+            let metrics = std::fs::read_to_string(dir.join("metrics.csv")).unwrap();
+            assert!(metrics.starts_with("solver,metric,value"));
+            names.push(name);
         }
-        assert!(!dir.join("contact.csv").exists(), "contact was narrowed away");
-        let json: serde_json::Value =
-            serde_json::from_str(&std::fs::read_to_string(dir.join("scene.json")).unwrap()).unwrap();
-        for key in ["a_mm", "b_mm", "p0_mpa", "c11", "c22", "c23", "dx_mm", "dy_mm", "dt_s", "n_steps"] {
-            assert!(json[key].is_number(), "{name}: scene.json lacks {key}");
-        }
-        assert_eq!(json["solvers"], serde_json::json!(["uba", "fastsim"]));
-        let metrics = std::fs::read_to_string(dir.join("metrics.csv")).unwrap();
-        assert!(metrics.starts_with("solver,metric,value"));
-        n += 1;
     }
-    assert_eq!(n, 41, "one scene per CONTACT case");
+    let mut cases = csv::Reader::from_path(root().join("reference/contact/cases.csv")).unwrap();
+    let x_cases: Vec<String> =
+        cases.records().map(Result::unwrap).filter(|r| &r[18] == "x").map(|r| r[0].to_string()).collect();
+    assert_eq!(x_cases.len(), 41);
+    for case in &x_cases {
+        assert!(names.contains(case), "no thesis scene for CONTACT case {case}");
+    }
 }
 
 /// The CSVs are byte-identical run to run.
 #[test]
 fn simulate_is_deterministic() {
     let (a, b) = (tempfile::tempdir().unwrap(), tempfile::tempdir().unwrap());
-    let scene = root().join("scenes/thesis/sine_f30_mu10.toml");
+    let scenes = tempfile::tempdir().unwrap();
+    let scene = suite_scene_file("thesis", "sine_f30_mu10", scenes.path());
     for d in [&a, &b] {
         let o = creepbench(&[
             "simulate",
@@ -172,7 +186,8 @@ fn table_kind_varies_load_and_friction() {
 /// --solver must name one of the scene's solvers.
 #[test]
 fn solver_flag_is_validated() {
-    let scene = root().join("scenes/thesis/step_mu04.toml");
+    let scenes = tempfile::tempdir().unwrap();
+    let scene = suite_scene_file("thesis", "step_mu04", scenes.path());
     let o = creepbench(&["simulate", scene.to_str().unwrap(), "--solver", "nope", "--out", "/nonexistent/x"]);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("--solver"));
@@ -185,7 +200,7 @@ fn run_is_identical_with_one_or_two_threads() {
     let suite = tmp.path().join("suite");
     std::fs::create_dir_all(&suite).unwrap();
     for name in ["step_mu04", "sine_f60_mu10", "steady_fastsim_g22", "step_circle"] {
-        std::fs::copy(root().join(format!("scenes/thesis/{name}.toml")), suite.join(format!("{name}.toml"))).unwrap();
+        suite_scene_file("thesis", name, &suite);
     }
     let mut outs = Vec::new();
     for threads in ["1", "2"] {

@@ -4,13 +4,12 @@
 mod common;
 use common::*;
 use creepbench::metrics;
-use creepbench::pipeline;
 use creepbench::solvers::contact::run_with_fields;
 use creepbench::solvers::contact::tangential::ElementState;
 use creepbench::solvers::Termination;
 
 fn thesis_problem(name: &str) -> creepbench::problem::Problem {
-    let mut p = pipeline::load(&root().join(format!("scenes/thesis/{name}.toml")), &[]).unwrap();
+    let mut p = suite_problem("thesis", name, &[]);
     p.solvers = vec!["contact".into()];
     p
 }

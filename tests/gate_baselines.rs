@@ -12,7 +12,7 @@ use std::path::Path;
 const SCENES: [&str; 2] = ["step_mu04", "steady_fastsim_g22"];
 
 fn ours() -> Vec<StoredScene> {
-    let files: Vec<_> = SCENES.iter().map(|n| root().join(format!("scenes/thesis/{n}.toml"))).collect();
+    let files: Vec<_> = SCENES.iter().map(|n| suite_scene("thesis", n)).collect();
     suite::run(&files, false).unwrap().iter().map(StoredScene::from_result).collect()
 }
 

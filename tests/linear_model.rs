@@ -35,8 +35,7 @@ fn slope_matches_contact_exact_theory() {
     let (c1, f1, f2) =
         (1e-4, reference("steady_exact_g88", "fx_over_fn")[1], reference("steady_exact_g88", "fx_over_fn")[2]);
     let contact_slope = (4.0 * f1 - f2) / (2.0 * c1);
-    let p =
-        creepbench::pipeline::load(&root().join("scenes/thesis/steady_exact_g88.toml"), &["linear".into()]).unwrap();
+    let p = suite_problem("thesis", "steady_exact_g88", &["linear".into()]);
     let h = run(&p, "linear");
     let slope = h.rows[1].fx_over_fn / h.rows[1].cx;
     println!("slope: linear {slope:.3}, CONTACT 88x88 {contact_slope:.3}");

@@ -6,7 +6,13 @@ use creepbench::scene::Scene;
 use proptest::prelude::*;
 use std::path::Path;
 
-const BASE: &str = include_str!("../scenes/thesis/sine_f30_mu10.toml");
+mod common;
+
+/// The thesis scene sine_f30_mu10 (a point of a study) as scene text.
+fn base() -> &'static str {
+    static BASE: std::sync::OnceLock<String> = std::sync::OnceLock::new();
+    BASE.get_or_init(|| common::suite_scene_text("thesis", "sine_f30_mu10"))
+}
 
 fn parse(text: &str) {
     match Scene::from_toml(text, Path::new("/nonexistent")) {
@@ -36,7 +42,7 @@ proptest! {
         Just("{}".to_string()), Just("true".to_string()), Just("99999999999999999999".to_string()),
         "-?[0-9]{1,6}(\\.[0-9]{1,4})?(e-?[0-9]{1,3})?",
     ]) {
-        let lines: Vec<&str> = BASE.lines().collect();
+        let lines: Vec<&str> = base().lines().collect();
         let k = line % lines.len();
         let mut a = lines.clone();
         let replaced = match lines[k].split_once(" = ") {

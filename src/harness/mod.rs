@@ -11,6 +11,7 @@ pub mod references;
 pub mod report;
 pub mod results;
 pub mod sections;
+pub mod studies;
 pub mod suite;
 pub mod table;
 pub mod tolerance_file;

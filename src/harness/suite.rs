@@ -3,9 +3,10 @@
 use crate::error::{Error, InputError};
 use crate::pipeline::{self, SceneResult};
 use crate::problem::Problem;
+use crate::scene::study::{self, StudyPoint};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// The default suites: the thesis scenes, the stability scenes and the studies behind the report.
 pub const DEFAULT_SUITES: [&str; 5] =
@@ -46,8 +47,20 @@ impl Shard {
     }
 }
 
-/// The scene files of the folders `dirs` (sorted by scene name), restricted to `shard`.
-pub fn scene_files(dirs: &[PathBuf], shard: Option<Shard>) -> Result<Vec<PathBuf>, Error> {
+/// One scene of a suite: a scene file, or one point of a study file ([`crate::scene::study`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneSource {
+    /// The file it comes from.
+    pub path: PathBuf,
+    /// The scene's name: a study point's, or a scene file's stem.
+    pub name: String,
+    /// A study point's scene table and its places in the studies (`None`: the file is the scene).
+    pub study: Option<(toml::Table, Vec<StudyPoint>)>,
+}
+
+/// The scenes of the folders `dirs` — scene files and the points of study files — sorted by
+/// name and restricted to `shard` (a study's points are sharded one by one).
+pub fn scene_files(dirs: &[PathBuf], shard: Option<Shard>) -> Result<Vec<SceneSource>, Error> {
     let mut files: Vec<PathBuf> = Vec::new();
     for dir in dirs {
         let entries = std::fs::read_dir(dir)
@@ -56,23 +69,90 @@ pub fn scene_files(dirs: &[PathBuf], shard: Option<Shard>) -> Result<Vec<PathBuf
             entries.filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.extension().is_some_and(|x| x == "toml")),
         );
     }
-    files.sort_by(|a, b| a.file_name().cmp(&b.file_name()));
-    if let Some(s) = shard {
-        files.retain(|p| s.takes(p.file_stem().and_then(|n| n.to_str()).unwrap_or("")));
+    let mut out: Vec<SceneSource> = Vec::new();
+    for path in files {
+        if path.file_stem().is_some_and(|s| s == "tolerances") {
+            continue;
+        }
+        for point in sources_of_file(&path)? {
+            // A point two studies share (same name, same scene) runs once, in both.
+            if let Some(twin) = out.iter_mut().find(|s| s.name == point.name) {
+                match (&mut twin.study, point.study) {
+                    (Some((d, points)), Some((doc, more))) if *d == doc => {
+                        points.extend(more);
+                        continue;
+                    }
+                    _ => {
+                        return Err(InputError::new(
+                            "name",
+                            format!("{:?} in both {} and {}", point.name, twin.path.display(), path.display()),
+                            "distinct scene names in one run (a point two studies share must be the same scene)",
+                        )
+                        .into())
+                    }
+                }
+            }
+            out.push(point);
+        }
     }
-    Ok(files)
+    out.sort_by(|a, b| a.name.cmp(&b.name));
+    if let Some(s) = shard {
+        out.retain(|src| s.takes(&src.name));
+    }
+    Ok(out)
+}
+
+/// The scenes of one file: the file itself, or the points of a study file.
+pub fn sources_of_file(path: &Path) -> Result<Vec<SceneSource>, Error> {
+    let stem = path.file_stem().and_then(|n| n.to_str()).unwrap_or("").to_string();
+    // A file that does not parse is left to the scene reader, whose message names the place.
+    let doc = crate::safety::read::read_text(path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")
+        .ok()
+        .and_then(|t| t.parse::<toml::Table>().ok());
+    let Some(doc) = doc.filter(study::is_study) else {
+        return Ok(vec![SceneSource { path: path.to_path_buf(), name: stem, study: None }]);
+    };
+    let in_file = |mut e: InputError| {
+        e.field = format!("{}: {}", path.display(), e.field);
+        e
+    };
+    Ok(study::expand(&doc)
+        .map_err(in_file)?
+        .into_iter()
+        .map(|p| SceneSource { path: path.to_path_buf(), name: p.name, study: Some((p.doc, vec![p.point])) })
+        .collect())
+}
+
+/// The scene called `name` in the folders `dirs` (a scene file's stem or a study's point).
+pub fn find(dirs: &[PathBuf], name: &str) -> Result<SceneSource, Error> {
+    scene_files(dirs, None)?.into_iter().find(|s| s.name == name).ok_or_else(|| {
+        let dirs: Vec<String> = dirs.iter().map(|d| d.display().to_string()).collect();
+        InputError::new("scene", name, format!("a scene or study point of {}", dirs.join(", "))).into()
+    })
+}
+
+impl SceneSource {
+    /// The scene as TOML text: the file's, or the study point's table (with its name).
+    pub fn text(&self) -> Result<String, Error> {
+        match &self.study {
+            None => {
+                Ok(crate::safety::read::read_text(&self.path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")?)
+            }
+            Some((doc, _)) => Ok(doc.to_string()),
+        }
+    }
 }
 
 /// Validate every scene first (bad input stops the run before anything is computed), then run
 /// them in parallel. The results come back in the files' order whatever the thread count.
-pub fn run(files: &[PathBuf], progress: bool) -> Result<Vec<SceneResult>, Error> {
-    let problems = files.iter().map(|f| pipeline::load(f, &[])).collect::<Result<Vec<_>, _>>()?;
+pub fn run(files: &[SceneSource], progress: bool) -> Result<Vec<SceneResult>, Error> {
+    let problems = files.iter().map(|f| pipeline::load_source(f, &[])).collect::<Result<Vec<_>, _>>()?;
     // Two scenes of one name would write one result folder: refuse before anything runs.
     for (i, p) in problems.iter().enumerate() {
         if let Some(j) = problems[..i].iter().position(|q| q.name == p.name) {
             return Err(InputError::new(
                 "name",
-                format!("{:?} in both {} and {}", p.name, files[j].display(), files[i].display()),
+                format!("{:?} in both {} and {}", p.name, files[j].path.display(), files[i].path.display()),
                 "distinct scene names in one run",
             )
             .into());

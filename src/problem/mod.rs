@@ -108,6 +108,8 @@ pub struct Problem {
     pub external: Vec<ExternalSolver>,
     pub limits: Limits,
     pub scene_dir: PathBuf,
+    /// The studies the scene is a point of ([`crate::scene::study`]).
+    pub studies: Vec<crate::scene::study::StudyPoint>,
     pub warnings: Vec<String>,
 }
 
@@ -189,6 +191,7 @@ impl Problem {
             external: scene.external.clone(),
             limits: scene.limits,
             scene_dir: scene.dir.clone(),
+            studies: scene.studies.clone(),
             warnings,
         };
         problem.check_derived()?;

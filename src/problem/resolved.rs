@@ -71,6 +71,9 @@ pub struct ResolvedScene {
     /// `check` knows which blessed scenes a suite must produce.
     #[serde(default)]
     pub suite: String,
+    /// The studies the scene is a point of (absent for a scene of its own).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub studies: Vec<crate::scene::study::StudyPoint>,
     /// The loading at every row (step 0 = the initial state at t = 0, when the scene has one).
     pub history: Vec<Sample>,
 }
@@ -134,6 +137,7 @@ impl ResolvedScene {
                 (0..g.len()).map(|k| h[g.index(g.mx - 1 - k % g.mx, k / g.mx)]).collect()
             }),
             suite: p.scene_dir.file_name().map(|n| n.to_string_lossy().to_string()).unwrap_or_default(),
+            studies: p.studies.clone(),
             history: p.loading.initial.iter().chain(p.loading.samples.iter()).copied().collect(),
         }
     }

@@ -5,6 +5,7 @@
 
 pub mod geometry;
 pub mod reader;
+pub mod study;
 pub mod table;
 
 use crate::error::InputError;
@@ -184,6 +185,8 @@ pub struct Scene {
     pub limits: Limits,
     /// Folder of the scene file (relative paths in the scene are resolved against it).
     pub dir: PathBuf,
+    /// The studies this scene is a point of (none for a scene file of its own).
+    pub studies: Vec<study::StudyPoint>,
 }
 
 const CREEPAGE_LIMIT: Range = Range::new(-1.0, true, 1.0, true);
@@ -222,7 +225,13 @@ impl Scene {
             let at = e.span().map(|s| format!("byte {}", s.start)).unwrap_or_else(|| "?".into());
             InputError::new("scene", format!("malformed TOML at {at}"), format!("valid TOML ({msg})"))
         })?;
-        let mut top = Section::new("", &doc);
+        Scene::from_table(&doc, dir)
+    }
+
+    /// Validate a parsed scene table (a scene file's, or one point of a study); `dir` resolves
+    /// relative paths.
+    pub fn from_table(doc: &toml::Table, dir: &Path) -> Result<Scene, InputError> {
+        let mut top = Section::new("", doc);
 
         let name = top.str("name", "a name of [a-z0-9_]+")?;
         if !is_valid_name(name) {
@@ -551,6 +560,7 @@ impl Scene {
             external,
             limits,
             dir: dir.to_path_buf(),
+            studies: Vec::new(),
         };
         scene.check_sweep_points()?;
         Ok(scene)

@@ -115,3 +115,25 @@ pub fn tempdir(name: &str) -> PathBuf {
     std::fs::create_dir_all(&d).unwrap();
     d
 }
+
+/// A scene of a shipped suite (`scenes/<suite>`) by name: a scene file or a study's point.
+pub fn suite_scene(suite: &str, name: &str) -> creepbench::harness::suite::SceneSource {
+    creepbench::harness::suite::find(&[root().join("scenes").join(suite)], name).unwrap()
+}
+
+/// That scene's TOML text.
+pub fn suite_scene_text(suite: &str, name: &str) -> String {
+    suite_scene(suite, name).text().unwrap()
+}
+
+/// That scene resolved.
+pub fn suite_problem(suite: &str, name: &str, only: &[String]) -> Problem {
+    creepbench::pipeline::load_source(&suite_scene(suite, name), only).unwrap()
+}
+
+/// That scene written as `dir/<name>.toml` (for the command-line tests).
+pub fn suite_scene_file(suite: &str, name: &str, dir: &Path) -> PathBuf {
+    let path = dir.join(format!("{name}.toml"));
+    std::fs::write(&path, suite_scene_text(suite, name)).unwrap();
+    path
+}

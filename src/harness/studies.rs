@@ -1,0 +1,122 @@
+//! The report's section on parameter studies ([`crate::scene::study`]): per study and metric, the
+//! metric against the varied parameter, one curve per model (and per value of the other axes),
+//! with the references' values of the same metric as markers where a reference holds the scene.
+//! Reads stored results (scene.json `studies`, metrics.csv) and reference data only.
+
+use super::plot::{line_chart, Series};
+use super::references::References;
+use super::results::StoredScene;
+use super::sections::Section;
+use crate::scene::study::StudyPoint;
+use std::collections::BTreeMap;
+use std::fmt::Write;
+
+/// One study's points: (scene, its place in the study).
+type Points<'a> = Vec<(&'a StoredScene, &'a StudyPoint)>;
+
+/// The metrics a study draws: those it names, else every scalar metric its scenes hold.
+fn metrics_of(points: &Points) -> Vec<String> {
+    if let Some((_, p)) = points.iter().find(|(_, p)| !p.metrics.is_empty()) {
+        return p.metrics.clone();
+    }
+    let mut names: Vec<String> =
+        points.iter().flat_map(|(s, _)| s.metrics.keys().filter(|k| k.2.is_none()).map(|k| k.1.clone())).collect();
+    names.sort();
+    names.dedup();
+    names
+}
+
+/// (label, value) of each reference's value of `metric` for the scene.
+fn reference_values(refs: &References, scene: &StoredScene, metric: &str) -> Vec<(&'static str, f64)> {
+    let mut out: Vec<(&'static str, f64)> = Vec::new();
+    for set in refs.sets() {
+        if let Some(f) = set.compare(scene).into_iter().find(|f| f.quantity == metric && f.theirs.is_finite()) {
+            out.push((set.label(), f.theirs));
+        }
+    }
+    out
+}
+
+fn value(v: Option<f64>) -> String {
+    match v {
+        Some(x) if x.is_finite() => format!("{x:.4}"),
+        _ => "—".into(),
+    }
+}
+
+/// The studies section, if any stored scene is a study point.
+pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
+    let mut studies: BTreeMap<&str, Points> = BTreeMap::new();
+    for s in scenes {
+        for p in &s.scene.studies {
+            studies.entry(p.study.as_str()).or_default().push((s, p));
+        }
+    }
+    if studies.is_empty() {
+        return None;
+    }
+    let mut body = String::from(
+        "Each study is one file (a scene template and the values it varies, `scenes/*/` files with a `[study]` table; README \"Studies\"), expanded into scenes that run and are gated like any other. Per study and metric: the metric against the varied parameter, one curve per model (and per value of the other axes), the references' values of the same scene as markers.\n",
+    );
+    let mut figures = Vec::new();
+    for (id, mut points) in studies {
+        points.sort_by(|a, b| a.1.series.cmp(&b.1.series).then(a.1.x.total_cmp(&b.1.x)));
+        let (title, x_key) = (&points[0].1.title, &points[0].1.x_key);
+        let _ = writeln!(body, "\n### {title}\n\nStudy `{id}`: {} scenes, x = `{x_key}`.\n", points.len());
+        let mut solvers: Vec<&str> = points.iter().flat_map(|(s, _)| s.histories.keys().map(String::as_str)).collect();
+        solvers.sort();
+        solvers.dedup();
+        for metric in metrics_of(&points) {
+            let mut series: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
+            let mut marks: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
+            let _ = writeln!(
+                body,
+                "| {x_key} | series | {} | reference |\n|{}",
+                solvers.join(" | "),
+                "---|".repeat(solvers.len() + 3)
+            );
+            for (s, p) in &points {
+                let tag =
+                    |name: &str| if p.series.is_empty() { name.to_string() } else { format!("{name} ({})", p.series) };
+                let mut cells = Vec::new();
+                for solver in &solvers {
+                    let v = s.metric(solver, &metric);
+                    if let Some(v) = v.filter(|v| v.is_finite()) {
+                        series.entry(tag(solver)).or_default().push((p.x, v));
+                    }
+                    cells.push(value(v));
+                }
+                let refs_here = reference_values(refs, s, &metric);
+                for (label, v) in &refs_here {
+                    marks.entry(tag(label)).or_default().push((p.x, *v));
+                }
+                let reference: Vec<String> = refs_here.iter().map(|(l, v)| format!("{l} {v:.4}")).collect();
+                let series_cell = if p.series.is_empty() { "—" } else { p.series.as_str() };
+                let _ = writeln!(
+                    body,
+                    "| {} | {series_cell} | {} | {} |",
+                    p.x,
+                    cells.join(" | "),
+                    if reference.is_empty() { "—".into() } else { reference.join(", ") }
+                );
+            }
+            if series.is_empty() {
+                continue;
+            }
+            let plotted: Vec<Series> = series
+                .into_iter()
+                .map(|(label, points)| Series { label, points, markers: false })
+                .chain(marks.into_iter().map(|(label, points)| Series { label, points, markers: true }))
+                .collect();
+            let positive = points.iter().all(|(_, p)| p.x > 0.0);
+            let ratio = points.iter().map(|(_, p)| p.x).fold(0.0, f64::max)
+                / points.iter().map(|(_, p)| p.x).fold(f64::INFINITY, f64::min);
+            let log_x = positive && ratio > 20.0;
+            let file = format!("study_{id}_{metric}.svg");
+            let svg = line_chart(&format!("{title}: {metric}"), x_key, &metric, &plotted, log_x);
+            let _ = writeln!(body, "\n![{id} {metric}](figures/{file})\n");
+            figures.push((file, svg));
+        }
+    }
+    Some(Section { title: "Parameter studies".into(), body, figures })
+}

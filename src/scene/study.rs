@@ -1,0 +1,275 @@
+//! Parameter studies (issue 14): one file holding a scene template and the values to vary,
+//! expanded into ordinary scenes with deterministic names. Axes are crossed (the first outermost);
+//! the keys of one axis vary together (e.g. a load with its semi-axes).
+//!
+//! ```toml
+//! [study]
+//! name = "sine_mu"                       # the study's id (report)
+//! title = "Friction at 10 Hz (thesis Fig. 4.11)"
+//! scene_name = "sine_f10_mu{mu}"         # {axis} = that axis's label (default: name_axislabel_…)
+//! x = "mu"                               # the axis on the curves' x (default: the first)
+//! metrics = ["delay_ratio", "loop_area"] # the curves drawn (default: every scalar metric)
+//!
+//! [[study.axis]]
+//! name = "mu"
+//! "contact.mu" = [0.1, 0.2, 1.0]         # a dotted scene key and its values
+//! labels = ["01", "02", "10"]            # optional: name parts (default: the values, compact)
+//!
+//! [scene]                                # the template: a whole scene without `name`
+//! solvers = ["uba", "contact"]
+//! # ...
+//! ```
+
+use crate::error::InputError;
+use serde::{Deserialize, Serialize};
+use toml::{Table, Value};
+
+/// Where a scene sits in a study (scene.json `studies`, read by the report).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StudyPoint {
+    /// The study's id and title.
+    pub study: String,
+    pub title: String,
+    /// The varied key on the curves' x axis (e.g. `creepage.freq_hz`) and its value here.
+    pub x_key: String,
+    pub x: f64,
+    /// The labels of the other axes at this point: one curve per model and series.
+    pub series: String,
+    /// The metrics the study draws against x.
+    pub metrics: Vec<String>,
+}
+
+/// One scene of a study: its name, its scene table and its place in the study.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Expanded {
+    pub name: String,
+    pub doc: Table,
+    pub point: StudyPoint,
+}
+
+/// Whether a parsed TOML file is a study (it has a `[study]` table).
+pub fn is_study(doc: &Table) -> bool {
+    doc.contains_key("study")
+}
+
+struct Axis {
+    name: String,
+    keys: Vec<(String, Vec<Value>)>,
+    labels: Vec<String>,
+}
+
+fn err(field: impl Into<String>, value: impl std::fmt::Display, allowed: impl Into<String>) -> InputError {
+    InputError::new(field, value, allowed)
+}
+
+/// A value as part of a scene name: numbers compact (`0.5` → `0p5`, `-1` → `m1`), strings as given.
+fn label_of(v: &Value) -> String {
+    match v {
+        Value::Integer(i) => i.to_string().replace('-', "m"),
+        Value::Float(f) => format!("{f}").replace('-', "m").replace('.', "p"),
+        Value::String(s) => s.clone(),
+        other => other.to_string(),
+    }
+}
+
+fn as_f64(v: &Value) -> Option<f64> {
+    match v {
+        Value::Integer(i) => Some(*i as f64),
+        Value::Float(f) => Some(*f),
+        _ => None,
+    }
+}
+
+fn read_axis(n: usize, t: &Value) -> Result<Axis, InputError> {
+    let field = format!("study.axis[{n}]");
+    let t = t.as_table().ok_or_else(|| err(&field, t, "a table: name, dotted scene keys with value lists, labels"))?;
+    let name = match t.get("name") {
+        Some(Value::String(s))
+            if !s.is_empty() && s.bytes().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'_') =>
+        {
+            s.clone()
+        }
+        Some(v) => return Err(err(format!("{field}.name"), v, "a name of [a-z0-9_]+")),
+        None => return Err(err(format!("{field}.name"), "missing", "a name of [a-z0-9_]+")),
+    };
+    let mut keys = Vec::new();
+    for (k, v) in t.iter().filter(|(k, _)| *k != "name" && *k != "labels") {
+        let values = v
+            .as_array()
+            .filter(|a| !a.is_empty())
+            .ok_or_else(|| err(format!("{field}.\"{k}\""), v, "a non-empty array of values"))?;
+        if k.split('.').any(str::is_empty) || k == "name" {
+            return Err(err(format!("{field}"), format!("{k:?}"), "dotted scene keys such as \"contact.mu\""));
+        }
+        keys.push((k.clone(), values.clone()));
+    }
+    let len = keys.first().map(|(_, v)| v.len()).ok_or_else(|| {
+        err(
+            &field,
+            "no varied key",
+            "at least one dotted scene key with a list of values, e.g. \"contact.mu\" = [0.1, 0.2]",
+        )
+    })?;
+    if let Some((k, v)) = keys.iter().find(|(_, v)| v.len() != len) {
+        return Err(err(
+            format!("{field}.\"{k}\""),
+            format!("{} values", v.len()),
+            format!("{len} values, as the axis's first key"),
+        ));
+    }
+    let labels = match t.get("labels") {
+        None => keys[0].1.iter().map(label_of).collect(),
+        Some(Value::Array(a)) if a.len() == len && a.iter().all(Value::is_str) => {
+            a.iter().filter_map(|v| v.as_str().map(String::from)).collect()
+        }
+        Some(v) => return Err(err(format!("{field}.labels"), v, format!("{len} strings, one per value"))),
+    };
+    Ok(Axis { name, keys, labels })
+}
+
+/// Set the dotted key `path` of `doc` to `value`, creating tables on the way.
+fn set(doc: &mut Table, path: &str, value: Value, field: &str) -> Result<(), InputError> {
+    let mut parts: Vec<&str> = path.split('.').collect();
+    let last = parts.pop().unwrap_or(path);
+    let mut t = doc;
+    for p in parts {
+        let entry = t.entry(p.to_string()).or_insert_with(|| Value::Table(Table::new()));
+        t = entry
+            .as_table_mut()
+            .ok_or_else(|| err(field, format!("{path:?}"), format!("a key inside a table; {p:?} is a value")))?;
+    }
+    t.insert(last.to_string(), value);
+    Ok(())
+}
+
+/// Expand a study file's table into its scenes, in axis order (the first axis outermost).
+pub fn expand(doc: &Table) -> Result<Vec<Expanded>, InputError> {
+    if let Some(k) = doc.keys().find(|k| *k != "study" && *k != "scene") {
+        return Err(err(k.as_str(), "given", "a study file holds only [study] and [scene]"));
+    }
+    let study =
+        doc.get("study").and_then(Value::as_table).ok_or_else(|| err("study", "not a table", "a [study] table"))?;
+    let template = doc
+        .get("scene")
+        .and_then(Value::as_table)
+        .ok_or_else(|| err("scene", "missing", "a [scene] table: the template scene without `name`"))?;
+    if template.contains_key("name") {
+        return Err(err(
+            "scene.name",
+            "given",
+            "no name in the template: the study names its scenes (study.scene_name)",
+        ));
+    }
+    let allowed = ["name", "title", "scene_name", "x", "metrics", "axis"];
+    if let Some(k) = study.keys().find(|k| !allowed.contains(&k.as_str())) {
+        return Err(err(format!("study.{k}"), "given", format!("one of {}", allowed.join(", "))));
+    }
+    let text = |k: &str| -> Result<Option<String>, InputError> {
+        match study.get(k) {
+            None => Ok(None),
+            Some(Value::String(s)) => Ok(Some(s.clone())),
+            Some(v) => Err(err(format!("study.{k}"), v, "a string")),
+        }
+    };
+    let name = text("name")?.ok_or_else(|| err("study.name", "missing", "a name of [a-z0-9_]+"))?;
+    let title = text("title")?.unwrap_or_else(|| name.clone());
+    let axes: Vec<Axis> = match study.get("axis") {
+        Some(Value::Array(a)) if !a.is_empty() => {
+            a.iter().enumerate().map(|(n, t)| read_axis(n, t)).collect::<Result<_, _>>()?
+        }
+        other => {
+            let v = other.map(|v| v.to_string()).unwrap_or_else(|| "missing".into());
+            return Err(err("study.axis", v, "one or more [[study.axis]] tables"));
+        }
+    };
+    for (i, a) in axes.iter().enumerate() {
+        if axes[..i].iter().any(|b| b.name == a.name) {
+            return Err(err(format!("study.axis[{i}].name"), format!("{:?}", a.name), "distinct axis names"));
+        }
+    }
+    let x_axis = match text("x")? {
+        None => 0,
+        Some(x) => axes.iter().position(|a| a.name == x).ok_or_else(|| {
+            let names: Vec<&str> = axes.iter().map(|a| a.name.as_str()).collect();
+            err("study.x", format!("{x:?}"), format!("one of the axes: {}", names.join(", ")))
+        })?,
+    };
+    if axes[x_axis].keys[0].1.iter().any(|v| as_f64(v).is_none()) {
+        return Err(err(
+            format!("study.axis[{x_axis}]"),
+            format!("{:?}", axes[x_axis].keys[0].0),
+            "numbers on the x axis",
+        ));
+    }
+    let metrics = match study.get("metrics") {
+        None => Vec::new(),
+        Some(Value::Array(a)) => a
+            .iter()
+            .map(|m| match m.as_str() {
+                Some(s) if crate::metrics::by_name(s).is_some() => Ok(s.to_string()),
+                _ => Err(err("study.metrics", m, format!("names from {}", crate::metrics::names().join(", ")))),
+            })
+            .collect::<Result<_, _>>()?,
+        Some(v) => return Err(err("study.metrics", v, "an array of metric names")),
+    };
+    let pattern = match text("scene_name")? {
+        Some(p) => p,
+        None => std::iter::once(name.clone())
+            .chain(axes.iter().map(|a| format!("{}{{{}}}", a.name, a.name)))
+            .collect::<Vec<_>>()
+            .join("_"),
+    };
+    for a in &axes {
+        if !pattern.contains(&format!("{{{}}}", a.name)) {
+            return Err(err(
+                "study.scene_name",
+                format!("{pattern:?}"),
+                format!("a pattern naming every axis, e.g. {{{}}}: distinct names per scene", a.name),
+            ));
+        }
+    }
+    let total: usize = axes.iter().map(|a| a.labels.len()).product();
+    let mut out = Vec::with_capacity(total);
+    for n in 0..total {
+        // Mixed radix, the last axis fastest.
+        let mut rest = n;
+        let mut at = vec![0; axes.len()];
+        for (i, a) in axes.iter().enumerate().rev() {
+            at[i] = rest % a.labels.len();
+            rest /= a.labels.len();
+        }
+        let mut scene = template.clone();
+        let mut scene_name = pattern.clone();
+        for (a, &k) in axes.iter().zip(&at) {
+            for (key, values) in &a.keys {
+                set(&mut scene, key, values[k].clone(), &format!("study.axis {:?} key {key:?}", a.name))?;
+            }
+            scene_name = scene_name.replace(&format!("{{{}}}", a.name), &a.labels[k]);
+        }
+        scene.insert("name".into(), Value::String(scene_name.clone()));
+        let series: Vec<String> = axes
+            .iter()
+            .zip(&at)
+            .enumerate()
+            .filter(|(i, _)| *i != x_axis)
+            .map(|(_, (a, &k))| format!("{} {}", a.name, a.labels[k]))
+            .collect();
+        let point = StudyPoint {
+            study: name.clone(),
+            title: title.clone(),
+            x_key: axes[x_axis].keys[0].0.clone(),
+            x: as_f64(&axes[x_axis].keys[0].1[at[x_axis]]).unwrap_or(f64::NAN),
+            series: series.join(", "),
+            metrics: metrics.clone(),
+        };
+        if out.iter().any(|e: &Expanded| e.name == scene_name) {
+            return Err(err(
+                "study.scene_name",
+                format!("{scene_name:?} twice"),
+                "labels that make every scene name distinct",
+            ));
+        }
+        out.push(Expanded { name: scene_name, doc: scene, point });
+    }
+    Ok(out)
+}
