@@ -46,14 +46,20 @@ impl Shard {
     }
 }
 
-/// The scene files of the folders `dirs` (sorted by scene name), restricted to `shard`.
+/// A suite folder's tolerance rules (`tolerance_file`), not a scene.
+pub const TOLERANCE_FILE: &str = "tolerances.toml";
+
+/// The scene files of the folders `dirs` (sorted by scene name), restricted to `shard`: every
+/// `*.toml` but the folder's [`TOLERANCE_FILE`].
 pub fn scene_files(dirs: &[PathBuf], shard: Option<Shard>) -> Result<Vec<PathBuf>, Error> {
     let mut files: Vec<PathBuf> = Vec::new();
     for dir in dirs {
         let entries = std::fs::read_dir(dir)
             .map_err(|e| InputError::new("--suite", dir.display(), format!("a folder of scene files ({e})")))?;
         files.extend(
-            entries.filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.extension().is_some_and(|x| x == "toml")),
+            entries
+                .filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|p| p.extension().is_some_and(|x| x == "toml") && !p.ends_with(TOLERANCE_FILE)),
         );
     }
     files.sort_by(|a, b| a.file_name().cmp(&b.file_name()));
@@ -61,6 +67,11 @@ pub fn scene_files(dirs: &[PathBuf], shard: Option<Shard>) -> Result<Vec<PathBuf
         files.retain(|p| s.takes(p.file_stem().and_then(|n| n.to_str()).unwrap_or("")));
     }
     Ok(files)
+}
+
+/// The names (file stems) of every scene of the folders, all shards.
+pub fn scene_names(dirs: &[PathBuf]) -> Result<Vec<String>, Error> {
+    Ok(scene_files(dirs, None)?.iter().filter_map(|p| Some(p.file_stem()?.to_str()?.to_string())).collect())
 }
 
 /// Validate every scene first (bad input stops the run before anything is computed), then run
