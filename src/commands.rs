@@ -8,7 +8,7 @@ use crate::harness::results::{self, StoredScene};
 use crate::harness::sections;
 use crate::harness::suite::{self, Shard};
 use crate::harness::table;
-use crate::harness::tolerance_file::{self, FileRule};
+use crate::harness::tolerance_file::{self, Rule};
 use crate::pipeline;
 use crate::safety::{folder, guard, lock};
 use std::path::{Path, PathBuf};
@@ -96,10 +96,10 @@ pub fn build_report(
     refs: &References,
     out: &Path,
     golden: Option<&Path>,
-    rules: &[FileRule],
+    rules: &[Rule],
 ) -> Result<PathBuf, Error> {
     let mut findings = compare::evaluate(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
-    tolerance_file::apply(rules, &mut findings)?;
+    tolerance_file::apply(rules, &mut findings, |_| false)?;
     let input = ReportInput { scenes, refs, findings: &findings, sections: sections::all(scenes, refs) };
     let report = report::build(&input);
     std::fs::create_dir_all(out).map_err(Error::io(out))?;
@@ -132,7 +132,7 @@ pub fn run(
         return Ok(());
     }
     let stored = read_results(&[results_dir.to_path_buf()])?;
-    let rules = file_rules(&[], suite_dir, &refs)?;
+    let rules = file_rules(&[], suite_dir)?;
     let md = build_report(&stored, &refs, report_dir, Some(golden), &rules)?;
     println!("{}", md.display());
     Ok(())
@@ -153,8 +153,18 @@ fn read_results(dirs: &[PathBuf]) -> Result<Vec<StoredScene>, Error> {
     Ok(scenes)
 }
 
-/// `creepbench merge`: one report from the result folders of several shards.
-pub fn merge(dirs: &[PathBuf], reference: &Path, report_dir: &Path, golden: &Path) -> Result<(), Error> {
+/// `creepbench merge`: one report from the result folders of several shards, judged by the same
+/// tolerance rules as `check` and `run`: the `--tolerances` files, then the `tolerances.toml` of
+/// each suite folder in `suites` that the merged scenes came from (each scene records its suite's
+/// folder name), then the defaults.
+pub fn merge(
+    dirs: &[PathBuf],
+    reference: &Path,
+    report_dir: &Path,
+    golden: &Path,
+    suites: &[PathBuf],
+    tolerances: &[PathBuf],
+) -> Result<(), Error> {
     guard::guard_not_under(report_dir, golden)?;
     let refs = References::load(reference)?;
     let scenes = read_results(dirs)?;
@@ -167,16 +177,21 @@ pub fn merge(dirs: &[PathBuf], reference: &Path, report_dir: &Path, golden: &Pat
         )
         .into());
     }
-    let md = build_report(&scenes, &refs, report_dir, Some(golden), &[])?;
+    let merged_suites: Vec<PathBuf> = suites
+        .iter()
+        .filter(|d| d.file_name().is_some_and(|n| scenes.iter().any(|s| *s.scene.suite == *n.to_string_lossy())))
+        .cloned()
+        .collect();
+    let rules = file_rules(tolerances, &merged_suites)?;
+    let md = build_report(&scenes, &refs, report_dir, Some(golden), &rules)?;
     println!("{}", md.display());
     Ok(())
 }
 
 /// The tolerance files of a run (`--tolerances`, then each suite's `tolerances.toml`), read and
 /// checked against the comparison labels this project has.
-fn file_rules(given: &[PathBuf], suite_dir: &[PathBuf], refs: &References) -> Result<Vec<FileRule>, Error> {
-    let mut labels = vec![Against::Golden.label(), Against::Previous.label()];
-    labels.extend(refs.sets().iter().map(|s| s.label()));
+fn file_rules(given: &[PathBuf], suite_dir: &[PathBuf]) -> Result<Vec<Rule>, Error> {
+    let labels = tolerance_file::labels();
     let mut rules = Vec::new();
     for path in tolerance_file::sources(given, suite_dir) {
         rules.extend(tolerance_file::load(&path, &labels)?);
@@ -254,7 +269,7 @@ pub fn check(
 ) -> Result<(), Error> {
     files.check_paths(golden)?;
     let refs = References::load(reference)?;
-    let rules = file_rules(&files.tolerances, suite_dir, &refs)?;
+    let rules = file_rules(&files.tolerances, suite_dir)?;
     let (dir, key, what, kind) = match against {
         Some(dir) => {
             (dir, "--against", "a folder of results written by `creepbench run` (--results)", Against::Previous)
@@ -270,7 +285,13 @@ pub fn check(
     let suites = suite_names(suite_dir);
     let expected = |name: &str, suite: &str| shard.is_none_or(|s| s.takes(name)) && suites.iter().any(|x| x == suite);
     all.extend(compare::missing_scenes(dir, &scenes, kind, expected)?);
-    tolerance_file::apply(&rules, &mut all)?;
+    // On a shard, a rule may be meant for scenes of other shards: it must cover some scene of the
+    // suites; `merge` then checks it against every comparison.
+    let other_shards: Vec<String> = match shard {
+        Some(s) => suite::scene_names(suite_dir)?.into_iter().filter(|n| !s.takes(n)).collect(),
+        None => Vec::new(),
+    };
+    tolerance_file::apply(&rules, &mut all, |r| other_shards.iter().any(|n| tolerance_file::glob(&r.scene, n)))?;
     let worst = compare::worst_per_group(&all);
     print!("{}", compare::table(&worst));
     let fails = compare::failures(&all);

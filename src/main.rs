@@ -100,7 +100,7 @@ enum Command {
         #[arg(long)]
         summary: Option<PathBuf>,
         /// Tolerance rules (TOML, [[rule]] tables) taking precedence over each suite's
-        /// tolerances.toml and the compiled defaults (repeatable; first match wins).
+        /// tolerances.toml and the project's defaults (repeatable; first match wins).
         #[arg(long)]
         tolerances: Vec<PathBuf>,
     },
@@ -114,6 +114,14 @@ enum Command {
         /// Result folders written by `run --shard i/n --results DIR`.
         #[arg(required = true)]
         dirs: Vec<PathBuf>,
+        /// Suite folders whose tolerances.toml applies to the merged scenes that came from them
+        /// (repeatable; default: the shipped suites).
+        #[arg(long, default_values = DEFAULT_SUITES)]
+        suite: Vec<PathBuf>,
+        /// Tolerance rules (TOML, [[rule]] tables) taking precedence over the suites'
+        /// tolerances.toml and the defaults, as in `check` (repeatable; first match wins).
+        #[arg(long)]
+        tolerances: Vec<PathBuf>,
         #[arg(long, default_value = "reference")]
         reference: PathBuf,
         #[arg(long, default_value = "golden")]
@@ -154,7 +162,9 @@ fn main() {
             commands::check(&s.suite, &s.reference, &s.golden, against.as_deref(), s.shard, !s.quiet, &files)
         }
         Command::Bless { suite: s } => commands::bless(&s.suite, &s.golden, s.shard, !s.quiet),
-        Command::Merge { dirs, reference, golden, report } => commands::merge(&dirs, &reference, &report, &golden),
+        Command::Merge { dirs, suite, tolerances, reference, golden, report } => {
+            commands::merge(&dirs, &reference, &report, &golden, &suite, &tolerances)
+        }
         Command::Manifest { dir } => commands::manifest(&dir),
         Command::Export { what: ExportWhat::Contact { scene, out, golden } } => {
             commands::export_contact(&scene, &out, &golden).map(|p| println!("{}", p.display()))

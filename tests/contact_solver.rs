@@ -15,7 +15,7 @@ fn thesis_problem(name: &str) -> creepbench::problem::Problem {
 }
 
 /// The gate's rule for the exact-theory solver against CONTACT (one place for the numbers).
-fn gate(quantity: &str) -> creepbench::harness::tolerances::Rule {
+fn gate(quantity: &str) -> &'static creepbench::harness::tolerances::Rule {
     creepbench::harness::tolerances::rule(creepbench::harness::references::contact::EXACT, "*", "contact", quantity)
 }
 

@@ -59,7 +59,7 @@ struct Spec {
 
 const ENVELOPE: Spec = Spec {
     title: "Envelope: lateral creepage, spin, friction and load in time, Courant number",
-    intro: "CONTACT's cases beyond the thesis family (`reference/contact_envelope/`, scenes in `scenes/envelope/`). Per case and solver: the worst |Δ| over every step or sweep point of fx/fn, fy/fn and mz/(FN a) (a: the nominal semi-axis along x; step in brackets). Gated for `contact` at 1e-5 (two cases carry a named, measured known gap: `src/harness/tolerances.rs`); the fast models are reported. Signs: CONTACT's (a positive spin gives a positive fy, Kalker's C23 > 0).",
+    intro: "CONTACT's cases beyond the thesis family (`reference/contact_envelope/`, scenes in `scenes/envelope/`). Per case and solver: the worst |Δ| over every step or sweep point of fx/fn, fy/fn and mz/(FN a) (a: the nominal semi-axis along x; step in brackets). Gated for `contact` at 1e-5 (two cases carry a named, measured known gap: `tolerances.toml`); the fast models are reported. Signs: CONTACT's (a positive spin gives a positive fy, Kalker's C23 > 0).",
     prefix: "envelope",
 };
 

@@ -47,6 +47,9 @@ impl Shard {
     }
 }
 
+/// A suite folder's tolerance rules (`tolerance_file`), not a scene.
+pub const TOLERANCE_FILE: &str = "tolerances.toml";
+
 /// One scene of a suite: a scene file, or one point of a study file ([`crate::scene::study`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct SceneSource {
@@ -59,21 +62,21 @@ pub struct SceneSource {
 }
 
 /// The scenes of the folders `dirs` — scene files and the points of study files — sorted by
-/// name and restricted to `shard` (a study's points are sharded one by one).
+/// name and restricted to `shard` (a study's points are sharded one by one); every `*.toml`
+/// but the folder's [`TOLERANCE_FILE`].
 pub fn scene_files(dirs: &[PathBuf], shard: Option<Shard>) -> Result<Vec<SceneSource>, Error> {
     let mut files: Vec<PathBuf> = Vec::new();
     for dir in dirs {
         let entries = std::fs::read_dir(dir)
             .map_err(|e| InputError::new("--suite", dir.display(), format!("a folder of scene files ({e})")))?;
         files.extend(
-            entries.filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.extension().is_some_and(|x| x == "toml")),
+            entries
+                .filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|p| p.extension().is_some_and(|x| x == "toml") && !p.ends_with(TOLERANCE_FILE)),
         );
     }
     let mut out: Vec<SceneSource> = Vec::new();
     for path in files {
-        if path.file_stem().is_some_and(|s| s == "tolerances") {
-            continue;
-        }
         for point in sources_of_file(&path)? {
             // A point two studies share (same name, same scene) runs once, in both.
             if let Some(twin) = out.iter_mut().find(|s| s.name == point.name) {
@@ -141,6 +144,11 @@ impl SceneSource {
             Some((doc, _)) => Ok(doc.to_string()),
         }
     }
+}
+
+/// The names of every scene of the folders (scene files' stems and study points), all shards.
+pub fn scene_names(dirs: &[PathBuf]) -> Result<Vec<String>, Error> {
+    Ok(scene_files(dirs, None)?.into_iter().map(|s| s.name).collect())
 }
 
 /// Validate every scene first (bad input stops the run before anything is computed), then run

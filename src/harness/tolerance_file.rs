@@ -1,7 +1,7 @@
-//! Tolerances as reviewed data (issue 15): TOML files of rules that take precedence over the
-//! compiled defaults ([`super::tolerances::RULES`], which stay the project's default and reproduce
-//! the gate exactly when no file is given). Sources, first match wins: each `--tolerances FILE`
-//! in order, then each suite folder's `tolerances.toml`, then the compiled rules.
+//! Tolerance files (issue 15): TOML files of `[[rule]]` tables. The project's defaults are one
+//! ([`super::tolerances`], `tolerances.toml`, embedded in the binary); a run's files layer over
+//! them. Sources, first match wins: each `--tolerances FILE` in order, then each suite folder's
+//! `tolerances.toml`, then the defaults (which alone decide when no file is given).
 //!
 //! ```toml
 //! [[rule]]
@@ -15,28 +15,17 @@
 //! why = "our model's accepted gap against the exact theory"
 //! ```
 //!
-//! An unknown key, a label no comparison uses, or a rule that matches no comparison of the run is
-//! an input error naming the file and the rule.
+//! `abs` is required for a gated rule; a reported rule (`gated = false`) may omit it and then has
+//! no tolerance (∞: TOML's `inf` is not accepted, there is one way to say it). An unknown key, a
+//! label no comparison uses, or — in a run's files, not in the defaults — a rule that matches no
+//! comparison of the run is an input error naming the file and the rule.
 
+use super::against::Against;
 use super::compare::Finding;
+pub use super::tolerances::Rule;
 use crate::error::InputError;
 use crate::scene::reader::{Range, Section};
 use std::path::{Path, PathBuf};
-
-/// One rule read from a file.
-#[derive(Debug, Clone, PartialEq)]
-pub struct FileRule {
-    /// `FILE rule[n]`, for messages.
-    pub origin: String,
-    pub against: String,
-    pub scene: String,
-    pub solver: String,
-    pub quantity: String,
-    pub abs: f64,
-    pub rel: f64,
-    pub gated: bool,
-    pub why: String,
-}
 
 /// `*`-wildcard match of the whole text.
 pub fn glob(pattern: &str, text: &str) -> bool {
@@ -58,31 +47,28 @@ pub fn glob(pattern: &str, text: &str) -> bool {
     true
 }
 
-impl FileRule {
-    fn covers(&self, f: &Finding) -> bool {
-        self.against == f.against.label()
-            && glob(&self.scene, &f.scene)
-            && glob(&self.solver, &f.solver)
-            && glob(&self.quantity, &f.quantity)
-    }
-}
-
-/// Read a rule file; `labels` are the comparison labels a rule may name.
-pub fn load(path: &Path, labels: &[&str]) -> Result<Vec<FileRule>, InputError> {
+/// Read a rule file; `labels` are the comparisons a rule may name.
+pub fn load(path: &Path, labels: &[Against]) -> Result<Vec<Rule>, InputError> {
     let name = path.display().to_string();
     let text = crate::safety::read::read_text(path, crate::safety::read::SCENE_LIMIT_BYTES, "tolerance file").map_err(
         |e| InputError::new("--tolerances", &name, format!("a readable TOML file of [[rule]] tables ({e})")),
     )?;
+    parse(&text, &name, labels)
+}
+
+/// Parse the text of a rule file called `name` (in messages and each rule's origin).
+pub fn parse(text: &str, name: &str, labels: &[Against]) -> Result<Vec<Rule>, InputError> {
     let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| {
-        InputError::new(&name, "malformed TOML", format!("valid TOML ({})", e.message()))
+        InputError::new(name, "malformed TOML", format!("valid TOML ({})", e.message()))
     })?;
     if let Some(key) = doc.keys().find(|k| *k != "rule") {
         return Err(InputError::new(format!("{name} {key}"), "given", "only [[rule]] tables"));
     }
     let Some(toml::Value::Array(items)) = doc.get("rule") else {
-        return Err(InputError::new(&name, "no [[rule]] table", "at least one [[rule]] table"));
+        return Err(InputError::new(name, "no [[rule]] table", "at least one [[rule]] table"));
     };
-    let allowed_against = format!("one of {}", labels.join(", "));
+    let names: Vec<&str> = labels.iter().map(|l| l.label()).collect();
+    let allowed_against = format!("one of {}", names.join(", "));
     let mut out = Vec::new();
     for (n, item) in items.iter().enumerate() {
         let origin = format!("{name} rule[{n}]");
@@ -90,49 +76,74 @@ pub fn load(path: &Path, labels: &[&str]) -> Result<Vec<FileRule>, InputError> {
             return Err(InputError::new(&origin, "not a table", "a [[rule]] table"));
         };
         let mut s = Section::new(origin.clone(), t);
-        let against = s.str("against", &allowed_against)?.to_string();
-        if !labels.contains(&against.as_str()) {
-            return Err(InputError::new(s.field("against"), format!("{against:?}"), allowed_against));
-        }
+        let label = s.str("against", &allowed_against)?;
+        let Some(&against) = labels.iter().find(|l| l.label() == label) else {
+            return Err(InputError::new(s.field("against"), format!("{label:?}"), allowed_against));
+        };
         let pattern = |s: &mut Section, key: &str| -> Result<String, InputError> {
             Ok(s.opt_str(key, "a name or a pattern with *")?.unwrap_or("*").to_string())
         };
         let (scene, solver, quantity) =
             (pattern(&mut s, "scene")?, pattern(&mut s, "solver")?, pattern(&mut s, "quantity")?);
-        let tol = Range::new(0.0, true, f64::INFINITY, true);
-        let abs = s.f64("abs", tol)?;
-        let rel = s.opt_f64("rel", tol)?.unwrap_or(0.0);
         let gated = s.opt_bool("gated")?.unwrap_or(true);
+        let tol = Range::new(0.0, true, f64::INFINITY, true);
+        let abs = match s.opt_f64("abs", tol)? {
+            Some(abs) => abs,
+            None if !gated => f64::INFINITY,
+            None => {
+                return Err(InputError::new(
+                    s.field("abs"),
+                    "missing",
+                    format!(
+                        "required for a gated rule: {} (a reported rule, gated = false, may omit it)",
+                        tol.describe()
+                    ),
+                ))
+            }
+        };
+        let rel = s.opt_f64("rel", tol)?.unwrap_or(0.0);
         let why = s.str("why", "the reason for this tolerance (reviewed with it)")?.to_string();
         s.finish()?;
-        out.push(FileRule { origin, against, scene, solver, quantity, abs, rel, gated, why });
+        out.push(Rule { origin, against, scene, solver, quantity, abs, rel, gated, why });
     }
     Ok(out)
 }
 
+/// The comparisons a run's rule files may name: golden, previous and every reference set's.
+pub fn labels() -> Vec<Against> {
+    [Against::Golden, Against::Previous].into_iter().chain(super::references::LABELS).collect()
+}
+
 /// Every rule file of a run: the `--tolerances` files, then each suite folder's `tolerances.toml`.
 pub fn sources(given: &[PathBuf], suite_dirs: &[PathBuf]) -> Vec<PathBuf> {
-    let suite_files = suite_dirs.iter().map(|d| d.join("tolerances.toml")).filter(|p| p.is_file());
+    let suite_files = suite_dirs.iter().map(|d| d.join(super::suite::TOLERANCE_FILE)).filter(|p| p.is_file());
     given.iter().cloned().chain(suite_files).collect()
 }
 
-/// Re-judge every finding by the first file rule that covers it (the compiled rule stays where
-/// none does). A rule that covers no finding is an error: a pattern that matches nothing is a
-/// typo, not a tolerance.
-pub fn apply(rules: &[FileRule], findings: &mut [Finding]) -> Result<(), InputError> {
+/// Re-judge every finding by the first file rule that covers it (the default rule stays where
+/// none does). A rule that covers no finding is an error — a pattern that matches nothing is a
+/// typo, not a tolerance — unless `elsewhere` says it is meant for comparisons this run does not
+/// make (a shard's check: scenes of other shards).
+pub fn apply(rules: &[Rule], findings: &mut [Finding], elsewhere: impl Fn(&Rule) -> bool) -> Result<(), InputError> {
     let mut used = vec![false; rules.len()];
     for f in findings.iter_mut() {
-        if let Some(i) = rules.iter().position(|r| r.covers(f)) {
+        if let Some(i) = rules.iter().position(|r| r.covers(f.against, &f.scene, &f.solver, &f.quantity)) {
             used[i] = true;
             f.allowed = rules[i].abs + rules[i].rel * f.theirs.abs();
             f.gated = rules[i].gated;
         }
     }
-    if let Some(i) = used.iter().position(|u| !u) {
+    if let Some(i) = (0..rules.len()).find(|&i| !used[i] && !elsewhere(&rules[i])) {
         let r = &rules[i];
         return Err(InputError::new(
             &r.origin,
-            format!("against {:?}, scene {:?}, solver {:?}, quantity {:?}", r.against, r.scene, r.solver, r.quantity),
+            format!(
+                "against {:?}, scene {:?}, solver {:?}, quantity {:?}",
+                r.against.label(),
+                r.scene,
+                r.solver,
+                r.quantity
+            ),
             "a rule that matches at least one comparison of this run (check the names and patterns)",
         ));
     }
@@ -141,7 +152,29 @@ pub fn apply(rules: &[FileRule], findings: &mut [Finding]) -> Result<(), InputEr
 
 #[cfg(test)]
 mod tests {
-    use super::glob;
+    use super::{glob, labels, parse};
+    use crate::harness::references::contact;
+
+    fn one(body: &str) -> Result<super::Rule, String> {
+        let text = format!("[[rule]]\n{body}\nwhy = \"test\"\n");
+        parse(&text, "t.toml", &labels()).map(|mut v| v.remove(0)).map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn a_reported_rule_may_omit_its_tolerance_a_gated_one_may_not() {
+        let r = one("against = \"CONTACT FASTSIM\"\ngated = false").unwrap();
+        assert_eq!((r.against, r.abs, r.rel, r.gated), (contact::FASTSIM, f64::INFINITY, 0.0, false));
+        assert_eq!(r.origin, "t.toml rule[0]");
+        let r = one("against = \"previous\"\nquantity = \"fx_*\"\nabs = 1e-3\nrel = 0.5").unwrap();
+        assert_eq!((r.abs, r.rel, r.gated, r.quantity.as_str()), (1e-3, 0.5, true, "fx_*"));
+        let e = one("against = \"golden\"").unwrap_err();
+        assert!(e.contains("t.toml rule[0].abs") && e.contains("required for a gated rule"), "{e}");
+        // TOML's inf is refused: no tolerance is said by leaving abs out of a reported rule.
+        let e = one("against = \"golden\"\ngated = false\nabs = inf").unwrap_err();
+        assert!(e.contains("rule[0].abs") && e.contains("inf"), "{e}");
+        let e = one("against = \"golden\"\nabs = -1.0").unwrap_err();
+        assert!(e.contains("rule[0].abs"), "{e}");
+    }
 
     #[test]
     fn glob_matches_whole_names() {

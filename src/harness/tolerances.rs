@@ -1,24 +1,36 @@
-//! Every tolerance of the gates, in one reviewed place. A comparison passes when
-//! `|ours − theirs| ≤ abs + rel·|theirs|`. Changing a number here is a reviewed decision: say why.
+//! The project's default tolerances (issue 15, tolerances as reviewed data): the `[[rule]]` tables
+//! of `tolerances.toml` at the repository's top, in the format of tolerance files
+//! ([`super::tolerance_file`]), each with its reason. The file is embedded into the binary
+//! (`include_str!`, so an installed binary has it) and parsed once, on first use. A comparison
+//! passes when `|ours − theirs| ≤ abs + rel·|theirs|`; the first rule that covers it wins.
 
 use super::against::Against;
-use super::tolerance_file::glob;
+use super::references;
+use super::tolerance_file::{self, glob};
+use std::sync::LazyLock;
 
-/// One rule: which comparison it covers, its tolerance, and whether a miss fails the gate.
-#[derive(Debug, Clone, Copy)]
+/// The defaults' file, as messages name it (embedded at build time).
+pub const DEFAULT_FILE: &str = "tolerances.toml";
+const DEFAULT_TEXT: &str = include_str!("../../tolerances.toml");
+
+/// One rule: which comparisons it covers, its tolerance, and whether a miss fails the gate.
+#[derive(Debug, Clone, PartialEq)]
 pub struct Rule {
+    /// Where it was read, `FILE rule[n]` (messages).
+    pub origin: String,
     pub against: Against,
-    /// Scene name or `*` pattern ([`glob`], as in tolerance files).
-    pub scene: &'static str,
-    /// Solver name, or "*" for any.
-    pub solver: &'static str,
-    /// Column (`fx_over_fn`, `fy_over_fn`, `iterations`) or metric name, or "*" for any.
-    pub quantity: &'static str,
+    /// Scene name or `*` pattern ([`glob`]).
+    pub scene: String,
+    /// Solver name or pattern.
+    pub solver: String,
+    /// Column (`fx_over_fn`, `iterations`, …) or metric name, or pattern.
+    pub quantity: String,
+    /// Absolute tolerance; ∞ for a reported rule given without one.
     pub abs: f64,
     pub rel: f64,
     /// A miss fails `creepbench check` (exit 1); otherwise it is only reported.
     pub gated: bool,
-    pub why: &'static str,
+    pub why: String,
 }
 
 impl Rule {
@@ -26,63 +38,122 @@ impl Rule {
     pub fn allowed(&self, theirs: f64) -> f64 {
         self.abs + self.rel * theirs.abs()
     }
+
+    /// Whether the rule covers this comparison (the label exactly, the names by pattern).
+    pub fn covers(&self, against: Against, scene: &str, solver: &str, quantity: &str) -> bool {
+        self.against == against
+            && glob(&self.scene, scene)
+            && glob(&self.solver, solver)
+            && glob(&self.quantity, quantity)
+    }
+
+    /// A rule that covers every comparison of its label, whatever the scene, solver and quantity:
+    /// the last word for that label (it need not match anything on a given run).
+    pub fn is_catch_all(&self) -> bool {
+        [&self.scene, &self.solver, &self.quantity].iter().all(|p| p.as_str() == "*")
+    }
 }
 
-const INF: f64 = f64::INFINITY;
+/// The labels the defaults may name: golden (which also judges `check --against`, "previous")
+/// and every reference set's.
+pub fn default_labels() -> Vec<Against> {
+    std::iter::once(Against::Golden).chain(references::LABELS).collect()
+}
 
-/// The rules, first match wins.
-pub const RULES: &[Rule] = &[
-    // Regression against this project's own blessed results (and `check --against DIR`).
-    Rule { scene: "*", against: Against::Golden, solver: "*", quantity: "iterations", abs: 2.0, rel: 0.05, gated: true, why: "iteration counts are a drift signal of the CONTACT-style solver; a few iterations of slack for floating-point differences between CPUs" },
-    Rule { scene: "*", against: Against::Golden, solver: "*", quantity: "residual", abs: INF, rel: 0.0, gated: false, why: "final residuals are reported, not gated" },
-    Rule { scene: "*", against: Against::Golden, solver: "*", quantity: "*", abs: 1e-9, rel: 1e-7, gated: true, why: "results are deterministic; the slack only absorbs floating-point differences between CPUs and libm versions" },
-    // CONTACT's exact theory on identical grids (issue 3).
-    Rule { scene: "*", against: Against::Reference("CONTACT"), solver: "contact", quantity: "fx_over_fn", abs: 1e-5, rel: 0.0, gated: true, why: "issue 12: the exact solver within 1e-5 of CONTACT at every step (issue 3 asked for 0.002; the solver reproduces CONTACT to 4e-7)" },
-    Rule { scene: "*", against: Against::Reference("CONTACT"), solver: "contact", quantity: "delay_ratio", abs: 0.005, rel: 0.0, gated: true, why: "issue 3: delay ratios within 0.005 of CONTACT's" },
-    Rule { scene: "*", against: Against::Reference("CONTACT"), solver: "contact", quantity: "loop_area", abs: 0.0, rel: 0.02, gated: true, why: "issue 3: loop areas within 2 %" },
-    Rule { scene: "*", against: Against::Reference("CONTACT"), solver: "contact", quantity: "steady_value", abs: 1e-5, rel: 0.0, gated: true, why: "same bound as every step" },
-    // Known gaps, measured and open (issue 12): the first step after a steady start at which the
-    // friction or the load changes is off by these amounts (the error decays over one contact
-    // length; every other step of these cases is within 1e-6). Each rule names its scene; delete it
-    // when the gap closes.
-    Rule { scene: "mu_ramp", against: Against::Reference("CONTACT envelope"), solver: "contact", quantity: "fx_over_fn", abs: 1.5e-3, rel: 0.0, gated: true, why: "KNOWN GAP (issue 12): 1.39e-3 at step 1, mu 0.4 -> 0.394 right after the steady start; target 1e-5" },
-    Rule { scene: "fn_sine_f20", against: Against::Reference("CONTACT envelope"), solver: "contact", quantity: "fx_over_fn", abs: 1.5e-4, rel: 0.0, gated: true, why: "KNOWN GAP (issue 12): 1.36e-4 at step 1, FN 100 -> 99.88 kN right after the steady start; target 1e-5" },
-    // CONTACT's exact theory beyond the thesis family (issue 12): every step, both components and
-    // the spin moment made dimensionless by FN a.
-    Rule { scene: "*", against: Against::Reference("CONTACT envelope"), solver: "contact", quantity: "fx_over_fn", abs: 1e-5, rel: 0.0, gated: true, why: "issue 12: the exact solver within 1e-5 of CONTACT in fx/fn at every step of every envelope case" },
-    Rule { scene: "*", against: Against::Reference("CONTACT envelope"), solver: "contact", quantity: "fy_over_fn", abs: 1e-5, rel: 0.0, gated: true, why: "issue 12: fy/fn likewise" },
-    Rule { scene: "*", against: Against::Reference("CONTACT envelope"), solver: "contact", quantity: "mz_over_fn_a", abs: 1e-5, rel: 0.0, gated: true, why: "issue 12: the spin moment gated like f, as mz/(FN a)" },
-    Rule { scene: "*", against: Against::Reference("CONTACT envelope"), solver: "*", quantity: "*", abs: INF, rel: 0.0, gated: false, why: "the fast models against the exact theory on the envelope: reported per case, not gated (issue 12)" },
-    // CONTACT's exact theory on non-Hertzian contacts (issue 13): as the envelope.
-    Rule { scene: "*", against: Against::Reference("CONTACT non-Hertzian"), solver: "contact", quantity: "fx_over_fn", abs: 1e-5, rel: 0.0, gated: true, why: "issue 13: the exact solver within 1e-5 of CONTACT in fx/fn at every step of every non-Hertzian case" },
-    Rule { scene: "*", against: Against::Reference("CONTACT non-Hertzian"), solver: "contact", quantity: "fy_over_fn", abs: 1e-5, rel: 0.0, gated: true, why: "issue 13: fy/fn likewise" },
-    Rule { scene: "*", against: Against::Reference("CONTACT non-Hertzian"), solver: "contact", quantity: "mz_over_fn_a", abs: 1e-5, rel: 0.0, gated: true, why: "issue 13: the spin moment as mz/(FN a), a the equivalent ellipse's" },
-    Rule { scene: "*", against: Against::Reference("CONTACT non-Hertzian"), solver: "*", quantity: "*", abs: INF, rel: 0.0, gated: false, why: "the fast models on non-Hertzian contacts: reported per case, not gated (issue 13)" },
-    // CONTACT's FASTSIM with the parabolic bound (issue 2).
-    Rule { scene: "*", against: Against::Reference("CONTACT FASTSIM"), solver: "fastsim", quantity: "fx_over_fn", abs: 0.0015, rel: 0.0, gated: true, why: "issue 2: FASTSIM within 0.0015 of CONTACT's FASTSIM at every creepage" },
-    Rule { scene: "*", against: Against::Reference("CONTACT FASTSIM"), solver: "uba", quantity: "fx_over_fn", abs: 0.0015, rel: 0.0, gated: true, why: "the steady UBA is FASTSIM's grid march (same discretisation)" },
-    // The simplified models against the exact theory, and the thesis's figures: reported, not gated.
-    Rule { scene: "*", against: Against::Reference("CONTACT"), solver: "*", quantity: "*", abs: INF, rel: 0.0, gated: false, why: "simplified models differ from the exact theory by design; the report shows by how much" },
-    Rule { scene: "*", against: Against::Reference("CONTACT FASTSIM"), solver: "*", quantity: "*", abs: INF, rel: 0.0, gated: false, why: "reported" },
-    Rule { scene: "*", against: Against::Reference("thesis"), solver: "*", quantity: "*", abs: INF, rel: 0.0, gated: false, why: "the thesis's figures were read off its plots and used another grid treatment; reported beside ours" },
-];
+static DEFAULTS: LazyLock<Vec<Rule>> = LazyLock::new(|| {
+    tolerance_file::parse(DEFAULT_TEXT, DEFAULT_FILE, &default_labels())
+        // Compiled in and parsed by a unit test: a broken file cannot reach a build that passes.
+        .unwrap_or_else(|e| panic!("the embedded {DEFAULT_FILE} is invalid: {e}"))
+});
 
-/// The first rule covering this comparison.
-pub fn rule(against: Against, scene: &str, solver: &str, quantity: &str) -> Rule {
-    let against_key = if against == Against::Previous { Against::Golden } else { against };
-    *RULES
-        .iter()
-        .find(|r| {
-            r.against == against_key && glob(r.scene, scene) && glob(r.solver, solver) && glob(r.quantity, quantity)
-        })
-        .unwrap_or(&Rule {
-            scene: "*",
-            against,
-            solver: "*",
-            quantity: "*",
-            abs: INF,
-            rel: 0.0,
-            gated: false,
-            why: "no rule",
-        })
+/// What a comparison no rule covers gets: reported, no tolerance. (Every label of the defaults
+/// ends in a catch-all, so it is never used by them.)
+static NO_RULE: LazyLock<Rule> = LazyLock::new(|| Rule {
+    origin: "no rule".into(),
+    against: Against::Golden,
+    scene: "*".into(),
+    solver: "*".into(),
+    quantity: "*".into(),
+    abs: f64::INFINITY,
+    rel: 0.0,
+    gated: false,
+    why: "no rule".into(),
+});
+
+/// The project's default rules, in order (first match wins).
+pub fn defaults() -> &'static [Rule] {
+    &DEFAULTS
+}
+
+/// The first default rule covering this comparison; `previous` is judged as `golden`.
+pub fn rule(against: Against, scene: &str, solver: &str, quantity: &str) -> &'static Rule {
+    let against = if against == Against::Previous { Against::Golden } else { against };
+    defaults().iter().find(|r| r.covers(against, scene, solver, quantity)).unwrap_or(&NO_RULE)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::harness::references::{contact, envelope, thesis};
+
+    const INF: f64 = f64::INFINITY;
+
+    /// The compiled `RULES` table as it stood before the rules became data (commit 2451b71):
+    /// (against, scene, solver, quantity, abs, rel, gated), in order.
+    const FROZEN: [(Against, &str, &str, &str, f64, f64, bool); 22] = [
+        (Against::Golden, "*", "*", "iterations", 2.0, 0.05, true),
+        (Against::Golden, "*", "*", "residual", INF, 0.0, false),
+        (Against::Golden, "*", "*", "*", 1e-9, 1e-7, true),
+        (contact::EXACT, "*", "contact", "fx_over_fn", 1e-5, 0.0, true),
+        (contact::EXACT, "*", "contact", "delay_ratio", 0.005, 0.0, true),
+        (contact::EXACT, "*", "contact", "loop_area", 0.0, 0.02, true),
+        (contact::EXACT, "*", "contact", "steady_value", 1e-5, 0.0, true),
+        (envelope::ENVELOPE, "mu_ramp", "contact", "fx_over_fn", 1.5e-3, 0.0, true),
+        (envelope::ENVELOPE, "fn_sine_f20", "contact", "fx_over_fn", 1.5e-4, 0.0, true),
+        (envelope::ENVELOPE, "*", "contact", "fx_over_fn", 1e-5, 0.0, true),
+        (envelope::ENVELOPE, "*", "contact", "fy_over_fn", 1e-5, 0.0, true),
+        (envelope::ENVELOPE, "*", "contact", "mz_over_fn_a", 1e-5, 0.0, true),
+        (envelope::ENVELOPE, "*", "*", "*", INF, 0.0, false),
+        (envelope::NONHERTZ, "*", "contact", "fx_over_fn", 1e-5, 0.0, true),
+        (envelope::NONHERTZ, "*", "contact", "fy_over_fn", 1e-5, 0.0, true),
+        (envelope::NONHERTZ, "*", "contact", "mz_over_fn_a", 1e-5, 0.0, true),
+        (envelope::NONHERTZ, "*", "*", "*", INF, 0.0, false),
+        (contact::FASTSIM, "*", "fastsim", "fx_over_fn", 0.0015, 0.0, true),
+        (contact::FASTSIM, "*", "uba", "fx_over_fn", 0.0015, 0.0, true),
+        (contact::EXACT, "*", "*", "*", INF, 0.0, false),
+        (contact::FASTSIM, "*", "*", "*", INF, 0.0, false),
+        (thesis::AGAINST, "*", "*", "*", INF, 0.0, false),
+    ];
+
+    #[test]
+    fn the_embedded_file_reproduces_the_compiled_table_exactly() {
+        let rules = defaults();
+        assert_eq!(rules.len(), FROZEN.len());
+        for (n, (r, f)) in rules.iter().zip(FROZEN).enumerate() {
+            let got = (r.against, r.scene.as_str(), r.solver.as_str(), r.quantity.as_str(), r.abs, r.rel, r.gated);
+            // Bit for bit: the numbers as TOML reads them are the Rust literals.
+            assert_eq!((got.0, got.1, got.2, got.3, got.6), (f.0, f.1, f.2, f.3, f.6), "rule[{n}]");
+            assert_eq!((got.4.to_bits(), got.5.to_bits()), (f.4.to_bits(), f.5.to_bits()), "rule[{n}] numbers");
+            assert!(!r.why.trim().is_empty(), "rule[{n}] says why");
+            assert_eq!(r.origin, format!("{DEFAULT_FILE} rule[{n}]"));
+        }
+    }
+
+    #[test]
+    fn every_label_ends_in_a_catch_all_and_previous_is_judged_as_golden() {
+        for label in default_labels() {
+            let last = defaults().iter().rposition(|r| r.against == label).expect("a rule per label");
+            assert!(defaults()[last].is_catch_all(), "{label:?}: last rule {:?}", defaults()[last]);
+        }
+        assert!(std::ptr::eq(
+            rule(Against::Previous, "sine_f10_mu10", "contact", "iterations"),
+            rule(Against::Golden, "sine_f10_mu10", "contact", "iterations")
+        ));
+        let r = rule(envelope::ENVELOPE, "mu_ramp", "contact", "fx_over_fn");
+        assert_eq!((r.abs, r.gated), (1.5e-3, true));
+        let r = rule(envelope::ENVELOPE, "mu_ramp", "contact", "fy_over_fn");
+        assert_eq!((r.abs, r.gated), (1e-5, true));
+        let r = rule(envelope::ENVELOPE, "mu_ramp", "uba", "fx_over_fn");
+        assert_eq!((r.allowed(0.3), r.gated), (INF, false));
+    }
 }

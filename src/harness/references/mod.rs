@@ -6,7 +6,7 @@ pub mod contact;
 pub mod envelope;
 pub mod thesis;
 
-use super::compare::Finding;
+use super::compare::{Against, Finding};
 use super::results::StoredScene;
 use crate::error::Error;
 use crate::history::History;
@@ -14,6 +14,11 @@ use std::path::Path;
 
 /// Default location of the reference data.
 pub const DEFAULT_DIR: &str = "reference";
+
+/// Every label the reference sets' findings carry (a set may use more than one: CONTACT's exact
+/// theory and its FASTSIM): what a tolerance rule may name besides golden and previous.
+pub const LABELS: [Against; 5] =
+    [contact::EXACT, contact::FASTSIM, envelope::ENVELOPE, envelope::NONHERTZ, thesis::AGAINST];
 
 /// A set of reference results.
 pub trait ReferenceSet: Send + Sync {
