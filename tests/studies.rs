@@ -207,3 +207,28 @@ fn expand_writes_scene_files() {
     let again = run();
     assert_eq!(again.status.code(), Some(2), "an existing file is not replaced");
 }
+
+/// The report's studies section, from the blessed results only: the frequency study (thesis Fig.
+/// 4.9) has a table row per point with CONTACT's delay ratio where CONTACT ran the scene (the
+/// same value the gate compares, within its 0.005), and one figure per metric.
+#[test]
+fn report_draws_the_frequency_study_with_contacts_points() {
+    use creepbench::harness::results::read_scene;
+    let golden = root().join("golden");
+    let names = ["sine_f2_mu10", "sine_f10_mu10", "sine_f30_mu10", "sine_f60_mu10", "sine_f100_mu10"];
+    let scenes: Vec<_> = names.iter().map(|n| read_scene(&golden, n).unwrap()).collect();
+    let refs = creepbench::harness::references::References::load(&root().join("reference")).unwrap();
+    let s = creepbench::harness::studies::section(&scenes, &refs).expect("a studies section");
+    assert!(s.body.contains("### Frequency at mu = 1 and 0.6 (thesis Fig. 4.9)"), "{}", s.body);
+    let figures: Vec<&str> = s.figures.iter().map(|(f, _)| f.as_str()).collect();
+    assert!(figures.contains(&"study_sine_freq_delay_ratio.svg") && figures.contains(&"study_sine_freq_loop_area.svg"));
+    // The 10 Hz row: CONTACT's delay ratio beside ours.
+    let ours = scenes[1].metric("contact", "delay_ratio").unwrap();
+    let row = s.body.lines().find(|l| l.starts_with("| 10 | mu 10 |")).expect("the 10 Hz row");
+    let theirs: f64 =
+        row.split("CONTACT ").nth(1).unwrap().split_whitespace().next().unwrap().trim_end_matches(',').parse().unwrap();
+    assert!((ours - theirs).abs() <= 0.005, "{ours} vs CONTACT {theirs}");
+    // 2 Hz: no CONTACT case, no marker.
+    let row2 = s.body.lines().find(|l| l.starts_with("| 2 | mu 10 |")).expect("the 2 Hz row");
+    assert!(row2.ends_with("| — |"), "{row2}");
+}

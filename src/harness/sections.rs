@@ -268,6 +268,7 @@ pub fn scaling(scenes: &[StoredScene]) -> Option<Section> {
 /// Every section, in the report's order.
 pub fn all(scenes: &[StoredScene], refs: &References) -> Vec<Section> {
     let mut out = vec![thesis_beside_ours(scenes, refs)];
+    out.extend(super::ladder::section(scenes));
     out.extend(super::studies::section(scenes, refs));
     out.extend(super::envelope::section(scenes, refs));
     out.extend(super::envelope::nonhertz_section(scenes, refs));

@@ -1,0 +1,105 @@
+//! The report's "model ladder" (issue 14): every model against the exact theory (`contact`) on
+//! the same scenes, per suite — max, RMS and 95th percentile of |Δf| = |(fx, fy) − (fx, fy)_exact|
+//! over every row both have, the worst delay-ratio and loop-area differences, and the cost per row.
+//! Reads stored results only.
+
+use super::results::StoredScene;
+use super::sections::Section;
+use std::collections::BTreeMap;
+use std::fmt::Write;
+
+/// The model every other is measured against.
+const EXACT: &str = "contact";
+
+/// What one model gathered over one suite.
+#[derive(Default)]
+struct Tally {
+    scenes: usize,
+    diffs: Vec<f64>,
+    delay: f64,
+    loop_rel: f64,
+    wall_s: f64,
+    rows: usize,
+}
+
+/// |Δf| per row of two histories of one scene (rows matched by step).
+fn row_diffs(ours: &crate::history::History, exact: &crate::history::History) -> Vec<f64> {
+    let by_step: BTreeMap<usize, (f64, f64)> =
+        exact.rows.iter().map(|r| (r.step, (r.fx_over_fn, r.fy_over_fn))).collect();
+    ours.rows
+        .iter()
+        .filter_map(|r| by_step.get(&r.step).map(|(x, y)| (r.fx_over_fn - x).hypot(r.fy_over_fn - y)))
+        .collect()
+}
+
+/// The value at quantile `q` of sorted values (nearest rank).
+fn quantile(sorted: &[f64], q: f64) -> f64 {
+    if sorted.is_empty() {
+        return f64::NAN;
+    }
+    let k = ((q * sorted.len() as f64).ceil() as usize).clamp(1, sorted.len());
+    sorted[k - 1]
+}
+
+/// The ladder section, if any stored scene holds the exact solver beside another model.
+pub fn section(scenes: &[StoredScene]) -> Option<Section> {
+    let mut tallies: BTreeMap<(String, String), Tally> = BTreeMap::new();
+    for s in scenes {
+        let Some(exact) = s.histories.get(EXACT) else { continue };
+        for (model, h) in s.histories.iter().filter(|(m, _)| m.as_str() != EXACT) {
+            let t = tallies.entry((model.clone(), s.scene.suite.clone())).or_default();
+            t.scenes += 1;
+            t.diffs.extend(row_diffs(h, exact));
+            if let (Some(a), Some(b)) = (s.metric(model, "delay_ratio"), s.metric(EXACT, "delay_ratio")) {
+                t.delay = t.delay.max((a - b).abs());
+            }
+            if let (Some(a), Some(b)) = (s.metric(model, "loop_area"), s.metric(EXACT, "loop_area")) {
+                if b != 0.0 {
+                    t.loop_rel = t.loop_rel.max(((a - b) / b).abs());
+                }
+            }
+            if let Some(timing) = s.timing.get(model) {
+                t.wall_s += timing.wall_s;
+                t.rows += h.rows.len();
+            }
+        }
+    }
+    if tallies.is_empty() {
+        return None;
+    }
+    let mut body = String::from(
+        "Every model against the exact theory (`contact`) on the same scenes and grids, per suite: |Δf| = |(fx, fy)/FN − (fx, fy)/FN of `contact`| over every row both have (sweep points and time steps alike); the largest |Δ delay ratio| and relative loop-area difference over the suite's sine scenes; the wall time per row (this machine, scenes in parallel on 2 cores). Scenes without `contact` do not count.\n\n| model | suite | scenes | rows | max \\|Δf\\| | RMS \\|Δf\\| | 95 % \\|Δf\\| | max \\|Δ delay ratio\\| | max loop-area error | µs per row |\n|---|---|---|---|---|---|---|---|---|---|\n",
+    );
+    for ((model, suite), mut t) in tallies {
+        t.diffs.retain(|d| d.is_finite());
+        t.diffs.sort_by(f64::total_cmp);
+        let n = t.diffs.len();
+        let rms = (t.diffs.iter().map(|d| d * d).sum::<f64>() / n.max(1) as f64).sqrt();
+        let delay = if t.delay > 0.0 { format!("{:.4}", t.delay) } else { "—".into() };
+        let loop_rel = if t.loop_rel > 0.0 { format!("{:.0} %", 100.0 * t.loop_rel) } else { "—".into() };
+        let cost = if t.rows > 0 { format!("{:.1}", 1e6 * t.wall_s / t.rows as f64) } else { "—".into() };
+        let _ = writeln!(
+            body,
+            "| {model} | {suite} | {} | {n} | {:.4} | {:.4} | {:.4} | {delay} | {loop_rel} | {cost} |",
+            t.scenes,
+            t.diffs.last().copied().unwrap_or(f64::NAN),
+            rms,
+            quantile(&t.diffs, 0.95),
+        );
+    }
+    Some(Section { title: "Model ladder: every model against the exact theory".into(), body, figures: Vec::new() })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::quantile;
+
+    #[test]
+    fn nearest_rank_quantile() {
+        let v: Vec<f64> = (1..=20).map(f64::from).collect();
+        assert_eq!(quantile(&v, 0.95), 19.0);
+        assert_eq!(quantile(&v, 1.0), 20.0);
+        assert_eq!(quantile(&v, 0.0), 1.0);
+        assert!(quantile(&[], 0.5).is_nan());
+    }
+}
