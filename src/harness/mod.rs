@@ -6,6 +6,7 @@ pub mod against;
 pub mod compare;
 pub mod envelope;
 pub mod gate_output;
+pub mod linked_table;
 pub mod plot;
 pub mod references;
 pub mod report;
