@@ -103,7 +103,7 @@ pub fn build_report(
     let input = ReportInput { scenes, refs, findings: &findings, sections: sections::all(scenes, refs) };
     let report = report::build(&input);
     std::fs::create_dir_all(out).map_err(Error::io(out))?;
-    report.write(out).map_err(Error::io(out))?;
+    report.write(out)?;
     table::write(out, &table::rows(scenes, &findings)).map_err(Error::io(out.join("results.csv")))?;
     Ok(out.join("validation.md"))
 }
@@ -247,12 +247,7 @@ impl GateFiles {
 
 /// Write `text` to `path` whole: a temporary file beside it, then one rename.
 fn write_whole(path: &Path, text: &str) -> Result<(), Error> {
-    let io = |source| Error::Io { path: path.to_path_buf(), source };
-    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let mut tmp = tempfile::NamedTempFile::new_in(dir).map_err(io)?;
-    std::io::Write::write_all(&mut tmp, text.as_bytes()).map_err(io)?;
-    tmp.persist(path).map_err(|e| io(e.error))?;
-    Ok(())
+    crate::safety::whole::write(path, text.as_bytes()).map_err(Error::io(path))
 }
 
 /// `creepbench check`: run the suite, compare with golden/ (or `against`) and the references;

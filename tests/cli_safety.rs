@@ -1,7 +1,7 @@
 //! The gate protects its own data, through the command line (issue 11): no command but `bless`
-//! writes golden/, a result folder never replaces a directory creepbench did not write, special
-//! files are refused without blocking, changed reference data fail the gate, and bless keeps the
-//! blessed scenes of the suites it does not run.
+//! writes golden/, a result folder (and a report's figures/ and tables/) never replaces a
+//! directory creepbench did not write, special files are refused without blocking, changed
+//! reference data fail the gate, and bless keeps the blessed scenes of the suites it does not run.
 
 mod common;
 use common::*;
@@ -81,6 +81,36 @@ fn a_folder_creepbench_did_not_write_is_never_replaced() {
         let o = creepbench(w.path(), &["simulate", "s.toml", "--out", "out"]);
         assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     }
+}
+
+/// A report's figures/ and tables/ folders are replaced whole, and only when creepbench wrote
+/// them: a foreign figures/ is refused and left intact, and no validation.md is written beside it.
+#[test]
+fn report_folders_are_replaced_only_when_creepbench_wrote_them() {
+    let w = workspace("rep_scene");
+    std::fs::create_dir_all(w.path().join("suite")).unwrap();
+    std::fs::rename(w.path().join("s.toml"), w.path().join("suite/s.toml")).unwrap();
+    let refs = root().join("reference");
+    let run = |report: &str| {
+        let args = ["run", "--quiet", "--suite", "suite", "--results", "res", "--report", report, "--reference"];
+        let mut c = Command::new(env!("CARGO_BIN_EXE_creepbench"));
+        c.current_dir(w.path()).args(args).arg(&refs).output().expect("runs")
+    };
+    for _ in 0..2 {
+        let o = run("rep");
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    }
+    for sub in ["figures", "tables"] {
+        assert!(w.path().join("rep").join(sub).join(".creepbench-result").is_file(), "{sub}");
+    }
+    assert!(std::fs::read_to_string(w.path().join("rep/validation.md")).unwrap().contains("rep_scene"));
+    std::fs::create_dir_all(w.path().join("rep2/figures")).unwrap();
+    std::fs::write(w.path().join("rep2/figures/mine.svg"), "<svg/>").unwrap();
+    let o = run("rep2");
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("did not write"), "{}", stderr(&o));
+    assert_eq!(std::fs::read_to_string(w.path().join("rep2/figures/mine.svg")).unwrap(), "<svg/>");
+    assert!(!w.path().join("rep2/validation.md").exists());
 }
 
 #[test]

@@ -50,9 +50,12 @@ fn half_unit(printed: f64) -> f64 {
     0.5 * 10f64.powf(printed.abs().log10().floor() - 3.0)
 }
 
-/// CONTACT's example `conformal` (5 steady cases, all of fx, fy, mz non-zero): per case as
-/// printed — CKSI, CETA, CPHI, FSTAT; FN, FX, FY, MZ; FX/FSTAT/FN, FY/FSTAT/FN; NADH, NSLIP.
-const CONFORMAL: [([f64; 4], [f64; 4], [f64; 2], [f64; 2]); 5] = [
+/// One case as CONTACT printed it: CKSI, CETA, CPHI, FSTAT; FN, FX, FY, MZ; FX/FSTAT/FN,
+/// FY/FSTAT/FN; NADH, NSLIP.
+type Printed = ([f64; 4], [f64; 4], [f64; 2], [f64; 2]);
+
+/// CONTACT's example `conformal` (5 steady cases, all of fx, fy, mz non-zero), as printed.
+const CONFORMAL: [Printed; 5] = [
     ([-4.000e-3, -9.900e-3, -1.537e-3, 0.3], [1.000e5, 9144.0, 2.592e4, 3.860e4], [0.3048, 0.8639], [0.0, 1027.0]),
     ([-4.000e-3, -9.900e-3, -1.537e-3, 0.3], [9.184e4, 8959.0, 2.417e4, 2.676e4], [0.3252, 0.8774], [0.0, 871.0]),
     ([-4.000e-3, -9.900e-3, -1.537e-3, 0.3], [9.932e4, 1.086e4, 2.578e4, 3.292e4], [0.3646, 0.8651], [0.0, 901.0]),
@@ -116,7 +119,6 @@ fn igs(state: &str) -> u8 {
 /// the potential contact; g14.6 numbers): meta, grid, material and friction lines under their
 /// `%` headers, then one line per element `I IGS H MU PN PX PY UN UX UY SREL` with CONTACT's
 /// signs (tractions on body 1: the reference files' flipped px, py flipped back).
-#[allow(clippy::too_many_arguments)]
 fn write_mat(path: &Path, grid: (usize, usize, f64, f64, f64, f64), mu: f64, cells: &[Vec<String>]) {
     let (mx, my, xl, yl, dx, dy) = grid;
     let g = |v: f64| format!("{v:>14.5e}");

@@ -48,7 +48,7 @@ fn a_rule_file_gates_what_the_defaults_report() {
     assert_eq!(o.status.code(), Some(1));
     let (n_tight, failed) = gated(&json);
     assert_eq!((n_tight, failed), (n_loose, 2));
-    // Without the file: the defaults (452 gated comparisons on this suite, none failing).
+    // Without the file: the defaults (648 gated comparisons on this suite, none failing).
     let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
         .current_dir(root())
         .args(["check", "--quiet", "--suite", "scenes/nonhertz", "--json"])

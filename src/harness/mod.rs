@@ -7,6 +7,7 @@ pub mod compare;
 pub mod envelope;
 pub mod gate_output;
 pub mod ladder;
+pub mod linked_table;
 pub mod plot;
 pub mod references;
 pub mod report;

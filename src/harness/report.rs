@@ -2,13 +2,16 @@
 //! Built from stored result folders only, so shards merge into one report.
 
 use super::compare::Finding;
+use super::linked_table::{self, Table};
 use super::plot::{line_chart, Series};
 use super::references::References;
 use super::results::StoredScene;
 use super::sections::Section;
+use crate::error::Error;
 use crate::history::History;
 use crate::metrics;
 use crate::problem::LoadingKind;
+use crate::safety::{folder, whole};
 use std::collections::BTreeMap;
 use std::fmt::Write;
 use std::path::Path;
@@ -89,26 +92,38 @@ pub struct ReportInput<'a> {
     pub sections: Vec<Section>,
 }
 
-/// The report in memory: validation.md and its figures (file name, SVG).
+/// The report in memory: validation.md, its figures (file name, SVG) and its long tables (file
+/// name, Markdown; [`linked_table`]).
 pub struct Report {
     pub markdown: String,
     pub figures: Vec<(String, String)>,
+    pub tables: Vec<(String, String)>,
 }
 
+/// The report's folder of figures.
+pub const FIGURES: &str = "figures";
+
 impl Report {
-    /// Write `dir/validation.md` and `dir/figures/*.svg` (the old figures replaced).
-    pub fn write(&self, dir: &Path) -> std::io::Result<()> {
-        let figs = dir.join("figures");
-        if figs.exists() {
-            std::fs::remove_dir_all(&figs)?;
+    /// Write `dir/figures/*.svg` and `dir/tables/*.md`, each folder replaced whole and atomically
+    /// (and only a folder creepbench wrote: `safety::folder`), then `dir/validation.md`, written
+    /// whole — so the report never links to a half-written folder.
+    pub fn write(&self, dir: &Path) -> Result<(), Error> {
+        for (sub, files) in [(FIGURES, &self.figures), (linked_table::DIR, &self.tables)] {
+            folder::replace_tree_atomically(&dir.join(sub), |new: &Path| -> Result<(), Error> {
+                for (file, text) in files {
+                    let path = new.join(file);
+                    std::fs::write(&path, text).map_err(Error::io(&path))?;
+                }
+                Ok(())
+            })?;
         }
-        std::fs::create_dir_all(&figs)?;
-        for (file, svg) in &self.figures {
-            std::fs::write(figs.join(file), svg)?;
-        }
-        std::fs::write(dir.join("validation.md"), &self.markdown)
+        let md = dir.join("validation.md");
+        whole::write(&md, self.markdown.as_bytes()).map_err(Error::io(&md))
     }
 }
+
+/// The title of the section of the worst error against CONTACT per scene and solver.
+const ERROR_SECTION: &str = "Error against CONTACT, worst step per scene and solver";
 
 /// The one-screen verdict: gated comparisons and failures per suite, and the worst gated points.
 fn verdict(input: &ReportInput) -> String {
@@ -147,20 +162,24 @@ fn verdict(input: &ReportInput) -> String {
     out
 }
 
+/// The anchor GitHub gives a heading with this title.
+pub fn anchor(title: &str) -> String {
+    title
+        .chars()
+        .filter_map(|c| match c {
+            ' ' => Some('-'),
+            '-' | '_' => Some(c),
+            c if c.is_alphanumeric() => Some(c.to_lowercase().next().unwrap_or(c)),
+            _ => None,
+        })
+        .collect()
+}
+
 /// A table of contents of the `## ` sections of `md` (GitHub's heading anchors).
 fn contents(md: &str) -> String {
     let mut out = String::from("## Contents\n\n");
     for title in md.lines().filter_map(|l| l.strip_prefix("## ")) {
-        let anchor: String = title
-            .chars()
-            .filter_map(|c| match c {
-                ' ' => Some('-'),
-                '-' | '_' => Some(c),
-                c if c.is_alphanumeric() => Some(c.to_lowercase().next().unwrap_or(c)),
-                _ => None,
-            })
-            .collect();
-        let _ = writeln!(out, "- [{title}](#{anchor})");
+        let _ = writeln!(out, "- [{title}](#{})", anchor(title));
     }
     out.push('\n');
     out
@@ -170,6 +189,7 @@ fn contents(md: &str) -> String {
 pub fn build(input: &ReportInput) -> Report {
     let mut md = String::new();
     let mut figures: Vec<(String, String)> = Vec::new();
+    let mut tables: Vec<(String, String)> = Vec::new();
     let model_list: Vec<String> =
         crate::solvers::MODELS.iter().map(|m| format!("`{}` ({})", m.name, m.summary)).collect();
     let mut head = String::new();
@@ -202,7 +222,7 @@ pub fn build(input: &ReportInput) -> Report {
     }
 
     // Worst point per scene and solver against CONTACT.
-    let _ = writeln!(md, "## Error against CONTACT, worst step per scene and solver\n\nmax |f − f_CONTACT| over every step (sweeps: every creepage point), f = Fx/FN. Gated for `contact` (≤ 1e-5) and, on `steady_fastsim_g22`, for `fastsim` and `uba` (≤ 0.0015); the simplified models are reported.\n");
+    let _ = writeln!(md, "## {ERROR_SECTION}\n\nmax |f − f_CONTACT| over every step (sweeps: every creepage point), f = Fx/FN. Gated for `contact` (≤ 1e-5) and, on `steady_fastsim_g22`, for `fastsim` and `uba` (≤ 0.0015); the simplified models are reported.\n");
     let solvers: Vec<String> = {
         let mut v: Vec<String> = input.scenes.iter().flat_map(|s| s.histories.keys().cloned()).collect();
         v.sort();
@@ -211,39 +231,63 @@ pub fn build(input: &ReportInput) -> Report {
         v.sort_by_key(order);
         v
     };
-    let _ = write!(md, "| scene |");
+    let mut cols = vec!["scene"];
     for s in &solvers {
-        let _ = write!(md, " {s} | step |");
+        cols.extend([s.as_str(), "step"]);
     }
-    let _ = write!(md, "\n|---|");
-    for _ in &solvers {
-        let _ = write!(md, "---|---|");
-    }
-    md.push('\n');
+    let mut table = Table::new(&cols);
+    // Per solver: its largest error and the row it is in; rows with a gated miss.
+    let mut largest: Vec<Option<(f64, usize, &str)>> = vec![None; solvers.len()];
+    let mut keep = Vec::new();
     for sc in input.scenes {
         if input.refs.contact.history(&sc.name).is_none() {
             continue;
         }
-        let _ = write!(md, "| {} |", sc.name);
-        for s in &solvers {
+        let mut row = format!("| {} |", sc.name);
+        for (k, s) in solvers.iter().enumerate() {
             let f = input
                 .findings
                 .iter()
                 .find(|f| f.scene == sc.name && &f.solver == s && f.against.is_contact() && f.quantity == "fx_over_fn");
             match f {
                 Some(f) => {
-                    let mark = if f.gated && !f.passed() { " ✗" } else { "" };
+                    let miss = f.gated && !f.passed();
+                    if miss {
+                        keep.push(table.rows.len());
+                    }
+                    if largest[k].is_none_or(|(d, _, _)| f.diff > d) {
+                        largest[k] = Some((f.diff, table.rows.len(), &sc.name));
+                    }
                     let v = if f.diff < 1e-3 { format!("{:.1e}", f.diff) } else { format!("{:.4}", f.diff) };
-                    let _ = write!(md, " {v}{mark} | {} |", f.step.map(|k| k.to_string()).unwrap_or_default());
+                    let mark = if miss { " ✗" } else { "" };
+                    let _ = write!(row, " {v}{mark} | {} |", f.step.map(|k| k.to_string()).unwrap_or_default());
                 }
-                None => {
-                    let _ = write!(md, " — | |");
-                }
+                None => row.push_str(" — | |"),
             }
         }
-        md.push('\n');
+        table.rows.push(row);
     }
-    md.push('\n');
+    let per_solver: Vec<String> = solvers
+        .iter()
+        .zip(&largest)
+        .filter_map(|(s, l)| {
+            let (d, _, scene) = (*l)?;
+            Some(format!("`{s}` {} (`{scene}`)", if d < 1e-3 { format!("{d:.1e}") } else { format!("{d:.4}") }))
+        })
+        .collect();
+    keep.extend(largest.iter().flatten().map(|l| l.1));
+    keep.sort_unstable();
+    let summary = format!("{} scenes; the largest per solver: {}.", table.rows.len(), per_solver.join(", "));
+    let placed = linked_table::place(
+        "error_against_contact",
+        ERROR_SECTION,
+        &table,
+        &summary,
+        &keep,
+        "The rows of each solver's largest error and of any gated miss",
+    );
+    let _ = writeln!(md, "{}", placed.inline);
+    tables.extend(placed.file);
 
     // Delay ratios and loop areas.
     let sines: Vec<&StoredScene> = input.scenes.iter().filter(|s| s.scene.period_s().is_some()).collect();
@@ -288,6 +332,7 @@ pub fn build(input: &ReportInput) -> Report {
     for s in &input.sections {
         let _ = writeln!(md, "## {}\n\n{}\n", s.title, s.body);
         figures.extend(s.figures.iter().cloned());
+        tables.extend(s.tables.iter().cloned());
     }
 
     // Groups with plots.
@@ -357,19 +402,26 @@ pub fn build(input: &ReportInput) -> Report {
     }
 
     // What each scene left out.
-    let _ = writeln!(md, "## What each scene left out\n\nOnly what a scene lists is computed: solvers it does not name are not run, metrics that do not fit its creepage are not computed.\n\n| scene | solvers not run | metrics left out |\n|---|---|---|");
+    const LEFT_OUT: &str = "What each scene left out";
+    let _ = writeln!(md, "## {LEFT_OUT}\n\nOnly what a scene lists is computed: solvers it does not name are not run, metrics that do not fit its creepage are not computed.\n");
+    let mut table = Table::new(&["scene", "solvers not run", "metrics left out"]);
+    let mut ran_all = 0;
     for sc in input.scenes {
         let ran: Vec<&str> = sc.histories.keys().map(String::as_str).collect();
         let not_run: Vec<&str> = crate::solvers::builtin_names().into_iter().filter(|s| !ran.contains(s)).collect();
         let skipped: Vec<String> = sc.scene.skipped_metrics.iter().map(|(m, why)| format!("{m} ({why})")).collect();
-        let _ = writeln!(
-            md,
+        ran_all += usize::from(not_run.is_empty());
+        table.rows.push(format!(
             "| {} | {} | {} |",
             sc.name,
             if not_run.is_empty() { "—".into() } else { not_run.join(", ") },
             if skipped.is_empty() { "—".into() } else { skipped.join("; ") }
-        );
+        ));
     }
+    let summary = format!("{} scenes, {ran_all} of them ran every built-in model.", table.rows.len());
+    let placed = linked_table::place("left_out", LEFT_OUT, &table, &summary, &[], "");
+    let _ = write!(md, "{}", placed.inline);
+    tables.extend(placed.file);
     head.push_str(&contents(&md));
-    Report { markdown: head + &md, figures }
+    Report { markdown: head + &md, figures, tables }
 }

@@ -3,6 +3,7 @@
 //! reads stored results and reference data only; the studies they need are scenes of the suite
 //! `scenes/report/` (named `report_*`), run and stored like any other.
 
+use super::linked_table::{largest, place, Table};
 use super::plot::{line_chart, Series};
 use super::references::References;
 use super::results::StoredScene;
@@ -10,17 +11,19 @@ use crate::history::History;
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
-/// A section of the report: title, Markdown body, figures (file name, SVG).
+/// A section of the report: title, Markdown body, figures (file name, SVG) and long tables moved
+/// to linked files (file name, Markdown; [`super::linked_table`]).
 #[derive(Debug, Clone, Default)]
 pub struct Section {
     pub title: String,
     pub body: String,
     pub figures: Vec<(String, String)>,
+    pub tables: Vec<(String, String)>,
 }
 
 impl Section {
     fn new(title: &str, body: String) -> Section {
-        Section { title: title.into(), body, figures: Vec::new() }
+        Section { title: title.into(), body, ..Section::default() }
     }
 }
 
@@ -132,31 +135,50 @@ pub fn error_vs_time(scenes: &[StoredScene], refs: &References) -> Option<Sectio
         true,
     );
     s.push_str("\n![error against run time](figures/error_vs_time.svg)\n");
-    Some(Section { title: "Error against run time".into(), body: s, figures: vec![("error_vs_time.svg".into(), svg)] })
+    Some(Section {
+        title: "Error against run time".into(),
+        body: s,
+        figures: vec![("error_vs_time.svg".into(), svg)],
+        tables: Vec::new(),
+    })
 }
 
-/// Wall time per scene and solver, with CONTACT's time for the same case.
+/// Wall time per scene and solver, with CONTACT's time for the same case; the slowest runs inline,
+/// every run in a linked table.
 pub fn timing(scenes: &[StoredScene], refs: &References) -> Section {
-    let mut s = String::from("Wall time of each solver over the whole scene on this machine (scenes run in parallel on 2 cores, so figures include contention), and CONTACT's own time for the case (`contact_wall_s`, whole run incl. start-up and output).\n\n| scene | steps | solver | wall s | ms per step | CONTACT s | CONTACT ms per step |\n|---|---|---|---|---|---|---|\n");
-    let mut total = 0.0;
+    const TITLE: &str = "Timing";
+    const SLOWEST: usize = 10;
+    let mut s = String::from("Wall time of each solver over the whole scene on this machine (scenes run in parallel on 2 cores, so figures include contention), and CONTACT's own time for the case (`contact_wall_s`, whole run incl. start-up and output).\n\n");
+    let mut table =
+        Table::new(&["scene", "steps", "solver", "wall s", "ms per step", "CONTACT s", "CONTACT ms per step"]);
+    let mut walls = Vec::new();
     for sc in scenes {
         for (solver, h) in &sc.histories {
             let w = sc.timing.get(solver).map(|t| t.wall_s).unwrap_or(f64::NAN);
-            total += if w.is_finite() { w } else { 0.0 };
+            walls.push(if w.is_finite() { w } else { 0.0 });
             let c = refs.contact.cases.get(&sc.name);
-            let _ = writeln!(
-                s,
+            table.rows.push(format!(
                 "| {} | {} | {solver} | {w:.4} | {:.4} | {} | {} |",
                 sc.name,
                 h.rows.len(),
                 1e3 * w / h.rows.len().max(1) as f64,
                 c.map(|c| format!("{:.2}", c.contact_wall_s)).unwrap_or_default(),
                 c.map(|c| format!("{:.2}", 1e3 * c.contact_wall_s / (c.n_steps.max(1) as f64))).unwrap_or_default()
-            );
+            ));
         }
     }
-    let _ = writeln!(s, "\nSum of solver wall times: {total:.2} s.");
-    Section::new("Timing", s)
+    let total: f64 = walls.iter().sum();
+    let summary = format!(
+        "{} solver runs of {} scenes, sum of solver wall times {total:.2} s.",
+        table.rows.len(),
+        scenes.iter().filter(|sc| !sc.histories.is_empty()).count()
+    );
+    let placed = place("timing", TITLE, &table, &summary, &largest(&walls, SLOWEST), &format!("The {SLOWEST} slowest"));
+    s.push_str(&placed.inline);
+    if placed.file.is_none() {
+        let _ = writeln!(s, "\n{summary}");
+    }
+    Section { tables: placed.file.into_iter().collect(), ..Section::new(TITLE, s) }
 }
 
 /// The stability suite (scenes named `stab_*`): per scene and solver, whether every value is
@@ -262,6 +284,7 @@ pub fn scaling(scenes: &[StoredScene]) -> Option<Section> {
         title: "Cost per step against grid size".into(),
         body: s,
         figures: vec![("cost_per_step.svg".into(), svg)],
+        tables: Vec::new(),
     })
 }
 

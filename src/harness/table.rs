@@ -44,7 +44,7 @@ pub fn rows(scenes: &[StoredScene], findings: &[Finding]) -> Vec<TableRow> {
     out
 }
 
-/// Write `dir/results.csv` (and `dir/results.parquet` with the `polars` feature).
+/// Write `dir/results.csv` whole (and `dir/results.parquet` with the `polars` feature).
 pub fn write(dir: &Path, rows: &[TableRow]) -> std::io::Result<()> {
     let mut s = String::from("scene,solver,quantity,step,value\n");
     for r in rows {
@@ -57,7 +57,7 @@ pub fn write(dir: &Path, rows: &[TableRow]) -> std::io::Result<()> {
             r.value
         ));
     }
-    std::fs::write(dir.join("results.csv"), s)?;
+    crate::safety::whole::write(&dir.join("results.csv"), s.as_bytes())?;
     #[cfg(feature = "polars")]
     {
         let mut df = dataframe(rows).map_err(std::io::Error::other)?;

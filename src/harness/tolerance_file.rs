@@ -129,7 +129,7 @@ pub fn apply(rules: &[Rule], findings: &mut [Finding], elsewhere: impl Fn(&Rule)
     for f in findings.iter_mut() {
         if let Some(i) = rules.iter().position(|r| r.covers(f.against, &f.scene, &f.solver, &f.quantity)) {
             used[i] = true;
-            f.allowed = rules[i].abs + rules[i].rel * f.theirs.abs();
+            f.allowed = rules[i].allowed(f.theirs);
             f.gated = rules[i].gated;
         }
     }

@@ -1,6 +1,7 @@
 //! The gate protects its own data (issue 11): bounded reads that never block, short excerpts in
-//! messages, result folders replaced atomically and only when creepbench wrote them, protected
-//! folders, folder locks, external processes with a timeout and no orphans, checksum manifests.
+//! messages, result folders replaced atomically and only when creepbench wrote them, files written
+//! whole, protected folders, folder locks, external processes with a timeout and no orphans,
+//! checksum manifests.
 //! One job per file; the commands call these, nothing here knows about scenes or solvers.
 
 pub mod excerpt;
@@ -11,3 +12,4 @@ pub mod lock;
 pub mod manifest;
 pub mod process;
 pub mod read;
+pub mod whole;
