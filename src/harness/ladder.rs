@@ -87,7 +87,12 @@ pub fn section(scenes: &[StoredScene]) -> Option<Section> {
             quantile(&t.diffs, 0.95),
         );
     }
-    Some(Section { title: "Model ladder: every model against the exact theory".into(), body, figures: Vec::new() })
+    Some(Section {
+        title: "Model ladder: every model against the exact theory".into(),
+        body,
+        figures: Vec::new(),
+        tables: Vec::new(),
+    })
 }
 
 #[cfg(test)]

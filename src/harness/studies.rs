@@ -118,5 +118,5 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
             figures.push((file, svg));
         }
     }
-    Some(Section { title: "Parameter studies".into(), body, figures })
+    Some(Section { title: "Parameter studies".into(), body, figures, tables: Vec::new() })
 }
