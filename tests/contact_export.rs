@@ -8,8 +8,6 @@
 mod common;
 use common::root;
 use creepbench::export::contact::module3_input;
-use creepbench::problem::Problem;
-use creepbench::scene::Scene;
 
 #[derive(Debug, PartialEq)]
 enum Token {
@@ -54,10 +52,11 @@ fn close(a: f64, b: f64) -> bool {
     (a - b).abs() <= 1e-9 * a.abs().max(b.abs()) + 1e-11
 }
 
-/// Compare the export of `scene` with `inp`; the first difference, if any.
-fn difference(scene: &str, inp: &str) -> Option<String> {
-    let sc = Scene::from_file(&root().join(scene)).unwrap();
-    let ours = cases(&module3_input(&Problem::resolve(&sc).unwrap()));
+/// Compare the export of the scene `name` of the suite folder `suite` (a scene file or a study's
+/// point) with `inp`; the first difference, if any.
+fn difference(suite: &str, name: &str, inp: &str) -> Option<String> {
+    let source = creepbench::harness::suite::find(&[root().join(suite)], name).unwrap();
+    let ours = cases(&module3_input(&creepbench::pipeline::load_source(&source, &[]).unwrap()));
     let theirs = cases(&std::fs::read_to_string(root().join(inp)).unwrap());
     if ours.len() != theirs.len() {
         return Some(format!("{} cases, CONTACT's input has {}", ours.len(), theirs.len()));
@@ -98,7 +97,7 @@ fn exported_inputs_equal_contacts_own() {
                 continue;
             }
             n += 1;
-            if let Some(d) = difference(&format!("{suite}/{name}.toml"), &inp) {
+            if let Some(d) = difference(suite, &name, &inp) {
                 failures.push(format!("{name}: {d}"));
             }
         }
