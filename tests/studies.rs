@@ -113,7 +113,7 @@ fn study_errors_name_the_field() {
         ("[study]\nname = \"s\"\nfoo = 1\n[[study.axis]]\nname = \"mu\"\n\"contact.mu\" = [0.3]", "study.foo"),
         ("[study]\nname = \"s\"", "study.axis"),
         ("[study]\nname = \"s\"\n[[study.axis]]\nname = \"mu\"", "study.axis[0]"),
-        ("[study]\nname = \"s\"\n[[study.axis]]\nname = \"mu\"\n\"contact.mu\" = [0.3, 0.4]\n\"contact.fn_n\" = [1e5]", "contact.fn_n"),
+        ("[study]\nname = \"s\"\n[[study.axis]]\nname = \"mu\"\n\"contact.mu\" = [0.3, 0.4]\n\"contact.fn_n\" = [1e5]", "study.axis[0].\"contact."),
         ("[study]\nname = \"s\"\n[[study.axis]]\nname = \"mu\"\n\"contact.mu\" = [0.3, 0.4]\nlabels = [\"a\"]", "study.axis[0].labels"),
         ("[study]\nname = \"s\"\nx = \"c\"\n[[study.axis]]\nname = \"mu\"\n\"contact.mu\" = [0.3]", "study.x"),
         ("[study]\nname = \"s\"\nmetrics = [\"nope\"]\n[[study.axis]]\nname = \"mu\"\n\"contact.mu\" = [0.3]", "study.metrics"),

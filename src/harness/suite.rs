@@ -75,6 +75,8 @@ pub fn scene_files(dirs: &[PathBuf], shard: Option<Shard>) -> Result<Vec<SceneSo
                 .filter(|p| p.extension().is_some_and(|x| x == "toml") && !p.ends_with(TOLERANCE_FILE)),
         );
     }
+    // File order decides which study a shared point lists first: sorted, never the folder's.
+    files.sort();
     let mut out: Vec<SceneSource> = Vec::new();
     for path in files {
         for point in sources_of_file(&path)? {
