@@ -26,12 +26,15 @@ fn metrics_of(points: &Points) -> Vec<String> {
     names
 }
 
-/// (label, value) of each reference's value of `metric` for the scene.
-fn reference_values(refs: &References, scene: &StoredScene, metric: &str) -> Vec<(&'static str, f64)> {
-    let mut out: Vec<(&'static str, f64)> = Vec::new();
+/// (set label, quantity, reference value) of the first comparison per quantity the references make for a
+/// scene, computed once per scene.
+fn reference_values(refs: &References, scene: &StoredScene) -> Vec<(&'static str, String, f64)> {
+    let mut out: Vec<(&'static str, String, f64)> = Vec::new();
     for set in refs.sets() {
-        if let Some(f) = set.compare(scene).into_iter().find(|f| f.quantity == metric && f.theirs.is_finite()) {
-            out.push((set.label(), f.theirs));
+        for f in set.compare(scene).into_iter().filter(|f| f.theirs.is_finite()) {
+            if !out.iter().any(|(l, q, _)| *l == set.label() && *q == f.quantity) {
+                out.push((set.label(), f.quantity, f.theirs));
+            }
         }
     }
     out
@@ -66,6 +69,7 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
         let mut solvers: Vec<&str> = points.iter().flat_map(|(s, _)| s.histories.keys().map(String::as_str)).collect();
         solvers.sort();
         solvers.dedup();
+        let references: Vec<_> = points.iter().map(|(s, _)| reference_values(refs, s)).collect();
         for metric in metrics_of(&points) {
             let mut series: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
             let mut marks: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
@@ -75,7 +79,7 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
                 solvers.join(" | "),
                 "---|".repeat(solvers.len() + 3)
             );
-            for (s, p) in &points {
+            for ((s, p), references) in points.iter().zip(&references) {
                 let tag =
                     |name: &str| if p.series.is_empty() { name.to_string() } else { format!("{name} ({})", p.series) };
                 let mut cells = Vec::new();
@@ -86,7 +90,8 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
                     }
                     cells.push(value(v));
                 }
-                let refs_here = reference_values(refs, s, &metric);
+                let refs_here: Vec<(&str, f64)> =
+                    references.iter().filter(|(_, q, _)| *q == metric).map(|(l, _, v)| (*l, *v)).collect();
                 for (label, v) in &refs_here {
                     marks.entry(tag(label)).or_default().push((p.x, *v));
                 }
