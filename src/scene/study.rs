@@ -99,7 +99,7 @@ fn read_axis(n: usize, t: &Value) -> Result<Axis, InputError> {
             .filter(|a| !a.is_empty())
             .ok_or_else(|| err(format!("{field}.\"{k}\""), v, "a non-empty array of values"))?;
         if k.split('.').any(str::is_empty) || k == "name" {
-            return Err(err(format!("{field}"), format!("{k:?}"), "dotted scene keys such as \"contact.mu\""));
+            return Err(err(&field, format!("{k:?}"), "dotted scene keys such as \"contact.mu\""));
         }
         keys.push((k.clone(), values.clone()));
     }
