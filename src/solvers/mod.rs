@@ -10,6 +10,7 @@ pub mod fastrip;
 pub mod fastsim;
 pub mod linear;
 pub mod polach;
+pub mod relaxation;
 pub mod sample_loop;
 pub mod she;
 pub mod stepper;
@@ -61,6 +62,7 @@ pub const MODELS: &[&ModelDef] = &[
     &she::MODEL,
     &polach::MODEL,
     &fastrip::MODEL,
+    &relaxation::MODEL,
 ];
 
 /// The built-in model of that name.
