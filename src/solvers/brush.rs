@@ -141,44 +141,62 @@ pub fn steady_march(
     how: (LeadingEdge, Integration),
     out: &mut Tractions,
 ) -> usize {
-    (0..grid.my).map(|j| march_row(grid, local, mu, rates, how, j, out)).sum()
-}
-
-/// [`steady_march`] of row j alone (its elements of `out` are overwritten); returns the number of
-/// slipping elements.
-pub fn march_row(
-    grid: &Grid,
-    local: &LocalContact,
-    mu: f64,
-    rates: &RigidSlip,
-    how: (LeadingEdge, Integration),
-    j: usize,
-    out: &mut Tractions,
-) -> usize {
-    let pressure = &local.planform.pressure_mpa;
+    let row = |j| RowMarch { j, local, rates };
     let mut n_slip = 0;
-    let (mut tx, mut ty) = (0.0, 0.0);
-    let mut upstream_loaded = false;
-    for i in 0..grid.mx {
-        let k = grid.index(i, j);
-        if pressure[k] <= 0.0 {
-            out.tx[k] = 0.0;
-            out.ty[k] = 0.0;
-            upstream_loaded = false;
-            continue;
-        }
-        let (ux, uy) = unbounded(grid, local, rates, how, (i, j), upstream_loaded.then_some((tx, ty)));
-        let (px, py, slip) = project_to_bound(ux, uy, mu * pressure[k]);
-        (tx, ty) = (px, py);
-        out.tx[k] = tx;
-        out.ty[k] = ty;
-        n_slip += slip as usize;
-        upstream_loaded = true;
+    for j in (0..grid.my).step_by(2) {
+        n_slip += if j + 1 < grid.my {
+            march_rows(grid, mu, how, [row(j), row(j + 1)], out).iter().sum::<usize>()
+        } else {
+            march_rows(grid, mu, how, [row(j)], out)[0]
+        };
     }
     n_slip
 }
 
-/// Whether the first loaded element of row j slips in [`march_row`] (without marching the row).
+/// A row to march: its index, and the contact and slip rates it is marched with.
+#[derive(Clone, Copy)]
+pub struct RowMarch<'a> {
+    pub j: usize,
+    pub local: &'a LocalContact,
+    pub rates: &'a RigidSlip,
+}
+
+/// [`steady_march`] of N rows (their elements of `out` are overwritten), element by element in
+/// step so that their independent chains of bounds overlap; each row's arithmetic is the same as
+/// marched alone. Returns the number of slipping elements per row.
+pub fn march_rows<const N: usize>(
+    grid: &Grid,
+    mu: f64,
+    how: (LeadingEdge, Integration),
+    rows: [RowMarch; N],
+    out: &mut Tractions,
+) -> [usize; N] {
+    let mut n_slip = [0; N];
+    // (τx, τy) of the last element and whether it was loaded, per row.
+    let mut upstream = [(0.0, 0.0, false); N];
+    for i in 0..grid.mx {
+        for (r, row) in rows.iter().enumerate() {
+            let k = grid.index(i, row.j);
+            let p = row.local.planform.pressure_mpa[k];
+            let (tx, ty, loaded) = upstream[r];
+            if p <= 0.0 {
+                out.tx[k] = 0.0;
+                out.ty[k] = 0.0;
+                upstream[r].2 = false;
+                continue;
+            }
+            let (ux, uy) = unbounded(grid, row.local, row.rates, how, (i, row.j), loaded.then_some((tx, ty)));
+            let (px, py, slip) = project_to_bound(ux, uy, mu * p);
+            out.tx[k] = px;
+            out.ty[k] = py;
+            n_slip[r] += slip as usize;
+            upstream[r] = (px, py, true);
+        }
+    }
+    n_slip
+}
+
+/// Whether the first loaded element of row j slips in [`march_rows`] (without marching the row).
 pub fn leading_slips(
     grid: &Grid,
     local: &LocalContact,

@@ -22,7 +22,7 @@
 //! pressure, and the creepage scaling takes Kalker's coefficients of that ellipse; a geometry given
 //! per element is refused (CONTACT's FaStrip likewise).
 
-use super::brush::{self, Integration, Tractions};
+use super::brush::{self, Integration, RowMarch, Tractions};
 use super::stepper::{FieldView, Step, Stepper};
 use super::{linear_in_elements, ModelDef, SolveError};
 use crate::error::InputError;
@@ -122,15 +122,18 @@ impl Strip {
             return Strip { d_mm: f64::INFINITY, kappa: 0.0, lambda: 0.0 };
         }
         let v = eta + phi * d / a_mm;
-        let norm = u.hypot(v);
+        let norm = (u * u + v * v).sqrt();
         let (kappa, lambda) = if norm > 0.0 { (u / norm, v / norm) } else { (0.0, 0.0) };
         Strip { d_mm: d, kappa, lambda }
     }
 
     /// Elements 0..n of the row (grid x increasing) lie in its adhesion area, `x_C > 2d − a_j`.
+    /// (The grid's x increases with i: the elements that satisfy it are a prefix, counted
+    /// without branches.)
     fn adhesion_end(&self, x_mm: &[f64], a_j_mm: f64) -> usize {
         if self.d_mm.is_finite() {
-            x_mm.partition_point(|&x| -x > 2.0 * self.d_mm - a_j_mm)
+            let edge = 2.0 * self.d_mm - a_j_mm;
+            x_mm.iter().filter(|&&x| -x > edge).count()
         } else {
             0
         }
@@ -214,22 +217,27 @@ impl Stepper for Fastrip<'_> {
         let creepages = normalised_creepages(self.p, (a, e.b_mm, p0), at);
         let (pressure, mu_phi) = (&self.hertz.pressure_mpa, mu * creepages[2]);
         let mut n_slip = 0;
+        // FASTSIM's traction along each row, the slip area's direction: with the single
+        // flexibility where its leading element slips; two rows marched in step.
+        let row = |j| match &single {
+            Some((s, r)) if brush::leading_slips(grid, &self.fastsim, mu, &rates, how, j) => {
+                RowMarch { j, local: s, rates: r }
+            }
+            _ => RowMarch { j, local: &self.fastsim, rates: &rates },
+        };
+        for j in (0..grid.my).step_by(2) {
+            if j + 1 < grid.my {
+                brush::march_rows(grid, mu, how, [row(j), row(j + 1)], &mut self.dir);
+            } else {
+                brush::march_rows(grid, mu, how, [row(j)], &mut self.dir);
+            }
+        }
+        // Each strip's solution and tractions.
         for j in 0..grid.my {
-            // FASTSIM's traction along the row, the slip area's direction: with the single
-            // flexibility where its leading element slips.
-            let (local, row_rates) = match &single {
-                Some((s, r)) if brush::leading_slips(grid, &self.fastsim, mu, &rates, how, j) => (*s, r),
-                _ => (&self.fastsim, &rates),
-            };
-            brush::march_row(grid, local, mu, row_rates, how, j, &mut self.dir);
             let a_j = self.hertz.half_length_mm[j];
             let strip = Strip::new(creepages, grid.y_mm[j], a_j, a, nu);
-            let split = strip.adhesion_end(&grid.x_mm, a_j);
-            let row = grid.index(0, j)..grid.index(0, j) + grid.mx;
-            let (tx, ty) = (&mut self.t.tx[row.clone()], &mut self.t.ty[row.clone()]);
-            let inputs = (&pressure[row.clone()], grid.x_mm.as_slice(), &self.dir.tx[row.clone()], &self.dir.ty[row]);
             let consts = RowConsts {
-                split,
+                split: strip.adhesion_end(&grid.x_mm, a_j),
                 a_j,
                 d: strip.d_mm,
                 c: p0 / a,
@@ -238,6 +246,9 @@ impl Stepper for Fastrip<'_> {
                 mu_lambda: mu * strip.lambda,
                 mu_phi,
             };
+            let row = grid.index(0, j)..grid.index(0, j) + grid.mx;
+            let (tx, ty) = (&mut self.t.tx[row.clone()], &mut self.t.ty[row.clone()]);
+            let inputs = (&pressure[row.clone()], grid.x_mm.as_slice(), &self.dir.tx[row.clone()], &self.dir.ty[row]);
             n_slip += fill_row(inputs, consts, tx, ty);
         }
         let sums = (brush::sum4(&self.t.tx), brush::sum4(&self.t.ty));
