@@ -1,6 +1,7 @@
-//! The brush (simplified-theory) machinery shared by FASTSIM and the UBA: slip rates per unit
-//! rolling distance over the flexibilities, the steady march along each row from the leading edge
-//! with the traction bound, and the traction field. The two solvers differ only in how they march.
+//! The brush (simplified-theory) machinery shared by FASTSIM and the UBA (and FaStrip, for its
+//! slip area's direction): slip rates per unit rolling distance over the flexibilities, the steady
+//! march along each row from the leading edge with the traction bound, and the traction field.
+//! FASTSIM and the UBA differ only in how they march.
 
 use crate::physics::bound::within_bound;
 pub use crate::physics::LeadingEdge;
