@@ -1,5 +1,5 @@
 //! Speed targets (issues 2 and 4): UBA ≤ 2 ns per element-step, FASTSIM ≤ 5 µs per creepage at
-//! 22×22; the CONTACT-style solver per step at 22, 44, 88 on sine_f30_mu10; one steady
+//! 22×22; every fast model ≤ 5 µs per creepage at 22×22 (issue 14, `fast_model_creepage`); the CONTACT-style solver per step at 22, 44, 88 on sine_f30_mu10; one steady
 //! combined-creepage case (cx, cy and spin) at 11×11 and 25×25 from zero traction (issue 12:
 //! ≤ 0.2 ms and ≤ 5 ms; CONTACT single-threaded 1.9 ms and 28 ms); a transient step on a
 //! non-Hertzian and a Hertzian contact on the same 30 × 28 grid (issue 13: no slower per element).
@@ -155,6 +155,29 @@ fn bench_fastsim(c: &mut Criterion) {
     g.finish();
 }
 
+/// Issue 14's speed target for the fast models, ≤ 5 µs per creepage at 22×22: one steady solve of
+/// each (the UBA's steady march, FASTSIM, the closed-form laws, FaStrip) and one transient step of
+/// the relaxation model (FASTSIM's steady value and the lag), at step 3 of sine_f30_mu10's loading
+/// through the model's own stepper, loaded for that sample outside the timing.
+fn bench_fast_models(c: &mut Criterion) {
+    let p = problem(22);
+    let sample = p.loading.samples[3];
+    let mut g = c.benchmark_group("fast_model_creepage");
+    for name in ["uba", "fastsim", "linear", "she", "polach", "fastrip", "relaxation"] {
+        let def = creepbench::solvers::builtin(name).unwrap();
+        let mut model = (def.build)(&p).unwrap();
+        model.load(&sample).unwrap();
+        if name == "relaxation" {
+            g.bench_function("relaxation_transient", |b| {
+                b.iter(|| model.transient(black_box(&sample)).unwrap().fx_over_fn)
+            });
+        } else {
+            g.bench_function(name, |b| b.iter(|| model.steady(black_box(&sample)).unwrap().fx_over_fn));
+        }
+    }
+    g.finish();
+}
+
 /// A whole UBA run through the sample loop (set-up, every step, the history rows): 176×176,
 /// sine 10 Hz, 3 periods, steady start. Divide by steps × elements for ns per element-step.
 fn bench_uba_run(c: &mut Criterion) {
@@ -172,7 +195,7 @@ fn bench_uba_run(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench_uba, bench_fastsim, bench_uba_run);
+criterion_group!(benches, bench_uba, bench_fastsim, bench_fast_models, bench_uba_run);
 criterion_group! {
     name = contact;
     config = Criterion::default().sample_size(10);

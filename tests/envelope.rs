@@ -7,7 +7,7 @@ mod common;
 use common::*;
 use creepbench::physics::Coefficients;
 
-const SOLVERS: &str = r#"["uba", "fastsim", "contact", "linear"]"#;
+const SOLVERS: &str = r#"["uba", "fastsim", "contact", "linear", "fastrip", "relaxation"]"#;
 
 /// A small positive spin gives a positive fy and a positive moment, as a positive cy gives a
 /// positive fy and a negative moment (CONTACT's convention, Kalker's C23 > 0): every solver.
@@ -25,7 +25,7 @@ fn spin_sign_is_contacts_in_every_solver() {
             "",
         );
         let p = problem(&text);
-        for solver in ["uba", "fastsim", "contact", "linear"] {
+        for solver in ["uba", "fastsim", "contact", "linear", "fastrip", "relaxation"] {
             let h = run(&p, solver);
             let fy = h.column("fy_over_fn").unwrap()[0];
             let mz = h.column("mz_nmm").unwrap()[0];

@@ -2,7 +2,7 @@
 //! undeformed distance that yields prescribed semi-axes.
 
 use super::material::Material;
-use ellip::{ellipke, elliprd};
+use ellip::{ellipke, elliprd, elliprf};
 use std::f64::consts::PI;
 
 /// Principal radii of wheel and rail [mm] (thesis Fig. 2.4; the rail is straight along x).
@@ -76,6 +76,22 @@ impl HertzContact {
         let rd = |x: f64, y: f64, z: f64| elliprd(x, y, z).unwrap_or(f64::NAN);
         let c = self.fn_n / (2.0 * PI * e_star);
         (c * rd(0.0, b2, a2), c * rd(0.0, a2, b2))
+    }
+
+    /// Tangential stiffness (kx, ky) [N/mm] of the contact in full adhesion: the tangential force
+    /// over the rigid shift of one body against the other under Mindlin's no-slip traction
+    /// `q = Q/(2πab) (1 − x²/a² − y²/b²)^(−1/2)` (Mindlin 1949; Johnson 1985, ch. 7), whose surface displacement
+    /// is uniform over the ellipse. Integrating Cerruti's point-force displacement
+    /// `u_x = Q ((1 − ν)/r + ν x²/r³)/(2π G)` (Johnson 1985, ch. 3) over it and doubling for two
+    /// identical bodies: `δx/Q = ((1 − ν) R_F(0, a², b²) + ν a² R_D(0, b², a²)/3)/(π G)`, likewise
+    /// y with a ↔ b (Carlson's R_F, R_D). A circle gives Mindlin's `k = 4 G a/(2 − ν)`.
+    pub fn tangential_stiffness_n_mm(&self, material: &Material) -> (f64, f64) {
+        let (g, nu) = (material.g_mpa, material.poisson);
+        let (a2, b2) = (self.a_mm * self.a_mm, self.b_mm * self.b_mm);
+        let rf = elliprf(0.0, a2, b2).unwrap_or(f64::NAN);
+        let rd = |x: f64, y: f64, z: f64| elliprd(x, y, z).unwrap_or(f64::NAN);
+        let compliance = |c2: f64, rd_value: f64| ((1.0 - nu) * rf + nu * c2 * rd_value / 3.0) / (PI * g);
+        (1.0 / compliance(a2, rd(0.0, b2, a2)), 1.0 / compliance(b2, rd(0.0, a2, b2)))
     }
 }
 
@@ -159,6 +175,32 @@ mod tests {
         let h = HertzContact::from_radii(&r, 1e5, &mat).unwrap();
         let a = (3.0 * 1e5 * 400.0 / (4.0 * mat.e_star_mpa())).cbrt();
         assert!((h.a_mm / a - 1.0).abs() < 1e-9 && (h.b_mm / a - 1.0).abs() < 1e-9, "{h:?} vs {a}");
+    }
+
+    /// The tangential stiffness against the defining integral, `δx/Q = ∫₀^2π R(θ) ((1 − ν) +
+    /// ν cos²θ) dθ / (4π G a b)` with the ellipse's radius R(θ) (Cerruti's displacement under
+    /// Mindlin's traction, in polar coordinates), summed by the midpoint rule on 20000 angles; and
+    /// Mindlin's circle `k = 4 G a/(2 − ν)` (Johnson 1985, ch. 7).
+    #[test]
+    fn tangential_stiffness_against_its_integral() {
+        let mat = Material::from_g(82000.0, 0.28);
+        for (a, b) in [(8.56, 4.08), (4.0, 8.0), (10.0, 2.0), (5.0, 5.0)] {
+            let (kx, ky) = HertzContact { a_mm: a, b_mm: b, fn_n: 1e5 }.tangential_stiffness_n_mm(&mat);
+            let n = 20000;
+            let (mut ix, mut iy) = (0.0, 0.0);
+            for k in 0..n {
+                let t = (k as f64 + 0.5) * 2.0 * PI / n as f64;
+                let r = a * b / (b * b * t.cos().powi(2) + a * a * t.sin().powi(2)).sqrt();
+                ix += r * (0.72 + 0.28 * t.cos().powi(2));
+                iy += r * (0.72 + 0.28 * t.sin().powi(2));
+            }
+            let scale = 2.0 * PI / n as f64 / (4.0 * PI * mat.g_mpa * a * b);
+            assert!((kx * ix * scale - 1.0).abs() < 1e-10, "{a} x {b}: kx {kx}");
+            assert!((ky * iy * scale - 1.0).abs() < 1e-10, "{a} x {b}: ky {ky}");
+        }
+        let (kx, ky) = HertzContact { a_mm: 5.0, b_mm: 5.0, fn_n: 1e5 }.tangential_stiffness_n_mm(&mat);
+        let mindlin = 4.0 * 82000.0 * 5.0 / (2.0 - 0.28);
+        assert!((kx / mindlin - 1.0).abs() < 1e-13 && (ky / mindlin - 1.0).abs() < 1e-13, "{kx} {ky} {mindlin}");
     }
 
     /// The small-m identities agree with the Legendre forms where both are accurate.

@@ -94,6 +94,9 @@ pub struct ModelOptions {
     /// Polach's model's parameters.
     #[serde(default, skip_serializing_if = "PolachParams::is_default")]
     pub polach: PolachParams,
+    /// The relaxation model's length [mm] for both components instead of the linear theory's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub relaxation_length_mm: Option<f64>,
 }
 
 impl Default for ModelOptions {
@@ -107,6 +110,7 @@ impl Default for ModelOptions {
             single_flexibility: false,
             slope_reduction: None,
             polach: PolachParams::default(),
+            relaxation_length_mm: None,
         }
     }
 }
@@ -506,6 +510,7 @@ impl Scene {
             if let Some(v) = md.opt_f64("polach_b_s_per_m", Range::new(0.0, true, 1e3, true))? {
                 model.polach.b_s_per_m = v;
             }
+            model.relaxation_length_mm = md.opt_f64("relaxation_length_mm", Range::new(0.0, false, 1e4, true))?;
             if let Some(f) = md.opt_choice("nonhertz_flexibility", &["strip", "equivalent_ellipse"])? {
                 model.nonhertz_flexibility =
                     if f == "strip" { PatchFlexibility::Strip } else { PatchFlexibility::EquivalentEllipse };

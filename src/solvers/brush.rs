@@ -1,7 +1,9 @@
-//! The brush (simplified-theory) machinery shared by FASTSIM and the UBA: slip rates per unit
-//! rolling distance over the flexibilities, the steady march along each row from the leading edge
-//! with the traction bound, and the traction field. The two solvers differ only in how they march.
+//! The brush (simplified-theory) machinery shared by FASTSIM and the UBA (and FaStrip, for its
+//! slip area's direction): slip rates per unit rolling distance over the flexibilities, the steady
+//! march along each row from the leading edge with the traction bound, and the traction field.
+//! FASTSIM and the UBA differ only in how they march.
 
+use crate::physics::bound::within_bound;
 pub use crate::physics::LeadingEdge;
 use crate::physics::{moment_sum, project_to_bound, Flexibilities, Grid, Planform, RigidSlip};
 use crate::problem::{LocalContact, Sample};
@@ -90,6 +92,20 @@ impl Tractions {
     }
 }
 
+/// Σ v with four partial sums over consecutive elements, combined as (s0 + s1) + (s2 + s3).
+#[inline(always)]
+pub fn sum4(v: &[f64]) -> f64 {
+    let mut acc = [0.0f64; 4];
+    let chunks = v.chunks_exact(4);
+    let tail: f64 = chunks.remainder().iter().sum();
+    for c in chunks {
+        for l in 0..4 {
+            acc[l] += c[l];
+        }
+    }
+    (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail
+}
+
 /// A brush model's solve: the coefficients from the traction sums over the planform, the spin
 /// moment scaled the same way (`FN Σ m / Σ p`, so that it is consistent with f = Σ τ / Σ p),
 /// and the adhesion and slip counts (the extra columns `n_adhesion, n_slip`).
@@ -123,36 +139,96 @@ pub fn steady_march(
     local: &LocalContact,
     mu: f64,
     rates: &RigidSlip,
-    (edge, integration): (LeadingEdge, Integration),
+    how: (LeadingEdge, Integration),
     out: &mut Tractions,
 ) -> usize {
-    let planform = &local.planform;
-    let pressure = &planform.pressure_mpa;
+    let row = |j| RowMarch { j, local, rates };
     let mut n_slip = 0;
-    for j in 0..grid.my {
-        let (y, gain) = (grid.y_mm[j], local.row_gain[j]);
-        let (mut tx, mut ty) = (0.0, 0.0);
-        let mut upstream_loaded = false;
-        for i in 0..grid.mx {
-            let k = grid.index(i, j);
-            if pressure[k] <= 0.0 {
+    for j in (0..grid.my).step_by(2) {
+        n_slip += if j + 1 < grid.my {
+            march_rows(grid, mu, how, [row(j), row(j + 1)], out).iter().sum::<usize>()
+        } else {
+            march_rows(grid, mu, how, [row(j)], out)[0]
+        };
+    }
+    n_slip
+}
+
+/// A row to march: its index, and the contact and slip rates it is marched with.
+#[derive(Clone, Copy)]
+pub struct RowMarch<'a> {
+    pub j: usize,
+    pub local: &'a LocalContact,
+    pub rates: &'a RigidSlip,
+}
+
+/// [`steady_march`] of N rows (their elements of `out` are overwritten), element by element in
+/// step so that their independent chains of bounds overlap; each row's arithmetic is the same as
+/// marched alone. Returns the number of slipping elements per row.
+pub fn march_rows<const N: usize>(
+    grid: &Grid,
+    mu: f64,
+    how: (LeadingEdge, Integration),
+    rows: [RowMarch; N],
+    out: &mut Tractions,
+) -> [usize; N] {
+    let mut n_slip = [0; N];
+    // (τx, τy) of the last element and whether it was loaded, per row.
+    let mut upstream = [(0.0, 0.0, false); N];
+    for i in 0..grid.mx {
+        for (r, row) in rows.iter().enumerate() {
+            let k = grid.index(i, row.j);
+            let p = row.local.planform.pressure_mpa[k];
+            let (tx, ty, loaded) = upstream[r];
+            if p <= 0.0 {
                 out.tx[k] = 0.0;
                 out.ty[k] = 0.0;
-                upstream_loaded = false;
+                upstream[r].2 = false;
                 continue;
             }
-            if !upstream_loaded {
-                let (gx, gy) = ghost(grid, planform, edge, rates, i, j);
-                (tx, ty) = (gain * gx, gain * gy);
-            }
-            let (dtx, dty) = integration.increment(rates, grid.x_mm[i], y, grid.dx_mm);
-            let (px, py, slip) = project_to_bound(tx + gain * dtx, ty + gain * dty, mu * pressure[k]);
-            (tx, ty) = (px, py);
-            out.tx[k] = tx;
-            out.ty[k] = ty;
-            n_slip += slip as usize;
-            upstream_loaded = true;
+            let (ux, uy) = unbounded(grid, row.local, row.rates, how, (i, row.j), loaded.then_some((tx, ty)));
+            let (px, py, slip) = project_to_bound(ux, uy, mu * p);
+            out.tx[k] = px;
+            out.ty[k] = py;
+            n_slip[r] += slip as usize;
+            upstream[r] = (px, py, true);
         }
     }
     n_slip
+}
+
+/// Whether the first loaded element of row j slips in [`march_rows`] (without marching the row).
+pub fn leading_slips(
+    grid: &Grid,
+    local: &LocalContact,
+    mu: f64,
+    rates: &RigidSlip,
+    how: (LeadingEdge, Integration),
+    j: usize,
+) -> bool {
+    let pressure = &local.planform.pressure_mpa;
+    (0..grid.mx).find(|&i| pressure[grid.index(i, j)] > 0.0).is_some_and(|i| {
+        let (ux, uy) = unbounded(grid, local, rates, how, (i, j), None);
+        !within_bound(ux, uy, mu * pressure[grid.index(i, j)])
+    })
+}
+
+/// The traction of loaded element (i, j) before the bound: the upstream element's traction (or,
+/// at the start of a loaded run, the inflow) plus the element's slip times the row's gain.
+#[inline(always)]
+fn unbounded(
+    grid: &Grid,
+    local: &LocalContact,
+    rates: &RigidSlip,
+    (edge, integration): (LeadingEdge, Integration),
+    (i, j): (usize, usize),
+    upstream: Option<(f64, f64)>,
+) -> (f64, f64) {
+    let gain = local.row_gain[j];
+    let (tx, ty) = upstream.unwrap_or_else(|| {
+        let (gx, gy) = ghost(grid, &local.planform, edge, rates, i, j);
+        (gain * gx, gain * gy)
+    });
+    let (dtx, dty) = integration.increment(rates, grid.x_mm[i], grid.y_mm[j], grid.dx_mm);
+    (tx + gain * dtx, ty + gain * dty)
 }

@@ -6,9 +6,11 @@
 pub mod brush;
 pub mod contact;
 pub mod external;
+pub mod fastrip;
 pub mod fastsim;
 pub mod linear;
 pub mod polach;
+pub mod relaxation;
 pub mod sample_loop;
 pub mod she;
 pub mod stepper;
@@ -52,8 +54,16 @@ pub struct ModelDef {
 }
 
 /// Every built-in model. Adding one: its file and one line here.
-pub const MODELS: &[&ModelDef] =
-    &[&uba::MODEL, &fastsim::MODEL, &contact::MODEL, &linear::MODEL, &she::MODEL, &polach::MODEL];
+pub const MODELS: &[&ModelDef] = &[
+    &uba::MODEL,
+    &fastsim::MODEL,
+    &contact::MODEL,
+    &linear::MODEL,
+    &she::MODEL,
+    &polach::MODEL,
+    &fastrip::MODEL,
+    &relaxation::MODEL,
+];
 
 /// The built-in model of that name.
 pub fn builtin(name: &str) -> Option<&'static ModelDef> {

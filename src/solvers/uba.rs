@@ -15,7 +15,7 @@
 //! (the thesis's Eq. 3.4 with its spin sign converted to CONTACT's, see [`crate::physics::RigidSlip`]);
 //! at C = 1 material moves exactly one element per step: `τ_i ← τ_{i−1} + dx k_i`.
 
-use super::brush::{self, Integration, LeadingEdge, Tractions};
+use super::brush::{self, sum4, Integration, LeadingEdge, Tractions};
 use super::stepper::{FieldView, Step, Stepper};
 use super::{linear_in_elements, ModelDef, SolveError};
 use crate::error::InputError;
@@ -265,20 +265,6 @@ fn flat_body<const GHOST: bool, const SPIN: bool>(p: &Prepared, (ox, oy, nx, ny)
         slips += ((n2 > g[m] * g[m]) & (g[m] > 0.0)) as usize;
     }
     StepSums { n_slip: slips, sum_tx: sum4(nx), sum_ty: sum4(ny) }
-}
-
-/// Σ v with four partial sums over consecutive elements, combined as (s0 + s1) + (s2 + s3).
-#[inline(always)]
-fn sum4(v: &[f64]) -> f64 {
-    let mut acc = [0.0f64; 4];
-    let chunks = v.chunks_exact(4);
-    let tail: f64 = chunks.remainder().iter().sum();
-    for c in chunks {
-        for l in 0..4 {
-            acc[l] += c[l];
-        }
-    }
-    (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail
 }
 
 #[cfg(target_arch = "x86_64")]
