@@ -1,7 +1,9 @@
 //! The subcommands behind the CLI: simulate, run, check, bless, merge.
 
 use crate::error::{Error, InputError};
+use crate::harness::calibration;
 use crate::harness::compare::{self, Against, Finding};
+use crate::harness::fit::record::FitRecord;
 use crate::harness::references::References;
 use crate::harness::report::{self, ReportInput};
 use crate::harness::results::{self, StoredScene};
@@ -72,6 +74,33 @@ pub fn expand(study_file: &Path, out: &Path, golden: &Path) -> Result<Vec<PathBu
     Ok(files.into_iter().map(|(p, _)| p).collect())
 }
 
+/// `creepbench fit`: fit a model's parameters (harness::fit), print the before/after table and
+/// write the fitted block to `out` (default `out/fits/<name>.toml`), which must not exist yet.
+pub fn fit(file: &Path, out: Option<&Path>, reference: &Path, golden: &Path) -> Result<PathBuf, Error> {
+    use crate::harness::fit;
+    let text = crate::safety::read::read_text(file, crate::safety::read::SCENE_LIMIT_BYTES, "fit file")?;
+    let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| {
+        InputError::new(file.display().to_string(), "malformed TOML", format!("valid TOML ({})", e.message()))
+    })?;
+    let spec = fit::spec::FitSpec::from_table(&doc, file)?;
+    let out = out.map_or_else(|| Path::new("out/fits").join(format!("{}.toml", spec.name)), Path::to_path_buf);
+    guard::guard_not_under(&out, golden)?;
+    if out.exists() {
+        return Err(
+            InputError::new("--out", out.display(), "a file that does not exist yet (fit replaces nothing)").into()
+        );
+    }
+    let refs = References::load(reference)?;
+    let outcome = fit::fit(&spec, &refs)?;
+    print!("{}", fit::record::FitRecord::of(&outcome).table());
+    let text = fit::render(&outcome)?;
+    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).map_err(Error::io(dir))?;
+    }
+    write_whole(&out, &text)?;
+    Ok(out)
+}
+
 /// Run a suite (or one shard) and return its results as stored scenes.
 fn run_suite(suite_dir: &[PathBuf], shard: Option<Shard>, progress: bool) -> Result<Vec<StoredScene>, Error> {
     let files = suite::scene_files(suite_dir, shard)?;
@@ -97,10 +126,17 @@ pub fn build_report(
     out: &Path,
     golden: Option<&Path>,
     rules: &[Rule],
+    fits: &[FitRecord],
 ) -> Result<PathBuf, Error> {
     let mut findings = compare::evaluate(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
     tolerance_file::apply(rules, &mut findings, |_| false)?;
-    let input = ReportInput { scenes, refs, findings: &findings, sections: sections::all(scenes, refs) };
+    let mut all = sections::all(scenes, refs);
+    // Calibration right after the model ladder (or last, without one).
+    let at = all.iter().position(|s| s.title.starts_with("Model ladder")).map_or(all.len(), |i| i + 1);
+    if let Some(c) = calibration::section(fits) {
+        all.insert(at, c);
+    }
+    let input = ReportInput { scenes, refs, findings: &findings, sections: all };
     let report = report::build(&input);
     std::fs::create_dir_all(out).map_err(Error::io(out))?;
     report.write(out)?;
@@ -108,16 +144,24 @@ pub fn build_report(
     Ok(out.join("validation.md"))
 }
 
+/// Where `creepbench run` writes: the result folders, the report, and the fits it runs.
+pub struct RunOutputs<'a> {
+    pub results_dir: &'a Path,
+    pub report_dir: &'a Path,
+    /// The folder of fit files run after the suites (none: no fits).
+    pub fits: Option<&'a Path>,
+}
+
 /// `creepbench run`: the suites → result folders, then the report from those results.
 pub fn run(
     suite_dir: &[PathBuf],
     reference: &Path,
-    results_dir: &Path,
-    report_dir: &Path,
+    outputs: RunOutputs,
     shard: Option<Shard>,
     golden: &Path,
     progress: bool,
 ) -> Result<(), Error> {
+    let RunOutputs { results_dir, report_dir, fits } = outputs;
     guard::guard_not_under(results_dir, golden)?;
     guard::guard_not_under(report_dir, golden)?;
     let refs = References::load(reference)?;
@@ -131,9 +175,13 @@ pub fn run(
         eprintln!("shard done; build the report with `creepbench merge {} ...`", results_dir.display());
         return Ok(());
     }
+    if let Some(dir) = fits {
+        run_fits(dir, &refs, results_dir)?;
+    }
     let stored = read_results(&[results_dir.to_path_buf()])?;
     let rules = file_rules(&[], suite_dir)?;
-    let md = build_report(&stored, &refs, report_dir, Some(golden), &rules)?;
+    let records = read_fit_records(&[results_dir.to_path_buf()])?;
+    let md = build_report(&stored, &refs, report_dir, Some(golden), &rules, &records)?;
     println!("{}", md.display());
     Ok(())
 }
@@ -151,6 +199,71 @@ fn read_results(dirs: &[PathBuf]) -> Result<Vec<StoredScene>, Error> {
     }
     scenes.sort_by(|a, b| a.name.cmp(&b.name));
     Ok(scenes)
+}
+
+/// Where a result folder keeps the fits' outcomes.
+const FITS_SUBDIR: &str = "fits";
+
+/// Every fit file of `dir` (sorted), each run and stored as `<results>/fits/<name>.json` with its
+/// fitted block `<name>.toml` beside (replaced on each run, as the scenes' results are).
+fn run_fits(dir: &Path, refs: &References, results_dir: &Path) -> Result<(), Error> {
+    use crate::harness::fit;
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map_err(|e| InputError::new("--fits", dir.display(), format!("a folder of fit files ({e})")))?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    files.sort();
+    // Every fit file validated before any runs.
+    let specs = files
+        .iter()
+        .map(|f| {
+            let text = crate::safety::read::read_text(f, crate::safety::read::SCENE_LIMIT_BYTES, "fit file")?;
+            let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| {
+                InputError::new(f.display().to_string(), "malformed TOML", format!("valid TOML ({})", e.message()))
+            })?;
+            Ok(fit::spec::FitSpec::from_table(&doc, f)?)
+        })
+        .collect::<Result<Vec<_>, Error>>()?;
+    let out = results_dir.join(FITS_SUBDIR);
+    std::fs::create_dir_all(&out).map_err(Error::io(&out))?;
+    for spec in &specs {
+        let start = Instant::now();
+        let outcome = fit::fit(spec, refs)?;
+        let record = fit::record::FitRecord::of(&outcome);
+        let json = serde_json::to_string_pretty(&record)
+            .map_err(|e| Error::Fit { fit: spec.name.clone(), message: e.to_string() })?;
+        write_whole(&out.join(format!("{}.json", spec.name)), &json)?;
+        write_whole(&out.join(format!("{}.toml", spec.name)), &fit::render(&outcome)?)?;
+        eprintln!("fit {}: {} evaluations in {:.1} s", spec.name, outcome.evaluations, start.elapsed().as_secs_f64());
+    }
+    Ok(())
+}
+
+/// The fit outcomes stored in result folders (none where there are none), sorted by name.
+fn read_fit_records(dirs: &[PathBuf]) -> Result<Vec<FitRecord>, Error> {
+    let mut records = Vec::new();
+    for d in dirs {
+        let Ok(entries) = std::fs::read_dir(d.join(FITS_SUBDIR)) else { continue };
+        let mut paths: Vec<PathBuf> = entries
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.extension().is_some_and(|x| x == "json"))
+            .collect();
+        paths.sort();
+        for p in paths {
+            let text = crate::safety::read::read_text(&p, crate::safety::read::SCENE_LIMIT_BYTES, "fit record")?;
+            let r: FitRecord = serde_json::from_str(&text).map_err(|e| {
+                InputError::new(
+                    p.display().to_string(),
+                    "not a fit record",
+                    format!("JSON written by `creepbench run` ({e})"),
+                )
+            })?;
+            records.push(r);
+        }
+    }
+    records.sort_by(|a, b| a.name.cmp(&b.name));
+    Ok(records)
 }
 
 /// `creepbench merge`: one report from the result folders of several shards, judged by the same
@@ -183,7 +296,7 @@ pub fn merge(
         .cloned()
         .collect();
     let rules = file_rules(tolerances, &merged_suites)?;
-    let md = build_report(&scenes, &refs, report_dir, Some(golden), &rules)?;
+    let md = build_report(&scenes, &refs, report_dir, Some(golden), &rules, &read_fit_records(dirs)?)?;
     println!("{}", md.display());
     Ok(())
 }

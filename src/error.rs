@@ -96,6 +96,9 @@ pub enum Error {
     /// Reference data that do not match their reviewed checksums.
     #[error("{}: {source} (a reviewed change of reference data updates the manifest: `creepbench manifest {}`)", dir.display(), dir.display())]
     Manifest { dir: PathBuf, source: crate::safety::manifest::ManifestError },
+    /// The optimiser of `creepbench fit` failed (exit status 1).
+    #[error("fit `{fit}`: the optimiser failed: {message}")]
+    Fit { fit: String, message: String },
 }
 
 impl Error {

@@ -62,6 +62,20 @@ enum Command {
         #[arg(long, default_value = "golden")]
         golden: PathBuf,
     },
+    /// Fit a model's free parameters (a fit file: model, target, norm, scenes, [[fit.param]], [set])
+    /// and write them as a scene block OUT (default out/fits/<name>.toml; replaces none).
+    Fit {
+        /// The fit file (TOML with a [fit] table).
+        file: PathBuf,
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Reference data (for against = "reference").
+        #[arg(long, default_value = "reference")]
+        reference: PathBuf,
+        /// Refused as an output location (only `bless` writes there).
+        #[arg(long, default_value = "golden")]
+        golden: PathBuf,
+    },
     /// Write a study's scenes as scene files OUT/<name>.toml (replaces none).
     Expand {
         /// The study file (TOML with a [study] table).
@@ -82,6 +96,10 @@ enum Command {
         /// Where the report goes.
         #[arg(long, default_value = "reports")]
         report: PathBuf,
+        /// Fit files run after the suites (`creepbench fit`), their outcomes in the report's
+        /// calibration section (default: the folder `fits` where there is one).
+        #[arg(long)]
+        fits: Option<PathBuf>,
     },
     /// Run the suite and compare with golden/ (or --against DIR) and the references; exit 1 on drift.
     Check {
@@ -149,13 +167,18 @@ fn main() {
         eprintln!("warning: {e}");
     }
     let result = match cli.command {
+        Command::Fit { file, out, reference, golden } => {
+            commands::fit(&file, out.as_deref(), &reference, &golden).map(|f| println!("{}", f.display()))
+        }
         Command::Expand { study, out, golden } => {
             commands::expand(&study, &out, &golden).map(|files| files.iter().for_each(|f| println!("{}", f.display())))
         }
         Command::Simulate { scene, solvers, out, golden } => commands::simulate(&scene, &solvers, &out, &golden)
             .map(|dirs| dirs.iter().for_each(|d| println!("{}", d.display()))),
-        Command::Run { suite: s, results, report } => {
-            commands::run(&s.suite, &s.reference, &results, &report, s.shard, &s.golden, !s.quiet)
+        Command::Run { suite: s, results, report, fits } => {
+            let fits = fits.or_else(|| Some(PathBuf::from("fits")).filter(|d| d.is_dir()));
+            let outputs = commands::RunOutputs { results_dir: &results, report_dir: &report, fits: fits.as_deref() };
+            commands::run(&s.suite, &s.reference, outputs, s.shard, &s.golden, !s.quiet)
         }
         Command::Check { suite: s, against, junit, json, summary, tolerances } => {
             let files = commands::GateFiles { tolerances, junit, json, summary };

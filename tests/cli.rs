@@ -237,4 +237,15 @@ fn run_is_identical_with_one_or_two_threads() {
             assert_eq!(a, b, "{name}/{f:?} differs between 1 and 2 threads");
         }
     }
+    // The fits of fits/ (run from the project folder): their stored outcomes are the same bytes too.
+    let fits: Vec<_> = std::fs::read_dir(outs[0].join("fits")).unwrap().map(|f| f.unwrap().file_name()).collect();
+    assert_eq!(fits.len(), 4, "{fits:?}");
+    for f in fits {
+        let a = std::fs::read(outs[0].join("fits").join(&f)).unwrap();
+        assert_eq!(
+            a,
+            std::fs::read(outs[1].join("fits").join(&f)).unwrap(),
+            "fits/{f:?} differs between 1 and 2 threads"
+        );
+    }
 }

@@ -3,6 +3,7 @@
 //! over every row both have, the worst delay-ratio and loop-area differences, and the cost per row.
 //! Reads stored results only.
 
+use super::model_error::{quantile, row_diffs};
 use super::results::StoredScene;
 use super::sections::Section;
 use std::collections::BTreeMap;
@@ -20,25 +21,6 @@ struct Tally {
     loop_rel: f64,
     wall_s: f64,
     rows: usize,
-}
-
-/// |Δf| per row of two histories of one scene (rows matched by step).
-fn row_diffs(ours: &crate::history::History, exact: &crate::history::History) -> Vec<f64> {
-    let by_step: BTreeMap<usize, (f64, f64)> =
-        exact.rows.iter().map(|r| (r.step, (r.fx_over_fn, r.fy_over_fn))).collect();
-    ours.rows
-        .iter()
-        .filter_map(|r| by_step.get(&r.step).map(|(x, y)| (r.fx_over_fn - x).hypot(r.fy_over_fn - y)))
-        .collect()
-}
-
-/// The value at quantile `q` of sorted values (nearest rank).
-fn quantile(sorted: &[f64], q: f64) -> f64 {
-    if sorted.is_empty() {
-        return f64::NAN;
-    }
-    let k = ((q * sorted.len() as f64).ceil() as usize).clamp(1, sorted.len());
-    sorted[k - 1]
 }
 
 /// The ladder section, if any stored scene holds the exact solver beside another model.
@@ -93,18 +75,4 @@ pub fn section(scenes: &[StoredScene]) -> Option<Section> {
         figures: Vec::new(),
         tables: Vec::new(),
     })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::quantile;
-
-    #[test]
-    fn nearest_rank_quantile() {
-        let v: Vec<f64> = (1..=20).map(f64::from).collect();
-        assert_eq!(quantile(&v, 0.95), 19.0);
-        assert_eq!(quantile(&v, 1.0), 20.0);
-        assert_eq!(quantile(&v, 0.0), 1.0);
-        assert!(quantile(&[], 0.5).is_nan());
-    }
 }

@@ -3,11 +3,14 @@
 //! Markdown report. Only solver outputs (histories, metrics) are used here, never solver internals.
 
 pub mod against;
+pub mod calibration;
 pub mod compare;
 pub mod envelope;
+pub mod fit;
 pub mod gate_output;
 pub mod ladder;
 pub mod linked_table;
+pub mod model_error;
 pub mod plot;
 pub mod references;
 pub mod report;

@@ -217,6 +217,31 @@ impl<'a> Section<'a> {
         }
     }
 
+    /// An optional array of tables (`[[key]]`), each read by the caller.
+    pub fn opt_tables(&mut self, key: &str) -> Result<Option<Vec<Section<'a>>>, InputError> {
+        let Some(v) = self.get(key) else {
+            return Ok(None);
+        };
+        let field = self.field(key);
+        let Value::Array(items) = v else {
+            return Err(InputError::new(field, show(v), "an array of tables ([[section]])"));
+        };
+        items
+            .iter()
+            .enumerate()
+            .map(|(n, item)| match item {
+                Value::Table(t) => Ok(Section::new(format!("{field}[{n}]"), t)),
+                other => Err(InputError::new(format!("{field}[{n}]"), show(other), "a table")),
+            })
+            .collect::<Result<Vec<_>, _>>()
+            .map(Some)
+    }
+
+    /// The table itself (for sections whose keys are free, like a fit's `[set]`).
+    pub fn raw(&self) -> &'a Table {
+        self.table
+    }
+
     /// An optional sub-table.
     pub fn opt_table(&mut self, key: &str) -> Result<Option<Section<'a>>, InputError> {
         match self.get(key) {

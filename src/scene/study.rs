@@ -128,7 +128,7 @@ fn read_axis(n: usize, t: &Value) -> Result<Axis, InputError> {
 }
 
 /// Set the dotted key `path` of `doc` to `value`, creating tables on the way.
-fn set(doc: &mut Table, path: &str, value: Value, field: &str) -> Result<(), InputError> {
+pub fn set(doc: &mut Table, path: &str, value: Value, field: &str) -> Result<(), InputError> {
     let mut parts: Vec<&str> = path.split('.').collect();
     let last = parts.pop().unwrap_or(path);
     let mut t = doc;

@@ -1,0 +1,39 @@
+//! The report's "Calibration" section (issue 14): each stored fit (`<results>/fits/*.json`,
+//! written by `creepbench run` from `fits/`) with its fitted values and its before/after errors
+//! on the fitted and the held-out scenes. Reads stored results only.
+
+use super::fit::record::FitRecord;
+use super::sections::Section;
+use std::fmt::Write;
+
+/// The section, if any fit was stored.
+pub fn section(records: &[FitRecord]) -> Option<Section> {
+    if records.is_empty() {
+        return None;
+    }
+    let mut body = String::from(
+        "Free parameters of a model fitted with `creepbench fit` (Nelder–Mead, argmin) to a target's histories on some scenes, and judged with the fitted values on scenes it was not fitted on (held out). Norms: RMS and max of |Δf| over every row, RMS of the delay-ratio difference and of the relative loop-area difference over the sine scenes. A fitted block is a scene `[model]` table: `creepbench fit FILE --out F` writes it.\n",
+    );
+    for r in records {
+        let _ = write!(
+            body,
+            "\n**{}** ({}): `{}` against `{}`, minimising {}; {} iterations, {} evaluations, ended: {}.\n\n",
+            r.name, r.file, r.model, r.against, r.norm, r.iterations, r.evaluations, r.ended
+        );
+        for line in r.param_lines() {
+            let _ = writeln!(body, "- {line}");
+        }
+        let _ = writeln!(body, "- fitted on: {}", r.fitted.join(", "));
+        if !r.held_out.is_empty() {
+            let _ = writeln!(body, "- held out: {}", r.held_out.join(", "));
+        }
+        body.push('\n');
+        body.push_str(&r.table());
+    }
+    Some(Section {
+        title: "Calibration: fitted parameters and how far they carry".into(),
+        body,
+        figures: Vec::new(),
+        tables: Vec::new(),
+    })
+}

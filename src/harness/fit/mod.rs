@@ -1,0 +1,147 @@
+//! Calibration (`creepbench fit`, issue 14): fit a model's free parameters — any scene keys, e.g.
+//! `[model] slope_reduction` or `relaxation_length_mm` — to another model's or the references'
+//! histories over chosen scenes, minimising a stated norm with argmin's Nelder–Mead (bounded by a
+//! sine transform), and judge the fitted values on held-out scenes as well as on the fitted ones.
+//! The result is a scene `[model]` block (the `[set]` keys with the fitted values).
+
+pub mod objective;
+pub mod record;
+pub mod spec;
+
+use crate::error::{Error, InputError};
+use crate::harness::references::References;
+use crate::harness::suite;
+use argmin::core::{Executor, State, TerminationReason};
+use argmin::solver::neldermead::NelderMead;
+use objective::{Case, Objective, SetErrors};
+use spec::FitSpec;
+use std::fmt::Write;
+
+/// The simplex's first step in each coordinate [rad of the sine transform].
+const SIMPLEX_STEP: f64 = 0.5;
+/// Nelder–Mead stops when the costs at the simplex's vertices have a standard deviation below this.
+const COST_SD_TOLERANCE: f64 = 1e-10;
+
+/// What a fit found.
+#[derive(Debug, Clone)]
+pub struct FitOutcome {
+    pub spec: FitSpec,
+    pub fitted: Vec<String>,
+    pub held_out: Vec<String>,
+    /// The fitted values, in the order of `spec.params`.
+    pub values: Vec<f64>,
+    pub before_fit: SetErrors,
+    pub after_fit: SetErrors,
+    pub before_holdout: Option<SetErrors>,
+    pub after_holdout: Option<SetErrors>,
+    pub iterations: u64,
+    pub evaluations: u64,
+    /// How the search ended (argmin's termination reason).
+    pub ended: String,
+}
+
+/// Run a fit: load the scenes and targets, search, and measure before and after.
+pub fn fit(spec: &FitSpec, refs: &References) -> Result<FitOutcome, Error> {
+    let sources = suite::scene_files(&spec.suites, None)?;
+    let names: Vec<String> = sources.iter().map(|s| s.name.clone()).collect();
+    let (fitted, held_out) = (spec.select(&names, false), spec.select(&names, true));
+    if fitted.is_empty() {
+        return Err(InputError::new(
+            format!("{}: fit.fit", spec.file.display()),
+            spec.fit.join(", "),
+            format!(
+                "names or patterns matching scenes of {}",
+                spec.suites.iter().map(|s| s.display().to_string()).collect::<Vec<_>>().join(", ")
+            ),
+        )
+        .into());
+    }
+    let load = |names: &[String]| -> Result<Vec<Case>, Error> {
+        sources.iter().filter(|s| names.contains(&s.name)).map(|s| Case::load(spec, s, refs)).collect()
+    };
+    let (fit_cases, holdout_cases) = (load(&fitted)?, load(&held_out)?);
+    let start: Vec<f64> = spec.params.iter().map(|p| p.start).collect();
+    let measure = |cases: &[Case], values: &[f64]| objective::errors(&spec.model, cases, &spec.assignments(values));
+    let before_fit = measure(&fit_cases, &start)?;
+    if !before_fit.norm(spec.norm).is_finite() {
+        return Err(InputError::new(
+            format!("{}: fit.norm", spec.file.display()),
+            spec.norm.name(),
+            "a norm the fitted scenes have (delay_ratio and loop_area need sine loadings)",
+        )
+        .into());
+    }
+    // A model that fails inside the search leaves its typed error here (argmin's errors are untyped).
+    let failure = std::sync::Mutex::new(None);
+    let problem = Objective { spec, cases: &fit_cases, failure: &failure };
+    let z0: Vec<f64> = spec.params.iter().map(|p| p.coordinate(p.start)).collect();
+    let mut simplex = vec![z0.clone()];
+    for i in 0..z0.len() {
+        let mut v = z0.clone();
+        v[i] += SIMPLEX_STEP;
+        simplex.push(v);
+    }
+    let optimiser_error = |e: argmin::core::Error| Error::Fit { fit: spec.name.clone(), message: e.to_string() };
+    let solver = NelderMead::new(simplex).with_sd_tolerance(COST_SD_TOLERANCE).map_err(optimiser_error)?;
+    let result = Executor::new(problem, solver).configure(|s| s.max_iters(spec.max_iterations)).timer(false).run();
+    let result = match result {
+        Ok(r) => r,
+        Err(e) => {
+            let typed = failure.lock().ok().and_then(|mut f| f.take());
+            return Err(typed.unwrap_or_else(|| optimiser_error(e)));
+        }
+    };
+    let state = result.state();
+    let best = state.get_best_param().cloned().unwrap_or(z0);
+    let values = result.problem().problem.as_ref().map(|o| o.values(&best)).unwrap_or(start.clone());
+    let ended = state.get_termination_reason().map_or("unknown", TerminationReason::text).to_string();
+    let (iterations, evaluations) = (state.get_iter(), result.problem().counts.get("cost_count").copied().unwrap_or(0));
+    let before_holdout = (!holdout_cases.is_empty()).then(|| measure(&holdout_cases, &start)).transpose()?;
+    let after_holdout = (!holdout_cases.is_empty()).then(|| measure(&holdout_cases, &values)).transpose()?;
+    Ok(FitOutcome {
+        spec: spec.clone(),
+        fitted,
+        held_out,
+        after_fit: measure(&fit_cases, &values)?,
+        values,
+        before_fit,
+        before_holdout,
+        after_holdout,
+        iterations,
+        evaluations,
+        ended,
+    })
+}
+
+/// The fitted values as a scene block: the `[set]` keys with the values in place, headed by
+/// comments that say how they were found and what they do (TOML).
+pub fn render(o: &FitOutcome) -> Result<String, Error> {
+    let mut doc = toml::Table::new();
+    for (k, v) in o.spec.assignments(&o.values) {
+        crate::scene::study::set(&mut doc, &k, v, "set")?;
+    }
+    let spec = &o.spec;
+    let mut s = format!(
+        "# Fitted by `creepbench fit {}`: model {} against {}, norm {}, Nelder–Mead (argmin), {} iterations, {} evaluations, ended: {}.\n",
+        spec.file.display(),
+        spec.model,
+        spec.target.label(),
+        spec.norm.name(),
+        o.iterations,
+        o.evaluations,
+        o.ended
+    );
+    let record = record::FitRecord::of(o);
+    for line in record.param_lines() {
+        let _ = writeln!(s, "# {line}");
+    }
+    let _ = writeln!(s, "# fitted on: {}", o.fitted.join(", "));
+    if !o.held_out.is_empty() {
+        let _ = writeln!(s, "# held out: {}", o.held_out.join(", "));
+    }
+    for line in record.table().lines() {
+        let _ = writeln!(s, "# {line}");
+    }
+    s.push_str(&toml::to_string(&doc).map_err(|e| Error::Fit { fit: spec.name.clone(), message: e.to_string() })?);
+    Ok(s)
+}

@@ -1,0 +1,120 @@
+//! A fit's outcome as stored data (`<results>/fits/<name>.json`): what `creepbench run` keeps of
+//! each fit of `fits/`, and what the report's calibration section reads.
+
+use super::objective::SetErrors;
+use super::spec::Norm;
+use super::FitOutcome;
+use serde::{Deserialize, Serialize};
+use std::fmt::Write;
+
+/// A fitted parameter.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ParamRecord {
+    pub name: String,
+    pub start: f64,
+    pub min: f64,
+    pub max: f64,
+    pub value: f64,
+}
+
+/// One norm on one set of scenes, before and after (None: the set has no such value).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct NormRecord {
+    /// "fitted" or "held out".
+    pub set: String,
+    pub scenes: usize,
+    pub rows: usize,
+    pub norm: String,
+    /// The norm the fit minimised.
+    pub minimised: bool,
+    pub before: Option<f64>,
+    pub after: Option<f64>,
+}
+
+/// A fit's outcome.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct FitRecord {
+    pub name: String,
+    pub file: String,
+    pub model: String,
+    pub against: String,
+    pub norm: String,
+    pub params: Vec<ParamRecord>,
+    pub fitted: Vec<String>,
+    pub held_out: Vec<String>,
+    pub norms: Vec<NormRecord>,
+    pub iterations: u64,
+    pub evaluations: u64,
+    pub ended: String,
+}
+
+fn finite(v: f64) -> Option<f64> {
+    v.is_finite().then_some(v)
+}
+
+impl FitRecord {
+    pub fn of(o: &FitOutcome) -> FitRecord {
+        let spec = &o.spec;
+        let mut norms = Vec::new();
+        let sets = [("fitted", Some(o.before_fit), Some(o.after_fit)), ("held out", o.before_holdout, o.after_holdout)];
+        for (set, before, after) in sets {
+            let (Some(b), Some(a)): (Option<SetErrors>, Option<SetErrors>) = (before, after) else { continue };
+            norms.extend(Norm::ALL.into_iter().map(|n| NormRecord {
+                set: set.into(),
+                scenes: b.scenes,
+                rows: b.rows,
+                norm: n.name().into(),
+                minimised: n == spec.norm,
+                before: finite(b.norm(n)),
+                after: finite(a.norm(n)),
+            }));
+        }
+        FitRecord {
+            name: spec.name.clone(),
+            file: spec.file.display().to_string(),
+            model: spec.model.clone(),
+            against: spec.target.label(),
+            norm: spec.norm.name().into(),
+            params: spec
+                .params
+                .iter()
+                .zip(&o.values)
+                .map(|(p, &value)| ParamRecord { name: p.name.clone(), start: p.start, min: p.min, max: p.max, value })
+                .collect(),
+            fitted: o.fitted.clone(),
+            held_out: o.held_out.clone(),
+            norms,
+            iterations: o.iterations,
+            evaluations: o.evaluations,
+            ended: o.ended.clone(),
+        }
+    }
+
+    /// The before/after table (Markdown): every norm on the fitted and the held-out scenes.
+    pub fn table(&self) -> String {
+        let cell = |v: Option<f64>| v.map_or_else(|| "—".into(), |v| format!("{v:.5}"));
+        let mut s = String::from("| scenes | count | rows | norm | before | after |\n|---|---|---|---|---|---|\n");
+        for n in &self.norms {
+            let mark = if n.minimised { " (fitted)" } else { "" };
+            let _ = writeln!(
+                s,
+                "| {} | {} | {} | {}{mark} | {} | {} |",
+                n.set,
+                n.scenes,
+                n.rows,
+                n.norm,
+                cell(n.before),
+                cell(n.after)
+            );
+        }
+        s
+    }
+
+    /// The parameters, `name = value (start s, bounds [min, max])`.
+    pub fn param_lines(&self) -> Vec<String> {
+        self.params
+            .iter()
+            .map(|p| format!("{} = {:.6} (start {}, bounds [{}, {}])", p.name, p.value, p.start, p.min, p.max))
+            .collect()
+    }
+}

@@ -1,0 +1,314 @@
+//! The fit file (`creepbench fit FILE`), read and validated once: which model, against what,
+//! which norm, which scenes are fitted and which held out, the free parameters with their bounds,
+//! and the scene keys they set.
+//!
+//! ```toml
+//! [fit]
+//! name = "uba_sine"                      # the fit's id ([a-z0-9_]+)
+//! model = "uba"                          # a built-in model or an [external.NAME] of the scenes
+//! against = "solver:contact"             # a model run on the scenes as written, or "reference"
+//! norm = "rms_df"                        # rms_df | max_df | delay_ratio | loop_area
+//! suites = ["../scenes/thesis"]          # folders, relative to this file
+//! fit = ["sine_f10_mu10", "sine_f30_mu10"]   # scene names or patterns (* and ?)
+//! holdout = ["sine_f*_mu10"]             # judged with the fitted values, never fitted on
+//! max_iterations = 200                   # Nelder–Mead iterations (default 200)
+//!
+//! [[fit.param]]
+//! name = "k0"
+//! start = 1.0
+//! bounds = [0.3, 3.0]
+//!
+//! [set]                                  # dotted scene keys; "{k0}" is the parameter's value
+//! "model.slope_reduction" = ["{k0}", 1.0, 0.0]
+//! ```
+
+use crate::error::InputError;
+use crate::harness::tolerance_file::glob;
+use crate::scene::reader::{Range, Section};
+use std::path::{Path, PathBuf};
+use toml::{Table, Value};
+
+/// What a fit minimises over its scenes (each a number ≥ 0, 0 when the model equals the target).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Norm {
+    /// RMS of |Δf| over every row of every scene.
+    RmsDf,
+    /// Largest |Δf| over every row of every scene.
+    MaxDf,
+    /// RMS over the scenes with a delay ratio of the difference in delay ratio.
+    DelayRatio,
+    /// RMS over the scenes with a loop area of the relative loop-area difference.
+    LoopArea,
+}
+
+impl Norm {
+    pub const ALL: [Norm; 4] = [Norm::RmsDf, Norm::MaxDf, Norm::DelayRatio, Norm::LoopArea];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Norm::RmsDf => "rms_df",
+            Norm::MaxDf => "max_df",
+            Norm::DelayRatio => "delay_ratio",
+            Norm::LoopArea => "loop_area",
+        }
+    }
+
+    fn parse(s: &str) -> Option<Norm> {
+        Norm::ALL.into_iter().find(|n| n.name() == s)
+    }
+}
+
+/// What the model is measured against.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Target {
+    /// A model of the scenes (built-in or external; the fitted one too), run once on each scene
+    /// as written, without `[set]`.
+    Solver(String),
+    /// The reference data held for each scene (CONTACT's results).
+    Reference,
+}
+
+impl Target {
+    pub fn label(&self) -> String {
+        match self {
+            Target::Solver(s) => format!("solver:{s}"),
+            Target::Reference => "reference".into(),
+        }
+    }
+}
+
+/// A free parameter and its bounds (`min < start < max` is not required: `start` may sit on a bound).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Param {
+    pub name: String,
+    pub start: f64,
+    pub min: f64,
+    pub max: f64,
+}
+
+impl Param {
+    /// The optimiser's unbounded coordinate → the parameter: `min + (max − min)(1 + sin z)/2`
+    /// (the sine transform of bounded simplex searches, as MINUIT's), inside the bounds for any z.
+    pub fn value(&self, z: f64) -> f64 {
+        (self.min + (self.max - self.min) * 0.5 * (1.0 + z.sin())).clamp(self.min, self.max)
+    }
+
+    /// The coordinate of a value inside the bounds (the inverse of [`Param::value`] on [−π/2, π/2]).
+    pub fn coordinate(&self, x: f64) -> f64 {
+        (2.0 * (x - self.min) / (self.max - self.min) - 1.0).clamp(-1.0, 1.0).asin()
+    }
+}
+
+/// A validated fit file.
+#[derive(Debug, Clone)]
+pub struct FitSpec {
+    /// The file it was read from (messages, the output's header).
+    pub file: PathBuf,
+    pub name: String,
+    pub model: String,
+    pub target: Target,
+    pub norm: Norm,
+    pub suites: Vec<PathBuf>,
+    pub fit: Vec<String>,
+    pub holdout: Vec<String>,
+    pub max_iterations: u64,
+    pub params: Vec<Param>,
+    /// The scene keys set on every scene, values holding `"{name}"` placeholders.
+    pub set: Vec<(String, Value)>,
+}
+
+fn is_name(s: &str) -> bool {
+    !s.is_empty() && s.len() <= 100 && s.bytes().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'_')
+}
+
+/// The parameter names a value refers to (`"{name}"` strings, in arrays too).
+fn placeholders(v: &Value, out: &mut Vec<String>) {
+    match v {
+        Value::String(s) if s.starts_with('{') && s.ends_with('}') && s.len() > 2 => {
+            out.push(s[1..s.len() - 1].to_string())
+        }
+        Value::Array(a) => a.iter().for_each(|x| placeholders(x, out)),
+        _ => {}
+    }
+}
+
+/// `v` with each `"{name}"` replaced by that parameter's value.
+pub fn substitute(v: &Value, values: &[(String, f64)]) -> Value {
+    match v {
+        Value::String(s) if s.starts_with('{') && s.ends_with('}') => {
+            values.iter().find(|(n, _)| *n == s[1..s.len() - 1]).map_or_else(|| v.clone(), |(_, x)| Value::Float(*x))
+        }
+        Value::Array(a) => Value::Array(a.iter().map(|x| substitute(x, values)).collect()),
+        other => other.clone(),
+    }
+}
+
+impl FitSpec {
+    /// Read and validate a fit file's table; `file` names it in every error.
+    pub fn from_table(doc: &Table, file: &Path) -> Result<FitSpec, InputError> {
+        let place = file.display().to_string();
+        let in_file = |mut e: InputError| {
+            e.field = format!("{place}: {}", e.field);
+            e
+        };
+        Self::read(doc, file).map_err(in_file)
+    }
+
+    fn read(doc: &Table, file: &Path) -> Result<FitSpec, InputError> {
+        let dir = file.parent().map(Path::to_path_buf).unwrap_or_default();
+        let mut top = Section::new("", doc);
+        let mut f = top.table("fit")?;
+        let name = f.str("name", "a name of [a-z0-9_]+")?.to_string();
+        if !is_name(&name) {
+            return Err(InputError::new(f.field("name"), format!("{name:?}"), "1 to 100 characters of [a-z0-9_]"));
+        }
+        let model = f.str("model", "a built-in model or an [external.NAME] of the scenes")?.to_string();
+        let against = f.str("against", "\"solver:NAME\" or \"reference\"")?;
+        let target = match against.strip_prefix("solver:") {
+            // The same model is allowed: the target runs the scene as written, the fit with [set].
+            Some(s) if !s.is_empty() => Target::Solver(s.to_string()),
+            None if against == "reference" => Target::Reference,
+            _ => {
+                return Err(InputError::new(
+                    f.field("against"),
+                    format!("{against:?}"),
+                    "\"solver:NAME\" (a model of the scenes) or \"reference\"",
+                ))
+            }
+        };
+        let norm_names: Vec<&str> = Norm::ALL.iter().map(|n| n.name()).collect();
+        let norm = f.choice("norm", &norm_names).map(|n| Norm::parse(n).unwrap_or(Norm::RmsDf))?;
+        let suites: Vec<PathBuf> = f
+            .opt_str_list("suites", "folders of scenes, relative to the fit file")?
+            .filter(|s| !s.is_empty())
+            .ok_or_else(|| InputError::new(f.field("suites"), "missing", "a non-empty list of folders of scenes"))?
+            .iter()
+            .map(|s| dir.join(s))
+            .collect();
+        let patterns = |f: &mut Section, key: &str| -> Result<Vec<String>, InputError> {
+            Ok(f.opt_str_list(key, "scene names or patterns (* and ?)")?.unwrap_or_default())
+        };
+        let fit = patterns(&mut f, "fit")?;
+        if fit.is_empty() {
+            return Err(InputError::new(f.field("fit"), "missing or empty", "scene names or patterns (* and ?)"));
+        }
+        let holdout = patterns(&mut f, "holdout")?;
+        let max_iterations = f.opt_usize("max_iterations", 1, 100_000)?.unwrap_or(200) as u64;
+        let params = Self::params(&mut f)?;
+        f.finish()?;
+
+        let s = top.table("set")?;
+        let mut set = Vec::new();
+        let mut used = Vec::new();
+        for (key, v) in s.raw() {
+            let field = s.field(&format!("\"{key}\""));
+            if key.split('.').any(str::is_empty) || key == "name" || key == "solvers" {
+                return Err(InputError::new(
+                    field,
+                    format!("{key:?}"),
+                    "dotted scene keys such as \"model.relaxation_length_mm\" (not name or solvers)",
+                ));
+            }
+            let mut refs = Vec::new();
+            placeholders(v, &mut refs);
+            if let Some(r) = refs.iter().find(|r| !params.iter().any(|p| &p.name == *r)) {
+                let names: Vec<&str> = params.iter().map(|p| p.name.as_str()).collect();
+                return Err(InputError::new(
+                    field,
+                    format!("\"{{{r}}}\""),
+                    format!("a placeholder of a [[fit.param]]: {}", names.join(", ")),
+                ));
+            }
+            used.extend(refs);
+            set.push((key.clone(), v.clone()));
+        }
+        if let Some(p) = params.iter().find(|p| !used.contains(&p.name)) {
+            return Err(InputError::new(
+                format!("fit.param {}", p.name),
+                "not used",
+                format!("a parameter that some [set] value names as \"{{{}}}\"", p.name),
+            ));
+        }
+        top.finish()?;
+        Ok(FitSpec {
+            file: file.to_path_buf(),
+            name,
+            model,
+            target,
+            norm,
+            suites,
+            fit,
+            holdout,
+            max_iterations,
+            params,
+            set,
+        })
+    }
+
+    fn params(f: &mut Section) -> Result<Vec<Param>, InputError> {
+        let field = f.field("param");
+        let list = f.opt_tables("param")?.unwrap_or_default();
+        if list.is_empty() {
+            return Err(InputError::new(field, "missing", "one or more [[fit.param]] tables: name, start, bounds"));
+        }
+        let mut params: Vec<Param> = Vec::new();
+        for mut p in list {
+            let name = p.str("name", "a name of [a-z0-9_]+")?.to_string();
+            if !is_name(&name) || params.iter().any(|q| q.name == name) {
+                return Err(InputError::new(
+                    p.field("name"),
+                    format!("{name:?}"),
+                    "a name of [a-z0-9_]+ no other parameter has",
+                ));
+            }
+            let any = Range::new(f64::NEG_INFINITY, false, f64::INFINITY, false);
+            let [min, max] = p
+                .opt_f64_array::<2>("bounds", any)?
+                .ok_or_else(|| InputError::new(p.field("bounds"), "missing", "[min, max], finite, min < max"))?;
+            if min >= max {
+                return Err(InputError::new(
+                    p.field("bounds"),
+                    format!("[{min}, {max}]"),
+                    "[min, max], finite, min < max",
+                ));
+            }
+            let start = p.f64("start", Range::new(min, true, max, true))?;
+            p.finish()?;
+            params.push(Param { name, start, min, max });
+        }
+        Ok(params)
+    }
+
+    /// The scene names of `names` that the fit (`holdout = false`) or the hold-out set takes;
+    /// a scene both name is fitted, never held out.
+    pub fn select(&self, names: &[String], holdout: bool) -> Vec<String> {
+        let takes = |patterns: &[String], n: &str| patterns.iter().any(|p| glob(p, n));
+        names
+            .iter()
+            .filter(|n| if holdout { takes(&self.holdout, n) && !takes(&self.fit, n) } else { takes(&self.fit, n) })
+            .cloned()
+            .collect()
+    }
+
+    /// The parameter values to validate a scene with before any run: the start, and each
+    /// parameter alone at its bounds.
+    pub fn probes(&self) -> Vec<Vec<f64>> {
+        let start: Vec<f64> = self.params.iter().map(|p| p.start).collect();
+        let mut out = vec![start.clone()];
+        for (i, p) in self.params.iter().enumerate() {
+            for b in [p.min, p.max] {
+                let mut v = start.clone();
+                v[i] = b;
+                out.push(v);
+            }
+        }
+        out
+    }
+
+    /// The set keys with the parameters' values in place.
+    pub fn assignments(&self, values: &[f64]) -> Vec<(String, Value)> {
+        let named: Vec<(String, f64)> =
+            self.params.iter().map(|p| p.name.clone()).zip(values.iter().copied()).collect();
+        self.set.iter().map(|(k, v)| (k.clone(), substitute(v, &named))).collect()
+    }
+}

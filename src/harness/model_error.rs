@@ -1,0 +1,39 @@
+//! How far one model's history is from a target's (the exact solver's or a reference's): |Δf|
+//! row by row and the nearest-rank quantile of such errors. Shared by the model ladder and the fit.
+
+use crate::history::History;
+use std::collections::BTreeMap;
+
+/// |Δf| = |(fx, fy)/FN − (fx, fy)/FN of the target| per row of `ours` that the target has
+/// (rows matched by step).
+pub fn row_diffs(ours: &History, target: &History) -> Vec<f64> {
+    let by_step: BTreeMap<usize, (f64, f64)> =
+        target.rows.iter().map(|r| (r.step, (r.fx_over_fn, r.fy_over_fn))).collect();
+    ours.rows
+        .iter()
+        .filter_map(|r| by_step.get(&r.step).map(|(x, y)| (r.fx_over_fn - x).hypot(r.fy_over_fn - y)))
+        .collect()
+}
+
+/// The value at quantile `q` of sorted values (nearest rank; NaN for none).
+pub fn quantile(sorted: &[f64], q: f64) -> f64 {
+    if sorted.is_empty() {
+        return f64::NAN;
+    }
+    let k = ((q * sorted.len() as f64).ceil() as usize).clamp(1, sorted.len());
+    sorted[k - 1]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::quantile;
+
+    #[test]
+    fn nearest_rank_quantile() {
+        let v: Vec<f64> = (1..=20).map(f64::from).collect();
+        assert_eq!(quantile(&v, 0.95), 19.0);
+        assert_eq!(quantile(&v, 1.0), 20.0);
+        assert_eq!(quantile(&v, 0.0), 1.0);
+        assert!(quantile(&[], 0.5).is_nan());
+    }
+}

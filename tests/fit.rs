@@ -1,0 +1,182 @@
+//! `creepbench fit` (issue 14, calibration): a known parameter is recovered, the shipped fits of
+//! the relaxation model and the UBA give the stated before/after errors against the exact solver,
+//! the output is the same bytes run to run, and bad fit files are refused (exit 2, nothing written).
+
+mod common;
+use common::*;
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn fit(file: &Path, out: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(root())
+        .args(["fit", file.to_str().unwrap(), "--out", out.to_str().unwrap()])
+        .output()
+        .unwrap()
+}
+
+/// The value of `key = value` in the fitted block.
+fn fitted(text: &str, key: &str) -> f64 {
+    let doc: toml::Table = text.parse().unwrap();
+    doc["model"][key].as_float().unwrap()
+}
+
+/// A row "| set | n | rows | norm | before | after |" of the before/after table: (before, after).
+fn row(text: &str, set: &str, norm: &str) -> (f64, f64) {
+    let line = text
+        .lines()
+        .map(|l| l.trim_start_matches("# "))
+        .find(|l| l.starts_with(&format!("| {set} |")) && l.contains(&format!("| {norm}")))
+        .unwrap_or_else(|| panic!("no row {set} {norm} in\n{text}"));
+    let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+    (cells[5].parse().unwrap(), cells[6].parse().unwrap())
+}
+
+/// A suite of one thesis sine scene running the relaxation model with a given length, and a fit
+/// of that length against the same model as written: the fit must find it.
+#[test]
+fn recovers_a_known_relaxation_length_and_is_deterministic() {
+    let dir = tempdir("fit_recover");
+    let suite = dir.join("suite");
+    std::fs::create_dir_all(&suite).unwrap();
+    let mut scene: toml::Table = suite_scene_text("thesis", "sine_f30_mu10").parse().unwrap();
+    scene.insert("solvers".into(), toml::Value::Array(vec!["relaxation".into()]));
+    let model = scene.entry("model").or_insert_with(|| toml::Value::Table(Default::default()));
+    model.as_table_mut().unwrap().insert("relaxation_length_mm".into(), 21.5.into());
+    std::fs::write(suite.join("sine_f30_mu10.toml"), scene.to_string()).unwrap();
+    let spec = dir.join("recover.toml");
+    std::fs::write(
+        &spec,
+        r#"[fit]
+name = "recover"
+model = "relaxation"
+against = "solver:relaxation"
+norm = "rms_df"
+suites = ["suite"]
+fit = ["sine_*"]
+
+[[fit.param]]
+name = "l"
+start = 10.0
+bounds = [1.0, 60.0]
+
+[set]
+"model.relaxation_length_mm" = "{l}"
+"#,
+    )
+    .unwrap();
+    let (a, b) = (dir.join("a.toml"), dir.join("b.toml"));
+    for out in [&a, &b] {
+        let o = fit(&spec, out);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    let text = std::fs::read_to_string(&a).unwrap();
+    let l = fitted(&text, "relaxation_length_mm");
+    println!("{text}");
+    assert!((l - 21.5).abs() < 1e-3, "fitted length {l} mm, written 21.5 mm");
+    let (before, after) = row(&text, "fitted", "rms_df");
+    assert!(before > 1e-2 && after < 1e-5, "rms |df| {before} -> {after}");
+    assert_eq!(text, std::fs::read_to_string(&b).unwrap(), "two runs of one fit differ");
+}
+
+/// The shipped calibration of the relaxation model (fits/relaxation_sine.toml) against the exact
+/// solver at 10 and 30 Hz: the fitted length and the errors it leaves, on the fitted scenes and
+/// on the 14 held-out sine scenes (other frequencies, mu = 0.6). Measured when written:
+/// L = 8.4664 mm (linear theory 13.44), held-out RMS |df| 0.03967 -> 0.02596, loop-area error
+/// 44.5 % -> 11.2 %: the fitted lag generalises.
+#[test]
+fn relaxation_calibration_closes_most_of_the_loop_gap_on_held_out_scenes() {
+    let dir = tempdir("fit_relaxation");
+    let out = dir.join("relaxation.toml");
+    let o = fit(&root().join("fits/relaxation_sine.toml"), &out);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(&out).unwrap();
+    println!("{text}");
+    let l = fitted(&text, "relaxation_length_mm");
+    assert!((l - 8.4664).abs() < 0.01, "fitted length {l} mm");
+    let held = |norm| row(&text, "held out", norm);
+    let (b, a) = held("rms_df");
+    assert!((b - 0.03967).abs() < 2e-5 && (a - 0.02596).abs() < 2e-4, "held-out rms {b} -> {a}");
+    let (b, a) = held("loop_area");
+    assert!((b - 0.44517).abs() < 2e-4 && (a - 0.11214).abs() < 2e-3, "held-out loop error {b} -> {a}");
+    let (b, a) = row(&text, "fitted", "rms_df");
+    assert!((b - 0.07551).abs() < 2e-5 && (a - 0.04052).abs() < 2e-4, "fitted rms {b} -> {a}");
+}
+
+/// The shipped calibration of the UBA (fits/uba_sine.toml: the modified FASTSIM's slope reduction
+/// on the UBA's flexibilities): it lowers the fitted scenes' RMS |df| only from 0.0846 to 0.0746
+/// and raises the held-out scenes' from 0.0387 to 0.0456 — the UBA's gap is in its form, which
+/// no flexibility reduction closes. The test pins that finding.
+#[test]
+fn uba_calibration_does_not_generalise() {
+    let dir = tempdir("fit_uba");
+    let out = dir.join("uba.toml");
+    let o = fit(&root().join("fits/uba_sine.toml"), &out);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(&out).unwrap();
+    println!("{text}");
+    let (b, a) = row(&text, "fitted", "rms_df");
+    assert!((b - 0.08457).abs() < 2e-5 && a < b && a > 0.07, "fitted rms {b} -> {a}");
+    let (b, a) = row(&text, "held out", "rms_df");
+    assert!((b - 0.03866).abs() < 2e-5 && a > b, "held-out rms {b} -> {a}");
+}
+
+/// Bad fit files: exit 2, the message names the field and the value, nothing is written.
+#[test]
+fn bad_fit_files_are_refused() {
+    let dir = tempdir("fit_bad");
+    let good = r#"[fit]
+name = "bad"
+model = "relaxation"
+against = "solver:contact"
+norm = "rms_df"
+suites = ["SUITE"]
+fit = ["sine_f10_mu10"]
+
+[[fit.param]]
+name = "l"
+start = 10.0
+bounds = [1.0, 60.0]
+
+[set]
+"model.relaxation_length_mm" = "{l}"
+"#
+    .replace("SUITE", &root().join("scenes/thesis").display().to_string());
+    let cases: [(&str, &str, &str, &str); 10] = [
+        ("norm = \"rms_df\"", "norm = \"l2\"", "fit.norm", "\"l2\""),
+        ("against = \"solver:contact\"", "against = \"contact\"", "fit.against", "\"contact\""),
+        ("\"{l}\"", "\"{m}\"", "model.relaxation_length_mm", "{m}"),
+        ("bounds = [1.0, 60.0]", "bounds = [60.0, 1.0]", "fit.param[0].bounds", "[60, 1]"),
+        ("start = 10.0", "start = 100.0", "fit.param[0].start", "100"),
+        ("fit = [\"sine_f10_mu10\"]", "fit = [\"nosuch*\"]", "fit.fit", "nosuch*"),
+        ("norm = \"rms_df\"", "norm = \"rms_df\"\nlearning_rate = 1", "fit.learning_rate", "1"),
+        ("bounds = [1.0, 60.0]", "bounds = [-5.0, 60.0]", "relaxation_length_mm", "-5"),
+        ("\"model.relaxation_length_mm\" = \"{l}\"", "\"model.relaxation_length_mm\" = 3.0", "fit.param l", "not used"),
+        ("norm = \"rms_df\"", "norm = \"delay_ratio\"", "fit.norm", "delay_ratio"),
+    ];
+    for (n, (from, to, field, value)) in cases.iter().enumerate() {
+        let spec = dir.join(format!("bad{n}.toml"));
+        let mut text = good.replace(from, to);
+        if n == 9 {
+            // delay_ratio on a steady scene: no scene has the norm.
+            text = text.replace("sine_f10_mu10", "steady_exact_g22");
+        }
+        std::fs::write(&spec, text).unwrap();
+        let out = dir.join(format!("out{n}.toml"));
+        let o = fit(&spec, &out);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "case {n}: {err}");
+        assert!(err.contains(field) && err.contains(value), "case {n}: {err}");
+        assert!(err.contains(&spec.display().to_string()), "case {n} does not name the file: {err}");
+        assert!(!out.exists(), "case {n} wrote {}", out.display());
+    }
+    // An existing output is never replaced.
+    let spec = dir.join("good.toml");
+    std::fs::write(&spec, &good).unwrap();
+    let out = dir.join("existing.toml");
+    std::fs::write(&out, "keep me").unwrap();
+    let o = fit(&spec, &out);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--out"));
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), "keep me");
+}
