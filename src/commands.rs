@@ -78,11 +78,7 @@ pub fn expand(study_file: &Path, out: &Path, golden: &Path) -> Result<Vec<PathBu
 /// write the fitted block to `out` (default `out/fits/<name>.toml`), which must not exist yet.
 pub fn fit(file: &Path, out: Option<&Path>, reference: &Path, golden: &Path) -> Result<PathBuf, Error> {
     use crate::harness::fit;
-    let text = crate::safety::read::read_text(file, crate::safety::read::SCENE_LIMIT_BYTES, "fit file")?;
-    let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| {
-        InputError::new(file.display().to_string(), "malformed TOML", format!("valid TOML ({})", e.message()))
-    })?;
-    let spec = fit::spec::FitSpec::from_table(&doc, file)?;
+    let spec = fit::spec::FitSpec::from_file(file)?;
     let out = out.map_or_else(|| Path::new("out/fits").join(format!("{}.toml", spec.name)), Path::to_path_buf);
     guard::guard_not_under(&out, golden)?;
     if out.exists() {
@@ -215,16 +211,7 @@ fn run_fits(dir: &Path, refs: &References, results_dir: &Path) -> Result<(), Err
         .collect();
     files.sort();
     // Every fit file validated before any runs.
-    let specs = files
-        .iter()
-        .map(|f| {
-            let text = crate::safety::read::read_text(f, crate::safety::read::SCENE_LIMIT_BYTES, "fit file")?;
-            let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| {
-                InputError::new(f.display().to_string(), "malformed TOML", format!("valid TOML ({})", e.message()))
-            })?;
-            Ok(fit::spec::FitSpec::from_table(&doc, f)?)
-        })
-        .collect::<Result<Vec<_>, Error>>()?;
+    let specs = files.iter().map(|f| fit::spec::FitSpec::from_file(f)).collect::<Result<Vec<_>, Error>>()?;
     let out = results_dir.join(FITS_SUBDIR);
     std::fs::create_dir_all(&out).map_err(Error::io(&out))?;
     for spec in &specs {

@@ -32,6 +32,28 @@ fn row(text: &str, set: &str, norm: &str) -> (f64, f64) {
     (cells[5].parse().unwrap(), cells[6].parse().unwrap())
 }
 
+/// A fit of the relaxation length (start 10 mm, bounds [1, 60] mm) on the scenes `fit` of `suite`.
+fn relaxation_fit(name: &str, against: &str, suite: &str, fit: &str) -> String {
+    format!(
+        r#"[fit]
+name = "{name}"
+model = "relaxation"
+against = "{against}"
+norm = "rms_df"
+suites = ["{suite}"]
+fit = ["{fit}"]
+
+[[fit.param]]
+name = "l"
+start = 10.0
+bounds = [1.0, 60.0]
+
+[set]
+"model.relaxation_length_mm" = "{{l}}"
+"#
+    )
+}
+
 /// A suite of one thesis sine scene running the relaxation model with a given length, and a fit
 /// of that length against the same model as written: the fit must find it.
 #[test]
@@ -45,26 +67,7 @@ fn recovers_a_known_relaxation_length_and_is_deterministic() {
     model.as_table_mut().unwrap().insert("relaxation_length_mm".into(), 21.5.into());
     std::fs::write(suite.join("sine_f30_mu10.toml"), scene.to_string()).unwrap();
     let spec = dir.join("recover.toml");
-    std::fs::write(
-        &spec,
-        r#"[fit]
-name = "recover"
-model = "relaxation"
-against = "solver:relaxation"
-norm = "rms_df"
-suites = ["suite"]
-fit = ["sine_*"]
-
-[[fit.param]]
-name = "l"
-start = 10.0
-bounds = [1.0, 60.0]
-
-[set]
-"model.relaxation_length_mm" = "{l}"
-"#,
-    )
-    .unwrap();
+    std::fs::write(&spec, relaxation_fit("recover", "solver:relaxation", "suite", "sine_*")).unwrap();
     let (a, b) = (dir.join("a.toml"), dir.join("b.toml"));
     for out in [&a, &b] {
         let o = fit(&spec, out);
@@ -125,23 +128,8 @@ fn uba_calibration_does_not_generalise() {
 #[test]
 fn bad_fit_files_are_refused() {
     let dir = tempdir("fit_bad");
-    let good = r#"[fit]
-name = "bad"
-model = "relaxation"
-against = "solver:contact"
-norm = "rms_df"
-suites = ["SUITE"]
-fit = ["sine_f10_mu10"]
-
-[[fit.param]]
-name = "l"
-start = 10.0
-bounds = [1.0, 60.0]
-
-[set]
-"model.relaxation_length_mm" = "{l}"
-"#
-    .replace("SUITE", &root().join("scenes/thesis").display().to_string());
+    let good =
+        relaxation_fit("bad", "solver:contact", &root().join("scenes/thesis").display().to_string(), "sine_f10_mu10");
     let cases: [(&str, &str, &str, &str); 10] = [
         ("norm = \"rms_df\"", "norm = \"l2\"", "fit.norm", "\"l2\""),
         ("against = \"solver:contact\"", "against = \"contact\"", "fit.against", "\"contact\""),

@@ -21,3 +21,4 @@ pub mod suite;
 pub mod table;
 pub mod tolerance_file;
 pub mod tolerances;
+pub mod work_precision;

@@ -72,77 +72,6 @@ pub fn thesis_beside_ours(scenes: &[StoredScene], refs: &References) -> Section 
     Section::new("The thesis's figures beside ours", s)
 }
 
-/// Max |f − f_ref| at the times of `h`, `reference` linearly interpolated in time.
-fn error_against(h: &History, reference: &History) -> f64 {
-    let (rt, rf) = (reference.column("t_s").unwrap_or_default(), reference.column("fx_over_fn").unwrap_or_default());
-    let mut worst: f64 = 0.0;
-    for r in &h.rows {
-        let k = rt.partition_point(|&x| x < r.t_s - 1e-12);
-        if k >= rt.len() {
-            continue;
-        }
-        let v = if (rt[k] - r.t_s).abs() < 1e-12 || k == 0 {
-            rf[k]
-        } else {
-            rf[k - 1] + (rf[k] - rf[k - 1]) * (r.t_s - rt[k - 1]) / (rt[k] - rt[k - 1])
-        };
-        worst = worst.max((r.fx_over_fn - v).abs());
-    }
-    worst
-}
-
-/// Error against run time: each solver on grids 22/44/88 of sine_f30_mu10, error against the
-/// finest CONTACT reference (88×88), wall time per simulated second.
-pub fn error_vs_time(scenes: &[StoredScene], refs: &References) -> Option<Section> {
-    let fine = refs.contact.history("sine_f30_mu10_g88")?;
-    let names = [("sine_f30_mu10", 22), ("sine_f30_mu10_g44", 44), ("sine_f30_mu10_g88", 88)];
-    let mut s = String::from("Scene sine_f30_mu10 (30 Hz, μ = 1) on 22×22, 44×44 and 88×88 grids. Error: max |f − f_CONTACT,88×88| over the steps (the reference interpolated in time); cost: wall time per simulated second of rolling (this machine, one thread per scene). CONTACT's own runs of the same scenes are listed for scale (`contact_wall_s` includes start-up and file output).\n\n| solver | grid | max error | wall s per simulated s | wall ms per step |\n|---|---|---|---|---|\n");
-    let mut curves: BTreeMap<String, Vec<(f64, f64)>> = Default::default();
-    for (name, grid) in names {
-        let Some(sc) = find(scenes, name) else { continue };
-        let sim_s = sc.scene.history.last().map(|r| r.t_s).unwrap_or(f64::NAN);
-        for (solver, h) in &sc.histories {
-            let err = error_against(h, fine);
-            let wall = sc.timing.get(solver).map(|t| t.wall_s).unwrap_or(f64::NAN);
-            let _ = writeln!(
-                s,
-                "| {solver} | {grid} | {err:.5} | {:.3} | {:.3} |",
-                wall / sim_s,
-                1e3 * wall / h.rows.len() as f64
-            );
-            curves.entry(solver.clone()).or_default().push((wall / sim_s, err.max(1e-9).log10()));
-        }
-        if let (Some(c), Some(ch)) = (refs.contact.cases.get(name), refs.contact.history(name)) {
-            let err = error_against(ch, fine);
-            let _ = writeln!(
-                s,
-                "| CONTACT (reference run) | {grid} | {err:.5} | {:.3} | {:.3} |",
-                c.contact_wall_s / sim_s,
-                1e3 * c.contact_wall_s / (c.n_steps as f64 + 1.0)
-            );
-            if err > 0.0 {
-                curves.entry("CONTACT".into()).or_default().push((c.contact_wall_s / sim_s, err.log10()));
-            }
-        }
-    }
-    let series: Vec<Series> =
-        curves.into_iter().map(|(label, points)| Series { markers: label == "CONTACT", label, points }).collect();
-    let svg = line_chart(
-        "Error against run time (sine_f30_mu10)",
-        "wall s per simulated s (log)",
-        "log10 max |f - f_CONTACT,88|",
-        &series,
-        true,
-    );
-    s.push_str("\n![error against run time](figures/error_vs_time.svg)\n");
-    Some(Section {
-        title: "Error against run time".into(),
-        body: s,
-        figures: vec![("error_vs_time.svg".into(), svg)],
-        tables: Vec::new(),
-    })
-}
-
 /// Wall time per scene and solver, with CONTACT's time for the same case; the slowest runs inline,
 /// every run in a linked table.
 pub fn timing(scenes: &[StoredScene], refs: &References) -> Section {
@@ -295,7 +224,7 @@ pub fn all(scenes: &[StoredScene], refs: &References) -> Vec<Section> {
     out.extend(super::studies::section(scenes, refs));
     out.extend(super::envelope::section(scenes, refs));
     out.extend(super::envelope::nonhertz_section(scenes, refs));
-    out.extend(error_vs_time(scenes, refs));
+    out.extend(super::work_precision::section(scenes, refs));
     out.extend(grid_convergence(scenes, refs));
     out.extend(stability(scenes));
     out.push(timing(scenes, refs));

@@ -144,6 +144,15 @@ pub fn substitute(v: &Value, values: &[(String, f64)]) -> Value {
 }
 
 impl FitSpec {
+    /// Read (bounded) and validate a fit file.
+    pub fn from_file(file: &Path) -> Result<FitSpec, crate::error::Error> {
+        let text = crate::safety::read::read_text(file, crate::safety::read::SCENE_LIMIT_BYTES, "fit file")?;
+        let doc: Table = text.parse().map_err(|e: toml::de::Error| {
+            InputError::new(file.display().to_string(), "malformed TOML", format!("valid TOML ({})", e.message()))
+        })?;
+        Ok(FitSpec::from_table(&doc, file)?)
+    }
+
     /// Read and validate a fit file's table; `file` names it in every error.
     pub fn from_table(doc: &Table, file: &Path) -> Result<FitSpec, InputError> {
         let place = file.display().to_string();
