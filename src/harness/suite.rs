@@ -9,8 +9,8 @@ use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
 /// The default suites: the thesis scenes, the stability scenes and the studies behind the report.
-pub const DEFAULT_SUITES: [&str; 5] =
-    ["scenes/thesis", "scenes/envelope", "scenes/nonhertz", "scenes/stability", "scenes/report"];
+pub const DEFAULT_SUITES: [&str; 6] =
+    ["scenes/thesis", "scenes/envelope", "scenes/nonhertz", "scenes/table", "scenes/stability", "scenes/report"];
 
 /// `--shard i/n`: this run takes the scenes whose name hashes to i − 1 modulo n.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -32,9 +32,10 @@ pub enum Creepage {
     Step { c: f64, steps: usize, c_before: f64 },
     /// cx(t_k) = c0 + cp sin(2π F t_k), k = 1..ceil(periods/(F dt)).
     Sine { c0: f64, cp: f64, freq_hz: f64, periods: f64 },
-    /// Steady rolling at `points` evenly spaced t from `from` to `to`, at the creepage
-    /// `[cx, cy, cs] + t·direction` (cy, cs the scene's constants; see [`Scene::sweep_point`]).
-    Sweep { from: f64, to: f64, points: usize, direction: [f64; 3], cx: f64 },
+    /// Steady rolling at `points` evenly spaced t from `from` to `to` — or at the listed t of
+    /// `at` (then `from`, `to` are its first and last) — at the creepage `[cx, cy, cs] +
+    /// t·direction` (cy, cs the scene's constants; see [`Scene::sweep_point`]).
+    Sweep { from: f64, to: f64, points: usize, direction: [f64; 3], cx: f64, at: Option<Vec<f64>> },
     /// A CSV table `t_s,cx[,cy,cs,fn_n,mu]`, interpolated at t_k = k dt up to its last time
     /// (within `problem::loading::TABLE_END_REL`).
     Table { file: PathBuf, rows: table::CreepageTable },
@@ -413,9 +414,16 @@ impl Scene {
                 periods: cr.f64("periods", Range::new(0.0, false, 1e4, true))?,
             },
             "sweep" => {
-                let from = cr.f64("from", FINITE)?;
-                let to = cr.f64("to", FINITE)?;
-                let points = cr.usize("points", 1, HARD_MAX_STEPS)?;
+                let at = cr.opt_f64_list("at", FINITE, HARD_MAX_STEPS)?;
+                let (from, to, points) = match &at {
+                    Some(list) => {
+                        for key in ["from", "to", "points"] {
+                            cr.refuse(key, "either creepage.at (a list of t) or from, to, points, not both")?;
+                        }
+                        (list[0], list[list.len() - 1], list.len())
+                    }
+                    None => (cr.f64("from", FINITE)?, cr.f64("to", FINITE)?, cr.usize("points", 1, HARD_MAX_STEPS)?),
+                };
                 let over = cr.opt_choice("over", &["cx", "cy", "cs"])?;
                 let direction = match (over, cr.opt_f64_array::<3>("direction", FINITE)?) {
                     (Some(o), Some(d)) => {
@@ -438,7 +446,7 @@ impl Scene {
                     _ => [1.0, 0.0, 0.0],
                 };
                 let cx = cr.opt_f64("cx", CREEPAGE_LIMIT)?.unwrap_or(0.0);
-                Creepage::Sweep { from, to, points, direction, cx }
+                Creepage::Sweep { from, to, points, direction, cx, at }
             }
             _ => {
                 let file = cr.str("file", "a CSV path relative to the scene file")?;
@@ -572,15 +580,18 @@ impl Scene {
     }
 
     /// Creepage `[cx, cy, cs]` of sweep point k = 1..=points: `[cx, cy, cs] + t·direction`, t from
-    /// `from` to `to` evenly (`None` for the other kinds). A zero direction component keeps its
+    /// `from` to `to` evenly or the k-th of `at` (`None` for the other kinds). A zero direction component keeps its
     /// constant and a zero constant gives d·t, bit for bit: the cx sweep gives exactly the
     /// cx = from + (to − from)·(k − 1)/(points − 1) of scenes written before `over`/`direction`.
     pub fn sweep_point(&self, k: usize) -> Option<[f64; 3]> {
-        let Creepage::Sweep { from, to, points, direction, cx } = &self.creepage else {
+        let Creepage::Sweep { from, to, points, direction, cx, at } = &self.creepage else {
             return None;
         };
         let f = if *points > 1 { (k - 1) as f64 / (*points - 1) as f64 } else { 0.0 };
-        let t = from + (to - from) * f;
+        let t = match at {
+            Some(list) => *list.get(k.checked_sub(1)?)?,
+            None => from + (to - from) * f,
+        };
         let add = |c: f64, d: f64| {
             if d == 0.0 {
                 c
@@ -593,14 +604,19 @@ impl Scene {
         Some([add(*cx, direction[0]), add(self.cy, direction[1]), add(self.cs_per_mm, direction[2])])
     }
 
-    /// Every sweep point within the creepage ranges. The points are monotone in t, so the first
-    /// and the last (computed as they are sampled) bound them all; the error names the end.
+    /// Every sweep point within the creepage ranges. Evenly spaced points are monotone in t, so
+    /// the first and the last (computed as they are sampled) bound them all and the error names
+    /// the end; a list `at` is checked point by point and the error names the entry.
     fn check_sweep_points(&self) -> Result<(), InputError> {
-        let Creepage::Sweep { from, to, points, .. } = &self.creepage else {
+        let Creepage::Sweep { from, to, points, at, .. } = &self.creepage else {
             return Ok(());
         };
-        for (k, key, t) in [(1, "from", from), (*points, "to", to)] {
-            let key = if *points == 1 { "from" } else { key };
+        let checked: Vec<(usize, String, f64)> = match at {
+            Some(list) => list.iter().enumerate().map(|(n, &t)| (n + 1, format!("at[{n}]"), t)).collect(),
+            None if *points == 1 => vec![(1, "from".into(), *from)],
+            None => vec![(1, "from".into(), *from), (*points, "to".into(), *to)],
+        };
+        for (k, key, t) in checked.iter().map(|(k, key, t)| (*k, key, t)) {
             let point = self.sweep_point(k).unwrap_or_default();
             let limits = [("cx", CREEPAGE_LIMIT), ("cy", CREEPAGE_LIMIT), ("cs", SPIN_LIMIT)];
             for ((name, range), v) in limits.iter().zip(point) {

@@ -110,15 +110,37 @@ impl<'a> Section<'a> {
 
     /// An optional array of exactly `N` numbers (integer or float), each within `range`.
     pub fn opt_f64_array<const N: usize>(&mut self, key: &str, range: Range) -> Result<Option<[f64; N]>, InputError> {
+        let allowed = format!("an array of {N} numbers, each {}", range.describe());
+        let Some(v) = self.numbers(key, range, |n| n == N, &allowed)? else {
+            return Ok(None);
+        };
+        let mut out = [0.0; N];
+        out.copy_from_slice(&v);
+        Ok(Some(out))
+    }
+
+    /// An optional non-empty array of numbers, each within `range`, at most `max_len` of them.
+    pub fn opt_f64_list(&mut self, key: &str, range: Range, max_len: usize) -> Result<Option<Vec<f64>>, InputError> {
+        let allowed = format!("an array of 1 to {max_len} numbers, each {}", range.describe());
+        self.numbers(key, range, |n| (1..=max_len).contains(&n), &allowed)
+    }
+
+    /// An optional array of numbers whose length passes `len_ok`, each within `range`.
+    fn numbers(
+        &mut self,
+        key: &str,
+        range: Range,
+        len_ok: impl Fn(usize) -> bool,
+        allowed: &str,
+    ) -> Result<Option<Vec<f64>>, InputError> {
         let Some(v) = self.get(key) else {
             return Ok(None);
         };
-        let allowed = format!("an array of {N} numbers, each {}", range.describe());
         let items = match v {
-            Value::Array(items) if items.len() == N => items,
+            Value::Array(items) if len_ok(items.len()) => items,
             other => return Err(InputError::new(self.field(key), show(other), allowed)),
         };
-        let mut out = [0.0; N];
+        let mut out = Vec::with_capacity(items.len());
         for (n, item) in items.iter().enumerate() {
             let x = match item {
                 Value::Float(f) => *f,
@@ -128,7 +150,7 @@ impl<'a> Section<'a> {
             if !range.contains(x) {
                 return Err(InputError::new(format!("{}[{n}]", self.field(key)), fmt_num(x), allowed));
             }
-            out[n] = x;
+            out.push(x);
         }
         Ok(Some(out))
     }

@@ -14,6 +14,7 @@
 //! name = "mu"
 //! "contact.mu" = [0.1, 0.2, 1.0]         # a dotted scene key and its values
 //! labels = ["01", "02", "10"]            # optional: name parts (default: the values, compact)
+//! # x_values = [...]                     # optional: numbers on x where the values are not numbers
 //!
 //! [scene]                                # the template: a whole scene without `name`
 //! solvers = ["uba", "contact"]
@@ -56,6 +57,8 @@ struct Axis {
     name: String,
     keys: Vec<(String, Vec<Value>)>,
     labels: Vec<String>,
+    /// The axis's numbers on the curves' x where its keys are not numbers (`x_values`).
+    x_values: Option<Vec<f64>>,
 }
 
 fn err(field: impl Into<String>, value: impl std::fmt::Display, allowed: impl Into<String>) -> InputError {
@@ -93,7 +96,7 @@ fn read_axis(n: usize, t: &Value) -> Result<Axis, InputError> {
         None => return Err(err(format!("{field}.name"), "missing", "a name of [a-z0-9_]+")),
     };
     let mut keys = Vec::new();
-    for (k, v) in t.iter().filter(|(k, _)| *k != "name" && *k != "labels") {
+    for (k, v) in t.iter().filter(|(k, _)| !["name", "labels", "x_values"].contains(&k.as_str())) {
         let values = v
             .as_array()
             .filter(|a| !a.is_empty())
@@ -124,7 +127,14 @@ fn read_axis(n: usize, t: &Value) -> Result<Axis, InputError> {
         }
         Some(v) => return Err(err(format!("{field}.labels"), v, format!("{len} strings, one per value"))),
     };
-    Ok(Axis { name, keys, labels })
+    let x_values = match t.get("x_values") {
+        None => None,
+        Some(Value::Array(a)) if a.len() == len && a.iter().all(|v| as_f64(v).is_some()) => {
+            Some(a.iter().filter_map(as_f64).collect())
+        }
+        Some(v) => return Err(err(format!("{field}.x_values"), v, format!("{len} numbers, one per value"))),
+    };
+    Ok(Axis { name, keys, labels, x_values })
 }
 
 /// Set the dotted key `path` of `doc` to `value`, creating tables on the way.
@@ -194,11 +204,11 @@ pub fn expand(doc: &Table) -> Result<Vec<Expanded>, InputError> {
             err("study.x", format!("{x:?}"), format!("one of the axes: {}", names.join(", ")))
         })?,
     };
-    if axes[x_axis].keys[0].1.iter().any(|v| as_f64(v).is_none()) {
+    if axes[x_axis].x_values.is_none() && axes[x_axis].keys[0].1.iter().any(|v| as_f64(v).is_none()) {
         return Err(err(
             format!("study.axis[{x_axis}]"),
             format!("{:?}", axes[x_axis].keys[0].0),
-            "numbers on the x axis",
+            "numbers on the x axis (or the axis's x_values)",
         ));
     }
     let metrics = match study.get("metrics") {
@@ -257,8 +267,14 @@ pub fn expand(doc: &Table) -> Result<Vec<Expanded>, InputError> {
         let point = StudyPoint {
             study: name.clone(),
             title: title.clone(),
-            x_key: axes[x_axis].keys[0].0.clone(),
-            x: as_f64(&axes[x_axis].keys[0].1[at[x_axis]]).unwrap_or(f64::NAN),
+            x_key: match &axes[x_axis].x_values {
+                Some(_) => axes[x_axis].name.clone(),
+                None => axes[x_axis].keys[0].0.clone(),
+            },
+            x: match &axes[x_axis].x_values {
+                Some(v) => v[at[x_axis]],
+                None => as_f64(&axes[x_axis].keys[0].1[at[x_axis]]).unwrap_or(f64::NAN),
+            },
             series: series.join(", "),
             metrics: metrics.clone(),
         };

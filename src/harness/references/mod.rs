@@ -4,6 +4,7 @@
 
 pub mod contact;
 pub mod envelope;
+pub mod table;
 pub mod thesis;
 
 use super::compare::{Against, Finding};
@@ -17,8 +18,8 @@ pub const DEFAULT_DIR: &str = "reference";
 
 /// Every label the reference sets' findings carry (a set may use more than one: CONTACT's exact
 /// theory and its FASTSIM): what a tolerance rule may name besides golden and previous.
-pub const LABELS: [Against; 5] =
-    [contact::EXACT, contact::FASTSIM, envelope::ENVELOPE, envelope::NONHERTZ, thesis::AGAINST];
+pub const LABELS: [Against; 6] =
+    [contact::EXACT, contact::FASTSIM, envelope::ENVELOPE, envelope::NONHERTZ, table::TABLE, thesis::AGAINST];
 
 /// A set of reference results.
 pub trait ReferenceSet: Send + Sync {
@@ -36,6 +37,8 @@ pub struct References {
     pub contact: contact::ContactCases,
     pub envelope: envelope::EnvelopeCases,
     pub nonhertz: envelope::EnvelopeCases,
+    /// CONTACT's own test table (3220 steady cases).
+    pub table: envelope::EnvelopeCases,
     pub thesis: thesis::ThesisTables,
 }
 
@@ -49,14 +52,15 @@ impl References {
             contact: contact::ContactCases::load(dir)?,
             envelope: envelope::EnvelopeCases::load(dir, "contact_envelope", envelope::ENVELOPE)?,
             nonhertz: envelope::EnvelopeCases::load(dir, "contact_nonhertz", envelope::NONHERTZ)?,
+            table: table::load(dir)?,
             thesis: thesis::ThesisTables::load(dir)?,
         })
     }
 
     /// The registry: every set, in the order of the report. Adding a set: its file, a field and
     /// a line here.
-    pub fn sets(&self) -> [&dyn ReferenceSet; 4] {
-        [&self.contact, &self.envelope, &self.nonhertz, &self.thesis]
+    pub fn sets(&self) -> [&dyn ReferenceSet; 5] {
+        [&self.contact, &self.envelope, &self.nonhertz, &self.table, &self.thesis]
     }
 
     /// The first history any set holds for a scene (drawn as markers in the plots).
