@@ -69,10 +69,65 @@ pub fn section(scenes: &[StoredScene]) -> Option<Section> {
             quantile(&t.diffs, 0.95),
         );
     }
+    body.push_str(&by_series(scenes));
     Some(Section {
         title: "Model ladder: every model against the exact theory".into(),
         body,
         figures: Vec::new(),
         tables: Vec::new(),
     })
+}
+
+/// Per study, per series (the study's other axes at one value each: for CONTACT's test table, one
+/// a/b and spin level), every model's RMS and max |Δf| against the exact theory over the series'
+/// rows.
+fn by_series(scenes: &[StoredScene]) -> String {
+    type Diffs = BTreeMap<String, Vec<f64>>;
+    let mut studies: BTreeMap<(String, String), BTreeMap<String, Diffs>> = BTreeMap::new();
+    for s in scenes {
+        let Some(exact) = s.histories.get(EXACT) else { continue };
+        for p in &s.scene.studies {
+            let series =
+                studies.entry((p.study.clone(), p.title.clone())).or_default().entry(p.series.clone()).or_default();
+            for (model, h) in s.histories.iter().filter(|(m, _)| m.as_str() != EXACT) {
+                series.entry(model.clone()).or_default().extend(row_diffs(h, exact));
+            }
+        }
+    }
+    let mut out = String::new();
+    for ((study, title), series) in studies {
+        let models: Vec<String> = series
+            .values()
+            .flat_map(|m| m.keys().cloned())
+            .collect::<std::collections::BTreeSet<_>>()
+            .into_iter()
+            .collect();
+        if models.is_empty() {
+            continue;
+        }
+        let _ = write!(
+            out,
+            "\n**{title}** (study `{study}`): RMS / max |Δf| against `{EXACT}` per series\n\n| series | {} |\n|---|{}\n",
+            models.join(" | "),
+            "---|".repeat(models.len())
+        );
+        for (label, by_model) in series {
+            let cells: Vec<String> = models
+                .iter()
+                .map(|m| {
+                    let d: Vec<f64> = by_model
+                        .get(m)
+                        .map_or_else(Vec::new, |v| v.iter().copied().filter(|x| x.is_finite()).collect());
+                    if d.is_empty() {
+                        return "—".into();
+                    }
+                    let rms = (d.iter().map(|x| x * x).sum::<f64>() / d.len() as f64).sqrt();
+                    format!("{rms:.4} / {:.4}", d.iter().copied().fold(0.0, f64::max))
+                })
+                .collect();
+            let label = if label.is_empty() { "(one series)".to_string() } else { label };
+            let _ = writeln!(out, "| {label} | {} |", cells.join(" | "));
+        }
+    }
+    out
 }

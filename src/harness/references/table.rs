@@ -100,7 +100,10 @@ mod tests {
     fn names_and_lines() {
         assert_eq!(scene_name(0.2, 0.5, "m90"), "tt_ab0p2_sp0p5_m90");
         assert_eq!(scene_name(1.0, 2.0, "30"), "tt_ab1_sp2_30");
-        assert_eq!(parse_case("Fx=  -0.242187, Fy=  -0.106188, Mz=   0.019918, %Slip=  17.1"), Some((-0.242187, -0.106188, 0.019918)));
+        assert_eq!(
+            parse_case("Fx=  -0.242187, Fy=  -0.106188, Mz=   0.019918, %Slip=  17.1"),
+            Some((-0.242187, -0.106188, 0.019918))
+        );
         assert_eq!(parse_case("iell=1, a/b=  0.2: rho=   1772."), None);
     }
 }
