@@ -463,13 +463,20 @@ pub fn manifest(dir: &Path) -> Result<(), Error> {
 }
 
 /// `creepbench export contact SCENE --out DIR`: the CONTACT module-3 input that computes the scene
-/// (`DIR/<name>.inp`, written whole; never inside golden/).
-pub fn export_contact(scene_path: &Path, out: &Path, golden: &Path) -> Result<PathBuf, Error> {
-    let scene = crate::scene::Scene::from_file(scene_path)?;
-    let problem = crate::problem::Problem::resolve(&scene)?;
-    let path = out.join(format!("{}.inp", problem.name));
-    guard::guard_not_under(&path, golden)?;
+/// (`DIR/<name>.inp`, written whole; never inside golden/); a study file: one per point.
+pub fn export_contact(scene_path: &Path, out: &Path, golden: &Path) -> Result<Vec<PathBuf>, Error> {
+    // A scene file, or a study file: every point, all validated before anything is written.
+    let problems = suite::sources_of_file(scene_path)?
+        .iter()
+        .map(|s| pipeline::load_source(s, &[]))
+        .collect::<Result<Vec<_>, _>>()?;
+    let paths: Vec<PathBuf> = problems.iter().map(|p| out.join(format!("{}.inp", p.name))).collect();
+    for path in &paths {
+        guard::guard_not_under(path, golden)?;
+    }
     std::fs::create_dir_all(out).map_err(Error::io(out))?;
-    write_whole(&path, &crate::export::contact::module3_input(&problem))?;
-    Ok(path)
+    for (problem, path) in problems.iter().zip(&paths) {
+        write_whole(path, &crate::export::contact::module3_input(problem))?;
+    }
+    Ok(paths)
 }

@@ -34,9 +34,10 @@ struct SuiteArgs {
 /// What `export` writes.
 #[derive(Subcommand)]
 enum ExportWhat {
-    /// CONTACT module-3 input that computes the scene (one case per history row): OUT/<name>.inp.
+    /// CONTACT module-3 input that computes the scene (one case per history row): OUT/<name>.inp
+    /// (a study file: one input per point).
     Contact {
-        /// The scene file.
+        /// The scene file, or a study file.
         scene: PathBuf,
         #[arg(long, default_value = "out/contact")]
         out: PathBuf,
@@ -190,7 +191,8 @@ fn main() {
         }
         Command::Manifest { dir } => commands::manifest(&dir),
         Command::Export { what: ExportWhat::Contact { scene, out, golden } } => {
-            commands::export_contact(&scene, &out, &golden).map(|p| println!("{}", p.display()))
+            commands::export_contact(&scene, &out, &golden)
+                .map(|ps| ps.iter().for_each(|p| println!("{}", p.display())))
         }
     };
     if let Err(e) = result {

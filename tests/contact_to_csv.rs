@@ -14,7 +14,7 @@
 //! Skipped, with a notice, where python3 is missing.
 
 mod common;
-use common::{root, suite_scene_file, tempdir};
+use common::{root, suite_scene, tempdir};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -194,17 +194,19 @@ fn default_grid() -> (usize, usize, f64, f64, f64, f64) {
 #[test]
 fn per_element_files_of_an_exported_run_integrate_to_the_reference_history() {
     let dir = tempdir("contact_to_csv_mat");
-    // step_mu04 is a point of the thesis's step_mu study: written out as a scene file first.
-    let scene = suite_scene_file("thesis", "step_mu04", &dir);
+    // step_mu04 is a point of the thesis's step_mu study: the study file exports every point.
+    let study = suite_scene("thesis", "step_mu04").path;
     let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
         .current_dir(root())
         .args(["export", "contact"])
-        .arg(&scene)
+        .arg(&study)
         .arg("--out")
         .arg(&dir)
         .output()
         .unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let printed = String::from_utf8_lossy(&o.stdout);
+    assert!(printed.lines().count() > 1 && printed.contains("step_mu04.inp"), "{printed}");
     let inp: PathBuf = dir.join("step_mu04.inp");
     let fields = field_by_step(&root().join("reference/contact/step_mu04_field.csv"));
     assert_eq!(fields.len(), 44);

@@ -222,6 +222,8 @@ fn report_draws_the_frequency_study_with_contacts_points() {
     assert!(s.body.contains("### Frequency at mu = 1 and 0.6 (thesis Fig. 4.9)"), "{}", s.body);
     let figures: Vec<&str> = s.figures.iter().map(|(f, _)| f.as_str()).collect();
     assert!(figures.contains(&"study_sine_freq_delay_ratio.svg") && figures.contains(&"study_sine_freq_loop_area.svg"));
+    // Each metric's table is headed by its name.
+    assert!(s.body.contains("**delay_ratio**\n\n| creepage.freq_hz |"), "{}", s.body);
     // The 10 Hz row: CONTACT's delay ratio beside ours.
     let ours = scenes[1].metric("contact", "delay_ratio").unwrap();
     let row = s.body.lines().find(|l| l.starts_with("| 10 | mu 10 |")).expect("the 10 Hz row");

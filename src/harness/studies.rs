@@ -73,9 +73,12 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
         for metric in metrics_of(&points) {
             let mut series: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
             let mut marks: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
-            let _ = writeln!(
-                body,
-                "| {x_key} | series | {} | reference |\n|{}",
+            // A metric no point has as one number (a sweep's per-point values) gets no table.
+            if !points.iter().any(|(s, _)| solvers.iter().any(|m| s.metric(m, &metric).is_some_and(f64::is_finite))) {
+                continue;
+            }
+            let mut table = format!(
+                "**{metric}**\n\n| {x_key} | series | {} | reference |\n|{}\n",
                 solvers.join(" | "),
                 "---|".repeat(solvers.len() + 3)
             );
@@ -98,13 +101,14 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
                 let reference: Vec<String> = refs_here.iter().map(|(l, v)| format!("{l} {v:.4}")).collect();
                 let series_cell = if p.series.is_empty() { "—" } else { p.series.as_str() };
                 let _ = writeln!(
-                    body,
+                    table,
                     "| {} | {series_cell} | {} | {} |",
                     p.x,
                     cells.join(" | "),
                     if reference.is_empty() { "—".into() } else { reference.join(", ") }
                 );
             }
+            body.push_str(&table);
             if series.is_empty() {
                 continue;
             }
