@@ -106,6 +106,29 @@ fn relaxation_calibration_closes_most_of_the_loop_gap_on_held_out_scenes() {
     assert!((b - 0.07551).abs() < 2e-5 && (a - 0.04052).abs() < 2e-4, "fitted rms {b} -> {a}");
 }
 
+/// The same fit against CONTACT's own histories (`against = "reference"`) instead of the exact
+/// solver's: CONTACT and the exact solver agree to 1e-7 on these scenes, so the fitted length must
+/// agree with the shipped fit's to well within its own tolerance.
+#[test]
+fn fitting_against_contacts_histories_gives_the_same_length() {
+    let dir = tempdir("fit_reference");
+    let text = std::fs::read_to_string(root().join("fits/relaxation_sine.toml"))
+        .unwrap()
+        .replace("against = \"solver:contact\"", "against = \"reference\"")
+        .replace("\"../scenes/thesis\"", &format!("{:?}", root().join("scenes/thesis").display().to_string()))
+        .replace("holdout = [\"sine_f*_mu10\", \"sine_f*_mu06\"]", "holdout = [\"sine_f60_mu10\"]");
+    let spec = dir.join("relaxation_reference.toml");
+    std::fs::write(&spec, text).unwrap();
+    let out = dir.join("out.toml");
+    let o = fit(&spec, &out);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(&out).unwrap();
+    println!("{text}");
+    let l = fitted(&text, "relaxation_length_mm");
+    assert!((l - 8.4664).abs() < 0.01, "fitted length against CONTACT {l} mm");
+    assert!(text.contains("against reference"), "{text}");
+}
+
 /// The shipped calibration of the UBA (fits/uba_sine.toml: the modified FASTSIM's slope reduction
 /// on the UBA's flexibilities): it lowers the fitted scenes' RMS |df| only from 0.0846 to 0.0746
 /// and raises the held-out scenes' from 0.0387 to 0.0456 — the UBA's gap is in its form, which
