@@ -172,7 +172,7 @@ pub fn run(
         return Ok(());
     }
     if let Some(dir) = fits {
-        run_fits(dir, &refs, results_dir)?;
+        run_fits(dir, &refs, results_dir, (&scenes, &suite::scene_files(suite_dir, None)?))?;
     }
     let stored = read_results(&[results_dir.to_path_buf()])?;
     let rules = file_rules(&[], suite_dir)?;
@@ -201,8 +201,14 @@ fn read_results(dirs: &[PathBuf]) -> Result<Vec<StoredScene>, Error> {
 const FITS_SUBDIR: &str = "fits";
 
 /// Every fit file of `dir` (sorted), each run and stored as `<results>/fits/<name>.json` with its
-/// fitted block `<name>.toml` beside (replaced on each run, as the scenes' results are).
-fn run_fits(dir: &Path, refs: &References, results_dir: &Path) -> Result<(), Error> {
+/// fitted block `<name>.toml` beside (replaced on each run, as the scenes' results are); the
+/// record carries the fitted variant beside the published model over the suites just run.
+fn run_fits(
+    dir: &Path,
+    refs: &References,
+    results_dir: &Path,
+    (stored, sources): (&[StoredScene], &[suite::SceneSource]),
+) -> Result<(), Error> {
     use crate::harness::fit;
     let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
         .map_err(|e| InputError::new("--fits", dir.display(), format!("a folder of fit files ({e})")))?
@@ -217,7 +223,9 @@ fn run_fits(dir: &Path, refs: &References, results_dir: &Path) -> Result<(), Err
     for spec in &specs {
         let start = Instant::now();
         let outcome = fit::fit(spec, refs)?;
-        let record = fit::record::FitRecord::of(&outcome);
+        let mut record = fit::record::FitRecord::of(&outcome);
+        // Beside the published model on every suite scene that runs it with the exact theory.
+        record.suites = fit::across_suites(&outcome, stored, sources)?;
         let json = serde_json::to_string_pretty(&record)
             .map_err(|e| Error::Fit { fit: spec.name.clone(), message: e.to_string() })?;
         write_whole(&out.join(format!("{}.json", spec.name)), &json)?;

@@ -4,7 +4,7 @@
 
 mod common;
 use common::*;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 fn fit(file: &Path, out: &Path) -> Output {
@@ -190,4 +190,37 @@ fn bad_fit_files_are_refused() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("--out"));
     assert_eq!(std::fs::read_to_string(&out).unwrap(), "keep me");
+}
+
+/// `creepbench run` runs the fits of fits/ and puts each fitted variant beside its published model
+/// over the suites it ran: on three thesis sine scenes the fitted relaxation length lowers the RMS
+/// |df| against the exact theory, and the published column is the model ladder's own number.
+#[test]
+fn run_puts_the_fitted_variant_beside_the_published_model() {
+    let dir = tempdir("fit_run");
+    let suite = dir.join("suite");
+    std::fs::create_dir_all(&suite).unwrap();
+    for name in ["sine_f10_mu10", "sine_f60_mu10", "sine_f100_mu06"] {
+        suite_scene_file("thesis", name, &suite);
+    }
+    let (res, rep) = (dir.join("res"), dir.join("rep"));
+    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(root())
+        .args(["run", "--quiet", "--fits", "fits", "--suite"])
+        .args([&suite, &PathBuf::from("--results"), &res, &PathBuf::from("--report"), &rep])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let record: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(res.join("fits/relaxation_sine.json")).unwrap()).unwrap();
+    let s = &record["suites"][0];
+    assert_eq!((s["suite"].as_str(), s["scenes"].as_u64()), (Some("suite"), Some(3)), "{s}");
+    let (published, fitted) = (s["published"][1].as_f64().unwrap(), s["fitted"][1].as_f64().unwrap());
+    println!("RMS |df| published {published}, fitted {fitted}");
+    assert!(fitted < 0.8 * published, "{published} -> {fitted}");
+    let report = std::fs::read_to_string(rep.join("validation.md")).unwrap();
+    let ladder_row = report.lines().find(|l| l.starts_with("| relaxation | suite |")).expect("the ladder's row");
+    let ladder_rms: f64 = ladder_row.split('|').nth(6).unwrap().trim().parse().unwrap();
+    assert_eq!(format!("{ladder_rms:.4}"), format!("{published:.4}"), "{ladder_row}");
+    assert!(report.contains("The fitted variant beside the published `relaxation`"));
 }

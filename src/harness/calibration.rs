@@ -29,6 +29,14 @@ pub fn section(records: &[FitRecord]) -> Option<Section> {
         }
         body.push('\n');
         body.push_str(&r.table());
+        let beside = r.suite_table();
+        if !beside.is_empty() {
+            let _ = write!(
+                body,
+                "\nThe fitted variant beside the published `{}` on every scene of the suites that runs it with the exact theory (|Δf| against `contact`, the same rows; the model ladder's published rows):\n\n{beside}",
+                r.model
+            );
+        }
     }
     Some(Section {
         title: "Calibration: fitted parameters and how far they carry".into(),

@@ -10,7 +10,7 @@ use std::collections::BTreeMap;
 use std::fmt::Write;
 
 /// The model every other is measured against.
-const EXACT: &str = "contact";
+pub const EXACT: &str = "contact";
 
 /// What one model gathered over one suite.
 #[derive(Default)]

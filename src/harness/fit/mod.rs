@@ -145,3 +145,55 @@ pub fn render(o: &FitOutcome) -> Result<String, Error> {
     s.push_str(&toml::to_string(&doc).map_err(|e| Error::Fit { fit: spec.name.clone(), message: e.to_string() })?);
     Ok(s)
 }
+
+/// The fitted variant beside the published model on every stored scene that holds both the model
+/// and the exact theory (`ladder::EXACT`), per suite: |Δf| against the exact theory over the same
+/// rows. The variant runs on the scene's source with the fit's `[set]` at the fitted values;
+/// scenes run in parallel, statistics are taken in the scenes' order.
+pub fn across_suites(
+    o: &FitOutcome,
+    stored: &[crate::harness::results::StoredScene],
+    sources: &[crate::harness::suite::SceneSource],
+) -> Result<Vec<record::SuiteRecord>, Error> {
+    use crate::harness::ladder::EXACT;
+    use crate::harness::model_error::{quantile, row_diffs};
+    use rayon::prelude::*;
+    let set = o.spec.assignments(&o.values);
+    let pairs: Vec<_> = stored
+        .iter()
+        .filter_map(|s| {
+            let (ours, exact) = (s.histories.get(&o.spec.model)?, s.histories.get(EXACT)?);
+            let source = sources.iter().find(|src| src.name == s.name)?;
+            Some((s, ours, exact, source))
+        })
+        .collect();
+    let diffs = pairs
+        .par_iter()
+        .map(|(_, ours, exact, source)| {
+            let fitted = objective::run_model(source, &o.spec.model, &set)?;
+            Ok((row_diffs(ours, exact), row_diffs(&fitted, exact)))
+        })
+        .collect::<Result<Vec<_>, Error>>()?;
+    let mut by_suite: std::collections::BTreeMap<&str, (usize, Vec<f64>, Vec<f64>)> = Default::default();
+    for ((s, ..), (published, fitted)) in pairs.iter().zip(diffs) {
+        let e = by_suite.entry(s.scene.suite.as_str()).or_default();
+        e.0 += 1;
+        e.1.extend(published.into_iter().filter(|d| d.is_finite()));
+        e.2.extend(fitted.into_iter().filter(|d| d.is_finite()));
+    }
+    let stats = |mut d: Vec<f64>| {
+        d.sort_by(f64::total_cmp);
+        let rms = (d.iter().map(|x| x * x).sum::<f64>() / d.len().max(1) as f64).sqrt();
+        [d.last().copied().unwrap_or(f64::NAN), rms, quantile(&d, 0.95)]
+    };
+    Ok(by_suite
+        .into_iter()
+        .map(|(suite, (scenes, p, f))| record::SuiteRecord {
+            suite: suite.to_string(),
+            scenes,
+            rows: p.len(),
+            published: stats(p),
+            fitted: stats(f),
+        })
+        .collect())
+}

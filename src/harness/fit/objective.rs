@@ -171,6 +171,15 @@ pub fn errors(model: &str, cases: &[Case], set: &[(String, Value)]) -> Result<Se
     })
 }
 
+/// The model's history on the scene of `source` with the set keys `set` (the scene's other
+/// solvers left out).
+pub fn run_model(source: &SceneSource, model: &str, set: &[(String, Value)]) -> Result<History, Error> {
+    let doc: Table = source.text()?.parse().map_err(|e: toml::de::Error| {
+        InputError::new(source.path.display().to_string(), "malformed TOML", format!("valid TOML ({})", e.message()))
+    })?;
+    Ok(run_one(source, with(&doc, model, set, "set")?)?.1)
+}
+
 /// The argmin problem: the norm over the fitted scenes as a function of the parameters'
 /// unbounded coordinates.
 pub struct Objective<'a> {

@@ -31,6 +31,18 @@ pub struct NormRecord {
     pub after: Option<f64>,
 }
 
+/// |Δf| against the exact theory over one suite's scenes that run the model (max, RMS, 95th
+/// percentile): the published model's and the fitted variant's, on the same rows.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SuiteRecord {
+    pub suite: String,
+    pub scenes: usize,
+    pub rows: usize,
+    /// (max, RMS, 95 %) of the published model and of the fitted variant.
+    pub published: [f64; 3],
+    pub fitted: [f64; 3],
+}
+
 /// A fit's outcome.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct FitRecord {
@@ -46,6 +58,9 @@ pub struct FitRecord {
     pub iterations: u64,
     pub evaluations: u64,
     pub ended: String,
+    /// The fitted variant beside the published model over the suites' scenes (`creepbench run`).
+    #[serde(default)]
+    pub suites: Vec<SuiteRecord>,
 }
 
 fn finite(v: f64) -> Option<f64> {
@@ -87,6 +102,7 @@ impl FitRecord {
             iterations: o.iterations,
             evaluations: o.evaluations,
             ended: o.ended.clone(),
+            suites: Vec::new(),
         }
     }
 
@@ -105,6 +121,26 @@ impl FitRecord {
                 n.norm,
                 cell(n.before),
                 cell(n.after)
+            );
+        }
+        s
+    }
+
+    /// The fitted variant beside the published model per suite (Markdown; empty without suites).
+    pub fn suite_table(&self) -> String {
+        if self.suites.is_empty() {
+            return String::new();
+        }
+        let mut s = format!(
+            "| suite | scenes | rows | `{m}` max \\|Δf\\| | fitted | `{m}` RMS | fitted | `{m}` 95 % | fitted |\n|---|---|---|---|---|---|---|---|---|\n",
+            m = self.model
+        );
+        for r in &self.suites {
+            let (p, f) = (r.published, r.fitted);
+            let _ = writeln!(
+                s,
+                "| {} | {} | {} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} |",
+                r.suite, r.scenes, r.rows, p[0], f[0], p[1], f[1], p[2], f[2]
             );
         }
         s
