@@ -8,6 +8,7 @@ use super::tangential::{ElementState, StepResult, TangentialParams, TangentialSo
 use super::ContactError;
 use crate::error::InputError;
 use crate::history::History;
+use crate::physics::bound::project_to_bound;
 use crate::physics::moment_sum;
 use crate::problem::{Problem, Sample};
 use crate::solvers::sample_loop::{self, Observer};
@@ -86,6 +87,9 @@ struct Contact<'a> {
     /// The tractions of the step before the last (extrapolated warm start).
     older: Option<(Vec<f64>, Vec<f64>)>,
     zero: Vec<f64>,
+    /// μ and FN of the steady start, until the first transient step: where either changed there,
+    /// that step takes the steady state projected onto its own traction bound.
+    after_steady: Option<(f64, f64)>,
 }
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
@@ -97,7 +101,16 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let normal = NormalSolver::new(&k0).map_err(ContactRunError::Kernel)?;
     let (x, y) = g.centres();
     let tangential = TangentialSolver::new(&k0, &ks, &x, &y).map_err(ContactRunError::Kernel)?;
-    Ok(Box::new(Contact { p, normal, tangential, loaded: None, last: None, older: None, zero: vec![0.0; g.len()] }))
+    Ok(Box::new(Contact {
+        p,
+        normal,
+        tangential,
+        loaded: None,
+        last: None,
+        older: None,
+        zero: vec![0.0; g.len()],
+        after_steady: None,
+    }))
 }
 
 impl Contact<'_> {
@@ -163,14 +176,31 @@ impl Stepper for Contact<'_> {
         let r =
             self.tangential.steady(&params, None).map_err(|source| ContactRunError::Step { step: at.step, source })?;
         self.older = None;
+        self.after_steady = Some((at.mu, at.fn_n));
         Ok(self.record(r))
     }
 
     fn transient(&mut self, at: &Sample) -> Result<Step, SolveError> {
         let params = self.params(at);
-        let (px, py) = match &self.last {
-            Some(r) => (&r.px, &r.py),
-            None => (&self.zero, &self.zero),
+        // The steady start as the previous state of the first transient step, projected onto
+        // that step's bound μ p where μ or FN changed (CONTACT's results after a steady start
+        // imply it: envelope fn_sine_f20 1.4e-4 -> 5e-6, mu_ramp 1.4e-3 -> 1.7e-4).
+        let changed = self.after_steady.take().is_some_and(|b| b != (at.mu, at.fn_n));
+        let projected = match (&self.last, changed) {
+            (Some(r), true) => {
+                let pn = &self.loaded().pn;
+                let (mut x, mut y) = (r.px.clone(), r.py.clone());
+                for k in 0..pn.len() {
+                    (x[k], y[k], _) = project_to_bound(x[k], y[k], at.mu * pn[k]);
+                }
+                Some((x, y))
+            }
+            _ => None,
+        };
+        let (px, py) = match (&projected, &self.last) {
+            (Some((x, y)), _) => (x, y),
+            (None, Some(r)) => (&r.px, &r.py),
+            (None, None) => (&self.zero, &self.zero),
         };
         let older = self.older.as_ref().map(|(a, b)| (a.as_slice(), b.as_slice()));
         let r = self
@@ -180,9 +210,10 @@ impl Stepper for Contact<'_> {
         if r.px.iter().chain(&r.py).any(|v| !v.is_finite()) {
             return Err(SolveError::NonFinite { step: at.step });
         }
-        self.older = Some(match self.last.take() {
-            Some(prev) => (prev.px, prev.py),
-            None => (self.zero.clone(), self.zero.clone()),
+        self.older = Some(match (projected, self.last.take()) {
+            (Some(p), _) => p,
+            (None, Some(prev)) => (prev.px, prev.py),
+            (None, None) => (self.zero.clone(), self.zero.clone()),
         });
         Ok(self.record(r))
     }
