@@ -3,7 +3,7 @@
 //! over every row both have, the worst delay-ratio and loop-area differences, and the cost per row.
 //! Reads stored results only.
 
-use super::model_error::{quantile, row_diffs};
+use super::model_error::{row_diffs, summary};
 use super::results::StoredScene;
 use super::sections::Section;
 use std::collections::BTreeMap;
@@ -52,21 +52,16 @@ pub fn section(scenes: &[StoredScene]) -> Option<Section> {
     let mut body = String::from(
         "Every model against the exact theory (`contact`) on the same scenes and grids, per suite: |Δf| = |(fx, fy)/FN − (fx, fy)/FN of `contact`| over every row both have (sweep points and time steps alike); the largest |Δ delay ratio| and relative loop-area difference over the suite's sine scenes; the wall time per row (this machine, scenes in parallel on 2 cores). Scenes without `contact` do not count.\n\n| model | suite | scenes | rows | max \\|Δf\\| | RMS \\|Δf\\| | 95 % \\|Δf\\| | max \\|Δ delay ratio\\| | max loop-area error | µs per row |\n|---|---|---|---|---|---|---|---|---|---|\n",
     );
-    for ((model, suite), mut t) in tallies {
-        t.diffs.retain(|d| d.is_finite());
-        t.diffs.sort_by(f64::total_cmp);
-        let n = t.diffs.len();
-        let rms = (t.diffs.iter().map(|d| d * d).sum::<f64>() / n.max(1) as f64).sqrt();
+    for ((model, suite), t) in tallies {
+        let n = t.diffs.iter().filter(|d| d.is_finite()).count();
+        let [max, rms, p95] = summary(&t.diffs);
         let delay = if t.delay > 0.0 { format!("{:.4}", t.delay) } else { "—".into() };
         let loop_rel = if t.loop_rel > 0.0 { format!("{:.0} %", 100.0 * t.loop_rel) } else { "—".into() };
         let cost = if t.rows > 0 { format!("{:.1}", 1e6 * t.wall_s / t.rows as f64) } else { "—".into() };
         let _ = writeln!(
             body,
             "| {model} | {suite} | {} | {n} | {:.4} | {:.4} | {:.4} | {delay} | {loop_rel} | {cost} |",
-            t.scenes,
-            t.diffs.last().copied().unwrap_or(f64::NAN),
-            rms,
-            quantile(&t.diffs, 0.95),
+            t.scenes, max, rms, p95,
         );
     }
     body.push_str(&by_series(scenes));
@@ -115,14 +110,11 @@ fn by_series(scenes: &[StoredScene]) -> String {
             let cells: Vec<String> = models
                 .iter()
                 .map(|m| {
-                    let d: Vec<f64> = by_model
-                        .get(m)
-                        .map_or_else(Vec::new, |v| v.iter().copied().filter(|x| x.is_finite()).collect());
-                    if d.is_empty() {
+                    let [max, rms, _] = summary(by_model.get(m).map_or(&[][..], Vec::as_slice));
+                    if max.is_nan() {
                         return "—".into();
                     }
-                    let rms = (d.iter().map(|x| x * x).sum::<f64>() / d.len() as f64).sqrt();
-                    format!("{rms:.4} / {:.4}", d.iter().copied().fold(0.0, f64::max))
+                    format!("{rms:.4} / {max:.4}")
                 })
                 .collect();
             let label = if label.is_empty() { "(one series)".to_string() } else { label };

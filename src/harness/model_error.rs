@@ -15,6 +15,23 @@ pub fn row_diffs(ours: &History, target: &History) -> Vec<f64> {
         .collect()
 }
 
+/// The root mean square of values, summed in their order (NaN for none).
+pub fn rms(values: impl IntoIterator<Item = f64>) -> f64 {
+    let (s, n) = values.into_iter().fold((0.0, 0usize), |(s, n), x| (s + x * x, n + 1));
+    if n == 0 {
+        f64::NAN
+    } else {
+        (s / n as f64).sqrt()
+    }
+}
+
+/// Max, RMS and 95th percentile of the finite |Δf| values (NaN each for none).
+pub fn summary(diffs: &[f64]) -> [f64; 3] {
+    let mut d: Vec<f64> = diffs.iter().copied().filter(|x| x.is_finite()).collect();
+    d.sort_by(f64::total_cmp);
+    [d.last().copied().unwrap_or(f64::NAN), rms(d.iter().copied()), quantile(&d, 0.95)]
+}
+
 /// The value at quantile `q` of sorted values (nearest rank; NaN for none).
 pub fn quantile(sorted: &[f64], q: f64) -> f64 {
     if sorted.is_empty() {
@@ -35,5 +52,14 @@ mod tests {
         assert_eq!(quantile(&v, 1.0), 20.0);
         assert_eq!(quantile(&v, 0.0), 1.0);
         assert!(quantile(&[], 0.5).is_nan());
+    }
+
+    #[test]
+    fn summary_of_finite_values() {
+        let s = super::summary(&[3.0, f64::NAN, 4.0, 0.0]);
+        assert_eq!(s[0], 4.0);
+        assert!((s[1] - (25.0f64 / 3.0).sqrt()).abs() < 1e-15);
+        assert_eq!(s[2], 4.0);
+        assert!(super::summary(&[]).iter().all(|v| v.is_nan()));
     }
 }

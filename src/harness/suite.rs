@@ -146,6 +146,14 @@ impl SceneSource {
             Some((doc, _)) => Ok(doc.to_string()),
         }
     }
+
+    /// The scene as a TOML table: the file parsed, or the study point's table.
+    pub fn table(&self) -> Result<toml::Table, Error> {
+        match &self.study {
+            None => Ok(crate::scene::reader::parse_toml(&self.text()?, self.path.display().to_string())?),
+            Some((doc, _)) => Ok(doc.clone()),
+        }
+    }
 }
 
 /// The names of every scene of the folders (scene files' stems and study points), all shards.

@@ -58,9 +58,7 @@ pub fn load(path: &Path, labels: &[Against]) -> Result<Vec<Rule>, InputError> {
 
 /// Parse the text of a rule file called `name` (in messages and each rule's origin).
 pub fn parse(text: &str, name: &str, labels: &[Against]) -> Result<Vec<Rule>, InputError> {
-    let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| {
-        InputError::new(name, "malformed TOML", format!("valid TOML ({})", e.message()))
-    })?;
+    let doc = crate::scene::reader::parse_toml(text, name)?;
     if let Some(key) = doc.keys().find(|k| *k != "rule") {
         return Err(InputError::new(format!("{name} {key}"), "given", "only [[rule]] tables"));
     }

@@ -5,6 +5,12 @@ use crate::error::InputError;
 use std::collections::BTreeSet;
 use toml::{Table, Value};
 
+/// Parse TOML text as a table; an error names `field` (a file, usually) and the parser's message.
+pub fn parse_toml(text: &str, field: impl Into<String>) -> Result<Table, InputError> {
+    text.parse()
+        .map_err(|e: toml::de::Error| InputError::new(field, "malformed TOML", format!("valid TOML ({})", e.message())))
+}
+
 /// One TOML table being read; keys not consumed are reported by [`Section::finish`].
 pub struct Section<'a> {
     path: String,

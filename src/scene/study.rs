@@ -66,7 +66,7 @@ fn err(field: impl Into<String>, value: impl std::fmt::Display, allowed: impl In
 }
 
 /// A value as part of a scene name: numbers compact (`0.5` → `0p5`, `-1` → `m1`), strings as given.
-fn label_of(v: &Value) -> String {
+pub fn label_of(v: &Value) -> String {
     match v {
         Value::Integer(i) => i.to_string().replace('-', "m"),
         Value::Float(f) => format!("{f}").replace('-', "m").replace('.', "p"),

@@ -93,7 +93,7 @@ pub fn fit(spec: &FitSpec, refs: &References) -> Result<FitOutcome, Error> {
     };
     let state = result.state();
     let best = state.get_best_param().cloned().unwrap_or(z0);
-    let values = result.problem().problem.as_ref().map(|o| o.values(&best)).unwrap_or(start.clone());
+    let values = spec.values(&best);
     let ended = state.get_termination_reason().map_or("unknown", TerminationReason::text).to_string();
     let (iterations, evaluations) = (state.get_iter(), result.problem().counts.get("cost_count").copied().unwrap_or(0));
     let before_holdout = (!holdout_cases.is_empty()).then(|| measure(&holdout_cases, &start)).transpose()?;
@@ -156,7 +156,7 @@ pub fn across_suites(
     sources: &[crate::harness::suite::SceneSource],
 ) -> Result<Vec<record::SuiteRecord>, Error> {
     use crate::harness::ladder::EXACT;
-    use crate::harness::model_error::{quantile, row_diffs};
+    use crate::harness::model_error::{row_diffs, summary};
     use rayon::prelude::*;
     let set = o.spec.assignments(&o.values);
     let pairs: Vec<_> = stored
@@ -181,19 +181,14 @@ pub fn across_suites(
         e.1.extend(published.into_iter().filter(|d| d.is_finite()));
         e.2.extend(fitted.into_iter().filter(|d| d.is_finite()));
     }
-    let stats = |mut d: Vec<f64>| {
-        d.sort_by(f64::total_cmp);
-        let rms = (d.iter().map(|x| x * x).sum::<f64>() / d.len().max(1) as f64).sqrt();
-        [d.last().copied().unwrap_or(f64::NAN), rms, quantile(&d, 0.95)]
-    };
     Ok(by_suite
         .into_iter()
         .map(|(suite, (scenes, p, f))| record::SuiteRecord {
             suite: suite.to_string(),
             scenes,
             rows: p.len(),
-            published: stats(p),
-            fitted: stats(f),
+            published: summary(&p),
+            fitted: summary(&f),
         })
         .collect())
 }

@@ -4,7 +4,7 @@
 
 use super::spec::{FitSpec, Norm, Target};
 use crate::error::{Error, InputError};
-use crate::harness::model_error::row_diffs;
+use crate::harness::model_error::{rms, row_diffs};
 use crate::harness::references::References;
 use crate::harness::suite::SceneSource;
 use crate::history::History;
@@ -86,13 +86,7 @@ fn run_one(source: &SceneSource, doc: Table) -> Result<(crate::problem::Problem,
 impl Case {
     /// The scene and its target (run once, or read from the references).
     pub fn load(spec: &FitSpec, source: &SceneSource, refs: &References) -> Result<Case, Error> {
-        let doc: Table = source.text()?.parse().map_err(|e: toml::de::Error| {
-            InputError::new(
-                source.path.display().to_string(),
-                "malformed TOML",
-                format!("valid TOML ({})", e.message()),
-            )
-        })?;
+        let doc = source.table()?;
         // The scene must accept the parameters anywhere in their bounds (the start, and each
         // parameter at its bounds): checked before any run, so that bad input stops the fit early.
         for values in spec.probes() {
@@ -152,32 +146,21 @@ pub fn errors(model: &str, cases: &[Case], set: &[(String, Value)]) -> Result<Se
             Ok(One { diffs: row_diffs(&h, &c.target), delay, loop_rel })
         })
         .collect::<Result<Vec<One>, Error>>()?;
-    let rms = |v: &mut dyn Iterator<Item = f64>| {
-        let (s, n) = v.fold((0.0, 0usize), |(s, n), x| (s + x * x, n + 1));
-        if n == 0 {
-            f64::NAN
-        } else {
-            (s / n as f64).sqrt()
-        }
-    };
     let rows = each.iter().map(|o| o.diffs.len()).sum();
     Ok(SetErrors {
         scenes: cases.len(),
         rows,
-        rms_df: rms(&mut each.iter().flat_map(|o| o.diffs.iter().copied())),
+        rms_df: rms(each.iter().flat_map(|o| o.diffs.iter().copied())),
         max_df: each.iter().flat_map(|o| o.diffs.iter().copied()).fold(0.0, f64::max),
-        delay_ratio: rms(&mut each.iter().filter_map(|o| o.delay)),
-        loop_area: rms(&mut each.iter().filter_map(|o| o.loop_rel)),
+        delay_ratio: rms(each.iter().filter_map(|o| o.delay)),
+        loop_area: rms(each.iter().filter_map(|o| o.loop_rel)),
     })
 }
 
 /// The model's history on the scene of `source` with the set keys `set` (the scene's other
 /// solvers left out).
 pub fn run_model(source: &SceneSource, model: &str, set: &[(String, Value)]) -> Result<History, Error> {
-    let doc: Table = source.text()?.parse().map_err(|e: toml::de::Error| {
-        InputError::new(source.path.display().to_string(), "malformed TOML", format!("valid TOML ({})", e.message()))
-    })?;
-    Ok(run_one(source, with(&doc, model, set, "set")?)?.1)
+    Ok(run_one(source, with(&source.table()?, model, set, "set")?)?.1)
 }
 
 /// The argmin problem: the norm over the fitted scenes as a function of the parameters'
@@ -189,19 +172,12 @@ pub struct Objective<'a> {
     pub failure: &'a std::sync::Mutex<Option<Error>>,
 }
 
-impl Objective<'_> {
-    /// The parameters' values at coordinates `z`.
-    pub fn values(&self, z: &[f64]) -> Vec<f64> {
-        self.spec.params.iter().zip(z).map(|(p, &z)| p.value(z)).collect()
-    }
-}
-
 impl argmin::core::CostFunction for Objective<'_> {
     type Param = Vec<f64>;
     type Output = f64;
 
     fn cost(&self, z: &Vec<f64>) -> Result<f64, argmin::core::Error> {
-        let set = self.spec.assignments(&self.values(z));
+        let set = self.spec.assignments(&self.spec.values(z));
         match errors(&self.spec.model, self.cases, &set) {
             Ok(e) => Ok(e.norm(self.spec.norm)),
             Err(e) => {

@@ -147,9 +147,7 @@ impl FitSpec {
     /// Read (bounded) and validate a fit file.
     pub fn from_file(file: &Path) -> Result<FitSpec, crate::error::Error> {
         let text = crate::safety::read::read_text(file, crate::safety::read::SCENE_LIMIT_BYTES, "fit file")?;
-        let doc: Table = text.parse().map_err(|e: toml::de::Error| {
-            InputError::new(file.display().to_string(), "malformed TOML", format!("valid TOML ({})", e.message()))
-        })?;
+        let doc = crate::scene::reader::parse_toml(&text, file.display().to_string())?;
         Ok(FitSpec::from_table(&doc, file)?)
     }
 
@@ -312,6 +310,11 @@ impl FitSpec {
             }
         }
         out
+    }
+
+    /// The parameters' values at the optimiser's coordinates `z` ([`Param::value`]).
+    pub fn values(&self, z: &[f64]) -> Vec<f64> {
+        self.params.iter().zip(z).map(|(p, &z)| p.value(z)).collect()
     }
 
     /// The set keys with the parameters' values in place.

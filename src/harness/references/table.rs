@@ -26,13 +26,9 @@ const MAGNITUDES: usize = 23;
 const FN_N: f64 = 82000.0;
 const MU: f64 = 0.3;
 
-/// A number as the study's labels write it (`0.5` → `0p5`).
-fn label(v: f64) -> String {
-    format!("{v}").replace('.', "p")
-}
-
 /// The study's scene name of one a/b, spin level and direction.
 pub fn scene_name(ellip: f64, spin: f64, angle: &str) -> String {
+    let label = |v: f64| crate::scene::study::label_of(&toml::Value::Float(v));
     format!("tt_ab{}_sp{}_{angle}", label(ellip), label(spin))
 }
 
