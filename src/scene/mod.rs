@@ -123,11 +123,34 @@ pub struct ContactSolverOptions {
     pub tolerance: f64,
     /// Iteration limit per time step; reaching it flags the step as not converged.
     pub max_iterations: usize,
+    /// The first transient step after a steady start where μ or FN changed there.
+    #[serde(default, skip_serializing_if = "SteadyRestart::is_default")]
+    pub steady_restart: SteadyRestart,
+}
+
+/// What the exact solver's first transient step after a steady start does where μ or FN changed
+/// there (`[contact_solver] steady_restart`; `solvers::contact::restart`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SteadyRestart {
+    /// CONTACT's result (default; its envelope data decide): the steady state with the slip area on
+    /// the new bound, where the creepages and the loaded elements did not change and no adhesion
+    /// element exceeds its new bound; else the converged step.
+    #[default]
+    Contact,
+    /// The transient step solved to the tolerance from the steady state.
+    Converged,
+}
+
+impl SteadyRestart {
+    pub fn is_default(&self) -> bool {
+        *self == SteadyRestart::default()
+    }
 }
 
 impl Default for ContactSolverOptions {
     fn default() -> Self {
-        Self { tolerance: 1e-7, max_iterations: 1000 }
+        Self { tolerance: 1e-7, max_iterations: 1000, steady_restart: SteadyRestart::Contact }
     }
 }
 
@@ -534,6 +557,10 @@ impl Scene {
             }
             if let Some(n) = cs.opt_usize("max_iterations", 1, 1_000_000)? {
                 contact_solver.max_iterations = n;
+            }
+            if let Some(r) = cs.opt_choice("steady_restart", &["contact", "converged"])? {
+                contact_solver.steady_restart =
+                    if r == "contact" { SteadyRestart::Contact } else { SteadyRestart::Converged };
             }
             cs.finish()?;
         }

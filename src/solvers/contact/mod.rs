@@ -12,12 +12,14 @@
 //!   by the same local-change test, Gauss–Seidel sweeps taking over if it stalls. Each transient
 //!   step starts from the last two steps' tractions extrapolated in time.
 //!
-//! [`stepper`] maps a resolved problem onto them, one sample at a time. The undeformed distance
+//! [`stepper`] maps a resolved problem onto them, one sample at a time; [`restart`] is CONTACT's
+//! first transient step after a steady start where μ or FN changed. The undeformed distance
 //! comes from the shared geometry seam, the grid from the shared physics.
 //! Axes: leading edge at x = −a, material moving in +x (CONTACT rolls the other way: mirror x
 //! when comparing fields).
 
 pub mod anderson;
+pub mod restart;
 pub mod stepper;
 pub mod tangential;
 

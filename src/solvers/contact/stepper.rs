@@ -4,11 +4,11 @@
 
 use super::influence::Kernel;
 use super::normal::{NormalParams, NormalSolver};
+use super::restart::{contact_restart, SteadyRestart, SteadyStart};
 use super::tangential::{ElementState, StepResult, TangentialParams, TangentialSolver};
 use super::ContactError;
 use crate::error::InputError;
 use crate::history::History;
-use crate::physics::bound::project_to_bound;
 use crate::physics::moment_sum;
 use crate::problem::{Problem, Sample};
 use crate::solvers::sample_loop::{self, Observer};
@@ -87,9 +87,8 @@ struct Contact<'a> {
     /// The tractions of the step before the last (extrapolated warm start).
     older: Option<(Vec<f64>, Vec<f64>)>,
     zero: Vec<f64>,
-    /// μ and FN of the steady start, until the first transient step: where either changed there,
-    /// that step takes the steady state projected onto its own traction bound.
-    after_steady: Option<(f64, f64)>,
+    /// The steady start's loading, until the first transient step ([`super::restart`]).
+    after_steady: Option<SteadyStart>,
 }
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
@@ -176,31 +175,24 @@ impl Stepper for Contact<'_> {
         let r =
             self.tangential.steady(&params, None).map_err(|source| ContactRunError::Step { step: at.step, source })?;
         self.older = None;
-        self.after_steady = Some((at.mu, at.fn_n));
+        self.after_steady = Some(SteadyStart::of(at));
         Ok(self.record(r))
     }
 
     fn transient(&mut self, at: &Sample) -> Result<Step, SolveError> {
         let params = self.params(at);
-        // The steady start as the previous state of the first transient step, projected onto
-        // that step's bound μ p where μ or FN changed (CONTACT's results after a steady start
-        // imply it: envelope fn_sine_f20 1.4e-4 -> 5e-6, mu_ramp 1.4e-3 -> 1.7e-4).
-        let changed = self.after_steady.take().is_some_and(|b| b != (at.mu, at.fn_n));
-        let projected = match (&self.last, changed) {
-            (Some(r), true) => {
-                let pn = &self.loaded().pn;
-                let (mut x, mut y) = (r.px.clone(), r.py.clone());
-                for k in 0..pn.len() {
-                    (x[k], y[k], _) = project_to_bound(x[k], y[k], at.mu * pn[k]);
-                }
-                Some((x, y))
+        let start = self.after_steady.take().filter(|s| s.load_changed(at));
+        if let (Some(start), Some(steady), SteadyRestart::Contact) =
+            (start, &self.last, self.p.contact_solver.steady_restart)
+        {
+            if let Some(r) = contact_restart(&start, steady, at, &self.loaded().pn) {
+                self.older = self.last.take().map(|prev| (prev.px, prev.py));
+                return Ok(self.record(r));
             }
-            _ => None,
-        };
-        let (px, py) = match (&projected, &self.last) {
-            (Some((x, y)), _) => (x, y),
-            (None, Some(r)) => (&r.px, &r.py),
-            (None, None) => (&self.zero, &self.zero),
+        }
+        let (px, py) = match &self.last {
+            Some(r) => (&r.px, &r.py),
+            None => (&self.zero, &self.zero),
         };
         let older = self.older.as_ref().map(|(a, b)| (a.as_slice(), b.as_slice()));
         let r = self
@@ -210,10 +202,9 @@ impl Stepper for Contact<'_> {
         if r.px.iter().chain(&r.py).any(|v| !v.is_finite()) {
             return Err(SolveError::NonFinite { step: at.step });
         }
-        self.older = Some(match (projected, self.last.take()) {
-            (Some(p), _) => p,
-            (None, Some(prev)) => (prev.px, prev.py),
-            (None, None) => (self.zero.clone(), self.zero.clone()),
+        self.older = Some(match self.last.take() {
+            Some(prev) => (prev.px, prev.py),
+            None => (self.zero.clone(), self.zero.clone()),
         });
         Ok(self.record(r))
     }
