@@ -23,18 +23,11 @@ fn history(case: &str, restart: Option<&str>) -> History {
     run(&p, "contact")
 }
 
-fn column(folder: &str, case: &str, name: &str) -> Vec<f64> {
-    let path = root().join("reference").join(folder).join(format!("{case}.csv"));
-    let mut rdr = csv::Reader::from_path(&path).unwrap();
-    let idx = rdr.headers().unwrap().iter().position(|h| h == name).unwrap();
-    rdr.records().map(|r| r.unwrap()[idx].parse::<f64>().unwrap()).collect()
-}
-
 /// Largest |Δ| of fx/FN and fy/FN over every step against a reference folder.
 fn worst(h: &History, folder: &str, case: &str) -> (f64, usize) {
     let (fx, fy) = (h.column("fx_over_fn").unwrap(), h.column("fy_over_fn").unwrap());
-    let (dx, kx) = max_abs_diff(&fx, &column(folder, case, "fx_over_fn"));
-    let (dy, ky) = max_abs_diff(&fy, &column(folder, case, "fy_over_fn"));
+    let (dx, kx) = max_abs_diff(&fx, &reference_in(folder, case, "fx_over_fn"));
+    let (dy, ky) = max_abs_diff(&fy, &reference_in(folder, case, "fy_over_fn"));
     if dx >= dy {
         (dx, kx)
     } else {
@@ -49,7 +42,7 @@ fn default_restart_matches_contacts_envelope_at_every_step() {
         let (d, k) = worst(&h, "contact_envelope", case);
         println!("{case}: largest |df| {d:.2e} at row {k}");
         assert!(d < TOL, "{case}: {d:.2e} at row {k}");
-        assert_eq!(h.column("n_adhesion").unwrap(), column("contact_envelope", case, "n_adhesion"), "{case}");
+        assert_eq!(h.column("n_adhesion").unwrap(), reference_in("contact_envelope", case, "n_adhesion"), "{case}");
     }
 }
 
@@ -61,7 +54,7 @@ fn converged_restart_matches_contact_with_a_tight_steady_start() {
         println!("{case}: largest |df| {d:.2e} at row {k}");
         assert!(d < TOL, "{case}: {d:.2e} at row {k}");
         // The two restarts differ where CONTACT's published step 1 does.
-        let published = column("contact_envelope", case, "fx_over_fn");
+        let published = reference_in("contact_envelope", case, "fx_over_fn");
         let fx = h.column("fx_over_fn").unwrap();
         assert!((fx[1] - published[1]).abs() > 1e-4, "{case}: step 1 {} vs {}", fx[1], published[1]);
     }

@@ -49,9 +49,14 @@ pub fn f(h: &History) -> Vec<f64> {
     h.column("fx_over_fn").unwrap()
 }
 
-/// A CONTACT reference history column by name.
+/// A CONTACT reference history column by name (`reference/contact`).
 pub fn reference(case: &str, column: &str) -> Vec<f64> {
-    let path = root().join("reference/contact").join(format!("{case}.csv"));
+    reference_in("contact", case, column)
+}
+
+/// A reference history column by name from `reference/<folder>/<case>.csv`.
+pub fn reference_in(folder: &str, case: &str, column: &str) -> Vec<f64> {
+    let path = root().join("reference").join(folder).join(format!("{case}.csv"));
     let mut rdr = csv::Reader::from_path(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let idx = rdr.headers().unwrap().iter().position(|h| h == column).expect("column");
     rdr.records().map(|r| r.unwrap()[idx].parse::<f64>().unwrap()).collect()
