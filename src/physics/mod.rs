@@ -1,6 +1,6 @@
 //! Contact physics written once and shared by every solver: material constants, Hertz,
 //! Kalker's coefficients and flexibilities, the grid, the pressure, the rigid slip, the traction
-//! bound, the spin moment and the elastic half-space (influence coefficients, the normal problem).
+//! bound, the spin moment, four-lane sums and the elastic half-space (influence coefficients, the normal problem).
 //!
 //! Units throughout: mm, N, MPa (N/mm²), s; creepages dimensionless, spin in 1/mm.
 
@@ -10,6 +10,7 @@ pub mod grid;
 pub mod halfspace;
 pub mod hertz;
 pub mod kalker;
+pub mod lanes;
 pub mod material;
 pub mod moment;
 pub mod pressure;

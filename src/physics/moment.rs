@@ -4,6 +4,12 @@
 
 use super::Grid;
 
+/// One element's term `x_C ty − y tx` of [`moment_sum`] from the grid's `x` (`x_C = −x`) [MPa·mm].
+#[inline(always)]
+pub fn moment_term(x_mm: f64, y_mm: f64, tx: f64, ty: f64) -> f64 {
+    -x_mm * ty - y_mm * tx
+}
+
 /// `Σ_k (x_C,k ty_k − y_k tx_k)` over the grid [MPa·mm]; times the element area it is the moment
 /// in N·mm. Each row is summed in four interleaved partial sums (element i into sum i mod 4, so the
 /// additions do not wait on each other), the rows in order: deterministic.
@@ -16,11 +22,11 @@ pub fn moment_sum(grid: &Grid, tx: &[f64], ty: &[f64]) -> f64 {
         let (xs, px, py) = (grid.x_mm.chunks_exact(4), rx.chunks_exact(4), ry.chunks_exact(4));
         let mut tail = 0.0;
         for ((&x, &px), &py) in xs.remainder().iter().zip(px.remainder()).zip(py.remainder()) {
-            tail += -x * py - y * px;
+            tail += moment_term(x, y, px, py);
         }
         for ((x, px), py) in xs.zip(px).zip(py) {
             for l in 0..4 {
-                acc[l] += -x[l] * py[l] - y * px[l];
+                acc[l] += moment_term(x[l], y, px[l], py[l]);
             }
         }
         total += (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail;

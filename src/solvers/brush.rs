@@ -86,42 +86,20 @@ impl Tractions {
         FieldView { grid, pressure_mpa: &planform.pressure_mpa, tx_mpa: &self.tx, ty_mpa: &self.ty, state: None }
     }
 
-    /// Σ τx, Σ τy (one running sum each, flat order).
-    pub fn sums(&self) -> (f64, f64) {
-        (self.tx.iter().sum(), self.ty.iter().sum())
+    /// Σ τx, Σ τy (one running sum each, flat order) and the moment sum [`moment_sum`].
+    pub fn sums(&self, grid: &Grid) -> (f64, f64, f64) {
+        (self.tx.iter().sum(), self.ty.iter().sum(), moment_sum(grid, &self.tx, &self.ty))
     }
-}
-
-/// Σ v with four partial sums over consecutive elements, combined as (s0 + s1) + (s2 + s3).
-#[inline(always)]
-pub fn sum4(v: &[f64]) -> f64 {
-    let mut acc = [0.0f64; 4];
-    let chunks = v.chunks_exact(4);
-    let tail: f64 = chunks.remainder().iter().sum();
-    for c in chunks {
-        for l in 0..4 {
-            acc[l] += c[l];
-        }
-    }
-    (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail
 }
 
 /// A brush model's solve: the coefficients from the traction sums over the planform, the spin
-/// moment scaled the same way (`FN Σ m / Σ p`, so that it is consistent with f = Σ τ / Σ p),
+/// moment from the moment sum [`moment_sum`] scaled the same way (`FN Σ m / Σ p`, so that it is
+/// consistent with f = Σ τ / Σ p),
 /// and the adhesion and slip counts (the extra columns `n_adhesion, n_slip`).
-pub fn step(
-    (grid, planform): (&Grid, &Planform),
-    t: &Tractions,
-    (sum_tx, sum_ty): (f64, f64),
-    n_loaded: usize,
-    n_slip: usize,
-) -> Step {
+pub fn step(planform: &Planform, (sum_tx, sum_ty, moment): (f64, f64, f64), n_loaded: usize, n_slip: usize) -> Step {
     let (fx, fy) = planform.coefficients(sum_tx, sum_ty);
-    let mz_nmm = if planform.pressure_sum_mpa > 0.0 {
-        planform.ellipse.fn_n * moment_sum(grid, &t.tx, &t.ty) / planform.pressure_sum_mpa
-    } else {
-        0.0
-    };
+    let mz_nmm =
+        if planform.pressure_sum_mpa > 0.0 { planform.ellipse.fn_n * moment / planform.pressure_sum_mpa } else { 0.0 };
     Step {
         fx_over_fn: fx,
         fy_over_fn: fy,

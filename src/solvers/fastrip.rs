@@ -27,7 +27,8 @@ use super::stepper::{FieldView, Step, Stepper};
 use super::{linear_in_elements, ModelDef, SolveError};
 use crate::error::InputError;
 use crate::physics::bound::scale_factor;
-use crate::physics::{Planform, PressureShape};
+use crate::physics::lanes::sum4;
+use crate::physics::{moment_sum, Planform, PressureShape};
 use crate::problem::{LocalContact, Problem, Sample};
 use std::f64::consts::PI;
 
@@ -251,8 +252,8 @@ impl Stepper for Fastrip<'_> {
             let inputs = (&pressure[row.clone()], grid.x_mm.as_slice(), &self.dir.tx[row.clone()], &self.dir.ty[row]);
             n_slip += fill_row(inputs, consts, tx, ty);
         }
-        let sums = (brush::sum4(&self.t.tx), brush::sum4(&self.t.ty));
-        Ok(brush::step((grid, &self.hertz), &self.t, sums, self.hertz.loaded, n_slip))
+        let sums = (sum4(&self.t.tx), sum4(&self.t.ty), moment_sum(grid, &self.t.tx, &self.t.ty));
+        Ok(brush::step(&self.hertz, sums, self.hertz.loaded, n_slip))
     }
 
     /// No memory: the steady response at this step's creepage.

@@ -44,7 +44,7 @@ impl Stepper for Fastsim<'_> {
         let how = (self.p.model.leading_edge, Integration::Exact);
         let n_slip = brush::steady_march(&self.p.grid, &self.local, at.mu, &rates, how, &mut self.t);
         let (grid, planform) = (&self.p.grid, &self.local.planform);
-        Ok(brush::step((grid, planform), &self.t, self.t.sums(), planform.loaded, n_slip))
+        Ok(brush::step(planform, self.t.sums(grid), planform.loaded, n_slip))
     }
 
     /// No memory: the steady response at this step's creepage.

@@ -15,11 +15,12 @@
 //! (the thesis's Eq. 3.4 with its spin sign converted to CONTACT's, see [`crate::physics::RigidSlip`]);
 //! at C = 1 material moves exactly one element per step: `τ_i ← τ_{i−1} + dx k_i`.
 
-use super::brush::{self, sum4, Integration, LeadingEdge, Tractions};
+mod flat;
+
+use super::brush::{self, Integration, LeadingEdge, Tractions};
 use super::stepper::{FieldView, Step, Stepper};
 use super::{linear_in_elements, ModelDef, SolveError};
 use crate::error::InputError;
-use crate::physics::bound::bound_factor;
 use crate::physics::{Grid, Planform, RigidSlip};
 use crate::problem::{LocalContact, Problem, Sample};
 
@@ -78,8 +79,8 @@ struct Uba<'a> {
 }
 
 impl Uba<'_> {
-    fn row(&self, n_slip: usize, sums: (f64, f64)) -> Step {
-        brush::step((&self.p.grid, &self.local.planform), &self.t, sums, self.prep.loaded(), n_slip)
+    fn row(&self, n_slip: usize, sums: (f64, f64, f64)) -> Step {
+        brush::step(&self.local.planform, sums, self.prep.loaded(), n_slip)
     }
 }
 
@@ -108,7 +109,7 @@ impl Stepper for Uba<'_> {
         let rates = brush::slip_rates(at, &self.local);
         let how = (self.p.model.leading_edge, Integration::Centre);
         let n_slip = brush::steady_march(&self.p.grid, &self.local, at.mu, &rates, how, &mut self.t);
-        Ok(self.row(n_slip, self.t.sums()))
+        Ok(self.row(n_slip, self.t.sums(&self.p.grid)))
     }
 
     /// One time step: `ceil(C)` explicit sub-steps of Courant number `C/ceil(C)` each.
@@ -116,13 +117,13 @@ impl Stepper for Uba<'_> {
         let rates = brush::slip_rates(at, &self.local);
         let (n, courant) = substeps(self.p.rolling.courant);
         let scheme = (courant, self.p.model.leading_edge);
-        let mut sums = StepSums { n_slip: 0, sum_tx: 0.0, sum_ty: 0.0 };
+        let mut sums = StepSums { n_slip: 0, sum_tx: 0.0, sum_ty: 0.0, moment: 0.0 };
         for _ in 0..n {
             sums =
                 step((&self.p.grid, &self.local.planform), &mut self.prep, &rates, scheme, &self.t, &mut self.scratch);
             std::mem::swap(&mut self.t, &mut self.scratch);
         }
-        Ok(self.row(sums.n_slip, (sums.sum_tx, sums.sum_ty)))
+        Ok(self.row(sums.n_slip, (sums.sum_tx, sums.sum_ty, sums.moment)))
     }
 
     fn field(&self) -> Option<FieldView<'_>> {
@@ -186,10 +187,11 @@ impl Prepared {
 }
 
 /// One explicit upwind step (corrected Eq. 3.9–3.10) with the traction bound, from `old` into
-/// `new` (double-buffered: every update reads only old values, so the loop is one flat,
-/// branch-free pass over the grid that the compiler vectorises). `edge` sets the inflow value
-/// upstream of each row's first loaded element of the planform.
-/// Returns the number of elements on the bound and the traction sums. `courant` must be in (0, 1].
+/// `new` (double-buffered: every update reads only old values, so the step is one flat,
+/// branch-free pass over the grid, [`flat`]). `edge` sets the inflow value upstream of each row's
+/// first loaded element of the planform.
+/// Returns the number of elements on the bound, the traction sums and the moment sum.
+/// `courant` must be in (0, 1].
 pub fn step(
     (grid, planform): (&Grid, &Planform),
     prep: &mut Prepared,
@@ -214,72 +216,21 @@ pub fn step(
     let spin = kx_y != 0.0 || ky_x != 0.0;
     let io = (old.tx.as_slice(), old.ty.as_slice(), new.tx.as_mut_slice(), new.ty.as_mut_slice());
     match (ghost, spin) {
-        (false, false) => flat_step::<false, false>(prep, io, consts),
-        (false, true) => flat_step::<false, true>(prep, io, consts),
-        (true, false) => flat_step::<true, false>(prep, io, consts),
-        (true, true) => flat_step::<true, true>(prep, io, consts),
+        (false, false) => flat::step::<false, false>(prep, io, consts),
+        (false, true) => flat::step::<false, true>(prep, io, consts),
+        (true, false) => flat::step::<true, false>(prep, io, consts),
+        (true, true) => flat::step::<true, true>(prep, io, consts),
     }
 }
 
-/// What a step returns besides the new tractions: the elements on the bound and the traction
-/// sums Σ τx, Σ τy (fused into the pass: four partial sums, fixed order).
+/// What a step returns besides the new tractions: the elements on the bound, the traction sums
+/// Σ τx, Σ τy and the moment sum, taken in the pass in the four-lane order of
+/// [`crate::physics::lanes`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct StepSums {
     pub n_slip: usize,
     pub sum_tx: f64,
     pub sum_ty: f64,
-}
-
-/// Old tractions (x, y) in, new tractions (x, y) out.
-type Io<'a> = (&'a [f64], &'a [f64], &'a mut [f64], &'a mut [f64]);
-
-/// The flat pass: `consts` = [C, C·dx·kx0, C·dx·dkx/dy, C·dx·ky0, C·dx·dky/dx] ([`RigidSlip::affine`]). `GHOST`:
-/// rows start from a ghost inflow value (exact leading edge), else from zero; `SPIN`: the source
-/// varies with x and y, else it is constant (fewer streams over the grid). The traction sums
-/// follow in one pass of four partial sums (a fixed order: deterministic, and vectorised where a
-/// single running sum would wait on every addition).
-/// Compiled twice, plain and (when the CPU has it) with AVX2: the same IEEE operations and no
-/// fused multiply-add, so both give bit-identical results.
-#[inline(always)]
-fn flat_body<const GHOST: bool, const SPIN: bool>(p: &Prepared, (ox, oy, nx, ny): Io, k: [f64; 5]) -> StepSums {
-    let n = ox.len();
-    let (oy, nx, ny) = (&oy[..n], &mut nx[..n], &mut ny[..n]);
-    let (g, up, xs, ys, gain) = (&p.bound[..n], &p.upstream[..n], &p.x_mm[..n], &p.y_mm[..n], &p.gain[..n]);
-    let (gx, gy) = (&p.ghost_x[..n], &p.ghost_y[..n]);
-    let [c, sx0, sx1, sy0, sy1] = k;
-    let mut slips = 0usize;
-    for m in 0..n {
-        let (px, py) = if m > 0 { (ox[m - 1], oy[m - 1]) } else { (0.0, 0.0) };
-        let (inx, iny) = if GHOST { (gx[m], gy[m]) } else { (0.0, 0.0) };
-        let ux = up[m] * px + inx;
-        let uy = up[m] * py + iny;
-        let (srcx, srcy) = if SPIN { (sx0 + sx1 * ys[m], sy0 + sy1 * xs[m]) } else { (sx0, sy0) };
-        let (srcx, srcy) = (gain[m] * srcx, gain[m] * srcy);
-        let vx = ox[m] + c * (ux - ox[m]) + srcx;
-        let vy = oy[m] + c * (uy - oy[m]) + srcy;
-        let n2 = vx * vx + vy * vy;
-        // Direction-keeping projection (Eq. 2.29): scale = min(1, g/|v|); unloaded (g = 0) → 0.
-        let scale = bound_factor(n2, g[m]);
-        nx[m] = vx * scale;
-        ny[m] = vy * scale;
-        slips += ((n2 > g[m] * g[m]) & (g[m] > 0.0)) as usize;
-    }
-    StepSums { n_slip: slips, sum_tx: sum4(nx), sum_ty: sum4(ny) }
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-unsafe fn flat_avx2<const GHOST: bool, const SPIN: bool>(p: &Prepared, io: Io, k: [f64; 5]) -> StepSums {
-    flat_body::<GHOST, SPIN>(p, io, k)
-}
-
-fn flat_step<const GHOST: bool, const SPIN: bool>(p: &Prepared, io: Io, k: [f64; 5]) -> StepSums {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: the CPU supports AVX2 (checked just above).
-            return unsafe { flat_avx2::<GHOST, SPIN>(p, io, k) };
-        }
-    }
-    flat_body::<GHOST, SPIN>(p, io, k)
+    /// `Σ (x_C τy − y τx)` [MPa·mm], the sum of [`crate::physics::moment_sum`] (in the four-lane order).
+    pub moment: f64,
 }
