@@ -184,6 +184,19 @@ fn field_by_step(path: &Path) -> std::collections::BTreeMap<usize, Vec<Vec<Strin
     out
 }
 
+/// `mat_totals` of the script for each .mat file: `[totals, error bounds]` per file, or `None`
+/// where python3 is missing.
+fn mat_totals(files: &[String], dir: &Path) -> Option<Vec<serde_json::Value>> {
+    let code = "import sys, json; sys.path.insert(0, sys.argv[1]); import contact_to_csv as c; \
+                print(json.dumps([c.mat_totals(p) for p in sys.argv[2:]]))";
+    let scripts = root().join("scripts").display().to_string();
+    let mut args = vec!["-c", code, &scripts];
+    args.extend(files.iter().map(String::as_str));
+    let o = python(&args, dir)?;
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    Some(serde_json::from_slice(&o.stdout).unwrap())
+}
+
 /// The default contact's grid (a 8.56, b 4.08 mm, 22 × 22, SCALE 1) as a .mat prints it.
 fn default_grid() -> (usize, usize, f64, f64, f64, f64) {
     (22, 22, -8.56, -4.08, 2.0 * 8.56 / 22.0, 2.0 * 4.08 / 22.0)
@@ -251,8 +264,6 @@ fn the_moment_from_the_elements_is_the_references() {
     let dir = tempdir("contact_to_csv_mz");
     let fields = field_by_step(&root().join("reference/contact_envelope/step_combined_field.csv"));
     let (head, rows) = read_csv(&root().join("reference/contact_envelope/step_combined.csv"));
-    let code = "import sys, json; sys.path.insert(0, sys.argv[1]); import contact_to_csv as c; \
-                print(json.dumps([c.mat_totals(p)[0] for p in sys.argv[2:]]))";
     let mut mats = Vec::new();
     for (step, cells) in &fields {
         let p = dir.join(format!("step_combined.{step:04}.mat"));
@@ -260,18 +271,13 @@ fn the_moment_from_the_elements_is_the_references() {
         mats.push((*step, p.display().to_string()));
     }
     assert_eq!(mats.iter().map(|m| m.0).collect::<Vec<_>>(), [23, 44]);
-    let scripts = root().join("scripts").display().to_string();
-    let mut args = vec!["-c", code, &scripts];
-    args.extend(mats.iter().map(|m| m.1.as_str()));
-    let Some(o) = python(&args, &dir) else {
+    let Some(totals) = mat_totals(&mats.iter().map(|m| m.1.clone()).collect::<Vec<_>>(), &dir) else {
         return;
     };
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let totals: Vec<serde_json::Value> = serde_json::from_slice(&o.stdout).unwrap();
     for ((step, _), t) in mats.iter().zip(&totals) {
         let r = rows.iter().find(|r| r[col(&head, "step")] == *step as f64).unwrap();
         let want = |n: &str| r[col(&head, n)];
-        let got = |n: &str| t[n].as_f64().unwrap();
+        let got = |n: &str| t[0][n].as_f64().unwrap();
         // Moments are about 3e4 N mm: 1e-6 relative of FN·a (8.56e5 N mm) covers the roundings.
         let scale = want("fn_n") * 8.56;
         for n in ["mz_nmm", "fx_n", "fy_n"] {
@@ -292,8 +298,6 @@ fn the_moment_from_the_elements_is_the_references() {
 #[test]
 fn the_digits_bound_the_integrated_totals() {
     let dir = tempdir("contact_to_csv_noise");
-    let code = "import sys, json; sys.path.insert(0, sys.argv[1]); import contact_to_csv as c; \
-                print(json.dumps([c.mat_totals(p) for p in sys.argv[2:]]))";
     let mut mats = Vec::new();
     for (case, folder) in [("step_mu04", "contact"), ("step_combined", "contact_envelope")] {
         for (step, cells) in field_by_step(&root().join(format!("reference/{folder}/{case}_field.csv"))) {
@@ -302,14 +306,9 @@ fn the_digits_bound_the_integrated_totals() {
             mats.push((case, p.display().to_string()));
         }
     }
-    let scripts = root().join("scripts").display().to_string();
-    let mut args = vec!["-c", code, &scripts];
-    args.extend(mats.iter().map(|m| m.1.as_str()));
-    let Some(o) = python(&args, &dir) else {
+    let Some(totals) = mat_totals(&mats.iter().map(|m| m.1.clone()).collect::<Vec<_>>(), &dir) else {
         return;
     };
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let totals: Vec<serde_json::Value> = serde_json::from_slice(&o.stdout).unwrap();
     let fn_a = 1e5 * 8.56;
     let (mut longitudinal, mut worst, mut max_bound) = (0, 0.0f64, 0.0f64);
     for ((case, _), t) in mats.iter().zip(&totals) {
