@@ -21,14 +21,26 @@ pub(super) fn step<const GHOST: bool, const SPIN: bool>(p: &Prepared, io: Io, k:
         // SAFETY: the CPU supports AVX (checked just above).
         return unsafe { avx::step::<GHOST, SPIN>(p, io, k) };
     }
-    let (ox, oy, nx, ny) = io;
     let mut sums = Lanes::default();
-    for m in 0..ox.len() {
+    let n = io.0.len();
+    elements::<GHOST, SPIN>(p, io, k, 0..n, &mut sums);
+    sums.finish()
+}
+
+/// [`element`] for each element of `range`: the new tractions into `nx`, `ny` and the sums.
+#[inline(always)]
+fn elements<const GHOST: bool, const SPIN: bool>(
+    p: &Prepared,
+    (ox, oy, nx, ny): Io,
+    k: [f64; 5],
+    range: std::ops::Range<usize>,
+    sums: &mut Lanes,
+) {
+    for m in range {
         let (tx, ty, slips) = element::<GHOST, SPIN>(p, (ox, oy), k, m);
         (nx[m], ny[m]) = (tx, ty);
         sums.add(p, m, ox.len(), (tx, ty, slips));
     }
-    sums.finish()
 }
 
 /// The new traction of element `m` and whether it lies on the bound:
@@ -101,11 +113,11 @@ impl Lanes {
 
 #[cfg(target_arch = "x86_64")]
 mod avx {
-    use super::{element, Io, Lanes, Prepared, StepSums};
+    use super::{elements, Io, Lanes, Prepared, StepSums};
     use std::arch::x86_64::*;
 
     /// [`super::step`] four elements per register; the last `n mod 4` elements through
-    /// [`element`].
+    /// [`super::element`].
     #[target_feature(enable = "avx")]
     pub(super) unsafe fn step<const GHOST: bool, const SPIN: bool>(
         p: &Prepared,
@@ -122,16 +134,12 @@ mod avx {
             // elements 0..body, body <= n.
             unsafe { groups::<GHOST, SPIN>(p, (ox, oy, nx, ny), k, body, &mut sums) };
         }
-        for m in body..n {
-            let (tx, ty, slips) = element::<GHOST, SPIN>(p, (ox, oy), k, m);
-            (nx[m], ny[m]) = (tx, ty);
-            sums.add(p, m, n, (tx, ty, slips));
-        }
+        elements::<GHOST, SPIN>(p, (ox, oy, nx, ny), k, body..n, &mut sums);
         sums.finish()
     }
 
     /// The groups of four of elements `0..body` (`body` a multiple of 4): the update of
-    /// [`element`] on four lanes, the lane sums carried in registers.
+    /// [`super::element`] on four lanes, the lane sums carried in registers.
     #[target_feature(enable = "avx")]
     unsafe fn groups<const GHOST: bool, const SPIN: bool>(
         p: &Prepared,

@@ -188,7 +188,7 @@ impl Prepared {
 
 /// One explicit upwind step (corrected Eq. 3.9–3.10) with the traction bound, from `old` into
 /// `new` (double-buffered: every update reads only old values, so the step is one flat,
-/// branch-free pass over the grid, [`flat`]). `edge` sets the inflow value upstream of each row's
+/// branch-free pass over the grid, `uba/flat.rs`). `edge` sets the inflow value upstream of each row's
 /// first loaded element of the planform.
 /// Returns the number of elements on the bound, the traction sums and the moment sum.
 /// `courant` must be in (0, 1].
