@@ -2,7 +2,9 @@
 //! 22×22; every fast model ≤ 5 µs per creepage at 22×22 (issue 14, `fast_model_creepage`); the CONTACT-style solver per step at 22, 44, 88 on sine_f30_mu10; one steady
 //! combined-creepage case (cx, cy and spin) at 11×11 and 25×25 from zero traction (issue 12:
 //! ≤ 0.2 ms and ≤ 5 ms; CONTACT single-threaded 1.9 ms and 28 ms); a transient step on a
-//! non-Hertzian and a Hertzian contact on the same 30 × 28 grid (issue 13: no slower per element).
+//! non-Hertzian and a Hertzian contact on the same 30 × 28 grid (issue 13: no slower per element);
+//! rustfft's 2-D batch at the FFT lengths of the exact solver's 22, 44 and 88 grids, the former
+//! choice (radix 11) beside the current one (2^a 3^b), `fft_length`.
 //! Run: `cargo bench --bench solvers` (criterion prints time per iteration; divide the UBA time
 //! by mx·my for ns per element-step — scripts/bench_table.sh does it).
 
@@ -195,7 +197,25 @@ fn bench_uba_run(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench_uba, bench_fastsim, bench_fast_models, bench_uba_run);
+/// One pass of `n` single-precision FFTs of length `n` (a 2-D transform's column pass) at the
+/// lengths that the 22, 44 and 88 grids (`2m - 1` padded) took before (44, 88, 176: radix 11) and
+/// take now (48, 96, 192), per point.
+fn bench_fft_length(c: &mut Criterion) {
+    use rustfft::{num_complex::Complex, FftPlanner};
+    let mut g = c.benchmark_group("fft_length");
+    for n in [44usize, 48, 88, 96, 176, 192] {
+        let fft = FftPlanner::<f32>::new().plan_fft_forward(n);
+        let mut buf = vec![Complex::new(1.0f32, 0.5); n * n];
+        let mut scratch = vec![Complex::new(0.0f32, 0.0); fft.get_inplace_scratch_len()];
+        g.throughput(Throughput::Elements((n * n) as u64));
+        g.bench_function(BenchmarkId::new("f32_batch", n), |b| {
+            b.iter(|| fft.process_with_scratch(black_box(&mut buf), &mut scratch))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench_uba, bench_fastsim, bench_fast_models, bench_uba_run, bench_fft_length);
 criterion_group! {
     name = contact;
     config = Criterion::default().sample_size(10);

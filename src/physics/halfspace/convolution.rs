@@ -36,14 +36,15 @@ pub fn auto_path(mx: usize, my: usize) -> ConvPath {
     }
 }
 
-/// Smallest even integer `>= n` whose prime factors are 2, 3, 5, 7 or 11 (fast FFT length; even
-/// lengths suit rustfft's AVX kernels).
+/// Smallest even integer `>= n` of the form `2^a 3^b` (the FFT length): rustfft's AVX kernels
+/// are radix 2, 3, 4, 6, 8, 9, 12 and 16, and a length with a factor 5, 7 or 11 takes its slower
+/// mixed-radix path (bench `fft_length`).
 #[allow(clippy::manual_is_multiple_of)] // is_multiple_of needs Rust 1.87; MSRV is 1.82
 fn fft_len(n: usize) -> usize {
     let mut m = n.max(2);
     loop {
         let mut r = m;
-        for p in [2, 3, 5, 7, 11] {
+        for p in [2, 3] {
             while r % p == 0 {
                 r /= p;
             }
@@ -147,6 +148,18 @@ impl FftData<f64> {
         self.buft.clone()
     }
 
+    /// The field at every offset of the period, row-major `[y][x]`, from a spectrum stored like
+    /// the kernel spectra (layout `[kx][ky]`, scaled by `1/(nx*ny)`): the unnormalised inverse
+    /// 2-D transform, real part.
+    fn real_space(&mut self, spectrum: &[Complex<f64>]) -> Vec<f64> {
+        let (nx, ny) = (self.nx, self.ny);
+        self.buft.copy_from_slice(spectrum);
+        self.inv_y.process_with_scratch(&mut self.buft, &mut self.scratch);
+        transpose(&self.buft, &mut self.buf, ny, nx, nx);
+        self.inv_x.process_with_scratch(&mut self.buf, &mut self.scratch);
+        self.buf.iter().map(|c| c.re).collect()
+    }
+
     /// The same operator in single precision (plans, spectra and buffers in `f32`).
     fn to_f32(&self) -> FftData<f32> {
         let down = |v: &[Complex<f64>]| v.iter().map(|c| Complex::new(c.re as f32, c.im as f32)).collect();
@@ -209,6 +222,66 @@ impl<T: Real> FftData<T> {
         }
         self.inv_x.process_with_scratch(&mut self.buf[..my * nx], &mut self.scratch);
     }
+}
+
+/// The kernel of the inverse of `A` periodised at `2mx x 2my` elements, at the grid's offsets: per
+/// frequency of that period `1/Azz` and the inverse of the 2x2 tangential symbol (symbols clamped
+/// to at least 1e-3 of their largest value, the coupling to 0.99 of the geometric mean of the
+/// diagonal, so that `M` stays positive definite), transformed back to real space. On the grid
+/// this is the circulant inverse of Chan's preconditioner family (Chan & Jin, "An Introduction to
+/// Iterative Toeplitz Solvers", 2007, ch. 2) at twice the grid, the period at which the
+/// periodised `A` holds every offset of the grid once.
+fn periodic_inverse(kernel: &Kernel) -> Result<Kernel, ContactError> {
+    let (mx, my) = (kernel.mx, kernel.my);
+    // The checks of Convolver::new, before the transforms use the kernel.
+    Convolver::new(kernel, ConvPath::Direct)?;
+    let (px, py) = (2 * mx, 2 * my);
+    let mut f = FftData::new(kernel, px, py);
+    // Spectra are stored scaled by 1/(px py); the inverse's must carry the same scale.
+    let scale = 1.0 / (px * py) as f64;
+    let amax = f.sxx.iter().chain(&f.syy).fold(0.0f64, |m, v| m.max(v.re));
+    let zmax = f.szz.iter().fold(0.0f64, |m, v| m.max(v.re));
+    let floor = 1e-3;
+    for idx in 0..f.szz.len() {
+        let z = f.szz[idx].re.max(floor * zmax);
+        f.szz[idx] = Complex::new(scale * scale / z, 0.0);
+        let a = f.sxx[idx].re.max(floor * amax);
+        let d = f.syy[idx].re.max(floor * amax);
+        let lim = 0.99 * (a * d).sqrt();
+        let b = f.sxy[idx].re.clamp(-lim, lim);
+        let det = a * d - b * b;
+        f.sxx[idx] = Complex::new(scale * scale * d / det, 0.0);
+        f.syy[idx] = Complex::new(scale * scale * a / det, 0.0);
+        f.sxy[idx] = Complex::new(-scale * scale * b / det, 0.0);
+    }
+    let (szz, sxx, syy, sxy) = (
+        std::mem::take(&mut f.szz),
+        std::mem::take(&mut f.sxx),
+        std::mem::take(&mut f.syy),
+        std::mem::take(&mut f.sxy),
+    );
+    let mut at_offsets = |spectrum: Vec<Complex<f64>>| {
+        let periodic = f.real_space(&spectrum);
+        let mut out = vec![0.0; (2 * mx - 1) * (2 * my - 1)];
+        for dj in -(my as isize - 1)..=(my as isize - 1) {
+            let row = dj.rem_euclid(py as isize) as usize;
+            for di in -(mx as isize - 1)..=(mx as isize - 1) {
+                out[kernel.index(di, dj)] = periodic[row * px + di.rem_euclid(px as isize) as usize];
+            }
+        }
+        out
+    };
+    Ok(Kernel {
+        mx,
+        my,
+        dx_mm: kernel.dx_mm,
+        dy_mm: kernel.dy_mm,
+        shift_mm: kernel.shift_mm,
+        zz: at_offsets(szz),
+        xx: at_offsets(sxx),
+        yy: at_offsets(syy),
+        xy: at_offsets(sxy),
+    })
 }
 
 /// Transposes the first `rows` rows of the row-major `[ny][nx]` array `src` into `dst` laid out
@@ -275,34 +348,13 @@ impl Convolver {
         })
     }
 
-    /// FFT-path operator whose spectra are the inverse of `kernel`'s (per frequency: `1/Azz`, and
-    /// the inverse of the 2x2 tangential symbol), i.e. the inverse of the periodised convolution:
-    /// an approximate inverse of `A` used as preconditioner (symbols clamped to stay positive).
-    /// Its [`Convolver::tangential`] runs in single precision: a preconditioner changes only the
-    /// path to the solution, not the solution.
+    /// FFT-path operator `M`, an approximate inverse of `A` used as preconditioner: the inverse of
+    /// `A` periodised at twice the grid ([`periodic_inverse`]), applied like `A` itself, so that
+    /// the FFT length does not change the operator. Its [`Convolver::tangential`] runs in single
+    /// precision: a preconditioner changes only the path to the solution, not the solution.
     pub fn inverse_of(kernel: &Kernel) -> Result<Convolver, ContactError> {
-        let mut c = Convolver::new(kernel, ConvPath::Fft)?;
-        let f = c.fft.as_mut().ok_or(ContactError::MissingFft)?;
-        let scale = 1.0 / (f.nx * f.ny) as f64;
-        let amax = f.sxx.iter().chain(&f.syy).fold(0.0f64, |m, v| m.max(v.re));
-        let zmax = f.szz.iter().fold(0.0f64, |m, v| m.max(v.re));
-        let floor = 1e-3;
-        for idx in 0..f.szz.len() {
-            // Spectra are stored scaled by 1/(nx ny); the inverse must carry the same scale.
-            let z = f.szz[idx].re.max(floor * zmax);
-            f.szz[idx] = Complex::new(scale * scale / z, 0.0);
-            let a = f.sxx[idx].re.max(floor * amax);
-            let d = f.syy[idx].re.max(floor * amax);
-            let mut b = f.sxy[idx].re;
-            let lim = 0.99 * (a * d).sqrt();
-            b = b.clamp(-lim, lim);
-            let det = a * d - b * b;
-            f.sxx[idx] = Complex::new(scale * scale * d / det, 0.0);
-            f.syy[idx] = Complex::new(scale * scale * a / det, 0.0);
-            f.sxy[idx] = Complex::new(-scale * scale * b / det, 0.0);
-        }
-        f.pack_pair();
-        c.fft32 = Some(f.to_f32());
+        let mut c = Convolver::new(&periodic_inverse(kernel)?, ConvPath::Fft)?;
+        c.fft32 = c.fft.as_ref().map(FftData::to_f32);
         Ok(c)
     }
 
@@ -596,6 +648,70 @@ mod tests {
         let err = ax.iter().zip(&bx).chain(ay.iter().zip(&by)).fold(0.0f64, |s, (x, y)| s.max((x - y).abs()));
         assert!(scale > 0.0 && err <= 1e-5 * scale, "f32 vs f64: {err} vs {scale}");
         assert!(err > 0.0, "the f32 path was not used");
+    }
+
+    #[test]
+    fn preconditioner_is_the_periodised_inverse_whatever_the_fft_length() {
+        // M by its definition, with explicit DFT sums instead of rustfft: the symbols of the
+        // tangential A at period (2 mx, 2 my), clamped (diagonal to 1e-3 of the largest, coupling
+        // to 0.99 of the diagonal's geometric mean), their 2x2 inverses, back to the grid. M
+        // itself is applied by FFTs of another length (2^a 3^b >= 2 m - 1).
+        let (mx, my) = (5, 4);
+        let k = Kernel::new(mx, my, 0.7, 0.4, 82000.0, 0.28, 0.0).unwrap();
+        let (px, py) = (2 * mx, 2 * my);
+        let tau = 2.0 * std::f64::consts::PI;
+        let phase = |kx: usize, ky: usize, di: isize, dj: isize| {
+            tau * (kx as f64 * di as f64 / px as f64 + ky as f64 * dj as f64 / py as f64)
+        };
+        let offsets: Vec<(isize, isize)> = (-(my as isize - 1)..my as isize)
+            .flat_map(|dj| (-(mx as isize - 1)..mx as isize).map(move |di| (di, dj)))
+            .collect();
+        let symbol = |comp: &[f64], kx: usize, ky: usize| {
+            offsets.iter().map(|&(di, dj)| comp[k.index(di, dj)] * phase(kx, ky, di, dj).cos()).sum::<f64>()
+        };
+        let freqs: Vec<(usize, usize)> = (0..py).flat_map(|ky| (0..px).map(move |kx| (kx, ky))).collect();
+        let sym: Vec<[f64; 3]> = freqs
+            .iter()
+            .map(|&(kx, ky)| [symbol(&k.xx, kx, ky), symbol(&k.yy, kx, ky), symbol(&k.xy, kx, ky)])
+            .collect();
+        let amax = sym.iter().fold(0.0f64, |m, s| m.max(s[0]).max(s[1]));
+        let inv: Vec<[f64; 3]> = sym
+            .iter()
+            .map(|s| {
+                let (a, d) = (s[0].max(1e-3 * amax), s[1].max(1e-3 * amax));
+                let lim = 0.99 * (a * d).sqrt();
+                let b = s[2].clamp(-lim, lim);
+                let det = a * d - b * b;
+                [d / det, a / det, -b / det]
+            })
+            .collect();
+        assert!(sym.iter().any(|s| s[0] < 1e-3 * amax), "the clamp is exercised");
+        let mut m = Convolver::inverse_of(&k).unwrap();
+        m.fft32 = None;
+        let n = mx * my;
+        let (mut worst, mut scale) = (0.0f64, 0.0f64);
+        for src in 0..n {
+            for comp in 0..2 {
+                let (mut sx, mut sy) = (vec![0.0; n], vec![0.0; n]);
+                [&mut sx, &mut sy][comp][src] = 1.0;
+                let (mut ux, mut uy) = (vec![0.0; n], vec![0.0; n]);
+                m.tangential(&sx, &sy, None, &mut ux, &mut uy).unwrap();
+                for dst in 0..n {
+                    let di = (dst % mx) as isize - (src % mx) as isize;
+                    let dj = (dst / mx) as isize - (src / mx) as isize;
+                    let (mut ex, mut ey) = (0.0, 0.0);
+                    for (&(kx, ky), s) in freqs.iter().zip(&inv) {
+                        let c = phase(kx, ky, di, dj).cos() / (px * py) as f64;
+                        let (xcol, ycol) = if comp == 0 { (s[0], s[2]) } else { (s[2], s[1]) };
+                        ex += xcol * c;
+                        ey += ycol * c;
+                    }
+                    worst = worst.max((ux[dst] - ex).abs()).max((uy[dst] - ey).abs());
+                    scale = scale.max(ex.abs()).max(ey.abs());
+                }
+            }
+        }
+        assert!(scale > 0.0 && worst <= 1e-9 * scale, "M against its definition: {worst} (entries up to {scale})");
     }
 
     #[test]

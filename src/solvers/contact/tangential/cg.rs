@@ -13,6 +13,7 @@ use super::element::{norm2, on_bound, Diag, Local};
 use super::operator::Plans;
 use super::{ContactError, Layout, Outcome, State, TangentialParams};
 use crate::physics::bound::{project_to_bound, scale_to_bound};
+use crate::physics::lanes::combine;
 
 /// CG iterations between exact slip evaluations and element set updates.
 const INNER: usize = 4;
@@ -47,6 +48,8 @@ pub(super) struct CgWork {
     ty: Vec<f64>,
     curv: Vec<f64>,
     stiff: Vec<f64>,
+    /// `|z|` per element (adhesion: the larger component), for the residual's maximum.
+    zabs: Vec<f64>,
 }
 
 impl CgWork {
@@ -70,6 +73,7 @@ impl CgWork {
             ty: z(),
             curv: z(),
             stiff: z(),
+            zabs: z(),
         }
     }
 
@@ -77,46 +81,64 @@ impl CgWork {
     /// itself; slip: its component along the bound circle), into `r`, `z`, and the slip
     /// elements' tangent, curvature, stiffness and preconditioner weight (see
     /// [`CgWork::apply_prec`]). Returns `max |z|` (the change a local Gauss–Seidel solve would
-    /// make, to first order) [MPa].
+    /// make, to first order) [MPa]. One pass over the grid, elements outside the contact left as
+    /// they are (see [`grid_pass`]).
     fn residual(&mut self, lay: &Layout, st: &State, d: Diag, mu: f64) -> f64 {
-        let mut zmax = 0.0f64;
-        for &k in &lay.contact {
-            let (sx, sy) = (st.sx[k], st.sy[k]);
-            if st.slip[k] {
-                let g = mu * lay.pn[k];
-                let a = norm2(st.px[k], st.py[k]);
-                if g <= 0.0 || a <= 0.0 {
-                    self.rx[k] = 0.0;
-                    self.ry[k] = 0.0;
-                    self.zx[k] = 0.0;
-                    self.zy[k] = 0.0;
-                    (self.tx[k], self.ty[k], self.curv[k], self.stiff[k], self.wt[k]) = (0.0, 0.0, 0.0, 0.0, 0.0);
-                    continue;
+        grid_pass(|| self.residual_pass(lay, st, d, mu))
+    }
+
+    #[inline(always)]
+    fn residual_pass(&mut self, lay: &Layout, st: &State, d: Diag, mu: f64) -> f64 {
+        let n = lay.n();
+        let (on, pn, slip) = (&lay.mask[..n], &lay.pn[..n], &st.slip[..n]);
+        let (px, py, sx, sy) = (&st.px[..n], &st.py[..n], &st.sx[..n], &st.sy[..n]);
+        let (rx, ry, zx, zy) = (&mut self.rx[..n], &mut self.ry[..n], &mut self.zx[..n], &mut self.zy[..n]);
+        let (tx, ty, curv, stiff, wt) =
+            (&mut self.tx[..n], &mut self.ty[..n], &mut self.curv[..n], &mut self.stiff[..n], &mut self.wt[..n]);
+        let zabs = &mut self.zabs[..n];
+        for k in 0..n {
+            // Slip: the residual along the bound circle's tangent t at p.
+            let g = mu * pn[k];
+            let a = norm2(px[k], py[k]);
+            let (nx, ny) = (px[k] / a, py[k] / a);
+            let (t_x, t_y) = (-ny, nx);
+            let s_t = t_x * sx[k] + t_y * sy[k];
+            let l = nx * sx[k] + ny * sy[k];
+            let lam = if l > 0.0 { l } else { 0.0 };
+            let c = lam / g;
+            let st_k = d.xx * t_x * t_x + d.yy * t_y * t_y + c;
+            let zt = s_t / st_k;
+            let w_k = (1.0 - c / st_k).sqrt();
+            // Per element one of: outside (unchanged), adhesion, slip, degenerate slip (zero).
+            let (ad, sl) = (on[k] && !slip[k], on[k] && slip[k]);
+            let ok = sl && g > 0.0 && a > 0.0;
+            let bad = sl && !ok;
+            let (ax, ay) = (sx[k] / d.xx, sy[k] / d.yy);
+            let case = |adhesion: f64, slipping: f64, old: f64| match (ad, ok, bad) {
+                (true, _, _) => adhesion,
+                (_, true, _) => slipping,
+                (_, _, true) => 0.0,
+                _ => old,
+            };
+            (rx[k], ry[k]) = (case(sx[k], s_t * t_x, rx[k]), case(sy[k], s_t * t_y, ry[k]));
+            (zx[k], zy[k]) = (case(ax, zt * t_x, zx[k]), case(ay, zt * t_y, zy[k]));
+            (tx[k], ty[k]) = (case(tx[k], t_x, tx[k]), case(ty[k], t_y, ty[k]));
+            (curv[k], stiff[k]) = (case(curv[k], c, curv[k]), case(stiff[k], st_k, stiff[k]));
+            wt[k] = case(1.0, w_k, wt[k]);
+            let (zax, zay) = (ax.abs(), ay.abs());
+            zabs[k] = if ad {
+                if zay > zax {
+                    zay
+                } else {
+                    zax
                 }
-                let (nx, ny) = (st.px[k] / a, st.py[k] / a);
-                let (tx, ty) = (-ny, nx);
-                let s_t = tx * sx + ty * sy;
-                let lam = (nx * sx + ny * sy).max(0.0);
-                self.rx[k] = s_t * tx;
-                self.ry[k] = s_t * ty;
-                let stiff = d.xx * tx * tx + d.yy * ty * ty + lam / g;
-                let curv = lam / g;
-                (self.tx[k], self.ty[k], self.curv[k], self.stiff[k]) = (tx, ty, curv, stiff);
-                self.wt[k] = (1.0 - curv / stiff).sqrt();
-                let zt = s_t / stiff;
-                self.zx[k] = zt * tx;
-                self.zy[k] = zt * ty;
-                zmax = zmax.max(zt.abs());
+            } else if ok {
+                zt.abs()
             } else {
-                self.wt[k] = 1.0;
-                self.rx[k] = sx;
-                self.ry[k] = sy;
-                self.zx[k] = sx / d.xx;
-                self.zy[k] = sy / d.yy;
-                zmax = zmax.max(self.zx[k].abs()).max(self.zy[k].abs());
-            }
+                0.0
+            };
         }
-        zmax
+        lane_max(zabs)
     }
 
     /// Preconditioned residual `z = S M S r + (I - S^2) D_c^-1 r` into `z` (needs `r` and the
@@ -126,48 +148,123 @@ impl CgWork {
     /// is projected onto `t`. Symmetric positive definite: the FFT part for slip elements that
     /// barely slip (`lambda` small), the diagonal for those that slip fast.
     fn apply_prec(&mut self, lay: &Layout, slip: &[bool], prec: &mut Convolver) -> Result<(), ContactError> {
-        for &k in &lay.contact {
-            self.qx[k] = self.wt[k] * self.rx[k];
-            self.qy[k] = self.wt[k] * self.ry[k];
-        }
-        prec.tangential(&self.qx, &self.qy, Some(&lay.mask), &mut self.zrx, &mut self.zry)?;
-        for &k in &lay.contact {
-            if !slip[k] {
-                self.zx[k] = self.zrx[k];
-                self.zy[k] = self.zry[k];
-            } else if self.stiff[k] > 0.0 {
-                let (tx, ty, s) = (self.tx[k], self.ty[k], self.wt[k]);
-                let zt = s * (tx * self.zrx[k] + ty * self.zry[k])
-                    + (1.0 - s * s) * (tx * self.rx[k] + ty * self.ry[k]) / self.stiff[k];
-                self.zx[k] = zt * tx;
-                self.zy[k] = zt * ty;
+        let n = lay.n();
+        grid_pass(|| {
+            let (on, wt, rx, ry) = (&lay.mask[..n], &self.wt[..n], &self.rx[..n], &self.ry[..n]);
+            let (qx, qy) = (&mut self.qx[..n], &mut self.qy[..n]);
+            for k in 0..n {
+                (qx[k], qy[k]) = if on[k] { (wt[k] * rx[k], wt[k] * ry[k]) } else { (qx[k], qy[k]) };
             }
-        }
+        });
+        prec.tangential(&self.qx, &self.qy, Some(&lay.mask), &mut self.zrx, &mut self.zry)?;
+        grid_pass(|| {
+            let (on, slip, wt, rx, ry) = (&lay.mask[..n], &slip[..n], &self.wt[..n], &self.rx[..n], &self.ry[..n]);
+            let (tx, ty, stiff, zrx, zry) =
+                (&self.tx[..n], &self.ty[..n], &self.stiff[..n], &self.zrx[..n], &self.zry[..n]);
+            let (zx, zy) = (&mut self.zx[..n], &mut self.zy[..n]);
+            for k in 0..n {
+                let s = wt[k];
+                let zt =
+                    s * (tx[k] * zrx[k] + ty[k] * zry[k]) + (1.0 - s * s) * (tx[k] * rx[k] + ty[k] * ry[k]) / stiff[k];
+                // Adhesion: the FFT part; slip (non-degenerate): along t; else unchanged.
+                (zx[k], zy[k]) = if on[k] && !slip[k] {
+                    (zrx[k], zry[k])
+                } else if on[k] && stiff[k] > 0.0 {
+                    (zt * tx[k], zt * ty[k])
+                } else {
+                    (zx[k], zy[k])
+                };
+            }
+        });
         Ok(())
     }
 
     /// The next search direction `v = z + beta v`, conjugate to the previous one
     /// (`beta = -(z, q_old)/(v, q_old)`; 0 on a restart).
     fn direction(&mut self, lay: &Layout, restart: bool) {
-        let beta = if restart {
-            0.0
-        } else {
-            let (mut zq, mut vq) = (0.0, 0.0);
-            for &k in &lay.contact {
-                zq += self.zx[k] * self.qpx[k] + self.zy[k] * self.qpy[k];
-                vq += self.vx[k] * self.qpx[k] + self.vy[k] * self.qpy[k];
-            }
-            if vq.abs() > 1e-300 {
-                -zq / vq
-            } else {
+        let n = lay.n();
+        grid_pass(|| {
+            let on = &lay.mask[..n];
+            let (zx, zy, qpx, qpy) = (&self.zx[..n], &self.zy[..n], &self.qpx[..n], &self.qpy[..n]);
+            let (vx, vy) = (&mut self.vx[..n], &mut self.vy[..n]);
+            let beta = if restart {
                 0.0
+            } else {
+                let (zq, vq) = lane_sums2(n, |k| {
+                    if on[k] {
+                        (zx[k] * qpx[k] + zy[k] * qpy[k], vx[k] * qpx[k] + vy[k] * qpy[k])
+                    } else {
+                        (0.0, 0.0)
+                    }
+                });
+                if vq.abs() > 1e-300 {
+                    -zq / vq
+                } else {
+                    0.0
+                }
+            };
+            for k in 0..n {
+                (vx[k], vy[k]) = if on[k] { (zx[k] + beta * vx[k], zy[k] + beta * vy[k]) } else { (vx[k], vy[k]) };
             }
-        };
-        for &k in &lay.contact {
-            self.vx[k] = self.zx[k] + beta * self.vx[k];
-            self.vy[k] = self.zy[k] + beta * self.vy[k];
+        });
+    }
+}
+
+/// Runs an element pass over the grid compiled for AVX2 where the CPU has it, else as it is: the
+/// same IEEE operations either way (no fused multiply-adds), so the same numbers. The passes run
+/// over every grid element and leave those outside the contact (`lay.mask` false) as they were:
+/// branch-free selects that vectorise, where a loop over the contact list would not.
+#[inline(always)]
+fn grid_pass<R>(f: impl FnOnce() -> R) -> R {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: AVX2 is available (checked above).
+        return unsafe { avx2(f) };
+    }
+    f()
+}
+
+/// [`grid_pass`]'s AVX2 build.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn avx2<R>(f: impl FnOnce() -> R) -> R {
+    f()
+}
+
+/// Two sums over the elements `0..n` of per-element terms, each in the four-lane order of
+/// [`crate::physics::lanes`] (deterministic, independent of the CPU).
+#[inline(always)]
+fn lane_sums2(n: usize, term: impl Fn(usize) -> (f64, f64)) -> (f64, f64) {
+    let (mut a, mut b) = ([0.0f64; 4], [0.0f64; 4]);
+    let body = n - n % 4;
+    for c in (0..body).step_by(4) {
+        for l in 0..4 {
+            let (x, y) = term(c + l);
+            a[l] += x;
+            b[l] += y;
         }
     }
+    let (mut ta, mut tb) = (0.0, 0.0);
+    for k in body..n {
+        let (x, y) = term(k);
+        ta += x;
+        tb += y;
+    }
+    (combine(a, ta), combine(b, tb))
+}
+
+/// The largest of non-negative values, in four lanes (a maximum is exact in any order).
+#[inline(always)]
+fn lane_max(v: &[f64]) -> f64 {
+    let mut m = [0.0f64; 4];
+    let chunks = v.chunks_exact(4);
+    let tail = chunks.remainder().iter().fold(0.0f64, |a, &b| if b > a { b } else { a });
+    for c in chunks {
+        for l in 0..4 {
+            m[l] = if c[l] > m[l] { c[l] } else { m[l] };
+        }
+    }
+    m.iter().fold(tail, |a, &b| if b > a { b } else { a })
 }
 
 /// Moves elements between adhesion and slip: adhesion elements above the bound go to slip
@@ -191,6 +288,66 @@ fn update_sets(lay: &Layout, st: &mut State, d: Diag, mu: f64) -> bool {
         }
     }
     changed
+}
+
+/// The reduced operator applied to the search direction, `qp` (slip elements: `A v` along the
+/// tangent plus the curvature term, from [`CgWork::residual`]; `p` has not moved since), and the
+/// step's sums `(r.v, v.qp)` with `max |v|`.
+#[inline(always)]
+fn reduced_product(lay: &Layout, slip: &[bool], w: &mut CgWork) -> (f64, f64, f64) {
+    let n = lay.n();
+    let (on, slip) = (&lay.mask[..n], &slip[..n]);
+    let (qx, qy, vx, vy, rx, ry) = (&w.qx[..n], &w.qy[..n], &w.vx[..n], &w.vy[..n], &w.rx[..n], &w.ry[..n]);
+    let (tx, ty, curv) = (&w.tx[..n], &w.ty[..n], &w.curv[..n]);
+    let (qpx, qpy) = (&mut w.qpx[..n], &mut w.qpy[..n]);
+    let vabs = &mut w.zabs[..n];
+    for k in 0..n {
+        let qt = tx[k] * qx[k] + ty[k] * qy[k];
+        let sl = (qt * tx[k] + curv[k] * vx[k], qt * ty[k] + curv[k] * vy[k]);
+        (qpx[k], qpy[k]) = if !on[k] {
+            (qpx[k], qpy[k])
+        } else if slip[k] {
+            sl
+        } else {
+            (qx[k], qy[k])
+        };
+        let (ax, ay) = (vx[k].abs(), vy[k].abs());
+        vabs[k] = if !on[k] {
+            0.0
+        } else if ay > ax {
+            ay
+        } else {
+            ax
+        };
+    }
+    let vmax = lane_max(&w.zabs[..n]);
+    let (qpx, qpy) = (&w.qpx[..n], &w.qpy[..n]);
+    let (rv, vq) = lane_sums2(n, |k| {
+        if on[k] {
+            (rx[k] * vx[k] + ry[k] * vy[k], vx[k] * qpx[k] + vy[k] * qpy[k])
+        } else {
+            (0.0, 0.0)
+        }
+    });
+    (rv, vq, vmax)
+}
+
+/// The CG step `p += alpha v`, `s -= alpha A v` on the contact elements, slip elements scaled
+/// back onto their bound (the one projection).
+#[inline(always)]
+fn step(lay: &Layout, st: &mut State, w: &CgWork, alpha: f64, mu: f64) {
+    let n = lay.n();
+    let (on, pn, slip) = (&lay.mask[..n], &lay.pn[..n], &st.slip[..n]);
+    let (vx, vy, qx, qy) = (&w.vx[..n], &w.vy[..n], &w.qx[..n], &w.qy[..n]);
+    let (px, py, sx, sy) = (&mut st.px[..n], &mut st.py[..n], &mut st.sx[..n], &mut st.sy[..n]);
+    for k in 0..n {
+        let (x, y) = (px[k] + alpha * vx[k], py[k] + alpha * vy[k]);
+        let g = mu * pn[k];
+        let (bx, by) = scale_to_bound(x, y, g);
+        let (x, y) = if slip[k] { (bx, by) } else { (x, y) };
+        (px[k], py[k], sx[k], sy[k]) =
+            if on[k] { (x, y, sx[k] - alpha * qx[k], sy[k] - alpha * qy[k]) } else { (px[k], py[k], sx[k], sy[k]) };
+    }
 }
 
 /// The CG iteration of a transient step. Expects `(px, py)` on or inside the bound, `(sx, sy)`
@@ -226,37 +383,12 @@ pub(super) fn solve(
         // Search-direction product in single precision: the slip is recomputed exactly (f64)
         // every INNER iterations and for the stopping test.
         plans.conv0_f32.tangential(&w.vx, &w.vy, Some(&lay.mask), &mut w.qx, &mut w.qy)?;
-        let (mut rv, mut vq) = (0.0, 0.0);
-        let mut vmax = 0.0f64;
-        for &k in &lay.contact {
-            let (qx, qy) = (w.qx[k], w.qy[k]);
-            let (qpx, qpy) = if st.slip[k] {
-                // Tangent and curvature from `residual` (p has not moved since).
-                let (tx, ty, c) = (w.tx[k], w.ty[k], w.curv[k]);
-                let qt = tx * qx + ty * qy;
-                (qt * tx + c * w.vx[k], qt * ty + c * w.vy[k])
-            } else {
-                (qx, qy)
-            };
-            w.qpx[k] = qpx;
-            w.qpy[k] = qpy;
-            rv += w.rx[k] * w.vx[k] + w.ry[k] * w.vy[k];
-            vq += w.vx[k] * qpx + w.vy[k] * qpy;
-            vmax = vmax.max(w.vx[k].abs()).max(w.vy[k].abs());
-        }
+        let (rv, vq, vmax) = grid_pass(|| reduced_product(lay, &st.slip, w));
         let alpha = if vq > 0.0 && rv.is_finite() { rv / vq } else { 0.0 };
         if !alpha.is_finite() {
             break;
         }
-        for &k in &lay.contact {
-            st.px[k] += alpha * w.vx[k];
-            st.py[k] += alpha * w.vy[k];
-            st.sx[k] -= alpha * w.qx[k];
-            st.sy[k] -= alpha * w.qy[k];
-            if st.slip[k] {
-                (st.px[k], st.py[k]) = scale_to_bound(st.px[k], st.py[k], mu * lay.pn[k]);
-            }
-        }
+        grid_pass(|| step(lay, st, w, alpha, mu));
         let dif = (alpha * vmax).abs() / gmax;
         since_check += 1;
         if since_check >= INNER || dif < params.tol || alpha == 0.0 {
