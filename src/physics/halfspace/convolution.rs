@@ -227,10 +227,9 @@ impl<T: Real> FftData<T> {
 /// The kernel of the inverse of `A` periodised at `2mx x 2my` elements, at the grid's offsets: per
 /// frequency of that period `1/Azz` and the inverse of the 2x2 tangential symbol (symbols clamped
 /// to at least 1e-3 of their largest value, the coupling to 0.99 of the geometric mean of the
-/// diagonal, so that `M` stays positive definite), transformed back to real space. On the grid
-/// this is the circulant inverse of Chan's preconditioner family (Chan & Jin, "An Introduction to
-/// Iterative Toeplitz Solvers", 2007, ch. 2) at twice the grid, the period at which the
-/// periodised `A` holds every offset of the grid once.
+/// diagonal, so that `M` stays positive definite), transformed back to real space. At the period
+/// `2m` the periodised `A` holds every offset of the grid once (a circulant embedding of `A`);
+/// between grid elements `M` is that circulant's inverse, whatever FFT length applies it.
 fn periodic_inverse(kernel: &Kernel) -> Result<Kernel, ContactError> {
     let (mx, my) = (kernel.mx, kernel.my);
     // The checks of Convolver::new, before the transforms use the kernel.

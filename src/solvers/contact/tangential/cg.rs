@@ -5,7 +5,7 @@
 //! change. Products `A v` by FFT, the search directions' products and the preconditioner in
 //! single precision (the slip is recomputed exactly in double precision every [`INNER`]
 //! iterations and for the stopping test: iterative refinement). The preconditioner is the FFT
-//! inverse of the periodised `A`, blended on the slip elements with their diagonal stiffness by
+//! inverse of `A` periodised at twice the grid, blended on the slip elements with their diagonal stiffness by
 //! how fast they slip ([`CgWork::apply_prec`]).
 
 use super::super::convolution::Convolver;
@@ -142,7 +142,7 @@ impl CgWork {
     }
 
     /// Preconditioned residual `z = S M S r + (I - S^2) D_c^-1 r` into `z` (needs `r` and the
-    /// weights `S` from [`CgWork::residual`]): `M` the FFT inverse of the periodised `A`, `D_c`
+    /// weights `S` from [`CgWork::residual`]): `M` the inverse of `A` periodised at twice the grid, `D_c`
     /// the diagonal stiffness (slip elements: `t.D t + lambda/g` along the tangent `t`), `S = I`
     /// on adhesion elements and `sqrt(t.D t / (t.D t + lambda/g))` on slip elements, whose part
     /// is projected onto `t`. Symmetric positive definite: the FFT part for slip elements that

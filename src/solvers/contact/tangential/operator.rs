@@ -106,7 +106,7 @@ pub(super) struct Plans {
     pub convs: Convolver,
     /// The steady rolling operator `A - A_s`.
     pub convd: Convolver,
-    /// The FFT preconditioner (inverse of the periodised `A`).
+    /// The FFT preconditioner (inverse of `A` periodised at twice the grid).
     pub prec: Convolver,
     /// Coefficients of `A` (transient steps).
     pub transient: Operator,

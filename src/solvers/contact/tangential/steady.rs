@@ -1,7 +1,7 @@
 //! Steady rolling by Anderson acceleration (Walker & Ni 2011, [`Anderson`]) of a preconditioned
 //! projected Jacobi map whose fixed points are the steady solutions: local solves
 //! ([`element`](super::element)) on the slip elements, and on the adhesion elements the
-//! correction `(I - S)^-1 M s`, with `M` the CG preconditioner (FFT inverse of the periodised `A`)
+//! correction `(I - S)^-1 M s`, with `M` the CG preconditioner (the inverse of `A` periodised at twice the grid)
 //! and `(I - S)^-1` the inverse of the shift by `dq` along the rows (`A - A_s = A (I - S)` for the
 //! translation-invariant kernel, Kalker 1990, eq. 5.40), so that the transport that makes plain
 //! iterations slow is inverted exactly; every mixed iterate is projected onto the traction bound.
@@ -161,7 +161,7 @@ pub(super) fn solve(
 /// * every element's local problem is solved with the others fixed (as in Gauss–Seidel, diagonal
 ///   of `A - A_s`); elements whose local solution lies on the bound are slip elements and take it
 ///   as their map value;
-/// * the adhesion elements take `x + (I - S)^-1 M s`, `M` the FFT inverse of the periodised `A`
+/// * the adhesion elements take `x + (I - S)^-1 M s`, `M` the inverse of `A` periodised at twice the grid
 ///   applied to the adhesion slip (the CG preconditioner) and `(I - S)^-1` the exact inverse of
 ///   the shift by the rolling distance along each run of adhesion elements of a grid row (zero
 ///   inflow at the run's upstream end); the result is projected onto the bound.
