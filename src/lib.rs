@@ -17,6 +17,7 @@ pub mod pipeline;
 pub mod problem;
 pub mod safety;
 pub mod scene;
+pub mod simd;
 pub mod solvers;
 
 pub use error::{Error, InputError};

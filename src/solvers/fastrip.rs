@@ -30,6 +30,7 @@ use crate::physics::bound::scale_factor;
 use crate::physics::lanes::sum4;
 use crate::physics::{moment_sum, Planform, PressureShape};
 use crate::problem::{LocalContact, Problem, Sample};
+use crate::simd::with_avx2;
 use std::f64::consts::PI;
 
 /// FaStrip.
@@ -164,20 +165,10 @@ type RowInputs<'a> = (&'a [f64], &'a [f64], &'a [f64], &'a [f64]);
 /// vectorise), compiled twice, plain and (when the CPU has it) with AVX2: the same IEEE
 /// operations and no fused multiply-add, so both give bit-identical results.
 fn fill_row(inputs: RowInputs, k: RowConsts, tx: &mut [f64], ty: &mut [f64]) -> usize {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: the CPU supports AVX2 (checked just above).
-            return unsafe { fill_row_avx2(inputs, k, tx, ty) };
-        }
-    }
-    fill_row_body(inputs, k, tx, ty)
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-unsafe fn fill_row_avx2(inputs: RowInputs, k: RowConsts, tx: &mut [f64], ty: &mut [f64]) -> usize {
-    fill_row_body(inputs, k, tx, ty)
+    with_avx2(
+        #[inline(always)]
+        || fill_row_body(inputs, k, tx, ty),
+    )
 }
 
 #[inline(always)]

@@ -10,6 +10,7 @@
 
 use super::influence::Kernel;
 use super::ContactError;
+use crate::simd::with_avx2;
 use rustfft::num_complex::Complex;
 use rustfft::{Fft, FftPlanner};
 use std::sync::Arc;
@@ -224,6 +225,20 @@ impl<T: Real> FftData<T> {
     }
 }
 
+/// A kernel serves a non-empty grid and has `(2mx - 1)(2my - 1)` entries per component.
+fn check_kernel(kernel: &Kernel) -> Result<(), ContactError> {
+    let (mx, my) = (kernel.mx, kernel.my);
+    if mx == 0 || my == 0 {
+        return Err(ContactError::EmptyGrid { mx, my });
+    }
+    let nk = (2 * mx - 1) * (2 * my - 1);
+    let lengths = [&kernel.zz, &kernel.xx, &kernel.yy, &kernel.xy].map(|v| v.len());
+    match lengths.iter().find(|&&l| l != nk) {
+        Some(&len) => Err(ContactError::SizeMismatch { name: "kernel array", len, expected: nk }),
+        None => Ok(()),
+    }
+}
+
 /// The kernel of the inverse of `A` periodised at `2mx x 2my` elements, at the grid's offsets: per
 /// frequency of that period `1/Azz` and the inverse of the 2x2 tangential symbol (symbols clamped
 /// to at least 1e-3 of their largest value, the coupling to 0.99 of the geometric mean of the
@@ -232,8 +247,7 @@ impl<T: Real> FftData<T> {
 /// between grid elements `M` is that circulant's inverse, whatever FFT length applies it.
 fn periodic_inverse(kernel: &Kernel) -> Result<Kernel, ContactError> {
     let (mx, my) = (kernel.mx, kernel.my);
-    // The checks of Convolver::new, before the transforms use the kernel.
-    Convolver::new(kernel, ConvPath::Direct)?;
+    check_kernel(kernel)?;
     let (px, py) = (2 * mx, 2 * my);
     let mut f = FftData::new(kernel, px, py);
     // Spectra are stored scaled by 1/(px py); the inverse's must carry the same scale.
@@ -319,15 +333,8 @@ pub struct Convolver {
 impl Convolver {
     /// Convolver for `kernel` with an explicit path.
     pub fn new(kernel: &Kernel, path: ConvPath) -> Result<Convolver, ContactError> {
+        check_kernel(kernel)?;
         let (mx, my) = (kernel.mx, kernel.my);
-        if mx == 0 || my == 0 {
-            return Err(ContactError::EmptyGrid { mx, my });
-        }
-        let nk = (2 * mx - 1) * (2 * my - 1);
-        let lengths = [&kernel.zz, &kernel.xx, &kernel.yy, &kernel.xy].map(|v| v.len());
-        if let Some(&len) = lengths.iter().find(|&&l| l != nk) {
-            return Err(ContactError::SizeMismatch { name: "kernel array", len, expected: nk });
-        }
         let fft = match path {
             ConvPath::Fft => Some(FftData::new(kernel, fft_len(2 * mx - 1), fft_len(2 * my - 1))),
             ConvPath::Direct => None,
@@ -508,16 +515,13 @@ struct PairIo<'a> {
     uy: &'a mut [f64],
 }
 
-/// FFT path of [`Convolver::tangential`]: AVX2 build if available, else the baseline one (the
-/// same operations, no reductions and no fused multiply-adds, so bit-identical results).
+/// FFT path of [`Convolver::tangential`] in its AVX2 build where the CPU has it ([`with_avx2`]:
+/// the same operations, no reductions and no fused multiply-adds, so bit-identical results).
 fn tangential_dispatch<T: Real>(f: &mut FftData<T>, io: PairIo) {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: AVX2 is available (checked above).
-        unsafe { tangential_fft_avx2(f, io) };
-        return;
-    }
-    tangential_fft(f, io);
+    with_avx2(
+        #[inline(always)]
+        || tangential_fft(f, io),
+    )
 }
 
 /// FFT path of [`Convolver::tangential`] (see there).
@@ -568,13 +572,6 @@ fn tangential_fft<T: Real>(f: &mut FftData<T>, io: PairIo) {
             *y = c.im.get();
         }
     }
-}
-
-/// [`tangential_fft`] compiled for AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-unsafe fn tangential_fft_avx2<T: Real>(f: &mut FftData<T>, io: PairIo) {
-    tangential_fft(f, io)
 }
 
 #[cfg(test)]

@@ -2,25 +2,16 @@
 //! fixed-point iterations", SIAM J. Numer. Anal. 49(4), 1715-1735), written for any map on
 //! vectors of `f64`: the steady tangential solver accelerates its projected map with it.
 
-/// Dot product with four interleaved partial sums (vectorisable; fixed summation order, so the
-/// result is deterministic).
+use crate::physics::lanes::sum_by;
+use crate::simd::with_avx2;
+
+/// Dot product in the four-lane order of [`crate::physics::lanes`] (vectorisable; fixed
+/// summation order, so the result is deterministic).
 #[inline(always)]
 fn dot(a: &[f64], b: &[f64]) -> f64 {
     let n = a.len().min(b.len());
     let (a, b) = (&a[..n], &b[..n]);
-    let mut acc = [0.0f64; 4];
-    let (ca, cb) = (a.chunks_exact(4), b.chunks_exact(4));
-    let (ra, rb) = (ca.remainder(), cb.remainder());
-    for (x, y) in ca.zip(cb) {
-        for l in 0..4 {
-            acc[l] += x[l] * y[l];
-        }
-    }
-    let mut tail = 0.0;
-    for (x, y) in ra.iter().zip(rb) {
-        tail += x * y;
-    }
-    (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail
+    sum_by(n, |k| a[k] * b[k])
 }
 
 /// Anderson acceleration of type II for a fixed-point map `x -> g(x)` on vectors of length `len`
@@ -125,21 +116,12 @@ impl Anderson {
     /// appends the differences to the history and overwrites `x` with
     /// `g - dG gamma`, `gamma = argmin |f - dF gamma|`.
     pub fn step(&mut self, x: &mut [f64], g: &[f64], f: &[f64]) {
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: AVX2 is available (checked above). Same operations in the same order (no
-            // fused multiply-adds; `dot` keeps its four partial sums), so bit-identical results.
-            unsafe { self.step_avx2(x, g, f) };
-            return;
-        }
-        self.step_impl(x, g, f)
-    }
-
-    /// [`Anderson::step_impl`] compiled for AVX2.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    unsafe fn step_avx2(&mut self, x: &mut [f64], g: &[f64], f: &[f64]) {
-        self.step_impl(x, g, f)
+        // The same operations in the same order in both builds (no fused multiply-adds; `dot`
+        // keeps its four partial sums), so bit-identical results.
+        with_avx2(
+            #[inline(always)]
+            || self.step_impl(x, g, f),
+        )
     }
 
     #[inline(always)]

@@ -7,13 +7,19 @@
 //! iterations and for the stopping test: iterative refinement). The preconditioner is the FFT
 //! inverse of `A` periodised at twice the grid, blended on the slip elements with their diagonal stiffness by
 //! how fast they slip ([`CgWork::apply_prec`]).
+//!
+//! The element passes run over every grid element in their AVX2 build ([`with_avx2`]) and leave
+//! the elements outside the contact (`lay.mask` false) as they were: branch-free selects, where a
+//! loop over the contact list would branch on every element. Sums in the four-lane order of
+//! [`crate::physics::lanes`].
 
 use super::super::convolution::Convolver;
 use super::element::{norm2, on_bound, Diag, Local};
 use super::operator::Plans;
 use super::{ContactError, Layout, Outcome, State, TangentialParams};
 use crate::physics::bound::{project_to_bound, scale_to_bound};
-use crate::physics::lanes::combine;
+use crate::physics::lanes::{max4, sums2_by};
+use crate::simd::with_avx2;
 
 /// CG iterations between exact slip evaluations and element set updates.
 const INNER: usize = 4;
@@ -48,8 +54,9 @@ pub(super) struct CgWork {
     ty: Vec<f64>,
     curv: Vec<f64>,
     stiff: Vec<f64>,
-    /// `|z|` per element (adhesion: the larger component), for the residual's maximum.
-    zabs: Vec<f64>,
+    /// Per-element magnitudes for a maximum: `|z|` in the residual (adhesion: the larger
+    /// component), `max(|vx|, |vy|)` in the reduced product.
+    mags: Vec<f64>,
 }
 
 impl CgWork {
@@ -73,7 +80,7 @@ impl CgWork {
             ty: z(),
             curv: z(),
             stiff: z(),
-            zabs: z(),
+            mags: z(),
         }
     }
 
@@ -82,9 +89,12 @@ impl CgWork {
     /// elements' tangent, curvature, stiffness and preconditioner weight (see
     /// [`CgWork::apply_prec`]). Returns `max |z|` (the change a local Gauss–Seidel solve would
     /// make, to first order) [MPa]. One pass over the grid, elements outside the contact left as
-    /// they are (see [`grid_pass`]).
+    /// they are (see the module doc).
     fn residual(&mut self, lay: &Layout, st: &State, d: Diag, mu: f64) -> f64 {
-        grid_pass(|| self.residual_pass(lay, st, d, mu))
+        with_avx2(
+            #[inline(always)]
+            || self.residual_pass(lay, st, d, mu),
+        )
     }
 
     #[inline(always)]
@@ -95,7 +105,7 @@ impl CgWork {
         let (rx, ry, zx, zy) = (&mut self.rx[..n], &mut self.ry[..n], &mut self.zx[..n], &mut self.zy[..n]);
         let (tx, ty, curv, stiff, wt) =
             (&mut self.tx[..n], &mut self.ty[..n], &mut self.curv[..n], &mut self.stiff[..n], &mut self.wt[..n]);
-        let zabs = &mut self.zabs[..n];
+        let zabs = &mut self.mags[..n];
         for k in 0..n {
             // Slip: the residual along the bound circle's tangent t at p.
             let g = mu * pn[k];
@@ -138,7 +148,7 @@ impl CgWork {
                 0.0
             };
         }
-        lane_max(zabs)
+        max4(zabs)
     }
 
     /// Preconditioned residual `z = S M S r + (I - S^2) D_c^-1 r` into `z` (needs `r` and the
@@ -149,33 +159,39 @@ impl CgWork {
     /// barely slip (`lambda` small), the diagonal for those that slip fast.
     fn apply_prec(&mut self, lay: &Layout, slip: &[bool], prec: &mut Convolver) -> Result<(), ContactError> {
         let n = lay.n();
-        grid_pass(|| {
-            let (on, wt, rx, ry) = (&lay.mask[..n], &self.wt[..n], &self.rx[..n], &self.ry[..n]);
-            let (qx, qy) = (&mut self.qx[..n], &mut self.qy[..n]);
-            for k in 0..n {
-                (qx[k], qy[k]) = if on[k] { (wt[k] * rx[k], wt[k] * ry[k]) } else { (qx[k], qy[k]) };
-            }
-        });
+        with_avx2(
+            #[inline(always)]
+            || {
+                let (on, wt, rx, ry) = (&lay.mask[..n], &self.wt[..n], &self.rx[..n], &self.ry[..n]);
+                let (qx, qy) = (&mut self.qx[..n], &mut self.qy[..n]);
+                for k in 0..n {
+                    (qx[k], qy[k]) = if on[k] { (wt[k] * rx[k], wt[k] * ry[k]) } else { (qx[k], qy[k]) };
+                }
+            },
+        );
         prec.tangential(&self.qx, &self.qy, Some(&lay.mask), &mut self.zrx, &mut self.zry)?;
-        grid_pass(|| {
-            let (on, slip, wt, rx, ry) = (&lay.mask[..n], &slip[..n], &self.wt[..n], &self.rx[..n], &self.ry[..n]);
-            let (tx, ty, stiff, zrx, zry) =
-                (&self.tx[..n], &self.ty[..n], &self.stiff[..n], &self.zrx[..n], &self.zry[..n]);
-            let (zx, zy) = (&mut self.zx[..n], &mut self.zy[..n]);
-            for k in 0..n {
-                let s = wt[k];
-                let zt =
-                    s * (tx[k] * zrx[k] + ty[k] * zry[k]) + (1.0 - s * s) * (tx[k] * rx[k] + ty[k] * ry[k]) / stiff[k];
-                // Adhesion: the FFT part; slip (non-degenerate): along t; else unchanged.
-                (zx[k], zy[k]) = if on[k] && !slip[k] {
-                    (zrx[k], zry[k])
-                } else if on[k] && stiff[k] > 0.0 {
-                    (zt * tx[k], zt * ty[k])
-                } else {
-                    (zx[k], zy[k])
-                };
-            }
-        });
+        with_avx2(
+            #[inline(always)]
+            || {
+                let (on, slip, wt, rx, ry) = (&lay.mask[..n], &slip[..n], &self.wt[..n], &self.rx[..n], &self.ry[..n]);
+                let (tx, ty, stiff, zrx, zry) =
+                    (&self.tx[..n], &self.ty[..n], &self.stiff[..n], &self.zrx[..n], &self.zry[..n]);
+                let (zx, zy) = (&mut self.zx[..n], &mut self.zy[..n]);
+                for k in 0..n {
+                    let s = wt[k];
+                    let zt = s * (tx[k] * zrx[k] + ty[k] * zry[k])
+                        + (1.0 - s * s) * (tx[k] * rx[k] + ty[k] * ry[k]) / stiff[k];
+                    // Adhesion: the FFT part; slip (non-degenerate): along t; else unchanged.
+                    (zx[k], zy[k]) = if on[k] && !slip[k] {
+                        (zrx[k], zry[k])
+                    } else if on[k] && stiff[k] > 0.0 {
+                        (zt * tx[k], zt * ty[k])
+                    } else {
+                        (zx[k], zy[k])
+                    };
+                }
+            },
+        );
         Ok(())
     }
 
@@ -183,88 +199,34 @@ impl CgWork {
     /// (`beta = -(z, q_old)/(v, q_old)`; 0 on a restart).
     fn direction(&mut self, lay: &Layout, restart: bool) {
         let n = lay.n();
-        grid_pass(|| {
-            let on = &lay.mask[..n];
-            let (zx, zy, qpx, qpy) = (&self.zx[..n], &self.zy[..n], &self.qpx[..n], &self.qpy[..n]);
-            let (vx, vy) = (&mut self.vx[..n], &mut self.vy[..n]);
-            let beta = if restart {
-                0.0
-            } else {
-                let (zq, vq) = lane_sums2(n, |k| {
-                    if on[k] {
-                        (zx[k] * qpx[k] + zy[k] * qpy[k], vx[k] * qpx[k] + vy[k] * qpy[k])
-                    } else {
-                        (0.0, 0.0)
-                    }
-                });
-                if vq.abs() > 1e-300 {
-                    -zq / vq
-                } else {
+        with_avx2(
+            #[inline(always)]
+            || {
+                let on = &lay.mask[..n];
+                let (zx, zy, qpx, qpy) = (&self.zx[..n], &self.zy[..n], &self.qpx[..n], &self.qpy[..n]);
+                let (vx, vy) = (&mut self.vx[..n], &mut self.vy[..n]);
+                let beta = if restart {
                     0.0
+                } else {
+                    let (zq, vq) = sums2_by(n, |k| {
+                        if on[k] {
+                            (zx[k] * qpx[k] + zy[k] * qpy[k], vx[k] * qpx[k] + vy[k] * qpy[k])
+                        } else {
+                            (0.0, 0.0)
+                        }
+                    });
+                    if vq.abs() > 1e-300 {
+                        -zq / vq
+                    } else {
+                        0.0
+                    }
+                };
+                for k in 0..n {
+                    (vx[k], vy[k]) = if on[k] { (zx[k] + beta * vx[k], zy[k] + beta * vy[k]) } else { (vx[k], vy[k]) };
                 }
-            };
-            for k in 0..n {
-                (vx[k], vy[k]) = if on[k] { (zx[k] + beta * vx[k], zy[k] + beta * vy[k]) } else { (vx[k], vy[k]) };
-            }
-        });
+            },
+        );
     }
-}
-
-/// Runs an element pass over the grid compiled for AVX2 where the CPU has it, else as it is: the
-/// same IEEE operations either way (no fused multiply-adds), so the same numbers. The passes run
-/// over every grid element and leave those outside the contact (`lay.mask` false) as they were:
-/// branch-free selects that vectorise, where a loop over the contact list would not.
-#[inline(always)]
-fn grid_pass<R>(f: impl FnOnce() -> R) -> R {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: AVX2 is available (checked above).
-        return unsafe { avx2(f) };
-    }
-    f()
-}
-
-/// [`grid_pass`]'s AVX2 build.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-unsafe fn avx2<R>(f: impl FnOnce() -> R) -> R {
-    f()
-}
-
-/// Two sums over the elements `0..n` of per-element terms, each in the four-lane order of
-/// [`crate::physics::lanes`] (deterministic, independent of the CPU).
-#[inline(always)]
-fn lane_sums2(n: usize, term: impl Fn(usize) -> (f64, f64)) -> (f64, f64) {
-    let (mut a, mut b) = ([0.0f64; 4], [0.0f64; 4]);
-    let body = n - n % 4;
-    for c in (0..body).step_by(4) {
-        for l in 0..4 {
-            let (x, y) = term(c + l);
-            a[l] += x;
-            b[l] += y;
-        }
-    }
-    let (mut ta, mut tb) = (0.0, 0.0);
-    for k in body..n {
-        let (x, y) = term(k);
-        ta += x;
-        tb += y;
-    }
-    (combine(a, ta), combine(b, tb))
-}
-
-/// The largest of non-negative values, in four lanes (a maximum is exact in any order).
-#[inline(always)]
-fn lane_max(v: &[f64]) -> f64 {
-    let mut m = [0.0f64; 4];
-    let chunks = v.chunks_exact(4);
-    let tail = chunks.remainder().iter().fold(0.0f64, |a, &b| if b > a { b } else { a });
-    for c in chunks {
-        for l in 0..4 {
-            m[l] = if c[l] > m[l] { c[l] } else { m[l] };
-        }
-    }
-    m.iter().fold(tail, |a, &b| if b > a { b } else { a })
 }
 
 /// Moves elements between adhesion and slip: adhesion elements above the bound go to slip
@@ -300,7 +262,7 @@ fn reduced_product(lay: &Layout, slip: &[bool], w: &mut CgWork) -> (f64, f64, f6
     let (qx, qy, vx, vy, rx, ry) = (&w.qx[..n], &w.qy[..n], &w.vx[..n], &w.vy[..n], &w.rx[..n], &w.ry[..n]);
     let (tx, ty, curv) = (&w.tx[..n], &w.ty[..n], &w.curv[..n]);
     let (qpx, qpy) = (&mut w.qpx[..n], &mut w.qpy[..n]);
-    let vabs = &mut w.zabs[..n];
+    let vabs = &mut w.mags[..n];
     for k in 0..n {
         let qt = tx[k] * qx[k] + ty[k] * qy[k];
         let sl = (qt * tx[k] + curv[k] * vx[k], qt * ty[k] + curv[k] * vy[k]);
@@ -320,15 +282,19 @@ fn reduced_product(lay: &Layout, slip: &[bool], w: &mut CgWork) -> (f64, f64, f6
             ax
         };
     }
-    let vmax = lane_max(&w.zabs[..n]);
+    let vmax = max4(&w.mags[..n]);
     let (qpx, qpy) = (&w.qpx[..n], &w.qpy[..n]);
-    let (rv, vq) = lane_sums2(n, |k| {
-        if on[k] {
-            (rx[k] * vx[k] + ry[k] * vy[k], vx[k] * qpx[k] + vy[k] * qpy[k])
-        } else {
-            (0.0, 0.0)
-        }
-    });
+    let (rv, vq) =
+        sums2_by(
+            n,
+            |k| {
+                if on[k] {
+                    (rx[k] * vx[k] + ry[k] * vy[k], vx[k] * qpx[k] + vy[k] * qpy[k])
+                } else {
+                    (0.0, 0.0)
+                }
+            },
+        );
     (rv, vq, vmax)
 }
 
@@ -383,12 +349,18 @@ pub(super) fn solve(
         // Search-direction product in single precision: the slip is recomputed exactly (f64)
         // every INNER iterations and for the stopping test.
         plans.conv0_f32.tangential(&w.vx, &w.vy, Some(&lay.mask), &mut w.qx, &mut w.qy)?;
-        let (rv, vq, vmax) = grid_pass(|| reduced_product(lay, &st.slip, w));
+        let (rv, vq, vmax) = with_avx2(
+            #[inline(always)]
+            || reduced_product(lay, &st.slip, w),
+        );
         let alpha = if vq > 0.0 && rv.is_finite() { rv / vq } else { 0.0 };
         if !alpha.is_finite() {
             break;
         }
-        grid_pass(|| step(lay, st, w, alpha, mu));
+        with_avx2(
+            #[inline(always)]
+            || step(lay, st, w, alpha, mu),
+        );
         let dif = (alpha * vmax).abs() / gmax;
         since_check += 1;
         if since_check >= INNER || dif < params.tol || alpha == 0.0 {
