@@ -4,6 +4,7 @@ use crate::error::{Error, InputError};
 use crate::harness::calibration;
 use crate::harness::compare::{self, Against, Finding};
 use crate::harness::fit::record::FitRecord;
+use crate::harness::fit::spec::FitSpec;
 use crate::harness::references::References;
 use crate::harness::report::{self, ReportInput};
 use crate::harness::results::{self, StoredScene};
@@ -78,7 +79,7 @@ pub fn expand(study_file: &Path, out: &Path, golden: &Path) -> Result<Vec<PathBu
 /// write the fitted block to `out` (default `out/fits/<name>.toml`), which must not exist yet.
 pub fn fit(file: &Path, out: Option<&Path>, reference: &Path, golden: &Path) -> Result<PathBuf, Error> {
     use crate::harness::fit;
-    let spec = fit::spec::FitSpec::from_file(file)?;
+    let spec = FitSpec::from_file(file)?;
     let out = out.map_or_else(|| Path::new("out/fits").join(format!("{}.toml", spec.name)), Path::to_path_buf);
     guard::guard_not_under(&out, golden)?;
     if out.exists() {
@@ -161,6 +162,8 @@ pub fn run(
     guard::guard_not_under(results_dir, golden)?;
     guard::guard_not_under(report_dir, golden)?;
     let refs = References::load(reference)?;
+    // Fit files validated before any scene runs: a bad --fits writes nothing.
+    let fit_specs = fits.map(load_fit_specs).transpose()?;
     let scenes = run_suite(suite_dir, shard, progress)?;
     std::fs::create_dir_all(results_dir).map_err(Error::io(results_dir))?;
     // Runs into one folder take turns rather than fail on each other's half-written scenes.
@@ -171,8 +174,8 @@ pub fn run(
         eprintln!("shard done; build the report with `creepbench merge {} ...`", results_dir.display());
         return Ok(());
     }
-    if let Some(dir) = fits {
-        run_fits(dir, &refs, results_dir, (&scenes, &suite::scene_files(suite_dir, None)?))?;
+    if let Some(specs) = fit_specs {
+        run_fits(&specs, &refs, results_dir, (&scenes, &suite::scene_files(suite_dir, None)?))?;
     }
     let stored = read_results(&[results_dir.to_path_buf()])?;
     let rules = file_rules(&[], suite_dir)?;
@@ -200,27 +203,30 @@ fn read_results(dirs: &[PathBuf]) -> Result<Vec<StoredScene>, Error> {
 /// Where a result folder keeps the fits' outcomes.
 const FITS_SUBDIR: &str = "fits";
 
-/// Every fit file of `dir` (sorted), each run and stored as `<results>/fits/<name>.json` with its
-/// fitted block `<name>.toml` beside (replaced on each run, as the scenes' results are); the
-/// record carries the fitted variant beside the published model over the suites just run.
-fn run_fits(
-    dir: &Path,
-    refs: &References,
-    results_dir: &Path,
-    (stored, sources): (&[StoredScene], &[suite::SceneSource]),
-) -> Result<(), Error> {
-    use crate::harness::fit;
+/// Every fit file of `dir` (sorted), read and validated.
+fn load_fit_specs(dir: &Path) -> Result<Vec<FitSpec>, Error> {
     let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
         .map_err(|e| InputError::new("--fits", dir.display(), format!("a folder of fit files ({e})")))?
         .filter_map(|e| e.ok().map(|e| e.path()))
         .filter(|p| p.extension().is_some_and(|x| x == "toml"))
         .collect();
     files.sort();
-    // Every fit file validated before any runs.
-    let specs = files.iter().map(|f| fit::spec::FitSpec::from_file(f)).collect::<Result<Vec<_>, Error>>()?;
+    files.iter().map(|f| FitSpec::from_file(f)).collect()
+}
+
+/// Each fit run and stored as `<results>/fits/<name>.json` with its fitted block `<name>.toml`
+/// beside (replaced on each run, as the scenes' results are); the record carries the fitted
+/// variant beside the published model over the suites just run.
+fn run_fits(
+    specs: &[FitSpec],
+    refs: &References,
+    results_dir: &Path,
+    (stored, sources): (&[StoredScene], &[suite::SceneSource]),
+) -> Result<(), Error> {
+    use crate::harness::fit;
     let out = results_dir.join(FITS_SUBDIR);
     std::fs::create_dir_all(&out).map_err(Error::io(&out))?;
-    for spec in &specs {
+    for spec in specs {
         let start = Instant::now();
         let outcome = fit::fit(spec, refs)?;
         let mut record = fit::record::FitRecord::of(&outcome);

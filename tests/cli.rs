@@ -183,6 +183,38 @@ fn table_kind_varies_load_and_friction() {
     assert!(last.fx_over_fn <= 0.2 + 1e-12);
 }
 
+/// `run --fits` with a folder that is not there, or a bad fit file in it: exit 2 before any scene
+/// runs, no result folder and no report.
+#[test]
+fn run_validates_fits_before_running() {
+    let tmp = tempfile::tempdir().unwrap();
+    let suite = tmp.path().join("suite");
+    std::fs::create_dir_all(&suite).unwrap();
+    std::fs::write(suite.join("s.toml"), base()).unwrap();
+    let bad_fits = tmp.path().join("fits");
+    std::fs::create_dir_all(&bad_fits).unwrap();
+    std::fs::write(bad_fits.join("f.toml"), "name = \"f\"\nmodel = 3\n").unwrap();
+    for (fits, expect) in [(tmp.path().join("missing"), "--fits"), (bad_fits.clone(), "f.toml")] {
+        let (res, rep) = (tmp.path().join("res"), tmp.path().join("rep"));
+        let o = creepbench(&[
+            "run",
+            "--quiet",
+            "--suite",
+            suite.to_str().unwrap(),
+            "--results",
+            res.to_str().unwrap(),
+            "--report",
+            rep.to_str().unwrap(),
+            "--fits",
+            fits.to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(err.contains(expect), "{err}");
+        assert!(!res.exists() && !rep.exists(), "{fits:?}: output written");
+    }
+}
+
 /// --solver must name one of the scene's solvers.
 #[test]
 fn solver_flag_is_validated() {
