@@ -160,6 +160,13 @@ fn a_changed_reference_file_fails_until_its_manifest_is_updated() {
     std::fs::copy(root().join("reference/contact/step_mu04.csv"), r.join("contact/step_mu04.csv")).unwrap();
     assert_eq!(creepbench(w.path(), &["manifest", "reference"]).status.code(), Some(0));
     assert_eq!(run(w.path()).status.code(), Some(0), "a reviewed manifest update accepts the change");
+    // A reference folder that is not there is bad input (exit 2), not a changed reference.
+    let args =
+        ["run", "--suite", "suite", "--quiet", "--results", "res2", "--report", "rep2", "--reference", "nowhere"];
+    let o = creepbench(w.path(), &args);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("`--reference` = nowhere"), "{}", stderr(&o));
+    assert!(!w.path().join("res2").exists() && !w.path().join("rep2").exists());
 }
 
 #[test]

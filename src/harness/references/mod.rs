@@ -9,7 +9,7 @@ pub mod thesis;
 
 use super::compare::{Against, Finding};
 use super::results::StoredScene;
-use crate::error::Error;
+use crate::error::{Error, InputError};
 use crate::history::History;
 use std::path::Path;
 
@@ -45,6 +45,10 @@ pub struct References {
 impl References {
     /// Load every set from `dir`.
     pub fn load(dir: &Path) -> Result<References, Error> {
+        if !dir.is_dir() {
+            let allowed = "a folder of reference data (CONTACT, thesis) with its MANIFEST.sha256";
+            return Err(InputError::new("--reference", dir.display(), allowed).into());
+        }
         // Every file against the reviewed checksums: a changed, missing or extra reference file
         // fails until its manifest is updated in a reviewed commit.
         crate::safety::manifest::verify(dir).map_err(|source| Error::Manifest { dir: dir.to_path_buf(), source })?;
