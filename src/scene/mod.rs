@@ -134,8 +134,9 @@ pub struct ContactSolverOptions {
 #[serde(rename_all = "snake_case")]
 pub enum SteadyRestart {
     /// CONTACT's result (default; its envelope data decide): the steady state with the slip area on
-    /// the new bound, where the creepages and the loaded elements did not change and no adhesion
-    /// element exceeds its new bound; else the converged step.
+    /// the new bound, where the creepages and the loaded elements did not change, no adhesion
+    /// element exceeds its new bound and no slip element's slip turns against its traction; else
+    /// the converged step.
     #[default]
     Contact,
     /// The transient step solved to the tolerance from the steady state.

@@ -185,7 +185,13 @@ impl Stepper for Contact<'_> {
         if let (Some(start), Some(steady), SteadyRestart::Contact) =
             (start, &self.last, self.p.contact_solver.steady_restart)
         {
-            if let Some(r) = contact_restart(&start, steady, at, &self.loaded().pn) {
+            let pn = &self.loaded.as_ref().expect("the sample loop loads before it solves").pn;
+            let tangential = &mut self.tangential;
+            let slip_at =
+                |px: &[f64], py: &[f64]| tangential.transient_slip(&params, (&steady.px, &steady.py), (px, py));
+            let restart = contact_restart(&start, steady, at, pn, slip_at)
+                .map_err(|source| ContactRunError::Step { step: at.step, source })?;
+            if let Some(r) = restart {
                 self.older = self.last.take().map(|prev| (prev.px, prev.py));
                 return Ok(self.record(r));
             }

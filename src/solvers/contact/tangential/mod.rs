@@ -559,22 +559,15 @@ impl TangentialSolver {
         older: Option<(&[f64], &[f64])>,
     ) -> Result<StepResult, ContactError> {
         self.check_params(params)?;
-        let (lay, st) = (&self.layout, &mut self.state);
-        let n = lay.n();
+        let n = self.layout.n();
         check_grid_array("previous traction px", prev_px, n)?;
         check_grid_array("previous traction py", prev_py, n)?;
         if let Some((ox, oy)) = older {
             check_grid_array("older traction px", ox, n)?;
             check_grid_array("older traction py", oy, n)?;
         }
-        // u' = A_s p' (previous displacement at the previous position of the material).
-        self.plans.convs.tangential(prev_px, prev_py, None, &mut st.vx, &mut st.vy)?;
-        // A p' at the leading edges, for material that entered during the step (dq > dx).
-        if !lay.entering.is_empty() {
-            self.plans.conv0.tangential(prev_px, prev_py, None, &mut st.ux, &mut st.uy)?;
-        }
-        // b = w + u' (stored in vx, vy).
-        lay.add_rigid_slip(params, Some((&st.ux, &st.uy)), &mut st.vx, &mut st.vy);
+        self.transient_rhs(params, prev_px, prev_py)?;
+        let (lay, st) = (&self.layout, &mut self.state);
         st.px.fill(0.0);
         st.py.fill(0.0);
         for &k in &lay.contact {
@@ -599,6 +592,51 @@ impl TangentialSolver {
         st.recompute_slip(lay, &mut self.plans.conv0)?;
         let gs = gauss_seidel::solve(lay, &self.plans.transient, &lay.contact, st, params)?;
         st.finish(lay, o.iterations + gs.iterations, gs.residual, fallback(gs.converged))
+    }
+
+    /// The right-hand side `b = w + u'` of a transient step into `(vx, vy)`: `u' = A_s p'`, the
+    /// previous displacement at the previous position of the material, and for material that
+    /// entered during the step (`dq > dx`) the leading-edge form ([`Layout::add_rigid_slip`]).
+    fn transient_rhs(
+        &mut self,
+        params: &TangentialParams,
+        prev_px: &[f64],
+        prev_py: &[f64],
+    ) -> Result<(), ContactError> {
+        let (lay, st) = (&self.layout, &mut self.state);
+        self.plans.convs.tangential(prev_px, prev_py, None, &mut st.vx, &mut st.vy)?;
+        if !lay.entering.is_empty() {
+            self.plans.conv0.tangential(prev_px, prev_py, None, &mut st.ux, &mut st.uy)?;
+        }
+        lay.add_rigid_slip(params, Some((&st.ux, &st.uy)), &mut st.vx, &mut st.vy);
+        Ok(())
+    }
+
+    /// The slip of a transient step at the tractions `p` [MPa] after the previous tractions
+    /// `prev`, `s = w + u' - A p` [mm] on the contact elements (zero elsewhere), as
+    /// [`TangentialSolver::transient_step`] forms it; no solve.
+    pub fn transient_slip(
+        &mut self,
+        params: &TangentialParams,
+        prev: (&[f64], &[f64]),
+        p: (&[f64], &[f64]),
+    ) -> Result<(Vec<f64>, Vec<f64>), ContactError> {
+        self.check_params(params)?;
+        let n = self.layout.n();
+        for (name, v) in [("previous traction px", prev.0), ("previous traction py", prev.1), ("px", p.0), ("py", p.1)]
+        {
+            check_grid_array(name, v, n)?;
+        }
+        self.transient_rhs(params, prev.0, prev.1)?;
+        let (lay, st) = (&self.layout, &mut self.state);
+        st.px.copy_from_slice(p.0);
+        st.py.copy_from_slice(p.1);
+        st.recompute_slip(lay, &mut self.plans.conv0)?;
+        let (mut sx, mut sy) = (vec![0.0; n], vec![0.0; n]);
+        for &k in &lay.contact {
+            (sx[k], sy[k]) = (st.sx[k], st.sy[k]);
+        }
+        Ok((sx, sy))
     }
 
     /// Steady rolling at the given creepages: `s = w - (A - A_s) p`. Warm start from `start`
