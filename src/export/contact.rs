@@ -5,7 +5,9 @@
 //! sequence (P = 2) with its steady start (T = 3, step 0) or its first step (T = 2), then one
 //! transient case (P = 0, T = 2) per step. Exact theory, Coulomb friction FSTAT = FKIN = μ (read
 //! again, L = 0, in a case whose μ changed), FN prescribed (N = 1), both bodies of the scene's
-//! material, rolling in CONTACT's +x (CHI = 0) with DQ = courant·dx.
+//! material, rolling in CONTACT's +x (CHI = 0) with DQ = courant·dx (CONTACT solves a steady case
+//! with DQ = DX and keeps it: after a steady start at another DQ the first transient case gives DQ
+//! again).
 //!
 //! Geometry (first case): Hertz's ellipse as IPOTCN = −3 (AA, BB, SCALE) when the load is constant;
 //! when the load changes within the history, the ellipse's fixed curvatures h = A1 x² + B1 y² on the
@@ -46,7 +48,14 @@ pub fn module3_input(p: &Problem) -> String {
         let _ = writeln!(out, "\n 3  MODULE      % step {}, t={} s", s.step, s.t_s);
         let (pv, t) = (if new_sequence { 2 } else { 0 }, if steady { 3 } else { 2 });
         let _ = writeln!(out, "  {pv}0{t}100      P-B-T-N-F-S   PVTIME, BOUND , TANG  , NORM  , FORCE , STRESS");
-        let ldc = if first { "022020".to_string() } else { format!("{}00000", if read_mu { 0 } else { 1 }) };
+        // CONTACT solves the steady start with DQ = DX and keeps that DQ for the cases that follow
+        // (`m_sdis.f90`): where the scene's DQ is another, the first transient case gives it again
+        // (C = 2: kinematics and material read again, influence coefficients recomputed).
+        let dq_again = steady_start && n == 1 && p.rolling.dq_mm != p.grid.dx_mm;
+        let ldc = match (first, dq_again) {
+            (true, _) => "022020".to_string(),
+            (false, again) => format!("{}0{}000", if read_mu { 0 } else { 1 }, if again { 2 } else { 0 }),
+        };
         let _ = writeln!(out, "  {ldc}      L-D-C-M-Z-E   FRCLAW, DISCNS, INFLCF, MATER , RZNORM, EXRHS");
         let _ = writeln!(
             out,
@@ -60,17 +69,25 @@ pub fn module3_input(p: &Problem) -> String {
         }
         if first {
             geometry(p, load_varies, &mut out);
+        } else if dq_again {
+            kinematics_and_material(p, &mut out);
         }
     }
     out.push_str("\n 0  MODULE\n");
     out
 }
 
+/// The kinematics (CHI, DQ, VELOC) and material lines of a case with C = 2.
+fn kinematics_and_material(p: &Problem, out: &mut String) {
+    let m = &p.material;
+    let _ = writeln!(out, "  0.0   {:?}   {:?}                 CHI, DQ, VELOC", p.rolling.dq_mm, p.rolling.v_mm_s);
+    let _ = writeln!(out, "  {:?}   {:?}   {:?}   {:?}    POISS 1,2,  GG 1,2", m.poisson, m.poisson, m.g_mpa, m.g_mpa);
+}
+
 /// The first case's kinematics, material and geometry lines.
 fn geometry(p: &Problem, load_varies: bool, out: &mut String) {
     let (m, g) = (&p.material, &p.grid);
-    let _ = writeln!(out, "  0.0   {:?}   {:?}                 CHI, DQ, VELOC", p.rolling.dq_mm, p.rolling.v_mm_s);
-    let _ = writeln!(out, "  {:?}   {:?}   {:?}   {:?}    POISS 1,2,  GG 1,2", m.poisson, m.poisson, m.g_mpa, m.g_mpa);
+    kinematics_and_material(p, out);
     if p.geometry.elliptic() && !load_varies {
         let e = p.hertz();
         let _ = writeln!(out, "  -3                                          IPOTCN");

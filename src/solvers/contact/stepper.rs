@@ -81,6 +81,10 @@ struct Contact<'a> {
     p: &'a Problem,
     normal: NormalSolver,
     tangential: TangentialSolver,
+    /// Steady rolling's solver where the rolling step `dq` is not the element length `dx`:
+    /// CONTACT solves steady rolling with DQ = DX whatever DQ the input gives (SteadyGS;
+    /// `m_sdis.f90` warns "Using DQ = DX"), so does this solver; `None`: `tangential` serves.
+    steady_dx: Option<TangentialSolver>,
     loaded: Option<Loaded>,
     /// The last solve (the previous traction of the next transient step).
     last: Option<StepResult>,
@@ -100,10 +104,17 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let normal = NormalSolver::new(&k0).map_err(ContactRunError::Kernel)?;
     let (x, y) = g.centres();
     let tangential = TangentialSolver::new(&k0, &ks, &x, &y).map_err(ContactRunError::Kernel)?;
+    let solves_steady = !p.loading.is_transient() || p.loading.steady_start().is_some();
+    let steady_dx = if solves_steady && p.rolling.dq_mm != g.dx_mm {
+        Some(TangentialSolver::new(&k0, &kernel(g.dx_mm)?, &x, &y).map_err(ContactRunError::Kernel)?)
+    } else {
+        None
+    };
     Ok(Box::new(Contact {
         p,
         normal,
         tangential,
+        steady_dx,
         loaded: None,
         last: None,
         older: None,
@@ -163,7 +174,9 @@ impl Stepper for Contact<'_> {
         if pn_sum <= 0.0 {
             return Err(ContactRunError::NoContact { mx: p.grid.mx, my: p.grid.my, fn_n }.into());
         }
-        self.tangential.set_pressure(&pn_mpa).map_err(|source| ContactRunError::Setup { fn_n, source })?;
+        for solver in std::iter::once(&mut self.tangential).chain(self.steady_dx.as_mut()) {
+            solver.set_pressure(&pn_mpa).map_err(|source| ContactRunError::Setup { fn_n, source })?;
+        }
         let pn_max = pn_mpa.iter().fold(0.0f64, |a, &b| a.max(b));
         self.loaded = Some(Loaded { fn_n, pn: pn_mpa, pn_sum, pn_max });
         self.older = None;
@@ -171,9 +184,15 @@ impl Stepper for Contact<'_> {
     }
 
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
-        let params = self.params(at);
-        let r =
-            self.tangential.steady(&params, None).map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        let mut params = self.params(at);
+        let solver = match self.steady_dx.as_mut() {
+            Some(solver) => {
+                params.dq_mm = self.p.grid.dx_mm;
+                solver
+            }
+            None => &mut self.tangential,
+        };
+        let r = solver.steady(&params, None).map_err(|source| ContactRunError::Step { step: at.step, source })?;
         self.older = None;
         self.after_steady = Some(SteadyStart::of(at));
         Ok(self.record(r))
