@@ -9,9 +9,9 @@
 //! rescaled onto the new bound. This happens whenever its element division does not change
 //! (an adhesion element above its new bound, or a slip element whose slip turns against its
 //! traction, restart the full residual and CONTACT converges: a friction rise turns the slip of
-//! the slip elements next to the adhesion area). With the steady start solved to EPS = 1e-10 instead of
-//! 1e-8 CONTACT converges at that step too, to the value `Converged` gives (envelope mu_ramp and
-//! fn_sine_f20, step 1, 7 digits).
+//! the slip elements next to the adhesion area, envelope mu_rise). With the steady start solved
+//! to EPS = 1e-10 instead of 1e-8 CONTACT converges at that step too, to the value `Converged`
+//! gives (envelope mu_ramp and fn_sine_f20, step 1, 7 digits).
 
 use super::tangential::{ElementState, StepResult};
 use crate::physics::bound::scale_to_bound;
