@@ -30,62 +30,6 @@ pub fn sum_by(n: usize, term: impl Fn(usize) -> f64) -> f64 {
     sums2_by(n, |k| (term(k), 0.0)).0
 }
 
-/// Σ a_k b_k over the common length in the four-lane order (equal to `sum_by` of the products);
-/// the lanes in one AVX register where the CPU has AVX.
-#[inline(always)]
-pub fn dot4(a: &[f64], b: &[f64]) -> f64 {
-    let n = a.len().min(b.len());
-    let (a, b) = (&a[..n], &b[..n]);
-    let body = n - n % 4;
-    #[cfg(target_arch = "x86_64")]
-    let acc = if std::arch::is_x86_feature_detected!("avx") {
-        // SAFETY: AVX is available (checked just above).
-        unsafe { lanes_of_products_avx(&a[..body], &b[..body]) }
-    } else {
-        lanes_of_products(&a[..body], &b[..body])
-    };
-    #[cfg(not(target_arch = "x86_64"))]
-    let acc = lanes_of_products(&a[..body], &b[..body]);
-    let mut tail = 0.0;
-    for k in body..n {
-        tail += a[k] * b[k];
-    }
-    combine(acc, tail)
-}
-
-/// The four lane sums of `a_k b_k` (`a`, `b` of equal length, a multiple of four).
-#[inline(always)]
-fn lanes_of_products(a: &[f64], b: &[f64]) -> [f64; 4] {
-    let mut acc = [0.0f64; 4];
-    for (x, y) in a.chunks_exact(4).zip(b.chunks_exact(4)) {
-        for l in 0..4 {
-            acc[l] += x[l] * y[l];
-        }
-    }
-    acc
-}
-
-/// [`lanes_of_products`] with the lanes in one AVX register (a multiply and an add per lane, no
-/// fused multiply-add: the same numbers).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-unsafe fn lanes_of_products_avx(a: &[f64], b: &[f64]) -> [f64; 4] {
-    use std::arch::x86_64::{_mm256_add_pd, _mm256_loadu_pd, _mm256_mul_pd, _mm256_setzero_pd, _mm256_storeu_pd};
-    let n = a.len().min(b.len()) / 4 * 4;
-    let mut acc = _mm256_setzero_pd();
-    let mut k = 0;
-    while k < n {
-        // SAFETY: k + 4 <= n <= len of both slices.
-        let (x, y) = unsafe { (_mm256_loadu_pd(a.as_ptr().add(k)), _mm256_loadu_pd(b.as_ptr().add(k))) };
-        acc = _mm256_add_pd(acc, _mm256_mul_pd(x, y));
-        k += 4;
-    }
-    let mut out = [0.0f64; 4];
-    // SAFETY: `out` holds four f64.
-    unsafe { _mm256_storeu_pd(out.as_mut_ptr(), acc) };
-    out
-}
-
 /// Two sums over `k` in `0..n` of the pairs `term(k)`, each in the four-lane order, in one pass.
 #[inline(always)]
 pub fn sums2_by(n: usize, term: impl Fn(usize) -> (f64, f64)) -> (f64, f64) {
@@ -143,8 +87,6 @@ mod tests {
         assert_eq!(a, sum4(&v));
         assert_eq!(b, sum4(&w));
         assert_eq!(sum_by(v.len(), |m| v[m]), sum4(&v));
-        assert_eq!(dot4(&v, &w), sum_by(v.len(), |m| v[m] * w[m]));
-        assert_eq!(dot4(&v[..10], &w), sum_by(10, |m| v[m] * w[m]));
         let abs: Vec<f64> = v.iter().map(|x| x.abs()).collect();
         assert_eq!(max4(&abs), abs.iter().fold(0.0f64, |m, &x| m.max(x)));
         assert_eq!(max4(&[]), 0.0);

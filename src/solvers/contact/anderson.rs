@@ -2,8 +2,17 @@
 //! fixed-point iterations", SIAM J. Numer. Anal. 49(4), 1715-1735), written for any map on
 //! vectors of `f64`: the steady tangential solver accelerates its projected map with it.
 
-use crate::physics::lanes::dot4 as dot;
+use crate::physics::lanes::sum_by;
 use crate::simd::with_avx2;
+
+/// Dot product in the four-lane order of [`crate::physics::lanes`] (vectorisable; fixed
+/// summation order, so the result is deterministic).
+#[inline(always)]
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    let n = a.len().min(b.len());
+    let (a, b) = (&a[..n], &b[..n]);
+    sum_by(n, |k| a[k] * b[k])
+}
 
 /// Anderson acceleration of type II for a fixed-point map `x -> g(x)` on vectors of length `len`
 /// (Walker & Ni 2011, sec. 3, with the QR factorisation of sec. 4 updated by column append and
@@ -25,8 +34,6 @@ pub struct Anderson {
     have_prev: bool,
     work: Vec<f64>,
     gamma: Vec<f64>,
-    /// Givens rotations `(c, s)` of the last deletion (`None`: skipped, zero column).
-    givens: Vec<Option<(f64, f64)>>,
 }
 
 impl Anderson {
@@ -51,7 +58,6 @@ impl Anderson {
             have_prev: false,
             work: vec![0.0; len],
             gamma: vec![0.0; depth],
-            givens: Vec::with_capacity(depth),
         }
     }
 
@@ -66,20 +72,9 @@ impl Anderson {
 
     /// Removes the oldest column: `R` without its first column is upper Hessenberg; Givens
     /// rotations of rows `(i, i+1)` make it triangular again and are applied to the columns of `Q`.
-    fn delete_oldest(&mut self) {
-        self.delete_oldest_from_r();
-        for i in 0..self.m {
-            self.rotate_q(i);
-        }
-    }
-
-    /// The part of [`Anderson::delete_oldest`] that does not touch `Q`: `R` made triangular again,
-    /// its rotations kept in `givens` for [`Anderson::rotate_q`] (rotation `i` acts on columns `i`
-    /// and `i + 1`; a column whose final value is needed must have had its rotation applied).
     #[inline(always)]
-    fn delete_oldest_from_r(&mut self) {
-        let (m, d) = (self.m, self.depth);
-        self.givens.clear();
+    fn delete_oldest(&mut self) {
+        let (m, d, len) = (self.m, self.depth, self.len);
         if m == 0 {
             return;
         }
@@ -93,7 +88,6 @@ impl Anderson {
             let (a, b) = (self.r[i * d + i], self.r[(i + 1) * d + i]);
             let h = a.hypot(b);
             if h == 0.0 {
-                self.givens.push(None);
                 continue;
             }
             let (c, s) = (a / h, b / h);
@@ -102,7 +96,12 @@ impl Anderson {
                 self.r[i * d + col] = c * x + s * y;
                 self.r[(i + 1) * d + col] = -s * x + c * y;
             }
-            self.givens.push(Some((c, s)));
+            let (qi, qn) = self.q[i * len..(i + 2) * len].split_at_mut(len);
+            for (x, y) in qi.iter_mut().zip(qn.iter_mut()) {
+                let (u, v) = (*x, *y);
+                *x = c * u + s * v;
+                *y = -s * u + c * v;
+            }
         }
         for c in 0..d {
             self.r[(m - 1) * d + c] = 0.0;
@@ -110,20 +109,6 @@ impl Anderson {
         self.m -= 1;
         if let Some(v) = self.dg.pop_front() {
             self.spare.push(v);
-        }
-    }
-
-    /// Applies rotation `i` of the last deletion to columns `i` and `i + 1` of `Q` (none if
-    /// there is no such rotation).
-    #[inline(always)]
-    fn rotate_q(&mut self, i: usize) {
-        let len = self.len;
-        let Some(&Some((c, s))) = self.givens.get(i) else { return };
-        let (qi, qn) = self.q[i * len..(i + 2) * len].split_at_mut(len);
-        for (x, y) in qi.iter_mut().zip(qn.iter_mut()) {
-            let (u, v) = (*x, *y);
-            *x = c * u + s * v;
-            *y = -s * u + c * v;
         }
     }
 
@@ -139,19 +124,12 @@ impl Anderson {
         )
     }
 
-    /// [`Anderson::step`] with the deletion of the oldest column, the Gram–Schmidt of the new
-    /// one and the coefficients `Q^T f` in one pass over `Q`: column `c` is rotated, then
-    /// orthogonalised against and dotted with `f` while it is in cache.
     #[inline(always)]
     fn step_impl(&mut self, x: &mut [f64], g: &[f64], f: &[f64]) {
         let (d, len) = (self.depth, self.len);
-        // Whether gamma[..m] holds `Q^T f` for the final columns.
-        let mut have_gamma = false;
         if self.have_prev && d > 0 {
             if self.m == d {
-                self.delete_oldest_from_r();
-            } else {
-                self.givens.clear();
+                self.delete_oldest();
             }
             let m = self.m;
             // Modified Gram-Schmidt of df = f - f_prev against Q.
@@ -161,10 +139,8 @@ impl Anderson {
             }
             let norm0 = dot(&v, &v).sqrt();
             for c in 0..m {
-                self.rotate_q(c);
                 let qc = &self.q[c * len..(c + 1) * len];
                 let h = dot(qc, &v);
-                self.gamma[c] = dot(qc, f);
                 self.r[c * d + m] = h;
                 for (a, b) in v.iter_mut().zip(qc) {
                     *a -= h * b;
@@ -176,7 +152,6 @@ impl Anderson {
                 for (a, b) in self.q[m * len..(m + 1) * len].iter_mut().zip(&v) {
                     *a = b / nrm;
                 }
-                self.gamma[m] = dot(&self.q[m * len..(m + 1) * len], f);
                 let mut dgv = self.spare.pop().unwrap_or_else(|| vec![0.0; len]);
                 for i in 0..len {
                     dgv[i] = g[i] - self.g_prev[i];
@@ -189,7 +164,6 @@ impl Anderson {
                 }
             }
             self.work = v;
-            have_gamma = true;
             while self.m > 1 {
                 let diag = (0..self.m).map(|i| self.r[i * d + i].abs());
                 let (lo, hi) = diag.fold((f64::INFINITY, 0.0f64), |(lo, hi), a| (lo.min(a), hi.max(a)));
@@ -197,17 +171,14 @@ impl Anderson {
                     break;
                 }
                 self.delete_oldest();
-                have_gamma = false;
             }
         }
         self.f_prev.copy_from_slice(f);
         self.g_prev.copy_from_slice(g);
         self.have_prev = true;
         let m = self.m;
-        if !have_gamma {
-            for c in 0..m {
-                self.gamma[c] = dot(&self.q[c * len..(c + 1) * len], f);
-            }
+        for c in 0..m {
+            self.gamma[c] = dot(&self.q[c * len..(c + 1) * len], f);
         }
         for i in (0..m).rev() {
             let mut t = self.gamma[i];

@@ -10,7 +10,7 @@
 //! stalls, diverges or produces non-finite values, Gauss–Seidel continues from the best iterate.
 
 use super::super::anderson::Anderson;
-use super::element::{slip_solve_batch, Local, BATCH};
+use super::element::Local;
 use super::operator::Plans;
 use super::{ContactError, Layout, State, TangentialParams};
 use crate::physics::bound::project_to_bound;
@@ -191,39 +191,19 @@ fn map(
         st.sy[k] = -st.uy[k];
     }
     lay.add_rigid_slip(params, None, &mut st.sx, &mut st.sy);
-    // Local solves; the adhesion slip goes into (w.sx, w.sy) for the preconditioner. The slip
-    // solutions wait in `batch` and are solved BATCH at a time (interleaved Newton iterations).
+    // Local solves; the adhesion slip goes into (w.sx, w.sy) for the preconditioner.
     let mut res = 0.0f64;
     let mut finite = true;
-    let mut store = |i: usize, k: usize, (nx, ny, slips): (f64, f64, bool)| {
+    for (i, &k) in lay.contact.iter().enumerate() {
+        let (p0x, p0y) = (w.x[i], w.x[nc + i]);
+        let (nx, ny, slips) = Local::new(st.sx[k], st.sy[k], p0x, p0y, d).solve(d, mu * lay.pn[k]);
         st.slip[k] = slips;
         (w.sx[k], w.sy[k]) = if slips { (0.0, 0.0) } else { (st.sx[k], st.sy[k]) };
         w.g[i] = nx;
         w.g[nc + i] = ny;
-        let change = (nx - w.x[i]).abs().max((ny - w.x[nc + i]).abs());
+        let change = (nx - p0x).abs().max((ny - p0y).abs());
         finite &= change.is_finite();
         res = res.max(change);
-    };
-    let mut batch = [(0usize, 0usize, (0.0, 0.0, 0.0)); BATCH];
-    let mut queued = 0;
-    for (i, &k) in lay.contact.iter().enumerate() {
-        let local = Local::new(st.sx[k], st.sy[k], w.x[i], w.x[nc + i], d);
-        match local.solve_unless_slip(mu * lay.pn[k]) {
-            Ok(solved) => store(i, k, solved),
-            Err(slip) => {
-                batch[queued] = (i, k, slip);
-                queued += 1;
-            }
-        }
-        if queued == BATCH || (queued > 0 && i + 1 == nc) {
-            // A part batch is filled up with copies of its first element.
-            let inputs = std::array::from_fn(|l| batch[if l < queued { l } else { 0 }].2);
-            let solved = slip_solve_batch(&inputs, d);
-            for (&(i, k, _), (px, py)) in batch[..queued].iter().zip(solved) {
-                store(i, k, (px, py, true));
-            }
-            queued = 0;
-        }
     }
     if !finite {
         return Ok(f64::INFINITY);
