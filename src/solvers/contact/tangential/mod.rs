@@ -560,8 +560,6 @@ impl TangentialSolver {
     ) -> Result<StepResult, ContactError> {
         self.check_params(params)?;
         let n = self.layout.n();
-        check_grid_array("previous traction px", prev_px, n)?;
-        check_grid_array("previous traction py", prev_py, n)?;
         if let Some((ox, oy)) = older {
             check_grid_array("older traction px", ox, n)?;
             check_grid_array("older traction py", oy, n)?;
@@ -604,6 +602,8 @@ impl TangentialSolver {
         prev_py: &[f64],
     ) -> Result<(), ContactError> {
         let (lay, st) = (&self.layout, &mut self.state);
+        check_grid_array("previous traction px", prev_px, lay.n())?;
+        check_grid_array("previous traction py", prev_py, lay.n())?;
         self.plans.convs.tangential(prev_px, prev_py, None, &mut st.vx, &mut st.vy)?;
         if !lay.entering.is_empty() {
             self.plans.conv0.tangential(prev_px, prev_py, None, &mut st.ux, &mut st.uy)?;
@@ -623,10 +623,8 @@ impl TangentialSolver {
     ) -> Result<(Vec<f64>, Vec<f64>), ContactError> {
         self.check_params(params)?;
         let n = self.layout.n();
-        for (name, v) in [("previous traction px", prev.0), ("previous traction py", prev.1), ("px", p.0), ("py", p.1)]
-        {
-            check_grid_array(name, v, n)?;
-        }
+        check_grid_array("px", p.0, n)?;
+        check_grid_array("py", p.1, n)?;
         self.transient_rhs(params, prev.0, prev.1)?;
         let (lay, st) = (&self.layout, &mut self.state);
         st.px.copy_from_slice(p.0);
