@@ -19,7 +19,7 @@ use std::path::Path;
 /// A thesis scene (a scene file or a study's point) as TOML text.
 fn thesis_text(name: &str) -> String {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/thesis");
-    creepbench::harness::suite::find(&[dir], name).unwrap().text().unwrap()
+    creepbench::suite::find(&[dir], name).unwrap().text().unwrap()
 }
 
 fn problem(grid: usize) -> Problem {

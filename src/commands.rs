@@ -1,19 +1,20 @@
 //! The subcommands behind the CLI: simulate, run, check, bless, merge.
 
+use crate::calibration::fit::record::FitRecord;
+use crate::calibration::fit::spec::FitSpec;
+use crate::calibration::section as calibration;
+use crate::comparison::compare::{self, Against, Finding};
+use crate::comparison::references::References;
+use crate::comparison::tolerance_file::{self, Rule};
+use crate::comparison::tolerances;
 use crate::error::{Error, InputError};
-use crate::harness::calibration;
-use crate::harness::compare::{self, Against, Finding};
-use crate::harness::fit::record::FitRecord;
-use crate::harness::fit::spec::FitSpec;
-use crate::harness::references::References;
-use crate::harness::report::{self, ReportInput};
-use crate::harness::results::{self, StoredScene};
-use crate::harness::sections;
-use crate::harness::suite::{self, Shard};
-use crate::harness::table;
-use crate::harness::tolerance_file::{self, Rule};
 use crate::pipeline;
+use crate::report::sections;
+use crate::report::table;
+use crate::report::{self, ReportInput};
 use crate::safety::{folder, guard, lock};
+use crate::suite::results::{self, StoredScene};
+use crate::suite::{self, Shard};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -78,7 +79,7 @@ pub fn expand(study_file: &Path, out: &Path, golden: &Path) -> Result<Vec<PathBu
 /// `creepbench fit`: fit a model's parameters (harness::fit), print the before/after table and
 /// write the fitted block to `out` (default `out/fits/<name>.toml`), which must not exist yet.
 pub fn fit(file: &Path, out: Option<&Path>, reference: &Path, golden: &Path) -> Result<PathBuf, Error> {
-    use crate::harness::fit;
+    use crate::calibration::fit;
     let spec = FitSpec::from_file(file)?;
     let out = out.map_or_else(|| Path::new("out/fits").join(format!("{}.toml", spec.name)), Path::to_path_buf);
     guard::guard_not_under(&out, golden)?;
@@ -223,7 +224,7 @@ fn run_fits(
     results_dir: &Path,
     (stored, sources): (&[StoredScene], &[suite::SceneSource]),
 ) -> Result<(), Error> {
-    use crate::harness::fit;
+    use crate::calibration::fit;
     let out = results_dir.join(FITS_SUBDIR);
     std::fs::create_dir_all(&out).map_err(Error::io(&out))?;
     for spec in specs {
@@ -305,7 +306,7 @@ pub fn merge(
 /// The tolerance files of a run (`--tolerances`, then each suite's `tolerances.toml`), read and
 /// checked against the comparison labels this project has.
 fn file_rules(given: &[PathBuf], suite_dir: &[PathBuf]) -> Result<Vec<Rule>, Error> {
-    let labels = tolerance_file::labels();
+    let labels = tolerances::labels();
     let mut rules = Vec::new();
     for path in tolerance_file::sources(given, suite_dir) {
         rules.extend(tolerance_file::load(&path, &labels)?);
@@ -338,7 +339,7 @@ impl GateFiles {
 
     /// Write each output whole (a temporary file in the same folder, renamed over the target).
     fn write(&self, all: &[Finding]) -> Result<(), Error> {
-        use crate::harness::gate_output;
+        use crate::comparison::gate_output;
         let outputs = [
             (&self.junit, gate_output::junit as fn(&[Finding]) -> String),
             (&self.json, gate_output::json),

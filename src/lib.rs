@@ -3,21 +3,26 @@
 //! The data flow is one straight path, one module per stage:
 //! [`scene`] (file, validated) → [`problem`] (resolved: Hertz, Kalker, grid, samples) →
 //! [`solvers`] (UBA, FASTSIM, CONTACT-style, external) → [`history`] → [`metrics`] →
-//! [`harness`] (reference and golden comparison, report). [`physics`] is shared by all solvers;
-//! [`export`] writes a resolved scene as another program's input (CONTACT).
+//! [`pipeline`] (wires one scene through them) → [`suite`] (many scenes, result folders) →
+//! [`comparison`] (reference and golden data, tolerances, findings) → [`report`] →
+//! [`calibration`] (fits). [`physics`] is shared by all solvers; [`export`] writes a resolved
+//! scene as another program's input (CONTACT).
 
+pub mod calibration;
 pub mod commands;
+pub mod comparison;
 pub mod error;
 pub mod export;
-pub mod harness;
 pub mod history;
 pub mod metrics;
 pub mod physics;
 pub mod pipeline;
 pub mod problem;
+pub mod report;
 pub mod safety;
 pub mod scene;
 pub mod simd;
 pub mod solvers;
+pub mod suite;
 
 pub use error::{Error, InputError};

@@ -2,7 +2,7 @@
 
 use clap::{Parser, Subcommand};
 use creepbench::commands;
-use creepbench::harness::suite::{Shard, DEFAULT_SUITES};
+use creepbench::suite::{Shard, DEFAULT_SUITES};
 use std::path::PathBuf;
 
 #[derive(Parser)]

@@ -1,10 +1,10 @@
 //! The straight path scene → resolved problem → models → histories → metrics, for one scene.
 
 use crate::error::{Error, InputError};
-use crate::harness::suite::SceneSource;
 use crate::history::History;
 use crate::metrics::{self, Metric, MetricDef, MetricKind};
 use crate::problem::Problem;
+use crate::scene::source::SceneSource;
 use crate::scene::Scene;
 use crate::solvers::{self, external::External, sample_loop, Termination};
 use std::path::Path;

@@ -55,7 +55,7 @@ fn close(a: f64, b: f64) -> bool {
 /// Compare the export of the scene `name` of the suite folder `suite` (a scene file or a study's
 /// point) with `inp`; the first difference, if any.
 fn difference(suite: &str, name: &str, inp: &str) -> Option<String> {
-    let source = creepbench::harness::suite::find(&[root().join(suite)], name).unwrap();
+    let source = creepbench::suite::find(&[root().join(suite)], name).unwrap();
     let ours = cases(&module3_input(&creepbench::pipeline::load_source(&source, &[]).unwrap()));
     let theirs = cases(&std::fs::read_to_string(root().join(inp)).unwrap());
     if ours.len() != theirs.len() {

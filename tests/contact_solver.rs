@@ -15,15 +15,20 @@ fn thesis_problem(name: &str) -> creepbench::problem::Problem {
 }
 
 /// The gate's rule for the exact-theory solver against CONTACT (one place for the numbers).
-fn gate(quantity: &str) -> &'static creepbench::harness::tolerances::Rule {
-    creepbench::harness::tolerances::rule(creepbench::harness::references::contact::EXACT, "*", "contact", quantity)
+fn gate(quantity: &str) -> &'static creepbench::comparison::tolerances::Rule {
+    creepbench::comparison::tolerances::rule(
+        creepbench::comparison::references::contact::EXACT,
+        "*",
+        "contact",
+        quantity,
+    )
 }
 
 /// Every step of every transient case at 22×22 and every point of the steady sweeps at 22 and 44:
 /// max |f − f_CONTACT| within the gate's tolerance (1e-5, issue 12; issue 3 asked for 0.002).
 #[test]
 fn totals_match_contact_everywhere() {
-    let refs = creepbench::harness::references::References::load(&root().join("reference")).unwrap();
+    let refs = creepbench::comparison::references::References::load(&root().join("reference")).unwrap();
     let mut worst_all: f64 = 0.0;
     for (name, case) in &refs.contact.cases {
         if case.method != "exact" || name.ends_with("_g88") {
@@ -51,7 +56,7 @@ fn totals_match_contact_everywhere() {
 /// CONTACT's history), loop areas of every sine case within 2 % of cases.csv.
 #[test]
 fn delay_ratios_and_loop_areas_match_contact() {
-    let refs = creepbench::harness::references::References::load(&root().join("reference")).unwrap();
+    let refs = creepbench::comparison::references::References::load(&root().join("reference")).unwrap();
     for (name, case) in
         refs.contact.cases.iter().filter(|(n, c)| c.kind == "sine" && !n.ends_with("_g88") && !n.ends_with("_g44"))
     {
@@ -78,7 +83,7 @@ fn delay_ratios_and_loop_areas_match_contact() {
 /// reference README computed independently (cases.csv), and its delay table (0.049, 0.145, 0.207).
 #[test]
 fn metric_definitions_reproduce_the_reference_readme() {
-    let refs = creepbench::harness::references::References::load(&root().join("reference")).unwrap();
+    let refs = creepbench::comparison::references::References::load(&root().join("reference")).unwrap();
     for (name, case) in refs.contact.cases.iter().filter(|(_, c)| c.kind == "sine") {
         let period = 1.0 / case.freq_hz.unwrap();
         let (t, cx, fr) = (reference(name, "t_s"), reference(name, "cx"), reference(name, "fx_over_fn"));
@@ -110,7 +115,7 @@ fn metric_definitions_reproduce_the_reference_readme() {
 /// contact elements as CONTACT's field file (x mirrored: CONTACT's leading edge is +a).
 #[test]
 fn normal_problem_matches_contact() {
-    let refs = creepbench::harness::references::References::load(&root().join("reference")).unwrap();
+    let refs = creepbench::comparison::references::References::load(&root().join("reference")).unwrap();
     for (name, case) in refs.contact.cases.iter().filter(|(n, c)| c.method == "exact" && !n.ends_with("_g88")) {
         let mut p = thesis_problem(name);
         p.loading.samples.truncate(1);

@@ -136,7 +136,7 @@ fn shards_merge_into_one_report() {
             dirs.push(format!("shard{i}"));
         }
     }
-    let n: usize = dirs.iter().map(|s| creepbench::harness::results::scene_names(&d.join(s)).len()).sum();
+    let n: usize = dirs.iter().map(|s| creepbench::suite::results::scene_names(&d.join(s)).len()).sum();
     assert_eq!(n, 2, "each scene in exactly one shard");
     let mut args = vec!["merge"];
     args.extend(dirs.iter().map(String::as_str));

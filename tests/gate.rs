@@ -6,10 +6,10 @@
 
 mod common;
 use common::*;
-use creepbench::harness::compare::{self, Against};
-use creepbench::harness::references::References;
-use creepbench::harness::results::StoredScene;
-use creepbench::harness::suite;
+use creepbench::comparison::compare::{self, Against};
+use creepbench::comparison::references::References;
+use creepbench::suite;
+use creepbench::suite::results::StoredScene;
 
 /// 6 significant digits (round-off-sized values as 0): stable across machines, still sensitive to
 /// any real model change.

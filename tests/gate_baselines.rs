@@ -3,10 +3,10 @@
 
 mod common;
 use common::*;
-use creepbench::harness::compare::{self, Against, Finding};
-use creepbench::harness::references::References;
-use creepbench::harness::results::StoredScene;
-use creepbench::harness::suite;
+use creepbench::comparison::compare::{self, Against, Finding};
+use creepbench::comparison::references::References;
+use creepbench::suite;
+use creepbench::suite::results::StoredScene;
 use std::path::Path;
 
 const SCENES: [&str; 2] = ["step_mu04", "steady_fastsim_g22"];
@@ -33,8 +33,8 @@ fn failures_after(scenes: &[StoredScene], mutate: impl Fn(&Path)) -> Vec<Finding
         Ok(f) => f,
         Err(e) => {
             // An unreadable baseline is an error of its own: report it as one failure.
-            let mut f =
-                compare::Ctx { scene: "-", solver: "-", against: Against::Golden }.unmatched("folder", e.to_string());
+            let mut f = compare::Ctx { scene: "-", solver: "-", against: Against::Golden, rules: &[] }
+                .unmatched("folder", e.to_string());
             f.gated = true;
             vec![f]
         }

@@ -17,7 +17,7 @@ const CASES: [&str; 5] =
 /// Worst |Δ| of fx/fn, fy/fn and mz/(FN a) of the exact solver against CONTACT's history.
 fn worst_against_contact(p: &Problem, case: &str) -> [f64; 3] {
     let ours = run(p, "contact");
-    let theirs = creepbench::harness::references::contact::read_history(
+    let theirs = creepbench::comparison::references::contact::read_history(
         &root().join(format!("reference/contact_nonhertz/{case}.csv")),
         0,
         &[MZ],

@@ -17,8 +17,8 @@ fn fastsim_matches_contact_fastsim() {
     let theirs = reference("steady_fastsim_g22", "fx_over_fn");
     let (err, k) = max_abs_diff(&ours, &theirs);
     println!("FASTSIM vs CONTACT FASTSIM: max |df| = {err:.3e} at cx = {:.4}", k as f64 * 1e-4);
-    let rule = creepbench::harness::tolerances::rule(
-        creepbench::harness::references::contact::FASTSIM,
+    let rule = creepbench::comparison::tolerances::rule(
+        creepbench::comparison::references::contact::FASTSIM,
         "steady_fastsim_g22",
         "fastsim",
         "fx_over_fn",

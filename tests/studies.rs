@@ -4,8 +4,8 @@
 
 mod common;
 use common::*;
-use creepbench::harness::suite::{self, Shard};
 use creepbench::scene::study;
+use creepbench::suite::{self, Shard};
 use std::path::PathBuf;
 
 const TEMPLATE: &str = r#"
@@ -213,12 +213,12 @@ fn expand_writes_scene_files() {
 /// same value the gate compares, within its 0.005), and one figure per metric.
 #[test]
 fn report_draws_the_frequency_study_with_contacts_points() {
-    use creepbench::harness::results::read_scene;
+    use creepbench::suite::results::read_scene;
     let golden = root().join("golden");
     let names = ["sine_f2_mu10", "sine_f10_mu10", "sine_f30_mu10", "sine_f60_mu10", "sine_f100_mu10"];
     let scenes: Vec<_> = names.iter().map(|n| read_scene(&golden, n).unwrap()).collect();
-    let refs = creepbench::harness::references::References::load(&root().join("reference")).unwrap();
-    let s = creepbench::harness::studies::section(&scenes, &refs).expect("a studies section");
+    let refs = creepbench::comparison::references::References::load(&root().join("reference")).unwrap();
+    let s = creepbench::report::studies::section(&scenes, &refs).expect("a studies section");
     assert!(s.body.contains("### Frequency at mu = 1 and 0.6 (thesis Fig. 4.9)"), "{}", s.body);
     let figures: Vec<&str> = s.figures.iter().map(|(f, _)| f.as_str()).collect();
     assert!(figures.contains(&"study_sine_freq_delay_ratio.svg") && figures.contains(&"study_sine_freq_loop_area.svg"));

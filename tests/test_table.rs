@@ -5,10 +5,10 @@
 
 mod common;
 use common::*;
-use creepbench::harness::references::References;
-use creepbench::harness::suite;
+use creepbench::comparison::references::References;
 use creepbench::history::MZ;
 use creepbench::scene::study;
+use creepbench::suite;
 
 /// The study's 140 points, named as the reference, x the direction in degrees.
 #[test]

@@ -6,9 +6,10 @@
 
 mod common;
 use common::{root, tempdir};
-use creepbench::harness::compare::{self, Against};
-use creepbench::harness::references::References;
-use creepbench::harness::{results, suite, tolerance_file, tolerances};
+use creepbench::comparison::compare::{self, Against};
+use creepbench::comparison::references::References;
+use creepbench::comparison::{tolerance_file, tolerances};
+use creepbench::suite::{self, results};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 

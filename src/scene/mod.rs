@@ -5,6 +5,7 @@
 
 pub mod geometry;
 pub mod reader;
+pub mod source;
 pub mod study;
 pub mod table;
 

@@ -122,8 +122,8 @@ pub fn tempdir(name: &str) -> PathBuf {
 }
 
 /// A scene of a shipped suite (`scenes/<suite>`) by name: a scene file or a study's point.
-pub fn suite_scene(suite: &str, name: &str) -> creepbench::harness::suite::SceneSource {
-    creepbench::harness::suite::find(&[root().join("scenes").join(suite)], name).unwrap()
+pub fn suite_scene(suite: &str, name: &str) -> creepbench::suite::SceneSource {
+    creepbench::suite::find(&[root().join("scenes").join(suite)], name).unwrap()
 }
 
 /// That scene's TOML text.

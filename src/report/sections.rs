@@ -3,29 +3,14 @@
 //! reads stored results and reference data only; the studies they need are scenes of the suite
 //! `scenes/report/` (named `report_*`), run and stored like any other.
 
-use super::linked_table::{largest, place, Table};
-use super::plot::{line_chart, Series};
-use super::references::References;
-use super::results::StoredScene;
+use crate::comparison::references::References;
 use crate::history::History;
+use crate::report::linked_table::{largest, place, Table};
+use crate::report::plot::{line_chart, Series};
+pub use crate::report::section::Section;
+use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
 use std::fmt::Write;
-
-/// A section of the report: title, Markdown body, figures (file name, SVG) and long tables moved
-/// to linked files (file name, Markdown; [`super::linked_table`]).
-#[derive(Debug, Clone, Default)]
-pub struct Section {
-    pub title: String,
-    pub body: String,
-    pub figures: Vec<(String, String)>,
-    pub tables: Vec<(String, String)>,
-}
-
-impl Section {
-    fn new(title: &str, body: String) -> Section {
-        Section { title: title.into(), body, ..Section::default() }
-    }
-}
 
 fn find<'a>(scenes: &'a [StoredScene], name: &str) -> Option<&'a StoredScene> {
     scenes.iter().find(|s| s.name == name)
@@ -220,11 +205,11 @@ pub fn scaling(scenes: &[StoredScene]) -> Option<Section> {
 /// Every section, in the report's order.
 pub fn all(scenes: &[StoredScene], refs: &References) -> Vec<Section> {
     let mut out = vec![thesis_beside_ours(scenes, refs)];
-    out.extend(super::ladder::section(scenes));
-    out.extend(super::studies::section(scenes, refs));
-    out.extend(super::envelope::section(scenes, refs));
-    out.extend(super::envelope::nonhertz_section(scenes, refs));
-    out.extend(super::work_precision::section(scenes, refs));
+    out.extend(crate::report::ladder::section(scenes));
+    out.extend(crate::report::studies::section(scenes, refs));
+    out.extend(crate::report::envelope::section(scenes, refs));
+    out.extend(crate::report::envelope::nonhertz_section(scenes, refs));
+    out.extend(crate::report::work_precision::section(scenes, refs));
     out.extend(grid_convergence(scenes, refs));
     out.extend(stability(scenes));
     out.push(timing(scenes, refs));

@@ -3,7 +3,10 @@
 use crate::error::{Error, InputError};
 use crate::pipeline::{self, SceneResult};
 use crate::problem::Problem;
-use crate::scene::study::{self, StudyPoint};
+pub mod results;
+
+pub use crate::scene::source::SceneSource;
+use crate::scene::study;
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
@@ -49,17 +52,6 @@ impl Shard {
 
 /// A suite folder's tolerance rules (`tolerance_file`), not a scene.
 pub const TOLERANCE_FILE: &str = "tolerances.toml";
-
-/// One scene of a suite: a scene file, or one point of a study file ([`crate::scene::study`]).
-#[derive(Debug, Clone, PartialEq)]
-pub struct SceneSource {
-    /// The file it comes from.
-    pub path: PathBuf,
-    /// The scene's name: a study point's, or a scene file's stem.
-    pub name: String,
-    /// A study point's scene table and its places in the studies (`None`: the file is the scene).
-    pub study: Option<(toml::Table, Vec<StudyPoint>)>,
-}
 
 /// The scenes of the folders `dirs` — scene files and the points of study files — sorted by
 /// name and restricted to `shard` (a study's points are sharded one by one); every `*.toml`
@@ -134,26 +126,6 @@ pub fn find(dirs: &[PathBuf], name: &str) -> Result<SceneSource, Error> {
         let dirs: Vec<String> = dirs.iter().map(|d| d.display().to_string()).collect();
         InputError::new("scene", name, format!("a scene or study point of {}", dirs.join(", "))).into()
     })
-}
-
-impl SceneSource {
-    /// The scene as TOML text: the file's, or the study point's table (with its name).
-    pub fn text(&self) -> Result<String, Error> {
-        match &self.study {
-            None => {
-                Ok(crate::safety::read::read_text(&self.path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")?)
-            }
-            Some((doc, _)) => Ok(doc.to_string()),
-        }
-    }
-
-    /// The scene as a TOML table: the file parsed, or the study point's table.
-    pub fn table(&self) -> Result<toml::Table, Error> {
-        match &self.study {
-            None => Ok(crate::scene::reader::parse_toml(&self.text()?, self.path.display().to_string())?),
-            Some((doc, _)) => Ok(doc.clone()),
-        }
-    }
 }
 
 /// The names of every scene of the folders (scene files' stems and study points), all shards.

@@ -4,13 +4,13 @@
 //! case in fx/fn, fy/fn and mz/(FN a), one figure per case with CONTACT's points, and a map of the
 //! contact patch where the set ships CONTACT's field. Reads stored results and reference data only.
 
-use super::plot::{line_chart, patch_map, PatchCell, Series};
-use super::references::envelope::EnvelopeCases;
-use super::references::References;
-use super::results::StoredScene;
-use super::sections::Section;
+use crate::comparison::references::envelope::EnvelopeCases;
+use crate::comparison::references::References;
 use crate::history::{History, MZ};
 use crate::problem::LoadingKind;
+use crate::report::plot::{line_chart, patch_map, PatchCell, Series};
+use crate::report::section::Section;
+use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
 use std::fmt::Write;
 

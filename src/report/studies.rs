@@ -3,11 +3,11 @@
 //! with the references' values of the same metric as markers where a reference holds the scene.
 //! Reads stored results (scene.json `studies`, metrics.csv) and reference data only.
 
-use super::plot::{line_chart, Series};
-use super::references::References;
-use super::results::StoredScene;
-use super::sections::Section;
+use crate::comparison::references::References;
+use crate::report::plot::{line_chart, Series};
+use crate::report::section::Section;
 use crate::scene::study::StudyPoint;
+use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
@@ -31,7 +31,9 @@ fn metrics_of(points: &Points) -> Vec<String> {
 fn reference_values(refs: &References, scene: &StoredScene) -> Vec<(&'static str, String, f64)> {
     let mut out: Vec<(&'static str, String, f64)> = Vec::new();
     for set in refs.sets() {
-        for f in set.compare(scene).into_iter().filter(|f| f.theirs.is_finite()) {
+        for f in
+            set.compare(scene, crate::comparison::tolerances::defaults()).into_iter().filter(|f| f.theirs.is_finite())
+        {
             if !out.iter().any(|(l, q, _)| *l == set.label() && *q == f.quantity) {
                 out.push((set.label(), f.quantity, f.theirs));
             }

@@ -3,11 +3,12 @@
 //! FASTSIM with the parabolic bound for `steady_fastsim_g22`.
 
 use super::{read, ReferenceSet};
+use crate::comparison::finding::{Against, Ctx, Finding};
+use crate::comparison::rule::Rule;
 use crate::error::{Error, FormatError};
-use crate::harness::compare::{Against, Ctx, Finding};
-use crate::harness::results::StoredScene;
 use crate::history::{History, Row};
 use crate::metrics;
+use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -139,7 +140,7 @@ impl ReferenceSet for ContactCases {
         "CONTACT"
     }
 
-    fn compare(&self, ours: &StoredScene) -> Vec<Finding> {
+    fn compare(&self, ours: &StoredScene, rules: &[Rule]) -> Vec<Finding> {
         let mut out = Vec::new();
         let (Some(case), Some(contact)) = (self.cases.get(&ours.name), self.histories.get(&ours.name)) else {
             return out;
@@ -156,7 +157,7 @@ impl ReferenceSet for ContactCases {
             contact.rows.iter().filter_map(|r| Some(r.fx_over_fn.abs() / mu_at.get(&r.step)?)).fold(0.0, f64::max);
         let saturated = flat >= 0.97;
         for (solver, h) in &ours.histories {
-            let ctx = Ctx { scene: &ours.name, solver, against };
+            let ctx = Ctx { scene: &ours.name, solver, against, rules };
             out.extend(ctx.column(h, contact, "fx_over_fn", false));
             let metric = |name: &str| ours.metric(solver, name);
             if let (Some(ours_d), Some(ref_d)) = (metric("delay_ratio"), contact_delay) {

@@ -1,5 +1,5 @@
 //! Tolerance files (issue 15): TOML files of `[[rule]]` tables. The project's defaults are one
-//! ([`super::tolerances`], `tolerances.toml`, embedded in the binary); a run's files layer over
+//! (`tolerances`, `tolerances.toml`, embedded in the binary); a run's files layer over
 //! them. Sources, first match wins: each `--tolerances FILE` in order, then each suite folder's
 //! `tolerances.toml`, then the defaults (which alone decide when no file is given).
 //!
@@ -20,32 +20,12 @@
 //! label no comparison uses, or — in a run's files, not in the defaults — a rule that matches no
 //! comparison of the run is an input error naming the file and the rule.
 
-use super::against::Against;
-use super::compare::Finding;
-pub use super::tolerances::Rule;
+use crate::comparison::against::Against;
+use crate::comparison::finding::Finding;
+pub use crate::comparison::rule::{glob, Rule};
 use crate::error::InputError;
 use crate::scene::reader::{Range, Section};
 use std::path::{Path, PathBuf};
-
-/// `*`-wildcard match of the whole text.
-pub fn glob(pattern: &str, text: &str) -> bool {
-    let parts: Vec<&str> = pattern.split('*').collect();
-    if parts.len() == 1 {
-        return pattern == text;
-    }
-    let (first, last) = (parts[0], parts[parts.len() - 1]);
-    if !text.starts_with(first) || text.len() < first.len() + last.len() || !text.ends_with(last) {
-        return false;
-    }
-    let mut rest = &text[first.len()..text.len() - last.len()];
-    for part in &parts[1..parts.len() - 1] {
-        match rest.find(part) {
-            Some(i) => rest = &rest[i + part.len()..],
-            None => return false,
-        }
-    }
-    true
-}
 
 /// Read a rule file; `labels` are the comparisons a rule may name.
 pub fn load(path: &Path, labels: &[Against]) -> Result<Vec<Rule>, InputError> {
@@ -107,14 +87,9 @@ pub fn parse(text: &str, name: &str, labels: &[Against]) -> Result<Vec<Rule>, In
     Ok(out)
 }
 
-/// The comparisons a run's rule files may name: golden, previous and every reference set's.
-pub fn labels() -> Vec<Against> {
-    [Against::Golden, Against::Previous].into_iter().chain(super::references::LABELS).collect()
-}
-
 /// Every rule file of a run: the `--tolerances` files, then each suite folder's `tolerances.toml`.
 pub fn sources(given: &[PathBuf], suite_dirs: &[PathBuf]) -> Vec<PathBuf> {
-    let suite_files = suite_dirs.iter().map(|d| d.join(super::suite::TOLERANCE_FILE)).filter(|p| p.is_file());
+    let suite_files = suite_dirs.iter().map(|d| d.join(crate::suite::TOLERANCE_FILE)).filter(|p| p.is_file());
     given.iter().cloned().chain(suite_files).collect()
 }
 
@@ -150,8 +125,9 @@ pub fn apply(rules: &[Rule], findings: &mut [Finding], elsewhere: impl Fn(&Rule)
 
 #[cfg(test)]
 mod tests {
-    use super::{glob, labels, parse};
-    use crate::harness::references::contact;
+    use super::{glob, parse};
+    use crate::comparison::references::contact;
+    use crate::comparison::tolerances::labels;
 
     fn one(body: &str) -> Result<super::Rule, String> {
         let text = format!("[[rule]]\n{body}\nwhy = \"test\"\n");

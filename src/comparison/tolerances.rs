@@ -1,58 +1,19 @@
 //! The project's default tolerances (issue 15, tolerances as reviewed data): the `[[rule]]` tables
 //! of `tolerances.toml` at the repository's top, in the format of tolerance files
-//! ([`super::tolerance_file`]), each with its reason. The file is embedded into the binary
+//! ([`crate::comparison::tolerance_file`]), each with its reason. The file is embedded into the binary
 //! (`include_str!`, so an installed binary has it) and parsed once, on first use. A comparison
 //! passes when `|ours − theirs| ≤ abs + rel·|theirs|`; the first rule that covers it wins.
 
-use super::against::Against;
-use super::references;
-use super::tolerance_file::{self, glob};
+use crate::comparison::against::Against;
+use crate::comparison::references;
+use crate::comparison::rule::first;
+pub use crate::comparison::rule::Rule;
+use crate::comparison::tolerance_file;
 use std::sync::LazyLock;
 
 /// The defaults' file, as messages name it (embedded at build time).
 pub const DEFAULT_FILE: &str = "tolerances.toml";
 const DEFAULT_TEXT: &str = include_str!("../../tolerances.toml");
-
-/// One rule: which comparisons it covers, its tolerance, and whether a miss fails the gate.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Rule {
-    /// Where it was read, `FILE rule[n]` (messages).
-    pub origin: String,
-    pub against: Against,
-    /// Scene name or `*` pattern ([`glob`]).
-    pub scene: String,
-    /// Solver name or pattern.
-    pub solver: String,
-    /// Column (`fx_over_fn`, `iterations`, …) or metric name, or pattern.
-    pub quantity: String,
-    /// Absolute tolerance; ∞ for a reported rule given without one.
-    pub abs: f64,
-    pub rel: f64,
-    /// A miss fails `creepbench check` (exit 1); otherwise it is only reported.
-    pub gated: bool,
-    pub why: String,
-}
-
-impl Rule {
-    /// Allowed |difference| for a reference value.
-    pub fn allowed(&self, theirs: f64) -> f64 {
-        self.abs + self.rel * theirs.abs()
-    }
-
-    /// Whether the rule covers this comparison (the label exactly, the names by pattern).
-    pub fn covers(&self, against: Against, scene: &str, solver: &str, quantity: &str) -> bool {
-        self.against == against
-            && glob(&self.scene, scene)
-            && glob(&self.solver, solver)
-            && glob(&self.quantity, quantity)
-    }
-
-    /// A rule that covers every comparison of its label, whatever the scene, solver and quantity:
-    /// the last word for that label (it need not match anything on a given run).
-    pub fn is_catch_all(&self) -> bool {
-        [&self.scene, &self.solver, &self.quantity].iter().all(|p| p.as_str() == "*")
-    }
-}
 
 /// The labels the defaults may name: golden (which also judges `check --against`, "previous")
 /// and every reference set's.
@@ -60,24 +21,15 @@ pub fn default_labels() -> Vec<Against> {
     std::iter::once(Against::Golden).chain(references::LABELS).collect()
 }
 
+/// The comparisons a run's rule files may name: golden, previous and every reference set's.
+pub fn labels() -> Vec<Against> {
+    [Against::Golden, Against::Previous].into_iter().chain(references::LABELS).collect()
+}
+
 static DEFAULTS: LazyLock<Vec<Rule>> = LazyLock::new(|| {
     tolerance_file::parse(DEFAULT_TEXT, DEFAULT_FILE, &default_labels())
         // Compiled in and parsed by a unit test: a broken file cannot reach a build that passes.
         .unwrap_or_else(|e| panic!("the embedded {DEFAULT_FILE} is invalid: {e}"))
-});
-
-/// What a comparison no rule covers gets: reported, no tolerance. (Every label of the defaults
-/// ends in a catch-all, so it is never used by them.)
-static NO_RULE: LazyLock<Rule> = LazyLock::new(|| Rule {
-    origin: "no rule".into(),
-    against: Against::Golden,
-    scene: "*".into(),
-    solver: "*".into(),
-    quantity: "*".into(),
-    abs: f64::INFINITY,
-    rel: 0.0,
-    gated: false,
-    why: "no rule".into(),
 });
 
 /// The project's default rules, in order (first match wins).
@@ -87,14 +39,13 @@ pub fn defaults() -> &'static [Rule] {
 
 /// The first default rule covering this comparison; `previous` is judged as `golden`.
 pub fn rule(against: Against, scene: &str, solver: &str, quantity: &str) -> &'static Rule {
-    let against = if against == Against::Previous { Against::Golden } else { against };
-    defaults().iter().find(|r| r.covers(against, scene, solver, quantity)).unwrap_or(&NO_RULE)
+    first(defaults(), against, scene, solver, quantity)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::harness::references::{contact, envelope, table, thesis};
+    use crate::comparison::references::{contact, envelope, table, thesis};
 
     const INF: f64 = f64::INFINITY;
 

@@ -3,9 +3,9 @@
 //! over every row both have, the worst delay-ratio and loop-area differences, and the cost per row.
 //! Reads stored results only.
 
-use super::model_error::{row_diffs, summary};
-use super::results::StoredScene;
-use super::sections::Section;
+use crate::comparison::model_error::{row_diffs, summary};
+use crate::report::section::Section;
+use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
 use std::fmt::Write;
 

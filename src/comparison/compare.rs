@@ -1,108 +1,12 @@
 //! Comparisons of a scene's results with golden data, a previous result set, CONTACT and the
 //! thesis. Each comparison yields its worst point as a [`Finding`].
 
-pub use super::against::Against;
-use super::references::References;
-use super::results::{self, StoredScene};
-use super::tolerances;
+pub use crate::comparison::finding::{Against, Ctx, Finding};
+use crate::comparison::references::References;
+use crate::comparison::tolerances;
 use crate::error::Error;
-use crate::history::History;
+use crate::suite::results::{self, StoredScene};
 use std::collections::BTreeMap;
-
-/// The worst point of one comparison.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Finding {
-    pub scene: String,
-    pub solver: String,
-    pub against: Against,
-    pub quantity: String,
-    /// Step of the worst point (histories and per-step metrics).
-    pub step: Option<usize>,
-    pub ours: f64,
-    pub theirs: f64,
-    /// |ours − theirs| (NaN when the two cannot be matched, e.g. missing steps).
-    pub diff: f64,
-    pub allowed: f64,
-    pub gated: bool,
-    /// A note, e.g. why the values cannot be matched.
-    pub note: String,
-}
-
-impl Finding {
-    pub fn passed(&self) -> bool {
-        self.diff <= self.allowed
-    }
-    /// diff / allowed (∞ for a NaN diff), to rank findings.
-    pub fn severity(&self) -> f64 {
-        if self.diff.is_nan() {
-            f64::INFINITY
-        } else if self.allowed > 0.0 && self.allowed.is_finite() {
-            self.diff / self.allowed
-        } else {
-            self.diff
-        }
-    }
-}
-
-/// The scene, model and baseline of a comparison.
-pub struct Ctx<'a> {
-    pub scene: &'a str,
-    pub solver: &'a str,
-    pub against: Against,
-}
-
-impl Ctx<'_> {
-    /// One compared value, judged by the tolerance rule of this comparison.
-    pub fn finding(&self, quantity: &str, step: Option<usize>, ours: f64, theirs: f64, note: &str) -> Finding {
-        let rule = tolerances::rule(self.against, self.scene, self.solver, quantity);
-        Finding {
-            scene: self.scene.into(),
-            solver: self.solver.into(),
-            against: self.against,
-            quantity: quantity.into(),
-            step,
-            ours,
-            theirs,
-            diff: (ours - theirs).abs(),
-            allowed: rule.allowed(theirs),
-            gated: rule.gated,
-            note: note.into(),
-        }
-    }
-
-    /// A comparison that cannot be made (a missing or extra baseline item): never passes.
-    pub fn unmatched(&self, quantity: &str, note: String) -> Finding {
-        let mut f = self.finding(quantity, None, f64::NAN, f64::NAN, "");
-        f.diff = f64::NAN;
-        f.note = note;
-        f
-    }
-
-    /// Worst difference of one column over the steps both histories have. Steps present in only
-    /// one of them make the finding unmatched (NaN) when `require_same_steps`.
-    pub fn column(&self, ours: &History, theirs: &History, col: &str, require_same_steps: bool) -> Option<Finding> {
-        let (a, b) = (ours.column(col)?, theirs.column(col)?);
-        let tb: BTreeMap<usize, f64> = theirs.rows.iter().map(|r| r.step).zip(b).collect();
-        let mut worst: Option<Finding> = None;
-        let mut matched = 0;
-        for (r, va) in ours.rows.iter().zip(a) {
-            let Some(&vb) = tb.get(&r.step) else { continue };
-            matched += 1;
-            let f = self.finding(col, Some(r.step), va, vb, "");
-            if worst.as_ref().is_none_or(|w| f.severity() > w.severity()) {
-                worst = Some(f);
-            }
-        }
-        if require_same_steps && (matched != ours.rows.len() || matched != theirs.rows.len()) {
-            let mut f = self.finding(col, None, f64::NAN, f64::NAN, "");
-            f.diff = f64::NAN;
-            f.note =
-                format!("steps differ: {} rows here, {} there, {matched} matched", ours.rows.len(), theirs.rows.len());
-            return Some(f);
-        }
-        worst
-    }
-}
 
 /// Columns compared with a baseline besides the model's extra columns: the loading (a changed
 /// loading is a changed scene) and the traction coefficients.
@@ -116,7 +20,7 @@ pub fn against_results(ours: &StoredScene, theirs: Option<&StoredScene>, against
         out.extend(expected_sets(ours, t, against));
     }
     for (solver, h) in &ours.histories {
-        let ctx = Ctx { scene: &ours.name, solver, against };
+        let ctx = Ctx { scene: &ours.name, solver, against, rules: tolerances::defaults() };
         let Some(th) = theirs.and_then(|t| t.histories.get(solver)) else {
             let note = format!(
                 "no {} data for this scene and solver (run `creepbench bless` to accept new results)",
@@ -157,7 +61,7 @@ pub fn against_results(ours: &StoredScene, theirs: Option<&StoredScene>, against
 /// that differs (a changed scene is a changed baseline).
 fn expected_sets(ours: &StoredScene, theirs: &StoredScene, against: Against) -> Vec<Finding> {
     let mut out = Vec::new();
-    let scene_ctx = Ctx { scene: &ours.name, solver: "-", against };
+    let scene_ctx = Ctx { scene: &ours.name, solver: "-", against, rules: tolerances::defaults() };
     for solver in theirs.histories.keys().filter(|s| !ours.histories.contains_key(*s)) {
         out.push(
             scene_ctx
@@ -165,7 +69,7 @@ fn expected_sets(ours: &StoredScene, theirs: &StoredScene, against: Against) -> 
         );
     }
     for (solver, name, step) in theirs.metrics.keys().filter(|k| !ours.metrics.contains_key(*k)) {
-        let ctx = Ctx { scene: &ours.name, solver, against };
+        let ctx = Ctx { scene: &ours.name, solver, against, rules: tolerances::defaults() };
         let mut f = ctx.unmatched(name, format!("{} has this metric value, this run has not", against.label()));
         f.step = *step;
         out.push(f);
@@ -194,7 +98,7 @@ pub fn missing_scenes(
     for n in results::scene_names(dir).into_iter().filter(|n| !scenes.iter().any(|s| &s.name == n)) {
         let theirs = results::read_resolved(dir, &n)?;
         if expected(&n, &theirs.suite) {
-            let ctx = Ctx { scene: &n, solver: "-", against };
+            let ctx = Ctx { scene: &n, solver: "-", against, rules: tolerances::defaults() };
             out.push(ctx.unmatched(
                 "scene",
                 format!("{} has this scene of suite {:?}, the run did not produce it", against.label(), theirs.suite),
@@ -214,7 +118,7 @@ pub fn evaluate(
     let mut out = Vec::new();
     for s in scenes {
         for set in refs.sets() {
-            out.extend(set.compare(s));
+            out.extend(set.compare(s, tolerances::defaults()));
         }
         if let Some((dir, against)) = baseline {
             let theirs = if dir.join(&s.name).join("scene.json").exists() {

@@ -7,10 +7,11 @@ pub mod envelope;
 pub mod table;
 pub mod thesis;
 
-use super::compare::{Against, Finding};
-use super::results::StoredScene;
+use crate::comparison::finding::{Against, Finding};
+use crate::comparison::rule::Rule;
 use crate::error::{Error, InputError};
 use crate::history::History;
+use crate::suite::results::StoredScene;
 use std::path::Path;
 
 /// Default location of the reference data.
@@ -25,8 +26,9 @@ pub const LABELS: [Against; 6] =
 pub trait ReferenceSet: Send + Sync {
     /// Short label of the set (findings, the report).
     fn label(&self) -> &'static str;
-    /// Every comparison of a stored scene with this set (none when it holds nothing for it).
-    fn compare(&self, scene: &StoredScene) -> Vec<Finding>;
+    /// Every comparison of a stored scene with this set (none when it holds nothing for it),
+    /// judged by `rules`.
+    fn compare(&self, scene: &StoredScene, rules: &[Rule]) -> Vec<Finding>;
     /// The set's own history of a scene, if it has one (plots, error tables).
     fn history(&self, scene: &str) -> Option<&History>;
 }

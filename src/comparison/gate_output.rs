@@ -2,7 +2,7 @@
 //! solver × comparison, a failure carrying the worst gated point), the complete findings as JSON,
 //! and a short Markdown summary (for `$GITHUB_STEP_SUMMARY`). Pure functions of the findings.
 
-use super::compare::Finding;
+use crate::comparison::compare::Finding;
 use std::collections::BTreeMap;
 use std::fmt::Write;
 

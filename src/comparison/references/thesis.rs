@@ -2,10 +2,11 @@
 //! 22×22) and scalar figures (Hertz semi-axes, Table 4.3, the UBA–FASTSIM error of Fig. 4.24).
 
 use super::{read, ReferenceSet};
+use crate::comparison::finding::{Against, Ctx, Finding};
+use crate::comparison::rule::Rule;
 use crate::error::Error;
-use crate::harness::compare::{Against, Ctx, Finding};
-use crate::harness::results::StoredScene;
 use crate::history::History;
+use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -68,12 +69,12 @@ impl ReferenceSet for ThesisTables {
         "thesis"
     }
 
-    fn compare(&self, ours: &StoredScene) -> Vec<Finding> {
+    fn compare(&self, ours: &StoredScene, rules: &[Rule]) -> Vec<Finding> {
         let Some(td) = self.delay_for(ours) else { return Vec::new() };
         let mut out = Vec::new();
         for solver in ours.histories.keys() {
             if let Some(d) = ours.metric(solver, "delay_ratio") {
-                let ctx = Ctx { scene: &ours.name, solver, against: AGAINST };
+                let ctx = Ctx { scene: &ours.name, solver, against: AGAINST, rules };
                 out.push(ctx.finding("delay_ratio", None, d, td, "thesis Table 4.2 (CONTACT, mu = 1)"));
             }
         }

@@ -2,8 +2,8 @@
 //! written by `creepbench run` from `fits/`) with its fitted values and its before/after errors
 //! on the fitted and the held-out scenes. Reads stored results only.
 
-use super::fit::record::FitRecord;
-use super::sections::Section;
+use crate::calibration::fit::record::FitRecord;
+use crate::report::section::Section;
 use std::fmt::Write;
 
 /// The section, if any fit was stored.

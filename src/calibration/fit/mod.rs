@@ -8,9 +8,9 @@ pub mod objective;
 pub mod record;
 pub mod spec;
 
+use crate::comparison::references::References;
 use crate::error::{Error, InputError};
-use crate::harness::references::References;
-use crate::harness::suite;
+use crate::suite;
 use argmin::core::{Executor, State, TerminationReason};
 use argmin::solver::neldermead::NelderMead;
 use objective::{Case, Objective, SetErrors};
@@ -152,11 +152,11 @@ pub fn render(o: &FitOutcome) -> Result<String, Error> {
 /// scenes run in parallel, statistics are taken in the scenes' order.
 pub fn across_suites(
     o: &FitOutcome,
-    stored: &[crate::harness::results::StoredScene],
-    sources: &[crate::harness::suite::SceneSource],
+    stored: &[crate::suite::results::StoredScene],
+    sources: &[crate::suite::SceneSource],
 ) -> Result<Vec<record::SuiteRecord>, Error> {
-    use crate::harness::ladder::EXACT;
-    use crate::harness::model_error::{row_diffs, summary};
+    use crate::comparison::model_error::{row_diffs, summary};
+    use crate::report::ladder::EXACT;
     use rayon::prelude::*;
     let set = o.spec.assignments(&o.values);
     let pairs: Vec<_> = stored

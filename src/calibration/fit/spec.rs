@@ -22,8 +22,8 @@
 //! "model.slope_reduction" = ["{k0}", 1.0, 0.0]
 //! ```
 
+use crate::comparison::tolerance_file::glob;
 use crate::error::InputError;
-use crate::harness::tolerance_file::glob;
 use crate::scene::reader::{Range, Section};
 use std::path::{Path, PathBuf};
 use toml::{Table, Value};

@@ -3,11 +3,11 @@
 //! solver's three grids extrapolated to zero element size (Richardson, with the observed order) —
 //! against its wall time per simulated second, on one log–log diagram. Reads stored results only.
 
-use super::plot::{line_chart, Series};
-use super::references::References;
-use super::results::StoredScene;
-use super::sections::Section;
+use crate::comparison::references::References;
 use crate::history::History;
+use crate::report::plot::{line_chart, Series};
+use crate::report::section::Section;
+use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
 use std::fmt::Write;
 

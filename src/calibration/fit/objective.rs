@@ -3,14 +3,14 @@
 //! differences), and the argmin cost function over the fitted set.
 
 use super::spec::{FitSpec, Norm, Target};
+use crate::comparison::model_error::{rms, row_diffs};
+use crate::comparison::references::References;
 use crate::error::{Error, InputError};
-use crate::harness::model_error::{rms, row_diffs};
-use crate::harness::references::References;
-use crate::harness::suite::SceneSource;
 use crate::history::History;
 use crate::metrics;
 use crate::pipeline;
 use crate::scene::study;
+use crate::suite::SceneSource;
 use rayon::prelude::*;
 use toml::{Table, Value};
 

@@ -7,10 +7,11 @@
 
 use super::contact::read_history;
 use super::{read, ReferenceSet};
+use crate::comparison::finding::{Against, Ctx, Finding};
+use crate::comparison::rule::Rule;
 use crate::error::{Error, FormatError};
-use crate::harness::compare::{Against, Ctx, Finding};
-use crate::harness::results::StoredScene;
 use crate::history::{History, MZ};
+use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -109,7 +110,7 @@ impl ReferenceSet for EnvelopeCases {
         }
     }
 
-    fn compare(&self, ours: &StoredScene) -> Vec<Finding> {
+    fn compare(&self, ours: &StoredScene, rules: &[Rule]) -> Vec<Finding> {
         let mut out = Vec::new();
         let Some(contact) = self.histories.get(&ours.name) else {
             return out;
@@ -120,7 +121,7 @@ impl ReferenceSet for EnvelopeCases {
             None => BTreeMap::new(),
         };
         for (solver, h) in &ours.histories {
-            let ctx = Ctx { scene: &ours.name, solver, against: self.against.unwrap_or(ENVELOPE) };
+            let ctx = Ctx { scene: &ours.name, solver, against: self.against.unwrap_or(ENVELOPE), rules };
             out.extend(ctx.column(h, contact, "fx_over_fn", true));
             out.extend(ctx.column(h, contact, "fy_over_fn", true));
             match mz_over_fn_a(h, a_mm) {

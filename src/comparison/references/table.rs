@@ -6,8 +6,8 @@
 
 use super::envelope::EnvelopeCases;
 use super::read;
+use crate::comparison::against::Against;
 use crate::error::{Error, FormatError};
-use crate::harness::compare::Against;
 use crate::history::{History, Row, MZ};
 use std::path::Path;
 

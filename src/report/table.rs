@@ -2,8 +2,8 @@
 //! |f − f_CONTACT| where a reference exists), written as CSV and, with the optional `polars`
 //! feature, as a polars DataFrame saved to Parquet for users who analyse in Python.
 
-use super::compare::Finding;
-use super::results::StoredScene;
+use crate::comparison::compare::Finding;
+use crate::suite::results::StoredScene;
 use std::path::Path;
 
 /// One row of the table.

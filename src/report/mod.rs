@@ -1,17 +1,29 @@
 //! The Markdown validation report with SVG plots (reports/validation.md, reports/figures/).
-//! Built from stored result folders only, so shards merge into one report.
+//! Built from stored result folders only, so shards merge into one report. Stage 8 of the stack
+//! (below it: the comparison's findings and the reference sets; above it: calibration).
 
-use super::compare::Finding;
-use super::linked_table::{self, Table};
-use super::plot::{line_chart, Series};
-use super::references::References;
-use super::results::StoredScene;
-use super::sections::Section;
+pub mod envelope;
+pub mod ladder;
+pub mod linked_table;
+pub mod plot;
+pub mod section;
+pub mod sections;
+pub mod studies;
+pub mod table;
+pub mod work_precision;
+
+use crate::comparison::compare::Finding;
+use crate::comparison::references::References;
 use crate::error::Error;
 use crate::history::History;
 use crate::metrics;
 use crate::problem::LoadingKind;
+use crate::report::plot::{line_chart, Series};
+use crate::report::section::Section;
 use crate::safety::{folder, whole};
+use crate::suite::results::StoredScene;
+pub use linked_table::anchor;
+use linked_table::Table;
 use std::collections::BTreeMap;
 use std::fmt::Write;
 use std::path::Path;
@@ -155,24 +167,11 @@ fn verdict(input: &ReportInput) -> String {
             f.scene,
             f.solver,
             f.against.label(),
-            super::gate_output::describe(f).replace('|', "\\|")
+            crate::comparison::gate_output::describe(f).replace('|', "\\|")
         );
     }
     out.push('\n');
     out
-}
-
-/// The anchor GitHub gives a heading with this title.
-pub fn anchor(title: &str) -> String {
-    title
-        .chars()
-        .filter_map(|c| match c {
-            ' ' => Some('-'),
-            '-' | '_' => Some(c),
-            c if c.is_alphanumeric() => Some(c.to_lowercase().next().unwrap_or(c)),
-            _ => None,
-        })
-        .collect()
 }
 
 /// A table of contents of the `## ` sections of `md` (GitHub's heading anchors).

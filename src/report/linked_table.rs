@@ -39,6 +39,19 @@ pub struct Placed {
     pub file: Option<(String, String)>,
 }
 
+/// The anchor GitHub gives a heading with this title.
+pub fn anchor(title: &str) -> String {
+    title
+        .chars()
+        .filter_map(|c| match c {
+            ' ' => Some('-'),
+            '-' | '_' => Some(c),
+            c if c.is_alphanumeric() => Some(c.to_lowercase().next().unwrap_or(c)),
+            _ => None,
+        })
+        .collect()
+}
+
 /// Place `table` of the section `section` (its title, for the file's heading and the link back):
 /// whole when it is short; else `tables/<name>.md` with every row, and inline `summary`, the
 /// link and the rows `keep` (indices, in the order given, each once; `kept` says what they are).
@@ -50,7 +63,7 @@ pub fn place(name: &str, section: &str, table: &Table, summary: &str, keep: &[us
     let contents = format!(
         "# {section}: all {} rows\n\nFrom the report [validation.md](../validation.md#{}). {summary}\n\n{}",
         table.rows.len(),
-        super::report::anchor(section),
+        anchor(section),
         table.markdown(table.rows.iter())
     );
     let mut shown: Vec<usize> = Vec::new();
