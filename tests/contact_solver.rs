@@ -3,6 +3,7 @@
 
 mod common;
 use common::*;
+use creepbench::comparison::references::contact::{ContactCases, EXACT};
 use creepbench::metrics;
 use creepbench::solvers::contact::run_with_fields;
 use creepbench::solvers::contact::tangential::ElementState;
@@ -16,12 +17,7 @@ fn thesis_problem(name: &str) -> creepbench::problem::Problem {
 
 /// The gate's rule for the exact-theory solver against CONTACT (one place for the numbers).
 fn gate(quantity: &str) -> &'static creepbench::comparison::tolerances::Rule {
-    creepbench::comparison::tolerances::rule(
-        creepbench::comparison::references::contact::EXACT,
-        "*",
-        "contact",
-        quantity,
-    )
+    creepbench::comparison::tolerances::rule(EXACT, "*", "contact", quantity)
 }
 
 /// Every step of every transient case at 22×22 and every point of the steady sweeps at 22 and 44:
@@ -29,8 +25,9 @@ fn gate(quantity: &str) -> &'static creepbench::comparison::tolerances::Rule {
 #[test]
 fn totals_match_contact_everywhere() {
     let refs = creepbench::comparison::references::References::load(&root().join("reference")).unwrap();
+    let contact = refs.get::<ContactCases>(EXACT).unwrap();
     let mut worst_all: f64 = 0.0;
-    for (name, case) in &refs.contact.cases {
+    for (name, case) in &contact.cases {
         if case.method != "exact" || name.ends_with("_g88") {
             continue; // 88×88: CONTACT's steady sweep took 25 min; the 88 sine case runs in the report
         }
@@ -57,8 +54,9 @@ fn totals_match_contact_everywhere() {
 #[test]
 fn delay_ratios_and_loop_areas_match_contact() {
     let refs = creepbench::comparison::references::References::load(&root().join("reference")).unwrap();
+    let contact = refs.get::<ContactCases>(EXACT).unwrap();
     for (name, case) in
-        refs.contact.cases.iter().filter(|(n, c)| c.kind == "sine" && !n.ends_with("_g88") && !n.ends_with("_g44"))
+        contact.cases.iter().filter(|(n, c)| c.kind == "sine" && !n.ends_with("_g88") && !n.ends_with("_g44"))
     {
         let p = thesis_problem(name);
         let h = run(&p, "contact");
@@ -84,7 +82,8 @@ fn delay_ratios_and_loop_areas_match_contact() {
 #[test]
 fn metric_definitions_reproduce_the_reference_readme() {
     let refs = creepbench::comparison::references::References::load(&root().join("reference")).unwrap();
-    for (name, case) in refs.contact.cases.iter().filter(|(_, c)| c.kind == "sine") {
+    let contact = refs.get::<ContactCases>(EXACT).unwrap();
+    for (name, case) in contact.cases.iter().filter(|(_, c)| c.kind == "sine") {
         let period = 1.0 / case.freq_hz.unwrap();
         let (t, cx, fr) = (reference(name, "t_s"), reference(name, "cx"), reference(name, "fx_over_fn"));
         let periods = (t.last().unwrap() / period + 1e-9).floor();
@@ -99,7 +98,7 @@ fn metric_definitions_reproduce_the_reference_readme() {
         ("sine_f30_mu10_g44", 0.150),
         ("sine_f30_mu10_g88", 0.153),
     ] {
-        let period = 1.0 / refs.contact.cases[name].freq_hz.unwrap();
+        let period = 1.0 / contact.cases[name].freq_hz.unwrap();
         let d = metrics::delay_ratio(
             &reference(name, "t_s"),
             &reference(name, "cx"),
@@ -116,7 +115,8 @@ fn metric_definitions_reproduce_the_reference_readme() {
 #[test]
 fn normal_problem_matches_contact() {
     let refs = creepbench::comparison::references::References::load(&root().join("reference")).unwrap();
-    for (name, case) in refs.contact.cases.iter().filter(|(n, c)| c.method == "exact" && !n.ends_with("_g88")) {
+    let contact = refs.get::<ContactCases>(EXACT).unwrap();
+    for (name, case) in contact.cases.iter().filter(|(n, c)| c.method == "exact" && !n.ends_with("_g88")) {
         let mut p = thesis_problem(name);
         p.loading.samples.truncate(1);
         p.loading.init = creepbench::scene::InitKind::Zero;

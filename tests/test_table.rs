@@ -5,7 +5,8 @@
 
 mod common;
 use common::*;
-use creepbench::comparison::references::References;
+use creepbench::comparison::references::envelope::EnvelopeCases;
+use creepbench::comparison::references::{table, References};
 use creepbench::history::MZ;
 use creepbench::scene::study;
 use creepbench::suite;
@@ -16,9 +17,10 @@ fn the_study_writes_every_case_of_the_table() {
     let sources = suite::scene_files(&[root().join("scenes/table")], None).unwrap();
     assert_eq!(sources.len(), 140);
     let refs = References::load(&root().join("reference")).unwrap();
-    assert_eq!(refs.table.histories.len(), 140);
+    let table = refs.get::<EnvelopeCases>(table::TABLE).unwrap();
+    assert_eq!(table.histories.len(), 140);
     for s in &sources {
-        let h = refs.table.histories.get(&s.name).unwrap_or_else(|| panic!("no reference for {}", s.name));
+        let h = table.histories.get(&s.name).unwrap_or_else(|| panic!("no reference for {}", s.name));
         assert_eq!(h.rows.len(), 23, "{}", s.name);
         let (_, points) = s.study.as_ref().unwrap();
         assert_eq!(points[0].x_key, "angle");
@@ -26,7 +28,7 @@ fn the_study_writes_every_case_of_the_table() {
     }
     // CONTACT's second line of cases (a/b 0.2, spin 0, -90 degrees, magnitude 0.1):
     // Fy = 0.111744 on body 1 over mu FN, Mz = -0.021818 over mu FN cp.
-    let h = &refs.table.histories["tt_ab0p2_sp0_m90"];
+    let h = &table.histories["tt_ab0p2_sp0_m90"];
     assert_eq!(h.rows[1].fy_over_fn, -0.3 * 0.111744);
     let mz = h.column(MZ).unwrap()[1];
     assert!((mz - 0.3 * 82000.0 * 80f64.sqrt() * 0.021818).abs() < 1e-9, "{mz}");
@@ -37,6 +39,7 @@ fn the_study_writes_every_case_of_the_table() {
 #[test]
 fn the_exact_solver_reproduces_contacts_test_table() {
     let refs = References::load(&root().join("reference")).unwrap();
+    let table = refs.get::<EnvelopeCases>(table::TABLE).unwrap();
     let mut worst = (0.0f64, String::new());
     let mut cases = 0;
     for s in suite::scene_files(&[root().join("scenes/table")], None).unwrap() {
@@ -44,7 +47,7 @@ fn the_exact_solver_reproduces_contacts_test_table() {
         let a_mm = problem.hertz().a_mm;
         let result = creepbench::pipeline::run(problem).unwrap();
         let ours = &result.histories[0];
-        let theirs = &refs.table.histories[&s.name];
+        let theirs = &table.histories[&s.name];
         let (om, tm) = (ours.column(MZ).unwrap(), theirs.column(MZ).unwrap());
         for (k, (o, t)) in ours.rows.iter().zip(&theirs.rows).enumerate() {
             assert_eq!(o.step, t.step);

@@ -80,6 +80,22 @@ static NO_RULE: LazyLock<Rule> = LazyLock::new(|| Rule {
     why: "no rule".into(),
 });
 
+/// The last rule of a label: every comparison of it that no rule before covers is reported, with
+/// no tolerance (a reference set's entry in the registry gives its reason).
+pub fn catch_all(against: Against, why: &str) -> Rule {
+    Rule {
+        origin: format!("{:?} catch-all (reference set registry)", against.label()),
+        against,
+        scene: "*".into(),
+        solver: "*".into(),
+        quantity: "*".into(),
+        abs: f64::INFINITY,
+        rel: 0.0,
+        gated: false,
+        why: why.into(),
+    }
+}
+
 /// The first of `rules` covering this comparison; `previous` is judged as `golden`.
 pub fn first<'r>(rules: &'r [Rule], against: Against, scene: &str, solver: &str, quantity: &str) -> &'r Rule {
     let against = if against == Against::Previous { Against::Golden } else { against };

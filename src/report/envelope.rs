@@ -5,7 +5,7 @@
 //! contact patch where the set ships CONTACT's field. Reads stored results and reference data only.
 
 use crate::comparison::references::envelope::EnvelopeCases;
-use crate::comparison::references::References;
+use crate::comparison::references::{References, ENVELOPE_SECTION, NONHERTZ_SECTION};
 use crate::history::{History, MZ};
 use crate::problem::LoadingKind;
 use crate::report::plot::{line_chart, patch_map, PatchCell, Series};
@@ -71,12 +71,12 @@ const NONHERTZ: Spec = Spec {
 
 /// The envelope section, if any stored scene is an envelope case.
 pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
-    case_section(scenes, &refs.envelope, &ENVELOPE)
+    case_section(scenes, refs.of_section::<EnvelopeCases>(ENVELOPE_SECTION)?, &ENVELOPE)
 }
 
 /// The non-Hertzian section, if any stored scene is a non-Hertzian case.
 pub fn nonhertz_section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
-    case_section(scenes, &refs.nonhertz, &NONHERTZ)
+    case_section(scenes, refs.of_section::<EnvelopeCases>(NONHERTZ_SECTION)?, &NONHERTZ)
 }
 
 fn case_section(scenes: &[StoredScene], set: &EnvelopeCases, spec: &Spec) -> Option<Section> {

@@ -13,6 +13,8 @@ pub mod table;
 pub mod work_precision;
 
 use crate::comparison::compare::Finding;
+use crate::comparison::references::contact::{self, ContactCases};
+use crate::comparison::references::thesis::{self, ThesisTables};
 use crate::comparison::references::References;
 use crate::error::Error;
 use crate::history::History;
@@ -238,8 +240,10 @@ pub fn build(input: &ReportInput) -> Report {
     // Per solver: its largest error and the row it is in; rows with a gated miss.
     let mut largest: Vec<Option<(f64, usize, &str)>> = vec![None; solvers.len()];
     let mut keep = Vec::new();
+    let contact = input.refs.get::<ContactCases>(contact::EXACT);
+    let thesis = input.refs.get::<ThesisTables>(thesis::AGAINST);
     for sc in input.scenes {
-        if input.refs.contact.history(&sc.name).is_none() {
+        if contact.and_then(|c| c.history(&sc.name)).is_none() {
             continue;
         }
         let mut row = format!("| {} |", sc.name);
@@ -295,11 +299,10 @@ pub fn build(input: &ReportInput) -> Report {
         table_head(&mut md, &["scene", "thesis", "CONTACT"], &solvers);
         for sc in &sines {
             let p = sc.scene.period_s().unwrap_or(1.0);
-            let thesis = input.refs.thesis.delay_for(sc);
-            let contact =
-                input.refs.contact.history(&sc.name).and_then(|h| {
-                    metrics::delay_ratio(&h.column("t_s")?, &h.column("cx")?, &h.column("fx_over_fn")?, p)
-                });
+            let thesis = thesis.and_then(|t| t.delay_for(sc));
+            let contact = contact
+                .and_then(|c| c.history(&sc.name))
+                .and_then(|h| metrics::delay_ratio(&h.column("t_s")?, &h.column("cx")?, &h.column("fx_over_fn")?, p));
             let _ = write!(md, "| {} | {} | {} |", sc.name, fmt(thesis, 3), fmt(contact, 4));
             for s in &solvers {
                 let flat =
@@ -312,7 +315,7 @@ pub fn build(input: &ReportInput) -> Report {
         let _ = writeln!(md, "\n## Hysteresis loop areas\n\n|∮ f dcx| over the last full period (trapezoidal; CONTACT's value from `cases.csv`). In brackets: relative difference to CONTACT.\n");
         table_head(&mut md, &["scene", "CONTACT"], &solvers);
         for sc in &sines {
-            let c = input.refs.contact.cases.get(&sc.name).and_then(|c| c.loop_area).map(f64::abs);
+            let c = contact.and_then(|c| c.cases.get(&sc.name)).and_then(|c| c.loop_area).map(f64::abs);
             let _ = write!(md, "| {} | {} |", sc.name, fmt(c, 6));
             for s in &solvers {
                 let v = sc.metrics.get(&(s.clone(), "loop_area".into(), None)).copied();
@@ -339,16 +342,9 @@ pub fn build(input: &ReportInput) -> Report {
     let mut titles: Vec<&str> = GROUPS.iter().map(|g| g.0).collect();
     titles.push("Other scenes");
     for title in titles {
-        // Envelope cases have their own section (harness::envelope).
-        let members: Vec<&StoredScene> = input
-            .scenes
-            .iter()
-            .filter(|s| {
-                group_of(&s.name) == title
-                    && !input.refs.envelope.histories.contains_key(&s.name)
-                    && !input.refs.nonhertz.histories.contains_key(&s.name)
-            })
-            .collect();
+        // A reference set's cases drawn in a section of their own are not drawn again.
+        let members: Vec<&StoredScene> =
+            input.scenes.iter().filter(|s| group_of(&s.name) == title && !input.refs.in_own_section(&s.name)).collect();
         if members.is_empty() || title == STUDIES {
             continue;
         }

@@ -3,6 +3,8 @@
 //! reads stored results and reference data only; the studies they need are scenes of the suite
 //! `scenes/report/` (named `report_*`), run and stored like any other.
 
+use crate::comparison::references::contact::{self, ContactCases};
+use crate::comparison::references::thesis::{self, ThesisTables};
 use crate::comparison::references::References;
 use crate::history::History;
 use crate::report::linked_table::{largest, place, Table};
@@ -27,7 +29,8 @@ const TABLE_4_3: [(&str, &str); 4] = [
 /// The thesis's own figures beside this project's, with what explains the differences.
 pub fn thesis_beside_ours(scenes: &[StoredScene], refs: &References) -> Section {
     let mut s = String::new();
-    let fig = |k: &str| refs.thesis.figure(k);
+    let thesis = refs.get::<ThesisTables>(thesis::AGAINST);
+    let fig = |k: &str| thesis.and_then(|t| t.figure(k));
     let _ = writeln!(s, "| figure | thesis | this project | note |\n|---|---|---|---|");
     if let Some(h) = find(scenes, "report_hertz_radii") {
         let _ = writeln!(s, "| Hertz a, b from R_wx 575, R_wy 500, R_ry 300 mm, 100 kN, E 210 GPa, ν 0.28 | {} / {} mm | {:.3} / {:.3} mm | two-body modulus 1/E* = 2(1−ν²)/E; the thesis rounds |", fig("hertz_a_mm").unwrap_or(f64::NAN), fig("hertz_b_mm").unwrap_or(f64::NAN), h.scene.a_mm, h.scene.b_mm);
@@ -66,11 +69,12 @@ pub fn timing(scenes: &[StoredScene], refs: &References) -> Section {
     let mut table =
         Table::new(&["scene", "steps", "solver", "wall s", "ms per step", "CONTACT s", "CONTACT ms per step"]);
     let mut walls = Vec::new();
+    let contact = refs.get::<ContactCases>(contact::EXACT);
     for sc in scenes {
         for (solver, h) in &sc.histories {
             let w = sc.timing.get(solver).map(|t| t.wall_s).unwrap_or(f64::NAN);
             walls.push(if w.is_finite() { w } else { 0.0 });
-            let c = refs.contact.cases.get(&sc.name);
+            let c = contact.and_then(|c| c.cases.get(&sc.name));
             table.rows.push(format!(
                 "| {} | {} | {solver} | {w:.4} | {:.4} | {} | {} |",
                 sc.name,
@@ -137,12 +141,13 @@ pub fn stability(scenes: &[StoredScene]) -> Option<Section> {
 
 /// Convergence under grid refinement: the steady sweeps on 22, 44 and 88 against CONTACT's 88×88.
 pub fn grid_convergence(scenes: &[StoredScene], refs: &References) -> Option<Section> {
-    let ff = refs.contact.history("steady_exact_g88")?.column("fx_over_fn")?;
+    let contact = refs.get::<ContactCases>(contact::EXACT)?;
+    let ff = contact.history("steady_exact_g88")?.column("fx_over_fn")?;
     let mut s = String::from("Steady sweeps cx = 0 … 0.01 (μ 0.4) on 22×22, 44×44 and 88×88: max |f − f_CONTACT,88×88| over the 101 creepages, and each grid's own CONTACT result for scale.\n\n| grid | solver | max error vs CONTACT 88×88 |\n|---|---|---|\n");
     let max_err =
         |h: &History| h.column("fx_over_fn").map(|c| c.iter().zip(&ff).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max));
     for (name, grid) in [("steady_exact_g22", 22), ("steady_exact_g44", 44), ("steady_exact_g88", 88)] {
-        if let Some(e) = refs.contact.history(name).and_then(max_err) {
+        if let Some(e) = contact.history(name).and_then(max_err) {
             let _ = writeln!(s, "| {grid} | CONTACT | {e:.5} |");
         }
         let Some(sc) = find(scenes, name) else { continue };

@@ -3,6 +3,7 @@
 //! solver's three grids extrapolated to zero element size (Richardson, with the observed order) —
 //! against its wall time per simulated second, on one log–log diagram. Reads stored results only.
 
+use crate::comparison::references::contact::{self, ContactCases};
 use crate::comparison::references::References;
 use crate::history::History;
 use crate::report::plot::{line_chart, Series};
@@ -82,6 +83,7 @@ impl Extrapolated {
 /// The section, if the three grids of the exact solver are stored and converge.
 pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
     let find = |name: &str| scenes.iter().find(|s| s.name == name);
+    let contact = refs.get::<ContactCases>(contact::EXACT);
     let exact: Vec<&History> = GRIDS.iter().filter_map(|(n, _)| find(n).and_then(|s| s.histories.get(EXACT))).collect();
     let [c, m, f] = exact[..] else { return None };
     let x = richardson(c, m, f)?;
@@ -107,7 +109,7 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
             );
             curves.entry(solver.clone()).or_default().push((wall / sim_s, err.max(1e-12).log10()));
         }
-        if let (Some(c), Some(ch)) = (refs.contact.cases.get(name), refs.contact.history(name)) {
+        if let (Some(c), Some(ch)) = (contact.and_then(|c| c.cases.get(name)), contact.and_then(|c| c.history(name))) {
             let err = x.error(ch);
             let _ = writeln!(
                 s,

@@ -1,6 +1,7 @@
 //! Reference data from outside the project (reference/README.md), read only. Each reference set
-//! is one file implementing [`ReferenceSet`]: it loads its data and compares stored results with
-//! it; [`References::sets`] is the registry the gate and the report iterate.
+//! is one file implementing [`ReferenceSet`] (it loads its data and compares stored results with
+//! it) and one entry of [`SETS`], the registry the gate, the tolerances and the report ask: its
+//! labels with their catch-all rules, its loader and the report section that draws its cases.
 
 pub mod contact;
 pub mod envelope;
@@ -8,22 +9,18 @@ pub mod table;
 pub mod thesis;
 
 use crate::comparison::finding::{Against, Finding};
-use crate::comparison::rule::Rule;
+use crate::comparison::rule::{self, Rule};
 use crate::error::{Error, InputError};
 use crate::history::History;
 use crate::suite::results::StoredScene;
+use std::any::Any;
 use std::path::Path;
 
 /// Default location of the reference data.
 pub const DEFAULT_DIR: &str = "reference";
 
-/// Every label the reference sets' findings carry (a set may use more than one: CONTACT's exact
-/// theory and its FASTSIM): what a tolerance rule may name besides golden and previous.
-pub const LABELS: [Against; 6] =
-    [contact::EXACT, contact::FASTSIM, envelope::ENVELOPE, envelope::NONHERTZ, table::TABLE, thesis::AGAINST];
-
 /// A set of reference results.
-pub trait ReferenceSet: Send + Sync {
+pub trait ReferenceSet: Any + Send + Sync {
     /// Short label of the set (findings, the report).
     fn label(&self) -> &'static str;
     /// Every comparison of a stored scene with this set (none when it holds nothing for it),
@@ -33,19 +30,87 @@ pub trait ReferenceSet: Send + Sync {
     fn history(&self, scene: &str) -> Option<&History>;
 }
 
-/// Every reference set the project holds.
-#[derive(Debug, Clone, Default)]
+/// One entry of the registry: a reference set.
+pub struct SetDef {
+    /// The labels its findings carry (CONTACT's cases use two: the exact theory and its
+    /// FASTSIM), each with the reason of its catch-all rule: what no rule of `tolerances.toml`
+    /// covers is reported, with no tolerance ([`rule::catch_all`]).
+    pub labels: &'static [(Against, &'static str)],
+    /// Read the set from the reference folder.
+    pub load: fn(&Path) -> Result<Box<dyn ReferenceSet>, Error>,
+    /// The id of the report section that draws its cases (`None`: the report's scene groups
+    /// draw them, with the set's history as markers).
+    pub section: Option<&'static str>,
+}
+
+/// The registry: every reference set, in the order of the gate and the report. Adding a set:
+/// its file and a line here (and its gated rules in `tolerances.toml`, if it has any).
+pub const SETS: [SetDef; 5] = [
+    SetDef {
+        labels: &[
+            (contact::EXACT, "simplified models differ from the exact theory by design; the report shows by how much"),
+            (contact::FASTSIM, "reported"),
+        ],
+        load: |dir| Ok(Box::new(contact::ContactCases::load(dir)?)),
+        section: None,
+    },
+    SetDef {
+        labels: &[(
+            envelope::ENVELOPE,
+            "the fast models against the exact theory on the envelope: reported per case, not gated (issue 12)",
+        )],
+        load: |dir| Ok(Box::new(envelope::EnvelopeCases::load(dir, "contact_envelope", envelope::ENVELOPE)?)),
+        section: Some(ENVELOPE_SECTION),
+    },
+    SetDef {
+        labels: &[(
+            envelope::NONHERTZ,
+            "the fast models on non-Hertzian contacts: reported per case, not gated (issue 13)",
+        )],
+        load: |dir| Ok(Box::new(envelope::EnvelopeCases::load(dir, "contact_nonhertz", envelope::NONHERTZ)?)),
+        section: Some(NONHERTZ_SECTION),
+    },
+    SetDef {
+        labels: &[(
+            table::TABLE,
+            "the fast models against CONTACT on its test table: reported (the model ladder), not gated",
+        )],
+        load: |dir| Ok(Box::new(table::load(dir)?)),
+        section: None,
+    },
+    SetDef {
+        labels: &[(
+            thesis::AGAINST,
+            "the thesis's figures were read off its plots and used another grid treatment; reported beside ours",
+        )],
+        load: |dir| Ok(Box::new(thesis::ThesisTables::load(dir)?)),
+        section: None,
+    },
+];
+
+/// The id of the report section of CONTACT's envelope cases.
+pub const ENVELOPE_SECTION: &str = "envelope";
+/// The id of the report section of CONTACT's non-Hertzian cases.
+pub const NONHERTZ_SECTION: &str = "nonhertz";
+
+/// Every label the reference sets' findings carry: what a tolerance rule may name besides golden
+/// and previous.
+pub fn labels() -> impl Iterator<Item = Against> {
+    SETS.iter().flat_map(|s| s.labels.iter().map(|(l, _)| *l))
+}
+
+/// Each label's last rule, in the registry's order: reported, no tolerance.
+pub fn catch_alls() -> impl Iterator<Item = Rule> {
+    SETS.iter().flat_map(|s| s.labels.iter().map(|(l, why)| rule::catch_all(*l, why)))
+}
+
+/// Every reference set the project holds, loaded, in the registry's order.
 pub struct References {
-    pub contact: contact::ContactCases,
-    pub envelope: envelope::EnvelopeCases,
-    pub nonhertz: envelope::EnvelopeCases,
-    /// CONTACT's own test table (3220 steady cases).
-    pub table: envelope::EnvelopeCases,
-    pub thesis: thesis::ThesisTables,
+    sets: Vec<(&'static SetDef, Box<dyn ReferenceSet>)>,
 }
 
 impl References {
-    /// Load every set from `dir`.
+    /// Load every set of the registry from `dir`.
     pub fn load(dir: &Path) -> Result<References, Error> {
         if !dir.is_dir() {
             let allowed = "a folder of reference data (CONTACT, thesis) with its MANIFEST.sha256";
@@ -54,24 +119,36 @@ impl References {
         // Every file against the reviewed checksums: a changed, missing or extra reference file
         // fails until its manifest is updated in a reviewed commit.
         crate::safety::manifest::verify(dir).map_err(|source| Error::Manifest { dir: dir.to_path_buf(), source })?;
-        Ok(References {
-            contact: contact::ContactCases::load(dir)?,
-            envelope: envelope::EnvelopeCases::load(dir, "contact_envelope", envelope::ENVELOPE)?,
-            nonhertz: envelope::EnvelopeCases::load(dir, "contact_nonhertz", envelope::NONHERTZ)?,
-            table: table::load(dir)?,
-            thesis: thesis::ThesisTables::load(dir)?,
-        })
+        let sets = SETS.iter().map(|def| Ok((def, (def.load)(dir)?))).collect::<Result<_, Error>>()?;
+        Ok(References { sets })
     }
 
-    /// The registry: every set, in the order of the report. Adding a set: its file, a field and
-    /// a line here.
-    pub fn sets(&self) -> [&dyn ReferenceSet; 5] {
-        [&self.contact, &self.envelope, &self.nonhertz, &self.table, &self.thesis]
+    /// Every set, in the registry's order.
+    pub fn sets(&self) -> impl Iterator<Item = &dyn ReferenceSet> {
+        self.sets.iter().map(|(_, s)| s.as_ref())
+    }
+
+    /// The set whose first label is `label`, as its own type (`None`: no such set of that type).
+    pub fn get<T: ReferenceSet>(&self, label: Against) -> Option<&T> {
+        let (_, set) = self.sets.iter().find(|(def, _)| def.labels.first().is_some_and(|(l, _)| *l == label))?;
+        (set.as_ref() as &dyn Any).downcast_ref::<T>()
+    }
+
+    /// The set that the report section `id` draws, as its own type.
+    pub fn of_section<T: ReferenceSet>(&self, id: &str) -> Option<&T> {
+        let (_, set) = self.sets.iter().find(|(def, _)| def.section == Some(id))?;
+        (set.as_ref() as &dyn Any).downcast_ref::<T>()
+    }
+
+    /// Whether a set with a report section of its own holds this scene (its cases are drawn
+    /// there, not in the report's scene groups).
+    pub fn in_own_section(&self, scene: &str) -> bool {
+        self.sets.iter().any(|(def, set)| def.section.is_some() && set.history(scene).is_some())
     }
 
     /// The first history any set holds for a scene (drawn as markers in the plots).
     pub fn history(&self, scene: &str) -> Option<&History> {
-        self.sets().into_iter().find_map(|s| s.history(scene))
+        self.sets().find_map(|s| s.history(scene))
     }
 }
 
