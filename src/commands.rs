@@ -9,9 +9,9 @@ use crate::comparison::tolerance_file::{self, Rule};
 use crate::comparison::tolerances;
 use crate::error::{Error, InputError};
 use crate::pipeline;
-use crate::report::sections;
 use crate::report::table;
 use crate::report::{self, ReportInput};
+use crate::report::{ladder, registry};
 use crate::safety::{folder, guard, lock};
 use crate::suite::results::{self, StoredScene};
 use crate::suite::{self, Shard};
@@ -128,11 +128,10 @@ pub fn build_report(
 ) -> Result<PathBuf, Error> {
     let mut findings = compare::evaluate(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
     tolerance_file::apply(rules, &mut findings, |_| false)?;
-    let mut all = sections::all(scenes, refs);
+    let mut all = registry::all(scenes, refs);
     // Calibration right after the model ladder (or last, without one).
-    let at = all.iter().position(|s| s.title.starts_with("Model ladder")).map_or(all.len(), |i| i + 1);
     if let Some(c) = calibration::section(fits) {
-        all.insert(at, c);
+        registry::insert_after(&mut all, ladder::ID, c);
     }
     let input = ReportInput { scenes, refs, findings: &findings, sections: all };
     let report = report::build(&input);

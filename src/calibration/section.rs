@@ -6,6 +6,9 @@ use crate::calibration::fit::record::FitRecord;
 use crate::report::section::Section;
 use std::fmt::Write;
 
+/// The section's id (it follows the model ladder: [`crate::report::registry::insert_after`]).
+pub const ID: &str = "calibration";
+
 /// The section, if any fit was stored.
 pub fn section(records: &[FitRecord]) -> Option<Section> {
     if records.is_empty() {
@@ -38,10 +41,5 @@ pub fn section(records: &[FitRecord]) -> Option<Section> {
             );
         }
     }
-    Some(Section {
-        title: "Calibration: fitted parameters and how far they carry".into(),
-        body,
-        figures: Vec::new(),
-        tables: Vec::new(),
-    })
+    Some(Section { id: ID, ..Section::new("Calibration: fitted parameters and how far they carry", body) })
 }

@@ -145,5 +145,5 @@ fn case_section(scenes: &[StoredScene], set: &EnvelopeCases, spec: &Spec) -> Opt
         }
     }
     let _ = writeln!(body, "\n{pictures}");
-    Some(Section { title: spec.title.into(), body, figures, tables: Vec::new() })
+    Some(Section { figures, ..Section::new(spec.title, body) })
 }

@@ -23,6 +23,14 @@ struct Tally {
     rows: usize,
 }
 
+/// The section's id (the calibration section follows it).
+pub const ID: &str = "ladder";
+
+/// Whether any stored scene holds the exact solver beside another model.
+pub fn applies(scenes: &[StoredScene]) -> bool {
+    scenes.iter().any(|s| s.histories.contains_key(EXACT) && s.histories.len() > 1)
+}
+
 /// The ladder section, if any stored scene holds the exact solver beside another model.
 pub fn section(scenes: &[StoredScene]) -> Option<Section> {
     let mut tallies: BTreeMap<(String, String), Tally> = BTreeMap::new();
@@ -65,12 +73,7 @@ pub fn section(scenes: &[StoredScene]) -> Option<Section> {
         );
     }
     body.push_str(&by_series(scenes));
-    Some(Section {
-        title: "Model ladder: every model against the exact theory".into(),
-        body,
-        figures: Vec::new(),
-        tables: Vec::new(),
-    })
+    Some(Section::new("Model ladder: every model against the exact theory", body))
 }
 
 /// Per study, per series (the study's other axes at one value each: for CONTACT's test table, one

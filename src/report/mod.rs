@@ -6,6 +6,7 @@ pub mod envelope;
 pub mod ladder;
 pub mod linked_table;
 pub mod plot;
+pub mod registry;
 pub mod section;
 pub mod sections;
 pub mod studies;
@@ -30,29 +31,46 @@ use std::collections::BTreeMap;
 use std::fmt::Write;
 use std::path::Path;
 
-/// A scene group of the report: (title, predicate on the scene name).
-type Group = (&'static str, fn(&str) -> bool);
+/// A scene group of the report: its title, which scenes it holds, and how they are drawn.
+struct Group {
+    title: &'static str,
+    member: fn(&str) -> bool,
+    /// Whether its sine scenes draw their time history beside their loop (where the delay is the
+    /// subject); every other scene draws its history or sweep anyway.
+    sine_histories: bool,
+    /// Whether it is drawn at all (a group whose scenes only feed the report's sections is not).
+    drawn: bool,
+}
 
-/// Scene groups of the report.
+const fn group(title: &'static str, member: fn(&str) -> bool) -> Group {
+    Group { title, member, sine_histories: false, drawn: true }
+}
+
+/// Scene groups of the report; a scene belongs to the first that holds it, the last holds any.
 const GROUPS: &[Group] = &[
-    ("Step response: friction", |n| n.starts_with("step_mu")),
-    ("Step response: load, shape and creepage", |n| n.starts_with("step_") && !n.starts_with("step_mu")),
-    ("Sine: frequency at μ = 1", |n| n.starts_with("sine_f") && n.ends_with("_mu10")),
-    ("Sine: frequency at μ = 0.6", |n| n.starts_with("sine_f") && n.ends_with("_mu06")),
-    ("Sine: friction at 10 Hz", |n| n.starts_with("sine_f10_mu0")),
-    ("Sine: normal load", |n| n.starts_with("sine_f") && n.contains("_fn")),
-    ("Sine: mean creepage C0", |n| n.starts_with("sine_f10_c0_")),
-    ("Grid refinement", |n| n.starts_with("sine") && (n.ends_with("_g44") || n.ends_with("_g88"))),
-    ("Steady sweeps", |n| n.starts_with("steady_")),
-    ("Stability and extreme cases", |n| n.starts_with("stab_")),
-    (STUDIES, |n| n.starts_with("report_")),
+    group("Step response: friction", |n| n.starts_with("step_mu")),
+    group("Step response: load, shape and creepage", |n| n.starts_with("step_") && !n.starts_with("step_mu")),
+    Group {
+        sine_histories: true,
+        ..group("Sine: frequency at μ = 1", |n| n.starts_with("sine_f") && n.ends_with("_mu10"))
+    },
+    group("Sine: frequency at μ = 0.6", |n| n.starts_with("sine_f") && n.ends_with("_mu06")),
+    group("Sine: friction at 10 Hz", |n| n.starts_with("sine_f10_mu0")),
+    group("Sine: normal load", |n| n.starts_with("sine_f") && n.contains("_fn")),
+    group("Sine: mean creepage C0", |n| n.starts_with("sine_f10_c0_")),
+    Group {
+        sine_histories: true,
+        ..group("Grid refinement", |n| n.starts_with("sine") && (n.ends_with("_g44") || n.ends_with("_g88")))
+    },
+    group("Steady sweeps", |n| n.starts_with("steady_")),
+    group("Stability and extreme cases", |n| n.starts_with(sections::STABILITY_SCENES)),
+    Group { drawn: false, ..group("Studies behind the report's sections", |n| n.starts_with("report_")) },
+    group("Other scenes", |_| true),
 ];
 
-/// The group of the scenes that only feed the report's sections (no plots of their own).
-const STUDIES: &str = "Studies behind the report's sections";
-
-fn group_of(name: &str) -> &'static str {
-    GROUPS.iter().find(|(_, p)| p(name)).map(|g| g.0).unwrap_or("Other scenes")
+/// The index in [`GROUPS`] of the group that holds a scene.
+fn group_of(name: &str) -> usize {
+    GROUPS.iter().position(|g| (g.member)(name)).unwrap_or(GROUPS.len() - 1)
 }
 
 /// Down-sample a curve to at most `n` points (keeps the plot files small).
@@ -339,15 +357,17 @@ pub fn build(input: &ReportInput) -> Report {
 
     // Groups with plots.
     let _ = writeln!(md, "## Histories and loops by group\n");
-    let mut titles: Vec<&str> = GROUPS.iter().map(|g| g.0).collect();
-    titles.push("Other scenes");
-    for title in titles {
+    for (k, group) in GROUPS.iter().enumerate() {
         // A reference set's cases drawn in a section of their own are not drawn again.
-        let members: Vec<&StoredScene> =
-            input.scenes.iter().filter(|s| group_of(&s.name) == title && !input.refs.in_own_section(&s.name)).collect();
-        if members.is_empty() || title == STUDIES {
+        let members: Vec<&StoredScene> = input
+            .scenes
+            .iter()
+            .filter(|s| group_of(&s.name) == k && input.refs.section_of(&s.name).is_none())
+            .collect();
+        if members.is_empty() || !group.drawn {
             continue;
         }
+        let title = group.title;
         let _ = writeln!(md, "### {title}\n");
         for sc in members {
             let contact = input.refs.history(&sc.name);
@@ -365,10 +385,7 @@ pub fn build(input: &ReportInput) -> Report {
                 );
             }
             // Sine scenes show their loop; the time history only where the delay is the subject.
-            if sc.scene.period_s().is_none()
-                || title.starts_with("Sine: frequency at μ = 1")
-                || title == "Grid refinement"
-            {
+            if sc.scene.period_s().is_none() || group.sine_histories {
                 let file = format!("{}_{}.svg", sc.name, if sweep { "sweep" } else { "history" });
                 figures.push((file.clone(), line_chart(&sc.name, xl, "f = Fx/FN", &series, false)));
                 let _ = writeln!(md, "![{}](figures/{file})", sc.name);

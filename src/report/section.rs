@@ -4,6 +4,8 @@
 /// to linked files (file name, Markdown; [`crate::report::linked_table`]).
 #[derive(Debug, Clone, Default)]
 pub struct Section {
+    /// Its id in the section registry (`registry.rs`, which sets it).
+    pub id: &'static str,
     pub title: String,
     pub body: String,
     pub figures: Vec<(String, String)>,

@@ -18,6 +18,15 @@ fn find<'a>(scenes: &'a [StoredScene], name: &str) -> Option<&'a StoredScene> {
     scenes.iter().find(|s| s.name == name)
 }
 
+/// The scenes of the stability suite (`scenes/stability/`): their names' prefix.
+pub const STABILITY_SCENES: &str = "stab_";
+/// The scenes of the cost-per-step study (`scenes/report/`): their names' prefix.
+pub const SCALING_SCENES: &str = "report_scaling_";
+/// The scene of the thesis's Hertz example (`scenes/report/`).
+pub const HERTZ_RADII: &str = "report_hertz_radii";
+/// The steady sweeps on three grids, with their grid (CONTACT's 88×88 is the reference).
+const REFINED: [(&str, usize); 3] = [("steady_exact_g22", 22), ("steady_exact_g44", 44), ("steady_exact_g88", 88)];
+
 /// The Table 4.3 studies: (scene, label).
 const TABLE_4_3: [(&str, &str); 4] = [
     ("report_t43_kalker_parabolic", "Kalker L, parabolic bound (default)"),
@@ -32,7 +41,7 @@ pub fn thesis_beside_ours(scenes: &[StoredScene], refs: &References) -> Section 
     let thesis = refs.get::<ThesisTables>(thesis::AGAINST);
     let fig = |k: &str| thesis.and_then(|t| t.figure(k));
     let _ = writeln!(s, "| figure | thesis | this project | note |\n|---|---|---|---|");
-    if let Some(h) = find(scenes, "report_hertz_radii") {
+    if let Some(h) = find(scenes, HERTZ_RADII) {
         let _ = writeln!(s, "| Hertz a, b from R_wx 575, R_wy 500, R_ry 300 mm, 100 kN, E 210 GPa, ν 0.28 | {} / {} mm | {:.3} / {:.3} mm | two-body modulus 1/E* = 2(1−ν²)/E; the thesis rounds |", fig("hertz_a_mm").unwrap_or(f64::NAN), fig("hertz_b_mm").unwrap_or(f64::NAN), h.scene.a_mm, h.scene.b_mm);
     }
     let t43 = fig("table_4_3_f_step29_cx001");
@@ -102,11 +111,8 @@ pub fn timing(scenes: &[StoredScene], refs: &References) -> Section {
 /// The stability suite (scenes named `stab_*`): per scene and solver, whether every value is
 /// finite, the largest |f|/μ, the oscillation and sawtooth indicators and, for the iterating
 /// models, the iteration counts and the solves that hit the iteration limit.
-pub fn stability(scenes: &[StoredScene]) -> Option<Section> {
-    let stab: Vec<&StoredScene> = scenes.iter().filter(|s| s.name.starts_with("stab_")).collect();
-    if stab.is_empty() {
-        return None;
-    }
+pub fn stability(scenes: &[StoredScene]) -> Section {
+    let stab: Vec<&StoredScene> = scenes.iter().filter(|s| s.name.starts_with(STABILITY_SCENES)).collect();
     let mut s = String::from("Extreme and stiff cases (`scenes/stability/`). The traction bound keeps |τ| ≤ μp even when a scheme has blown up, so the bound proves nothing; the indicators do: *oscillation* is the fraction of steps where f turns (a smooth response: about 2 per period; a step-to-step sawtooth: about 1; changes below 1e-6 of max |f|, the jitter of a converged iterative solver, do not count), *sawtooth* the largest fraction of loaded elements where the traction field τx zig-zags along x. A courant number above 1 is refused before anything runs (exit 2).\n\n| scene | solver | steps | all finite | max \\|f\\|/μ | last f | oscillation | sawtooth | iterations max | iteration limit hit | warnings |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
     for sc in stab {
         for (solver, h) in &sc.histories {
@@ -136,17 +142,17 @@ pub fn stability(scenes: &[StoredScene]) -> Option<Section> {
             );
         }
     }
-    Some(Section::new("Stability", s))
+    Section::new("Stability", s)
 }
 
 /// Convergence under grid refinement: the steady sweeps on 22, 44 and 88 against CONTACT's 88×88.
 pub fn grid_convergence(scenes: &[StoredScene], refs: &References) -> Option<Section> {
     let contact = refs.get::<ContactCases>(contact::EXACT)?;
-    let ff = contact.history("steady_exact_g88")?.column("fx_over_fn")?;
+    let ff = contact.history(REFINED[2].0)?.column("fx_over_fn")?;
     let mut s = String::from("Steady sweeps cx = 0 … 0.01 (μ 0.4) on 22×22, 44×44 and 88×88: max |f − f_CONTACT,88×88| over the 101 creepages, and each grid's own CONTACT result for scale.\n\n| grid | solver | max error vs CONTACT 88×88 |\n|---|---|---|\n");
     let max_err =
         |h: &History| h.column("fx_over_fn").map(|c| c.iter().zip(&ff).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max));
-    for (name, grid) in [("steady_exact_g22", 22), ("steady_exact_g44", 44), ("steady_exact_g88", 88)] {
+    for (name, grid) in REFINED {
         if let Some(e) = contact.history(name).and_then(max_err) {
             let _ = writeln!(s, "| {grid} | CONTACT | {e:.5} |");
         }
@@ -164,7 +170,7 @@ pub fn grid_convergence(scenes: &[StoredScene], refs: &References) -> Option<Sec
 /// per step = (wall − set-up) / steps, with the fitted growth exponent (least squares, log–log).
 pub fn scaling(scenes: &[StoredScene]) -> Option<Section> {
     let mut per_solver: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
-    for sc in scenes.iter().filter(|s| s.name.starts_with("report_scaling_")) {
+    for sc in scenes.iter().filter(|s| s.name.starts_with(SCALING_SCENES)) {
         for (solver, h) in &sc.histories {
             let Some(t) = sc.timing.get(solver) else { continue };
             let per_step = ((t.wall_s - t.setup_s) / h.rows.len().max(1) as f64).max(1e-12);
@@ -200,24 +206,7 @@ pub fn scaling(scenes: &[StoredScene]) -> Option<Section> {
     let svg = line_chart("Cost per step against elements", "elements (log)", "log10(seconds per step)", &series, true);
     s.push_str("\n![cost per step](figures/cost_per_step.svg)\n");
     Some(Section {
-        title: "Cost per step against grid size".into(),
-        body: s,
         figures: vec![("cost_per_step.svg".into(), svg)],
-        tables: Vec::new(),
+        ..Section::new("Cost per step against grid size", s)
     })
-}
-
-/// Every section, in the report's order.
-pub fn all(scenes: &[StoredScene], refs: &References) -> Vec<Section> {
-    let mut out = vec![thesis_beside_ours(scenes, refs)];
-    out.extend(crate::report::ladder::section(scenes));
-    out.extend(crate::report::studies::section(scenes, refs));
-    out.extend(crate::report::envelope::section(scenes, refs));
-    out.extend(crate::report::envelope::nonhertz_section(scenes, refs));
-    out.extend(crate::report::work_precision::section(scenes, refs));
-    out.extend(grid_convergence(scenes, refs));
-    out.extend(stability(scenes));
-    out.push(timing(scenes, refs));
-    out.extend(scaling(scenes));
-    out
 }

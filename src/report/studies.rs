@@ -129,5 +129,5 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
             figures.push((file, svg));
         }
     }
-    Some(Section { title: "Parameter studies".into(), body, figures, tables: Vec::new() })
+    Some(Section { figures, ..Section::new("Parameter studies", body) })
 }

@@ -80,6 +80,11 @@ impl Extrapolated {
     }
 }
 
+/// Whether the scene's three grids are stored (the section needs them, and their convergence).
+pub fn applies(scenes: &[StoredScene]) -> bool {
+    GRIDS.iter().all(|(n, _)| scenes.iter().any(|s| s.name == *n))
+}
+
 /// The section, if the three grids of the exact solver are stored and converge.
 pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
     let find = |name: &str| scenes.iter().find(|s| s.name == name);
@@ -131,10 +136,8 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
     );
     s.push_str("\n![work-precision](figures/error_vs_time.svg)\n");
     Some(Section {
-        title: "Work–precision: error against a grid-converged reference and run time".into(),
-        body: s,
         figures: vec![("error_vs_time.svg".into(), svg)],
-        tables: Vec::new(),
+        ..Section::new("Work–precision: error against a grid-converged reference and run time", s)
     })
 }
 

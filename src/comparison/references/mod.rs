@@ -140,10 +140,10 @@ impl References {
         (set.as_ref() as &dyn Any).downcast_ref::<T>()
     }
 
-    /// Whether a set with a report section of its own holds this scene (its cases are drawn
-    /// there, not in the report's scene groups).
-    pub fn in_own_section(&self, scene: &str) -> bool {
-        self.sets.iter().any(|(def, set)| def.section.is_some() && set.history(scene).is_some())
+    /// The report section that draws this scene, if a set with a section of its own holds it
+    /// (its cases are drawn there, not in the report's scene groups).
+    pub fn section_of(&self, scene: &str) -> Option<&'static str> {
+        self.sets.iter().find_map(|(def, set)| def.section.filter(|_| set.history(scene).is_some()))
     }
 
     /// The first history any set holds for a scene (drawn as markers in the plots).
