@@ -2,11 +2,13 @@
 
 use crate::error::{Error, InputError};
 use crate::harness::suite::SceneSource;
+use crate::history::external::External;
+use crate::history::sample_loop::{self, FieldIndicator};
 use crate::history::History;
-use crate::metrics::{self, Metric, MetricDef, MetricKind};
+use crate::metrics::{self, Metric};
 use crate::problem::Problem;
 use crate::scene::Scene;
-use crate::solvers::{self, external::External, sample_loop, Termination};
+use crate::solvers::{self, Termination};
 use std::path::Path;
 use std::time::Instant;
 
@@ -76,15 +78,15 @@ pub fn load_source(source: &SceneSource, only: &[String]) -> Result<Problem, Err
 
 /// Run the problem's models (only those it lists) and compute its metrics.
 pub fn run(mut problem: Problem) -> Result<SceneResult, Error> {
-    let field_metrics: Vec<&'static MetricDef> = problem
-        .metrics
-        .iter()
-        .filter_map(|m| metrics::by_name(m))
-        .filter(|m| matches!(m.kind, MetricKind::Field(_)))
-        .collect();
+    let field_metrics: Vec<FieldIndicator> =
+        problem.metrics.iter().filter_map(|m| metrics::by_name(m)?.field_indicator()).collect();
     let (mut histories, mut timing, mut all_metrics) = (Vec::new(), Vec::new(), Vec::new());
     for name in &problem.solvers {
-        let fail = |source| Error::Solve { scene: problem.name.clone(), solver: name.clone(), source };
+        let fail = |e: solvers::SolveError| Error::Solve {
+            scene: problem.name.clone(),
+            solver: name.clone(),
+            source: Box::new(e),
+        };
         let (h, t, field) = match solvers::builtin(name) {
             Some(def) => {
                 let r = sample_loop::run(&problem, def, &field_metrics, None).map_err(fail)?;

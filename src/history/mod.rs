@@ -1,5 +1,9 @@
 //! Step 4 of the pipeline: a solver's output, one row per time step (or sweep point), in the
-//! `<solver>.csv` format of interface.md.
+//! `<solver>.csv` format of interface.md; made by the [`sample_loop`] from a built-in model's
+//! steps, or read from an [`external`] model's output.
+
+pub mod external;
+pub mod sample_loop;
 
 use crate::error::{excerpt, FormatError};
 use crate::problem::Sample;
