@@ -2,6 +2,7 @@
 //! undeformed distance that yields prescribed semi-axes.
 
 use super::material::Material;
+use super::pressure::PressureShape;
 use ellip::{ellipke, elliprd, elliprf};
 use std::f64::consts::PI;
 
@@ -35,7 +36,7 @@ pub struct HertzError(pub String);
 impl HertzContact {
     /// Peak of the ellipsoidal (Hertz) pressure `p0 = 3 FN / (2 π a b)` [MPa] (thesis Eq. 2.17).
     pub fn p0_mpa(&self) -> f64 {
-        1.5 * self.fn_n / (PI * self.a_mm * self.b_mm)
+        PressureShape::Ellipsoidal.peak_mpa(self.fn_n, self.a_mm, self.b_mm)
     }
 
     /// The same ellipse at another load: both semi-axes scale with `(FN'/FN)^(1/3)` (Hertz).
