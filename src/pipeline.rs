@@ -4,7 +4,7 @@ use crate::error::{Error, InputError};
 use crate::harness::suite::SceneSource;
 use crate::history::external::External;
 use crate::history::sample_loop::{self, FieldIndicator};
-use crate::history::History;
+use crate::history::{self, History};
 use crate::metrics::{self, Metric};
 use crate::problem::Problem;
 use crate::scene::Scene;
@@ -110,7 +110,7 @@ pub fn run(mut problem: Problem) -> Result<SceneResult, Error> {
             }
         };
         let limit = Termination::IterationLimit.code();
-        let stuck = h.column("termination").map_or(0, |t| t.iter().filter(|&&c| c == limit).count());
+        let stuck = h.column(history::TERMINATION).map_or(0, |t| t.iter().filter(|&&c| c == limit).count());
         if stuck > 0 {
             problem.warnings.push(format!(
                 "{name}: {stuck} of {} solves reached the iteration limit (contact_solver.max_iterations = {}); those rows are not converged",

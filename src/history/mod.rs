@@ -15,6 +15,10 @@ pub const COLUMNS: [&str; 8] = ["step", "t_s", "cx", "cy", "cs", "fn_n", "fx_ove
 /// (optional in an external model's output, which gets the scene's).
 pub const MU: &str = "mu";
 
+/// The column of each solve's termination code, written after the extra columns of a model whose
+/// solves iterate ([`crate::solvers::Termination::code`]).
+pub const TERMINATION: &str = "termination";
+
 /// The spin-moment column [N·mm] every built-in model writes last (optional for external
 /// models): the references' sign convention, [`crate::physics::moment`].
 pub const MZ: &str = "mz_nmm";

@@ -5,7 +5,7 @@
 //! so it stands above the models it runs and below the metrics, which hand it their field
 //! indicators as plain functions.
 
-use super::{History, Row, MZ};
+use super::{History, Row, MZ, TERMINATION};
 use crate::problem::{Problem, Sample};
 use crate::solvers::stepper::{ElementState, FieldView};
 use crate::solvers::{ModelDef, SolveError};
@@ -45,7 +45,7 @@ pub fn run(
     let setup_s = start.elapsed().as_secs_f64();
     let mut columns: Vec<&str> = def.extra_columns.to_vec();
     if def.iterative {
-        columns.push("termination");
+        columns.push(TERMINATION);
     }
     columns.push(MZ);
     let mut history = History::new(def.name, &columns);

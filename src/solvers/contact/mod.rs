@@ -25,4 +25,4 @@ pub mod tangential;
 
 pub use crate::physics::halfspace::{convolution, influence, normal, ContactError};
 
-pub use stepper::{ContactRunError, MODEL};
+pub use stepper::{ContactRunError, MODEL, NAME};

@@ -13,9 +13,12 @@ use crate::problem::{Problem, Sample};
 use crate::solvers::stepper::{FieldView, Step, Stepper};
 use crate::solvers::{ModelDef, SolveError};
 
+/// The exact model's name in scenes and of its `<name>.csv`.
+pub const NAME: &str = "contact";
+
 /// Kalker's exact theory for quasi-identical half-spaces (CONTACT-style).
 pub const MODEL: ModelDef = ModelDef {
-    name: "contact",
+    name: NAME,
     summary: "Kalker's exact theory on the same grid (CONTACT-style: half-space influence coefficients, normal problem, transient rolling with Coulomb friction)",
     extra_columns: &["n_adhesion", "n_slip", "iterations", "residual", "pn_max_mpa"],
     iterative: true,
