@@ -8,10 +8,11 @@
 //! Run: `cargo bench --bench solvers` (criterion prints time per iteration; divide the UBA time
 //! by mx·my for ns per element-step — scripts/bench_table.sh does it).
 
+use creepbench::history::sample_loop;
 use creepbench::problem::Problem;
 use creepbench::scene::Scene;
 use creepbench::solvers::brush::{self, Tractions};
-use creepbench::solvers::{fastsim, sample_loop, uba};
+use creepbench::solvers::{fastsim, uba};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use std::hint::black_box;
 use std::path::Path;

@@ -233,7 +233,7 @@ fn run_fits(
         // Beside the published model on every suite scene that runs it with the exact theory.
         record.suites = fit::across_suites(&outcome, stored, sources)?;
         let json = serde_json::to_string_pretty(&record)
-            .map_err(|e| Error::Fit { fit: spec.name.clone(), message: e.to_string() })?;
+            .map_err(|e| Error::Fit { fit: spec.name.clone(), source: e.into() })?;
         write_whole(&out.join(format!("{}.json", spec.name)), &json)?;
         write_whole(&out.join(format!("{}.toml", spec.name)), &fit::render(&outcome)?)?;
         eprintln!("fit {}: {} evaluations in {:.1} s", spec.name, outcome.evaluations, start.elapsed().as_secs_f64());

@@ -1,4 +1,7 @@
 //! Error types and the exit-status contract (interface.md): 2 for invalid input, 1 otherwise.
+//! The foundation of the stack (README, "The code"): this module imports no stage above it, so a
+//! stage's own failure (a model's, an external model's) reaches [`Error`] boxed as a
+//! [`StageError`], its typed enum living with its owner.
 
 use std::fmt;
 use std::path::PathBuf;
@@ -60,6 +63,21 @@ pub enum FormatError {
     Json(#[from] serde_json::Error),
 }
 
+/// A failure typed by the stage above this module that owns it (`solvers::SolveError`,
+/// `history::external::ExternalError`), boxed so that the foundation does not import the stages.
+pub type StageError = Box<dyn std::error::Error + Send + Sync + 'static>;
+
+/// Why `creepbench fit` failed.
+#[derive(Debug, thiserror::Error)]
+pub enum FitError {
+    #[error("the optimiser failed: {0}")]
+    Optimiser(argmin::core::Error),
+    #[error("writing its record (JSON): {0}")]
+    Record(#[from] serde_json::Error),
+    #[error("writing its parameters (TOML): {0}")]
+    Toml(#[from] toml::ser::Error),
+}
+
 /// Every failure of the tool.
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
@@ -68,10 +86,10 @@ pub enum Error {
     Input(#[from] InputError),
     /// A built-in model could not produce a trustworthy result (exit status 1).
     #[error("solver `{solver}` failed on scene `{scene}`: {source}")]
-    Solve { scene: String, solver: String, source: crate::solvers::SolveError },
+    Solve { scene: String, solver: String, source: StageError },
     /// An external model failed or wrote unusable output (exit status 1).
-    #[error("external model `{solver}` failed on scene `{scene}`: {message}")]
-    External { scene: String, solver: String, message: String },
+    #[error("external model `{solver}` failed on scene `{scene}`: {source}")]
+    External { scene: String, solver: String, source: StageError },
     /// Gated comparisons drifted (exit status 1).
     #[error("{count} gated comparison(s) drifted")]
     Drift { count: usize },
@@ -97,8 +115,8 @@ pub enum Error {
     #[error("{}: {source} (a reviewed change of reference data updates the manifest: `creepbench manifest {}`)", dir.display(), dir.display())]
     Manifest { dir: PathBuf, source: crate::safety::manifest::ManifestError },
     /// The optimiser of `creepbench fit` failed (exit status 1).
-    #[error("fit `{fit}`: the optimiser failed: {message}")]
-    Fit { fit: String, message: String },
+    #[error("fit `{fit}`: {source}")]
+    Fit { fit: String, source: FitError },
 }
 
 impl Error {

@@ -1,12 +1,14 @@
 //! The straight path scene → resolved problem → models → histories → metrics, for one scene.
 
 use crate::error::{Error, InputError};
-use crate::history::History;
-use crate::metrics::{self, Metric, MetricDef, MetricKind};
+use crate::history::external::External;
+use crate::history::sample_loop::{self, FieldIndicator};
+use crate::history::{self, History};
+use crate::metrics::{self, Metric};
 use crate::problem::Problem;
 use crate::scene::source::SceneSource;
 use crate::scene::Scene;
-use crate::solvers::{self, external::External, sample_loop, Termination};
+use crate::solvers::{self, Termination};
 use std::path::Path;
 use std::time::Instant;
 
@@ -76,15 +78,15 @@ pub fn load_source(source: &SceneSource, only: &[String]) -> Result<Problem, Err
 
 /// Run the problem's models (only those it lists) and compute its metrics.
 pub fn run(mut problem: Problem) -> Result<SceneResult, Error> {
-    let field_metrics: Vec<&'static MetricDef> = problem
-        .metrics
-        .iter()
-        .filter_map(|m| metrics::by_name(m))
-        .filter(|m| matches!(m.kind, MetricKind::Field(_)))
-        .collect();
+    let field_metrics: Vec<FieldIndicator> =
+        problem.metrics.iter().filter_map(|m| metrics::by_name(m)?.field_indicator()).collect();
     let (mut histories, mut timing, mut all_metrics) = (Vec::new(), Vec::new(), Vec::new());
     for name in &problem.solvers {
-        let fail = |source| Error::Solve { scene: problem.name.clone(), solver: name.clone(), source };
+        let fail = |e: solvers::SolveError| Error::Solve {
+            scene: problem.name.clone(),
+            solver: name.clone(),
+            source: Box::new(e),
+        };
         let (h, t, field) = match solvers::builtin(name) {
             Some(def) => {
                 let r = sample_loop::run(&problem, def, &field_metrics, None).map_err(fail)?;
@@ -108,7 +110,7 @@ pub fn run(mut problem: Problem) -> Result<SceneResult, Error> {
             }
         };
         let limit = Termination::IterationLimit.code();
-        let stuck = h.column("termination").map_or(0, |t| t.iter().filter(|&&c| c == limit).count());
+        let stuck = h.column(history::TERMINATION).map_or(0, |t| t.iter().filter(|&&c| c == limit).count());
         if stuck > 0 {
             problem.warnings.push(format!(
                 "{name}: {stuck} of {} solves reached the iteration limit (contact_solver.max_iterations = {}); those rows are not converged",

@@ -4,8 +4,8 @@
 mod common;
 use common::*;
 use creepbench::comparison::references::contact::{ContactCases, EXACT};
+use creepbench::history::sample_loop;
 use creepbench::metrics;
-use creepbench::solvers::contact::run_with_fields;
 use creepbench::solvers::contact::tangential::ElementState;
 use creepbench::solvers::Termination;
 
@@ -127,7 +127,8 @@ fn normal_problem_matches_contact() {
     }
     // Contact set and element pressures against the field file of step_mu04 (step 1).
     let p = thesis_problem("step_mu04");
-    let (_, fields) = run_with_fields(&p, &|s| s == 1 || s == 10).unwrap();
+    let (_, fields) =
+        sample_loop::run_with_fields(&p, &creepbench::solvers::contact::MODEL, &|s| s == 1 || s == 10).unwrap();
     let field = read_field("step_mu04");
     let g = &p.grid;
     let (mut n_ours, mut n_theirs, mut worst_pn) = (0, 0, 0.0f64);
@@ -176,7 +177,7 @@ fn read_field(name: &str) -> Vec<(usize, usize, usize, f64, f64, f64, char)> {
 #[test]
 fn steady_field_matches_contact() {
     let p = thesis_problem("steady_exact_g22");
-    let (_, fields) = run_with_fields(&p, &|s| s == 51).unwrap();
+    let (_, fields) = sample_loop::run_with_fields(&p, &creepbench::solvers::contact::MODEL, &|s| s == 51).unwrap();
     let g = &p.grid;
     let mut worst: f64 = 0.0;
     for (step, ix, iy, _pn, px, _py, _state) in read_field("steady_exact_g22") {

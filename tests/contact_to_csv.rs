@@ -11,19 +11,19 @@
 //!   `creepbench export contact` writes; the integrated totals equal those the reference data
 //!   were integrated to from the original .mat files.
 //!
-//! Skipped, with a notice, where python3 is missing.
+//! Needs python3 (CI has it): where it is missing every test here fails, saying so.
 
 mod common;
 use common::{root, suite_scene, tempdir};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-fn python(args: &[&str], cwd: &Path) -> Option<Output> {
+/// Runs python3; a missing python3 fails the test (it would otherwise test nothing).
+fn python(args: &[&str], cwd: &Path) -> Output {
     match Command::new("python3").args(args).current_dir(cwd).output() {
-        Ok(o) => Some(o),
+        Ok(o) => o,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-            println!("NOTICE: python3 not found; scripts/contact_to_csv.py is not tested");
-            None
+            panic!("python3 not found: these tests run scripts/contact_to_csv.py and need python3 on PATH")
         }
         Err(e) => panic!("python3: {e}"),
     }
@@ -68,11 +68,7 @@ fn printed_totals_of_contacts_own_output_with_the_sign_flips() {
     let dir = tempdir("contact_to_csv_out");
     let csv_path = dir.join("conformal.csv");
     let fixture = root().join("tests/fixtures/contact_output/conformal.ref_out");
-    let Some(o) =
-        python(&[&script(), "--out", fixture.to_str().unwrap(), "--csv", csv_path.to_str().unwrap()], &root())
-    else {
-        return;
-    };
+    let o = python(&[&script(), "--out", fixture.to_str().unwrap(), "--csv", csv_path.to_str().unwrap()], &root());
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let (head, rows) = read_csv(&csv_path);
     assert_eq!(head.join(","), "step,t_s,cx,cy,cs,fn_n,mu,fx_n,fy_n,mz_nmm,fx_over_fn,fy_over_fn,n_adhesion,n_slip");
@@ -184,17 +180,16 @@ fn field_by_step(path: &Path) -> std::collections::BTreeMap<usize, Vec<Vec<Strin
     out
 }
 
-/// `mat_totals` of the script for each .mat file: `[totals, error bounds]` per file, or `None`
-/// where python3 is missing.
-fn mat_totals(files: &[String], dir: &Path) -> Option<Vec<serde_json::Value>> {
+/// `mat_totals` of the script for each .mat file: `[totals, error bounds]` per file.
+fn mat_totals(files: &[String], dir: &Path) -> Vec<serde_json::Value> {
     let code = "import sys, json; sys.path.insert(0, sys.argv[1]); import contact_to_csv as c; \
                 print(json.dumps([c.mat_totals(p) for p in sys.argv[2:]]))";
     let scripts = root().join("scripts").display().to_string();
     let mut args = vec!["-c", code, &scripts];
     args.extend(files.iter().map(String::as_str));
-    let o = python(&args, dir)?;
+    let o = python(&args, dir);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    Some(serde_json::from_slice(&o.stdout).unwrap())
+    serde_json::from_slice(&o.stdout).unwrap()
 }
 
 /// The default contact's grid (a 8.56, b 4.08 mm, 22 × 22, SCALE 1) as a .mat prints it.
@@ -227,9 +222,7 @@ fn per_element_files_of_an_exported_run_integrate_to_the_reference_history() {
         write_mat(&dir.join(format!("step_mu04.{step:04}.mat")), default_grid(), 0.4, cells);
     }
     let out_csv = dir.join("step_mu04.csv");
-    let Some(o) = python(&[&script(), inp.to_str().unwrap(), "--csv", out_csv.to_str().unwrap()], &root()) else {
-        return;
-    };
+    let o = python(&[&script(), inp.to_str().unwrap(), "--csv", out_csv.to_str().unwrap()], &root());
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(o.status.success(), "{err}");
     assert!(err.contains("44 cases: 44 from .mat files"), "{err}");
@@ -271,9 +264,7 @@ fn the_moment_from_the_elements_is_the_references() {
         mats.push((*step, p.display().to_string()));
     }
     assert_eq!(mats.iter().map(|m| m.0).collect::<Vec<_>>(), [23, 44]);
-    let Some(totals) = mat_totals(&mats.iter().map(|m| m.1.clone()).collect::<Vec<_>>(), &dir) else {
-        return;
-    };
+    let totals = mat_totals(&mats.iter().map(|m| m.1.clone()).collect::<Vec<_>>(), &dir);
     for ((step, _), t) in mats.iter().zip(&totals) {
         let r = rows.iter().find(|r| r[col(&head, "step")] == *step as f64).unwrap();
         let want = |n: &str| r[col(&head, n)];
@@ -306,9 +297,7 @@ fn the_digits_bound_the_integrated_totals() {
             mats.push((case, p.display().to_string()));
         }
     }
-    let Some(totals) = mat_totals(&mats.iter().map(|m| m.1.clone()).collect::<Vec<_>>(), &dir) else {
-        return;
-    };
+    let totals = mat_totals(&mats.iter().map(|m| m.1.clone()).collect::<Vec<_>>(), &dir);
     let fn_a = 1e5 * 8.56;
     let (mut longitudinal, mut worst, mut max_bound) = (0, 0.0f64, 0.0f64);
     for ((case, _), t) in mats.iter().zip(&totals) {
@@ -335,16 +324,14 @@ fn missing_results_are_an_input_error() {
     let inp = dir.join("x.inp");
     std::fs::write(&inp, "\n 3  MODULE      % step 1, t=0.001 s\n  2.0   0.001   0.0   0.0    FN, CKSI, CETA, CPHI\n  0.4   0.4   FSTAT, FKIN\n\n 0  MODULE\n").unwrap();
     let out_csv = dir.join("x.csv");
-    let Some(o) = python(&[&script(), inp.to_str().unwrap(), "--csv", out_csv.to_str().unwrap()], &dir) else {
-        return;
-    };
+    let o = python(&[&script(), inp.to_str().unwrap(), "--csv", out_csv.to_str().unwrap()], &dir);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(err.contains("case 1") && err.contains("x.0001.mat"), "{err}");
     assert!(!out_csv.exists());
     // An input creepbench did not write (no step comments) is refused with the way out.
     std::fs::write(&inp, "\n 3  MODULE\n  2.0   0.001   0.0   0.0    FN, CKSI, CETA, CPHI\n").unwrap();
-    let o = python(&[&script(), inp.to_str().unwrap()], &dir).unwrap();
+    let o = python(&[&script(), inp.to_str().unwrap()], &dir);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("--out only"));
 }

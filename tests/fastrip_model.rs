@@ -93,7 +93,7 @@ fn tractions_within_the_bound() {
                 }
             }
         };
-        creepbench::solvers::sample_loop::run(&p, model, &[], Some(&mut check)).unwrap();
+        creepbench::history::sample_loop::run(&p, model, &[], Some(&mut check)).unwrap();
     }
     println!("{adhesion} elements inside the bound, {slip} on it; largest |t|/(mu p) - 1 = {worst:.1e}");
     assert!(worst < 1e-12 && adhesion > 1000 && slip > 1000, "{worst} {adhesion} {slip}");

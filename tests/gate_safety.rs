@@ -275,7 +275,7 @@ fn assert_no_temp_dirs(dir: &Path) {
 }
 
 fn run_model(problem: &Problem) -> Result<creepbench::history::History, String> {
-    creepbench::solvers::external::External::new(problem.external[0].clone()).run(problem).map_err(|e| e.to_string())
+    creepbench::history::external::External::new(problem.external[0].clone()).run(problem).map_err(|e| e.to_string())
 }
 
 /// The rows a correct model writes: the scene's loading, traction 0.1, 0.

@@ -4,11 +4,12 @@
 
 mod common;
 use common::*;
+use creepbench::history::sample_loop;
 use creepbench::metrics::sawtooth_index::sawtooth_index;
 use creepbench::physics::project_to_bound;
 use creepbench::pipeline;
 use creepbench::solvers::brush::{self, Tractions};
-use creepbench::solvers::{sample_loop, FieldView};
+use creepbench::solvers::FieldView;
 
 #[test]
 fn every_stability_scene_is_finite_and_bounded() {
@@ -103,9 +104,13 @@ fn sawtooth_indicator_catches_the_downwind_scheme() {
     let saw = sawtooth_index(&field);
     assert!(bound_ok, "the bound holds even for the unstable scheme");
     assert!(saw > 0.5, "downwind sawtooth index {saw}");
-    let upwind =
-        sample_loop::run(&p, &creepbench::solvers::uba::MODEL, &[&creepbench::metrics::sawtooth_index::METRIC], None)
-            .unwrap();
+    let upwind = sample_loop::run(
+        &p,
+        &creepbench::solvers::uba::MODEL,
+        &[creepbench::metrics::sawtooth_index::METRIC.field_indicator().unwrap()],
+        None,
+    )
+    .unwrap();
     let up_saw = upwind.field_metrics[0].1;
     assert!(up_saw < 0.05, "upwind sawtooth index {up_saw}");
 }

@@ -5,8 +5,11 @@
 use super::{HistoryColumns, MetricDef, MetricKind, MetricValue, OSCILLATION_FLOOR};
 use crate::problem::Loading;
 
+/// The metric's name in scenes and metrics.csv.
+pub const NAME: &str = "delay_ratio";
+
 pub const METRIC: MetricDef = MetricDef {
-    name: "delay_ratio",
+    name: NAME,
     default: true,
     fits: |l, dt_s| super::needs_periods(l, dt_s, 2.0),
     kind: MetricKind::History(compute),

@@ -3,8 +3,11 @@
 use super::{HistoryColumns, MetricDef, MetricKind, MetricValue};
 use crate::problem::Loading;
 
+/// The metric's name in scenes and metrics.csv.
+pub const NAME: &str = "loop_area";
+
 pub const METRIC: MetricDef = MetricDef {
-    name: "loop_area",
+    name: NAME,
     default: true,
     fits: |l, dt_s| super::needs_periods(l, dt_s, 1.0),
     kind: MetricKind::History(compute),

@@ -15,6 +15,7 @@ pub use loop_area::loop_integral;
 pub use oscillation_index::{oscillation_index, turns, OSCILLATION_FLOOR};
 pub use settling_time::settling_time;
 
+use crate::history::sample_loop::FieldIndicator;
 use crate::history::History;
 use crate::problem::Loading;
 use crate::solvers::FieldView;
@@ -50,6 +51,16 @@ pub const METRICS: &[&MetricDef] = &[
     &oscillation_index::METRIC,
     &sawtooth_index::METRIC,
 ];
+
+impl MetricDef {
+    /// The indicator the sample loop evaluates on every solve, for a field metric.
+    pub fn field_indicator(&self) -> Option<FieldIndicator> {
+        match self.kind {
+            MetricKind::Field(f) => Some((self.name, f)),
+            MetricKind::History(_) => None,
+        }
+    }
+}
 
 /// The metric of that name.
 pub fn by_name(name: &str) -> Option<&'static MetricDef> {

@@ -4,8 +4,11 @@
 use super::{HistoryColumns, MetricDef, MetricKind, MetricValue};
 use crate::problem::Loading;
 
+/// The metric's name in scenes and metrics.csv.
+pub const NAME: &str = "oscillation_index";
+
 pub const METRIC: MetricDef = MetricDef {
-    name: "oscillation_index",
+    name: NAME,
     default: false,
     fits: |l, _| if l.is_transient() { Ok(()) } else { Err(super::Unfit::TimeHistoryOnly) },
     kind: MetricKind::History(compute),

@@ -9,8 +9,11 @@ use super::oscillation_index::turns;
 use super::{MetricDef, MetricKind};
 use crate::solvers::FieldView;
 
+/// The metric's name in scenes and metrics.csv.
+pub const NAME: &str = "sawtooth_index";
+
 pub const METRIC: MetricDef =
-    MetricDef { name: "sawtooth_index", default: false, fits: |_, _| Ok(()), kind: MetricKind::Field(sawtooth_index) };
+    MetricDef { name: NAME, default: false, fits: |_, _| Ok(()), kind: MetricKind::Field(sawtooth_index) };
 
 /// The indicator of one traction field.
 pub fn sawtooth_index(v: &FieldView) -> f64 {

@@ -4,8 +4,11 @@
 use super::{HistoryColumns, MetricDef, MetricKind, MetricValue};
 use crate::problem::{Loading, LoadingKind};
 
+/// The metric's name in scenes and metrics.csv.
+pub const NAME: &str = "settling_time_s";
+
 pub const METRIC: MetricDef = MetricDef {
-    name: "settling_time_s",
+    name: NAME,
     default: true,
     fits: |l, _| if l.kind == LoadingKind::Step { Ok(()) } else { Err(super::Unfit::StepOnly) },
     kind: MetricKind::History(compute),

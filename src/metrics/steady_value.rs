@@ -4,8 +4,11 @@
 use super::{HistoryColumns, MetricDef, MetricKind, MetricValue};
 use crate::problem::{Loading, LoadingKind};
 
+/// The metric's name in scenes and metrics.csv.
+pub const NAME: &str = "steady_value";
+
 pub const METRIC: MetricDef =
-    MetricDef { name: "steady_value", default: true, fits: |_, _| Ok(()), kind: MetricKind::History(compute) };
+    MetricDef { name: NAME, default: true, fits: |_, _| Ok(()), kind: MetricKind::History(compute) };
 
 fn compute(l: &Loading, h: &HistoryColumns) -> Vec<MetricValue> {
     if l.kind == LoadingKind::Sweep {

@@ -2,6 +2,7 @@
 //! undeformed distance that yields prescribed semi-axes.
 
 use super::material::Material;
+use super::pressure::PressureShape;
 use ellip::{ellipke, elliprd, elliprf};
 use std::f64::consts::PI;
 
@@ -29,13 +30,22 @@ pub struct HertzContact {
 
 /// Failure of the Hertz solve (only for inputs the scene validation lets through by mistake).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("Hertz: {0}")]
-pub struct HertzError(pub String);
+pub enum HertzError {
+    /// A concave or flat contact (or a load that is not a positive number).
+    #[error("Hertz: curvatures A = {curv_x} /mm and B = {curv_y} /mm must be positive (convex contact)")]
+    NotConvex { curv_x: f64, curv_y: f64 },
+    /// Larger over smaller curvature: not a number ≥ 1.
+    #[error("Hertz: curvature ratio {ratio} must be finite and >= 1")]
+    Ratio { ratio: f64 },
+    /// An ellipse more slender than the bisection resolves.
+    #[error("Hertz: curvature ratio {ratio} is beyond b/a = 3e-8")]
+    TooSlender { ratio: f64 },
+}
 
 impl HertzContact {
     /// Peak of the ellipsoidal (Hertz) pressure `p0 = 3 FN / (2 π a b)` [MPa] (thesis Eq. 2.17).
     pub fn p0_mpa(&self) -> f64 {
-        1.5 * self.fn_n / (PI * self.a_mm * self.b_mm)
+        PressureShape::Ellipsoidal.peak_mpa(self.fn_n, self.a_mm, self.b_mm)
     }
 
     /// The same ellipse at another load: both semi-axes scale with `(FN'/FN)^(1/3)` (Hertz).
@@ -51,9 +61,7 @@ impl HertzContact {
         let curv_x = 0.5 / radii.r_wx_mm; // A (rail straight: 1/R_rx = 0)
         let curv_y = 0.5 * (1.0 / radii.r_wy_mm + 1.0 / radii.r_ry_mm); // B
         if !(curv_x > 0.0 && curv_y > 0.0 && fn_n.is_finite() && fn_n > 0.0) {
-            return Err(HertzError(format!(
-                "curvatures A = {curv_x} /mm and B = {curv_y} /mm must be positive (convex contact)"
-            )));
+            return Err(HertzError::NotConvex { curv_x, curv_y });
         }
         let e_star = material.e_star_mpa();
         // Solve with the long axis along the direction of the smaller curvature, then map back.
@@ -111,7 +119,7 @@ fn complete_ke_over_m(m: f64) -> (f64, f64) {
 /// Eq. 2.19: find m = e² with `((a/b)² E − K)/(K − E) = ratio` (ratio ≥ 1), by bisection.
 fn solve_eccentricity(ratio: f64) -> Result<f64, HertzError> {
     if !ratio.is_finite() || ratio < 1.0 {
-        return Err(HertzError(format!("curvature ratio {ratio} must be finite and >= 1")));
+        return Err(HertzError::Ratio { ratio });
     }
     let f = |m: f64| {
         let (ke, ek) = complete_ke_over_m(m);
@@ -119,7 +127,7 @@ fn solve_eccentricity(ratio: f64) -> Result<f64, HertzError> {
     };
     let (mut lo, mut hi) = (0.0_f64, 1.0 - 1e-15);
     if f(hi) < 0.0 {
-        return Err(HertzError(format!("curvature ratio {ratio} is beyond b/a = 3e-8")));
+        return Err(HertzError::TooSlender { ratio });
     }
     for _ in 0..200 {
         let mid = 0.5 * (lo + hi);

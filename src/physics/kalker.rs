@@ -60,6 +60,31 @@ pub struct Coefficients {
     pub c33: f64,
 }
 
+/// Kalker's linear theory on an ellipse a × b (Kalker 1967; thesis App. A), every force divided by
+/// `per` (FN for traction coefficients, 1 for newtons): `Fx = G a b C11 cx`,
+/// `Fy = G a b C22 cy + G (ab)^(3/2) C23 cs`, `Mz = −G (ab)^(3/2) C23 cy + G (ab)^2 C33 cs`.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct LinearTheory {
+    /// (G a b, G (ab)^(3/2), G (ab)^2) / per.
+    scale: (f64, f64, f64),
+}
+
+impl LinearTheory {
+    /// The theory for shear modulus `g_mpa` on an ellipse `a_mm` × `b_mm`, forces divided by `per`.
+    pub fn new(g_mpa: f64, a_mm: f64, b_mm: f64, per: f64) -> Self {
+        let gab = g_mpa * a_mm * b_mm;
+        let ab = a_mm * b_mm;
+        LinearTheory { scale: (gab / per, gab * ab.sqrt() / per, gab * ab / per) }
+    }
+
+    /// (Fx, Fy, Mz) / per for creepages (cx, cy, cs [1/mm]); Mz in N·mm / per, the references' sign
+    /// convention. Every model's results are compared bit for bit: keep the order of operations.
+    pub fn forces(&self, c: &Coefficients, (cx, cy, cs_per_mm): (f64, f64, f64)) -> (f64, f64, f64) {
+        let (s0, s1, s2) = self.scale;
+        (s0 * c.c11 * cx, s0 * c.c22 * cy + s1 * c.c23 * cs_per_mm, -s1 * c.c23 * cy + s2 * c.c33 * cs_per_mm)
+    }
+}
+
 /// Flexibilities of the brush [mm³/N] (τ = u / L).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Flexibilities {
@@ -216,6 +241,17 @@ impl Flexibilities {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The linear theory's forces: G a b C11 cx, the spin's G (ab)^(3/2) C23 in Fy and −Mz, per `per`.
+    #[test]
+    fn linear_theory_forces() {
+        let c = Coefficients { c11: 4.0, c22: 3.0, c23: 1.5, c33: 0.5 };
+        // G a b = 80000 · 2 · 0.5 = 80000 N, √(ab) = 1 mm, per FN = 1000 N.
+        let lin = LinearTheory::new(80000.0, 2.0, 0.5, 1000.0);
+        assert_eq!(lin.forces(&c, (1e-3, 0.0, 0.0)), (0.32, 0.0, 0.0));
+        assert_eq!(lin.forces(&c, (0.0, 1e-3, 0.0)), (0.0, 0.24, -0.12));
+        assert_eq!(lin.forces(&c, (0.0, 0.0, 1e-3)), (0.0, 0.12, 0.04));
+    }
 
     #[test]
     fn table_nodes_are_reproduced() {

@@ -20,7 +20,9 @@ pub use bound::project_to_bound;
 pub use geometry::{ContactGeometry, HertzEllipse, Planform};
 pub use grid::{Grid, LeadingEdge};
 pub use hertz::{HertzContact, Radii};
-pub use kalker::{CoefficientSource, Coefficients, Flexibilities, FlexibilityModel, PatchFlexibility, SlopeReduction};
+pub use kalker::{
+    CoefficientSource, Coefficients, Flexibilities, FlexibilityModel, LinearTheory, PatchFlexibility, SlopeReduction,
+};
 pub use material::Material;
 pub use moment::moment_sum;
 pub use pressure::PressureShape;

@@ -62,7 +62,7 @@ fn check_loads(
     for fn_n in loads {
         let share = geometry.edge_load_share(fn_n);
         if !share.is_finite() || geometry.planform_error(fn_n).is_some() {
-            let why = geometry.planform_error(fn_n).unwrap_or_else(|| "a non-finite pressure".into());
+            let why = geometry.planform_error(fn_n).map_or_else(|| "a non-finite pressure".into(), |e| e.to_string());
             return Err(InputError::new(
                 "contact.fn_n",
                 fn_n,

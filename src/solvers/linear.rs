@@ -11,7 +11,7 @@
 use super::stepper::{FieldView, Step, Stepper};
 use super::termination::Termination;
 use super::{closed_form, ModelDef, SolveError};
-use crate::physics::project_to_bound;
+use crate::physics::{project_to_bound, LinearTheory};
 use crate::problem::{Problem, Sample};
 
 /// Kalker's linear theory, saturated at μ.
@@ -35,30 +35,25 @@ pub type Law = fn(f64, f64, f64) -> (f64, f64);
 pub struct Saturated<'a> {
     p: &'a Problem,
     law: Law,
-    /// (G a b / FN, G (ab)^(3/2) / FN, G (ab)^2 / FN) at the current load.
-    scale: (f64, f64, f64),
+    /// Kalker's linear theory at the current load, per FN.
+    linear: LinearTheory,
 }
 
 impl<'a> Saturated<'a> {
     pub fn new(p: &'a Problem, law: Law) -> Self {
-        Saturated { p, law, scale: (0.0, 0.0, 0.0) }
+        Saturated { p, law, linear: LinearTheory::default() }
     }
 }
 
 impl Stepper for Saturated<'_> {
     fn load(&mut self, at: &Sample) -> Result<(), SolveError> {
         let e = self.p.geometry.ellipse_at(at.fn_n);
-        let gab = self.p.material.g_mpa * e.a_mm * e.b_mm;
-        let ab = e.a_mm * e.b_mm;
-        self.scale = (gab / at.fn_n, gab * ab.sqrt() / at.fn_n, gab * ab / at.fn_n);
+        self.linear = LinearTheory::new(self.p.material.g_mpa, e.a_mm, e.b_mm, at.fn_n);
         Ok(())
     }
 
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
-        let c = &self.p.coefficients;
-        let fx = self.scale.0 * c.c11 * at.cx;
-        let fy = self.scale.0 * c.c22 * at.cy + self.scale.1 * c.c23 * at.cs;
-        let mz_over_fn = -self.scale.1 * c.c23 * at.cy + self.scale.2 * c.c33 * at.cs;
+        let (fx, fy, mz_over_fn) = self.linear.forces(&self.p.coefficients, (at.cx, at.cy, at.cs));
         let (sx, sy) = (self.law)(fx, fy, at.mu);
         let saturation = if fx != 0.0 || fy != 0.0 { sx.hypot(sy) / fx.hypot(fy) } else { 1.0 };
         Ok(Step {

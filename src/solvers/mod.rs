@@ -1,23 +1,21 @@
 //! Step 3 of the pipeline: the models, registered in one place. A built-in model is a
 //! [`Stepper`] plus a [`ModelDef`] (name, source, extra columns, applicability, cost, builder);
-//! [`sample_loop`] runs every one of them the same way. External models (`[external.NAME]`) run
-//! as a process over the whole scene ([`external`]).
+//! the history stage's `sample_loop` runs every one of them the same way. External models
+//! (`[external.NAME]`) run as a process over the whole scene and give a history directly
+//! (`history::external`).
 
 pub mod brush;
 pub mod contact;
-pub mod external;
 pub mod fastrip;
 pub mod fastsim;
 pub mod linear;
 pub mod polach;
 pub mod relaxation;
-pub mod sample_loop;
 pub mod she;
 pub mod stepper;
 pub mod termination;
 pub mod uba;
 
-pub use sample_loop::ModelRun;
 pub use stepper::{FieldView, Step, Stepper};
 pub use termination::Termination;
 

@@ -19,7 +19,7 @@
 use super::stepper::{FieldView, Step, Stepper};
 use super::termination::Termination;
 use super::{always, fastsim, linear_in_elements, ModelDef, SolveError};
-use crate::physics::project_to_bound;
+use crate::physics::{project_to_bound, LinearTheory};
 use crate::problem::{Problem, Sample};
 
 /// The relaxation (lag) model.
@@ -52,9 +52,11 @@ pub fn relaxation_lengths_mm(p: &Problem, fn_n: f64) -> (f64, f64) {
         return (l, l);
     }
     let e = p.geometry.ellipse_at(fn_n);
-    let gab = p.material.g_mpa * e.a_mm * e.b_mm;
+    // The linear forces at unit creepages [N]: G a b C11 and G a b C22.
+    let (fx_n, fy_n, _) =
+        LinearTheory::new(p.material.g_mpa, e.a_mm, e.b_mm, 1.0).forces(&p.coefficients, (1.0, 1.0, 0.0));
     let (kx, ky) = e.tangential_stiffness_n_mm(&p.material);
-    (gab * p.coefficients.c11 / kx, gab * p.coefficients.c22 / ky)
+    (fx_n / kx, fy_n / ky)
 }
 
 struct Relaxation<'a> {

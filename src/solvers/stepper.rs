@@ -1,6 +1,6 @@
 //! The one small trait every built-in model implements (as argmin's `Solver`: the loop is not
 //! the model's). A stepper solves one sample at a time — steady rolling or one time step from its
-//! own state — and is told when the load or the friction changes; [`super::sample_loop`] owns
+//! own state — and is told when the load or the friction changes; [`crate::history::sample_loop`] owns
 //! the order of the samples.
 
 use super::termination::Termination;

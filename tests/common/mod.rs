@@ -42,7 +42,7 @@ pub fn problem(text: &str) -> Problem {
 
 pub fn run(problem: &Problem, solver: &str) -> History {
     let model = solvers::builtin(solver).expect("a built-in model");
-    solvers::sample_loop::run(problem, model, &[], None).expect("solver run").history
+    creepbench::history::sample_loop::run(problem, model, &[], None).expect("solver run").history
 }
 
 pub fn f(h: &History) -> Vec<f64> {
@@ -84,7 +84,11 @@ pub fn compare_fields_with_contact(scene: &str, field_csv: &str, tol: f64) -> (u
     let mut rdr = csv::Reader::from_path(root().join(field_csv)).unwrap();
     let rows: Vec<csv::StringRecord> = rdr.records().map(Result::unwrap).collect();
     let steps: Vec<usize> = rows.iter().map(|r| r[0].parse().unwrap()).collect();
-    let (_, fields) = creepbench::solvers::contact::run_with_fields(&p, &|s| steps.contains(&s)).unwrap();
+    let (_, fields) =
+        creepbench::history::sample_loop::run_with_fields(&p, &creepbench::solvers::contact::MODEL, &|s| {
+            steps.contains(&s)
+        })
+        .unwrap();
     let g = &p.grid;
     let (mut n, mut worst) = (0, 0.0f64);
     for (r, step) in rows.iter().zip(&steps) {

@@ -9,7 +9,7 @@ pub mod record;
 pub mod spec;
 
 use crate::comparison::references::References;
-use crate::error::{Error, InputError};
+use crate::error::{Error, FitError, InputError};
 use crate::suite;
 use argmin::core::{Executor, State, TerminationReason};
 use argmin::solver::neldermead::NelderMead;
@@ -81,7 +81,8 @@ pub fn fit(spec: &FitSpec, refs: &References) -> Result<FitOutcome, Error> {
         v[i] += SIMPLEX_STEP;
         simplex.push(v);
     }
-    let optimiser_error = |e: argmin::core::Error| Error::Fit { fit: spec.name.clone(), message: e.to_string() };
+    let optimiser_error =
+        |e: argmin::core::Error| Error::Fit { fit: spec.name.clone(), source: FitError::Optimiser(e) };
     let solver = NelderMead::new(simplex).with_sd_tolerance(COST_SD_TOLERANCE).map_err(optimiser_error)?;
     let result = Executor::new(problem, solver).configure(|s| s.max_iters(spec.max_iterations)).timer(false).run();
     let result = match result {
@@ -142,7 +143,7 @@ pub fn render(o: &FitOutcome) -> Result<String, Error> {
     for line in record.table().lines() {
         let _ = writeln!(s, "# {line}");
     }
-    s.push_str(&toml::to_string(&doc).map_err(|e| Error::Fit { fit: spec.name.clone(), message: e.to_string() })?);
+    s.push_str(&toml::to_string(&doc).map_err(|e| Error::Fit { fit: spec.name.clone(), source: e.into() })?);
     Ok(s)
 }
 

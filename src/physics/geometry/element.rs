@@ -168,7 +168,7 @@ impl ContactGeometry for ElementGeometry {
         self.normal_at(fn_n).ok().map(|c| c.pn_mpa.clone())
     }
 
-    fn planform_error(&self, fn_n: f64) -> Option<String> {
-        self.normal_at(fn_n).err().map(|e| e.to_string())
+    fn planform_error(&self, fn_n: f64) -> Option<ContactError> {
+        self.normal_at(fn_n).err()
     }
 }

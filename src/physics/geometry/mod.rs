@@ -9,6 +9,7 @@ pub mod element;
 pub mod hertz;
 pub mod profile;
 
+use super::halfspace::ContactError;
 use super::{Grid, HertzContact, Material, PressureShape, Radii};
 use crate::error::InputError;
 use std::fmt::Debug;
@@ -188,7 +189,7 @@ pub trait ContactGeometry: Send + Sync + Debug {
         None
     }
     /// Why the contact at `fn_n` cannot be formed (a normal problem that fails), if it cannot.
-    fn planform_error(&self, _fn_n: f64) -> Option<String> {
+    fn planform_error(&self, _fn_n: f64) -> Option<ContactError> {
         None
     }
     /// The ellipse at the scene's nominal load: it sizes the grid (times `[grid] scale`) and

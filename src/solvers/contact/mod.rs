@@ -25,4 +25,4 @@ pub mod tangential;
 
 pub use crate::physics::halfspace::{convolution, influence, normal, ContactError};
 
-pub use stepper::{run_with_fields, ContactRunError, Field, MODEL};
+pub use stepper::{ContactRunError, MODEL, NAME};

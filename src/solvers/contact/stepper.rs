@@ -5,19 +5,20 @@
 use super::influence::Kernel;
 use super::normal::{NormalParams, NormalSolver};
 use super::restart::{contact_restart, SteadyRestart, SteadyStart};
-use super::tangential::{ElementState, StepResult, TangentialParams, TangentialSolver};
+use super::tangential::{StepResult, TangentialParams, TangentialSolver};
 use super::ContactError;
 use crate::error::InputError;
-use crate::history::History;
 use crate::physics::moment_sum;
 use crate::problem::{Problem, Sample};
-use crate::solvers::sample_loop::{self, Observer};
 use crate::solvers::stepper::{FieldView, Step, Stepper};
 use crate::solvers::{ModelDef, SolveError};
 
+/// The exact model's name in scenes and of its `<name>.csv`.
+pub const NAME: &str = "contact";
+
 /// Kalker's exact theory for quasi-identical half-spaces (CONTACT-style).
 pub const MODEL: ModelDef = ModelDef {
-    name: "contact",
+    name: NAME,
     summary: "Kalker's exact theory on the same grid (CONTACT-style: half-space influence coefficients, normal problem, transient rolling with Coulomb friction)",
     extra_columns: &["n_adhesion", "n_slip", "iterations", "residual", "pn_max_mpa"],
     iterative: true,
@@ -238,33 +239,4 @@ impl Stepper for Contact<'_> {
         let (l, r) = (self.loaded.as_ref()?, self.last.as_ref()?);
         Some(FieldView { grid: &self.p.grid, pressure_mpa: &l.pn, tx_mpa: &r.px, ty_mpa: &r.py, state: Some(&r.state) })
     }
-}
-
-/// The traction field of one step, for field comparisons with CONTACT (tests, reports).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Field {
-    pub step: usize,
-    pub pn_mpa: Vec<f64>,
-    pub px_mpa: Vec<f64>,
-    pub py_mpa: Vec<f64>,
-    pub state: Vec<ElementState>,
-}
-
-/// Run the problem with the exact-theory solver, keeping the fields of the steps `keep` selects.
-pub fn run_with_fields(problem: &Problem, keep: &dyn Fn(usize) -> bool) -> Result<(History, Vec<Field>), SolveError> {
-    let mut fields = Vec::new();
-    let mut observe = |s: &Sample, v: &FieldView| {
-        if keep(s.step) {
-            fields.push(Field {
-                step: s.step,
-                pn_mpa: v.pressure_mpa.to_vec(),
-                px_mpa: v.tx_mpa.to_vec(),
-                py_mpa: v.ty_mpa.to_vec(),
-                state: v.state.map(<[ElementState]>::to_vec).unwrap_or_default(),
-            });
-        }
-    };
-    let observer: &mut Observer = &mut observe;
-    let run = sample_loop::run(problem, &MODEL, &[], Some(observer))?;
-    Ok((run.history, fields))
 }

@@ -1,13 +1,19 @@
 //! The one sample loop (as argmin's `Executor`): it owns the stepping of every built-in model —
 //! the steady initial state, sweep points, transient steps, a reload when FN or μ changes — and
-//! writes the history, the termination of every solve and the field metrics the scene asks for.
+//! writes the history, the termination of every solve and the field indicators the scene asks for.
+//! It sits at the history stage (README, "The code"): it turns a model's steps into history rows,
+//! so it stands above the models it runs and below the metrics, which hand it their field
+//! indicators as plain functions.
 
-use super::stepper::FieldView;
-use super::{ModelDef, SolveError};
-use crate::history::{History, Row, MZ};
-use crate::metrics::MetricDef;
+use super::{History, Row, MZ, TERMINATION};
 use crate::problem::{Problem, Sample};
+use crate::solvers::stepper::{ElementState, FieldView};
+use crate::solvers::{ModelDef, SolveError};
 use std::time::Instant;
+
+/// A field metric's indicator: its name and its value on one solve's traction field (the run
+/// keeps the largest over every solve).
+pub type FieldIndicator = (&'static str, fn(&FieldView) -> f64);
 
 /// The history of one model run, its field metrics and its timing.
 #[derive(Debug, Clone)]
@@ -28,7 +34,7 @@ pub type Observer<'o> = dyn FnMut(&Sample, &FieldView) + 'o;
 pub fn run(
     problem: &Problem,
     def: &ModelDef,
-    field_metrics: &[&'static MetricDef],
+    field_metrics: &[FieldIndicator],
     observer: Option<&mut Observer>,
 ) -> Result<ModelRun, SolveError> {
     let start = Instant::now();
@@ -39,12 +45,12 @@ pub fn run(
     let setup_s = start.elapsed().as_secs_f64();
     let mut columns: Vec<&str> = def.extra_columns.to_vec();
     if def.iterative {
-        columns.push("termination");
+        columns.push(TERMINATION);
     }
     columns.push(MZ);
     let mut history = History::new(def.name, &columns);
     history.rows.reserve(loading.samples.len() + 1);
-    let mut field_values: Vec<(&'static str, f64)> = field_metrics.iter().map(|m| (m.name, 0.0)).collect();
+    let mut field_values: Vec<(&'static str, f64)> = field_metrics.iter().map(|&(name, _)| (name, 0.0)).collect();
     let mut observer = observer;
     let mut loaded = (first.fn_n, first.mu);
     let steady_start = loading.steady_start();
@@ -66,10 +72,8 @@ pub fn run(
         history.rows.push(Row::new(s, step.fx_over_fn, step.fy_over_fn, extra));
         if !field_values.is_empty() || observer.is_some() {
             if let Some(view) = stepper.field() {
-                for ((_, v), m) in field_values.iter_mut().zip(field_metrics) {
-                    if let crate::metrics::MetricKind::Field(f) = m.kind {
-                        *v = v.max(f(&view));
-                    }
+                for ((_, v), (_, f)) in field_values.iter_mut().zip(field_metrics) {
+                    *v = v.max(f(&view));
                 }
                 if let Some(o) = observer.as_deref_mut() {
                     o(s, &view);
@@ -84,4 +88,37 @@ pub fn run(
         setup_s,
         wall_s: start.elapsed().as_secs_f64(),
     })
+}
+
+/// The traction field of one step, for field comparisons with CONTACT (tests, reports).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Field {
+    pub step: usize,
+    pub pn_mpa: Vec<f64>,
+    pub px_mpa: Vec<f64>,
+    pub py_mpa: Vec<f64>,
+    pub state: Vec<ElementState>,
+}
+
+/// Run `def` over the problem's samples, keeping the fields of the steps `keep` selects.
+pub fn run_with_fields(
+    problem: &Problem,
+    def: &ModelDef,
+    keep: &dyn Fn(usize) -> bool,
+) -> Result<(History, Vec<Field>), SolveError> {
+    let mut fields = Vec::new();
+    let mut observe = |s: &Sample, v: &FieldView| {
+        if keep(s.step) {
+            fields.push(Field {
+                step: s.step,
+                pn_mpa: v.pressure_mpa.to_vec(),
+                px_mpa: v.tx_mpa.to_vec(),
+                py_mpa: v.ty_mpa.to_vec(),
+                state: v.state.map(<[ElementState]>::to_vec).unwrap_or_default(),
+            });
+        }
+    };
+    let observer: &mut Observer = &mut observe;
+    let run = run(problem, def, &[], Some(observer))?;
+    Ok((run.history, fields))
 }

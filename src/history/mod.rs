@@ -1,5 +1,9 @@
 //! Step 4 of the pipeline: a solver's output, one row per time step (or sweep point), in the
-//! `<solver>.csv` format of interface.md.
+//! `<solver>.csv` format of interface.md; made by the [`sample_loop`] from a built-in model's
+//! steps, or read from an [`external`] model's output.
+
+pub mod external;
+pub mod sample_loop;
 
 use crate::error::{excerpt, FormatError};
 use crate::problem::Sample;
@@ -10,6 +14,10 @@ pub const COLUMNS: [&str; 8] = ["step", "t_s", "cx", "cy", "cs", "fn_n", "fx_ove
 /// The friction coefficient of the row: written by creepbench right after [`COLUMNS`]
 /// (optional in an external model's output, which gets the scene's).
 pub const MU: &str = "mu";
+
+/// The column of each solve's termination code, written after the extra columns of a model whose
+/// solves iterate ([`crate::solvers::Termination::code`]).
+pub const TERMINATION: &str = "termination";
 
 /// The spin-moment column [N·mm] every built-in model writes last (optional for external
 /// models): the references' sign convention, [`crate::physics::moment`].

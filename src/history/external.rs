@@ -7,16 +7,49 @@
 //! The model runs with stdin closed, a timeout and its process group killed when it ends; its
 //! output is read with a size limit and must be finite, with the scene's loading columns.
 
-use crate::error::Error;
-use crate::history::{History, COLUMNS};
+use super::{History, COLUMNS};
+use crate::error::{Error, FormatError};
 use crate::problem::{Problem, ResolvedScene, Sample};
 use crate::safety::excerpt::{excerpt, one_line};
-use crate::safety::read::{read_text, MODEL_OUTPUT_LIMIT_BYTES};
-use crate::safety::{interrupt, process};
+use crate::safety::interrupt;
+use crate::safety::process::{self, ProcessError};
+use crate::safety::read::{read_text, ReadError, MODEL_OUTPUT_LIMIT_BYTES};
 use crate::scene::ExternalSolver;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Duration;
+
+/// Why an external model gave no usable history (the messages name the output file).
+#[derive(Debug, thiserror::Error)]
+pub enum ExternalError {
+    #[error("temp dir: {0}")]
+    TempDir(#[source] std::io::Error),
+    #[error("writing scene.json: {0}")]
+    SceneJson(#[source] std::io::Error),
+    #[error(transparent)]
+    Process(#[from] ProcessError),
+    #[error("the model wrote no output file {}", .0.display())]
+    NoOutput(PathBuf),
+    #[error("output {} is a symbolic link, not a regular file", .0.display())]
+    SymbolicLink(PathBuf),
+    #[error(transparent)]
+    Read(#[from] ReadError),
+    #[error("output {}: {}", .out.display(), one_line(&.format.to_string(), PARSE_MESSAGE_CHARS))]
+    Unparsable { out: PathBuf, format: FormatError },
+    #[error("output {}: extra column {} repeats a leading column", .out.display(), excerpt(.column))]
+    RepeatsLeading { out: PathBuf, column: String },
+    #[error("output {}: column {} appears twice", .out.display(), excerpt(.column))]
+    Twice { out: PathBuf, column: String },
+    #[error("output {} has {got} rows ({}); the scene has {expected} steps ({})", .out.display(), steps(*.got_steps), steps(*.expected_steps))]
+    Rows { out: PathBuf, got: usize, got_steps: StepRange, expected: usize, expected_steps: StepRange },
+    #[error("output {} step {step} column {}: {} is not a finite number", .out.display(), excerpt(.column), excerpt(&.value.to_string()))]
+    NotFinite { out: PathBuf, step: usize, column: String, value: f64 },
+    #[error("output {} step {step} column {}: {} differs from the scene's {want} (the loading columns must be copied from scene.json)", .out.display(), excerpt(.column), excerpt(&.value.to_string()))]
+    Loading { out: PathBuf, step: usize, column: &'static str, value: f64, want: f64 },
+}
+
+/// The first and last step of some rows (none when there are no rows).
+pub type StepRange = Option<(usize, usize)>;
 
 /// A user-supplied model run as a child process.
 pub struct External {
@@ -35,10 +68,13 @@ impl External {
 
     /// Run the model over the whole scene and read its validated history back.
     pub fn run(&self, problem: &Problem) -> Result<History, Error> {
-        let fail =
-            |m: String| Error::External { scene: problem.name.clone(), solver: self.spec.name.clone(), message: m };
+        let fail = |e: ExternalError| Error::External {
+            scene: problem.name.clone(),
+            solver: self.spec.name.clone(),
+            source: Box::new(e),
+        };
         let dir =
-            tempfile::Builder::new().prefix("creepbench-ext").tempdir().map_err(|e| fail(format!("temp dir: {e}")))?;
+            tempfile::Builder::new().prefix("creepbench-ext").tempdir().map_err(|e| fail(ExternalError::TempDir(e)))?;
         // Removed by the interrupt handler if creepbench is stopped meanwhile, else just below.
         let cleanup = interrupt::register_folder(dir.path().to_path_buf());
         let result = run_in(&self.spec, problem, dir.path()).map_err(fail);
@@ -49,11 +85,11 @@ impl External {
 }
 
 /// Run the model in the temporary folder `dir` and read its validated output.
-fn run_in(spec: &ExternalSolver, problem: &Problem, dir: &Path) -> Result<History, String> {
+fn run_in(spec: &ExternalSolver, problem: &Problem, dir: &Path) -> Result<History, ExternalError> {
     let scene_json = dir.join("scene.json");
     let out_csv = dir.join(format!("{}.csv", spec.name));
     let json = ResolvedScene::of(problem, &problem.solvers).to_json();
-    std::fs::write(&scene_json, json).map_err(|e| format!("writing scene.json: {e}"))?;
+    std::fs::write(&scene_json, json).map_err(ExternalError::SceneJson)?;
     let mut program = std::path::PathBuf::from(&spec.command[0]);
     if program.components().count() > 1 && program.is_relative() {
         program = problem.scene_dir.join(program);
@@ -64,8 +100,7 @@ fn run_in(spec: &ExternalSolver, problem: &Problem, dir: &Path) -> Result<Histor
         .arg(&scene_json)
         .arg(&out_csv)
         .current_dir(if problem.scene_dir.as_os_str().is_empty() { Path::new(".") } else { &problem.scene_dir });
-    process::run(command, Duration::from_secs_f64(spec.timeout_s), MODEL_OUTPUT_LIMIT_BYTES)
-        .map_err(|e| e.to_string())?;
+    process::run(command, Duration::from_secs_f64(spec.timeout_s), MODEL_OUTPUT_LIMIT_BYTES)?;
     validate(read_output(&spec.name, &out_csv)?, problem, &out_csv)
 }
 
@@ -75,31 +110,26 @@ const LOADING_RTOL: f64 = 1e-9;
 const PARSE_MESSAGE_CHARS: usize = 300;
 
 /// The model's output file: a regular file (not a link, FIFO or device), of bounded size, parsed.
-fn read_output(model: &str, out_csv: &Path) -> Result<History, String> {
+fn read_output(model: &str, out_csv: &Path) -> Result<History, ExternalError> {
     match std::fs::symlink_metadata(out_csv) {
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-            return Err(format!("the model wrote no output file {}", out_csv.display()));
-        }
-        Ok(m) if m.file_type().is_symlink() => {
-            return Err(format!("output {} is a symbolic link, not a regular file", out_csv.display()));
-        }
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Err(ExternalError::NoOutput(out_csv.into())),
+        Ok(m) if m.file_type().is_symlink() => return Err(ExternalError::SymbolicLink(out_csv.into())),
         _ => {}
     }
-    let text = read_text(out_csv, MODEL_OUTPUT_LIMIT_BYTES, "model output").map_err(|e| e.to_string())?;
-    History::from_csv(model, &text)
-        .map_err(|e| format!("output {}: {}", out_csv.display(), one_line(&e.to_string(), PARSE_MESSAGE_CHARS)))
+    let text = read_text(out_csv, MODEL_OUTPUT_LIMIT_BYTES, "model output")?;
+    History::from_csv(model, &text).map_err(|format| ExternalError::Unparsable { out: out_csv.into(), format })
 }
 
 /// The history as the scene expects it: no duplicate or shadowing column, one row per step of
 /// the scene, every value finite, and the loading columns equal to the scene's.
-fn validate(mut h: History, problem: &Problem, out_csv: &Path) -> Result<History, String> {
-    let file = out_csv.display();
+fn validate(mut h: History, problem: &Problem, out_csv: &Path) -> Result<History, ExternalError> {
+    let out = || out_csv.to_path_buf();
     for (k, c) in h.extra_columns.iter().enumerate() {
         if COLUMNS.contains(&c.as_str()) {
-            return Err(format!("output {file}: extra column {} repeats a leading column", excerpt(c)));
+            return Err(ExternalError::RepeatsLeading { out: out(), column: c.clone() });
         }
         if h.extra_columns[..k].contains(c) {
-            return Err(format!("output {file}: column {} appears twice", excerpt(c)));
+            return Err(ExternalError::Twice { out: out(), column: c.clone() });
         }
     }
     // Step 0 (the initial state) is part of the output only when the scene starts steady.
@@ -109,13 +139,13 @@ fn validate(mut h: History, problem: &Problem, out_csv: &Path) -> Result<History
     let expected: Vec<&Sample> = problem.loading.rows().collect();
     let got: Vec<usize> = h.rows.iter().map(|r| r.step).collect();
     if !got.iter().copied().eq(expected.iter().map(|s| s.step)) {
-        return Err(format!(
-            "output {file} has {} rows ({}); the scene has {} steps ({})",
-            got.len(),
-            steps(got.first().copied(), got.last().copied()),
-            expected.len(),
-            steps(expected.first().map(|s| s.step), expected.last().map(|s| s.step))
-        ));
+        return Err(ExternalError::Rows {
+            out: out(),
+            got: got.len(),
+            got_steps: got.first().copied().zip(got.last().copied()),
+            expected: expected.len(),
+            expected_steps: expected.first().map(|s| s.step).zip(expected.last().map(|s| s.step)),
+        });
     }
     for (r, s) in h.rows.iter_mut().zip(&expected) {
         // μ is the scene's: a model may leave the column out, or must copy it.
@@ -132,12 +162,7 @@ fn validate(mut h: History, problem: &Problem, out_csv: &Path) -> Result<History
         ];
         let extra = h.extra_columns.iter().map(String::as_str).zip(r.extra.iter().copied());
         if let Some((column, v)) = leading.into_iter().chain(extra).find(|(_, v)| !v.is_finite()) {
-            return Err(format!(
-                "output {file} step {} column {}: {} is not a finite number",
-                r.step,
-                excerpt(column),
-                excerpt(&v.to_string())
-            ));
+            return Err(ExternalError::NotFinite { out: out(), step: r.step, column: column.to_string(), value: v });
         }
         let loading = [
             ("t_s", r.t_s, s.t_s),
@@ -150,21 +175,16 @@ fn validate(mut h: History, problem: &Problem, out_csv: &Path) -> Result<History
         if let Some((column, v, want)) =
             loading.into_iter().find(|&(_, v, want)| (v - want).abs() > LOADING_RTOL * v.abs().max(want.abs()))
         {
-            return Err(format!(
-                "output {file} step {} column {}: {} differs from the scene's {want} (the loading columns must be copied from scene.json)",
-                r.step,
-                excerpt(column),
-                excerpt(&v.to_string())
-            ));
+            return Err(ExternalError::Loading { out: out(), step: r.step, column, value: v, want });
         }
     }
     Ok(h)
 }
 
 /// A range of step numbers for a message: `steps 1..6`, `no steps`.
-fn steps(first: Option<usize>, last: Option<usize>) -> String {
-    match (first, last) {
-        (Some(a), Some(b)) => format!("steps {a}..{b}"),
-        _ => "no steps".into(),
+fn steps(range: StepRange) -> String {
+    match range {
+        Some((a, b)) => format!("steps {a}..{b}"),
+        None => "no steps".into(),
     }
 }
