@@ -166,7 +166,7 @@ fn envelope(name: &str) -> Problem {
         .lines()
         .map(|l| if l.starts_with("solvers") { "solvers = [\"relaxation\", \"fastsim\"]".into() } else { l.into() })
         .collect();
-    Problem::resolve(&Scene::from_toml(&text.join("\n"), &dir).unwrap()).unwrap()
+    creepbench::pipeline::resolve(&Scene::from_toml(&text.join("\n"), &dir).unwrap()).unwrap()
 }
 
 /// A change of FN or μ: the force [N] is carried over (the coefficient becomes F/FN at the new

@@ -88,6 +88,7 @@ fn check_loads(
 pub struct Problem {
     pub name: String,
     pub solvers: Vec<String>,
+    /// The metrics computed (chosen by the pipeline from the scene's and the loading).
     pub metrics: Vec<String>,
     /// Metrics the scene left out, with the reason (for the report).
     pub skipped_metrics: Vec<(String, String)>,
@@ -114,8 +115,9 @@ pub struct Problem {
 }
 
 impl Problem {
-    /// Resolve a validated scene.
-    pub fn resolve(scene: &Scene) -> Result<Problem, InputError> {
+    /// Resolve a validated scene whose model names (`solvers`, checked against the registry) are
+    /// given; its metrics are chosen after (the pipeline wires the two).
+    pub fn resolve(scene: &Scene, solvers: Vec<String>) -> Result<Problem, InputError> {
         let material = match (scene.material.g_mpa, scene.material.e_mpa) {
             (Some(g), Some(e)) => {
                 // E = 2G(1 + ν) for an isotropic material; the thesis's own Table 4.1 pair
@@ -161,19 +163,13 @@ impl Problem {
         if !geometry.elliptic() {
             check_loads(geometry.as_ref(), &loading, &mut warnings)?;
         }
-        let (metrics, skipped_metrics) = crate::metrics::select(scene.metrics.as_deref(), &loading, dt_s);
-        for (m, why) in &skipped_metrics {
-            if scene.metrics.as_ref().is_some_and(|asked| asked.contains(m)) {
-                warnings.push(format!("metric {m} left out: {why}"));
-            }
-        }
         let nominal =
             Sample { step: 0, t_s: 0.0, cx: 0.0, cy: scene.cy, cs: scene.cs_per_mm, fn_n: scene.fn_n, mu: scene.mu };
         let problem = Problem {
             name: scene.name.clone(),
-            solvers: scene.solvers.clone(),
-            metrics,
-            skipped_metrics,
+            solvers,
+            metrics: Vec::new(),
+            skipped_metrics: Vec::new(),
             material,
             geometry,
             coefficients,
@@ -195,7 +191,6 @@ impl Problem {
             warnings,
         };
         problem.check_derived()?;
-        crate::solvers::check_applicable(&problem)?;
         Ok(problem)
     }
 

@@ -174,7 +174,7 @@ impl Default for Limits {
     }
 }
 
-/// An external model (`[external.NAME] command = [...]`): any executable that reads scene.json
+/// An external model (`[external.NAME] command = [...]`; the pipeline checks NAME): any executable that reads scene.json
 /// and writes a history CSV in the `simulate` format.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ExternalSolver {
@@ -189,9 +189,11 @@ pub struct ExternalSolver {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
     pub name: String,
-    pub solvers: Vec<String>,
-    /// Metrics asked for; `None` = those that fit the creepage kind.
-    pub metrics: Option<Vec<String>>,
+    /// `solvers` as given: the pipeline checks it against the model registry and `external`.
+    pub solvers: Option<toml::Value>,
+    /// `metrics` as given (`None`: those that fit the creepage kind): the pipeline checks it
+    /// against the metric registry.
+    pub metrics: Option<toml::Value>,
     pub geometry: GeometrySpec,
     pub fn_n: f64,
     pub mu: f64,
@@ -234,7 +236,8 @@ fn compact(v: f64) -> String {
     }
 }
 
-fn is_valid_name(s: &str) -> bool {
+/// A scene or external model name: 1 to 100 characters of `[a-z0-9_]`.
+pub fn is_valid_name(s: &str) -> bool {
     !s.is_empty() && s.len() <= 100 && s.bytes().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'_')
 }
 
@@ -269,16 +272,6 @@ impl Scene {
         let mut external = Vec::new();
         if let Some(mut ext) = top.opt_table("external")? {
             for key in ext.keys() {
-                if !is_valid_name(&key) || crate::solvers::builtin(&key).is_some() {
-                    return Err(InputError::new(
-                        ext.field(&key),
-                        format!("{key:?}"),
-                        format!(
-                            "an external solver name of [a-z0-9_]+ other than the built-in {}",
-                            crate::solvers::builtin_names().join(", ")
-                        ),
-                    ));
-                }
                 let mut t = ext.table(&key)?;
                 let command = t
                     .opt_str_list("command", "program and its arguments")?
@@ -298,36 +291,8 @@ impl Scene {
             }
             ext.finish()?;
         }
-        let solver_names: Vec<String> = crate::solvers::builtin_names()
-            .into_iter()
-            .map(String::from)
-            .chain(external.iter().map(|e| e.name.clone()))
-            .collect();
-        let allowed_solvers = format!("a non-empty list of distinct names from {}", solver_names.join(", "));
-        let solvers = top
-            .opt_str_list("solvers", &allowed_solvers)?
-            .ok_or_else(|| InputError::new("solvers", "missing", allowed_solvers.clone()))?;
-        if solvers.is_empty() {
-            return Err(InputError::new("solvers", "[]", allowed_solvers));
-        }
-        for (n, s) in solvers.iter().enumerate() {
-            if !solver_names.contains(s) || solvers[..n].contains(s) {
-                return Err(InputError::new(format!("solvers[{n}]"), format!("{s:?}"), allowed_solvers));
-            }
-        }
-        let metric_names = crate::metrics::names().join(", ");
-        let metrics = top.opt_str_list("metrics", &format!("names from {metric_names}"))?;
-        if let Some(ms) = &metrics {
-            for (n, m) in ms.iter().enumerate() {
-                if crate::metrics::by_name(m).is_none() || ms[..n].contains(m) {
-                    return Err(InputError::new(
-                        format!("metrics[{n}]"),
-                        format!("{m:?}"),
-                        format!("distinct names from {metric_names}"),
-                    ));
-                }
-            }
-        }
+        let solvers = top.given("solvers").cloned();
+        let metrics = top.given("metrics").cloned();
 
         // [grid] (first: a geometry per element fills it)
         let mut g = top.table("grid")?;

@@ -85,6 +85,12 @@ impl<'a> Section<'a> {
         self.table.get(key)
     }
 
+    /// The value of `key` as given, if any (read later by another stage, e.g. a list of names
+    /// the pipeline checks against a registry).
+    pub fn given(&mut self, key: &str) -> Option<&'a Value> {
+        self.get(key)
+    }
+
     pub fn has(&self, key: &str) -> bool {
         self.table.contains_key(key)
     }
