@@ -7,11 +7,12 @@ use crate::error::{Error, InputError};
 use crate::harness::suite::SceneSource;
 use crate::history::History;
 use crate::metrics::{self, Metric, MetricDef, MetricKind};
-use crate::problem::Problem;
+use crate::problem::{ModelParamSet, Problem};
 use crate::scene::reader::Section;
 use crate::scene::{is_valid_name, study, ExternalSolver, Scene};
 use crate::solvers::{self, external::External, sample_loop, Termination};
 use std::path::Path;
+use std::sync::Arc;
 use std::time::Instant;
 
 /// Wall times of one model's run [s] (kept out of the CSVs, which stay deterministic).
@@ -84,7 +85,8 @@ pub fn resolve(scene: &Scene) -> Result<Problem, InputError> {
     check_external_names(&scene.external)?;
     let solvers = solver_names(scene)?;
     let asked = metric_names(scene)?;
-    let mut problem = Problem::resolve(scene, solvers)?;
+    let params = model_params(scene)?;
+    let mut problem = Problem::resolve(scene, solvers, params)?;
     select_metrics(&mut problem, asked.as_deref());
     solvers::check_applicable(&problem)?;
     Ok(problem)
@@ -156,6 +158,19 @@ fn metric_names(scene: &Scene) -> Result<Option<Vec<String>>, InputError> {
         }
     }
     Ok(names)
+}
+
+/// Every model's own `[model]` keys, read and validated once by its `ModelDef::params`, in
+/// registry order; then a `[model]` key neither the scene nor a model reads is refused.
+fn model_params(scene: &Scene) -> Result<ModelParamSet, InputError> {
+    let mut md = scene.model_params.resume();
+    let params = solvers::MODELS
+        .iter()
+        .filter_map(|m| m.params)
+        .map(|read| read(&mut md).map(Arc::from))
+        .collect::<Result<Vec<_>, _>>()?;
+    md.finish()?;
+    Ok(ModelParamSet::new(params))
 }
 
 /// The metrics asked for (or all) that fit the problem's loading; one asked for that does not

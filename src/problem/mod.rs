@@ -4,9 +4,11 @@
 //! data: material, geometry, grid, rolling, loading, model options, solver options.
 
 pub mod loading;
+pub mod params;
 pub mod resolved;
 
 pub use loading::{Loading, LoadingKind, Sample};
+pub use params::{ModelParamSet, ModelParams};
 pub use resolved::ResolvedScene;
 
 use crate::error::InputError;
@@ -105,6 +107,8 @@ pub struct Problem {
     pub nominal: Sample,
     pub loading: Loading,
     pub model: ModelOptions,
+    /// Each model's own parameters, read and validated once ([`params`]).
+    pub model_params: ModelParamSet,
     pub contact_solver: ContactSolverOptions,
     pub external: Vec<ExternalSolver>,
     pub limits: Limits,
@@ -115,9 +119,9 @@ pub struct Problem {
 }
 
 impl Problem {
-    /// Resolve a validated scene whose model names (`solvers`, checked against the registry) are
-    /// given; its metrics are chosen after (the pipeline wires the two).
-    pub fn resolve(scene: &Scene, solvers: Vec<String>) -> Result<Problem, InputError> {
+    /// Resolve a validated scene whose model names (`solvers`, checked against the registry) and
+    /// models' parameters are given; its metrics are chosen after (the pipeline wires the three).
+    pub fn resolve(scene: &Scene, solvers: Vec<String>, model_params: ModelParamSet) -> Result<Problem, InputError> {
         let material = match (scene.material.g_mpa, scene.material.e_mpa) {
             (Some(g), Some(e)) => {
                 // E = 2G(1 + ν) for an isotropic material; the thesis's own Table 4.1 pair
@@ -183,6 +187,7 @@ impl Problem {
             nominal,
             loading,
             model: scene.model,
+            model_params,
             contact_solver: scene.contact_solver,
             external: scene.external.clone(),
             limits: scene.limits,

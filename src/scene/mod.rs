@@ -11,7 +11,7 @@ pub mod table;
 use crate::error::InputError;
 use crate::physics::geometry::{Extent, GeometrySpec};
 use crate::physics::{CoefficientSource, FlexibilityModel, LeadingEdge, PatchFlexibility, PressureShape, Radii};
-use reader::{Range, Section};
+use reader::{Deferred, Range, Section};
 use std::path::{Path, PathBuf};
 
 /// Largest grid accepted along either axis.
@@ -49,32 +49,8 @@ pub enum InitKind {
     Steady,
 }
 
-/// Polach's parameters (`[model] polach_k_a, polach_k_s, polach_a, polach_b_s_per_m`; Wear 258
-/// (2005) Eq. 1–8): the reductions of the adhesion and slip parts and the falling friction
-/// `μ0 ((1 − A) e^(−B w) + A)`. Defaults: the unreduced curve with constant friction.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct PolachParams {
-    pub k_a: f64,
-    pub k_s: f64,
-    /// μ∞/μ0.
-    pub a: f64,
-    /// B [s/m].
-    pub b_s_per_m: f64,
-}
-
-impl Default for PolachParams {
-    fn default() -> Self {
-        PolachParams { k_a: 1.0, k_s: 1.0, a: 1.0, b_s_per_m: 0.0 }
-    }
-}
-
-impl PolachParams {
-    pub fn is_default(&self) -> bool {
-        *self == PolachParams::default()
-    }
-}
-
-/// Model options of the simplified models (`[model]`).
+/// Model options the simplified models share (`[model]`); a model's own parameters are its
+/// file's (`ModelDef::params`), read from [`Scene::model_params`].
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct ModelOptions {
     pub flexibility: FlexibilityModel,
@@ -92,12 +68,6 @@ pub struct ModelOptions {
     /// FASTSIM and the UBA with Kalker's single flexibility instead of three.
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub single_flexibility: bool,
-    /// Polach's model's parameters.
-    #[serde(default, skip_serializing_if = "PolachParams::is_default")]
-    pub polach: PolachParams,
-    /// The relaxation model's length [mm] for both components instead of the linear theory's.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub relaxation_length_mm: Option<f64>,
 }
 
 impl Default for ModelOptions {
@@ -110,8 +80,6 @@ impl Default for ModelOptions {
             nonhertz_flexibility: PatchFlexibility::EquivalentEllipse,
             single_flexibility: false,
             slope_reduction: None,
-            polach: PolachParams::default(),
-            relaxation_length_mm: None,
         }
     }
 }
@@ -211,6 +179,9 @@ pub struct Scene {
     pub cs_per_mm: f64,
     pub init: InitKind,
     pub model: ModelOptions,
+    /// The `[model]` keys the models read themselves (their parameters; the pipeline has each
+    /// model read and validate its own, then refuses a key no one read).
+    pub model_params: Deferred,
     pub contact_solver: ContactSolverOptions,
     pub external: Vec<ExternalSolver>,
     pub limits: Limits,
@@ -466,6 +437,7 @@ impl Scene {
 
         // [model]
         let mut model = ModelOptions::default();
+        let mut model_params = Deferred::empty("model");
         if let Some(mut md) = top.opt_table("model")? {
             if let Some(f) = md.opt_choice("flexibility", &["kalker", "thesis"])? {
                 model.flexibility = if f == "thesis" { FlexibilityModel::Thesis } else { FlexibilityModel::Kalker };
@@ -494,25 +466,11 @@ impl Scene {
             if let Some(n) = md.opt_choice("flexibilities", &["three", "one"])? {
                 model.single_flexibility = n == "one";
             }
-            let unit = Range::new(0.0, false, 1.0, true);
-            if let Some(v) = md.opt_f64("polach_k_a", unit)? {
-                model.polach.k_a = v;
-            }
-            if let Some(v) = md.opt_f64("polach_k_s", unit)? {
-                model.polach.k_s = v;
-            }
-            if let Some(v) = md.opt_f64("polach_a", unit)? {
-                model.polach.a = v;
-            }
-            if let Some(v) = md.opt_f64("polach_b_s_per_m", Range::new(0.0, true, 1e3, true))? {
-                model.polach.b_s_per_m = v;
-            }
-            model.relaxation_length_mm = md.opt_f64("relaxation_length_mm", Range::new(0.0, false, 1e4, true))?;
             if let Some(f) = md.opt_choice("nonhertz_flexibility", &["strip", "equivalent_ellipse"])? {
                 model.nonhertz_flexibility =
                     if f == "strip" { PatchFlexibility::Strip } else { PatchFlexibility::EquivalentEllipse };
             }
-            md.finish()?;
+            model_params = md.defer();
         }
 
         // [contact_solver]
@@ -562,6 +520,7 @@ impl Scene {
             cs_per_mm,
             init,
             model,
+            model_params,
             contact_solver,
             external,
             limits,
