@@ -26,7 +26,7 @@ fn thesis_text(name: &str) -> String {
 fn problem(grid: usize) -> Problem {
     let text = thesis_text("sine_f30_mu10");
     let text = text.replace("mx = 22", &format!("mx = {grid}")).replace("my = 22", &format!("my = {grid}"));
-    Problem::resolve(&Scene::from_toml(&text, Path::new(".")).unwrap()).unwrap()
+    creepbench::pipeline::resolve(&Scene::from_toml(&text, Path::new(".")).unwrap()).unwrap()
 }
 
 fn bench_uba(c: &mut Criterion) {
@@ -119,7 +119,7 @@ fn bench_contact_shape(c: &mut Criterion) {
     let dir = root.join("scenes/nonhertz");
     let mut g = c.benchmark_group("contact_shape_30x28");
     for (id, text, dir) in [("hertz", hertz, Path::new(".")), ("nonhertz", nh, dir.as_path())] {
-        let p = Problem::resolve(&Scene::from_toml(&text, dir).unwrap()).unwrap();
+        let p = creepbench::pipeline::resolve(&Scene::from_toml(&text, dir).unwrap()).unwrap();
         assert_eq!((p.grid.mx, p.grid.my), (30, 28));
         bench_transient_step(&mut g, id, &p, 0.35);
     }
@@ -188,7 +188,7 @@ fn bench_uba_run(c: &mut Criterion) {
         .replace("mx = 22", "mx = 176")
         .replace("my = 22", "my = 176")
         .replace("solvers = [\"uba\", \"fastsim\", \"contact\", \"linear\"]", "solvers = [\"uba\"]");
-    let p = Problem::resolve(&Scene::from_toml(&text, Path::new(".")).unwrap()).unwrap();
+    let p = creepbench::pipeline::resolve(&Scene::from_toml(&text, Path::new(".")).unwrap()).unwrap();
     let elements = (p.grid.len() * p.loading.rows().count()) as u64;
     let mut g = c.benchmark_group("uba_run");
     g.sample_size(10).throughput(Throughput::Elements(elements));

@@ -1,15 +1,20 @@
 //! The straight path scene → resolved problem → models → histories → metrics, for one scene.
+//! The one place that wires the stages: the scene's names are checked against the model and
+//! metric registries here, the metrics chosen and each model's applicability checked, before
+//! anything is computed.
 
 use crate::error::{Error, InputError};
 use crate::history::external::External;
 use crate::history::sample_loop::{self, FieldIndicator};
 use crate::history::{self, History};
 use crate::metrics::{self, Metric};
-use crate::problem::Problem;
+use crate::problem::{ModelParamSet, Problem};
+use crate::scene::reader::Section;
 use crate::scene::source::SceneSource;
-use crate::scene::Scene;
+use crate::scene::{is_valid_name, study, ExternalSolver, Scene};
 use crate::solvers::{self, Termination};
 use std::path::Path;
+use std::sync::Arc;
 use std::time::Instant;
 
 /// Wall times of one model's run [s] (kept out of the CSVs, which stay deterministic).
@@ -59,7 +64,7 @@ pub fn load_source(source: &SceneSource, only: &[String]) -> Result<Problem, Err
         }
     }
     .map_err(in_file)?;
-    let mut problem = Problem::resolve(&scene).map_err(in_file)?;
+    let mut problem = resolve(&scene).map_err(in_file)?;
     if !only.is_empty() {
         for s in only {
             if !problem.solvers.contains(s) {
@@ -74,6 +79,112 @@ pub fn load_source(source: &SceneSource, only: &[String]) -> Result<Problem, Err
         problem.solvers.retain(|s| only.contains(s));
     }
     Ok(problem)
+}
+
+/// Check a scene against the registries and resolve it: its external and built-in model names,
+/// its metric names, the problem, the metrics that fit it and each model's applicability.
+pub fn resolve(scene: &Scene) -> Result<Problem, InputError> {
+    check_external_names(&scene.external)?;
+    let solvers = solver_names(scene)?;
+    let asked = metric_names(scene)?;
+    let params = model_params(scene)?;
+    let mut problem = Problem::resolve(scene, solvers, params)?;
+    select_metrics(&mut problem, asked.as_deref());
+    solvers::check_applicable(&problem)?;
+    Ok(problem)
+}
+
+/// A study file's scenes, its `metrics` checked against the metric registry.
+pub fn expand_study(doc: &toml::Table) -> Result<Vec<study::Expanded>, InputError> {
+    study::expand(doc, &metrics::names())
+}
+
+/// Every `[external.NAME]` has a valid name that is not a built-in model's.
+fn check_external_names(external: &[ExternalSolver]) -> Result<(), InputError> {
+    match external.iter().find(|e| !is_valid_name(&e.name) || solvers::builtin(&e.name).is_some()) {
+        None => Ok(()),
+        Some(e) => Err(InputError::new(
+            format!("external.{}", e.name),
+            format!("{:?}", e.name),
+            format!(
+                "an external solver name of [a-z0-9_]+ other than the built-in {}",
+                solvers::builtin_names().join(", ")
+            ),
+        )),
+    }
+}
+
+/// A top-level list of strings the scene kept as given, read as the scene reader would.
+fn given_list(key: &str, value: Option<&toml::Value>, allowed: &str) -> Result<Option<Vec<String>>, InputError> {
+    let mut table = toml::Table::new();
+    if let Some(v) = value {
+        table.insert(key.to_string(), v.clone());
+    }
+    Section::new("", &table).opt_str_list(key, allowed)
+}
+
+/// `solvers`: distinct names of built-in models or of the scene's `[external.NAME]`.
+fn solver_names(scene: &Scene) -> Result<Vec<String>, InputError> {
+    let known: Vec<String> = solvers::builtin_names()
+        .into_iter()
+        .map(String::from)
+        .chain(scene.external.iter().map(|e| e.name.clone()))
+        .collect();
+    let allowed = format!("a non-empty list of distinct names from {}", known.join(", "));
+    let names = given_list("solvers", scene.solvers.as_ref(), &allowed)?
+        .ok_or_else(|| InputError::new("solvers", "missing", allowed.clone()))?;
+    if names.is_empty() {
+        return Err(InputError::new("solvers", "[]", allowed));
+    }
+    for (n, s) in names.iter().enumerate() {
+        if !known.contains(s) || names[..n].contains(s) {
+            return Err(InputError::new(format!("solvers[{n}]"), format!("{s:?}"), allowed));
+        }
+    }
+    Ok(names)
+}
+
+/// `metrics` (optional): distinct names of the metric registry.
+fn metric_names(scene: &Scene) -> Result<Option<Vec<String>>, InputError> {
+    let known = metrics::names().join(", ");
+    let names = given_list("metrics", scene.metrics.as_ref(), &format!("names from {known}"))?;
+    if let Some(ms) = &names {
+        for (n, m) in ms.iter().enumerate() {
+            if metrics::by_name(m).is_none() || ms[..n].contains(m) {
+                return Err(InputError::new(
+                    format!("metrics[{n}]"),
+                    format!("{m:?}"),
+                    format!("distinct names from {known}"),
+                ));
+            }
+        }
+    }
+    Ok(names)
+}
+
+/// Every model's own `[model]` keys, read and validated once by its `ModelDef::params`, in
+/// registry order; then a `[model]` key neither the scene nor a model reads is refused.
+fn model_params(scene: &Scene) -> Result<ModelParamSet, InputError> {
+    let mut md = scene.model_params.resume();
+    let params = solvers::MODELS
+        .iter()
+        .filter_map(|m| m.params)
+        .map(|read| read(&mut md).map(Arc::from))
+        .collect::<Result<Vec<_>, _>>()?;
+    md.finish()?;
+    Ok(ModelParamSet::new(params))
+}
+
+/// The metrics asked for (or all) that fit the problem's loading; one asked for that does not
+/// fit is left out with a warning.
+fn select_metrics(problem: &mut Problem, asked: Option<&[String]>) {
+    let (chosen, skipped) = metrics::select(asked, &problem.loading, problem.rolling.dt_s);
+    for (m, why) in &skipped {
+        if asked.is_some_and(|a| a.contains(m)) {
+            problem.warnings.push(format!("metric {m} left out: {why}"));
+        }
+    }
+    (problem.metrics, problem.skipped_metrics) = (chosen, skipped);
 }
 
 /// Run the problem's models (only those it lists) and compute its metrics.

@@ -108,7 +108,7 @@ fn contact_case(folder: &str, case: &str) -> (Problem, Vec<(f64, f64)>) {
         .lines()
         .map(|l| if l.starts_with("solvers") { "solvers = [\"fastrip\", \"fastsim\"]".into() } else { l.into() })
         .collect();
-    let p = Problem::resolve(&Scene::from_toml(&text.join("\n"), &dir).unwrap()).unwrap();
+    let p = creepbench::pipeline::resolve(&Scene::from_toml(&text.join("\n"), &dir).unwrap()).unwrap();
     let set = if folder == "thesis" { "contact" } else { "contact_envelope" };
     let mut rdr = csv::Reader::from_path(root().join(format!("reference/{set}/{case}.csv"))).unwrap();
     let h = rdr.headers().unwrap().clone();
@@ -172,7 +172,7 @@ fn refuses_a_contact_given_per_element() {
         .map(|l| if l.starts_with("solvers") { "solvers = [\"fastrip\"]".into() } else { l.into() })
         .collect();
     let scene = Scene::from_toml(&text.join("\n"), Path::new(&dir)).unwrap();
-    let e = Problem::resolve(&scene).unwrap_err();
+    let e = creepbench::pipeline::resolve(&scene).unwrap_err();
     assert_eq!(e.field, "geometry.kind", "{e}");
     assert!(e.value.contains("profile") && e.allowed.contains("Hertz's ellipse"), "{e}");
 }

@@ -263,7 +263,7 @@ fn problem_with_model(dir: &Path, script: &str) -> Problem {
     fs::write(dir.join("model.sh"), format!("{LOG_TEMP_DIR}{script}")).unwrap();
     let ext = format!("[external.m]\ncommand = [\"sh\", \"{}\"]\n", dir.join("model.sh").display());
     let text = scene_text("ext", "[\"m\"]", 0.4, 10, "kind = \"step\"\nc = 0.005\nsteps = 6", &ext);
-    Problem::resolve(&Scene::from_toml(&text, dir).unwrap()).unwrap()
+    creepbench::pipeline::resolve(&Scene::from_toml(&text, dir).unwrap()).unwrap()
 }
 
 /// Every temporary folder a model ran in is gone.

@@ -26,18 +26,9 @@ const STAGES: &[&[&str]] = &[
     &["lib", "main"], // the crate roots
 ];
 
-/// Imports that still run up the stack on this branch, each to be removed by the change named
-/// (the test fails once an entry is no longer needed, so the list only shrinks).
-/// TODO(lead): remove the H2 entries after merging H2 (worktree params: name checks,
-/// applicability and metric selection move from the reader and the resolver into pipeline.rs)
-/// and the H3 entry after merging H3 (pipeline.rs no longer imports harness/suite.rs).
-const NOT_YET: &[(&str, &str)] = &[
-    ("src/scene/mod.rs", "solvers"),   // H2
-    ("src/scene/mod.rs", "metrics"),   // H2
-    ("src/scene/study.rs", "metrics"), // H2
-    ("src/problem/mod.rs", "solvers"), // H2
-    ("src/problem/mod.rs", "metrics"), // H2
-];
+/// Imports that still run up the stack (the test fails once an entry is no longer needed, so the
+/// list only shrinks).
+const NOT_YET: &[(&str, &str)] = &[];
 
 /// The stage index of a top-level module.
 fn stage(module: &str) -> Option<usize> {

@@ -47,7 +47,7 @@ fn worst_against_contact(p: &Problem, case: &str) -> [f64; 3] {
 fn exact_solver_matches_contact_on_every_nonhertz_case() {
     for case in CASES {
         let sc = Scene::from_file(&root().join(format!("scenes/nonhertz/{case}.toml"))).unwrap();
-        let p = Problem::resolve(&sc).unwrap();
+        let p = creepbench::pipeline::resolve(&sc).unwrap();
         assert_eq!(p.geometry.kind(), "profile");
         assert!(p.warnings.is_empty(), "{case}: {:?}", p.warnings);
         let w = worst_against_contact(&p, case);
@@ -101,7 +101,7 @@ fn field_geometry_from_contacts_input_matches_contact() {
         &profile_scene[end..]
     )
     .replace("file = \"nh_asym", &format!("file = \"{}/scenes/nonhertz/nh_asym", root().display()));
-    let p = Problem::resolve(&Scene::from_toml(&text, &dir).unwrap()).unwrap();
+    let p = creepbench::pipeline::resolve(&Scene::from_toml(&text, &dir).unwrap()).unwrap();
     assert_eq!(p.geometry.kind(), "field");
     // scene.json hands the shape to external models in CONTACT's order, as given.
     let resolved = creepbench::problem::ResolvedScene::of(&p, &[]);
@@ -109,7 +109,8 @@ fn field_geometry_from_contacts_input_matches_contact() {
     assert_eq!(resolved.grid_edges_mm, Some([[-8.0, 8.0], [-6.0, 5.0]]));
     // The profile scene's h is CONTACT's input to its printed digits (a1 to 10 digits).
     let profile =
-        Problem::resolve(&Scene::from_file(&root().join(format!("scenes/nonhertz/{case}.toml"))).unwrap()).unwrap();
+        creepbench::pipeline::resolve(&Scene::from_file(&root().join(format!("scenes/nonhertz/{case}.toml"))).unwrap())
+            .unwrap();
     let from_profile = creepbench::problem::ResolvedScene::of(&profile, &[]).undeformed_distance_mm.unwrap();
     let worst = from_profile.iter().zip(&h).fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
     println!("profile h against CONTACT's input: worst {worst:.1e} mm");
@@ -138,7 +139,7 @@ fn field_index_runs_along_contacts_x() {
         let text = format!(
             "name = \"bowl\"\nsolvers = [\"contact\"]\n[contact]\nfn_n = 20000.0\nmu = 0.3\n[geometry]\nkind = \"field\"\nfield = \"h.csv\"\n[material]\ng_mpa = 82000.0\npoisson = 0.28\n[grid]\nmx = {mx}\nmy = {my}\nx_mm = [-6.0, 6.0]\ny_mm = [-4.0, 4.0]\n[creepage]\nkind = \"sweep\"\nover = \"cy\"\nfrom = 0.001\nto = 0.001\npoints = 1\n"
         );
-        Problem::resolve(&Scene::from_toml(&text, &dir).unwrap()).unwrap()
+        creepbench::pipeline::resolve(&Scene::from_toml(&text, &dir).unwrap()).unwrap()
     };
     let p = bowl(2.0);
     assert!(p.warnings.is_empty(), "{:?}", p.warnings);
@@ -177,7 +178,7 @@ fn equivalent_ellipse_of_a_hertz_contact_is_its_ellipse() {
 fn nonhertz_input_errors_and_warnings() {
     let base = std::fs::read_to_string(root().join("scenes/nonhertz/nh_flat_sweep_cx.toml")).unwrap();
     let dir = root().join("scenes/nonhertz");
-    let resolve = |text: &str| Scene::from_toml(text, &dir).and_then(|s| Problem::resolve(&s));
+    let resolve = |text: &str| Scene::from_toml(text, &dir).and_then(|s| creepbench::pipeline::resolve(&s));
     let err = |text: &str| resolve(text).expect_err("an input error").to_string();
     // A profile that does not cover the grid.
     let e = err(&base.replace("y_mm = [-7.5, 7.5]", "y_mm = [-20.0, 20.0]"));

@@ -1,7 +1,6 @@
 //! A fuzz-style test of the scene parser: thousands of random and mutated inputs, no panic;
 //! every rejection is an input error naming a field.
 
-use creepbench::problem::Problem;
 use creepbench::scene::Scene;
 use proptest::prelude::*;
 use std::path::Path;
@@ -17,7 +16,7 @@ fn base() -> &'static str {
 fn parse(text: &str) {
     match Scene::from_toml(text, Path::new("/nonexistent")) {
         Ok(scene) => {
-            if let Err(e) = Problem::resolve(&scene) {
+            if let Err(e) = creepbench::pipeline::resolve(&scene) {
                 assert!(!e.field.is_empty(), "resolve error without a field: {e}");
             }
         }

@@ -42,6 +42,7 @@ fn polach_falling_friction_and_reductions() {
     assert!(f < mu && f > 0.3 * mu);
     // Out-of-range parameters are input errors naming the key.
     let bad = scene_text("pol", "[\"polach\"]", mu0, 22, &sweep("cx", 0.2, 0.2, 1), "[model]\npolach_k_s = 0.0");
-    let e = creepbench::scene::Scene::from_toml(&bad, std::path::Path::new(".")).unwrap_err().to_string();
+    let scene = creepbench::scene::Scene::from_toml(&bad, std::path::Path::new(".")).unwrap();
+    let e = creepbench::pipeline::resolve(&scene).unwrap_err().to_string();
     assert!(e.contains("model.polach_k_s"), "{e}");
 }

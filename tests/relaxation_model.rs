@@ -166,7 +166,7 @@ fn envelope(name: &str) -> Problem {
         .lines()
         .map(|l| if l.starts_with("solvers") { "solvers = [\"relaxation\", \"fastsim\"]".into() } else { l.into() })
         .collect();
-    Problem::resolve(&Scene::from_toml(&text.join("\n"), &dir).unwrap()).unwrap()
+    creepbench::pipeline::resolve(&Scene::from_toml(&text.join("\n"), &dir).unwrap()).unwrap()
 }
 
 /// A change of FN or μ: the force [N] is carried over (the coefficient becomes F/FN at the new
@@ -242,7 +242,9 @@ fn relaxation_length_key_errors() {
             "kind = \"step\"\nc = 1e-4\nsteps = 2",
             &format!("[model]\nrelaxation_length_mm = {value}"),
         );
-        let e = Scene::from_toml(&text, std::path::Path::new(".")).unwrap_err();
+        let e = Scene::from_toml(&text, std::path::Path::new("."))
+            .and_then(|s| creepbench::pipeline::resolve(&s))
+            .unwrap_err();
         assert_eq!(e.field, "model.relaxation_length_mm", "{why}: {e}");
     }
 }

@@ -34,7 +34,7 @@ fn sweep(keys: &str) -> String {
 fn refused(text: &str) -> InputError {
     match Scene::from_toml(text, Path::new(".")) {
         Err(e) => e,
-        Ok(s) => Problem::resolve(&s).expect_err("the scene must be refused"),
+        Ok(s) => creepbench::pipeline::resolve(&s).expect_err("the scene must be refused"),
     }
 }
 
@@ -241,7 +241,7 @@ fn clipping_warning_only_beyond_the_scaled_grid() {
         let text =
             scene("kind = \"table\"\nfile = \"t.csv\"", "").replace("my = 10", &format!("my = 10\nscale = {scale}"));
         let s = Scene::from_toml(&text, tmp.path()).unwrap();
-        Problem::resolve(&s).unwrap().warnings
+        creepbench::pipeline::resolve(&s).unwrap().warnings
     };
     assert!(warnings(100000.0, 1.0).is_empty());
     assert!(warnings(80000.0, 1.0).is_empty());
@@ -272,7 +272,7 @@ fn table_with_rounded_times_covers_every_row() {
     let csv: String = rows.iter().map(|(t, cx, mu)| format!("{t:.9e},{cx},{mu}\n")).collect();
     std::fs::write(tmp.path().join("t.csv"), format!("t_s,cx,mu\n{csv}")).unwrap();
     let text = scene_on(22, "kind = \"table\"\nfile = \"t.csv\"");
-    let p = Problem::resolve(&Scene::from_toml(&text, tmp.path()).unwrap()).unwrap();
+    let p = creepbench::pipeline::resolve(&Scene::from_toml(&text, tmp.path()).unwrap()).unwrap();
     assert_eq!(p.rolling.dt_s, dt);
     assert_eq!(p.loading.samples.len(), n, "every row's step");
     // At step k the time differs from row k's by its rounding (<= 5e-11 relative, 2e-12 s here);
@@ -294,7 +294,9 @@ fn table_end_tolerance_is_relative_1e_8() {
     let steps = |t_end: f64| {
         std::fs::write(tmp.path().join("t.csv"), format!("t_s,cx\n0,0.001\n{t_end:e},0.002\n")).unwrap();
         let text = scene("kind = \"table\"\nfile = \"t.csv\"", "");
-        Scene::from_toml(&text, tmp.path()).and_then(|s| Problem::resolve(&s)).map(|p| p.loading.samples.len())
+        Scene::from_toml(&text, tmp.path())
+            .and_then(|s| creepbench::pipeline::resolve(&s))
+            .map(|p| p.loading.samples.len())
     };
     assert_eq!(steps(20.0 * dt).unwrap(), 20);
     assert_eq!(steps(20.0 * dt * (1.0 - 0.5e-8)).unwrap(), 20);

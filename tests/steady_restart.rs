@@ -21,7 +21,7 @@ fn history(case: &str, restart: Option<&str>) -> History {
         text = text.replace("[init]", &format!("[contact_solver]\nsteady_restart = \"{r}\"\n\n[init]"));
     }
     let scene = Scene::from_toml(&text, &root().join("scenes/envelope")).expect("valid scene");
-    let p = creepbench::problem::Problem::resolve(&scene).expect("resolvable scene");
+    let p = creepbench::pipeline::resolve(&scene).expect("resolvable scene");
     run(&p, "contact")
 }
 

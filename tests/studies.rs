@@ -38,7 +38,7 @@ fn study_text(head: &str) -> String {
 }
 
 fn expand(text: &str) -> Result<Vec<study::Expanded>, creepbench::error::InputError> {
-    study::expand(&text.parse::<toml::Table>().unwrap())
+    creepbench::pipeline::expand_study(&text.parse::<toml::Table>().unwrap())
 }
 
 const TWO_AXES: &str = r#"

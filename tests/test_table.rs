@@ -8,7 +8,6 @@ use common::*;
 use creepbench::comparison::references::envelope::EnvelopeCases;
 use creepbench::comparison::references::{table, References};
 use creepbench::history::MZ;
-use creepbench::scene::study;
 use creepbench::suite;
 
 /// The study's 140 points, named as the reference, x the direction in degrees.
@@ -94,11 +93,11 @@ fn sweep_at_a_list() {
 fn axis_x_values() {
     let text = std::fs::read_to_string(root().join("scenes/table/study_test_table.toml")).unwrap();
     let doc: toml::Table = text.parse().unwrap();
-    let points = study::expand(&doc).unwrap();
+    let points = creepbench::pipeline::expand_study(&doc).unwrap();
     assert_eq!(points.len(), 140);
     assert_eq!((points[0].name.as_str(), points[0].point.x), ("tt_ab0p2_sp0_m90", -90.0));
     assert_eq!(points[0].point.series, "case ab0p2_sp0");
     let bad = text.replace("x_values = [-90.0, -60.0,", "x_values = [-60.0,");
-    let e = study::expand(&bad.parse().unwrap()).unwrap_err();
+    let e = creepbench::pipeline::expand_study(&bad.parse().unwrap()).unwrap_err();
     assert!(e.field.ends_with("x_values") && e.allowed.contains("7 numbers"), "{e}");
 }

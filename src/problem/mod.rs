@@ -4,9 +4,11 @@
 //! data: material, geometry, grid, rolling, loading, model options, solver options.
 
 pub mod loading;
+pub mod params;
 pub mod resolved;
 
 pub use loading::{Loading, LoadingKind, Sample};
+pub use params::{ModelParamSet, ModelParams};
 pub use resolved::ResolvedScene;
 
 use crate::error::InputError;
@@ -88,6 +90,7 @@ fn check_loads(
 pub struct Problem {
     pub name: String,
     pub solvers: Vec<String>,
+    /// The metrics computed (chosen by the pipeline from the scene's and the loading).
     pub metrics: Vec<String>,
     /// Metrics the scene left out, with the reason (for the report).
     pub skipped_metrics: Vec<(String, String)>,
@@ -104,6 +107,8 @@ pub struct Problem {
     pub nominal: Sample,
     pub loading: Loading,
     pub model: ModelOptions,
+    /// Each model's own parameters, read and validated once ([`params`]).
+    pub model_params: ModelParamSet,
     pub contact_solver: ContactSolverOptions,
     pub external: Vec<ExternalSolver>,
     pub limits: Limits,
@@ -114,8 +119,9 @@ pub struct Problem {
 }
 
 impl Problem {
-    /// Resolve a validated scene.
-    pub fn resolve(scene: &Scene) -> Result<Problem, InputError> {
+    /// Resolve a validated scene whose model names (`solvers`, checked against the registry) and
+    /// models' parameters are given; its metrics are chosen after (the pipeline wires the three).
+    pub fn resolve(scene: &Scene, solvers: Vec<String>, model_params: ModelParamSet) -> Result<Problem, InputError> {
         let material = match (scene.material.g_mpa, scene.material.e_mpa) {
             (Some(g), Some(e)) => {
                 // E = 2G(1 + ν) for an isotropic material; the thesis's own Table 4.1 pair
@@ -161,19 +167,13 @@ impl Problem {
         if !geometry.elliptic() {
             check_loads(geometry.as_ref(), &loading, &mut warnings)?;
         }
-        let (metrics, skipped_metrics) = crate::metrics::select(scene.metrics.as_deref(), &loading, dt_s);
-        for (m, why) in &skipped_metrics {
-            if scene.metrics.as_ref().is_some_and(|asked| asked.contains(m)) {
-                warnings.push(format!("metric {m} left out: {why}"));
-            }
-        }
         let nominal =
             Sample { step: 0, t_s: 0.0, cx: 0.0, cy: scene.cy, cs: scene.cs_per_mm, fn_n: scene.fn_n, mu: scene.mu };
         let problem = Problem {
             name: scene.name.clone(),
-            solvers: scene.solvers.clone(),
-            metrics,
-            skipped_metrics,
+            solvers,
+            metrics: Vec::new(),
+            skipped_metrics: Vec::new(),
             material,
             geometry,
             coefficients,
@@ -187,6 +187,7 @@ impl Problem {
             nominal,
             loading,
             model: scene.model,
+            model_params,
             contact_solver: scene.contact_solver,
             external: scene.external.clone(),
             limits: scene.limits,
@@ -195,7 +196,6 @@ impl Problem {
             warnings,
         };
         problem.check_derived()?;
-        crate::solvers::check_applicable(&problem)?;
         Ok(problem)
     }
 

@@ -2,6 +2,7 @@
 //! `bless` (interface.md: at least a_mm, b_mm, p0_mpa, c11, c22, c23, dx_mm, dy_mm, dt_s,
 //! n_steps and the solvers that ran), read back by the harness and by external models.
 
+use super::params::ParamEntries;
 use super::{LoadingKind, Problem, Sample};
 use crate::scene::{ContactSolverOptions, InitKind, ModelOptions};
 use serde::{Deserialize, Serialize};
@@ -51,7 +52,7 @@ pub struct ResolvedScene {
     #[serde(default)]
     pub sweep_direction: Option<[f64; 3]>,
     pub init: InitKind,
-    pub model: ModelOptions,
+    pub model: ModelRecord,
     pub contact_solver: ContactSolverOptions,
     pub metrics: Vec<String>,
     /// (metric, why it was left out).
@@ -76,6 +77,15 @@ pub struct ResolvedScene {
     pub studies: Vec<crate::scene::study::StudyPoint>,
     /// The loading at every row (step 0 = the initial state at t = 0, when the scene has one).
     pub history: Vec<Sample>,
+}
+
+/// scene.json's `model`: the shared options, then each model's own parameters in registry order.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ModelRecord {
+    #[serde(flatten)]
+    pub options: ModelOptions,
+    #[serde(flatten)]
+    pub params: ParamEntries,
 }
 
 fn hertz() -> String {
@@ -124,7 +134,7 @@ impl ResolvedScene {
             freq_hz: p.loading.freq_hz,
             sweep_direction: p.loading.sweep_direction,
             init: p.loading.init,
-            model: p.model,
+            model: ModelRecord { options: p.model, params: p.model_params.scene_json() },
             contact_solver: p.contact_solver,
             metrics: p.metrics.clone(),
             skipped_metrics: p.skipped_metrics.clone(),

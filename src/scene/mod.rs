@@ -6,13 +6,14 @@
 pub mod geometry;
 pub mod reader;
 pub mod source;
+mod sections;
 pub mod study;
 pub mod table;
 
 use crate::error::InputError;
 use crate::physics::geometry::{Extent, GeometrySpec};
-use crate::physics::{CoefficientSource, FlexibilityModel, LeadingEdge, PatchFlexibility, PressureShape, Radii};
-use reader::{Range, Section};
+use crate::physics::{CoefficientSource, FlexibilityModel, LeadingEdge, PatchFlexibility, PressureShape};
+use reader::{Deferred, Range, Section};
 use std::path::{Path, PathBuf};
 
 /// Largest grid accepted along either axis.
@@ -50,32 +51,8 @@ pub enum InitKind {
     Steady,
 }
 
-/// Polach's parameters (`[model] polach_k_a, polach_k_s, polach_a, polach_b_s_per_m`; Wear 258
-/// (2005) Eq. 1–8): the reductions of the adhesion and slip parts and the falling friction
-/// `μ0 ((1 − A) e^(−B w) + A)`. Defaults: the unreduced curve with constant friction.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct PolachParams {
-    pub k_a: f64,
-    pub k_s: f64,
-    /// μ∞/μ0.
-    pub a: f64,
-    /// B [s/m].
-    pub b_s_per_m: f64,
-}
-
-impl Default for PolachParams {
-    fn default() -> Self {
-        PolachParams { k_a: 1.0, k_s: 1.0, a: 1.0, b_s_per_m: 0.0 }
-    }
-}
-
-impl PolachParams {
-    pub fn is_default(&self) -> bool {
-        *self == PolachParams::default()
-    }
-}
-
-/// Model options of the simplified models (`[model]`).
+/// Model options the simplified models share (`[model]`); a model's own parameters are its
+/// file's (`ModelDef::params`), read from [`Scene::model_params`].
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct ModelOptions {
     pub flexibility: FlexibilityModel,
@@ -93,12 +70,6 @@ pub struct ModelOptions {
     /// FASTSIM and the UBA with Kalker's single flexibility instead of three.
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub single_flexibility: bool,
-    /// Polach's model's parameters.
-    #[serde(default, skip_serializing_if = "PolachParams::is_default")]
-    pub polach: PolachParams,
-    /// The relaxation model's length [mm] for both components instead of the linear theory's.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub relaxation_length_mm: Option<f64>,
 }
 
 impl Default for ModelOptions {
@@ -111,8 +82,6 @@ impl Default for ModelOptions {
             nonhertz_flexibility: PatchFlexibility::EquivalentEllipse,
             single_flexibility: false,
             slope_reduction: None,
-            polach: PolachParams::default(),
-            relaxation_length_mm: None,
         }
     }
 }
@@ -175,7 +144,7 @@ impl Default for Limits {
     }
 }
 
-/// An external model (`[external.NAME] command = [...]`): any executable that reads scene.json
+/// An external model (`[external.NAME] command = [...]`; the pipeline checks NAME): any executable that reads scene.json
 /// and writes a history CSV in the `simulate` format.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ExternalSolver {
@@ -190,9 +159,11 @@ pub struct ExternalSolver {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
     pub name: String,
-    pub solvers: Vec<String>,
-    /// Metrics asked for; `None` = those that fit the creepage kind.
-    pub metrics: Option<Vec<String>>,
+    /// `solvers` as given: the pipeline checks it against the model registry and `external`.
+    pub solvers: Option<toml::Value>,
+    /// `metrics` as given (`None`: those that fit the creepage kind): the pipeline checks it
+    /// against the metric registry.
+    pub metrics: Option<toml::Value>,
     pub geometry: GeometrySpec,
     pub fn_n: f64,
     pub mu: f64,
@@ -210,6 +181,9 @@ pub struct Scene {
     pub cs_per_mm: f64,
     pub init: InitKind,
     pub model: ModelOptions,
+    /// The `[model]` keys the models read themselves (their parameters; the pipeline has each
+    /// model read and validate its own, then refuses a key no one read).
+    pub model_params: Deferred,
     pub contact_solver: ContactSolverOptions,
     pub external: Vec<ExternalSolver>,
     pub limits: Limits,
@@ -235,7 +209,8 @@ fn compact(v: f64) -> String {
     }
 }
 
-fn is_valid_name(s: &str) -> bool {
+/// A scene or external model name: 1 to 100 characters of `[a-z0-9_]`.
+pub fn is_valid_name(s: &str) -> bool {
     !s.is_empty() && s.len() <= 100 && s.bytes().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'_')
 }
 
@@ -262,342 +237,44 @@ impl Scene {
     /// relative paths.
     pub fn from_table(doc: &toml::Table, dir: &Path) -> Result<Scene, InputError> {
         let mut top = Section::new("", doc);
-
-        let name = top.str("name", "a name of [a-z0-9_]+")?;
-        if !is_valid_name(name) {
-            return Err(InputError::new("name", format!("{name:?}"), "1 to 100 characters of [a-z0-9_]"));
-        }
-        let mut external = Vec::new();
-        if let Some(mut ext) = top.opt_table("external")? {
-            for key in ext.keys() {
-                if !is_valid_name(&key) || crate::solvers::builtin(&key).is_some() {
-                    return Err(InputError::new(
-                        ext.field(&key),
-                        format!("{key:?}"),
-                        format!(
-                            "an external solver name of [a-z0-9_]+ other than the built-in {}",
-                            crate::solvers::builtin_names().join(", ")
-                        ),
-                    ));
-                }
-                let mut t = ext.table(&key)?;
-                let command = t
-                    .opt_str_list("command", "program and its arguments")?
-                    .filter(|c| !c.is_empty())
-                    .ok_or_else(|| {
-                        InputError::new(
-                            t.field("command"),
-                            "missing or empty",
-                            "a non-empty array: program and arguments",
-                        )
-                    })?;
-                let timeout_s = t
-                    .opt_f64("timeout_s", Range::new(0.0, false, 86400.0, true))?
-                    .unwrap_or(crate::safety::process::DEFAULT_TIMEOUT.as_secs_f64());
-                t.finish()?;
-                external.push(ExternalSolver { name: key, command, timeout_s });
-            }
-            ext.finish()?;
-        }
-        let solver_names: Vec<String> = crate::solvers::builtin_names()
-            .into_iter()
-            .map(String::from)
-            .chain(external.iter().map(|e| e.name.clone()))
-            .collect();
-        let allowed_solvers = format!("a non-empty list of distinct names from {}", solver_names.join(", "));
-        let solvers = top
-            .opt_str_list("solvers", &allowed_solvers)?
-            .ok_or_else(|| InputError::new("solvers", "missing", allowed_solvers.clone()))?;
-        if solvers.is_empty() {
-            return Err(InputError::new("solvers", "[]", allowed_solvers));
-        }
-        for (n, s) in solvers.iter().enumerate() {
-            if !solver_names.contains(s) || solvers[..n].contains(s) {
-                return Err(InputError::new(format!("solvers[{n}]"), format!("{s:?}"), allowed_solvers));
-            }
-        }
-        let metric_names = crate::metrics::names().join(", ");
-        let metrics = top.opt_str_list("metrics", &format!("names from {metric_names}"))?;
-        if let Some(ms) = &metrics {
-            for (n, m) in ms.iter().enumerate() {
-                if crate::metrics::by_name(m).is_none() || ms[..n].contains(m) {
-                    return Err(InputError::new(
-                        format!("metrics[{n}]"),
-                        format!("{m:?}"),
-                        format!("distinct names from {metric_names}"),
-                    ));
-                }
-            }
-        }
-
-        // [grid] (first: a geometry per element fills it)
-        let mut g = top.table("grid")?;
-        let mx = g.usize("mx", 1, MAX_ELEMENTS_PER_AXIS)?;
-        let my = g.usize("my", 1, MAX_ELEMENTS_PER_AXIS)?;
-        let grid_scale = g.opt_f64("scale", GRID_SCALE)?.unwrap_or(1.0);
-        let edge = Range::new(-1e4, true, 1e4, true);
-        let extent = match (g.opt_f64_array::<2>("x_mm", edge)?, g.opt_f64_array::<2>("y_mm", edge)?) {
-            (None, None) => Extent::Scale(grid_scale),
-            (Some(x_mm), Some(y_mm)) => {
-                for (key, [lo, hi]) in [("x_mm", x_mm), ("y_mm", y_mm)] {
-                    if hi <= lo {
-                        return Err(InputError::new(
-                            g.field(key),
-                            format!("[{lo}, {hi}]"),
-                            "edges [low, high] with low < high [mm]",
-                        ));
-                    }
-                }
-                g.refuse("scale", "not with explicit edges x_mm, y_mm (scale sizes a grid from the ellipse)")?;
-                Extent::Edges { x_mm, y_mm }
-            }
-            (x, _) => {
-                let missing = if x.is_none() { "x_mm" } else { "y_mm" };
-                return Err(InputError::new(
-                    g.field(missing),
-                    "missing",
-                    "both edges x_mm = [x0, x1] and y_mm = [y0, y1], or neither",
-                ));
-            }
-        };
-        g.finish()?;
-
-        // [geometry]: a contact given per element
+        let name = sections::name(&mut top)?;
+        let external = sections::external(&mut top)?;
+        let solvers = top.given("solvers").cloned();
+        let metrics = top.given("metrics").cloned();
+        let grid = sections::grid(&mut top)?;
         let element_geometry = match top.opt_table("geometry")? {
-            Some(section) => Some(geometry::read(section, dir, (mx, my))?),
+            Some(section) => Some(geometry::read(section, dir, (grid.mx, grid.my))?),
             None => None,
         };
-
-        // [contact]
-        let mut c = top.table("contact")?;
-        let len = Range::new(0.0, false, 1e4, true);
-        let geometry = if let Some(spec) = element_geometry {
-            for k in ["a_mm", "b_mm", "r_wx_mm", "r_wy_mm", "r_ry_mm"] {
-                c.refuse(k, "not with a [geometry] given per element (its contact follows from the normal problem)")?;
-            }
-            spec
-        } else if c.has("a_mm") || c.has("b_mm") || !c.has("r_wx_mm") {
-            let a_mm = c.f64("a_mm", len)?;
-            let b_mm = c.f64("b_mm", len)?;
-            for k in ["r_wx_mm", "r_wy_mm", "r_ry_mm"] {
-                if c.has(k) {
-                    return Err(InputError::new(
-                        c.field(k),
-                        "given",
-                        "either a_mm and b_mm, or the radii r_wx_mm, r_wy_mm, r_ry_mm, not both",
-                    ));
-                }
-            }
-            GeometrySpec::SemiAxes { a_mm, b_mm }
-        } else {
-            let radius = Range::new(0.0, false, f64::INFINITY, true);
-            GeometrySpec::Radii(Radii {
-                r_wx_mm: c.f64("r_wx_mm", Range::new(0.0, false, 1e9, true))?,
-                r_wy_mm: c.f64("r_wy_mm", radius)?,
-                r_ry_mm: c.f64("r_ry_mm", radius)?,
-            })
-        };
-        let fn_n = c.f64("fn_n", Range::new(0.0, false, 1e9, true))?;
-        let mu = c.f64("mu", Range::new(0.0, false, 1e3, true))?;
-        c.finish()?;
-
-        // [material]
-        let mut m = top.table("material")?;
-        let g_mpa = m.opt_f64("g_mpa", Range::new(0.0, false, 1e7, true))?;
-        let e_mpa = m.opt_f64("e_mpa", Range::new(0.0, false, 1e7, true))?;
-        let poisson = m.f64("poisson", Range::new(0.0, true, 0.5, false))?;
-        if g_mpa.is_none() && e_mpa.is_none() {
-            return Err(InputError::new(
-                "material.g_mpa",
-                "missing",
-                "g_mpa (or e_mpa, from which g_mpa = e/(2(1+poisson)))",
-            ));
-        }
-        m.finish()?;
-
-        // [rolling]
-        let (mut v_mm_s, mut courant) = (1000.0, 1.0);
-        if let Some(mut r) = top.opt_table("rolling")? {
-            v_mm_s = r.opt_f64("v_mm_s", Range::new(0.0, false, 1e6, true))?.unwrap_or(v_mm_s);
-            courant = r.opt_f64("courant", Range::new(0.0, false, 100.0, true))?.unwrap_or(courant);
-            r.finish()?;
-        }
-
-        // [creepage]
-        let mut cr = top.table("creepage")?;
-        let kind = cr.choice("kind", &["step", "sine", "sweep", "table"])?;
-        let creepage = match kind {
-            "step" => Creepage::Step {
-                c: cr.f64("c", CREEPAGE_LIMIT)?,
-                steps: cr.usize("steps", 1, HARD_MAX_STEPS)?,
-                c_before: cr.opt_f64("c_before", CREEPAGE_LIMIT)?.unwrap_or(0.0),
-            },
-            "sine" => Creepage::Sine {
-                c0: cr.f64("c0", CREEPAGE_LIMIT)?,
-                cp: cr.f64("cp", CREEPAGE_LIMIT)?,
-                freq_hz: cr.f64("freq_hz", Range::new(0.0, false, 1e6, true))?,
-                periods: cr.f64("periods", Range::new(0.0, false, 1e4, true))?,
-            },
-            "sweep" => {
-                let at = cr.opt_f64_list("at", FINITE, HARD_MAX_STEPS)?;
-                let (from, to, points) = match &at {
-                    Some(list) => {
-                        for key in ["from", "to", "points"] {
-                            cr.refuse(key, "either creepage.at (a list of t) or from, to, points, not both")?;
-                        }
-                        (list[0], list[list.len() - 1], list.len())
-                    }
-                    None => (cr.f64("from", FINITE)?, cr.f64("to", FINITE)?, cr.usize("points", 1, HARD_MAX_STEPS)?),
-                };
-                let over = cr.opt_choice("over", &["cx", "cy", "cs"])?;
-                let direction = match (over, cr.opt_f64_array::<3>("direction", FINITE)?) {
-                    (Some(o), Some(d)) => {
-                        return Err(InputError::new(
-                            cr.field("direction"),
-                            format!("{d:?} with over = {o:?}"),
-                            "either creepage.over or creepage.direction, not both",
-                        ))
-                    }
-                    (None, Some(d)) if d.iter().all(|&x| x == 0.0) => {
-                        return Err(InputError::new(
-                            cr.field("direction"),
-                            format!("{d:?}"),
-                            "three finite numbers [dcx, dcy, dcs], not all zero",
-                        ))
-                    }
-                    (None, Some(d)) => d,
-                    (Some("cy"), None) => [0.0, 1.0, 0.0],
-                    (Some("cs"), None) => [0.0, 0.0, 1.0],
-                    _ => [1.0, 0.0, 0.0],
-                };
-                let cx = cr.opt_f64("cx", CREEPAGE_LIMIT)?.unwrap_or(0.0);
-                Creepage::Sweep { from, to, points, direction, cx, at }
-            }
-            _ => {
-                let file = cr.str("file", "a CSV path relative to the scene file")?;
-                let path = dir.join(file);
-                let rows = table::CreepageTable::from_file(&path, &cr.field("file"))?;
-                Creepage::Table { file: path, rows }
-            }
-        };
-        if kind != "sweep" {
-            let only_sweep = format!("only with kind = \"sweep\" (kind {kind:?} sets cx itself)");
-            for key in ["cx", "over", "direction"] {
-                cr.refuse(key, &only_sweep)?;
-            }
-        }
-        let cy = cr.opt_f64("cy", CREEPAGE_LIMIT)?.unwrap_or(0.0);
-        let cs_per_mm = cr.opt_f64("cs", SPIN_LIMIT)?.unwrap_or(0.0);
-        cr.finish()?;
-
-        // [init]
-        let mut init = InitKind::Zero;
-        if let Some(mut i) = top.opt_table("init")? {
-            init = match i.opt_choice("kind", &["zero", "steady"])? {
-                Some("steady") => InitKind::Steady,
-                _ => InitKind::Zero,
-            };
-            i.finish()?;
-        }
-
-        // [model]
-        let mut model = ModelOptions::default();
-        if let Some(mut md) = top.opt_table("model")? {
-            if let Some(f) = md.opt_choice("flexibility", &["kalker", "thesis"])? {
-                model.flexibility = if f == "thesis" { FlexibilityModel::Thesis } else { FlexibilityModel::Kalker };
-            }
-            if let Some(c) = md.opt_choice("coefficients", &["table", "fit"])? {
-                model.coefficients = if c == "fit" { CoefficientSource::Fit } else { CoefficientSource::Table };
-            }
-            if let Some(p) = md.opt_choice("pressure", &["parabolic", "ellipsoidal"])? {
-                model.pressure = if p == "ellipsoidal" { PressureShape::Ellipsoidal } else { PressureShape::Parabolic };
-            }
-            if let Some(e) = md.opt_choice("leading_edge", &["grid", "exact"])? {
-                model.leading_edge = if e == "exact" { LeadingEdge::Exact } else { LeadingEdge::Grid };
-            }
-            if let Some([k0, alpha, beta]) =
-                md.opt_f64_array::<3>("slope_reduction", Range::new(0.0, true, 1e3, true))?
-            {
-                if !(k0 > 0.0 && (0.0..=1.0).contains(&alpha)) {
-                    return Err(InputError::new(
-                        md.field("slope_reduction"),
-                        format!("[{k0}, {alpha}, {beta}]"),
-                        "[k0, alpha, beta] with k0 > 0, 0 <= alpha <= 1, beta >= 0",
-                    ));
-                }
-                model.slope_reduction = Some([k0, alpha, beta]);
-            }
-            if let Some(n) = md.opt_choice("flexibilities", &["three", "one"])? {
-                model.single_flexibility = n == "one";
-            }
-            let unit = Range::new(0.0, false, 1.0, true);
-            if let Some(v) = md.opt_f64("polach_k_a", unit)? {
-                model.polach.k_a = v;
-            }
-            if let Some(v) = md.opt_f64("polach_k_s", unit)? {
-                model.polach.k_s = v;
-            }
-            if let Some(v) = md.opt_f64("polach_a", unit)? {
-                model.polach.a = v;
-            }
-            if let Some(v) = md.opt_f64("polach_b_s_per_m", Range::new(0.0, true, 1e3, true))? {
-                model.polach.b_s_per_m = v;
-            }
-            model.relaxation_length_mm = md.opt_f64("relaxation_length_mm", Range::new(0.0, false, 1e4, true))?;
-            if let Some(f) = md.opt_choice("nonhertz_flexibility", &["strip", "equivalent_ellipse"])? {
-                model.nonhertz_flexibility =
-                    if f == "strip" { PatchFlexibility::Strip } else { PatchFlexibility::EquivalentEllipse };
-            }
-            md.finish()?;
-        }
-
-        // [contact_solver]
-        let mut contact_solver = ContactSolverOptions::default();
-        if let Some(mut cs) = top.opt_table("contact_solver")? {
-            if let Some(t) = cs.opt_f64("tolerance", Range::new(1e-14, true, 1e-2, true))? {
-                contact_solver.tolerance = t;
-            }
-            if let Some(n) = cs.opt_usize("max_iterations", 1, 1_000_000)? {
-                contact_solver.max_iterations = n;
-            }
-            if let Some(r) = cs.opt_choice("steady_restart", &["contact", "converged"])? {
-                contact_solver.steady_restart =
-                    if r == "contact" { SteadyRestart::Contact } else { SteadyRestart::Converged };
-            }
-            cs.finish()?;
-        }
-        // [limits]
-        let mut limits = Limits::default();
-        if let Some(mut l) = top.opt_table("limits")? {
-            if let Some(n) = l.opt_usize("max_steps", 1, HARD_MAX_STEPS)? {
-                limits.max_steps = n;
-            }
-            if let Some(t) = l.opt_f64("max_estimated_s", Range::new(0.0, false, 1e7, true))? {
-                limits.max_estimated_s = t;
-            }
-            l.finish()?;
-        }
+        let contact = sections::contact(&mut top, element_geometry)?;
+        let material = sections::material(&mut top)?;
+        let (v_mm_s, courant) = sections::rolling(&mut top)?;
+        let loading = sections::creepage(&mut top, dir)?;
+        let init = sections::init(&mut top)?;
+        let (model, model_params) = sections::model(&mut top)?;
+        let contact_solver = sections::contact_solver(&mut top)?;
+        let limits = sections::limits(&mut top)?;
         top.finish()?;
-
         let scene = Scene {
-            name: name.to_string(),
+            name,
             solvers,
             metrics,
-            geometry,
-            fn_n,
-            mu,
-            material: MaterialSpec { g_mpa, e_mpa, poisson },
-            mx,
-            my,
-            grid_scale,
-            extent,
+            geometry: contact.geometry,
+            fn_n: contact.fn_n,
+            mu: contact.mu,
+            material,
+            mx: grid.mx,
+            my: grid.my,
+            grid_scale: grid.scale,
+            extent: grid.extent,
             v_mm_s,
             courant,
-            creepage,
-            cy,
-            cs_per_mm,
+            creepage: loading.creepage,
+            cy: loading.cy,
+            cs_per_mm: loading.cs_per_mm,
             init,
             model,
+            model_params,
             contact_solver,
             external,
             limits,

@@ -18,6 +18,27 @@ pub struct Section<'a> {
     used: BTreeSet<String>,
 }
 
+/// A section whose remaining keys a later stage reads (a model's own `[model]` keys): its table
+/// and the keys read so far, so that the last reader's [`Section::finish`] names every known key.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Deferred {
+    path: String,
+    table: Table,
+    used: BTreeSet<String>,
+}
+
+impl Deferred {
+    /// An absent section (no keys to read).
+    pub fn empty(path: impl Into<String>) -> Self {
+        Deferred { path: path.into(), ..Deferred::default() }
+    }
+
+    /// Read on where [`Section::defer`] stopped.
+    pub fn resume(&self) -> Section<'_> {
+        Section { path: self.path.clone(), table: &self.table, used: self.used.clone() }
+    }
+}
+
 /// A numeric range with its wording.
 #[derive(Debug, Clone, Copy)]
 pub struct Range {
@@ -83,6 +104,12 @@ impl<'a> Section<'a> {
     fn get(&mut self, key: &str) -> Option<&'a Value> {
         self.used.insert(key.to_string());
         self.table.get(key)
+    }
+
+    /// The value of `key` as given, if any (read later by another stage, e.g. a list of names
+    /// the pipeline checks against a registry).
+    pub fn given(&mut self, key: &str) -> Option<&'a Value> {
+        self.get(key)
     }
 
     pub fn has(&self, key: &str) -> bool {
@@ -287,6 +314,11 @@ impl<'a> Section<'a> {
     /// Keys of this table (for sections whose keys are names, like `[external]`).
     pub fn keys(&self) -> Vec<String> {
         self.table.keys().cloned().collect()
+    }
+
+    /// Leave the keys not read yet to a later stage ([`Deferred::resume`]); it calls `finish`.
+    pub fn defer(self) -> Deferred {
+        Deferred { path: self.path, table: self.table.clone(), used: self.used }
     }
 
     /// Fails on the first key that was never read.

@@ -152,8 +152,9 @@ pub fn set(doc: &mut Table, path: &str, value: Value, field: &str) -> Result<(),
     Ok(())
 }
 
-/// Expand a study file's table into its scenes, in axis order (the first axis outermost).
-pub fn expand(doc: &Table) -> Result<Vec<Expanded>, InputError> {
+/// Expand a study file's table into its scenes, in axis order (the first axis outermost);
+/// `study.metrics` must name metrics of `metric_names` (the registry's, given by the pipeline).
+pub fn expand(doc: &Table, metric_names: &[&str]) -> Result<Vec<Expanded>, InputError> {
     if let Some(k) = doc.keys().find(|k| *k != "study" && *k != "scene") {
         return Err(err(k.as_str(), "given", "a study file holds only [study] and [scene]"));
     }
@@ -216,8 +217,8 @@ pub fn expand(doc: &Table) -> Result<Vec<Expanded>, InputError> {
         Some(Value::Array(a)) => a
             .iter()
             .map(|m| match m.as_str() {
-                Some(s) if crate::metrics::by_name(s).is_some() => Ok(s.to_string()),
-                _ => Err(err("study.metrics", m, format!("names from {}", crate::metrics::names().join(", ")))),
+                Some(s) if metric_names.contains(&s) => Ok(s.to_string()),
+                _ => Err(err("study.metrics", m, format!("names from {}", metric_names.join(", ")))),
             })
             .collect::<Result<_, _>>()?,
         Some(v) => return Err(err("study.metrics", v, "an array of metric names")),

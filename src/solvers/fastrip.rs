@@ -41,6 +41,7 @@ pub const MODEL: ModelDef = ModelDef {
     iterative: false,
     check,
     cost_per_row: linear_in_elements,
+    params: None,
     build,
 };
 

@@ -20,7 +20,8 @@ pub use stepper::{FieldView, Step, Stepper};
 pub use termination::Termination;
 
 use crate::error::InputError;
-use crate::problem::Problem;
+use crate::problem::{ModelParams, Problem};
+use crate::scene::reader::Section;
 
 /// Why a model could not produce a trustworthy result.
 #[derive(Debug, thiserror::Error)]
@@ -47,9 +48,15 @@ pub struct ModelDef {
     pub check: fn(&Problem) -> Result<(), InputError>,
     /// Relative cost of one history row, for scheduling a suite (longest first).
     pub cost_per_row: fn(&Problem) -> f64,
+    /// Reads and validates the model's own `[model]` keys, once, before anything runs (`None`:
+    /// it has none). The builder takes the result back from `Problem::model_params`.
+    pub params: Option<ReadParams>,
     /// The stepper for this problem.
     pub build: for<'a> fn(&'a Problem) -> Result<Box<dyn Stepper + 'a>, SolveError>,
 }
+
+/// A model's parameter reader over the scene's `[model]` table.
+pub type ReadParams = fn(&mut Section<'_>) -> Result<Box<dyn ModelParams>, InputError>;
 
 /// Every built-in model. Adding one: its file and one line here.
 pub const MODELS: &[&ModelDef] = &[
@@ -96,7 +103,16 @@ pub const fn closed_form(
     summary: &'static str,
     build: for<'a> fn(&'a Problem) -> Result<Box<dyn Stepper + 'a>, SolveError>,
 ) -> ModelDef {
-    ModelDef { name, summary, extra_columns: &[], iterative: false, check: always, cost_per_row: negligible, build }
+    ModelDef {
+        name,
+        summary,
+        extra_columns: &[],
+        iterative: false,
+        check: always,
+        cost_per_row: negligible,
+        params: None,
+        build,
+    }
 }
 
 /// Cost of a closed-form law per row (scheduling only).

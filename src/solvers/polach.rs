@@ -13,19 +13,70 @@
 use super::stepper::{FieldView, Step, Stepper};
 use super::termination::Termination;
 use super::{closed_form, ModelDef, SolveError};
-use crate::problem::{Problem, Sample};
-use crate::scene::PolachParams;
+use crate::error::InputError;
+use crate::problem::params::ParamValue;
+use crate::problem::{ModelParams, Problem, Sample};
+use crate::scene::reader::{Range, Section};
 use std::f64::consts::PI;
 
 /// Polach's model.
-pub const MODEL: ModelDef = closed_form(
-    "polach",
-    "Polach (Wear 258, 2005): resultant creep force 2Qμ/π (kA ε/(1+(kA ε)²) + atan(kS ε)), falling friction μ0((1−A)e^(−Bw)+A)",
-    build,
-);
+pub const MODEL: ModelDef = ModelDef {
+    params: Some(read_params),
+    ..closed_form(
+        "polach",
+        "Polach (Wear 258, 2005): resultant creep force 2Qμ/π (kA ε/(1+(kA ε)²) + atan(kS ε)), falling friction μ0((1−A)e^(−Bw)+A)",
+        build,
+    )
+};
+
+/// Polach's parameters (`[model] polach_k_a, polach_k_s, polach_a, polach_b_s_per_m`; Wear 258
+/// (2005) Eq. 1–8): the reductions of the adhesion and slip parts and the falling friction
+/// `μ0 ((1 − A) e^(−B w) + A)`. Defaults: the unreduced curve with constant friction.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PolachParams {
+    pub k_a: f64,
+    pub k_s: f64,
+    /// μ∞/μ0.
+    pub a: f64,
+    /// B [s/m].
+    pub b_s_per_m: f64,
+}
+
+impl PolachParams {
+    /// The unreduced curve with constant friction.
+    pub const DEFAULT: PolachParams = PolachParams { k_a: 1.0, k_s: 1.0, a: 1.0, b_s_per_m: 0.0 };
+
+    /// Read and validate the scene's `[model] polach_*` keys (each optional: its default).
+    pub fn read(md: &mut Section<'_>) -> Result<PolachParams, InputError> {
+        let unit = Range::new(0.0, false, 1.0, true);
+        let d = PolachParams::DEFAULT;
+        Ok(PolachParams {
+            k_a: md.opt_f64("polach_k_a", unit)?.unwrap_or(d.k_a),
+            k_s: md.opt_f64("polach_k_s", unit)?.unwrap_or(d.k_s),
+            a: md.opt_f64("polach_a", unit)?.unwrap_or(d.a),
+            b_s_per_m: md.opt_f64("polach_b_s_per_m", Range::new(0.0, true, 1e3, true))?.unwrap_or(d.b_s_per_m),
+        })
+    }
+}
+
+impl ModelParams for PolachParams {
+    /// scene.json `model.polach = {k_a, k_s, a, b_s_per_m}`, left out at the defaults.
+    fn scene_json(&self) -> Vec<(&'static str, ParamValue)> {
+        if *self == PolachParams::DEFAULT {
+            return Vec::new();
+        }
+        let fields = [("k_a", self.k_a), ("k_s", self.k_s), ("a", self.a), ("b_s_per_m", self.b_s_per_m)];
+        vec![("polach", ParamValue::Record(fields.iter().map(|&(k, v)| (k.to_string(), v)).collect()))]
+    }
+}
+
+fn read_params(md: &mut Section<'_>) -> Result<Box<dyn ModelParams>, InputError> {
+    Ok(Box::new(PolachParams::read(md)?))
+}
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
-    Ok(Box::new(Polach { p, a_mm: 0.0, b_mm: 0.0 }))
+    let q = *p.model_params.get::<PolachParams>().unwrap_or(&PolachParams::DEFAULT);
+    Ok(Box::new(Polach { p, q, a_mm: 0.0, b_mm: 0.0 }))
 }
 
 /// Polach's resultant force over μ Q for the stiffness ratio `eps` (Eq. 1) and reductions kA, kS.
@@ -41,6 +92,7 @@ pub fn falling_friction(mu0: f64, w_m_s: f64, q: &PolachParams) -> f64 {
 
 struct Polach<'a> {
     p: &'a Problem,
+    q: PolachParams,
     /// The contact's semi-axes at the current load [mm].
     a_mm: f64,
     b_mm: f64,
@@ -54,7 +106,7 @@ impl Stepper for Polach<'_> {
     }
 
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
-        let (c, q, g) = (&self.p.coefficients, &self.p.model.polach, self.p.material.g_mpa);
+        let (c, q, g) = (&self.p.coefficients, &self.q, self.p.material.g_mpa);
         let (a, b) = (self.a_mm, self.b_mm);
         let sx = at.cx;
         let sy = at.cy + (a * b).sqrt() * c.c23 / c.c22 * at.cs;

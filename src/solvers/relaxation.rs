@@ -19,8 +19,11 @@
 use super::stepper::{FieldView, Step, Stepper};
 use super::termination::Termination;
 use super::{always, fastsim, linear_in_elements, ModelDef, SolveError};
+use crate::error::InputError;
 use crate::physics::{project_to_bound, LinearTheory};
-use crate::problem::{Problem, Sample};
+use crate::problem::params::ParamValue;
+use crate::problem::{ModelParams, Problem, Sample};
+use crate::scene::reader::{Range, Section};
 
 /// The relaxation (lag) model.
 pub const MODEL: ModelDef = ModelDef {
@@ -30,8 +33,34 @@ pub const MODEL: ModelDef = ModelDef {
     iterative: false,
     check: always,
     cost_per_row: linear_in_elements,
+    params: Some(read_params),
     build,
 };
+
+/// The relaxation model's parameter: `[model] relaxation_length_mm`, one length [mm] for both
+/// components instead of the linear theory's (`None`: the linear theory's).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct RelaxationParams {
+    pub length_mm: Option<f64>,
+}
+
+impl RelaxationParams {
+    /// Read and validate `[model] relaxation_length_mm` (optional).
+    pub fn read(md: &mut Section<'_>) -> Result<RelaxationParams, InputError> {
+        Ok(RelaxationParams { length_mm: md.opt_f64("relaxation_length_mm", Range::new(0.0, false, 1e4, true))? })
+    }
+}
+
+impl ModelParams for RelaxationParams {
+    /// scene.json `model.relaxation_length_mm`, left out when not given.
+    fn scene_json(&self) -> Vec<(&'static str, ParamValue)> {
+        self.length_mm.map(|l| ("relaxation_length_mm", ParamValue::Number(l))).into_iter().collect()
+    }
+}
+
+fn read_params(md: &mut Section<'_>) -> Result<Box<dyn ModelParams>, InputError> {
+    Ok(Box::new(RelaxationParams::read(md)?))
+}
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let first = p.loading.first();
@@ -48,7 +77,7 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
 /// the linear theory's, `G a b C11 / kx` and `G a b C22 / ky` of the contact's ellipse at that load
 /// (the equivalent ellipse on a contact given per element).
 pub fn relaxation_lengths_mm(p: &Problem, fn_n: f64) -> (f64, f64) {
-    if let Some(l) = p.model.relaxation_length_mm {
+    if let Some(l) = p.model_params.get::<RelaxationParams>().and_then(|r| r.length_mm) {
         return (l, l);
     }
     let e = p.geometry.ellipse_at(fn_n);

@@ -113,7 +113,7 @@ pub fn sources_of_file(path: &Path) -> Result<Vec<SceneSource>, Error> {
         e.field = format!("{}: {}", path.display(), e.field);
         e
     };
-    Ok(study::expand(&doc)
+    Ok(pipeline::expand_study(&doc)
         .map_err(in_file)?
         .into_iter()
         .map(|p| SceneSource { path: path.to_path_buf(), name: p.name, study: Some((p.doc, vec![p.point])) })

@@ -37,7 +37,7 @@ my = {grid}
 
 pub fn problem(text: &str) -> Problem {
     let scene = Scene::from_toml(text, Path::new(".")).expect("valid scene");
-    Problem::resolve(&scene).expect("resolvable scene")
+    creepbench::pipeline::resolve(&scene).expect("resolvable scene")
 }
 
 pub fn run(problem: &Problem, solver: &str) -> History {
@@ -80,7 +80,7 @@ pub fn compare_fields_with_contact(scene: &str, field_csv: &str, tol: f64) -> (u
     use creepbench::solvers::contact::tangential::ElementState;
     let path = root().join(scene);
     let sc = creepbench::scene::Scene::from_file(&path).unwrap();
-    let p = Problem::resolve(&sc).unwrap();
+    let p = creepbench::pipeline::resolve(&sc).unwrap();
     let mut rdr = csv::Reader::from_path(root().join(field_csv)).unwrap();
     let rows: Vec<csv::StringRecord> = rdr.records().map(Result::unwrap).collect();
     let steps: Vec<usize> = rows.iter().map(|r| r[0].parse().unwrap()).collect();

@@ -24,6 +24,7 @@ pub const MODEL: ModelDef = ModelDef {
     iterative: true,
     check,
     cost_per_row,
+    params: None,
     build,
 };
 

@@ -1,0 +1,353 @@
+//! The scene file's sections, one reader each ([`super::Scene::from_table`] calls them in the
+//! file's order): every reader takes its section from the top-level table, checks each key and
+//! refuses the keys it does not know.
+
+use super::reader::{Deferred, Range, Section};
+use super::{
+    is_valid_name, table, ContactSolverOptions, Creepage, ExternalSolver, InitKind, Limits, MaterialSpec, ModelOptions,
+    SteadyRestart, CREEPAGE_LIMIT, FINITE, GRID_SCALE, HARD_MAX_STEPS, MAX_ELEMENTS_PER_AXIS, SPIN_LIMIT,
+};
+use crate::error::InputError;
+use crate::physics::geometry::{Extent, GeometrySpec};
+use crate::physics::{CoefficientSource, FlexibilityModel, LeadingEdge, PatchFlexibility, PressureShape, Radii};
+use std::path::Path;
+
+/// `[grid]`: its element counts, its scale and the potential contact's extent.
+pub struct GridSpec {
+    pub mx: usize,
+    pub my: usize,
+    pub scale: f64,
+    pub extent: Extent,
+}
+
+/// The contact: its geometry, load and friction (`[contact]`, or `[geometry]` per element).
+pub struct ContactSpec {
+    pub geometry: GeometrySpec,
+    pub fn_n: f64,
+    pub mu: f64,
+}
+
+/// The loading: the creepage history and the constant lateral and spin creepages.
+pub struct CreepageSpec {
+    pub creepage: Creepage,
+    pub cy: f64,
+    pub cs_per_mm: f64,
+}
+
+/// `name`: 1 to 100 characters of `[a-z0-9_]`.
+pub fn name(top: &mut Section) -> Result<String, InputError> {
+    let name = top.str("name", "a name of [a-z0-9_]+")?;
+    if !is_valid_name(name) {
+        return Err(InputError::new("name", format!("{name:?}"), "1 to 100 characters of [a-z0-9_]"));
+    }
+    Ok(name.to_string())
+}
+
+/// `[external.NAME]`: each external model's command and time limit (the pipeline checks NAME).
+pub fn external(top: &mut Section) -> Result<Vec<ExternalSolver>, InputError> {
+    let mut external = Vec::new();
+    if let Some(mut ext) = top.opt_table("external")? {
+        for key in ext.keys() {
+            let t = ext.table(&key)?;
+            external.push(external_one(key, t)?);
+        }
+        ext.finish()?;
+    }
+    Ok(external)
+}
+
+/// One `[external.NAME]` table.
+fn external_one(name: String, mut t: Section) -> Result<ExternalSolver, InputError> {
+    let command =
+        t.opt_str_list("command", "program and its arguments")?.filter(|c| !c.is_empty()).ok_or_else(|| {
+            InputError::new(t.field("command"), "missing or empty", "a non-empty array: program and arguments")
+        })?;
+    let timeout_s = t
+        .opt_f64("timeout_s", Range::new(0.0, false, 86400.0, true))?
+        .unwrap_or(crate::safety::process::DEFAULT_TIMEOUT.as_secs_f64());
+    t.finish()?;
+    Ok(ExternalSolver { name, command, timeout_s })
+}
+
+/// `[grid]` (read first: a geometry per element fills it).
+pub fn grid(top: &mut Section) -> Result<GridSpec, InputError> {
+    let mut g = top.table("grid")?;
+    let mx = g.usize("mx", 1, MAX_ELEMENTS_PER_AXIS)?;
+    let my = g.usize("my", 1, MAX_ELEMENTS_PER_AXIS)?;
+    let scale = g.opt_f64("scale", GRID_SCALE)?.unwrap_or(1.0);
+    let extent = grid_extent(&mut g, scale)?;
+    g.finish()?;
+    Ok(GridSpec { mx, my, scale, extent })
+}
+
+/// `[grid] x_mm, y_mm` (both or neither): explicit edges, else `scale` times the ellipse's box.
+fn grid_extent(g: &mut Section, scale: f64) -> Result<Extent, InputError> {
+    let edge = Range::new(-1e4, true, 1e4, true);
+    match (g.opt_f64_array::<2>("x_mm", edge)?, g.opt_f64_array::<2>("y_mm", edge)?) {
+        (None, None) => Ok(Extent::Scale(scale)),
+        (Some(x_mm), Some(y_mm)) => {
+            for (key, [lo, hi]) in [("x_mm", x_mm), ("y_mm", y_mm)] {
+                if hi <= lo {
+                    return Err(InputError::new(
+                        g.field(key),
+                        format!("[{lo}, {hi}]"),
+                        "edges [low, high] with low < high [mm]",
+                    ));
+                }
+            }
+            g.refuse("scale", "not with explicit edges x_mm, y_mm (scale sizes a grid from the ellipse)")?;
+            Ok(Extent::Edges { x_mm, y_mm })
+        }
+        (x, _) => {
+            let missing = if x.is_none() { "x_mm" } else { "y_mm" };
+            Err(InputError::new(
+                g.field(missing),
+                "missing",
+                "both edges x_mm = [x0, x1] and y_mm = [y0, y1], or neither",
+            ))
+        }
+    }
+}
+
+/// `[contact]`: load and friction, and the ellipse (semi-axes or radii) unless `element_geometry`
+/// (`[geometry]`, a contact given per element) gives the contact.
+pub fn contact(top: &mut Section, element_geometry: Option<GeometrySpec>) -> Result<ContactSpec, InputError> {
+    let mut c = top.table("contact")?;
+    let geometry = match element_geometry {
+        Some(spec) => {
+            for k in ["a_mm", "b_mm", "r_wx_mm", "r_wy_mm", "r_ry_mm"] {
+                c.refuse(k, "not with a [geometry] given per element (its contact follows from the normal problem)")?;
+            }
+            spec
+        }
+        None => ellipse(&mut c)?,
+    };
+    let fn_n = c.f64("fn_n", Range::new(0.0, false, 1e9, true))?;
+    let mu = c.f64("mu", Range::new(0.0, false, 1e3, true))?;
+    c.finish()?;
+    Ok(ContactSpec { geometry, fn_n, mu })
+}
+
+/// `[contact]` semi-axes `a_mm, b_mm`, or the radii `r_wx_mm, r_wy_mm, r_ry_mm` (not both).
+fn ellipse(c: &mut Section) -> Result<GeometrySpec, InputError> {
+    if c.has("a_mm") || c.has("b_mm") || !c.has("r_wx_mm") {
+        let len = Range::new(0.0, false, 1e4, true);
+        let a_mm = c.f64("a_mm", len)?;
+        let b_mm = c.f64("b_mm", len)?;
+        for k in ["r_wx_mm", "r_wy_mm", "r_ry_mm"] {
+            if c.has(k) {
+                return Err(InputError::new(
+                    c.field(k),
+                    "given",
+                    "either a_mm and b_mm, or the radii r_wx_mm, r_wy_mm, r_ry_mm, not both",
+                ));
+            }
+        }
+        return Ok(GeometrySpec::SemiAxes { a_mm, b_mm });
+    }
+    let radius = Range::new(0.0, false, f64::INFINITY, true);
+    Ok(GeometrySpec::Radii(Radii {
+        r_wx_mm: c.f64("r_wx_mm", Range::new(0.0, false, 1e9, true))?,
+        r_wy_mm: c.f64("r_wy_mm", radius)?,
+        r_ry_mm: c.f64("r_ry_mm", radius)?,
+    }))
+}
+
+/// `[material]`: g_mpa or e_mpa (or both), and poisson.
+pub fn material(top: &mut Section) -> Result<MaterialSpec, InputError> {
+    let mut m = top.table("material")?;
+    let g_mpa = m.opt_f64("g_mpa", Range::new(0.0, false, 1e7, true))?;
+    let e_mpa = m.opt_f64("e_mpa", Range::new(0.0, false, 1e7, true))?;
+    let poisson = m.f64("poisson", Range::new(0.0, true, 0.5, false))?;
+    if g_mpa.is_none() && e_mpa.is_none() {
+        return Err(InputError::new(
+            "material.g_mpa",
+            "missing",
+            "g_mpa (or e_mpa, from which g_mpa = e/(2(1+poisson)))",
+        ));
+    }
+    m.finish()?;
+    Ok(MaterialSpec { g_mpa, e_mpa, poisson })
+}
+
+/// `[rolling]` (optional): the speed [mm/s] (default 1000) and the Courant number (default 1).
+pub fn rolling(top: &mut Section) -> Result<(f64, f64), InputError> {
+    let (mut v_mm_s, mut courant) = (1000.0, 1.0);
+    if let Some(mut r) = top.opt_table("rolling")? {
+        v_mm_s = r.opt_f64("v_mm_s", Range::new(0.0, false, 1e6, true))?.unwrap_or(v_mm_s);
+        courant = r.opt_f64("courant", Range::new(0.0, false, 100.0, true))?.unwrap_or(courant);
+        r.finish()?;
+    }
+    Ok((v_mm_s, courant))
+}
+
+/// `[creepage]`: the kind's history, and the constant cy and cs.
+pub fn creepage(top: &mut Section, dir: &Path) -> Result<CreepageSpec, InputError> {
+    let mut cr = top.table("creepage")?;
+    let kind = cr.choice("kind", &["step", "sine", "sweep", "table"])?;
+    let creepage = match kind {
+        "step" => Creepage::Step {
+            c: cr.f64("c", CREEPAGE_LIMIT)?,
+            steps: cr.usize("steps", 1, HARD_MAX_STEPS)?,
+            c_before: cr.opt_f64("c_before", CREEPAGE_LIMIT)?.unwrap_or(0.0),
+        },
+        "sine" => Creepage::Sine {
+            c0: cr.f64("c0", CREEPAGE_LIMIT)?,
+            cp: cr.f64("cp", CREEPAGE_LIMIT)?,
+            freq_hz: cr.f64("freq_hz", Range::new(0.0, false, 1e6, true))?,
+            periods: cr.f64("periods", Range::new(0.0, false, 1e4, true))?,
+        },
+        "sweep" => sweep(&mut cr)?,
+        _ => {
+            let file = cr.str("file", "a CSV path relative to the scene file")?;
+            let path = dir.join(file);
+            let rows = table::CreepageTable::from_file(&path, &cr.field("file"))?;
+            Creepage::Table { file: path, rows }
+        }
+    };
+    if kind != "sweep" {
+        let only_sweep = format!("only with kind = \"sweep\" (kind {kind:?} sets cx itself)");
+        for key in ["cx", "over", "direction"] {
+            cr.refuse(key, &only_sweep)?;
+        }
+    }
+    let cy = cr.opt_f64("cy", CREEPAGE_LIMIT)?.unwrap_or(0.0);
+    let cs_per_mm = cr.opt_f64("cs", SPIN_LIMIT)?.unwrap_or(0.0);
+    cr.finish()?;
+    Ok(CreepageSpec { creepage, cy, cs_per_mm })
+}
+
+/// `[creepage] kind = "sweep"`: the parameter's points (`from, to, points` or the list `at`),
+/// the direction (`over` or `direction`) and the constant cx.
+fn sweep(cr: &mut Section) -> Result<Creepage, InputError> {
+    let at = cr.opt_f64_list("at", FINITE, HARD_MAX_STEPS)?;
+    let (from, to, points) = match &at {
+        Some(list) => {
+            for key in ["from", "to", "points"] {
+                cr.refuse(key, "either creepage.at (a list of t) or from, to, points, not both")?;
+            }
+            (list[0], list[list.len() - 1], list.len())
+        }
+        None => (cr.f64("from", FINITE)?, cr.f64("to", FINITE)?, cr.usize("points", 1, HARD_MAX_STEPS)?),
+    };
+    let direction = sweep_direction(cr)?;
+    let cx = cr.opt_f64("cx", CREEPAGE_LIMIT)?.unwrap_or(0.0);
+    Ok(Creepage::Sweep { from, to, points, direction, cx, at })
+}
+
+/// A sweep's direction in (cx, cy, cs): `over` one creepage, or `direction` (not both; default cx).
+fn sweep_direction(cr: &mut Section) -> Result<[f64; 3], InputError> {
+    let over = cr.opt_choice("over", &["cx", "cy", "cs"])?;
+    Ok(match (over, cr.opt_f64_array::<3>("direction", FINITE)?) {
+        (Some(o), Some(d)) => {
+            return Err(InputError::new(
+                cr.field("direction"),
+                format!("{d:?} with over = {o:?}"),
+                "either creepage.over or creepage.direction, not both",
+            ))
+        }
+        (None, Some(d)) if d.iter().all(|&x| x == 0.0) => {
+            return Err(InputError::new(
+                cr.field("direction"),
+                format!("{d:?}"),
+                "three finite numbers [dcx, dcy, dcs], not all zero",
+            ))
+        }
+        (None, Some(d)) => d,
+        (Some("cy"), None) => [0.0, 1.0, 0.0],
+        (Some("cs"), None) => [0.0, 0.0, 1.0],
+        _ => [1.0, 0.0, 0.0],
+    })
+}
+
+/// `[init]` (optional): the initial tangential state (default zero).
+pub fn init(top: &mut Section) -> Result<InitKind, InputError> {
+    let mut init = InitKind::Zero;
+    if let Some(mut i) = top.opt_table("init")? {
+        init = match i.opt_choice("kind", &["zero", "steady"])? {
+            Some("steady") => InitKind::Steady,
+            _ => InitKind::Zero,
+        };
+        i.finish()?;
+    }
+    Ok(init)
+}
+
+/// `[model]` (optional): the options the simplified models share; the keys left are the models'
+/// own parameters, which the pipeline has each model read.
+pub fn model(top: &mut Section) -> Result<(ModelOptions, Deferred), InputError> {
+    let mut model = ModelOptions::default();
+    let Some(mut md) = top.opt_table("model")? else {
+        return Ok((model, Deferred::empty("model")));
+    };
+    if let Some(f) = md.opt_choice("flexibility", &["kalker", "thesis"])? {
+        model.flexibility = if f == "thesis" { FlexibilityModel::Thesis } else { FlexibilityModel::Kalker };
+    }
+    if let Some(c) = md.opt_choice("coefficients", &["table", "fit"])? {
+        model.coefficients = if c == "fit" { CoefficientSource::Fit } else { CoefficientSource::Table };
+    }
+    if let Some(p) = md.opt_choice("pressure", &["parabolic", "ellipsoidal"])? {
+        model.pressure = if p == "ellipsoidal" { PressureShape::Ellipsoidal } else { PressureShape::Parabolic };
+    }
+    if let Some(e) = md.opt_choice("leading_edge", &["grid", "exact"])? {
+        model.leading_edge = if e == "exact" { LeadingEdge::Exact } else { LeadingEdge::Grid };
+    }
+    model.slope_reduction = slope_reduction(&mut md)?;
+    if let Some(n) = md.opt_choice("flexibilities", &["three", "one"])? {
+        model.single_flexibility = n == "one";
+    }
+    if let Some(f) = md.opt_choice("nonhertz_flexibility", &["strip", "equivalent_ellipse"])? {
+        model.nonhertz_flexibility =
+            if f == "strip" { PatchFlexibility::Strip } else { PatchFlexibility::EquivalentEllipse };
+    }
+    Ok((model, md.defer()))
+}
+
+/// `[model] slope_reduction = [k0, alpha, beta]` (optional): k0 > 0, 0 ≤ α ≤ 1, β ≥ 0.
+fn slope_reduction(md: &mut Section) -> Result<Option<[f64; 3]>, InputError> {
+    let Some([k0, alpha, beta]) = md.opt_f64_array::<3>("slope_reduction", Range::new(0.0, true, 1e3, true))? else {
+        return Ok(None);
+    };
+    if !(k0 > 0.0 && (0.0..=1.0).contains(&alpha)) {
+        return Err(InputError::new(
+            md.field("slope_reduction"),
+            format!("[{k0}, {alpha}, {beta}]"),
+            "[k0, alpha, beta] with k0 > 0, 0 <= alpha <= 1, beta >= 0",
+        ));
+    }
+    Ok(Some([k0, alpha, beta]))
+}
+
+/// `[contact_solver]` (optional): tolerance, iteration limit, steady restart.
+pub fn contact_solver(top: &mut Section) -> Result<ContactSolverOptions, InputError> {
+    let mut contact_solver = ContactSolverOptions::default();
+    if let Some(mut cs) = top.opt_table("contact_solver")? {
+        if let Some(t) = cs.opt_f64("tolerance", Range::new(1e-14, true, 1e-2, true))? {
+            contact_solver.tolerance = t;
+        }
+        if let Some(n) = cs.opt_usize("max_iterations", 1, 1_000_000)? {
+            contact_solver.max_iterations = n;
+        }
+        if let Some(r) = cs.opt_choice("steady_restart", &["contact", "converged"])? {
+            contact_solver.steady_restart =
+                if r == "contact" { SteadyRestart::Contact } else { SteadyRestart::Converged };
+        }
+        cs.finish()?;
+    }
+    Ok(contact_solver)
+}
+
+/// `[limits]` (optional): the step limit and the estimated run time limit.
+pub fn limits(top: &mut Section) -> Result<Limits, InputError> {
+    let mut limits = Limits::default();
+    if let Some(mut l) = top.opt_table("limits")? {
+        if let Some(n) = l.opt_usize("max_steps", 1, HARD_MAX_STEPS)? {
+            limits.max_steps = n;
+        }
+        if let Some(t) = l.opt_f64("max_estimated_s", Range::new(0.0, false, 1e7, true))? {
+            limits.max_estimated_s = t;
+        }
+        l.finish()?;
+    }
+    Ok(limits)
+}
