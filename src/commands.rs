@@ -440,6 +440,9 @@ pub fn check(
 pub fn bless(suite_dir: &[PathBuf], golden: &Path, shard: Option<Shard>, progress: bool) -> Result<(), Error> {
     let scenes = run_suite(suite_dir, shard, progress)?;
     let suites = suite_names(suite_dir);
+    // One writer of golden/ at a time; what it keeps is read under the lock, so that concurrent
+    // blesses of other suites or shards all land.
+    let _lock = lock::lock_protected(golden, lock::DEFAULT_LOCK_WAIT)?;
     let mut kept = Vec::new();
     for name in results::scene_names(golden) {
         let old = results::read_resolved(golden, &name)?;

@@ -55,7 +55,7 @@ pub const TOLERANCE_FILE: &str = "tolerances.toml";
 pub struct SceneSource {
     /// The file it comes from.
     pub path: PathBuf,
-    /// The scene's name: a study point's, or a scene file's stem.
+    /// The scene's name: a study point's, or a scene file's `name` (its stem when it has none).
     pub name: String,
     /// A study point's scene table and its places in the studies (`None`: the file is the scene).
     pub study: Option<(toml::Table, Vec<StudyPoint>)>,
@@ -114,8 +114,14 @@ pub fn sources_of_file(path: &Path) -> Result<Vec<SceneSource>, Error> {
     let doc = crate::safety::read::read_text(path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")
         .ok()
         .and_then(|t| t.parse::<toml::Table>().ok());
-    let Some(doc) = doc.filter(study::is_study) else {
-        return Ok(vec![SceneSource { path: path.to_path_buf(), name: stem, study: None }]);
+    let doc = match doc {
+        Some(doc) if study::is_study(&doc) => doc,
+        other => {
+            // One identity for shards, bless and merge: the scene's `name` (its stem when it has
+            // none, which the scene reader then refuses).
+            let name = other.as_ref().and_then(|d| d.get("name")).and_then(|v| v.as_str()).map_or(stem, str::to_string);
+            return Ok(vec![SceneSource { path: path.to_path_buf(), name, study: None }]);
+        }
     };
     let in_file = |mut e: InputError| {
         e.field = format!("{}: {}", path.display(), e.field);
