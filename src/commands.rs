@@ -11,7 +11,7 @@ use crate::harness::results::{self, StoredScene};
 use crate::harness::sections;
 use crate::harness::suite::{self, Shard};
 use crate::harness::table;
-use crate::harness::tolerance_file::{self, Rule};
+use crate::harness::tolerance_file::{self, Loosening, Rule};
 use crate::pipeline;
 use crate::safety::{folder, guard, lock};
 use std::path::{Path, PathBuf};
@@ -126,8 +126,14 @@ pub fn build_report(
     fits: &[FitRecord],
 ) -> Result<PathBuf, Error> {
     let mut findings = compare::evaluate(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
-    tolerance_file::apply(rules, &mut findings, |_| false)?;
+    let loosened = tolerance_file::apply(rules, &mut findings, |_| false)?;
+    for l in &loosened {
+        eprintln!("loosened: {l}");
+    }
     let mut all = sections::all(scenes, refs);
+    if let Some(s) = sections::loosened(&loosened) {
+        all.insert(0, s);
+    }
     // Calibration right after the model ladder (or last, without one).
     let at = all.iter().position(|s| s.title.starts_with("Model ladder")).map_or(all.len(), |i| i + 1);
     if let Some(c) = calibration::section(fits) {
@@ -325,6 +331,8 @@ pub struct GateFiles {
     pub json: Option<PathBuf>,
     /// A Markdown summary; `$GITHUB_STEP_SUMMARY`, when set, gets it appended too.
     pub summary: Option<PathBuf>,
+    /// Refuse every rule that loosens a comparison the defaults gate (CI).
+    pub strict: bool,
 }
 
 impl GateFiles {
@@ -337,23 +345,23 @@ impl GateFiles {
     }
 
     /// Write each output whole (a temporary file in the same folder, renamed over the target).
-    fn write(&self, all: &[Finding]) -> Result<(), Error> {
+    fn write(&self, all: &[Finding], loosened: &[Loosening]) -> Result<(), Error> {
         use crate::harness::gate_output;
         let outputs = [
-            (&self.junit, gate_output::junit as fn(&[Finding]) -> String),
+            (&self.junit, gate_output::junit as fn(&[Finding], &[Loosening]) -> String),
             (&self.json, gate_output::json),
             (&self.summary, gate_output::summary),
         ];
         for (path, make) in outputs {
             if let Some(path) = path {
-                write_whole(path, &make(all))?;
+                write_whole(path, &make(all, loosened))?;
             }
         }
         if let Some(step_summary) = std::env::var_os("GITHUB_STEP_SUMMARY").filter(|v| !v.is_empty()) {
             let path = PathBuf::from(step_summary);
             let io = |source| Error::Io { path: path.clone(), source };
             let mut f = std::fs::OpenOptions::new().append(true).create(true).open(&path).map_err(io)?;
-            std::io::Write::write_all(&mut f, gate_output::summary(all).as_bytes()).map_err(io)?;
+            std::io::Write::write_all(&mut f, gate_output::summary(all, loosened).as_bytes()).map_err(io)?;
         }
         Ok(())
     }
@@ -400,9 +408,21 @@ pub fn check(
         Some(s) => suite::scene_names(suite_dir)?.into_iter().filter(|n| !s.takes(n)).collect(),
         None => Vec::new(),
     };
-    tolerance_file::apply(&rules, &mut all, |r| other_shards.iter().any(|n| tolerance_file::glob(&r.scene, n)))?;
+    let loosened =
+        tolerance_file::apply(&rules, &mut all, |r| other_shards.iter().any(|n| tolerance_file::glob(&r.scene, n)))?;
+    if files.strict {
+        if let Some(l) = loosened.first() {
+            return Err(InputError::new(&l.origin, l.to_string(), "no loosening of a default gate (--strict)").into());
+        }
+    }
     let worst = compare::worst_per_group(&all);
     print!("{}", compare::table(&worst));
+    if !loosened.is_empty() {
+        println!("\n{} rule(s) of the run's files loosen what the defaults gate:", loosened.len());
+        for l in &loosened {
+            println!("  {l}");
+        }
+    }
     let fails = compare::failures(&all);
     let gated = all.iter().filter(|f| f.gated).count();
     if against.is_some() {
@@ -423,7 +443,7 @@ pub fn check(
         }
     }
     println!("\n{} gated comparisons, {} failed", gated, fails.len());
-    files.write(&all)?;
+    files.write(&all, &loosened)?;
     if fails.is_empty() {
         Ok(())
     } else {

@@ -92,3 +92,118 @@ fn shards_and_bless_select_and_keep_scenes_by_their_name() {
         assert!(stderr(&o).contains("n_alpha") && stderr(&o).contains("f7.toml"), "{}", stderr(&o));
     }
 }
+
+/// A work folder with suite/ (two quick scenes), golden/ blessed from it, and a drift put into
+/// golden/: a_one's UBA fx_over_fn at step 1 moved by about 5e-3.
+fn drifted_workspace() -> tempfile::TempDir {
+    let w = tempfile::tempdir().unwrap();
+    for n in ["a_one", "a_two"] {
+        write_scene(&w.path().join("suite"), &format!("{n}.toml"), n);
+    }
+    let o = creepbench(w.path(), &["bless", "--quiet", "--suite", "suite"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let csv = w.path().join("golden/a_one/uba.csv");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+    let mut row: Vec<String> = lines[1].split(',').map(str::to_string).collect();
+    row[6] = "0.2".into();
+    lines[1] = row.join(",");
+    std::fs::write(&csv, lines.join("\n") + "\n").unwrap();
+    w
+}
+
+fn rule(body: &str) -> String {
+    format!("[[rule]]\nagainst = \"golden\"\n{body}\nwhy = \"the test's reason\"\n")
+}
+
+#[test]
+fn no_gate_is_disabled_in_silence() {
+    let w = drifted_workspace();
+    let check = |extra: &[&str]| {
+        let mut args = vec!["check", "--quiet", "--suite", "suite", "--reference"];
+        let refs = root().join("reference");
+        args.push(refs.to_str().unwrap());
+        args.extend_from_slice(extra);
+        creepbench(w.path(), &args)
+    };
+    // Without a file the drift fails the gate.
+    let o = check(&[]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    // Rules that make a gate unable to fail are refused unless they say so.
+    let one = "scene = \"a_one\"\nsolver = \"uba\"\nquantity = \"fx_over_fn\"";
+    for (body, field) in [
+        (format!("{one}\nabs = 1e9"), "abs"),
+        (format!("{one}\nabs = 1.7e308"), "abs"),
+        (format!("{one}\nabs = 0.0\nrel = 1e12"), "rel"),
+        (format!("{one}\ngated = false"), "gated = false"),
+        ("abs = 0.5".to_string(), "\"*\""),
+        ("scene = \"*\"\nabs = 0.5".to_string(), "\"*\""),
+    ] {
+        std::fs::write(w.path().join("t.toml"), rule(&body)).unwrap();
+        let o = check(&["--tolerances", "t.toml"]);
+        assert_eq!(o.status.code(), Some(2), "{body}: {}", stderr(&o));
+        assert!(stderr(&o).contains("t.toml rule[0]") && stderr(&o).contains(field), "{body}: {}", stderr(&o));
+        assert!(stderr(&o).contains("disable = true"), "{body}: {}", stderr(&o));
+    }
+    // Beyond f64, the file does not even parse.
+    std::fs::write(w.path().join("t.toml"), rule(&format!("{one}\nabs = 1.8e308"))).unwrap();
+    assert_eq!(check(&["--tolerances", "t.toml"]).status.code(), Some(2));
+    // A suite's tolerances.toml is read the same way.
+    std::fs::write(w.path().join("suite/tolerances.toml"), rule(&format!("{one}\nabs = 1e300"))).unwrap();
+    let o = check(&[]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("tolerances.toml rule[0]"), "{}", stderr(&o));
+    std::fs::remove_file(w.path().join("suite/tolerances.toml")).unwrap();
+    // A loosening that passes the drift is listed in every verdict, with file, rule, why, count.
+    for (body, decided) in [(format!("{one}\nabs = 0.01"), 1), (format!("{one}\ngated = false\ndisable = true"), 1)] {
+        std::fs::write(w.path().join("t.toml"), rule(&body)).unwrap();
+        let o = check(&["--tolerances", "t.toml", "--json", "v.json", "--junit", "v.xml", "--summary", "v.md"]);
+        assert_eq!(o.status.code(), Some(0), "{body}: {}", stderr(&o));
+        let out = String::from_utf8_lossy(&o.stdout).to_string();
+        let line =
+            format!("decided {decided} comparison(s), loosened {decided} the defaults gate; why: the test's reason");
+        assert!(out.contains("t.toml rule[0]: against golden") && out.contains(&line), "{body}: {out}");
+        let j: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(w.path().join("v.json")).unwrap()).unwrap();
+        let l = &j["loosened"][0];
+        assert_eq!(
+            (l["origin"].as_str(), l["decided"].as_u64(), l["why"].as_str()),
+            (Some("t.toml rule[0]"), Some(decided), Some("the test's reason")),
+            "{j}"
+        );
+        let xml = std::fs::read_to_string(w.path().join("v.xml")).unwrap();
+        assert!(xml.contains("<property name=\"loosened\" value=\"t.toml rule[0]: against golden"), "{xml}");
+        let md = std::fs::read_to_string(w.path().join("v.md")).unwrap();
+        assert!(md.contains("t.toml rule[0]") && md.contains(&line), "{md}");
+        // --strict refuses every loosening.
+        let o = check(&["--tolerances", "t.toml", "--strict"]);
+        assert_eq!(o.status.code(), Some(2), "{body}: {}", stderr(&o));
+        assert!(stderr(&o).contains("--strict") && stderr(&o).contains("t.toml rule[0]"), "{}", stderr(&o));
+    }
+    // A tightening is no loosening: --strict takes it, and nothing is listed.
+    std::fs::write(
+        w.path().join("t.toml"),
+        rule("scene = \"a_two\"\nsolver = \"uba\"\nquantity = \"fx_over_fn\"\nabs = 0.0"),
+    )
+    .unwrap();
+    let o = check(&["--tolerances", "t.toml", "--strict"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(!String::from_utf8_lossy(&o.stdout).contains("loosen"));
+    // The report lists it too (merge of a run's results with the file).
+    let refs = root().join("reference");
+    let refs = refs.to_str().unwrap();
+    let o = creepbench(
+        w.path(),
+        &["run", "--quiet", "--suite", "suite", "--results", "res", "--report", "rep", "--reference", refs],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    std::fs::write(w.path().join("t.toml"), rule(&format!("{one}\nabs = 0.01"))).unwrap();
+    let o = creepbench(
+        w.path(),
+        &["merge", "res", "--suite", "suite", "--report", "rep2", "--tolerances", "t.toml", "--reference", refs],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let md = std::fs::read_to_string(w.path().join("rep2/validation.md")).unwrap();
+    assert!(md.contains("Loosened gates") && md.contains("t.toml rule[0]") && md.contains("the test's reason"), "{md}");
+    assert!(stderr(&o).contains("loosened: t.toml rule[0]"), "{}", stderr(&o));
+}

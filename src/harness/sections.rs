@@ -21,6 +21,19 @@ pub struct Section {
     pub tables: Vec<(String, String)>,
 }
 
+/// The run's rules that loosen what the defaults gate (issue 30: no gate disabled in silence);
+/// none when there are none.
+pub fn loosened(all: &[super::tolerance_file::Loosening]) -> Option<Section> {
+    if all.is_empty() {
+        return None;
+    }
+    let mut body = String::from("Rules of this run's tolerance files that loosen comparisons the defaults gate:\n\n");
+    for l in all {
+        body.push_str(&format!("- {}\n", l.to_string().replace('|', "\\|")));
+    }
+    Some(Section::new("Loosened gates", body))
+}
+
 impl Section {
     fn new(title: &str, body: String) -> Section {
         Section { title: title.into(), body, ..Section::default() }
