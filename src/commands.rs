@@ -124,8 +124,10 @@ pub fn build_report(
     golden: Option<&Path>,
     rules: &[Rule],
     fits: &[FitRecord],
+    missing: Vec<Finding>,
 ) -> Result<PathBuf, Error> {
     let mut findings = compare::evaluate(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
+    findings.extend(missing);
     let loosened = tolerance_file::apply(rules, &mut findings, |_| false)?;
     for l in &loosened {
         eprintln!("loosened: {l}");
@@ -186,7 +188,7 @@ pub fn run(
     let stored = read_results(&[results_dir.to_path_buf()])?;
     let rules = file_rules(&[], suite_dir)?;
     let records = read_fit_records(&[results_dir.to_path_buf()])?;
-    let md = build_report(&stored, &refs, report_dir, Some(golden), &rules, &records)?;
+    let md = build_report(&stored, &refs, report_dir, Some(golden), &rules, &records, Vec::new())?;
     println!("{}", md.display());
     Ok(())
 }
@@ -303,8 +305,21 @@ pub fn merge(
         .cloned()
         .collect();
     let rules = file_rules(tolerances, &merged_suites)?;
-    let md = build_report(&scenes, &refs, report_dir, Some(golden), &rules, &read_fit_records(dirs)?)?;
+    // The blessed scenes of the merged suites that no shard produced fail, as in `check`.
+    let suites: Vec<&str> = scenes.iter().map(|s| s.scene.suite.as_str()).collect();
+    let missing = match golden.is_dir() {
+        true => compare::missing_scenes(golden, &scenes, Against::Golden, |_, suite| suites.contains(&suite))?,
+        false => Vec::new(),
+    };
+    let n_missing = missing.len();
+    for f in &missing {
+        eprintln!("MISSING scene {}: {}", f.scene, crate::harness::gate_output::describe(f));
+    }
+    let md = build_report(&scenes, &refs, report_dir, Some(golden), &rules, &read_fit_records(dirs)?, missing)?;
     println!("{}", md.display());
+    if n_missing > 0 {
+        return Err(Error::Drift { count: n_missing });
+    }
     Ok(())
 }
 

@@ -170,6 +170,9 @@ fn main() {
     if let Err(e) = creepbench::safety::interrupt::install() {
         eprintln!("warning: {e}");
     }
+    if let Some(w) = creepbench::safety::threads::cap_threads() {
+        eprintln!("warning: {w}");
+    }
     let result = match cli.command {
         Command::Fit { file, out, reference, golden } => {
             commands::fit(&file, out.as_deref(), &reference, &golden).map(|f| println!("{}", f.display()))

@@ -207,3 +207,220 @@ fn no_gate_is_disabled_in_silence() {
     assert!(md.contains("Loosened gates") && md.contains("t.toml rule[0]") && md.contains("the test's reason"), "{md}");
     assert!(stderr(&o).contains("loosened: t.toml rule[0]"), "{}", stderr(&o));
 }
+
+/// A study over `axes` ("key = [values]" lines, one axis each) with a quick template.
+fn study_text(axes: &[&str]) -> String {
+    let mut t = String::from("[study]\nname = \"st\"\n");
+    for (i, a) in axes.iter().enumerate() {
+        t.push_str(&format!("[[study.axis]]\nname = \"a{i}\"\n{a}\n"));
+    }
+    let scene = scene_text("x", "[\"uba\"]", 0.4, 8, "kind = \"step\"\nc = 0.005\nsteps = 4", "");
+    let body: String = scene
+        .lines()
+        .skip(1)
+        .map(|l| match l.strip_prefix('[') {
+            Some(table) => format!("[scene.{table}\n"),
+            None => format!("{l}\n"),
+        })
+        .collect();
+    t + "[scene]\n" + &body
+}
+
+#[test]
+fn study_values_are_finite_and_absurd_studies_are_refused_before_allocating() {
+    let w = tempfile::tempdir().unwrap();
+    for (axis, field) in [
+        ("\"contact.mu\" = [0.3, 0.4]\nx_values = [nan, 1.0]", "x_values"),
+        ("\"contact.mu\" = [0.3, 0.4]\nx_values = [1.0, inf]", "x_values"),
+        ("\"contact.mu\" = [0.3, nan]", "contact.mu"),
+        ("\"contact.mu\" = [-inf, 0.4]", "contact.mu"),
+    ] {
+        std::fs::write(w.path().join("s.toml"), study_text(&[axis])).unwrap();
+        for cmd in ["expand", "simulate"] {
+            let o = creepbench(w.path(), &[cmd, "s.toml", "--out", "o"]);
+            assert_eq!(o.status.code(), Some(2), "{axis}: {}", stderr(&o));
+            assert!(stderr(&o).contains(field) && stderr(&o).contains("finite"), "{axis}: {}", stderr(&o));
+        }
+        assert!(!w.path().join("o").exists(), "{axis}");
+    }
+    // 5 axes of 1e4 values: refused at once (it panicked with "capacity overflow", exit 101).
+    let values: Vec<String> = (1..=10_000).map(|i| i.to_string()).collect();
+    let axis = format!("\"grid.mx\" = [{}]", values.join(", "));
+    std::fs::write(w.path().join("s.toml"), study_text(&[axis.as_str(); 5])).unwrap();
+    let start = std::time::Instant::now();
+    let o = creepbench(w.path(), &["expand", "s.toml", "--out", "o"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("at most 100000 points"), "{}", stderr(&o));
+    assert!(start.elapsed().as_secs_f64() < 5.0, "{:?}", start.elapsed());
+    // 1e4 points expand (and get their names checked) in linear time: it took 7.7 s.
+    let doc: toml::Table = study_text(&[axis.as_str()]).parse().unwrap();
+    let start = std::time::Instant::now();
+    let points = creepbench::scene::study::expand(&doc).unwrap();
+    assert_eq!(points.len(), 10_000);
+    assert!(start.elapsed().as_secs_f64() < 2.0, "{:?}", start.elapsed());
+}
+
+#[test]
+fn fit_patterns_that_match_nothing_are_errors() {
+    use creepbench::harness::fit::spec::wildcard;
+    // `?` is one character, `*` any run (README).
+    assert!(wildcard("sine_f?0_mu06", "sine_f10_mu06") && wildcard("sine_f??0_mu06", "sine_f100_mu06"));
+    assert!(!wildcard("sine_f?0_mu06", "sine_f100_mu06") && wildcard("*_f*0_*", "sine_f100_mu06"));
+    assert!(wildcard("a*b?c", "aXXbYc") && !wildcard("a*b?c", "aXXbc") && wildcard("*", "") && !wildcard("?", ""));
+    let w = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(root().join("fits/uba_sine.toml")).unwrap();
+    let suite = root().join("scenes/thesis");
+    let text = text.replace("\"../scenes/thesis\"", &format!("{:?}", suite.to_str().unwrap()));
+    for (from, to, key) in [
+        (
+            "holdout = [\"sine_f*_mu10\", \"sine_f*_mu06\"]",
+            "holdout = [\"sine_f*_mu10\", \"sine_f*_mu99\"]",
+            "fit.holdout",
+        ),
+        ("holdout = [\"sine_f*_mu10\", \"sine_f*_mu06\"]", "holdout = [\"sine_f?0_mu9?\"]", "fit.holdout"),
+        ("fit = [\"sine_f10_mu10\", \"sine_f30_mu10\"]", "fit = [\"sine_f10_mu10\", \"nothing\"]", "fit.fit"),
+    ] {
+        assert!(text.contains(from), "{from}");
+        std::fs::write(w.path().join("f.toml"), text.replace(from, to)).unwrap();
+        let start = std::time::Instant::now();
+        let o = creepbench(
+            w.path(),
+            &["fit", "f.toml", "--out", "o.toml", "--reference", root().join("reference").to_str().unwrap()],
+        );
+        assert_eq!(o.status.code(), Some(2), "{to}: {}", stderr(&o));
+        assert!(stderr(&o).contains(key) && stderr(&o).contains("matching a scene"), "{to}: {}", stderr(&o));
+        assert!(start.elapsed().as_secs_f64() < 10.0 && !w.path().join("o.toml").exists());
+    }
+}
+
+/// The reference data copied into `dir` with `edit` applied to one CONTACT history, its manifest
+/// rewritten (as `creepbench manifest` would): the manifest guards change, not garbage.
+fn edited_reference(dir: &Path, edit: impl Fn(&str) -> String) -> Result<(), String> {
+    let status = Command::new("cp").arg("-r").arg(root().join("reference")).arg(dir).status().unwrap();
+    assert!(status.success());
+    let file = dir.join("contact/sine_f10_c0_0000.csv");
+    let text = std::fs::read_to_string(&file).unwrap();
+    std::fs::write(&file, edit(&text)).unwrap();
+    creepbench::safety::manifest::write(dir).unwrap();
+    creepbench::harness::references::References::load(dir).map(|_| ()).map_err(|e| e.to_string())
+}
+
+#[test]
+fn reference_histories_with_garbage_steps_or_no_rows_are_refused_whatever_the_manifest_says() {
+    let tmp = tempfile::tempdir().unwrap();
+    edited_reference(&tmp.path().join("same"), |t| t.to_string()).unwrap();
+    let cases: [(&str, fn(&str) -> String); 4] = [
+        ("a repeated step (a wrong row before the right one)", |t| {
+            let mut lines: Vec<String> = t.lines().map(String::from).collect();
+            let wrong = lines[2].replace("215.5133", "999.9");
+            assert_ne!(wrong, lines[2]);
+            lines.insert(2, wrong);
+            lines.join("\n") + "\n"
+        }),
+        ("a negative step", |t| {
+            let mut lines: Vec<String> = t.lines().map(String::from).collect();
+            lines[1] = format!("-1{}", &lines[1][lines[1].find(',').unwrap()..]);
+            lines.join("\n") + "\n"
+        }),
+        ("a fractional step", |t| {
+            let mut lines: Vec<String> = t.lines().map(String::from).collect();
+            lines[2] = format!("1.5{}", &lines[2][lines[2].find(',').unwrap()..]);
+            lines.join("\n") + "\n"
+        }),
+        ("no rows", |t| t.lines().next().unwrap().to_string() + "\n"),
+    ];
+    for (i, (what, edit)) in cases.into_iter().enumerate() {
+        let e = edited_reference(&tmp.path().join(format!("r{i}")), edit).unwrap_err();
+        assert!(e.contains("sine_f10_c0_0000.csv") && e.contains("step"), "{what}: {e}");
+    }
+}
+
+#[test]
+fn a_traction_coefficient_beyond_its_bound_fails_the_gate_and_golden_data_pass() {
+    use creepbench::harness::against::Against;
+    use creepbench::harness::compare::{evaluate, traction_bound};
+    use creepbench::harness::results::{read_scene, scene_names, StoredScene};
+    // Every blessed history keeps |(Fx, Fy)|/FN within mu.
+    let golden = root().join("golden");
+    let names = scene_names(&golden);
+    assert!(names.len() > 200, "{}", names.len());
+    for n in &names {
+        let s = read_scene(&golden, n).unwrap();
+        assert!(traction_bound(&s, Against::Golden).is_empty(), "{n}: {:?}", traction_bound(&s, Against::Golden));
+    }
+    // A model writing 1.7e308, NaN, or mu·(1 + 1e-5) fails; mu·(1 + 1e-7) is rounding.
+    let p = problem(&scene_text("b", "[\"uba\"]", 0.4, 8, "kind = \"step\"\nc = 0.005\nsteps = 4", ""));
+    let result = creepbench::pipeline::run(p).unwrap();
+    let stored = StoredScene::from_result(&result);
+    let refs = creepbench::harness::references::References::load(&root().join("reference")).unwrap();
+    for (fx, fails) in [(1.7e308, true), (f64::NAN, true), (0.4 * (1.0 + 1e-5), true), (0.4 * (1.0 + 1e-7), false)] {
+        let mut s = stored.clone();
+        s.histories.get_mut("uba").unwrap().rows[2].fx_over_fn = fx;
+        let all = evaluate(&[s], &refs, None).unwrap();
+        let bound: Vec<_> = all.iter().filter(|f| f.quantity == "traction_bound").collect();
+        assert_eq!(bound.len(), usize::from(fails), "{fx}");
+        if fails {
+            assert!(bound[0].gated && !bound[0].passed() && bound[0].step == Some(3), "{fx}: {:?}", bound[0]);
+        }
+    }
+}
+
+#[test]
+fn merge_checks_the_blessed_set_and_refuses_a_scene_of_no_model() {
+    let w = tempfile::tempdir().unwrap();
+    let names = ["m_alpha", "m_beta", "m_gamma", "m_delta", "m_eps", "m_zeta"];
+    for n in names {
+        write_scene(&w.path().join("suite"), &format!("{n}.toml"), n);
+    }
+    let s1 = Shard { index: 1, count: 2 };
+    assert!(names.iter().any(|n| s1.takes(n)) && names.iter().any(|n| !s1.takes(n)));
+    let refs = root().join("reference");
+    let refs = refs.to_str().unwrap();
+    let o = creepbench(w.path(), &["bless", "--quiet", "--suite", "suite", "--reference", refs]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    for (shard, dir) in [("1/2", "r1"), ("2/2", "r2")] {
+        let o = creepbench(
+            w.path(),
+            &["run", "--quiet", "--suite", "suite", "--shard", shard, "--results", dir, "--reference", refs],
+        );
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    }
+    let o = creepbench(w.path(), &["merge", "r1", "r2", "--suite", "suite", "--report", "rep", "--reference", refs]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(std::fs::read_to_string(w.path().join("rep/validation.md")).unwrap().contains("All gates pass"));
+    // One shard alone: the other's blessed scenes are missing, and the verdict says so.
+    let o = creepbench(w.path(), &["merge", "r1", "--suite", "suite", "--report", "rep1", "--reference", refs]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let missing = names.iter().find(|n| !s1.takes(n)).unwrap();
+    assert!(stderr(&o).contains(&format!("MISSING scene {missing}")), "{}", stderr(&o));
+    let md = std::fs::read_to_string(w.path().join("rep1/validation.md")).unwrap();
+    assert!(md.contains("GATES FAIL") && !md.contains("All gates pass"), "{md}");
+    // A result folder listing no solvers is refused.
+    let scene = names.iter().find(|n| s1.takes(n)).unwrap();
+    let json_path = w.path().join("r1").join(scene).join("scene.json");
+    let json = std::fs::read_to_string(&json_path).unwrap();
+    let json = json.replace("\"solvers\": [\n    \"uba\"\n  ]", "\"solvers\": []");
+    assert!(json.contains("\"solvers\": []"), "{json}");
+    std::fs::write(&json_path, json).unwrap();
+    std::fs::remove_file(w.path().join("r1").join(scene).join("uba.csv")).unwrap();
+    let o = creepbench(w.path(), &["merge", "r1", "r2", "--suite", "suite", "--report", "rep2", "--reference", refs]);
+    assert_ne!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stderr(&o).contains("at least one solver"), "{}", stderr(&o));
+    assert!(!w.path().join("rep2").exists());
+}
+
+#[test]
+fn an_absurd_thread_count_is_capped_with_a_warning() {
+    let w = tempfile::tempdir().unwrap();
+    write_scene(w.path(), "s.toml", "threads");
+    let start = std::time::Instant::now();
+    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(w.path())
+        .args(["simulate", "s.toml", "--out", "o"])
+        .env("RAYON_NUM_THREADS", "30000")
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stderr(&o).contains("RAYON_NUM_THREADS = 30000 capped at"), "{}", stderr(&o));
+    assert!(start.elapsed().as_secs_f64() < 10.0);
+}

@@ -78,10 +78,12 @@ pub fn scene_files(dirs: &[PathBuf], shard: Option<Shard>) -> Result<Vec<SceneSo
     // File order decides which study a shared point lists first: sorted, never the folder's.
     files.sort();
     let mut out: Vec<SceneSource> = Vec::new();
+    // Scene name -> its place in `out` (linear in the number of scenes).
+    let mut index: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
     for path in files {
         for point in sources_of_file(&path)? {
             // A point two studies share (same name, same scene) runs once, in both.
-            if let Some(twin) = out.iter_mut().find(|s| s.name == point.name) {
+            if let Some(twin) = index.get(&point.name).map(|&i| &mut out[i]) {
                 match (&mut twin.study, point.study) {
                     (Some((d, points)), Some((doc, more))) if *d == doc => {
                         points.extend(more);
@@ -97,6 +99,7 @@ pub fn scene_files(dirs: &[PathBuf], shard: Option<Shard>) -> Result<Vec<SceneSo
                     }
                 }
             }
+            index.insert(point.name.clone(), out.len());
             out.push(point);
         }
     }
@@ -172,8 +175,9 @@ pub fn scene_names(dirs: &[PathBuf]) -> Result<Vec<String>, Error> {
 pub fn run(files: &[SceneSource], progress: bool) -> Result<Vec<SceneResult>, Error> {
     let problems = files.iter().map(|f| pipeline::load_source(f, &[])).collect::<Result<Vec<_>, _>>()?;
     // Two scenes of one name would write one result folder: refuse before anything runs.
+    let mut seen: std::collections::HashMap<&str, usize> = std::collections::HashMap::new();
     for (i, p) in problems.iter().enumerate() {
-        if let Some(j) = problems[..i].iter().position(|q| q.name == p.name) {
+        if let Some(&j) = seen.get(p.name.as_str()) {
             return Err(InputError::new(
                 "name",
                 format!("{:?} in both {} and {}", p.name, files[j].path.display(), files[i].path.display()),
@@ -181,6 +185,7 @@ pub fn run(files: &[SceneSource], progress: bool) -> Result<Vec<SceneResult>, Er
             )
             .into());
         }
+        seen.insert(&p.name, i);
     }
     let bar = if progress && files.len() > 1 {
         let b = ProgressBar::new(problems.len() as u64);
