@@ -424,3 +424,156 @@ fn an_absurd_thread_count_is_capped_with_a_warning() {
     assert!(stderr(&o).contains("RAYON_NUM_THREADS = 30000 capped at"), "{}", stderr(&o));
     assert!(start.elapsed().as_secs_f64() < 10.0);
 }
+
+/// Every file under `dir` with its contents (a protected tree before and after).
+fn tree(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut out = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).unwrap().flatten() {
+            if e.file_type().unwrap().is_dir() {
+                stack.push(e.path());
+            } else {
+                out.push((e.path().display().to_string(), std::fs::read(e.path()).unwrap_or_default()));
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+#[test]
+fn nothing_is_written_when_a_command_will_fail() {
+    let w = tempfile::tempdir().unwrap();
+    let refs = root().join("reference");
+    let refs = refs.to_str().unwrap();
+    for n in ["fits", "tables", "plain"] {
+        write_scene(&w.path().join(format!("s_{n}")), &format!("{n}.toml"), n);
+    }
+    std::fs::create_dir_all(w.path().join("myfits")).unwrap();
+    std::fs::write(w.path().join("report.md"), "mine").unwrap();
+    for (args, what) in [
+        (vec!["run", "--suite", "s_plain", "--results", "res", "--report", "report.md"], "not a folder"),
+        (vec!["run", "--suite", "s_fits", "--results", "res", "--report", "rep", "--fits", "myfits"], "\"fits\""),
+        (vec!["run", "--suite", "s_tables", "--results", "res", "--report", "res"], "\"tables\""),
+    ] {
+        let mut args = args.clone();
+        args.extend(["--quiet", "--reference", refs]);
+        let o = creepbench(w.path(), &args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains(what), "{args:?}: {}", stderr(&o));
+        assert!(!w.path().join("res").exists() && !w.path().join("rep").exists(), "{args:?}");
+        assert_eq!(std::fs::read_to_string(w.path().join("report.md")).unwrap(), "mine");
+    }
+    // merge --report X X: one folder twice, and a report over result folders named like its own.
+    let o = creepbench(
+        w.path(),
+        &["run", "--quiet", "--suite", "s_tables", "--results", "res", "--report", "rep", "--reference", refs],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let before = tree(&w.path().join("res"));
+    for args in [vec!["merge", "res", "res", "--report", "res2"], vec!["merge", "res", "--report", "res"]] {
+        let mut args = args.clone();
+        args.extend(["--suite", "s_tables", "--reference", refs]);
+        let o = creepbench(w.path(), &args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert_eq!(tree(&w.path().join("res")), before, "{args:?}");
+        assert!(!w.path().join("res2").exists());
+    }
+    // A manifest that cannot be written leaves no temporary file behind.
+    let d = w.path().join("data");
+    std::fs::create_dir_all(d.join("MANIFEST.sha256/x")).unwrap();
+    std::fs::write(d.join("a.csv"), "1\n").unwrap();
+    assert!(creepbench::safety::manifest::write(&d).is_err());
+    let mut left: Vec<String> =
+        std::fs::read_dir(&d).unwrap().flatten().map(|e| e.file_name().to_string_lossy().into()).collect();
+    left.sort();
+    assert_eq!(left, ["MANIFEST.sha256", "a.csv"]);
+}
+
+#[test]
+fn protected_trees_are_recognised_by_what_they_are_and_outputs_are_plain_files() {
+    let w = tempfile::tempdir().unwrap();
+    let root_refs = root().join("reference");
+    let refs = root_refs.to_str().unwrap();
+    write_scene(&w.path().join("repo/suite"), "s.toml", "pt_scene");
+    let repo = w.path().join("repo");
+    let o = creepbench(&repo, &["bless", "--quiet", "--suite", "suite", "--reference", refs]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    // A checksummed data tree of the user's.
+    std::fs::create_dir_all(repo.join("data")).unwrap();
+    std::fs::write(repo.join("data/a.csv"), "1\n").unwrap();
+    creepbench::safety::manifest::write(&repo.join("data")).unwrap();
+    let other = w.path().join("elsewhere");
+    std::fs::create_dir_all(&other).unwrap();
+    std::os::unix::fs::symlink(repo.join("golden"), other.join("link")).unwrap();
+    let fifo = other.join("fifo");
+    assert!(Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+    let golden = repo.join("golden");
+    let g = |rest: &str| format!("{}/{rest}", golden.display());
+    let data = |rest: &str| format!("{}/data/{rest}", repo.display());
+    let scene = repo.join("suite/s.toml");
+    let scene = scene.to_str().unwrap();
+    let fit_text = std::fs::read_to_string(root().join("fits/uba_sine.toml")).unwrap();
+    std::fs::write(
+        other.join("f.toml"),
+        fit_text.replace("../scenes/thesis", root().join("scenes/thesis").to_str().unwrap()),
+    )
+    .unwrap();
+    std::fs::write(other.join("st.toml"), study_text(&["\"contact.mu\" = [0.3, 0.4]"])).unwrap();
+    let (before_golden, before_data) = (tree(&golden), tree(&repo.join("data")));
+    let suite = repo.join("suite");
+    let suite = suite.to_str().unwrap();
+    let check = |extra: Vec<String>| {
+        let mut v: Vec<String> = ["check", "--quiet", "--suite", suite, "--reference", refs].map(String::from).to_vec();
+        v.extend(extra);
+        v
+    };
+    let cases: Vec<Vec<String>> = vec![
+        vec!["fit".into(), "f.toml".into(), "--out".into(), g("x.toml")],
+        vec!["fit".into(), "f.toml".into(), "--out".into(), data("x.toml")],
+        vec!["fit".into(), "f.toml".into(), "--out".into(), "link/x.toml".into()],
+        vec!["manifest".into(), golden.display().to_string()],
+        vec!["manifest".into(), g("pt_scene/../")],
+        vec!["manifest".into(), "link".into()],
+        vec!["expand".into(), "st.toml".into(), "--out".into(), "link/new".into()],
+        vec!["simulate".into(), scene.into(), "--out".into(), g("../golden/new")],
+        vec!["export".into(), "contact".into(), scene.into(), "--out".into(), data("")],
+        check(vec!["--json".into(), g("v.json")]),
+        check(vec!["--summary".into(), data("v.md")]),
+        check(vec!["--junit".into(), "fifo".into()]),
+        check(vec!["--junit".into(), "/dev/null".into()]),
+        check(vec!["--json".into(), ".".into()]),
+    ];
+    for args in &cases {
+        let start = std::time::Instant::now();
+        let o = Command::new(env!("CARGO_BIN_EXE_creepbench")).current_dir(&other).args(args).output().unwrap();
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains("refusing"), "{args:?}: {}", stderr(&o));
+        assert!(start.elapsed().as_secs_f64() < 10.0, "{args:?}");
+    }
+    // GITHUB_STEP_SUMMARY into golden/ or at a FIFO: refused at once, before the suite runs.
+    for target in [g("s.md"), fifo.display().to_string(), data("s.md")] {
+        let start = std::time::Instant::now();
+        let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
+            .current_dir(&other)
+            .args(check(vec![]))
+            .env("GITHUB_STEP_SUMMARY", &target)
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(2), "{target}: {}", stderr(&o));
+        assert!(start.elapsed().as_secs_f64() < 10.0, "{target}");
+    }
+    assert_eq!(tree(&golden), before_golden);
+    assert_eq!(tree(&repo.join("data")), before_data);
+    // export contact replaces no file of the user's, like fit and expand.
+    std::fs::create_dir_all(other.join("ex")).unwrap();
+    std::fs::write(other.join("ex/pt_scene.inp"), "mine").unwrap();
+    let o = creepbench(&other, &["export", "contact", scene, "--out", "ex"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("replaces nothing"), "{}", stderr(&o));
+    assert_eq!(std::fs::read_to_string(other.join("ex/pt_scene.inp")).unwrap(), "mine");
+    // A plain new output is written.
+    let o = creepbench(&other, &["export", "contact", scene, "--out", "ex2"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+}
