@@ -5,13 +5,13 @@ use crate::calibration::fit::spec::FitSpec;
 use crate::calibration::section as calibration;
 use crate::comparison::compare::{self, Against, Finding};
 use crate::comparison::references::References;
-use crate::comparison::tolerance_file::{self, Rule};
+use crate::comparison::tolerance_file::{self, Loosening, Rule};
 use crate::comparison::tolerances;
 use crate::error::{Error, InputError};
 use crate::pipeline;
 use crate::report::table;
 use crate::report::{self, ReportInput};
-use crate::report::{ladder, registry};
+use crate::report::{ladder, registry, sections};
 use crate::safety::{folder, guard, lock};
 use crate::suite::results::{self, StoredScene};
 use crate::suite::{self, Shard};
@@ -23,6 +23,7 @@ pub fn simulate(scene: &Path, solvers: &[String], out: &Path, golden: &Path) -> 
     let sources = suite::sources_of_file(scene)?;
     // Every scene validated (and its folder checked) before any runs: bad input writes nothing.
     let problems = sources.iter().map(|s| pipeline::load_source(s, solvers)).collect::<Result<Vec<_>, _>>()?;
+    guard::guard_output_dir(out, golden)?;
     for problem in &problems {
         // The folder written is out/<name>: a scene named after a protected folder cannot reach it.
         guard::guard_not_under(&out.join(&problem.name), golden)?;
@@ -52,7 +53,7 @@ pub fn expand(study_file: &Path, out: &Path, golden: &Path) -> Result<Vec<PathBu
     if sources.iter().all(|s| s.study.is_none()) {
         return Err(InputError::new("STUDY", study_file.display(), "a study file (with a [study] table)").into());
     }
-    guard::guard_not_under(out, golden)?;
+    guard::guard_output_dir(out, golden)?;
     let mut files = Vec::new();
     for s in &sources {
         pipeline::load_source(s, &[])?;
@@ -82,7 +83,7 @@ pub fn fit(file: &Path, out: Option<&Path>, reference: &Path, golden: &Path) -> 
     use crate::calibration::fit;
     let spec = FitSpec::from_file(file)?;
     let out = out.map_or_else(|| Path::new("out/fits").join(format!("{}.toml", spec.name)), Path::to_path_buf);
-    guard::guard_not_under(&out, golden)?;
+    guard::guard_output_file(&out, golden)?;
     if out.exists() {
         return Err(
             InputError::new("--out", out.display(), "a file that does not exist yet (fit replaces nothing)").into()
@@ -125,10 +126,18 @@ pub fn build_report(
     golden: Option<&Path>,
     rules: &[Rule],
     fits: &[FitRecord],
+    missing: Vec<Finding>,
 ) -> Result<PathBuf, Error> {
     let mut findings = compare::evaluate(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
-    tolerance_file::apply(rules, &mut findings, |_| false)?;
+    findings.extend(missing);
+    let loosened = tolerance_file::apply(rules, &mut findings, |_| false)?;
+    for l in &loosened {
+        eprintln!("loosened: {l}");
+    }
     let mut all = registry::all(scenes, refs);
+    if let Some(s) = sections::loosened(&loosened) {
+        all.insert(0, s);
+    }
     // Calibration right after the model ladder (or last, without one).
     if let Some(c) = calibration::section(fits) {
         registry::insert_after(&mut all, ladder::ID, c);
@@ -159,8 +168,16 @@ pub fn run(
     progress: bool,
 ) -> Result<(), Error> {
     let RunOutputs { results_dir, report_dir, fits } = outputs;
-    guard::guard_not_under(results_dir, golden)?;
-    guard::guard_not_under(report_dir, golden)?;
+    guard::guard_output_dir(results_dir, golden)?;
+    guard::guard_output_dir(report_dir, golden)?;
+    // No scene's result folder may be another output's folder: refused before anything runs.
+    let names = suite::scene_files(suite_dir, shard)?.into_iter().map(|s| s.name).collect::<Vec<_>>();
+    if fits.is_some() {
+        refuse_taken(&names, &[FITS_SUBDIR], results_dir, "--fits")?;
+    }
+    if guard::same_place(results_dir, report_dir)? && shard.is_none() {
+        refuse_taken(&names, &REPORT_SUBDIRS, results_dir, "--report")?;
+    }
     let refs = References::load(reference)?;
     // Fit files validated before any scene runs: a bad --fits writes nothing.
     let fit_specs = fits.map(load_fit_specs).transpose()?;
@@ -180,9 +197,25 @@ pub fn run(
     let stored = read_results(&[results_dir.to_path_buf()])?;
     let rules = file_rules(&[], suite_dir)?;
     let records = read_fit_records(&[results_dir.to_path_buf()])?;
-    let md = build_report(&stored, &refs, report_dir, Some(golden), &rules, &records)?;
+    let md = build_report(&stored, &refs, report_dir, Some(golden), &rules, &records, Vec::new())?;
     println!("{}", md.display());
     Ok(())
+}
+
+/// The folders a report writes beside validation.md.
+const REPORT_SUBDIRS: [&str; 2] = ["figures", "tables"];
+
+/// An error if a scene of `names` would have its result folder where `flag`'s output goes.
+fn refuse_taken(names: &[String], taken: &[&str], results: &Path, flag: &str) -> Result<(), Error> {
+    match names.iter().find(|n| taken.contains(&n.as_str())) {
+        Some(n) => Err(InputError::new(
+            "name",
+            format!("scene {n:?} in {}", results.display()),
+            format!("a scene name other than {} where {flag} writes into the same folder", taken.join(", ")),
+        )
+        .into()),
+        None => Ok(()),
+    }
 }
 
 /// Every scene folder of the result folders `dirs` (each scene in one folder only).
@@ -279,9 +312,22 @@ pub fn merge(
     suites: &[PathBuf],
     tolerances: &[PathBuf],
 ) -> Result<(), Error> {
-    guard::guard_not_under(report_dir, golden)?;
+    guard::guard_output_dir(report_dir, golden)?;
+    for (i, d) in dirs.iter().enumerate() {
+        for e in &dirs[..i] {
+            if guard::same_place(d, e)? {
+                return Err(InputError::new("merge", d.display(), "each result folder once").into());
+            }
+        }
+    }
     let refs = References::load(reference)?;
     let scenes = read_results(dirs)?;
+    for d in dirs {
+        if guard::same_place(d, report_dir)? {
+            let names: Vec<String> = results::scene_names(d);
+            refuse_taken(&names, &REPORT_SUBDIRS, d, "--report")?;
+        }
+    }
     if scenes.is_empty() {
         let given: Vec<String> = dirs.iter().map(|d| d.display().to_string()).collect();
         return Err(InputError::new(
@@ -297,8 +343,21 @@ pub fn merge(
         .cloned()
         .collect();
     let rules = file_rules(tolerances, &merged_suites)?;
-    let md = build_report(&scenes, &refs, report_dir, Some(golden), &rules, &read_fit_records(dirs)?)?;
+    // The blessed scenes of the merged suites that no shard produced fail, as in `check`.
+    let suites: Vec<&str> = scenes.iter().map(|s| s.scene.suite.as_str()).collect();
+    let missing = match golden.is_dir() {
+        true => compare::missing_scenes(golden, &scenes, Against::Golden, |_, suite| suites.contains(&suite))?,
+        false => Vec::new(),
+    };
+    let n_missing = missing.len();
+    for f in &missing {
+        eprintln!("MISSING scene {}: {}", f.scene, crate::comparison::gate_output::describe(f));
+    }
+    let md = build_report(&scenes, &refs, report_dir, Some(golden), &rules, &read_fit_records(dirs)?, missing)?;
     println!("{}", md.display());
+    if n_missing > 0 {
+        return Err(Error::Drift { count: n_missing });
+    }
     Ok(())
 }
 
@@ -325,38 +384,47 @@ pub struct GateFiles {
     pub json: Option<PathBuf>,
     /// A Markdown summary; `$GITHUB_STEP_SUMMARY`, when set, gets it appended too.
     pub summary: Option<PathBuf>,
+    /// Refuse every rule that loosens a comparison the defaults gate (CI).
+    pub strict: bool,
 }
 
 impl GateFiles {
     /// Every output file the user named, none of them inside golden/.
     fn check_paths(&self, golden: &Path) -> Result<(), Error> {
         for p in [&self.junit, &self.json, &self.summary].into_iter().flatten() {
-            guard::guard_not_under(p, golden)?;
+            guard::guard_output_file(p, golden)?;
+        }
+        if let Some(step_summary) = step_summary() {
+            guard::guard_output_file(&step_summary, golden)?;
         }
         Ok(())
     }
 
     /// Write each output whole (a temporary file in the same folder, renamed over the target).
-    fn write(&self, all: &[Finding]) -> Result<(), Error> {
+    fn write(&self, all: &[Finding], loosened: &[Loosening]) -> Result<(), Error> {
         use crate::comparison::gate_output;
         let outputs = [
-            (&self.junit, gate_output::junit as fn(&[Finding]) -> String),
+            (&self.junit, gate_output::junit as fn(&[Finding], &[Loosening]) -> String),
             (&self.json, gate_output::json),
             (&self.summary, gate_output::summary),
         ];
         for (path, make) in outputs {
             if let Some(path) = path {
-                write_whole(path, &make(all))?;
+                write_whole(path, &make(all, loosened))?;
             }
         }
-        if let Some(step_summary) = std::env::var_os("GITHUB_STEP_SUMMARY").filter(|v| !v.is_empty()) {
-            let path = PathBuf::from(step_summary);
+        if let Some(path) = step_summary() {
             let io = |source| Error::Io { path: path.clone(), source };
             let mut f = std::fs::OpenOptions::new().append(true).create(true).open(&path).map_err(io)?;
-            std::io::Write::write_all(&mut f, gate_output::summary(all).as_bytes()).map_err(io)?;
+            std::io::Write::write_all(&mut f, gate_output::summary(all, loosened).as_bytes()).map_err(io)?;
         }
         Ok(())
     }
+}
+
+/// `$GITHUB_STEP_SUMMARY`, when set.
+fn step_summary() -> Option<PathBuf> {
+    std::env::var_os("GITHUB_STEP_SUMMARY").filter(|v| !v.is_empty()).map(PathBuf::from)
 }
 
 /// Write `text` to `path` whole: a temporary file beside it, then one rename.
@@ -400,9 +468,21 @@ pub fn check(
         Some(s) => suite::scene_names(suite_dir)?.into_iter().filter(|n| !s.takes(n)).collect(),
         None => Vec::new(),
     };
-    tolerance_file::apply(&rules, &mut all, |r| other_shards.iter().any(|n| tolerance_file::glob(&r.scene, n)))?;
+    let loosened =
+        tolerance_file::apply(&rules, &mut all, |r| other_shards.iter().any(|n| tolerance_file::glob(&r.scene, n)))?;
+    if files.strict {
+        if let Some(l) = loosened.first() {
+            return Err(InputError::new(&l.origin, l.to_string(), "no loosening of a default gate (--strict)").into());
+        }
+    }
     let worst = compare::worst_per_group(&all);
     print!("{}", compare::table(&worst));
+    if !loosened.is_empty() {
+        println!("\n{} rule(s) of the run's files loosen what the defaults gate:", loosened.len());
+        for l in &loosened {
+            println!("  {l}");
+        }
+    }
     let fails = compare::failures(&all);
     let gated = all.iter().filter(|f| f.gated).count();
     if against.is_some() {
@@ -423,7 +503,7 @@ pub fn check(
         }
     }
     println!("\n{} gated comparisons, {} failed", gated, fails.len());
-    files.write(&all)?;
+    files.write(&all, &loosened)?;
     if fails.is_empty() {
         Ok(())
     } else {
@@ -440,6 +520,9 @@ pub fn check(
 pub fn bless(suite_dir: &[PathBuf], golden: &Path, shard: Option<Shard>, progress: bool) -> Result<(), Error> {
     let scenes = run_suite(suite_dir, shard, progress)?;
     let suites = suite_names(suite_dir);
+    // One writer of golden/ at a time; what it keeps is read under the lock, so that concurrent
+    // blesses of other suites or shards all land.
+    let _lock = lock::lock_protected(golden, lock::DEFAULT_LOCK_WAIT)?;
     let mut kept = Vec::new();
     for name in results::scene_names(golden) {
         let old = results::read_resolved(golden, &name)?;
@@ -471,6 +554,8 @@ fn suite_names(suite_dir: &[PathBuf]) -> Vec<String> {
 
 /// `creepbench manifest DIR`: write DIR/MANIFEST.sha256 (reviewed with the data it lists).
 pub fn manifest(dir: &Path) -> Result<(), Error> {
+    // Blessed data are bless's alone.
+    guard::guard_manifest_dir(dir)?;
     let n = crate::safety::manifest::write(dir).map_err(|source| Error::Manifest { dir: dir.to_path_buf(), source })?;
     eprintln!("{n} file(s) listed in {}", dir.join(crate::safety::manifest::MANIFEST).display());
     Ok(())
@@ -485,8 +570,17 @@ pub fn export_contact(scene_path: &Path, out: &Path, golden: &Path) -> Result<Ve
         .map(|s| pipeline::load_source(s, &[]))
         .collect::<Result<Vec<_>, _>>()?;
     let paths: Vec<PathBuf> = problems.iter().map(|p| out.join(format!("{}.inp", p.name))).collect();
+    guard::guard_output_dir(out, golden)?;
     for path in &paths {
-        guard::guard_not_under(path, golden)?;
+        guard::guard_output_file(path, golden)?;
+        if path.exists() {
+            return Err(InputError::new(
+                "--out",
+                path.display(),
+                "a folder without these input files (export replaces nothing)",
+            )
+            .into());
+        }
     }
     std::fs::create_dir_all(out).map_err(Error::io(out))?;
     for (problem, path) in problems.iter().zip(&paths) {

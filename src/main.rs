@@ -122,6 +122,9 @@ enum Command {
         /// tolerances.toml and the project's defaults (repeatable; first match wins).
         #[arg(long)]
         tolerances: Vec<PathBuf>,
+        /// Refuse every tolerance rule that loosens a comparison the defaults gate (for CI).
+        #[arg(long)]
+        strict: bool,
     },
     /// Run the suite and write its results into golden/ (the only command that writes golden data).
     Bless {
@@ -167,6 +170,9 @@ fn main() {
     if let Err(e) = creepbench::safety::interrupt::install() {
         eprintln!("warning: {e}");
     }
+    if let Some(w) = creepbench::safety::threads::cap_threads() {
+        eprintln!("warning: {w}");
+    }
     let result = match cli.command {
         Command::Fit { file, out, reference, golden } => {
             commands::fit(&file, out.as_deref(), &reference, &golden).map(|f| println!("{}", f.display()))
@@ -181,8 +187,8 @@ fn main() {
             let outputs = commands::RunOutputs { results_dir: &results, report_dir: &report, fits: fits.as_deref() };
             commands::run(&s.suite, &s.reference, outputs, s.shard, &s.golden, !s.quiet)
         }
-        Command::Check { suite: s, against, junit, json, summary, tolerances } => {
-            let files = commands::GateFiles { tolerances, junit, json, summary };
+        Command::Check { suite: s, against, junit, json, summary, tolerances, strict } => {
+            let files = commands::GateFiles { tolerances, junit, json, summary, strict };
             commands::check(&s.suite, &s.reference, &s.golden, against.as_deref(), s.shard, !s.quiet, &files)
         }
         Command::Bless { suite: s } => commands::bless(&s.suite, &s.golden, s.shard, !s.quiet),

@@ -128,8 +128,47 @@ pub fn evaluate(
             };
             out.extend(against_results(s, theirs.as_ref(), against));
         }
+        out.extend(traction_bound(s, baseline.map_or(Against::Golden, |b| b.1)));
     }
     Ok(out)
+}
+
+/// Relative margin by which a model's traction coefficient may exceed its bound μ (rounding).
+pub const BOUND_MARGIN: f64 = 1e-6;
+
+/// A model's traction coefficient |(Fx, Fy)|/FN beyond its bound μ (thesis Eq. 2.27) by more than
+/// [`BOUND_MARGIN`], or not finite: a gated finding per scene and model (none when within), so a
+/// model that breaks physics fails the gate whatever its baseline says.
+pub fn traction_bound(s: &StoredScene, against: Against) -> Vec<Finding> {
+    let mut out = Vec::new();
+    for (solver, h) in &s.histories {
+        let beyond = |(coef, r): &(f64, &crate::history::Row)| {
+            let limit = if r.mu.is_nan() { f64::INFINITY } else { r.mu * (1.0 + BOUND_MARGIN) };
+            !(*coef <= limit)
+        };
+        let worst = h
+            .rows
+            .iter()
+            .map(|r| (r.fx_over_fn.hypot(r.fy_over_fn), r))
+            .filter(beyond)
+            .max_by(|a, b| a.0.total_cmp(&b.0));
+        if let Some((coef, r)) = worst {
+            out.push(Finding {
+                scene: s.name.clone(),
+                solver: solver.clone(),
+                against,
+                quantity: "traction_bound".into(),
+                step: Some(r.step),
+                ours: coef,
+                theirs: r.mu,
+                diff: if coef.is_finite() { coef - r.mu } else { f64::NAN },
+                allowed: BOUND_MARGIN * r.mu.abs(),
+                gated: true,
+                note: format!("|(Fx, Fy)|/FN beyond mu by more than {BOUND_MARGIN:e} relative"),
+            });
+        }
+    }
+    out
 }
 
 /// The worst finding per (scene, solver, against), in a stable order.

@@ -3,6 +3,7 @@
 //! and a short Markdown summary (for `$GITHUB_STEP_SUMMARY`). Pure functions of the findings.
 
 use crate::comparison::compare::Finding;
+use crate::comparison::tolerance_file::Loosening;
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
@@ -68,7 +69,7 @@ fn xml(s: &str) -> String {
 /// comparison kind, one `testcase` per scene × solver; a test case fails when a gated quantity
 /// misses its tolerance, its `failure` naming the worst point; reported-only comparisons pass and
 /// carry their worst point in `system-out`.
-pub fn junit(all: &[Finding]) -> String {
+pub fn junit(all: &[Finding], loosened: &[Loosening]) -> String {
     let mut suites: BTreeMap<&'static str, Vec<Case>> = BTreeMap::new();
     for ((scene, solver, against), fs) in groups(all) {
         suites.entry(against).or_default().push((scene, solver, fs));
@@ -89,6 +90,14 @@ pub fn junit(all: &[Finding]) -> String {
             xml(&format!("against {against}")),
             cases.len()
         );
+        let mine: Vec<&Loosening> = loosened.iter().filter(|l| l.against == *against).collect();
+        if !mine.is_empty() {
+            let _ = writeln!(out, "    <properties>");
+            for l in mine {
+                let _ = writeln!(out, "      <property name=\"loosened\" value=\"{}\"/>", xml(&l.to_string()));
+            }
+            let _ = writeln!(out, "    </properties>");
+        }
         for (scene, solver, fs) in cases {
             let w = worst(fs);
             let _ = write!(
@@ -143,17 +152,20 @@ struct JsonReport<'a> {
     passed: bool,
     gated: usize,
     failed: usize,
+    /// The run's rules that loosen what the defaults gate.
+    loosened: &'a [Loosening],
     findings: Vec<JsonFinding<'a>>,
 }
 
 /// Every finding, complete, with the verdict.
-pub fn json(all: &[Finding]) -> String {
+pub fn json(all: &[Finding], loosened: &[Loosening]) -> String {
     let finite = |v: f64| v.is_finite().then_some(v);
     let failed = all.iter().filter(|f| f.gated && !f.passed()).count();
     let report = JsonReport {
         passed: failed == 0,
         gated: all.iter().filter(|f| f.gated).count(),
         failed,
+        loosened,
         findings: all
             .iter()
             .map(|f| JsonFinding {
@@ -179,7 +191,7 @@ pub fn json(all: &[Finding]) -> String {
 const SUMMARY_FAILURES: usize = 30;
 
 /// A short Markdown verdict: pass/fail, the counts per comparison, the failures (worst first).
-pub fn summary(all: &[Finding]) -> String {
+pub fn summary(all: &[Finding], loosened: &[Loosening]) -> String {
     let failed: Vec<&Finding> = all.iter().filter(|f| f.gated && !f.passed()).collect();
     let mut out = format!("## creepbench check: {}\n\n", if failed.is_empty() { "passed" } else { "FAILED" });
     let _ = writeln!(out, "| comparison | scene × solver | gated quantities | failed |");
@@ -193,6 +205,12 @@ pub fn summary(all: &[Finding]) -> String {
     }
     for (against, (cases, gated, fail)) in &per {
         let _ = writeln!(out, "| {against} | {cases} | {gated} | {fail} |");
+    }
+    if !loosened.is_empty() {
+        let _ = writeln!(out, "\n{} rule(s) of the run's files loosen what the defaults gate:\n", loosened.len());
+        for l in loosened {
+            let _ = writeln!(out, "- {}", l.to_string().replace('|', "\\|"));
+        }
     }
     if !failed.is_empty() {
         let mut worst: Vec<&Finding> = failed.clone();

@@ -22,6 +22,8 @@ pub struct Rule {
     pub rel: f64,
     /// A miss fails `creepbench check` (exit 1); otherwise it is only reported.
     pub gated: bool,
+    /// Said explicitly: this rule may make a gate unable to fail (`disable = true`, with its why).
+    pub disable: bool,
     pub why: String,
 }
 
@@ -77,6 +79,7 @@ static NO_RULE: LazyLock<Rule> = LazyLock::new(|| Rule {
     abs: f64::INFINITY,
     rel: 0.0,
     gated: false,
+    disable: false,
     why: "no rule".into(),
 });
 
@@ -92,6 +95,7 @@ pub fn catch_all(against: Against, why: &str) -> Rule {
         abs: f64::INFINITY,
         rel: 0.0,
         gated: false,
+        disable: false,
         why: why.into(),
     }
 }

@@ -12,8 +12,16 @@
 //! abs = 0.05                   # |ours − theirs| ≤ abs + rel·|theirs|
 //! rel = 0.0                    # default 0
 //! gated = true                 # default true: a miss fails the gate
+//! disable = false              # default false: see below
 //! why = "our model's accepted gap against the exact theory"
 //! ```
+//!
+//! No gate is disabled in silence (issue 30): a run's rule that loosens a comparison the defaults
+//! gate (more allowed, or not gated) is listed in every verdict with its file, rule, why and the
+//! comparisons it decided ([`Loosening`]); a rule that makes a gate unable to fail — a gated
+//! `abs` or `rel` at or beyond [`HUGE_TOLERANCE`], `gated = false` over a comparison the defaults
+//! gate, or a bare `*` over every scene, solver and quantity — is refused unless it says
+//! `disable = true`; `check --strict` refuses every loosening.
 //!
 //! `abs` is required for a gated rule; a reported rule (`gated = false`) may omit it and then has
 //! no tolerance (∞: TOML's `inf` is not accepted, there is one way to say it). An unknown key, a
@@ -33,7 +41,67 @@ pub fn load(path: &Path, labels: &[Against]) -> Result<Vec<Rule>, InputError> {
     let text = crate::safety::read::read_text(path, crate::safety::read::SCENE_LIMIT_BYTES, "tolerance file").map_err(
         |e| InputError::new("--tolerances", &name, format!("a readable TOML file of [[rule]] tables ({e})")),
     )?;
-    parse(&text, &name, labels)
+    let rules = parse(&text, &name, labels)?;
+    rules.iter().try_for_each(refuse_unfailable)?;
+    Ok(rules)
+}
+
+/// A tolerance this large lets nothing fail: a rule of a run's file with a gated `abs` or `rel`
+/// at or beyond it must say `disable = true`.
+pub const HUGE_TOLERANCE: f64 = 1e9;
+
+/// A rule of a run's file that would make its gates unable to fail, without `disable = true`:
+/// a gated tolerance at or beyond [`HUGE_TOLERANCE`], or a bare `*` over everything.
+fn refuse_unfailable(r: &Rule) -> Result<(), InputError> {
+    if r.disable {
+        return Ok(());
+    }
+    let said = "disable = true with its why, to switch a gate off (a tolerance below 1e9 otherwise)";
+    if r.gated && (r.abs >= HUGE_TOLERANCE || r.rel >= HUGE_TOLERANCE) {
+        return Err(InputError::new(&r.origin, format!("abs = {:e}, rel = {:e}", r.abs, r.rel), said));
+    }
+    if r.is_catch_all() {
+        return Err(InputError::new(
+            &r.origin,
+            "scene, solver and quantity all \"*\"",
+            format!("a rule naming a scene, solver or quantity, or {said}"),
+        ));
+    }
+    Ok(())
+}
+
+/// A run's rule that loosened comparisons the defaults gate: listed in every verdict.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Loosening {
+    /// `FILE rule[n]`.
+    pub origin: String,
+    /// The comparison label.
+    pub against: &'static str,
+    /// What it covers and allows, e.g. `scene "*" solver "uba" quantity "fx" abs 0.1 rel 0 gated`.
+    pub rule: String,
+    pub why: String,
+    /// Comparisons it decided.
+    pub decided: usize,
+    /// Of those, comparisons the defaults gate that it allows more on, or does not gate.
+    pub loosened: usize,
+    /// Said `disable = true`.
+    pub disable: bool,
+}
+
+impl std::fmt::Display for Loosening {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{}: against {} {}{} — decided {} comparison(s), loosened {} the defaults gate; why: {}",
+            self.origin,
+            self.against,
+            self.rule,
+            if self.disable { " (disable = true)" } else { "" },
+            self.decided,
+            self.loosened,
+            self.why
+        )
+    }
 }
 
 /// Parse the text of a rule file called `name` (in messages and each rule's origin).
@@ -80,9 +148,10 @@ pub fn parse(text: &str, name: &str, labels: &[Against]) -> Result<Vec<Rule>, In
             }
         };
         let rel = s.opt_f64("rel", tol)?.unwrap_or(0.0);
+        let disable = s.opt_bool("disable")?.unwrap_or(false);
         let why = s.str("why", "the reason for this tolerance (reviewed with it)")?.to_string();
         s.finish()?;
-        out.push(Rule { origin, against, scene, solver, quantity, abs, rel, gated, why });
+        out.push(Rule { origin, against, scene, solver, quantity, abs, rel, gated, disable, why });
     }
     Ok(out)
 }
@@ -94,19 +163,44 @@ pub fn sources(given: &[PathBuf], suite_dirs: &[PathBuf]) -> Vec<PathBuf> {
 }
 
 /// Re-judge every finding by the first file rule that covers it (the default rule stays where
-/// none does). A rule that covers no finding is an error — a pattern that matches nothing is a
-/// typo, not a tolerance — unless `elsewhere` says it is meant for comparisons this run does not
-/// make (a shard's check: scenes of other shards).
-pub fn apply(rules: &[Rule], findings: &mut [Finding], elsewhere: impl Fn(&Rule) -> bool) -> Result<(), InputError> {
-    let mut used = vec![false; rules.len()];
+/// none does), and return the rules that loosened a comparison the defaults gate. A rule that
+/// covers no finding is an error — a pattern that matches nothing is a typo, not a tolerance —
+/// unless `elsewhere` says it is meant for comparisons this run does not make (a shard's check:
+/// scenes of other shards); so is a rule that ungates a default-gated comparison without
+/// `disable = true`.
+pub fn apply(
+    rules: &[Rule],
+    findings: &mut [Finding],
+    elsewhere: impl Fn(&Rule) -> bool,
+) -> Result<Vec<Loosening>, InputError> {
+    let mut decided = vec![0usize; rules.len()];
+    let mut loosened = vec![0usize; rules.len()];
     for f in findings.iter_mut() {
         if let Some(i) = rules.iter().position(|r| r.covers(f.against, &f.scene, &f.solver, &f.quantity)) {
-            used[i] = true;
-            f.allowed = rules[i].allowed(f.theirs);
-            f.gated = rules[i].gated;
+            let r = &rules[i];
+            let allowed = r.allowed(f.theirs);
+            decided[i] += 1;
+            if f.gated && (!r.gated || !(allowed <= f.allowed)) {
+                if !r.gated && !r.disable {
+                    return Err(InputError::new(
+                        &r.origin,
+                        format!(
+                            "gated = false over {} {} {} against {}",
+                            f.scene,
+                            f.solver,
+                            f.quantity,
+                            r.against.label()
+                        ),
+                        "disable = true with its why, to switch off a comparison the defaults gate",
+                    ));
+                }
+                loosened[i] += 1;
+            }
+            f.allowed = allowed;
+            f.gated = r.gated;
         }
     }
-    if let Some(i) = (0..rules.len()).find(|&i| !used[i] && !elsewhere(&rules[i])) {
+    if let Some(i) = (0..rules.len()).find(|&i| decided[i] == 0 && !elsewhere(&rules[i])) {
         let r = &rules[i];
         return Err(InputError::new(
             &r.origin,
@@ -120,7 +214,29 @@ pub fn apply(rules: &[Rule], findings: &mut [Finding], elsewhere: impl Fn(&Rule)
             "a rule that matches at least one comparison of this run (check the names and patterns)",
         ));
     }
-    Ok(())
+    Ok((0..rules.len())
+        .filter(|&i| loosened[i] > 0)
+        .map(|i| {
+            let r = &rules[i];
+            Loosening {
+                origin: r.origin.clone(),
+                against: r.against.label(),
+                rule: format!(
+                    "scene {:?} solver {:?} quantity {:?} abs {:e} rel {:e} {}",
+                    r.scene,
+                    r.solver,
+                    r.quantity,
+                    r.abs,
+                    r.rel,
+                    if r.gated { "gated" } else { "not gated" }
+                ),
+                why: r.why.clone(),
+                decided: decided[i],
+                loosened: loosened[i],
+                disable: r.disable,
+            }
+        })
+        .collect())
 }
 
 #[cfg(test)]

@@ -6,6 +6,7 @@
 use crate::comparison::references::contact::{self, ContactCases};
 use crate::comparison::references::thesis::{self, ThesisTables};
 use crate::comparison::references::References;
+use crate::comparison::tolerance_file::Loosening;
 use crate::history::History;
 use crate::report::linked_table::{largest, place, Table};
 use crate::report::plot::{line_chart, Series};
@@ -13,6 +14,19 @@ pub use crate::report::section::Section;
 use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
 use std::fmt::Write;
+
+/// The run's rules that loosen what the defaults gate (issue 30: no gate disabled in silence);
+/// none when there are none.
+pub fn loosened(all: &[Loosening]) -> Option<Section> {
+    if all.is_empty() {
+        return None;
+    }
+    let mut body = String::from("Rules of this run's tolerance files that loosen comparisons the defaults gate:\n\n");
+    for l in all {
+        body.push_str(&format!("- {}\n", l.to_string().replace('|', "\\|")));
+    }
+    Some(Section::new("Loosened gates", body))
+}
 
 fn find<'a>(scenes: &'a [StoredScene], name: &str) -> Option<&'a StoredScene> {
     scenes.iter().find(|s| s.name == name)

@@ -1,5 +1,9 @@
 //! Protected folders: no command but `bless` may write under golden/, whatever its flags say
-//! (`--out golden`, `--results golden/x`, a symbolic link into it, `a/../golden`).
+//! (`--out golden`, `--results golden/x`, a symbolic link into it, `a/../golden`), and none
+//! writes under reference data. Both are recognised by what they are as well as by the path
+//! given: a blessed tree (a folder with the result marker holding scene folders) and a
+//! checksummed tree (a folder with a `MANIFEST.sha256`), whatever the working folder (issue 30).
+//! Outputs are regular files or new ones, never a FIFO, a device or a folder.
 
 use std::io;
 use std::path::{Component, Path, PathBuf};
@@ -9,6 +13,12 @@ use std::path::{Component, Path, PathBuf};
 pub enum GuardError {
     #[error("refusing to write {}: it is inside {}, which only `creepbench bless` writes", path.display(), protected.display())]
     Inside { path: PathBuf, protected: PathBuf },
+    #[error("refusing to write {}: it is inside {}, reference data checksummed in its {}", path.display(), protected.display(), super::manifest::MANIFEST)]
+    Reference { path: PathBuf, protected: PathBuf },
+    #[error("refusing to write {}: it exists and is not a regular file (a folder, FIFO or device)", path.display())]
+    NotAFile { path: PathBuf },
+    #[error("refusing to write into {}: it exists and is not a folder", path.display())]
+    NotAFolder { path: PathBuf },
     #[error("cannot resolve {}: {source}", path.display())]
     Io {
         path: PathBuf,
@@ -24,7 +34,56 @@ pub fn guard_not_under(path: &Path, protected: &Path) -> Result<(), GuardError> 
     if resolved.starts_with(resolve(protected)?) {
         return Err(GuardError::Inside { path: path.into(), protected: protected.into() });
     }
+    for dir in resolved.ancestors() {
+        if is_blessed_tree(dir) {
+            return Err(GuardError::Inside { path: path.into(), protected: dir.into() });
+        }
+        if dir.join(super::manifest::MANIFEST).is_file() {
+            return Err(GuardError::Reference { path: path.into(), protected: dir.into() });
+        }
+    }
     Ok(())
+}
+
+/// A blessed tree by what it is: a folder creepbench replaces whole (its marker) holding scene
+/// result folders (a `scene.json` each).
+pub fn is_blessed_tree(dir: &Path) -> bool {
+    dir.join(super::folder::MARKER).is_file()
+        && std::fs::read_dir(dir).is_ok_and(|entries| {
+            entries.flatten().any(|e| e.file_type().is_ok_and(|t| t.is_dir()) && e.path().join("scene.json").is_file())
+        })
+}
+
+/// An output file: outside the protected trees, and a regular file or none yet (never a FIFO,
+/// a device or a folder: writing one would block or fail after the work).
+pub fn guard_output_file(path: &Path, protected: &Path) -> Result<(), GuardError> {
+    guard_not_under(path, protected)?;
+    match std::fs::metadata(path) {
+        Ok(m) if !m.is_file() => Err(GuardError::NotAFile { path: path.into() }),
+        _ => Ok(()),
+    }
+}
+
+/// An output folder: outside the protected trees, and a folder or none yet.
+pub fn guard_output_dir(path: &Path, protected: &Path) -> Result<(), GuardError> {
+    guard_not_under(path, protected)?;
+    match std::fs::metadata(path) {
+        Ok(m) if !m.is_dir() => Err(GuardError::NotAFolder { path: path.into() }),
+        _ => Ok(()),
+    }
+}
+
+/// A folder `creepbench manifest` may write into: no blessed tree, nor inside one.
+pub fn guard_manifest_dir(dir: &Path) -> Result<(), GuardError> {
+    match resolve(dir)?.ancestors().find(|d| is_blessed_tree(d)) {
+        Some(tree) => Err(GuardError::Inside { path: dir.into(), protected: tree.into() }),
+        None => Ok(()),
+    }
+}
+
+/// Whether two paths name one folder once resolved (symbolic links, `..`).
+pub fn same_place(a: &Path, b: &Path) -> Result<bool, GuardError> {
+    Ok(resolve(a)? == resolve(b)?)
 }
 
 /// `path` made absolute: its longest existing ancestor canonicalised, the rest applied lexically.

@@ -52,6 +52,15 @@ pub fn lock_folder(dir: &Path, wait: Duration) -> Result<FolderLock, LockError> 
     }
 }
 
+/// Lock a folder that is replaced whole (golden/): the lock is on the folder that holds it,
+/// which outlives each swap, so every writer of `tree` — whatever path it was given — takes the
+/// same lock.
+pub fn lock_protected(tree: &Path, wait: Duration) -> Result<FolderLock, LockError> {
+    let absolute = std::path::absolute(tree).map_err(|source| LockError::Io { path: tree.into(), source })?;
+    let parent = absolute.parent().unwrap_or(Path::new("/"));
+    lock_folder(parent, wait)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

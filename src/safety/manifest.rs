@@ -53,13 +53,8 @@ pub fn write(dir: &Path) -> Result<usize, ManifestError> {
     let files = hash_tree(dir)?;
     let text: String = files.iter().map(|(name, hash)| format!("{hash}  {name}\n")).collect();
     let path = dir.join(MANIFEST);
-    let tmp = dir.join(format!(".{MANIFEST}.tmp-{}", std::process::id()));
-    let io_err = |source| ManifestError::Io { path: path.clone(), source };
-    std::fs::write(&tmp, text).map_err(io_err)?;
-    std::fs::rename(&tmp, &path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        io_err(e)
-    })?;
+    // Written whole; its temporary file is removed on any error (a full disk leaves nothing).
+    super::whole::write(&path, text.as_bytes()).map_err(|source| ManifestError::Io { path: path.clone(), source })?;
     Ok(files.len())
 }
 

@@ -12,4 +12,5 @@ pub mod lock;
 pub mod manifest;
 pub mod process;
 pub mod read;
+pub mod threads;
 pub mod whole;

@@ -10,7 +10,7 @@ use std::path::PathBuf;
 pub struct SceneSource {
     /// The file it comes from.
     pub path: PathBuf,
-    /// The scene's name: a study point's, or a scene file's stem.
+    /// The scene's name: a study point's, or a scene file's `name` (its stem when it has none).
     pub name: String,
     /// A study point's scene table and its places in the studies (`None`: the file is the scene).
     pub study: Option<(toml::Table, Vec<StudyPoint>)>,

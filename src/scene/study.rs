@@ -53,6 +53,9 @@ pub fn is_study(doc: &Table) -> bool {
     doc.contains_key("study")
 }
 
+/// The most scenes one study may expand into.
+pub const MAX_STUDY_POINTS: usize = 100_000;
+
 struct Axis {
     name: String,
     keys: Vec<(String, Vec<Value>)>,
@@ -104,6 +107,9 @@ fn read_axis(n: usize, t: &Value) -> Result<Axis, InputError> {
         if k.split('.').any(str::is_empty) || k == "name" {
             return Err(err(&field, format!("{k:?}"), "dotted scene keys such as \"contact.mu\""));
         }
+        if let Some(v) = values.iter().find(|v| v.as_float().is_some_and(|f| !f.is_finite())) {
+            return Err(err(format!("{field}.\"{k}\""), v, "finite numbers (no nan or inf)"));
+        }
         keys.push((k.clone(), values.clone()));
     }
     let len = keys.first().map(|(_, v)| v.len()).ok_or_else(|| {
@@ -129,10 +135,10 @@ fn read_axis(n: usize, t: &Value) -> Result<Axis, InputError> {
     };
     let x_values = match t.get("x_values") {
         None => None,
-        Some(Value::Array(a)) if a.len() == len && a.iter().all(|v| as_f64(v).is_some()) => {
+        Some(Value::Array(a)) if a.len() == len && a.iter().all(|v| as_f64(v).is_some_and(f64::is_finite)) => {
             Some(a.iter().filter_map(as_f64).collect())
         }
-        Some(v) => return Err(err(format!("{field}.x_values"), v, format!("{len} numbers, one per value"))),
+        Some(v) => return Err(err(format!("{field}.x_values"), v, format!("{len} finite numbers, one per value"))),
     };
     Ok(Axis { name, keys, labels, x_values })
 }
@@ -239,8 +245,17 @@ pub fn expand(doc: &Table, metric_names: &[&str]) -> Result<Vec<Expanded>, Input
             ));
         }
     }
-    let total: usize = axes.iter().map(|a| a.labels.len()).product();
+    // Refused before anything is allocated: a study of more points than any suite could run.
+    let total = axes
+        .iter()
+        .try_fold(1usize, |n, a| n.checked_mul(a.labels.len()))
+        .filter(|&n| n <= MAX_STUDY_POINTS)
+        .ok_or_else(|| {
+        let sizes: Vec<String> = axes.iter().map(|a| a.labels.len().to_string()).collect();
+        err("study.axis", format!("{} points", sizes.join(" x ")), format!("at most {MAX_STUDY_POINTS} points"))
+    })?;
     let mut out = Vec::with_capacity(total);
+    let mut names = std::collections::HashSet::with_capacity(total);
     for n in 0..total {
         // Mixed radix, the last axis fastest.
         let mut rest = n;
@@ -279,7 +294,7 @@ pub fn expand(doc: &Table, metric_names: &[&str]) -> Result<Vec<Expanded>, Input
             series: series.join(", "),
             metrics: metrics.clone(),
         };
-        if out.iter().any(|e: &Expanded| e.name == scene_name) {
+        if !names.insert(scene_name.clone()) {
             return Err(err(
                 "study.scene_name",
                 format!("{scene_name:?} twice"),

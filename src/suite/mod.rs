@@ -70,10 +70,12 @@ pub fn scene_files(dirs: &[PathBuf], shard: Option<Shard>) -> Result<Vec<SceneSo
     // File order decides which study a shared point lists first: sorted, never the folder's.
     files.sort();
     let mut out: Vec<SceneSource> = Vec::new();
+    // Scene name -> its place in `out` (linear in the number of scenes).
+    let mut index: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
     for path in files {
         for point in sources_of_file(&path)? {
             // A point two studies share (same name, same scene) runs once, in both.
-            if let Some(twin) = out.iter_mut().find(|s| s.name == point.name) {
+            if let Some(twin) = index.get(&point.name).map(|&i| &mut out[i]) {
                 match (&mut twin.study, point.study) {
                     (Some((d, points)), Some((doc, more))) if *d == doc => {
                         points.extend(more);
@@ -89,6 +91,7 @@ pub fn scene_files(dirs: &[PathBuf], shard: Option<Shard>) -> Result<Vec<SceneSo
                     }
                 }
             }
+            index.insert(point.name.clone(), out.len());
             out.push(point);
         }
     }
@@ -106,8 +109,14 @@ pub fn sources_of_file(path: &Path) -> Result<Vec<SceneSource>, Error> {
     let doc = crate::safety::read::read_text(path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")
         .ok()
         .and_then(|t| t.parse::<toml::Table>().ok());
-    let Some(doc) = doc.filter(study::is_study) else {
-        return Ok(vec![SceneSource { path: path.to_path_buf(), name: stem, study: None }]);
+    let doc = match doc {
+        Some(doc) if study::is_study(&doc) => doc,
+        other => {
+            // One identity for shards, bless and merge: the scene's `name` (its stem when it has
+            // none, which the scene reader then refuses).
+            let name = other.as_ref().and_then(|d| d.get("name")).and_then(|v| v.as_str()).map_or(stem, str::to_string);
+            return Ok(vec![SceneSource { path: path.to_path_buf(), name, study: None }]);
+        }
     };
     let in_file = |mut e: InputError| {
         e.field = format!("{}: {}", path.display(), e.field);
@@ -138,8 +147,9 @@ pub fn scene_names(dirs: &[PathBuf]) -> Result<Vec<String>, Error> {
 pub fn run(files: &[SceneSource], progress: bool) -> Result<Vec<SceneResult>, Error> {
     let problems = files.iter().map(|f| pipeline::load_source(f, &[])).collect::<Result<Vec<_>, _>>()?;
     // Two scenes of one name would write one result folder: refuse before anything runs.
+    let mut seen: std::collections::HashMap<&str, usize> = std::collections::HashMap::new();
     for (i, p) in problems.iter().enumerate() {
-        if let Some(j) = problems[..i].iter().position(|q| q.name == p.name) {
+        if let Some(&j) = seen.get(p.name.as_str()) {
             return Err(InputError::new(
                 "name",
                 format!("{:?} in both {} and {}", p.name, files[j].path.display(), files[i].path.display()),
@@ -147,6 +157,7 @@ pub fn run(files: &[SceneSource], progress: bool) -> Result<Vec<SceneResult>, Er
             )
             .into());
         }
+        seen.insert(&p.name, i);
     }
     let bar = if progress && files.len() > 1 {
         let b = ProgressBar::new(problems.len() as u64);

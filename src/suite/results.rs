@@ -140,6 +140,11 @@ pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
         timing: BTreeMap::new(),
         scene,
     };
+    // A scene of no model compares nothing: refused, not merged as passing.
+    if s.scene.solvers.is_empty() {
+        let source = FormatError::MissingColumn { column: "at least one solver in scene.json's solvers".into() };
+        return Err(Error::Format { path: d.join("scene.json"), source });
+    }
     // Every history in the folder is one scene.json lists: an extra file is not silently ignored.
     for entry in std::fs::read_dir(&d).map_err(Error::io(&d))?.flatten() {
         let file = entry.file_name().to_string_lossy().to_string();

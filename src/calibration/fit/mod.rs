@@ -44,6 +44,18 @@ pub struct FitOutcome {
 pub fn fit(spec: &FitSpec, refs: &References) -> Result<FitOutcome, Error> {
     let sources = suite::scene_files(&spec.suites, None)?;
     let names: Vec<String> = sources.iter().map(|s| s.name.clone()).collect();
+    // A pattern that matches nothing is a typo, not an empty set (README: names or patterns).
+    if let Some((key, pattern)) = spec.unmatched(&names) {
+        return Err(InputError::new(
+            format!("{}: fit.{key}", spec.file.display()),
+            format!("{pattern:?}"),
+            format!(
+                "a name or pattern (* and ?) matching a scene of {}",
+                spec.suites.iter().map(|s| s.display().to_string()).collect::<Vec<_>>().join(", ")
+            ),
+        )
+        .into());
+    }
     let (fitted, held_out) = (spec.select(&names, false), spec.select(&names, true));
     if fitted.is_empty() {
         return Err(InputError::new(

@@ -22,7 +22,6 @@
 //! "model.slope_reduction" = ["{k0}", 1.0, 0.0]
 //! ```
 
-use crate::comparison::tolerance_file::glob;
 use crate::error::InputError;
 use crate::scene::reader::{Range, Section};
 use std::path::{Path, PathBuf};
@@ -289,12 +288,20 @@ impl FitSpec {
     /// The scene names of `names` that the fit (`holdout = false`) or the hold-out set takes;
     /// a scene both name is fitted, never held out.
     pub fn select(&self, names: &[String], holdout: bool) -> Vec<String> {
-        let takes = |patterns: &[String], n: &str| patterns.iter().any(|p| glob(p, n));
+        let takes = |patterns: &[String], n: &str| patterns.iter().any(|p| wildcard(p, n));
         names
             .iter()
             .filter(|n| if holdout { takes(&self.holdout, n) && !takes(&self.fit, n) } else { takes(&self.fit, n) })
             .cloned()
             .collect()
+    }
+
+    /// The first pattern of `fit` or `holdout` that matches none of `names`: (key, pattern).
+    pub fn unmatched<'a>(&'a self, names: &[String]) -> Option<(&'static str, &'a str)> {
+        let lists = [("fit", &self.fit), ("holdout", &self.holdout)];
+        lists
+            .into_iter()
+            .find_map(|(key, ps)| ps.iter().find(|p| !names.iter().any(|n| wildcard(p, n))).map(|p| (key, p.as_str())))
     }
 
     /// The parameter values to validate a scene with before any run: the start, and each
@@ -323,4 +330,28 @@ impl FitSpec {
             self.params.iter().map(|p| p.name.clone()).zip(values.iter().copied()).collect();
         self.set.iter().map(|(k, v)| (k.clone(), substitute(v, &named))).collect()
     }
+}
+
+/// A whole-name match where `*` stands for any run of characters and `?` for one character
+/// (linear in time for each position pair: the classic backtracking over the last `*`).
+pub fn wildcard(pattern: &str, name: &str) -> bool {
+    let (p, n): (Vec<char>, Vec<char>) = (pattern.chars().collect(), name.chars().collect());
+    let (mut i, mut j, mut star, mut mark) = (0, 0, None, 0);
+    while j < n.len() {
+        if i < p.len() && (p[i] == '?' || p[i] == n[j]) {
+            i += 1;
+            j += 1;
+        } else if i < p.len() && p[i] == '*' {
+            star = Some(i);
+            mark = j;
+            i += 1;
+        } else if let Some(s) = star {
+            i = s + 1;
+            mark += 1;
+            j = mark;
+        } else {
+            return false;
+        }
+    }
+    p[i..].iter().all(|&c| c == '*')
 }

@@ -114,8 +114,22 @@ pub fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> Result<H
                 })
             };
             let opt = |c: Option<usize>, default: f64| c.map_or(Ok(default), n);
+            // A step is a whole number >= 0, increasing row by row: whatever a manifest says, a
+            // repeated, negative or fractional step is garbage, not a reference.
+            let step = n(cols[0])?;
+            let previous = h.rows.last().map(|r: &Row| r.step);
+            let whole = step >= 0.0 && step.fract() == 0.0 && step < 1e15;
+            let step = step as usize + step_offset;
+            if !whole || previous.is_some_and(|p| step <= p) {
+                return Err(FormatError::Value {
+                    line,
+                    column: head[cols[0]].clone(),
+                    value: crate::error::excerpt(&rec[cols[0]]),
+                    what: "a whole step index >= 0, greater than the previous row's",
+                });
+            }
             Ok(Row {
-                step: n(cols[0])? as usize + step_offset,
+                step,
                 t_s: n(cols[1])?,
                 cx: n(cols[2])?,
                 cy: n(cols[3])?,
@@ -131,6 +145,15 @@ pub fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> Result<H
             Ok(r) => h.rows.push(r),
             Err(e) => return Err(Error::Format { path: path.to_path_buf(), source: e }),
         }
+    }
+    if h.rows.is_empty() {
+        let source = FormatError::Value {
+            line: 2,
+            column: "step".into(),
+            value: "no rows".into(),
+            what: "at least one history row",
+        };
+        return Err(Error::Format { path: path.to_path_buf(), source });
     }
     Ok(h)
 }
