@@ -1,4 +1,4 @@
-//! Error types and the exit-status contract (interface.md): 2 for invalid input, 1 otherwise.
+//! Error types and the exit-status contract (docs/scene-format.md): 2 for invalid input, 1 otherwise.
 
 use std::fmt;
 use std::path::PathBuf;
@@ -102,7 +102,7 @@ pub enum Error {
 }
 
 impl Error {
-    /// Process exit status for this error (interface.md).
+    /// Process exit status for this error (docs/scene-format.md).
     pub fn exit_code(&self) -> i32 {
         match self {
             Error::Input(_) | Error::Guard(_) => 2,

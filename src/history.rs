@@ -1,10 +1,10 @@
 //! Step 4 of the pipeline: a solver's output, one row per time step (or sweep point), in the
-//! `<solver>.csv` format of interface.md.
+//! `<solver>.csv` format of docs/scene-format.md.
 
 use crate::error::{excerpt, FormatError};
 use crate::problem::Sample;
 
-/// The fixed leading columns of `<solver>.csv` (interface.md); extra columns follow.
+/// The fixed leading columns of `<solver>.csv` (docs/scene-format.md); extra columns follow.
 pub const COLUMNS: [&str; 8] = ["step", "t_s", "cx", "cy", "cs", "fn_n", "fx_over_fn", "fy_over_fn"];
 
 /// The friction coefficient of the row: written by creepbench right after [`COLUMNS`]

@@ -1,4 +1,4 @@
-//! `creepbench simulate` end to end: the interface.md contract, bad input, determinism.
+//! `creepbench simulate` end to end: the docs/scene-format.md contract, bad input, determinism.
 
 mod common;
 use common::*;
@@ -10,7 +10,7 @@ fn creepbench(args: &[&str]) -> std::process::Output {
 }
 
 /// Every thesis scene (the scene files and every study's points) runs with uba and fastsim and
-/// writes the files interface.md promises; every CONTACT case of the thesis family is among them.
+/// writes the files docs/scene-format.md promises; every CONTACT case of the thesis family is among them.
 #[test]
 fn simulate_every_thesis_scene() {
     let out = tempfile::tempdir().unwrap();

@@ -1,4 +1,4 @@
-//! Step 1 of the pipeline: the scene file (interface.md), parsed and validated.
+//! Step 1 of the pipeline: the scene file (docs/scene-format.md), parsed and validated.
 //!
 //! Every field is checked (type, range, NaN/inf, unknown keys); errors name the field, the value
 //! and what is allowed, and become exit status 2.
