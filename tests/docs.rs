@@ -268,3 +268,26 @@ fn links_of_the_documents_resolve() {
         }
     }
 }
+
+/// `run --help` says what `run` does and where the report goes, as the README does; `.ci/run`
+/// runs the README's test command.
+#[test]
+fn help_and_ci_agree_with_the_readme() {
+    let root = common::root();
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_creepbench")).args(["run", "--help"]).output().unwrap();
+    let help = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{help}");
+    for suite in creepbench::harness::suite::DEFAULT_SUITES {
+        assert!(help.contains(suite), "run --help does not name {suite}: {help}");
+    }
+    assert!(help.contains("the six shipped suites") && help.contains("[default: out/report]"), "{help}");
+    let readme = read(&root.join("README.md"));
+    for promise in ["cargo run --release -- run", "cargo test --release", "out/report/validation.md", "<!-- times -->"]
+    {
+        assert!(readme.contains(promise), "README lacks {promise:?}");
+    }
+    let ci = read(&root.join(".ci/run"));
+    assert!(ci.lines().any(|l| l.trim() == "cargo test --release --locked"), "{ci}");
+    let words = readme.split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(words.contains("`.ci/run` runs exactly `cargo test --release --locked`"), "README and .ci/run disagree");
+}
