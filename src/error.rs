@@ -1,4 +1,4 @@
-//! Error types and the exit-status contract (interface.md): 2 for invalid input, 1 otherwise.
+//! Error types and the exit-status contract (docs/scene-format.md): 2 for invalid input, 1 otherwise.
 //! The foundation of the stack (README, "The code"): this module imports no stage above it, so a
 //! stage's own failure (a model's, an external model's) reaches [`Error`] boxed as a
 //! [`StageError`], its typed enum living with its owner.
@@ -120,7 +120,7 @@ pub enum Error {
 }
 
 impl Error {
-    /// Process exit status for this error (interface.md).
+    /// Process exit status for this error (docs/scene-format.md).
     pub fn exit_code(&self) -> i32 {
         match self {
             Error::Input(_) | Error::Guard(_) => 2,

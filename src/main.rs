@@ -1,4 +1,4 @@
-//! The `creepbench` command line (interface.md; README "Commands").
+//! The `creepbench` command line (docs/commands.md).
 
 use clap::{Parser, Subcommand};
 use creepbench::commands;
@@ -87,22 +87,23 @@ enum Command {
         #[arg(long, default_value = "golden")]
         golden: PathBuf,
     },
-    /// Run the suite (default: the thesis scenes) and write the report (reports/validation.md).
+    /// Run the suites (default: the six shipped suites of scenes/), then the fits of fits/, and
+    /// write the report (out/report/validation.md; `--report reports` regenerates the committed sample).
     Run {
         #[command(flatten)]
         suite: SuiteArgs,
         /// Where the per-scene results go.
         #[arg(long, default_value = "out/results")]
         results: PathBuf,
-        /// Where the report goes.
-        #[arg(long, default_value = "reports")]
+        /// Where the report goes (validation.md, results.csv, figures/, tables/).
+        #[arg(long, default_value = "out/report")]
         report: PathBuf,
         /// Fit files run after the suites (`creepbench fit`), their outcomes in the report's
         /// calibration section (default: the folder `fits` where there is one).
         #[arg(long)]
         fits: Option<PathBuf>,
     },
-    /// Run the suite and compare with golden/ (or --against DIR) and the references; exit 1 on drift.
+    /// Run the suites and compare with golden/ (or --against DIR) and the references; exit 1 on drift.
     Check {
         #[command(flatten)]
         suite: SuiteArgs,
@@ -126,7 +127,7 @@ enum Command {
         #[arg(long)]
         strict: bool,
     },
-    /// Run the suite and write its results into golden/ (the only command that writes golden data).
+    /// Run the suites and write their results into golden/ (the only command that writes golden data).
     Bless {
         #[command(flatten)]
         suite: SuiteArgs,
@@ -148,7 +149,8 @@ enum Command {
         reference: PathBuf,
         #[arg(long, default_value = "golden")]
         golden: PathBuf,
-        #[arg(long, default_value = "reports")]
+        /// Where the merged report goes.
+        #[arg(long, default_value = "out/report")]
         report: PathBuf,
     },
     /// Write another program's input for a scene.

@@ -1,4 +1,4 @@
-//! `creepbench simulate` end to end: the interface.md contract, bad input, determinism.
+//! `creepbench simulate` end to end: the docs/scene-format.md contract, bad input, determinism.
 
 mod common;
 use common::*;
@@ -10,7 +10,7 @@ fn creepbench(args: &[&str]) -> std::process::Output {
 }
 
 /// Every thesis scene (the scene files and every study's points) runs with uba and fastsim and
-/// writes the files interface.md promises; every CONTACT case of the thesis family is among them.
+/// writes the files docs/scene-format.md promises; every CONTACT case of the thesis family is among them.
 #[test]
 fn simulate_every_thesis_scene() {
     let out = tempfile::tempdir().unwrap();
@@ -113,7 +113,7 @@ fn bad_input_exits_2_and_writes_nothing() {
         (base().replace("poisson = 0.28", "poisson = 0.5"), "material.poisson", "[0, 0.5)"),
         (base().replace("name = \"bad\"", "name = \"Bad Name\""), "name", "[a-z0-9_]"),
         (base() + "[model]\npressure = \"hertzian\"\n", "model.pressure", "parabolic, ellipsoidal"),
-        ("name = \"x\"\nsolvers = [\"uba\"\n".to_string(), "scene", "malformed TOML"),
+        ("name = \"x\"\nsolvers = [\"uba\"\n".to_string(), "scene line 2, column 17", "malformed TOML"),
         (base().replace("[material]\ng_mpa = 82000.0\n", "[material]\n"), "material.g_mpa", "missing"),
         (base().replace("c = 0.005", "c = 2.0"), "creepage.c", "[-1, 1]"),
         (base().replace("steps = 10", "steps = 10.5"), "creepage.steps", "whole number"),
@@ -142,6 +142,38 @@ fn bad_input_exits_2_and_writes_nothing() {
         assert!(!err.contains("panicked"), "{err}");
         assert!(!out.exists() || std::fs::read_dir(&out).unwrap().next().is_none(), "{field}: output written");
     }
+}
+
+/// Malformed TOML is reported at its line and column (not a byte offset), with the line quoted:
+/// a scene file through `simulate`, and any TOML file the one parser reads (tolerance and fit files).
+#[test]
+fn malformed_toml_names_line_and_column() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = base().replace("mu = 0.4", "mu = 0.4 0.3");
+    let line = text.lines().position(|l| l == "mu = 0.4 0.3").unwrap() + 1;
+    std::fs::write(dir.path().join("s.toml"), text).unwrap();
+    let o = simulate_in(dir.path());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains(&format!("s.toml: scene line {line}, column 6`")), "{err}");
+    assert!(err.contains("malformed TOML in \"mu = 0.4 0.3\""), "{err}");
+    assert!(!err.contains("byte"), "{err}");
+
+    use creepbench::scene::reader::{parse_toml, LineColumn};
+    let e = parse_toml("[[rule]]\nagainst = \"golden\"\nabs = 1e-9 x\n", "tol.toml").unwrap_err();
+    assert_eq!(e.field, "tol.toml line 3, column 7");
+    assert_eq!(e.value, "malformed TOML in \"abs = 1e-9 x\"");
+    // Columns count characters, CRLF ends a line, an offset at the end is the last line's end,
+    // and a long line is cut around the column.
+    let at = |text: &str, offset| LineColumn::of(text, offset);
+    assert_eq!((at("a = \"μμ\" x\r\nb = 1", 10).line, at("a = \"μμ\" x\r\nb = 1", 10).column), (1, 9));
+    assert_eq!(at("a = \"μμ\" x\r\nb = 1", 10).excerpt, "a = \"μμ\" x");
+    let end = at("a = 1\nb = [\n", 13);
+    assert_eq!((end.line, end.column, end.excerpt.as_str()), (3, 1, ""));
+    let long = format!("k = \"{}\" x", "y".repeat(100));
+    let far = at(&long, 107);
+    assert_eq!((far.line, far.column), (1, 108));
+    assert_eq!(far.excerpt, format!("{}\" x", "y".repeat(18)));
 }
 
 /// `simulate DIR/s.toml --out DIR/o`.

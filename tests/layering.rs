@@ -1,7 +1,7 @@
 //! The straight stack (issue 29): every `crate::` path in the code of `src/` (a `use crate::…`
 //! line or a path written inline) may name only its own stage or one below it, and the modules of
 //! one stage must not import each other in a cycle. The order is [`STAGES`], the same as the
-//! README's code tour ("## The code"), which this test checks too.
+//! code tour (docs/code.md), which this test checks too.
 
 mod common;
 use common::root;
@@ -185,17 +185,17 @@ fn cycles(edges: &BTreeMap<String, BTreeMap<String, String>>) -> Vec<String> {
     found
 }
 
-/// The stack written out: `a, b < c < …` (the README's form).
+/// The stack written out: `a, b < c < …` (the code tour's form).
 fn order() -> String {
     STAGES.iter().map(|s| s.join(", ")).collect::<Vec<_>>().join(" < ")
 }
 
 #[test]
 fn the_readme_code_tour_gives_the_same_order() {
-    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let readme = std::fs::read_to_string(root().join("docs/code.md")).unwrap();
     let tour = &readme[readme.find("## The code").expect("the code tour")..];
     let want = order();
-    assert!(tour.contains(&want), "the README's code tour must give the stack as `{want}`");
+    assert!(tour.contains(&want), "the code tour (docs/code.md) must give the stack as `{want}`");
 }
 
 #[test]

@@ -1,5 +1,5 @@
 //! Step 4 of the pipeline: a solver's output, one row per time step (or sweep point), in the
-//! `<solver>.csv` format of interface.md; made by the [`sample_loop`] from a built-in model's
+//! `<solver>.csv` format of docs/scene-format.md; made by the [`sample_loop`] from a built-in model's
 //! steps, or read from an [`external`] model's output.
 
 pub mod external;
@@ -8,7 +8,7 @@ pub mod sample_loop;
 use crate::error::{excerpt, FormatError};
 use crate::problem::Sample;
 
-/// The fixed leading columns of `<solver>.csv` (interface.md); extra columns follow.
+/// The fixed leading columns of `<solver>.csv` (docs/scene-format.md); extra columns follow.
 pub const COLUMNS: [&str; 8] = ["step", "t_s", "cx", "cy", "cs", "fn_n", "fx_over_fn", "fy_over_fn"];
 
 /// The friction coefficient of the row: written by creepbench right after [`COLUMNS`]

@@ -1,4 +1,4 @@
-//! `delay_ratio` (interface.md): time from a maximum of cx to the next maximum of f in the second
+//! `delay_ratio` (docs/scene-format.md): time from a maximum of cx to the next maximum of f in the second
 //! period (peaks by parabolic interpolation through the three samples around each maximum), over
 //! the period.
 

@@ -1,4 +1,4 @@
-//! `loop_area` (interface.md): |∮ f dcx| over the last full period, trapezoidal rule.
+//! `loop_area` (docs/scene-format.md): |∮ f dcx| over the last full period, trapezoidal rule.
 
 use super::{HistoryColumns, MetricDef, MetricKind, MetricValue};
 use crate::problem::Loading;

@@ -1,4 +1,4 @@
-//! Step 5 of the pipeline: metrics, registered in one place (interface.md, "Metric definitions").
+//! Step 5 of the pipeline: metrics, registered in one place (docs/scene-format.md, "metrics.csv").
 //! A metric is a [`MetricDef`]: its name, whether it is computed by default, when it fits a
 //! loading, and how it is computed — from a history, or from the traction field at every solve
 //! (field metrics, computed by the sample loop for the models that have a field).

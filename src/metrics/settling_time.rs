@@ -1,4 +1,4 @@
-//! `settling_time_s` (interface.md): step kind only, the first time after which |f − f_last|
+//! `settling_time_s` (docs/scene-format.md): step kind only, the first time after which |f − f_last|
 //! stays within 1 % of |f_last|, from the first step after the initial state.
 
 use super::{HistoryColumns, MetricDef, MetricKind, MetricValue};

@@ -1,4 +1,4 @@
-//! `steady_value` (interface.md): f at the last step (step and sine kinds) or at each point
+//! `steady_value` (docs/scene-format.md): f at the last step (step and sine kinds) or at each point
 //! (sweep, with the point's step).
 
 use super::{HistoryColumns, MetricDef, MetricKind, MetricValue};

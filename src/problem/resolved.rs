@@ -1,5 +1,5 @@
 //! The resolved scene as one typed record: written as scene.json by `simulate`, `run` and
-//! `bless` (interface.md: at least a_mm, b_mm, p0_mpa, c11, c22, c23, dx_mm, dy_mm, dt_s,
+//! `bless` (docs/scene-format.md: at least a_mm, b_mm, p0_mpa, c11, c22, c23, dx_mm, dy_mm, dt_s,
 //! n_steps and the solvers that ran), read back by the harness and by external models.
 
 use super::params::ParamEntries;

@@ -1,4 +1,4 @@
-//! `[geometry]`: a contact given per element (interface.md extension). `kind = "profile"`:
+//! `[geometry]`: a contact given per element (docs/scene-format.md). `kind = "profile"`:
 //! `h = a1 x² + g(y)` with g linear between the rows of a CSV `y_mm,g_mm`; `kind = "field"`: h per
 //! element from a CSV `ix,iy,h_mm` (1-based, ix along CONTACT's x, every element once).
 

@@ -1,4 +1,4 @@
-//! Step 1 of the pipeline: the scene file (interface.md), parsed and validated.
+//! Step 1 of the pipeline: the scene file (docs/scene-format.md), parsed and validated.
 //!
 //! Every field is checked (type, range, NaN/inf, unknown keys); errors name the field, the value
 //! and what is allowed, and become exit status 2.
@@ -225,11 +225,7 @@ impl Scene {
 
     /// Parse and validate scene text; `dir` resolves relative paths.
     pub fn from_toml(text: &str, dir: &Path) -> Result<Scene, InputError> {
-        let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| {
-            let msg = e.message().to_string();
-            let at = e.span().map(|s| format!("byte {}", s.start)).unwrap_or_else(|| "?".into());
-            InputError::new("scene", format!("malformed TOML at {at}"), format!("valid TOML ({msg})"))
-        })?;
+        let doc = reader::parse_toml(text, "scene")?;
         Scene::from_table(&doc, dir)
     }
 

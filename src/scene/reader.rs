@@ -5,10 +5,54 @@ use crate::error::InputError;
 use std::collections::BTreeSet;
 use toml::{Table, Value};
 
-/// Parse TOML text as a table; an error names `field` (a file, usually) and the parser's message.
+/// Parse TOML text as a table; an error names `field` (a file, usually), the line and column
+/// where the parser stopped, an excerpt of that line and the parser's message.
 pub fn parse_toml(text: &str, field: impl Into<String>) -> Result<Table, InputError> {
-    text.parse()
-        .map_err(|e: toml::de::Error| InputError::new(field, "malformed TOML", format!("valid TOML ({})", e.message())))
+    text.parse().map_err(|e: toml::de::Error| {
+        let field = field.into();
+        let allowed = format!("valid TOML ({})", e.message());
+        match e.span() {
+            Some(span) => {
+                let at = LineColumn::of(text, span.start);
+                InputError::new(
+                    format!("{field} line {}, column {}", at.line, at.column),
+                    format!("malformed TOML in {:?}", at.excerpt),
+                    allowed,
+                )
+            }
+            None => InputError::new(field, "malformed TOML", allowed),
+        }
+    })
+}
+
+/// A byte offset of a text as a 1-based line and column (in characters) with an excerpt of
+/// that line around the column.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct LineColumn {
+    pub line: usize,
+    pub column: usize,
+    pub excerpt: String,
+}
+
+impl LineColumn {
+    /// Characters of the line shown at most (the excerpt starts up to 20 before the column).
+    const EXCERPT_CHARS: usize = 40;
+
+    /// Where byte `offset` of `text` lies (an offset past the end: the end of the last line).
+    pub fn of(text: &str, offset: usize) -> LineColumn {
+        let mut offset = offset.min(text.len());
+        while !text.is_char_boundary(offset) {
+            offset -= 1;
+        }
+        let before = &text[..offset];
+        let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+        let line_end = text[offset..].find('\n').map_or(text.len(), |i| offset + i);
+        let line_text = text[line_start..line_end].trim_end_matches('\r');
+        let column0 = text[line_start..offset].chars().count();
+        let skip = column0.saturating_sub(20);
+        let excerpt: String = line_text.chars().skip(skip).take(Self::EXCERPT_CHARS).collect();
+        LineColumn { line: before.matches('\n').count() + 1, column: column0 + 1, excerpt }
+    }
 }
 
 /// One TOML table being read; keys not consumed are reported by [`Section::finish`].
