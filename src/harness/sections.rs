@@ -4,7 +4,7 @@
 //! `scenes/report/` (named `report_*`), run and stored like any other.
 
 use super::linked_table::{largest, place, Table};
-use super::plot::{line_chart, Series};
+use super::plot::{line_chart, Axis, Series};
 use super::references::References;
 use super::results::StoredScene;
 use crate::history::History;
@@ -201,13 +201,14 @@ pub fn scaling(scenes: &[StoredScene]) -> Option<Section> {
             })
             .collect();
         let _ = writeln!(s, "| {solver} | {} | {slope:.2} |", cells.join(", "));
-        series.push(Series {
-            label: solver,
-            points: pts.iter().map(|(n, t)| (*n, t.log10())).collect(),
-            markers: false,
-        });
+        series.push(Series::model(solver, pts));
     }
-    let svg = line_chart("Cost per step against elements", "elements (log)", "log10(seconds per step)", &series, true);
+    let svg = line_chart(
+        "Cost per step against elements",
+        &Axis::log("grid elements [–]"),
+        &Axis::log("time per step [s]"),
+        &series,
+    );
     s.push_str("\n![cost per step](figures/cost_per_step.svg)\n");
     Some(Section {
         title: "Cost per step against grid size".into(),
