@@ -217,7 +217,10 @@ mod tests {
             .unwrap()
             .parse()
             .unwrap();
-        let panel = svg.split(r#"<g class="panel" transform="translate("#).nth(1).unwrap();
+        let panel = svg
+            .split(r#"<g class="panel" data-width="560.0" data-height="320.0" transform="translate("#)
+            .nth(1)
+            .unwrap();
         let panel_x: f64 = panel.split(',').next().unwrap().parse().unwrap();
         assert!(legend_x >= panel_x + 560.0, "legend at {legend_x}, plot area from {panel_x}");
         assert!(svg.contains(r##"data-model="CONTACT" data-reference="true" data-color="#000000""##), "{svg}");

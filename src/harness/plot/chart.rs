@@ -135,7 +135,10 @@ fn draw_panel(
     (xt, yt): (&Ticks, &Ticks),
 ) {
     let (w, h) = layout.plot;
-    svg.raw(&format!(r#"<g class="panel" transform="translate({:.1},{:.1})">"#, origin.0, origin.1));
+    svg.raw(&format!(
+        r#"<g class="panel" data-width="{w:.1}" data-height="{h:.1}" transform="translate({:.1},{:.1})">"#,
+        origin.0, origin.1
+    ));
     svg.raw(&format!(r#"<clipPath id="plot{index}"><rect x="0" y="0" width="{w:.1}" height="{h:.1}"/></clipPath>"#));
     let (px, py) = (|v: f64| xs.frac(v) * w, |v: f64| (1.0 - ys.frac(v)) * h);
     for (v, label) in &xt.major {

@@ -56,7 +56,9 @@ pub fn patch_map(title: &str, cells: &[PatchCell], (dx, dy): (f64, f64)) -> Stri
     let (width, height) = (LEFT + PLOT.0 + 150.0, TOP + h.max(BAR.1 + 90.0) + 50.0);
     let mut svg = Svg::new(width, height);
     svg.text((width / 2.0, 24.0), &format!("{title} (p max {p_max:.0} MPa)"), 14.0, "middle", "title", false);
-    svg.raw(&format!(r#"<g class="panel" transform="translate({LEFT:.1},{TOP:.1})">"#));
+    svg.raw(&format!(
+        r#"<g class="panel" data-width="{w:.1}" data-height="{h:.1}" transform="translate({LEFT:.1},{TOP:.1})">"#
+    ));
     let (px, py) = (|v: f64| xs.frac(v) * w, |v: f64| (1.0 - ys.frac(v)) * h);
     svg.raw(r#"<g class="cells">"#);
     let corner = |c: &PatchCell| (px(c.0 - dx / 2.0), py(c.1 + dy / 2.0));
@@ -80,14 +82,7 @@ pub fn patch_map(title: &str, cells: &[PatchCell], (dx, dy): (f64, f64)) -> Stri
     }
     svg.rect((0.0, 0.0), (w, h), "none", Some(("#444444", 1.0)));
     svg.raw("</g>");
-    svg.text(
-        (LEFT + w / 2.0, TOP + h + 36.0),
-        "x [mm] (rolling direction, CONTACT)",
-        13.0,
-        "middle",
-        "axis-title x",
-        false,
-    );
+    svg.text((LEFT + w / 2.0, TOP + h + 36.0), "x, rolling direction [mm]", 13.0, "middle", "axis-title x", false);
     svg.text((18.0, TOP + h / 2.0), "y [mm]", 13.0, "middle", "axis-title y", true);
     color_bar(&mut svg, (LEFT + PLOT.0 + 36.0, TOP + 14.0), p_max);
     svg.finish()
