@@ -64,17 +64,19 @@ impl Series {
 
 /// A line chart as SVG text: one panel, or small multiples on shared axes ([`panels`]).
 pub fn line_chart(title: &str, x: &Axis, y: &Axis, series: &[Series]) -> String {
-    chart::draw(title, x, y, &panels(series))
+    let drawn: Vec<&Series> =
+        series.iter().filter(|s| s.points.iter().any(|p| p.0.is_finite() && p.1.is_finite())).collect();
+    chart::draw(title, x, y, &panels(&drawn))
 }
 
 /// The panels of a chart: all series in one when there are at most
 /// [`MAX_SERIES_PER_PANEL`] model curves, no two of the same model; else one panel per model
 /// curve with the references of its group (at most [`MAX_PANELS`]); else one per group.
-fn panels(series: &[Series]) -> Vec<chart::Panel<'_>> {
-    let lines: Vec<&Series> = series.iter().filter(|s| !s.reference).collect();
+fn panels<'a>(series: &[&'a Series]) -> Vec<chart::Panel<'a>> {
+    let lines: Vec<&Series> = series.iter().copied().filter(|s| !s.reference).collect();
     let alike = lines.iter().enumerate().any(|(i, a)| lines[..i].iter().any(|b| b.name == a.name));
     if lines.len() <= MAX_SERIES_PER_PANEL && !alike {
-        return vec![chart::Panel { title: String::new(), series: series.iter().collect() }];
+        return vec![chart::Panel { title: String::new(), series: series.to_vec() }];
     }
     let mut groups: Vec<&str> = Vec::new();
     for s in series {
@@ -82,7 +84,8 @@ fn panels(series: &[Series]) -> Vec<chart::Panel<'_>> {
             groups.push(&s.group);
         }
     }
-    let references = |g: &str| -> Vec<&Series> { series.iter().filter(|s| s.reference && s.group == g).collect() };
+    let references =
+        |g: &str| -> Vec<&Series> { series.iter().copied().filter(|s| s.reference && s.group == g).collect() };
     let mut out = Vec::new();
     for g in groups {
         let in_group: Vec<&Series> = lines.iter().copied().filter(|s| s.group == g).collect();
@@ -180,10 +183,10 @@ mod tests {
     fn many_series_become_one_panel_per_model_with_the_references_of_its_group() {
         let models = ["contact", "uba", "fastsim", "linear", "she", "polach", "fastrip", "relaxation"];
         let few: Vec<Series> = models[..3].iter().map(|m| Series::model(*m, vec![])).collect();
-        assert_eq!(panels(&few).len(), 1);
+        assert_eq!(panels(&few.iter().collect::<Vec<_>>()).len(), 1);
         let mut all: Vec<Series> = models.iter().map(|m| Series::model(*m, vec![])).collect();
         all.push(Series::reference("CONTACT", vec![]));
-        let p = panels(&all);
+        let p = panels(&all.iter().collect::<Vec<_>>());
         assert_eq!(p.len(), 8);
         assert_eq!(names(&p)[1], ["uba", "CONTACT"]);
         assert_eq!(p[1].title, "uba");
@@ -194,12 +197,15 @@ mod tests {
                 [Series::model("uba", vec![]).in_group(*g), Series::reference("CONTACT", vec![]).in_group(*g)]
             })
             .collect();
-        assert_eq!(names(&panels(&grouped)), [vec!["ubaa", "CONTACTa"], vec!["ubab", "CONTACTb"]]);
+        assert_eq!(
+            names(&panels(&grouped.iter().collect::<Vec<_>>())),
+            [vec!["ubaa", "CONTACTa"], vec!["ubab", "CONTACTb"]]
+        );
         // 20 groups of 8 models: one panel per group.
         let huge: Vec<Series> = (0..20)
             .flat_map(|g| models.iter().map(move |m| Series::model(*m, vec![]).in_group(g.to_string())))
             .collect();
-        assert_eq!(panels(&huge).len(), 20);
+        assert_eq!(panels(&huge.iter().collect::<Vec<_>>()).len(), 20);
     }
 
     #[test]
@@ -207,6 +213,7 @@ mod tests {
         let mut s: Vec<Series> =
             ["uba", "fastsim"].iter().map(|m| Series::model(*m, vec![(1.0, 0.1), (2.0, 0.2)])).collect();
         s.push(Series::reference("CONTACT", vec![(1.5, 0.15)]));
+        s.push(Series::reference("thesis", vec![(f64::NAN, 0.1)]));
         let svg = line_chart("t", &Axis::linear("t [s]"), &Axis::linear("f_x / F_N [–]"), &s);
         let legend_x: f64 = svg
             .split(r#"<g class="legend" transform="translate("#)
@@ -224,5 +231,6 @@ mod tests {
         let panel_x: f64 = panel.split(',').next().unwrap().parse().unwrap();
         assert!(legend_x >= panel_x + 560.0, "legend at {legend_x}, plot area from {panel_x}");
         assert!(svg.contains(r##"data-model="CONTACT" data-reference="true" data-color="#000000""##), "{svg}");
+        assert!(!svg.contains("thesis"), "a series with nothing to draw is left out, legend too: {svg}");
     }
 }

@@ -123,7 +123,7 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
             let log_x = positive && ratio > 20.0;
             let file = format!("study_{id}_{metric}.svg");
             let svg = line_chart(
-                &format!("{title}: {}", titles::of(&metric)),
+                &format!("{title} — {}", titles::of(&metric)),
                 &Axis { title: titles::of(x_key), log: log_x },
                 &Axis::linear(titles::of(&metric)),
                 &plotted,

@@ -161,7 +161,9 @@ fn draw_panel(
         svg.text((w / 2.0, -7.0), &panel.title, 12.0, "middle", "panel-title", false);
     }
     svg.raw(&format!(r#"<g clip-path="url(#plot{index})">"#));
-    for s in &panel.series {
+    // References first: the models' lines stay visible over dense reference markers.
+    let (references, lines): (Vec<&&Series>, Vec<&&Series>) = panel.series.iter().partition(|s| s.reference);
+    for s in references.into_iter().chain(lines) {
         let style = s.style();
         let pts: Vec<(f64, f64)> = s
             .points
@@ -179,8 +181,13 @@ fn draw_panel(
         if !s.reference {
             svg.polyline(&pts, &style, 1.8);
         }
+        let r = match (s.reference, pts.len()) {
+            (false, _) => 3.5,
+            (true, n) if n <= 40 => 3.0,
+            (true, _) => 2.2,
+        };
         for p in marked(&pts, s.reference, &style) {
-            svg.marker(p, &style, if s.reference { 3.0 } else { 3.5 });
+            svg.marker(p, &style, r);
         }
         svg.raw("</g>");
     }
