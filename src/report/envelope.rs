@@ -8,7 +8,7 @@ use crate::comparison::references::envelope::EnvelopeCases;
 use crate::comparison::references::{References, ENVELOPE_SECTION, NONHERTZ_SECTION};
 use crate::history::{History, MZ};
 use crate::problem::LoadingKind;
-use crate::report::plot::{line_chart, patch_map, PatchCell, Series};
+use crate::report::plot::{line_chart, patch_map, titles, Axis, PatchCell, Series};
 use crate::report::section::Section;
 use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
@@ -40,13 +40,14 @@ fn cell(w: Option<(f64, usize)>) -> String {
 }
 
 /// The x axis of a case's figure: the swept creepage of a sweep, else time.
-fn axis(sc: &StoredScene) -> (&'static str, &'static str) {
+fn axis(sc: &StoredScene) -> (&'static str, String) {
     if sc.scene.kind != LoadingKind::Sweep {
-        return ("t_s", "t [s]");
+        return ("t_s", titles::of("t_s"));
     }
     let d = sc.scene.sweep_direction.unwrap_or([1.0, 0.0, 0.0]);
     let k = (1..3).fold(0, |k, i| if d[i].abs() > d[k].abs() { i } else { k });
-    [("cx", "cx [-]"), ("cy", "cy [-]"), ("cs", "cs [1/mm]")][k]
+    let x = ["cx", "cy", "cs"][k];
+    (x, titles::of(x))
 }
 
 /// What differs between the case-set sections.
@@ -117,23 +118,24 @@ fn case_section(scenes: &[StoredScene], set: &EnvelopeCases, spec: &Spec) -> Opt
             if !shown {
                 continue;
             }
-            let mut series: Vec<Series> = vec![Series {
-                label: "CONTACT".into(),
-                points: contact
-                    .column(x)
-                    .unwrap_or_default()
-                    .into_iter()
-                    .zip(contact.column(col).unwrap_or_default())
-                    .collect(),
-                markers: true,
-            }];
+            let mut series: Vec<Series> = Vec::new();
             for (name, h) in &sc.histories {
                 let points =
                     h.column(x).unwrap_or_default().into_iter().zip(h.column(col).unwrap_or_default()).collect();
-                series.push(Series { label: name.clone(), points, markers: false });
+                series.push(Series::model(name, points));
             }
+            let theirs = contact.column(x).unwrap_or_default().into_iter().zip(contact.column(col).unwrap_or_default());
+            series.push(Series::reference("CONTACT", theirs.collect()));
             let file = format!("{}_{}_{}.svg", spec.prefix, sc.name, &col[..2]);
-            figures.push((file.clone(), line_chart(&format!("{} — {note}", sc.name), xl, label, &series, false)));
+            figures.push((
+                file.clone(),
+                line_chart(
+                    &format!("{} — {note}", sc.name),
+                    &Axis::linear(&xl),
+                    &Axis::linear(titles::of(col)),
+                    &series,
+                ),
+            ));
             let _ = writeln!(pictures, "![{} {label}](figures/{file})", sc.name);
         }
         for (step, field) in set.fields.get(&sc.name).into_iter().flatten() {

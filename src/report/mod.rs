@@ -21,7 +21,7 @@ use crate::error::Error;
 use crate::history::History;
 use crate::metrics;
 use crate::problem::LoadingKind;
-use crate::report::plot::{line_chart, Series};
+use crate::report::plot::{line_chart, titles::of as title_of, Axis, Series};
 use crate::report::section::Section;
 use crate::safety::{folder, whole};
 use crate::suite::results::StoredScene;
@@ -90,7 +90,7 @@ fn xy(h: &History, x: &str, y: &str) -> Vec<(f64, f64)> {
 
 /// A sweep's plot axis: the creepage its direction moves most ((cx, cy, cs) order on ties).
 fn swept_axis(direction: [f64; 3]) -> (&'static str, &'static str) {
-    let axes = [("cx", "cx [-]"), ("cy", "cy [-]"), ("cs", "cs [1/mm]")];
+    let axes = [("cx", "creepage c_x [–]"), ("cy", "creepage c_y [–]"), ("cs", "spin creepage c_s [1/mm]")];
     let k = (1..3).fold(0, |k, i| if direction[i].abs() > direction[k].abs() { i } else { k });
     axes[k]
 }
@@ -376,36 +376,35 @@ pub fn build(input: &ReportInput) -> Report {
             let (x, xl) =
                 if sweep { swept_axis(sc.scene.sweep_direction.unwrap_or([1.0, 0.0, 0.0])) } else { ("t_s", "t [s]") };
             for (name, h) in &sc.histories {
-                series.push(Series { label: name.clone(), points: thin(xy(h, x, "fx_over_fn"), 300), markers: false });
+                series.push(Series::model(name, thin(xy(h, x, "fx_over_fn"), 300)));
             }
             if let Some(c) = &contact {
-                series.insert(
-                    0,
-                    Series { label: "CONTACT".into(), points: thin(xy(c, x, "fx_over_fn"), 150), markers: true },
-                );
+                series.push(Series::reference("CONTACT", thin(xy(c, x, "fx_over_fn"), 150)));
             }
             // Sine scenes show their loop; the time history only where the delay is the subject.
             if sc.scene.period_s().is_none() || group.sine_histories {
                 let file = format!("{}_{}.svg", sc.name, if sweep { "sweep" } else { "history" });
-                figures.push((file.clone(), line_chart(&sc.name, xl, "f = Fx/FN", &series, false)));
+                figures.push((
+                    file.clone(),
+                    line_chart(&sc.name, &Axis::linear(xl), &Axis::linear(title_of("fx_over_fn")), &series),
+                ));
                 let _ = writeln!(md, "![{}](figures/{file})", sc.name);
             }
             if let Some(p) = sc.scene.period_s() {
-                let mut loops: Vec<Series> = sc
-                    .histories
-                    .iter()
-                    .map(|(n, h)| Series { label: n.clone(), points: thin(last_period(h, p), 300), markers: false })
-                    .collect();
+                let mut loops: Vec<Series> =
+                    sc.histories.iter().map(|(n, h)| Series::model(n, thin(last_period(h, p), 300))).collect();
                 if let Some(c) = &contact {
-                    loops.insert(
-                        0,
-                        Series { label: "CONTACT".into(), points: thin(last_period(c, p), 150), markers: true },
-                    );
+                    loops.push(Series::reference("CONTACT", thin(last_period(c, p), 150)));
                 }
                 let file = format!("{}_loop.svg", sc.name);
                 figures.push((
                     file.clone(),
-                    line_chart(&format!("{} — last period", sc.name), "cx [-]", "f = Fx/FN", &loops, false),
+                    line_chart(
+                        &format!("{} — last period", sc.name),
+                        &Axis::linear("creepage c_x [–]"),
+                        &Axis::linear(title_of("fx_over_fn")),
+                        &loops,
+                    ),
                 ));
                 let _ = writeln!(md, "![{} loop](figures/{file})", sc.name);
             }

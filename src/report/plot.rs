@@ -1,206 +1,107 @@
-//! SVG line plots for the report (plotters, SVG backend only).
+//! SVG figures for the report: line charts (one panel, or small multiples when a single panel
+//! would hold too many series or two alike) and patch maps. Every model is drawn in its own
+//! colour, line style and marker, the same in every figure ([`style`]); reference data as black
+//! markers.
 
-use plotters::prelude::*;
+mod axis;
+mod chart;
+mod patch;
+pub mod style;
+mod svg;
+pub mod titles;
 
-/// One curve: legend label, points, and whether it is drawn as markers (references) or a line.
+pub use patch::{patch_map, PatchCell};
+
+/// Most series in one panel; a chart with more becomes small multiples.
+pub const MAX_SERIES_PER_PANEL: usize = 6;
+/// Most panels of one series each; beyond, one panel per group holds all of the group's models.
+pub const MAX_PANELS: usize = 24;
+
+/// An axis: its title (a name with its unit, e.g. `frequency [Hz]`) and whether it is logarithmic.
+pub struct Axis {
+    pub title: String,
+    pub log: bool,
+}
+
+impl Axis {
+    pub fn linear(title: impl Into<String>) -> Axis {
+        Axis { title: title.into(), log: false }
+    }
+    pub fn log(title: impl Into<String>) -> Axis {
+        Axis { title: title.into(), log: true }
+    }
+}
+
+/// One curve: a model's line (drawn in the model's style) or a reference set's markers.
 pub struct Series {
-    pub label: String,
+    /// The model's or reference set's name: its style and legend entry.
+    pub name: String,
+    /// The value of a study's other axes ("mu 10"; empty when none): curves of different
+    /// groups go into different panels, references into the panels of their group.
+    pub group: String,
     pub points: Vec<(f64, f64)>,
-    pub markers: bool,
+    pub reference: bool,
 }
 
-const COLORS: [RGBColor; 6] = [
-    RGBColor(0, 0, 0),
-    RGBColor(214, 39, 40),
-    RGBColor(31, 119, 180),
-    RGBColor(44, 160, 44),
-    RGBColor(148, 103, 189),
-    RGBColor(255, 127, 14),
-];
-
-/// Largest magnitude plotted: larger values are drawn at it, so that an axis span and its
-/// padding stay finite (an infinite or NaN range makes plotters' tick search never end).
-const PLOT_LIMIT: f64 = 1e300;
-/// Smallest positive x on a log axis, and the widest log axis in decades: the ratio of the
-/// ends stays finite, and so does the count of decades plotters steps through.
-const LOG_DECADES: i32 = 300;
-/// A span below this fraction of the values' magnitude is drawn as if all values were equal.
-const NEGLIGIBLE_SPAN: f64 = 1e-9;
-
-/// A point as plotted: `None` for non-finite values (and x ≤ 0 on a log axis), magnitudes
-/// clamped to [`PLOT_LIMIT`].
-fn plottable((x, y): (f64, f64), log_x: bool) -> Option<(f64, f64)> {
-    if !x.is_finite() || !y.is_finite() || (log_x && x <= 0.0) {
-        return None;
+impl Series {
+    /// A model's curve.
+    pub fn model(name: impl Into<String>, points: Vec<(f64, f64)>) -> Series {
+        Series { name: name.into(), group: String::new(), points, reference: false }
     }
-    let x = if log_x { x.clamp(10f64.powi(-LOG_DECADES), PLOT_LIMIT) } else { x.clamp(-PLOT_LIMIT, PLOT_LIMIT) };
-    Some((x, y.clamp(-PLOT_LIMIT, PLOT_LIMIT)))
-}
-
-/// Axis ranges: finite, increasing, with a finite span, whatever the values.
-fn bounds(series: &[Series], log_x: bool) -> ((f64, f64), (f64, f64)) {
-    let pts = series.iter().flat_map(|s| s.points.iter()).filter_map(|&p| plottable(p, log_x));
-    let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
-    for (x, y) in pts {
-        x0 = x0.min(x);
-        x1 = x1.max(x);
-        y0 = y0.min(y);
-        y1 = y1.max(y);
+    /// A reference set's points (CONTACT, the thesis).
+    pub fn reference(name: impl Into<String>, points: Vec<(f64, f64)>) -> Series {
+        Series { name: name.into(), group: String::new(), points, reference: true }
     }
-    if !x0.is_finite() {
-        return (if log_x { (1.0, 10.0) } else { (0.0, 1.0) }, (0.0, 1.0));
+    /// The same series in `group`.
+    pub fn in_group(self, group: impl Into<String>) -> Series {
+        Series { group: group.into(), ..self }
     }
-    let x = if log_x { log_axis(x0, x1) } else { linear_axis(x0, x1) };
-    (x, linear_axis(y0, y1))
-}
-
-/// A linear axis over finite `lo ≤ hi` (|·| ≤ [`PLOT_LIMIT`]) padded by 5 %; values (nearly)
-/// equal get an axis of ± half their magnitude around them, or ± 1 around zero.
-fn linear_axis(lo: f64, hi: f64) -> (f64, f64) {
-    let magnitude = lo.abs().max(hi.abs());
-    let span = hi - lo;
-    if span > NEGLIGIBLE_SPAN * magnitude {
-        let pad = 0.05 * span;
-        return (lo - pad, hi + pad);
-    }
-    let mid = 0.5 * (lo + hi);
-    let half = if magnitude > 1e-290 { 0.5 * magnitude } else { 1.0 };
-    (mid - half, mid + half)
-}
-
-/// A log axis over positive `lo ≤ hi`: at most [`LOG_DECADES`] decades (cut at the small end),
-/// equal values get a decade around them.
-fn log_axis(lo: f64, hi: f64) -> (f64, f64) {
-    let lo = lo.max(hi / 10f64.powi(LOG_DECADES));
-    if hi > lo * (1.0 + NEGLIGIBLE_SPAN) {
-        (lo, hi)
-    } else {
-        (lo / 10f64.sqrt(), hi * 10f64.sqrt())
+    /// How the series is drawn.
+    pub fn style(&self) -> style::Style {
+        style::of(&self.name, self.reference)
     }
 }
 
-/// A line chart as SVG text. `log_x` puts x on a log scale (positive x only).
-pub fn line_chart(title: &str, x_label: &str, y_label: &str, series: &[Series], log_x: bool) -> String {
-    render((720, 420), title, |root| draw(root, title, x_label, y_label, series, log_x))
+/// A line chart as SVG text: one panel, or small multiples on shared axes ([`panels`]).
+pub fn line_chart(title: &str, x: &Axis, y: &Axis, series: &[Series]) -> String {
+    let drawn: Vec<&Series> =
+        series.iter().filter(|s| s.points.iter().any(|p| p.0.is_finite() && p.1.is_finite())).collect();
+    chart::draw(title, x, y, &panels(&drawn))
 }
 
-/// An SVG of `size` drawn by `paint`; a drawing error is a warning naming the figure `title`
-/// (the figure stays, possibly incomplete).
-fn render(size: (u32, u32), title: &str, paint: impl FnOnce(&Area<'_>) -> Result<(), String>) -> String {
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
-        if let Err(e) = paint(&root) {
-            eprintln!("warning: figure {title:?}: {e}");
+/// The panels of a chart: all series in one when there are at most
+/// [`MAX_SERIES_PER_PANEL`] model curves, no two of the same model; else one panel per model
+/// curve with the references of its group (at most [`MAX_PANELS`]); else one per group.
+fn panels<'a>(series: &[&'a Series]) -> Vec<chart::Panel<'a>> {
+    let lines: Vec<&Series> = series.iter().copied().filter(|s| !s.reference).collect();
+    let alike = lines.iter().enumerate().any(|(i, a)| lines[..i].iter().any(|b| b.name == a.name));
+    if lines.len() <= MAX_SERIES_PER_PANEL && !alike {
+        return vec![chart::Panel { title: String::new(), series: series.to_vec() }];
+    }
+    let mut groups: Vec<&str> = Vec::new();
+    for s in series {
+        if !groups.contains(&s.group.as_str()) {
+            groups.push(&s.group);
         }
-        let _ = root.present();
     }
-    svg
-}
-
-/// The drawing area of an SVG figure.
-type Area<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;
-
-fn draw(root: &Area<'_>, title: &str, xl: &str, yl: &str, series: &[Series], log_x: bool) -> Result<(), String> {
-    root.fill(&WHITE).map_err(|e| e.to_string())?;
-    let ((x0, x1), (y0, y1)) = bounds(series, log_x);
-    let mut builder = ChartBuilder::on(root);
-    builder.caption(title, ("sans-serif", 18)).margin(12).x_label_area_size(40).y_label_area_size(70);
-    macro_rules! body {
-        ($chart:expr) => {{
-            let mut chart = $chart;
-            chart
-                .configure_mesh()
-                .x_desc(xl)
-                .y_desc(yl)
-                .light_line_style(RGBColor(235, 235, 235))
-                .draw()
-                .map_err(|e| e.to_string())?;
-            for (k, s) in series.iter().enumerate() {
-                let color = COLORS[k % COLORS.len()];
-                let pts: Vec<(f64, f64)> = s.points.iter().filter_map(|&p| plottable(p, log_x)).collect();
-                if s.markers {
-                    chart
-                        .draw_series(pts.iter().map(|&p| Circle::new(p, 2, color.filled())))
-                        .map_err(|e| e.to_string())?
-                        .label(s.label.clone())
-                        .legend(move |(x, y)| Circle::new((x + 10, y), 3, color.filled()));
-                } else {
-                    chart
-                        .draw_series(LineSeries::new(pts, color.stroke_width(2)))
-                        .map_err(|e| e.to_string())?
-                        .label(s.label.clone())
-                        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2)));
-                }
+    let references =
+        |g: &str| -> Vec<&Series> { series.iter().copied().filter(|s| s.reference && s.group == g).collect() };
+    let mut out = Vec::new();
+    for g in groups {
+        let in_group: Vec<&Series> = lines.iter().copied().filter(|s| s.group == g).collect();
+        if lines.len() <= MAX_PANELS {
+            for s in in_group {
+                let title = if g.is_empty() { s.name.clone() } else { format!("{}, {g}", s.name) };
+                out.push(chart::Panel { title, series: std::iter::once(s).chain(references(g)).collect() });
             }
-            chart
-                .configure_series_labels()
-                .background_style(WHITE.mix(0.85))
-                .border_style(BLACK)
-                .draw()
-                .map_err(|e| e.to_string())?;
-        }};
-    }
-    if log_x {
-        body!(builder.build_cartesian_2d((x0..x1).log_scale(), y0..y1).map_err(|e| e.to_string())?);
-    } else {
-        body!(builder.build_cartesian_2d(x0..x1, y0..y1).map_err(|e| e.to_string())?);
-    }
-    Ok(())
-}
-
-/// One element of a patch map: centre (x, y) [mm], pressure [MPa], whether it slips.
-pub type PatchCell = (f64, f64, f64, bool);
-
-/// A contact patch as a map of elements `dx × dy` [mm]: the pressure as shade (white at zero,
-/// dark at the largest), slipping elements outlined in red, adhesion unmarked.
-pub fn patch_map(title: &str, cells: &[PatchCell], (dx, dy): (f64, f64)) -> String {
-    render((520, 440), title, |root| draw_patch(root, title, cells, (dx, dy)))
-}
-
-fn draw_patch(root: &Area<'_>, title: &str, cells: &[PatchCell], (dx, dy): (f64, f64)) -> Result<(), String> {
-    root.fill(&WHITE).map_err(|e| e.to_string())?;
-    let finite: Vec<PatchCell> =
-        cells.iter().copied().filter(|c| c.0.is_finite() && c.1.is_finite() && c.2.is_finite()).collect();
-    let span = |f: fn(&PatchCell) -> f64, h: f64| {
-        let (lo, hi) =
-            finite.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), c| (lo.min(f(c)), hi.max(f(c))));
-        if lo.is_finite() && h.is_finite() && h > 0.0 {
-            (lo - h, hi + h)
         } else {
-            (0.0, 1.0)
+            out.push(chart::Panel {
+                title: g.to_string(),
+                series: in_group.into_iter().chain(references(g)).collect(),
+            });
         }
-    };
-    let ((x0, x1), (y0, y1)) = (span(|c| c.0, dx), span(|c| c.1, dy));
-    let p_max = finite.iter().fold(0.0f64, |m, c| m.max(c.2));
-    let mut chart = ChartBuilder::on(root)
-        .caption(format!("{title} (p max {p_max:.0} MPa)"), ("sans-serif", 15))
-        .margin(10)
-        .x_label_area_size(36)
-        .y_label_area_size(46)
-        .build_cartesian_2d(x0..x1, y0..y1)
-        .map_err(|e| e.to_string())?;
-    chart
-        .configure_mesh()
-        .disable_mesh()
-        .x_desc("x [mm] (CONTACT)")
-        .y_desc("y [mm]")
-        .draw()
-        .map_err(|e| e.to_string())?;
-    let corners = |c: &PatchCell| [(c.0 - dx / 2.0, c.1 - dy / 2.0), (c.0 + dx / 2.0, c.1 + dy / 2.0)];
-    chart
-        .draw_series(finite.iter().filter(|c| c.2 > 0.0).map(|c| {
-            let t = if p_max > 0.0 { c.2 / p_max } else { 0.0 };
-            let shade = (235.0 - 200.0 * t).round().clamp(0.0, 255.0) as u8;
-            Rectangle::new(corners(c), RGBColor(shade, shade, shade.saturating_add(40)).filled())
-        }))
-        .map_err(|e| e.to_string())?;
-    chart
-        .draw_series(
-            finite.iter().filter(|c| c.3).map(|c| Rectangle::new(corners(c), RGBColor(214, 39, 40).stroke_width(1))),
-        )
-        .map_err(|e| e.to_string())?;
-    Ok(())
+    }
+    out
 }
 
 #[cfg(test)]
@@ -208,8 +109,8 @@ mod tests {
     use super::*;
     use std::time::Duration;
 
-    fn series(points: &[(f64, f64)]) -> Vec<Series> {
-        vec![Series { label: "s".into(), points: points.to_vec(), markers: false }]
+    fn one(points: &[(f64, f64)]) -> Vec<Series> {
+        vec![Series::model("uba", points.to_vec())]
     }
 
     const BIG: f64 = 1.7e308;
@@ -217,17 +118,17 @@ mod tests {
     /// Hostile histories: huge finite values, non-finite ones, all equal, empty.
     fn hostile() -> Vec<(&'static str, Vec<Series>)> {
         vec![
-            ("±1.7e308", series(&[(0.0, -BIG), (1.0, BIG), (2.0, 0.0)])),
-            ("huge x", series(&[(-BIG, 0.0), (BIG, 1.0)])),
-            ("f64::MAX", series(&[(f64::MIN, f64::MIN), (f64::MAX, f64::MAX)])),
-            ("NaN and inf", series(&[(f64::NAN, 1.0), (1.0, f64::INFINITY), (f64::NEG_INFINITY, 2.0)])),
-            ("NaN with one finite point", series(&[(f64::NAN, f64::NAN), (3.0, 4.0)])),
-            ("all equal", series(&[(1.0, 0.3), (1.0, 0.3), (1.0, 0.3)])),
-            ("all zero", series(&[(0.0, 0.0), (0.0, 0.0)])),
-            ("all 1e300", series(&[(1e300, 1e300), (1e300, 1e300)])),
-            ("subnormal", series(&[(5e-324, 5e-324), (1e-323, -5e-324)])),
-            ("huge and nearly equal", series(&[(0.0, 1e300), (1.0, 1e300 * (1.0 + 1e-15))])),
-            ("empty series", series(&[])),
+            ("±1.7e308", one(&[(0.0, -BIG), (1.0, BIG), (2.0, 0.0)])),
+            ("huge x", one(&[(-BIG, 0.0), (BIG, 1.0)])),
+            ("f64::MAX", one(&[(f64::MIN, f64::MIN), (f64::MAX, f64::MAX)])),
+            ("NaN and inf", one(&[(f64::NAN, 1.0), (1.0, f64::INFINITY), (f64::NEG_INFINITY, 2.0)])),
+            ("NaN with one finite point", one(&[(f64::NAN, f64::NAN), (3.0, 4.0)])),
+            ("all equal", one(&[(1.0, 0.3), (1.0, 0.3), (1.0, 0.3)])),
+            ("all zero", one(&[(0.0, 0.0), (0.0, 0.0)])),
+            ("all 1e300", one(&[(1e300, 1e300), (1e300, 1e300)])),
+            ("subnormal", one(&[(5e-324, 5e-324), (1e-323, -5e-324)])),
+            ("huge and nearly equal", one(&[(0.0, 1e300), (1.0, 1e300 * (1.0 + 1e-15))])),
+            ("empty series", one(&[])),
             ("no series", vec![]),
         ]
     }
@@ -235,36 +136,101 @@ mod tests {
     #[test]
     fn axis_ranges_are_finite_and_increasing_for_hostile_values() {
         for (name, s) in hostile() {
-            for log_x in [false, true] {
-                let ((x0, x1), (y0, y1)) = bounds(&s, log_x);
-                for (lo, hi) in [(x0, x1), (y0, y1)] {
-                    assert!(lo.is_finite() && hi.is_finite() && lo < hi, "{name} log_x={log_x}: {lo}..{hi}");
+            for log in [false, true] {
+                let pts = || s.iter().flat_map(|s| s.points.iter());
+                let xs = axis::Scale::over(pts().map(|p| p.0), log);
+                let ys = axis::Scale::over(pts().map(|p| p.1), log);
+                for a in [xs, ys] {
+                    let (lo, hi) = (a.lo, a.hi);
+                    assert!(lo.is_finite() && hi.is_finite() && lo < hi, "{name} log={log}: {lo}..{hi}");
                     assert!((hi - lo).is_finite(), "{name}: span of {lo}..{hi}");
                     assert!(hi - lo > 1e-9 * lo.abs().max(hi.abs()), "{name}: negligible span {lo}..{hi}");
-                }
-                if log_x {
-                    assert!(x0 > 0.0 && (x1 / x0).is_finite(), "{name}: log axis {x0}..{x1}");
+                    if log {
+                        assert!(lo > 0.0 && (hi / lo).is_finite(), "{name}: log axis {lo}..{hi}");
+                    }
                 }
             }
         }
     }
 
     #[test]
-    fn charts_of_hostile_values_finish() {
-        // Drawn on another thread with a deadline: a range that sends plotters' tick search into
-        // an endless loop fails the test instead of hanging it.
+    fn charts_of_hostile_values_finish_with_labelled_ticks() {
+        // Drawn on another thread with a deadline: a tick search that never ends fails the test
+        // instead of hanging it.
         let (tx, rx) = std::sync::mpsc::channel();
         std::thread::spawn(move || {
             for (name, s) in hostile() {
-                for log_x in [false, true] {
-                    let svg = line_chart(name, "x", "y", &s, log_x);
-                    tx.send((name, log_x, svg.len())).unwrap();
+                for log in [false, true] {
+                    let svg = line_chart(name, &Axis::linear("x [–]"), &Axis { title: "y [–]".into(), log }, &s);
+                    tx.send((name, log, svg)).unwrap();
                 }
             }
         });
         for _ in 0..2 * hostile().len() {
-            let (name, log_x, len) = rx.recv_timeout(Duration::from_secs(30)).expect("a chart never finished");
-            assert!(len > 100, "{name} log_x={log_x}: empty svg");
+            let (name, log, svg) = rx.recv_timeout(Duration::from_secs(30)).expect("a chart never finished");
+            assert!(svg.matches(r#"class="tick x""#).count() >= 2, "{name} log={log}: {svg}");
+            assert!(svg.matches(r#"class="tick y""#).count() >= 2, "{name} log={log}: {svg}");
+            let drawn: String = svg.lines().filter(|l| !l.contains(r#"class="title""#)).collect();
+            assert!(!drawn.contains("NaN") && !drawn.contains("inf"), "{name} log={log}: {svg}");
         }
+    }
+
+    fn names(panels: &[chart::Panel<'_>]) -> Vec<Vec<String>> {
+        panels.iter().map(|p| p.series.iter().map(|s| format!("{}{}", s.name, s.group)).collect()).collect()
+    }
+
+    #[test]
+    fn many_series_become_one_panel_per_model_with_the_references_of_its_group() {
+        let models = ["contact", "uba", "fastsim", "linear", "she", "polach", "fastrip", "relaxation"];
+        let few: Vec<Series> = models[..3].iter().map(|m| Series::model(*m, vec![])).collect();
+        assert_eq!(panels(&few.iter().collect::<Vec<_>>()).len(), 1);
+        let mut all: Vec<Series> = models.iter().map(|m| Series::model(*m, vec![])).collect();
+        all.push(Series::reference("CONTACT", vec![]));
+        let p = panels(&all.iter().collect::<Vec<_>>());
+        assert_eq!(p.len(), 8);
+        assert_eq!(names(&p)[1], ["uba", "CONTACT"]);
+        assert_eq!(p[1].title, "uba");
+        // Two groups of two models: the same model twice is never in one panel.
+        let grouped: Vec<Series> = ["a", "b"]
+            .iter()
+            .flat_map(|g| {
+                [Series::model("uba", vec![]).in_group(*g), Series::reference("CONTACT", vec![]).in_group(*g)]
+            })
+            .collect();
+        assert_eq!(
+            names(&panels(&grouped.iter().collect::<Vec<_>>())),
+            [vec!["ubaa", "CONTACTa"], vec!["ubab", "CONTACTb"]]
+        );
+        // 20 groups of 8 models: one panel per group.
+        let huge: Vec<Series> = (0..20)
+            .flat_map(|g| models.iter().map(move |m| Series::model(*m, vec![]).in_group(g.to_string())))
+            .collect();
+        assert_eq!(panels(&huge.iter().collect::<Vec<_>>()).len(), 20);
+    }
+
+    #[test]
+    fn the_legend_stands_right_of_the_plot_areas() {
+        let mut s: Vec<Series> =
+            ["uba", "fastsim"].iter().map(|m| Series::model(*m, vec![(1.0, 0.1), (2.0, 0.2)])).collect();
+        s.push(Series::reference("CONTACT", vec![(1.5, 0.15)]));
+        s.push(Series::reference("thesis", vec![(f64::NAN, 0.1)]));
+        let svg = line_chart("t", &Axis::linear("t [s]"), &Axis::linear("f_x / F_N [–]"), &s);
+        let legend_x: f64 = svg
+            .split(r#"<g class="legend" transform="translate("#)
+            .nth(1)
+            .unwrap()
+            .split(',')
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap();
+        let panel = svg
+            .split(r#"<g class="panel" data-width="560.0" data-height="320.0" transform="translate("#)
+            .nth(1)
+            .unwrap();
+        let panel_x: f64 = panel.split(',').next().unwrap().parse().unwrap();
+        assert!(legend_x >= panel_x + 560.0, "legend at {legend_x}, plot area from {panel_x}");
+        assert!(svg.contains(r##"data-model="CONTACT" data-reference="true" data-color="#000000""##), "{svg}");
+        assert!(!svg.contains("thesis"), "a series with nothing to draw is left out, legend too: {svg}");
     }
 }

@@ -9,7 +9,7 @@ use crate::comparison::references::References;
 use crate::comparison::tolerance_file::Loosening;
 use crate::history::History;
 use crate::report::linked_table::{largest, place, Table};
-use crate::report::plot::{line_chart, Series};
+use crate::report::plot::{line_chart, Axis, Series};
 pub use crate::report::section::Section;
 use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
@@ -211,13 +211,14 @@ pub fn scaling(scenes: &[StoredScene]) -> Option<Section> {
             })
             .collect();
         let _ = writeln!(s, "| {solver} | {} | {slope:.2} |", cells.join(", "));
-        series.push(Series {
-            label: solver,
-            points: pts.iter().map(|(n, t)| (*n, t.log10())).collect(),
-            markers: false,
-        });
+        series.push(Series::model(solver, pts));
     }
-    let svg = line_chart("Cost per step against elements", "elements (log)", "log10(seconds per step)", &series, true);
+    let svg = line_chart(
+        "Cost per step against elements",
+        &Axis::log("grid elements [–]"),
+        &Axis::log("time per step [s]"),
+        &series,
+    );
     s.push_str("\n![cost per step](figures/cost_per_step.svg)\n");
     Some(Section {
         figures: vec![("cost_per_step.svg".into(), svg)],

@@ -4,7 +4,7 @@
 //! Reads stored results (scene.json `studies`, metrics.csv) and reference data only.
 
 use crate::comparison::references::References;
-use crate::report::plot::{line_chart, Series};
+use crate::report::plot::{line_chart, titles, Axis, Series};
 use crate::report::section::Section;
 use crate::scene::study::StudyPoint;
 use crate::suite::results::StoredScene;
@@ -73,8 +73,9 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
         solvers.dedup();
         let references: Vec<_> = points.iter().map(|(s, _)| reference_values(refs, s)).collect();
         for metric in metrics_of(&points) {
-            let mut series: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
-            let mut marks: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
+            // Curves keyed by (series label, model or reference set).
+            let mut series: BTreeMap<(String, String), Vec<(f64, f64)>> = BTreeMap::new();
+            let mut marks: BTreeMap<(String, String), Vec<(f64, f64)>> = BTreeMap::new();
             // A metric no point has as one number (a sweep's per-point values) gets no table.
             if !points.iter().any(|(s, _)| solvers.iter().any(|m| s.metric(m, &metric).is_some_and(f64::is_finite))) {
                 continue;
@@ -85,8 +86,7 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
                 "---|".repeat(solvers.len() + 3)
             );
             for ((s, p), references) in points.iter().zip(&references) {
-                let tag =
-                    |name: &str| if p.series.is_empty() { name.to_string() } else { format!("{name} ({})", p.series) };
+                let tag = |name: &str| (p.series.clone(), name.to_string());
                 let mut cells = Vec::new();
                 for solver in &solvers {
                     let v = s.metric(solver, &metric);
@@ -116,15 +116,20 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
             }
             let plotted: Vec<Series> = series
                 .into_iter()
-                .map(|(label, points)| Series { label, points, markers: false })
-                .chain(marks.into_iter().map(|(label, points)| Series { label, points, markers: true }))
+                .map(|((group, name), points)| Series::model(name, points).in_group(group))
+                .chain(marks.into_iter().map(|((group, name), points)| Series::reference(name, points).in_group(group)))
                 .collect();
             let positive = points.iter().all(|(_, p)| p.x > 0.0);
             let ratio = points.iter().map(|(_, p)| p.x).fold(0.0, f64::max)
                 / points.iter().map(|(_, p)| p.x).fold(f64::INFINITY, f64::min);
             let log_x = positive && ratio > 20.0;
             let file = format!("study_{id}_{metric}.svg");
-            let svg = line_chart(&format!("{title}: {metric}"), x_key, &metric, &plotted, log_x);
+            let svg = line_chart(
+                &format!("{title} — {}", titles::of(&metric)),
+                &Axis { title: titles::of(x_key), log: log_x },
+                &Axis::linear(titles::of(&metric)),
+                &plotted,
+            );
             let _ = writeln!(body, "\n![{id} {metric}](figures/{file})\n");
             figures.push((file, svg));
         }

@@ -6,7 +6,7 @@
 use crate::comparison::references::contact::{self, ContactCases};
 use crate::comparison::references::References;
 use crate::history::History;
-use crate::report::plot::{line_chart, Series};
+use crate::report::plot::{line_chart, Axis, Series};
 use crate::report::section::Section;
 use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
@@ -112,7 +112,7 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
                 wall / sim_s,
                 1e3 * wall / h.rows.len() as f64
             );
-            curves.entry(solver.clone()).or_default().push((wall / sim_s, err.max(1e-12).log10()));
+            curves.entry(solver.clone()).or_default().push((wall / sim_s, err.max(1e-12)));
         }
         if let (Some(c), Some(ch)) = (contact.and_then(|c| c.cases.get(name)), contact.and_then(|c| c.history(name))) {
             let err = x.error(ch);
@@ -122,17 +122,26 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
                 c.contact_wall_s / sim_s,
                 1e3 * c.contact_wall_s / (c.n_steps as f64 + 1.0)
             );
-            curves.entry("CONTACT".into()).or_default().push((c.contact_wall_s / sim_s, err.max(1e-12).log10()));
+            curves.entry("CONTACT".into()).or_default().push((c.contact_wall_s / sim_s, err.max(1e-12)));
         }
     }
-    let series: Vec<Series> =
-        curves.into_iter().map(|(label, points)| Series { markers: label == "CONTACT", label, points }).collect();
+    let series: Vec<Series> = curves
+        .into_iter()
+        .map(
+            |(label, points)| {
+                if label == "CONTACT" {
+                    Series::reference(label, points)
+                } else {
+                    Series::model(label, points)
+                }
+            },
+        )
+        .collect();
     let svg = line_chart(
         "Work-precision (sine_f30_mu10, grids 22, 44, 88)",
-        "wall s per simulated s (log)",
-        "log10 max |f - f_inf|",
+        &Axis::log("wall time per simulated time [s/s]"),
+        &Axis::log("max |f − f_∞| [–]"),
         &series,
-        true,
     );
     s.push_str("\n![work-precision](figures/error_vs_time.svg)\n");
     Some(Section {
