@@ -1,7 +1,7 @@
 //! Step 3 of the pipeline: the models, registered in one place. A built-in model is a
-//! [`Stepper`] plus a [`ModelDef`] (name, source, extra columns, applicability, cost, builder);
-//! [`sample_loop`] runs every one of them the same way. External models (`[external.NAME]`) run
-//! as a process over the whole scene ([`external`]).
+//! [`Stepper`] plus a [`ModelDef`] (name, source, extra columns, applicability, cost, its own
+//! parameters, builder); [`sample_loop`] runs every one of them the same way. External models
+//! (`[external.NAME]`) run as a process over the whole scene ([`external`]).
 
 pub mod brush;
 pub mod contact;
