@@ -1,7 +1,7 @@
 //! The straight path scene → resolved problem → models → histories → metrics, for one scene.
 //! The one place that wires the stages: the scene's names are checked against the model and
-//! metric registries here, the metrics chosen and each model's applicability checked, before
-//! anything is computed.
+//! metric registries here, each model reads its own parameters, the metrics are chosen and each
+//! model's applicability checked, before anything is computed.
 
 use crate::error::{Error, InputError};
 use crate::history::external::External;

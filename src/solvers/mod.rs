@@ -1,5 +1,6 @@
 //! Step 3 of the pipeline: the models, registered in one place. A built-in model is a
-//! [`Stepper`] plus a [`ModelDef`] (name, source, extra columns, applicability, cost, builder);
+//! [`Stepper`] plus a [`ModelDef`] (name, source, extra columns, applicability, cost, its own
+//! parameters, builder);
 //! the history stage's `sample_loop` runs every one of them the same way. External models
 //! (`[external.NAME]`) run as a process over the whole scene and give a history directly
 //! (`history::external`).
