@@ -10,7 +10,7 @@ use std::collections::BTreeMap;
 use std::fmt::Write;
 
 /// The model every other is measured against.
-pub const EXACT: &str = "contact";
+pub const EXACT: &str = crate::solvers::contact::NAME;
 
 /// What one model gathered over one suite.
 #[derive(Default)]
@@ -40,10 +40,14 @@ pub fn section(scenes: &[StoredScene]) -> Option<Section> {
             let t = tallies.entry((model.clone(), s.scene.suite.clone())).or_default();
             t.scenes += 1;
             t.diffs.extend(row_diffs(h, exact));
-            if let (Some(a), Some(b)) = (s.metric(model, "delay_ratio"), s.metric(EXACT, "delay_ratio")) {
+            if let (Some(a), Some(b)) =
+                (s.metric(model, crate::metrics::delay_ratio::NAME), s.metric(EXACT, crate::metrics::delay_ratio::NAME))
+            {
                 t.delay = t.delay.max((a - b).abs());
             }
-            if let (Some(a), Some(b)) = (s.metric(model, "loop_area"), s.metric(EXACT, "loop_area")) {
+            if let (Some(a), Some(b)) =
+                (s.metric(model, crate::metrics::loop_area::NAME), s.metric(EXACT, crate::metrics::loop_area::NAME))
+            {
                 if b != 0.0 {
                     t.loop_rel = t.loop_rel.max(((a - b) / b).abs());
                 }

@@ -325,7 +325,7 @@ pub fn build(input: &ReportInput) -> Report {
             for s in &solvers {
                 let flat =
                     sc.histories.get(s).is_some_and(|h| h.rows.iter().any(|r| r.fx_over_fn.abs() >= 0.97 * r.mu));
-                let d = fmt(sc.metrics.get(&(s.clone(), "delay_ratio".into(), None)).copied(), 4);
+                let d = fmt(sc.metrics.get(&(s.clone(), crate::metrics::delay_ratio::NAME.into(), None)).copied(), 4);
                 let _ = write!(md, " {d}{} |", if flat { " †" } else { "" });
             }
             md.push('\n');
@@ -336,7 +336,7 @@ pub fn build(input: &ReportInput) -> Report {
             let c = contact.and_then(|c| c.cases.get(&sc.name)).and_then(|c| c.loop_area).map(f64::abs);
             let _ = write!(md, "| {} | {} |", sc.name, fmt(c, 6));
             for s in &solvers {
-                let v = sc.metrics.get(&(s.clone(), "loop_area".into(), None)).copied();
+                let v = sc.metrics.get(&(s.clone(), crate::metrics::loop_area::NAME.into(), None)).copied();
                 let rel = match (v, c) {
                     (Some(v), Some(c)) if c > 0.0 => format!(" ({:+.1} %)", 100.0 * (v / c - 1.0)),
                     _ => String::new(),

@@ -148,8 +148,8 @@ pub fn stability(scenes: &[StoredScene]) -> Section {
                 if finite { "yes" } else { "**no**" },
                 max_f,
                 h.rows.last().map(|r| r.fx_over_fn).unwrap_or(f64::NAN),
-                metric("oscillation_index"),
-                metric("sawtooth_index"),
+                metric(crate::metrics::oscillation_index::NAME),
+                metric(crate::metrics::sawtooth_index::NAME),
                 col_max("iterations").map(|v| format!("{v:.0}")).unwrap_or("—".into()),
                 limit.map(|v| v.to_string()).unwrap_or("—".into()),
                 sc.scene.warnings.join("; ").replace('|', "/")

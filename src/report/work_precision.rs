@@ -16,7 +16,7 @@ use std::fmt::Write;
 /// number: time steps halve with it, so each coarse time is a sample of the finer runs).
 const GRIDS: [(&str, usize); 3] = [("sine_f30_mu10", 22), ("sine_f30_mu10_g44", 44), ("sine_f30_mu10_g88", 88)];
 /// The model extrapolated.
-const EXACT: &str = "contact";
+const EXACT: &str = crate::solvers::contact::NAME;
 
 /// fx/FN of `h` at time `t`, linearly interpolated (None outside its times).
 fn at(t_h: &[f64], f_h: &[f64], t: f64) -> Option<f64> {

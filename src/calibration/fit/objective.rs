@@ -121,8 +121,8 @@ impl Case {
         Ok(Case {
             name: source.name.clone(),
             source: source.clone(),
-            target_delay: metric(&problem, &target, "delay_ratio"),
-            target_loop: metric(&problem, &target, "loop_area"),
+            target_delay: metric(&problem, &target, crate::metrics::delay_ratio::NAME),
+            target_loop: metric(&problem, &target, crate::metrics::loop_area::NAME),
             doc,
             target,
         })
@@ -141,8 +141,9 @@ pub fn errors(model: &str, cases: &[Case], set: &[(String, Value)]) -> Result<Se
         .par_iter()
         .map(|c| {
             let (problem, h) = run_one(&c.source, with(&c.doc, model, set, "set")?)?;
-            let delay = c.target_delay.zip(metric(&problem, &h, "delay_ratio")).map(|(t, o)| o - t);
-            let loop_rel = c.target_loop.zip(metric(&problem, &h, "loop_area")).map(|(t, o)| (o - t) / t);
+            let delay = c.target_delay.zip(metric(&problem, &h, crate::metrics::delay_ratio::NAME)).map(|(t, o)| o - t);
+            let loop_rel =
+                c.target_loop.zip(metric(&problem, &h, crate::metrics::loop_area::NAME)).map(|(t, o)| (o - t) / t);
             Ok(One { diffs: row_diffs(&h, &c.target), delay, loop_rel })
         })
         .collect::<Result<Vec<One>, Error>>()?;

@@ -47,8 +47,8 @@ impl Norm {
         match self {
             Norm::RmsDf => "rms_df",
             Norm::MaxDf => "max_df",
-            Norm::DelayRatio => "delay_ratio",
-            Norm::LoopArea => "loop_area",
+            Norm::DelayRatio => crate::metrics::delay_ratio::NAME,
+            Norm::LoopArea => crate::metrics::loop_area::NAME,
         }
     }
 

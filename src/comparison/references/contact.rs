@@ -183,9 +183,9 @@ impl ReferenceSet for ContactCases {
             let ctx = Ctx { scene: &ours.name, solver, against, rules };
             out.extend(ctx.column(h, contact, "fx_over_fn", false));
             let metric = |name: &str| ours.metric(solver, name);
-            if let (Some(ours_d), Some(ref_d)) = (metric("delay_ratio"), contact_delay) {
+            if let (Some(ours_d), Some(ref_d)) = (metric(crate::metrics::delay_ratio::NAME), contact_delay) {
                 let mut fd = ctx.finding(
-                    "delay_ratio",
+                    crate::metrics::delay_ratio::NAME,
                     None,
                     ours_d,
                     ref_d,
@@ -197,16 +197,22 @@ impl ReferenceSet for ContactCases {
                 }
                 out.push(fd);
             }
-            if let (Some(ours_a), Some(ref_a)) = (metric("loop_area"), case.loop_area) {
-                out.push(ctx.finding("loop_area", None, ours_a, ref_a.abs(), "cases.csv loop_area (absolute value)"));
+            if let (Some(ours_a), Some(ref_a)) = (metric(crate::metrics::loop_area::NAME), case.loop_area) {
+                out.push(ctx.finding(
+                    crate::metrics::loop_area::NAME,
+                    None,
+                    ours_a,
+                    ref_a.abs(),
+                    "cases.csv loop_area (absolute value)",
+                ));
             }
-            if let (Some(v), Some(rv)) = (metric("steady_value"), f.last()) {
+            if let (Some(v), Some(rv)) = (metric(crate::metrics::steady_value::NAME), f.last()) {
                 if case.kind != "steady" {
-                    out.push(ctx.finding("steady_value", None, v, *rv, ""));
+                    out.push(ctx.finding(crate::metrics::steady_value::NAME, None, v, *rv, ""));
                 }
             }
-            if let (Some(v), Some(rv)) = (metric("settling_time_s"), metrics::settling_time(&t, &f)) {
-                out.push(ctx.finding("settling_time_s", None, v, rv, ""));
+            if let (Some(v), Some(rv)) = (metric(crate::metrics::settling_time::NAME), metrics::settling_time(&t, &f)) {
+                out.push(ctx.finding(crate::metrics::settling_time::NAME, None, v, rv, ""));
             }
         }
         out

@@ -73,9 +73,15 @@ impl ReferenceSet for ThesisTables {
         let Some(td) = self.delay_for(ours) else { return Vec::new() };
         let mut out = Vec::new();
         for solver in ours.histories.keys() {
-            if let Some(d) = ours.metric(solver, "delay_ratio") {
+            if let Some(d) = ours.metric(solver, crate::metrics::delay_ratio::NAME) {
                 let ctx = Ctx { scene: &ours.name, solver, against: AGAINST, rules };
-                out.push(ctx.finding("delay_ratio", None, d, td, "thesis Table 4.2 (CONTACT, mu = 1)"));
+                out.push(ctx.finding(
+                    crate::metrics::delay_ratio::NAME,
+                    None,
+                    d,
+                    td,
+                    "thesis Table 4.2 (CONTACT, mu = 1)",
+                ));
             }
         }
         out
