@@ -86,7 +86,7 @@ pub fn line_chart(title: &str, x_label: &str, y_label: &str, series: &[Series], 
 
 /// An SVG of `size` drawn by `paint`; a drawing error is a warning naming the figure `title`
 /// (the figure stays, possibly incomplete).
-fn render(size: (u32, u32), title: &str, paint: impl FnOnce(&Area<'_>) -> Result<(), String>) -> String {
+fn render(size: (u32, u32), title: &str, paint: impl FnOnce(&Area<'_>) -> Result<(), DrawError>) -> String {
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
@@ -101,50 +101,40 @@ fn render(size: (u32, u32), title: &str, paint: impl FnOnce(&Area<'_>) -> Result
 /// The drawing area of an SVG figure.
 type Area<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;
 
-fn draw(root: &Area<'_>, title: &str, xl: &str, yl: &str, series: &[Series], log_x: bool) -> Result<(), String> {
-    root.fill(&WHITE).map_err(|e| e.to_string())?;
+/// Why plotters could not draw (part of) a figure: its own error type over the SVG backend's.
+type DrawError = DrawingAreaErrorKind<<SVGBackend<'static> as DrawingBackend>::ErrorType>;
+
+fn draw(root: &Area<'_>, title: &str, xl: &str, yl: &str, series: &[Series], log_x: bool) -> Result<(), DrawError> {
+    root.fill(&WHITE)?;
     let ((x0, x1), (y0, y1)) = bounds(series, log_x);
     let mut builder = ChartBuilder::on(root);
     builder.caption(title, ("sans-serif", 18)).margin(12).x_label_area_size(40).y_label_area_size(70);
     macro_rules! body {
         ($chart:expr) => {{
             let mut chart = $chart;
-            chart
-                .configure_mesh()
-                .x_desc(xl)
-                .y_desc(yl)
-                .light_line_style(RGBColor(235, 235, 235))
-                .draw()
-                .map_err(|e| e.to_string())?;
+            chart.configure_mesh().x_desc(xl).y_desc(yl).light_line_style(RGBColor(235, 235, 235)).draw()?;
             for (k, s) in series.iter().enumerate() {
                 let color = COLORS[k % COLORS.len()];
                 let pts: Vec<(f64, f64)> = s.points.iter().filter_map(|&p| plottable(p, log_x)).collect();
                 if s.markers {
                     chart
-                        .draw_series(pts.iter().map(|&p| Circle::new(p, 2, color.filled())))
-                        .map_err(|e| e.to_string())?
+                        .draw_series(pts.iter().map(|&p| Circle::new(p, 2, color.filled())))?
                         .label(s.label.clone())
                         .legend(move |(x, y)| Circle::new((x + 10, y), 3, color.filled()));
                 } else {
                     chart
-                        .draw_series(LineSeries::new(pts, color.stroke_width(2)))
-                        .map_err(|e| e.to_string())?
+                        .draw_series(LineSeries::new(pts, color.stroke_width(2)))?
                         .label(s.label.clone())
                         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2)));
                 }
             }
-            chart
-                .configure_series_labels()
-                .background_style(WHITE.mix(0.85))
-                .border_style(BLACK)
-                .draw()
-                .map_err(|e| e.to_string())?;
+            chart.configure_series_labels().background_style(WHITE.mix(0.85)).border_style(BLACK).draw()?;
         }};
     }
     if log_x {
-        body!(builder.build_cartesian_2d((x0..x1).log_scale(), y0..y1).map_err(|e| e.to_string())?);
+        body!(builder.build_cartesian_2d((x0..x1).log_scale(), y0..y1)?);
     } else {
-        body!(builder.build_cartesian_2d(x0..x1, y0..y1).map_err(|e| e.to_string())?);
+        body!(builder.build_cartesian_2d(x0..x1, y0..y1)?);
     }
     Ok(())
 }
@@ -158,8 +148,8 @@ pub fn patch_map(title: &str, cells: &[PatchCell], (dx, dy): (f64, f64)) -> Stri
     render((520, 440), title, |root| draw_patch(root, title, cells, (dx, dy)))
 }
 
-fn draw_patch(root: &Area<'_>, title: &str, cells: &[PatchCell], (dx, dy): (f64, f64)) -> Result<(), String> {
-    root.fill(&WHITE).map_err(|e| e.to_string())?;
+fn draw_patch(root: &Area<'_>, title: &str, cells: &[PatchCell], (dx, dy): (f64, f64)) -> Result<(), DrawError> {
+    root.fill(&WHITE)?;
     let finite: Vec<PatchCell> =
         cells.iter().copied().filter(|c| c.0.is_finite() && c.1.is_finite() && c.2.is_finite()).collect();
     let span = |f: fn(&PatchCell) -> f64, h: f64| {
@@ -178,28 +168,17 @@ fn draw_patch(root: &Area<'_>, title: &str, cells: &[PatchCell], (dx, dy): (f64,
         .margin(10)
         .x_label_area_size(36)
         .y_label_area_size(46)
-        .build_cartesian_2d(x0..x1, y0..y1)
-        .map_err(|e| e.to_string())?;
-    chart
-        .configure_mesh()
-        .disable_mesh()
-        .x_desc("x [mm] (CONTACT)")
-        .y_desc("y [mm]")
-        .draw()
-        .map_err(|e| e.to_string())?;
+        .build_cartesian_2d(x0..x1, y0..y1)?;
+    chart.configure_mesh().disable_mesh().x_desc("x [mm] (CONTACT)").y_desc("y [mm]").draw()?;
     let corners = |c: &PatchCell| [(c.0 - dx / 2.0, c.1 - dy / 2.0), (c.0 + dx / 2.0, c.1 + dy / 2.0)];
-    chart
-        .draw_series(finite.iter().filter(|c| c.2 > 0.0).map(|c| {
-            let t = if p_max > 0.0 { c.2 / p_max } else { 0.0 };
-            let shade = (235.0 - 200.0 * t).round().clamp(0.0, 255.0) as u8;
-            Rectangle::new(corners(c), RGBColor(shade, shade, shade.saturating_add(40)).filled())
-        }))
-        .map_err(|e| e.to_string())?;
-    chart
-        .draw_series(
-            finite.iter().filter(|c| c.3).map(|c| Rectangle::new(corners(c), RGBColor(214, 39, 40).stroke_width(1))),
-        )
-        .map_err(|e| e.to_string())?;
+    chart.draw_series(finite.iter().filter(|c| c.2 > 0.0).map(|c| {
+        let t = if p_max > 0.0 { c.2 / p_max } else { 0.0 };
+        let shade = (235.0 - 200.0 * t).round().clamp(0.0, 255.0) as u8;
+        Rectangle::new(corners(c), RGBColor(shade, shade, shade.saturating_add(40)).filled())
+    }))?;
+    chart.draw_series(
+        finite.iter().filter(|c| c.3).map(|c| Rectangle::new(corners(c), RGBColor(214, 39, 40).stroke_width(1))),
+    )?;
     Ok(())
 }
 
