@@ -77,7 +77,7 @@ pub fn expand(study_file: &Path, out: &Path, golden: &Path) -> Result<Vec<PathBu
     Ok(files.into_iter().map(|(p, _)| p).collect())
 }
 
-/// `creepbench fit`: fit a model's parameters (harness::fit), print the before/after table and
+/// `creepbench fit`: fit a model's parameters (calibration::fit), print the before/after table and
 /// write the fitted block to `out` (default `out/fits/<name>.toml`), which must not exist yet.
 pub fn fit(file: &Path, out: Option<&Path>, reference: &Path, golden: &Path) -> Result<PathBuf, Error> {
     use crate::calibration::fit;

@@ -14,12 +14,12 @@ pub mod table;
 pub mod work_precision;
 
 use crate::comparison::compare::Finding;
+use crate::comparison::delay;
 use crate::comparison::references::contact::{self, ContactCases};
 use crate::comparison::references::thesis::{self, ThesisTables};
 use crate::comparison::references::References;
 use crate::error::Error;
 use crate::history::History;
-use crate::metrics;
 use crate::problem::LoadingKind;
 use crate::report::plot::{line_chart, titles::of as title_of, Axis, Series};
 use crate::report::section::Section;
@@ -318,13 +318,13 @@ pub fn build(input: &ReportInput) -> Report {
         for sc in &sines {
             let p = sc.scene.period_s().unwrap_or(1.0);
             let thesis = thesis.and_then(|t| t.delay_for(sc));
-            let contact = contact
-                .and_then(|c| c.history(&sc.name))
-                .and_then(|h| metrics::delay_ratio(&h.column("t_s")?, &h.column("cx")?, &h.column("fx_over_fn")?, p));
+            let contact = contact.and_then(|c| c.history(&sc.name)).and_then(|h| delay::of_history(h, p));
             let _ = write!(md, "| {} | {} | {} |", sc.name, fmt(thesis, 3), fmt(contact, 4));
             for s in &solvers {
-                let flat =
-                    sc.histories.get(s).is_some_and(|h| h.rows.iter().any(|r| r.fx_over_fn.abs() >= 0.97 * r.mu));
+                let flat = sc
+                    .histories
+                    .get(s)
+                    .is_some_and(|h| h.rows.iter().any(|r| delay::saturates(r.fx_over_fn.abs(), r.mu)));
                 let d = fmt(sc.metrics.get(&(s.clone(), crate::metrics::delay_ratio::NAME.into(), None)).copied(), 4);
                 let _ = write!(md, " {d}{} |", if flat { " †" } else { "" });
             }

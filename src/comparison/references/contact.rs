@@ -3,6 +3,7 @@
 //! FASTSIM with the parabolic bound for `steady_fastsim_g22`.
 
 use super::{read, ReferenceSet};
+use crate::comparison::delay;
 use crate::comparison::finding::{Against, Ctx, Finding};
 use crate::comparison::rule::Rule;
 use crate::error::{Error, FormatError};
@@ -16,6 +17,10 @@ use std::path::Path;
 pub const EXACT: Against = Against::Reference("CONTACT");
 /// CONTACT's FASTSIM with the parabolic bound.
 pub const FASTSIM: Against = Against::Reference("CONTACT FASTSIM");
+
+/// The columns of cases.csv this reader uses (every one required).
+const CASE_COLUMNS: [&str; 9] =
+    ["name", "kind", "method", "mx", "n_steps", "contact_wall_s", "loop_area", "pn_max_mpa", "freq_hz"];
 
 /// One row of reference/contact/cases.csv.
 #[derive(Debug, Clone, Default)]
@@ -49,22 +54,44 @@ impl ContactCases {
         let mut rdr = csv::Reader::from_reader(text.as_bytes());
         let bad = |e: csv::Error| Error::Format { path: path.clone(), source: FormatError::Csv { line: 0, source: e } };
         let head: Vec<String> = rdr.headers().map_err(bad)?.iter().map(String::from).collect();
-        let col = |n: &str| head.iter().position(|h| h == n);
+        // Every column read is required (a missing one is an error naming the file and it); a
+        // value may be empty only where the case has none (loop area, frequency: not a sine).
+        let col = |n: &str| {
+            let missing =
+                || Error::Format { path: path.clone(), source: FormatError::MissingColumn { column: n.into() } };
+            head.iter().position(|h| h == n).ok_or_else(missing)
+        };
+        let [name, kind, method, mx, n_steps, wall, loop_area, pn_max, freq] = CASE_COLUMNS.map(col);
+        let [name, kind, method, mx, n_steps, wall, loop_area, pn_max, freq] =
+            [name?, kind?, method?, mx?, n_steps?, wall?, loop_area?, pn_max?, freq?];
         let mut out = ContactCases::default();
-        for rec in rdr.records() {
-            let rec = rec.map_err(bad)?;
-            let get = |n: &str| col(n).and_then(|i| rec.get(i)).unwrap_or("");
-            let num = |n: &str| get(n).parse::<f64>().ok();
+        for (line, rec) in rdr.records().enumerate() {
+            let line = line + 2;
+            let rec =
+                rec.map_err(|e| Error::Format { path: path.clone(), source: FormatError::Csv { line, source: e } })?;
+            let get = |i: usize| rec.get(i).unwrap_or("");
+            let not_a_number = |i: usize| {
+                let (column, value) = (head[i].clone(), crate::error::excerpt(get(i)));
+                Error::Format {
+                    path: path.clone(),
+                    source: FormatError::Value { line, column, value, what: "a number" },
+                }
+            };
+            let opt = |i: usize| match get(i).trim() {
+                "" => Ok(None),
+                v => v.parse::<f64>().map(Some).map_err(|_| not_a_number(i)),
+            };
+            let num = |i: usize| opt(i)?.ok_or_else(|| not_a_number(i));
             let c = ContactCase {
-                name: get("name").into(),
-                kind: get("kind").into(),
-                method: get("method").into(),
-                mx: num("mx").unwrap_or(0.0) as usize,
-                n_steps: num("n_steps").unwrap_or(0.0) as usize,
-                contact_wall_s: num("contact_wall_s").unwrap_or(f64::NAN),
-                loop_area: num("loop_area"),
-                pn_max_mpa: num("pn_max_mpa").unwrap_or(f64::NAN),
-                freq_hz: num("freq_hz"),
+                name: get(name).into(),
+                kind: get(kind).into(),
+                method: get(method).into(),
+                mx: num(mx)? as usize,
+                n_steps: num(n_steps)? as usize,
+                contact_wall_s: num(wall)?,
+                loop_area: opt(loop_area)?,
+                pn_max_mpa: num(pn_max)?,
+                freq_hz: opt(freq)?,
             };
             let h = read_history(&dir.join(format!("contact/{}.csv", c.name)), usize::from(c.kind == "steady"), &[])?;
             out.histories.insert(c.name.clone(), h);
@@ -171,14 +198,14 @@ impl ReferenceSet for ContactCases {
         let against = if case.method == "fastsim_parabolic" { FASTSIM } else { EXACT };
         let period = ours.scene.period_s();
         let t = contact.column("t_s").unwrap_or_default();
-        let (cx, f) = (contact.column("cx").unwrap_or_default(), contact.column("fx_over_fn").unwrap_or_default());
-        let contact_delay = period.and_then(|p| metrics::delay_ratio(&t, &cx, &f, p));
+        let f = contact.column("fx_over_fn").unwrap_or_default();
+        let contact_delay = period.and_then(|p| delay::of_history(contact, p));
         // Where f reaches μ near the creepage peak the delay is ill-defined (flat top); μ per
         // step from the scene's own loading (a table may vary it).
         let mu_at: BTreeMap<usize, f64> = ours.scene.history.iter().map(|s| (s.step, s.mu)).collect();
         let flat =
             contact.rows.iter().filter_map(|r| Some(r.fx_over_fn.abs() / mu_at.get(&r.step)?)).fold(0.0, f64::max);
-        let saturated = flat >= 0.97;
+        let saturated = flat >= delay::SATURATION;
         for (solver, h) in &ours.histories {
             let ctx = Ctx { scene: &ours.name, solver, against, rules };
             out.extend(ctx.column(h, contact, "fx_over_fn", false));
