@@ -138,7 +138,7 @@ fn read_axis(n: usize, t: &Value) -> Result<Axis, InputError> {
         Some(Value::Array(a)) if a.len() == len && a.iter().all(|v| as_f64(v).is_some_and(f64::is_finite)) => {
             Some(a.iter().filter_map(as_f64).collect())
         }
-        Some(v) => return Err(err(format!("{field}.x_values"), v, format!("{len} finite numbers, one per value"))),
+        Some(v) => return Err(err(format!("{field}.x_values"), v, format!("{len} numbers, one per value (finite)"))),
     };
     Ok(Axis { name, keys, labels, x_values })
 }
