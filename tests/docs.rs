@@ -233,7 +233,7 @@ fn nothing_points_outside_the_repository() {
             files_under(&root.join(dir), ext, &mut files);
         }
     }
-    let outside = ["../", "shared/"].concat();
+    let outside = ["../", "shared", "/"].concat();
     let old_contract = ["interface", ".md"].concat();
     for f in &files {
         let text = read(f);

@@ -1,4 +1,4 @@
-//! External models end to end (README "Bring your own model"), and `check` / `bless` / `run` /
+//! External models end to end (docs/models.md, "Bring your own model"), and `check` / `bless` / `run` /
 //! `merge` on a small suite: gating, drift between two result sets, shards.
 
 mod common;
