@@ -1,7 +1,7 @@
 //! creepbench: a harness that validates and benchmarks wheel–rail rolling-contact models.
 //!
 //! The data flow is one straight path, one module per stage, each importing only from the stages
-//! below it (the order: README, "The code"; checked by tests/layering.rs):
+//! below it (the order: README, "The code"; checked by tests/all/layering.rs):
 //! [`scene`] (file, validated) → [`problem`] (resolved: Hertz, Kalker, grid, samples) →
 //! [`solvers`] (UBA, FASTSIM, CONTACT-style, external) → [`history`] (the sample loop, external models) → [`metrics`] →
 //! [`pipeline`] (wires one scene through them) → [`suite`] (many scenes, result folders) →

@@ -72,7 +72,7 @@ pub fn thesis_beside_ours(scenes: &[StoredScene], refs: &References) -> Section 
     }
     let _ = writeln!(
         s,
-        "| UBA − FASTSIM, max over cx ∈ [0, 0.01] | {} ({} %) | 0 (round-off) with a shared leading edge; 0.0107 / 0.0047 / 0.0023 at 22 / 44 / 88 when FASTSIM integrates from the exact ellipse edge | first order in dx; see tests/simplified_models.rs |",
+        "| UBA − FASTSIM, max over cx ∈ [0, 0.01] | {} ({} %) | 0 (round-off) with a shared leading edge; 0.0107 / 0.0047 / 0.0023 at 22 / 44 / 88 when FASTSIM integrates from the exact ellipse edge | first order in dx; see tests/all/simplified_models.rs |",
         fig("uba_fastsim_max_abs_error").unwrap_or(f64::NAN),
         fig("uba_fastsim_relative_error").map(|v| v * 100.0).unwrap_or(f64::NAN)
     );

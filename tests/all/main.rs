@@ -1,0 +1,35 @@
+//! Every integration test in one binary: one link of the library instead of one per file.
+
+mod common;
+mod cli;
+mod cli_safety;
+mod contact_export;
+mod contact_solver;
+mod contact_to_csv;
+mod docs;
+mod envelope;
+mod external_and_gate;
+mod fastrip_model;
+mod figures;
+mod fit;
+mod gate;
+mod gate_baselines;
+mod gate_outputs;
+mod gate_promises;
+mod gate_safety;
+mod layering;
+mod linear_model;
+mod nonhertz;
+mod parser_fuzz;
+mod polach_model;
+mod properties;
+mod reference_columns;
+mod relaxation_model;
+mod scene_extensions;
+mod she_model;
+mod simplified_models;
+mod stability;
+mod steady_restart;
+mod studies;
+mod test_table;
+mod tolerance_files;

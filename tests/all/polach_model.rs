@@ -1,0 +1,48 @@
+//! Polach's model as a built-in model (issue 14's ladder): through the pipeline, its slope at zero
+//! creepage is the linear theory's (Kalker's C11, C22), it tends to μ at large creepage, and the
+//! falling friction follows μ0 ((1 − A) e^(−B w) + A) with w = s V.
+
+use crate::common;
+use common::*;
+use creepbench::solvers::polach::resultant;
+
+fn sweep(over: &str, from: f64, to: f64, points: usize) -> String {
+    format!("kind = \"sweep\"\nover = \"{over}\"\nfrom = {from:e}\nto = {to:e}\npoints = {points}")
+}
+
+#[test]
+fn polach_has_the_linear_slope_and_saturates_at_mu() {
+    let mu = 0.4;
+    for over in ["cx", "cy"] {
+        let p = problem(&scene_text("pol", "[\"linear\", \"polach\"]", mu, 22, &sweep(over, 1e-8, 1e-8, 1), ""));
+        let col = if over == "cx" { "fx_over_fn" } else { "fy_over_fn" };
+        let (l, q) = (run(&p, "linear").column(col).unwrap()[0], run(&p, "polach").column(col).unwrap()[0]);
+        assert!((q / l - 1.0).abs() < 1e-6, "{over}: polach {q}, linear {l}");
+    }
+    let p = problem(&scene_text("pol", "[\"polach\"]", mu, 22, &sweep("cx", 1.0, 1.0, 1), ""));
+    let f = run(&p, "polach").rows[0].fx_over_fn;
+    assert!(f < mu && mu - f < 1e-3, "{f}");
+}
+
+#[test]
+fn polach_falling_friction_and_reductions() {
+    let mu0 = 0.5;
+    let extra = "[model]\npolach_k_a = 1.0\npolach_k_s = 0.4\npolach_a = 0.4\npolach_b_s_per_m = 0.6";
+    // cx = 0.2 at V = 1000 mm/s: w = 0.2 m/s.
+    let p = problem(&scene_text("pol", "[\"polach\"]", mu0, 22, &sweep("cx", 0.2, 0.2, 1), extra));
+    let f = run(&p, "polach").rows[0].fx_over_fn;
+    let mu = mu0 * (0.6 * (-0.6f64 * 0.2).exp() + 0.4);
+    // ε from the same definition: (2/3) C π a² b s / (Q μ), C = 3 G c11 / (8 a).
+    let (h, c, g) = (p.hertz(), p.coefficients, p.material.g_mpa);
+    let eps = 2.0 / 3.0 * (3.0 * g * c.c11 / (8.0 * h.a_mm)) * std::f64::consts::PI * h.a_mm * h.a_mm * h.b_mm
+        / (h.fn_n * mu)
+        * 0.2;
+    let expected = mu * resultant(eps, 1.0, 0.4);
+    assert!((f - expected).abs() < 1e-12, "{f} vs {expected}");
+    assert!(f < mu && f > 0.3 * mu);
+    // Out-of-range parameters are input errors naming the key.
+    let bad = scene_text("pol", "[\"polach\"]", mu0, 22, &sweep("cx", 0.2, 0.2, 1), "[model]\npolach_k_s = 0.0");
+    let scene = creepbench::scene::Scene::from_toml(&bad, std::path::Path::new(".")).unwrap();
+    let e = creepbench::pipeline::resolve(&scene).unwrap_err().to_string();
+    assert!(e.contains("model.polach_k_s"), "{e}");
+}
