@@ -35,7 +35,8 @@ fn documented(doc: &str, key: &str) -> bool {
 }
 
 /// The reader methods of `scene::reader::Section` that take a key as their first argument.
-const KEY_METHODS: [&str; 17] = [
+const KEY_METHODS: [&str; 18] = [
+    "given",
     "f64",
     "opt_f64",
     "usize",

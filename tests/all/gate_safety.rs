@@ -105,8 +105,10 @@ fn sh(script: &str) -> Command {
 
 /// This test binary as a child in `mode`.
 fn spawn_self(mode: &str, dir: &Path, version: u64) -> Command {
+    // The test's path in this binary: its module path without the crate's name.
+    let test = format!("{}::child_entry", module_path!().split_once("::").map_or("", |(_, m)| m));
     let mut c = Command::new(std::env::current_exe().unwrap());
-    c.args(["child_entry", "--exact", "--nocapture", "--test-threads=1", "-q"])
+    c.args([test.as_str(), "--exact", "--nocapture", "--test-threads=1", "-q"])
         .env(CHILD_ENV, mode)
         .env(DIR_ENV, dir)
         .env(VERSION_ENV, version.to_string())
