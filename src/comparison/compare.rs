@@ -143,7 +143,7 @@ pub fn traction_bound(s: &StoredScene, against: Against) -> Vec<Finding> {
     let mut out = Vec::new();
     for (solver, h) in &s.histories {
         let beyond = |(coef, r): &(f64, &crate::history::Row)| {
-            let limit = if r.mu.is_nan() { f64::INFINITY } else { r.mu * (1.0 + BOUND_MARGIN) };
+            let limit = if r.sample.mu.is_nan() { f64::INFINITY } else { r.sample.mu * (1.0 + BOUND_MARGIN) };
             !(*coef <= limit)
         };
         let worst = h
@@ -158,11 +158,11 @@ pub fn traction_bound(s: &StoredScene, against: Against) -> Vec<Finding> {
                 solver: solver.clone(),
                 against,
                 quantity: "traction_bound".into(),
-                step: Some(r.step),
+                step: Some(r.sample.step),
                 ours: coef,
-                theirs: r.mu,
-                diff: if coef.is_finite() { coef - r.mu } else { f64::NAN },
-                allowed: BOUND_MARGIN * r.mu.abs(),
+                theirs: r.sample.mu,
+                diff: if coef.is_finite() { coef - r.sample.mu } else { f64::NAN },
+                allowed: BOUND_MARGIN * r.sample.mu.abs(),
                 gated: true,
                 note: format!("|(Fx, Fy)|/FN beyond mu by more than {BOUND_MARGIN:e} relative"),
             });

@@ -81,13 +81,13 @@ impl Ctx<'_> {
     /// one of them make the finding unmatched (NaN) when `require_same_steps`.
     pub fn column(&self, ours: &History, theirs: &History, col: &str, require_same_steps: bool) -> Option<Finding> {
         let (a, b) = (ours.column(col)?, theirs.column(col)?);
-        let tb: BTreeMap<usize, f64> = theirs.rows.iter().map(|r| r.step).zip(b).collect();
+        let tb: BTreeMap<usize, f64> = theirs.rows.iter().map(|r| r.sample.step).zip(b).collect();
         let mut worst: Option<Finding> = None;
         let mut matched = 0;
         for (r, va) in ours.rows.iter().zip(a) {
-            let Some(&vb) = tb.get(&r.step) else { continue };
+            let Some(&vb) = tb.get(&r.sample.step) else { continue };
             matched += 1;
-            let f = self.finding(col, Some(r.step), va, vb, "");
+            let f = self.finding(col, Some(r.sample.step), va, vb, "");
             if worst.as_ref().is_none_or(|w| f.severity() > w.severity()) {
                 worst = Some(f);
             }

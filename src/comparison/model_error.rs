@@ -8,10 +8,10 @@ use std::collections::BTreeMap;
 /// (rows matched by step).
 pub fn row_diffs(ours: &History, target: &History) -> Vec<f64> {
     let by_step: BTreeMap<usize, (f64, f64)> =
-        target.rows.iter().map(|r| (r.step, (r.fx_over_fn, r.fy_over_fn))).collect();
+        target.rows.iter().map(|r| (r.sample.step, (r.fx_over_fn, r.fy_over_fn))).collect();
     ours.rows
         .iter()
-        .filter_map(|r| by_step.get(&r.step).map(|(x, y)| (r.fx_over_fn - x).hypot(r.fy_over_fn - y)))
+        .filter_map(|r| by_step.get(&r.sample.step).map(|(x, y)| (r.fx_over_fn - x).hypot(r.fy_over_fn - y)))
         .collect()
 }
 

@@ -134,10 +134,10 @@ fn validate(mut h: History, problem: &Problem, out_csv: &Path) -> Result<History
     }
     // Step 0 (the initial state) is part of the output only when the scene starts steady.
     if problem.loading.steady_start().is_none() {
-        h.rows.retain(|r| r.step != 0);
+        h.rows.retain(|r| r.sample.step != 0);
     }
     let expected: Vec<&Sample> = problem.loading.rows().collect();
-    let got: Vec<usize> = h.rows.iter().map(|r| r.step).collect();
+    let got: Vec<usize> = h.rows.iter().map(|r| r.sample.step).collect();
     if !got.iter().copied().eq(expected.iter().map(|s| s.step)) {
         return Err(ExternalError::Rows {
             out: out(),
@@ -149,33 +149,38 @@ fn validate(mut h: History, problem: &Problem, out_csv: &Path) -> Result<History
     }
     for (r, s) in h.rows.iter_mut().zip(&expected) {
         // μ is the scene's: a model may leave the column out, or must copy it.
-        let mu_given = if r.mu.is_nan() { s.mu } else { r.mu };
-        r.mu = s.mu;
+        let mu_given = if r.sample.mu.is_nan() { s.mu } else { r.sample.mu };
+        r.sample.mu = s.mu;
         let leading = [
-            ("t_s", r.t_s),
-            ("cx", r.cx),
-            ("cy", r.cy),
-            ("cs", r.cs),
-            ("fn_n", r.fn_n),
+            ("t_s", r.sample.t_s),
+            ("cx", r.sample.cx),
+            ("cy", r.sample.cy),
+            ("cs", r.sample.cs),
+            ("fn_n", r.sample.fn_n),
             ("fx_over_fn", r.fx_over_fn),
             ("fy_over_fn", r.fy_over_fn),
         ];
         let extra = h.extra_columns.iter().map(String::as_str).zip(r.extra.iter().copied());
         if let Some((column, v)) = leading.into_iter().chain(extra).find(|(_, v)| !v.is_finite()) {
-            return Err(ExternalError::NotFinite { out: out(), step: r.step, column: column.to_string(), value: v });
+            return Err(ExternalError::NotFinite {
+                out: out(),
+                step: r.sample.step,
+                column: column.to_string(),
+                value: v,
+            });
         }
         let loading = [
-            ("t_s", r.t_s, s.t_s),
-            ("cx", r.cx, s.cx),
-            ("cy", r.cy, s.cy),
-            ("cs", r.cs, s.cs),
-            ("fn_n", r.fn_n, s.fn_n),
+            ("t_s", r.sample.t_s, s.t_s),
+            ("cx", r.sample.cx, s.cx),
+            ("cy", r.sample.cy, s.cy),
+            ("cs", r.sample.cs, s.cs),
+            ("fn_n", r.sample.fn_n, s.fn_n),
             ("mu", mu_given, s.mu),
         ];
         if let Some((column, v, want)) =
             loading.into_iter().find(|&(_, v, want)| (v - want).abs() > LOADING_RTOL * v.abs().max(want.abs()))
         {
-            return Err(ExternalError::Loading { out: out(), step: r.step, column, value: v, want });
+            return Err(ExternalError::Loading { out: out(), step: r.sample.step, column, value: v, want });
         }
     }
     Ok(h)

@@ -26,14 +26,9 @@ pub const MZ: &str = "mz_nmm";
 /// One row: the loading and the traction coefficients, plus solver-specific extra values.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {
-    pub step: usize,
-    pub t_s: f64,
-    pub cx: f64,
-    pub cy: f64,
-    pub cs: f64,
-    pub fn_n: f64,
-    /// Coulomb friction coefficient at this row (NaN where a source does not give it).
-    pub mu: f64,
+    /// The loading of this row (step, time, creepages, load, friction); `mu` is NaN where a
+    /// source does not give it.
+    pub sample: Sample,
     /// Tx / FN (thesis Eq. 2.30–2.31, 3.12), positive for positive cx.
     pub fx_over_fn: f64,
     pub fy_over_fn: f64,
@@ -44,18 +39,7 @@ pub struct Row {
 impl Row {
     /// A row for `sample` with traction coefficients (fx, fy) and extra values.
     pub fn new(sample: &Sample, fx_over_fn: f64, fy_over_fn: f64, extra: Vec<f64>) -> Self {
-        Row {
-            step: sample.step,
-            t_s: sample.t_s,
-            cx: sample.cx,
-            cy: sample.cy,
-            cs: sample.cs,
-            fn_n: sample.fn_n,
-            mu: sample.mu,
-            fx_over_fn,
-            fy_over_fn,
-            extra,
-        }
+        Row { sample: *sample, fx_over_fn, fy_over_fn, extra }
     }
 }
 
@@ -81,13 +65,13 @@ impl History {
     pub fn column(&self, name: &str) -> Option<Vec<f64>> {
         let lead = |r: &Row| -> Option<f64> {
             Some(match name {
-                "step" => r.step as f64,
-                "t_s" => r.t_s,
-                "cx" => r.cx,
-                "cy" => r.cy,
-                "cs" => r.cs,
-                "fn_n" => r.fn_n,
-                "mu" => r.mu,
+                "step" => r.sample.step as f64,
+                "t_s" => r.sample.t_s,
+                "cx" => r.sample.cx,
+                "cy" => r.sample.cy,
+                "cs" => r.sample.cs,
+                "fn_n" => r.sample.fn_n,
+                "mu" => r.sample.mu,
                 "fx_over_fn" => r.fx_over_fn,
                 "fy_over_fn" => r.fy_over_fn,
                 _ => return None,
@@ -113,7 +97,15 @@ impl History {
         for r in &self.rows {
             out.push_str(&format!(
                 "{},{},{},{},{},{},{},{},{}",
-                r.step, r.t_s, r.cx, r.cy, r.cs, r.fn_n, r.fx_over_fn, r.fy_over_fn, r.mu
+                r.sample.step,
+                r.sample.t_s,
+                r.sample.cx,
+                r.sample.cy,
+                r.sample.cs,
+                r.sample.fn_n,
+                r.fx_over_fn,
+                r.fy_over_fn,
+                r.sample.mu
             ));
             for v in &r.extra {
                 out.push(',');
@@ -148,13 +140,15 @@ impl History {
             let step = rec[0].parse::<usize>().map_err(|_| bad(0, "a step index"))?;
             let extra = (first_extra..header.len()).map(num).collect::<Result<Vec<_>, _>>()?;
             h.rows.push(Row {
-                step,
-                t_s: num(1)?,
-                cx: num(2)?,
-                cy: num(3)?,
-                cs: num(4)?,
-                fn_n: num(5)?,
-                mu: if has_mu { num(COLUMNS.len())? } else { f64::NAN },
+                sample: Sample {
+                    step,
+                    t_s: num(1)?,
+                    cx: num(2)?,
+                    cy: num(3)?,
+                    cs: num(4)?,
+                    fn_n: num(5)?,
+                    mu: if has_mu { num(COLUMNS.len())? } else { f64::NAN },
+                },
                 fx_over_fn: num(6)?,
                 fy_over_fn: num(7)?,
                 extra,

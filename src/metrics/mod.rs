@@ -138,11 +138,11 @@ pub struct HistoryColumns {
 impl HistoryColumns {
     pub fn of(h: &History) -> Self {
         HistoryColumns {
-            steps: h.rows.iter().map(|r| r.step).collect(),
-            t: h.rows.iter().map(|r| r.t_s).collect(),
-            cx: h.rows.iter().map(|r| r.cx).collect(),
+            steps: h.rows.iter().map(|r| r.sample.step).collect(),
+            t: h.rows.iter().map(|r| r.sample.t_s).collect(),
+            cx: h.rows.iter().map(|r| r.sample.cx).collect(),
             f: h.rows.iter().map(|r| r.fx_over_fn).collect(),
-            first_step: h.rows.iter().position(|r| r.step >= 1).unwrap_or(0),
+            first_step: h.rows.iter().position(|r| r.sample.step >= 1).unwrap_or(0),
         }
     }
 }

@@ -28,7 +28,7 @@ fn worst(ours: &[(usize, f64)], theirs: &BTreeMap<usize, f64>) -> Option<(f64, u
 /// (step, value) of a column; `mz_nmm` made dimensionless by FN a.
 fn column(h: &History, col: &str, a_mm: f64) -> Vec<(usize, f64)> {
     let v = h.column(col).unwrap_or_default();
-    h.rows.iter().zip(v).map(|(r, v)| (r.step, if col == MZ { v / (r.fn_n * a_mm) } else { v })).collect()
+    h.rows.iter().zip(v).map(|(r, v)| (r.sample.step, if col == MZ { v / (r.sample.fn_n * a_mm) } else { v })).collect()
 }
 
 fn cell(w: Option<(f64, usize)>) -> String {

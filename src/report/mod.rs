@@ -96,10 +96,10 @@ fn swept_axis(direction: [f64; 3]) -> (&'static str, &'static str) {
 }
 
 fn last_period(h: &History, period: f64) -> Vec<(f64, f64)> {
-    let t_end = h.rows.last().map(|r| r.t_s).unwrap_or(0.0);
+    let t_end = h.rows.last().map(|r| r.sample.t_s).unwrap_or(0.0);
     let periods = (t_end / period + 1e-9).floor();
     let t0 = (periods - 1.0) * period;
-    h.rows.iter().filter(|r| r.t_s >= t0 - 1e-12).map(|r| (r.cx, r.fx_over_fn)).collect()
+    h.rows.iter().filter(|r| r.sample.t_s >= t0 - 1e-12).map(|r| (r.sample.cx, r.fx_over_fn)).collect()
 }
 
 fn fmt(v: Option<f64>, digits: usize) -> String {
@@ -324,7 +324,7 @@ pub fn build(input: &ReportInput) -> Report {
                 let flat = sc
                     .histories
                     .get(s)
-                    .is_some_and(|h| h.rows.iter().any(|r| delay::saturates(r.fx_over_fn.abs(), r.mu)));
+                    .is_some_and(|h| h.rows.iter().any(|r| delay::saturates(r.fx_over_fn.abs(), r.sample.mu)));
                 let d = fmt(sc.metrics.get(&(s.clone(), crate::metrics::delay_ratio::NAME.into(), None)).copied(), 4);
                 let _ = write!(md, " {d}{} |", if flat { " †" } else { "" });
             }

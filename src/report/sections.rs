@@ -61,7 +61,7 @@ pub fn thesis_beside_ours(scenes: &[StoredScene], refs: &References) -> Section 
     let t43 = fig("table_4_3_f_step29_cx001");
     for (name, label) in TABLE_4_3 {
         let ours = find(scenes, name)
-            .and_then(|sc| sc.histories.get("uba")?.rows.iter().find(|r| r.step == 29))
+            .and_then(|sc| sc.histories.get("uba")?.rows.iter().find(|r| r.sample.step == 29))
             .map(|r| r.fx_over_fn);
         let _ = writeln!(
             s,
@@ -134,7 +134,7 @@ pub fn stability(scenes: &[StoredScene]) -> Section {
                 .rows
                 .iter()
                 .all(|r| r.fx_over_fn.is_finite() && r.fy_over_fn.is_finite() && r.extra.iter().all(|v| v.is_finite()));
-            let max_f = h.rows.iter().map(|r| r.fx_over_fn.hypot(r.fy_over_fn) / r.mu).fold(0.0, f64::max);
+            let max_f = h.rows.iter().map(|r| r.fx_over_fn.hypot(r.fy_over_fn) / r.sample.mu).fold(0.0, f64::max);
             let col_max = |c: &str| h.column(c).map(|v| v.into_iter().fold(0.0, f64::max));
             let limit = h
                 .column("termination")

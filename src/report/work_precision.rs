@@ -154,19 +154,14 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
 mod tests {
     use super::*;
     use crate::history::Row;
+    use crate::problem::Sample;
 
     fn history(dt: f64, n: usize, f: impl Fn(f64) -> f64) -> History {
         let mut h = History::new("m", &[]);
         for k in 0..=n {
             let t = k as f64 * dt;
             let row = Row {
-                step: k,
-                t_s: t,
-                cx: 0.0,
-                cy: 0.0,
-                cs: 0.0,
-                fn_n: 1.0,
-                mu: 1.0,
+                sample: Sample { step: k, t_s: t, cx: 0.0, cy: 0.0, cs: 0.0, fn_n: 1.0, mu: 1.0 },
                 fx_over_fn: f(t),
                 fy_over_fn: 0.0,
                 extra: Vec::new(),

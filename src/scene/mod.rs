@@ -5,8 +5,8 @@
 
 pub mod geometry;
 pub mod reader;
-pub mod source;
 mod sections;
+pub mod source;
 pub mod study;
 pub mod table;
 

@@ -211,7 +211,7 @@ fn table_kind_varies_load_and_friction() {
     let dt: f64 = 2.0 * 8.56 / 22.0 / 1000.0;
     assert_eq!(h.rows.len(), (0.02 / dt).floor() as usize);
     let last = h.rows.last().unwrap();
-    assert!(last.fn_n < 52000.0 && last.fn_n > 50000.0, "fn interpolated: {}", last.fn_n);
+    assert!(last.sample.fn_n < 52000.0 && last.sample.fn_n > 50000.0, "fn interpolated: {}", last.sample.fn_n);
     assert!(last.fx_over_fn <= 0.2 + 1e-12);
 }
 

@@ -37,7 +37,7 @@ fn slope_matches_contact_exact_theory() {
     let contact_slope = (4.0 * f1 - f2) / (2.0 * c1);
     let p = suite_problem("thesis", "steady_exact_g88", &["linear".into()]);
     let h = run(&p, "linear");
-    let slope = h.rows[1].fx_over_fn / h.rows[1].cx;
+    let slope = h.rows[1].fx_over_fn / h.rows[1].sample.cx;
     println!("slope: linear {slope:.3}, CONTACT 88x88 {contact_slope:.3}");
     assert!((slope / contact_slope - 1.0).abs() < 0.01, "{slope} vs {contact_slope}");
 }

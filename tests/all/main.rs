@@ -1,8 +1,8 @@
 //! Every integration test in one binary: one link of the library instead of one per file.
 
-mod common;
 mod cli;
 mod cli_safety;
+mod common;
 mod contact_export;
 mod contact_solver;
 mod contact_to_csv;

@@ -28,11 +28,11 @@ fn worst_against_contact(p: &Problem, case: &str) -> [f64; 3] {
     let mut worst = [0.0f64; 3];
     let (mo, mt) = (ours.column(MZ).unwrap(), theirs.column(MZ).unwrap());
     for (k, (o, t)) in ours.rows.iter().zip(&theirs.rows).enumerate() {
-        assert_eq!(o.step, t.step);
+        assert_eq!(o.sample.step, t.sample.step);
         let d = [
             (o.fx_over_fn - t.fx_over_fn).abs(),
             (o.fy_over_fn - t.fy_over_fn).abs(),
-            (mo[k] - mt[k]).abs() / (t.fn_n * a_mm),
+            (mo[k] - mt[k]).abs() / (t.sample.fn_n * a_mm),
         ];
         for q in 0..3 {
             worst[q] = worst[q].max(d[q]);

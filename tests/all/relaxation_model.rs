@@ -41,12 +41,12 @@ fn step_response_is_the_exponential() {
         let h = run(&p, "relaxation");
         assert_eq!(h.rows.len(), 60);
         for r in &h.rows {
-            let q = p.rolling.v_mm_s * r.t_s;
+            let q = p.rolling.v_mm_s * r.sample.t_s;
             let (ex, ey) = (fx_ss * (1.0 - (-q / lx).exp()), fy_ss * (1.0 - (-q / ly).exp()));
             assert!(
                 rel(r.fx_over_fn, ex) < 1e-12 && rel(r.fy_over_fn, ey) < 1e-12,
                 "step {}: {r:?} vs {ex} {ey}",
-                r.step
+                r.sample.step
             );
         }
         println!("Lx {lx:.4} mm, Ly {ly:.4} mm: f at step 60 = {:.6e} of f_ss {fx_ss:.6e}", h.rows[59].fx_over_fn);
@@ -58,8 +58,8 @@ fn step_response_is_the_exponential() {
 fn fit_sine(h: &History, omega: f64, t0: f64) -> (f64, f64) {
     let mut n = [[0.0; 3]; 3];
     let mut rhs = [0.0; 3];
-    for r in h.rows.iter().filter(|r| r.t_s > t0) {
-        let basis = [1.0, (omega * r.t_s).sin(), (omega * r.t_s).cos()];
+    for r in h.rows.iter().filter(|r| r.sample.t_s > t0) {
+        let basis = [1.0, (omega * r.sample.t_s).sin(), (omega * r.sample.t_s).cos()];
         for i in 0..3 {
             rhs[i] += basis[i] * r.fx_over_fn;
             for j in 0..3 {
@@ -148,7 +148,7 @@ fn steady_and_sweep_are_the_steady_law() {
     let sine = "kind = \"sine\"\nc0 = 0.002\ncp = 0.002\nfreq_hz = 30.0\nperiods = 1\ncy = 0.001";
     let p = problem(&scene_text("rw", "[\"relaxation\", \"fastsim\"]", 0.4, 22, sine, "[init]\nkind = \"steady\""));
     let (r, f) = (run(&p, "relaxation"), run(&p, "fastsim"));
-    assert_eq!(r.rows[0].step, 0);
+    assert_eq!(r.rows[0].sample.step, 0);
     assert_eq!(same_values(&r, 0), same_values(&f, 0));
     assert_ne!(r.rows[1].fx_over_fn, f.rows[1].fx_over_fn, "a transient step lags");
 }
@@ -180,10 +180,10 @@ fn load_and_friction_changes() {
         let p = envelope(name);
         let (r, f) = (run(&p, "relaxation"), run(&p, "fastsim"));
         assert_eq!(same_values(&r, 0), same_values(&f, 0));
-        let mut force = (r.rows[0].fx_over_fn * r.rows[0].fn_n, r.rows[0].fy_over_fn * r.rows[0].fn_n);
+        let mut force = (r.rows[0].fx_over_fn * r.rows[0].sample.fn_n, r.rows[0].fy_over_fn * r.rows[0].sample.fn_n);
         let mut clipped = 0;
         for (k, (rr, fs)) in r.rows.iter().zip(&f.rows).enumerate().skip(1) {
-            let (fn_n, mu) = (rr.fn_n, rr.mu);
+            let (fn_n, mu) = (rr.sample.fn_n, rr.sample.mu);
             let bound = |(x, y): (f64, f64)| {
                 let m = x.hypot(y);
                 if m > mu * fn_n {

@@ -13,12 +13,12 @@ fn she_saturates_the_linear_theory() {
     let creepage = "kind = \"sweep\"\nfrom = 0.0\nto = 0.02\npoints = 41";
     let p = problem(&scene_text("she", "[\"linear\", \"she\"]", mu, 22, creepage, ""));
     let (lin, she) = (run(&p, "linear"), run(&p, "she"));
-    let slope = lin.rows[1].fx_over_fn / lin.rows[1].cx;
+    let slope = lin.rows[1].fx_over_fn / lin.rows[1].sample.cx;
     let mut checked = 0;
     for (l, s) in lin.rows.iter().zip(&she.rows) {
-        let eps = slope * l.cx / mu;
+        let eps = slope * l.sample.cx / mu;
         let expected = mu * law(eps);
-        assert!((s.fx_over_fn - expected).abs() < 1e-12, "cx {}: {} vs {expected}", l.cx, s.fx_over_fn);
+        assert!((s.fx_over_fn - expected).abs() < 1e-12, "cx {}: {} vs {expected}", l.sample.cx, s.fx_over_fn);
         if eps < 1.0 {
             // The linear model is unsaturated here: the same ε from its own output.
             assert!((l.fx_over_fn / mu - eps).abs() < 1e-12);

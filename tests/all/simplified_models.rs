@@ -206,7 +206,7 @@ fn steady_initial_state() {
         "[init]\nkind = \"steady\"",
     ));
     let (u, fs) = (run(&p, "uba"), run(&p, "fastsim"));
-    assert_eq!(u.rows[0].step, 0);
+    assert_eq!(u.rows[0].sample.step, 0);
     assert!((u.rows[0].fx_over_fn - fs.rows[0].fx_over_fn).abs() < 1e-14);
     // CONTACT's steady state at cx = 0.005, mu = 1 (sine_f10_mu10 step 0) for scale: 0.6082.
     let contact0 = reference("sine_f10_mu10", "fx_over_fn")[0];

@@ -31,11 +31,11 @@ fn every_stability_scene_is_finite_and_bounded() {
                     row.fx_over_fn.is_finite() && row.fy_over_fn.is_finite(),
                     "{name}/{}: non-finite at step {}",
                     h.solver,
-                    row.step
+                    row.sample.step
                 );
                 assert!(row.extra.iter().all(|v| v.is_finite()), "{name}/{}: non-finite extra column", h.solver);
                 let m = (row.fx_over_fn.powi(2) + row.fy_over_fn.powi(2)).sqrt();
-                assert!(m <= mu * (1.0 + 1e-6), "{name}/{}: |f| {m} > mu {mu} at step {}", h.solver, row.step);
+                assert!(m <= mu * (1.0 + 1e-6), "{name}/{}: |f| {m} > mu {mu} at step {}", h.solver, row.sample.step);
             }
             if let Some(term) = h.column("termination") {
                 assert!(term.iter().all(|&c| c == 0.0), "{name}/{}: steps not converged at the first method", h.solver);

@@ -49,12 +49,13 @@ fn the_exact_solver_reproduces_contacts_test_table() {
         let theirs = &table.histories[&s.name];
         let (om, tm) = (ours.column(MZ).unwrap(), theirs.column(MZ).unwrap());
         for (k, (o, t)) in ours.rows.iter().zip(&theirs.rows).enumerate() {
-            assert_eq!(o.step, t.step);
-            let d = [o.fx_over_fn - t.fx_over_fn, o.fy_over_fn - t.fy_over_fn, (om[k] - tm[k]) / (o.fn_n * a_mm)]
-                .iter()
-                .fold(0.0f64, |m, x| m.max(x.abs()));
+            assert_eq!(o.sample.step, t.sample.step);
+            let d =
+                [o.fx_over_fn - t.fx_over_fn, o.fy_over_fn - t.fy_over_fn, (om[k] - tm[k]) / (o.sample.fn_n * a_mm)]
+                    .iter()
+                    .fold(0.0f64, |m, x| m.max(x.abs()));
             if d > worst.0 {
-                worst = (d, format!("{} point {}", s.name, o.step));
+                worst = (d, format!("{} point {}", s.name, o.sample.step));
             }
             cases += 1;
         }

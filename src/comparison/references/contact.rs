@@ -9,6 +9,7 @@ use crate::comparison::rule::Rule;
 use crate::error::{Error, FormatError};
 use crate::history::{History, Row};
 use crate::metrics;
+use crate::problem::Sample;
 use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -144,7 +145,7 @@ pub fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> Result<H
             // A step is a whole number >= 0, increasing row by row: whatever a manifest says, a
             // repeated, negative or fractional step is garbage, not a reference.
             let step = n(cols[0])?;
-            let previous = h.rows.last().map(|r: &Row| r.step);
+            let previous = h.rows.last().map(|r: &Row| r.sample.step);
             let whole = step >= 0.0 && step.fract() == 0.0 && step < 1e15;
             let step = step as usize + step_offset;
             if !whole || previous.is_some_and(|p| step <= p) {
@@ -156,13 +157,15 @@ pub fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> Result<H
                 });
             }
             Ok(Row {
-                step,
-                t_s: n(cols[1])?,
-                cx: n(cols[2])?,
-                cy: n(cols[3])?,
-                cs: opt(cs_col, 0.0)?,
-                fn_n: n(cols[4])?,
-                mu: opt(mu_col, f64::NAN)?,
+                sample: Sample {
+                    step,
+                    t_s: n(cols[1])?,
+                    cx: n(cols[2])?,
+                    cy: n(cols[3])?,
+                    cs: opt(cs_col, 0.0)?,
+                    fn_n: n(cols[4])?,
+                    mu: opt(mu_col, f64::NAN)?,
+                },
                 fx_over_fn: n(cols[5])?,
                 fy_over_fn: n(cols[6])?,
                 extra: cols[7..].iter().map(|&c| n(c)).collect::<Result<Vec<f64>, FormatError>>()?,
@@ -203,8 +206,11 @@ impl ReferenceSet for ContactCases {
         // Where f reaches μ near the creepage peak the delay is ill-defined (flat top); μ per
         // step from the scene's own loading (a table may vary it).
         let mu_at: BTreeMap<usize, f64> = ours.scene.history.iter().map(|s| (s.step, s.mu)).collect();
-        let flat =
-            contact.rows.iter().filter_map(|r| Some(r.fx_over_fn.abs() / mu_at.get(&r.step)?)).fold(0.0, f64::max);
+        let flat = contact
+            .rows
+            .iter()
+            .filter_map(|r| Some(r.fx_over_fn.abs() / mu_at.get(&r.sample.step)?))
+            .fold(0.0, f64::max);
         let saturated = flat >= delay::SATURATION;
         for (solver, h) in &ours.histories {
             let ctx = Ctx { scene: &ours.name, solver, against, rules };

@@ -99,7 +99,7 @@ impl EnvelopeCases {
 /// `mz / (FN a)` per step of a history that has the moment column.
 fn mz_over_fn_a(h: &History, a_mm: f64) -> Option<Vec<f64>> {
     let mz = h.column(MZ)?;
-    Some(h.rows.iter().zip(mz).map(|(r, m)| m / (r.fn_n * a_mm)).collect())
+    Some(h.rows.iter().zip(mz).map(|(r, m)| m / (r.sample.fn_n * a_mm)).collect())
 }
 
 impl ReferenceSet for EnvelopeCases {
@@ -117,7 +117,7 @@ impl ReferenceSet for EnvelopeCases {
         };
         let a_mm = ours.scene.a_mm;
         let theirs_mz: BTreeMap<usize, f64> = match mz_over_fn_a(contact, a_mm) {
-            Some(v) => contact.rows.iter().map(|r| r.step).zip(v).collect(),
+            Some(v) => contact.rows.iter().map(|r| r.sample.step).zip(v).collect(),
             None => BTreeMap::new(),
         };
         for (solver, h) in &ours.histories {
@@ -131,7 +131,13 @@ impl ReferenceSet for EnvelopeCases {
                         .iter()
                         .zip(m)
                         .filter_map(|(r, v)| {
-                            Some(ctx.finding(MZ_OVER_FN_A, Some(r.step), v, *theirs_mz.get(&r.step)?, "mz / (FN a)"))
+                            Some(ctx.finding(
+                                MZ_OVER_FN_A,
+                                Some(r.sample.step),
+                                v,
+                                *theirs_mz.get(&r.sample.step)?,
+                                "mz / (FN a)",
+                            ))
                         })
                         .max_by(|a, b| a.severity().total_cmp(&b.severity()));
                     out.extend(worst);

@@ -9,6 +9,7 @@ use super::read;
 use crate::comparison::against::Against;
 use crate::error::{Error, FormatError};
 use crate::history::{History, Row, MZ};
+use crate::problem::Sample;
 use std::path::Path;
 
 /// CONTACT's exact theory on its test table.
@@ -67,13 +68,7 @@ pub fn load(dir: &Path) -> Result<EnvelopeCases, Error> {
                     let (fx, fy, mz) = parse_case(line).ok_or_else(|| bad(n, line.chars().take(60).collect()))?;
                     // Forces on body 1 over mu FN, moment over mu FN cp: flipped and scaled.
                     h.rows.push(Row {
-                        step,
-                        t_s: 0.0,
-                        cx: f64::NAN,
-                        cy: f64::NAN,
-                        cs: f64::NAN,
-                        fn_n: FN_N,
-                        mu: MU,
+                        sample: Sample { step, t_s: 0.0, cx: f64::NAN, cy: f64::NAN, cs: f64::NAN, fn_n: FN_N, mu: MU },
                         fx_over_fn: -MU * fx,
                         fy_over_fn: -MU * fy,
                         extra: vec![-MU * FN_N * cp_mm * mz],
