@@ -70,24 +70,18 @@ pub fn glob(pattern: &str, text: &str) -> bool {
 
 /// What a comparison no rule covers gets: reported, no tolerance. (Every label of the defaults
 /// ends in a catch-all, so it is never used by them.)
-static NO_RULE: LazyLock<Rule> = LazyLock::new(|| Rule {
-    origin: "no rule".into(),
-    against: Against::Golden,
-    scene: "*".into(),
-    solver: "*".into(),
-    quantity: "*".into(),
-    abs: f64::INFINITY,
-    rel: 0.0,
-    gated: false,
-    disable: false,
-    why: "no rule".into(),
-});
+static NO_RULE: LazyLock<Rule> = LazyLock::new(|| reported("no rule".into(), Against::Golden, "no rule"));
 
 /// The last rule of a label: every comparison of it that no rule before covers is reported, with
 /// no tolerance (a reference set's entry in the registry gives its reason).
 pub fn catch_all(against: Against, why: &str) -> Rule {
+    reported(format!("{:?} catch-all (reference set registry)", against.label()), against, why)
+}
+
+/// A rule over every comparison of `against` that reports and never judges (no tolerance).
+fn reported(origin: String, against: Against, why: &str) -> Rule {
     Rule {
-        origin: format!("{:?} catch-all (reference set registry)", against.label()),
+        origin,
         against,
         scene: "*".into(),
         solver: "*".into(),
