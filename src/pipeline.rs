@@ -34,6 +34,8 @@ pub struct SceneResult {
     /// Per model, in the order of `histories`.
     pub timing: Vec<Timing>,
     pub metrics: Vec<Metric>,
+    /// What the external models printed: `(file name, text)` for the result folder.
+    pub logs: Vec<(String, String)>,
 }
 
 /// Read, validate and resolve a scene file; `only` narrows its solver list.
@@ -191,7 +193,7 @@ fn select_metrics(problem: &mut Problem, asked: Option<&[String]>) {
 pub fn run(mut problem: Problem) -> Result<SceneResult, Error> {
     let field_metrics: Vec<FieldIndicator> =
         problem.metrics.iter().filter_map(|m| metrics::by_name(m)?.field_indicator()).collect();
-    let (mut histories, mut timing, mut all_metrics) = (Vec::new(), Vec::new(), Vec::new());
+    let (mut histories, mut timing, mut all_metrics, mut logs) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
     for name in &problem.solvers {
         let fail = |e: solvers::SolveError| Error::Solve {
             scene: problem.name.clone(),
@@ -215,9 +217,10 @@ pub fn run(mut problem: Problem) -> Result<SceneResult, Error> {
                     )
                 })?;
                 let start = Instant::now();
-                let h = External::new(spec.clone()).run(&problem)?;
+                let ran = External::new(spec.clone()).run(&problem)?;
                 let wall_s = start.elapsed().as_secs_f64();
-                (h, Timing { wall_s, setup_s: 0.0 }, Vec::new())
+                logs.extend(ran.logs);
+                (ran.history, Timing { wall_s, setup_s: 0.0 }, Vec::new())
             }
         };
         let limit = Termination::IterationLimit.code();
@@ -233,5 +236,5 @@ pub fn run(mut problem: Problem) -> Result<SceneResult, Error> {
         histories.push(h);
         timing.push(t);
     }
-    Ok(SceneResult { problem, histories, timing, metrics: all_metrics })
+    Ok(SceneResult { problem, histories, timing, metrics: all_metrics, logs })
 }

@@ -6,13 +6,16 @@
 //! step 0, the initial state, is dropped unless the scene starts from a steady state).
 //! The model runs with stdin closed, a timeout and its process group killed when it ends; its
 //! output is read with a size limit and must be finite, with the scene's loading columns.
+//! When it fails, its folder is kept with its printed output (`stdout.txt`, `stderr.txt`) and
+//! named in the error; when it succeeds, the folder is removed and what it printed goes to the
+//! scene's result folder as `<model>.stdout.txt` / `<model>.stderr.txt`.
 
 use super::{History, COLUMNS};
 use crate::error::{Error, FormatError};
 use crate::problem::{Problem, ResolvedScene, Sample};
 use crate::safety::excerpt::{excerpt, one_line};
 use crate::safety::interrupt;
-use crate::safety::process::{self, ProcessError};
+use crate::safety::process::{self, Output, ProcessError};
 use crate::safety::read::{read_text, ReadError, MODEL_OUTPUT_LIMIT_BYTES};
 use crate::scene::ExternalSolver;
 use std::path::{Path, PathBuf};
@@ -24,6 +27,10 @@ use std::time::Duration;
 pub enum ExternalError {
     #[error("temp dir: {0}")]
     TempDir(#[source] std::io::Error),
+    #[error("{source} (the model's folder is kept: {}, with its stdout.txt and stderr.txt)", .folder.display())]
+    Kept { folder: PathBuf, source: Box<ExternalError> },
+    #[error("{source} (keeping the model's folder {} failed: {io})", .folder.display())]
+    NotKept { folder: PathBuf, source: Box<ExternalError>, io: std::io::Error },
     #[error("writing scene.json: {0}")]
     SceneJson(#[source] std::io::Error),
     #[error(transparent)]
@@ -66,8 +73,9 @@ impl External {
         &self.spec.name
     }
 
-    /// Run the model over the whole scene and read its validated history back.
-    pub fn run(&self, problem: &Problem) -> Result<History, Error> {
+    /// Run the model over the whole scene and read its validated history back, with what it
+    /// printed; on failure its folder is kept (see the module's documentation).
+    pub fn run(&self, problem: &Problem) -> Result<Ran, Error> {
         let fail = |e: ExternalError| Error::External {
             scene: problem.name.clone(),
             solver: self.spec.name.clone(),
@@ -75,17 +83,59 @@ impl External {
         };
         let dir =
             tempfile::Builder::new().prefix("creepbench-ext").tempdir().map_err(|e| fail(ExternalError::TempDir(e)))?;
-        // Removed by the interrupt handler if creepbench is stopped meanwhile, else just below.
+        // Removed by the interrupt handler if creepbench is stopped meanwhile, else just below
+        // (on success) or kept (on failure).
         let cleanup = interrupt::register_folder(dir.path().to_path_buf());
-        let result = run_in(&self.spec, problem, dir.path()).map_err(fail);
-        drop(dir);
+        let mut output = Output::default();
+        let result = run_in(&self.spec, problem, dir.path(), &mut output);
+        let result = match result {
+            Ok(history) => {
+                drop(dir);
+                Ok(Ran { logs: logs(&self.spec.name, &output), history })
+            }
+            Err(e) => Err(keep(dir.keep(), e, &output)),
+        };
         drop(cleanup);
-        result
+        result.map_err(fail)
     }
 }
 
-/// Run the model in the temporary folder `dir` and read its validated output.
-fn run_in(spec: &ExternalSolver, problem: &Problem, dir: &Path) -> Result<History, ExternalError> {
+/// A successful run: the history and the files of what the model printed.
+#[derive(Debug)]
+pub struct Ran {
+    pub history: History,
+    /// `(file name, text)`: `<model>.stdout.txt` and `<model>.stderr.txt`, those not empty.
+    pub logs: Vec<(String, String)>,
+}
+
+/// The log files of a successful run of `model`: each stream that printed something.
+fn logs(model: &str, output: &Output) -> Vec<(String, String)> {
+    [("stdout", &output.stdout), ("stderr", &output.stderr)]
+        .into_iter()
+        .map(|(stream, captured)| (format!("{model}.{stream}.txt"), captured.log_text()))
+        .filter(|(_, text)| !text.is_empty())
+        .collect()
+}
+
+/// The error of a failed run, after writing what the model printed (the tail kept by the
+/// process runner, or the output carried by the error) into its folder, which is kept.
+fn keep(folder: PathBuf, e: ExternalError, output: &Output) -> ExternalError {
+    let printed = match &e {
+        ExternalError::Process(p) => p.output().unwrap_or(output),
+        _ => output,
+    };
+    let written = [("stdout.txt", &printed.stdout), ("stderr.txt", &printed.stderr)]
+        .into_iter()
+        .try_for_each(|(file, captured)| std::fs::write(folder.join(file), captured.log_text()));
+    match written {
+        Ok(()) => ExternalError::Kept { folder, source: Box::new(e) },
+        Err(io) => ExternalError::NotKept { folder, source: Box::new(e), io },
+    }
+}
+
+/// Run the model in the temporary folder `dir` and read its validated output; what it printed
+/// is left in `output`.
+fn run_in(spec: &ExternalSolver, problem: &Problem, dir: &Path, output: &mut Output) -> Result<History, ExternalError> {
     let scene_json = dir.join("scene.json");
     let out_csv = dir.join(format!("{}.csv", spec.name));
     let json = ResolvedScene::of(problem, &problem.solvers).to_json();
@@ -100,7 +150,7 @@ fn run_in(spec: &ExternalSolver, problem: &Problem, dir: &Path) -> Result<Histor
         .arg(&scene_json)
         .arg(&out_csv)
         .current_dir(if problem.scene_dir.as_os_str().is_empty() { Path::new(".") } else { &problem.scene_dir });
-    process::run(command, Duration::from_secs_f64(spec.timeout_s), MODEL_OUTPUT_LIMIT_BYTES)?;
+    *output = process::run(command, Duration::from_secs_f64(spec.timeout_s), MODEL_OUTPUT_LIMIT_BYTES)?;
     validate(read_output(&spec.name, &out_csv)?, problem, &out_csv)
 }
 

@@ -33,9 +33,9 @@ pub enum ProcessError {
         source: io::Error,
     },
     #[error("{} did not finish within {} s: its process group was killed", program.display(), timeout.as_secs_f64())]
-    Timeout { program: PathBuf, timeout: Duration },
-    #[error("{} exited with {status}{}", program.display(), stderr_suffix(stderr_tail))]
-    Failed { program: PathBuf, status: ExitStatus, stderr_tail: String },
+    Timeout { program: PathBuf, timeout: Duration, output: Output },
+    #[error("{} exited with {status}{}", program.display(), stderr_suffix(&output.stderr.text()))]
+    Failed { program: PathBuf, status: ExitStatus, output: Output },
     #[error("waiting for {}: {source}", program.display())]
     Wait {
         program: PathBuf,
@@ -44,6 +44,16 @@ pub enum ProcessError {
     },
     #[error(transparent)]
     Handler(#[from] HandlerError),
+}
+
+impl ProcessError {
+    /// What the program printed before it failed or was killed (none when it did not start).
+    pub fn output(&self) -> Option<&Output> {
+        match self {
+            ProcessError::Timeout { output, .. } | ProcessError::Failed { output, .. } => Some(output),
+            _ => None,
+        }
+    }
 }
 
 fn stderr_suffix(tail: &str) -> String {
@@ -97,10 +107,21 @@ impl Captured {
         }
         out
     }
+
+    /// The tail as the text of a log file: [`Captured::text`] and a final newline, empty when
+    /// nothing printable was written.
+    pub fn log_text(&self) -> String {
+        let text = self.text();
+        if text.is_empty() {
+            text
+        } else {
+            text + "\n"
+        }
+    }
 }
 
-/// What a successful run printed.
-#[derive(Debug)]
+/// What a run printed (the bounded tails of its stdout and stderr).
+#[derive(Debug, Default)]
 pub struct Output {
     pub stdout: Captured,
     pub stderr: Captured,
@@ -150,12 +171,13 @@ pub fn run(mut command: Command, timeout: Duration, file_limit_bytes: u64) -> Re
     }
     let status = group.reap().map_err(wait_err)?;
     let [stdout, stderr] = captured;
+    let output = Output { stdout, stderr };
     if timed_out {
-        Err(ProcessError::Timeout { program, timeout })
+        Err(ProcessError::Timeout { program, timeout, output })
     } else if status.success() {
-        Ok(Output { stdout, stderr })
+        Ok(output)
     } else {
-        Err(ProcessError::Failed { program, status, stderr_tail: stderr.text() })
+        Err(ProcessError::Failed { program, status, output })
     }
 }
 

@@ -26,6 +26,8 @@ pub struct StoredScene {
     pub metrics: MetricMap,
     /// Wall times per solver, when recorded (timing.csv).
     pub timing: BTreeMap<String, Timing>,
+    /// What external models printed, by file name (`<model>.stdout.txt`).
+    pub logs: BTreeMap<String, String>,
 }
 
 impl StoredScene {
@@ -38,6 +40,7 @@ impl StoredScene {
             histories: r.histories.iter().map(|h| (h.solver.clone(), h.clone())).collect(),
             metrics: r.metrics.iter().map(|m| ((m.solver.clone(), m.name.clone(), m.step), m.value)).collect(),
             timing: r.histories.iter().zip(&r.timing).map(|(h, t)| (h.solver.clone(), *t)).collect(),
+            logs: r.logs.iter().cloned().collect(),
         }
     }
 
@@ -46,8 +49,8 @@ impl StoredScene {
         self.metrics.get(&(solver.to_string(), name.to_string(), None)).copied()
     }
 
-    /// The files of the result folder: scene.json, `<solver>.csv`, metrics.csv and, with
-    /// `with_timing`, timing.csv.
+    /// The files of the result folder: scene.json, `<solver>.csv`, metrics.csv, the external
+    /// models' `<model>.stdout.txt` / `<model>.stderr.txt` and, with `with_timing`, timing.csv.
     pub fn files(&self, with_timing: bool) -> Vec<(String, String)> {
         let mut files = vec![("scene.json".to_string(), self.scene.to_json())];
         for (solver, h) in &self.histories {
@@ -64,6 +67,7 @@ impl StoredScene {
             })
             .collect();
         files.push(("metrics.csv".into(), crate::metrics::to_csv(&metrics)));
+        files.extend(self.logs.clone());
         if with_timing {
             let mut t = String::from("solver,wall_s,steps,setup_s\n");
             for (solver, w) in &self.timing {
@@ -138,6 +142,7 @@ pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
         histories: BTreeMap::new(),
         metrics: BTreeMap::new(),
         timing: BTreeMap::new(),
+        logs: BTreeMap::new(),
         scene,
     };
     // A scene of no model compares nothing: refused, not merged as passing.
@@ -161,6 +166,12 @@ pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
         let file = d.join(format!("{solver}.csv"));
         let h = History::from_csv(solver, &read(&format!("{solver}.csv"))?).map_err(Error::format(&file))?;
         s.histories.insert(solver.clone(), h);
+        // What an external model printed, carried along (by `merge`) when the folder holds it.
+        for log in [format!("{solver}.stdout.txt"), format!("{solver}.stderr.txt")] {
+            if d.join(&log).exists() {
+                s.logs.insert(log.clone(), read(&log)?);
+            }
+        }
     }
     s.metrics = parse_metrics(&read("metrics.csv")?).map_err(Error::format(d.join("metrics.csv")))?;
     if let Ok(t) = read("timing.csv") {

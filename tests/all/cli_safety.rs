@@ -220,6 +220,9 @@ fn an_external_model_that_never_exits_is_stopped_at_its_scene_timeout() {
     assert!(start.elapsed().as_secs() < 10, "{:?}", start.elapsed());
     assert!(stderr(&o).contains("hang") && stderr(&o).contains("0.5 s"), "{}", stderr(&o));
     assert!(!w.path().join("out/hang").exists(), "no partial output");
+    // The model's folder is kept for inspection and named; the test removes it.
+    let (_, files, _, _) = take_kept_folder(&stderr(&o));
+    assert_eq!(files, ["scene.json", "stderr.txt", "stdout.txt"]);
     let bad = std::fs::read_to_string(w.path().join("s.toml")).unwrap().replace("timeout_s = 0.5", "timeout_s = -1");
     std::fs::write(w.path().join("s.toml"), bad).unwrap();
     assert_eq!(creepbench(w.path(), &["simulate", "s.toml"]).status.code(), Some(2));

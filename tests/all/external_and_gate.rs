@@ -146,3 +146,72 @@ fn shards_merge_into_one_report() {
     let md = std::fs::read_to_string(d.join("merged/validation.md")).unwrap();
     assert!(md.contains("step_mu04") && md.contains("sine_f30_mu10"));
 }
+
+/// A step scene `s.toml` in `dir` run by the external model `m` = `sh model.sh SCENE OUT`, where
+/// model.sh prints to stdout and stderr, then runs `body`.
+fn printing_model(dir: &Path, body: &str) {
+    let script = root().join("scripts/example_model.py");
+    let model = format!("echo \"model: starting\"\necho 'model: a warning' >&2\n{body}\n");
+    std::fs::write(dir.join("model.sh"), model.replace("EXAMPLE", &script.display().to_string())).unwrap();
+    let ext = "[external.m]\ncommand = [\"sh\", \"model.sh\"]\n";
+    let text = scene_text("s", "[\"fastsim\", \"m\"]", 0.4, 10, "kind = \"step\"\nc = 0.005\nsteps = 6", ext);
+    std::fs::write(dir.join("s.toml"), text).unwrap();
+}
+
+#[test]
+fn a_failing_model_leaves_its_folder_with_its_output_and_stderr_named_in_the_message() {
+    let tmp = tempfile::tempdir().unwrap();
+    let d = tmp.path();
+    for (body, says) in [
+        ("echo 'Traceback: boom' >&2; exit 3", "exit status: 3"),
+        ("echo 'step,t_s' > \"$2\"", "header must start with"),
+    ] {
+        printing_model(d, body);
+        let o = creepbench(&["simulate", "s.toml", "--out", "out"], d, &[]);
+        let err = String::from_utf8_lossy(&o.stderr).to_string();
+        assert_eq!(o.status.code(), Some(1), "{err}");
+        assert!(err.contains(says) && err.contains("model `m`"), "{err}");
+        assert!(!d.join("out/s").exists(), "no partial result folder");
+        // Every path the message names exists after the command ended, until removed here.
+        let (folder, files, stdout, stderr) = take_kept_folder(&err);
+        assert!(folder.starts_with(std::env::temp_dir()) && err.contains(&folder.display().to_string()), "{err}");
+        assert_eq!(stdout, "model: starting\n");
+        let wrote_csv = body.contains("$2");
+        let expected_stderr = if wrote_csv { "model: a warning\n" } else { "model: a warning\nTraceback: boom\n" };
+        assert_eq!(stderr, expected_stderr);
+        let mut expected_files = vec!["scene.json", "stderr.txt", "stdout.txt"];
+        if wrote_csv {
+            expected_files.insert(0, "m.csv");
+            assert!(err.contains(&folder.join("m.csv").display().to_string()), "{err}");
+        }
+        assert_eq!(files, expected_files);
+    }
+}
+
+#[test]
+fn a_succeeding_model_s_stdout_and_stderr_are_kept_in_the_result_folder() {
+    let tmp = tempfile::tempdir().unwrap();
+    let d = tmp.path();
+    printing_model(d, "exec python3 EXAMPLE \"$@\"");
+    let o = creepbench(&["simulate", "s.toml", "--out", "out"], d, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let read = |f: &str| std::fs::read_to_string(d.join("out/s").join(f)).unwrap();
+    assert_eq!(read("m.stdout.txt"), "model: starting\n");
+    assert_eq!(read("m.stderr.txt"), "model: a warning\n");
+    // A built-in model prints nothing and gets no log file.
+    let mut files: Vec<String> =
+        std::fs::read_dir(d.join("out/s")).unwrap().flatten().map(|e| e.file_name().to_string_lossy().into()).collect();
+    files.sort();
+    assert_eq!(
+        files,
+        [".creepbench-result", "fastsim.csv", "m.csv", "m.stderr.txt", "m.stdout.txt", "metrics.csv", "scene.json"]
+    );
+    // A model that prints nothing leaves no log file.
+    printing_model(d, "exec python3 EXAMPLE \"$@\"");
+    let quiet = std::fs::read_to_string(d.join("model.sh")).unwrap().lines().skip(2).collect::<Vec<_>>().join("\n");
+    std::fs::write(d.join("model.sh"), quiet).unwrap();
+    let o = creepbench(&["simulate", "s.toml", "--out", "out"], d, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(d.join("out/s/m.csv").exists() && !d.join("out/s/m.stdout.txt").exists());
+    assert!(!d.join("out/s/m.stderr.txt").exists());
+}

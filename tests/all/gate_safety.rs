@@ -6,14 +6,14 @@
 //! variable) to have a creepbench-like process to interrupt or kill.
 
 use crate::common;
-use common::scene_text;
+use common::{scene_text, take_kept_folder};
 use creepbench::problem::Problem;
 use creepbench::safety::excerpt::excerpt;
 use creepbench::safety::folder::{self, FolderError, MARKER};
 use creepbench::safety::guard::{guard_not_under, GuardError};
 use creepbench::safety::lock::{lock_folder, LockError};
 use creepbench::safety::manifest::{self, ManifestError, MANIFEST};
-use creepbench::safety::process::{self, ProcessError};
+use creepbench::safety::process::{self, ProcessError, CAPTURE_LIMIT_BYTES};
 use creepbench::safety::read::{self, read_text, FileKind, ReadError};
 use creepbench::scene::Scene;
 use std::collections::BTreeMap;
@@ -268,7 +268,7 @@ fn problem_with_model(dir: &Path, script: &str) -> Problem {
     creepbench::pipeline::resolve(&Scene::from_toml(&text, dir).unwrap()).unwrap()
 }
 
-/// Every temporary folder a model ran in is gone.
+/// Every temporary folder a model ran in is gone (those kept on failure removed by the test).
 fn assert_no_temp_dirs(dir: &Path) {
     let log = fs::read_to_string(dir.join("tempdirs")).unwrap();
     assert!(log.lines().count() > 0);
@@ -277,7 +277,8 @@ fn assert_no_temp_dirs(dir: &Path) {
 }
 
 fn run_model(problem: &Problem) -> Result<creepbench::history::History, String> {
-    creepbench::history::external::External::new(problem.external[0].clone()).run(problem).map_err(|e| e.to_string())
+    let ran = creepbench::history::external::External::new(problem.external[0].clone()).run(problem);
+    ran.map(|r| r.history).map_err(|e| e.to_string())
 }
 
 /// The rows a correct model writes: the scene's loading, traction 0.1, 0.
@@ -397,9 +398,15 @@ fn hostile_model_output_is_refused_naming_model_file_step_and_column() {
         assert!(m.contains(expected), "{name}: {m}");
         assert!(m.contains("model `m`") && m.contains("m.csv"), "{name}: names model and file: {m}");
         assert!(m.len() < 1000 && !m.contains('\u{1b}'), "{name}: {} bytes", m.len());
+        // The output file the message names is still there, in the kept folder.
+        let (folder, files, _, _) = take_kept_folder(&m);
+        assert!(m.contains(&folder.join("m.csv").display().to_string()), "{name}: {m}");
+        assert_eq!(files, ["m.csv", "scene.json", "stderr.txt", "stdout.txt"], "{name}");
     }
     fs::write(tmp.path().join("out.csv"), b"step,t_s\n\xff\n").unwrap();
-    assert!(run_model(&p).unwrap_err().contains("not UTF-8"));
+    let m = run_model(&p).unwrap_err();
+    assert!(m.contains("not UTF-8"), "{m}");
+    take_kept_folder(&m);
     assert_no_temp_dirs(tmp.path());
 }
 
@@ -435,6 +442,13 @@ fn hostile_model_behaviour_is_bounded_and_cleaned_up() {
         let m = run_model(&p).expect_err(name);
         assert!(m.contains(expected), "{name}: {m}");
         assert!(m.len() < 6000 && !m.contains('\u{1b}'), "{name}: {} bytes", m.len());
+        // Kept with what the model printed (its tail), inert, whatever the failure.
+        let (_, _, _, stderr) = take_kept_folder(&m);
+        // At most the tail's bytes, each escaped to at most `\u{NN}` (6 bytes).
+        assert!(stderr.len() <= 6 * CAPTURE_LIMIT_BYTES + 4 && !stderr.contains('\u{1b}'), "{name}: {stderr:?}");
+        if *name == "exits 3" {
+            assert_eq!(stderr, "model: bad input\n");
+        }
     }
     // A model that reads stdin, floods stdout, and leaves a sleeper behind still succeeds, fast;
     // the sleeper is killed with its group.

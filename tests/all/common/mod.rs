@@ -146,3 +146,18 @@ pub fn suite_scene_file(suite: &str, name: &str, dir: &Path) -> PathBuf {
     std::fs::write(&path, suite_scene_text(suite, name)).unwrap();
     path
 }
+
+/// The folder a failed external model's error message says is kept: it exists and holds the
+/// model's stdout.txt and stderr.txt; returned: the folder, its file names (sorted), the two
+/// texts. The folder is removed here.
+pub fn take_kept_folder(message: &str) -> (PathBuf, Vec<String>, String, String) {
+    let after = message.split("the model's folder is kept: ").nth(1).unwrap_or_else(|| panic!("no folder: {message}"));
+    let folder = PathBuf::from(after.split(", with its stdout.txt").next().unwrap());
+    let read = |f: &str| std::fs::read_to_string(folder.join(f)).unwrap_or_else(|e| panic!("{f} in {folder:?}: {e}"));
+    let (stdout, stderr) = (read("stdout.txt"), read("stderr.txt"));
+    let mut files: Vec<String> =
+        std::fs::read_dir(&folder).unwrap().flatten().map(|e| e.file_name().to_string_lossy().into()).collect();
+    files.sort();
+    std::fs::remove_dir_all(&folder).unwrap();
+    (folder, files, stdout, stderr)
+}
