@@ -172,7 +172,8 @@ pub struct RunOutputs<'a> {
     pub fits: Option<&'a Path>,
 }
 
-/// `creepbench run`: the suites → result folders, then the report from those results.
+/// `creepbench run`: the suites → result folders, then the report from those results; ends with
+/// the gates' verdict and the report's path.
 pub fn run(
     suite_dir: &[PathBuf],
     reference: &Path,
@@ -452,7 +453,8 @@ fn write_whole(path: &Path, text: &str) -> Result<(), Error> {
 }
 
 /// `creepbench check`: run the suite, compare with golden/ (or `against`) and the references;
-/// print the worst point per scene and solver; write the verdict files asked for; fail on gated
+/// print the verdict first, then one screen (console: per suite and model, scenes without data,
+/// the worst drifts; everything with `verbose`); write the verdict files asked for; fail on gated
 /// drift.
 pub fn check(
     suite_dir: &[PathBuf],
@@ -525,9 +527,9 @@ pub fn check(
     }
 }
 
-/// A list on stdout after a blank line, under its heading (none when empty).
+/// A list on stdout after a blank line, under its heading (nothing for no heading and no lines).
 fn print_list(head: &str, lines: &[String]) {
-    if lines.is_empty() {
+    if head.is_empty() && lines.is_empty() {
         return;
     }
     println!();
