@@ -4,6 +4,7 @@ use crate::calibration::fit::record::FitRecord;
 use crate::calibration::fit::spec::FitSpec;
 use crate::calibration::section as calibration;
 use crate::comparison::compare::{self, Against, Finding};
+use crate::comparison::console::{self, Verdict};
 use crate::comparison::references::References;
 use crate::comparison::tolerance_file::{self, Loosening, Rule};
 use crate::comparison::tolerances;
@@ -15,6 +16,7 @@ use crate::report::{ladder, registry, sections};
 use crate::safety::{folder, guard, lock};
 use crate::suite::results::{self, StoredScene};
 use crate::suite::{self, Shard};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -128,6 +130,18 @@ pub fn build_report(
     fits: &[FitRecord],
     missing: Vec<Finding>,
 ) -> Result<PathBuf, Error> {
+    report_with_verdict(scenes, refs, out, (golden, rules), fits, missing).map(|(md, _)| md)
+}
+
+/// [`build_report`], also returning the gates' verdict over the report's findings.
+fn report_with_verdict(
+    scenes: &[StoredScene],
+    refs: &References,
+    out: &Path,
+    (golden, rules): (Option<&Path>, &[Rule]),
+    fits: &[FitRecord],
+    missing: Vec<Finding>,
+) -> Result<(PathBuf, Verdict), Error> {
     let mut findings = compare::evaluate(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
     findings.extend(missing);
     let loosened = tolerance_file::apply(rules, &mut findings, |_| false)?;
@@ -147,7 +161,7 @@ pub fn build_report(
     std::fs::create_dir_all(out).map_err(Error::io(out))?;
     report.write(out)?;
     table::write(out, &table::rows(scenes, &findings)).map_err(Error::io(out.join("results.csv")))?;
-    Ok(out.join("validation.md"))
+    Ok((out.join("validation.md"), Verdict::of(&findings)))
 }
 
 /// Where `creepbench run` writes: the result folders, the report, and the fits it runs.
@@ -158,7 +172,8 @@ pub struct RunOutputs<'a> {
     pub fits: Option<&'a Path>,
 }
 
-/// `creepbench run`: the suites → result folders, then the report from those results.
+/// `creepbench run`: the suites → result folders, then the report from those results; ends with
+/// the gates' verdict and the report's path.
 pub fn run(
     suite_dir: &[PathBuf],
     reference: &Path,
@@ -197,8 +212,9 @@ pub fn run(
     let stored = read_results(&[results_dir.to_path_buf()])?;
     let rules = file_rules(&[], suite_dir)?;
     let records = read_fit_records(&[results_dir.to_path_buf()])?;
-    let md = build_report(&stored, &refs, report_dir, Some(golden), &rules, &records, Vec::new())?;
-    println!("{}", md.display());
+    let (md, verdict) = report_with_verdict(&stored, &refs, report_dir, (Some(golden), &rules), &records, Vec::new())?;
+    println!("gates: {verdict}");
+    println!("report: {}", md.display());
     Ok(())
 }
 
@@ -353,8 +369,10 @@ pub fn merge(
     for f in &missing {
         eprintln!("MISSING scene {}: {}", f.scene, crate::comparison::gate_output::describe(f));
     }
-    let md = build_report(&scenes, &refs, report_dir, Some(golden), &rules, &read_fit_records(dirs)?, missing)?;
-    println!("{}", md.display());
+    let fits = read_fit_records(dirs)?;
+    let (md, verdict) = report_with_verdict(&scenes, &refs, report_dir, (Some(golden), &rules), &fits, missing)?;
+    println!("gates: {verdict}");
+    println!("report: {}", md.display());
     if n_missing > 0 {
         return Err(Error::Drift { count: n_missing });
     }
@@ -386,6 +404,8 @@ pub struct GateFiles {
     pub summary: Option<PathBuf>,
     /// Refuse every rule that loosens a comparison the defaults gate (CI).
     pub strict: bool,
+    /// Print the full worst-point table and every drift (the console shows one screen otherwise).
+    pub verbose: bool,
 }
 
 impl GateFiles {
@@ -433,7 +453,8 @@ fn write_whole(path: &Path, text: &str) -> Result<(), Error> {
 }
 
 /// `creepbench check`: run the suite, compare with golden/ (or `against`) and the references;
-/// print the worst point per scene and solver; write the verdict files asked for; fail on gated
+/// print the verdict first, then one screen (console: per suite and model, scenes without data,
+/// the worst drifts; everything with `verbose`); write the verdict files asked for; fail on gated
 /// drift.
 pub fn check(
     suite_dir: &[PathBuf],
@@ -475,42 +496,48 @@ pub fn check(
             return Err(InputError::new(&l.origin, l.to_string(), "no loosening of a default gate (--strict)").into());
         }
     }
-    let worst = compare::worst_per_group(&all);
-    print!("{}", compare::table(&worst));
+    let suite_of: BTreeMap<String, String> = scenes.iter().map(|s| (s.name.clone(), s.scene.suite.clone())).collect();
+    let verdict = Verdict::of(&all);
+    println!("{verdict}\n");
+    print!("{}", console::per_model(&all, &suite_of));
+    if files.verbose {
+        println!();
+        print!("{}", compare::table(&compare::worst_per_group(&all)));
+    }
+    print_list("", &console::no_baseline(&all, files.verbose));
     if !loosened.is_empty() {
         println!("\n{} rule(s) of the run's files loosen what the defaults gate:", loosened.len());
         for l in &loosened {
             println!("  {l}");
         }
     }
-    let fails = compare::failures(&all);
-    let gated = all.iter().filter(|f| f.gated).count();
     if against.is_some() {
-        let mut moved: Vec<&Finding> = all.iter().filter(|f| f.against == Against::Previous && f.diff > 0.0).collect();
-        println!("\n{} quantities moved against {} (largest first):", moved.len(), baseline.0.display());
-        moved.sort_by(|a, b| b.diff.total_cmp(&a.diff));
-        for f in moved.iter().take(30) {
-            println!(
-                "  {} {} {} step {}: {} -> {} (|diff| {:.3e})",
-                f.scene,
-                f.solver,
-                f.quantity,
-                f.step.map(|s| s.to_string()).unwrap_or("-".into()),
-                f.theirs,
-                f.ours,
-                f.diff
-            );
-        }
+        let (n, lines) = console::moved(&all, files.verbose);
+        let head = format!("{n} quantities moved against {} (worst first, |diff| / allowed):", baseline.0.display());
+        print_list(&head, &lines);
     }
-    println!("\n{} gated comparisons, {} failed", gated, fails.len());
     files.write(&all, &loosened)?;
-    if fails.is_empty() {
+    if verdict.failed == 0 {
         Ok(())
     } else {
-        for f in &fails {
-            eprintln!("{f}");
+        for line in console::drifts(&all, files.verbose) {
+            eprintln!("{line}");
         }
-        Err(Error::Drift { count: fails.len() })
+        Err(Error::Drift { count: verdict.failed })
+    }
+}
+
+/// A list on stdout after a blank line, under its heading (nothing for no heading and no lines).
+fn print_list(head: &str, lines: &[String]) {
+    if head.is_empty() && lines.is_empty() {
+        return;
+    }
+    println!();
+    if !head.is_empty() {
+        println!("{head}");
+    }
+    for l in lines {
+        println!("  {l}");
     }
 }
 

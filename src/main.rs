@@ -126,6 +126,10 @@ enum Command {
         /// Refuse every tolerance rule that loosens a comparison the defaults gate (for CI).
         #[arg(long)]
         strict: bool,
+        /// Print the full worst-point table (scene x model x comparison) and every drift; by
+        /// default the console shows the verdict, one line per suite and model, and the worst drifts.
+        #[arg(long)]
+        verbose: bool,
     },
     /// Run the suites and write their results into golden/ (the only command that writes golden data).
     Bless {
@@ -189,8 +193,8 @@ fn main() {
             let outputs = commands::RunOutputs { results_dir: &results, report_dir: &report, fits: fits.as_deref() };
             commands::run(&s.suite, &s.reference, outputs, s.shard, &s.golden, !s.quiet)
         }
-        Command::Check { suite: s, against, junit, json, summary, tolerances, strict } => {
-            let files = commands::GateFiles { tolerances, junit, json, summary, strict };
+        Command::Check { suite: s, against, junit, json, summary, tolerances, strict, verbose } => {
+            let files = commands::GateFiles { tolerances, junit, json, summary, strict, verbose };
             commands::check(&s.suite, &s.reference, &s.golden, against.as_deref(), s.shard, !s.quiet, &files)
         }
         Command::Bless { suite: s } => commands::bless(&s.suite, &s.golden, s.shard, !s.quiet),

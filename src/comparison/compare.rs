@@ -22,11 +22,7 @@ pub fn against_results(ours: &StoredScene, theirs: Option<&StoredScene>, against
     for (solver, h) in &ours.histories {
         let ctx = Ctx { scene: &ours.name, solver, against, rules: tolerances::defaults() };
         let Some(th) = theirs.and_then(|t| t.histories.get(solver)) else {
-            let note = format!(
-                "no {} data for this scene and solver (run `creepbench bless` to accept new results)",
-                against.label()
-            );
-            out.push(ctx.unmatched("fx_over_fn", note));
+            out.push(ctx.unmatched("fx_over_fn", no_baseline_note(against)));
             continue;
         };
         if h.extra_columns != th.extra_columns {
@@ -55,6 +51,17 @@ pub fn against_results(ours: &StoredScene, theirs: Option<&StoredScene>, against
         }
     }
     out
+}
+
+/// The note of a scene and solver the baseline has no data for (one place, so the console can
+/// report such scenes once as "no golden data" rather than as unmatched values).
+pub fn no_baseline_note(against: Against) -> String {
+    format!("no {} data for this scene and solver (run `creepbench bless` to accept new results)", against.label())
+}
+
+/// Whether `f` says the baseline has no data for its scene and solver.
+pub fn is_no_baseline(f: &Finding) -> bool {
+    f.diff.is_nan() && f.note == no_baseline_note(f.against)
 }
 
 /// What a baseline holds that this result set does not: solvers, metric values, and a scene.json
@@ -230,23 +237,29 @@ pub fn table(worst: &[Finding]) -> String {
 
 /// One line per gated miss, naming scene, solver, metric, step and both values.
 pub fn failures(findings: &[Finding]) -> Vec<String> {
-    findings
-        .iter()
-        .filter(|f| f.gated && !f.passed())
-        .map(|f| {
-            format!(
-                "DRIFT scene {} solver {} against {} metric {} step {}: ours {} vs {} (|diff| {} > allowed {:e}){}",
-                f.scene,
-                f.solver,
-                f.against.label(),
-                f.quantity,
-                f.step.map(|k| k.to_string()).unwrap_or_else(|| "-".into()),
-                f.ours,
-                f.theirs,
-                f.diff,
-                f.allowed,
-                if f.note.is_empty() { String::new() } else { format!(": {}", f.note) }
-            )
-        })
-        .collect()
+    findings.iter().filter(|f| f.gated && !f.passed()).map(drift_line).collect()
+}
+
+/// A gated miss: scene, solver, metric, step, both values and |diff| against allowed (or why the
+/// values could not be matched).
+pub fn drift_line(f: &Finding) -> String {
+    let head = format!(
+        "DRIFT scene {} solver {} against {} metric {} step {}",
+        f.scene,
+        f.solver,
+        f.against.label(),
+        f.quantity,
+        f.step.map(|k| k.to_string()).unwrap_or_else(|| "-".into()),
+    );
+    if f.diff.is_nan() && f.ours.is_nan() && f.theirs.is_nan() {
+        return format!("{head}: unmatched: {}", f.note);
+    }
+    format!(
+        "{head}: ours {} vs {} (|diff| {} > allowed {:e}){}",
+        f.ours,
+        f.theirs,
+        f.diff,
+        f.allowed,
+        if f.note.is_empty() { String::new() } else { format!(": {}", f.note) }
+    )
 }

@@ -4,6 +4,7 @@
 
 pub mod against;
 pub mod compare;
+pub mod console;
 pub mod delay;
 pub mod finding;
 pub mod gate_output;

@@ -74,11 +74,11 @@ fn external_model_is_run_compared_and_gated() {
     let o = creepbench(&["check", "--suite", "suite", "--reference", refs, "--quiet"], d, &[]);
     assert_eq!(o.status.code(), Some(1), "{}", String::from_utf8_lossy(&o.stdout));
     assert!(String::from_utf8_lossy(&o.stdout).contains("bless"));
-    // Bless, then check passes and prints the worst-point table with the CONTACT rows.
+    // Bless, then check passes and prints (with --verbose) the worst-point table with the CONTACT rows.
     let o = creepbench(&["bless", "--suite", "suite", "--quiet"], d, &[]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(d.join("golden/step_mu04/example.csv").exists());
-    let o = creepbench(&["check", "--suite", "suite", "--reference", refs, "--quiet"], d, &[]);
+    let o = creepbench(&["check", "--suite", "suite", "--reference", refs, "--quiet", "--verbose"], d, &[]);
     let out = String::from_utf8_lossy(&o.stdout);
     assert!(o.status.success(), "{out}\n{}", String::from_utf8_lossy(&o.stderr));
     assert!(out.contains("step_mu04") && out.contains("example") && out.contains("CONTACT"), "{out}");

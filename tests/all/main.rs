@@ -3,6 +3,7 @@
 mod cli;
 mod cli_safety;
 mod common;
+mod console;
 mod contact_export;
 mod contact_solver;
 mod contact_to_csv;
