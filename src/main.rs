@@ -99,7 +99,8 @@ enum Command {
         #[arg(long, default_value = "out/report")]
         report: PathBuf,
         /// Fit files run after the suites (`creepbench fit`), their outcomes in the report's
-        /// calibration section (default: the folder `fits` where there is one).
+        /// calibration section (default: the folder `fits` where there is one, when the shipped
+        /// suites run; a suite of one's own runs no fits unless this is given).
         #[arg(long)]
         fits: Option<PathBuf>,
     },
@@ -189,7 +190,9 @@ fn main() {
         Command::Simulate { scene, solvers, out, golden } => commands::simulate(&scene, &solvers, &out, &golden)
             .map(|dirs| dirs.iter().for_each(|d| println!("{}", d.display()))),
         Command::Run { suite: s, results, report, fits } => {
-            let fits = fits.or_else(|| Some(PathBuf::from("fits")).filter(|d| d.is_dir()));
+            // The shipped fits calibrate on the shipped suites: a suite of one's own runs none unless asked.
+            let shipped = s.suite.iter().map(PathBuf::as_path).eq(DEFAULT_SUITES.iter().map(std::path::Path::new));
+            let fits = fits.or_else(|| Some(PathBuf::from("fits")).filter(|d| shipped && d.is_dir()));
             let outputs = commands::RunOutputs { results_dir: &results, report_dir: &report, fits: fits.as_deref() };
             commands::run(&s.suite, &s.reference, outputs, s.shard, &s.golden, !s.quiet)
         }

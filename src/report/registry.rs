@@ -24,7 +24,11 @@ pub struct SectionDef {
 
 /// Every section, in the report's order.
 pub const SECTIONS: [SectionDef; 10] = [
-    SectionDef { id: "thesis", applies: |_, _| true, render: |s, r| Some(sections::thesis_beside_ours(s, r)) },
+    SectionDef {
+        id: "thesis",
+        applies: |s, _| sections::thesis_applies(s),
+        render: |s, r| Some(sections::thesis_beside_ours(s, r)),
+    },
     SectionDef { id: ladder::ID, applies: |s, _| ladder::applies(s), render: |s, _| ladder::section(s) },
     SectionDef {
         id: "studies",
@@ -38,7 +42,11 @@ pub const SECTIONS: [SectionDef; 10] = [
         render: envelope::nonhertz_section,
     },
     SectionDef { id: "work_precision", applies: |s, _| work_precision::applies(s), render: work_precision::section },
-    SectionDef { id: "grid_convergence", applies: |_, _| true, render: sections::grid_convergence },
+    SectionDef {
+        id: "grid_convergence",
+        applies: |s, _| sections::grid_convergence_applies(s),
+        render: sections::grid_convergence,
+    },
     SectionDef {
         id: "stability",
         applies: |s, _| s.iter().any(|s| s.name.starts_with(sections::STABILITY_SCENES)),

@@ -49,6 +49,16 @@ const TABLE_4_3: [(&str, &str); 4] = [
     ("report_t43_thesis_ellipsoidal", "thesis Eq. 3.5 L, ellipsoidal bound"),
 ];
 
+/// Whether the suite holds a scene the thesis comparison draws (the Hertz radii, Table 4.3).
+pub fn thesis_applies(scenes: &[StoredScene]) -> bool {
+    find(scenes, HERTZ_RADII).is_some() || TABLE_4_3.iter().any(|(name, _)| find(scenes, name).is_some())
+}
+
+/// Whether the suite holds a scene of the grid refinement (the steady exact sweeps).
+pub fn grid_convergence_applies(scenes: &[StoredScene]) -> bool {
+    REFINED.iter().any(|(name, _)| find(scenes, name).is_some())
+}
+
 /// The thesis's own figures beside this project's, with what explains the differences.
 pub fn thesis_beside_ours(scenes: &[StoredScene], refs: &References) -> Section {
     let mut s = String::new();

@@ -276,6 +276,8 @@ fn run_is_identical_with_one_or_two_threads() {
                 suite.to_str().unwrap(),
                 "--reference",
                 root().join("reference").to_str().unwrap(),
+                "--fits",
+                root().join("fits").to_str().unwrap(),
             ])
             .args([
                 "--results",
@@ -301,7 +303,7 @@ fn run_is_identical_with_one_or_two_threads() {
             assert_eq!(a, b, "{name}/{f:?} differs between 1 and 2 threads");
         }
     }
-    // The fits of fits/ (run from the project folder): their stored outcomes are the same bytes too.
+    // The fits of fits/ (asked for with --fits): their stored outcomes are the same bytes too.
     let fits: Vec<_> = std::fs::read_dir(outs[0].join("fits")).unwrap().map(|f| f.unwrap().file_name()).collect();
     assert_eq!(fits.len(), 4, "{fits:?}");
     for f in fits {

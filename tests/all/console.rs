@@ -2,7 +2,7 @@
 //! and model and the worst drifts by |diff| / allowed (at most 20 unless `--verbose`); a scene
 //! without golden data is named once, never as NaN; `run` ends with the verdict and the report.
 
-use crate::common::{root, tempdir};
+use crate::common::{root, scene_text, tempdir};
 use creepbench::comparison::compare::{self, Against, Finding};
 use creepbench::comparison::console::{self, Verdict, CONSOLE_LINES};
 use std::collections::BTreeMap;
@@ -168,4 +168,44 @@ fn check_answers_first_and_run_ends_with_the_verdict() {
     let last: Vec<&str> = out.lines().rev().take(2).collect();
     assert_eq!(last[0], format!("report: {}", rep.join("validation.md").display()), "{out}");
     assert!(last[1].starts_with("gates: FAIL: ") && last[1].ends_with(" failed"), "{out}");
+}
+
+/// A report of a suite of one's own (issue 31): that suite and the sections that apply to it —
+/// no shipped fits run, no thesis table, no CONTACT error table or grid refinement without their
+/// scenes, and a scene without golden data named as such, never with NaN values.
+#[test]
+fn a_report_of_ones_own_suite_shows_that_suite() {
+    let dir = tempdir("console_own_suite");
+    let suite = dir.join("suite");
+    std::fs::create_dir_all(&suite).unwrap();
+    let text = scene_text("my_step", r#"["uba", "fastsim"]"#, 0.4, 22, "kind = \"step\"\nc = 0.005\nsteps = 10", "");
+    std::fs::write(suite.join("my_step.toml"), text).unwrap();
+    let (res, rep) = (dir.join("res"), dir.join("rep"));
+    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(root())
+        .args(["run", "--quiet", "--suite"])
+        .arg(&suite)
+        .arg("--results")
+        .arg(&res)
+        .arg("--report")
+        .arg(&rep)
+        .output()
+        .unwrap();
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(!out.contains("fit ") && !res.join("fits").exists(), "the shipped fits ran: {out}");
+    assert!(out.contains("gates: FAIL: 2 gated comparisons, 2 failed"), "{out}");
+    let md = std::fs::read_to_string(rep.join("validation.md")).unwrap();
+    for absent in [
+        "The thesis's figures beside ours",
+        "Error against CONTACT",
+        "Convergence under grid refinement",
+        "Calibration",
+        "NaN",
+    ] {
+        assert!(!md.contains(absent), "the report of one's own suite shows {absent:?}:\n{md}");
+    }
+    assert!(md.contains("no golden data for this scene and solver"), "{md}");
+    // The models it ran are introduced, not every built-in one.
+    assert!(md.contains("`uba` (") && md.contains("`fastsim` (") && !md.contains("`polach` ("), "{md}");
 }

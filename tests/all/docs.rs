@@ -283,8 +283,12 @@ fn help_and_ci_agree_with_the_readme() {
     }
     assert!(help.contains("the six shipped suites") && help.contains("[default: out/report]"), "{help}");
     let readme = read(&root.join("README.md"));
-    for promise in ["cargo run --release -- run", "cargo test --release", "out/report/validation.md", "Measured from a fresh clone"]
-    {
+    for promise in [
+        "cargo run --release -- run",
+        "cargo test --release",
+        "out/report/validation.md",
+        "Measured from a fresh clone",
+    ] {
         assert!(readme.contains(promise), "README lacks {promise:?}");
     }
     let ci = read(&root.join(".ci/run"));
