@@ -41,6 +41,8 @@ pub fn simulate(scene: &Path, solvers: &[String], out: &Path, golden: &Path) -> 
             eprintln!("warning: {w}");
         }
         let stored = StoredScene::from_result(&result);
+        // Writers into one folder take turns (as `run` does), so two simulations both land.
+        let _lock = lock::lock_folder(out, lock::DEFAULT_LOCK_WAIT)?;
         dirs.push(results::write_scenes(out, std::slice::from_ref(&stored), false)?.remove(0));
         for (h, t) in result.histories.iter().zip(&result.timing) {
             eprintln!("{}: {} rows in {:.3} s", h.solver, h.rows.len(), t.wall_s);

@@ -778,3 +778,30 @@ fn golden_never_goes_missing_while_blesses_follow_each_other() {
     assert_eq!(missing, 0, "golden was missing {missing} times of {looks} looks");
     assert_eq!(read_tree(&golden), version_files(200));
 }
+
+/// `simulate --out DIR` writes under DIR's folder lock, as `run` does (issue 30: every run into a
+/// shared results folder takes the lock): while another writer holds it, nothing is written; once
+/// it is released, the scene lands.
+#[test]
+fn simulate_waits_for_the_results_folder_lock() {
+    let tmp = tempfile::tempdir().unwrap();
+    let (scene, out) = (tmp.path().join("s.toml"), tmp.path().join("out"));
+    fs::write(&scene, scene_text("locked", r#"["fastsim"]"#, 0.3, 11, "kind = \"step\"\nc = 0.001\nsteps = 5", ""))
+        .unwrap();
+    let held = lock_folder(&out, Duration::ZERO).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .arg("simulate")
+        .arg(&scene)
+        .arg("--out")
+        .arg(&out)
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(Duration::from_millis(1500));
+    assert!(child.try_wait().unwrap().is_none(), "simulate finished while the folder was locked");
+    assert!(!out.join("locked").exists(), "simulate wrote while the folder was locked");
+    drop(held);
+    assert!(child.wait().unwrap().success());
+    assert!(out.join("locked").join("fastsim.csv").is_file());
+}
