@@ -152,19 +152,8 @@ fn check_answers_first_and_run_ends_with_the_verdict() {
     assert!(verbose.lines().next() == Some(first) && verbose.contains("against         quantity"), "{verbose}");
     assert!(verbose.lines().count() > out.lines().count(), "{verbose}");
     // run: the gates' verdict and the report's path, last.
-    let (res, rep) = (dir.join("res"), dir.join("rep"));
-    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
-        .current_dir(root())
-        .args(["run", "--quiet", "--suite", "scenes/nonhertz", "--golden"])
-        .arg(&golden)
-        .arg("--results")
-        .arg(&res)
-        .arg("--report")
-        .arg(&rep)
-        .output()
-        .unwrap();
-    let out = String::from_utf8_lossy(&o.stdout);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (_, rep, out) =
+        run_into(&dir, &["--suite".as_ref(), "scenes/nonhertz".as_ref(), "--golden".as_ref(), golden.as_os_str()]);
     let last: Vec<&str> = out.lines().rev().take(2).collect();
     assert_eq!(last[0], format!("report: {}", rep.join("validation.md").display()), "{out}");
     assert!(last[1].starts_with("gates: FAIL: ") && last[1].ends_with(" failed"), "{out}");
@@ -180,19 +169,7 @@ fn a_report_of_ones_own_suite_shows_that_suite() {
     std::fs::create_dir_all(&suite).unwrap();
     let text = scene_text("my_step", r#"["uba", "fastsim"]"#, 0.4, 22, "kind = \"step\"\nc = 0.005\nsteps = 10", "");
     std::fs::write(suite.join("my_step.toml"), text).unwrap();
-    let (res, rep) = (dir.join("res"), dir.join("rep"));
-    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
-        .current_dir(root())
-        .args(["run", "--quiet", "--suite"])
-        .arg(&suite)
-        .arg("--results")
-        .arg(&res)
-        .arg("--report")
-        .arg(&rep)
-        .output()
-        .unwrap();
-    let out = String::from_utf8_lossy(&o.stdout);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (res, rep, out) = run_into(&dir, &["--suite".as_ref(), suite.as_os_str()]);
     assert!(!out.contains("fit ") && !res.join("fits").exists(), "the shipped fits ran: {out}");
     assert!(out.contains("gates: FAIL: 2 gated comparisons, 2 failed"), "{out}");
     let md = std::fs::read_to_string(rep.join("validation.md")).unwrap();
@@ -208,4 +185,22 @@ fn a_report_of_ones_own_suite_shows_that_suite() {
     assert!(md.contains("no golden data for this scene and solver"), "{md}");
     // The models it ran are introduced, not every built-in one.
     assert!(md.contains("`uba` (") && md.contains("`fastsim` (") && !md.contains("`polach` ("), "{md}");
+}
+
+/// `creepbench run --quiet ARGS` from the project folder, results and report in `dir/res` and
+/// `dir/rep`; it must succeed. Returns both folders and its stdout.
+fn run_into(dir: &Path, args: &[&std::ffi::OsStr]) -> (std::path::PathBuf, std::path::PathBuf, String) {
+    let (res, rep) = (dir.join("res"), dir.join("rep"));
+    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(root())
+        .args(["run", "--quiet"])
+        .args(args)
+        .arg("--results")
+        .arg(&res)
+        .arg("--report")
+        .arg(&rep)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    (res, rep, String::from_utf8_lossy(&o.stdout).into_owned())
 }
