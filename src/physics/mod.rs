@@ -1,10 +1,11 @@
 //! Contact physics written once and shared by every solver: material constants, Hertz,
 //! Kalker's coefficients and flexibilities, the grid, the pressure, the rigid slip, the traction
-//! bound, the spin moment, four-lane sums and the elastic half-space (influence coefficients, the normal problem).
+//! bound and the friction law, the spin moment, four-lane sums and the elastic half-space (influence coefficients, the normal problem).
 //!
 //! Units throughout: mm, N, MPa (N/mm²), s; creepages dimensionless, spin in 1/mm.
 
 pub mod bound;
+pub mod friction;
 pub mod geometry;
 pub mod grid;
 pub mod halfspace;
@@ -17,6 +18,7 @@ pub mod pressure;
 pub mod slip;
 
 pub use bound::project_to_bound;
+pub use friction::{FallingTerms, FrictionLaw, Memory};
 pub use geometry::{ContactGeometry, HertzEllipse, Planform};
 pub use grid::{Grid, LeadingEdge};
 pub use hertz::{HertzContact, Radii};

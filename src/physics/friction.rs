@@ -1,0 +1,199 @@
+//! The friction law every model takes its traction bound from: Coulomb's constant μ, or CONTACT's
+//! friction falling with the local slip velocity s [mm/s] (laws L = 2, 3, 4 of `m_friclaw.f90`),
+//! with an optional friction memory (`m_stang.f90` lines 310-335; reference/contact_friction/README.md).
+
+use serde::{Deserialize, Serialize};
+
+/// ln 2, the exponential law's half-value scale (`m_friclaw.f90` line 436).
+const LN_2: f64 = std::f64::consts::LN_2;
+
+/// A friction law μ_s(s): the coefficient of steady sliding at slip velocity s [mm/s].
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "law", rename_all = "lowercase")]
+pub enum FrictionLaw {
+    /// Coulomb: μ_s(s) = μ for every s (CONTACT L = 0 with FSTAT = FKIN).
+    Coulomb { mu: f64 },
+    /// L = 2: FKIN + F1 max(0, 1 − s/(2 S1)) + F2 max(0, 1 − s/(2 S2)).
+    Linear(FallingTerms),
+    /// L = 3: FKIN + F1/(1 + s/S1) + F2/(1 + (s/S2)²).
+    Rational(FallingTerms),
+    /// L = 4: FKIN + F1 exp(−ln2 s/S1) + F2 exp(−ln2 s/S2).
+    Exponential(FallingTerms),
+}
+
+/// CONTACT's parameters of a falling law: FKIN, and two terms (F, SABSH [mm/s]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct FallingTerms {
+    pub fkin: f64,
+    pub f1: f64,
+    pub sabsh1_mm_s: f64,
+    pub f2: f64,
+    pub sabsh2_mm_s: f64,
+}
+
+impl FallingTerms {
+    /// A term's SABSH as CONTACT uses it: max(1e-4, SABSH) when its F < 1e-8 (`m_friclaw.f90` 833-846).
+    fn scale(f: f64, sabsh: f64) -> f64 {
+        if f < 1e-8 {
+            sabsh.max(1e-4)
+        } else {
+            sabsh
+        }
+    }
+}
+
+impl FrictionLaw {
+    /// The static coefficient μ_s(0) = FKIN + F1 + F2 (FSTAT, `m_friclaw.f90` lines 303-305).
+    pub fn mu_static(&self) -> f64 {
+        match self {
+            FrictionLaw::Coulomb { mu } => *mu,
+            FrictionLaw::Linear(t) | FrictionLaw::Rational(t) | FrictionLaw::Exponential(t) => t.fkin + t.f1 + t.f2,
+        }
+    }
+
+    /// Whether μ depends on the slip velocity (every law but Coulomb).
+    pub fn is_falling(&self) -> bool {
+        !matches!(self, FrictionLaw::Coulomb { .. })
+    }
+
+    /// μ_s(s), the steady-sliding coefficient at slip velocity `s_mm_s` ≥ 0
+    /// (`fric_veldep_mu_steady`, `m_friclaw.f90` lines 397-450).
+    #[inline]
+    pub fn mu_steady(&self, s_mm_s: f64) -> f64 {
+        match self {
+            FrictionLaw::Coulomb { mu } => *mu,
+            // m_friclaw.f90 lines 422-426
+            FrictionLaw::Linear(t) => {
+                let term = |f: f64, sh: f64| f * (1.0 - s_mm_s / (2.0 * FallingTerms::scale(f, sh))).max(0.0);
+                t.fkin + term(t.f1, t.sabsh1_mm_s) + term(t.f2, t.sabsh2_mm_s)
+            }
+            // m_friclaw.f90 lines 428-432
+            FrictionLaw::Rational(t) => {
+                let r2 = s_mm_s / FallingTerms::scale(t.f2, t.sabsh2_mm_s);
+                t.fkin + t.f1 / (1.0 + s_mm_s / FallingTerms::scale(t.f1, t.sabsh1_mm_s)) + t.f2 / (1.0 + r2 * r2)
+            }
+            // m_friclaw.f90 lines 434-438
+            FrictionLaw::Exponential(t) => {
+                let term = |f: f64, sh: f64| f * (-LN_2 * s_mm_s / FallingTerms::scale(f, sh)).exp();
+                t.fkin + term(t.f1, t.sabsh1_mm_s) + term(t.f2, t.sabsh2_mm_s)
+            }
+        }
+    }
+}
+
+/// Friction memory: the relaxation distance d_c [mm] and the slip velocity floor s0 [mm/s]
+/// (CONTACT's MEMDST, MEM_S0; user guide "Friction memory").
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Memory {
+    pub memory_mm: f64,
+    pub s0_mm_s: f64,
+}
+
+impl Memory {
+    /// No memory: μ = μ_s(s) at once (CONTACT's MEMDST ≤ 1e-9).
+    pub const NONE: Memory = Memory { memory_mm: 0.0, s0_mm_s: 0.0 };
+
+    /// The weight θ of the previous μ in one backward-Euler step of dμ/dt = −(max(s, s0)/d_c)(μ − μ_s(s)):
+    /// θ = d_c/(d_c + dt max(s, s0)), 0 without memory (`m_stang.f90` lines 318-330).
+    #[inline]
+    pub fn theta(&self, dt_s: f64, s_mm_s: f64) -> f64 {
+        if self.memory_mm <= 1e-9 {
+            0.0
+        } else {
+            self.memory_mm / (self.memory_mm + dt_s * s_mm_s.max(self.s0_mm_s))
+        }
+    }
+
+    /// μ after one step: θ μ_prev + (1 − θ) μ_s(s) (`m_stang.f90` lines 318-335).
+    #[inline]
+    pub fn update(&self, law: &FrictionLaw, mu_prev: f64, dt_s: f64, s_mm_s: f64) -> f64 {
+        let theta = self.theta(dt_s, s_mm_s);
+        let mu_s = law.mu_steady(s_mm_s);
+        if theta == 0.0 {
+            mu_s
+        } else {
+            theta * mu_prev + (1.0 - theta) * mu_s
+        }
+    }
+
+    /// Whether there is a memory (d_c > 1e-9 mm).
+    pub fn is_active(&self) -> bool {
+        self.memory_mm > 1e-9
+    }
+}
+
+impl Default for Memory {
+    fn default() -> Self {
+        Memory::NONE
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn exp() -> FrictionLaw {
+        FrictionLaw::Exponential(FallingTerms { fkin: 0.25, f1: 0.2, sabsh1_mm_s: 600.0, f2: 0.0, sabsh2_mm_s: 0.0 })
+    }
+
+    #[test]
+    fn static_values_are_fkin_plus_terms() {
+        assert_eq!(exp().mu_static(), 0.45);
+        assert_eq!(FrictionLaw::Coulomb { mu: 0.3 }.mu_static(), 0.3);
+        let rat = FrictionLaw::Rational(FallingTerms {
+            fkin: 0.22,
+            f1: 0.15,
+            sabsh1_mm_s: 400.0,
+            f2: 0.08,
+            sabsh2_mm_s: 2500.0,
+        });
+        assert!((rat.mu_static() - 0.45).abs() < 1e-15);
+        assert!((rat.mu_steady(0.0) - 0.45).abs() < 1e-15);
+    }
+
+    #[test]
+    fn exponential_halves_the_term_at_sabsh() {
+        // 0.25 + 0.2 · 2^-1 = 0.35 at s = 600; 0.25 + 0.2 · 2^-2 = 0.30 at s = 1200.
+        assert!((exp().mu_steady(600.0) - 0.35).abs() < 1e-15);
+        assert!((exp().mu_steady(1200.0) - 0.30).abs() < 1e-15);
+    }
+
+    #[test]
+    fn linear_reaches_fkin_at_twice_sabsh() {
+        let lin =
+            FrictionLaw::Linear(FallingTerms { fkin: 0.2, f1: 0.25, sabsh1_mm_s: 800.0, f2: 0.0, sabsh2_mm_s: 0.0 });
+        // 0.2 + 0.25 (1 − 400/1600) = 0.3875; beyond 1600 mm/s FKIN.
+        assert!((lin.mu_steady(400.0) - 0.3875).abs() < 1e-15);
+        assert_eq!(lin.mu_steady(1600.0), 0.2);
+        assert_eq!(lin.mu_steady(5000.0), 0.2);
+    }
+
+    #[test]
+    fn rational_by_hand() {
+        let rat = FrictionLaw::Rational(FallingTerms {
+            fkin: 0.22,
+            f1: 0.15,
+            sabsh1_mm_s: 400.0,
+            f2: 0.08,
+            sabsh2_mm_s: 2500.0,
+        });
+        // s = 400: 0.22 + 0.15/2 + 0.08/(1 + 0.0256) = 0.295 + 0.078003120124805
+        assert!((rat.mu_steady(400.0) - (0.295 + 0.08 / 1.0256)).abs() < 1e-15);
+        // s = 2500: 0.22 + 0.15/7.25 + 0.08/2
+        assert!((rat.mu_steady(2500.0) - (0.26 + 0.15 / 7.25)).abs() < 1e-15);
+    }
+
+    #[test]
+    fn memory_is_a_backward_euler_step() {
+        let m = Memory { memory_mm: 0.01, s0_mm_s: 10.0 };
+        // dt = 1e-4 s, s = 600 mm/s: θ = 0.01/(0.01 + 0.06) = 1/7.
+        let theta = m.theta(1e-4, 600.0);
+        assert!((theta - 1.0 / 7.0).abs() < 1e-15);
+        let mu = m.update(&exp(), 0.45, 1e-4, 600.0);
+        assert!((mu - (0.45 / 7.0 + 6.0 / 7.0 * 0.35)).abs() < 1e-15);
+        // Below s0 the floor sets the rate: θ = 0.01/(0.01 + 1e-4 · 10) = 10/11.
+        assert!((m.theta(1e-4, 0.0) - 10.0 / 11.0).abs() < 1e-15);
+        // Without memory μ = μ_s(s).
+        assert_eq!(Memory::NONE.update(&exp(), 0.45, 1e-4, 600.0), exp().mu_steady(600.0));
+    }
+}
