@@ -44,6 +44,7 @@ pub fn run(
     stepper.load(first)?;
     let setup_s = start.elapsed().as_secs_f64();
     let mut columns: Vec<&str> = def.extra_columns.to_vec();
+    columns.extend(stepper.more_columns());
     if def.iterative {
         columns.push(TERMINATION);
     }

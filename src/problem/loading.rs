@@ -3,6 +3,7 @@
 
 use crate::error::InputError;
 use crate::physics::{ContactGeometry, Grid};
+use crate::scene::table::CreepageTable;
 use crate::scene::{Creepage, InitKind, Scene};
 
 /// A table covers step k when `k dt <= t_end (1 + TABLE_END_REL)`: its last time may be printed
@@ -21,6 +22,10 @@ pub struct Sample {
     pub cs: f64,
     pub fn_n: f64,
     pub mu: f64,
+    /// The rolling speed [mm/s] where it differs per row (a table's `v_mm_s`, a speed sweep);
+    /// `None`: `[rolling] v_mm_s`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub v_mm_s: Option<f64>,
 }
 
 /// Transient history or steady sweep.
@@ -58,8 +63,7 @@ impl Loading {
         grid: &Grid,
         warnings: &mut Vec<String>,
     ) -> Result<Loading, InputError> {
-        let base =
-            Sample { step: 0, t_s: 0.0, cx: 0.0, cy: scene.cy, cs: scene.cs_per_mm, fn_n: scene.fn_n, mu: scene.mu };
+        let base = Sample::nominal(scene);
         let max = scene.limits.max_steps;
         let too_many = |n: f64| {
             InputError::new(
@@ -105,30 +109,26 @@ impl Loading {
                 let s = (1..=*points)
                     .map(|k| {
                         let [cx, cy, cs] = scene.sweep_point(k).unwrap_or_default();
-                        Sample { step: k, t_s: 0.0, cx, cy, cs, ..base }
+                        Sample { step: k, t_s: 0.0, cx, cy, cs, v_mm_s: scene.sweep_speed(k), ..base }
                     })
                     .collect();
                 sweep_direction = Some(*direction);
                 (LoadingKind::Sweep, None, None, s)
+            }
+            Creepage::Table { rows, .. } if rows.v_mm_s.is_some() => {
+                let samples = speed_table(scene, rows, dt_s * scene.v_mm_s, max)?;
+                let initial = Sample {
+                    v_mm_s: Some(rows.interpolate(rows.v_mm_s.as_deref().unwrap_or(&[]), 0.0)),
+                    ..table_row(scene, rows, 0, 0.0)
+                };
+                (LoadingKind::Table, None, Some(initial), samples)
             }
             Creepage::Table { rows, .. } => {
                 let n = table_steps(rows.end_s(), dt_s);
                 if n > max as f64 {
                     return Err(too_many(n));
                 }
-                let at = |k: usize| {
-                    let t = k as f64 * dt_s;
-                    let get = |s: &Option<Vec<f64>>, d: f64| s.as_ref().map_or(d, |v| rows.interpolate(v, t));
-                    Sample {
-                        step: k,
-                        t_s: t,
-                        cx: rows.interpolate(&rows.cx, t),
-                        cy: get(&rows.cy, scene.cy),
-                        cs: get(&rows.cs, scene.cs_per_mm),
-                        fn_n: get(&rows.fn_n, scene.fn_n),
-                        mu: get(&rows.mu, scene.mu),
-                    }
-                };
+                let at = |k: usize| table_row(scene, rows, k, k as f64 * dt_s);
                 if n < 1.0 {
                     return Err(InputError::new(
                         "creepage.file",
@@ -188,6 +188,95 @@ impl Loading {
     /// Largest μ over the rows (a table may vary it).
     pub fn mu_max(&self) -> f64 {
         self.rows().map(|s| s.mu).fold(0.0, f64::max)
+    }
+}
+
+/// The table's loading at step k, time `t` (columns it lacks: the scene's constants).
+fn table_row(scene: &Scene, rows: &CreepageTable, k: usize, t: f64) -> Sample {
+    let get = |s: &Option<Vec<f64>>, d: f64| s.as_ref().map_or(d, |v| rows.interpolate(v, t));
+    Sample {
+        step: k,
+        t_s: t,
+        cx: rows.interpolate(&rows.cx, t),
+        cy: get(&rows.cy, scene.cy),
+        cs: get(&rows.cs, scene.cs_per_mm),
+        fn_n: get(&rows.fn_n, scene.fn_n),
+        mu: get(&rows.mu, scene.mu),
+        v_mm_s: None,
+    }
+}
+
+/// Iterations allowed to find a step's speed in a table with `v_mm_s`.
+const SPEED_ITERATIONS: usize = 200;
+
+/// A table with a speed column: the rolling distance per step stays `dq_mm`, step k lasts
+/// dq/v_k and t_k = t_(k−1) + dq/v_k with v_k the table's speed at t_k (CONTACT's VELOC of the
+/// case, reference/contact_friction/README.md "How the histories are formed"); v_k is the fixed
+/// point of v = V(t_(k−1) + dq/v), reached while the speed changes by less than itself per step.
+fn speed_table(scene: &Scene, rows: &CreepageTable, dq_mm: f64, max: usize) -> Result<Vec<Sample>, InputError> {
+    let speed = rows.v_mm_s.as_deref().unwrap_or(&[]);
+    let end = rows.end_s() * (1.0 + TABLE_END_REL);
+    let (mut t, mut samples) = (0.0, Vec::new());
+    loop {
+        let mut v = rows.interpolate(speed, t);
+        let mut settled = false;
+        for _ in 0..SPEED_ITERATIONS {
+            let next = rows.interpolate(speed, t + dq_mm / v);
+            settled = (next - v).abs() <= 1e-14 * v;
+            v = next;
+            if settled {
+                break;
+            }
+        }
+        if !settled {
+            return Err(InputError::new(
+                "creepage.file column v_mm_s",
+                format!("{v} mm/s near t = {t} s"),
+                "a speed that changes by less than itself within one step dq/v",
+            ));
+        }
+        let t_next = t + dq_mm / v;
+        if t_next > end {
+            break;
+        }
+        if samples.len() >= max {
+            return Err(InputError::new(
+                "creepage",
+                format!("more than {max} steps"),
+                "at most [limits] max_steps steps; [limits] max_steps raises the limit",
+            ));
+        }
+        t = t_next;
+        samples.push(Sample { v_mm_s: Some(v), ..table_row(scene, rows, samples.len() + 1, t) });
+    }
+    if samples.is_empty() {
+        return Err(InputError::new(
+            "creepage.file",
+            format!("table ending at t = {} s", rows.end_s()),
+            "a table reaching at least one step, t >= dq / v",
+        ));
+    }
+    Ok(samples)
+}
+
+impl Sample {
+    /// The scene's loading at t = 0: contact.fn_n, μ, the constant cy and cs, cx = 0.
+    pub fn nominal(scene: &Scene) -> Sample {
+        Sample {
+            step: 0,
+            t_s: 0.0,
+            cx: 0.0,
+            cy: scene.cy,
+            cs: scene.cs_per_mm,
+            fn_n: scene.fn_n,
+            mu: scene.mu,
+            v_mm_s: None,
+        }
+    }
+
+    /// The rolling speed of this row [mm/s]: its own, else `rolling`'s.
+    pub fn speed_mm_s(&self, rolling_v_mm_s: f64) -> f64 {
+        self.v_mm_s.unwrap_or(rolling_v_mm_s)
     }
 }
 

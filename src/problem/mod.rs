@@ -13,8 +13,8 @@ pub use resolved::ResolvedScene;
 
 use crate::error::InputError;
 use crate::physics::{
-    CoefficientSource, Coefficients, ContactGeometry, Flexibilities, Grid, HertzContact, Material, PatchFlexibility,
-    Planform,
+    CoefficientSource, Coefficients, ContactGeometry, Flexibilities, FrictionLaw, Grid, HertzContact, Material, Memory,
+    PatchFlexibility, Planform,
 };
 use crate::scene::{ContactSolverOptions, ExternalSolver, Limits, ModelOptions, Scene};
 use std::path::PathBuf;
@@ -103,6 +103,10 @@ pub struct Problem {
     /// The grid's edges in CONTACT's coordinates when the scene gives them (`[grid] x_mm, y_mm`).
     pub grid_edges: Option<([f64; 2], [f64; 2])>,
     pub rolling: Rolling,
+    /// The friction law every model takes its bound from (`[friction]`; Coulomb by default).
+    pub friction: FrictionLaw,
+    /// The friction memory (none by default).
+    pub memory: Memory,
     /// The scene's nominal loading (contact.fn_n, contact.mu, the constant cy and cs).
     pub nominal: Sample,
     pub loading: Loading,
@@ -167,8 +171,7 @@ impl Problem {
         if !geometry.elliptic() {
             check_loads(geometry.as_ref(), &loading, &mut warnings)?;
         }
-        let nominal =
-            Sample { step: 0, t_s: 0.0, cx: 0.0, cy: scene.cy, cs: scene.cs_per_mm, fn_n: scene.fn_n, mu: scene.mu };
+        let nominal = Sample::nominal(scene);
         let problem = Problem {
             name: scene.name.clone(),
             solvers,
@@ -184,6 +187,8 @@ impl Problem {
                 crate::physics::geometry::Extent::Scale(_) => None,
             },
             rolling: Rolling { v_mm_s: scene.v_mm_s, courant: scene.courant, dt_s, dq_mm },
+            friction: scene.friction,
+            memory: scene.memory,
             nominal,
             loading,
             model: scene.model,

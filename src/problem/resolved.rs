@@ -18,6 +18,12 @@ pub struct ResolvedScene {
     pub fn_n: f64,
     /// The scene's nominal μ (`contact.mu`); a table may vary μ per step (`history`).
     pub mu: f64,
+    /// A falling friction law (`[friction]`; absent: Coulomb with `mu`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub friction: Option<crate::physics::FrictionLaw>,
+    /// The friction memory (absent: none).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub memory: Option<crate::physics::Memory>,
     /// Hertz peak pressure 3FN/(2πab) [MPa].
     pub p0_mpa: f64,
     /// Peak of the simplified models' pressure (`model.pressure`) [MPa].
@@ -109,6 +115,8 @@ impl ResolvedScene {
             b_mm: h.b_mm,
             fn_n: h.fn_n,
             mu: p.nominal.mu,
+            friction: p.friction.is_falling().then_some(p.friction),
+            memory: p.memory.is_active().then_some(p.memory),
             p0_mpa: h.p0_mpa(),
             p_model_peak_mpa: p.model.pressure.peak_mpa(h.fn_n, h.a_mm, h.b_mm),
             g_mpa: p.material.g_mpa,

@@ -37,8 +37,9 @@ pub enum Creepage {
     /// Steady rolling at `points` evenly spaced t from `from` to `to` — or at the listed t of
     /// `at` (then `from`, `to` are its first and last) — at the creepage `[cx, cy, cs] +
     /// t·direction` (cy, cs the scene's constants; see [`Scene::sweep_point`]).
-    Sweep { from: f64, to: f64, points: usize, direction: [f64; 3], cx: f64, at: Option<Vec<f64>> },
-    /// A CSV table `t_s,cx[,cy,cs,fn_n,mu]`, interpolated at t_k = k dt up to its last time
+    /// With `speed` (`over = "v_mm_s"`) t is the rolling speed [mm/s] and the creepages are held.
+    Sweep { from: f64, to: f64, points: usize, direction: [f64; 3], cx: f64, at: Option<Vec<f64>>, speed: bool },
+    /// A CSV table `t_s,cx[,cy,cs,fn_n,mu,v_mm_s]`, interpolated at t_k = k dt up to its last time
     /// (within `problem::loading::TABLE_END_REL`).
     Table { file: PathBuf, rows: table::CreepageTable },
 }
@@ -96,6 +97,44 @@ pub struct ContactSolverOptions {
     /// The first transient step after a steady start where μ or FN changed there.
     #[serde(default, skip_serializing_if = "SteadyRestart::is_default")]
     pub steady_restart: SteadyRestart,
+    /// Falling friction: stop the slip-velocity fixed point when rms(s_new − s) ≤ this · rms(s_new).
+    #[serde(default = "veldep_tolerance", skip_serializing_if = "is_veldep_tolerance")]
+    pub veldep_tolerance: f64,
+    /// Falling friction: where the slip-velocity fixed point starts (CONTACT's INISLP).
+    #[serde(default, skip_serializing_if = "InitialSlip::is_default")]
+    pub inislp: InitialSlip,
+}
+
+/// Default `[contact_solver] veldep_tolerance`.
+pub const VELDEP_TOLERANCE: f64 = 1e-9;
+
+fn veldep_tolerance() -> f64 {
+    VELDEP_TOLERANCE
+}
+
+fn is_veldep_tolerance(v: &f64) -> bool {
+    *v == VELDEP_TOLERANCE
+}
+
+/// The start of the slip-velocity fixed point with falling friction (`[contact_solver] inislp`,
+/// CONTACT's INISLP, `m_stang.f90` lines 258-264; its user guide states the signs the wrong way round).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum InitialSlip {
+    /// INISLP = 0 (default): the previous step's slip velocity moved by dq; 0 in steady rolling
+    /// and in the first step from zero.
+    #[default]
+    Previous,
+    /// INISLP = +1: from s = 0 ("from below"): the low-slip solution where there are several.
+    Below,
+    /// INISLP = −1: from s = V ("from above"): the high-slip solution.
+    Above,
+}
+
+impl InitialSlip {
+    pub fn is_default(&self) -> bool {
+        *self == InitialSlip::default()
+    }
 }
 
 /// What the exact solver's first transient step after a steady start does where μ or FN changed
@@ -121,7 +160,13 @@ impl SteadyRestart {
 
 impl Default for ContactSolverOptions {
     fn default() -> Self {
-        Self { tolerance: 1e-7, max_iterations: 1000, steady_restart: SteadyRestart::Contact }
+        Self {
+            tolerance: 1e-7,
+            max_iterations: 1000,
+            steady_restart: SteadyRestart::Contact,
+            veldep_tolerance: VELDEP_TOLERANCE,
+            inislp: InitialSlip::Previous,
+        }
     }
 }
 
@@ -166,7 +211,12 @@ pub struct Scene {
     pub metrics: Option<toml::Value>,
     pub geometry: GeometrySpec,
     pub fn_n: f64,
+    /// Coulomb's μ, or a falling law's static value FKIN + F1 + F2.
     pub mu: f64,
+    /// The friction law (`[friction]`; Coulomb with `mu` when absent).
+    pub friction: crate::physics::FrictionLaw,
+    /// The friction memory (`[friction] memory_mm`; none when absent).
+    pub memory: crate::physics::Memory,
     pub material: MaterialSpec,
     pub mx: usize,
     pub my: usize,
@@ -195,6 +245,8 @@ pub struct Scene {
 
 const CREEPAGE_LIMIT: Range = Range::new(-1.0, true, 1.0, true);
 const SPIN_LIMIT: Range = Range::new(-10.0, true, 10.0, true);
+/// A rolling speed [mm/s] (`[rolling] v_mm_s`, a table's or a sweep's).
+pub const SPEED_LIMIT: Range = Range::new(0.0, false, 1e6, true);
 /// Any finite number (a sweep's parameter and direction; the points are checked).
 const FINITE: Range = Range::new(f64::NEG_INFINITY, false, f64::INFINITY, false);
 /// `[grid] scale`: the grid's extent in nominal semi-axes.
@@ -207,6 +259,20 @@ fn compact(v: f64) -> String {
     } else {
         format!("{v}")
     }
+}
+
+/// A speed sweep's speeds (`from`, `to` or each of `at`) within `[rolling] v_mm_s`'s range.
+fn check_speeds(speeds: &[(String, f64)]) -> Result<(), InputError> {
+    for (key, v) in speeds.iter().map(|(k, v)| (k, *v)) {
+        if !SPEED_LIMIT.contains(v) {
+            return Err(InputError::new(
+                format!("creepage.{key}"),
+                compact(v),
+                format!("a speed sweep's speeds {} [mm/s] (from, to or each of at)", SPEED_LIMIT.describe()),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// A scene or external model name: 1 to 100 characters of `[a-z0-9_]`.
@@ -243,6 +309,7 @@ impl Scene {
             None => None,
         };
         let contact = sections::contact(&mut top, element_geometry)?;
+        let friction = sections::friction(&mut top, contact.mu)?;
         let material = sections::material(&mut top)?;
         let (v_mm_s, courant) = sections::rolling(&mut top)?;
         let loading = sections::creepage(&mut top, dir)?;
@@ -257,7 +324,9 @@ impl Scene {
             metrics,
             geometry: contact.geometry,
             fn_n: contact.fn_n,
-            mu: contact.mu,
+            mu: friction.mu_static,
+            friction: friction.law,
+            memory: friction.memory,
             material,
             mx: grid.mx,
             my: grid.my,
@@ -278,6 +347,7 @@ impl Scene {
             studies: Vec::new(),
         };
         scene.check_sweep_points()?;
+        scene.check_table_friction()?;
         Ok(scene)
     }
 
@@ -286,7 +356,7 @@ impl Scene {
     /// constant and a zero constant gives d·t, bit for bit: the cx sweep gives exactly the
     /// cx = from + (to − from)·(k − 1)/(points − 1) of scenes written before `over`/`direction`.
     pub fn sweep_point(&self, k: usize) -> Option<[f64; 3]> {
-        let Creepage::Sweep { from, to, points, direction, cx, at } = &self.creepage else {
+        let Creepage::Sweep { from, to, points, direction, cx, at, .. } = &self.creepage else {
             return None;
         };
         let f = if *points > 1 { (k - 1) as f64 / (*points - 1) as f64 } else { 0.0 };
@@ -306,13 +376,46 @@ impl Scene {
         Some([add(*cx, direction[0]), add(self.cy, direction[1]), add(self.cs_per_mm, direction[2])])
     }
 
+    /// Rolling speed [mm/s] of sweep point k of a speed sweep (`over = "v_mm_s"`), else `None`.
+    pub fn sweep_speed(&self, k: usize) -> Option<f64> {
+        let Creepage::Sweep { from, to, points, at, speed: true, .. } = &self.creepage else {
+            return None;
+        };
+        let f = if *points > 1 { (k - 1) as f64 / (*points - 1) as f64 } else { 0.0 };
+        match at {
+            Some(list) => list.get(k.checked_sub(1)?).copied(),
+            None => Some(from + (to - from) * f),
+        }
+    }
+
+    /// A falling law gives μ itself: a table may not vary it (`mu` column).
+    fn check_table_friction(&self) -> Result<(), InputError> {
+        if let Creepage::Table { file, rows } = &self.creepage {
+            if rows.mu.is_some() && self.friction.is_falling() {
+                return Err(InputError::new(
+                    format!("creepage.file ({})", file.display()),
+                    "a column mu",
+                    "no mu column with a falling [friction] law (the law gives mu)",
+                ));
+            }
+        }
+        Ok(())
+    }
+
     /// Every sweep point within the creepage ranges. Evenly spaced points are monotone in t, so
     /// the first and the last (computed as they are sampled) bound them all and the error names
     /// the end; a list `at` is checked point by point and the error names the entry.
     fn check_sweep_points(&self) -> Result<(), InputError> {
-        let Creepage::Sweep { from, to, points, at, .. } = &self.creepage else {
+        let Creepage::Sweep { from, to, points, at, speed, .. } = &self.creepage else {
             return Ok(());
         };
+        if *speed {
+            let named: Vec<(String, f64)> = match at {
+                Some(list) => list.iter().enumerate().map(|(n, &v)| (format!("at[{n}]"), v)).collect(),
+                None => vec![("from".into(), *from), ("to".into(), *to)],
+            };
+            return check_speeds(&named);
+        }
         let checked: Vec<(usize, String, f64)> = match at {
             Some(list) => list.iter().enumerate().map(|(n, &t)| (n + 1, format!("at[{n}]"), t)).collect(),
             None if *points == 1 => vec![(1, "from".into(), *from)],

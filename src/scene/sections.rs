@@ -4,12 +4,15 @@
 
 use super::reader::{Deferred, Range, Section};
 use super::{
-    is_valid_name, table, ContactSolverOptions, Creepage, ExternalSolver, InitKind, Limits, MaterialSpec, ModelOptions,
-    SteadyRestart, CREEPAGE_LIMIT, FINITE, GRID_SCALE, HARD_MAX_STEPS, MAX_ELEMENTS_PER_AXIS, SPIN_LIMIT,
+    is_valid_name, table, ContactSolverOptions, Creepage, ExternalSolver, InitKind, InitialSlip, Limits, MaterialSpec,
+    ModelOptions, SteadyRestart, CREEPAGE_LIMIT, FINITE, GRID_SCALE, HARD_MAX_STEPS, MAX_ELEMENTS_PER_AXIS, SPIN_LIMIT,
 };
 use crate::error::InputError;
 use crate::physics::geometry::{Extent, GeometrySpec};
-use crate::physics::{CoefficientSource, FlexibilityModel, LeadingEdge, PatchFlexibility, PressureShape, Radii};
+use crate::physics::{
+    CoefficientSource, FallingTerms, FlexibilityModel, FrictionLaw, LeadingEdge, Memory, PatchFlexibility,
+    PressureShape, Radii,
+};
 use std::path::Path;
 
 /// `[grid]`: its element counts, its scale and the potential contact's extent.
@@ -24,7 +27,15 @@ pub struct GridSpec {
 pub struct ContactSpec {
     pub geometry: GeometrySpec,
     pub fn_n: f64,
-    pub mu: f64,
+    /// `contact.mu` as given (required with Coulomb's law, optional with a falling one).
+    pub mu: Option<f64>,
+}
+
+/// The friction law (`[friction]`, optional: Coulomb with `contact.mu`) and μ's static value.
+pub struct FrictionSpec {
+    pub law: FrictionLaw,
+    pub memory: Memory,
+    pub mu_static: f64,
 }
 
 /// The loading: the creepage history and the constant lateral and spin creepages.
@@ -123,9 +134,82 @@ pub fn contact(top: &mut Section, element_geometry: Option<GeometrySpec>) -> Res
         None => ellipse(&mut c)?,
     };
     let fn_n = c.f64("fn_n", Range::new(0.0, false, 1e9, true))?;
-    let mu = c.f64("mu", Range::new(0.0, false, 1e3, true))?;
+    let mu = c.opt_f64("mu", Range::new(0.0, false, 1e3, true))?;
     c.finish()?;
     Ok(ContactSpec { geometry, fn_n, mu })
+}
+
+/// Relative difference allowed between a given `contact.mu` and a falling law's FKIN + F1 + F2
+/// (the sum is rounded in the last digit: 0.22 + 0.15 + 0.08 = 0.45000000000000007).
+const MU_STATIC_REL: f64 = 1e-12;
+
+/// `[friction]` (optional): the law and its parameters (CONTACT's names), the memory; `mu` is
+/// `contact.mu` as given (required by Coulomb's law; a falling law's static value FKIN + F1 + F2).
+pub fn friction(top: &mut Section, mu: Option<f64>) -> Result<FrictionSpec, InputError> {
+    let Some(mut f) = top.opt_table("friction")? else {
+        return coulomb(mu, Memory::NONE);
+    };
+    let law = f.choice("law", &["coulomb", "linear", "rational", "exponential"])?;
+    let coefficient = Range::new(0.0, true, 1e3, true);
+    let speed = Range::new(0.0, true, 1e9, true);
+    if law == "coulomb" {
+        for key in ["fkin", "f1", "sabsh1_mm_s", "f2", "sabsh2_mm_s", "memory_mm", "memory_s0_mm_s"] {
+            f.refuse(key, "only with a falling law (law = \"linear\", \"rational\" or \"exponential\")")?;
+        }
+        f.finish()?;
+        return coulomb(mu, Memory::NONE);
+    }
+    let terms = FallingTerms {
+        fkin: f.f64("fkin", coefficient)?,
+        f1: f.f64("f1", coefficient)?,
+        sabsh1_mm_s: f.f64("sabsh1_mm_s", Range::new(0.0, false, 1e9, true))?,
+        f2: f.opt_f64("f2", coefficient)?.unwrap_or(0.0),
+        sabsh2_mm_s: f.opt_f64("sabsh2_mm_s", speed)?.unwrap_or(0.0),
+    };
+    if terms.f2 > 0.0 && terms.sabsh2_mm_s <= 0.0 {
+        return Err(InputError::new(
+            f.field("sabsh2_mm_s"),
+            terms.sabsh2_mm_s,
+            "a slip velocity > 0 [mm/s] when f2 > 0",
+        ));
+    }
+    let law = match law {
+        "linear" => FrictionLaw::Linear(terms),
+        "rational" => FrictionLaw::Rational(terms),
+        _ => FrictionLaw::Exponential(terms),
+    };
+    let memory = match f.opt_f64("memory_mm", Range::new(0.0, true, 1e4, true))? {
+        Some(memory_mm) => Memory { memory_mm, s0_mm_s: f.opt_f64("memory_s0_mm_s", speed)?.unwrap_or(0.0) },
+        None => {
+            f.refuse("memory_s0_mm_s", "only with memory_mm (the memory's relaxation distance)")?;
+            Memory::NONE
+        }
+    };
+    let mu_static = law.mu_static();
+    if !(mu_static > 0.0 && mu_static <= 1e3) {
+        return Err(InputError::new(f.field("fkin"), mu_static, "a static value fkin + f1 + f2 in (0, 1000]"));
+    }
+    f.finish()?;
+    if let Some(given) = mu {
+        if (given - mu_static).abs() > MU_STATIC_REL * mu_static {
+            return Err(InputError::new(
+                "contact.mu",
+                given,
+                format!(
+                    "left out with a falling friction law, or equal to its static value fkin + f1 + f2 = {mu_static}"
+                ),
+            ));
+        }
+    }
+    Ok(FrictionSpec { law, memory, mu_static })
+}
+
+/// Coulomb's law with `contact.mu` (required).
+fn coulomb(mu: Option<f64>, memory: Memory) -> Result<FrictionSpec, InputError> {
+    let mu = mu.ok_or_else(|| {
+        InputError::new("contact.mu", "missing", "a coefficient of friction in (0, 1000] (or a falling [friction] law)")
+    })?;
+    Ok(FrictionSpec { law: FrictionLaw::Coulomb { mu }, memory, mu_static: mu })
 }
 
 /// `[contact]` semi-axes `a_mm, b_mm`, or the radii `r_wx_mm, r_wy_mm, r_ry_mm` (not both).
@@ -174,7 +258,7 @@ pub fn material(top: &mut Section) -> Result<MaterialSpec, InputError> {
 pub fn rolling(top: &mut Section) -> Result<(f64, f64), InputError> {
     let (mut v_mm_s, mut courant) = (1000.0, 1.0);
     if let Some(mut r) = top.opt_table("rolling")? {
-        v_mm_s = r.opt_f64("v_mm_s", Range::new(0.0, false, 1e6, true))?.unwrap_or(v_mm_s);
+        v_mm_s = r.opt_f64("v_mm_s", super::SPEED_LIMIT)?.unwrap_or(v_mm_s);
         courant = r.opt_f64("courant", Range::new(0.0, false, 100.0, true))?.unwrap_or(courant);
         r.finish()?;
     }
@@ -230,14 +314,20 @@ fn sweep(cr: &mut Section) -> Result<Creepage, InputError> {
         }
         None => (cr.f64("from", FINITE)?, cr.f64("to", FINITE)?, cr.usize("points", 1, HARD_MAX_STEPS)?),
     };
-    let direction = sweep_direction(cr)?;
+    let speed = cr.opt_choice("over", &["cx", "cy", "cs", "v_mm_s"])? == Some("v_mm_s");
+    let direction = if speed {
+        cr.refuse("direction", "not with over = \"v_mm_s\" (a speed sweep holds the creepages)")?;
+        [0.0; 3]
+    } else {
+        sweep_direction(cr)?
+    };
     let cx = cr.opt_f64("cx", CREEPAGE_LIMIT)?.unwrap_or(0.0);
-    Ok(Creepage::Sweep { from, to, points, direction, cx, at })
+    Ok(Creepage::Sweep { from, to, points, direction, cx, at, speed })
 }
 
 /// A sweep's direction in (cx, cy, cs): `over` one creepage, or `direction` (not both; default cx).
 fn sweep_direction(cr: &mut Section) -> Result<[f64; 3], InputError> {
-    let over = cr.opt_choice("over", &["cx", "cy", "cs"])?;
+    let over = cr.opt_choice("over", &["cx", "cy", "cs", "v_mm_s"])?;
     Ok(match (over, cr.opt_f64_array::<3>("direction", FINITE)?) {
         (Some(o), Some(d)) => {
             return Err(InputError::new(
@@ -331,6 +421,16 @@ pub fn contact_solver(top: &mut Section) -> Result<ContactSolverOptions, InputEr
         if let Some(r) = cs.opt_choice("steady_restart", &["contact", "converged"])? {
             contact_solver.steady_restart =
                 if r == "contact" { SteadyRestart::Contact } else { SteadyRestart::Converged };
+        }
+        if let Some(t) = cs.opt_f64("veldep_tolerance", Range::new(1e-14, true, 1e-2, true))? {
+            contact_solver.veldep_tolerance = t;
+        }
+        if let Some(start) = cs.opt_choice("inislp", &["previous", "below", "above"])? {
+            contact_solver.inislp = match start {
+                "below" => InitialSlip::Below,
+                "above" => InitialSlip::Above,
+                _ => InitialSlip::Previous,
+            };
         }
         cs.finish()?;
     }

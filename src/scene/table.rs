@@ -1,10 +1,10 @@
-//! The `table` creepage kind: a CSV `t_s,cx[,cy,cs,fn_n,mu]` read and validated row by row.
+//! The `table` creepage kind: a CSV `t_s,cx[,cy,cs,fn_n,mu,v_mm_s]` read and validated row by row.
 
 use crate::error::InputError;
 use std::path::Path;
 
 /// Columns a creepage table may have; `t_s` and `cx` are required.
-pub const COLUMNS: [&str; 6] = ["t_s", "cx", "cy", "cs", "fn_n", "mu"];
+pub const COLUMNS: [&str; 7] = ["t_s", "cx", "cy", "cs", "fn_n", "mu", "v_mm_s"];
 
 /// A validated table: strictly increasing times, finite values in range.
 #[derive(Debug, Clone, PartialEq)]
@@ -16,6 +16,8 @@ pub struct CreepageTable {
     pub cs: Option<Vec<f64>>,
     pub fn_n: Option<Vec<f64>>,
     pub mu: Option<Vec<f64>>,
+    /// The rolling speed [mm/s]: step k lasts dq/v_k.
+    pub v_mm_s: Option<Vec<f64>>,
 }
 
 impl CreepageTable {
@@ -79,6 +81,7 @@ impl CreepageTable {
                     "t_s" => v.is_finite() && v >= 0.0,
                     "cx" | "cy" => v.is_finite() && v.abs() <= 1.0,
                     "cs" => v.is_finite() && v.abs() <= 10.0,
+                    "v_mm_s" => super::SPEED_LIMIT.contains(v),
                     _ => v.is_finite() && v > 0.0, // fn_n, mu
                 };
                 if !ok {
@@ -86,6 +89,7 @@ impl CreepageTable {
                         "t_s" => "a finite time >= 0",
                         "cx" | "cy" => "a finite creepage in [-1, 1]",
                         "cs" => "a finite spin in [-10, 10] 1/mm",
+                        "v_mm_s" => "a rolling speed in (0, 1e6] mm/s",
                         _ => "a finite number > 0",
                     };
                     return Err(InputError::new(format!("{origin} line {row} column {name}"), v, allowed));
@@ -113,6 +117,7 @@ impl CreepageTable {
             cs: col("cs"),
             fn_n: col("fn_n"),
             mu: col("mu"),
+            v_mm_s: col("v_mm_s"),
             t_s,
         })
     }

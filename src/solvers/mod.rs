@@ -83,8 +83,20 @@ pub fn builtin_names() -> Vec<&'static str> {
 
 /// Every built-in model the problem names must accept it (e.g. the UBA needs courant ≤ 1).
 pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
-    problem.solvers.iter().filter_map(|s| builtin(s)).try_for_each(|m| (m.check)(problem))
+    problem.solvers.iter().filter_map(|s| builtin(s)).try_for_each(|m| {
+        if problem.friction.is_falling() && !FALLING_FRICTION.contains(&m.name) {
+            return Err(InputError::new(
+                "solvers",
+                format!("{:?} with a falling [friction] law", m.name),
+                format!("models that take a falling friction law: {}", FALLING_FRICTION.join(", ")),
+            ));
+        }
+        (m.check)(problem)
+    })
 }
+
+/// The built-in models that take a falling friction law (the others refuse it).
+const FALLING_FRICTION: [&str; 1] = [contact::NAME];
 
 /// Relative cost of running the problem's models, for scheduling only.
 pub fn estimated_cost(problem: &Problem) -> f64 {

@@ -48,4 +48,9 @@ pub trait Stepper {
     fn transient(&mut self, at: &Sample) -> Result<Step, SolveError>;
     /// The traction field of the last solve, if the model has one.
     fn field(&self) -> Option<FieldView<'_>>;
+    /// Columns this run writes after the model's `extra_columns` (their values end `Step::extra`):
+    /// the exact solver's fixed point with falling friction.
+    fn more_columns(&self) -> &'static [&'static str] {
+        &[]
+    }
 }

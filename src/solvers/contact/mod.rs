@@ -12,6 +12,9 @@
 //!   by the same local-change test, Gauss–Seidel sweeps taking over if it stalls. Each transient
 //!   step starts from the last two steps' tractions extrapolated in time.
 //!
+//! [`veldep`]: friction falling with the slip velocity, CONTACT's fixed point on the slip
+//! velocity around the tangential solve, with the friction memory.
+//!
 //! [`stepper`] maps a resolved problem onto them, one sample at a time; [`restart`] is CONTACT's
 //! first transient step after a steady start where μ or FN changed. The undeformed distance
 //! comes from the shared geometry seam, the grid from the shared physics.
@@ -22,6 +25,7 @@ pub mod anderson;
 pub mod restart;
 pub mod stepper;
 pub mod tangential;
+pub mod veldep;
 
 pub use crate::physics::halfspace::{convolution, influence, normal, ContactError};
 

@@ -6,6 +6,7 @@ use super::influence::Kernel;
 use super::normal::{NormalParams, NormalSolver};
 use super::restart::{contact_restart, SteadyRestart, SteadyStart};
 use super::tangential::{StepResult, TangentialParams, TangentialSolver};
+use super::veldep::{Motion, VelDep, VelDepOptions, VelDepOutcome};
 use super::ContactError;
 use crate::error::InputError;
 use crate::physics::moment_sum;
@@ -95,7 +96,18 @@ struct Contact<'a> {
     zero: Vec<f64>,
     /// The steady start's loading, until the first transient step ([`super::restart`]).
     after_steady: Option<SteadyStart>,
+    /// A falling friction law's fixed point on the slip velocity ([`super::veldep`]).
+    veldep: Option<VelDep>,
 }
+
+/// The history's columns of a run with falling friction.
+const VELDEP_COLUMNS: [&str; 4] = ["veldep_iterations", "veldep_converged", "mu_min", "mu_max"];
+
+/// Iteration limit of the slip-velocity fixed point (CONTACT: max(1, MAXIN − 10) = 190).
+const VELDEP_MAX_ITERATIONS: usize = 190;
+
+/// CONTACT's damping of the slip-velocity update (OMGSLP, default 0.5 with G = 0).
+const OMGSLP: f64 = 0.5;
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let (g, m) = (&p.grid, &p.material);
@@ -122,12 +134,23 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
         older: None,
         zero: vec![0.0; g.len()],
         after_steady: None,
+        veldep: p.friction.is_falling().then(|| {
+            let options = VelDepOptions {
+                tolerance: p.contact_solver.veldep_tolerance,
+                max_iterations: VELDEP_MAX_ITERATIONS,
+                initial: p.contact_solver.inislp,
+                omgslp: OMGSLP,
+            };
+            VelDep::new(p.friction, p.memory, options, g.mx, g.len())
+        }),
     }))
 }
 
 impl Contact<'_> {
     fn params(&self, s: &Sample) -> TangentialParams {
-        let mut t = TangentialParams::new(s.mu, s.cx, s.cy, s.cs, self.p.rolling.dq_mm);
+        // With falling friction the bound μ_k pn_k is set per element (`set_bound`), μ = 1.
+        let mu = if self.veldep.is_some() { 1.0 } else { s.mu };
+        let mut t = TangentialParams::new(mu, s.cx, s.cy, s.cs, self.p.rolling.dq_mm);
         t.tol = self.p.contact_solver.tolerance;
         t.max_iter = self.p.contact_solver.max_iterations;
         t
@@ -138,16 +161,86 @@ impl Contact<'_> {
     }
 
     fn record(&mut self, r: StepResult) -> Step {
+        self.record_with(r, None)
+    }
+
+    /// The step's row; with falling friction the fixed point's columns ([`VELDEP_COLUMNS`]), and
+    /// a fixed point that did not converge ends the row at the iteration limit.
+    fn record_with(&mut self, r: StepResult, veldep: Option<VelDepOutcome>) -> Step {
         let l = self.loaded();
-        let step = Step {
+        let mut step = Step {
             fx_over_fn: r.px.iter().sum::<f64>() / l.pn_sum,
             fy_over_fn: r.py.iter().sum::<f64>() / l.pn_sum,
             mz_nmm: moment_sum(&self.p.grid, &r.px, &r.py) * self.p.grid.element_area_mm2(),
             extra: vec![r.n_adhesion as f64, r.n_slip as f64, r.iterations as f64, r.residual, l.pn_max],
             termination: r.termination,
         };
+        if let (Some(o), Some(v)) = (veldep, self.veldep.as_ref()) {
+            let on = l.pn.iter().zip(v.mu()).filter(|(&p, _)| p > 0.0).map(|(_, &m)| m);
+            let (lo, hi) = on.fold((f64::INFINITY, 0.0f64), |(lo, hi), m| (lo.min(m), hi.max(m)));
+            step.extra.extend([o.iterations as f64, f64::from(u8::from(o.converged)), lo, hi]);
+            step.extra[2] = o.inner_iterations as f64;
+            if !o.converged {
+                step.termination = crate::solvers::Termination::IterationLimit;
+            }
+        }
         self.last = Some(r);
         step
+    }
+
+    /// Steady rolling or a transient step with falling friction: the slip-velocity fixed point
+    /// around `solve` (steady: `steady_dx` where dq ≠ dx, dt = dx/V; transient: dt = dq/V).
+    fn veldep_step(&mut self, at: &Sample, steady: bool) -> Result<Step, SolveError> {
+        let params = self.params(at);
+        let v_mm_s = at.speed_mm_s(self.p.rolling.v_mm_s);
+        let (dx, dq) = (self.p.grid.dx_mm, self.p.rolling.dq_mm);
+        let motion = Motion {
+            steady,
+            dt_s: if steady { dx } else { dq } / v_mm_s,
+            v_mm_s,
+            shift_elements: self.p.rolling.courant,
+        };
+        let pn = &self.loaded.as_ref().expect("the sample loop loads before it solves").pn;
+        let veldep = self.veldep.as_mut().expect("veldep_step runs with a falling law");
+        let fail = |source| ContactRunError::Step { step: at.step, source };
+        let (r, outcome) = if steady {
+            let mut params = params;
+            let solver = match self.steady_dx.as_mut() {
+                Some(solver) => {
+                    params.dq_mm = dx;
+                    solver
+                }
+                None => &mut self.tangential,
+            };
+            veldep.step(pn, motion, |g, start| {
+                solver.set_bound(g)?;
+                solver.steady(&params, start)
+            })
+        } else {
+            let (px, py) = match &self.last {
+                Some(r) => (&r.px, &r.py),
+                None => (&self.zero, &self.zero),
+            };
+            let older = self.older.as_ref().map(|(a, b)| (a.as_slice(), b.as_slice()));
+            let tangential = &mut self.tangential;
+            veldep.step(pn, motion, |g, _| {
+                tangential.set_bound(g)?;
+                tangential.transient_step(&params, px, py, older)
+            })
+        }
+        .map_err(fail)?;
+        if r.px.iter().chain(&r.py).any(|v| !v.is_finite()) {
+            return Err(SolveError::NonFinite { step: at.step });
+        }
+        self.older = if steady {
+            None
+        } else {
+            Some(match self.last.take() {
+                Some(prev) => (prev.px, prev.py),
+                None => (self.zero.clone(), self.zero.clone()),
+            })
+        };
+        Ok(self.record_with(r, Some(outcome)))
     }
 }
 
@@ -186,6 +279,9 @@ impl Stepper for Contact<'_> {
     }
 
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        if self.veldep.is_some() {
+            return self.veldep_step(at, true);
+        }
         let mut params = self.params(at);
         let solver = match self.steady_dx.as_mut() {
             Some(solver) => {
@@ -201,6 +297,9 @@ impl Stepper for Contact<'_> {
     }
 
     fn transient(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        if self.veldep.is_some() {
+            return self.veldep_step(at, false);
+        }
         let params = self.params(at);
         let start = self.after_steady.take().filter(|s| s.load_changed(at));
         if let (Some(start), Some(steady), SteadyRestart::Contact) =
@@ -234,6 +333,14 @@ impl Stepper for Contact<'_> {
             None => (self.zero.clone(), self.zero.clone()),
         });
         Ok(self.record(r))
+    }
+
+    fn more_columns(&self) -> &'static [&'static str] {
+        if self.veldep.is_some() {
+            &VELDEP_COLUMNS
+        } else {
+            &[]
+        }
     }
 
     fn field(&self) -> Option<FieldView<'_>> {

@@ -525,6 +525,24 @@ impl TangentialSolver {
         Ok(())
     }
 
+    /// Sets the traction bound per element, `g_k = μ_k pn_k` [MPa], for a friction coefficient
+    /// that varies per element (solve with `mu = 1`): replaces the bound's pressure only, keeping
+    /// the contact area, the work arrays and the warm start. `g` must be positive exactly on the
+    /// contact area set by [`TangentialSolver::set_pressure`].
+    pub fn set_bound(&mut self, g_mpa: &[f64]) -> Result<(), ContactError> {
+        let lay = &mut self.layout;
+        check_grid_array("traction bound", g_mpa, lay.n())?;
+        if let Some(k) = (0..lay.n()).find(|&k| (g_mpa[k] > 0.0) != lay.mask[k]) {
+            return Err(ContactError::OutOfRange {
+                name: "traction bound [MPa]",
+                value: g_mpa[k],
+                requirement: "> 0 exactly on the contact area",
+            });
+        }
+        lay.pn.copy_from_slice(g_mpa);
+        Ok(())
+    }
+
     /// Number of contact elements.
     pub fn n_contact(&self) -> usize {
         self.layout.contact.len()

@@ -1,0 +1,223 @@
+//! Friction falling with the slip velocity in the exact solver: CONTACT's fixed point on the slip
+//! velocity around the tangential solve (`m_stang.f90`, `stang`, lines 240-620;
+//! reference/contact_friction/README.md "How CONTACT solves it"), solved to a stated tolerance.
+//!
+//! Per iteration: μ per element from the slip velocity s by the law and the memory recursion
+//! along each row from the leading edge; the tangential problem with the fixed bound μ_k pn_k;
+//! s_new = |S|/dt (0 outside the contact); stop when rms(s_new − s) ≤ tol·rms(s_new) over the
+//! contact or when no element slips; else s := s_new, damped by OMGSLP in slip elements whose μ
+//! exceeds μ_prev, OMGSLP × 0.8 every 20 iterations while the element division changes.
+//! Axes as the solver's: leading edge at ix = 0, material moving to +x.
+
+use super::tangential::{ElementState, StepResult};
+use super::ContactError;
+use crate::physics::{FrictionLaw, Memory};
+use crate::scene::InitialSlip;
+
+/// The fixed point's options (`[contact_solver]`: `veldep_tolerance`, `veldep_max_iterations`,
+/// `inislp`, `omgslp`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct VelDepOptions {
+    /// Stop when rms(s_new − s) ≤ tolerance · rms(s_new) (CONTACT: a fixed 1e-3).
+    pub tolerance: f64,
+    /// Iteration limit (CONTACT: max(1, MAXIN − 10) = 190).
+    pub max_iterations: usize,
+    /// The start of s (CONTACT's INISLP).
+    pub initial: InitialSlip,
+    /// The damping OMGSLP (CONTACT's default 0.5).
+    pub omgslp: f64,
+}
+
+/// How the fixed point of one step or steady point ended.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct VelDepOutcome {
+    pub iterations: usize,
+    pub converged: bool,
+    /// The last relative change rms(s_new − s)/rms(s_new) (0 when no element slips).
+    pub change: f64,
+    /// Tangential iterations summed over the fixed point's solves.
+    pub inner_iterations: usize,
+}
+
+/// One rolling step as the law sees it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Motion {
+    /// Steady rolling (μ_prev: the upstream element of the same solution) or a transient step
+    /// (μ_prev: the previous step's field moved by dq).
+    pub steady: bool,
+    /// The time of the step [s]: s = |S|/dt (steady rolling: dx/V).
+    pub dt_s: f64,
+    pub v_mm_s: f64,
+    /// The rolling distance per step in elements (transient: how far the previous fields move).
+    pub shift_elements: f64,
+}
+
+/// The law, the memory and the fields the next step starts from.
+pub struct VelDep {
+    law: FrictionLaw,
+    memory: Memory,
+    options: VelDepOptions,
+    mx: usize,
+    /// μ of the last solve per element (all elements; exterior ones relax towards FSTAT).
+    mu: Vec<f64>,
+    /// |S| [mm] of the last solve per element (0 outside the contact).
+    shift_mm: Vec<f64>,
+    /// Whether `mu`, `shift_mm` hold a previous step (else: a start from zero, FSTAT and s = 0).
+    has_previous: bool,
+}
+
+impl VelDep {
+    pub fn new(law: FrictionLaw, memory: Memory, options: VelDepOptions, mx: usize, n: usize) -> VelDep {
+        VelDep { law, memory, options, mx, mu: vec![law.mu_static(); n], shift_mm: vec![0.0; n], has_previous: false }
+    }
+
+    /// The μ field of the last solve.
+    pub fn mu(&self) -> &[f64] {
+        &self.mu
+    }
+
+    /// Solve one step (or steady point) on pressure `pn`: `solve(bound, start)` solves the
+    /// tangential problem with the bound μ_k pn_k [MPa], warm started from `start` (the last
+    /// iterate's tractions) when given.
+    pub fn step(
+        &mut self,
+        pn: &[f64],
+        motion: Motion,
+        mut solve: impl FnMut(&[f64], Option<(&[f64], &[f64])>) -> Result<StepResult, ContactError>,
+    ) -> Result<(StepResult, VelDepOutcome), ContactError> {
+        let n = pn.len();
+        let fstat = self.law.mu_static();
+        // μ_prev of a transient step: the previous step's μ moved by dq (FSTAT entering, and
+        // everywhere after a start from zero; m_sdis.f90 line 303, m_stang.f90 line 309).
+        let moved_mu = match (motion.steady, self.has_previous) {
+            (false, true) => shift_rows(&self.mu, self.mx, motion.shift_elements, fstat),
+            _ => vec![fstat; n],
+        };
+        let mut s = self.initial_slip(pn, motion);
+        let (mut mu, mut mu_prev, mut bound) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        let mut omgslp = self.options.omgslp;
+        let mut last: Option<StepResult> = None;
+        let mut inner = 0;
+        let mut s_new = vec![0.0; n];
+        for it in 1..=self.options.max_iterations {
+            self.friction_field(&s, &moved_mu, motion, &mut mu, &mut mu_prev);
+            for k in 0..n {
+                bound[k] = mu[k] * pn[k];
+            }
+            let start = last.as_ref().map(|r| (r.px.as_slice(), r.py.as_slice()));
+            let r = solve(&bound, start)?;
+            inner += r.iterations;
+            for k in 0..n {
+                s_new[k] = if pn[k] > 0.0 { r.sx[k].hypot(r.sy[k]) / motion.dt_s } else { 0.0 };
+            }
+            let (dif, size) = rms_pair(pn, &s_new, &s);
+            let change = if size > 0.0 { dif / size } else { 0.0 };
+            let converged = dif <= self.options.tolerance * size || r.n_slip == 0;
+            let changed = last.as_ref().is_some_and(|l| l.state != r.state);
+            if converged || it == self.options.max_iterations {
+                let outcome = VelDepOutcome { iterations: it, converged, change, inner_iterations: inner };
+                self.keep(&r, &mu);
+                return Ok((r, outcome));
+            }
+            for k in 0..n {
+                let damp = it > 1 && r.state[k] == ElementState::Slip && mu[k] > mu_prev[k];
+                s[k] = if damp { (omgslp * s_new[k] + (1.0 - omgslp) * s[k]).max(0.0) } else { s_new[k] };
+            }
+            if changed && it % 20 == 0 {
+                omgslp *= 0.8;
+            }
+            last = Some(r);
+        }
+        unreachable!("the loop returns at its last iteration (max_iterations >= 1)")
+    }
+
+    /// The start of s (m_stang.f90 lines 258-264): the previous step's |S|/dt moved by dq
+    /// (`Previous` in a transient step; 0 in steady rolling and from zero), 0, or V everywhere.
+    fn initial_slip(&self, pn: &[f64], motion: Motion) -> Vec<f64> {
+        let n = pn.len();
+        match self.options.initial {
+            InitialSlip::Below => vec![0.0; n],
+            InitialSlip::Above => vec![motion.v_mm_s; n],
+            InitialSlip::Previous if motion.steady || !self.has_previous => vec![0.0; n],
+            InitialSlip::Previous => {
+                let moved = shift_rows(&self.shift_mm, self.mx, motion.shift_elements, 0.0);
+                moved.iter().zip(pn).map(|(&s, &p)| if p > 0.0 { s / motion.dt_s } else { 0.0 }).collect()
+            }
+        }
+    }
+
+    /// μ per element from s: the law and the memory recursion along each row from the leading
+    /// edge (m_stang.f90 lines 296-335); `mu_prev` receives each element's μ_prev.
+    fn friction_field(&self, s: &[f64], moved_mu: &[f64], motion: Motion, mu: &mut [f64], mu_prev: &mut [f64]) {
+        let (mx, fstat) = (self.mx, self.law.mu_static());
+        for (row, (mu_row, prev_row)) in mu.chunks_mut(mx).zip(mu_prev.chunks_mut(mx)).enumerate() {
+            let base = row * mx;
+            let mut upstream = fstat;
+            for i in 0..mx {
+                let before = if motion.steady { upstream } else { moved_mu[base + i] };
+                prev_row[i] = before;
+                mu_row[i] = self.memory.update(&self.law, before, motion.dt_s, s[base + i]);
+                upstream = mu_row[i];
+            }
+        }
+    }
+
+    /// Keep the converged step's μ and |S| for the next step.
+    fn keep(&mut self, r: &StepResult, mu: &[f64]) {
+        self.mu.copy_from_slice(mu);
+        for (k, s) in self.shift_mm.iter_mut().enumerate() {
+            *s = r.sx[k].hypot(r.sy[k]);
+        }
+        self.has_previous = true;
+    }
+}
+
+/// rms over the contact elements (pn > 0) of `a − b` and of `a` (CONTACT's gf3_rms over AllInt).
+fn rms_pair(pn: &[f64], a: &[f64], b: &[f64]) -> (f64, f64) {
+    let (mut d2, mut a2, mut n) = (0.0, 0.0, 0usize);
+    for k in 0..pn.len() {
+        if pn[k] > 0.0 {
+            d2 += (a[k] - b[k]) * (a[k] - b[k]);
+            a2 += a[k] * a[k];
+            n += 1;
+        }
+    }
+    let n = n.max(1) as f64;
+    ((d2 / n).sqrt(), (a2 / n).sqrt())
+}
+
+/// A field moved with the material by `shift` elements along +x (linear between elements for a
+/// fractional shift), `fill` entering at the leading edge (CONTACT's `gf3_dq_shift`).
+fn shift_rows(field: &[f64], mx: usize, shift: f64, fill: f64) -> Vec<f64> {
+    let whole = shift.floor();
+    let frac = shift - whole;
+    let whole = whole as isize;
+    let at = |row: &[f64], i: isize| if i >= 0 && (i as usize) < row.len() { row[i as usize] } else { fill };
+    let mut out = Vec::with_capacity(field.len());
+    for row in field.chunks(mx) {
+        for i in 0..mx as isize {
+            let near = at(row, i - whole);
+            out.push(if frac == 0.0 { near } else { (1.0 - frac) * near + frac * at(row, i - whole - 1) });
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fields_move_downstream_with_fill_at_the_leading_edge() {
+        let f = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0];
+        assert_eq!(shift_rows(&f, 3, 1.0, 0.5), vec![0.5, 1.0, 2.0, 0.5, 4.0, 5.0]);
+        assert_eq!(shift_rows(&f, 3, 0.5, 0.0), vec![0.5, 1.5, 2.5, 2.0, 4.5, 5.5]);
+    }
+
+    #[test]
+    fn rms_over_contact_only() {
+        let (d, a) = rms_pair(&[1.0, 0.0, 1.0], &[3.0, 100.0, 4.0], &[0.0, 0.0, 4.0]);
+        assert!((d - (4.5f64).sqrt()).abs() < 1e-15);
+        assert!((a - (12.5f64).sqrt()).abs() < 1e-15);
+    }
+}
