@@ -47,8 +47,11 @@ impl FrictionCases {
         let folder = dir.join(FOLDER);
         let path = folder.join("cases.csv");
         let empty = |against| EnvelopeCases { against: Some(against), ..EnvelopeCases::default() };
-        let mut out =
-            FrictionCases { published: empty(FRICTION), tight: empty(FRICTION_TIGHT), ungated: empty(FRICTION_UNGATED) };
+        let mut out = FrictionCases {
+            published: empty(FRICTION),
+            tight: empty(FRICTION_TIGHT),
+            ungated: empty(FRICTION_UNGATED),
+        };
         let text = read(&path)?;
         let mut rdr = csv::Reader::from_reader(text.as_bytes());
         let bad = |e: csv::Error| Error::Format { path: path.clone(), source: FormatError::Csv { line: 0, source: e } };
