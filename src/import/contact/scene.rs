@@ -53,7 +53,19 @@ struct History {
 pub fn import_text(file: &str, stem: &str, text: &str) -> Result<Imported, InputError> {
     let cases = deck::parse(file, text)?;
     let mut statuses: Vec<CaseStatus> = cases.iter().map(status).collect();
-    let histories = group(&cases, &mut statuses);
+    // Steady cases whose creepages no sweep reproduces exactly are scenes of one case each.
+    let histories: Vec<History> = group(&cases, &mut statuses)
+        .into_iter()
+        .flat_map(|h| {
+            let points: Vec<[f64; 3]> =
+                h.cases.iter().map(|&k| row(case3(&cases, k))).map(|r| [r[0], r[1], r[2]]).collect();
+            if h.run == Run::Sweep && sweep_of(&points).is_none() {
+                h.cases.iter().map(|&k| History { run: Run::Sweep, cases: vec![k] }).collect()
+            } else {
+                vec![h]
+            }
+        })
+        .collect();
     let mut scenes = Vec::new();
     for h in histories {
         let numbers: Vec<usize> = h.cases.iter().map(|&k| cases[k].number).collect();
@@ -262,7 +274,7 @@ fn sweep_add(c: f64, d: f64, t: f64) -> f64 {
 /// A sweep through the points: (parameter component, direction, constants, t per point), if the
 /// sweep reproduces every point exactly.
 fn sweep_of(points: &[[f64; 3]]) -> Option<(usize, [f64; 3], [f64; 3], Vec<f64>)> {
-    let varies = |j: usize| points.iter().any(|p| p[j] != points[0][j]);
+    let varies = |j: usize| points.iter().any(|p| p[j].to_bits() != points[0][j].to_bits());
     let k = (0..3).find(|&j| varies(j)).unwrap_or(0);
     let last = points[points.len() - 1];
     let mut direction = [0.0; 3];
@@ -277,7 +289,10 @@ fn sweep_of(points: &[[f64; 3]]) -> Option<(usize, [f64; 3], [f64; 3], Vec<f64>)
         }
     }
     let t: Vec<f64> = points.iter().map(|p| p[k]).collect();
-    let exact = points.iter().zip(&t).all(|(p, &t)| (0..3).all(|j| sweep_add(constants[j], direction[j], t) == p[j]));
+    let exact = points
+        .iter()
+        .zip(&t)
+        .all(|(p, &t)| (0..3).all(|j| sweep_add(constants[j], direction[j], t).to_bits() == p[j].to_bits()));
     (exact && direction.iter().all(|d| d.is_finite())).then_some((k, direction, constants, t))
 }
 
@@ -365,13 +380,7 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     match h.run {
         Run::Sweep => {
             let points: Vec<[f64; 3]> = rows.iter().map(|r| [r[0], r[1], r[2]]).collect();
-            let Some((k, direction, constants, t)) = sweep_of(&points) else {
-                return Err(InputError::new(
-                    format!("{file}, cases {} to {}", numbers[0], numbers[1]),
-                    "steady creepages off one line",
-                    "steady cases whose creepages lie on a line [cx, cy, cs] + t·direction (import them as separate decks)",
-                ));
-            };
+            let (k, direction, constants, t) = sweep_of(&points).expect("histories are split where no sweep fits");
             let mut cr = vec![("kind", Value::String("sweep".into())), ("at", floats(&t))];
             let axis = ["cx", "cy", "cs"];
             if direction.iter().filter(|&&d| d != 0.0).count() == 1 {
@@ -380,7 +389,7 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
                 cr.push(("direction", floats(&direction)));
             }
             for (j, key) in axis.iter().enumerate() {
-                if constants[j] != 0.0 {
+                if constants[j].to_bits() != 0 {
                     cr.push((key, Value::Float(constants[j])));
                 }
             }
@@ -388,7 +397,7 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
         }
         Run::Transient { steady_start } => {
             let dt_s = s.dq_mm / s.veloc_mm_s;
-            let varies = |j: usize| rows.iter().any(|r| r[j] != rows[0][j]);
+            let varies = |j: usize| rows.iter().any(|r| r[j].to_bits() != rows[0][j].to_bits());
             let columns: Vec<usize> = (0..5).filter(|&j| j == 0 || varies(j)).collect();
             let names = ["cx", "cy", "cs", "fn_n", "mu"];
             let mut csv = format!("t_s,{}\n", columns.iter().map(|&j| names[j]).collect::<Vec<_>>().join(","));
@@ -400,7 +409,7 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
             let file_name = format!("{name}_table.csv");
             let mut cr = vec![("kind", Value::String("table".into())), ("file", Value::String(file_name.clone()))];
             for (j, key) in [(1, "cy"), (2, "cs")] {
-                if !varies(j) && rows[0][j] != 0.0 {
+                if !varies(j) && rows[0][j].to_bits() != 0 {
                     cr.push((key, Value::Float(rows[0][j])));
                 }
             }
