@@ -15,6 +15,7 @@ pub mod comparison;
 pub mod error;
 pub mod export;
 pub mod history;
+pub mod import;
 pub mod metrics;
 pub mod physics;
 pub mod pipeline;

@@ -47,6 +47,30 @@ enum ExportWhat {
     },
 }
 
+/// What `import` reads.
+#[derive(Subcommand)]
+enum ImportWhat {
+    /// CONTACT module-3 input (FILE.inp) as scenes, one per history: OUT/<deck>_<case>.toml with
+    /// its tables (OUT defaults to a folder named after the deck).
+    Contact {
+        /// The CONTACT input file.
+        deck: PathBuf,
+        /// Output folder (default: a folder named after the deck, in the current folder).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Write the supported scenes and list the skipped cases (default: refuse a deck with any
+        /// case that is not supported, writing nothing).
+        #[arg(long)]
+        supported_only: bool,
+        /// Replace existing files of the same names.
+        #[arg(long)]
+        overwrite: bool,
+        /// Refused as an output location (only `bless` writes there).
+        #[arg(long, default_value = "golden")]
+        golden: PathBuf,
+    },
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Run one scene and write OUT/<name>/{scene.json,<solver>.csv,metrics.csv} (a study file: each of its scenes).
@@ -163,6 +187,11 @@ enum Command {
         #[command(subcommand)]
         what: ExportWhat,
     },
+    /// Read another program's input as scenes.
+    Import {
+        #[command(subcommand)]
+        what: ImportWhat,
+    },
     /// Write DIR/MANIFEST.sha256, the checksums reference data are verified against.
     Manifest {
         /// The folder (default: the reference data).
@@ -207,6 +236,11 @@ fn main() {
         Command::Manifest { dir } => commands::manifest(&dir),
         Command::Export { what: ExportWhat::Contact { scene, out, golden } } => {
             commands::export_contact(&scene, &out, &golden)
+                .map(|ps| ps.iter().for_each(|p| println!("{}", p.display())))
+        }
+        Command::Import { what: ImportWhat::Contact { deck, out, supported_only, overwrite, golden } } => {
+            let options = commands::ImportOptions { supported_only, overwrite };
+            commands::import_contact(&deck, out.as_deref(), options, &golden)
                 .map(|ps| ps.iter().for_each(|p| println!("{}", p.display())))
         }
     };

@@ -21,7 +21,7 @@ const STAGES: &[&[&str]] = &[
     &["comparison"],
     &["report"],
     &["calibration"],
-    &["export"],
+    &["export", "import"],
     &["commands"],
     &["lib", "main"], // the crate roots
 ];
