@@ -7,7 +7,8 @@
 //! [`pipeline`] (wires one scene through them) → [`suite`] (many scenes, result folders) →
 //! [`comparison`] (reference and golden data, tolerances, findings) → [`report`] →
 //! [`calibration`] (fits). [`physics`] is shared by all solvers; [`export`] writes a resolved
-//! scene as another program's input (CONTACT).
+//! scene as another program's input (CONTACT); [`import`] reads another program's files (CONTACT's
+//! printed output).
 
 pub mod calibration;
 pub mod commands;
@@ -15,6 +16,7 @@ pub mod comparison;
 pub mod error;
 pub mod export;
 pub mod history;
+pub mod import;
 pub mod metrics;
 pub mod physics;
 pub mod pipeline;

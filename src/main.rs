@@ -47,6 +47,26 @@ enum ExportWhat {
     },
 }
 
+/// What `import` reads.
+#[derive(Subcommand)]
+enum ImportWhat {
+    /// CONTACT's printed output (.out, .ref_out): each module-3 case's totals as a reference CSV
+    /// (standard output, or --out), this project's signs, each printed value's rounding.
+    ContactOutput {
+        /// CONTACT's output file.
+        file: PathBuf,
+        /// The CSV to write (written whole; default: standard output).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Only the cases A to B (`A-B`, or one case `A`).
+        #[arg(long)]
+        cases: Option<String>,
+        /// Refused as an output location (only `bless` writes there).
+        #[arg(long, default_value = "golden")]
+        golden: PathBuf,
+    },
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Run one scene and write OUT/<name>/{scene.json,<solver>.csv,metrics.csv} (a study file: each of its scenes).
@@ -163,6 +183,11 @@ enum Command {
         #[command(subcommand)]
         what: ExportWhat,
     },
+    /// Read another program's file into this project's formats.
+    Import {
+        #[command(subcommand)]
+        what: ImportWhat,
+    },
     /// Write DIR/MANIFEST.sha256, the checksums reference data are verified against.
     Manifest {
         /// The folder (default: the reference data).
@@ -208,6 +233,9 @@ fn main() {
         Command::Export { what: ExportWhat::Contact { scene, out, golden } } => {
             commands::export_contact(&scene, &out, &golden)
                 .map(|ps| ps.iter().for_each(|p| println!("{}", p.display())))
+        }
+        Command::Import { what: ImportWhat::ContactOutput { file, out, cases, golden } } => {
+            commands::import_contact_output(&file, out.as_deref(), cases.as_deref(), &golden)
         }
     };
     if let Err(e) = result {

@@ -22,6 +22,7 @@ const STAGES: &[&[&str]] = &[
     &["report"],
     &["calibration"],
     &["export"],
+    &["import"],
     &["commands"],
     &["lib", "main"], // the crate roots
 ];
