@@ -8,7 +8,7 @@
 use crate::common::{root, tempdir};
 use creepbench::import::contact_output::printed::{half_unit, Printed};
 use creepbench::import::contact_output::{
-    self, CaseBody, CaseOutput, Frictional, Prescribed, Stepping, Tangential, Totals,
+    self, CaseBody, CaseOutput, Friction, Frictional, Prescribed, Stepping, Tangential, Totals,
 };
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -141,8 +141,8 @@ fn cattaneo_as_printed_with_the_signs_of_body_2() {
     is(t.pn_max_mpa, "4.393");
     is(t.elastic_energy_nmm, "8.525E-05");
     assert_eq!(t.frictional, Frictional::WorkNmm(Printed::parse("-2.750E-06").unwrap()));
-    is(t.fstat.unwrap(), "0.4000");
-    is(t.fkin.unwrap(), "0.4000");
+    let four_tenths = Printed::parse("0.4000").unwrap();
+    assert_eq!(t.friction, Friction::Coulomb { fstat: four_tenths, fkin: four_tenths });
     let s = t.statistics.unwrap();
     assert_eq!((s.npot, s.ncon, s.nadh, s.nslip, s.inorm, s.itang), (361, 177, 45, 132, 1, 1));
     // Case 1: the normal problem alone, creepages prescribed (zero).
@@ -180,7 +180,8 @@ fn rolling_cases_creepages_and_forces_as_printed() {
     // solved for is CREEP X = 2.551E-03; no kinematic block, no statistics.
     let c = read("examples/catt_to_cart.ref_out");
     let t = totals(&c, 10);
-    assert!(t.kinematics.is_none() && t.statistics.is_none() && t.fstat.is_none());
+    assert!(t.kinematics.is_none() && t.statistics.is_none());
+    assert_eq!(t.friction, Friction::NotPrinted);
     assert!(matches!(t.x, Tangential::SolvedCreepage(v) if v == Printed::parse("2.551E-03").unwrap()));
     is(t.cx().unwrap(), "2.551E-03");
     is(t.fn_n, "0.4705");
@@ -198,6 +199,14 @@ fn testbank_module_1_cases_keep_their_numbers() {
     is(t.fn_n, "1722.");
     is(t.fx_n, "452.0");
     is(t.cx().unwrap(), "3.042E-03");
+    // Case 8: friction per row (IY FSTAT FKIN 0.2 … 0.59), so FX/FN instead of FX/FSTAT/FN,
+    // no one mu in the CSV (not the 0.4013 of the case before).
+    let t = totals(&c, 8);
+    assert_eq!(t.friction, Friction::Other);
+    assert!(matches!(t.x, Tangential::ForceOverFn(v) if v == Printed::parse("-0.2563").unwrap()));
+    let (csv, _) = contact_output::reference_csv::write(&c, Some("7-8".parse().unwrap()));
+    let mu: Vec<&str> = csv.lines().skip(1).map(|l| l.split(',').nth(8).unwrap()).collect();
+    assert_eq!(mu, ["0.4013", "NaN"]);
     // Case 25: the totals only, FN = 4.000E+05 (half a unit 50), APPROACH = 2.84688.
     let t = totals(&c, 25);
     assert_eq!(t.fn_n.half_unit, 50.0);
@@ -240,6 +249,15 @@ fn the_script_reads_the_same_numbers() {
     for (p, py) in files.iter().zip(&py) {
         let cases = contact_output::read(p).unwrap();
         assert_eq!(py.len(), cases.len(), "{}: cases", rel(p));
+        // The CSV's mu (FSTAT carried from case to case) is the script's FSTAT, NaN where it has none.
+        let (csv, _) = contact_output::reference_csv::write(&cases, None);
+        for line in csv.lines().skip(1) {
+            let cells: Vec<&str> = line.split(',').collect();
+            let mu: f64 = cells[8].parse().unwrap();
+            let theirs = py[cells[0]].get("FSTAT");
+            assert_eq!(theirs.copied().unwrap_or(f64::NAN).to_bits(), mu.to_bits(), "{} case {} mu", rel(p), cells[0]);
+            compared += 1;
+        }
         for c in &cases {
             let CaseBody::Totals(t) = &c.body else { continue };
             let v = &py[&c.case.to_string()];
@@ -258,7 +276,7 @@ fn the_script_reads_the_same_numbers() {
                 }
                 want.push(("CPHI", k.cphi_per_mm.value));
             }
-            if let Some(f) = t.fstat {
+            if let Some(f) = t.friction.fstat() {
                 want.push(("FSTAT", f.value));
             }
             for (label, ours) in want {
@@ -273,7 +291,7 @@ fn the_script_reads_the_same_numbers() {
             }
         }
     }
-    assert_eq!(compared, 2520, "numbers compared");
+    assert_eq!(compared, 2935, "numbers compared");
 }
 
 fn creepbench(args: &[&str]) -> std::process::Output {

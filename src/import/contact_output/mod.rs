@@ -79,9 +79,8 @@ pub struct Totals {
     pub pn_max_mpa: Printed,
     /// The KINEMATIC CONSTANTS block, printed with OUTPUT ≥ 2.
     pub kinematics: Option<Kinematics>,
-    /// FSTAT and FKIN where the FRICTION LAW PARAMETERS block prints them.
-    pub fstat: Option<Printed>,
-    pub fkin: Option<Printed>,
+    /// The FRICTION LAW PARAMETERS block.
+    pub friction: Friction,
     /// The CONTACT STATISTICS block, printed with OUTPUT ≥ 2.
     pub statistics: Option<Statistics>,
 }
@@ -93,6 +92,27 @@ pub enum Frictional {
     PowerNmmPerS(Printed),
     /// FRIC.WORK [N mm] (shifts, T = 1).
     WorkNmm(Printed),
+}
+
+/// The friction a case prints.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Friction {
+    /// No FRICTION LAW PARAMETERS block (OUTPUT < 2: the friction of an earlier case, or unknown).
+    NotPrinted,
+    /// `FSTAT FKIN`: Coulomb friction, one coefficient for the whole contact.
+    Coulomb { fstat: Printed, fkin: Printed },
+    /// Another law or friction varying per row (`FKIN FEXP1 …`, `IY FSTAT FKIN`): no one μ.
+    Other,
+}
+
+impl Friction {
+    /// FSTAT where it is the contact's one static coefficient.
+    pub fn fstat(&self) -> Option<Printed> {
+        match *self {
+            Friction::Coulomb { fstat, .. } => Some(fstat),
+            _ => None,
+        }
+    }
 }
 
 /// A tangential quantity in the x or y place of the totals' second line.
@@ -248,10 +268,18 @@ fn totals(c: &ScannedCase, t: &Block) -> Result<Totals, ContactOutputError> {
         approach_mm: get(r, "APPROACH")?,
         pn_max_mpa: get(r, "PMAX")?,
         kinematics: c.block(BlockKind::Kinematics).map(|k| kinematics(case, k)).transpose()?,
-        fstat: c.block(BlockKind::Friction).and_then(|f| f.get("FSTAT")),
-        fkin: c.block(BlockKind::Friction).and_then(|f| f.get("FKIN")),
+        friction: friction(c.block(BlockKind::Friction)),
         statistics: c.block(BlockKind::Statistics).map(|s| statistics(case, s)).transpose()?,
     })
+}
+
+/// The FRICTION LAW PARAMETERS block: Coulomb where it prints exactly `FSTAT FKIN`.
+fn friction(f: Option<&Block>) -> Friction {
+    let Some(f) = f else { return Friction::NotPrinted };
+    match (f.values.len(), f.get("FSTAT"), f.get("FKIN")) {
+        (2, Some(fstat), Some(fkin)) => Friction::Coulomb { fstat, fkin },
+        _ => Friction::Other,
+    }
 }
 
 /// The KINEMATIC CONSTANTS block (prescribed forces change sign, as in [`totals`]).

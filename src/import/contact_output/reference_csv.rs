@@ -5,7 +5,7 @@
 //! tolerance in printed units.
 
 use super::printed::Printed;
-use super::{CaseBody, CaseOutput, Frictional, Stepping, Totals};
+use super::{CaseBody, CaseOutput, Friction, Frictional, Stepping, Totals};
 use crate::error::InputError;
 
 /// The columns, in order (the `_rounding` columns follow, for [`ROUNDED`]).
@@ -157,15 +157,20 @@ pub fn header() -> String {
 }
 
 /// The reference CSV of the module-3 cases in `range` (all when None) that printed totals.
-/// CONTACT keeps FSTAT until a case reads it again: `mu` is the last FSTAT printed by a
-/// module-3 case at or before the row's.
+/// CONTACT keeps the friction until a case reads it again: `mu` is the last FSTAT printed by a
+/// module-3 case at or before the row's (NaN after one that printed another law, or per-row
+/// friction).
 pub fn write(cases: &[CaseOutput], range: Option<CaseRange>) -> (String, usize) {
     let mut out = header();
     out.push('\n');
     let (mut mu, mut rows) = (None, 0);
     for c in cases {
         let CaseBody::Totals(t) = &c.body else { continue };
-        mu = t.fstat.or(mu);
+        mu = match t.friction {
+            Friction::Coulomb { fstat, .. } => Some(fstat),
+            Friction::Other => None,
+            Friction::NotPrinted => mu,
+        };
         if range.is_some_and(|r| !r.contains(c.case)) {
             continue;
         }

@@ -15,7 +15,8 @@ pub enum BlockKind {
     Ratios,
     /// `DT VELOC …` or `CHI DQ VELOC …`, then `CKSI CETA CPHI` or the prescribed forces.
     Kinematics,
-    /// `FSTAT FKIN`, or the parameters of another friction law (`FKIN FEXP1 …`).
+    /// `FSTAT FKIN`, or the parameters of another friction law (`FKIN FEXP1 …`) or of friction
+    /// per row (`IY FSTAT FKIN`: its first row only, the block is not Coulomb's).
     Friction,
     /// `NPOT NCON NADH NSLIP [NPLAST] INORM ITANG`.
     Statistics,
@@ -32,7 +33,7 @@ impl BlockKind {
             Some(BlockKind::Ratios)
         } else if has("VELOC") && (starts(&["DT"]) || starts(&["CHI", "DQ"])) {
             Some(BlockKind::Kinematics)
-        } else if starts(&["FSTAT", "FKIN"]) || starts(&["FKIN"]) {
+        } else if has("FKIN") {
             Some(BlockKind::Friction)
         } else if starts(&["NPOT", "NCON", "NADH", "NSLIP"]) {
             Some(BlockKind::Statistics)
