@@ -115,7 +115,9 @@ def out_cases(path):
     """The values CONTACT printed per case, by column name: every line of names followed by a line
     of as many numbers (TOTAL FORCES: FN FX FY MZ ...; KINEMATIC CONSTANTS: ... CKSI CETA CPHI;
     FRICTION LAW PARAMETERS: FSTAT FKIN; CONTACT STATISTICS: NPOT NCON NADH NSLIP ...). FSTAT is
-    carried into cases that keep the previous friction (it is printed only when read)."""
+    carried into cases that keep the previous friction (it is printed only when read), and dropped
+    where a case prints another friction law or friction per row. The project's reader of printed
+    output, `creepbench import contact-output`, reads the same numbers (tests/all/contact_output.rs)."""
     lines = read_text(path).splitlines()
     cases, current = {}, None
     for i, line in enumerate(lines):
@@ -134,6 +136,10 @@ def out_cases(path):
             continue
         values = [number(w) for w in lines[i + 1].split()]
         if len(values) == len(names) and None not in values:
+            if "FKIN" in names and names != ["FSTAT", "FKIN"]:
+                # Another friction law, or friction per row (IY FSTAT FKIN): no one FSTAT.
+                cases[current].pop("FSTAT", None)
+                continue
             cases[current].update(zip(names, values))
     if not cases:
         raise InputProblem(f"{path}: no `Case n` in this file (is it CONTACT's output?)")

@@ -691,3 +691,37 @@ pub struct ImportOptions {
     /// Replace existing files of the same names.
     pub overwrite: bool,
 }
+
+/// `creepbench import contact-output FILE [--out CSV] [--cases A-B]`: the totals CONTACT printed
+/// for each module-3 case as a reference CSV (`import::contact_output::reference_csv`), written
+/// whole to `out` (never inside golden/) or to standard output; a count of the cases on stderr.
+pub fn import_contact_output(file: &Path, out: Option<&Path>, cases: Option<&str>, golden: &Path) -> Result<(), Error> {
+    use crate::import::contact_output::{self, reference_csv, CaseBody};
+    let range = cases.map(str::parse::<reference_csv::CaseRange>).transpose()?;
+    if let Some(path) = out {
+        guard::guard_output_file(path, golden)?;
+    }
+    let all = contact_output::read(file)?;
+    let (csv, rows) = reference_csv::write(&all, range);
+    let count = |f: fn(&CaseBody) -> bool| all.iter().filter(|c| f(&c.body)).count();
+    let module1 = count(|b| matches!(b, CaseBody::Module1));
+    if rows == 0 && range.is_none() {
+        let source = Box::new(contact_output::ContactOutputError::NoTotals { cases: all.len(), module1 });
+        return Err(Error::Import { path: file.to_path_buf(), source });
+    }
+    if rows == 0 {
+        let allowed = "a range holding a module-3 case with printed totals (see the file's `Case n` lines)";
+        return Err(InputError::new("--cases", cases.unwrap_or("(all)"), allowed).into());
+    }
+    match out {
+        Some(path) => write_whole(path, &csv)?,
+        None => print!("{csv}"),
+    }
+    eprintln!(
+        "{}: {} case(s): {rows} row(s) written; {module1} module-1 case(s) not read, {} without totals",
+        file.display(),
+        all.len(),
+        count(|b| matches!(b, CaseBody::Nothing)),
+    );
+    Ok(())
+}

@@ -114,6 +114,9 @@ pub enum Error {
     /// Reference data that do not match their reviewed checksums.
     #[error("{}: {source} (a reviewed change of reference data updates the manifest: `creepbench manifest {}`)", dir.display(), dir.display())]
     Manifest { dir: PathBuf, source: crate::safety::manifest::ManifestError },
+    /// Another program's file that its reader does not accept (`creepbench import`; exit status 2).
+    #[error("{}: {source}", path.display())]
+    Import { path: PathBuf, source: StageError },
     /// The optimiser of `creepbench fit` failed (exit status 1).
     #[error("fit `{fit}`: {source}")]
     Fit { fit: String, source: FitError },
@@ -123,7 +126,7 @@ impl Error {
     /// Process exit status for this error (docs/scene-format.md).
     pub fn exit_code(&self) -> i32 {
         match self {
-            Error::Input(_) | Error::Guard(_) => 2,
+            Error::Input(_) | Error::Guard(_) | Error::Import { .. } => 2,
             _ => 1,
         }
     }

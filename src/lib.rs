@@ -7,7 +7,8 @@
 //! [`pipeline`] (wires one scene through them) → [`suite`] (many scenes, result folders) →
 //! [`comparison`] (reference and golden data, tolerances, findings) → [`report`] →
 //! [`calibration`] (fits). [`physics`] is shared by all solvers; [`export`] writes a resolved
-//! scene as another program's input (CONTACT).
+//! scene as another program's input (CONTACT); [`import`] reads another program's files (CONTACT's
+//! printed output).
 
 pub mod calibration;
 pub mod commands;

@@ -69,6 +69,21 @@ enum ImportWhat {
         #[arg(long, default_value = "golden")]
         golden: PathBuf,
     },
+    /// CONTACT's printed output (.out, .ref_out): each module-3 case's totals as a reference CSV
+    /// (standard output, or --out), this project's signs, each printed value's rounding.
+    ContactOutput {
+        /// CONTACT's output file.
+        file: PathBuf,
+        /// The CSV to write (written whole; default: standard output).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Only the cases A to B (`A-B`, or one case `A`).
+        #[arg(long)]
+        cases: Option<String>,
+        /// Refused as an output location (only `bless` writes there).
+        #[arg(long, default_value = "golden")]
+        golden: PathBuf,
+    },
 }
 
 #[derive(Subcommand)]
@@ -187,7 +202,7 @@ enum Command {
         #[command(subcommand)]
         what: ExportWhat,
     },
-    /// Read another program's input as scenes.
+    /// Read another program's file into this project's formats.
     Import {
         #[command(subcommand)]
         what: ImportWhat,
@@ -242,6 +257,9 @@ fn main() {
             let options = commands::ImportOptions { supported_only, overwrite };
             commands::import_contact(&deck, out.as_deref(), options, &golden)
                 .map(|ps| ps.iter().for_each(|p| println!("{}", p.display())))
+        }
+        Command::Import { what: ImportWhat::ContactOutput { file, out, cases, golden } } => {
+            commands::import_contact_output(&file, out.as_deref(), cases.as_deref(), &golden)
         }
     };
     if let Err(e) = result {

@@ -6,6 +6,7 @@ mod common;
 mod console;
 mod contact_export;
 mod contact_import;
+mod contact_output;
 mod contact_solver;
 mod contact_to_csv;
 mod docs;
