@@ -168,17 +168,31 @@ class Simulation:
         """The result folder's files as the CLI writes them: ``{file name: text}``."""
         return dict(self._raw.files())
 
+    def save(self, folder: Union[str, "os.PathLike[str]"]) -> str:
+        """Write the result folder ``folder/<name>/`` as ``creepbench simulate --out folder``
+        does (a baseline for :meth:`check`); returns its path."""
+        return os.fspath(self._raw.save(os.fspath(folder)))
+
     def check(
         self,
         reference: Union[str, "os.PathLike[str]"] = "reference",
         golden: Optional[Union[str, "os.PathLike[str]"]] = None,
+        against: Optional[Union[str, "os.PathLike[str]"]] = None,
         tolerances: Sequence[Union[str, "os.PathLike[str]"]] = (),
     ) -> Verdict:
         """Gate this scene's results as ``creepbench check`` does: every model (in-process
-        ones included) against the references in ``reference`` (CONTACT, the thesis) and, if
-        given, against the ``golden`` folder, with the tolerance files ``tolerances`` applied."""
+        ones included) against the references in ``reference`` (CONTACT, the thesis) and
+        against a baseline: the ``golden`` folder, or ``against``, a folder of earlier results
+        (e.g. written by :meth:`save`), each history column and metric within the default
+        tolerances (docs/gate.md), with the tolerance files ``tolerances`` applied."""
+        if golden is not None and against is not None:
+            raise ValueError("check: give golden or against, not both")
+        baseline = golden if against is None else against
         findings, loosened = self._raw.gate(
-            os.fspath(reference), None if golden is None else os.fspath(golden), [os.fspath(t) for t in tolerances]
+            os.fspath(reference),
+            None if baseline is None else os.fspath(baseline),
+            against is not None,
+            [os.fspath(t) for t in tolerances],
         )
         return _verdict(findings, loosened)
 

@@ -26,10 +26,20 @@ pub fn input(e: InputError) -> PyErr {
     })
 }
 
-/// The Python exception of a library error.
+/// The Python exception of a library error; an in-process model's own exception is its cause.
 pub fn to_py(e: Error) -> PyErr {
     match e {
         Error::Input(i) => input(i),
+        Error::External { scene, solver, source } => match source.downcast::<PyErr>() {
+            Ok(cause) => Python::attach(|py| {
+                let err = CreepbenchError::new_err(format!(
+                    "in-process model `{solver}` failed on scene `{scene}`: {cause} (<in-process {solver}>)"
+                ));
+                err.set_cause(py, Some(*cause));
+                err
+            }),
+            Err(source) => CreepbenchError::new_err(Error::External { scene, solver, source }.to_string()),
+        },
         other => CreepbenchError::new_err(other.to_string()),
     }
 }

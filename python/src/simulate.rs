@@ -9,8 +9,9 @@ use creepbench::history::sample_loop;
 use creepbench::history::History;
 use creepbench::pipeline::{self, InProcess};
 use creepbench::problem::Problem;
+use creepbench::safety::lock;
 use creepbench::solvers;
-use creepbench::suite::results::StoredScene;
+use creepbench::suite::results::{self, StoredScene};
 use creepbench::{commands, Error};
 use numpy::ndarray::Array3;
 use numpy::{IntoPyArray, PyArray1};
@@ -144,20 +145,32 @@ impl Simulation {
         Ok(out)
     }
 
+    /// Write the result folder `dir/<name>/` as `simulate --out dir` does; its path.
+    fn save(&self, py: Python<'_>, dir: PathBuf) -> PyResult<PathBuf> {
+        py.detach(|| {
+            let _lock = lock::lock_folder(&dir, lock::DEFAULT_LOCK_WAIT)?;
+            Ok::<_, Error>(results::write_scenes(&dir, std::slice::from_ref(&self.stored), false)?.remove(0))
+        })
+        .map_err(errors::to_py)
+    }
+
     /// Gate this scene's results as `check` does: against the references in `reference` and, if
-    /// given, the golden folder, with the tolerance files `tolerances` applied. Returns the
-    /// findings and the loosened rules.
-    #[pyo3(signature = (reference, golden, tolerances))]
+    /// given, a baseline folder (`baseline`: golden data, or with `previous` a folder of earlier
+    /// results), with the tolerance files `tolerances` applied. Returns the findings and the
+    /// loosened rules.
+    #[pyo3(signature = (reference, baseline, previous, tolerances))]
     fn gate(
         &self,
         reference: PathBuf,
-        golden: Option<PathBuf>,
+        baseline: Option<PathBuf>,
+        previous: bool,
         tolerances: Vec<PathBuf>,
     ) -> PyResult<(Vec<crate::gate::PyFinding>, Vec<String>)> {
         let gate = || -> Result<_, Error> {
             let refs = References::load(&reference)?;
             let rules = commands::file_rules(&tolerances, &[])?;
-            let baseline = golden.as_deref().map(|g| (g, Against::Golden));
+            let kind = if previous { Against::Previous } else { Against::Golden };
+            let baseline = baseline.as_deref().map(|g| (g, kind));
             let mut all = compare::evaluate(std::slice::from_ref(&self.stored), &refs, baseline)?;
             let loosened = tolerance_file::apply(&rules, &mut all, |_| false)?;
             Ok((all, loosened))
