@@ -24,3 +24,11 @@ def test_the_example_draws_every_model_and_gates_a_modified_one(tmp_path):
     assert "unmodified model against its baseline: PASS" in run.stdout
     assert "modified model (k = 0.8) against it: FAIL" in run.stdout
     assert (tmp_path / "baseline" / "steady_fastsim_g22" / "fastsim_k.csv").exists()
+
+
+def test_the_speed_script_runs():
+    run = subprocess.run(
+        [sys.executable, "examples/steady_speed.py", "1000"], cwd=ROOT, capture_output=True, text=True, timeout=300
+    )
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert run.stdout.count("us per creepage") == 2 and "fixed overhead" in run.stdout
