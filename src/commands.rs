@@ -383,7 +383,7 @@ pub fn merge(
 
 /// The tolerance files of a run (`--tolerances`, then each suite's `tolerances.toml`), read and
 /// checked against the comparison labels this project has.
-fn file_rules(given: &[PathBuf], suite_dir: &[PathBuf]) -> Result<Vec<Rule>, Error> {
+pub fn file_rules(given: &[PathBuf], suite_dir: &[PathBuf]) -> Result<Vec<Rule>, Error> {
     let labels = tolerances::labels();
     let mut rules = Vec::new();
     for path in tolerance_file::sources(given, suite_dir) {
@@ -454,11 +454,20 @@ fn write_whole(path: &Path, text: &str) -> Result<(), Error> {
     crate::safety::whole::write(path, text.as_bytes()).map_err(Error::io(path))
 }
 
-/// `creepbench check`: run the suite, compare with golden/ (or `against`) and the references;
-/// print the verdict first, then one screen (console: per suite and model, scenes without data,
-/// the worst drifts; everything with `verbose`); write the verdict files asked for; fail on gated
-/// drift.
-pub fn check(
+/// The gate's findings over a suite (or one shard): every comparison with the references and
+/// the baseline (golden/, or `against`), the baseline's missing scenes, the run's tolerance files
+/// applied (what `check` prints and writes).
+#[derive(Debug, Clone)]
+pub struct Gate {
+    pub findings: Vec<Finding>,
+    /// The rules of the run's files that loosen a default gate.
+    pub loosened: Vec<Loosening>,
+    /// Each scene's suite.
+    pub suite_of: BTreeMap<String, String>,
+}
+
+/// Run the suite and gate it ([`Gate`]); `check` prints the result.
+pub fn gate(
     suite_dir: &[PathBuf],
     reference: &Path,
     golden: &Path,
@@ -466,7 +475,7 @@ pub fn check(
     shard: Option<Shard>,
     progress: bool,
     files: &GateFiles,
-) -> Result<(), Error> {
+) -> Result<Gate, Error> {
     files.check_paths(golden)?;
     let refs = References::load(reference)?;
     let rules = file_rules(&files.tolerances, suite_dir)?;
@@ -499,6 +508,24 @@ pub fn check(
         }
     }
     let suite_of: BTreeMap<String, String> = scenes.iter().map(|s| (s.name.clone(), s.scene.suite.clone())).collect();
+    Ok(Gate { findings: all, loosened, suite_of })
+}
+
+/// `creepbench check`: run the suite, compare with golden/ (or `against`) and the references;
+/// print the verdict first, then one screen (console: per suite and model, scenes without data,
+/// the worst drifts; everything with `verbose`); write the verdict files asked for; fail on gated
+/// drift.
+pub fn check(
+    suite_dir: &[PathBuf],
+    reference: &Path,
+    golden: &Path,
+    against: Option<&Path>,
+    shard: Option<Shard>,
+    progress: bool,
+    files: &GateFiles,
+) -> Result<(), Error> {
+    let Gate { findings: all, loosened, suite_of } =
+        gate(suite_dir, reference, golden, against, shard, progress, files)?;
     let verdict = Verdict::of(&all);
     println!("{verdict}\n");
     print!("{}", console::per_model(&all, &suite_of));
@@ -515,7 +542,10 @@ pub fn check(
     }
     if against.is_some() {
         let (n, lines) = console::moved(&all, files.verbose);
-        let head = format!("{n} quantities moved against {} (worst first, |diff| / allowed):", baseline.0.display());
+        let head = format!(
+            "{n} quantities moved against {} (worst first, |diff| / allowed):",
+            against.unwrap_or(golden).display()
+        );
         print_list(&head, &lines);
     }
     files.write(&all, &loosened)?;

@@ -47,6 +47,12 @@ pub fn load(path: &Path, only: &[String]) -> Result<Problem, Error> {
 /// Validate and resolve one scene of a suite (a scene file or a study's point); `only` narrows
 /// its solver list. Errors name the file (and the study point).
 pub fn load_source(source: &SceneSource, only: &[String]) -> Result<Problem, Error> {
+    load_source_with(source, only, &[])
+}
+
+/// [`load_source`], where the scene may also name the models `in_process` (run in this process,
+/// [`InProcess`]) in its `solvers`.
+pub fn load_source_with(source: &SceneSource, only: &[String], in_process: &[String]) -> Result<Problem, Error> {
     let path = &source.path;
     let place = match source.study {
         None => path.display().to_string(),
@@ -66,7 +72,31 @@ pub fn load_source(source: &SceneSource, only: &[String]) -> Result<Problem, Err
         }
     }
     .map_err(in_file)?;
-    let mut problem = resolve(&scene).map_err(in_file)?;
+    let mut problem = resolve_with(scene, in_process).map_err(in_file)?;
+    narrow(&mut problem, only)?;
+    Ok(problem)
+}
+
+/// Validate and resolve a scene given as a table (not read from a file: errors name the field
+/// alone); `dir` resolves its relative paths; `only` and `in_process` as in [`load_source_with`].
+pub fn load_table(doc: &toml::Table, dir: &Path, only: &[String], in_process: &[String]) -> Result<Problem, Error> {
+    let mut problem = resolve_with(Scene::from_table(doc, dir)?, in_process)?;
+    narrow(&mut problem, only)?;
+    Ok(problem)
+}
+
+/// [`resolve`] a scene whose `solvers` may also name the models `in_process`.
+fn resolve_with(mut scene: Scene, in_process: &[String]) -> Result<Problem, InputError> {
+    scene.external.extend(in_process.iter().map(|name| ExternalSolver {
+        name: name.clone(),
+        command: vec![format!("<in-process {name}>")],
+        timeout_s: f64::INFINITY,
+    }));
+    resolve(&scene)
+}
+
+/// Keep only the solvers `only` names (all when empty); each must be one of the problem's.
+pub fn narrow(problem: &mut Problem, only: &[String]) -> Result<(), InputError> {
     if !only.is_empty() {
         for s in only {
             if !problem.solvers.contains(s) {
@@ -74,13 +104,12 @@ pub fn load_source(source: &SceneSource, only: &[String]) -> Result<Problem, Err
                     "--solver",
                     s,
                     format!("one of the scene's solvers: {}", problem.solvers.join(", ")),
-                )
-                .into());
+                ));
             }
         }
         problem.solvers.retain(|s| only.contains(s));
     }
-    Ok(problem)
+    Ok(())
 }
 
 /// Check a scene against the registries and resolve it: its external and built-in model names,
@@ -189,8 +218,18 @@ fn select_metrics(problem: &mut Problem, asked: Option<&[String]>) {
     (problem.metrics, problem.skipped_metrics) = (chosen, skipped);
 }
 
+/// A model run in this process over a whole scene (e.g. a Python callable): its name in the
+/// scene (an `[external.NAME]` entry, so the scene's checks know it) and the history it gives,
+/// which is validated as an external model's output is ([`history::external::validate_in_process`]).
+pub type InProcess<'a> = (&'a str, &'a (dyn Fn(&Problem) -> Result<History, Error> + Sync));
+
 /// Run the problem's models (only those it lists) and compute its metrics.
-pub fn run(mut problem: Problem) -> Result<SceneResult, Error> {
+pub fn run(problem: Problem) -> Result<SceneResult, Error> {
+    run_with(problem, &[])
+}
+
+/// [`run`], with the models `in_process` run in this process instead of as external programs.
+pub fn run_with(mut problem: Problem, in_process: &[InProcess]) -> Result<SceneResult, Error> {
     let field_metrics: Vec<FieldIndicator> =
         problem.metrics.iter().filter_map(|m| metrics::by_name(m)?.field_indicator()).collect();
     let (mut histories, mut timing, mut all_metrics, mut logs) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
@@ -204,6 +243,12 @@ pub fn run(mut problem: Problem) -> Result<SceneResult, Error> {
             Some(def) => {
                 let r = sample_loop::run(&problem, def, &field_metrics, None).map_err(fail)?;
                 (r.history, Timing { wall_s: r.wall_s, setup_s: r.setup_s }, r.field_metrics)
+            }
+            None if in_process.iter().any(|(n, _)| n == name) => {
+                let (_, model) = in_process.iter().find(|(n, _)| n == name).expect("checked just above");
+                let start = Instant::now();
+                let h = history::external::validate_in_process(model(&problem)?, &problem)?;
+                (h, Timing { wall_s: start.elapsed().as_secs_f64(), setup_s: 0.0 }, Vec::new())
             }
             None => {
                 let spec = problem.external.iter().find(|e| &e.name == name).ok_or_else(|| {

@@ -154,6 +154,14 @@ fn run_in(spec: &ExternalSolver, problem: &Problem, dir: &Path, output: &mut Out
     validate(read_output(&spec.name, &out_csv)?, problem, &out_csv)
 }
 
+/// The history of a model run in this process (a Python callable), validated as an external
+/// model's output; errors name the model as `<in-process NAME>` in place of its output file.
+pub fn validate_in_process(h: History, problem: &Problem) -> Result<History, Error> {
+    let out = PathBuf::from(format!("<in-process {}>", h.solver));
+    let solver = h.solver.clone();
+    validate(h, problem, &out).map_err(|e| Error::External { scene: problem.name.clone(), solver, source: Box::new(e) })
+}
+
 /// Models copy the loading from scene.json: it must come back equal to this relative tolerance.
 const LOADING_RTOL: f64 = 1e-9;
 /// Longest message of the CSV parser quoted in an error.

@@ -27,6 +27,7 @@ mod nonhertz;
 mod parser_fuzz;
 mod polach_model;
 mod properties;
+mod python;
 mod reference_columns;
 mod relaxation_model;
 mod scene_extensions;

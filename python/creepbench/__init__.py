@@ -1,0 +1,386 @@
+"""creepbench from Python: wheel-rail creep-force models and their validation harness.
+
+Everything is computed by the Rust library the ``creepbench`` command line is built on
+(PyO3 bindings): the same scene checks and error text, the same models, the same gate.
+Units are in the names: mm, N, MPa, s; creepages cx, cy are dimensionless, the spin cs is
+in 1/mm; forces come back as fx/fn, fy/fn (dimensionless) and the spin moment mz in N*mm.
+
+* :func:`simulate` runs a scene (path, TOML text or dict) and returns a :class:`Simulation`:
+  the resolved scene, each model's history and the metrics as polars DataFrames, the
+  traction fields as numpy arrays; a Python callable runs as a model in-process.
+* :func:`check` runs suites through the gate and returns a :class:`Verdict`.
+* :func:`steady` evaluates a built-in model's steady forces for an (N, 3) array of creepages.
+* :class:`Stepper` steps a model with memory (UBA, relaxation, the exact solver) from Python.
+
+See docs/python.md in the repository.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from dataclasses import dataclass, field
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import polars as pl
+
+from . import _creepbench as _cb
+from ._creepbench import CreepbenchError, SceneError
+
+__all__ = [
+    "CreepbenchError",
+    "Finding",
+    "SceneError",
+    "Simulation",
+    "Stepper",
+    "Verdict",
+    "check",
+    "model_names",
+    "simulate",
+    "steady",
+]
+
+Scene = Union[str, "os.PathLike[str]", Mapping[str, Any]]
+Model = Callable[[Dict[str, Any]], Any]
+
+#: The material of the thesis's scenes, used when ``material`` is not given [MPa, -].
+DEFAULT_MATERIAL = {"g_mpa": 82000.0, "poisson": 0.28}
+#: Rolling at 1 m/s with Courant number 1, used when ``rolling`` is not given [mm/s, -].
+DEFAULT_ROLLING = {"v_mm_s": 1000.0, "courant": 1.0}
+
+
+def model_names() -> List[str]:
+    """The built-in models' names, in registry order (``uba``, ``fastsim``, ``contact``, ...)."""
+    return list(_cb.model_names())
+
+
+@dataclass(frozen=True)
+class Finding:
+    """One comparison's worst point (``check``'s findings, docs/gate.md).
+
+    ``ours`` and ``theirs`` are the two values at the worst ``step`` (None for a scalar),
+    ``diff`` = |ours - theirs| (NaN when they cannot be matched), ``allowed`` the tolerance,
+    ``gated`` whether it counts for the verdict, ``passed`` whether it is within it,
+    ``ratio`` |diff| / allowed as the console prints it.
+    """
+
+    scene: str
+    solver: str
+    against: str
+    quantity: str
+    step: Optional[int]
+    ours: float
+    theirs: float
+    diff: float
+    allowed: float
+    gated: bool
+    passed: bool
+    ratio: str
+    note: str
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """The gate's verdict: ``passed`` when no gated comparison failed.
+
+    ``findings`` holds every comparison (its worst point), ``failures`` the gated ones that
+    missed their tolerance, ``loosened`` the tolerance-file rules that loosen a default gate.
+    ``bool(verdict)`` is ``verdict.passed``, so ``assert creepbench.check(...)`` gates in pytest.
+    """
+
+    findings: List[Finding]
+    loosened: List[str] = field(default_factory=list)
+
+    @property
+    def gated(self) -> int:
+        return sum(f.gated for f in self.findings)
+
+    @property
+    def failures(self) -> List[Finding]:
+        return [f for f in self.findings if f.gated and not f.passed]
+
+    @property
+    def failed(self) -> int:
+        return len(self.failures)
+
+    @property
+    def passed(self) -> bool:
+        return self.failed == 0
+
+    def __bool__(self) -> bool:
+        return self.passed
+
+    def __str__(self) -> str:
+        word = "PASS" if self.passed else "FAIL"
+        lines = [f"{word}: {self.gated} gated comparisons, {self.failed} failed"]
+        for f in self.failures[:20]:
+            at = "" if f.step is None else f" step {f.step}"
+            lines.append(
+                f"  {f.scene} {f.solver} {f.quantity}{at} vs {f.against}: "
+                f"ours {f.ours!r}, theirs {f.theirs!r}, |diff| {f.diff:.3g} > allowed {f.allowed:.3g}"
+            )
+        return "\n".join(lines)
+
+    def to_frame(self) -> pl.DataFrame:
+        """The findings as a polars DataFrame (one row each)."""
+        rows = [f.__dict__ for f in self.findings]
+        return pl.DataFrame(rows, infer_schema_length=None) if rows else pl.DataFrame()
+
+
+def _verdict(findings: Sequence[Mapping[str, Any]], loosened: Sequence[str]) -> Verdict:
+    return Verdict([Finding(**f) for f in findings], list(loosened))
+
+
+class Simulation:
+    """One scene's results, as ``creepbench simulate`` writes them to ``out/<name>/``.
+
+    ``scene`` is the resolved scene (scene.json as a dict), ``histories[model]`` each model's
+    history (a polars DataFrame with the columns of ``<model>.csv``: step, t_s [s], cx, cy,
+    cs [1/mm], fn_n [N], fx_over_fn, fy_over_fn, mu, the model's extra columns, mz_nmm [N*mm]),
+    ``metrics`` the metrics (solver, metric, value, step), ``fields`` the traction fields
+    (with ``fields=True``: per built-in model ``step`` and ``pn_mpa``, ``px_mpa``, ``py_mpa``
+    [MPa] as (steps, my, mx) arrays; ``x_mm``, ``y_mm`` the element centres).
+    """
+
+    def __init__(self, raw: Any, pandas: bool = False) -> None:
+        self._raw = raw
+        self.name: str = raw.name
+        self.solvers: List[str] = list(raw.solvers)
+        self.warnings: List[str] = list(raw.warnings)
+        files = dict(raw.files())
+        self.scene: Dict[str, Any] = json.loads(files["scene.json"])
+        self.histories: Dict[str, Any] = {}
+        for s in self.solvers:
+            names, columns = raw.history(s)
+            df = pl.DataFrame({n: c for n, c in zip(names, columns)})
+            df = df.with_columns(pl.col("step").cast(pl.Int64))
+            self.histories[s] = df.to_pandas() if pandas else df
+        metrics = pl.DataFrame(
+            [tuple(m) for m in raw.metrics()],
+            schema={"solver": pl.Utf8, "metric": pl.Utf8, "value": pl.Float64, "step": pl.Int64},
+            orient="row",
+        )
+        self.metrics: Any = metrics.to_pandas() if pandas else metrics
+        self.fields: Dict[str, Any] = dict(raw.fields())
+
+    def files(self) -> Dict[str, str]:
+        """The result folder's files as the CLI writes them: ``{file name: text}``."""
+        return dict(self._raw.files())
+
+    def save(self, folder: Union[str, "os.PathLike[str]"]) -> str:
+        """Write the result folder ``folder/<name>/`` as ``creepbench simulate --out folder``
+        does (a baseline for :meth:`check`); returns its path."""
+        return os.fspath(self._raw.save(os.fspath(folder)))
+
+    def check(
+        self,
+        reference: Union[str, "os.PathLike[str]"] = "reference",
+        golden: Optional[Union[str, "os.PathLike[str]"]] = None,
+        against: Optional[Union[str, "os.PathLike[str]"]] = None,
+        tolerances: Sequence[Union[str, "os.PathLike[str]"]] = (),
+    ) -> Verdict:
+        """Gate this scene's results as ``creepbench check`` does: every model (in-process
+        ones included) against the references in ``reference`` (CONTACT, the thesis) and
+        against a baseline: the ``golden`` folder, or ``against``, a folder of earlier results
+        (e.g. written by :meth:`save`), each history column and metric within the default
+        tolerances (docs/gate.md), with the tolerance files ``tolerances`` applied."""
+        if golden is not None and against is not None:
+            raise ValueError("check: give golden or against, not both")
+        baseline = golden if against is None else against
+        findings, loosened = self._raw.gate(
+            os.fspath(reference),
+            None if baseline is None else os.fspath(baseline),
+            against is not None,
+            [os.fspath(t) for t in tolerances],
+        )
+        return _verdict(findings, loosened)
+
+    def __repr__(self) -> str:
+        return f"Simulation({self.name!r}, solvers={self.solvers})"
+
+
+def _kind(scene: Any) -> Tuple[str, Any]:
+    if isinstance(scene, Mapping):
+        return "table", dict(scene)
+    if isinstance(scene, os.PathLike):
+        return "path", os.fspath(scene)
+    if isinstance(scene, str):
+        return ("toml", scene) if ("=" in scene or "\n" in scene) else ("path", scene)
+    raise TypeError(f"scene: a path, TOML text or a dict, not {type(scene).__name__}")
+
+
+def _columns(out: Any) -> Tuple[List[str], List[np.ndarray]]:
+    """An in-process model's output (polars or pandas DataFrame, or a dict of columns) as
+    column names and float64 arrays."""
+    if isinstance(out, pl.DataFrame):
+        names = list(out.columns)
+        return names, [out[n].cast(pl.Float64).to_numpy() for n in names]
+    if isinstance(out, Mapping):
+        names = [str(k) for k in out.keys()]
+        return names, [np.ascontiguousarray(np.asarray(v, dtype=np.float64).ravel()) for v in out.values()]
+    if hasattr(out, "columns"):  # pandas
+        names = [str(c) for c in out.columns]
+        return names, [np.ascontiguousarray(np.asarray(out[c], dtype=np.float64)) for c in out.columns]
+    raise TypeError(f"an in-process model returns a DataFrame or a dict of columns, not {type(out).__name__}")
+
+
+def _adapt(model: Model) -> Callable[[str], Tuple[List[str], List[np.ndarray]]]:
+    def call(scene_json: str) -> Tuple[List[str], List[np.ndarray]]:
+        names, columns = _columns(model(json.loads(scene_json)))
+        return names, [np.ascontiguousarray(c, dtype=np.float64) for c in columns]
+
+    return call
+
+
+def simulate(
+    scene: Scene,
+    solvers: Optional[Sequence[str]] = None,
+    *,
+    models: Optional[Mapping[str, Model]] = None,
+    fields: bool = False,
+    pandas: bool = False,
+) -> Any:
+    """Run a scene as ``creepbench simulate`` does and return its :class:`Simulation`.
+
+    ``scene``: a path to a scene file (a study file gives a list, one per point), TOML text,
+    or a dict of the same keys (docs/scene-format.md; units mm, N, MPa, s). ``solvers`` narrows
+    the scene's model list. ``models`` maps names to Python callables run in-process as
+    models: each is called with the resolved scene (scene.json as a dict; its ``history`` lists
+    the loading of every row) and returns the history as a DataFrame or a dict of columns
+    ``step, t_s, cx, cy, cs, fn_n, fx_over_fn, fy_over_fn[, mu, ...]``, validated as an
+    external model's output is; the scene's ``solvers`` must list the name. ``fields=True``
+    keeps the built-in models' traction fields (they run a second time). ``pandas=True`` gives
+    pandas DataFrames. Invalid input raises :class:`SceneError` (``field``, ``value``,
+    ``allowed``), a failing model :class:`CreepbenchError`.
+    """
+    kind, value = _kind(scene)
+    ms = [(str(n), _adapt(f)) for n, f in (models or {}).items()]
+    raw = _cb.simulate(kind, value, list(solvers or []), ms, fields)
+    sims = [Simulation(r, pandas) for r in raw]
+    return sims[0] if len(sims) == 1 else sims
+
+
+def check(
+    suite: Union[str, "os.PathLike[str]", Sequence[Union[str, "os.PathLike[str]"]]] = "scenes/thesis",
+    *,
+    reference: Union[str, "os.PathLike[str]"] = "reference",
+    golden: Union[str, "os.PathLike[str]"] = "golden",
+    against: Optional[Union[str, "os.PathLike[str]"]] = None,
+    tolerances: Sequence[Union[str, "os.PathLike[str]"]] = (),
+    strict: bool = False,
+) -> Verdict:
+    """Run suites (folders of scenes) through the gate as ``creepbench check`` does: every
+    result against ``golden`` (or a previous results folder ``against``) and the references,
+    the tolerance files applied (``strict``: refuse any loosening). Paths are relative to the
+    current directory (run it from the repository's folder for the defaults)."""
+    suites = [suite] if isinstance(suite, (str, os.PathLike)) else list(suite)
+    findings, loosened = _cb.check(
+        [os.fspath(s) for s in suites],
+        os.fspath(reference),
+        os.fspath(golden),
+        None if against is None else os.fspath(against),
+        [os.fspath(t) for t in tolerances],
+        strict,
+    )
+    return _verdict(findings, loosened)
+
+
+def _table(
+    model: str,
+    contact: Mapping[str, Any],
+    grid: Mapping[str, Any],
+    material: Optional[Mapping[str, Any]],
+    rolling: Optional[Mapping[str, Any]],
+    model_options: Optional[Mapping[str, Any]],
+) -> Dict[str, Any]:
+    table: Dict[str, Any] = {
+        "name": "python",
+        "solvers": [model],
+        "contact": dict(contact),
+        "material": dict(material or DEFAULT_MATERIAL),
+        "grid": dict(grid),
+        "rolling": dict(rolling or DEFAULT_ROLLING),
+        # Only resolves the problem: the creepages come from the caller.
+        "creepage": {"kind": "sweep", "from": 0.0, "to": 0.01, "points": 2},
+    }
+    if model_options:
+        table["model"] = dict(model_options)
+    return table
+
+
+def steady(
+    model: str,
+    creepages: Any,
+    *,
+    contact: Mapping[str, Any],
+    grid: Mapping[str, Any],
+    material: Optional[Mapping[str, Any]] = None,
+    model_options: Optional[Mapping[str, Any]] = None,
+) -> np.ndarray:
+    """Steady rolling forces of a built-in model for many creepages in one call.
+
+    ``creepages``: an (N, 3) array of (cx, cy, cs [1/mm]). ``contact``: the scene's
+    ``[contact]`` keys (``a_mm``, ``b_mm``, ``fn_n`` [N], ``mu``), ``grid``: ``[grid]``
+    (``mx``, ``my``), ``material``: ``[material]`` (default G 82000 MPa, poisson 0.28),
+    ``model_options``: ``[model]``. Returns an (N, 3) float64 array of fx/fn, fy/fn and
+    mz [N*mm]. The work runs in Rust on every core (one model per contiguous chunk of rows),
+    without the GIL.
+    """
+    c = np.ascontiguousarray(creepages, dtype=np.float64)
+    if c.ndim == 1 and c.shape[0] == 3:
+        c = c.reshape(1, 3)
+    table = _table(model, contact, grid, material, None, model_options)
+    return _cb.steady(model, c, table)
+
+
+class Stepper:
+    """A built-in model stepped one time step at a time (for a multibody loop).
+
+    ``Stepper("uba", contact=dict(a_mm=8.56, b_mm=4.08, fn_n=1e5, mu=0.4), grid=dict(mx=22,
+    my=22))``; ``rolling`` (``v_mm_s`` [mm/s], ``courant``) sets the time step
+    ``dt_s = courant dx / v``. Each :meth:`step` rolls one time step from the model's state;
+    the contact is reloaded when ``fn_n`` or ``mu`` changes.
+    """
+
+    def __init__(
+        self,
+        model: str,
+        *,
+        contact: Mapping[str, Any],
+        grid: Mapping[str, Any],
+        material: Optional[Mapping[str, Any]] = None,
+        rolling: Optional[Mapping[str, Any]] = None,
+        model_options: Optional[Mapping[str, Any]] = None,
+    ) -> None:
+        self._inner = _cb.Stepper(model, _table(model, contact, grid, material, rolling, model_options))
+
+    @property
+    def model(self) -> str:
+        return self._inner.model
+
+    @property
+    def dt_s(self) -> float:
+        """The time step [s]."""
+        return self._inner.dt_s
+
+    @property
+    def steps(self) -> int:
+        """Time steps taken so far."""
+        return self._inner.steps
+
+    def step(self, cx: float, cy: float, cs: float, fn_n: float, mu: float) -> Tuple[float, float, float]:
+        """One time step to creepages cx, cy, spin cs [1/mm] at load fn_n [N], friction mu:
+        returns (fx/fn, fy/fn, mz [N*mm])."""
+        return self._inner.step(float(cx), float(cy), float(cs), float(fn_n), float(mu))
+
+    def steady(self, cx: float, cy: float, cs: float, fn_n: float, mu: float) -> Tuple[float, float, float]:
+        """Steady rolling at these creepages (the model's state becomes the steady one):
+        returns (fx/fn, fy/fn, mz [N*mm])."""
+        return self._inner.steady(float(cx), float(cy), float(cs), float(fn_n), float(mu))
+
+    def field(self) -> Optional[Dict[str, np.ndarray]]:
+        """The last solve's traction field, if the model has one: ``pn_mpa``, ``px_mpa``,
+        ``py_mpa`` [MPa] as (my, mx) arrays."""
+        f = self._inner.field()
+        return None if f is None else dict(f)

@@ -1,0 +1,28 @@
+//! creepbench's Python bindings (PyO3): the library's pipeline, gate and models behind a
+//! Python module. Each function here converts Python values, calls the library and converts back;
+//! nothing is computed twice (docs/python.md).
+
+mod errors;
+mod gate;
+mod model;
+mod scene;
+mod simulate;
+mod steady;
+mod stepper;
+
+use pyo3::prelude::*;
+
+/// The compiled half of the `creepbench` package (the Python half wraps it: `creepbench/__init__.py`).
+#[pymodule]
+fn _creepbench(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    m.add("SceneError", py.get_type::<errors::SceneError>())?;
+    m.add("CreepbenchError", py.get_type::<errors::CreepbenchError>())?;
+    m.add_function(wrap_pyfunction!(simulate::simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(gate::check, m)?)?;
+    m.add_function(wrap_pyfunction!(steady::steady, m)?)?;
+    m.add_function(wrap_pyfunction!(steady::model_names, m)?)?;
+    m.add_class::<simulate::Simulation>()?;
+    m.add_class::<stepper::Stepper>()?;
+    Ok(())
+}

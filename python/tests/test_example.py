@@ -1,0 +1,34 @@
+"""examples/traction_curves.py runs and gives what it promises."""
+
+import subprocess
+import sys
+
+import polars as pl
+
+import creepbench
+from conftest import ROOT
+
+
+def test_the_example_draws_every_model_and_gates_a_modified_one(tmp_path):
+    run = subprocess.run(
+        [sys.executable, "examples/traction_curves.py", str(tmp_path)],
+        cwd=ROOT, capture_output=True, text=True, timeout=600,
+    )
+    assert run.returncode == 0, run.stdout + run.stderr
+    curves = pl.read_csv(tmp_path / "traction_curves.csv")
+    assert curves.columns == ["cx", *creepbench.model_names()]
+    assert curves.height == 101
+    # Every curve starts at 0 and saturates below mu = 0.4.
+    for m in creepbench.model_names():
+        assert curves[m][0] == 0.0 and 0.2 < curves[m][-1] <= 0.4 + 1e-9, m
+    assert "unmodified model against its baseline: PASS" in run.stdout
+    assert "modified model (k = 0.8) against it: FAIL" in run.stdout
+    assert (tmp_path / "baseline" / "steady_fastsim_g22" / "fastsim_k.csv").exists()
+
+
+def test_the_speed_script_runs():
+    run = subprocess.run(
+        [sys.executable, "examples/steady_speed.py", "1000"], cwd=ROOT, capture_output=True, text=True, timeout=300
+    )
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert run.stdout.count("us per creepage") == 2 and "fixed overhead" in run.stdout
