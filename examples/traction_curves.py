@@ -2,7 +2,7 @@
 
 Run from the repository's folder, with the package installed (docs/python.md):
 
-    python examples/traction_curves.py [OUT_DIR]        # default out/python_example
+    python examples/traction_curves.py [OUT_DIR]        # default out/python_example; Python 3.11+ (tomllib)
 
 1. The steady longitudinal traction curve Fx/FN(cx) of every built-in model on the thesis's
    contact (a = 8.56 mm, b = 4.08 mm, FN = 100 kN, mu = 0.4, 22 x 22 elements), one call of

@@ -65,7 +65,7 @@ fn the_python_package_builds_and_passes_its_tests() {
     let _ = std::fs::remove_dir_all(&wheels);
     let mut build = Command::new(bin.join("maturin"));
     build
-        .args(["build", "--release", "--quiet", "-m", "python/Cargo.toml", "-o"])
+        .args(["build", "--release", "--locked", "--quiet", "-m", "python/Cargo.toml", "-o"])
         .arg(&wheels)
         .env("CARGO_TARGET_DIR", target.join("python"))
         .env("PATH", format!("{}:{}", bin.display(), std::env::var("PATH").unwrap_or_default()));
