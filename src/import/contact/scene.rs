@@ -271,9 +271,18 @@ fn sweep_add(c: f64, d: f64, t: f64) -> f64 {
     }
 }
 
-/// A sweep through the points: (parameter component, direction, constants, t per point), if the
-/// sweep reproduces every point exactly.
-fn sweep_of(points: &[[f64; 3]]) -> Option<(usize, [f64; 3], [f64; 3], Vec<f64>)> {
+/// A sweep `[cx, cy, cs] = constants + t·direction` through given points.
+struct Sweep {
+    /// The creepage whose values are the parameter t (its direction component is 1).
+    param: usize,
+    direction: [f64; 3],
+    constants: [f64; 3],
+    /// t per point.
+    t: Vec<f64>,
+}
+
+/// A sweep through the points, if it reproduces every point exactly.
+fn sweep_of(points: &[[f64; 3]]) -> Option<Sweep> {
     let varies = |j: usize| points.iter().any(|p| p[j].to_bits() != points[0][j].to_bits());
     let k = (0..3).find(|&j| varies(j)).unwrap_or(0);
     let last = points[points.len() - 1];
@@ -293,7 +302,7 @@ fn sweep_of(points: &[[f64; 3]]) -> Option<(usize, [f64; 3], [f64; 3], Vec<f64>)
         .iter()
         .zip(&t)
         .all(|(p, &t)| (0..3).all(|j| sweep_add(constants[j], direction[j], t).to_bits() == p[j].to_bits()));
-    (exact && direction.iter().all(|d| d.is_finite())).then_some((k, direction, constants, t))
+    (exact && direction.iter().all(|d| d.is_finite())).then_some(Sweep { param: k, direction, constants, t })
 }
 
 fn table(pairs: Vec<(&str, Value)>) -> Value {
@@ -380,7 +389,8 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     match h.run {
         Run::Sweep => {
             let points: Vec<[f64; 3]> = rows.iter().map(|r| [r[0], r[1], r[2]]).collect();
-            let (k, direction, constants, t) = sweep_of(&points).expect("histories are split where no sweep fits");
+            let Sweep { param: k, direction, constants, t } =
+                sweep_of(&points).expect("histories are split where no sweep fits");
             let mut cr = vec![("kind", Value::String("sweep".into())), ("at", floats(&t))];
             let axis = ["cx", "cy", "cs"];
             if direction.iter().filter(|&&d| d != 0.0).count() == 1 {
