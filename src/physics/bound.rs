@@ -63,6 +63,56 @@ pub fn scale_factor(n2: f64, g: f64) -> f64 {
     }
 }
 
+/// Relative tolerance of [`falling_bound`]: the bracket of g is narrowed until it is at most
+/// `FALLING_TOL · a` wide (a = |τ| of the unbounded traction).
+pub const FALLING_TOL: f64 = 1e-12;
+
+/// Iterations [`falling_bound`] may take (regula falsi with the Illinois halving, bisection every
+/// third step: the bracket at least halves every three steps, so 200 is never reached for
+/// `FALLING_TOL`).
+const FALLING_MAX_ITER: usize = 200;
+
+/// The bound g of a slipping element whose coefficient falls with its own slip velocity: the
+/// root in (0, a) of `h(g) = g − p μ(c (a − g))`, where a = |τ| of the unbounded traction, the
+/// slip velocity of the projected traction is `s = c (a − g)` [mm/s] and `μ(s)` the friction law
+/// (with the memory's weight when there is one). The element slips, so `h(a) = a − p μ(0) > 0`,
+/// and `h(0) = −p μ(c a) < 0`: a root exists and the bracket keeps it (regula falsi, Illinois
+/// variant, to a bracket of `FALLING_TOL · a`). With several roots (a law steeper than
+/// 1/(p c)) the bracket settles on one of them; the history's oscillation indicator watches
+/// the result. Returns g and the slip velocity c (a − g).
+pub fn falling_bound(a: f64, p: f64, c: f64, mu: impl Fn(f64) -> f64) -> (f64, f64) {
+    let h = |g: f64| g - p * mu(c * (a - g));
+    let (mut lo, mut hi) = (0.0, a);
+    let (mut h_lo, mut h_hi) = (h(lo), h(hi));
+    let mut side = 0i8;
+    for it in 0..FALLING_MAX_ITER {
+        if hi - lo <= FALLING_TOL * a {
+            break;
+        }
+        let secant = (lo * h_hi - hi * h_lo) / (h_hi - h_lo);
+        let g = if it % 3 == 2 || !(secant > lo && secant < hi) { 0.5 * (lo + hi) } else { secant };
+        let hg = h(g);
+        if hg == 0.0 {
+            return (g, c * (a - g));
+        }
+        if hg < 0.0 {
+            (lo, h_lo) = (g, hg);
+            if side == -1 {
+                h_hi *= 0.5;
+            }
+            side = -1;
+        } else {
+            (hi, h_hi) = (g, hg);
+            if side == 1 {
+                h_lo *= 0.5;
+            }
+            side = 1;
+        }
+    }
+    let g = if h_hi.abs() < h_lo.abs() { hi } else { lo };
+    (g, c * (a - g))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -127,5 +177,20 @@ mod tests {
             let s = g / ((0.1 * tx) * (0.1 * tx) + (0.1 * ty) * (0.1 * ty)).sqrt();
             (0.1 * tx * s, 0.1 * ty * s)
         });
+    }
+    /// The falling bound solves g = p μ(c (a − g)): a linear law by hand, and the residual of an
+    /// exponential one below the tolerance.
+    #[test]
+    fn falling_bound_is_the_fixed_point() {
+        // μ(s) = 0.4 − 1e-4 s, p = 1, c = 1000, a = 1: g = 0.4 − 0.1 (1 − g) → g = 0.3/0.9.
+        let (g, s) = falling_bound(1.0, 1.0, 1000.0, |s| 0.4 - 1e-4 * s);
+        assert!((g - 1.0 / 3.0).abs() < 1e-12, "{g}");
+        assert!((s - 2000.0 / 3.0).abs() < 1e-8, "{s}");
+        let mu = |s: f64| 0.25 + 0.2 * (-std::f64::consts::LN_2 * s / 600.0).exp();
+        let (a, p, c) = (900.0, 1500.0, 3.0);
+        let (g, s) = falling_bound(a, p, c, mu);
+        assert!(g > 0.0 && g < a);
+        assert!((g - p * mu(s)).abs() <= 1e-9 * a, "residual {}", g - p * mu(s));
+        assert!((s - c * (a - g)).abs() < 1e-9);
     }
 }

@@ -15,9 +15,10 @@
 //! (the thesis's Eq. 3.4 with its spin sign converted to CONTACT's, see [`crate::physics::RigidSlip`]);
 //! at C = 1 material moves exactly one element per step: `τ_i ← τ_{i−1} + dx k_i`.
 
+mod falling;
 mod flat;
 
-use super::brush::{self, Integration, LeadingEdge, Tractions};
+use super::brush::{self, Falling, Integration, LeadingEdge, Tractions};
 use super::stepper::{FieldView, Step, Stepper};
 use super::{linear_in_elements, ModelDef, SolveError};
 use crate::error::InputError;
@@ -65,7 +66,9 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let first = p.loading.first();
     let local = p.local_contact(first.fn_n);
     let prep = Prepared::new(&p.grid, &local, first.mu);
-    Ok(Box::new(Uba { p, local, prep, prep_mu: first.mu, t: Tractions::zero(n), scratch: Tractions::zero(n) }))
+    let fresh = vec![p.friction.mu_static(); n];
+    let (t, scratch) = (Tractions::zero(n), Tractions::zero(n));
+    Ok(Box::new(Uba { p, local, prep, prep_mu: first.mu, t, scratch, mu: (fresh.clone(), fresh) }))
 }
 
 /// The UBA's state: the contact at the current load, the prepared step and the tractions.
@@ -77,6 +80,8 @@ struct Uba<'a> {
     prep_mu: f64,
     t: Tractions,
     scratch: Tractions,
+    /// Each element's friction coefficient and its scratch (the memory's state; a falling law only).
+    mu: (Vec<f64>, Vec<f64>),
 }
 
 impl Uba<'_> {
@@ -109,7 +114,13 @@ impl Stepper for Uba<'_> {
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
         let rates = brush::slip_rates(at, &self.local);
         let how = (self.p.model.leading_edge, Integration::Centre);
-        let n_slip = brush::steady_march(&self.p.grid, &self.local, at.mu, &rates, how, &mut self.t);
+        let n_slip = match Falling::of(self.p, at, &self.local, self.p.grid.dx_mm) {
+            None => brush::steady_march(&self.p.grid, &self.local, at.mu, &rates, how, &mut self.t),
+            Some(bound) => {
+                let out = (&mut self.t, self.mu.0.as_mut_slice());
+                brush::steady_march_with(&self.p.grid, &self.local, &bound, &rates, how, out)
+            }
+        };
         Ok(self.row(n_slip, self.t.sums(&self.p.grid)))
     }
 
@@ -119,9 +130,25 @@ impl Stepper for Uba<'_> {
         let (n, courant) = substeps(self.p.rolling.courant);
         let scheme = (courant, self.p.model.leading_edge);
         let mut sums = StepSums { n_slip: 0, sum_tx: 0.0, sum_ty: 0.0, moment: 0.0 };
+        let falling = Falling::of(self.p, at, &self.local, courant * self.p.grid.dx_mm);
         for _ in 0..n {
-            sums =
-                step((&self.p.grid, &self.local.planform), &mut self.prep, &rates, scheme, &self.t, &mut self.scratch);
+            let contact = (&self.p.grid, &self.local.planform);
+            sums = match &falling {
+                None => step(contact, &mut self.prep, &rates, scheme, &self.t, &mut self.scratch),
+                Some(bound) => {
+                    let sums = step_falling(
+                        contact,
+                        &mut self.prep,
+                        (bound, &rates),
+                        scheme,
+                        &self.t,
+                        &mut self.scratch,
+                        &mut self.mu,
+                    );
+                    std::mem::swap(&mut self.mu.0, &mut self.mu.1);
+                    sums
+                }
+            };
             std::mem::swap(&mut self.t, &mut self.scratch);
         }
         Ok(self.row(sums.n_slip, (sums.sum_tx, sums.sum_ty, sums.moment)))
@@ -201,6 +228,47 @@ pub fn step(
     old: &Tractions,
     new: &mut Tractions,
 ) -> StepSums {
+    let (ghost, spin, consts) = prepare_step((grid, planform), prep, rates, (courant, edge));
+    let io = (old.tx.as_slice(), old.ty.as_slice(), new.tx.as_mut_slice(), new.ty.as_mut_slice());
+    match (ghost, spin) {
+        (false, false) => flat::step::<false, false>(prep, io, consts),
+        (false, true) => flat::step::<false, true>(prep, io, consts),
+        (true, false) => flat::step::<true, false>(prep, io, consts),
+        (true, true) => flat::step::<true, true>(prep, io, consts),
+    }
+}
+
+/// [`step`] with a falling friction law's bound ([`falling::step`]); the coefficients from
+/// `mu.0` into `mu.1`.
+fn step_falling(
+    (grid, planform): (&Grid, &Planform),
+    prep: &mut Prepared,
+    (bound, rates): (&Falling, &RigidSlip),
+    scheme: (f64, LeadingEdge),
+    old: &Tractions,
+    new: &mut Tractions,
+    mu: &mut (Vec<f64>, Vec<f64>),
+) -> StepSums {
+    let (ghost, spin, consts) = prepare_step((grid, planform), prep, rates, scheme);
+    let io = (old.tx.as_slice(), old.ty.as_slice(), new.tx.as_mut_slice(), new.ty.as_mut_slice());
+    let b = (bound, planform.pressure_mpa.as_slice());
+    let m = (mu.0.as_slice(), mu.1.as_mut_slice());
+    match (ghost, spin) {
+        (false, false) => falling::step::<false, false>(prep, b, io, m, consts),
+        (false, true) => falling::step::<false, true>(prep, b, io, m, consts),
+        (true, false) => falling::step::<true, false>(prep, b, io, m, consts),
+        (true, true) => falling::step::<true, true>(prep, b, io, m, consts),
+    }
+}
+
+/// The ghost inflow of each run (exact leading edge) and the step's constants
+/// [C, C·dx·kx0, C·dx·dkx/dy, C·dx·ky0, C·dx·dky/dx]: (ghost, spin, constants).
+fn prepare_step(
+    (grid, planform): (&Grid, &Planform),
+    prep: &mut Prepared,
+    rates: &RigidSlip,
+    (courant, edge): (f64, LeadingEdge),
+) -> (bool, bool, [f64; 5]) {
     let ghost = edge == LeadingEdge::Exact;
     if ghost {
         for &(j, first, _) in &prep.runs {
@@ -215,13 +283,7 @@ pub fn step(
     let [kx0, kx_y, ky0, ky_x] = rates.affine();
     let consts = [c, cdx * kx0, cdx * kx_y, cdx * ky0, cdx * ky_x];
     let spin = kx_y != 0.0 || ky_x != 0.0;
-    let io = (old.tx.as_slice(), old.ty.as_slice(), new.tx.as_mut_slice(), new.ty.as_mut_slice());
-    match (ghost, spin) {
-        (false, false) => flat::step::<false, false>(prep, io, consts),
-        (false, true) => flat::step::<false, true>(prep, io, consts),
-        (true, false) => flat::step::<true, false>(prep, io, consts),
-        (true, true) => flat::step::<true, true>(prep, io, consts),
-    }
+    (ghost, spin, consts)
 }
 
 /// What a step returns besides the new tractions: the elements on the bound, the traction sums
