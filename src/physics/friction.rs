@@ -81,6 +81,23 @@ impl FrictionLaw {
     }
 }
 
+impl FrictionLaw {
+    /// The steepest fall max_s |dμ_s/ds| [1/(mm/s)], the sum of each term's steepest: linear
+    /// F/(2 S) and exponential ln2 F/S (at s = 0), rational F1/S1 (at s = 0) and
+    /// F2 (9/8)/(√3 S2) (at s = S2/√3); 0 for Coulomb. Derivatives of `m_friclaw.f90` 422-438.
+    pub fn steepest_fall_per_mm_s(&self) -> f64 {
+        let s = FallingTerms::scale;
+        match self {
+            FrictionLaw::Coulomb { .. } => 0.0,
+            FrictionLaw::Linear(t) => t.f1 / (2.0 * s(t.f1, t.sabsh1_mm_s)) + t.f2 / (2.0 * s(t.f2, t.sabsh2_mm_s)),
+            FrictionLaw::Rational(t) => {
+                t.f1 / s(t.f1, t.sabsh1_mm_s) + t.f2 * 9.0 / 8.0 / (3f64.sqrt() * s(t.f2, t.sabsh2_mm_s))
+            }
+            FrictionLaw::Exponential(t) => LN_2 * (t.f1 / s(t.f1, t.sabsh1_mm_s) + t.f2 / s(t.f2, t.sabsh2_mm_s)),
+        }
+    }
+}
+
 /// Friction memory: the relaxation distance d_c [mm] and the slip velocity floor s0 [mm/s]
 /// (CONTACT's MEMDST, MEM_S0; user guide "Friction memory").
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -195,5 +212,19 @@ mod tests {
         assert!((m.theta(1e-4, 0.0) - 10.0 / 11.0).abs() < 1e-15);
         // Without memory μ = μ_s(s).
         assert_eq!(Memory::NONE.update(&exp(), 0.45, 1e-4, 600.0), exp().mu_steady(600.0));
+    }
+    #[test]
+    fn steepest_fall_is_the_slope_at_its_steepest() {
+        // Exponential at s = 0: ln2 · 0.2/600; numerically the same.
+        let d = exp().steepest_fall_per_mm_s();
+        assert!((d - LN_2 * 0.2 / 600.0).abs() < 1e-18);
+        assert!(((exp().mu_steady(0.0) - exp().mu_steady(1e-3)) / 1e-3 - d).abs() < 1e-9);
+        // Rational with only F2: steepest at s = S2/√3, slope F2 (9/8)/(√3 S2).
+        let rat =
+            FrictionLaw::Rational(FallingTerms { fkin: 0.2, f1: 0.0, sabsh1_mm_s: 1.0, f2: 0.1, sabsh2_mm_s: 100.0 });
+        let s0 = 100.0 / 3f64.sqrt();
+        let numeric = (rat.mu_steady(s0 - 1e-4) - rat.mu_steady(s0 + 1e-4)) / 2e-4;
+        assert!((rat.steepest_fall_per_mm_s() - numeric).abs() < 1e-10, "{numeric}");
+        assert_eq!(FrictionLaw::Coulomb { mu: 0.3 }.steepest_fall_per_mm_s(), 0.0);
     }
 }

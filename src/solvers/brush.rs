@@ -23,7 +23,7 @@ pub fn slip_rates(s: &Sample, local: &LocalContact) -> RigidSlip {
 
 /// The flexibilities L1, L2, L3 [mm³/N] the brush marches with at this sample: Kalker's three,
 /// or the single one, divided by the slope reduction's factor k (k = 1 without one).
-fn flexibilities(s: &Sample, local: &LocalContact) -> (f64, f64, f64) {
+pub fn flexibilities(s: &Sample, local: &LocalContact) -> (f64, f64, f64) {
     let c = (s.cx, s.cy, s.cs);
     let (l1, l2, l3) = match local.single_flexibility {
         None => (local.flex.l1_mm3_n, local.flex.l2_mm3_n, local.flex.l3_mm3_n),

@@ -46,13 +46,59 @@ const MAX_COURANT: f64 = 64.0;
 fn check(p: &Problem) -> Result<(), InputError> {
     let c = p.rolling.courant;
     if c > 0.0 && c <= MAX_COURANT {
-        return Ok(());
+        return check_falling(p);
     }
     Err(InputError::new(
         "rolling.courant",
         c,
         format!("(0, {MAX_COURANT}] when the scene runs uba (its upwind step is stable for courant <= 1; larger steps are split into ceil(courant) sub-steps)"),
     ))
+}
+
+/// Largest stiffness κ of a time step with a memoryless falling law ([`stiffness`]).
+pub const MAX_STIFFNESS: f64 = 1.0;
+
+/// A memoryless falling law on a time history: each element's bound g = p μ(s(g)), with the slip
+/// velocity s = c (|u| − g), c = V L/(gain C dx), has one root for every traction only when
+/// κ = p c max|dμ/ds| < 1 ([`MAX_STIFFNESS`]); above it the explicit step's bound may jump
+/// between roots from one step to the next. Sub-stepping cannot help (c grows as C dx shrinks),
+/// so the UBA refuses. With a memory μ follows the slip velocity over the relaxation distance
+/// (backward Euler, unconditionally stable) and the step is accepted.
+fn check_falling(p: &Problem) -> Result<(), InputError> {
+    if !p.friction.is_falling() || p.memory.is_active() || !p.loading.is_transient() {
+        return Ok(());
+    }
+    let kappa = stiffness(p);
+    if kappa < MAX_STIFFNESS {
+        return Ok(());
+    }
+    Err(InputError::new(
+        "friction.memory_mm",
+        format!("none (uba's kappa = {kappa:.3})"),
+        format!(
+            "uba's stiffness kappa = p_max V L max|dmu/ds| / (gain C dx) < {MAX_STIFFNESS} with a falling law and no friction memory (each element's bound mu(s) p then has one root; sub-steps only raise kappa): give memory_mm > 0, a flatter law (larger sabsh1_mm_s), a lower speed, a larger courant, or leave uba out"
+        ),
+    ))
+}
+
+/// κ = max over the history of p_max V max(L1, L2) max|dμ_s/ds| / (min gain · C dx), C the
+/// sub-step's Courant number ([`substeps`]).
+pub fn stiffness(p: &Problem) -> f64 {
+    let (_, courant) = substeps(p.rolling.courant);
+    let slope = p.friction.steepest_fall_per_mm_s();
+    let mut local = p.local_contact(p.loading.first().fn_n);
+    let mut kappa = 0.0f64;
+    for at in p.loading.rows() {
+        if at.fn_n != local.planform.ellipse.fn_n {
+            local = p.local_contact(at.fn_n);
+        }
+        let p_max = local.planform.pressure_mpa.iter().fold(0.0f64, |m, &v| m.max(v));
+        let gain = local.row_gain.iter().copied().filter(|g| *g > 0.0).fold(f64::INFINITY, f64::min);
+        let (l1, l2, _) = brush::flexibilities(at, &local);
+        let c = at.speed_mm_s(p.rolling.v_mm_s) * l1.max(l2) / (gain * courant * p.grid.dx_mm);
+        kappa = kappa.max(p_max * c * slope);
+    }
+    kappa
 }
 
 /// Sub-steps per time step and the Courant number of each: `n = ceil(C)`, `C/n ≤ 1`.
