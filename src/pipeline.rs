@@ -224,7 +224,18 @@ pub fn run(mut problem: Problem) -> Result<SceneResult, Error> {
             }
         };
         let limit = Termination::IterationLimit.code();
-        let stuck = h.column(history::TERMINATION).map_or(0, |t| t.iter().filter(|&&c| c == limit).count());
+        let veldep_stuck = h.column("veldep_converged").map_or(0, |c| c.iter().filter(|&&v| v == 0.0).count());
+        if veldep_stuck > 0 {
+            problem.warnings.push(format!(
+                "{name}: {veldep_stuck} of {} solves: the slip-velocity fixed point of the falling friction law did not converge (veldep_converged = 0; contact_solver.veldep_tolerance = {:e}); those rows are not converged",
+                h.rows.len(),
+                problem.contact_solver.veldep_tolerance
+            ));
+        }
+        let stuck = h
+            .column(history::TERMINATION)
+            .map_or(0, |t| t.iter().filter(|&&c| c == limit).count())
+            .saturating_sub(veldep_stuck);
         if stuck > 0 {
             problem.warnings.push(format!(
                 "{name}: {stuck} of {} solves reached the iteration limit (contact_solver.max_iterations = {}); those rows are not converged",

@@ -13,6 +13,7 @@ mod external_and_gate;
 mod fastrip_model;
 mod figures;
 mod fit;
+mod friction;
 mod gate;
 mod gate_baselines;
 mod gate_outputs;

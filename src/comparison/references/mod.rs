@@ -5,6 +5,7 @@
 
 pub mod contact;
 pub mod envelope;
+pub mod friction;
 pub mod table;
 pub mod thesis;
 
@@ -45,7 +46,7 @@ pub struct SetDef {
 
 /// The registry: every reference set, in the order of the gate and the report. Adding a set:
 /// its file and a line here (and its gated rules in `tolerances.toml`, if it has any).
-pub const SETS: [SetDef; 5] = [
+pub const SETS: [SetDef; 6] = [
     SetDef {
         labels: &[
             (contact::EXACT, "simplified models differ from the exact theory by design; the report shows by how much"),
@@ -84,6 +85,15 @@ pub const SETS: [SetDef; 5] = [
             "the thesis's figures were read off its plots and used another grid treatment; reported beside ours",
         )],
         load: |dir| Ok(Box::new(thesis::ThesisTables::load(dir)?)),
+        section: None,
+    },
+    SetDef {
+        labels: &[
+            (friction::FRICTION, "the fast models against the exact theory with falling friction: reported"),
+            (friction::FRICTION_TIGHT, "the fast models against the tightly converged exact theory: reported"),
+            (friction::FRICTION_UNGATED, "cases CONTACT's README does not gate (cases.csv gate = no, its note says why: two steady solutions, or the memoryless falling branch oscillating in time): reported"),
+        ],
+        load: |dir| Ok(Box::new(friction::FrictionCases::load(dir)?)),
         section: None,
     },
 ];
