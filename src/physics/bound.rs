@@ -63,53 +63,46 @@ pub fn scale_factor(n2: f64, g: f64) -> f64 {
     }
 }
 
-/// Relative tolerance of [`falling_bound`]: the bracket of g is narrowed until it is at most
-/// `FALLING_TOL · a` wide (a = |τ| of the unbounded traction).
+/// Relative tolerance of [`falling_bound`]: iterations stop when a step changes g by at most
+/// `FALLING_TOL · a` (a = |τ| of the unbounded traction).
 pub const FALLING_TOL: f64 = 1e-12;
 
-/// Iterations [`falling_bound`] may take (regula falsi with the Illinois halving, bisection every
-/// third step: the bracket at least halves every three steps, so 200 is never reached for
-/// `FALLING_TOL`).
-const FALLING_MAX_ITER: usize = 200;
+/// Iterations [`falling_bound`] may take (Newton, quadratic near the root; a bisection of the
+/// bracket where a Newton step leaves it: 100 bisections narrow any bracket below `FALLING_TOL`).
+const FALLING_MAX_ITER: usize = 100;
 
 /// The bound g of a slipping element whose coefficient falls with its own slip velocity: the
 /// root in (0, a) of `h(g) = g − p μ(c (a − g))`, where a = |τ| of the unbounded traction, the
-/// slip velocity of the projected traction is `s = c (a − g)` [mm/s] and `μ(s)` the friction law
-/// (with the memory's weight when there is one). The element slips, so `h(a) = a − p μ(0) > 0`,
-/// and `h(0) = −p μ(c a) < 0`: a root exists and the bracket keeps it (regula falsi, Illinois
-/// variant, to a bracket of `FALLING_TOL · a`). With several roots (a law steeper than
-/// 1/(p c)) the bracket settles on one of them; the history's oscillation indicator watches
-/// the result. Returns g and the slip velocity c (a − g).
-pub fn falling_bound(a: f64, p: f64, c: f64, mu: impl Fn(f64) -> f64) -> (f64, f64) {
-    let h = |g: f64| g - p * mu(c * (a - g));
+/// slip velocity of the projected traction is `s = c (a − g)` [mm/s] and `mu(s)` gives the
+/// friction law's (μ, dμ/ds) (with the memory's weight when there is one). The element slips, so
+/// `h(a) = a − p μ(0) > 0`, and `h(0) = −p μ(c a) < 0`: a root exists and the bracket keeps it.
+/// Newton from `g0` (h' = 1 + p c dμ/ds), a bisection where a step leaves the bracket, until a
+/// step is at most `FALLING_TOL · a`. With several roots (a law steeper than 1/(p c)) it settles
+/// on one of them; the history's oscillation flag watches the result. Returns g and the slip
+/// velocity c (a − g).
+pub fn falling_bound(a: f64, p: f64, c: f64, g0: f64, mu: impl Fn(f64) -> (f64, f64)) -> (f64, f64) {
     let (mut lo, mut hi) = (0.0, a);
-    let (mut h_lo, mut h_hi) = (h(lo), h(hi));
-    let mut side = 0i8;
-    for it in 0..FALLING_MAX_ITER {
-        if hi - lo <= FALLING_TOL * a {
+    let mut g = if g0 > 0.0 && g0 < a { g0 } else { 0.5 * a };
+    for _ in 0..FALLING_MAX_ITER {
+        let (m, dm) = mu(c * (a - g));
+        let h = g - p * m;
+        if h == 0.0 {
             break;
         }
-        let secant = (lo * h_hi - hi * h_lo) / (h_hi - h_lo);
-        let g = if it % 3 == 2 || !(secant > lo && secant < hi) { 0.5 * (lo + hi) } else { secant };
-        let hg = h(g);
-        if hg == 0.0 {
-            return (g, c * (a - g));
-        }
-        if hg < 0.0 {
-            (lo, h_lo) = (g, hg);
-            if side == -1 {
-                h_hi *= 0.5;
-            }
-            side = -1;
+        if h < 0.0 {
+            lo = g;
         } else {
-            (hi, h_hi) = (g, hg);
-            if side == 1 {
-                h_lo *= 0.5;
-            }
-            side = 1;
+            hi = g;
+        }
+        let slope = 1.0 + p * c * dm;
+        let newton = g - h / slope;
+        let next = if slope > 0.0 && newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+        let step = (next - g).abs();
+        g = next;
+        if step <= FALLING_TOL * a {
+            break;
         }
     }
-    let g = if h_hi.abs() < h_lo.abs() { hi } else { lo };
     (g, c * (a - g))
 }
 
@@ -183,12 +176,13 @@ mod tests {
     #[test]
     fn falling_bound_is_the_fixed_point() {
         // μ(s) = 0.4 − 1e-4 s, p = 1, c = 1000, a = 1: g = 0.4 − 0.1 (1 − g) → g = 0.3/0.9.
-        let (g, s) = falling_bound(1.0, 1.0, 1000.0, |s| 0.4 - 1e-4 * s);
+        let (g, s) = falling_bound(1.0, 1.0, 1000.0, 0.0, |s| (0.4 - 1e-4 * s, -1e-4));
         assert!((g - 1.0 / 3.0).abs() < 1e-12, "{g}");
         assert!((s - 2000.0 / 3.0).abs() < 1e-8, "{s}");
-        let mu = |s: f64| 0.25 + 0.2 * (-std::f64::consts::LN_2 * s / 600.0).exp();
+        let k = std::f64::consts::LN_2 / 600.0;
+        let mu = |s: f64| 0.25 + 0.2 * (-k * s).exp();
         let (a, p, c) = (900.0, 1500.0, 3.0);
-        let (g, s) = falling_bound(a, p, c, mu);
+        let (g, s) = falling_bound(a, p, c, 0.0, |s| (mu(s), -k * 0.2 * (-k * s).exp()));
         assert!(g > 0.0 && g < a);
         assert!((g - p * mu(s)).abs() <= 1e-9 * a, "residual {}", g - p * mu(s));
         assert!((s - c * (a - g)).abs() < 1e-9);

@@ -185,6 +185,12 @@ impl Falling {
     fn mu(&self, mu_up: f64, s_mm_s: f64) -> f64 {
         self.memory.update(&self.law, mu_up, self.dt_s, s_mm_s)
     }
+
+    /// [`Falling::mu`] and its derivative in s.
+    #[inline]
+    fn mu_and_slope(&self, mu_up: f64, s_mm_s: f64) -> (f64, f64) {
+        self.memory.update_and_slope(&self.law, mu_up, self.dt_s, s_mm_s)
+    }
 }
 
 impl ElementBound for Falling {
@@ -201,7 +207,8 @@ impl ElementBound for Falling {
         let a = (ux * ux + uy * uy).sqrt();
         let (cx, cy) = (self.c_mm_s.0 * ux, self.c_mm_s.1 * uy);
         let c = (cx * cx + cy * cy).sqrt() / (a * gain);
-        let (g, _) = falling_bound(a, p, c, |s| self.mu(mu_up, s));
+        // Newton from the coefficient the material carried in (the upstream element's).
+        let (g, _) = falling_bound(a, p, c, mu_up * p, |s| self.mu_and_slope(mu_up, s));
         let (px, py) = scale_to_bound(ux, uy, g);
         (px, py, true, g / p)
     }

@@ -86,3 +86,34 @@ fn uba_refuses_a_stiff_memoryless_step() {
     let h = run(&problem(&with_memory), "uba");
     assert!(f(&h).iter().all(|v| v.is_finite() && *v <= 0.45));
 }
+
+/// The shipped Polach fit (fits/polach_falling.toml) against CONTACT's falling curve
+/// fr_exp_sweep_cx: A = 0.3868, B = 0.6572 s/m; RMS |Δf| on the fitted curve 0.0678 -> 0.00896,
+/// max 0.158 -> 0.0174; held out (the same law's speed sweep with memory) RMS 0.0427 -> 0.0359.
+#[test]
+fn polach_fit_to_the_falling_curve() {
+    let out = tempdir("fit_polach_falling").join("polach.toml");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(root())
+        .args(["fit", "fits/polach_falling.toml", "--out", out.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(&out).unwrap();
+    let doc: toml::Table = text.parse().unwrap();
+    let (a, b) = (doc["model"]["polach_a"].as_float().unwrap(), doc["model"]["polach_b_s_per_m"].as_float().unwrap());
+    assert!((a - 0.3868).abs() < 1e-3 && (b - 0.6572).abs() < 2e-3, "A {a}, B {b}");
+    let row = |set: &str, norm: &str| -> (f64, f64) {
+        let line = text
+            .lines()
+            .map(|l| l.trim_start_matches("# "))
+            .find(|l| l.starts_with(&format!("| {set} |")) && l.contains(&format!("| {norm}")))
+            .unwrap();
+        let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+        (cells[5].parse().unwrap(), cells[6].parse().unwrap())
+    };
+    let (before, after) = row("fitted", "rms_df");
+    assert!((before - 0.0678).abs() < 1e-4 && (after - 0.00896).abs() < 1e-4, "{before} -> {after}");
+    let (before, after) = row("held out", "rms_df");
+    assert!((before - 0.04274).abs() < 1e-4 && (after - 0.03585).abs() < 2e-4, "{before} -> {after}");
+}
