@@ -106,7 +106,7 @@ pub struct ContactSolverOptions {
 }
 
 /// Default `[contact_solver] veldep_tolerance`.
-pub const VELDEP_TOLERANCE: f64 = 1e-9;
+pub const VELDEP_TOLERANCE: f64 = 1e-6;
 
 fn veldep_tolerance() -> f64 {
     VELDEP_TOLERANCE

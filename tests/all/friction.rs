@@ -14,7 +14,7 @@ use std::path::Path;
 
 /// The suite runs, matches golden/ and passes every gated comparison with `contact_friction`;
 /// against the `*_tight` columns the exact solver is within 1e-6 on every gated case (it solves
-/// the fixed point to 1e-9; measured 9.8e-8), and the ungated cases are compared, not gated.
+/// the fixed point to 1e-6 in s; measured 1.4e-7), and the ungated cases are compared, not gated.
 #[test]
 fn suite_matches_golden_and_contact_with_falling_friction() {
     let files = suite::scene_files(&[root().join("scenes/friction")], None).unwrap();

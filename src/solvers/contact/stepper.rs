@@ -152,6 +152,10 @@ impl Contact<'_> {
         let mu = if self.veldep.is_some() { 1.0 } else { s.mu };
         let mut t = TangentialParams::new(mu, s.cx, s.cy, s.cs, self.p.rolling.dq_mm);
         t.tol = self.p.contact_solver.tolerance;
+        if self.veldep.is_some() {
+            // The fixed point on s can get only as tight as its solves: a tenth of its tolerance.
+            t.tol = t.tol.min(0.1 * self.p.contact_solver.veldep_tolerance);
+        }
         t.max_iter = self.p.contact_solver.max_iterations;
         t
     }
@@ -223,9 +227,12 @@ impl Contact<'_> {
             };
             let older = self.older.as_ref().map(|(a, b)| (a.as_slice(), b.as_slice()));
             let tangential = &mut self.tangential;
-            veldep.step(pn, motion, |g, _| {
+            veldep.step(pn, motion, |g, start| {
                 tangential.set_bound(g)?;
-                tangential.transient_step(&params, px, py, older)
+                match start {
+                    Some(start) => tangential.transient_step_from(&params, px, py, start),
+                    None => tangential.transient_step(&params, px, py, older),
+                }
             })
         }
         .map_err(fail)?;

@@ -14,8 +14,8 @@ use super::ContactError;
 use crate::physics::{FrictionLaw, Memory};
 use crate::scene::InitialSlip;
 
-/// The fixed point's options (`[contact_solver]`: `veldep_tolerance`, `veldep_max_iterations`,
-/// `inislp`, `omgslp`).
+/// The fixed point's options (`[contact_solver]`: `veldep_tolerance`, `inislp`; the limit and
+/// OMGSLP are CONTACT's, `stepper`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct VelDepOptions {
     /// Stop when rms(s_new − s) ≤ tolerance · rms(s_new) (CONTACT: a fixed 1e-3).
@@ -123,6 +123,7 @@ impl VelDep {
                 let damp = it > 1 && r.state[k] == ElementState::Slip && mu[k] > mu_prev[k];
                 s[k] = if damp { (omgslp * s_new[k] + (1.0 - omgslp) * s[k]).max(0.0) } else { s_new[k] };
             }
+
             if changed && it % 20 == 0 {
                 omgslp *= 0.8;
             }

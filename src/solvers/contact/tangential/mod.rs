@@ -592,6 +592,35 @@ impl TangentialSolver {
                 None => (prev_px[k], prev_py[k]),
             };
         }
+        self.transient_solve(params)
+    }
+
+    /// One transient rolling step as [`TangentialSolver::transient_step`], warm started from the
+    /// tractions `start` [MPa] (an earlier solve of the same step with another bound).
+    pub fn transient_step_from(
+        &mut self,
+        params: &TangentialParams,
+        prev_px: &[f64],
+        prev_py: &[f64],
+        start: (&[f64], &[f64]),
+    ) -> Result<StepResult, ContactError> {
+        self.check_params(params)?;
+        let n = self.layout.n();
+        check_grid_array("start traction px", start.0, n)?;
+        check_grid_array("start traction py", start.1, n)?;
+        self.transient_rhs(params, prev_px, prev_py)?;
+        let (lay, st) = (&self.layout, &mut self.state);
+        st.px.fill(0.0);
+        st.py.fill(0.0);
+        for &k in &lay.contact {
+            (st.px[k], st.py[k]) = (start.0[k], start.1[k]);
+        }
+        self.transient_solve(params)
+    }
+
+    /// The transient step from the warm start in the state's tractions (the right-hand side set).
+    fn transient_solve(&mut self, params: &TangentialParams) -> Result<StepResult, ContactError> {
+        let (lay, st) = (&self.layout, &mut self.state);
         st.clip_to_bound(lay, params.mu);
         // s = b - A p.
         st.recompute_slip(lay, &mut self.plans.conv0)?;
