@@ -216,7 +216,39 @@ fn bench_fft_length(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench_uba, bench_fastsim, bench_fast_models, bench_uba_run, bench_fft_length);
+/// Issue 33 item 6: FASTSIM's steady solve and one UBA transient step with a falling friction law
+/// against the same with Coulomb's μ at the law's static value, at 22×22 on the step into the
+/// falling branch (scenes/stability/stab_fr_step_mem: cx = 0.012, most elements slip; the
+/// falling law solves each slipping element's bound g = p μ(s(g)) with the memory's update).
+fn bench_falling(c: &mut Criterion) {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let falling = std::fs::read_to_string(root.join("scenes/stability/stab_fr_step_mem.toml")).unwrap();
+    let start = falling.find("[friction]").unwrap();
+    let end = falling.find("[material]").unwrap();
+    let coulomb = format!("{}{}", &falling[..start], &falling[end..])
+        .replace("fn_n = 100000.0\n", "fn_n = 100000.0\nmu = 0.45\n");
+    let mut g = c.benchmark_group("falling_friction");
+    for (law, text) in [("coulomb", coulomb), ("falling", falling)] {
+        let p = creepbench::pipeline::resolve(&Scene::from_toml(&text, root).unwrap()).unwrap();
+        let sample = p.loading.samples[3];
+        for def in [&fastsim::MODEL, &uba::MODEL] {
+            let mut model = (def.build)(&p).unwrap();
+            model.load(&sample).unwrap();
+            if def.name == "uba" {
+                g.bench_function(format!("uba_step_{law}"), |b| {
+                    b.iter(|| model.transient(black_box(&sample)).unwrap().fx_over_fn)
+                });
+            } else {
+                g.bench_function(format!("fastsim_{law}"), |b| {
+                    b.iter(|| model.steady(black_box(&sample)).unwrap().fx_over_fn)
+                });
+            }
+        }
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench_uba, bench_fastsim, bench_fast_models, bench_uba_run, bench_fft_length, bench_falling);
 /// Issue 33, item 6: the exact solver's whole history with falling friction against Coulomb's
 /// (μ = the law's static value 0.45) on the same scenes/friction case, per element-step (the
 /// throughput: steps × elements): a transient step into the falling branch with memory

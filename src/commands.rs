@@ -216,6 +216,9 @@ pub fn run(
     let records = read_fit_records(&[results_dir.to_path_buf()])?;
     let (md, verdict) = report_with_verdict(&stored, &refs, report_dir, (Some(golden), &rules), &records, Vec::new())?;
     println!("gates: {verdict}");
+    for line in console::oscillating(&stored, false) {
+        println!("{line}");
+    }
     println!("report: {}", md.display());
     Ok(())
 }
@@ -534,6 +537,7 @@ pub fn check(
         print!("{}", compare::table(&compare::worst_per_group(&all)));
     }
     print_list("", &console::no_baseline(&all, files.verbose));
+    print_list("", &console::oscillating(&scenes, files.verbose));
     if !loosened.is_empty() {
         println!("\n{} rule(s) of the run's files loosen what the defaults gate:", loosened.len());
         for l in &loosened {

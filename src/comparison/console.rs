@@ -5,6 +5,8 @@
 //! and summary files keep everything.
 
 use crate::comparison::compare::{self, Finding};
+use crate::metrics::oscillation_index::own_oscillation;
+use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
 use std::fmt::{self, Write};
 
@@ -133,6 +135,25 @@ pub fn moved(all: &[Finding], verbose: bool) -> (usize, Vec<String>) {
         )
     });
     (moved.len(), capped(lines.collect(), verbose))
+}
+
+/// The time histories that oscillate on their own ([`own_oscillation`]: |f| turning at
+/// [`crate::metrics::oscillation_index::ZIGZAG_FLAG`] or more consecutive steps, more than the loading
+/// does), one OSCILLATES line
+/// each, so that no oscillating history passes in silence (e.g. the memoryless falling branch).
+pub fn oscillating(scenes: &[StoredScene], verbose: bool) -> Vec<String> {
+    let mut lines = Vec::new();
+    for sc in scenes {
+        for (solver, h) in &sc.histories {
+            if let Some(o) = own_oscillation(h, sc.scene.v_mm_s) {
+                lines.push(format!(
+                    "OSCILLATES: {} {solver}: |f| turns at {} consecutive steps (the loading at {}), oscillation index {:.3}",
+                    sc.name, o.run, o.loading_run, o.index
+                ));
+            }
+        }
+    }
+    capped(lines, verbose)
 }
 
 /// At most [`CONSOLE_LINES`] lines unless verbose, the rest counted in a last line.

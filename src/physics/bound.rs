@@ -63,6 +63,49 @@ pub fn scale_factor(n2: f64, g: f64) -> f64 {
     }
 }
 
+/// Relative tolerance of [`falling_bound`]: iterations stop when a step changes g by at most
+/// `FALLING_TOL · a` (a = |τ| of the unbounded traction).
+pub const FALLING_TOL: f64 = 1e-12;
+
+/// Iterations [`falling_bound`] may take (Newton, quadratic near the root; a bisection of the
+/// bracket where a Newton step leaves it: 100 bisections narrow any bracket below `FALLING_TOL`).
+const FALLING_MAX_ITER: usize = 100;
+
+/// The bound g of a slipping element whose coefficient falls with its own slip velocity: the
+/// root in (0, a) of `h(g) = g − p μ(c (a − g))`, where a = |τ| of the unbounded traction, the
+/// slip velocity of the projected traction is `s = c (a − g)` [mm/s] and `mu(s)` gives the
+/// friction law's (μ, dμ/ds) (with the memory's weight when there is one). The element slips, so
+/// `h(a) = a − p μ(0) > 0`, and `h(0) = −p μ(c a) < 0`: a root exists and the bracket keeps it.
+/// Newton from `g0` (h' = 1 + p c dμ/ds), a bisection where a step leaves the bracket, until a
+/// step is at most `FALLING_TOL · a`. With several roots (a law steeper than 1/(p c)) it settles
+/// on one of them; the history's oscillation flag watches the result. Returns g and the slip
+/// velocity c (a − g).
+pub fn falling_bound(a: f64, p: f64, c: f64, g0: f64, mu: impl Fn(f64) -> (f64, f64)) -> (f64, f64) {
+    let (mut lo, mut hi) = (0.0, a);
+    let mut g = if g0 > 0.0 && g0 < a { g0 } else { 0.5 * a };
+    for _ in 0..FALLING_MAX_ITER {
+        let (m, dm) = mu(c * (a - g));
+        let h = g - p * m;
+        if h == 0.0 {
+            break;
+        }
+        if h < 0.0 {
+            lo = g;
+        } else {
+            hi = g;
+        }
+        let slope = 1.0 + p * c * dm;
+        let newton = g - h / slope;
+        let next = if slope > 0.0 && newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+        let step = (next - g).abs();
+        g = next;
+        if step <= FALLING_TOL * a {
+            break;
+        }
+    }
+    (g, c * (a - g))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -127,5 +170,21 @@ mod tests {
             let s = g / ((0.1 * tx) * (0.1 * tx) + (0.1 * ty) * (0.1 * ty)).sqrt();
             (0.1 * tx * s, 0.1 * ty * s)
         });
+    }
+    /// The falling bound solves g = p μ(c (a − g)): a linear law by hand, and the residual of an
+    /// exponential one below the tolerance.
+    #[test]
+    fn falling_bound_is_the_fixed_point() {
+        // μ(s) = 0.4 − 1e-4 s, p = 1, c = 1000, a = 1: g = 0.4 − 0.1 (1 − g) → g = 0.3/0.9.
+        let (g, s) = falling_bound(1.0, 1.0, 1000.0, 0.0, |s| (0.4 - 1e-4 * s, -1e-4));
+        assert!((g - 1.0 / 3.0).abs() < 1e-12, "{g}");
+        assert!((s - 2000.0 / 3.0).abs() < 1e-8, "{s}");
+        let k = std::f64::consts::LN_2 / 600.0;
+        let mu = |s: f64| 0.25 + 0.2 * (-k * s).exp();
+        let (a, p, c) = (900.0, 1500.0, 3.0);
+        let (g, s) = falling_bound(a, p, c, 0.0, |s| (mu(s), -k * 0.2 * (-k * s).exp()));
+        assert!(g > 0.0 && g < a);
+        assert!((g - p * mu(s)).abs() <= 1e-9 * a, "residual {}", g - p * mu(s));
+        assert!((s - c * (a - g)).abs() < 1e-9);
     }
 }

@@ -81,6 +81,61 @@ impl FrictionLaw {
     }
 }
 
+impl FrictionLaw {
+    /// (μ_s(s), dμ_s/ds): the steady coefficient and its slope [1/(mm/s)] at `s_mm_s` ≥ 0
+    /// (derivatives of `m_friclaw.f90` 422-438; one exponential per term).
+    #[inline]
+    pub fn mu_steady_and_slope(&self, s_mm_s: f64) -> (f64, f64) {
+        let sc = FallingTerms::scale;
+        match self {
+            FrictionLaw::Coulomb { mu } => (*mu, 0.0),
+            FrictionLaw::Linear(t) => {
+                let term = |f: f64, sh: f64| {
+                    let h = sc(f, sh);
+                    if s_mm_s < 2.0 * h {
+                        (f * (1.0 - s_mm_s / (2.0 * h)), -f / (2.0 * h))
+                    } else {
+                        (0.0, 0.0)
+                    }
+                };
+                let ((v1, d1), (v2, d2)) = (term(t.f1, t.sabsh1_mm_s), term(t.f2, t.sabsh2_mm_s));
+                (t.fkin + v1 + v2, d1 + d2)
+            }
+            FrictionLaw::Rational(t) => {
+                let (h1, h2) = (sc(t.f1, t.sabsh1_mm_s), sc(t.f2, t.sabsh2_mm_s));
+                let q1 = 1.0 + s_mm_s / h1;
+                let r = s_mm_s / h2;
+                let q2 = 1.0 + r * r;
+                (t.fkin + t.f1 / q1 + t.f2 / q2, -t.f1 / (h1 * q1 * q1) - t.f2 * 2.0 * r / (h2 * q2 * q2))
+            }
+            FrictionLaw::Exponential(t) => {
+                let term = |f: f64, sh: f64| {
+                    let h = sc(f, sh);
+                    let e = f * (-LN_2 * s_mm_s / h).exp();
+                    (e, -LN_2 / h * e)
+                };
+                let ((v1, d1), (v2, d2)) = (term(t.f1, t.sabsh1_mm_s), term(t.f2, t.sabsh2_mm_s));
+                (t.fkin + v1 + v2, d1 + d2)
+            }
+        }
+    }
+
+    /// The steepest fall max_s |dμ_s/ds| [1/(mm/s)], the sum of each term's steepest: linear
+    /// F/(2 S) and exponential ln2 F/S (at s = 0), rational F1/S1 (at s = 0) and
+    /// F2 (9/8)/(√3 S2) (at s = S2/√3); 0 for Coulomb. Derivatives of `m_friclaw.f90` 422-438.
+    pub fn steepest_fall_per_mm_s(&self) -> f64 {
+        let s = FallingTerms::scale;
+        match self {
+            FrictionLaw::Coulomb { .. } => 0.0,
+            FrictionLaw::Linear(t) => t.f1 / (2.0 * s(t.f1, t.sabsh1_mm_s)) + t.f2 / (2.0 * s(t.f2, t.sabsh2_mm_s)),
+            FrictionLaw::Rational(t) => {
+                t.f1 / s(t.f1, t.sabsh1_mm_s) + t.f2 * 9.0 / 8.0 / (3f64.sqrt() * s(t.f2, t.sabsh2_mm_s))
+            }
+            FrictionLaw::Exponential(t) => LN_2 * (t.f1 / s(t.f1, t.sabsh1_mm_s) + t.f2 / s(t.f2, t.sabsh2_mm_s)),
+        }
+    }
+}
+
 /// Friction memory: the relaxation distance d_c [mm] and the slip velocity floor s0 [mm/s]
 /// (CONTACT's MEMDST, MEM_S0; user guide "Friction memory").
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -114,6 +169,20 @@ impl Memory {
         } else {
             theta * mu_prev + (1.0 - theta) * mu_s
         }
+    }
+
+    /// [`Memory::update`] and its derivative in s: μ = θ μ_prev + (1 − θ) μ_s(s),
+    /// dμ/ds = θ'(s) (μ_prev − μ_s) + (1 − θ) μ_s'(s), θ' = −d_c dt/(d_c + dt s)² above s0 (0 below).
+    #[inline]
+    pub fn update_and_slope(&self, law: &FrictionLaw, mu_prev: f64, dt_s: f64, s_mm_s: f64) -> (f64, f64) {
+        let theta = self.theta(dt_s, s_mm_s);
+        let (mu_s, d_s) = law.mu_steady_and_slope(s_mm_s);
+        if theta == 0.0 {
+            return (mu_s, d_s);
+        }
+        let q = self.memory_mm + dt_s * s_mm_s.max(self.s0_mm_s);
+        let d_theta = if s_mm_s > self.s0_mm_s { -self.memory_mm * dt_s / (q * q) } else { 0.0 };
+        (theta * mu_prev + (1.0 - theta) * mu_s, d_theta * (mu_prev - mu_s) + (1.0 - theta) * d_s)
     }
 
     /// Whether there is a memory (d_c > 1e-9 mm).
@@ -195,5 +264,41 @@ mod tests {
         assert!((m.theta(1e-4, 0.0) - 10.0 / 11.0).abs() < 1e-15);
         // Without memory μ = μ_s(s).
         assert_eq!(Memory::NONE.update(&exp(), 0.45, 1e-4, 600.0), exp().mu_steady(600.0));
+    }
+    #[test]
+    fn steepest_fall_is_the_slope_at_its_steepest() {
+        // Exponential at s = 0: ln2 · 0.2/600; numerically the same.
+        let d = exp().steepest_fall_per_mm_s();
+        assert!((d - LN_2 * 0.2 / 600.0).abs() < 1e-18);
+        assert!(((exp().mu_steady(0.0) - exp().mu_steady(1e-3)) / 1e-3 - d).abs() < 1e-9);
+        // Rational with only F2: steepest at s = S2/√3, slope F2 (9/8)/(√3 S2).
+        let rat =
+            FrictionLaw::Rational(FallingTerms { fkin: 0.2, f1: 0.0, sabsh1_mm_s: 1.0, f2: 0.1, sabsh2_mm_s: 100.0 });
+        let s0 = 100.0 / 3f64.sqrt();
+        let numeric = (rat.mu_steady(s0 - 1e-4) - rat.mu_steady(s0 + 1e-4)) / 2e-4;
+        assert!((rat.steepest_fall_per_mm_s() - numeric).abs() < 1e-10, "{numeric}");
+        assert_eq!(FrictionLaw::Coulomb { mu: 0.3 }.steepest_fall_per_mm_s(), 0.0);
+    }
+    #[test]
+    fn slope_is_the_derivative() {
+        let laws = [
+            exp(),
+            FrictionLaw::Linear(FallingTerms { fkin: 0.2, f1: 0.25, sabsh1_mm_s: 800.0, f2: 0.05, sabsh2_mm_s: 100.0 }),
+            FrictionLaw::Rational(FallingTerms {
+                fkin: 0.22,
+                f1: 0.15,
+                sabsh1_mm_s: 400.0,
+                f2: 0.08,
+                sabsh2_mm_s: 2500.0,
+            }),
+        ];
+        for law in laws {
+            for s in [10.0, 150.0, 700.0, 3000.0] {
+                let (mu, d) = law.mu_steady_and_slope(s);
+                assert!((mu - law.mu_steady(s)).abs() < 1e-15, "{law:?} {s}");
+                let numeric = (law.mu_steady(s + 1e-3) - law.mu_steady(s - 1e-3)) / 2e-3;
+                assert!((d - numeric).abs() < 1e-9, "{law:?} at {s}: {d} vs {numeric}");
+            }
+        }
     }
 }

@@ -3,6 +3,7 @@
 //! (below it: the comparison's findings and the reference sets; above it: calibration).
 
 pub mod envelope;
+pub mod falling;
 pub mod ladder;
 pub mod linked_table;
 pub mod plot;

@@ -4,6 +4,7 @@
 
 use crate::comparison::references::{References, ENVELOPE_SECTION, NONHERTZ_SECTION};
 use crate::report::envelope;
+use crate::report::falling;
 use crate::report::ladder;
 use crate::report::section::Section;
 use crate::report::sections;
@@ -23,7 +24,7 @@ pub struct SectionDef {
 }
 
 /// Every section, in the report's order.
-pub const SECTIONS: [SectionDef; 10] = [
+pub const SECTIONS: [SectionDef; 11] = [
     SectionDef {
         id: "thesis",
         applies: |s, _| sections::thesis_applies(s),
@@ -41,6 +42,7 @@ pub const SECTIONS: [SectionDef; 10] = [
         applies: |s, r| in_section(s, r, NONHERTZ_SECTION),
         render: envelope::nonhertz_section,
     },
+    SectionDef { id: falling::ID, applies: |s, _| falling::applies(s), render: falling::section },
     SectionDef { id: "work_precision", applies: |s, _| work_precision::applies(s), render: work_precision::section },
     SectionDef {
         id: "grid_convergence",

@@ -8,6 +8,7 @@ use crate::comparison::references::thesis::{self, ThesisTables};
 use crate::comparison::references::References;
 use crate::comparison::tolerance_file::Loosening;
 use crate::history::History;
+use crate::metrics::oscillation_index::own_oscillation;
 use crate::report::linked_table::{largest, place, Table};
 use crate::report::plot::{line_chart, Axis, Series};
 pub use crate::report::section::Section;
@@ -137,7 +138,7 @@ pub fn timing(scenes: &[StoredScene], refs: &References) -> Section {
 /// models, the iteration counts and the solves that hit the iteration limit.
 pub fn stability(scenes: &[StoredScene]) -> Section {
     let stab: Vec<&StoredScene> = scenes.iter().filter(|s| s.name.starts_with(STABILITY_SCENES)).collect();
-    let mut s = String::from("Extreme and stiff cases (`scenes/stability/`). The traction bound keeps |τ| ≤ μp even when a scheme has blown up, so the bound proves nothing; the indicators do: *oscillation* is the fraction of steps where f turns (a smooth response: about 2 per period; a step-to-step sawtooth: about 1; changes below 1e-6 of max |f|, the jitter of a converged iterative solver, do not count), *sawtooth* the largest fraction of loaded elements where the traction field τx zig-zags along x. A courant number above 1 is refused before anything runs (exit 2).\n\n| scene | solver | steps | all finite | max \\|f\\|/μ | last f | oscillation | sawtooth | iterations max | iteration limit hit | warnings |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+    let mut s = String::from("Extreme and stiff cases (`scenes/stability/`). The traction bound keeps |τ| ≤ μp even when a scheme has blown up, so the bound proves nothing; the indicators do: *oscillation* is the fraction of steps where f turns (a smooth response: about 2 per period; a step-to-step sawtooth: about 1; changes below 1e-6 of max |f|, the jitter of a converged iterative solver, do not count), *sawtooth* the largest fraction of loaded elements where the traction field τx zig-zags along x, *oscillates* flags a history whose |f| turns at 6 or more consecutive steps, more than its loading does (a period-2 oscillation: the memoryless falling branch; also printed by `check` and `run`). A courant number above 1 is refused before anything runs (exit 2).\n\n| scene | solver | steps | all finite | max \\|f\\|/μ | last f | oscillation | sawtooth | oscillates | iterations max | iteration limit hit | warnings |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for sc in stab {
         for (solver, h) in &sc.histories {
             let finite = h
@@ -152,7 +153,7 @@ pub fn stability(scenes: &[StoredScene]) -> Section {
             let metric = |m: &str| sc.metric(solver, m).map(|v| format!("{v:.3}")).unwrap_or("—".into());
             let _ = writeln!(
                 s,
-                "| {} | {solver} | {} | {} | {:.6} | {:.6} | {} | {} | {} | {} | {} |",
+                "| {} | {solver} | {} | {} | {:.6} | {:.6} | {} | {} | {} | {} | {} | {} |",
                 sc.name,
                 h.rows.len(),
                 if finite { "yes" } else { "**no**" },
@@ -160,6 +161,8 @@ pub fn stability(scenes: &[StoredScene]) -> Section {
                 h.rows.last().map(|r| r.fx_over_fn).unwrap_or(f64::NAN),
                 metric(crate::metrics::oscillation_index::NAME),
                 metric(crate::metrics::sawtooth_index::NAME),
+                own_oscillation(h, sc.scene.v_mm_s)
+                    .map_or("no".to_string(), |o| format!("**yes** ({} turns in a row)", o.run)),
                 col_max("iterations").map(|v| format!("{v:.0}")).unwrap_or("—".into()),
                 limit.map(|v| v.to_string()).unwrap_or("—".into()),
                 sc.scene.warnings.join("; ").replace('|', "/")

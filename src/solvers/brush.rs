@@ -3,10 +3,11 @@
 //! march along each row from the leading edge with the traction bound, and the traction field.
 //! FASTSIM and the UBA differ only in how they march.
 
-use crate::physics::bound::within_bound;
+use crate::physics::bound::{falling_bound, scale_to_bound, within_bound};
+use crate::physics::friction::{FrictionLaw, Memory};
 pub use crate::physics::LeadingEdge;
 use crate::physics::{moment_sum, project_to_bound, Flexibilities, Grid, Planform, RigidSlip};
-use crate::problem::{LocalContact, Sample};
+use crate::problem::{LocalContact, Problem, Sample};
 use crate::solvers::{FieldView, Step, Termination};
 
 /// The rigid slip over the flexibilities [MPa/mm] (the left side of thesis Eq. 3.4/3.6):
@@ -16,6 +17,13 @@ use crate::solvers::{FieldView, Step, Termination};
 /// With the modified FASTSIM's slope reduction ([`LocalContact::slope`]) the flexibilities are
 /// divided by its factor k.
 pub fn slip_rates(s: &Sample, local: &LocalContact) -> RigidSlip {
+    let (l1, l2, l3) = flexibilities(s, local);
+    RigidSlip::new(s.cx, s.cy, s.cs).over_flexibilities(l1, l2, l3)
+}
+
+/// The flexibilities L1, L2, L3 [mm³/N] the brush marches with at this sample: Kalker's three,
+/// or the single one, divided by the slope reduction's factor k (k = 1 without one).
+pub fn flexibilities(s: &Sample, local: &LocalContact) -> (f64, f64, f64) {
     let c = (s.cx, s.cy, s.cs);
     let (l1, l2, l3) = match local.single_flexibility {
         None => (local.flex.l1_mm3_n, local.flex.l2_mm3_n, local.flex.l3_mm3_n),
@@ -26,7 +34,7 @@ pub fn slip_rates(s: &Sample, local: &LocalContact) -> RigidSlip {
     };
     // k = 1 without a slope reduction: l / 1 is l exactly.
     let k = local.slope.map_or(1.0, |r| r.factor(c, s.mu));
-    RigidSlip::new(s.cx, s.cy, s.cs).over_flexibilities(l1 / k, l2 / k, l3 / k)
+    (l1 / k, l2 / k, l3 / k)
 }
 
 /// [`slip_rates`] of creepages (cx, cy, cs [1/mm]).
@@ -109,6 +117,103 @@ pub fn step(planform: &Planform, (sum_tx, sum_ty, moment): (f64, f64, f64), n_lo
     }
 }
 
+/// The traction bound of one element of a march: what the element's unbounded traction becomes.
+pub trait ElementBound {
+    /// The friction coefficient carried into a row's first loaded element (the memory's state
+    /// of fresh material).
+    fn inflow_mu(&self) -> f64;
+    /// The bounded traction of an element of pressure `p` > 0 and row gain `gain` from its
+    /// unbounded traction (ux, uy), the coefficient `mu_up` its material carried in from
+    /// upstream: (τx, τy, whether it slips, the coefficient it carries downstream).
+    fn apply(&self, ux: f64, uy: f64, p: f64, gain: f64, mu_up: f64) -> (f64, f64, bool, f64);
+}
+
+/// Coulomb's bound μ p ([`project_to_bound`], thesis Eq. 2.29).
+#[derive(Debug, Clone, Copy)]
+pub struct Coulomb(pub f64);
+
+impl ElementBound for Coulomb {
+    #[inline(always)]
+    fn inflow_mu(&self) -> f64 {
+        self.0
+    }
+
+    #[inline(always)]
+    fn apply(&self, ux: f64, uy: f64, p: f64, _gain: f64, _mu_up: f64) -> (f64, f64, bool, f64) {
+        let (px, py, slip) = project_to_bound(ux, uy, self.0 * p);
+        (px, py, slip, self.0)
+    }
+}
+
+/// A falling law's bound μ(s) p at the element's own slip velocity s [mm/s] (physics::friction).
+/// The slip of the projected traction τ = g u/|u| per unit rolling distance is
+/// `w = (L1 (ux − τx), L2 (uy − τy)) / (gain dx)` (the brush's displacement L τ against the rigid
+/// slip over one element, Kalker 1990 Eq. 3.36), and its slip velocity `s = V |w|`
+/// = `(|u| − g) V |(L1 ux, L2 uy)| / (|u| gain dx)`. g solves g = p μ(s(g)) ([`falling_bound`]);
+/// with a memory μ = θ μ_up + (1 − θ) μ_s(s), θ of the time `dt_s` the material takes to cross
+/// the element (backward Euler, [`Memory::update`]), μ_up carried along the row from the leading
+/// edge (fresh material: the static value).
+#[derive(Debug, Clone, Copy)]
+pub struct Falling {
+    pub law: FrictionLaw,
+    pub memory: Memory,
+    /// V L1 / dx and V L2 / dx [mm/s per MPa]: slip velocity per unit of u − τ.
+    pub c_mm_s: (f64, f64),
+    /// The time the material takes to cross one element [s].
+    pub dt_s: f64,
+}
+
+impl Falling {
+    /// The falling bound of the problem's law at this sample, the material moving `dq_mm` per
+    /// element or step (dx for a steady march, C dx for a UBA sub-step); `None` with Coulomb.
+    pub fn of(p: &Problem, at: &Sample, local: &LocalContact, dq_mm: f64) -> Option<Falling> {
+        if !p.friction.is_falling() {
+            return None;
+        }
+        let v_mm_s = at.speed_mm_s(p.rolling.v_mm_s);
+        let (l1, l2, _) = flexibilities(at, local);
+        Some(Falling {
+            law: p.friction,
+            memory: p.memory,
+            c_mm_s: (v_mm_s * l1 / dq_mm, v_mm_s * l2 / dq_mm),
+            dt_s: dq_mm / v_mm_s,
+        })
+    }
+
+    /// μ at slip velocity `s_mm_s` of material that carried `mu_up` in.
+    #[inline]
+    fn mu(&self, mu_up: f64, s_mm_s: f64) -> f64 {
+        self.memory.update(&self.law, mu_up, self.dt_s, s_mm_s)
+    }
+
+    /// [`Falling::mu`] and its derivative in s.
+    #[inline]
+    fn mu_and_slope(&self, mu_up: f64, s_mm_s: f64) -> (f64, f64) {
+        self.memory.update_and_slope(&self.law, mu_up, self.dt_s, s_mm_s)
+    }
+}
+
+impl ElementBound for Falling {
+    fn inflow_mu(&self) -> f64 {
+        self.law.mu_static()
+    }
+
+    #[inline]
+    fn apply(&self, ux: f64, uy: f64, p: f64, gain: f64, mu_up: f64) -> (f64, f64, bool, f64) {
+        let mu_stick = self.mu(mu_up, 0.0);
+        if within_bound(ux, uy, mu_stick * p) {
+            return (ux, uy, false, mu_stick);
+        }
+        let a = (ux * ux + uy * uy).sqrt();
+        let (cx, cy) = (self.c_mm_s.0 * ux, self.c_mm_s.1 * uy);
+        let c = (cx * cx + cy * cy).sqrt() / (a * gain);
+        // Newton from the coefficient the material carried in (the upstream element's).
+        let (g, _) = falling_bound(a, p, c, mu_up * p, |s| self.mu_and_slope(mu_up, s));
+        let (px, py) = scale_to_bound(ux, uy, g);
+        (px, py, true, g / p)
+    }
+}
+
 /// Steady rolling by marching each row from its leading edge, with the traction bound `μ p`
 /// after every element (thesis 2.3.6 and Eq. 2.29), the slip of row j times `row_gain[j]`.
 /// Returns the number of slipping elements.
@@ -120,13 +225,26 @@ pub fn steady_march(
     how: (LeadingEdge, Integration),
     out: &mut Tractions,
 ) -> usize {
+    steady_march_with(grid, local, &Coulomb(mu), rates, how, (out, &mut []))
+}
+
+/// [`steady_march`] with any element bound (a falling law's, [`Falling`]); each element's
+/// coefficient into `mu_out` unless it is empty.
+pub fn steady_march_with<B: ElementBound>(
+    grid: &Grid,
+    local: &LocalContact,
+    bound: &B,
+    rates: &RigidSlip,
+    how: (LeadingEdge, Integration),
+    (out, mu_out): (&mut Tractions, &mut [f64]),
+) -> usize {
     let row = |j| RowMarch { j, local, rates };
     let mut n_slip = 0;
     for j in (0..grid.my).step_by(2) {
         n_slip += if j + 1 < grid.my {
-            march_rows(grid, mu, how, [row(j), row(j + 1)], out).iter().sum::<usize>()
+            march_rows_with(grid, bound, how, [row(j), row(j + 1)], (&mut *out, &mut *mu_out)).iter().sum::<usize>()
         } else {
-            march_rows(grid, mu, how, [row(j)], out)[0]
+            march_rows_with(grid, bound, how, [row(j)], (&mut *out, &mut *mu_out))[0]
         };
     }
     n_slip
@@ -150,26 +268,42 @@ pub fn march_rows<const N: usize>(
     rows: [RowMarch; N],
     out: &mut Tractions,
 ) -> [usize; N] {
+    march_rows_with(grid, &Coulomb(mu), how, rows, (out, &mut []))
+}
+
+/// [`march_rows`] with any element bound.
+#[inline(always)]
+fn march_rows_with<const N: usize, B: ElementBound>(
+    grid: &Grid,
+    bound: &B,
+    how: (LeadingEdge, Integration),
+    rows: [RowMarch; N],
+    (out, mu_out): (&mut Tractions, &mut [f64]),
+) -> [usize; N] {
     let mut n_slip = [0; N];
-    // (τx, τy) of the last element and whether it was loaded, per row.
-    let mut upstream = [(0.0, 0.0, false); N];
+    // (τx, τy) of the last element, whether it was loaded, and the coefficient its material
+    // carries, per row.
+    let mut upstream = [(0.0, 0.0, false, bound.inflow_mu()); N];
     for i in 0..grid.mx {
         for (r, row) in rows.iter().enumerate() {
             let k = grid.index(i, row.j);
             let p = row.local.planform.pressure_mpa[k];
-            let (tx, ty, loaded) = upstream[r];
+            let (tx, ty, loaded, mu_up) = upstream[r];
             if p <= 0.0 {
                 out.tx[k] = 0.0;
                 out.ty[k] = 0.0;
-                upstream[r].2 = false;
+                upstream[r] = (tx, ty, false, bound.inflow_mu());
                 continue;
             }
             let (ux, uy) = unbounded(grid, row.local, row.rates, how, (i, row.j), loaded.then_some((tx, ty)));
-            let (px, py, slip) = project_to_bound(ux, uy, mu * p);
+            let (px, py, slip, mu) = bound.apply(ux, uy, p, row.local.row_gain[row.j], mu_up);
             out.tx[k] = px;
             out.ty[k] = py;
             n_slip[r] += slip as usize;
-            upstream[r] = (px, py, true);
+            upstream[r] = (px, py, true, mu);
+            if !mu_out.is_empty() {
+                mu_out[k] = mu;
+            }
         }
     }
     n_slip

@@ -3,7 +3,7 @@
 //! by default from the grid's edge as CONTACT's FASTSIM does (`[model] leading_edge`). On a
 //! transient scene it gives the quasi-steady response at every step's creepage: it has no memory.
 
-use super::brush::{self, Integration, Tractions};
+use super::brush::{self, Falling, Integration, Tractions};
 use super::stepper::{FieldView, Step, Stepper};
 use super::{always, linear_in_elements, ModelDef, SolveError};
 use crate::problem::{LocalContact, Problem, Sample};
@@ -43,7 +43,12 @@ impl Stepper for Fastsim<'_> {
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
         let rates = brush::slip_rates(at, &self.local);
         let how = (self.p.model.leading_edge, Integration::Exact);
-        let n_slip = brush::steady_march(&self.p.grid, &self.local, at.mu, &rates, how, &mut self.t);
+        let n_slip = match Falling::of(self.p, at, &self.local, self.p.grid.dx_mm) {
+            None => brush::steady_march(&self.p.grid, &self.local, at.mu, &rates, how, &mut self.t),
+            Some(bound) => {
+                brush::steady_march_with(&self.p.grid, &self.local, &bound, &rates, how, (&mut self.t, &mut []))
+            }
+        };
         let (grid, planform) = (&self.p.grid, &self.local.planform);
         Ok(brush::step(planform, self.t.sums(grid), planform.loaded, n_slip))
     }

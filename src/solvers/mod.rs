@@ -95,8 +95,13 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
     })
 }
 
-/// The built-in models that take a falling friction law (the others refuse it).
-const FALLING_FRICTION: [&str; 1] = [contact::NAME];
+/// The built-in models that take a falling friction law: the exact solver, FASTSIM and the UBA
+/// (each element's bound μ(s) p, [`brush::Falling`]), the relaxation model (FASTSIM's falling
+/// steady force, lagged) and Polach (its own falling law from the static value, Eq. 8). The
+/// others refuse it: the linear theory and Shen-Hedrick-Elkins have no bound of their own to
+/// make fall, FaStrip's strips take one μ per strip in closed form.
+const FALLING_FRICTION: [&str; 5] =
+    [contact::NAME, fastsim::MODEL.name, uba::MODEL.name, relaxation::MODEL.name, polach::MODEL.name];
 
 /// Relative cost of running the problem's models, for scheduling only.
 pub fn estimated_cost(problem: &Problem) -> f64 {

@@ -15,6 +15,10 @@
 //! law, kept within μ FN (physics/bound.rs) after every step and every change of FN or μ.
 //! The source gives no relaxation length for the spin moment: mz_nmm is FASTSIM's at the step's
 //! creepage, not lagged.
+//! With a falling friction law the steady law is FASTSIM's with the falling bound (physics::friction)
+//! and the force is kept within the static value μ_s(0) FN: the lag acts on the steady force of the
+//! creepage, with no feedback of the slip velocity into the lag, so this model cannot show the
+//! falling branch's instability in time (the UBA and the exact solver can).
 
 use super::stepper::{FieldView, Step, Stepper};
 use super::termination::Termination;

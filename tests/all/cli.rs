@@ -305,7 +305,7 @@ fn run_is_identical_with_one_or_two_threads() {
     }
     // The fits of fits/ (asked for with --fits): their stored outcomes are the same bytes too.
     let fits: Vec<_> = std::fs::read_dir(outs[0].join("fits")).unwrap().map(|f| f.unwrap().file_name()).collect();
-    assert_eq!(fits.len(), 4, "{fits:?}");
+    assert_eq!(fits.len(), 6, "{fits:?}");
     for f in fits {
         let a = std::fs::read(outs[0].join("fits").join(&f)).unwrap();
         assert_eq!(

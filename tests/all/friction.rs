@@ -107,9 +107,9 @@ fn bad_friction_input_is_refused_naming_the_field() {
         assert!(err.contains(field), "{field}: {err}");
     }
     // A falling law with a model that does not take one.
-    let scene = Scene::from_toml(&base.replace("[\"contact\"]", "[\"contact\", \"fastsim\"]"), Path::new(".")).unwrap();
-    let err = creepbench::pipeline::resolve(&scene).expect_err("fastsim refuses").to_string();
-    assert!(err.contains("solvers") && err.contains("fastsim") && err.contains("contact"), "{err}");
+    let scene = Scene::from_toml(&base.replace("[\"contact\"]", "[\"contact\", \"linear\"]"), Path::new(".")).unwrap();
+    let err = creepbench::pipeline::resolve(&scene).expect_err("linear refuses").to_string();
+    assert!(err.contains("solvers") && err.contains("linear") && err.contains("contact"), "{err}");
     // contact.mu given equal to the static value fkin + f1 + f2 is accepted.
     let same = base.replace("fn_n = 100000.0\n", "fn_n = 100000.0\nmu = 0.45\n");
     assert_eq!(Scene::from_toml(&same, Path::new(".")).unwrap().mu, 0.45);

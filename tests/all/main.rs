@@ -12,6 +12,7 @@ mod contact_to_csv;
 mod docs;
 mod envelope;
 mod external_and_gate;
+mod falling;
 mod fastrip_model;
 mod figures;
 mod fit;

@@ -5,6 +5,7 @@
 use crate::common;
 use common::*;
 use creepbench::history::sample_loop;
+use creepbench::metrics::oscillation_index::{own_oscillation, ZIGZAG_FLAG};
 use creepbench::metrics::sawtooth_index::sawtooth_index;
 use creepbench::physics::project_to_bound;
 use creepbench::pipeline;
@@ -14,7 +15,11 @@ use creepbench::solvers::FieldView;
 #[test]
 fn every_stability_scene_is_finite_and_bounded() {
     let dir = root().join("scenes/stability");
-    let mut files: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).collect();
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
     files.sort();
     assert!(files.len() >= 12);
     for path in files {
@@ -22,7 +27,11 @@ fn every_stability_scene_is_finite_and_bounded() {
         let name = p.name.clone();
         let mu = p.loading.mu_max();
         let aliasing = p.warnings.iter().any(|w| w.contains("aliased"));
+        let rolling_v_mm_s = p.rolling.v_mm_s;
         let r = pipeline::run(p).unwrap_or_else(|e| panic!("{name}: {e}"));
+        // The memoryless falling branch oscillates in time (CONTACT too: reference/contact_friction
+        // fr_exp_step_cx_nomem): there the verdict is that the oscillation is flagged.
+        let falling_branch = name.starts_with("stab_fr_step_nomem");
         let metric =
             |solver: &str, m: &str| r.metrics.iter().find(|x| x.solver == solver && x.name == m).map(|x| x.value);
         for h in &r.histories {
@@ -37,6 +46,19 @@ fn every_stability_scene_is_finite_and_bounded() {
                 let m = (row.fx_over_fn.powi(2) + row.fy_over_fn.powi(2)).sqrt();
                 assert!(m <= mu * (1.0 + 1e-6), "{name}/{}: |f| {m} > mu {mu} at step {}", h.solver, row.sample.step);
             }
+            let flagged = own_oscillation(h, rolling_v_mm_s);
+            if name == "stab_fr_step_nomem" {
+                // Measured: contact turns at 39 consecutive steps, the UBA at 9 (decaying); FASTSIM
+                // is quasi-steady.
+                let run = flagged.map_or(0, |o| o.run);
+                match h.solver.as_str() {
+                    "contact" => assert!(run >= 30, "{name}/contact: {flagged:?}"),
+                    "uba" => assert!(run >= ZIGZAG_FLAG, "{name}/uba: {flagged:?}"),
+                    _ => assert_eq!(flagged, None, "{name}/{}", h.solver),
+                }
+                continue;
+            }
+            assert_eq!(flagged, None, "{name}/{}: oscillates on its own", h.solver);
             if let Some(term) = h.column("termination") {
                 assert!(term.iter().all(|&c| c == 0.0), "{name}/{}: steps not converged at the first method", h.solver);
             }
@@ -50,7 +72,7 @@ fn every_stability_scene_is_finite_and_bounded() {
                 assert!(max < 0.2, "{name}/{}: sawtooth index {max}", h.solver);
             }
             let osc = metric(&h.solver, "oscillation_index").expect("the stability scenes list oscillation_index");
-            if !aliasing && !name.contains("sign_reversal") {
+            if !aliasing && !name.contains("sign_reversal") && !falling_branch {
                 assert!(osc < 0.2, "{name}/{}: oscillation index {osc}", h.solver);
             }
         }

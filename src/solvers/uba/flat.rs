@@ -50,9 +50,25 @@ fn elements<const GHOST: bool, const SPIN: bool>(
 fn element<const GHOST: bool, const SPIN: bool>(
     p: &Prepared,
     (ox, oy): (&[f64], &[f64]),
-    [c, sx0, sx1, sy0, sy1]: [f64; 5],
+    k: [f64; 5],
     m: usize,
 ) -> (f64, f64, bool) {
+    let (vx, vy) = unbounded::<GHOST, SPIN>(p, (ox, oy), k, m);
+    let n2 = vx * vx + vy * vy;
+    let g = p.bound[m];
+    // Direction-keeping projection: scale = min(1, g/|v|); unloaded (g = 0) → 0.
+    let scale = bound_factor(n2, g);
+    (vx * scale, vy * scale, (n2 > g * g) & (g > 0.0))
+}
+
+/// The traction of element `m` before the bound: `τ + C (τ_up − τ) + gain · C dx k`.
+#[inline(always)]
+pub(super) fn unbounded<const GHOST: bool, const SPIN: bool>(
+    p: &Prepared,
+    (ox, oy): (&[f64], &[f64]),
+    [c, sx0, sx1, sy0, sy1]: [f64; 5],
+    m: usize,
+) -> (f64, f64) {
     let (px, py) = if m > 0 { (ox[m - 1], oy[m - 1]) } else { (0.0, 0.0) };
     let (inx, iny) = if GHOST { (p.ghost_x[m], p.ghost_y[m]) } else { (0.0, 0.0) };
     let ux = p.upstream[m] * px + inx;
@@ -61,16 +77,12 @@ fn element<const GHOST: bool, const SPIN: bool>(
     let (srcx, srcy) = (p.gain[m] * srcx, p.gain[m] * srcy);
     let vx = ox[m] + c * (ux - ox[m]) + srcx;
     let vy = oy[m] + c * (uy - oy[m]) + srcy;
-    let n2 = vx * vx + vy * vy;
-    let g = p.bound[m];
-    // Direction-keeping projection: scale = min(1, g/|v|); unloaded (g = 0) → 0.
-    let scale = bound_factor(n2, g);
-    (vx * scale, vy * scale, (n2 > g * g) & (g > 0.0))
+    (vx, vy)
 }
 
 /// The sums of a pass: lane `m mod 4` for the elements of whole groups of four, in order for the
 /// last `n mod 4` (from −0.0, as `Iterator::sum`).
-struct Lanes {
+pub(super) struct Lanes {
     x: [f64; 4],
     y: [f64; 4],
     moment: [f64; 4],
@@ -86,7 +98,7 @@ impl Default for Lanes {
 
 impl Lanes {
     #[inline(always)]
-    fn add(&mut self, p: &Prepared, m: usize, n: usize, (tx, ty, slips): (f64, f64, bool)) {
+    pub(super) fn add(&mut self, p: &Prepared, m: usize, n: usize, (tx, ty, slips): (f64, f64, bool)) {
         let term = moment_term(p.x_mm[m], p.y_mm[m], tx, ty);
         if m < n - n % 4 {
             let l = m % 4;
@@ -101,7 +113,7 @@ impl Lanes {
         self.slips += usize::from(slips);
     }
 
-    fn finish(self) -> StepSums {
+    pub(super) fn finish(self) -> StepSums {
         StepSums {
             n_slip: self.slips,
             sum_tx: combine(self.x, self.tail[0]),

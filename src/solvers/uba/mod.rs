@@ -15,9 +15,10 @@
 //! (the thesis's Eq. 3.4 with its spin sign converted to CONTACT's, see [`crate::physics::RigidSlip`]);
 //! at C = 1 material moves exactly one element per step: `τ_i ← τ_{i−1} + dx k_i`.
 
+mod falling;
 mod flat;
 
-use super::brush::{self, Integration, LeadingEdge, Tractions};
+use super::brush::{self, Falling, Integration, LeadingEdge, Tractions};
 use super::stepper::{FieldView, Step, Stepper};
 use super::{linear_in_elements, ModelDef, SolveError};
 use crate::error::InputError;
@@ -45,13 +46,59 @@ const MAX_COURANT: f64 = 64.0;
 fn check(p: &Problem) -> Result<(), InputError> {
     let c = p.rolling.courant;
     if c > 0.0 && c <= MAX_COURANT {
-        return Ok(());
+        return check_falling(p);
     }
     Err(InputError::new(
         "rolling.courant",
         c,
         format!("(0, {MAX_COURANT}] when the scene runs uba (its upwind step is stable for courant <= 1; larger steps are split into ceil(courant) sub-steps)"),
     ))
+}
+
+/// Largest stiffness κ of a time step with a memoryless falling law ([`stiffness`]).
+pub const MAX_STIFFNESS: f64 = 1.0;
+
+/// A memoryless falling law on a time history: each element's bound g = p μ(s(g)), with the slip
+/// velocity s = c (|u| − g), c = V L/(gain C dx), has one root for every traction only when
+/// κ = p c max|dμ/ds| < 1 ([`MAX_STIFFNESS`]); above it the explicit step's bound may jump
+/// between roots from one step to the next. Sub-stepping cannot help (c grows as C dx shrinks),
+/// so the UBA refuses. With a memory μ follows the slip velocity over the relaxation distance
+/// (backward Euler, unconditionally stable) and the step is accepted.
+fn check_falling(p: &Problem) -> Result<(), InputError> {
+    if !p.friction.is_falling() || p.memory.is_active() || !p.loading.is_transient() {
+        return Ok(());
+    }
+    let kappa = stiffness(p);
+    if kappa < MAX_STIFFNESS {
+        return Ok(());
+    }
+    Err(InputError::new(
+        "friction.memory_mm",
+        format!("none (uba's kappa = {kappa:.3})"),
+        format!(
+            "uba's stiffness kappa = p_max V L max|dmu/ds| / (gain C dx) < {MAX_STIFFNESS} with a falling law and no friction memory (each element's bound mu(s) p then has one root; sub-steps only raise kappa): give memory_mm > 0, a flatter law (larger sabsh1_mm_s), a lower speed, a larger courant, or leave uba out"
+        ),
+    ))
+}
+
+/// κ = max over the history of p_max V max(L1, L2) max|dμ_s/ds| / (min gain · C dx), C the
+/// sub-step's Courant number ([`substeps`]).
+pub fn stiffness(p: &Problem) -> f64 {
+    let (_, courant) = substeps(p.rolling.courant);
+    let slope = p.friction.steepest_fall_per_mm_s();
+    let mut local = p.local_contact(p.loading.first().fn_n);
+    let mut kappa = 0.0f64;
+    for at in p.loading.rows() {
+        if at.fn_n != local.planform.ellipse.fn_n {
+            local = p.local_contact(at.fn_n);
+        }
+        let p_max = local.planform.pressure_mpa.iter().fold(0.0f64, |m, &v| m.max(v));
+        let gain = local.row_gain.iter().copied().filter(|g| *g > 0.0).fold(f64::INFINITY, f64::min);
+        let (l1, l2, _) = brush::flexibilities(at, &local);
+        let c = at.speed_mm_s(p.rolling.v_mm_s) * l1.max(l2) / (gain * courant * p.grid.dx_mm);
+        kappa = kappa.max(p_max * c * slope);
+    }
+    kappa
 }
 
 /// Sub-steps per time step and the Courant number of each: `n = ceil(C)`, `C/n ≤ 1`.
@@ -65,7 +112,9 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let first = p.loading.first();
     let local = p.local_contact(first.fn_n);
     let prep = Prepared::new(&p.grid, &local, first.mu);
-    Ok(Box::new(Uba { p, local, prep, prep_mu: first.mu, t: Tractions::zero(n), scratch: Tractions::zero(n) }))
+    let fresh = vec![p.friction.mu_static(); n];
+    let (t, scratch) = (Tractions::zero(n), Tractions::zero(n));
+    Ok(Box::new(Uba { p, local, prep, prep_mu: first.mu, t, scratch, mu: (fresh.clone(), fresh) }))
 }
 
 /// The UBA's state: the contact at the current load, the prepared step and the tractions.
@@ -77,6 +126,8 @@ struct Uba<'a> {
     prep_mu: f64,
     t: Tractions,
     scratch: Tractions,
+    /// Each element's friction coefficient and its scratch (the memory's state; a falling law only).
+    mu: (Vec<f64>, Vec<f64>),
 }
 
 impl Uba<'_> {
@@ -109,7 +160,13 @@ impl Stepper for Uba<'_> {
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
         let rates = brush::slip_rates(at, &self.local);
         let how = (self.p.model.leading_edge, Integration::Centre);
-        let n_slip = brush::steady_march(&self.p.grid, &self.local, at.mu, &rates, how, &mut self.t);
+        let n_slip = match Falling::of(self.p, at, &self.local, self.p.grid.dx_mm) {
+            None => brush::steady_march(&self.p.grid, &self.local, at.mu, &rates, how, &mut self.t),
+            Some(bound) => {
+                let out = (&mut self.t, self.mu.0.as_mut_slice());
+                brush::steady_march_with(&self.p.grid, &self.local, &bound, &rates, how, out)
+            }
+        };
         Ok(self.row(n_slip, self.t.sums(&self.p.grid)))
     }
 
@@ -119,9 +176,25 @@ impl Stepper for Uba<'_> {
         let (n, courant) = substeps(self.p.rolling.courant);
         let scheme = (courant, self.p.model.leading_edge);
         let mut sums = StepSums { n_slip: 0, sum_tx: 0.0, sum_ty: 0.0, moment: 0.0 };
+        let falling = Falling::of(self.p, at, &self.local, courant * self.p.grid.dx_mm);
         for _ in 0..n {
-            sums =
-                step((&self.p.grid, &self.local.planform), &mut self.prep, &rates, scheme, &self.t, &mut self.scratch);
+            let contact = (&self.p.grid, &self.local.planform);
+            sums = match &falling {
+                None => step(contact, &mut self.prep, &rates, scheme, &self.t, &mut self.scratch),
+                Some(bound) => {
+                    let sums = step_falling(
+                        contact,
+                        &mut self.prep,
+                        (bound, &rates),
+                        scheme,
+                        &self.t,
+                        &mut self.scratch,
+                        &mut self.mu,
+                    );
+                    std::mem::swap(&mut self.mu.0, &mut self.mu.1);
+                    sums
+                }
+            };
             std::mem::swap(&mut self.t, &mut self.scratch);
         }
         Ok(self.row(sums.n_slip, (sums.sum_tx, sums.sum_ty, sums.moment)))
@@ -201,6 +274,47 @@ pub fn step(
     old: &Tractions,
     new: &mut Tractions,
 ) -> StepSums {
+    let (ghost, spin, consts) = prepare_step((grid, planform), prep, rates, (courant, edge));
+    let io = (old.tx.as_slice(), old.ty.as_slice(), new.tx.as_mut_slice(), new.ty.as_mut_slice());
+    match (ghost, spin) {
+        (false, false) => flat::step::<false, false>(prep, io, consts),
+        (false, true) => flat::step::<false, true>(prep, io, consts),
+        (true, false) => flat::step::<true, false>(prep, io, consts),
+        (true, true) => flat::step::<true, true>(prep, io, consts),
+    }
+}
+
+/// [`step`] with a falling friction law's bound ([`falling::step`]); the coefficients from
+/// `mu.0` into `mu.1`.
+fn step_falling(
+    (grid, planform): (&Grid, &Planform),
+    prep: &mut Prepared,
+    (bound, rates): (&Falling, &RigidSlip),
+    scheme: (f64, LeadingEdge),
+    old: &Tractions,
+    new: &mut Tractions,
+    mu: &mut (Vec<f64>, Vec<f64>),
+) -> StepSums {
+    let (ghost, spin, consts) = prepare_step((grid, planform), prep, rates, scheme);
+    let io = (old.tx.as_slice(), old.ty.as_slice(), new.tx.as_mut_slice(), new.ty.as_mut_slice());
+    let b = (bound, planform.pressure_mpa.as_slice());
+    let m = (mu.0.as_slice(), mu.1.as_mut_slice());
+    match (ghost, spin) {
+        (false, false) => falling::step::<false, false>(prep, b, io, m, consts),
+        (false, true) => falling::step::<false, true>(prep, b, io, m, consts),
+        (true, false) => falling::step::<true, false>(prep, b, io, m, consts),
+        (true, true) => falling::step::<true, true>(prep, b, io, m, consts),
+    }
+}
+
+/// The ghost inflow of each run (exact leading edge) and the step's constants
+/// [C, C·dx·kx0, C·dx·dkx/dy, C·dx·ky0, C·dx·dky/dx]: (ghost, spin, constants).
+fn prepare_step(
+    (grid, planform): (&Grid, &Planform),
+    prep: &mut Prepared,
+    rates: &RigidSlip,
+    (courant, edge): (f64, LeadingEdge),
+) -> (bool, bool, [f64; 5]) {
     let ghost = edge == LeadingEdge::Exact;
     if ghost {
         for &(j, first, _) in &prep.runs {
@@ -215,13 +329,7 @@ pub fn step(
     let [kx0, kx_y, ky0, ky_x] = rates.affine();
     let consts = [c, cdx * kx0, cdx * kx_y, cdx * ky0, cdx * ky_x];
     let spin = kx_y != 0.0 || ky_x != 0.0;
-    let io = (old.tx.as_slice(), old.ty.as_slice(), new.tx.as_mut_slice(), new.ty.as_mut_slice());
-    match (ghost, spin) {
-        (false, false) => flat::step::<false, false>(prep, io, consts),
-        (false, true) => flat::step::<false, true>(prep, io, consts),
-        (true, false) => flat::step::<true, false>(prep, io, consts),
-        (true, true) => flat::step::<true, true>(prep, io, consts),
-    }
+    (ghost, spin, consts)
 }
 
 /// What a step returns besides the new tractions: the elements on the bound, the traction sums
