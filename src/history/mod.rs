@@ -148,6 +148,8 @@ impl History {
                     cs: num(4)?,
                     fn_n: num(5)?,
                     mu: if has_mu { num(COLUMNS.len())? } else { f64::NAN },
+                    fx_target: None,
+                    fy_target: None,
                 },
                 fx_over_fn: num(6)?,
                 fy_over_fn: num(7)?,

@@ -167,8 +167,17 @@ impl Problem {
         if !geometry.elliptic() {
             check_loads(geometry.as_ref(), &loading, &mut warnings)?;
         }
-        let nominal =
-            Sample { step: 0, t_s: 0.0, cx: 0.0, cy: scene.cy, cs: scene.cs_per_mm, fn_n: scene.fn_n, mu: scene.mu };
+        let nominal = Sample {
+            step: 0,
+            t_s: 0.0,
+            cx: 0.0,
+            cy: scene.cy,
+            cs: scene.cs_per_mm,
+            fn_n: scene.fn_n,
+            mu: scene.mu,
+            fx_target: None,
+            fy_target: scene.fy_over_fn,
+        };
         let problem = Problem {
             name: scene.name.clone(),
             solvers,

@@ -48,4 +48,9 @@ pub trait Stepper {
     fn transient(&mut self, at: &Sample) -> Result<Step, SolveError>;
     /// The traction field of the last solve, if the model has one.
     fn field(&self) -> Option<FieldView<'_>>;
+    /// The creepages (cx, cy) the last solve found where its sample prescribed forces in their
+    /// place (CONTACT F = 1, 2); `None`: the sample's creepages were used.
+    fn solved_creepage(&self) -> Option<[f64; 2]> {
+        None
+    }
 }

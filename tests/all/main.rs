@@ -23,6 +23,7 @@ mod linear_model;
 mod nonhertz;
 mod parser_fuzz;
 mod polach_model;
+mod prescribed_force;
 mod properties;
 mod reference_columns;
 mod relaxation_model;

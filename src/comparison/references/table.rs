@@ -68,7 +68,17 @@ pub fn load(dir: &Path) -> Result<EnvelopeCases, Error> {
                     let (fx, fy, mz) = parse_case(line).ok_or_else(|| bad(n, line.chars().take(60).collect()))?;
                     // Forces on body 1 over mu FN, moment over mu FN cp: flipped and scaled.
                     h.rows.push(Row {
-                        sample: Sample { step, t_s: 0.0, cx: f64::NAN, cy: f64::NAN, cs: f64::NAN, fn_n: FN_N, mu: MU },
+                        sample: Sample {
+                            step,
+                            t_s: 0.0,
+                            cx: f64::NAN,
+                            cy: f64::NAN,
+                            cs: f64::NAN,
+                            fn_n: FN_N,
+                            mu: MU,
+                            fx_target: None,
+                            fy_target: None,
+                        },
                         fx_over_fn: -MU * fx,
                         fy_over_fn: -MU * fy,
                         extra: vec![-MU * FN_N * cp_mm * mz],
