@@ -288,6 +288,14 @@ pub fn run_with(mut problem: Problem, in_process: &[InProcess]) -> Result<SceneR
                 problem.contact_solver.max_iterations
             ));
         }
+        let missed = Termination::ForceNotReached.code();
+        let short = h.column(history::TERMINATION).map_or(0, |t| t.iter().filter(|&&c| c == missed).count());
+        if short > 0 {
+            problem.warnings.push(format!(
+                "{name}: {short} of {} solves did not reach the prescribed force (creepage.fx_over_fn, fy_over_fn) within the outer iteration's tolerance; those rows give the force reached",
+                h.rows.len()
+            ));
+        }
         all_metrics.extend(metrics::compute(&problem.metrics, &problem.loading, &h, &field));
         histories.push(h);
         timing.push(t);

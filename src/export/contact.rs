@@ -47,7 +47,9 @@ pub fn module3_input(p: &Problem) -> String {
         }
         let _ = writeln!(out, "\n 3  MODULE      % step {}, t={} s", s.step, s.t_s);
         let (pv, t) = (if new_sequence { 2 } else { 0 }, if steady { 3 } else { 2 });
-        let _ = writeln!(out, "  {pv}0{t}100      P-B-T-N-F-S   PVTIME, BOUND , TANG  , NORM  , FORCE , STRESS");
+        // F = 1: Fx prescribed with CETA given, F = 2: Fx and Fy (the scene refuses Fy alone).
+        let f = usize::from(s.fx_target.is_some()) + usize::from(s.fy_target.is_some());
+        let _ = writeln!(out, "  {pv}0{t}1{f}0      P-B-T-N-F-S   PVTIME, BOUND , TANG  , NORM  , FORCE , STRESS");
         // CONTACT solves the steady start with DQ = DX and keeps that DQ for the cases that follow
         // (`m_sdis.f90`): where the scene's DQ is another, the first transient case gives it again
         // (C = 2: kinematics and material read again, influence coefficients recomputed).
@@ -63,7 +65,14 @@ pub fn module3_input(p: &Problem) -> String {
             if first { 0 } else { 1 }
         );
         let _ = writeln!(out, "   999   200    30     1   1e-08          MAXGS, MAXIN, MAXNR, MAXOUT, EPS");
-        let _ = writeln!(out, "  {:?}   {:?}   {:?}   {:?}        FN, CKSI, CETA, CPHI", s.fn_n, s.cx, s.cy, s.cs);
+        // CONTACT's FXREL, FYREL: the force over FSTAT·FN, its sign flipped (fx = −FX/FN here).
+        let (x, y) = (s.fx_target.map_or(s.cx, |f| -f / s.mu), s.fy_target.map_or(s.cy, |f| -f / s.mu));
+        let names = [
+            "FN",
+            if s.fx_target.is_some() { "FXREL" } else { "CKSI" },
+            if s.fy_target.is_some() { "FYREL" } else { "CETA" },
+        ];
+        let _ = writeln!(out, "  {:?}   {x:?}   {y:?}   {:?}        {}, CPHI", s.fn_n, s.cs, names.join(", "));
         if read_mu {
             let _ = writeln!(out, "  {:?}   {:?}                            FSTAT, FKIN", s.mu, s.mu);
         }

@@ -149,6 +149,8 @@ impl History {
                     fn_n: num(5)?,
                     mu: if has_mu { num(COLUMNS.len())? } else { f64::NAN },
                     v_mm_s: None,
+                    fx_target: None,
+                    fy_target: None,
                 },
                 fx_over_fn: num(6)?,
                 fy_over_fn: num(7)?,

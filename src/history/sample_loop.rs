@@ -70,7 +70,12 @@ pub fn run(
             extra.push(step.termination.code());
         }
         extra.push(step.mz_nmm);
-        history.rows.push(Row::new(s, step.fx_over_fn, step.fy_over_fn, extra));
+        // Prescribed forces: the row reports the creepages found (and the forces reached).
+        let row = match stepper.solved_creepage() {
+            Some([cx, cy]) => Sample { cx, cy, ..*s },
+            None => *s,
+        };
+        history.rows.push(Row::new(&row, step.fx_over_fn, step.fy_over_fn, extra));
         if !field_values.is_empty() || observer.is_some() {
             if let Some(view) = stepper.field() {
                 for ((_, v), (_, f)) in field_values.iter_mut().zip(field_metrics) {

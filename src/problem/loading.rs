@@ -3,7 +3,7 @@
 
 use crate::error::InputError;
 use crate::physics::{ContactGeometry, Grid};
-use crate::scene::table::CreepageTable;
+use crate::scene::table::{CreepageTable, TableX};
 use crate::scene::{Creepage, InitKind, Scene};
 
 /// A table covers step k when `k dt <= t_end (1 + TABLE_END_REL)`: its last time may be printed
@@ -26,6 +26,20 @@ pub struct Sample {
     /// `None`: `[rolling] v_mm_s`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub v_mm_s: Option<f64>,
+    /// Fx/FN prescribed (CONTACT F = 1, 2): the solver finds cx (which then holds 0, the start);
+    /// `None`: cx is given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fx_target: Option<f64>,
+    /// Fy/FN prescribed (CONTACT F = 2): the solver finds cy; `None`: cy is given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fy_target: Option<f64>,
+}
+
+impl Sample {
+    /// Whether a total force is prescribed in place of a creepage.
+    pub fn prescribes_force(&self) -> bool {
+        self.fx_target.is_some() || self.fy_target.is_some()
+    }
 }
 
 /// Transient history or steady sweep.
@@ -74,13 +88,16 @@ impl Loading {
         };
         let mut sweep_direction = None;
         let (kind, freq_hz, initial, samples) = match &scene.creepage {
-            Creepage::Step { c, steps, c_before } => {
+            Creepage::Step { c, steps, c_before, fx_prescribed } => {
                 if *steps > max {
                     return Err(too_many(*steps as f64));
                 }
-                let s: Vec<Sample> =
-                    (1..=*steps).map(|k| Sample { step: k, t_s: k as f64 * dt_s, cx: *c, ..base }).collect();
-                (LoadingKind::Step, None, Some(Sample { cx: *c_before, ..base }), s)
+                let at = |k: usize, c: f64| match fx_prescribed {
+                    true => Sample { step: k, t_s: k as f64 * dt_s, fx_target: Some(c), ..base },
+                    false => Sample { step: k, t_s: k as f64 * dt_s, cx: c, ..base },
+                };
+                let s: Vec<Sample> = (1..=*steps).map(|k| at(k, *c)).collect();
+                (LoadingKind::Step, None, Some(at(0, *c_before)), s)
             }
             Creepage::Sine { c0, cp, freq_hz, periods } => {
                 let n = (periods / (freq_hz * dt_s)).ceil();
@@ -157,7 +174,39 @@ impl Loading {
                 (LoadingKind::Table, None, Some(at(0)), (1..=n as usize).map(at).collect())
             }
         };
-        Ok(Loading { kind, freq_hz, sweep_direction, initial, samples, init: scene.init })
+        let loading = Loading { kind, freq_hz, sweep_direction, initial, samples, init: scene.init };
+        loading.check_forces()?;
+        Ok(loading)
+    }
+
+    /// Whether any row prescribes a total force in place of a creepage (CONTACT F = 1, 2).
+    pub fn prescribes_force(&self) -> bool {
+        self.rows().any(Sample::prescribes_force)
+    }
+
+    /// Fy/FN is prescribed only with Fx/FN (CONTACT F = 2). A prescribed force must stay below μ·FN: at or above it the whole contact slides and no
+    /// creepage gives it (Coulomb: |F| <= μ FN, reached only in full slip).
+    fn check_forces(&self) -> Result<(), InputError> {
+        if let Some(s) = self.rows().find(|s| s.fy_target.is_some() && s.fx_target.is_none()) {
+            return Err(InputError::new(
+                "creepage.fy_over_fn",
+                format!("Fy/FN = {} with cx given (step {})", s.fy_target.unwrap_or_default(), s.step),
+                "fy_over_fn only together with fx_over_fn (CONTACT F = 2; F = 1 prescribes Fx/FN with cy given)",
+            ));
+        }
+        let Some(s) = self
+            .rows()
+            .find(|s| s.prescribes_force() && s.fx_target.unwrap_or(0.0).hypot(s.fy_target.unwrap_or(0.0)) >= s.mu)
+        else {
+            return Ok(());
+        };
+        let f = s.fx_target.unwrap_or(0.0).hypot(s.fy_target.unwrap_or(0.0));
+        let field = if s.fx_target.is_some() { "creepage.fx_over_fn" } else { "creepage.fy_over_fn" };
+        Err(InputError::new(
+            field,
+            format!("|(Fx, Fy)|/FN = {f} at step {} (t = {} s)", s.step, s.t_s),
+            format!("a prescribed force below mu = {} times FN: at or above it the whole contact slides and no creepage in partial slip gives it", s.mu),
+        ))
     }
 
     /// Whether the loading is a time history (not a steady sweep).
@@ -194,15 +243,27 @@ impl Loading {
 /// The table's loading at step k, time `t` (columns it lacks: the scene's constants).
 fn table_row(scene: &Scene, rows: &CreepageTable, k: usize, t: f64) -> Sample {
     let get = |s: &Option<Vec<f64>>, d: f64| s.as_ref().map_or(d, |v| rows.interpolate(v, t));
+    let (cx, fx_target) = match &rows.cx {
+        TableX::Creepage(cx) => (rows.interpolate(cx, t), None),
+        TableX::Force(fx) => (0.0, Some(rows.interpolate(fx, t))),
+    };
+    // A column (cy or fy_over_fn) replaces the constant (cy or fy_over_fn).
+    let (cy, fy_target) = match (&rows.cy, &rows.fy_over_fn) {
+        (Some(cy), _) => (rows.interpolate(cy, t), None),
+        (None, Some(fy)) => (0.0, Some(rows.interpolate(fy, t))),
+        (None, None) => (scene.cy, scene.fy_over_fn),
+    };
     Sample {
         step: k,
         t_s: t,
-        cx: rows.interpolate(&rows.cx, t),
-        cy: get(&rows.cy, scene.cy),
+        cx,
+        cy,
         cs: get(&rows.cs, scene.cs_per_mm),
         fn_n: get(&rows.fn_n, scene.fn_n),
         mu: get(&rows.mu, scene.mu),
         v_mm_s: None,
+        fx_target,
+        fy_target,
     }
 }
 
@@ -271,6 +332,8 @@ impl Sample {
             fn_n: scene.fn_n,
             mu: scene.mu,
             v_mm_s: None,
+            fx_target: None,
+            fy_target: scene.fy_over_fn,
         }
     }
 

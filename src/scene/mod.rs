@@ -30,8 +30,9 @@ pub struct MaterialSpec {
 /// The creepage history kinds.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Creepage {
-    /// cx = `c_before` at t = 0, then `c` at every step k ≥ 1.
-    Step { c: f64, steps: usize, c_before: f64 },
+    /// cx = `c_before` at t = 0, then `c` at every step k ≥ 1; with `fx_prescribed`, `c` is the
+    /// Fx/FN prescribed at every step k ≥ 1 (`fx_over_fn`, CONTACT F = 1) and t = 0 carries none.
+    Step { c: f64, steps: usize, c_before: f64, fx_prescribed: bool },
     /// cx(t_k) = c0 + cp sin(2π F t_k), k = 1..ceil(periods/(F dt)).
     Sine { c0: f64, cp: f64, freq_hz: f64, periods: f64 },
     /// Steady rolling at `points` evenly spaced t from `from` to `to` — or at the listed t of
@@ -236,6 +237,8 @@ pub struct Scene {
     pub courant: f64,
     pub creepage: Creepage,
     pub cy: f64,
+    /// Fy/FN prescribed in place of `cy` (`[creepage] fy_over_fn`, CONTACT F = 2).
+    pub fy_over_fn: Option<f64>,
     pub cs_per_mm: f64,
     pub init: InitKind,
     pub model: ModelOptions,
@@ -347,6 +350,7 @@ impl Scene {
             courant,
             creepage: loading.creepage,
             cy: loading.cy,
+            fy_over_fn: loading.fy_over_fn,
             cs_per_mm: loading.cs_per_mm,
             init,
             model,

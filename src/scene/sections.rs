@@ -42,8 +42,13 @@ pub struct FrictionSpec {
 pub struct CreepageSpec {
     pub creepage: Creepage,
     pub cy: f64,
+    /// `fy_over_fn`: Fy/FN prescribed in place of `cy` (CONTACT F = 2).
+    pub fy_over_fn: Option<f64>,
     pub cs_per_mm: f64,
 }
+
+/// A prescribed force ratio Fx/FN or Fy/FN: below 1 in size (and below μ, checked per sample).
+const FORCE_RATIO: Range = Range::new(-1.0, false, 1.0, false);
 
 /// `name`: 1 to 100 characters of `[a-z0-9_]`.
 pub fn name(top: &mut Section) -> Result<String, InputError> {
@@ -270,10 +275,24 @@ pub fn creepage(top: &mut Section, dir: &Path) -> Result<CreepageSpec, InputErro
     let mut cr = top.table("creepage")?;
     let kind = cr.choice("kind", &["step", "sine", "sweep", "table"])?;
     let creepage = match kind {
-        "step" => Creepage::Step {
-            c: cr.f64("c", CREEPAGE_LIMIT)?,
-            steps: cr.usize("steps", 1, HARD_MAX_STEPS)?,
-            c_before: cr.opt_f64("c_before", CREEPAGE_LIMIT)?.unwrap_or(0.0),
+        "step" => match cr.opt_f64("fx_over_fn", FORCE_RATIO)? {
+            Some(f) => {
+                let instead = "only one of creepage.c (cx given) and creepage.fx_over_fn (Fx/FN prescribed; the state at t = 0 carries no force)";
+                cr.refuse("c", instead)?;
+                cr.refuse("c_before", instead)?;
+                Creepage::Step {
+                    c: f,
+                    steps: cr.usize("steps", 1, HARD_MAX_STEPS)?,
+                    c_before: 0.0,
+                    fx_prescribed: true,
+                }
+            }
+            None => Creepage::Step {
+                c: cr.f64("c", CREEPAGE_LIMIT)?,
+                steps: cr.usize("steps", 1, HARD_MAX_STEPS)?,
+                c_before: cr.opt_f64("c_before", CREEPAGE_LIMIT)?.unwrap_or(0.0),
+                fx_prescribed: false,
+            },
         },
         "sine" => Creepage::Sine {
             c0: cr.f64("c0", CREEPAGE_LIMIT)?,
@@ -295,10 +314,22 @@ pub fn creepage(top: &mut Section, dir: &Path) -> Result<CreepageSpec, InputErro
             cr.refuse(key, &only_sweep)?;
         }
     }
+    if kind != "step" {
+        cr.refuse("fx_over_fn", "only with kind = \"step\" (a table prescribes Fx/FN as its column fx_over_fn)")?;
+    }
+    let fy_over_fn = if kind == "sweep" {
+        cr.refuse("fy_over_fn", "a kind other than \"sweep\" (a sweep moves the creepages it is given)")?;
+        None
+    } else {
+        cr.opt_f64("fy_over_fn", FORCE_RATIO)?
+    };
+    if fy_over_fn.is_some() {
+        cr.refuse("cy", "only one of creepage.cy (cy given) and creepage.fy_over_fn (Fy/FN prescribed)")?;
+    }
     let cy = cr.opt_f64("cy", CREEPAGE_LIMIT)?.unwrap_or(0.0);
     let cs_per_mm = cr.opt_f64("cs", SPIN_LIMIT)?.unwrap_or(0.0);
     cr.finish()?;
-    Ok(CreepageSpec { creepage, cy, cs_per_mm })
+    Ok(CreepageSpec { creepage, cy, fy_over_fn, cs_per_mm })
 }
 
 /// `[creepage] kind = "sweep"`: the parameter's points (`from, to, points` or the list `at`),

@@ -1,18 +1,40 @@
-//! The `table` creepage kind: a CSV `t_s,cx[,cy,cs,fn_n,mu,v_mm_s]` read and validated row by row.
+//! The `table` creepage kind: a CSV `t_s,cx[,cy,cs,fn_n,mu,v_mm_s]` read and validated row by row
+//! (`fx_over_fn`, `fy_over_fn` in place of `cx`, `cy`: the total forces prescribed, CONTACT's F = 1, 2).
 
 use crate::error::InputError;
 use std::path::Path;
 
-/// Columns a creepage table may have; `t_s` and `cx` are required.
-pub const COLUMNS: [&str; 7] = ["t_s", "cx", "cy", "cs", "fn_n", "mu", "v_mm_s"];
+/// Columns a creepage table may have; `t_s` and one of `cx`, `fx_over_fn` are required.
+pub const COLUMNS: [&str; 9] = ["t_s", "cx", "cy", "cs", "fn_n", "mu", "v_mm_s", "fx_over_fn", "fy_over_fn"];
+
+/// The table's longitudinal column: the creepage given, or the force prescribed.
+#[derive(Debug, Clone, PartialEq)]
+pub enum TableX {
+    /// `cx`.
+    Creepage(Vec<f64>),
+    /// `fx_over_fn`.
+    Force(Vec<f64>),
+}
+
+impl TableX {
+    /// The column's values, whichever it is.
+    pub fn values(&self) -> &[f64] {
+        match self {
+            TableX::Creepage(v) | TableX::Force(v) => v,
+        }
+    }
+}
 
 /// A validated table: strictly increasing times, finite values in range.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CreepageTable {
     pub t_s: Vec<f64>,
-    /// One optional series per column after `t_s` (cx is always present).
-    pub cx: Vec<f64>,
+    /// One optional series per column after `t_s`: cx, or the prescribed Fx/FN in its place
+    /// ([`TableX`]).
+    pub cx: TableX,
     pub cy: Option<Vec<f64>>,
+    /// The prescribed Fy/FN in place of `cy` (not both).
+    pub fy_over_fn: Option<Vec<f64>>,
     pub cs: Option<Vec<f64>>,
     pub fn_n: Option<Vec<f64>>,
     pub mu: Option<Vec<f64>>,
@@ -46,12 +68,23 @@ impl CreepageTable {
                 ));
             }
         }
-        for req in ["t_s", "cx"] {
-            if !header.iter().any(|h| h == req) {
+        let has = |c: &str| header.iter().any(|h| h == c);
+        for (req, or) in [("t_s", "t_s"), ("cx", "fx_over_fn")] {
+            if !has(req) && !has(or) {
+                let what = if req == or { req.to_string() } else { format!("{req} or {or}") };
                 return Err(InputError::new(
                     format!("{origin} header"),
                     format!("{} columns", header.len()),
-                    format!("must include column {req}"),
+                    format!("must include column {what}"),
+                ));
+            }
+        }
+        for (a, b) in [("cx", "fx_over_fn"), ("cy", "fy_over_fn")] {
+            if has(a) && has(b) {
+                return Err(InputError::new(
+                    format!("{origin} header"),
+                    format!("both {a} and {b}"),
+                    format!("one of {a} (the creepage given) and {b} (the force prescribed), not both"),
                 ));
             }
         }
@@ -80,6 +113,7 @@ impl CreepageTable {
                 let ok = match name.as_str() {
                     "t_s" => v.is_finite() && v >= 0.0,
                     "cx" | "cy" => v.is_finite() && v.abs() <= 1.0,
+                    "fx_over_fn" | "fy_over_fn" => v.is_finite() && v.abs() < 1.0,
                     "cs" => v.is_finite() && v.abs() <= 10.0,
                     "v_mm_s" => super::SPEED_LIMIT.contains(v),
                     _ => v.is_finite() && v > 0.0, // fn_n, mu
@@ -88,6 +122,7 @@ impl CreepageTable {
                     let allowed = match name.as_str() {
                         "t_s" => "a finite time >= 0",
                         "cx" | "cy" => "a finite creepage in [-1, 1]",
+                        "fx_over_fn" | "fy_over_fn" => "a finite force ratio in (-1, 1) (below the row's mu)",
                         "cs" => "a finite spin in [-10, 10] 1/mm",
                         "v_mm_s" => "a rolling speed in (0, 1e6] mm/s",
                         _ => "a finite number > 0",
@@ -112,8 +147,12 @@ impl CreepageTable {
             }
         }
         Ok(CreepageTable {
-            cx: col("cx").unwrap_or_default(),
+            cx: match col("fx_over_fn") {
+                Some(f) => TableX::Force(f),
+                None => TableX::Creepage(col("cx").unwrap_or_default()),
+            },
             cy: col("cy"),
+            fy_over_fn: col("fy_over_fn"),
             cs: col("cs"),
             fn_n: col("fn_n"),
             mu: col("mu"),

@@ -39,6 +39,7 @@ pub const MODEL: ModelDef = ModelDef {
     summary: "FaStrip (Sichani, Enblom & Berg, VSD 54(6) 2016): Kalker's strip theory per grid row, creepages scaled by Kalker's coefficients, FASTSIM's direction in the slip area",
     extra_columns: &["n_adhesion", "n_slip"],
     iterative: false,
+    prescribed_forces: false,
     check,
     cost_per_row: linear_in_elements,
     params: None,

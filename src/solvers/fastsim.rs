@@ -15,6 +15,7 @@ pub const MODEL: ModelDef = ModelDef {
         "Kalker's simplified theory for steady rolling, FASTSIM (Kalker 1982; thesis 2.3.6), quasi-steady at every step",
     extra_columns: &["n_adhesion", "n_slip"],
     iterative: false,
+    prescribed_forces: false,
     check: always,
     cost_per_row: linear_in_elements,
     params: None,

@@ -45,6 +45,9 @@ pub struct ModelDef {
     pub extra_columns: &'static [&'static str],
     /// Whether its solves iterate: its history then ends with a `termination` column.
     pub iterative: bool,
+    /// Whether it can find the creepages of prescribed total forces (CONTACT F = 1, 2:
+    /// `fx_over_fn`, `fy_over_fn`); a model that cannot is refused on such a scene.
+    pub prescribed_forces: bool,
     /// Refuses a problem the model cannot run, naming the scene field.
     pub check: fn(&Problem) -> Result<(), InputError>,
     /// Relative cost of one history row, for scheduling a suite (longest first).
@@ -81,7 +84,8 @@ pub fn builtin_names() -> Vec<&'static str> {
     MODELS.iter().map(|m| m.name).collect()
 }
 
-/// Every built-in model the problem names must accept it (e.g. the UBA needs courant ≤ 1).
+/// Every built-in model the problem names must accept it (e.g. the UBA needs courant ≤ 1; only a
+/// model that finds creepages can take prescribed forces).
 pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
     problem.solvers.iter().filter_map(|s| builtin(s)).try_for_each(|m| {
         if problem.friction.is_falling() && !FALLING_FRICTION.contains(&m.name) {
@@ -89,6 +93,14 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
                 "solvers",
                 format!("{:?} with a falling [friction] law", m.name),
                 format!("models that take a falling friction law: {}", FALLING_FRICTION.join(", ")),
+            ));
+        }
+        if problem.loading.prescribes_force() && !m.prescribed_forces {
+            let able: Vec<&str> = MODELS.iter().filter(|m| m.prescribed_forces).map(|m| m.name).collect();
+            return Err(InputError::new(
+                "solvers",
+                format!("{:?} with prescribed forces (creepage.fx_over_fn or fy_over_fn)", m.name),
+                format!("models that find the creepages of prescribed forces: {} (leave {} out of this scene: it takes creepages only)", able.join(", "), m.name),
             ));
         }
         (m.check)(problem)
@@ -126,6 +138,7 @@ pub const fn closed_form(
         summary,
         extra_columns: &[],
         iterative: false,
+        prescribed_forces: false,
         check: always,
         cost_per_row: negligible,
         params: None,

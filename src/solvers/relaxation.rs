@@ -35,6 +35,7 @@ pub const MODEL: ModelDef = ModelDef {
     summary: "First-order relaxation of FASTSIM's steady force, dF/dq = (F_ss − F)/L, L = creep coefficient / Mindlin's tangential stiffness (Lx = G ab C11/kx, Ly = G ab C22/ky)",
     extra_columns: &[],
     iterative: false,
+    prescribed_forces: false,
     check: always,
     cost_per_row: linear_in_elements,
     params: Some(read_params),

@@ -53,4 +53,10 @@ pub trait Stepper {
     fn more_columns(&self) -> &'static [&'static str] {
         &[]
     }
+
+    /// The creepages (cx, cy) the last solve found where its sample prescribed forces in their
+    /// place (CONTACT F = 1, 2); `None`: the sample's creepages were used.
+    fn solved_creepage(&self) -> Option<[f64; 2]> {
+        None
+    }
 }

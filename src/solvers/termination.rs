@@ -13,21 +13,25 @@ pub enum Termination {
     FallbackConverged,
     /// The iteration limit was reached without meeting the test.
     IterationLimit,
+    /// Prescribed forces (CONTACT F = 1, 2): the outer iteration on the creepages stopped without
+    /// reaching the force within its tolerance (`contact::force::FORCE_TOL`).
+    ForceNotReached,
 }
 
 impl Termination {
     /// Code written to the history's `termination` column: 0 converged (or direct), 1 converged
-    /// after the fallback, 2 iteration limit.
+    /// after the fallback, 2 iteration limit, 3 prescribed force not reached.
     pub fn code(self) -> f64 {
         match self {
             Termination::Direct | Termination::Converged => 0.0,
             Termination::FallbackConverged => 1.0,
             Termination::IterationLimit => 2.0,
+            Termination::ForceNotReached => 3.0,
         }
     }
 
     /// Whether the result meets the stopping test.
     pub fn converged(self) -> bool {
-        self != Termination::IterationLimit
+        !matches!(self, Termination::IterationLimit | Termination::ForceNotReached)
     }
 }

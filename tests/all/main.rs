@@ -27,6 +27,7 @@ mod linear_model;
 mod nonhertz;
 mod parser_fuzz;
 mod polach_model;
+mod prescribed_force;
 mod properties;
 mod python;
 mod reference_columns;

@@ -310,9 +310,9 @@ fn table_end_tolerance_is_relative_1e_8() {
 #[test]
 fn interpolation_clamps_to_the_first_and_last_rows() {
     let t = CreepageTable::from_csv("t_s,cx\n0.1,0.001\n0.2,0.003\n", "t").unwrap();
-    assert_eq!(t.interpolate(&t.cx, 0.0), 0.001);
-    assert!((t.interpolate(&t.cx, 0.15) - 0.002).abs() < 1e-15);
-    assert_eq!(t.interpolate(&t.cx, 0.2), 0.003);
-    assert_eq!(t.interpolate(&t.cx, 0.2 * (1.0 + 1e-9)), 0.003);
-    assert_eq!(t.interpolate(&t.cx, 1.0), 0.003);
+    assert_eq!(t.interpolate(t.cx.values(), 0.0), 0.001);
+    assert!((t.interpolate(t.cx.values(), 0.15) - 0.002).abs() < 1e-15);
+    assert_eq!(t.interpolate(t.cx.values(), 0.2), 0.003);
+    assert_eq!(t.interpolate(t.cx.values(), 0.2 * (1.0 + 1e-9)), 0.003);
+    assert_eq!(t.interpolate(t.cx.values(), 1.0), 0.003);
 }

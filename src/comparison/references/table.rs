@@ -77,6 +77,8 @@ pub fn load(dir: &Path) -> Result<EnvelopeCases, Error> {
                             fn_n: FN_N,
                             mu: MU,
                             v_mm_s: None,
+                            fx_target: None,
+                            fy_target: None,
                         },
                         fx_over_fn: -MU * fx,
                         fy_over_fn: -MU * fy,

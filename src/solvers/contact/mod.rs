@@ -22,6 +22,7 @@
 //! when comparing fields).
 
 pub mod anderson;
+pub mod force;
 pub mod restart;
 pub mod stepper;
 pub mod tangential;

@@ -2,6 +2,7 @@
 //! once per load, then one tangential solve per sample (steady: [`TangentialSolver::steady`];
 //! transient: [`TangentialSolver::transient_step`] from the last two steps' tractions).
 
+use super::force;
 use super::influence::Kernel;
 use super::normal::{NormalParams, NormalSolver};
 use super::restart::{contact_restart, SteadyRestart, SteadyStart};
@@ -9,7 +10,7 @@ use super::tangential::{StepResult, TangentialParams, TangentialSolver};
 use super::veldep::{Motion, VelDep, VelDepOptions, VelDepOutcome};
 use super::ContactError;
 use crate::error::InputError;
-use crate::physics::moment_sum;
+use crate::physics::{moment_sum, LinearTheory};
 use crate::problem::{Problem, Sample};
 use crate::solvers::stepper::{FieldView, Step, Stepper};
 use crate::solvers::{ModelDef, SolveError};
@@ -23,6 +24,7 @@ pub const MODEL: ModelDef = ModelDef {
     summary: "Kalker's exact theory on the same grid (CONTACT-style: half-space influence coefficients, normal problem, transient rolling with Coulomb friction)",
     extra_columns: &["n_adhesion", "n_slip", "iterations", "residual", "pn_max_mpa"],
     iterative: true,
+    prescribed_forces: true,
     check,
     cost_per_row,
     params: None,
@@ -76,6 +78,9 @@ struct Loaded {
     pn: Vec<f64>,
     pn_sum: f64,
     pn_max: f64,
+    /// Kalker's linear d(fx/FN)/d(cx), d(fy/FN)/d(cy) at this load: the prescribed-force
+    /// iteration's start ([`super::force`]).
+    slope: [f64; 2],
 }
 
 /// The solver's state: the normal and tangential solvers (kernels and FFT plans built once per
@@ -98,6 +103,10 @@ struct Contact<'a> {
     after_steady: Option<SteadyStart>,
     /// A falling friction law's fixed point on the slip velocity ([`super::veldep`]).
     veldep: Option<VelDep>,
+    /// The creepages of the last solve where the sample prescribed forces ([`super::force`]).
+    found: Option<[f64; 2]>,
+    /// The prescribed-force iteration's last creepages and Jacobian (the next sample's start).
+    outer: force::Memory,
 }
 
 /// The history's columns of a run with falling friction.
@@ -143,6 +152,8 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
             };
             VelDep::new(p.friction, p.memory, options, g.mx, g.len())
         }),
+        found: None,
+        outer: force::Memory::default(),
     }))
 }
 
@@ -280,7 +291,11 @@ impl Stepper for Contact<'_> {
             solver.set_pressure(&pn_mpa).map_err(|source| ContactRunError::Setup { fn_n, source })?;
         }
         let pn_max = pn_mpa.iter().fold(0.0f64, |a, &b| a.max(b));
-        self.loaded = Some(Loaded { fn_n, pn: pn_mpa, pn_sum, pn_max });
+        let e = p.geometry.ellipse_at(fn_n);
+        let linear = LinearTheory::new(p.material.g_mpa, e.a_mm, e.b_mm, fn_n);
+        let slope =
+            [linear.forces(&p.coefficients, (1.0, 0.0, 0.0)).0, linear.forces(&p.coefficients, (0.0, 1.0, 0.0)).1];
+        self.loaded = Some(Loaded { fn_n, pn: pn_mpa, pn_sum, pn_max, slope });
         self.older = None;
         Ok(())
     }
@@ -297,7 +312,10 @@ impl Stepper for Contact<'_> {
             }
             None => &mut self.tangential,
         };
-        let r = solver.steady(&params, None).map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.slope, l.pn_sum)).expect("loaded before a solve");
+        let (r, found) = force::solve_sample(at, &params, slope, pn_sum, &mut self.outer, |q| solver.steady(q, None))
+            .map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        self.found = found;
         self.older = None;
         self.after_steady = Some(SteadyStart::of(at));
         Ok(self.record(r))
@@ -308,7 +326,9 @@ impl Stepper for Contact<'_> {
             return self.veldep_step(at, false);
         }
         let params = self.params(at);
-        let start = self.after_steady.take().filter(|s| s.load_changed(at));
+        self.found = None;
+        // Prescribed forces: the plain transient step, its creepages sought by the outer iteration.
+        let start = self.after_steady.take().filter(|s| s.load_changed(at) && !at.prescribes_force());
         if let (Some(start), Some(steady), SteadyRestart::Contact) =
             (start, &self.last, self.p.contact_solver.steady_restart)
         {
@@ -328,10 +348,13 @@ impl Stepper for Contact<'_> {
             None => (&self.zero, &self.zero),
         };
         let older = self.older.as_ref().map(|(a, b)| (a.as_slice(), b.as_slice()));
-        let r = self
-            .tangential
-            .transient_step(&params, px, py, older)
-            .map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.slope, l.pn_sum)).expect("loaded before a solve");
+        let tangential = &mut self.tangential;
+        let (r, found) = force::solve_sample(at, &params, slope, pn_sum, &mut self.outer, |q| {
+            tangential.transient_step(q, px, py, older)
+        })
+        .map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        self.found = found;
         if r.px.iter().chain(&r.py).any(|v| !v.is_finite()) {
             return Err(SolveError::NonFinite { step: at.step });
         }
@@ -348,6 +371,10 @@ impl Stepper for Contact<'_> {
         } else {
             &[]
         }
+    }
+
+    fn solved_creepage(&self) -> Option<[f64; 2]> {
+        self.found
     }
 
     fn field(&self) -> Option<FieldView<'_>> {

@@ -31,6 +31,7 @@ pub const MODEL: ModelDef = ModelDef {
     summary: "Unsteady Brush Algorithm (Diaz de la Fuente 2012, ch. 3): explicit upwind transport of the tangential tractions with the traction bound",
     extra_columns: &["n_adhesion", "n_slip"],
     iterative: false,
+    prescribed_forces: false,
     check,
     cost_per_row: linear_in_elements,
     params: None,

@@ -1,0 +1,282 @@
+//! Prescribed total tangential forces (CONTACT F = 1: Fx/FN given, cy given; F = 2: Fx/FN and
+//! Fy/FN given): the creepages that give them, found by an outer iteration around the tangential
+//! solve — Broyden's method (Broyden 1965; Dennis & Schnabel 1996 §8.1) started from Kalker's
+//! linear theory (the creepage `f/slope` and the Jacobian `diag(G a b C11, G a b C22)/FN`), each
+//! step halved until the force error shrinks. It stops when every prescribed ratio is met within
+//! [`FORCE_TOL`] · μ, far below the 4 digits CONTACT prints.
+
+use super::tangential::{StepResult, TangentialParams};
+use super::ContactError;
+use crate::problem::Sample;
+use crate::solvers::Termination;
+
+/// Stopping test: `|f_reached − f_prescribed| <= FORCE_TOL · μ` for each prescribed ratio.
+pub const FORCE_TOL: f64 = 1e-8;
+
+/// Most outer iterations (each one tangential solve, plus the halvings).
+pub const MAX_OUTER: usize = 60;
+
+/// Most halvings of one Broyden step.
+const MAX_HALVINGS: usize = 4;
+
+/// The forces prescribed, per FN (`None`: that creepage is given).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Targets {
+    pub fx: Option<f64>,
+    pub fy: Option<f64>,
+}
+
+/// The outer iteration's result: the creepages found, the last solve's result (at them), the
+/// force ratios it reached and whether they meet [`FORCE_TOL`].
+#[derive(Debug)]
+pub struct Found<R> {
+    pub cx: f64,
+    pub cy: f64,
+    pub result: R,
+    pub reached: [f64; 2],
+    pub met: bool,
+    /// Tangential solves made.
+    pub solves: usize,
+}
+
+impl Targets {
+    /// The sample's prescribed forces, if any.
+    pub fn of(s: &Sample) -> Option<Targets> {
+        s.prescribes_force().then_some(Targets { fx: s.fx_target, fy: s.fy_target })
+    }
+}
+
+/// One tangential solve by `solve` at the sample's creepages, or, where the sample prescribes
+/// forces, at the creepages that give them: then also the creepages found, and the result's
+/// termination [`Termination::ForceNotReached`] when the force was not met. `pn_sum`: Σ pn, whose
+/// ratio to Σ p is f.
+pub fn solve_sample(
+    at: &Sample,
+    params: &TangentialParams,
+    slope: [f64; 2],
+    pn_sum: f64,
+    memory: &mut Memory,
+    mut solve: impl FnMut(&TangentialParams) -> Result<StepResult, ContactError>,
+) -> Result<(StepResult, Option<[f64; 2]>), ContactError> {
+    let Some(targets) = Targets::of(at) else {
+        return Ok((solve(params)?, None));
+    };
+    let found = self::solve(targets, [params.cx, params.cy], slope, params.mu, memory, |cx, cy| {
+        let r = solve(&TangentialParams { cx, cy, ..*params })?;
+        let f = [r.px.iter().sum::<f64>() / pn_sum, r.py.iter().sum::<f64>() / pn_sum];
+        Ok((r, f))
+    })?;
+    let mut r = found.result;
+    if !found.met {
+        r.termination = Termination::ForceNotReached;
+    }
+    Ok((r, Some([found.cx, found.cy])))
+}
+
+/// The prescribed ratios' indices (0 = x, 1 = y) and values.
+fn unknowns(t: Targets) -> Vec<(usize, f64)> {
+    [t.fx, t.fy].iter().enumerate().filter_map(|(i, f)| f.map(|f| (i, f))).collect()
+}
+
+/// What the iteration keeps from one sample to the next: the last creepages found and the
+/// Jacobian at them (a history's next step starts there).
+#[derive(Debug, Clone, Default)]
+pub struct Memory {
+    last: Option<(Vec<usize>, Vec<f64>, Vec<f64>)>,
+}
+
+/// Find the creepages giving `targets`. `given` holds the creepages (cx, cy) of the directions
+/// not prescribed; `slope` Kalker's linear d(f)/d(c) per direction (> 0); `eval(cx, cy)` solves
+/// the tangential problem and gives its result with the force ratios reached. Starts from the
+/// last sample's creepages and Jacobian (`memory`), else from the linear theory's; a Broyden step
+/// that does not shrink the error after a few halvings has its Jacobian remade by differences.
+pub fn solve<R>(
+    targets: Targets,
+    given: [f64; 2],
+    slope: [f64; 2],
+    mu: f64,
+    memory: &mut Memory,
+    mut eval: impl FnMut(f64, f64) -> Result<(R, [f64; 2]), ContactError>,
+) -> Result<Found<R>, ContactError> {
+    let idx = unknowns(targets);
+    let dirs: Vec<usize> = idx.iter().map(|&(i, _)| i).collect();
+    let n = idx.len();
+    let tol = FORCE_TOL * mu;
+    let creepage = |u: &[f64]| {
+        let mut c = given;
+        for (k, &i) in dirs.iter().enumerate() {
+            c[i] = u[k];
+        }
+        c
+    };
+    let residual = |f: [f64; 2]| idx.iter().map(|&(i, t)| f[i] - t).collect::<Vec<f64>>();
+    let norm = |r: &[f64]| r.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let (mut u, mut jac) = match memory.last.take() {
+        Some((d, u, j)) if d == dirs => (u, j),
+        _ => (
+            idx.iter().map(|&(i, t)| t / slope[i]).collect(),
+            diag(&dirs.iter().map(|&i| slope[i]).collect::<Vec<_>>()),
+        ),
+    };
+    let mut solves = 0;
+    let mut at = |u: &[f64], solves: &mut usize| {
+        *solves += 1;
+        let c = creepage(u);
+        eval(c[0], c[1]).map(|(r, f)| (r, f, residual(f)))
+    };
+    let (mut result, mut f, mut r) = at(&u, &mut solves)?;
+    let mut remade = false;
+    while norm(&r) > tol && solves < MAX_OUTER {
+        let step = solve_linear(&jac, &r, n).unwrap_or_else(|| vec![0.0; n]);
+        let mut lambda = 1.0;
+        let mut best = None;
+        for _ in 0..=MAX_HALVINGS {
+            let u_new: Vec<f64> = u.iter().zip(&step).map(|(a, s)| a - lambda * s).collect();
+            let out = at(&u_new, &mut solves)?;
+            // Broyden's update: J += (Δr − J Δu) Δuᵀ / (Δuᵀ Δu).
+            broyden(&mut jac, &u_new, &u, &out.2, &r);
+            if norm(&out.2) < norm(&r) {
+                best = Some((u_new, out));
+                break;
+            }
+            if solves >= MAX_OUTER {
+                break;
+            }
+            lambda *= 0.5;
+        }
+        match best {
+            Some((u_new, out)) => {
+                (u, result, f, r) = (u_new, out.0, out.1, out.2);
+                remade = false;
+            }
+            None if !remade && solves + n < MAX_OUTER => {
+                jac = differences(&u, &r, &mut |v: &[f64]| at(v, &mut solves).map(|o| o.2))?;
+                remade = true;
+            }
+            None => break,
+        }
+    }
+    let c = creepage(&u);
+    memory.last = Some((dirs, u, jac));
+    Ok(Found { cx: c[0], cy: c[1], result, reached: f, met: norm(&r) <= tol, solves })
+}
+
+/// Broyden's rank-one update of `jac` (row-major n×n) by the step u → u_new, r → r_new.
+fn broyden(jac: &mut [f64], u_new: &[f64], u: &[f64], r_new: &[f64], r: &[f64]) {
+    let n = u.len();
+    let du: Vec<f64> = u_new.iter().zip(u).map(|(a, b)| a - b).collect();
+    let dd: f64 = du.iter().map(|v| v * v).sum();
+    if dd == 0.0 {
+        return;
+    }
+    for a in 0..n {
+        let jdu: f64 = (0..n).map(|b| jac[a * n + b] * du[b]).sum();
+        for b in 0..n {
+            jac[a * n + b] += (r_new[a] - r[a] - jdu) * du[b] / dd;
+        }
+    }
+}
+
+/// The Jacobian by forward differences at `u` (residual `r`), a step of 1e-4 of |u| (or 1e-8).
+fn differences(
+    u: &[f64],
+    r: &[f64],
+    at: &mut dyn FnMut(&[f64]) -> Result<Vec<f64>, ContactError>,
+) -> Result<Vec<f64>, ContactError> {
+    let n = u.len();
+    let mut jac = vec![0.0; n * n];
+    for b in 0..n {
+        let h = (1e-4 * u[b].abs()).max(1e-8);
+        let mut v = u.to_vec();
+        v[b] += h;
+        let rv = at(&v)?;
+        for a in 0..n {
+            jac[a * n + b] = (rv[a] - r[a]) / h;
+        }
+    }
+    Ok(jac)
+}
+
+/// A diagonal n×n matrix, row-major.
+fn diag(d: &[f64]) -> Vec<f64> {
+    let n = d.len();
+    let mut m = vec![0.0; n * n];
+    for (k, v) in d.iter().enumerate() {
+        m[k * n + k] = *v;
+    }
+    m
+}
+
+/// `J⁻¹ r` for n = 1 or 2 (`None`: J singular).
+fn solve_linear(j: &[f64], r: &[f64], n: usize) -> Option<Vec<f64>> {
+    let finite = |v: Vec<f64>| v.iter().all(|x| x.is_finite()).then_some(v);
+    match n {
+        1 if j[0] != 0.0 => finite(vec![r[0] / j[0]]),
+        2 => {
+            let det = j[0] * j[3] - j[1] * j[2];
+            if det == 0.0 {
+                return None;
+            }
+            finite(vec![(j[3] * r[0] - j[1] * r[1]) / det, (j[0] * r[1] - j[2] * r[0]) / det])
+        }
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A saturating law with coupling: the iteration finds its inverse to the tolerance.
+    #[test]
+    fn finds_the_creepages_of_a_saturating_law() {
+        let mu = 0.3;
+        let law = |cx: f64, cy: f64| {
+            let (lx, ly) = (100.0 * cx + 5.0 * cy, 120.0 * cy);
+            let w = lx.hypot(ly);
+            let s = if w == 0.0 { 0.0 } else { mu * (1.0 - (1.0 - (w / (3.0 * mu)).min(1.0)).powi(3)) / w };
+            [lx * s, ly * s]
+        };
+        let targets = Targets { fx: Some(0.25), fy: Some(-0.1) };
+        let found =
+            solve(targets, [0.0, 0.0], [100.0, 120.0], mu, &mut Memory::default(), |cx, cy| Ok(((), law(cx, cy))))
+                .unwrap();
+        assert!(found.met, "{found:?}");
+        let f = law(found.cx, found.cy);
+        assert!((f[0] - 0.25).abs() <= FORCE_TOL * mu && (f[1] + 0.1).abs() <= FORCE_TOL * mu, "{f:?}");
+        assert!(found.solves < 30, "{} solves", found.solves);
+    }
+
+    /// A force the law cannot give: the iteration stops and says so.
+    #[test]
+    fn says_when_the_force_is_not_reached() {
+        let found = solve(
+            Targets { fx: Some(0.2), fy: None },
+            [0.0, 0.0],
+            [100.0, 100.0],
+            0.3,
+            &mut Memory::default(),
+            |cx, _| Ok(((), [(100.0 * cx).clamp(-0.1, 0.1), 0.0])),
+        )
+        .unwrap();
+        assert!(!found.met);
+        assert_eq!(found.reached[0], 0.1);
+        assert!(found.solves <= MAX_OUTER);
+    }
+
+    /// F = 1: only cx is sought; cy stays as given.
+    #[test]
+    fn keeps_the_given_creepage() {
+        let found = solve(
+            Targets { fx: Some(0.01), fy: None },
+            [0.0, 0.002],
+            [100.0, 100.0],
+            0.3,
+            &mut Memory::default(),
+            |cx, cy| Ok(((), [100.0 * cx + cy, 100.0 * cy])),
+        )
+        .unwrap();
+        assert_eq!(found.cy, 0.002);
+        assert!((found.cx - (0.01 - 0.002) / 100.0).abs() < 1e-12, "{}", found.cx);
+    }
+}
