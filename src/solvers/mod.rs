@@ -87,6 +87,13 @@ pub fn builtin_names() -> Vec<&'static str> {
 /// Every built-in model the problem names must accept it (e.g. the UBA needs courant ≤ 1; only a
 /// model that finds creepages can take prescribed forces).
 pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
+    if problem.friction.is_falling() && problem.loading.prescribes_force() {
+        return Err(InputError::new(
+            "creepage.fx_over_fn",
+            "prescribed forces with a falling [friction] law",
+            "prescribed forces with Coulomb friction, or creepages with a falling law (the two iterations are not combined)",
+        ));
+    }
     problem.solvers.iter().filter_map(|s| builtin(s)).try_for_each(|m| {
         if problem.friction.is_falling() && !FALLING_FRICTION.contains(&m.name) {
             return Err(InputError::new(
