@@ -23,6 +23,7 @@ pub use termination::Termination;
 use crate::error::InputError;
 use crate::problem::{ModelParams, Problem};
 use crate::scene::reader::Section;
+use crate::scene::Motion;
 
 /// Why a model could not produce a trustworthy result.
 #[derive(Debug, thiserror::Error)]
@@ -48,6 +49,9 @@ pub struct ModelDef {
     /// Whether it can find the creepages of prescribed total forces (CONTACT F = 1, 2:
     /// `fx_over_fn`, `fy_over_fn`); a model that cannot is refused on such a scene.
     pub prescribed_forces: bool,
+    /// Whether it solves shifts without rolling (`[rolling] motion = "shift"`, CONTACT T = 1); a
+    /// model that cannot is refused on such a scene.
+    pub shifts: bool,
     /// Refuses a problem the model cannot run, naming the scene field.
     pub check: fn(&Problem) -> Result<(), InputError>,
     /// Relative cost of one history row, for scheduling a suite (longest first).
@@ -96,6 +100,14 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
                 format!("models that find the creepages of prescribed forces: {} (leave {} out of this scene: it takes creepages only)", able.join(", "), m.name),
             ));
         }
+        if problem.rolling.motion == Motion::Shift && !m.shifts {
+            let able: Vec<&str> = MODELS.iter().filter(|m| m.shifts).map(|m| m.name).collect();
+            return Err(InputError::new(
+                "solvers",
+                format!("{:?} with rolling.motion = \"shift\"", m.name),
+                format!("models that solve shifts without rolling: {} (leave {} out of this scene: it models rolling only)", able.join(", "), m.name),
+            ));
+        }
         (m.check)(problem)
     })
 }
@@ -124,6 +136,7 @@ pub const fn closed_form(
         extra_columns: &[],
         iterative: false,
         prescribed_forces: false,
+        shifts: false,
         check: always,
         cost_per_row: negligible,
         params: None,

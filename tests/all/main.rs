@@ -29,6 +29,7 @@ mod reference_columns;
 mod relaxation_model;
 mod scene_extensions;
 mod she_model;
+mod shift;
 mod simplified_models;
 mod stability;
 mod steady_restart;
