@@ -33,6 +33,7 @@ mod shift;
 mod simplified_models;
 mod stability;
 mod steady_restart;
+mod strip;
 mod studies;
 mod test_table;
 mod tolerance_files;
