@@ -16,7 +16,7 @@ use crate::physics::{
     CoefficientSource, Coefficients, ContactGeometry, Flexibilities, FrictionLaw, Grid, HertzContact, Material, Memory,
     PatchFlexibility, Planform,
 };
-use crate::scene::{ContactSolverOptions, ExternalSolver, Limits, ModelOptions, Scene};
+use crate::scene::{ContactSolverOptions, ExternalSolver, Limits, ModelOptions, Motion, Scene};
 use std::path::PathBuf;
 use std::sync::Arc;
 
@@ -47,6 +47,8 @@ pub struct Rolling {
     pub dt_s: f64,
     /// Rolling distance per step [mm] = courant·dx.
     pub dq_mm: f64,
+    /// Rolling, or shifts without rolling (the creepages then shifts per step).
+    pub motion: Motion,
 }
 
 /// A contact given per element: every load of the history gives a normal contact (else an input
@@ -186,7 +188,7 @@ impl Problem {
                 crate::physics::geometry::Extent::Edges { x_mm, y_mm } => Some((x_mm, y_mm)),
                 crate::physics::geometry::Extent::Scale(_) => None,
             },
-            rolling: Rolling { v_mm_s: scene.v_mm_s, courant: scene.courant, dt_s, dq_mm },
+            rolling: Rolling { v_mm_s: scene.v_mm_s, courant: scene.courant, dt_s, dq_mm, motion: scene.motion },
             friction: scene.friction,
             memory: scene.memory,
             nominal,
@@ -230,6 +232,29 @@ impl Problem {
                     "a speed for which the time step courant dx / v and the history's times are finite (dt = {:e} s)",
                     self.rolling.dt_s
                 ),
+            ));
+        }
+        self.check_shift()
+    }
+
+    /// Shifts without rolling have no steady state (the traction of a shift stays where it is):
+    /// a transient history from rest only.
+    fn check_shift(&self) -> Result<(), InputError> {
+        if self.rolling.motion != Motion::Shift {
+            return Ok(());
+        }
+        if !self.loading.is_transient() {
+            return Err(InputError::new(
+                "rolling.motion",
+                "\"shift\"",
+                "a transient loading (creepage.kind step, sine or table): shifts have no steady state, so no sweep",
+            ));
+        }
+        if self.loading.steady_start().is_some() {
+            return Err(InputError::new(
+                "rolling.motion",
+                "\"shift\" with init.kind = \"steady\"",
+                "shifts from rest: leave init.kind at its default (zero traction)",
             ));
         }
         Ok(())

@@ -209,6 +209,17 @@ pub struct Origin {
     pub cases: [usize; 2],
 }
 
+/// What moves the bodies from step to step (`[rolling] motion`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Motion {
+    /// Rolling by dq per step: the creepages are dimensionless, the kernel shifts by dq.
+    #[default]
+    Rolling,
+    /// Shifts without rolling (CONTACT T = 1, Cattaneo; Kalker 1990 §5.2.1): the creepage keys are
+    /// rigid shifts per step [mm] (cs: rotation [rad]), the traction stays in place.
+    Shift,
+}
+
 /// A validated scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
@@ -235,6 +246,8 @@ pub struct Scene {
     pub extent: Extent,
     pub v_mm_s: f64,
     pub courant: f64,
+    /// Rolling, or shifts without rolling (CONTACT T = 1: the creepages are shifts per step).
+    pub motion: Motion,
     pub creepage: Creepage,
     pub cy: f64,
     /// Fy/FN prescribed in place of `cy` (`[creepage] fy_over_fn`, CONTACT F = 2).
@@ -324,7 +337,7 @@ impl Scene {
         let contact = sections::contact(&mut top, element_geometry)?;
         let friction = sections::friction(&mut top, contact.mu)?;
         let material = sections::material(&mut top)?;
-        let (v_mm_s, courant) = sections::rolling(&mut top)?;
+        let (v_mm_s, courant, motion) = sections::rolling(&mut top)?;
         let loading = sections::creepage(&mut top, dir)?;
         let init = sections::init(&mut top)?;
         let (model, model_params) = sections::model(&mut top)?;
@@ -348,6 +361,7 @@ impl Scene {
             extent: grid.extent,
             v_mm_s,
             courant,
+            motion,
             creepage: loading.creepage,
             cy: loading.cy,
             fy_over_fn: loading.fy_over_fn,

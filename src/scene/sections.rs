@@ -5,7 +5,7 @@
 use super::reader::{Deferred, Range, Section};
 use super::{
     is_valid_name, table, ContactSolverOptions, Creepage, ExternalSolver, InitKind, InitialSlip, Limits, MaterialSpec,
-    ModelOptions, SteadyRestart, CREEPAGE_LIMIT, FINITE, GRID_SCALE, HARD_MAX_STEPS, MAX_ELEMENTS_PER_AXIS, SPIN_LIMIT,
+    ModelOptions, Motion, SteadyRestart, CREEPAGE_LIMIT, FINITE, GRID_SCALE, HARD_MAX_STEPS, MAX_ELEMENTS_PER_AXIS, SPIN_LIMIT,
 };
 use crate::error::InputError;
 use crate::physics::geometry::{Extent, GeometrySpec};
@@ -259,15 +259,19 @@ pub fn material(top: &mut Section) -> Result<MaterialSpec, InputError> {
     Ok(MaterialSpec { g_mpa, e_mpa, poisson })
 }
 
-/// `[rolling]` (optional): the speed [mm/s] (default 1000) and the Courant number (default 1).
-pub fn rolling(top: &mut Section) -> Result<(f64, f64), InputError> {
-    let (mut v_mm_s, mut courant) = (1000.0, 1.0);
+/// `[rolling]` (optional): the speed [mm/s] (default 1000), the Courant number (default 1) and
+/// the motion (default rolling; `"shift"`: CONTACT's T = 1).
+pub fn rolling(top: &mut Section) -> Result<(f64, f64, Motion), InputError> {
+    let (mut v_mm_s, mut courant, mut motion) = (1000.0, 1.0, Motion::Rolling);
     if let Some(mut r) = top.opt_table("rolling")? {
         v_mm_s = r.opt_f64("v_mm_s", super::SPEED_LIMIT)?.unwrap_or(v_mm_s);
         courant = r.opt_f64("courant", Range::new(0.0, false, 100.0, true))?.unwrap_or(courant);
+        if r.opt_choice("motion", &["rolling", "shift"])? == Some("shift") {
+            motion = Motion::Shift;
+        }
         r.finish()?;
     }
-    Ok((v_mm_s, courant))
+    Ok((v_mm_s, courant, motion))
 }
 
 /// `[creepage]`: the kind's history, and the constant cy and cs.

@@ -23,6 +23,7 @@ pub use termination::Termination;
 use crate::error::InputError;
 use crate::problem::{ModelParams, Problem};
 use crate::scene::reader::Section;
+use crate::scene::Motion;
 
 /// Why a model could not produce a trustworthy result.
 #[derive(Debug, thiserror::Error)]
@@ -48,6 +49,9 @@ pub struct ModelDef {
     /// Whether it can find the creepages of prescribed total forces (CONTACT F = 1, 2:
     /// `fx_over_fn`, `fy_over_fn`); a model that cannot is refused on such a scene.
     pub prescribed_forces: bool,
+    /// Whether it solves shifts without rolling (`[rolling] motion = "shift"`, CONTACT T = 1); a
+    /// model that cannot is refused on such a scene.
+    pub shifts: bool,
     /// Refuses a problem the model cannot run, naming the scene field.
     pub check: fn(&Problem) -> Result<(), InputError>,
     /// Relative cost of one history row, for scheduling a suite (longest first).
@@ -87,6 +91,13 @@ pub fn builtin_names() -> Vec<&'static str> {
 /// Every built-in model the problem names must accept it (e.g. the UBA needs courant ≤ 1; only a
 /// model that finds creepages can take prescribed forces).
 pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
+    if problem.friction.is_falling() && problem.rolling.motion == crate::scene::Motion::Shift {
+        return Err(InputError::new(
+            "rolling.motion",
+            "\"shift\" with a falling [friction] law",
+            "shifts with Coulomb friction, or rolling with a falling law (the slip velocity of a shift is not modelled)",
+        ));
+    }
     if problem.friction.is_falling() && problem.loading.prescribes_force() {
         return Err(InputError::new(
             "creepage.fx_over_fn",
@@ -108,6 +119,14 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
                 "solvers",
                 format!("{:?} with prescribed forces (creepage.fx_over_fn or fy_over_fn)", m.name),
                 format!("models that find the creepages of prescribed forces: {} (leave {} out of this scene: it takes creepages only)", able.join(", "), m.name),
+            ));
+        }
+        if problem.rolling.motion == Motion::Shift && !m.shifts {
+            let able: Vec<&str> = MODELS.iter().filter(|m| m.shifts).map(|m| m.name).collect();
+            return Err(InputError::new(
+                "solvers",
+                format!("{:?} with rolling.motion = \"shift\"", m.name),
+                format!("models that solve shifts without rolling: {} (leave {} out of this scene: it models rolling only)", able.join(", "), m.name),
             ));
         }
         (m.check)(problem)
@@ -146,6 +165,7 @@ pub const fn closed_form(
         extra_columns: &[],
         iterative: false,
         prescribed_forces: false,
+        shifts: false,
         check: always,
         cost_per_row: negligible,
         params: None,

@@ -36,6 +36,7 @@ pub const MODEL: ModelDef = ModelDef {
     extra_columns: &[],
     iterative: false,
     prescribed_forces: false,
+    shifts: false,
     check: always,
     cost_per_row: linear_in_elements,
     params: Some(read_params),

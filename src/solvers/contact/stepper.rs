@@ -7,11 +7,12 @@ use super::influence::Kernel;
 use super::normal::{NormalParams, NormalSolver};
 use super::restart::{contact_restart, SteadyRestart, SteadyStart};
 use super::tangential::{StepResult, TangentialParams, TangentialSolver};
-use super::veldep::{Motion, VelDep, VelDepOptions, VelDepOutcome};
+use super::veldep::{Motion as LawStep, VelDep, VelDepOptions, VelDepOutcome};
 use super::ContactError;
 use crate::error::InputError;
 use crate::physics::{moment_sum, LinearTheory};
 use crate::problem::{Problem, Sample};
+use crate::scene::Motion;
 use crate::solvers::stepper::{FieldView, Step, Stepper};
 use crate::solvers::{ModelDef, SolveError};
 
@@ -25,6 +26,7 @@ pub const MODEL: ModelDef = ModelDef {
     extra_columns: &["n_adhesion", "n_slip", "iterations", "residual", "pn_max_mpa"],
     iterative: true,
     prescribed_forces: true,
+    shifts: true,
     check,
     cost_per_row,
     params: None,
@@ -53,6 +55,13 @@ fn cost_per_row(p: &Problem) -> f64 {
     let n = p.grid.len() as f64;
     let per_row = if p.loading.is_transient() { 1.0 } else { 3.0 };
     per_row * n * n.max(2.0).ln()
+}
+
+/// Mindlin's tangential stiffness of a stuck circle of radius √(ab), both bodies of the same
+/// material: F/δ = 4 G a / (2 − ν) (Johnson 1985, eq. 7.29 with Q ≪ μP) [N/mm]; the start
+/// of the prescribed-force iteration under shifts.
+fn mindlin_stiffness_n_mm(p: &Problem, ab_mm2: f64) -> f64 {
+    4.0 * p.material.g_mpa * ab_mm2.sqrt() / (2.0 - p.material.poisson)
 }
 
 /// Failures of the exact-theory solver.
@@ -123,10 +132,14 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let kernel = |shift: f64| {
         Kernel::new(g.mx, g.my, g.dx_mm, g.dy_mm, m.g_mpa, m.poisson, shift).map_err(ContactRunError::Kernel)
     };
-    let (k0, ks) = (kernel(0.0)?, kernel(p.rolling.dq_mm)?);
+    let k0 = kernel(0.0)?;
     let normal = NormalSolver::new(&k0).map_err(ContactRunError::Kernel)?;
     let (x, y) = g.centres();
-    let tangential = TangentialSolver::new(&k0, &ks, &x, &y).map_err(ContactRunError::Kernel)?;
+    let tangential = match p.rolling.motion {
+        Motion::Rolling => TangentialSolver::new(&k0, &kernel(p.rolling.dq_mm)?, &x, &y),
+        Motion::Shift => TangentialSolver::for_shifts(&k0, &x, &y),
+    }
+    .map_err(ContactRunError::Kernel)?;
     let solves_steady = !p.loading.is_transient() || p.loading.steady_start().is_some();
     let steady_dx = if solves_steady && p.rolling.dq_mm != g.dx_mm {
         Some(TangentialSolver::new(&k0, &kernel(g.dx_mm)?, &x, &y).map_err(ContactRunError::Kernel)?)
@@ -159,9 +172,14 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
 
 impl Contact<'_> {
     fn params(&self, s: &Sample) -> TangentialParams {
+        // Shifts: the creepages are the shifts of the step [mm], taken over a unit "dq".
+        let dq_mm = match self.p.rolling.motion {
+            Motion::Rolling => self.p.rolling.dq_mm,
+            Motion::Shift => 1.0,
+        };
         // With falling friction the bound μ_k pn_k is set per element (`set_bound`), μ = 1.
         let mu = if self.veldep.is_some() { 1.0 } else { s.mu };
-        let mut t = TangentialParams::new(mu, s.cx, s.cy, s.cs, self.p.rolling.dq_mm);
+        let mut t = TangentialParams::new(mu, s.cx, s.cy, s.cs, dq_mm);
         t.tol = self.p.contact_solver.tolerance;
         if self.veldep.is_some() {
             // The fixed point on s can get only as tight as its solves: a tenth of its tolerance.
@@ -209,7 +227,7 @@ impl Contact<'_> {
         let params = self.params(at);
         let v_mm_s = at.speed_mm_s(self.p.rolling.v_mm_s);
         let (dx, dq) = (self.p.grid.dx_mm, self.p.rolling.dq_mm);
-        let motion = Motion {
+        let motion = LawStep {
             steady,
             dt_s: if steady { dx } else { dq } / v_mm_s,
             v_mm_s,
@@ -292,9 +310,13 @@ impl Stepper for Contact<'_> {
         }
         let pn_max = pn_mpa.iter().fold(0.0f64, |a, &b| a.max(b));
         let e = p.geometry.ellipse_at(fn_n);
-        let linear = LinearTheory::new(p.material.g_mpa, e.a_mm, e.b_mm, fn_n);
-        let slope =
-            [linear.forces(&p.coefficients, (1.0, 0.0, 0.0)).0, linear.forces(&p.coefficients, (0.0, 1.0, 0.0)).1];
+        let slope = match p.rolling.motion {
+            Motion::Rolling => {
+                let linear = LinearTheory::new(p.material.g_mpa, e.a_mm, e.b_mm, fn_n);
+                [linear.forces(&p.coefficients, (1.0, 0.0, 0.0)).0, linear.forces(&p.coefficients, (0.0, 1.0, 0.0)).1]
+            }
+            Motion::Shift => [mindlin_stiffness_n_mm(p, e.a_mm * e.b_mm) / fn_n; 2],
+        };
         self.loaded = Some(Loaded { fn_n, pn: pn_mpa, pn_sum, pn_max, slope });
         self.older = None;
         Ok(())

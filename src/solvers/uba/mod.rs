@@ -32,6 +32,7 @@ pub const MODEL: ModelDef = ModelDef {
     extra_columns: &["n_adhesion", "n_slip"],
     iterative: false,
     prescribed_forces: false,
+    shifts: false,
     check,
     cost_per_row: linear_in_elements,
     params: None,

@@ -212,8 +212,12 @@ struct Layout {
     mx: usize,
     my: usize,
     dx_mm: f64,
-    /// Rolling distance per step `dq` [mm], the shift of the shifted kernel.
+    /// Rolling distance per step `dq` [mm], the shift of the shifted kernel; 1 for shifts without
+    /// rolling (the creepages are then the shifts per step in mm).
     shift_mm: f64,
+    /// Whether the bodies roll (else shifts without rolling: the kernel does not shift, no
+    /// steady state, no entering material, the spin term at the centre).
+    rolls: bool,
     /// Element centres [mm].
     x_mm: Vec<f64>,
     y_mm: Vec<f64>,
@@ -274,7 +278,7 @@ impl Layout {
     /// The [`Entering`] elements of the current contact area.
     fn find_entering(&self) -> Vec<Entering> {
         let mut out = Vec::new();
-        if self.shift_mm <= self.dx_mm {
+        if !self.rolls || self.shift_mm <= self.dx_mm {
             return out;
         }
         for j in 0..self.my {
@@ -301,7 +305,8 @@ impl Layout {
     /// `facdt dq w_k + (A p')_edge` instead of `dq w_k + u'_k`.
     fn add_rigid_slip(&self, p: &TangentialParams, edge_u: Option<(&[f64], &[f64])>, bx: &mut [f64], by: &mut [f64]) {
         let (dq, w) = (p.dq_mm, p.rigid_slip());
-        let offset_mm = FACPHI * dq;
+        // Shifts: the rotation about the origin, no offset (CONTACT's FACPHI = 0 for T = 1).
+        let offset_mm = if self.rolls { FACPHI * dq } else { 0.0 };
         for &k in &self.contact {
             let (wx, wy) = w.at(self.x_mm[k] - offset_mm, self.y_mm[k]);
             bx[k] += dq * wx;
@@ -465,6 +470,30 @@ impl TangentialSolver {
     /// (`ks.shift_mm = dq`); `x_mm`, `y_mm`: element centres [mm] (flat index `k = j*mx + i`).
     /// No load yet: call [`TangentialSolver::set_pressure`] before solving.
     pub fn new(k0: &Kernel, ks: &Kernel, x_mm: &[f64], y_mm: &[f64]) -> Result<TangentialSolver, ContactError> {
+        if ks.shift_mm.is_nan() || ks.shift_mm <= 0.0 {
+            return Err(ContactError::OutOfRange {
+                name: "shift dq of the shifted kernel [mm]",
+                value: ks.shift_mm,
+                requirement: "> 0",
+            });
+        }
+        Self::build(k0, ks, x_mm, y_mm, true)
+    }
+
+    /// Sets up the solver for shifts without rolling (CONTACT T = 1; Kalker 1990 §5.2.1): the
+    /// previous displacement is `A p'` in place (`A_s = A`), a step's rigid slip is the shift
+    /// itself (the creepages as shifts [mm], `dq` = 1); transient steps only.
+    pub fn for_shifts(k0: &Kernel, x_mm: &[f64], y_mm: &[f64]) -> Result<TangentialSolver, ContactError> {
+        Self::build(k0, k0, x_mm, y_mm, false)
+    }
+
+    fn build(
+        k0: &Kernel,
+        ks: &Kernel,
+        x_mm: &[f64],
+        y_mm: &[f64],
+        rolls: bool,
+    ) -> Result<TangentialSolver, ContactError> {
         let (mx, my) = (k0.mx, k0.my);
         let n = mx * my;
         if ks.mx != mx || ks.my != my || ks.dx_mm != k0.dx_mm || ks.dy_mm != k0.dy_mm {
@@ -477,13 +506,6 @@ impl TangentialSolver {
                 requirement: "= 0",
             });
         }
-        if ks.shift_mm.is_nan() || ks.shift_mm <= 0.0 {
-            return Err(ContactError::OutOfRange {
-                name: "shift dq of the shifted kernel [mm]",
-                value: ks.shift_mm,
-                requirement: "> 0",
-            });
-        }
         check_grid_array("x", x_mm, n)?;
         check_grid_array("y", y_mm, n)?;
         let plans = Plans::new(k0, ks)?;
@@ -491,7 +513,8 @@ impl TangentialSolver {
             mx,
             my,
             dx_mm: k0.dx_mm,
-            shift_mm: ks.shift_mm,
+            shift_mm: if rolls { ks.shift_mm } else { 1.0 },
+            rolls,
             x_mm: x_mm.to_vec(),
             y_mm: y_mm.to_vec(),
             pn: vec![0.0; n],
@@ -695,6 +718,13 @@ impl TangentialSolver {
         start: Option<(&[f64], &[f64])>,
     ) -> Result<StepResult, ContactError> {
         self.check_params(params)?;
+        if !self.layout.rolls {
+            return Err(ContactError::OutOfRange {
+                name: "steady solve of shifts without rolling (no steady state)",
+                value: params.dq_mm,
+                requirement: "rolling",
+            });
+        }
         let n = self.layout.n();
         if let Some((sx0, sy0)) = start {
             check_grid_array("start traction px", sx0, n)?;
