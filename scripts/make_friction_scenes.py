@@ -39,7 +39,7 @@ def common(c, v_mm_s, note):
 # {note}
 
 name = "{c["name"]}"
-solvers = ["contact"]
+solvers = ["contact", "fastsim", "uba", "relaxation", "polach"]
 
 [contact]
 a_mm = {float(c["a_mm"])!r}

@@ -1,6 +1,6 @@
 //! The report's "Falling friction" section (issue 33 item 5): the cases of CONTACT's
-//! falling-friction set (reference/contact_friction) run by every model (`scenes/falling/`,
-//! scene `fall_<case>` for CONTACT's `fr_<case>`): the traction curves f(creepage) per law with
+//! falling-friction set (reference/contact_friction) run by every model (`scenes/friction/`,
+//! scene `fr_<case>`, CONTACT's case of the same name): the traction curves f(creepage) per law with
 //! CONTACT's points, the peak of each steady curve (the creepage at the maximum and the maximum)
 //! per model against CONTACT's, the worst |Δf| per case, the transient histories, and the
 //! stability suite's falling-friction cases (`stab_fr_*`). Reads stored results and reference
@@ -16,7 +16,7 @@ use crate::suite::results::StoredScene;
 use std::fmt::Write;
 
 /// Prefix of the section's scenes (the falling-friction cases run by every model).
-pub const SCENES: &str = "fall_";
+pub const SCENES: &str = "fr_";
 /// Prefix of the stability suite's falling-friction scenes.
 pub const STABILITY: &str = "stab_fr_";
 
@@ -28,9 +28,9 @@ pub fn applies(scenes: &[StoredScene]) -> bool {
     scenes.iter().any(|s| s.name.starts_with(SCENES) || s.name.starts_with(STABILITY))
 }
 
-/// CONTACT's reference case of a `fall_` scene: `fr_` and the rest of the name.
+/// CONTACT's reference case of a falling-friction scene: the scene's own name.
 fn case_of(name: &str) -> String {
-    format!("fr_{}", &name[SCENES.len()..])
+    name.to_string()
 }
 
 /// The x of a row: the quantity a sweep moves (cx, cy, cs or the speed), time otherwise.
@@ -71,7 +71,7 @@ fn worst(h: &History, contact: &History) -> f64 {
         .fold(0.0, f64::max)
 }
 
-const INTRO: &str = "CONTACT's cases with friction falling with the local slip velocity s (`reference/contact_friction/`: laws linear, rational and exponential, with and without friction memory) run by every model (`scenes/falling/`, scene `fall_<case>` for CONTACT's `fr_<case>`; the exact solver's own gates are in `scenes/friction/`). FASTSIM and the UBA take each element's bound μ(s) p from the scene's law (physics/friction.rs): the slip of an element per unit rolling distance w = (L1 (ux − τx), L2 (uy − τy))/dq (u the traction before the bound, τ after it, dq = dx per element of a steady march, C dx per UBA sub-step) and its slip velocity s = V |w|; the bound g solves g = p μ(s(g)) by Newton until a step is at most 1e-12 |u| (physics/bound.rs `falling_bound`). The memory's μ is carried with the material from the leading edge (backward Euler over the time the material takes to cross an element). FASTSIM is quasi-steady (no memory in time); the relaxation model lags FASTSIM's falling steady force (no slip-velocity feedback, so it cannot oscillate); Polach uses its own law μ0((1 − A) e^(−B w) + A) from the static value, w = |creepage| V (scene values here; `fits/polach_falling.toml` fits A and B). The UBA refuses a memoryless falling law on a time history when its stiffness κ = p_max V L max|dμ/ds|/(C dx) ≥ 1 (the element's bound may then have several roots, sub-steps only raise κ).";
+const INTRO: &str = "CONTACT's cases with friction falling with the local slip velocity s (`reference/contact_friction/`: laws linear, rational and exponential, with and without friction memory) run by every model (`scenes/friction/`, each scene named after CONTACT's case, where the exact solver is also gated). FASTSIM and the UBA take each element's bound μ(s) p from the scene's law (physics/friction.rs): the slip of an element per unit rolling distance w = (L1 (ux − τx), L2 (uy − τy))/dq (u the traction before the bound, τ after it, dq = dx per element of a steady march, C dx per UBA sub-step) and its slip velocity s = V |w|; the bound g solves g = p μ(s(g)) by Newton until a step is at most 1e-12 |u| (physics/bound.rs `falling_bound`). The memory's μ is carried with the material from the leading edge (backward Euler over the time the material takes to cross an element). FASTSIM is quasi-steady (no memory in time); the relaxation model lags FASTSIM's falling steady force (no slip-velocity feedback, so it cannot oscillate); Polach uses its own law μ0((1 − A) e^(−B w) + A) from the static value, w = |creepage| V (scene values here; `fits/polach_falling.toml` fits A and B). The UBA refuses a memoryless falling law on a time history when its stiffness κ = p_max V L max|dμ/ds|/(C dx) ≥ 1 (the element's bound may then have several roots, sub-steps only raise κ).";
 
 /// The section, if any falling-friction scene is stored.
 pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {

@@ -97,11 +97,8 @@ fn suite_folders_tolerance_files_are_sources() {
 fn every_default_rule_decides_a_comparison_of_the_shipped_suites_or_is_a_catch_all() {
     let golden = root().join("golden");
     let names = results::scene_names(&golden);
-    // The default suites and the falling-friction suites (issue 33: scenes/friction, the exact
-    // solver's gates; scenes/falling, every model on the same cases), blessed but not run by default.
     let suites: Vec<PathBuf> = suite::DEFAULT_SUITES
         .iter()
-        .chain(["scenes/friction", "scenes/falling"].iter())
         .map(|s| root().join(s))
         .collect();
     let mut shipped = suite::scene_names(&suites).unwrap();
