@@ -618,6 +618,80 @@ pub fn export_contact(scene_path: &Path, out: &Path, golden: &Path) -> Result<Ve
     Ok(paths)
 }
 
+/// `creepbench import contact DECK [--out DIR] [--supported-only] [--overwrite]`: CONTACT's
+/// module-3 input as scenes, one per history (`DIR/<name>.toml` and its tables; DIR defaults to a
+/// folder named after the deck). A deck with a case that is not supported is refused whole (exit
+/// 2, every such case listed, nothing written) unless `supported_only`, which writes the supported
+/// scenes and lists the cases skipped. Existing files are replaced only with `overwrite`.
+pub fn import_contact(
+    deck: &Path,
+    out: Option<&Path>,
+    options: ImportOptions,
+    golden: &Path,
+) -> Result<Vec<PathBuf>, Error> {
+    let imported = crate::import::contact::import(deck)?;
+    let skipped: Vec<_> = imported.statuses.iter().filter(|s| !s.supported()).collect();
+    for s in &skipped {
+        eprintln!(
+            "{} case {} (line {}): not supported: {}",
+            if options.supported_only { "skipped" } else { "refused" },
+            s.case,
+            s.line,
+            s.refused.join("; ")
+        );
+    }
+    let total = imported.statuses.len();
+    if !skipped.is_empty() && !options.supported_only {
+        return Err(InputError::new(
+            deck.display().to_string(),
+            format!("{} of {total} case(s) not supported (listed above)", skipped.len()),
+            "a deck whose every case is supported; --supported-only writes the supported scenes",
+        )
+        .into());
+    }
+    if imported.scenes.is_empty() {
+        return Err(InputError::new(
+            deck.display().to_string(),
+            format!("none of {total} case(s) supported"),
+            "at least one supported case",
+        )
+        .into());
+    }
+    let stem = deck
+        .file_stem()
+        .map(|s| PathBuf::from(s.to_string_lossy().to_string()))
+        .unwrap_or_else(|| PathBuf::from("imported"));
+    let out = out.map(Path::to_path_buf).unwrap_or(stem);
+    guard::guard_output_dir(&out, golden)?;
+    let files: Vec<(PathBuf, &String)> =
+        imported.scenes.iter().flat_map(|s| s.files.iter().map(|(name, text)| (out.join(name), text))).collect();
+    for (path, _) in &files {
+        guard::guard_output_file(path, golden)?;
+        if path.exists() && !options.overwrite {
+            return Err(InputError::new(
+                "--out",
+                path.display(),
+                "a folder without these files (--overwrite replaces them)",
+            )
+            .into());
+        }
+    }
+    std::fs::create_dir_all(&out).map_err(Error::io(&out))?;
+    for (path, text) in &files {
+        write_whole(path, text)?;
+    }
+    Ok(imported.scenes.iter().map(|s| out.join(&s.files[0].0)).collect())
+}
+
+/// The choices of `import contact`.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ImportOptions {
+    /// Write the supported scenes and list the skipped cases instead of refusing the deck.
+    pub supported_only: bool,
+    /// Replace existing files of the same names.
+    pub overwrite: bool,
+}
+
 /// `creepbench import contact-output FILE [--out CSV] [--cases A-B]`: the totals CONTACT printed
 /// for each module-3 case as a reference CSV (`import::contact_output::reference_csv`), written
 /// whole to `out` (never inside golden/) or to standard output; a count of the cases on stderr.

@@ -50,6 +50,25 @@ enum ExportWhat {
 /// What `import` reads.
 #[derive(Subcommand)]
 enum ImportWhat {
+    /// CONTACT module-3 input (FILE.inp) as scenes, one per history: OUT/<deck>_<case>.toml with
+    /// its tables (OUT defaults to a folder named after the deck).
+    Contact {
+        /// The CONTACT input file.
+        deck: PathBuf,
+        /// Output folder (default: a folder named after the deck, in the current folder).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Write the supported scenes and list the skipped cases (default: refuse a deck with any
+        /// case that is not supported, writing nothing).
+        #[arg(long)]
+        supported_only: bool,
+        /// Replace existing files of the same names.
+        #[arg(long)]
+        overwrite: bool,
+        /// Refused as an output location (only `bless` writes there).
+        #[arg(long, default_value = "golden")]
+        golden: PathBuf,
+    },
     /// CONTACT's printed output (.out, .ref_out): each module-3 case's totals as a reference CSV
     /// (standard output, or --out), this project's signs, each printed value's rounding.
     ContactOutput {
@@ -183,7 +202,7 @@ enum Command {
         #[command(subcommand)]
         what: ExportWhat,
     },
-    /// Read another program's file into this project's formats.
+    /// Read another program's files: CONTACT's input as scenes, its printed output as a reference CSV.
     Import {
         #[command(subcommand)]
         what: ImportWhat,
@@ -232,6 +251,11 @@ fn main() {
         Command::Manifest { dir } => commands::manifest(&dir),
         Command::Export { what: ExportWhat::Contact { scene, out, golden } } => {
             commands::export_contact(&scene, &out, &golden)
+                .map(|ps| ps.iter().for_each(|p| println!("{}", p.display())))
+        }
+        Command::Import { what: ImportWhat::Contact { deck, out, supported_only, overwrite, golden } } => {
+            let options = commands::ImportOptions { supported_only, overwrite };
+            commands::import_contact(&deck, out.as_deref(), options, &golden)
                 .map(|ps| ps.iter().for_each(|p| println!("{}", p.display())))
         }
         Command::Import { what: ImportWhat::ContactOutput { file, out, cases, golden } } => {

@@ -27,3 +27,52 @@ impl Material {
         self.e_mpa / (2.0 * (1.0 - self.poisson * self.poisson))
     }
 }
+
+/// Two bodies' elastic constants combined as CONTACT combines them (user guide, "Material
+/// constants"; Kalker 1990 Eq. 1.19): `G = 2 G1 G2 / (G1 + G2)`, `ν = G (ν1/G1 + ν2/G2) / 2` and
+/// Kalker's difference parameter `K = G/4 ((1 − 2ν1)/G1 − (1 − 2ν2)/G2)`, zero for quasi-identical
+/// bodies (no coupling of the normal and tangential problems).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TwoBodies {
+    pub g_mpa: f64,
+    pub poisson: f64,
+    pub k: f64,
+}
+
+/// Combine the Poisson ratios and shear moduli [MPa] of bodies 1 and 2; identical bodies give
+/// their own constants exactly (the formulas are the identity there).
+pub fn combine_bodies(poiss: [f64; 2], gg_mpa: [f64; 2]) -> TwoBodies {
+    if poiss[0] == poiss[1] && gg_mpa[0] == gg_mpa[1] {
+        return TwoBodies { g_mpa: gg_mpa[0], poisson: poiss[0], k: 0.0 };
+    }
+    let [n1, n2] = poiss;
+    let [g1, g2] = gg_mpa;
+    let g = 2.0 * g1 * g2 / (g1 + g2);
+    TwoBodies {
+        g_mpa: g,
+        poisson: g * (n1 / g1 + n2 / g2) / 2.0,
+        k: g / 4.0 * ((1.0 - 2.0 * n1) / g1 - (1.0 - 2.0 * n2) / g2),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn two_bodies_combine_as_contact_does() {
+        // Identical bodies: their own constants, K = 0.
+        assert_eq!(
+            combine_bodies([0.28, 0.28], [82000.0, 82000.0]),
+            TwoBodies { g_mpa: 82000.0, poisson: 0.28, k: 0.0 }
+        );
+        // Steel on a softer body (G 82000 and 20500, ν 0.28 and 0.3): G = 2·82000·20500/102500 = 32800,
+        // ν = 32800 (0.28/82000 + 0.3/20500)/2 = 0.296, K = 8200 (0.44/82000 − 0.4/20500) = −0.116.
+        let m = combine_bodies([0.28, 0.3], [82000.0, 20500.0]);
+        assert!((m.g_mpa - 32800.0).abs() < 1e-9, "{m:?}");
+        assert!((m.poisson - 0.296).abs() < 1e-12, "{m:?}");
+        assert!((m.k - -0.116).abs() < 1e-12, "{m:?}");
+        // Different moduli, both incompressible: K = 0 (quasi-identical).
+        assert_eq!(combine_bodies([0.5, 0.5], [1000.0, 3000.0]).k, 0.0);
+    }
+}

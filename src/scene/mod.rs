@@ -155,6 +155,14 @@ pub struct ExternalSolver {
     pub timeout_s: f64,
 }
 
+/// Where an imported scene came from (`[origin]`, written by `import contact`): the CONTACT
+/// input file and its first and last case.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Origin {
+    pub file: String,
+    pub cases: [usize; 2],
+}
+
 /// A validated scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
@@ -191,6 +199,8 @@ pub struct Scene {
     pub dir: PathBuf,
     /// The studies this scene is a point of (none for a scene file of its own).
     pub studies: Vec<study::StudyPoint>,
+    /// The CONTACT deck and cases the scene was imported from (`[origin]`).
+    pub origin: Option<Origin>,
 }
 
 const CREEPAGE_LIMIT: Range = Range::new(-1.0, true, 1.0, true);
@@ -250,6 +260,7 @@ impl Scene {
         let (model, model_params) = sections::model(&mut top)?;
         let contact_solver = sections::contact_solver(&mut top)?;
         let limits = sections::limits(&mut top)?;
+        let origin = sections::origin(&mut top)?;
         top.finish()?;
         let scene = Scene {
             name,
@@ -276,6 +287,7 @@ impl Scene {
             limits,
             dir: dir.to_path_buf(),
             studies: Vec::new(),
+            origin,
         };
         scene.check_sweep_points()?;
         Ok(scene)

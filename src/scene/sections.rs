@@ -351,3 +351,28 @@ pub fn limits(top: &mut Section) -> Result<Limits, InputError> {
     }
     Ok(limits)
 }
+
+/// `[origin]`: the CONTACT input file (`file`) and its first and last case (`cases`) an imported
+/// scene reproduces.
+pub fn origin(top: &mut Section) -> Result<Option<super::Origin>, InputError> {
+    let Some(mut o) = top.opt_table("origin")? else {
+        return Ok(None);
+    };
+    let file = o.str("file", "the CONTACT input file's name")?.to_string();
+    let field = o.field("cases");
+    let allowed = "two whole numbers [first, last], 1 <= first <= last";
+    let cases = match o.given("cases") {
+        Some(toml::Value::Array(a)) => {
+            let n: Vec<Option<usize>> =
+                a.iter().map(|v| v.as_integer().and_then(|i| usize::try_from(i).ok())).collect();
+            match n.as_slice() {
+                [Some(first), Some(last)] if *first >= 1 && first <= last => [*first, *last],
+                _ => return Err(InputError::new(field, toml::Value::Array(a.clone()), allowed)),
+            }
+        }
+        Some(other) => return Err(InputError::new(field, other, allowed)),
+        None => return Err(InputError::new(field, "missing", format!("required: {allowed}"))),
+    };
+    o.finish()?;
+    Ok(Some(super::Origin { file, cases }))
+}

@@ -5,6 +5,7 @@ mod cli_safety;
 mod common;
 mod console;
 mod contact_export;
+mod contact_import;
 mod contact_output;
 mod contact_solver;
 mod contact_to_csv;

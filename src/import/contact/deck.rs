@@ -1,0 +1,562 @@
+//! CONTACT's module-3 cases as typed records (user guide, "Specification of the input file",
+//! module 3; the line order of CONTACT's `m_sinput.f90`): the control words P-B-T-N-F-S,
+//! [V-]L-D-C-M-Z-E {M2} and [X-]H-G-I-A-O-W-R, then every input line the digits ask for. A value not
+//! read in a case is kept from the previous case ([`State`]). Module-1 cases are skipped to the
+//! next `MODULE` line and named; module 0 ends the deck.
+
+use super::lexer::{Kind, Lexer, Place};
+use super::DeckError;
+
+/// The control digits of a module-3 case.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Digits {
+    /// C (module 1's configuration; a leading seventh digit of P-B-T-N-F-S, unused in module 3).
+    pub c1: u8,
+    pub p: u8,
+    pub b: u8,
+    pub t: u8,
+    pub n: u8,
+    pub f: u8,
+    pub s: u8,
+    pub v: u8,
+    pub l: u8,
+    pub d: u8,
+    pub c: u8,
+    pub m: u8,
+    pub z: u8,
+    pub e: u8,
+    /// M2, the damping model (the optional second integer of L-D-C-M-Z-E; 1 when absent).
+    pub m2: u8,
+    pub x: u8,
+    pub h: u8,
+    pub g: u8,
+    pub i: u8,
+    pub a: u8,
+    pub o: u8,
+    pub w: u8,
+    pub r: u8,
+}
+
+/// The potential contact (`IPOTCN` and its line).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Potcon {
+    /// IPOTCN < 0: a Hertzian option, MX, MY and its parameters (AA, BB, SCALE for −3; A1, B1,
+    /// SCALE for −1; …) as given.
+    Hertz { ipotcn: i64, mx: usize, my: usize, params: Vec<f64> },
+    /// IPOTCN = 1…4: a grid, converted to its lower-left corner and element sizes.
+    Grid { ipotcn: i64, mx: usize, my: usize, xl_mm: f64, yl_mm: f64, dx_mm: f64, dy_mm: f64 },
+}
+
+impl Potcon {
+    pub fn mx_my(&self) -> (usize, usize) {
+        match self {
+            Potcon::Hertz { mx, my, .. } | Potcon::Grid { mx, my, .. } => (*mx, *my),
+        }
+    }
+    pub fn ipotcn(&self) -> i64 {
+        match self {
+            Potcon::Hertz { ipotcn, .. } | Potcon::Grid { ipotcn, .. } => *ipotcn,
+        }
+    }
+}
+
+/// The undeformed distance of a grid (`IBASE`, `IPLAN` and their lines).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Undeformed {
+    pub ibase: i64,
+    pub iplan: i64,
+    /// IBASE = 1: B1…B6 of h = B1 x² + B2 x y + B3 y² + B4 x + B5 y + B6; IBASE = 9: h per element
+    /// in CONTACT's order; other IBASE: their values as read.
+    pub values: Vec<f64>,
+}
+
+/// Everything a case sets; a value not read is kept from the previous case.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct State {
+    /// PEN (N = 0) or FN (N = 1).
+    pub pen_or_fn: f64,
+    /// CKSI (F = 0) or FX (F = 1, 2).
+    pub cksi_or_fx: f64,
+    /// CETA (F = 0, 1) or FY (F = 2).
+    pub ceta_or_fy: f64,
+    pub cphi_per_mm: f64,
+    pub spin_centre_mm: [f64; 2],
+    /// The friction law in force (the last L other than 1) and its values (FSTAT, FKIN for L = 0).
+    pub friction_law: u8,
+    pub friction: Vec<f64>,
+    /// Friction per grid row (V = 3): the values of every row.
+    pub friction_rows: Vec<f64>,
+    pub chi_rad: f64,
+    pub dq_mm: f64,
+    pub veloc_mm_s: f64,
+    /// Whether CHI, DQ, VELOC were ever read.
+    pub rolling_read: bool,
+    pub poiss: [f64; 2],
+    pub gg_mpa: [f64; 2],
+    pub potcon: Option<Potcon>,
+    pub undeformed: Option<Undeformed>,
+    /// Whether an extra rigid-slip term is in force (E = 2, 3, 9, or kept by E = 1).
+    pub extra_rhs: bool,
+}
+
+/// A module-3 case: its digits and the state after it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Case3 {
+    pub digits: Digits,
+    pub state: State,
+}
+
+/// What a case of the deck is.
+#[derive(Debug, Clone, PartialEq)]
+pub enum CaseKind {
+    Module3(Box<Case3>),
+    /// A module-1 (wheel–rail) case: skipped up to the next MODULE line.
+    Module1,
+}
+
+/// One case: its number (counted from 1 over the deck, as CONTACT counts), the line it starts at.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Case {
+    pub number: usize,
+    pub line: usize,
+    pub kind: CaseKind,
+}
+
+/// Read every case of a deck.
+pub fn parse(file: &str, text: &str) -> Result<Vec<Case>, DeckError> {
+    let mut lx = Lexer::new(file, text);
+    let mut cases = Vec::new();
+    let mut state = State::default();
+    // The module the next case belongs to (None: a MODULE line comes next).
+    let mut module: Option<i64> = None;
+    while !lx.at_end() {
+        let line = lx.line_number();
+        let current = match module {
+            Some(m) => m,
+            None => {
+                let (v, place) = lx.group("MODULE", &[Kind::Int], (2, Kind::Int))?;
+                match v[0] as i64 {
+                    0 => break,
+                    m @ (1 | 3) => m,
+                    other => {
+                        return Err(DeckError::Value {
+                            file: file.into(),
+                            line: place.line,
+                            column: place.column,
+                            what: "MODULE".into(),
+                            value: other.to_string(),
+                            allowed: "1 (wheel-rail), 3 (basic contact) or 0 (stop)".into(),
+                        })
+                    }
+                }
+            }
+        };
+        let number = cases.len() + 1;
+        if current == 1 {
+            // Module 1 is not read: skip to the next MODULE line.
+            while !lx.at_end() && !lx.next_is_module_line() {
+                lx.skip_line();
+            }
+            cases.push(Case { number, line, kind: CaseKind::Module1 });
+            module = None;
+            continue;
+        }
+        let mut reader = CaseReader { lx: &mut lx, number, first: number == 1 };
+        let digits = reader.case(&mut state)?;
+        cases.push(Case { number, line, kind: CaseKind::Module3(Box::new(Case3 { digits, state: state.clone() })) });
+        // R = 0, 2: stay in module 3 (the next case has no MODULE line); R = 1, 3: return.
+        module = if digits.r % 2 == 0 { Some(3) } else { None };
+    }
+    Ok(cases)
+}
+
+/// Reads one module-3 case.
+struct CaseReader<'a> {
+    lx: &'a mut Lexer,
+    number: usize,
+    first: bool,
+}
+
+impl CaseReader<'_> {
+    fn reals(&mut self, what: &str, n: usize) -> Result<Vec<f64>, DeckError> {
+        self.lx.group(what, &vec![Kind::Real; n], (0, Kind::Real)).map(|(v, _)| v)
+    }
+
+    fn ints(&mut self, what: &str, n: usize) -> Result<(Vec<i64>, Place), DeckError> {
+        let (v, p) = self.lx.group(what, &vec![Kind::Int; n], (0, Kind::Real))?;
+        Ok((v.into_iter().map(|x| x as i64).collect(), p))
+    }
+
+    fn digit_error(&self, word: &str, digit: &str, value: i64, allowed: &str) -> DeckError {
+        DeckError::Digit {
+            file: self.lx.file().into(),
+            case: self.number,
+            word: word.into(),
+            digit: digit.into(),
+            value,
+            allowed: allowed.into(),
+        }
+    }
+
+    /// A control word's digits, most significant first; `n` digits, a leading extra one allowed
+    /// when `extra` (so `n + 1` at most).
+    fn word(&mut self, word: &str, n: usize, optional_int: bool) -> Result<(Vec<u8>, Option<i64>), DeckError> {
+        let (v, place) = self.lx.group(word, &[Kind::Int], (usize::from(optional_int), Kind::Int))?;
+        let value = v[0] as i64;
+        if !(0..10_i64.pow(n as u32 + 1)).contains(&value) {
+            return Err(DeckError::Value {
+                file: self.lx.file().into(),
+                line: place.line,
+                column: place.column,
+                what: format!("control word {word}"),
+                value: value.to_string(),
+                allowed: format!("{n} digits (one more leading digit allowed), each 0 to 9"),
+            });
+        }
+        let digits = (0..=n).rev().map(|k| ((value / 10_i64.pow(k as u32)) % 10) as u8).collect();
+        Ok((digits, v.get(1).map(|x| *x as i64)))
+    }
+
+    fn check(&self, word: &str, digit: &str, value: u8, allowed: &[u8]) -> Result<(), DeckError> {
+        if allowed.contains(&value) {
+            Ok(())
+        } else {
+            let list: Vec<String> = allowed.iter().map(u8::to_string).collect();
+            Err(self.digit_error(word, digit, value.into(), &list.join(", ")))
+        }
+    }
+
+    fn digits(&mut self) -> Result<Digits, DeckError> {
+        let (w1, _) = self.word("P-B-T-N-F-S", 6, false)?;
+        let (w2, m2) = self.word("L-D-C-M-Z-E", 6, true)?;
+        let (w3, _) = self.word("H-G-I-A-O-W-R", 7, false)?;
+        let m2 = m2.unwrap_or(1);
+        let d = Digits {
+            c1: w1[0],
+            p: w1[1],
+            b: w1[2],
+            t: w1[3],
+            n: w1[4],
+            f: w1[5],
+            s: w1[6],
+            v: w2[0],
+            l: w2[1],
+            d: w2[2],
+            c: w2[3],
+            m: w2[4],
+            z: w2[5],
+            e: w2[6],
+            m2: (m2 % 10) as u8,
+            x: w3[0],
+            h: w3[1],
+            g: w3[2],
+            i: w3[3],
+            a: w3[4],
+            o: w3[5],
+            w: w3[6],
+            r: w3[7],
+        };
+        let (a, b, c) = ("P-B-T-N-F-S", "L-D-C-M-Z-E", "H-G-I-A-O-W-R");
+        self.check(a, "P", d.p, &[0, 1, 2, 3])?;
+        self.check(a, "B", d.b, &[0, 1, 2, 3, 4, 5, 6])?;
+        self.check(a, "T", d.t, &[0, 1, 2, 3])?;
+        self.check(a, "N", d.n, &[0, 1])?;
+        self.check(a, "F", d.f, &[0, 1, 2])?;
+        self.check(a, "S", d.s, &[0, 1, 2, 3])?;
+        self.check(b, "V", d.v, &[0, 3])?;
+        self.check(b, "L", d.l, &[0, 1, 2, 3, 4, 6])?;
+        self.check(b, "D", d.d, &[0, 1, 2])?;
+        self.check(b, "C", d.c, &[0, 1, 2, 3, 4, 9])?;
+        self.check(b, "M", d.m, &[0, 1, 2, 3, 4, 5, 6, 7])?;
+        self.check(b, "Z", d.z, &[0, 1, 2])?;
+        self.check(b, "E", d.e, &[0, 1, 2, 3, 9])?;
+        self.check(b, "M2", d.m2, &[0, 1, 2])?;
+        self.check(c, "X", d.x, &[0, 1])?;
+        self.check(c, "H", d.h, &[0, 1, 3])?;
+        self.check(c, "G", d.g, &[0, 1, 2, 3, 4, 5])?;
+        self.check(c, "I", d.i, &[0, 1, 2, 3])?;
+        self.check(c, "A", d.a, &[0, 1, 2])?;
+        self.check(c, "O", d.o, &[0, 1, 2, 3, 4, 5, 6])?;
+        self.check(c, "R", d.r, &[0, 1, 2, 3])?;
+        if self.first {
+            // CONTACT: the first case must read what later cases may keep.
+            self.check(b, "L", d.l, &[0, 2, 3, 4, 6])?;
+            self.check(b, "D", d.d, &[1, 2])?;
+        }
+        Ok(d)
+    }
+
+    /// The case after its MODULE line; `state` is updated with every value read.
+    fn case(&mut self, state: &mut State) -> Result<Digits, DeckError> {
+        let d = self.digits()?;
+        if d.x == 1 {
+            self.lx.group("debug output P-S-F-L-C-I-N", &[Kind::Int], (1, Kind::Int))?;
+        }
+        self.solver(d.g)?;
+        let (k, _) = self.lx.group("kinematics PEN/FN, CKSI/FX, CETA/FY, CPHI", &[Kind::Real; 4], (2, Kind::Real))?;
+        (state.pen_or_fn, state.cksi_or_fx, state.ceta_or_fy, state.cphi_per_mm) = (k[0], k[1], k[2], k[3]);
+        state.spin_centre_mm = if k.len() >= 6 { [k[4], k[5]] } else { [0.0, 0.0] };
+        if d.l != 1 {
+            state.friction_law = d.l;
+            state.friction_rows.clear();
+            if d.v == 0 {
+                state.friction = self.friction_values(d.l)?;
+                if matches!(d.l, 2..=4 | 6) {
+                    self.reals("MEMDST, MEM_S0", 2)?;
+                }
+            }
+        }
+        if matches!(d.c, 2..=4 | 9) {
+            if d.t >= 2 {
+                let (v, _) =
+                    self.lx.group("CHI, DQ, VELOC", &[Kind::Angle, Kind::Real, Kind::Real], (1, Kind::Real))?;
+                (state.chi_rad, state.dq_mm, state.veloc_mm_s, state.rolling_read) = (v[0], v[1], v[2], true);
+            }
+            self.material(&d, state)?;
+        }
+        if d.m2 == 2 {
+            self.reals("CDAMPN, CDAMPT, DFNMAX, DFTMAX", 4)?;
+        }
+        if d.h == 3 {
+            self.reals("BKTEMP1, HEATCP1, LAMBDA1, DENS1", 4)?;
+            self.reals("BKTEMP2, HEATCP2, LAMBDA2, DENS2", 4)?;
+            if d.m == 4 {
+                self.reals("BETAPL", 1)?;
+            }
+        }
+        if d.d == 2 {
+            state.potcon = Some(self.potcon()?);
+        }
+        let gridded = state.potcon.as_ref().is_some_and(|p| p.ipotcn() > 0);
+        if d.z == 2 && gridded {
+            let npot = state.potcon.as_ref().map_or(0, |p| p.mx_my().0 * p.mx_my().1);
+            state.undeformed = Some(self.undeformed(npot)?);
+        }
+        if d.l != 1 && d.v == 3 {
+            let my = state.potcon.as_ref().map_or(0, |p| p.mx_my().1);
+            for _ in 0..my {
+                let row = self.friction_values(d.l)?;
+                state.friction_rows.extend(row);
+            }
+            if matches!(d.l, 2..=4 | 6) {
+                self.reals("MEMDST, MEM_S0", 2)?;
+            }
+        }
+        state.extra_rhs = match d.e {
+            0 => false,
+            1 => state.extra_rhs,
+            _ => true,
+        };
+        if d.e == 9 {
+            let npot = state.potcon.as_ref().map_or(0, |p| p.mx_my().0 * p.mx_my().1);
+            self.lx.array("EXRHS", 2 * npot)?;
+        }
+        if d.s >= 2 {
+            self.subsurface(d.s)?;
+        }
+        Ok(d)
+    }
+
+    /// G: the iteration constants.
+    fn solver(&mut self, g: u8) -> Result<(), DeckError> {
+        if g != 1 {
+            self.lx.group(
+                "MAXGS, MAXIN, MAXNR, MAXOUT, EPS",
+                &[Kind::Int, Kind::Int, Kind::Int, Kind::Int, Kind::Real],
+                (1, Kind::Int),
+            )?;
+        }
+        match g {
+            2 | 3 => {
+                self.lx.group(
+                    "OMEGAH, OMEGAS, INISLP, OMGSLP",
+                    &[Kind::Real, Kind::Real, Kind::Int, Kind::Real],
+                    (0, Kind::Real),
+                )?;
+            }
+            4 => {
+                self.lx.group("INISLP, OMGSLP", &[Kind::Int, Kind::Real], (0, Kind::Real))?;
+            }
+            5 => {
+                let k = [Kind::Real, Kind::Real, Kind::Int, Kind::Real, Kind::Real, Kind::Real, Kind::Real, Kind::Real];
+                self.lx.group("FDECAY, BETATH, KDOWFB, D_IFC, D_LIN, D_CNS, D_SLP, POW_S", &k, (0, Kind::Real))?;
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
+    /// The friction law's values of one set (L = 0: FSTAT, FKIN), and MEMDST, MEM_S0 for the
+    /// laws that have them (V = 0 only: with V = 3 they follow the rows).
+    fn friction_values(&mut self, l: u8) -> Result<Vec<f64>, DeckError> {
+        let v = match l {
+            0 => self.reals("FSTAT, FKIN", 2)?,
+            2 => self.reals("FKIN, FLIN1, SABSH1, FLIN2, SABSH2", 5)?,
+            3 => self.reals("FKIN, FRAT1, SABSH1, FRAT2, SABSH2", 5)?,
+            4 => self.reals("FKIN, FEXP1, SABSH1, FEXP2, SABSH2", 5)?,
+            _ => self.reals("FREF, TREF, DFHEAT, DTHEAT", 4)?,
+        };
+        Ok(v)
+    }
+
+    /// C ≥ 2: the material lines (C = 4, 9 extras, POISS, GG, B = 1, M = 1…5).
+    fn material(&mut self, d: &Digits, state: &mut State) -> Result<(), DeckError> {
+        if d.c == 4 {
+            let (v, _) = self.ints("IF_METH, VARIANT, NN", 3)?;
+            self.lx.array("Y(I), ALPHA(I)", 2 * v[2].clamp(0, 9999) as usize)?;
+        }
+        if d.c == 9 {
+            self.lx.string("CFNAME")?;
+        }
+        let v = self.reals("POISS 1, 2, GG 1, 2", 4)?;
+        (state.poiss, state.gg_mpa) = ([v[0], v[1]], [v[2], v[3]]);
+        if d.b == 1 {
+            self.reals("FLXZ", 1)?;
+        }
+        match d.m {
+            1 => drop(self.reals("FG 1, 2, VT 1, 2", 4)?),
+            2 => drop(self.reals("FLX, K0_MF, ALFAMF, BETAMF", 4)?),
+            3 | 5 => drop(self.reals("K0_MF, ALFAMF, BETAMF", 3)?),
+            4 => drop(self.reals("GG3, LAYTHK, TAU_C0, K_TAU", 4)?),
+            _ => {}
+        }
+        Ok(())
+    }
+
+    /// D = 2: IPOTCN and its line.
+    fn potcon(&mut self) -> Result<Potcon, DeckError> {
+        let (v, place) = self.ints("IPOTCN", 1)?;
+        let ipotcn = v[0];
+        let grid_error = |what: &str, value: String| DeckError::Value {
+            file: self.lx.file().into(),
+            line: place.line,
+            column: place.column,
+            what: what.into(),
+            value,
+            allowed: String::new(),
+        };
+        let n_params = match ipotcn {
+            -5..=-1 => 3,
+            -6 => 4,
+            1..=4 => 4,
+            _ => {
+                let mut e = grid_error("IPOTCN", ipotcn.to_string());
+                if let DeckError::Value { allowed, .. } = &mut e {
+                    *allowed = "-6 to -1 (Hertzian options) or 1 to 4 (a grid)".into();
+                }
+                return Err(e);
+            }
+        };
+        let mut kinds = vec![Kind::Int, Kind::Int];
+        kinds.extend(std::iter::repeat_n(Kind::Real, n_params));
+        let (v, place) = self.lx.group("MX, MY and the potential contact", &kinds, (0, Kind::Real))?;
+        let (mx, my) = (v[0], v[1]);
+        if !(mx >= 1.0 && my >= 1.0) {
+            return Err(DeckError::Value {
+                file: self.lx.file().into(),
+                line: place.line,
+                column: place.column,
+                what: "MX, MY".into(),
+                value: format!("{mx}, {my}"),
+                allowed: "whole numbers >= 1".into(),
+            });
+        }
+        let (mx, my) = (mx as usize, my as usize);
+        let p = &v[2..];
+        Ok(match ipotcn {
+            i if i < 0 => Potcon::Hertz { ipotcn, mx, my, params: p.to_vec() },
+            // 1: XL YL DX DY; 2: XL YL XH YH; 3: XC1 YC1 DX DY; 4: XC1 YC1 XCM YCM.
+            1 => Potcon::Grid { ipotcn, mx, my, xl_mm: p[0], yl_mm: p[1], dx_mm: p[2], dy_mm: p[3] },
+            2 => {
+                let (dx, dy) = ((p[2] - p[0]) / mx as f64, (p[3] - p[1]) / my as f64);
+                Potcon::Grid { ipotcn, mx, my, xl_mm: p[0], yl_mm: p[1], dx_mm: dx, dy_mm: dy }
+            }
+            3 => Potcon::Grid {
+                ipotcn,
+                mx,
+                my,
+                xl_mm: p[0] - 0.5 * p[2],
+                yl_mm: p[1] - 0.5 * p[3],
+                dx_mm: p[2],
+                dy_mm: p[3],
+            },
+            _ => {
+                let dx = if mx > 1 { (p[2] - p[0]) / (mx - 1) as f64 } else { 0.0 };
+                let dy = if my > 1 { (p[3] - p[1]) / (my - 1) as f64 } else { 0.0 };
+                Potcon::Grid { ipotcn, mx, my, xl_mm: p[0] - 0.5 * dx, yl_mm: p[1] - 0.5 * dy, dx_mm: dx, dy_mm: dy }
+            }
+        })
+    }
+
+    /// Z = 2 on a grid: IBASE, IPLAN and their lines.
+    fn undeformed(&mut self, npot: usize) -> Result<Undeformed, DeckError> {
+        let (v, _) = self.ints("IBASE, IPLAN", 2)?;
+        let (ibase, iplan) = (v[0], v[1]);
+        let values = match ibase {
+            1 => self.lx.array("B1..B6", 6)?,
+            2 => {
+                let (h, _) = self.lx.group(
+                    "NN, XM, RM, Y1, DY1",
+                    &[Kind::Int, Kind::Real, Kind::Real, Kind::Real, Kind::Real],
+                    (0, Kind::Real),
+                )?;
+                self.lx.array("B(k), k=1..NN", h[0].clamp(0.0, 1e7) as usize)?
+            }
+            3 => self.lx.array("B1..B8", 8)?,
+            9 => self.lx.array("H(I), I=1..NPOT", npot)?,
+            other => {
+                return Err(self.digit_error("IBASE, IPLAN", "IBASE", other, "1, 2, 3 or 9"));
+            }
+        };
+        match iplan {
+            1 => {}
+            2 => drop(self.lx.array("PL1..PL6", 6)?),
+            3 => drop(self.lx.array("XL1..YH2", 8)?),
+            4 => {
+                let (n, _) = self.ints("NPATCH", 1)?;
+                let n = n[0].clamp(0, 1000) as usize;
+                self.lx.array("XL, XH, YL, YH per patch", 4 * n)?;
+                self.lx.array("FAC", n * n.saturating_sub(1) / 2)?;
+            }
+            other => return Err(self.digit_error("IBASE, IPLAN", "IPLAN", other, "1, 2, 3 or 4")),
+        }
+        Ok(Undeformed { ibase, iplan, values })
+    }
+
+    /// S = 2, 3: the subsurface points (user guide, "Subsurface-stress input").
+    fn subsurface(&mut self, s: u8) -> Result<(), DeckError> {
+        self.ints("MATFIL, OUTPUT (subsurface)", 2)?;
+        if s < 3 {
+            return Ok(());
+        }
+        loop {
+            let (v, _) = self.ints("ISUBS", 1)?;
+            let isubs = v[0];
+            let count = |x: f64| x.clamp(0.0, 1e7) as usize;
+            match isubs {
+                0 => return Ok(()),
+                2 | 6 => drop(self.ints("IXL, IXINC, IXH, IYL, IYINC, IYH", 6)?),
+                3 | 7 => {
+                    let (n, _) = self.ints("NX, NY", 2)?;
+                    self.lx.array("IX(i)", count(n[0] as f64))?;
+                    self.lx.array("IY(j)", count(n[1] as f64))?;
+                }
+                _ => {}
+            }
+            match isubs {
+                1..=3 => drop(self.lx.group("NZ, ZL, DZ", &[Kind::Int, Kind::Real, Kind::Real], (0, Kind::Real))?),
+                5..=7 => {
+                    let (n, _) = self.ints("NZ", 1)?;
+                    self.lx.array("Z(iz)", count(n[0] as f64))?;
+                }
+                9 => {
+                    let (n, _) = self.ints("NX, NY, NZ", 3)?;
+                    for k in n {
+                        self.lx.array("X, Y, Z", count(k as f64))?;
+                    }
+                }
+                other => return Err(self.digit_error("ISUBS", "ISUBS", other, "0, 1, 2, 3, 5, 6, 7 or 9")),
+            }
+        }
+    }
+}

@@ -1,0 +1,226 @@
+//! The one table of CONTACT's module-3 features and whether the import carries them: a feature
+//! the project's physics does not have is refused naming its control word and value, never
+//! dropped; one that changes no result is accepted with a note. New physics (prescribed forces,
+//! shifts, falling friction, …) is switched on here, in its row.
+
+use super::deck::{Case3, Potcon};
+use crate::physics::material::combine_bodies;
+
+/// One feature of a case.
+pub struct Feature {
+    /// What it is.
+    pub name: &'static str,
+    /// The control digit or input line that asks for it.
+    pub control: &'static str,
+    /// Whether the import carries it (false: a case using it is refused).
+    pub supported: bool,
+    /// Why (refused: what is supported instead; accepted: what the import does with it).
+    pub reason: &'static str,
+    /// The value the case gives it, when the case uses it.
+    pub used: fn(&Case3) -> Option<String>,
+}
+
+fn digit(name: &str, v: u8, used: bool) -> Option<String> {
+    used.then(|| format!("{name} = {v}"))
+}
+
+/// Every feature the import knows, in the order of the input.
+pub const FEATURES: &[Feature] = &[
+    Feature {
+        name: "previous tractions of the normal part only or kept untouched",
+        control: "P",
+        supported: false,
+        reason: "supported: P = 0 (next time step) and P = 2 (new sequence)",
+        used: |c| digit("P", c.digits.p, matches!(c.digits.p, 1 | 3)),
+    },
+    Feature {
+        name: "approximate traction bounds or a thin elastic layer",
+        control: "B",
+        supported: false,
+        reason: "supported: B = 0 (the full elastic normal problem)",
+        used: |c| digit("B", c.digits.b, c.digits.b != 0),
+    },
+    Feature {
+        name: "shifts and frictional compression",
+        control: "T",
+        supported: false,
+        reason: "supported: T = 0 (as a steady case at zero creepage), 2 (transient rolling), 3 (steady rolling)",
+        used: |c| digit("T", c.digits.t, c.digits.t == 1),
+    },
+    Feature {
+        name: "frictionless compression",
+        control: "T",
+        supported: true,
+        reason: "imported as a steady case at zero creepage (no tangential traction between quasi-identical bodies: the same normal solution)",
+        used: |c| digit("T", c.digits.t, c.digits.t == 0),
+    },
+    Feature {
+        name: "approach prescribed instead of the normal force",
+        control: "N",
+        supported: false,
+        reason: "supported: N = 1 (FN prescribed)",
+        used: |c| digit("N", c.digits.n, c.digits.n == 0),
+    },
+    Feature {
+        name: "prescribed tangential forces",
+        control: "F",
+        supported: false,
+        reason: "supported: F = 0 (creepages CKSI, CETA prescribed)",
+        used: |c| digit("F", c.digits.f, c.digits.f != 0),
+    },
+    Feature {
+        name: "subsurface stresses",
+        control: "S",
+        supported: true,
+        reason: "S only prints stresses below the surface: the input is read and not computed",
+        used: |c| digit("S", c.digits.s, c.digits.s != 0),
+    },
+    Feature {
+        name: "friction varying per grid row",
+        control: "V",
+        supported: false,
+        reason: "supported: V = 0 (one friction for the whole contact)",
+        used: |c| digit("V", c.digits.v, c.digits.v != 0),
+    },
+    Feature {
+        name: "friction laws other than Coulomb's",
+        control: "L",
+        supported: false,
+        reason: "supported: L = 0 (Coulomb) or L = 1 keeping it",
+        used: |c| digit("L (in force)", c.state.friction_law, c.state.friction_law != 0),
+    },
+    Feature {
+        name: "static friction other than kinetic friction",
+        control: "FSTAT, FKIN",
+        supported: false,
+        reason: "supported: FSTAT = FKIN (one coefficient of friction)",
+        used: |c| {
+            let f = &c.state.friction;
+            (c.state.friction_law == 0 && f.len() == 2 && f[0] != f[1])
+                .then(|| format!("FSTAT = {}, FKIN = {}", f[0], f[1]))
+        },
+    },
+    Feature {
+        name: "influence functions other than the half-space's with piecewise constant tractions",
+        control: "C",
+        supported: false,
+        reason: "supported: C = 2 (or 0, 1 keeping it), the influence functions of this project's solver",
+        used: |c| digit("C", c.digits.c, matches!(c.digits.c, 3 | 4 | 9)),
+    },
+    Feature {
+        name: "material models other than elastic",
+        control: "M",
+        supported: false,
+        reason: "supported: M = 0 (elastic half-spaces); viscoelastic (1), CONTACT's simplified theories (2, 3, 5-7) and interface layers (4) are not",
+        used: |c| digit("M", c.digits.m, c.digits.m != 0),
+    },
+    Feature {
+        name: "damping",
+        control: "M2",
+        supported: false,
+        reason: "supported: M2 = 0 or 1 (no damping)",
+        used: |c| digit("M2", c.digits.m2, c.digits.m2 == 2),
+    },
+    Feature {
+        name: "an extra term of the rigid slip",
+        control: "E",
+        supported: false,
+        reason: "supported: E = 0 (no extra term)",
+        used: |c| c.state.extra_rhs.then(|| format!("E = {}", c.digits.e)),
+    },
+    Feature {
+        name: "surface temperatures",
+        control: "H",
+        supported: false,
+        reason: "supported: H = 0",
+        used: |c| digit("H", c.digits.h, c.digits.h != 0),
+    },
+    Feature {
+        name: "preprocessing only (the case is not solved)",
+        control: "R",
+        supported: false,
+        reason: "supported: R = 0, 1 (the case is solved)",
+        used: |c| digit("R", c.digits.r, c.digits.r >= 2),
+    },
+    Feature {
+        name: "debug output and solver settings",
+        control: "X, G, MAXGS..EPS",
+        supported: true,
+        reason: "read and not carried: this project's solver has its own stopping rule ([contact_solver])",
+        used: |c| digit("G", c.digits.g, c.digits.g != 1),
+    },
+    Feature {
+        name: "a rolling direction other than +x",
+        control: "CHI",
+        supported: false,
+        reason: "supported: CHI = 0",
+        used: |c| (c.digits.t >= 2 && c.state.chi_rad != 0.0).then(|| format!("CHI = {} rad", c.state.chi_rad)),
+    },
+    Feature {
+        name: "a spin centre away from the origin",
+        control: "SPINXO, SPINYO",
+        supported: false,
+        reason: "supported: SPINXO = SPINYO = 0",
+        used: |c| {
+            let s = c.state.spin_centre_mm;
+            (s != [0.0, 0.0]).then(|| format!("SPINXO = {}, SPINYO = {}", s[0], s[1]))
+        },
+    },
+    Feature {
+        name: "dissimilar materials (normal-tangential coupling)",
+        control: "POISS 1, 2, GG 1, 2",
+        supported: false,
+        reason: "supported: quasi-identical bodies, Kalker's K = 0",
+        used: |c| {
+            let m = combine_bodies(c.state.poiss, c.state.gg_mpa);
+            (m.k != 0.0).then(|| format!("K = {:e}", m.k))
+        },
+    },
+    Feature {
+        name: "Hertzian options other than AA, BB, A1, B1 or A1, AOB",
+        control: "IPOTCN",
+        supported: false,
+        reason: "supported: IPOTCN = -3 (AA, BB, SCALE), -1 (A1, B1, SCALE), -2 (A1, AOB, SCALE) or 1 to 4 (a grid)",
+        used: |c| match &c.state.potcon {
+            Some(Potcon::Hertz { ipotcn, .. }) if !matches!(ipotcn, -1 | -2 | -3) => Some(format!("IPOTCN = {ipotcn}")),
+            _ => None,
+        },
+    },
+    Feature {
+        name: "undeformed distances other than quadratic or per element",
+        control: "IBASE",
+        supported: false,
+        reason: "supported: IBASE = 1 (B1..B6) or 9 (h per element)",
+        used: |c| match (&c.state.potcon, &c.state.undeformed) {
+            (Some(Potcon::Grid { .. }), Some(u)) if !matches!(u.ibase, 1 | 9) => Some(format!("IBASE = {}", u.ibase)),
+            (Some(Potcon::Grid { .. }), None) => Some("a grid without IBASE (Z = 2 never read)".into()),
+            _ => None,
+        },
+    },
+    Feature {
+        name: "a planform",
+        control: "IPLAN",
+        supported: false,
+        reason: "supported: IPLAN = 1 (unrestricted)",
+        used: |c| match (&c.state.potcon, &c.state.undeformed) {
+            (Some(Potcon::Grid { .. }), Some(u)) if u.iplan != 1 => Some(format!("IPLAN = {}", u.iplan)),
+            _ => None,
+        },
+    },
+];
+
+/// The refusals (feature, value) and notes of a case.
+pub fn assess(case: &Case3) -> (Vec<String>, Vec<String>) {
+    let (mut refused, mut notes) = (Vec::new(), Vec::new());
+    for f in FEATURES {
+        if let Some(value) = (f.used)(case) {
+            let line = format!("{value}: {} ({})", f.name, f.reason);
+            if f.supported {
+                notes.push(line);
+            } else {
+                refused.push(line);
+            }
+        }
+    }
+    (refused, notes)
+}

@@ -1,0 +1,496 @@
+//! Cases → scenes: one scene per history. A history is a run of cases that carries its state: a
+//! transient case with P = 0 continues the case before it (a steady case before it is its steady
+//! start, `[init] kind = "steady"`); a case with P = 2 starts afresh. Consecutive steady cases
+//! (T = 3, or T = 0 at zero creepage) of one setup are one sweep (`at` the cases' creepages). A
+//! transient history is a creepage table (`<name>_table.csv`) at the times `k DQ / VELOC`; a grid
+//! geometry is h per element (`<name>_h.csv`). Each scene is written as a TOML table, read back
+//! with the project's scene reader and resolved in a temporary folder, and must give every case's
+//! creepages, load and friction bit for bit.
+
+use super::deck::{self, Case, Case3, CaseKind, Potcon, State};
+use super::{features, CaseStatus};
+use crate::error::InputError;
+use crate::physics::material::combine_bodies;
+use crate::problem::Problem;
+use std::fmt::Write;
+use std::path::Path;
+use toml::{Table, Value};
+
+/// One scene's files: (file name, contents), the scene file first.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneFiles {
+    pub name: String,
+    /// The deck's first and last case of the scene.
+    pub cases: [usize; 2],
+    pub files: Vec<(String, String)>,
+}
+
+/// The import of one deck: its supported scenes and every case's status.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Imported {
+    pub scenes: Vec<SceneFiles>,
+    pub statuses: Vec<CaseStatus>,
+}
+
+/// How a history runs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Run {
+    /// Steady cases of one setup.
+    Sweep,
+    /// Transient cases, after a steady start or from zero traction.
+    Transient { steady_start: bool },
+}
+
+#[derive(Debug, Clone)]
+struct History {
+    run: Run,
+    /// Indices into the deck's cases.
+    cases: Vec<usize>,
+}
+
+/// The scenes of a deck's text (`file`: its name for `[origin]` and messages; `stem`: the scene
+/// names' prefix).
+pub fn import_text(file: &str, stem: &str, text: &str) -> Result<Imported, InputError> {
+    let cases = deck::parse(file, text)?;
+    let mut statuses: Vec<CaseStatus> = cases.iter().map(status).collect();
+    // Steady cases whose creepages no sweep reproduces exactly are scenes of one case each.
+    let histories: Vec<History> = group(&cases, &mut statuses)
+        .into_iter()
+        .flat_map(|h| {
+            let points: Vec<[f64; 3]> =
+                h.cases.iter().map(|&k| row(case3(&cases, k))).map(|r| [r[0], r[1], r[2]]).collect();
+            if h.run == Run::Sweep && sweep_of(&points).is_none() {
+                h.cases.iter().map(|&k| History { run: Run::Sweep, cases: vec![k] }).collect()
+            } else {
+                vec![h]
+            }
+        })
+        .collect();
+    let mut scenes = Vec::new();
+    for h in histories {
+        let numbers: Vec<usize> = h.cases.iter().map(|&k| cases[k].number).collect();
+        let span = format!("cases {} to {}", numbers[0], numbers[numbers.len() - 1]);
+        if let Some(&bad) = h.cases.iter().find(|&&k| !statuses[k].supported()) {
+            for &k in &h.cases {
+                if statuses[k].supported() {
+                    let why = format!("its history ({span}) holds case {}, which is not supported", cases[bad].number);
+                    statuses[k].refused.push(why);
+                }
+            }
+            continue;
+        }
+        match build(file, stem, &cases, &h) {
+            Ok(s) => {
+                for &k in &h.cases {
+                    statuses[k].scene = Some(s.name.clone());
+                }
+                scenes.push(s);
+            }
+            Err(e) => {
+                for &k in &h.cases {
+                    statuses[k].refused.push(format!("the project refuses the scene of its history ({span}): {e}"));
+                }
+            }
+        }
+    }
+    Ok(Imported { scenes, statuses })
+}
+
+fn status(c: &Case) -> CaseStatus {
+    let base = CaseStatus { case: c.number, line: c.line, module: 3, scene: None, refused: vec![], notes: vec![] };
+    match &c.kind {
+        CaseKind::Module1 => CaseStatus {
+            module: 1,
+            refused: vec![
+                "MODULE = 1: wheel-rail contact (module 1) is not supported; module 3 cases are imported".into()
+            ],
+            ..base
+        },
+        CaseKind::Module3(c3) => {
+            let (refused, notes) = features::assess(c3);
+            CaseStatus { refused, notes, ..base }
+        }
+    }
+}
+
+fn case3(cases: &[Case], k: usize) -> &Case3 {
+    match &cases[k].kind {
+        CaseKind::Module3(c) => c,
+        CaseKind::Module1 => unreachable!("histories hold module-3 cases only"),
+    }
+}
+
+/// What differs between two cases' setups (all but the creepages and, where `load_varies`, FN and
+/// the friction), named.
+fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static str> {
+    let pairs: [(&'static str, bool); 9] = [
+        ("FN", load_varies || a.pen_or_fn == b.pen_or_fn),
+        ("FSTAT, FKIN", load_varies || a.friction == b.friction),
+        ("CHI, DQ, VELOC", (a.chi_rad, a.dq_mm, a.veloc_mm_s) == (b.chi_rad, b.dq_mm, b.veloc_mm_s)),
+        ("POISS, GG", (a.poiss, a.gg_mpa) == (b.poiss, b.gg_mpa)),
+        ("the potential contact (IPOTCN and its line)", a.potcon == b.potcon),
+        ("the undeformed distance (IBASE)", a.undeformed == b.undeformed),
+        ("the friction law", a.friction_law == b.friction_law),
+        ("SPINXO, SPINYO", a.spin_centre_mm == b.spin_centre_mm),
+        ("the rolling step (CHI, DQ, VELOC read)", a.rolling_read == b.rolling_read),
+    ];
+    pairs.iter().find(|(_, same)| !same).map(|(name, _)| *name)
+}
+
+/// Group the module-3 cases into histories; a transient case that changes its history's setup is
+/// refused here.
+fn group(cases: &[Case], statuses: &mut [CaseStatus]) -> Vec<History> {
+    let mut hs: Vec<History> = Vec::new();
+    // Whether the last history may be continued by the next case.
+    let mut open = false;
+    for (k, c) in cases.iter().enumerate() {
+        let CaseKind::Module3(c3) = &c.kind else {
+            open = false;
+            continue;
+        };
+        let d = c3.digits;
+        let continues = d.t == 2 && d.p != 2 && open;
+        if d.t == 0 {
+            // Frictionless compression: a history of its own (what follows starts from zero traction).
+            hs.push(History { run: Run::Sweep, cases: vec![k] });
+            open = false;
+            continue;
+        }
+        if d.t != 2 {
+            let joins = match hs.last() {
+                Some(h) if open && h.run == Run::Sweep => {
+                    setup_difference(&case3(cases, h.cases[0]).state, &c3.state, false).is_none()
+                        && statuses[h.cases[0]].supported() == statuses[k].supported()
+                }
+                _ => false,
+            };
+            match hs.last_mut() {
+                Some(h) if joins => h.cases.push(k),
+                _ => hs.push(History { run: Run::Sweep, cases: vec![k] }),
+            }
+            open = true;
+            continue;
+        }
+        if continues {
+            let h = hs.last_mut().expect("an open history");
+            if h.run == Run::Sweep {
+                // The last steady case is this transient history's steady start.
+                let start = h.cases.pop().expect("a steady case");
+                if h.cases.is_empty() {
+                    hs.pop();
+                }
+                hs.push(History { run: Run::Transient { steady_start: true }, cases: vec![start] });
+            }
+            let h = hs.last_mut().expect("a history");
+            let prev = &case3(cases, h.cases[h.cases.len() - 1]).state;
+            let hertz = matches!(prev.potcon, Some(Potcon::Hertz { .. }));
+            if let Some(what) = setup_difference(prev, &c3.state, true) {
+                statuses[k].refused.push(format!("changes {what} within a transient history"));
+            } else if hertz && prev.pen_or_fn != c3.state.pen_or_fn {
+                statuses[k].refused.push(format!(
+                    "FN = {} after {}: a Hertzian geometry (IPOTCN < 0) under a load that changes within a transient history (supported: the geometry as a grid, IPOTCN > 0)",
+                    c3.state.pen_or_fn, prev.pen_or_fn
+                ));
+            }
+            h.cases.push(k);
+        } else {
+            hs.push(History { run: Run::Transient { steady_start: false }, cases: vec![k] });
+        }
+        open = true;
+    }
+    hs
+}
+
+/// A case's row: [cx, cy, cs, FN, μ] (T = 0: zero creepage).
+fn row(c: &Case3) -> [f64; 5] {
+    let s = &c.state;
+    let mu = s.friction.get(1).copied().unwrap_or(f64::NAN);
+    if c.digits.t == 0 {
+        [0.0, 0.0, 0.0, s.pen_or_fn, mu]
+    } else {
+        [s.cksi_or_fx, s.ceta_or_fy, s.cphi_per_mm, s.pen_or_fn, mu]
+    }
+}
+
+/// A scene name from the deck's stem: lower case, `[a-z0-9_]`.
+fn scene_name(stem: &str, case: usize) -> String {
+    let clean: String = stem
+        .chars()
+        .map(|c| c.to_ascii_lowercase())
+        .map(|c| if c.is_ascii_lowercase() || c.is_ascii_digit() { c } else { '_' })
+        .take(80)
+        .collect();
+    format!("{clean}_{case}")
+}
+
+/// The upper edge `x0 + n d`, moved by a few ulps so that `(x1 − x0)/n` is `d` exactly (the
+/// project's grid divides the extent).
+fn upper_edge(x0: f64, n: usize, d: f64) -> f64 {
+    let start = x0 + n as f64 * d;
+    let mut candidates = vec![start];
+    let (mut up, mut down) = (start, start);
+    for _ in 0..8 {
+        up = up.next_up();
+        down = down.next_down();
+        candidates.extend([up, down]);
+    }
+    candidates.into_iter().find(|&x1| (x1 - x0) / n as f64 == d).unwrap_or(start)
+}
+
+/// The Courant number whose `courant · dx` is DQ exactly where one is within a few ulps.
+fn courant_for(dq_mm: f64, dx_mm: f64) -> f64 {
+    let start = dq_mm / dx_mm;
+    let (mut up, mut down) = (start, start);
+    let mut candidates = vec![start];
+    for _ in 0..8 {
+        up = up.next_up();
+        down = down.next_down();
+        candidates.extend([up, down]);
+    }
+    candidates.into_iter().find(|&c| c * dx_mm == dq_mm).unwrap_or(start)
+}
+
+/// Hertz's curvature ratio B/A of an ellipse with semi-axis ratio `a_over_b` (it depends on the
+/// ratio alone: any load and material give it).
+fn curvature_ratio(a_over_b: f64, s: &State) -> f64 {
+    let m = combine_bodies(s.poiss, s.gg_mpa);
+    let material = crate::physics::Material::from_g(m.g_mpa, m.poisson);
+    let e = crate::physics::HertzContact { a_mm: a_over_b, b_mm: 1.0, fn_n: 1.0 };
+    let (a, b) = e.undeformed_curvatures(&material);
+    b / a
+}
+
+/// `c + d t` as a sweep point is sampled (`Scene::sweep_point`).
+fn sweep_add(c: f64, d: f64, t: f64) -> f64 {
+    if d == 0.0 {
+        c
+    } else if c == 0.0 {
+        d * t
+    } else {
+        c + d * t
+    }
+}
+
+/// A sweep through the points: (parameter component, direction, constants, t per point), if the
+/// sweep reproduces every point exactly.
+fn sweep_of(points: &[[f64; 3]]) -> Option<(usize, [f64; 3], [f64; 3], Vec<f64>)> {
+    let varies = |j: usize| points.iter().any(|p| p[j].to_bits() != points[0][j].to_bits());
+    let k = (0..3).find(|&j| varies(j)).unwrap_or(0);
+    let last = points[points.len() - 1];
+    let mut direction = [0.0; 3];
+    let mut constants = [0.0; 3];
+    for j in 0..3 {
+        if j == k {
+            direction[j] = 1.0;
+        } else if varies(j) {
+            direction[j] = last[j] / last[k];
+        } else {
+            constants[j] = points[0][j];
+        }
+    }
+    let t: Vec<f64> = points.iter().map(|p| p[k]).collect();
+    let exact = points
+        .iter()
+        .zip(&t)
+        .all(|(p, &t)| (0..3).all(|j| sweep_add(constants[j], direction[j], t).to_bits() == p[j].to_bits()));
+    (exact && direction.iter().all(|d| d.is_finite())).then_some((k, direction, constants, t))
+}
+
+fn table(pairs: Vec<(&str, Value)>) -> Value {
+    Value::Table(pairs.into_iter().map(|(k, v)| (k.to_string(), v)).collect())
+}
+
+fn floats(v: &[f64]) -> Value {
+    Value::Array(v.iter().map(|&x| Value::Float(x)).collect())
+}
+
+/// The scene of one history.
+fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFiles, InputError> {
+    let numbers = [cases[h.cases[0]].number, cases[h.cases[h.cases.len() - 1]].number];
+    let name = scene_name(stem, numbers[0]);
+    let first = case3(cases, h.cases[0]);
+    let s = &first.state;
+    let rows: Vec<[f64; 5]> = h.cases.iter().map(|&k| row(case3(cases, k))).collect();
+    let mut doc = Table::new();
+    let mut files: Vec<(String, String)> = Vec::new();
+    doc.insert("name".into(), Value::String(name.clone()));
+    doc.insert("solvers".into(), Value::Array(vec![Value::String("contact".into())]));
+    // The contact, its geometry and grid.
+    let mut contact = vec![("fn_n", Value::Float(rows[0][3])), ("mu", Value::Float(rows[0][4]))];
+    let (mx, my) = s.potcon.as_ref().map_or((0, 0), Potcon::mx_my);
+    let mut grid = vec![("mx", Value::Integer(mx as i64)), ("my", Value::Integer(my as i64))];
+    match &s.potcon {
+        Some(Potcon::Hertz { ipotcn: -3, params, .. }) => {
+            contact.extend([("a_mm", Value::Float(params[0])), ("b_mm", Value::Float(params[1]))]);
+            grid.push(("scale", Value::Float(params[2])));
+        }
+        Some(Potcon::Hertz { ipotcn, params, .. }) => {
+            // IPOTCN = −1: h = A1 x² + B1 y², as the radii R_wx = 1/(2 A1), R_wy = R_ry = 1/B1;
+            // −2: A1 and a/b, B1 = A1 · (B/A of Hertz's ellipse of that a/b).
+            let b1 = if *ipotcn == -2 { params[0] * curvature_ratio(params[1], s) } else { params[1] };
+            let (rx, ry) = (0.5 / params[0], 1.0 / b1);
+            contact.extend([
+                ("r_wx_mm", Value::Float(rx)),
+                ("r_wy_mm", Value::Float(ry)),
+                ("r_ry_mm", Value::Float(ry)),
+            ]);
+            grid.push(("scale", Value::Float(params[2])));
+        }
+        Some(Potcon::Grid { xl_mm, yl_mm, dx_mm, dy_mm, .. }) => {
+            let x1 = upper_edge(*xl_mm, mx, *dx_mm);
+            let y1 = upper_edge(*yl_mm, my, *dy_mm);
+            grid.extend([("x_mm", floats(&[*xl_mm, x1])), ("y_mm", floats(&[*yl_mm, y1]))]);
+            let u = s.undeformed.as_ref().expect("a grid's undeformed distance (checked by the feature table)");
+            let h_mm: Vec<f64> = if u.ibase == 9 {
+                u.values.clone()
+            } else {
+                let b = &u.values;
+                (0..mx * my)
+                    .map(|e| {
+                        let x = xl_mm + (((e % mx) as f64) + 0.5) * dx_mm;
+                        let y = yl_mm + (((e / mx) as f64) + 0.5) * dy_mm;
+                        b[0] * x * x + b[1] * x * y + b[2] * y * y + b[3] * x + b[4] * y + b[5]
+                    })
+                    .collect()
+            };
+            let mut csv = String::from("ix,iy,h_mm\n");
+            for (e, v) in h_mm.iter().enumerate() {
+                let _ = writeln!(csv, "{},{},{v:?}", e % mx + 1, e / mx + 1);
+            }
+            let field = format!("{name}_h.csv");
+            doc.insert(
+                "geometry".into(),
+                table(vec![("kind", Value::String("field".into())), ("field", Value::String(field.clone()))]),
+            );
+            files.push((field, csv));
+        }
+        None => {
+            return Err(InputError::new(
+                format!("{file}, case {}", numbers[0]),
+                "no IPOTCN",
+                "a potential contact (D = 2 in a case before)",
+            ))
+        }
+    }
+    doc.insert("contact".into(), table(contact));
+    let m = combine_bodies(s.poiss, s.gg_mpa);
+    doc.insert("material".into(), table(vec![("g_mpa", Value::Float(m.g_mpa)), ("poisson", Value::Float(m.poisson))]));
+    doc.insert("grid".into(), table(grid));
+    // The loading.
+    match h.run {
+        Run::Sweep => {
+            let points: Vec<[f64; 3]> = rows.iter().map(|r| [r[0], r[1], r[2]]).collect();
+            let (k, direction, constants, t) = sweep_of(&points).expect("histories are split where no sweep fits");
+            let mut cr = vec![("kind", Value::String("sweep".into())), ("at", floats(&t))];
+            let axis = ["cx", "cy", "cs"];
+            if direction.iter().filter(|&&d| d != 0.0).count() == 1 {
+                cr.push(("over", Value::String(axis[k].into())));
+            } else {
+                cr.push(("direction", floats(&direction)));
+            }
+            for (j, key) in axis.iter().enumerate() {
+                if constants[j].to_bits() != 0 {
+                    cr.push((key, Value::Float(constants[j])));
+                }
+            }
+            doc.insert("creepage".into(), table(cr));
+        }
+        Run::Transient { steady_start } => {
+            let dt_s = s.dq_mm / s.veloc_mm_s;
+            let varies = |j: usize| rows.iter().any(|r| r[j].to_bits() != rows[0][j].to_bits());
+            let columns: Vec<usize> = (0..5).filter(|&j| j == 0 || varies(j)).collect();
+            let names = ["cx", "cy", "cs", "fn_n", "mu"];
+            let mut csv = format!("t_s,{}\n", columns.iter().map(|&j| names[j]).collect::<Vec<_>>().join(","));
+            for (n, r) in rows.iter().enumerate() {
+                let step = if steady_start { n } else { n + 1 };
+                let values: Vec<String> = columns.iter().map(|&j| format!("{:?}", r[j])).collect();
+                let _ = writeln!(csv, "{:?},{}", step as f64 * dt_s, values.join(","));
+            }
+            let file_name = format!("{name}_table.csv");
+            let mut cr = vec![("kind", Value::String("table".into())), ("file", Value::String(file_name.clone()))];
+            for (j, key) in [(1, "cy"), (2, "cs")] {
+                if !varies(j) && rows[0][j].to_bits() != 0 {
+                    cr.push((key, Value::Float(rows[0][j])));
+                }
+            }
+            doc.insert("creepage".into(), table(cr));
+            if steady_start {
+                doc.insert("init".into(), table(vec![("kind", Value::String("steady".into()))]));
+            }
+            files.push((file_name, csv));
+        }
+    }
+    if s.rolling_read {
+        doc.insert(
+            "rolling".into(),
+            table(vec![("v_mm_s", Value::Float(s.veloc_mm_s)), ("courant", Value::Float(1.0))]),
+        );
+    }
+    doc.insert(
+        "origin".into(),
+        table(vec![
+            ("file", Value::String(file.into())),
+            ("cases", Value::Array(numbers.iter().map(|&n| Value::Integer(n as i64)).collect())),
+        ]),
+    );
+    // Read back in a temporary folder: the Courant number from the project's own grid, then the
+    // final scene, which must reproduce every case.
+    let place = format!("{file}, cases {} to {}", numbers[0], numbers[1]);
+    let dir = tempfile::tempdir()
+        .map_err(|e| InputError::new(&place, "a temporary folder", format!("a writable temporary folder: {e}")))?;
+    let scene_file = format!("{name}.toml");
+    if s.rolling_read {
+        let problem = read_back(dir.path(), &scene_file, &doc, &files)?;
+        let courant = courant_for(s.dq_mm, problem.grid.dx_mm);
+        if let Some(Value::Table(r)) = doc.get_mut("rolling") {
+            r.insert("courant".into(), Value::Float(courant));
+        }
+    }
+    let problem = read_back(dir.path(), &scene_file, &doc, &files)?;
+    check_rows(&problem, &rows, &h.cases.iter().map(|&k| cases[k].number).collect::<Vec<_>>())?;
+    let text = format!(
+        "# Imported by `creepbench import contact` from {file}, cases {} to {}.\n{}",
+        numbers[0],
+        numbers[1],
+        toml::to_string(&doc).map_err(|e| InputError::new(&place, "a scene", format!("a scene TOML can hold: {e}")))?
+    );
+    files.insert(0, (scene_file, text));
+    Ok(SceneFiles { name, cases: numbers, files })
+}
+
+/// Write the scene and its files into `dir`, read the scene back with the project's reader and
+/// resolve it.
+fn read_back(dir: &Path, scene_file: &str, doc: &Table, files: &[(String, String)]) -> Result<Problem, InputError> {
+    let io =
+        |e: std::io::Error| InputError::new(dir.display().to_string(), "a temporary folder", format!("writable: {e}"));
+    let text = toml::to_string(doc)
+        .map_err(|e| InputError::new(scene_file, "a scene", format!("a scene TOML can hold: {e}")))?;
+    std::fs::write(dir.join(scene_file), text).map_err(io)?;
+    for (name, contents) in files {
+        std::fs::write(dir.join(name), contents).map_err(io)?;
+    }
+    let scene = crate::scene::Scene::from_file(&dir.join(scene_file))?;
+    crate::pipeline::resolve(&scene)
+}
+
+/// Every row of the resolved scene equals its case: cx, cy, cs, FN and μ bit for bit.
+fn check_rows(problem: &Problem, rows: &[[f64; 5]], numbers: &[usize]) -> Result<(), InputError> {
+    let got: Vec<[f64; 5]> = problem.loading.rows().map(|s| [s.cx, s.cy, s.cs, s.fn_n, s.mu]).collect();
+    if got.len() != rows.len() {
+        return Err(InputError::new(
+            format!("scene {}", problem.name),
+            format!("{} rows", got.len()),
+            format!("one row per case ({} cases)", rows.len()),
+        ));
+    }
+    for ((g, r), n) in got.iter().zip(rows).zip(numbers) {
+        if g.iter().zip(r).any(|(a, b)| a.to_bits() != b.to_bits()) {
+            return Err(InputError::new(
+                format!("scene {}, case {n}", problem.name),
+                format!("{g:?}"),
+                format!("the case's [cx, cy, cs, FN, mu] = {r:?} exactly"),
+            ));
+        }
+    }
+    Ok(())
+}
