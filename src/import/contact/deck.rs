@@ -427,24 +427,18 @@ impl CaseReader<'_> {
     fn potcon(&mut self) -> Result<Potcon, DeckError> {
         let (v, place) = self.ints("IPOTCN", 1)?;
         let ipotcn = v[0];
-        let grid_error = |what: &str, value: String| DeckError::Value {
-            file: self.lx.file().into(),
-            line: place.line,
-            column: place.column,
-            what: what.into(),
-            value,
-            allowed: String::new(),
-        };
         let n_params = match ipotcn {
             -5..=-1 => 3,
-            -6 => 4,
-            1..=4 => 4,
+            -6 | 1..=4 => 4,
             _ => {
-                let mut e = grid_error("IPOTCN", ipotcn.to_string());
-                if let DeckError::Value { allowed, .. } = &mut e {
-                    *allowed = "-6 to -1 (Hertzian options) or 1 to 4 (a grid)".into();
-                }
-                return Err(e);
+                return Err(DeckError::Value {
+                    file: self.lx.file().into(),
+                    line: place.line,
+                    column: place.column,
+                    what: "IPOTCN".into(),
+                    value: ipotcn.to_string(),
+                    allowed: "-6 to -1 (Hertzian options) or 1 to 4 (a grid)".into(),
+                })
             }
         };
         let mut kinds = vec![Kind::Int, Kind::Int];

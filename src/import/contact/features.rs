@@ -182,7 +182,7 @@ pub const FEATURES: &[Feature] = &[
         supported: false,
         reason: "supported: IPOTCN = -3 (AA, BB, SCALE), -1 (A1, B1, SCALE), -2 (A1, AOB, SCALE) or 1 to 4 (a grid)",
         used: |c| match &c.state.potcon {
-            Some(Potcon::Hertz { ipotcn, .. }) if !matches!(ipotcn, -1 | -2 | -3) => Some(format!("IPOTCN = {ipotcn}")),
+            Some(Potcon::Hertz { ipotcn, .. }) if !(-3..=-1).contains(ipotcn) => Some(format!("IPOTCN = {ipotcn}")),
             _ => None,
         },
     },

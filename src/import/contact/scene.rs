@@ -271,9 +271,18 @@ fn sweep_add(c: f64, d: f64, t: f64) -> f64 {
     }
 }
 
-/// A sweep through the points: (parameter component, direction, constants, t per point), if the
-/// sweep reproduces every point exactly.
-fn sweep_of(points: &[[f64; 3]]) -> Option<(usize, [f64; 3], [f64; 3], Vec<f64>)> {
+/// A sweep `[cx, cy, cs] = constants + t·direction` through given points.
+struct Sweep {
+    /// The creepage whose values are the parameter t (its direction component is 1).
+    param: usize,
+    direction: [f64; 3],
+    constants: [f64; 3],
+    /// t per point.
+    t: Vec<f64>,
+}
+
+/// A sweep through the points, if it reproduces every point exactly.
+fn sweep_of(points: &[[f64; 3]]) -> Option<Sweep> {
     let varies = |j: usize| points.iter().any(|p| p[j].to_bits() != points[0][j].to_bits());
     let k = (0..3).find(|&j| varies(j)).unwrap_or(0);
     let last = points[points.len() - 1];
@@ -293,7 +302,7 @@ fn sweep_of(points: &[[f64; 3]]) -> Option<(usize, [f64; 3], [f64; 3], Vec<f64>)
         .iter()
         .zip(&t)
         .all(|(p, &t)| (0..3).all(|j| sweep_add(constants[j], direction[j], t).to_bits() == p[j].to_bits()));
-    (exact && direction.iter().all(|d| d.is_finite())).then_some((k, direction, constants, t))
+    (exact && direction.iter().all(|d| d.is_finite())).then_some(Sweep { param: k, direction, constants, t })
 }
 
 fn table(pairs: Vec<(&str, Value)>) -> Value {
@@ -380,7 +389,8 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     match h.run {
         Run::Sweep => {
             let points: Vec<[f64; 3]> = rows.iter().map(|r| [r[0], r[1], r[2]]).collect();
-            let (k, direction, constants, t) = sweep_of(&points).expect("histories are split where no sweep fits");
+            let Sweep { param: k, direction, constants, t } =
+                sweep_of(&points).expect("histories are split where no sweep fits");
             let mut cr = vec![("kind", Value::String("sweep".into())), ("at", floats(&t))];
             let axis = ["cx", "cy", "cs"];
             if direction.iter().filter(|&&d| d != 0.0).count() == 1 {
@@ -493,4 +503,58 @@ fn check_rows(problem: &Problem, rows: &[[f64; 5]], numbers: &[usize]) -> Result
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Two steady cases: the second has no MODULE line before it (R = 0 in the first) and keeps
+    /// the friction (L = 1), the material and rolling step (C = 0) and the grid (D = 0, Z = 0).
+    const DECK: &str = "\
+ 3  MODULE
+  203100      P-B-T-N-F-S
+  022020      L-D-C-M-Z-E
+ 0000340      H-G-I-A-O-W-R   (R = 0: stay in module 3)
+   80  200  5  1  1e-6
+ 82000.  0.001  0.0  0.0      FN, CKSI, CETA, CPHI
+ 0.3  0.3                     FSTAT, FKIN
+ 0.0  0.4  30000.             CHI, DQ, VELOC
+ 0.28 0.28 82000. 82000.      POISS, GG
+ -3
+ 44  44  8.0  4.0  1.1
+  3100        P-B-T-N-F-S  (leading zeros left out: P = 0, B = 0)
+  100000      L-D-C-M-Z-E
+  100341      H-G-I-A-O-W-R
+ 82000.  0.002  0.0  0.0
+ 0  MODULE
+";
+
+    #[test]
+    fn a_case_keeps_what_it_does_not_read_and_steady_cases_form_one_sweep() {
+        let cases = deck::parse("t.inp", DECK).unwrap();
+        assert_eq!(cases.len(), 2);
+        let CaseKind::Module3(c2) = &cases[1].kind else { panic!("module 3") };
+        assert_eq!((c2.digits.p, c2.digits.t, c2.digits.l, c2.digits.d), (0, 3, 1, 0));
+        assert_eq!((cases[1].line, c2.state.cksi_or_fx), (12, 0.002));
+        assert_eq!((c2.state.friction.clone(), c2.state.dq_mm, c2.state.gg_mpa), (vec![0.3, 0.3], 0.4, [82000.0; 2]));
+        assert_eq!(c2.state.potcon, Some(Potcon::Hertz { ipotcn: -3, mx: 44, my: 44, params: vec![8.0, 4.0, 1.1] }));
+        let imported = import_text("t.inp", "t", DECK).unwrap();
+        assert!(imported.statuses.iter().all(CaseStatus::supported), "{:?}", imported.statuses);
+        assert_eq!(imported.scenes.len(), 1);
+        let s = &imported.scenes[0];
+        assert_eq!((s.name.as_str(), s.cases), ("t_1", [1, 2]));
+        assert!(s.files[0].1.contains("at = [0.001, 0.002]"), "{}", s.files[0].1);
+    }
+
+    #[test]
+    fn a_transient_case_after_a_steady_one_is_its_steady_start() {
+        let deck = DECK.replace("  3100        P-B-T-N-F-S", "  2100        P-B-T-N-F-S");
+        let imported = import_text("t.inp", "t", &deck).unwrap();
+        assert_eq!(imported.scenes.len(), 1, "{:?}", imported.statuses);
+        let files = &imported.scenes[0].files;
+        assert!(files[0].1.contains("[init]\nkind = \"steady\""), "{}", files[0].1);
+        // t = k DQ/VELOC from the steady start at t = 0.
+        assert_eq!(files[1], ("t_1_table.csv".to_string(), format!("t_s,cx\n0.0,0.001\n{:?},0.002\n", 0.4 / 30000.0)));
+    }
 }
