@@ -693,10 +693,10 @@ pub struct ImportOptions {
 }
 
 /// `creepbench import contact-output FILE [--out CSV] [--cases A-B]`: the totals CONTACT printed
-/// for each module-3 case as a reference CSV (`import::contact_output::reference_csv`), written
+/// for each module-3 case as a reference CSV (`comparison::references::contact_output::reference_csv`), written
 /// whole to `out` (never inside golden/) or to standard output; a count of the cases on stderr.
 pub fn import_contact_output(file: &Path, out: Option<&Path>, cases: Option<&str>, golden: &Path) -> Result<(), Error> {
-    use crate::import::contact_output::{self, reference_csv, CaseBody};
+    use crate::comparison::references::contact_output::{self, reference_csv, CaseBody};
     let range = cases.map(str::parse::<reference_csv::CaseRange>).transpose()?;
     if let Some(path) = out {
         guard::guard_output_file(path, golden)?;

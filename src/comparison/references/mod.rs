@@ -4,6 +4,7 @@
 //! labels with their catch-all rules, its loader and the report section that draws its cases.
 
 pub mod contact;
+pub mod contact_output;
 pub mod envelope;
 pub mod table;
 pub mod thesis;
