@@ -5,6 +5,7 @@
 
 pub mod contact;
 pub mod contact_output;
+pub mod contact_public;
 pub mod envelope;
 pub mod table;
 pub mod thesis;
@@ -46,7 +47,7 @@ pub struct SetDef {
 
 /// The registry: every reference set, in the order of the gate and the report. Adding a set:
 /// its file and a line here (and its gated rules in `tolerances.toml`, if it has any).
-pub const SETS: [SetDef; 5] = [
+pub const SETS: [SetDef; 6] = [
     SetDef {
         labels: &[
             (contact::EXACT, "simplified models differ from the exact theory by design; the report shows by how much"),
@@ -85,6 +86,14 @@ pub const SETS: [SetDef; 5] = [
             "the thesis's figures were read off its plots and used another grid treatment; reported beside ours",
         )],
         load: |dir| Ok(Box::new(thesis::ThesisTables::load(dir)?)),
+        section: None,
+    },
+    SetDef {
+        labels: &[(
+            contact_public::AGAINST,
+            "CONTACT's printed totals of its public cases: a quantity no rule names is reported",
+        )],
+        load: |dir| Ok(Box::new(contact_public::PublicCases::load(dir)?)),
         section: None,
     },
 ];
