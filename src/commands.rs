@@ -104,6 +104,21 @@ pub fn fit(file: &Path, out: Option<&Path>, reference: &Path, golden: &Path) -> 
     Ok(out)
 }
 
+/// The reference sets, with the importer's verdict on every case of CONTACT's public decks
+/// attached to the set `contact_public` (its report section lists them; the import stage sits
+/// above comparison and report, so the survey is made here and passed down).
+fn load_references(reference: &Path) -> Result<References, Error> {
+    use crate::comparison::references::contact_public::{PublicCases, Survey, AGAINST};
+    let mut refs = References::load(reference)?;
+    if let Some(public) = refs.get_mut::<PublicCases>(AGAINST) {
+        public.attach_survey(|inp| match crate::import::contact::survey(inp) {
+            Ok(cases) => Survey::Cases(cases.into_iter().map(|c| (c.case, c.refused)).collect()),
+            Err(e) => Survey::Unread(e.to_string()),
+        });
+    }
+    Ok(refs)
+}
+
 /// Run a suite (or one shard) and return its results as stored scenes.
 fn run_suite(suite_dir: &[PathBuf], shard: Option<Shard>, progress: bool) -> Result<Vec<StoredScene>, Error> {
     let files = suite::scene_files(suite_dir, shard)?;
@@ -195,7 +210,7 @@ pub fn run(
     if guard::same_place(results_dir, report_dir)? && shard.is_none() {
         refuse_taken(&names, &REPORT_SUBDIRS, results_dir, "--report")?;
     }
-    let refs = References::load(reference)?;
+    let refs = load_references(reference)?;
     // Fit files validated before any scene runs: a bad --fits writes nothing.
     let fit_specs = fits.map(load_fit_specs).transpose()?;
     let scenes = run_suite(suite_dir, shard, progress)?;
@@ -338,7 +353,7 @@ pub fn merge(
             }
         }
     }
-    let refs = References::load(reference)?;
+    let refs = load_references(reference)?;
     let scenes = read_results(dirs)?;
     for d in dirs {
         if guard::same_place(d, report_dir)? {
@@ -468,7 +483,7 @@ pub fn check(
     files: &GateFiles,
 ) -> Result<(), Error> {
     files.check_paths(golden)?;
-    let refs = References::load(reference)?;
+    let refs = load_references(reference)?;
     let rules = file_rules(&files.tolerances, suite_dir)?;
     let (dir, key, what, kind) = match against {
         Some(dir) => {

@@ -3,6 +3,7 @@
 //! Adding a section: its function (a file of its own or one in `sections.rs`) and a line here.
 
 use crate::comparison::references::{References, ENVELOPE_SECTION, NONHERTZ_SECTION};
+use crate::report::contact_public;
 use crate::report::envelope;
 use crate::report::ladder;
 use crate::report::section::Section;
@@ -23,7 +24,7 @@ pub struct SectionDef {
 }
 
 /// Every section, in the report's order.
-pub const SECTIONS: [SectionDef; 10] = [
+pub const SECTIONS: [SectionDef; 11] = [
     SectionDef {
         id: "thesis",
         applies: |s, _| sections::thesis_applies(s),
@@ -41,6 +42,7 @@ pub const SECTIONS: [SectionDef; 10] = [
         applies: |s, r| in_section(s, r, NONHERTZ_SECTION),
         render: envelope::nonhertz_section,
     },
+    SectionDef { id: contact_public::ID, applies: |s, _| contact_public::applies(s), render: contact_public::section },
     SectionDef { id: "work_precision", applies: |s, _| work_precision::applies(s), render: work_precision::section },
     SectionDef {
         id: "grid_convergence",

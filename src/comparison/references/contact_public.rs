@@ -14,7 +14,7 @@ use crate::error::Error;
 use crate::history::{History, MZ};
 use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// CONTACT's printed totals of its public cases.
 pub const AGAINST: Against = Against::Reference("CONTACT public");
@@ -31,6 +31,38 @@ pub const MZ_Q: &str = "mz_in_rounding";
 #[derive(Debug, Clone, Default)]
 pub struct PublicCases {
     pub decks: BTreeMap<String, Vec<contact_output::CaseOutput>>,
+    /// Each deck's input file (beside its `.ref_out`).
+    pub inputs: BTreeMap<String, PathBuf>,
+    /// What the importer says of each deck's cases ([`PublicCases::attach_survey`]; empty until
+    /// the caller attaches it: the import stage sits above this one).
+    pub survey: BTreeMap<String, Survey>,
+}
+
+/// The importer's verdict on one deck's cases.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Survey {
+    /// Every case by number with the features that keep it out (empty: supported).
+    Cases(BTreeMap<usize, Vec<String>>),
+    /// The deck could not be read as a whole (the importer's message).
+    Unread(String),
+}
+
+/// One comparison of a row with its printed case: the quantity and the difference in
+/// half-units of the printed rounding.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RowDiff {
+    pub step: usize,
+    pub case: usize,
+    pub quantity: &'static str,
+    pub ours: f64,
+    pub printed: Printed,
+}
+
+impl RowDiff {
+    /// |ours − printed| in half-units of the printed rounding.
+    pub fn half_units(&self) -> f64 {
+        (self.ours - self.printed.value).abs() / self.printed.half_unit
+    }
 }
 
 impl PublicCases {
@@ -38,12 +70,48 @@ impl PublicCases {
     pub fn load(dir: &Path) -> Result<PublicCases, Error> {
         let mut files = Vec::new();
         collect(&dir.join(FOLDER), &mut files)?;
-        let mut decks = BTreeMap::new();
+        let mut out = PublicCases::default();
         for path in files {
             let Some(stem) = path.file_stem().and_then(|s| s.to_str()) else { continue };
-            decks.insert(format!("{stem}.inp"), contact_output::read(&path)?);
+            let deck = format!("{stem}.inp");
+            out.decks.insert(deck.clone(), contact_output::read(&path)?);
+            out.inputs.insert(deck.clone(), path.with_extension("inp"));
         }
-        Ok(PublicCases { decks })
+        Ok(out)
+    }
+
+    /// Attach the importer's verdict on every deck (`survey` of its input file).
+    pub fn attach_survey(&mut self, survey: impl Fn(&Path) -> Survey) {
+        self.survey = self.inputs.iter().map(|(deck, inp)| (deck.clone(), survey(inp))).collect();
+    }
+
+    /// Every comparison of a stored history with the printed cases of its origin (`None`: the
+    /// scene has no origin or its rows are not one printed case each, with why).
+    pub fn row_diffs(&self, scene: &StoredScene, h: &History) -> Result<Vec<RowDiff>, String> {
+        let Some(origin) = &scene.scene.origin else { return Ok(Vec::new()) };
+        let [first, last] = origin.cases;
+        let rows: Vec<_> = h.rows.iter().filter(|r| r.sample.step >= 1).collect();
+        let cases: Option<Vec<&Totals>> = (first..=last).map(|c| self.totals(&origin.file, c)).collect();
+        let Some(cases) = cases.filter(|c| c.len() == rows.len()) else {
+            return Err(format!(
+                "{} rows of steps ≥ 1, cases {first} to {last} of {}: not one printed case per row",
+                rows.len(),
+                origin.file
+            ));
+        };
+        let mz: Option<BTreeMap<usize, f64>> =
+            h.column(MZ).map(|v| h.rows.iter().map(|r| r.sample.step).zip(v).collect());
+        let mut out = Vec::new();
+        for (k, (r, t)) in rows.iter().zip(&cases).enumerate() {
+            let (step, case) = (r.sample.step, first + k);
+            let d = |quantity, ours, printed| RowDiff { step, case, quantity, ours, printed };
+            out.push(d(FX, r.fx_over_fn, printed_ratio(t, t.x, t.fx_n, r.sample.mu)));
+            out.push(d(FY, r.fy_over_fn, printed_ratio(t, t.y, t.fy_n, r.sample.mu)));
+            if let Some(m) = mz.as_ref().and_then(|m| m.get(&step)) {
+                out.push(d(MZ_Q, *m, t.mz_nmm));
+            }
+        }
+        Ok(out)
     }
 
     /// The printed totals of case `case` of `deck`.
@@ -84,14 +152,10 @@ fn printed_ratio(t: &Totals, tangential: Tangential, force: Printed, mu: f64) ->
 
 /// One finding: the difference in half-units of the printed rounding (theirs = 0), the values
 /// in the note.
-fn finding(ctx: &Ctx, quantity: &str, step: usize, case: usize, ours: f64, theirs: Printed) -> Finding {
-    let note = format!("case {case}: ours {ours:.9e}, printed {:e} ± {:e}", theirs.value, theirs.half_unit);
-    ctx.finding(quantity, Some(step), (ours - theirs.value) / theirs.half_unit, 0.0, &note)
-}
-
-/// The worst of several findings of one quantity.
-fn worst(fs: impl Iterator<Item = Finding>) -> Option<Finding> {
-    fs.max_by(|a, b| a.severity().total_cmp(&b.severity()))
+fn finding(ctx: &Ctx, d: &RowDiff) -> Finding {
+    let (p, case) = (d.printed, d.case);
+    let note = format!("case {case}: ours {:.9e}, printed {:e} ± {:e}", d.ours, p.value, p.half_unit);
+    ctx.finding(d.quantity, Some(d.step), (d.ours - p.value) / p.half_unit, 0.0, &note)
 }
 
 impl ReferenceSet for PublicCases {
@@ -100,32 +164,17 @@ impl ReferenceSet for PublicCases {
     }
 
     fn compare(&self, ours: &StoredScene, rules: &[Rule]) -> Vec<Finding> {
-        let Some(origin) = &ours.scene.origin else { return Vec::new() };
-        let [first, last] = origin.cases;
         let mut out = Vec::new();
         for (solver, h) in &ours.histories {
             let ctx = Ctx { scene: &ours.name, solver, against: AGAINST, rules };
-            let rows: Vec<_> = h.rows.iter().filter(|r| r.sample.step >= 1).collect();
-            let cases: Option<Vec<&Totals>> = (first..=last).map(|c| self.totals(&origin.file, c)).collect();
-            let Some(cases) = cases.filter(|c| c.len() == rows.len()) else {
-                let why = format!(
-                    "{} rows of steps ≥ 1, cases {first} to {last} of {}: not one printed case per row",
-                    rows.len(),
-                    origin.file
-                );
-                out.push(ctx.unmatched(FX, why));
-                continue;
-            };
-            let pairs = || rows.iter().zip(&cases).enumerate().map(|(k, (r, t))| (r.sample.step, first + k, *r, *t));
-            out.extend(worst(pairs().map(|(s, c, r, t)| {
-                finding(&ctx, FX, s, c, r.fx_over_fn, printed_ratio(t, t.x, t.fx_n, r.sample.mu))
-            })));
-            out.extend(worst(pairs().map(|(s, c, r, t)| {
-                finding(&ctx, FY, s, c, r.fy_over_fn, printed_ratio(t, t.y, t.fy_n, r.sample.mu))
-            })));
-            if let Some(mz) = h.column(MZ) {
-                let mz: BTreeMap<usize, f64> = h.rows.iter().map(|r| r.sample.step).zip(mz).collect();
-                out.extend(worst(pairs().map(|(s, c, _, t)| finding(&ctx, MZ_Q, s, c, mz[&s], t.mz_nmm))));
+            match self.row_diffs(ours, h) {
+                Ok(diffs) => {
+                    for q in [FX, FY, MZ_Q] {
+                        let fs = diffs.iter().filter(|d| d.quantity == q).map(|d| finding(&ctx, d));
+                        out.extend(fs.max_by(|a, b| a.severity().total_cmp(&b.severity())));
+                    }
+                }
+                Err(why) => out.push(ctx.unmatched(FX, why)),
             }
         }
         out

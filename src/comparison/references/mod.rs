@@ -144,6 +144,13 @@ impl References {
         (set.as_ref() as &dyn Any).downcast_ref::<T>()
     }
 
+    /// The set whose first label is `label`, as its own type, to attach what a stage above
+    /// computes for it (the importer's survey of CONTACT's public decks).
+    pub fn get_mut<T: ReferenceSet>(&mut self, label: Against) -> Option<&mut T> {
+        let (_, set) = self.sets.iter_mut().find(|(def, _)| def.labels.first().is_some_and(|(l, _)| *l == label))?;
+        (set.as_mut() as &mut dyn Any).downcast_mut::<T>()
+    }
+
     /// The set that the report section `id` draws, as its own type.
     pub fn of_section<T: ReferenceSet>(&self, id: &str) -> Option<&T> {
         let (_, set) = self.sets.iter().find(|(def, _)| def.section == Some(id))?;
