@@ -11,9 +11,17 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
-/// The default suites: the thesis scenes, the stability scenes and the studies behind the report.
-pub const DEFAULT_SUITES: [&str; 6] =
-    ["scenes/thesis", "scenes/envelope", "scenes/nonhertz", "scenes/table", "scenes/stability", "scenes/report"];
+/// The default suites: the thesis scenes, CONTACT's case sets, the stability scenes, the studies
+/// behind the report and CONTACT's public examples.
+pub const DEFAULT_SUITES: [&str; 7] = [
+    "scenes/thesis",
+    "scenes/envelope",
+    "scenes/nonhertz",
+    "scenes/table",
+    "scenes/stability",
+    "scenes/report",
+    "scenes/contact_public",
+];
 
 /// `--shard i/n`: this run takes the scenes whose name hashes to i − 1 modulo n.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
