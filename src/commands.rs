@@ -104,6 +104,21 @@ pub fn fit(file: &Path, out: Option<&Path>, reference: &Path, golden: &Path) -> 
     Ok(out)
 }
 
+/// The reference sets, with the importer's verdict on every case of CONTACT's public decks
+/// attached to the set `contact_public` (its report section lists them; the import stage sits
+/// above comparison and report, so the survey is made here and passed down).
+fn load_references(reference: &Path) -> Result<References, Error> {
+    use crate::comparison::references::contact_public::{PublicCases, Survey, AGAINST};
+    let mut refs = References::load(reference)?;
+    if let Some(public) = refs.get_mut::<PublicCases>(AGAINST) {
+        public.attach_survey(|inp| match crate::import::contact::survey(inp) {
+            Ok(cases) => Survey::Cases(cases.into_iter().map(|c| (c.case, c.refused)).collect()),
+            Err(e) => Survey::Unread(e.to_string()),
+        });
+    }
+    Ok(refs)
+}
+
 /// Run a suite (or one shard) and return its results as stored scenes.
 fn run_suite(suite_dir: &[PathBuf], shard: Option<Shard>, progress: bool) -> Result<Vec<StoredScene>, Error> {
     let files = suite::scene_files(suite_dir, shard)?;
@@ -195,7 +210,7 @@ pub fn run(
     if guard::same_place(results_dir, report_dir)? && shard.is_none() {
         refuse_taken(&names, &REPORT_SUBDIRS, results_dir, "--report")?;
     }
-    let refs = References::load(reference)?;
+    let refs = load_references(reference)?;
     // Fit files validated before any scene runs: a bad --fits writes nothing.
     let fit_specs = fits.map(load_fit_specs).transpose()?;
     let scenes = run_suite(suite_dir, shard, progress)?;
@@ -341,7 +356,7 @@ pub fn merge(
             }
         }
     }
-    let refs = References::load(reference)?;
+    let refs = load_references(reference)?;
     let scenes = read_results(dirs)?;
     for d in dirs {
         if guard::same_place(d, report_dir)? {
@@ -482,7 +497,7 @@ pub fn gate(
     files: &GateFiles,
 ) -> Result<Gate, Error> {
     files.check_paths(golden)?;
-    let refs = References::load(reference)?;
+    let refs = load_references(reference)?;
     let rules = file_rules(&files.tolerances, suite_dir)?;
     let (dir, key, what, kind) = match against {
         Some(dir) => {
@@ -730,10 +745,10 @@ pub struct ImportOptions {
 }
 
 /// `creepbench import contact-output FILE [--out CSV] [--cases A-B]`: the totals CONTACT printed
-/// for each module-3 case as a reference CSV (`import::contact_output::reference_csv`), written
+/// for each module-3 case as a reference CSV (`comparison::references::contact_output::reference_csv`), written
 /// whole to `out` (never inside golden/) or to standard output; a count of the cases on stderr.
 pub fn import_contact_output(file: &Path, out: Option<&Path>, cases: Option<&str>, golden: &Path) -> Result<(), Error> {
-    use crate::import::contact_output::{self, reference_csv, CaseBody};
+    use crate::comparison::references::contact_output::{self, reference_csv, CaseBody};
     let range = cases.map(str::parse::<reference_csv::CaseRange>).transpose()?;
     if let Some(path) = out {
         guard::guard_output_file(path, golden)?;

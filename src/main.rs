@@ -126,7 +126,7 @@ enum Command {
         #[arg(long, default_value = "golden")]
         golden: PathBuf,
     },
-    /// Run the suites (default: the seven shipped suites of scenes/), then the fits of fits/, and
+    /// Run the suites (default: the eight shipped suites of scenes/), then the fits of fits/, and
     /// write the report (out/report/validation.md; `--report reports` regenerates the committed sample).
     Run {
         #[command(flatten)]
@@ -202,7 +202,7 @@ enum Command {
         #[command(subcommand)]
         what: ExportWhat,
     },
-    /// Read another program's file into this project's formats.
+    /// Read another program's files: CONTACT's input as scenes, its printed output as a reference CSV.
     Import {
         #[command(subcommand)]
         what: ImportWhat,

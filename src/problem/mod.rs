@@ -121,6 +121,8 @@ pub struct Problem {
     pub scene_dir: PathBuf,
     /// The studies the scene is a point of ([`crate::scene::study`]).
     pub studies: Vec<crate::scene::study::StudyPoint>,
+    /// The CONTACT deck and cases the scene was imported from (the scene's `[origin]`).
+    pub origin: Option<crate::scene::Origin>,
     pub warnings: Vec<String>,
 }
 
@@ -200,6 +202,7 @@ impl Problem {
             limits: scene.limits,
             scene_dir: scene.dir.clone(),
             studies: scene.studies.clone(),
+            origin: scene.origin.clone(),
             warnings,
         };
         problem.check_derived()?;

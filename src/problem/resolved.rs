@@ -81,6 +81,10 @@ pub struct ResolvedScene {
     /// The studies the scene is a point of (absent for a scene of its own).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub studies: Vec<crate::scene::study::StudyPoint>,
+    /// The CONTACT deck and first and last case the scene was imported from (absent for a
+    /// scene of this project's own).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub origin: Option<crate::scene::Origin>,
     /// The loading at every row (step 0 = the initial state at t = 0, when the scene has one).
     pub history: Vec<Sample>,
 }
@@ -156,6 +160,7 @@ impl ResolvedScene {
             }),
             suite: p.scene_dir.file_name().map(|n| n.to_string_lossy().to_string()).unwrap_or_default(),
             studies: p.studies.clone(),
+            origin: p.origin.clone(),
             history: p.loading.initial.iter().chain(p.loading.samples.iter()).copied().collect(),
         }
     }

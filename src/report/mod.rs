@@ -2,6 +2,7 @@
 //! Built from stored result folders only, so shards merge into one report. Stage 8 of the stack
 //! (below it: the comparison's findings and the reference sets; above it: calibration).
 
+pub mod contact_public;
 pub mod envelope;
 pub mod falling;
 pub mod ladder;

@@ -3,6 +3,7 @@
 //! Adding a section: its function (a file of its own or one in `sections.rs`) and a line here.
 
 use crate::comparison::references::{References, ENVELOPE_SECTION, NONHERTZ_SECTION};
+use crate::report::contact_public;
 use crate::report::envelope;
 use crate::report::falling;
 use crate::report::ladder;
@@ -24,7 +25,7 @@ pub struct SectionDef {
 }
 
 /// Every section, in the report's order.
-pub const SECTIONS: [SectionDef; 11] = [
+pub const SECTIONS: [SectionDef; 12] = [
     SectionDef {
         id: "thesis",
         applies: |s, _| sections::thesis_applies(s),
@@ -43,6 +44,7 @@ pub const SECTIONS: [SectionDef; 11] = [
         render: envelope::nonhertz_section,
     },
     SectionDef { id: falling::ID, applies: |s, _| falling::applies(s), render: falling::section },
+    SectionDef { id: contact_public::ID, applies: |s, _| contact_public::applies(s), render: contact_public::section },
     SectionDef { id: "work_precision", applies: |s, _| work_precision::applies(s), render: work_precision::section },
     SectionDef {
         id: "grid_convergence",

@@ -202,8 +202,9 @@ pub struct ExternalSolver {
 }
 
 /// Where an imported scene came from (`[origin]`, written by `import contact`): the CONTACT
-/// input file and its first and last case.
-#[derive(Debug, Clone, PartialEq, Eq)]
+/// input file and its first and last case (carried into scene.json: the reference set
+/// `contact_public` finds the printed case of each row by it).
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Origin {
     pub file: String,
     pub cases: [usize; 2],

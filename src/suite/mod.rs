@@ -12,8 +12,9 @@ use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
 /// The default suites: the thesis scenes, CONTACT's case sets (envelope, non-Hertzian, test
-/// table, falling friction), the stability scenes and the studies behind the report.
-pub const DEFAULT_SUITES: [&str; 7] = [
+/// table, falling friction), the stability scenes, the studies behind the report and CONTACT's
+/// public examples.
+pub const DEFAULT_SUITES: [&str; 8] = [
     "scenes/thesis",
     "scenes/envelope",
     "scenes/nonhertz",
@@ -21,6 +22,7 @@ pub const DEFAULT_SUITES: [&str; 7] = [
     "scenes/stability",
     "scenes/report",
     "scenes/friction",
+    "scenes/contact_public",
 ];
 
 /// `--shard i/n`: this run takes the scenes whose name hashes to i − 1 modulo n.

@@ -1,13 +1,13 @@
 //! Issue 32 items 2 and 4: the reader of CONTACT's printed output (`creepbench import
-//! contact-output`, `creepbench::import::contact_output`) on every `.ref_out` shipped in
+//! contact-output`, `creepbench::comparison::references::contact_output`) on every `.ref_out` shipped in
 //! reference/contact_public/ (CONTACT's public examples, verbatim): one entry per `Case n` line,
 //! module-1 cases kept with their numbers and not read, spot values against the printed text with
 //! this project's signs (forces on body 2), each value's printed resolution, and the same numbers
 //! as `scripts/contact_to_csv.py`'s reader of printed totals on every file (needs python3).
 
 use crate::common::{root, tempdir};
-use creepbench::import::contact_output::printed::{half_unit, Printed};
-use creepbench::import::contact_output::{
+use creepbench::comparison::references::contact_output::printed::{half_unit, Printed};
+use creepbench::comparison::references::contact_output::{
     self, CaseBody, CaseOutput, Friction, Frictional, Prescribed, Stepping, Tangential, Totals,
 };
 use std::collections::BTreeMap;

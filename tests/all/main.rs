@@ -7,6 +7,7 @@ mod console;
 mod contact_export;
 mod contact_import;
 mod contact_output;
+mod contact_public;
 mod contact_solver;
 mod contact_to_csv;
 mod docs;

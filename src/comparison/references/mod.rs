@@ -4,6 +4,8 @@
 //! labels with their catch-all rules, its loader and the report section that draws its cases.
 
 pub mod contact;
+pub mod contact_output;
+pub mod contact_public;
 pub mod envelope;
 pub mod friction;
 pub mod table;
@@ -46,7 +48,7 @@ pub struct SetDef {
 
 /// The registry: every reference set, in the order of the gate and the report. Adding a set:
 /// its file and a line here (and its gated rules in `tolerances.toml`, if it has any).
-pub const SETS: [SetDef; 6] = [
+pub const SETS: [SetDef; 7] = [
     SetDef {
         labels: &[
             (contact::EXACT, "simplified models differ from the exact theory by design; the report shows by how much"),
@@ -96,6 +98,14 @@ pub const SETS: [SetDef; 6] = [
         load: |dir| Ok(Box::new(friction::FrictionCases::load(dir)?)),
         section: None,
     },
+    SetDef {
+        labels: &[(
+            contact_public::AGAINST,
+            "CONTACT's printed totals of its public cases: a quantity no rule names is reported",
+        )],
+        load: |dir| Ok(Box::new(contact_public::PublicCases::load(dir)?)),
+        section: None,
+    },
 ];
 
 /// The id of the report section of CONTACT's envelope cases.
@@ -142,6 +152,13 @@ impl References {
     pub fn get<T: ReferenceSet>(&self, label: Against) -> Option<&T> {
         let (_, set) = self.sets.iter().find(|(def, _)| def.labels.first().is_some_and(|(l, _)| *l == label))?;
         (set.as_ref() as &dyn Any).downcast_ref::<T>()
+    }
+
+    /// The set whose first label is `label`, as its own type, to attach what a stage above
+    /// computes for it (the importer's survey of CONTACT's public decks).
+    pub fn get_mut<T: ReferenceSet>(&mut self, label: Against) -> Option<&mut T> {
+        let (_, set) = self.sets.iter_mut().find(|(def, _)| def.labels.first().is_some_and(|(l, _)| *l == label))?;
+        (set.as_mut() as &mut dyn Any).downcast_mut::<T>()
     }
 
     /// The set that the report section `id` draws, as its own type.

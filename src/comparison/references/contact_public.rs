@@ -1,0 +1,186 @@
+//! CONTACT's public examples and test bank (reference/contact_public/, issue 32 item 4): a scene
+//! imported from one of its decks (`[origin]` in scene.json) is compared with the totals CONTACT
+//! printed in the deck's `.ref_out`, read by [`super::contact_output`] (signs converted there).
+//! Step s ≥ 1 of a history is case `first + s − 1` of the deck. Each difference is measured in
+//! half-units of the printed value's last digit (its rounding bound, [`Printed::half_unit`]), so
+//! that one rule per quantity holds for every case: `tolerances.toml` states k per quantity.
+
+use super::contact_output::printed::Printed;
+use super::contact_output::{self, CaseBody, Tangential, Totals};
+use super::ReferenceSet;
+use crate::comparison::finding::{Against, Ctx, Finding};
+use crate::comparison::rule::Rule;
+use crate::error::Error;
+use crate::history::{History, MZ};
+use crate::suite::results::StoredScene;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+/// CONTACT's printed totals of its public cases.
+pub const AGAINST: Against = Against::Reference("CONTACT public");
+
+/// The folder of the decks and their printed output, under the reference folder.
+pub const FOLDER: &str = "contact_public";
+
+/// The quantities compared, each in half-units of the printed rounding.
+pub const FX: &str = "fx_over_fn_in_rounding";
+pub const FY: &str = "fy_over_fn_in_rounding";
+pub const MZ_Q: &str = "mz_in_rounding";
+
+/// Every deck's printed cases, by the deck's file name (`cattaneo.inp`).
+#[derive(Debug, Clone, Default)]
+pub struct PublicCases {
+    pub decks: BTreeMap<String, Vec<contact_output::CaseOutput>>,
+    /// Each deck's input file (beside its `.ref_out`).
+    pub inputs: BTreeMap<String, PathBuf>,
+    /// What the importer says of each deck's cases ([`PublicCases::attach_survey`]; empty until
+    /// the caller attaches it: the import stage sits above this one).
+    pub survey: BTreeMap<String, Survey>,
+}
+
+/// The importer's verdict on one deck's cases.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Survey {
+    /// Every case by number with the features that keep it out (empty: supported).
+    Cases(BTreeMap<usize, Vec<String>>),
+    /// The deck could not be read as a whole (the importer's message).
+    Unread(String),
+}
+
+/// One comparison of a row with its printed case: the quantity and the difference in
+/// half-units of the printed rounding.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RowDiff {
+    pub step: usize,
+    pub case: usize,
+    pub quantity: &'static str,
+    pub ours: f64,
+    pub printed: Printed,
+}
+
+impl RowDiff {
+    /// |ours − printed| in half-units of the printed rounding.
+    pub fn half_units(&self) -> f64 {
+        (self.ours - self.printed.value).abs() / self.printed.half_unit
+    }
+}
+
+impl PublicCases {
+    /// Read every `.ref_out` under `dir/contact_public` (recursively), keyed by its deck's name.
+    pub fn load(dir: &Path) -> Result<PublicCases, Error> {
+        let mut files = Vec::new();
+        collect(&dir.join(FOLDER), &mut files)?;
+        let mut out = PublicCases::default();
+        for path in files {
+            let Some(stem) = path.file_stem().and_then(|s| s.to_str()) else { continue };
+            let deck = format!("{stem}.inp");
+            out.decks.insert(deck.clone(), contact_output::read(&path)?);
+            out.inputs.insert(deck.clone(), path.with_extension("inp"));
+        }
+        Ok(out)
+    }
+
+    /// Attach the importer's verdict on every deck (`survey` of its input file).
+    pub fn attach_survey(&mut self, survey: impl Fn(&Path) -> Survey) {
+        self.survey = self.inputs.iter().map(|(deck, inp)| (deck.clone(), survey(inp))).collect();
+    }
+
+    /// Every comparison of a stored history with the printed cases of its origin (`None`: the
+    /// scene has no origin or its rows are not one printed case each, with why).
+    pub fn row_diffs(&self, scene: &StoredScene, h: &History) -> Result<Vec<RowDiff>, String> {
+        let Some(origin) = &scene.scene.origin else { return Ok(Vec::new()) };
+        let [first, last] = origin.cases;
+        let rows: Vec<_> = h.rows.iter().filter(|r| r.sample.step >= 1).collect();
+        let cases: Option<Vec<&Totals>> = (first..=last).map(|c| self.totals(&origin.file, c)).collect();
+        let Some(cases) = cases.filter(|c| c.len() == rows.len()) else {
+            return Err(format!(
+                "{} rows of steps ≥ 1, cases {first} to {last} of {}: not one printed case per row",
+                rows.len(),
+                origin.file
+            ));
+        };
+        let mz: Option<BTreeMap<usize, f64>> =
+            h.column(MZ).map(|v| h.rows.iter().map(|r| r.sample.step).zip(v).collect());
+        let mut out = Vec::new();
+        for (k, (r, t)) in rows.iter().zip(&cases).enumerate() {
+            let (step, case) = (r.sample.step, first + k);
+            let d = |quantity, ours, printed| RowDiff { step, case, quantity, ours, printed };
+            out.push(d(FX, r.fx_over_fn, printed_ratio(t, t.x, t.fx_n, r.sample.mu)));
+            out.push(d(FY, r.fy_over_fn, printed_ratio(t, t.y, t.fy_n, r.sample.mu)));
+            if let Some(m) = mz.as_ref().and_then(|m| m.get(&step)) {
+                out.push(d(MZ_Q, *m, t.mz_nmm));
+            }
+        }
+        Ok(out)
+    }
+
+    /// The printed totals of case `case` of `deck`.
+    pub fn totals(&self, deck: &str, case: usize) -> Option<&Totals> {
+        let c = self.decks.get(deck)?.iter().find(|c| c.case as usize == case)?;
+        match &c.body {
+            CaseBody::Totals(t) => Some(t),
+            _ => None,
+        }
+    }
+}
+
+/// Every `.ref_out` under `dir`, sorted.
+fn collect(dir: &Path, out: &mut Vec<std::path::PathBuf>) -> Result<(), Error> {
+    let io = |e: std::io::Error| Error::Io { path: dir.to_path_buf(), source: e };
+    let mut entries: Vec<_> =
+        std::fs::read_dir(dir).map_err(io)?.map(|e| e.map(|e| e.path())).collect::<Result<_, _>>().map_err(io)?;
+    entries.sort();
+    for p in entries {
+        if p.is_dir() {
+            collect(&p, out)?;
+        } else if p.extension().is_some_and(|e| e == "ref_out") {
+            out.push(p);
+        }
+    }
+    Ok(())
+}
+
+/// f/FN as printed: the second line's F/FSTAT/FN times the row's μ (more digits than FX/FN),
+/// F/FN where printed so, else FX over FN with both roundings.
+fn printed_ratio(t: &Totals, tangential: Tangential, force: Printed, mu: f64) -> Printed {
+    match tangential {
+        Tangential::ForceOverFstatFn(p) if mu.is_finite() => p.times(mu),
+        Tangential::ForceOverFn(p) => p,
+        _ => force.over(t.fn_n),
+    }
+}
+
+/// One finding: the difference in half-units of the printed rounding (theirs = 0), the values
+/// in the note.
+fn finding(ctx: &Ctx, d: &RowDiff) -> Finding {
+    let (p, case) = (d.printed, d.case);
+    let note = format!("case {case}: ours {:.9e}, printed {:e} ± {:e}", d.ours, p.value, p.half_unit);
+    ctx.finding(d.quantity, Some(d.step), (d.ours - p.value) / p.half_unit, 0.0, &note)
+}
+
+impl ReferenceSet for PublicCases {
+    fn label(&self) -> &'static str {
+        "CONTACT public"
+    }
+
+    fn compare(&self, ours: &StoredScene, rules: &[Rule]) -> Vec<Finding> {
+        let mut out = Vec::new();
+        for (solver, h) in &ours.histories {
+            let ctx = Ctx { scene: &ours.name, solver, against: AGAINST, rules };
+            match self.row_diffs(ours, h) {
+                Ok(diffs) => {
+                    for q in [FX, FY, MZ_Q] {
+                        let fs = diffs.iter().filter(|d| d.quantity == q).map(|d| finding(&ctx, d));
+                        out.extend(fs.max_by(|a, b| a.severity().total_cmp(&b.severity())));
+                    }
+                }
+                Err(why) => out.push(ctx.unmatched(FX, why)),
+            }
+        }
+        out
+    }
+
+    fn history(&self, _scene: &str) -> Option<&History> {
+        None
+    }
+}

@@ -1,0 +1,102 @@
+//! The section "CONTACT's public examples" (issue 32 item 4): every case of every deck of
+//! reference/contact_public/ — reproduced, with its worst difference in half-units of the
+//! printed rounding (the gate's measure, `tolerances.toml` rules "CONTACT public"), or not
+//! supported with the missing feature (the importer's survey, attached by the command).
+
+use crate::comparison::references::contact_output::CaseBody;
+use crate::comparison::references::contact_public::{PublicCases, RowDiff, Survey, AGAINST};
+use crate::comparison::references::References;
+use crate::report::linked_table::{self, Table};
+use crate::report::section::Section;
+use crate::suite::results::StoredScene;
+use std::collections::{BTreeMap, BTreeSet};
+use std::fmt::Write;
+
+/// The section's id and title.
+pub const ID: &str = "contact_public";
+pub const TITLE: &str = "CONTACT's public examples";
+
+/// One unit of the last printed digit, in half-units: the bound of the gate's rules (k = 2).
+const ONE_PRINTED_UNIT: f64 = 2.0;
+
+/// The model compared case by case: CONTACT's exact theory.
+const SOLVER: &str = "contact";
+
+/// Whether any stored scene was imported from a CONTACT deck.
+pub fn applies(scenes: &[StoredScene]) -> bool {
+    scenes.iter().any(|s| s.scene.origin.is_some())
+}
+
+/// The worst comparison of each (deck, case) over the stored scenes' exact-solver rows.
+fn worst_by_case(scenes: &[StoredScene], public: &PublicCases) -> BTreeMap<(String, usize), RowDiff> {
+    let mut out: BTreeMap<(String, usize), RowDiff> = BTreeMap::new();
+    for sc in scenes {
+        let (Some(origin), Some(h)) = (&sc.scene.origin, sc.histories.get(SOLVER)) else { continue };
+        for d in public.row_diffs(sc, h).unwrap_or_default() {
+            let key = (origin.file.clone(), d.case);
+            if out.get(&key).is_none_or(|w| d.half_units() > w.half_units()) {
+                out.insert(key, d);
+            }
+        }
+    }
+    out
+}
+
+/// The status of case `case` of `deck`.
+fn status(deck: &str, case: usize, worst: Option<&RowDiff>, survey: Option<&Survey>, printed: bool) -> String {
+    if let Some(d) = worst {
+        let verdict = if d.half_units() <= ONE_PRINTED_UNIT { "reproduced" } else { "**differs**" };
+        return format!("{verdict}: worst {:.2} half-units of the printed rounding ({})", d.half_units(), d.quantity);
+    }
+    let reasons = match survey {
+        Some(Survey::Cases(cases)) => cases.get(&case).map(|r| r.join("; ")),
+        Some(Survey::Unread(why)) => Some(format!("the deck is not read: {why}")),
+        None => None,
+    };
+    match reasons {
+        Some(r) if !r.is_empty() => format!("not supported: {}", r.replace('|', "/")),
+        Some(_) if printed => format!("supported, not among these results (import {deck} to compare it)"),
+        Some(_) => "supported; CONTACT printed no totals for it".into(),
+        None => "not surveyed".into(),
+    }
+}
+
+/// The section.
+pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
+    let public = refs.get::<PublicCases>(AGAINST)?;
+    let worst = worst_by_case(scenes, public);
+    let mut table = Table::new(&["deck", "case", "status"]);
+    let mut per_deck = String::from("| deck | cases | reproduced | not supported |\n|---|---|---|---|\n");
+    let (mut keep, mut keys) = (Vec::new(), Vec::new());
+    for (deck, printed) in &public.decks {
+        let survey = public.survey.get(deck);
+        let mut cases: BTreeSet<usize> = printed.iter().map(|c| c.case as usize).collect();
+        if let Some(Survey::Cases(c)) = survey {
+            cases.extend(c.keys());
+        }
+        let (mut reproduced, mut refused) = (0, 0);
+        for &case in &cases {
+            let has_totals = printed.iter().any(|c| c.case as usize == case && matches!(c.body, CaseBody::Totals(_)));
+            let w = worst.get(&(deck.clone(), case));
+            let s = status(deck, case, w, survey, has_totals);
+            reproduced += usize::from(s.starts_with("reproduced"));
+            refused += usize::from(s.starts_with("not supported") || s.starts_with("not surveyed"));
+            if let Some(w) = w {
+                keep.push(table.rows.len());
+                keys.push(w.half_units());
+            }
+            table.rows.push(format!("| {deck} | {case} | {s} |"));
+        }
+        let _ = writeln!(per_deck, "| {deck} | {} | {reproduced} | {refused} |", cases.len());
+    }
+    let order = linked_table::largest(&keys, keys.len());
+    let keep: Vec<usize> = order.into_iter().map(|i| keep[i]).collect();
+    let summary = format!(
+        "Every case of every deck of `reference/contact_public/` (CONTACT's `examples/` and `testbank/`, read from its printed `.ref_out`): reproduced by the exact solver (its worst difference from the printed fx/fn, fy/fn and MZ in half-units of the printed value's last digit; the gate allows {ONE_PRINTED_UNIT}, one printed unit) or not supported, with the feature the importer refuses. {} of {} cases reproduced.",
+        worst.values().filter(|d| d.half_units() <= ONE_PRINTED_UNIT).count(),
+        table.rows.len()
+    );
+    let placed = linked_table::place(ID, TITLE, &table, &summary, &keep, "The compared cases, worst first");
+    let body = format!("{per_deck}\n{}", placed.inline);
+    Some(Section { tables: placed.file.into_iter().collect(), ..Section::new(TITLE, body) })
+}

@@ -1,0 +1,75 @@
+//! The gated suite of CONTACT's public cases (issue 32 item 4): `check` gates every imported case
+//! against the totals CONTACT printed (0 failed), and the report's section "CONTACT's public
+//! examples" lists every case of every deck of reference/contact_public/ with its status.
+
+use crate::common::{root, tempdir};
+use creepbench::comparison::references::contact_public::PublicCases;
+use std::process::Command;
+
+fn creepbench(args: &[&str]) -> (bool, String) {
+    let o = Command::new(env!("CARGO_BIN_EXE_creepbench")).current_dir(root()).args(args).output().unwrap();
+    let text = format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+    (o.status.success(), text)
+}
+
+#[test]
+fn the_public_suite_gates_against_the_printed_totals() {
+    let (ok, out) = creepbench(&["check", "--suite", "scenes/contact_public", "--quiet"]);
+    assert!(ok, "{out}");
+    let line = out.lines().find(|l| l.starts_with("contact_public")).unwrap_or_else(|| panic!("{out}"));
+    let cols: Vec<&str> = line.split_whitespace().collect();
+    // suite, model, gated, failed, |diff|/tol: 6 scenes × (golden + fx, fy, mz against CONTACT's
+    // printed totals) and more, none failed.
+    assert_eq!(cols[1], "contact", "{line}");
+    assert!(cols[2].parse::<usize>().unwrap() >= 24, "{line}");
+    assert_eq!(cols[3], "0", "{line}");
+    assert!(cols[4].parse::<f64>().unwrap() < 1.0, "{line}");
+}
+
+#[test]
+fn the_report_lists_every_case_of_every_deck() {
+    let dir = tempdir("contact_public_report");
+    let (results, report) = (dir.join("results"), dir.join("report"));
+    let (ok, out) = creepbench(&[
+        "run",
+        "--suite",
+        "scenes/contact_public",
+        "--quiet",
+        "--results",
+        results.to_str().unwrap(),
+        "--report",
+        report.to_str().unwrap(),
+    ]);
+    assert!(ok, "{out}");
+    let md = std::fs::read_to_string(report.join("validation.md")).unwrap();
+    assert!(md.contains("## CONTACT's public examples"), "{md}");
+    let table = std::fs::read_to_string(report.join("tables/contact_public.md")).unwrap();
+    let public = PublicCases::load(&root().join("reference")).unwrap();
+    assert_eq!(public.decks.len(), 22);
+    let mut rows = 0;
+    for (deck, cases) in &public.decks {
+        assert!(md.contains(&format!("| {deck} | {} |", cases.len())), "{deck} not summarised");
+        for c in cases {
+            let row = format!("| {deck} | {} | ", c.case);
+            let line = table.lines().find(|l| l.starts_with(&row)).unwrap_or_else(|| panic!("no row {row}"));
+            let status = &line[row.len()..];
+            assert!(status.starts_with("reproduced") || status.starts_with("not supported"), "{line}");
+            rows += 1;
+        }
+    }
+    // The imported cases are reproduced, each within one printed unit (2 half-units).
+    for (deck, case) in
+        [("carter2d.inp", 1), ("cattaneo.inp", 1), ("fastsim.inp", 1), ("testbank.inp", 6), ("testbank.inp", 7)]
+            .into_iter()
+            .chain((1..=30).map(|c| ("tractcurv.inp", c)))
+    {
+        let row = format!("| {deck} | {case} | reproduced: worst ");
+        let line = table.lines().find(|l| l.starts_with(&row)).unwrap_or_else(|| panic!("{row} not reproduced"));
+        let worst: f64 = line[row.len()..].split_whitespace().next().unwrap().parse().unwrap();
+        assert!(worst <= 2.0, "{line}");
+    }
+    assert_eq!(table.lines().filter(|l| l.contains(" | reproduced: ")).count(), 35);
+    // A case the importer refuses names what is missing.
+    assert!(table.contains("| cattaneo.inp | 2 | not supported: T = 1: shifts"), "{table}");
+    assert!(rows >= 500, "{rows} rows");
+}
