@@ -467,6 +467,8 @@ pub struct Gate {
     pub loosened: Vec<Loosening>,
     /// Each scene's suite.
     pub suite_of: BTreeMap<String, String>,
+    /// One OSCILLATES line per oscillating history ([`console::oscillating`]).
+    pub oscillating: Vec<String>,
 }
 
 /// Run the suite and gate it ([`Gate`]); `check` prints the result.
@@ -511,7 +513,8 @@ pub fn gate(
         }
     }
     let suite_of: BTreeMap<String, String> = scenes.iter().map(|s| (s.name.clone(), s.scene.suite.clone())).collect();
-    Ok(Gate { findings: all, loosened, suite_of })
+    let oscillating = console::oscillating(&scenes, files.verbose);
+    Ok(Gate { findings: all, loosened, suite_of, oscillating })
 }
 
 /// `creepbench check`: run the suite, compare with golden/ (or `against`) and the references;
@@ -527,7 +530,7 @@ pub fn check(
     progress: bool,
     files: &GateFiles,
 ) -> Result<(), Error> {
-    let Gate { findings: all, loosened, suite_of } =
+    let Gate { findings: all, loosened, suite_of, oscillating } =
         gate(suite_dir, reference, golden, against, shard, progress, files)?;
     let verdict = Verdict::of(&all);
     println!("{verdict}\n");
@@ -537,7 +540,7 @@ pub fn check(
         print!("{}", compare::table(&compare::worst_per_group(&all)));
     }
     print_list("", &console::no_baseline(&all, files.verbose));
-    print_list("", &console::oscillating(&scenes, files.verbose));
+    print_list("", &oscillating);
     if !loosened.is_empty() {
         println!("\n{} rule(s) of the run's files loosen what the defaults gate:", loosened.len());
         for l in &loosened {
