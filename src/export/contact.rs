@@ -14,14 +14,28 @@
 //! fixed grid (IPOTCN = 1, IBASE = 1), as this project's solvers keep the geometry; a geometry given
 //! per element as IPOTCN = 1 with its grid and IBASE = 9, h per element in CONTACT's order.
 //! Signs: cx, cy, cs are CKSI, CETA, CPHI as they are (this project uses CONTACT's convention).
+//!
+//! A falling friction law (`[friction]`) is given as CONTACT's L = 2, 3, 4 in the first case (FKIN,
+//! F1, SABSH1, F2, SABSH2 and MEMDST, MEM_S0) and kept (L = 1) afterwards, with the slip-velocity
+//! iteration's start (G = 4: INISLP, OMGSLP) and its progress printed (W = 2); a rolling speed that
+//! changes from one row to the next is given in the row where it first applies (C = 2: CHI, DQ,
+//! VELOC and the material again), as reference/contact_friction/README.contact_friction.md forms
+//! its histories.
 
+use crate::physics::FrictionLaw;
 use crate::problem::{LoadingKind, Problem, Sample};
+use crate::scene::InitialSlip;
 use std::fmt::Write;
 
 /// Values per line of an element-wise undeformed distance.
 const PER_LINE: usize = 6;
 /// A relative change of μ below this between two cases is rounding, not a new friction.
 const MU_CHANGE_REL: f64 = 1e-9;
+/// CONTACT's relaxation of the slip-velocity iteration (OMGSLP; its default, `m_stang.f90` 585-592).
+const OMGSLP: f64 = 0.5;
+/// SABSH2 written for a second term that is absent (F2 = 0): any positive value gives the same
+/// law; CONTACT's own inputs use 1000 mm/s.
+const SABSH2_UNUSED_MM_S: f64 = 1000.0;
 
 /// The CONTACT input that computes the problem's history, one case per row.
 pub fn module3_input(p: &Problem) -> String {
@@ -34,14 +48,16 @@ pub fn module3_input(p: &Problem) -> String {
         p.name,
         rows.len()
     );
+    let falling = p.friction.is_falling();
     let mut prev_mu = f64::NAN;
+    let mut prev_v_mm_s = p.rolling.v_mm_s;
     for (n, s) in rows.iter().enumerate() {
         let first = n == 0;
         let steady = sweep || (steady_start && first);
         let new_sequence = sweep || first;
         // A table's μ interpolated at a row's printed time may differ from the row by rounding:
         // read again only a μ that changed beyond that.
-        let read_mu = first || (s.mu - prev_mu).abs() > MU_CHANGE_REL * prev_mu.abs();
+        let read_mu = first || (!falling && (s.mu - prev_mu).abs() > MU_CHANGE_REL * prev_mu.abs());
         if read_mu {
             prev_mu = s.mu;
         }
@@ -53,18 +69,30 @@ pub fn module3_input(p: &Problem) -> String {
         // CONTACT solves the steady start with DQ = DX and keeps that DQ for the cases that follow
         // (`m_sdis.f90`): where the scene's DQ is another, the first transient case gives it again
         // (C = 2: kinematics and material read again, influence coefficients recomputed).
-        let dq_again = steady_start && n == 1 && p.rolling.dq_mm != p.grid.dx_mm;
+        let v_mm_s = s.v_mm_s.unwrap_or(p.rolling.v_mm_s);
+        let speed_changed = !first && v_mm_s != prev_v_mm_s;
+        prev_v_mm_s = v_mm_s;
+        let dq_again = (steady_start && n == 1 && p.rolling.dq_mm != p.grid.dx_mm) || speed_changed;
+        let law = law_digit(&p.friction);
         let ldc = match (first, dq_again) {
-            (true, _) => "022020".to_string(),
-            (false, again) => format!("{}0{}000", if read_mu { 0 } else { 1 }, if again { 2 } else { 0 }),
+            (true, _) => format!("{law}22020"),
+            (false, again) => format!("{}0{}000", if read_mu { law } else { 1 }, if again { 2 } else { 0 }),
         };
         let _ = writeln!(out, "  {ldc}      L-D-C-M-Z-E   FRCLAW, DISCNS, INFLCF, MATER , RZNORM, EXRHS");
+        let (g, w) = if falling { (4, 2) } else { (0, 1) };
         let _ = writeln!(
             out,
-            " 00{}2211    H-G-I-A-O-W-R   HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW, RETURN",
+            " 0{g}{}22{w}1    H-G-I-A-O-W-R   HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW, RETURN",
             if first { 0 } else { 1 }
         );
         let _ = writeln!(out, "   999   200    30     1   1e-08          MAXGS, MAXIN, MAXNR, MAXOUT, EPS");
+        if falling {
+            let _ = writeln!(
+                out,
+                "   {}   {OMGSLP:?}                                INISLP, OMGSLP",
+                inislp(p.contact_solver.inislp)
+            );
+        }
         // CONTACT's FXREL, FYREL: the force over FSTAT·FN, its sign flipped (fx = −FX/FN here).
         let (x, y) = (s.fx_target.map_or(s.cx, |f| -f / s.mu), s.fy_target.map_or(s.cy, |f| -f / s.mu));
         let names = [
@@ -74,29 +102,68 @@ pub fn module3_input(p: &Problem) -> String {
         ];
         let _ = writeln!(out, "  {:?}   {x:?}   {y:?}   {:?}        {}, CPHI", s.fn_n, s.cs, names.join(", "));
         if read_mu {
-            let _ = writeln!(out, "  {:?}   {:?}                            FSTAT, FKIN", s.mu, s.mu);
+            friction_lines(p, s.mu, &mut out);
         }
         if first {
-            geometry(p, load_varies, &mut out);
+            geometry(p, v_mm_s, load_varies, &mut out);
         } else if dq_again {
-            kinematics_and_material(p, &mut out);
+            kinematics_and_material(p, v_mm_s, &mut out);
         }
     }
     out.push_str("\n 0  MODULE\n");
     out
 }
 
-/// The kinematics (CHI, DQ, VELOC) and material lines of a case with C = 2.
-fn kinematics_and_material(p: &Problem, out: &mut String) {
+/// CONTACT's L of the law: 0 Coulomb, 2 linear, 3 rational, 4 exponential (`m_friclaw.f90`).
+fn law_digit(law: &FrictionLaw) -> u8 {
+    match law {
+        FrictionLaw::Coulomb { .. } => 0,
+        FrictionLaw::Linear(_) => 2,
+        FrictionLaw::Rational(_) => 3,
+        FrictionLaw::Exponential(_) => 4,
+    }
+}
+
+/// CONTACT's INISLP of the slip-velocity iteration's start (`m_stang.f90` lines 258-264).
+fn inislp(start: InitialSlip) -> i8 {
+    match start {
+        InitialSlip::Previous => 0,
+        InitialSlip::Below => 1,
+        InitialSlip::Above => -1,
+    }
+}
+
+/// The friction lines of a case that reads its law: FSTAT, FKIN = μ (Coulomb), or the falling
+/// law's FKIN, F1, SABSH1, F2, SABSH2 and the memory MEMDST, MEM_S0.
+fn friction_lines(p: &Problem, mu: f64, out: &mut String) {
+    let t = match &p.friction {
+        FrictionLaw::Coulomb { .. } => {
+            let _ = writeln!(out, "  {mu:?}   {mu:?}                            FSTAT, FKIN");
+            return;
+        }
+        FrictionLaw::Linear(t) | FrictionLaw::Rational(t) | FrictionLaw::Exponential(t) => t,
+    };
+    let sabsh2 = if t.f2 == 0.0 && t.sabsh2_mm_s == 0.0 { SABSH2_UNUSED_MM_S } else { t.sabsh2_mm_s };
+    let _ = writeln!(
+        out,
+        "  {:?}   {:?}   {:?}   {:?}   {sabsh2:?}        FKIN, F1, SABSH1, F2, SABSH2",
+        t.fkin, t.f1, t.sabsh1_mm_s, t.f2
+    );
+    let m = &p.memory;
+    let _ = writeln!(out, "  {:?}   {:?}                           MEMDST, MEM_S0", m.memory_mm, m.s0_mm_s);
+}
+
+/// The kinematics (CHI, DQ, VELOC at the row's speed) and material lines of a case with C = 2.
+fn kinematics_and_material(p: &Problem, v_mm_s: f64, out: &mut String) {
     let m = &p.material;
-    let _ = writeln!(out, "  0.0   {:?}   {:?}                 CHI, DQ, VELOC", p.rolling.dq_mm, p.rolling.v_mm_s);
+    let _ = writeln!(out, "  0.0   {:?}   {v_mm_s:?}                 CHI, DQ, VELOC", p.rolling.dq_mm);
     let _ = writeln!(out, "  {:?}   {:?}   {:?}   {:?}    POISS 1,2,  GG 1,2", m.poisson, m.poisson, m.g_mpa, m.g_mpa);
 }
 
 /// The first case's kinematics, material and geometry lines.
-fn geometry(p: &Problem, load_varies: bool, out: &mut String) {
+fn geometry(p: &Problem, v_mm_s: f64, load_varies: bool, out: &mut String) {
     let (m, g) = (&p.material, &p.grid);
-    kinematics_and_material(p, out);
+    kinematics_and_material(p, v_mm_s, out);
     if p.geometry.elliptic() && !load_varies {
         let e = p.hertz();
         let _ = writeln!(out, "  -3                                          IPOTCN");

@@ -106,3 +106,20 @@ fn exported_inputs_equal_contacts_own() {
     assert!(failures.is_empty(), "{} of {n} differ:\n{}", failures.len(), failures.join("\n"));
     assert!(n >= 66, "{n}");
 }
+
+/// Issue 33: the falling-friction cases (laws L = 2, 3, 4, friction memory, a speed changing per
+/// row with C = 2): the export of every scene of scenes/friction gives CONTACT's own input.
+#[test]
+fn exported_falling_friction_inputs_equal_contacts_own() {
+    let reference = "reference/contact_friction";
+    let mut rdr = csv::Reader::from_path(root().join(reference).join("cases.csv")).unwrap();
+    let names: Vec<String> = rdr.records().map(|r| r.unwrap()[0].to_string()).collect();
+    let failures: Vec<String> = names
+        .iter()
+        .filter_map(|name| {
+            difference("scenes/friction", name, &format!("{reference}/{name}.inp")).map(|d| format!("{name}: {d}"))
+        })
+        .collect();
+    assert!(failures.is_empty(), "{} of {} differ:\n{}", failures.len(), names.len(), failures.join("\n"));
+    assert_eq!(names.len(), 10);
+}

@@ -86,6 +86,8 @@ pub struct State {
     pub friction: Vec<f64>,
     /// Friction per grid row (V = 3): the values of every row.
     pub friction_rows: Vec<f64>,
+    /// The friction memory MEMDST [mm], MEM_S0 [mm/s] of a law L = 2-4, 6 (zero: none).
+    pub memory: [f64; 2],
     pub chi_rad: f64,
     pub dq_mm: f64,
     pub veloc_mm_s: f64,
@@ -299,10 +301,12 @@ impl CaseReader<'_> {
         if d.l != 1 {
             state.friction_law = d.l;
             state.friction_rows.clear();
+            state.memory = [0.0; 2];
             if d.v == 0 {
                 state.friction = self.friction_values(d.l)?;
                 if matches!(d.l, 2..=4 | 6) {
-                    self.reals("MEMDST, MEM_S0", 2)?;
+                    let m = self.reals("MEMDST, MEM_S0", 2)?;
+                    state.memory = [m[0], m[1]];
                 }
             }
         }
@@ -339,7 +343,8 @@ impl CaseReader<'_> {
                 state.friction_rows.extend(row);
             }
             if matches!(d.l, 2..=4 | 6) {
-                self.reals("MEMDST, MEM_S0", 2)?;
+                let m = self.reals("MEMDST, MEM_S0", 2)?;
+                state.memory = [m[0], m[1]];
             }
         }
         state.extra_rhs = match d.e {

@@ -83,11 +83,11 @@ pub const FEATURES: &[Feature] = &[
         used: |c| digit("V", c.digits.v, c.digits.v != 0),
     },
     Feature {
-        name: "friction laws other than Coulomb's",
+        name: "friction laws other than Coulomb's and the falling laws",
         control: "L",
         supported: false,
-        reason: "supported: L = 0 (Coulomb) or L = 1 keeping it",
-        used: |c| digit("L (in force)", c.state.friction_law, c.state.friction_law != 0),
+        reason: "supported: L = 0 (Coulomb), 2, 3, 4 (friction falling with the slip velocity, with its memory MEMDST, MEM_S0) or L = 1 keeping it",
+        used: |c| digit("L (in force)", c.state.friction_law, !matches!(c.state.friction_law, 0 | 2..=4)),
     },
     Feature {
         name: "static friction other than kinetic friction",

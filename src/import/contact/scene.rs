@@ -59,7 +59,7 @@ pub fn import_text(file: &str, stem: &str, text: &str) -> Result<Imported, Input
         .flat_map(|h| {
             let points: Vec<[f64; 3]> =
                 h.cases.iter().map(|&k| row(case3(&cases, k))).map(|r| [r[0], r[1], r[2]]).collect();
-            if h.run == Run::Sweep && sweep_of(&points).is_none() {
+            if h.run == Run::Sweep && speeds(&cases, &h).is_none() && sweep_of(&points).is_none() {
                 h.cases.iter().map(|&k| History { run: Run::Sweep, cases: vec![k] }).collect()
             } else {
                 vec![h]
@@ -120,13 +120,15 @@ fn case3(cases: &[Case], k: usize) -> &Case3 {
     }
 }
 
-/// What differs between two cases' setups (all but the creepages and, where `load_varies`, FN and
-/// the friction), named.
+/// What differs between two cases' setups (all but the creepages, VELOC and, where `load_varies`,
+/// FN and a Coulomb friction), named. A falling law and its memory are one for the whole history.
 fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static str> {
-    let pairs: [(&'static str, bool); 9] = [
+    let coulomb = a.friction_law == 0 && b.friction_law == 0;
+    let pairs: [(&'static str, bool); 10] = [
         ("FN", load_varies || a.pen_or_fn == b.pen_or_fn),
-        ("FSTAT, FKIN", load_varies || a.friction == b.friction),
-        ("CHI, DQ, VELOC", (a.chi_rad, a.dq_mm, a.veloc_mm_s) == (b.chi_rad, b.dq_mm, b.veloc_mm_s)),
+        ("FSTAT, FKIN", (load_varies && coulomb) || a.friction == b.friction),
+        ("MEMDST, MEM_S0", a.memory == b.memory),
+        ("CHI, DQ", (a.chi_rad, a.dq_mm) == (b.chi_rad, b.dq_mm)),
         ("POISS, GG", (a.poiss, a.gg_mpa) == (b.poiss, b.gg_mpa)),
         ("the potential contact (IPOTCN and its line)", a.potcon == b.potcon),
         ("the undeformed distance (IBASE)", a.undeformed == b.undeformed),
@@ -159,8 +161,10 @@ fn group(cases: &[Case], statuses: &mut [CaseStatus]) -> Vec<History> {
         if d.t != 2 {
             let joins = match hs.last() {
                 Some(h) if open && h.run == Run::Sweep => {
-                    setup_difference(&case3(cases, h.cases[0]).state, &c3.state, false).is_none()
+                    let first = case3(cases, h.cases[0]);
+                    setup_difference(&first.state, &c3.state, false).is_none()
                         && statuses[h.cases[0]].supported() == statuses[k].supported()
+                        && sweep_continues(cases, h, c3)
                 }
                 _ => false,
             };
@@ -201,14 +205,58 @@ fn group(cases: &[Case], statuses: &mut [CaseStatus]) -> Vec<History> {
     hs
 }
 
+/// Whether a steady case continues a sweep: at the sweep's speed (VELOC) where its creepages
+/// vary, or at its creepages where the speed varies (a speed sweep, `over = "v_mm_s"`).
+fn sweep_continues(cases: &[Case], h: &History, c: &Case3) -> bool {
+    let first = case3(cases, h.cases[0]);
+    let speeds_vary = h.cases.iter().any(|&k| case3(cases, k).state.veloc_mm_s != first.state.veloc_mm_s);
+    let same_speed = c.state.veloc_mm_s == first.state.veloc_mm_s;
+    let same_creepage = row(c)[..3].iter().zip(&row(first)[..3]).all(|(a, b)| a.to_bits() == b.to_bits());
+    (same_speed && !speeds_vary) || (same_creepage && (speeds_vary || h.cases.len() == 1))
+}
+
 /// A case's row: [cx, cy, cs, FN, μ] (T = 0: zero creepage).
 fn row(c: &Case3) -> [f64; 5] {
     let s = &c.state;
-    let mu = s.friction.get(1).copied().unwrap_or(f64::NAN);
+    let mu = match (s.friction_law, s.friction.as_slice()) {
+        // FSTAT = μ_s(0) = FKIN + F1 + F2 (`m_friclaw.f90` lines 303-305), as `FrictionLaw::mu_static`.
+        (2..=4, [fkin, f1, _, f2, _]) => fkin + f1 + f2,
+        _ => s.friction.get(1).copied().unwrap_or(f64::NAN),
+    };
     if c.digits.t == 0 {
         [0.0, 0.0, 0.0, s.pen_or_fn, mu]
     } else {
         [s.cksi_or_fx, s.ceta_or_fy, s.cphi_per_mm, s.pen_or_fn, mu]
+    }
+}
+
+/// The speeds (VELOC) of a history's cases where they change within it.
+fn speeds(cases: &[Case], h: &History) -> Option<Vec<f64>> {
+    let v: Vec<f64> = h.cases.iter().map(|&k| case3(cases, k).state.veloc_mm_s).collect();
+    v.iter().any(|x| *x != v[0]).then_some(v)
+}
+
+/// The table rows of a history whose speed changes per case: t_k = t_(k-1) + DQ / VELOC_k (the
+/// steady start at t = 0), each case's values held over a quarter of the steps either side of t_k
+/// (from t = 0 for the first), so that the scene's step k, the fixed point of v = V(t_(k-1) + DQ/v)
+/// (`problem::loading`), finds VELOC_k and t_k exactly.
+fn speed_rows(csv: &mut String, rows: &[[f64; 5]], columns: &[usize], v: &[f64], dq_mm: f64, steady_start: bool) {
+    let mut t = Vec::with_capacity(rows.len());
+    let mut t_s = 0.0;
+    for (n, speed) in v.iter().enumerate() {
+        if !(steady_start && n == 0) {
+            t_s += dq_mm / speed;
+        }
+        t.push(t_s);
+    }
+    for (n, r) in rows.iter().enumerate() {
+        let mut values: Vec<String> = columns.iter().map(|&j| format!("{:?}", r[j])).collect();
+        values.push(format!("{:?}", v[n]));
+        let values = values.join(",");
+        let gap_after = if n + 1 < t.len() { t[n + 1] - t[n] } else { t[n] - if n > 0 { t[n - 1] } else { 0.0 } };
+        let lower = if n == 0 { 0.0 } else { t[n] - 0.25 * (t[n] - t[n - 1]) };
+        let _ = writeln!(csv, "{lower:?},{values}");
+        let _ = writeln!(csv, "{:?},{values}", t[n] + 0.25 * gap_after);
     }
 }
 
@@ -305,6 +353,31 @@ fn sweep_of(points: &[[f64; 3]]) -> Option<Sweep> {
     (exact && direction.iter().all(|d| d.is_finite())).then_some(Sweep { param: k, direction, constants, t })
 }
 
+/// `[friction]` of a falling law (L = 2, 3, 4) with its memory; `None`: Coulomb (`contact.mu`).
+/// An absent second term (F2 = 0) and an absent memory (MEMDST = 0) are left out: they change no μ.
+fn friction_table(s: &State) -> Option<Value> {
+    let law = match s.friction_law {
+        2 => "linear",
+        3 => "rational",
+        4 => "exponential",
+        _ => return None,
+    };
+    let f = &s.friction;
+    let mut pairs = vec![
+        ("law", Value::String(law.into())),
+        ("fkin", Value::Float(f[0])),
+        ("f1", Value::Float(f[1])),
+        ("sabsh1_mm_s", Value::Float(f[2])),
+    ];
+    if f[3] != 0.0 {
+        pairs.extend([("f2", Value::Float(f[3])), ("sabsh2_mm_s", Value::Float(f[4]))]);
+    }
+    if s.memory[0] != 0.0 {
+        pairs.extend([("memory_mm", Value::Float(s.memory[0])), ("memory_s0_mm_s", Value::Float(s.memory[1]))]);
+    }
+    Some(table(pairs))
+}
+
 fn table(pairs: Vec<(&str, Value)>) -> Value {
     Value::Table(pairs.into_iter().map(|(k, v)| (k.to_string(), v)).collect())
 }
@@ -325,7 +398,13 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     doc.insert("name".into(), Value::String(name.clone()));
     doc.insert("solvers".into(), Value::Array(vec![Value::String("contact".into())]));
     // The contact, its geometry and grid.
-    let mut contact = vec![("fn_n", Value::Float(rows[0][3])), ("mu", Value::Float(rows[0][4]))];
+    let mut contact = vec![("fn_n", Value::Float(rows[0][3]))];
+    match friction_table(s) {
+        Some(f) => {
+            doc.insert("friction".into(), f);
+        }
+        None => contact.push(("mu", Value::Float(rows[0][4]))),
+    }
     let (mx, my) = s.potcon.as_ref().map_or((0, 0), Potcon::mx_my);
     let mut grid = vec![("mx", Value::Integer(mx as i64)), ("my", Value::Integer(my as i64))];
     match &s.potcon {
@@ -387,6 +466,20 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     doc.insert("grid".into(), table(grid));
     // The loading.
     match h.run {
+        Run::Sweep if speeds(cases, h).is_some() => {
+            let at = speeds(cases, h).unwrap_or_default();
+            let mut cr = vec![
+                ("kind", Value::String("sweep".into())),
+                ("over", Value::String("v_mm_s".into())),
+                ("at", floats(&at)),
+            ];
+            for (j, key) in ["cx", "cy", "cs"].iter().enumerate() {
+                if rows[0][j].to_bits() != 0 {
+                    cr.push((key, Value::Float(rows[0][j])));
+                }
+            }
+            doc.insert("creepage".into(), table(cr));
+        }
         Run::Sweep => {
             let points: Vec<[f64; 3]> = rows.iter().map(|r| [r[0], r[1], r[2]]).collect();
             let Sweep { param: k, direction, constants, t } =
@@ -410,11 +503,18 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
             let varies = |j: usize| rows.iter().any(|r| r[j].to_bits() != rows[0][j].to_bits());
             let columns: Vec<usize> = (0..5).filter(|&j| j == 0 || varies(j)).collect();
             let names = ["cx", "cy", "cs", "fn_n", "mu"];
-            let mut csv = format!("t_s,{}\n", columns.iter().map(|&j| names[j]).collect::<Vec<_>>().join(","));
-            for (n, r) in rows.iter().enumerate() {
-                let step = if steady_start { n } else { n + 1 };
-                let values: Vec<String> = columns.iter().map(|&j| format!("{:?}", r[j])).collect();
-                let _ = writeln!(csv, "{:?},{}", step as f64 * dt_s, values.join(","));
+            let speed_column = if speeds(cases, h).is_some() { ",v_mm_s" } else { "" };
+            let mut csv =
+                format!("t_s,{}{speed_column}\n", columns.iter().map(|&j| names[j]).collect::<Vec<_>>().join(","));
+            match speeds(cases, h) {
+                Some(v) => speed_rows(&mut csv, &rows, &columns, &v, s.dq_mm, steady_start),
+                None => {
+                    for (n, r) in rows.iter().enumerate() {
+                        let step = if steady_start { n } else { n + 1 };
+                        let values: Vec<String> = columns.iter().map(|&j| format!("{:?}", r[j])).collect();
+                        let _ = writeln!(csv, "{:?},{}", step as f64 * dt_s, values.join(","));
+                    }
+                }
             }
             let file_name = format!("{name}_table.csv");
             let mut cr = vec![("kind", Value::String("table".into())), ("file", Value::String(file_name.clone()))];
