@@ -107,7 +107,7 @@ fn bad_friction_input_is_refused_naming_the_field() {
         assert!(err.contains(field), "{field}: {err}");
     }
     // A falling law with a model that does not take one.
-    let scene = Scene::from_toml(&base.replace("[\"contact\"]", "[\"contact\", \"linear\"]"), Path::new(".")).unwrap();
+    let scene = Scene::from_toml(&base.replace("\"polach\"]", "\"polach\", \"linear\"]"), Path::new(".")).unwrap();
     let err = creepbench::pipeline::resolve(&scene).expect_err("linear refuses").to_string();
     assert!(err.contains("solvers") && err.contains("linear") && err.contains("contact"), "{err}");
     // contact.mu given equal to the static value fkin + f1 + f2 is accepted.
