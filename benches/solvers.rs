@@ -278,9 +278,32 @@ fn bench_falling_friction(c: &mut Criterion) {
     g.finish();
 }
 
+/// Issue 32, item 6: the exact solver's whole step history with the total force prescribed
+/// (CONTACT F = 1: `fx_over_fn` in place of `c`) against its creepage-prescribed twin, per
+/// element-step: `step_cx001` (22×22, 44 steps), the force being the twin's last fx/fn. Target:
+/// at most a few times the twin's time. Measured (2026-11-25, idle 2-core machine): 33.2 ms
+/// against 11.1 ms, 3.0×.
+fn bench_prescribed_force(c: &mut Criterion) {
+    let creepage = thesis_text("step_cx001").replace(
+        "solvers = [\"uba\", \"fastsim\", \"contact\", \"linear\", \"she\", \"polach\", \"fastrip\", \"relaxation\"]",
+        "solvers = [\"contact\"]",
+    );
+    let resolve = |text: &str| creepbench::pipeline::resolve(&Scene::from_toml(text, Path::new(".")).unwrap()).unwrap();
+    let twin = resolve(&creepage);
+    let run = |p: &Problem| sample_loop::run(p, &creepbench::solvers::contact::MODEL, &[], None).unwrap().history;
+    let fx_over_fn = run(&twin).rows.last().unwrap().fx_over_fn;
+    let force = resolve(&creepage.replace("c = 0.001\n", &format!("fx_over_fn = {fx_over_fn:?}\n")));
+    let mut g = c.benchmark_group("contact_prescribed_force");
+    for (name, p) in [("creepage", &twin), ("force", &force)] {
+        g.throughput(Throughput::Elements((p.loading.rows().count() * p.grid.len()) as u64));
+        g.bench_function(BenchmarkId::new("step_cx001", name), |b| b.iter(|| run(p).rows.len()));
+    }
+    g.finish();
+}
+
 criterion_group! {
     name = contact;
     config = Criterion::default().sample_size(10);
-    targets = bench_contact, bench_steady_combined, bench_contact_shape, bench_falling_friction
+    targets = bench_contact, bench_steady_combined, bench_contact_shape, bench_falling_friction, bench_prescribed_force
 }
 criterion_main!(benches, contact);
