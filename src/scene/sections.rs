@@ -5,7 +5,8 @@
 use super::reader::{Deferred, Range, Section};
 use super::{
     is_valid_name, table, ContactSolverOptions, Creepage, ExternalSolver, InitKind, InitialSlip, Limits, MaterialSpec,
-    ModelOptions, Motion, SteadyRestart, CREEPAGE_LIMIT, FINITE, GRID_SCALE, HARD_MAX_STEPS, MAX_ELEMENTS_PER_AXIS, SPIN_LIMIT,
+    ModelOptions, Motion, SteadyRestart, CREEPAGE_LIMIT, FINITE, GRID_SCALE, HARD_MAX_STEPS, MAX_ELEMENTS_PER_AXIS,
+    SPIN_LIMIT,
 };
 use crate::error::InputError;
 use crate::physics::geometry::{Extent, GeometrySpec};

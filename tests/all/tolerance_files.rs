@@ -97,10 +97,7 @@ fn suite_folders_tolerance_files_are_sources() {
 fn every_default_rule_decides_a_comparison_of_the_shipped_suites_or_is_a_catch_all() {
     let golden = root().join("golden");
     let names = results::scene_names(&golden);
-    let suites: Vec<PathBuf> = suite::DEFAULT_SUITES
-        .iter()
-        .map(|s| root().join(s))
-        .collect();
+    let suites: Vec<PathBuf> = suite::DEFAULT_SUITES.iter().map(|s| root().join(s)).collect();
     let mut shipped = suite::scene_names(&suites).unwrap();
     shipped.sort();
     assert_eq!(names, shipped, "golden/ holds exactly the shipped suites' scenes");

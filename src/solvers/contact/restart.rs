@@ -101,7 +101,18 @@ mod tests {
     }
 
     fn sample(mu: f64) -> Sample {
-        Sample { step: 1, t_s: 0.0, cx: 0.003, cy: 0.0, cs: 0.0, fn_n: 1.0, mu, v_mm_s: None, fx_target: None, fy_target: None }
+        Sample {
+            step: 1,
+            t_s: 0.0,
+            cx: 0.003,
+            cy: 0.0,
+            cs: 0.0,
+            fn_n: 1.0,
+            mu,
+            v_mm_s: None,
+            fx_target: None,
+            fy_target: None,
+        }
     }
 
     #[test]
