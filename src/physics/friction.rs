@@ -205,17 +205,16 @@ mod tests {
         FrictionLaw::Exponential(FallingTerms { fkin: 0.25, f1: 0.2, sabsh1_mm_s: 600.0, f2: 0.0, sabsh2_mm_s: 0.0 })
     }
 
+    /// The rational law of reference/contact_friction (RAT: FSTAT 0.45).
+    fn rat() -> FrictionLaw {
+        FrictionLaw::Rational(FallingTerms { fkin: 0.22, f1: 0.15, sabsh1_mm_s: 400.0, f2: 0.08, sabsh2_mm_s: 2500.0 })
+    }
+
     #[test]
     fn static_values_are_fkin_plus_terms() {
         assert_eq!(exp().mu_static(), 0.45);
         assert_eq!(FrictionLaw::Coulomb { mu: 0.3 }.mu_static(), 0.3);
-        let rat = FrictionLaw::Rational(FallingTerms {
-            fkin: 0.22,
-            f1: 0.15,
-            sabsh1_mm_s: 400.0,
-            f2: 0.08,
-            sabsh2_mm_s: 2500.0,
-        });
+        let rat = rat();
         assert!((rat.mu_static() - 0.45).abs() < 1e-15);
         assert!((rat.mu_steady(0.0) - 0.45).abs() < 1e-15);
     }
@@ -239,13 +238,7 @@ mod tests {
 
     #[test]
     fn rational_by_hand() {
-        let rat = FrictionLaw::Rational(FallingTerms {
-            fkin: 0.22,
-            f1: 0.15,
-            sabsh1_mm_s: 400.0,
-            f2: 0.08,
-            sabsh2_mm_s: 2500.0,
-        });
+        let rat = rat();
         // s = 400: 0.22 + 0.15/2 + 0.08/(1 + 0.0256) = 0.295 + 0.078003120124805
         assert!((rat.mu_steady(400.0) - (0.295 + 0.08 / 1.0256)).abs() < 1e-15);
         // s = 2500: 0.22 + 0.15/7.25 + 0.08/2
