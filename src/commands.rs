@@ -119,8 +119,26 @@ fn load_references(reference: &Path) -> Result<References, Error> {
     Ok(refs)
 }
 
+/// How a command runs a suite's scenes: one shard (none: all), with a progress bar or not, and
+/// the models its caller runs in this process beside the built-in and external ones
+/// ([`pipeline::InProcess`]: the Python package's callables; none from the command line).
+#[derive(Clone, Copy, Default)]
+pub struct Runner<'a> {
+    pub shard: Option<Shard>,
+    pub progress: bool,
+    pub in_process: &'a [pipeline::InProcess<'a>],
+}
+
+impl Runner<'_> {
+    /// The command line's runner: no in-process model.
+    pub fn cli(shard: Option<Shard>, progress: bool) -> Self {
+        Runner { shard, progress, in_process: &[] }
+    }
+}
+
 /// Run a suite (or one shard) and return its results as stored scenes.
-fn run_suite(suite_dir: &[PathBuf], shard: Option<Shard>, progress: bool) -> Result<Vec<StoredScene>, Error> {
+fn run_suite(suite_dir: &[PathBuf], runner: Runner) -> Result<Vec<StoredScene>, Error> {
+    let Runner { shard, progress, in_process } = runner;
     let files = suite::scene_files(suite_dir, shard)?;
     if files.is_empty() {
         let dirs: Vec<String> = suite_dir.iter().map(|d| d.display().to_string()).collect();
@@ -132,7 +150,7 @@ fn run_suite(suite_dir: &[PathBuf], shard: Option<Shard>, progress: bool) -> Res
         .into());
     }
     let start = Instant::now();
-    let results = suite::run(&files, progress)?;
+    let results = suite::run_with(&files, progress, in_process)?;
     eprintln!("ran {} scene(s) in {:.2} s", results.len(), start.elapsed().as_secs_f64());
     Ok(results.iter().map(StoredScene::from_result).collect())
 }
@@ -147,18 +165,19 @@ pub fn build_report(
     fits: &[FitRecord],
     missing: Vec<Finding>,
 ) -> Result<PathBuf, Error> {
-    report_with_verdict(scenes, refs, out, (golden, rules), fits, missing).map(|(md, _)| md)
+    report_with_findings(scenes, refs, out, (golden, rules), fits, missing).map(|(md, ..)| md)
 }
 
-/// [`build_report`], also returning the gates' verdict over the report's findings.
-fn report_with_verdict(
+/// [`build_report`], also returning the report's findings (the run's tolerance files applied)
+/// and the rules that loosened a default gate.
+fn report_with_findings(
     scenes: &[StoredScene],
     refs: &References,
     out: &Path,
     (golden, rules): (Option<&Path>, &[Rule]),
     fits: &[FitRecord],
     missing: Vec<Finding>,
-) -> Result<(PathBuf, Verdict), Error> {
+) -> Result<(PathBuf, Vec<Finding>, Vec<Loosening>), Error> {
     let mut findings = compare::evaluate(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
     findings.extend(missing);
     let loosened = tolerance_file::apply(rules, &mut findings, |_| false)?;
@@ -178,7 +197,7 @@ fn report_with_verdict(
     std::fs::create_dir_all(out).map_err(Error::io(out))?;
     report.write(out)?;
     table::write(out, &table::rows(scenes, &findings)).map_err(Error::io(out.join("results.csv")))?;
-    Ok((out.join("validation.md"), Verdict::of(&findings)))
+    Ok((out.join("validation.md"), findings, loosened))
 }
 
 /// Where `creepbench run` writes: the result folders, the report, and the fits it runs.
@@ -187,6 +206,19 @@ pub struct RunOutputs<'a> {
     pub report_dir: &'a Path,
     /// The folder of fit files run after the suites (none: no fits).
     pub fits: Option<&'a Path>,
+}
+
+/// What [`run_with`] made: the result folder, the report (none for a shard), the report's
+/// findings with the rules of the run's files that loosened a default gate, and the histories
+/// flagged as oscillating.
+#[derive(Debug, Clone)]
+pub struct RunOutcome {
+    pub results_dir: PathBuf,
+    /// validation.md.
+    pub report: Option<PathBuf>,
+    pub findings: Vec<Finding>,
+    pub loosened: Vec<Loosening>,
+    pub oscillating: Vec<String>,
 }
 
 /// `creepbench run`: the suites → result folders, then the report from those results; ends with
@@ -199,7 +231,29 @@ pub fn run(
     golden: &Path,
     progress: bool,
 ) -> Result<(), Error> {
+    let outcome = run_with(suite_dir, reference, outputs, Runner::cli(shard, progress), golden)?;
+    let Some(md) = outcome.report else {
+        eprintln!("shard done; build the report with `creepbench merge {} ...`", outcome.results_dir.display());
+        return Ok(());
+    };
+    println!("gates: {}", Verdict::of(&outcome.findings));
+    for line in &outcome.oscillating {
+        println!("{line}");
+    }
+    println!("report: {}", md.display());
+    Ok(())
+}
+
+/// [`run`] without printing its outcome; `runner` also gives the models run in this process.
+pub fn run_with(
+    suite_dir: &[PathBuf],
+    reference: &Path,
+    outputs: RunOutputs,
+    runner: Runner,
+    golden: &Path,
+) -> Result<RunOutcome, Error> {
     let RunOutputs { results_dir, report_dir, fits } = outputs;
+    let shard = runner.shard;
     guard::guard_output_dir(results_dir, golden)?;
     guard::guard_output_dir(report_dir, golden)?;
     // No scene's result folder may be another output's folder: refused before anything runs.
@@ -213,15 +267,21 @@ pub fn run(
     let refs = load_references(reference)?;
     // Fit files validated before any scene runs: a bad --fits writes nothing.
     let fit_specs = fits.map(load_fit_specs).transpose()?;
-    let scenes = run_suite(suite_dir, shard, progress)?;
+    let scenes = run_suite(suite_dir, runner)?;
     std::fs::create_dir_all(results_dir).map_err(Error::io(results_dir))?;
     // Runs into one folder take turns rather than fail on each other's half-written scenes.
     let _lock = lock::lock_folder(results_dir, lock::DEFAULT_LOCK_WAIT)?;
     results::write_scenes(results_dir, &scenes, true)?;
     eprintln!("results in {}", results_dir.display());
+    let mut outcome = RunOutcome {
+        results_dir: results_dir.to_path_buf(),
+        report: None,
+        findings: Vec::new(),
+        loosened: Vec::new(),
+        oscillating: Vec::new(),
+    };
     if shard.is_some() {
-        eprintln!("shard done; build the report with `creepbench merge {} ...`", results_dir.display());
-        return Ok(());
+        return Ok(outcome);
     }
     if let Some(specs) = fit_specs {
         run_fits(&specs, &refs, results_dir, (&scenes, &suite::scene_files(suite_dir, None)?))?;
@@ -229,13 +289,13 @@ pub fn run(
     let stored = read_results(&[results_dir.to_path_buf()])?;
     let rules = file_rules(&[], suite_dir)?;
     let records = read_fit_records(&[results_dir.to_path_buf()])?;
-    let (md, verdict) = report_with_verdict(&stored, &refs, report_dir, (Some(golden), &rules), &records, Vec::new())?;
-    println!("gates: {verdict}");
-    for line in console::oscillating(&stored, false) {
-        println!("{line}");
-    }
-    println!("report: {}", md.display());
-    Ok(())
+    let (md, findings, loosened) =
+        report_with_findings(&stored, &refs, report_dir, (Some(golden), &rules), &records, Vec::new())?;
+    outcome.report = Some(md);
+    outcome.findings = findings;
+    outcome.loosened = loosened;
+    outcome.oscillating = console::oscillating(&stored, false);
+    Ok(outcome)
 }
 
 /// The folders a report writes beside validation.md.
@@ -390,8 +450,8 @@ pub fn merge(
         eprintln!("MISSING scene {}: {}", f.scene, crate::comparison::gate_output::describe(f));
     }
     let fits = read_fit_records(dirs)?;
-    let (md, verdict) = report_with_verdict(&scenes, &refs, report_dir, (Some(golden), &rules), &fits, missing)?;
-    println!("gates: {verdict}");
+    let (md, findings, _) = report_with_findings(&scenes, &refs, report_dir, (Some(golden), &rules), &fits, missing)?;
+    println!("gates: {}", Verdict::of(&findings));
     println!("report: {}", md.display());
     if n_missing > 0 {
         return Err(Error::Drift { count: n_missing });
@@ -496,6 +556,19 @@ pub fn gate(
     progress: bool,
     files: &GateFiles,
 ) -> Result<Gate, Error> {
+    gate_with(suite_dir, reference, (golden, against), Runner::cli(shard, progress), files)
+}
+
+/// [`gate`], `runner` also giving the models run in this process; `against` (a folder of
+/// earlier results) replaces `golden` as the baseline when given.
+pub fn gate_with(
+    suite_dir: &[PathBuf],
+    reference: &Path,
+    (golden, against): (&Path, Option<&Path>),
+    runner: Runner,
+    files: &GateFiles,
+) -> Result<Gate, Error> {
+    let shard = runner.shard;
     files.check_paths(golden)?;
     let refs = load_references(reference)?;
     let rules = file_rules(&files.tolerances, suite_dir)?;
@@ -509,7 +582,7 @@ pub fn gate(
         return Err(InputError::new(key, dir.display(), what).into());
     }
     let baseline = (dir, kind);
-    let scenes = run_suite(suite_dir, shard, progress)?;
+    let scenes = run_suite(suite_dir, runner)?;
     let mut all = compare::evaluate(&scenes, &refs, Some(baseline))?;
     let suites = suite_names(suite_dir);
     let expected = |name: &str, suite: &str| shard.is_none_or(|s| s.takes(name)) && suites.iter().any(|x| x == suite);
@@ -599,7 +672,7 @@ fn print_list(head: &str, lines: &[String]) {
 /// golden/). All or nothing: the new tree is built beside the old one — this run's scenes plus
 /// the blessed scenes of other suites and shards — and swapped in with one atomic exchange.
 pub fn bless(suite_dir: &[PathBuf], golden: &Path, shard: Option<Shard>, progress: bool) -> Result<(), Error> {
-    let scenes = run_suite(suite_dir, shard, progress)?;
+    let scenes = run_suite(suite_dir, Runner::cli(shard, progress))?;
     let suites = suite_names(suite_dir);
     // One writer of golden/ at a time; what it keeps is read under the lock, so that concurrent
     // blesses of other suites or shards all land.

@@ -13,6 +13,8 @@ Model = Callable[[Dict[str, Any]], Any]
 
 DEFAULT_MATERIAL: Dict[str, float]
 DEFAULT_ROLLING: Dict[str, float]
+STEADY_CHUNK_ROWS: int
+"""Rows per chunk of ``steady`` (fixed: the result is the same with any thread count)."""
 
 class SceneError(ValueError):
     """Invalid input (a scene key, an argument): exactly the CLI's message."""
@@ -63,6 +65,25 @@ class Verdict:
     def __bool__(self) -> bool: ...
     def to_frame(self) -> pl.DataFrame: ...
 
+class RunReport:
+    """What ``run`` made; ``bool(report)`` is ``report.passed``."""
+
+    results: str
+    """The folder of the result folders."""
+    report: str
+    """The path of validation.md."""
+    verdict: Verdict
+    oscillating: List[str]
+    @property
+    def passed(self) -> bool: ...
+    @property
+    def failed(self) -> int: ...
+    @property
+    def findings(self) -> List[Finding]: ...
+    @property
+    def failures(self) -> List[Finding]: ...
+    def __bool__(self) -> bool: ...
+
 class Simulation:
     """One scene's results, as ``creepbench simulate`` writes them."""
 
@@ -105,8 +126,21 @@ def check(
     against: Optional[_Path] = None,
     tolerances: Sequence[_Path] = (),
     strict: bool = False,
+    models: Optional[Mapping[str, Model]] = None,
 ) -> Verdict:
-    """Run suites through the gate as ``creepbench check`` does."""
+    """Run suites through the gate as ``creepbench check`` does (``models``: in-process models where a scene lists them)."""
+
+def run(
+    suite: Union[_Path, Sequence[_Path]] = "scenes/thesis",
+    *,
+    results: _Path = "out/results",
+    report: _Path = "out/report",
+    reference: _Path = "reference",
+    golden: _Path = "golden",
+    fits: Optional[_Path] = None,
+    models: Optional[Mapping[str, Model]] = None,
+) -> RunReport:
+    """Run suites as ``creepbench run`` does: result folders, the report and the gates' verdict."""
 
 def steady(
     model: str,
@@ -117,7 +151,7 @@ def steady(
     material: Optional[Mapping[str, float]] = None,
     model_options: Optional[Mapping[str, Any]] = None,
 ) -> npt.NDArray[np.float64]:
-    """(N, 3) creepages (cx, cy, cs [1/mm]) -> (N, 3) fx/fn, fy/fn, mz [N*mm]; in Rust, in parallel, without the GIL."""
+    """(N, 3) creepages (cx, cy, cs [1/mm]) -> (N, 3) fx/fn, fy/fn, mz [N*mm]; in Rust, in parallel (fixed chunks of STEADY_CHUNK_ROWS rows), without the GIL."""
 
 class Stepper:
     """A built-in model stepped one time step at a time."""

@@ -20,6 +20,8 @@ fn _creepbench(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("CreepbenchError", py.get_type::<errors::CreepbenchError>())?;
     m.add_function(wrap_pyfunction!(simulate::simulate, m)?)?;
     m.add_function(wrap_pyfunction!(gate::check, m)?)?;
+    m.add_function(wrap_pyfunction!(gate::run, m)?)?;
+    m.add("STEADY_CHUNK_ROWS", steady::CHUNK_ROWS)?;
     m.add_function(wrap_pyfunction!(steady::steady, m)?)?;
     m.add_function(wrap_pyfunction!(steady::model_names, m)?)?;
     m.add_class::<simulate::Simulation>()?;

@@ -5,12 +5,21 @@
 
 use creepbench::history::external::ExternalError;
 use creepbench::history::History;
+use creepbench::pipeline::InProcess;
 use creepbench::problem::{Problem, ResolvedScene};
 use creepbench::Error;
 use numpy::PyReadonlyArray1;
 use pyo3::prelude::*;
 use std::fmt::Write;
 use std::path::PathBuf;
+
+/// Python callables `(name, callable)` as the library's in-process models, given to `f`.
+pub fn with_in_process<R>(models: &[(String, Py<PyAny>)], f: impl FnOnce(&[InProcess]) -> R) -> R {
+    let calls: Vec<_> = models.iter().map(|(name, c)| (name.as_str(), move |p: &Problem| call(c, name, p))).collect();
+    let in_process: Vec<InProcess> =
+        calls.iter().map(|(n, c)| (*n, c as &(dyn Fn(&Problem) -> Result<History, Error> + Sync))).collect();
+    f(&in_process)
+}
 
 /// Call the model `name` (the Python wrapper's adapter around the user's callable, which returns
 /// `(column names, one float64 array per column)`) on the problem.

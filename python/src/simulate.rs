@@ -6,8 +6,7 @@ use creepbench::comparison::compare::{self, Against};
 use creepbench::comparison::references::References;
 use creepbench::comparison::tolerance_file;
 use creepbench::history::sample_loop;
-use creepbench::history::History;
-use creepbench::pipeline::{self, InProcess};
+use creepbench::pipeline;
 use creepbench::problem::Problem;
 use creepbench::safety::lock;
 use creepbench::solvers;
@@ -50,12 +49,8 @@ pub fn simulate(
 }
 
 fn run_one(problem: Problem, models: &[(String, Py<PyAny>)], fields: bool) -> Result<Simulation, Error> {
-    let calls: Vec<_> =
-        models.iter().map(|(name, f)| (name.as_str(), move |p: &Problem| model::call(f, name, p))).collect();
-    let in_process: Vec<InProcess> =
-        calls.iter().map(|(n, f)| (*n, f as &(dyn Fn(&Problem) -> Result<History, Error> + Sync))).collect();
     let order = problem.solvers.clone();
-    let result = pipeline::run_with(problem, &in_process)?;
+    let result = model::with_in_process(models, |in_process| pipeline::run_with(problem, in_process))?;
     let p = &result.problem;
     let mut kept = Vec::new();
     if fields {

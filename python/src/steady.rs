@@ -1,5 +1,5 @@
 //! `steady`: a built-in model's steady forces and moment for many creepages in one call, in
-//! parallel (rayon, one stepper per contiguous chunk) with the GIL released.
+//! parallel (rayon, one stepper per fixed chunk of consecutive rows) with the GIL released.
 
 use crate::errors;
 use creepbench::pipeline;
@@ -65,11 +65,17 @@ pub fn steady<'py>(
     Ok(array.into_pyarray(py))
 }
 
-/// The steady solves, one stepper per chunk of rows (as many chunks as rayon has threads), each
-/// loaded at the problem's first sample as the sample loop does.
+/// Rows per chunk of [`evaluate`]: a fixed number, whatever the thread count, so the result is
+/// the same bit for bit with one thread or many and from run to run. A model whose steady solve
+/// starts from its previous solution (the exact solver) gives within a chunk the CLI's sweep
+/// over those rows bit for bit; at each chunk's first row it starts as the sweep's first point.
+pub const CHUNK_ROWS: usize = 256;
+
+/// The steady solves, one stepper per chunk of [`CHUNK_ROWS`] consecutive rows (the chunks run
+/// in parallel), each loaded at the problem's first sample as the sample loop does.
 fn evaluate(problem: &Problem, def: &ModelDef, rows: &[[f64; 3]]) -> Result<Vec<f64>, SolveError> {
     let mut out = vec![0.0; rows.len() * 3];
-    let chunk = rows.len().div_ceil(rayon::current_num_threads()).max(1);
+    let chunk = CHUNK_ROWS;
     let first = *problem.loading.first();
     out.par_chunks_mut(chunk * 3).zip(rows.par_chunks(chunk)).enumerate().try_for_each(|(k, (out, rows))| {
         let mut stepper = (def.build)(problem)?;

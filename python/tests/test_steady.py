@@ -33,15 +33,51 @@ def test_steady_equals_the_sweep_scene_bit_for_bit(model):
         assert np.array_equal(bits(out[:, k]), bits(h[col].to_numpy())), col
 
 
-def test_steady_of_the_exact_solver_matches_its_sweep():
-    sim = creepbench.simulate(sweep_scene(["contact"], points=6))
-    h = sim.histories["contact"]
+def test_steady_of_the_exact_solver_is_its_sweep_within_a_chunk():
+    # Each solve starts from the previous row's solution, as the CLI's sweep does: the first
+    # chunk is the sweep bit for bit, the next chunk starts afresh (docstring of steady()).
+    n = creepbench.STEADY_CHUNK_ROWS
+    assert n == 256
+    h = creepbench.simulate(sweep_scene(["contact"], points=n + 44)).histories["contact"]
     out = creepbench.steady(
         "contact", h.select("cx", "cy", "cs").to_numpy(), contact=CONTACT, grid=GRID, model_options=THESIS_MODEL
     )
-    # Its iterations start from the previous solution (another chunk order, another start):
-    # the same steady state to the solver's tolerance.
-    np.testing.assert_allclose(out[:, 0], h["fx_over_fn"].to_numpy(), rtol=0, atol=1e-6)
+    for k, col in enumerate(["fx_over_fn", "fy_over_fn", "mz_nmm"]):
+        sweep = h[col].to_numpy()
+        assert np.array_equal(bits(out[:n, k]), bits(sweep[:n])), col
+        # After the chunk's fresh start: the same steady state to the solver's tolerance, 1e-9
+        # in fx/fn, fy/fn and in mz / (mu fn a) (measured 6e-11 in fx/fn, 3e-7 N mm in mz).
+        bound = 1e-9 * (CONTACT["mu"] * CONTACT["fn_n"] * CONTACT["a_mm"] if col == "mz_nmm" else 1.0)
+        assert np.abs(out[n:, k] - sweep[n:]).max() <= bound, col
+
+
+THREADS_SCRIPT = """
+import sys, numpy as np, creepbench
+sys.path.insert(0, "python/tests")
+from conftest import CONTACT, GRID, THESIS_MODEL
+rng = np.random.default_rng(11)
+c = np.column_stack([rng.uniform(-0.01, 0.01, 3000), rng.uniform(-0.01, 0.01, 3000), rng.uniform(-1e-3, 1e-3, 3000)])
+out = [creepbench.steady(m, c[: (600 if m == "contact" else 3000)], contact=CONTACT, grid=GRID,
+                         model_options=THESIS_MODEL) for m in creepbench.model_names()]
+np.save(sys.argv[1], np.concatenate(out))
+"""
+
+
+def test_steady_is_bit_identical_with_any_thread_count(tmp_path):
+    import os
+    import subprocess
+    import sys
+
+    runs = {}
+    for threads in (1, 3):
+        out = tmp_path / f"threads{threads}.npy"
+        env = dict(os.environ, RAYON_NUM_THREADS=str(threads))
+        run = subprocess.run([sys.executable, "-c", THREADS_SCRIPT, str(out)], cwd=ROOT, env=env,
+                             capture_output=True, text=True, timeout=600)
+        assert run.returncode == 0, run.stderr
+        runs[threads] = np.load(out)
+    assert runs[1].shape == (600 + 3000 * (len(creepbench.model_names()) - 1), 3)
+    assert np.array_equal(bits(runs[1]), bits(runs[3]))
 
 
 def test_steady_is_the_same_in_one_call_or_many():

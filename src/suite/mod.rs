@@ -1,7 +1,7 @@
 //! A suite: the scene files of a folder, optionally one shard of them, run in parallel.
 
 use crate::error::{Error, InputError};
-use crate::pipeline::{self, SceneResult};
+use crate::pipeline::{self, InProcess, SceneResult};
 use crate::problem::Problem;
 pub mod results;
 
@@ -155,7 +155,14 @@ pub fn scene_names(dirs: &[PathBuf]) -> Result<Vec<String>, Error> {
 /// Validate every scene first (bad input stops the run before anything is computed), then run
 /// them in parallel. The results come back in the files' order whatever the thread count.
 pub fn run(files: &[SceneSource], progress: bool) -> Result<Vec<SceneResult>, Error> {
-    let problems = files.iter().map(|f| pipeline::load_source(f, &[])).collect::<Result<Vec<_>, _>>()?;
+    run_with(files, progress, &[])
+}
+
+/// [`run`], where a scene may also list the models `in_process` (run in this process,
+/// [`pipeline::InProcess`]) in its `solvers`.
+pub fn run_with(files: &[SceneSource], progress: bool, in_process: &[InProcess]) -> Result<Vec<SceneResult>, Error> {
+    let names: Vec<String> = in_process.iter().map(|(n, _)| n.to_string()).collect();
+    let problems = files.iter().map(|f| pipeline::load_source_with(f, &[], &names)).collect::<Result<Vec<_>, _>>()?;
     // Two scenes of one name would write one result folder: refuse before anything runs.
     let mut seen: std::collections::HashMap<&str, usize> = std::collections::HashMap::new();
     for (i, p) in problems.iter().enumerate() {
@@ -188,7 +195,7 @@ pub fn run(files: &[SceneSource], progress: bool) -> Result<Vec<SceneResult>, Er
         .into_iter()
         .par_bridge()
         .map(|(_, i, p)| {
-            let r = pipeline::run(p);
+            let r = pipeline::run_with(p, in_process);
             bar.inc(1);
             (i, r)
         })

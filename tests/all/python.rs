@@ -2,7 +2,9 @@
 //! python/requirements-test.txt installed from PyPI (made once, kept while that file is
 //! unchanged), the package built as an abi3 wheel by maturin (in target/python, its own cargo
 //! target folder, kept between runs) and installed, then pytest on python/tests (the bindings
-//! against the CLI bit for bit, the array API, the errors, the in-process model, the example).
+//! against the CLI bit for bit — simulate, check and run —, the array API with one thread and
+//! several, the errors, the in-process model on a scene and in suites, pandas frames, the
+//! examples).
 //! Every step has a timeout; a missing python3 fails with what to install.
 
 use crate::common::root;
