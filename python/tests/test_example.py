@@ -24,6 +24,11 @@ def test_the_example_draws_every_model_and_gates_a_modified_one(tmp_path):
     assert "unmodified model against its baseline: PASS" in run.stdout
     assert "modified model (k = 0.8) against it: FAIL" in run.stdout
     assert (tmp_path / "baseline" / "steady_fastsim_g22" / "fastsim_k.csv").exists()
+    # The suite run: the report lists the Python model's rows beside FASTSIM's.
+    assert f"report: {tmp_path / 'report' / 'validation.md'}" in run.stdout
+    rows = pl.read_csv(tmp_path / "report" / "results.csv")
+    assert set(rows["solver"]) == {"fastsim", "fastsim_k"}
+    assert (tmp_path / "results" / "steady_fastsim_g22" / "fastsim_k.csv").exists()
 
 
 def test_the_speed_script_runs():
