@@ -33,7 +33,9 @@ def test_run_is_the_cli_run(tmp_path):
     cli = run_cli("run", "--suite", suite, "--results", tmp_path / "cli_res", "--report", tmp_path / "cli_rep",
                   "--golden", none, "--quiet")
     assert cli.returncode == 0, cli.stderr
-    rep = creepbench.run(suite, results=tmp_path / "res", report=tmp_path / "rep", golden=none)
+    # A model given but listed by no scene changes nothing.
+    rep = creepbench.run(suite, results=tmp_path / "res", report=tmp_path / "rep", golden=none,
+                         models={"mine": fastsim_as_python()})
     assert isinstance(rep, creepbench.RunReport)
     assert rep.report == str(tmp_path / "rep" / "validation.md") and rep.results == str(tmp_path / "res")
     gates = next(line for line in cli.stdout.splitlines() if line.startswith("gates: "))
