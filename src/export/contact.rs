@@ -31,8 +31,6 @@ use std::fmt::Write;
 const PER_LINE: usize = 6;
 /// A relative change of μ below this between two cases is rounding, not a new friction.
 const MU_CHANGE_REL: f64 = 1e-9;
-/// CONTACT's relaxation of the slip-velocity iteration (OMGSLP; its default, `m_stang.f90` 585-592).
-const OMGSLP: f64 = 0.5;
 /// SABSH2 written for a second term that is absent (F2 = 0): any positive value gives the same
 /// law; CONTACT's own inputs use 1000 mm/s.
 const SABSH2_UNUSED_MM_S: f64 = 1000.0;
@@ -89,8 +87,9 @@ pub fn module3_input(p: &Problem) -> String {
         if falling {
             let _ = writeln!(
                 out,
-                "   {}   {OMGSLP:?}                                INISLP, OMGSLP",
-                inislp(p.contact_solver.inislp)
+                "   {}   {:?}                                INISLP, OMGSLP",
+                inislp(p.contact_solver.inislp),
+                p.contact_solver.omgslp
             );
         }
         // CONTACT's FXREL, FYREL: the force over FSTAT·FN, its sign flipped (fx = −FX/FN here).

@@ -27,12 +27,17 @@ pub fn applies(scenes: &[StoredScene]) -> bool {
     scenes.iter().any(|s| s.scene.origin.is_some())
 }
 
-/// The worst comparison of each (deck, case) over the stored scenes' exact-solver rows.
+/// The worst gated comparison of each (deck, case) over the stored scenes' exact-solver rows (a
+/// quantity that a rule of `tolerances.toml` only reports is left out of the verdict, as the gate
+/// leaves it).
 fn worst_by_case(scenes: &[StoredScene], public: &PublicCases) -> BTreeMap<(String, usize), RowDiff> {
     let mut out: BTreeMap<(String, usize), RowDiff> = BTreeMap::new();
     for sc in scenes {
         let (Some(origin), Some(h)) = (&sc.scene.origin, sc.histories.get(SOLVER)) else { continue };
         for d in public.row_diffs(sc, h).unwrap_or_default() {
+            if !crate::comparison::tolerances::rule(AGAINST, &sc.name, SOLVER, d.quantity).gated {
+                continue;
+            }
             let key = (origin.file.clone(), d.case);
             if out.get(&key).is_none_or(|w| d.half_units() > w.half_units()) {
                 out.insert(key, d);

@@ -104,6 +104,9 @@ pub struct ContactSolverOptions {
     /// Falling friction: where the slip-velocity fixed point starts (CONTACT's INISLP).
     #[serde(default, skip_serializing_if = "InitialSlip::is_default")]
     pub inislp: InitialSlip,
+    /// Falling friction: the damping of the slip-velocity update (CONTACT's OMGSLP).
+    #[serde(default = "omgslp", skip_serializing_if = "is_omgslp")]
+    pub omgslp: f64,
 }
 
 /// Default `[contact_solver] veldep_tolerance`.
@@ -115,6 +118,17 @@ fn veldep_tolerance() -> f64 {
 
 fn is_veldep_tolerance(v: &f64) -> bool {
     *v == VELDEP_TOLERANCE
+}
+
+/// Default `[contact_solver] omgslp`: CONTACT's default OMGSLP (`m_hierarch_data.f90` line 1749).
+pub const OMGSLP: f64 = 0.5;
+
+fn omgslp() -> f64 {
+    OMGSLP
+}
+
+fn is_omgslp(v: &f64) -> bool {
+    *v == OMGSLP
 }
 
 /// The start of the slip-velocity fixed point with falling friction (`[contact_solver] inislp`,
@@ -167,6 +181,7 @@ impl Default for ContactSolverOptions {
             steady_restart: SteadyRestart::Contact,
             veldep_tolerance: VELDEP_TOLERANCE,
             inislp: InitialSlip::Previous,
+            omgslp: OMGSLP,
         }
     }
 }

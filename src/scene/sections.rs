@@ -468,6 +468,9 @@ pub fn contact_solver(top: &mut Section) -> Result<ContactSolverOptions, InputEr
                 _ => InitialSlip::Previous,
             };
         }
+        if let Some(w) = cs.opt_f64("omgslp", Range::new(0.0, false, 2.0, true))? {
+            contact_solver.omgslp = w;
+        }
         cs.finish()?;
     }
     Ok(contact_solver)

@@ -8,6 +8,7 @@ use common::root;
 use creepbench::export::contact::module3_input;
 use creepbench::import::contact::scene::{import_text, Imported};
 use creepbench::problem::{Problem, ResolvedScene};
+use creepbench::scene::InitialSlip;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -254,6 +255,32 @@ fn carter2d_imports_the_strip_as_a_grid_with_its_quadratic_gap() {
     // IPOTCN = 3 with XC1 = -1.05: element 1 at x = -1.05, h = B1 x² = 0.001 · 1.05².
     let h = r.undeformed_distance_mm.unwrap();
     assert!((h[0] - 0.001 * 1.05 * 1.05).abs() < 1e-18, "{}", h[0]);
+}
+
+/// examples/veldep_fric (issue 32, falling friction of issue 33): the strip's gap IBASE = 2 (circular
+/// in x, pointwise in y) as h per element, the steady case with its transient step (INISLP = 1)
+/// and the steady case with its 50 steps from above (INISLP = −1) as two scenes carrying CONTACT's
+/// slip-velocity iteration (OMGSLP = 1.1, its fixed stop at 1e-3).
+#[test]
+fn veldep_fric_imports_its_circular_gap_and_both_branches() {
+    let deck = root().join("reference/contact_public/examples/veldep_fric.inp");
+    let imported = creepbench::import::contact::import(&deck).unwrap();
+    assert_eq!(split(&imported), ((1..=53).collect::<Vec<_>>(), vec![]));
+    let spans: Vec<[usize; 2]> = imported.scenes.iter().map(|s| s.cases).collect();
+    assert_eq!(spans, vec![[1, 2], [3, 53]]);
+    assert!(imported.statuses[2].notes.iter().any(|n| n.starts_with("INISLP, OMGSLP = (1, 1.1): the steady start")));
+    let solver = |name: &str| scene_of(&imported, name).contact_solver;
+    let (below, above) = (solver("veldep_fric_1"), solver("veldep_fric_3"));
+    assert_eq!((below.inislp, below.omgslp, below.veldep_tolerance), (InitialSlip::Below, 1.1, 1e-3));
+    assert_eq!((above.inislp, above.omgslp, above.veldep_tolerance), (InitialSlip::Above, 1.1, 1e-3));
+    let p = scene_of(&imported, "veldep_fric_3");
+    let r = ResolvedScene::of(&p, &p.solvers);
+    assert_eq!((r.mx, r.my, r.history.len()), (92, 1, 51));
+    // Element k at x = -4.6 + 0.1 (k - 1), y = 0: h = 0 (both heights) + (x - 0)²/(2 · 460).
+    let h = r.undeformed_distance_mm.unwrap();
+    for (k, x) in [(0, -4.6), (46, 0.0), (91, 4.5)] {
+        assert!((h[k] - x * x / 920.0).abs() < 1e-16, "element {k}: {}", h[k]);
+    }
 }
 
 #[test]

@@ -62,13 +62,14 @@ fn the_report_lists_every_case_of_every_deck() {
         [("carter2d.inp", 1), ("cattaneo.inp", 1), ("fastsim.inp", 1), ("testbank.inp", 6), ("testbank.inp", 7)]
             .into_iter()
             .chain((1..=30).map(|c| ("tractcurv.inp", c)))
+            .chain((1..=53).map(|c| ("veldep_fric.inp", c)))
     {
         let row = format!("| {deck} | {case} | reproduced: worst ");
         let line = table.lines().find(|l| l.starts_with(&row)).unwrap_or_else(|| panic!("{row} not reproduced"));
         let worst: f64 = line[row.len()..].split_whitespace().next().unwrap().parse().unwrap();
         assert!(worst <= 2.0, "{line}");
     }
-    assert_eq!(table.lines().filter(|l| l.contains(" | reproduced: ")).count(), 35);
+    assert_eq!(table.lines().filter(|l| l.contains(" | reproduced: ")).count(), 88);
     // A case the importer refuses names what is missing.
     assert!(table.contains("| cattaneo.inp | 2 | not supported: T = 1: shifts"), "{table}");
     assert!(rows >= 500, "{rows} rows");

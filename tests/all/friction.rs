@@ -114,3 +114,30 @@ fn bad_friction_input_is_refused_naming_the_field() {
     let same = base.replace("fn_n = 100000.0\n", "fn_n = 100000.0\nmu = 0.45\n");
     assert_eq!(Scene::from_toml(&same, Path::new(".")).unwrap().mu, 0.45);
 }
+
+/// `[contact_solver] omgslp` (CONTACT's OMGSLP) damps the path of the slip-velocity fixed point,
+/// not the point: `examples/veldep_fric` cases 1-2 as imported (OMGSLP = 1.1, CONTACT's stop at
+/// 1e-3) take CONTACT's printed 6 and 5 iterations; at the default 0.5 the path differs; solved
+/// tightly, both dampings reach the same fixed point.
+#[test]
+fn omgslp_damps_the_path_not_the_fixed_point() {
+    let dir = root().join("scenes/contact_public");
+    let text = std::fs::read_to_string(dir.join("veldep_fric_1.toml")).unwrap();
+    let run_with = |from: &str, to: &str| {
+        assert!(text.contains(from), "{from}");
+        let scene = Scene::from_toml(&text.replace(from, to), &dir).unwrap();
+        run(&creepbench::pipeline::resolve(&scene).unwrap(), "contact")
+    };
+    let iterations = |h: &creepbench::history::History| h.column("veldep_iterations").unwrap();
+    let contact = run_with("omgslp = 1.1", "omgslp = 1.1");
+    assert_eq!(iterations(&contact), vec![6.0, 5.0]);
+    let half = run_with("omgslp = 1.1", "omgslp = 0.5");
+    assert_ne!(iterations(&half), vec![6.0, 5.0]);
+    let tight = |omgslp: &str| {
+        run_with("omgslp = 1.1\nveldep_tolerance = 0.001", &format!("omgslp = {omgslp}\nveldep_tolerance = 1e-9"))
+    };
+    let (a, b) = (f(&tight("1.1")), f(&tight("0.5")));
+    for k in 0..2 {
+        assert!((a[k] - b[k]).abs() < 1e-8, "row {k}: {} vs {}", a[k], b[k]);
+    }
+}

@@ -1,7 +1,8 @@
 //! CONTACT's public examples and test bank (reference/contact_public/, issue 32 item 4): a scene
 //! imported from one of its decks (`[origin]` in scene.json) is compared with the totals CONTACT
 //! printed in the deck's `.ref_out`, read by [`super::contact_output`] (signs converted there).
-//! Step s ≥ 1 of a history is case `first + s − 1` of the deck. Each difference is measured in
+//! Step s ≥ 1 of a history is case `first + s − 1` of the deck (after a steady start, step s is
+//! case `first + s`). Each difference is measured in
 //! half-units of the printed value's last digit (its rounding bound, [`Printed::half_unit`]), so
 //! that one rule per quantity holds for every case: `tolerances.toml` states k per quantity.
 
@@ -90,8 +91,13 @@ impl PublicCases {
     pub fn row_diffs(&self, scene: &StoredScene, h: &History) -> Result<Vec<RowDiff>, String> {
         let Some(origin) = &scene.scene.origin else { return Ok(Vec::new()) };
         let [first, last] = origin.cases;
-        let rows: Vec<_> = h.rows.iter().filter(|r| r.sample.step >= 1).collect();
         let cases: Option<Vec<&Totals>> = (first..=last).map(|c| self.totals(&origin.file, c)).collect();
+        // A transient history after a steady case starts from it: its step 0 is case `first`
+        // (the importer writes one row per case, so it holds one row more than its steps ≥ 1).
+        let stepped = h.rows.iter().filter(|r| r.sample.step >= 1).count();
+        let steady_start = cases.as_ref().is_some_and(|c| c.len() == stepped + 1)
+            && h.rows.first().is_some_and(|r| r.sample.step == 0);
+        let rows: Vec<_> = h.rows.iter().filter(|r| steady_start || r.sample.step >= 1).collect();
         let Some(cases) = cases.filter(|c| c.len() == rows.len()) else {
             return Err(format!(
                 "{} rows of steps ≥ 1, cases {first} to {last} of {}: not one printed case per row",

@@ -65,8 +65,9 @@ impl Potcon {
 pub struct Undeformed {
     pub ibase: i64,
     pub iplan: i64,
-    /// IBASE = 1: B1…B6 of h = B1 x² + B2 x y + B3 y² + B4 x + B5 y + B6; IBASE = 9: h per element
-    /// in CONTACT's order; other IBASE: their values as read.
+    /// IBASE = 1: B1…B6 of h = B1 x² + B2 x y + B3 y² + B4 x + B5 y + B6; IBASE = 2: NN, XM, RX1,
+    /// Y1, DY1 and the NN heights (CONTACT's `prmudf`); IBASE = 9: h per element in CONTACT's
+    /// order; other IBASE: their values as read.
     pub values: Vec<f64>,
 }
 
@@ -99,6 +100,9 @@ pub struct State {
     pub undeformed: Option<Undeformed>,
     /// Whether an extra rigid-slip term is in force (E = 2, 3, 9, or kept by E = 1).
     pub extra_rhs: bool,
+    /// INISLP, OMGSLP of the slip-velocity iteration as last read (G = 2, 3, 4); `None`: CONTACT's
+    /// defaults 0, 0.5 (`m_hierarch_data.f90` lines 1748-1749).
+    pub slip_start: Option<(i64, f64)>,
 }
 
 /// A module-3 case: its digits and the state after it.
@@ -294,7 +298,9 @@ impl CaseReader<'_> {
         if d.x == 1 {
             self.lx.group("debug output P-S-F-L-C-I-N", &[Kind::Int], (1, Kind::Int))?;
         }
-        self.solver(d.g)?;
+        if let Some(start) = self.solver(d.g)? {
+            state.slip_start = Some(start);
+        }
         let (k, _) = self.lx.group("kinematics PEN/FN, CKSI/FX, CETA/FY, CPHI", &[Kind::Real; 4], (2, Kind::Real))?;
         (state.pen_or_fn, state.cksi_or_fx, state.ceta_or_fy, state.cphi_per_mm) = (k[0], k[1], k[2], k[3]);
         state.spin_centre_mm = if k.len() >= 6 { [k[4], k[5]] } else { [0.0, 0.0] };
@@ -362,8 +368,8 @@ impl CaseReader<'_> {
         Ok(d)
     }
 
-    /// G: the iteration constants.
-    fn solver(&mut self, g: u8) -> Result<(), DeckError> {
+    /// G: the iteration constants; INISLP, OMGSLP where G = 2, 3, 4 gives them.
+    fn solver(&mut self, g: u8) -> Result<Option<(i64, f64)>, DeckError> {
         if g != 1 {
             self.lx.group(
                 "MAXGS, MAXIN, MAXNR, MAXOUT, EPS",
@@ -371,24 +377,27 @@ impl CaseReader<'_> {
                 (1, Kind::Int),
             )?;
         }
-        match g {
+        let start = match g {
             2 | 3 => {
-                self.lx.group(
+                let (v, _) = self.lx.group(
                     "OMEGAH, OMEGAS, INISLP, OMGSLP",
                     &[Kind::Real, Kind::Real, Kind::Int, Kind::Real],
                     (0, Kind::Real),
                 )?;
+                Some((v[2] as i64, v[3]))
             }
             4 => {
-                self.lx.group("INISLP, OMGSLP", &[Kind::Int, Kind::Real], (0, Kind::Real))?;
+                let (v, _) = self.lx.group("INISLP, OMGSLP", &[Kind::Int, Kind::Real], (0, Kind::Real))?;
+                Some((v[0] as i64, v[1]))
             }
             5 => {
                 let k = [Kind::Real, Kind::Real, Kind::Int, Kind::Real, Kind::Real, Kind::Real, Kind::Real, Kind::Real];
                 self.lx.group("FDECAY, BETATH, KDOWFB, D_IFC, D_LIN, D_CNS, D_SLP, POW_S", &k, (0, Kind::Real))?;
+                None
             }
-            _ => {}
-        }
-        Ok(())
+            _ => None,
+        };
+        Ok(start)
     }
 
     /// The friction law's values of one set (L = 0: FSTAT, FKIN), and MEMDST, MEM_S0 for the
@@ -494,12 +503,25 @@ impl CaseReader<'_> {
         let values = match ibase {
             1 => self.lx.array("B1..B6", 6)?,
             2 => {
-                let (h, _) = self.lx.group(
-                    "NN, XM, RM, Y1, DY1",
+                let (mut h, place) = self.lx.group(
+                    "NN, XM, RX1, Y1, DY1",
                     &[Kind::Int, Kind::Real, Kind::Real, Kind::Real, Kind::Real],
                     (0, Kind::Real),
                 )?;
-                self.lx.array("B(k), k=1..NN", h[0].clamp(0.0, 1e7) as usize)?
+                // CONTACT's checks (m_sinput.f90 lines 1477-1480): NN >= 2, DY1 >= 1e-8.
+                if !(h[0] >= 2.0 && h[0] <= 1e7 && h[4] >= 1e-8 && h[2] != 0.0) {
+                    return Err(DeckError::Value {
+                        file: self.lx.file().into(),
+                        line: place.line,
+                        column: place.column,
+                        what: "NN, XM, RX1, Y1, DY1".into(),
+                        value: format!("NN = {}, RX1 = {}, DY1 = {}", h[0], h[2], h[4]),
+                        allowed: "NN >= 2 points, a radius RX1 other than 0 and a step DY1 >= 1e-8".into(),
+                    });
+                }
+                let b = self.lx.array("the heights in y, k=1..NN", h[0] as usize)?;
+                h.extend(b);
+                h
             }
             3 => self.lx.array("B1..B8", 8)?,
             9 => self.lx.array("H(I), I=1..NPOT", npot)?,

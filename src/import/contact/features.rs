@@ -146,8 +146,18 @@ pub const FEATURES: &[Feature] = &[
         name: "debug output and solver settings",
         control: "X, G, MAXGS..EPS",
         supported: true,
-        reason: "read and not carried: this project's solver has its own stopping rule ([contact_solver])",
+        reason: "read and not carried: this project's solver has its own stopping rule ([contact_solver]); with a falling law INISLP, OMGSLP are carried (their own row)",
         used: |c| digit("G", c.digits.g, c.digits.g != 1),
+    },
+    Feature {
+        name: "the slip-velocity iteration of a falling law",
+        control: "INISLP, OMGSLP",
+        supported: true,
+        reason: "carried as [contact_solver] inislp (0: previous, > 0: below, < 0: above) and omgslp, stopped at CONTACT's fixed 1e-3 (veldep_tolerance); MAXIN is not carried (190 iterations at most)",
+        used: |c| {
+            let (inislp, omgslp) = c.state.slip_start.unwrap_or((0, crate::scene::OMGSLP));
+            matches!(c.state.friction_law, 2..=4).then(|| format!("INISLP = {inislp}, OMGSLP = {omgslp}"))
+        },
     },
     Feature {
         name: "a rolling direction other than +x",
@@ -187,13 +197,25 @@ pub const FEATURES: &[Feature] = &[
         },
     },
     Feature {
-        name: "undeformed distances other than quadratic or per element",
+        name: "undeformed distances other than quadratic, circular in x or per element",
         control: "IBASE",
         supported: false,
-        reason: "supported: IBASE = 1 (B1..B6) or 9 (h per element)",
+        reason: "supported: IBASE = 1 (B1..B6), 2 (circular in x, pointwise in y) or 9 (h per element)",
         used: |c| match (&c.state.potcon, &c.state.undeformed) {
-            (Some(Potcon::Grid { .. }), Some(u)) if !matches!(u.ibase, 1 | 9) => Some(format!("IBASE = {}", u.ibase)),
+            (Some(Potcon::Grid { .. }), Some(u)) if !matches!(u.ibase, 1 | 2 | 9) => {
+                Some(format!("IBASE = {}", u.ibase))
+            }
             (Some(Potcon::Grid { .. }), None) => Some("a grid without IBASE (Z = 2 never read)".into()),
+            _ => None,
+        },
+    },
+    Feature {
+        name: "an undeformed distance circular in x, pointwise in y",
+        control: "IBASE",
+        supported: true,
+        reason: "imported as h per element (IBASE = 9) as CONTACT evaluates it: the NN heights linear in y plus the parabola (x - XM)^2/(2 RX1) at the element centres",
+        used: |c| match (&c.state.potcon, &c.state.undeformed) {
+            (Some(Potcon::Grid { .. }), Some(u)) if u.ibase == 2 => Some("IBASE = 2".into()),
             _ => None,
         },
     },

@@ -120,6 +120,27 @@ fn case3(cases: &[Case], k: usize) -> &Case3 {
     }
 }
 
+/// CONTACT's fixed stop of the slip-velocity iteration: rms(S_k − S_(k−1)) ≤ 0.001·rms(S_k)
+/// (`m_stang.f90` line 579), `[contact_solver] veldep_tolerance` of an imported falling law.
+const CONTACT_VELDEP_TOLERANCE: f64 = 1e-3;
+
+/// `[contact_solver] inislp` and `omgslp` of a case's INISLP, OMGSLP (`m_stang.f90` lines
+/// 258-264: 0 from the previous solution, > 0 from s = 0, < 0 from s = V).
+fn slip_iteration(s: &State) -> (&'static str, f64) {
+    let (inislp, omgslp) = s.slip_start.unwrap_or((0, crate::scene::OMGSLP));
+    let start = match inislp {
+        0 => "previous",
+        i if i > 0 => "below",
+        _ => "above",
+    };
+    (start, omgslp)
+}
+
+/// Whether a case's friction falls with the slip velocity (L = 2, 3, 4 in force).
+fn falling(s: &State) -> bool {
+    matches!(s.friction_law, 2..=4)
+}
+
 /// What differs between two cases' setups (all but the creepages, VELOC and, where `load_varies`,
 /// FN and a Coulomb friction), named. A falling law and its memory are one for the whole history.
 fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static str> {
@@ -163,6 +184,7 @@ fn group(cases: &[Case], statuses: &mut [CaseStatus]) -> Vec<History> {
                 Some(h) if open && h.run == Run::Sweep => {
                     let first = case3(cases, h.cases[0]);
                     setup_difference(&first.state, &c3.state, false).is_none()
+                        && (!falling(&c3.state) || slip_iteration(&first.state) == slip_iteration(&c3.state))
                         && statuses[h.cases[0]].supported() == statuses[k].supported()
                         && sweep_continues(cases, h, c3)
                 }
@@ -188,8 +210,21 @@ fn group(cases: &[Case], statuses: &mut [CaseStatus]) -> Vec<History> {
             let h = hs.last_mut().expect("a history");
             let prev = &case3(cases, h.cases[h.cases.len() - 1]).state;
             let hertz = matches!(prev.potcon, Some(Potcon::Hertz { .. }));
+            let after_start = h.run == (Run::Transient { steady_start: true }) && h.cases.len() == 1;
+            let other_iteration = falling(&c3.state) && slip_iteration(prev) != slip_iteration(&c3.state);
+            if after_start && other_iteration {
+                let (start, omgslp) = slip_iteration(&c3.state);
+                statuses[h.cases[0]].notes.push(format!(
+                    "INISLP, OMGSLP = {:?}: the steady start is solved with its transient cases' inislp = {start:?}, omgslp = {omgslp} (one per scene, [contact_solver])",
+                    prev.slip_start.unwrap_or((0, crate::scene::OMGSLP))
+                ));
+            }
             if let Some(what) = setup_difference(prev, &c3.state, true) {
                 statuses[k].refused.push(format!("changes {what} within a transient history"));
+            } else if other_iteration && !after_start {
+                statuses[k].refused.push(
+                    "changes INISLP, OMGSLP within a transient history (supported: one start and damping of the slip-velocity iteration per history, [contact_solver] inislp, omgslp)".into(),
+                );
             } else if hertz && prev.pen_or_fn != c3.state.pen_or_fn {
                 statuses[k].refused.push(format!(
                     "FN = {} after {}: a Hertzian geometry (IPOTCN < 0) under a load that changes within a transient history (supported: the geometry as a grid, IPOTCN > 0)",
@@ -391,6 +426,7 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     let numbers = [cases[h.cases[0]].number, cases[h.cases[h.cases.len() - 1]].number];
     let name = scene_name(stem, numbers[0]);
     let first = case3(cases, h.cases[0]);
+    let last = case3(cases, h.cases[h.cases.len() - 1]);
     let s = &first.state;
     let rows: Vec<[f64; 5]> = h.cases.iter().map(|&k| row(case3(cases, k))).collect();
     let mut doc = Table::new();
@@ -429,17 +465,18 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
             let y1 = upper_edge(*yl_mm, my, *dy_mm);
             grid.extend([("x_mm", floats(&[*xl_mm, x1])), ("y_mm", floats(&[*yl_mm, y1]))]);
             let u = s.undeformed.as_ref().expect("a grid's undeformed distance (checked by the feature table)");
-            let h_mm: Vec<f64> = if u.ibase == 9 {
-                u.values.clone()
-            } else {
-                let b = &u.values;
-                (0..mx * my)
+            let b = &u.values;
+            let centre =
+                |e: usize| (xl_mm + (((e % mx) as f64) + 0.5) * dx_mm, yl_mm + (((e / mx) as f64) + 0.5) * dy_mm);
+            let h_mm: Vec<f64> = match u.ibase {
+                9 => b.clone(),
+                2 => (0..mx * my).map(|e| circular_in_x(b, centre(e))).collect(),
+                _ => (0..mx * my)
                     .map(|e| {
-                        let x = xl_mm + (((e % mx) as f64) + 0.5) * dx_mm;
-                        let y = yl_mm + (((e / mx) as f64) + 0.5) * dy_mm;
+                        let (x, y) = centre(e);
                         b[0] * x * x + b[1] * x * y + b[2] * y * y + b[3] * x + b[4] * y + b[5]
                     })
-                    .collect()
+                    .collect(),
             };
             let mut csv = String::from("ix,iy,h_mm\n");
             for (e, v) in h_mm.iter().enumerate() {
@@ -530,6 +567,19 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
             files.push((file_name, csv));
         }
     }
+    if falling(&last.state) {
+        // CONTACT's slip-velocity iteration as the deck sets it (the last case's: a steady start
+        // is solved with its transient cases'), stopped where CONTACT stops it.
+        let (start, omgslp) = slip_iteration(&last.state);
+        let mut cs = vec![("veldep_tolerance", Value::Float(CONTACT_VELDEP_TOLERANCE))];
+        if start != "previous" {
+            cs.push(("inislp", Value::String(start.into())));
+        }
+        if omgslp != crate::scene::OMGSLP {
+            cs.push(("omgslp", Value::Float(omgslp)));
+        }
+        doc.insert("contact_solver".into(), table(cs));
+    }
     if s.rolling_read {
         doc.insert(
             "rolling".into(),
@@ -566,6 +616,25 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     );
     files.insert(0, (scene_file, text));
     Ok(SceneFiles { name, cases: numbers, files })
+}
+
+/// IBASE = 2 at an element centre (x, y): the NN heights linear in y between Y1 + (k−1) DY1
+/// (extrapolated beyond), plus the circle in x as CONTACT evaluates it, its parabola
+/// (x − XM)²/(2 RX1) (`m_sdis.f90` lines 358-405); `b` = NN, XM, RX1, Y1, DY1, heights.
+fn circular_in_x(b: &[f64], (x, y): (f64, f64)) -> f64 {
+    let (nn, xm, rx, y1, dy1) = (b[0] as usize, b[1], b[2], b[3], b[4]);
+    let yn = y1 + (nn - 1) as f64 * dy1;
+    let (left, y_left) = if y < y1 {
+        (0, y1)
+    } else if y >= yn {
+        (nn - 2, yn - dy1)
+    } else {
+        let k = ((y - y1) / dy1) as usize;
+        (k, y1 + k as f64 * dy1)
+    };
+    let heights = &b[5..];
+    let slope = (heights[left + 1] - heights[left]) / dy1;
+    heights[left] + slope * (y - y_left) + (x - xm) * (x - xm) / (2.0 * rx)
 }
 
 /// Write the scene and its files into `dir`, read the scene back with the project's reader and
@@ -645,6 +714,21 @@ mod tests {
         let s = &imported.scenes[0];
         assert_eq!((s.name.as_str(), s.cases), ("t_1", [1, 2]));
         assert!(s.files[0].1.contains("at = [0.001, 0.002]"), "{}", s.files[0].1);
+    }
+
+    #[test]
+    fn ibase_2_is_linear_in_y_through_its_heights_and_a_parabola_in_x() {
+        // NN = 3 heights 1, 3, 2 at y = -1, 1, 3; circle of radius 5 around XM = 2.
+        let b = [3.0, 2.0, 5.0, -1.0, 2.0, 1.0, 3.0, 2.0];
+        let at = |x: f64, y: f64| circular_in_x(&b, (x, y));
+        assert_eq!(at(2.0, -1.0), 1.0);
+        assert_eq!(at(2.0, 0.0), 2.0);
+        assert_eq!(at(2.0, 2.0), 2.5);
+        // Beyond the points: the first and last segments extended (CONTACT extrapolates).
+        assert_eq!(at(2.0, -3.0), -1.0);
+        assert_eq!(at(2.0, 5.0), 1.0);
+        // (x - XM)²/(2 RX1): the parabola CONTACT uses, not the circle.
+        assert_eq!(at(4.0, 1.0), 3.0 + 0.4);
     }
 
     #[test]

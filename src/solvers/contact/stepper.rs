@@ -124,9 +124,6 @@ const VELDEP_COLUMNS: [&str; 4] = ["veldep_iterations", "veldep_converged", "mu_
 /// Iteration limit of the slip-velocity fixed point (CONTACT: max(1, MAXIN − 10) = 190).
 const VELDEP_MAX_ITERATIONS: usize = 190;
 
-/// CONTACT's damping of the slip-velocity update (OMGSLP, default 0.5 with G = 0).
-const OMGSLP: f64 = 0.5;
-
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let (g, m) = (&p.grid, &p.material);
     let kernel = |shift: f64| {
@@ -161,7 +158,7 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
                 tolerance: p.contact_solver.veldep_tolerance,
                 max_iterations: VELDEP_MAX_ITERATIONS,
                 initial: p.contact_solver.inislp,
-                omgslp: OMGSLP,
+                omgslp: p.contact_solver.omgslp,
             };
             VelDep::new(p.friction, p.memory, options, g.mx, g.len())
         }),
