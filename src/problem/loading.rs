@@ -33,6 +33,10 @@ pub struct Sample {
     /// Fy/FN prescribed (CONTACT F = 2): the solver finds cy; `None`: cy is given.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub fy_target: Option<f64>,
+    /// The approach [mm] prescribed (CONTACT N = 0, PEN): the solver finds FN (`fn_n` then holds
+    /// the scene's nominal `contact.fn_n`); `None`: FN is given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pen_mm: Option<f64>,
 }
 
 impl Sample {
@@ -184,6 +188,11 @@ impl Loading {
         self.rows().any(Sample::prescribes_force)
     }
 
+    /// Whether any row prescribes the approach in place of FN (CONTACT N = 0).
+    pub fn prescribes_approach(&self) -> bool {
+        self.rows().any(|s| s.pen_mm.is_some())
+    }
+
     /// Fy/FN is prescribed only with Fx/FN (CONTACT F = 2). A prescribed force must stay below μ·FN: at or above it the whole contact slides and no
     /// creepage gives it (Coulomb: |F| <= μ FN, reached only in full slip).
     fn check_forces(&self) -> Result<(), InputError> {
@@ -264,6 +273,7 @@ fn table_row(scene: &Scene, rows: &CreepageTable, k: usize, t: f64) -> Sample {
         v_mm_s: None,
         fx_target,
         fy_target,
+        pen_mm: rows.pen_mm.as_ref().map(|v| rows.interpolate(v, t)),
     }
 }
 
@@ -334,6 +344,7 @@ impl Sample {
             v_mm_s: None,
             fx_target: None,
             fy_target: scene.fy_over_fn,
+            pen_mm: None,
         }
     }
 

@@ -1,11 +1,15 @@
 //! The `table` creepage kind: a CSV `t_s,cx[,cy,cs,fn_n,mu,v_mm_s]` read and validated row by row
-//! (`fx_over_fn`, `fy_over_fn` in place of `cx`, `cy`: the total forces prescribed, CONTACT's F = 1, 2).
+//! (`fx_over_fn`, `fy_over_fn` in place of `cx`, `cy`: the total forces prescribed, CONTACT's F = 1, 2;
+//! `pen_mm` in place of `fn_n`: the approach prescribed, CONTACT's N = 0).
 
 use crate::error::InputError;
 use std::path::Path;
 
 /// Columns a creepage table may have; `t_s` and one of `cx`, `fx_over_fn` are required.
-pub const COLUMNS: [&str; 9] = ["t_s", "cx", "cy", "cs", "fn_n", "mu", "v_mm_s", "fx_over_fn", "fy_over_fn"];
+pub const COLUMNS: [&str; 10] = ["t_s", "cx", "cy", "cs", "fn_n", "mu", "v_mm_s", "fx_over_fn", "fy_over_fn", "pen_mm"];
+
+/// The largest approach a table may prescribe [mm]: beyond any elastic contact of rail steel.
+pub const PEN_MAX_MM: f64 = 10.0;
 
 /// The table's longitudinal column: the creepage given, or the force prescribed.
 #[derive(Debug, Clone, PartialEq)]
@@ -37,6 +41,8 @@ pub struct CreepageTable {
     pub fy_over_fn: Option<Vec<f64>>,
     pub cs: Option<Vec<f64>>,
     pub fn_n: Option<Vec<f64>>,
+    /// The approach [mm] prescribed in place of FN (CONTACT N = 0, PEN): FN is then an outcome.
+    pub pen_mm: Option<Vec<f64>>,
     pub mu: Option<Vec<f64>>,
     /// The rolling speed [mm/s]: step k lasts dq/v_k.
     pub v_mm_s: Option<Vec<f64>>,
@@ -79,12 +85,16 @@ impl CreepageTable {
                 ));
             }
         }
-        for (a, b) in [("cx", "fx_over_fn"), ("cy", "fy_over_fn")] {
+        for (a, b, what) in [
+            ("cx", "fx_over_fn", "(the creepage given) and fx_over_fn (the force prescribed)"),
+            ("cy", "fy_over_fn", "(the creepage given) and fy_over_fn (the force prescribed)"),
+            ("fn_n", "pen_mm", "(the normal force prescribed) and pen_mm (the approach prescribed)"),
+        ] {
             if has(a) && has(b) {
                 return Err(InputError::new(
                     format!("{origin} header"),
                     format!("both {a} and {b}"),
-                    format!("one of {a} (the creepage given) and {b} (the force prescribed), not both"),
+                    format!("one of {a} {what}, not both"),
                 ));
             }
         }
@@ -116,6 +126,7 @@ impl CreepageTable {
                     "fx_over_fn" | "fy_over_fn" => v.is_finite() && v.abs() < 1.0,
                     "cs" => v.is_finite() && v.abs() <= 10.0,
                     "v_mm_s" => super::SPEED_LIMIT.contains(v),
+                    "pen_mm" => v.is_finite() && v > 0.0 && v <= PEN_MAX_MM,
                     _ => v.is_finite() && v > 0.0, // fn_n, mu
                 };
                 if !ok {
@@ -125,6 +136,7 @@ impl CreepageTable {
                         "fx_over_fn" | "fy_over_fn" => "a finite force ratio in (-1, 1) (below the row's mu)",
                         "cs" => "a finite spin in [-10, 10] 1/mm",
                         "v_mm_s" => "a rolling speed in (0, 1e6] mm/s",
+                        "pen_mm" => "a finite approach in (0, 10] mm",
                         _ => "a finite number > 0",
                     };
                     return Err(InputError::new(format!("{origin} line {row} column {name}"), v, allowed));
@@ -155,6 +167,7 @@ impl CreepageTable {
             fy_over_fn: col("fy_over_fn"),
             cs: col("cs"),
             fn_n: col("fn_n"),
+            pen_mm: col("pen_mm"),
             mu: col("mu"),
             v_mm_s: col("v_mm_s"),
             t_s,

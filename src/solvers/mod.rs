@@ -52,6 +52,9 @@ pub struct ModelDef {
     /// Whether it solves shifts without rolling (`[rolling] motion = "shift"`, CONTACT T = 1); a
     /// model that cannot is refused on such a scene.
     pub shifts: bool,
+    /// Whether it solves the normal problem with the approach prescribed in place of FN (a
+    /// table's `pen_mm`, CONTACT N = 0); a model that cannot is refused on such a scene.
+    pub prescribed_approach: bool,
     /// Refuses a problem the model cannot run, naming the scene field.
     pub check: fn(&Problem) -> Result<(), InputError>,
     /// Relative cost of one history row, for scheduling a suite (longest first).
@@ -105,6 +108,15 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
             "prescribed forces with Coulomb friction, or creepages with a falling law (the two iterations are not combined)",
         ));
     }
+    if let Some(name) =
+        problem.solvers.iter().find(|s| builtin(s).is_none()).filter(|_| problem.loading.prescribes_approach())
+    {
+        return Err(InputError::new(
+            "solvers",
+            format!("{name:?} (an external model) with the approach prescribed (creepage table column pen_mm)"),
+            "built-in models that solve the normal problem for a prescribed approach (an external model is given FN)",
+        ));
+    }
     problem.solvers.iter().filter_map(|s| builtin(s)).try_for_each(|m| {
         if problem.friction.is_falling() && !FALLING_FRICTION.contains(&m.name) {
             return Err(InputError::new(
@@ -119,6 +131,14 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
                 "solvers",
                 format!("{:?} with prescribed forces (creepage.fx_over_fn or fy_over_fn)", m.name),
                 format!("models that find the creepages of prescribed forces: {} (leave {} out of this scene: it takes creepages only)", able.join(", "), m.name),
+            ));
+        }
+        if problem.loading.prescribes_approach() && !m.prescribed_approach {
+            let able: Vec<&str> = MODELS.iter().filter(|m| m.prescribed_approach).map(|m| m.name).collect();
+            return Err(InputError::new(
+                "solvers",
+                format!("{:?} with the approach prescribed (creepage table column pen_mm)", m.name),
+                format!("models that solve the normal problem for a prescribed approach: {} (leave {} out of this scene: it takes FN only)", able.join(", "), m.name),
             ));
         }
         if problem.rolling.motion == Motion::Shift && !m.shifts {
@@ -166,6 +186,7 @@ pub const fn closed_form(
         iterative: false,
         prescribed_forces: false,
         shifts: false,
+        prescribed_approach: false,
         check: always,
         cost_per_row: negligible,
         params: None,

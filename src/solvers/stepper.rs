@@ -59,4 +59,10 @@ pub trait Stepper {
     fn solved_creepage(&self) -> Option<[f64; 2]> {
         None
     }
+
+    /// The total normal force [N] the last load found where its sample prescribed the approach
+    /// in its place (CONTACT N = 0); `None`: the sample's FN was used.
+    fn solved_fn_n(&self) -> Option<f64> {
+        None
+    }
 }

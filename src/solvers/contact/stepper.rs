@@ -27,6 +27,7 @@ pub const MODEL: ModelDef = ModelDef {
     iterative: true,
     prescribed_forces: true,
     shifts: true,
+    prescribed_approach: true,
     check,
     cost_per_row,
     params: None,
@@ -73,6 +74,10 @@ pub enum ContactRunError {
     Normal { fn_n: f64, source: ContactError },
     #[error("normal problem at FN = {fn_n} N did not converge in {iterations} iterations (residual {residual:.2e})")]
     NormalNotConverged { fn_n: f64, iterations: usize, residual: f64 },
+    #[error("normal problem at the approach {pen_mm} mm: {source}")]
+    Approach { pen_mm: f64, source: ContactError },
+    #[error("normal problem at the approach {pen_mm} mm did not converge in {iterations} iterations (residual {residual:.2e})")]
+    ApproachNotConverged { pen_mm: f64, iterations: usize, residual: f64 },
     #[error("no element of the {mx}x{my} grid carries load at FN = {fn_n} N")]
     NoContact { mx: usize, my: usize, fn_n: f64 },
     #[error("tangential problem at FN = {fn_n} N: {source}")]
@@ -83,6 +88,9 @@ pub enum ContactRunError {
 
 /// The normal solution at one load.
 struct Loaded {
+    /// The sample's (FN, approach) it was solved for.
+    key: (f64, Option<f64>),
+    /// The total normal force [N]: the sample's, or found for its approach.
     fn_n: f64,
     pn: Vec<f64>,
     pn_sum: f64,
@@ -280,26 +288,55 @@ impl Contact<'_> {
     }
 }
 
+impl Contact<'_> {
+    /// The pressure at FN: the geometry's own where it has solved it, else the normal problem.
+    fn normal_by_force(&mut self, fn_n: f64) -> Result<Vec<f64>, ContactRunError> {
+        let p = self.p;
+        if let Some(pn) = p.geometry.normal_pressure_mpa(fn_n) {
+            return Ok(pn);
+        }
+        let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
+        let normal = self
+            .normal
+            .solve(&h, fn_n, &NormalParams::default())
+            .map_err(|source| ContactRunError::Normal { fn_n, source })?;
+        if !normal.converged {
+            let (iterations, residual) = (normal.iterations, normal.residual);
+            return Err(ContactRunError::NormalNotConverged { fn_n, iterations, residual });
+        }
+        Ok(normal.pn_mpa)
+    }
+
+    /// The pressure at the approach `pen_mm` (CONTACT N = 0) on the undeformed distance of the
+    /// sample's (nominal) load `fn_n`.
+    fn normal_by_approach(&mut self, fn_n: f64, pen_mm: f64) -> Result<Vec<f64>, ContactRunError> {
+        let p = self.p;
+        let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
+        let normal = self
+            .normal
+            .solve_approach(&h, pen_mm, &NormalParams::default())
+            .map_err(|source| ContactRunError::Approach { pen_mm, source })?;
+        if !normal.converged {
+            let (iterations, residual) = (normal.iterations, normal.residual);
+            return Err(ContactRunError::ApproachNotConverged { pen_mm, iterations, residual });
+        }
+        Ok(normal.pn_mpa)
+    }
+}
+
 impl Stepper for Contact<'_> {
     fn load(&mut self, at: &Sample) -> Result<(), SolveError> {
-        if self.loaded.as_ref().is_some_and(|l| l.fn_n == at.fn_n) {
+        if self.loaded.as_ref().is_some_and(|l| l.key == (at.fn_n, at.pen_mm)) {
             return Ok(());
         }
-        let (p, fn_n) = (self.p, at.fn_n);
-        let pn_mpa = match p.geometry.normal_pressure_mpa(fn_n) {
-            Some(pn) => pn,
-            None => {
-                let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
-                let normal = self
-                    .normal
-                    .solve(&h, fn_n, &NormalParams::default())
-                    .map_err(|source| ContactRunError::Normal { fn_n, source })?;
-                if !normal.converged {
-                    let (iterations, residual) = (normal.iterations, normal.residual);
-                    return Err(ContactRunError::NormalNotConverged { fn_n, iterations, residual }.into());
-                }
-                normal.pn_mpa
+        let p = self.p;
+        let (pn_mpa, fn_n) = match at.pen_mm {
+            Some(pen_mm) => {
+                let pn = self.normal_by_approach(at.fn_n, pen_mm)?;
+                let fn_n = pn.iter().sum::<f64>() * p.grid.element_area_mm2();
+                (pn, fn_n)
             }
+            None => (self.normal_by_force(at.fn_n)?, at.fn_n),
         };
         let pn_sum: f64 = pn_mpa.iter().sum();
         if pn_sum <= 0.0 {
@@ -317,7 +354,7 @@ impl Stepper for Contact<'_> {
             }
             Motion::Shift => [mindlin_stiffness_n_mm(p, e.a_mm * e.b_mm) / fn_n; 2],
         };
-        self.loaded = Some(Loaded { fn_n, pn: pn_mpa, pn_sum, pn_max, slope });
+        self.loaded = Some(Loaded { key: (at.fn_n, at.pen_mm), fn_n, pn: pn_mpa, pn_sum, pn_max, slope });
         self.older = None;
         Ok(())
     }
@@ -397,6 +434,10 @@ impl Stepper for Contact<'_> {
 
     fn solved_creepage(&self) -> Option<[f64; 2]> {
         self.found
+    }
+
+    fn solved_fn_n(&self) -> Option<f64> {
+        self.loaded.as_ref().filter(|l| l.key.1.is_some()).map(|l| l.fn_n)
     }
 
     fn field(&self) -> Option<FieldView<'_>> {

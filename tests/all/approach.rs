@@ -1,0 +1,103 @@
+//! Issue 32 item 3: the normal problem with the approach prescribed (CONTACT N = 0, PEN), a
+//! creepage table's `pen_mm` column in place of `fn_n`. The exact solver finds FN (the history's
+//! `fn_n`); references: Hertz's closed form for a circle, δ = 3 FN / (4 a E*) with a ∝ FN^(1/3)
+//! (Johnson 1985, eq. 4.23), and the solver's own FN-prescribed twin.
+
+use crate::common::*;
+use creepbench::history::History;
+use creepbench::scene::Scene;
+
+/// A circular Hertz contact, a = b = 5 mm at the nominal 50 kN, on 40 x 40 elements over 1.5 a
+/// (the contact at 1.5 times the load still inside), the table `c.csv` in `dir`.
+fn text(solvers: &str) -> String {
+    r#"name = "approach"
+solvers = SOLVERS
+[contact]
+a_mm = 5.0
+b_mm = 5.0
+fn_n = 50000.0
+mu = 0.3
+[material]
+g_mpa = 82000.0
+poisson = 0.28
+[grid]
+mx = 40
+my = 40
+scale = 1.5
+[creepage]
+kind = "table"
+file = "c.csv"
+"#
+    .replace("SOLVERS", solvers)
+}
+
+/// Run the scene with `table` as its `c.csv`.
+fn run_table(name: &str, table: &str, solvers: &str) -> Result<History, String> {
+    let dir = tempdir(name);
+    std::fs::write(dir.join("c.csv"), table).unwrap();
+    let scene = Scene::from_toml(&text(solvers), &dir).map_err(|e| e.to_string())?;
+    let p = creepbench::pipeline::resolve(&scene).map_err(|e| e.to_string())?;
+    Ok(run(&p, "contact"))
+}
+
+/// Hertz's approach [mm] of the circle at `fn_n` [N]: a = 5 (FN/50000)^(1/3) mm, δ = a²/R =
+/// 3 FN / (4 a E*), E* = G/(1 − ν) for two identical bodies.
+fn hertz_approach_mm(fn_n: f64) -> f64 {
+    let a_mm = 5.0 * (fn_n / 50000.0f64).cbrt();
+    3.0 * fn_n / (4.0 * a_mm * 82000.0 / (1.0 - 0.28))
+}
+
+#[test]
+fn the_force_of_a_prescribed_approach_is_hertzs() {
+    for f in [25000.0, 50000.0, 75000.0] {
+        let table = format!("t_s,cx,pen_mm\n0.002,0.001,{:?}\n", hertz_approach_mm(f));
+        let h = run_table("approach_hertz", &table, "[\"contact\"]").unwrap();
+        let fn_n = h.column("fn_n").unwrap();
+        // Every row (the five steps) holds the one approach: one FN.
+        assert!(fn_n.iter().all(|&x| x == fn_n[0]) && fn_n.len() == 5, "{fn_n:?}");
+        let got = fn_n[0];
+        println!("approach {:.6e} mm: FN {got:.1} N, Hertz {f} N, {:+.3e}", hertz_approach_mm(f), got / f - 1.0);
+        // The grid's accuracy: 5.3 to 7.6 elements per contact radius.
+        // Measured +2.5e-4, +1.5e-4, +2.7e-4.
+        assert!((got / f - 1.0).abs() < 5e-4, "FN {got} N vs Hertz {f} N");
+    }
+}
+
+#[test]
+fn a_prescribed_approach_and_its_force_give_the_same_history() {
+    let pens = [0.08, 0.1, 0.12, 0.1];
+    let mut by_pen = String::from("t_s,cx,pen_mm\n");
+    for (k, p) in pens.iter().enumerate() {
+        by_pen.push_str(&format!("{:?},{:?},{p:?}\n", 0.002 * k as f64, 0.0005 * (k + 1) as f64));
+    }
+    let a = run_table("approach_twin_pen", &by_pen, "[\"contact\"]").unwrap();
+    // The twin: the FN found, row by row, prescribed (each row's own step: one row per step).
+    let (t, cx, fn_n) = (a.column("t_s").unwrap(), a.column("cx").unwrap(), a.column("fn_n").unwrap());
+    let mut by_force = String::from("t_s,cx,fn_n\n");
+    for k in 0..t.len() {
+        by_force.push_str(&format!("{:?},{:?},{:?}\n", t[k], cx[k], fn_n[k]));
+    }
+    let b = run_table("approach_twin_fn", &by_force, "[\"contact\"]").unwrap();
+    assert_eq!(a.rows.len(), b.rows.len());
+    // The FN found varies with the approach (the test would see an ignored column).
+    assert!(fn_n.iter().any(|&f| f > 1.2 * fn_n[0]), "{fn_n:?}");
+    for col in ["fx_over_fn", "fy_over_fn", "n_adhesion", "n_slip"] {
+        let (d, k) = max_abs_diff(&a.column(col).unwrap(), &b.column(col).unwrap());
+        println!("{col}: largest |difference| {d:.2e} at row {k}");
+        // Same pressure to the normal solves' tolerance 1e-10: forces within 1e-8 of FN.
+        assert!(d < 1e-8, "{col}: {d:e} at row {k}");
+    }
+}
+
+#[test]
+fn an_approach_with_a_force_column_or_a_model_without_it_is_refused() {
+    let both = run_table("approach_both", "t_s,cx,fn_n,pen_mm\n0.002,0.001,50000.0,0.1\n", "[\"contact\"]");
+    let e = both.unwrap_err();
+    assert!(e.contains("both fn_n and pen_mm") && e.contains("not both"), "{e}");
+    let negative = run_table("approach_negative", "t_s,cx,pen_mm\n0.002,0.001,-0.1\n", "[\"contact\"]");
+    let e = negative.unwrap_err();
+    assert!(e.contains("column pen_mm") && e.contains("(0, 10] mm"), "{e}");
+    let uba = run_table("approach_uba", "t_s,cx,pen_mm\n0.002,0.001,0.1\n", "[\"contact\", \"uba\"]");
+    let e = uba.unwrap_err();
+    assert!(e.contains("\"uba\" with the approach prescribed") && e.contains("contact"), "{e}");
+}
