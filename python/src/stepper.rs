@@ -113,6 +113,7 @@ impl Stepper {
             fx_target: None,
             fy_target: None,
             pen_mm: None,
+            h_coefficients: None,
         };
         if self.loaded != Some((fn_n, mu)) {
             self.stepper.load(&s).map_err(|e| solve_error(&self.problem, &self.model, e))?;

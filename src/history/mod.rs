@@ -152,6 +152,7 @@ impl History {
                     fx_target: None,
                     fy_target: None,
                     pen_mm: None,
+                    h_coefficients: None,
                 },
                 fx_over_fn: num(6)?,
                 fy_over_fn: num(7)?,

@@ -1,5 +1,5 @@
 //! The one sample loop (as argmin's `Executor`): it owns the stepping of every built-in model —
-//! the steady initial state, sweep points, transient steps, a reload when FN (or the approach) or μ changes — and
+//! the steady initial state, sweep points, transient steps, a reload when FN (or the approach, or the undeformed distance) or μ changes — and
 //! writes the history, the termination of every solve and the field indicators the scene asks for.
 //! It sits at the history stage (README, "The code"): it turns a model's steps into history rows,
 //! so it stands above the models it runs and below the metrics, which hand it their field
@@ -53,13 +53,14 @@ pub fn run(
     history.rows.reserve(loading.samples.len() + 1);
     let mut field_values: Vec<(&'static str, f64)> = field_metrics.iter().map(|&(name, _)| (name, 0.0)).collect();
     let mut observer = observer;
-    let mut loaded = (first.fn_n, first.mu, first.pen_mm);
+    let key = |s: &Sample| (s.fn_n, s.mu, s.pen_mm, s.h_coefficients);
+    let mut loaded = key(first);
     let steady_start = loading.steady_start();
     let sweep = !loading.is_transient();
     for (s, steady) in steady_start.map(|s| (s, true)).into_iter().chain(loading.samples.iter().map(|s| (s, sweep))) {
-        if (s.fn_n, s.mu, s.pen_mm) != loaded {
+        if key(s) != loaded {
             stepper.load(s)?;
-            loaded = (s.fn_n, s.mu, s.pen_mm);
+            loaded = key(s);
         }
         let step = if steady { stepper.steady(s)? } else { stepper.transient(s)? };
         if !(step.fx_over_fn.is_finite() && step.fy_over_fn.is_finite()) {

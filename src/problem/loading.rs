@@ -37,6 +37,10 @@ pub struct Sample {
     /// the scene's nominal `contact.fn_n`); `None`: FN is given.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pen_mm: Option<f64>,
+    /// The undeformed distance of this row, CONTACT's IBASE = 1 `h = b1 x² + b2 xy + b3 y² + b4 x
+    /// + b5 y + b6` in CONTACT's coordinates, in place of the scene's geometry; `None`: the geometry's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub h_coefficients: Option<[f64; 6]>,
 }
 
 impl Sample {
@@ -188,9 +192,16 @@ impl Loading {
         self.rows().any(Sample::prescribes_force)
     }
 
-    /// Whether any row prescribes the approach in place of FN (CONTACT N = 0).
-    pub fn prescribes_approach(&self) -> bool {
-        self.rows().any(|s| s.pen_mm.is_some())
+    /// What the rows give for the normal problem in place of FN or the scene's geometry, named
+    /// for a model that cannot take it: the approach (CONTACT N = 0), the undeformed distance.
+    pub fn normal_rows(&self) -> Option<&'static str> {
+        if self.rows().any(|s| s.pen_mm.is_some()) {
+            Some("the approach prescribed (creepage table column pen_mm)")
+        } else if self.rows().any(|s| s.h_coefficients.is_some()) {
+            Some("an undeformed distance per row (creepage table columns b1_per_mm to b6_mm)")
+        } else {
+            None
+        }
     }
 
     /// Fy/FN is prescribed only with Fx/FN (CONTACT F = 2). A prescribed force must stay below μ·FN: at or above it the whole contact slides and no
@@ -274,6 +285,7 @@ fn table_row(scene: &Scene, rows: &CreepageTable, k: usize, t: f64) -> Sample {
         fx_target,
         fy_target,
         pen_mm: rows.pen_mm.as_ref().map(|v| rows.interpolate(v, t)),
+        h_coefficients: rows.h_coefficients.as_ref().map(|b| b.each_ref().map(|v| rows.interpolate(v, t))),
     }
 }
 
@@ -345,6 +357,7 @@ impl Sample {
             fx_target: None,
             fy_target: scene.fy_over_fn,
             pen_mm: None,
+            h_coefficients: None,
         }
     }
 

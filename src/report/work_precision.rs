@@ -173,6 +173,7 @@ mod tests {
                     fx_target: None,
                     fy_target: None,
                     pen_mm: None,
+                    h_coefficients: None,
                 },
                 fx_over_fn: f(t),
                 fy_over_fn: 0.0,

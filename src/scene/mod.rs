@@ -379,6 +379,7 @@ impl Scene {
         };
         scene.check_sweep_points()?;
         scene.check_table_friction()?;
+        scene.check_table_geometry()?;
         Ok(scene)
     }
 
@@ -417,6 +418,21 @@ impl Scene {
             Some(list) => list.get(k.checked_sub(1)?).copied(),
             None => Some(from + (to - from) * f),
         }
+    }
+
+    /// An undeformed distance per row (columns `b1_per_mm` … `b6_mm`) replaces a geometry given per
+    /// element on an explicit grid: an ellipse sizes its grid from its load and has none to replace.
+    fn check_table_geometry(&self) -> Result<(), InputError> {
+        if let Creepage::Table { file, rows } = &self.creepage {
+            if rows.h_coefficients.is_some() && !self.geometry.is_elementwise() {
+                return Err(InputError::new(
+                    format!("creepage.file ({})", file.display()),
+                    "columns b1_per_mm to b6_mm with a Hertzian contact",
+                    "an undeformed distance per row only with a [geometry] given per element on an explicit grid ([grid] x_mm, y_mm)",
+                ));
+            }
+        }
+        Ok(())
     }
 
     /// A falling law gives μ itself: a table may not vary it (`mu` column).

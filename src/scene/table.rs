@@ -6,7 +6,27 @@ use crate::error::InputError;
 use std::path::Path;
 
 /// Columns a creepage table may have; `t_s` and one of `cx`, `fx_over_fn` are required.
-pub const COLUMNS: [&str; 10] = ["t_s", "cx", "cy", "cs", "fn_n", "mu", "v_mm_s", "fx_over_fn", "fy_over_fn", "pen_mm"];
+pub const COLUMNS: [&str; 16] = [
+    "t_s",
+    "cx",
+    "cy",
+    "cs",
+    "fn_n",
+    "mu",
+    "v_mm_s",
+    "fx_over_fn",
+    "fy_over_fn",
+    "pen_mm",
+    "b1_per_mm",
+    "b2_per_mm",
+    "b3_per_mm",
+    "b4",
+    "b5",
+    "b6_mm",
+];
+
+/// The columns of a row's undeformed distance, CONTACT's IBASE = 1 B(1..6): all or none.
+pub const H_COLUMNS: [&str; 6] = ["b1_per_mm", "b2_per_mm", "b3_per_mm", "b4", "b5", "b6_mm"];
 
 /// The largest approach a table may prescribe [mm]: beyond any elastic contact of rail steel.
 pub const PEN_MAX_MM: f64 = 10.0;
@@ -43,6 +63,9 @@ pub struct CreepageTable {
     pub fn_n: Option<Vec<f64>>,
     /// The approach [mm] prescribed in place of FN (CONTACT N = 0, PEN): FN is then an outcome.
     pub pen_mm: Option<Vec<f64>>,
+    /// The undeformed distance per row, `h = b1 x² + b2 xy + b3 y² + b4 x + b5 y + b6` in
+    /// CONTACT's coordinates (its IBASE = 1 B(1..6), one case per row), columns [`H_COLUMNS`].
+    pub h_coefficients: Option<[Vec<f64>; 6]>,
     pub mu: Option<Vec<f64>>,
     /// The rolling speed [mm/s]: step k lasts dq/v_k.
     pub v_mm_s: Option<Vec<f64>>,
@@ -98,6 +121,14 @@ impl CreepageTable {
                 ));
             }
         }
+        let h_given = H_COLUMNS.iter().filter(|c| has(c)).count();
+        if h_given != 0 && h_given != H_COLUMNS.len() {
+            return Err(InputError::new(
+                format!("{origin} header"),
+                format!("{h_given} of the columns {}", H_COLUMNS.join(", ")),
+                "all six (the row's undeformed distance b1 x² + b2 xy + b3 y² + b4 x + b5 y + b6) or none",
+            ));
+        }
         let mut cols: Vec<Vec<f64>> = vec![Vec::new(); header.len()];
         for (r, rec) in rdr.records().enumerate() {
             let row = r + 2; // 1-based line number, header is line 1
@@ -127,6 +158,7 @@ impl CreepageTable {
                     "cs" => v.is_finite() && v.abs() <= 10.0,
                     "v_mm_s" => super::SPEED_LIMIT.contains(v),
                     "pen_mm" => v.is_finite() && v > 0.0 && v <= PEN_MAX_MM,
+                    c if H_COLUMNS.contains(&c) => v.is_finite(),
                     _ => v.is_finite() && v > 0.0, // fn_n, mu
                 };
                 if !ok {
@@ -137,6 +169,7 @@ impl CreepageTable {
                         "cs" => "a finite spin in [-10, 10] 1/mm",
                         "v_mm_s" => "a rolling speed in (0, 1e6] mm/s",
                         "pen_mm" => "a finite approach in (0, 10] mm",
+                        c if H_COLUMNS.contains(&c) => "a finite coefficient",
                         _ => "a finite number > 0",
                     };
                     return Err(InputError::new(format!("{origin} line {row} column {name}"), v, allowed));
@@ -168,6 +201,7 @@ impl CreepageTable {
             cs: col("cs"),
             fn_n: col("fn_n"),
             pen_mm: col("pen_mm"),
+            h_coefficients: (h_given > 0).then(|| H_COLUMNS.map(|c| col(c).unwrap_or_default())),
             mu: col("mu"),
             v_mm_s: col("v_mm_s"),
             t_s,

@@ -52,9 +52,10 @@ pub struct ModelDef {
     /// Whether it solves shifts without rolling (`[rolling] motion = "shift"`, CONTACT T = 1); a
     /// model that cannot is refused on such a scene.
     pub shifts: bool,
-    /// Whether it solves the normal problem with the approach prescribed in place of FN (a
-    /// table's `pen_mm`, CONTACT N = 0); a model that cannot is refused on such a scene.
-    pub prescribed_approach: bool,
+    /// Whether it solves each row's normal problem from what a table gives in place of FN or the
+    /// geometry: the approach (`pen_mm`, CONTACT N = 0) and the undeformed distance (`b1_per_mm`
+    /// … `b6_mm`, CONTACT's IBASE = 1 per case); a model that cannot is refused on such a scene.
+    pub normal_rows: bool,
     /// Refuses a problem the model cannot run, naming the scene field.
     pub check: fn(&Problem) -> Result<(), InputError>,
     /// Relative cost of one history row, for scheduling a suite (longest first).
@@ -108,13 +109,12 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
             "prescribed forces with Coulomb friction, or creepages with a falling law (the two iterations are not combined)",
         ));
     }
-    if let Some(name) =
-        problem.solvers.iter().find(|s| builtin(s).is_none()).filter(|_| problem.loading.prescribes_approach())
-    {
+    let rows_what = problem.loading.normal_rows();
+    if let Some((name, what)) = problem.solvers.iter().find(|s| builtin(s).is_none()).zip(rows_what) {
         return Err(InputError::new(
             "solvers",
-            format!("{name:?} (an external model) with the approach prescribed (creepage table column pen_mm)"),
-            "built-in models that solve the normal problem for a prescribed approach (an external model is given FN)",
+            format!("{name:?} (an external model) with {what}"),
+            "built-in models that solve each row's normal problem (an external model is given FN and the scene's geometry)",
         ));
     }
     problem.solvers.iter().filter_map(|s| builtin(s)).try_for_each(|m| {
@@ -133,12 +133,12 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
                 format!("models that find the creepages of prescribed forces: {} (leave {} out of this scene: it takes creepages only)", able.join(", "), m.name),
             ));
         }
-        if problem.loading.prescribes_approach() && !m.prescribed_approach {
-            let able: Vec<&str> = MODELS.iter().filter(|m| m.prescribed_approach).map(|m| m.name).collect();
+        if let Some(what) = rows_what.filter(|_| !m.normal_rows) {
+            let able: Vec<&str> = MODELS.iter().filter(|m| m.normal_rows).map(|m| m.name).collect();
             return Err(InputError::new(
                 "solvers",
-                format!("{:?} with the approach prescribed (creepage table column pen_mm)", m.name),
-                format!("models that solve the normal problem for a prescribed approach: {} (leave {} out of this scene: it takes FN only)", able.join(", "), m.name),
+                format!("{:?} with {what}", m.name),
+                format!("models that solve each row's normal problem: {} (leave {} out of this scene: it takes FN and the scene's geometry only)", able.join(", "), m.name),
             ));
         }
         if problem.rolling.motion == Motion::Shift && !m.shifts {
@@ -186,7 +186,7 @@ pub const fn closed_form(
         iterative: false,
         prescribed_forces: false,
         shifts: false,
-        prescribed_approach: false,
+        normal_rows: false,
         check: always,
         cost_per_row: negligible,
         params: None,

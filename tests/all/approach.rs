@@ -101,3 +101,92 @@ fn an_approach_with_a_force_column_or_a_model_without_it_is_refused() {
     let e = uba.unwrap_err();
     assert!(e.contains("\"uba\" with the approach prescribed") && e.contains("contact"), "{e}");
 }
+
+/// The quadratic `h = B (x − x0)² + B y²` of CONTACT's IBASE = 1 (B(1..6) = B, 0, B, −2 B x0, 0,
+/// B x0²) on a 24 x 20 grid of 0.5 mm over x_C in [−5, 7] mm, y in [−5, 5] mm.
+const B_PER_MM: f64 = 0.004;
+
+fn field_scene(dir: &std::path::Path, table: &str, solvers: &str) -> Result<History, String> {
+    let mut h = String::from("ix,iy,h_mm\n");
+    for iy in 0..20 {
+        for ix in 0..24 {
+            let (x, y) = (-5.0 + 0.5 * (ix as f64 + 0.5), -5.0 + 0.5 * (iy as f64 + 0.5));
+            h.push_str(&format!("{},{},{:?}\n", ix + 1, iy + 1, B_PER_MM * (x * x + y * y)));
+        }
+    }
+    std::fs::write(dir.join("h.csv"), h).unwrap();
+    std::fs::write(dir.join("c.csv"), table).unwrap();
+    let text = format!(
+        r#"name = "moving"
+solvers = {solvers}
+[contact]
+fn_n = 20000.0
+mu = 0.3
+[geometry]
+kind = "field"
+field = "h.csv"
+[material]
+g_mpa = 82000.0
+poisson = 0.28
+[grid]
+mx = 24
+my = 20
+x_mm = [-5.0, 7.0]
+y_mm = [-5.0, 5.0]
+[creepage]
+kind = "table"
+file = "c.csv"
+"#
+    );
+    let scene = Scene::from_toml(&text, dir).map_err(|e| e.to_string())?;
+    let p = creepbench::pipeline::resolve(&scene).map_err(|e| e.to_string())?;
+    Ok(run(&p, "contact"))
+}
+
+/// CONTACT's B(1..6) of the quadratic moved to x0 [mm], as a table row's columns.
+fn moved(x0: f64) -> String {
+    let b = B_PER_MM;
+    format!("{b:?},0.0,{b:?},{:?},0.0,{:?}", -2.0 * b * x0, b * x0 * x0)
+}
+
+#[test]
+fn an_undeformed_distance_per_row_moves_the_contact() {
+    let dir = tempdir("approach_moving");
+    // Rolling at cx = 0.001 under the approach 0.05 mm, the quadratic moved by one element (0.5 mm
+    // along CONTACT's x) per step from x0 = 0 (the [geometry]'s own) to 1.5 mm.
+    let dt = 0.5 / 1000.0;
+    let mut table = String::from("t_s,cx,pen_mm,b1_per_mm,b2_per_mm,b3_per_mm,b4,b5,b6_mm\n");
+    for k in 0..4 {
+        table.push_str(&format!("{:?},0.001,0.05,{}\n", dt * (k + 1) as f64, moved(0.5 * k as f64)));
+    }
+    let h = field_scene(&dir, &table, "[\"contact\"]").unwrap();
+    let fn_n = h.column("fn_n").unwrap();
+    assert_eq!(fn_n.len(), 4);
+    // Moved by whole elements on a uniform grid, the contact (inside it) carries the same load.
+    for f in &fn_n {
+        assert!((f / fn_n[0] - 1.0).abs() < 1e-9, "{fn_n:?}");
+    }
+    // The first row is the geometry's own quadratic: as the scene without the columns.
+    let plain = field_scene(&dir, "t_s,cx,pen_mm\n0.0005,0.001,0.05\n", "[\"contact\"]").unwrap();
+    let (f0, p0) = (h.column("fx_over_fn").unwrap()[0], plain.column("fx_over_fn").unwrap()[0]);
+    assert!((f0 - p0).abs() < 1e-12 && (fn_n[0] / plain.column("fn_n").unwrap()[0] - 1.0).abs() < 1e-12);
+    // Rolling over a contact that moves with the rolling: the traction builds up from zero, so
+    // the force changes from step to step (the test would see rows solved alike).
+    let fx = h.column("fx_over_fn").unwrap();
+    assert!(fx.windows(2).all(|w| w[1] != w[0]), "{fx:?}");
+}
+
+#[test]
+fn an_undeformed_distance_per_row_needs_all_six_a_grid_and_the_exact_model() {
+    let dir = tempdir("approach_moving_refused");
+    let five = "t_s,cx,b1_per_mm,b2_per_mm,b3_per_mm,b4,b5\n0.0005,0.001,0.004,0.0,0.004,0.0,0.0\n";
+    let e = field_scene(&dir, five, "[\"contact\"]").unwrap_err();
+    assert!(e.contains("5 of the columns") && e.contains("all six"), "{e}");
+    let six = format!("t_s,cx,b1_per_mm,b2_per_mm,b3_per_mm,b4,b5,b6_mm\n0.0005,0.001,{}\n", moved(0.0));
+    let e = field_scene(&dir, &six, "[\"contact\", \"fastsim\"]").unwrap_err();
+    assert!(e.contains("\"fastsim\" with an undeformed distance per row"), "{e}");
+    std::fs::write(dir.join("c.csv"), &six).unwrap();
+    let hertz = text("[\"contact\"]");
+    let e = Scene::from_toml(&hertz, &dir).map(|_| ()).unwrap_err().to_string();
+    assert!(e.contains("with a Hertzian contact") && e.contains("explicit grid"), "{e}");
+}

@@ -169,6 +169,7 @@ pub fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> Result<H
                     fx_target: None,
                     fy_target: None,
                     pen_mm: None,
+                    h_coefficients: None,
                 },
                 fx_over_fn: n(cols[5])?,
                 fy_over_fn: n(cols[6])?,

@@ -80,6 +80,7 @@ pub fn load(dir: &Path) -> Result<EnvelopeCases, Error> {
                             fx_target: None,
                             fy_target: None,
                             pen_mm: None,
+                            h_coefficients: None,
                         },
                         fx_over_fn: -MU * fx,
                         fy_over_fn: -MU * fy,

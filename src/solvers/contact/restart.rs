@@ -113,6 +113,7 @@ mod tests {
             fx_target: None,
             fy_target: None,
             pen_mm: None,
+            h_coefficients: None,
         }
     }
 

@@ -10,6 +10,7 @@ use super::tangential::{StepResult, TangentialParams, TangentialSolver};
 use super::veldep::{Motion as LawStep, VelDep, VelDepOptions, VelDepOutcome};
 use super::ContactError;
 use crate::error::InputError;
+use crate::physics::geometry::element::equivalent_ellipse;
 use crate::physics::{moment_sum, LinearTheory};
 use crate::problem::{Problem, Sample};
 use crate::scene::Motion;
@@ -27,7 +28,7 @@ pub const MODEL: ModelDef = ModelDef {
     iterative: true,
     prescribed_forces: true,
     shifts: true,
-    prescribed_approach: true,
+    normal_rows: true,
     check,
     cost_per_row,
     params: None,
@@ -88,8 +89,8 @@ pub enum ContactRunError {
 
 /// The normal solution at one load.
 struct Loaded {
-    /// The sample's (FN, approach) it was solved for.
-    key: (f64, Option<f64>),
+    /// The sample's (FN, approach, undeformed distance) it was solved for.
+    key: (f64, Option<f64>, Option<[f64; 6]>),
     /// The total normal force [N]: the sample's, or found for its approach.
     fn_n: f64,
     pn: Vec<f64>,
@@ -289,13 +290,33 @@ impl Contact<'_> {
 }
 
 impl Contact<'_> {
-    /// The pressure at FN: the geometry's own where it has solved it, else the normal problem.
-    fn normal_by_force(&mut self, fn_n: f64) -> Result<Vec<f64>, ContactRunError> {
+    /// The sample's undeformed distance: its own (CONTACT's IBASE = 1 per case, in CONTACT's
+    /// coordinates x_C = −x), else the geometry's at its load.
+    fn undeformed_mm(&self, at: &Sample) -> Vec<f64> {
         let p = self.p;
-        if let Some(pn) = p.geometry.normal_pressure_mpa(fn_n) {
+        match at.h_coefficients {
+            Some(b) => {
+                let (x, y) = p.grid.centres();
+                x.iter()
+                    .zip(&y)
+                    .map(|(x, y)| {
+                        let xc = -x;
+                        b[0] * xc * xc + b[1] * xc * y + b[2] * y * y + b[3] * xc + b[4] * y + b[5]
+                    })
+                    .collect()
+            }
+            None => p.geometry.undeformed_distance_mm(&p.grid, at.fn_n, &p.material),
+        }
+    }
+
+    /// The pressure at the sample's FN: the geometry's own where it has solved it, else the
+    /// normal problem.
+    fn normal_by_force(&mut self, at: &Sample) -> Result<Vec<f64>, ContactRunError> {
+        let (p, fn_n) = (self.p, at.fn_n);
+        if let Some(pn) = at.h_coefficients.is_none().then(|| p.geometry.normal_pressure_mpa(fn_n)).flatten() {
             return Ok(pn);
         }
-        let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
+        let h = self.undeformed_mm(at);
         let normal = self
             .normal
             .solve(&h, fn_n, &NormalParams::default())
@@ -307,11 +328,9 @@ impl Contact<'_> {
         Ok(normal.pn_mpa)
     }
 
-    /// The pressure at the approach `pen_mm` (CONTACT N = 0) on the undeformed distance of the
-    /// sample's (nominal) load `fn_n`.
-    fn normal_by_approach(&mut self, fn_n: f64, pen_mm: f64) -> Result<Vec<f64>, ContactRunError> {
-        let p = self.p;
-        let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
+    /// The pressure at the approach `pen_mm` (CONTACT N = 0) on the sample's undeformed distance.
+    fn normal_by_approach(&mut self, at: &Sample, pen_mm: f64) -> Result<Vec<f64>, ContactRunError> {
+        let h = self.undeformed_mm(at);
         let normal = self
             .normal
             .solve_approach(&h, pen_mm, &NormalParams::default())
@@ -326,17 +345,18 @@ impl Contact<'_> {
 
 impl Stepper for Contact<'_> {
     fn load(&mut self, at: &Sample) -> Result<(), SolveError> {
-        if self.loaded.as_ref().is_some_and(|l| l.key == (at.fn_n, at.pen_mm)) {
+        let key = (at.fn_n, at.pen_mm, at.h_coefficients);
+        if self.loaded.as_ref().is_some_and(|l| l.key == key) {
             return Ok(());
         }
         let p = self.p;
         let (pn_mpa, fn_n) = match at.pen_mm {
             Some(pen_mm) => {
-                let pn = self.normal_by_approach(at.fn_n, pen_mm)?;
+                let pn = self.normal_by_approach(at, pen_mm)?;
                 let fn_n = pn.iter().sum::<f64>() * p.grid.element_area_mm2();
                 (pn, fn_n)
             }
-            None => (self.normal_by_force(at.fn_n)?, at.fn_n),
+            None => (self.normal_by_force(at)?, at.fn_n),
         };
         let pn_sum: f64 = pn_mpa.iter().sum();
         if pn_sum <= 0.0 {
@@ -346,7 +366,11 @@ impl Stepper for Contact<'_> {
             solver.set_pressure(&pn_mpa).map_err(|source| ContactRunError::Setup { fn_n, source })?;
         }
         let pn_max = pn_mpa.iter().fold(0.0f64, |a, &b| a.max(b));
-        let e = p.geometry.ellipse_at(fn_n);
+        // A row's own undeformed distance: the equivalent ellipse of its pressure (as the geometry's).
+        let e = match at.h_coefficients {
+            Some(_) => equivalent_ellipse(&p.grid, &pn_mpa, fn_n).unwrap_or_else(|| p.geometry.ellipse_at(fn_n)),
+            None => p.geometry.ellipse_at(fn_n),
+        };
         let slope = match p.rolling.motion {
             Motion::Rolling => {
                 let linear = LinearTheory::new(p.material.g_mpa, e.a_mm, e.b_mm, fn_n);
@@ -354,7 +378,7 @@ impl Stepper for Contact<'_> {
             }
             Motion::Shift => [mindlin_stiffness_n_mm(p, e.a_mm * e.b_mm) / fn_n; 2],
         };
-        self.loaded = Some(Loaded { key: (at.fn_n, at.pen_mm), fn_n, pn: pn_mpa, pn_sum, pn_max, slope });
+        self.loaded = Some(Loaded { key, fn_n, pn: pn_mpa, pn_sum, pn_max, slope });
         self.older = None;
         Ok(())
     }
