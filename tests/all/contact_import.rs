@@ -419,3 +419,17 @@ fn contacts_falling_friction_inputs_import_as_the_shipped_scenes() {
     }
     assert!(failures.is_empty(), "{} of 10 differ:\n{}", failures.len(), failures.join("\n"));
 }
+
+/// spence35.inp: its subsurface points (S = 3, ISUBS = 2) are two lines of three integers, as
+/// CONTACT reads them (`m_subsurf.f90`); the deck is read and every one of its 35 cases is
+/// refused for its real reason, the dissimilar bodies (POISS 0 and 0.5, GG 0.5 and 1e5 MPa).
+#[test]
+fn spence35_is_read_and_its_cases_are_refused_for_dissimilar_materials() {
+    let deck = root().join("reference/contact_public/examples/spence35.inp");
+    let imported = creepbench::import::contact::import(&deck).unwrap();
+    assert_eq!(imported.statuses.len(), 35);
+    assert!(imported.scenes.is_empty());
+    for s in &imported.statuses {
+        assert!(s.refused[0].starts_with("K = 4.99995") && s.refused[0].contains("dissimilar materials"), "{s:?}");
+    }
+}
