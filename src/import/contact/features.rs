@@ -99,8 +99,8 @@ pub const FEATURES: &[Feature] = &[
     Feature {
         name: "static friction other than kinetic friction",
         control: "FSTAT, FKIN",
-        supported: false,
-        reason: "supported: FSTAT = FKIN (one coefficient of friction)",
+        supported: true,
+        reason: "CONTACT's Coulomb law (L = 0) takes FSTAT as its one coefficient and overwrites FKIN with it (`fric_update` in m_friclaw.f90: fkin := fstat; the traction bound is FSTAT pn): mu = FSTAT",
         used: |c| {
             let f = &c.state.friction;
             (c.state.friction_law == 0 && f.len() == 2 && f[0] != f[1])

@@ -154,7 +154,13 @@ fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static 
     let coulomb = a.friction_law == 0 && b.friction_law == 0;
     let pairs: [(&'static str, bool); 10] = [
         ("FN", load_varies || a.pen_or_fn == b.pen_or_fn),
-        ("FSTAT, FKIN", (load_varies && coulomb) || a.friction == b.friction),
+        // Coulomb: FSTAT alone counts (CONTACT overwrites FKIN with it).
+        (
+            "FSTAT, FKIN",
+            (load_varies && coulomb)
+                || a.friction == b.friction
+                || (coulomb && a.friction.first() == b.friction.first()),
+        ),
         ("MEMDST, MEM_S0", a.memory == b.memory),
         ("CHI, DQ", (a.chi_rad, a.dq_mm) == (b.chi_rad, b.dq_mm)),
         ("POISS, GG", (a.poiss, a.gg_mpa) == (b.poiss, b.gg_mpa)),
@@ -295,15 +301,16 @@ fn row(c: &Case3) -> [f64; 5] {
     let mu = match (s.friction_law, s.friction.as_slice()) {
         // FSTAT = μ_s(0) = FKIN + F1 + F2 (`m_friclaw.f90` lines 303-305), as `FrictionLaw::mu_static`.
         (2..=4, [fkin, f1, _, f2, _]) => fkin + f1 + f2,
-        _ => s.friction.get(1).copied().unwrap_or(f64::NAN),
+        // Coulomb (L = 0): FSTAT, CONTACT's one coefficient (`fric_update`: fkin := fstat).
+        _ => s.friction.first().copied().unwrap_or(f64::NAN),
     };
     if c.digits.t == 0 {
         return [0.0, 0.0, 0.0, s.pen_or_fn, mu];
     }
-    let fstat = s.friction.first().copied().unwrap_or(f64::NAN);
+    // FSTAT is μ: Coulomb's one coefficient, a falling law's μ at zero slip.
     let [fx, fy] = prescribed(c);
-    let x = if fx { force_ratio(s.cksi_or_fx, fstat) } else { s.cksi_or_fx };
-    let y = if fy { force_ratio(s.ceta_or_fy, fstat) } else { s.ceta_or_fy };
+    let x = if fx { force_ratio(s.cksi_or_fx, mu) } else { s.cksi_or_fx };
+    let y = if fy { force_ratio(s.ceta_or_fy, mu) } else { s.ceta_or_fy };
     [x, y, s.cphi_per_mm, s.pen_or_fn, mu]
 }
 
@@ -773,6 +780,17 @@ mod tests {
         let s = &imported.scenes[0];
         assert_eq!((s.name.as_str(), s.cases), ("t_1", [1, 2]));
         assert!(s.files[0].1.contains("at = [0.001, 0.002]"), "{}", s.files[0].1);
+    }
+
+    #[test]
+    fn coulomb_friction_is_fstat_whatever_fkin_says() {
+        // CONTACT's L = 0 overwrites FKIN with FSTAT (`fric_update`, m_friclaw.f90).
+        let deck =
+            DECK.replace(" 0.3  0.3                     FSTAT, FKIN", " 0.3  0.25                    FSTAT, FKIN");
+        let imported = import_text("t.inp", "t", &deck).unwrap();
+        assert!(imported.statuses.iter().all(CaseStatus::supported), "{:?}", imported.statuses);
+        assert!(imported.statuses[0].notes.iter().any(|n| n.starts_with("FSTAT = 0.3, FKIN = 0.25")));
+        assert!(imported.scenes[0].files[0].1.contains("mu = 0.3\n"), "{}", imported.scenes[0].files[0].1);
     }
 
     #[test]
