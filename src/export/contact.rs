@@ -3,7 +3,9 @@
 //! digits and case structure of `reference/contact/README.contact.md` ("How the time histories are
 //! formed"): a steady sweep is one steady case (T = 3) per point; a transient history starts a
 //! sequence (P = 2) with its steady start (T = 3, step 0) or its first step (T = 2), then one
-//! transient case (P = 0, T = 2) per step. Exact theory, Coulomb friction FSTAT = FKIN = μ (read
+//! transient case (P = 0, T = 2) per step; shifts (`[rolling] motion = "shift"`) are T = 1 cases,
+//! and a shift start (`[init] kind = "shift"`) the first case as T = 1 before the rolling ones
+//! (which read CHI, DQ, VELOC with C = 2). Exact theory, Coulomb friction FSTAT = FKIN = μ (read
 //! again, L = 0, in a case whose μ changed), FN prescribed (N = 1), both bodies of the scene's
 //! material, rolling in CONTACT's +x (CHI = 0) with DQ = courant·dx (CONTACT solves a steady case
 //! with DQ = DX and keeps it: after a steady start at another DQ the first transient case gives DQ
@@ -24,7 +26,7 @@
 
 use crate::physics::FrictionLaw;
 use crate::problem::{LoadingKind, Problem, Sample};
-use crate::scene::InitialSlip;
+use crate::scene::{InitialSlip, Motion};
 use std::fmt::Write;
 
 /// Values per line of an element-wise undeformed distance.
@@ -41,6 +43,9 @@ const SABSH2_UNUSED_MM_S: f64 = 1000.0;
 pub fn module3_input(p: &Problem) -> String {
     let rows: Vec<&Sample> = p.loading.rows().collect();
     let steady_start = p.loading.steady_start().is_some();
+    // Shifts (T = 1): every case, or the first one before the rolling (`[init] kind = "shift"`).
+    let shifts = p.rolling.motion == Motion::Shift;
+    let shift_start = p.loading.shift_start().is_some();
     let sweep = p.loading.kind == LoadingKind::Sweep;
     let load_varies = rows.iter().any(|s| s.fn_n != rows[0].fn_n);
     let mut out = format!(
@@ -62,7 +67,13 @@ pub fn module3_input(p: &Problem) -> String {
             prev_mu = s.mu;
         }
         let _ = writeln!(out, "\n 3  MODULE      % step {}, t={} s", s.step, s.t_s);
-        let (pv, t) = (if new_sequence { 2 } else { 0 }, if steady { 3 } else { 2 });
+        let shift = shifts || (shift_start && first);
+        let t = match (steady, shift) {
+            (true, _) => 3,
+            (_, true) => 1,
+            _ => 2,
+        };
+        let pv = if new_sequence { 2 } else { 0 };
         // F = 1: Fx prescribed with CETA given, F = 2: Fx and Fy (the scene refuses Fy alone).
         let f = usize::from(s.fx_target.is_some()) + usize::from(s.fy_target.is_some());
         let _ = writeln!(out, "  {pv}0{t}1{f}0      P-B-T-N-F-S   PVTIME, BOUND , TANG  , NORM  , FORCE , STRESS");
@@ -72,7 +83,9 @@ pub fn module3_input(p: &Problem) -> String {
         let v_mm_s = s.v_mm_s.unwrap_or(p.rolling.v_mm_s);
         let speed_changed = !first && v_mm_s != prev_v_mm_s;
         prev_v_mm_s = v_mm_s;
-        let dq_again = (steady_start && n == 1 && p.rolling.dq_mm != p.grid.dx_mm) || speed_changed;
+        // The first rolling case after a shift start reads its rolling step (a shift reads none).
+        let dq_again =
+            (steady_start && n == 1 && p.rolling.dq_mm != p.grid.dx_mm) || (shift_start && n == 1) || speed_changed;
         let law = law_digit(&p.friction);
         let ldc = match (first, dq_again) {
             (true, _) => format!("{law}22020"),
@@ -105,9 +118,9 @@ pub fn module3_input(p: &Problem) -> String {
             friction_lines(p, s.mu, &mut out);
         }
         if first {
-            geometry(p, v_mm_s, load_varies, &mut out);
+            geometry(p, (!shift).then_some(v_mm_s), load_varies, &mut out);
         } else if dq_again {
-            kinematics_and_material(p, v_mm_s, &mut out);
+            kinematics_and_material(p, Some(v_mm_s), &mut out);
         }
     }
     out.push_str("\n 0  MODULE\n");
@@ -153,15 +166,18 @@ fn friction_lines(p: &Problem, mu: f64, out: &mut String) {
     let _ = writeln!(out, "  {:?}   {:?}                           MEMDST, MEM_S0", m.memory_mm, m.s0_mm_s);
 }
 
-/// The kinematics (CHI, DQ, VELOC at the row's speed) and material lines of a case with C = 2.
-fn kinematics_and_material(p: &Problem, v_mm_s: f64, out: &mut String) {
+/// The kinematics (CHI, DQ, VELOC at the row's speed; `None`: a shift, which reads none) and
+/// material lines of a case with C = 2.
+fn kinematics_and_material(p: &Problem, v_mm_s: Option<f64>, out: &mut String) {
     let m = &p.material;
-    let _ = writeln!(out, "  0.0   {:?}   {v_mm_s:?}                 CHI, DQ, VELOC", p.rolling.dq_mm);
+    if let Some(v_mm_s) = v_mm_s {
+        let _ = writeln!(out, "  0.0   {:?}   {v_mm_s:?}                 CHI, DQ, VELOC", p.rolling.dq_mm);
+    }
     let _ = writeln!(out, "  {:?}   {:?}   {:?}   {:?}    POISS 1,2,  GG 1,2", m.poisson, m.poisson, m.g_mpa, m.g_mpa);
 }
 
 /// The first case's kinematics, material and geometry lines.
-fn geometry(p: &Problem, v_mm_s: f64, load_varies: bool, out: &mut String) {
+fn geometry(p: &Problem, v_mm_s: Option<f64>, load_varies: bool, out: &mut String) {
     let (m, g) = (&p.material, &p.grid);
     kinematics_and_material(p, v_mm_s, out);
     if p.geometry.elliptic() && !load_varies {

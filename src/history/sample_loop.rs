@@ -30,6 +30,14 @@ pub struct ModelRun {
 /// Something that watches each solve's field (tests, field comparisons).
 pub type Observer<'o> = dyn FnMut(&Sample, &FieldView) + 'o;
 
+/// Which solve a row is.
+#[derive(Debug, Clone, Copy)]
+enum Solve {
+    Steady,
+    Shift,
+    Transient,
+}
+
 /// Run `def` over the problem's samples.
 pub fn run(
     problem: &Problem,
@@ -55,14 +63,20 @@ pub fn run(
     let mut observer = observer;
     let key = |s: &Sample| (s.fn_n, s.mu, s.pen_mm, s.h_coefficients);
     let mut loaded = key(first);
-    let steady_start = loading.steady_start();
     let sweep = !loading.is_transient();
-    for (s, steady) in steady_start.map(|s| (s, true)).into_iter().chain(loading.samples.iter().map(|s| (s, sweep))) {
+    let initial =
+        loading.steady_start().map(|s| (s, Solve::Steady)).or(loading.shift_start().map(|s| (s, Solve::Shift)));
+    let each = if sweep { Solve::Steady } else { Solve::Transient };
+    for (s, solve) in initial.into_iter().chain(loading.samples.iter().map(|s| (s, each))) {
         if key(s) != loaded {
             stepper.load(s)?;
             loaded = key(s);
         }
-        let step = if steady { stepper.steady(s)? } else { stepper.transient(s)? };
+        let step = match solve {
+            Solve::Steady => stepper.steady(s)?,
+            Solve::Shift => stepper.shift(s)?,
+            Solve::Transient => stepper.transient(s)?,
+        };
         if !(step.fx_over_fn.is_finite() && step.fy_over_fn.is_finite()) {
             return Err(SolveError::NonFinite { step: s.step });
         }

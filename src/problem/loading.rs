@@ -249,9 +249,19 @@ impl Loading {
         self.initial.as_ref().filter(|_| self.init == InitKind::Steady && self.is_transient())
     }
 
-    /// Every row a run writes, in order: the steady start (if any), then the samples.
+    /// The initial state when the run starts from a shift (`[init] kind = "shift"`, a row with step 0).
+    pub fn shift_start(&self) -> Option<&Sample> {
+        self.initial.as_ref().filter(|_| self.init == InitKind::Shift && self.is_transient())
+    }
+
+    /// The initial state a run solves (steady or shift start; a row with step 0), if any.
+    pub fn start(&self) -> Option<&Sample> {
+        self.steady_start().or(self.shift_start())
+    }
+
+    /// Every row a run writes, in order: the start (if any), then the samples.
     pub fn rows(&self) -> impl Iterator<Item = &Sample> {
-        self.steady_start().into_iter().chain(&self.samples)
+        self.start().into_iter().chain(&self.samples)
     }
 
     /// Largest μ over the rows (a table may vary it).

@@ -51,6 +51,9 @@ pub enum Creepage {
 pub enum InitKind {
     Zero,
     Steady,
+    /// A shift from rest (CONTACT T = 1, P = 2) at the loading of t = 0, whose traction the
+    /// rolling history then continues (CONTACT T = 2, P = 0: `examples/catt_to_cart.inp`).
+    Shift,
 }
 
 /// Model options the simplified models share (`[model]`); a model's own parameters are its
@@ -340,7 +343,7 @@ impl Scene {
         let material = sections::material(&mut top)?;
         let (v_mm_s, courant, motion) = sections::rolling(&mut top)?;
         let loading = sections::creepage(&mut top, dir)?;
-        let init = sections::init(&mut top)?;
+        let init = sections::init(&mut top, motion, &loading.creepage)?;
         let (model, model_params) = sections::model(&mut top)?;
         let contact_solver = sections::contact_solver(&mut top)?;
         let limits = sections::limits(&mut top)?;

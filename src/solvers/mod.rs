@@ -34,6 +34,9 @@ pub enum SolveError {
     /// The exact-theory solver failed.
     #[error(transparent)]
     Contact(#[from] contact::ContactRunError),
+    /// A shift start asked of a model that solves no shifts (refused before a run).
+    #[error("step {step}: this model solves no shifts")]
+    NoShifts { step: usize },
 }
 
 /// A built-in model: everything the tool needs to know of it, in one record.
@@ -95,7 +98,8 @@ pub fn builtin_names() -> Vec<&'static str> {
 /// Every built-in model the problem names must accept it (e.g. the UBA needs courant ≤ 1; only a
 /// model that finds creepages can take prescribed forces).
 pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
-    if problem.friction.is_falling() && problem.rolling.motion == crate::scene::Motion::Shift {
+    let shifts = problem.rolling.motion == Motion::Shift || problem.loading.shift_start().is_some();
+    if problem.friction.is_falling() && shifts {
         return Err(InputError::new(
             "rolling.motion",
             "\"shift\" with a falling [friction] law",
@@ -141,11 +145,11 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
                 format!("models that solve each row's normal problem: {} (leave {} out of this scene: it takes FN and the scene's geometry only)", able.join(", "), m.name),
             ));
         }
-        if problem.rolling.motion == Motion::Shift && !m.shifts {
+        if shifts && !m.shifts {
             let able: Vec<&str> = MODELS.iter().filter(|m| m.shifts).map(|m| m.name).collect();
             return Err(InputError::new(
                 "solvers",
-                format!("{:?} with rolling.motion = \"shift\"", m.name),
+                format!("{:?} with {}", m.name, if problem.rolling.motion == Motion::Shift { "rolling.motion = \"shift\"" } else { "init.kind = \"shift\"" }),
                 format!("models that solve shifts without rolling: {} (leave {} out of this scene: it models rolling only)", able.join(", "), m.name),
             ));
         }

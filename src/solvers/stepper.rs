@@ -46,6 +46,11 @@ pub trait Stepper {
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError>;
     /// One time step from the model's current state to this sample.
     fn transient(&mut self, at: &Sample) -> Result<Step, SolveError>;
+    /// A shift from rest at this sample (`[init] kind = "shift"`): only models with
+    /// `ModelDef::shifts` are run on such a scene (`solvers::check_applicable`).
+    fn shift(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        Err(SolveError::NoShifts { step: at.step })
+    }
     /// The traction field of the last solve, if the model has one.
     fn field(&self) -> Option<FieldView<'_>>;
     /// Columns this run writes after the model's `extra_columns` (their values end `Step::extra`):

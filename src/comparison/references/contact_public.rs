@@ -1,7 +1,10 @@
 //! CONTACT's public examples and test bank (reference/contact_public/, issue 32 item 4): a scene
 //! imported from one of its decks (`[origin]` in scene.json) is compared with the totals CONTACT
 //! printed in the deck's `.ref_out`, read by [`super::contact_output`] (signs converted there).
-//! Step s ≥ 1 of a history is case `first + s − 1` of the deck. Each difference is measured in
+//! Row k of a history is case `first + k` of the deck (a row with step 0, the steady or shift
+//! start, is the history's first case). Under prescribed forces CONTACT prints the force
+//! prescribed and the creepage (shift) it solved for: the creepages found are compared with the
+//! latter (`cx_in_rounding`, `cy_in_rounding`) and the forces reached with the former. Each difference is measured in
 //! half-units of the printed value's last digit (its rounding bound, [`Printed::half_unit`]), so
 //! that one rule per quantity holds for every case: `tolerances.toml` states k per quantity.
 
@@ -26,6 +29,10 @@ pub const FOLDER: &str = "contact_public";
 pub const FX: &str = "fx_over_fn_in_rounding";
 pub const FY: &str = "fy_over_fn_in_rounding";
 pub const MZ_Q: &str = "mz_in_rounding";
+/// The creepage (shift [mm]) solved for under a prescribed force, against CONTACT's CREEP X
+/// (SHIFT X) and Y.
+pub const CX: &str = "cx_in_rounding";
+pub const CY: &str = "cy_in_rounding";
 
 /// Every deck's printed cases, by the deck's file name (`cattaneo.inp`).
 #[derive(Debug, Clone, Default)]
@@ -90,11 +97,11 @@ impl PublicCases {
     pub fn row_diffs(&self, scene: &StoredScene, h: &History) -> Result<Vec<RowDiff>, String> {
         let Some(origin) = &scene.scene.origin else { return Ok(Vec::new()) };
         let [first, last] = origin.cases;
-        let rows: Vec<_> = h.rows.iter().filter(|r| r.sample.step >= 1).collect();
+        let rows: Vec<_> = h.rows.iter().collect();
         let cases: Option<Vec<&Totals>> = (first..=last).map(|c| self.totals(&origin.file, c)).collect();
         let Some(cases) = cases.filter(|c| c.len() == rows.len()) else {
             return Err(format!(
-                "{} rows of steps ≥ 1, cases {first} to {last} of {}: not one printed case per row",
+                "{} rows, cases {first} to {last} of {}: not one printed case per row",
                 rows.len(),
                 origin.file
             ));
@@ -107,6 +114,11 @@ impl PublicCases {
             let d = |quantity, ours, printed| RowDiff { step, case, quantity, ours, printed };
             out.push(d(FX, r.fx_over_fn, printed_ratio(t, t.x, t.fx_n, r.sample.mu)));
             out.push(d(FY, r.fy_over_fn, printed_ratio(t, t.y, t.fy_n, r.sample.mu)));
+            for (quantity, ours, printed) in [(CX, r.sample.cx, t.x), (CY, r.sample.cy, t.y)] {
+                if let Tangential::SolvedCreepage(c) | Tangential::SolvedShiftMm(c) = printed {
+                    out.push(d(quantity, ours, c));
+                }
+            }
             if let Some(m) = mz.as_ref().and_then(|m| m.get(&step)) {
                 out.push(d(MZ_Q, *m, t.mz_nmm));
             }
@@ -169,7 +181,7 @@ impl ReferenceSet for PublicCases {
             let ctx = Ctx { scene: &ours.name, solver, against: AGAINST, rules };
             match self.row_diffs(ours, h) {
                 Ok(diffs) => {
-                    for q in [FX, FY, MZ_Q] {
+                    for q in [FX, FY, MZ_Q, CX, CY] {
                         let fs = diffs.iter().filter(|d| d.quantity == q).map(|d| finding(&ctx, d));
                         out.extend(fs.max_by(|a, b| a.severity().total_cmp(&b.severity())));
                     }

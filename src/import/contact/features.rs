@@ -43,8 +43,8 @@ pub const FEATURES: &[Feature] = &[
     Feature {
         name: "shifts and frictional compression",
         control: "T",
-        supported: false,
-        reason: "supported: T = 0 (as a steady case at zero creepage), 2 (transient rolling), 3 (steady rolling)",
+        supported: true,
+        reason: "imported as `[rolling] motion = \"shift\"` (CKSI, CETA the shifts of a step [mm], CPHI its rotation), or as the shift that starts a rolling history (`[init] kind = \"shift\"`)",
         used: |c| digit("T", c.digits.t, c.digits.t == 1),
     },
     Feature {
@@ -64,9 +64,16 @@ pub const FEATURES: &[Feature] = &[
     Feature {
         name: "prescribed tangential forces",
         control: "F",
+        supported: true,
+        reason: "imported as the table's fx_over_fn (F = 1) and fy_over_fn (F = 2): Fx/FN = −FX·FSTAT (scene::force_ratio)",
+        used: |c| digit("F", c.digits.f, c.digits.f != 0 && matches!(c.digits.t, 1 | 2)),
+    },
+    Feature {
+        name: "prescribed tangential forces in steady rolling",
+        control: "F",
         supported: false,
-        reason: "supported: F = 0 (creepages CKSI, CETA prescribed)",
-        used: |c| digit("F", c.digits.f, c.digits.f != 0),
+        reason: "supported: F = 1, 2 in shifts and transient rolling (T = 1, 2); in steady rolling (T = 3) F = 0",
+        used: |c| digit("F", c.digits.f, c.digits.f != 0 && c.digits.t == 3),
     },
     Feature {
         name: "subsurface stresses",
@@ -92,8 +99,8 @@ pub const FEATURES: &[Feature] = &[
     Feature {
         name: "static friction other than kinetic friction",
         control: "FSTAT, FKIN",
-        supported: false,
-        reason: "supported: FSTAT = FKIN (one coefficient of friction)",
+        supported: true,
+        reason: "CONTACT's Coulomb law (L = 0) takes FSTAT as its one coefficient and overwrites FKIN with it (`fric_update` in m_friclaw.f90: fkin := fstat; the traction bound is FSTAT pn): mu = FSTAT",
         used: |c| {
             let f = &c.state.friction;
             (c.state.friction_law == 0 && f.len() == 2 && f[0] != f[1])

@@ -96,9 +96,11 @@ struct Loaded {
     pn: Vec<f64>,
     pn_sum: f64,
     pn_max: f64,
-    /// Kalker's linear d(fx/FN)/d(cx), d(fy/FN)/d(cy) at this load: the prescribed-force
-    /// iteration's start ([`super::force`]).
+    /// Kalker's linear d(fx/FN)/d(cx), d(fy/FN)/d(cy) at this load (shifts: Mindlin's per mm):
+    /// the prescribed-force iteration's start ([`super::force`]).
     slope: [f64; 2],
+    /// Mindlin's d(f/FN)/d(shift) [1/mm] at this load: the start of a shift start's iteration.
+    shift_slope: [f64; 2],
 }
 
 /// The solver's state: the normal and tangential solvers (kernels and FFT plans built once per
@@ -111,6 +113,9 @@ struct Contact<'a> {
     /// CONTACT solves steady rolling with DQ = DX whatever DQ the input gives (SteadyGS;
     /// `m_sdis.f90` warns "Using DQ = DX"), so does this solver; `None`: `tangential` serves.
     steady_dx: Option<TangentialSolver>,
+    /// The shift from rest that starts a rolling history (`[init] kind = "shift"`); `None`: no
+    /// shift start.
+    shift_start: Option<TangentialSolver>,
     loaded: Option<Loaded>,
     /// The last solve (the previous traction of the next transient step).
     last: Option<StepResult>,
@@ -155,11 +160,16 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     } else {
         None
     };
+    let shift_start = match p.loading.shift_start() {
+        Some(_) => Some(TangentialSolver::for_shifts(&k0, &x, &y).map_err(ContactRunError::Kernel)?),
+        None => None,
+    };
     Ok(Box::new(Contact {
         p,
         normal,
         tangential,
         steady_dx,
+        shift_start,
         loaded: None,
         last: None,
         older: None,
@@ -362,7 +372,9 @@ impl Stepper for Contact<'_> {
         if pn_sum <= 0.0 {
             return Err(ContactRunError::NoContact { mx: p.grid.mx, my: p.grid.my, fn_n }.into());
         }
-        for solver in std::iter::once(&mut self.tangential).chain(self.steady_dx.as_mut()) {
+        let solvers =
+            std::iter::once(&mut self.tangential).chain(self.steady_dx.as_mut()).chain(self.shift_start.as_mut());
+        for solver in solvers {
             solver.set_pressure(&pn_mpa).map_err(|source| ContactRunError::Setup { fn_n, source })?;
         }
         let pn_max = pn_mpa.iter().fold(0.0f64, |a, &b| a.max(b));
@@ -371,14 +383,15 @@ impl Stepper for Contact<'_> {
             Some(_) => equivalent_ellipse(&p.grid, &pn_mpa, fn_n).unwrap_or_else(|| p.geometry.ellipse_at(fn_n)),
             None => p.geometry.ellipse_at(fn_n),
         };
+        let shift_slope = [mindlin_stiffness_n_mm(p, e.a_mm * e.b_mm) / fn_n; 2];
         let slope = match p.rolling.motion {
             Motion::Rolling => {
                 let linear = LinearTheory::new(p.material.g_mpa, e.a_mm, e.b_mm, fn_n);
                 [linear.forces(&p.coefficients, (1.0, 0.0, 0.0)).0, linear.forces(&p.coefficients, (0.0, 1.0, 0.0)).1]
             }
-            Motion::Shift => [mindlin_stiffness_n_mm(p, e.a_mm * e.b_mm) / fn_n; 2],
+            Motion::Shift => shift_slope,
         };
-        self.loaded = Some(Loaded { key, fn_n, pn: pn_mpa, pn_sum, pn_max, slope });
+        self.loaded = Some(Loaded { key, fn_n, pn: pn_mpa, pn_sum, pn_max, slope, shift_slope });
         self.older = None;
         Ok(())
     }
@@ -401,6 +414,25 @@ impl Stepper for Contact<'_> {
         self.found = found;
         self.older = None;
         self.after_steady = Some(SteadyStart::of(at));
+        Ok(self.record(r))
+    }
+
+    /// The shift from rest (CONTACT T = 1, P = 2): its traction is the previous traction of the
+    /// first rolling step; the prescribed-force iteration then starts afresh.
+    fn shift(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        let params = TangentialParams { dq_mm: 1.0, ..self.params(at) };
+        let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.shift_slope, l.pn_sum)).expect("loaded before a solve");
+        let solver = self.shift_start.as_mut().expect("built for a shift start");
+        let zero = &self.zero;
+        let (r, found) = force::solve_sample(at, &params, slope, pn_sum, &mut force::Memory::default(), |q| {
+            solver.transient_step(q, zero, zero, None)
+        })
+        .map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        self.found = found;
+        if r.px.iter().chain(&r.py).any(|v| !v.is_finite()) {
+            return Err(SolveError::NonFinite { step: at.step });
+        }
+        self.older = None;
         Ok(self.record(r))
     }
 
