@@ -283,18 +283,19 @@ fn table_row(scene: &Scene, rows: &CreepageTable, k: usize, t: f64) -> Sample {
         (None, Some(fy)) => (0.0, Some(rows.interpolate(fy, t))),
         (None, None) => (scene.cy, scene.fy_over_fn),
     };
+    let (fn_n, pen_mm) = rows.normal_at(t, scene.fn_n);
     Sample {
         step: k,
         t_s: t,
         cx,
         cy,
         cs: get(&rows.cs, scene.cs_per_mm),
-        fn_n: get(&rows.fn_n, scene.fn_n),
+        fn_n,
         mu: get(&rows.mu, scene.mu),
         v_mm_s: None,
         fx_target,
         fy_target,
-        pen_mm: rows.pen_mm.as_ref().map(|v| rows.interpolate(v, t)),
+        pen_mm,
         h_coefficients: rows.h_coefficients.as_ref().map(|b| b.each_ref().map(|v| rows.interpolate(v, t))),
     }
 }

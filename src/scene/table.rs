@@ -62,6 +62,7 @@ pub struct CreepageTable {
     pub cs: Option<Vec<f64>>,
     pub fn_n: Option<Vec<f64>>,
     /// The approach [mm] prescribed in place of FN (CONTACT N = 0, PEN): FN is then an outcome.
+    /// With both columns each row gives one of `fn_n`, `pen_mm` (the other NaN): [`Self::normal_at`].
     pub pen_mm: Option<Vec<f64>>,
     /// The undeformed distance per row, `h = b1 x² + b2 xy + b3 y² + b4 x + b5 y + b6` in
     /// CONTACT's coordinates (its IBASE = 1 B(1..6), one case per row), columns [`H_COLUMNS`].
@@ -111,7 +112,6 @@ impl CreepageTable {
         for (a, b, what) in [
             ("cx", "fx_over_fn", "(the creepage given) and fx_over_fn (the force prescribed)"),
             ("cy", "fy_over_fn", "(the creepage given) and fy_over_fn (the force prescribed)"),
-            ("fn_n", "pen_mm", "(the normal force prescribed) and pen_mm (the approach prescribed)"),
         ] {
             if has(a) && has(b) {
                 return Err(InputError::new(
@@ -129,6 +129,8 @@ impl CreepageTable {
                 "all six (the row's undeformed distance b1 x² + b2 xy + b3 y² + b4 x + b5 y + b6) or none",
             ));
         }
+        // Both fn_n and pen_mm: each row gives exactly one of them, the other cell empty.
+        let per_row = has("fn_n") && has("pen_mm");
         let mut cols: Vec<Vec<f64>> = vec![Vec::new(); header.len()];
         for (r, rec) in rdr.records().enumerate() {
             let row = r + 2; // 1-based line number, header is line 1
@@ -146,8 +148,22 @@ impl CreepageTable {
                     format!("{} fields", header.len()),
                 ));
             }
+            if per_row {
+                let empty = |c: &str| header.iter().position(|h| h == c).is_some_and(|i| rec[i].is_empty());
+                if empty("fn_n") == empty("pen_mm") {
+                    return Err(InputError::new(
+                        format!("{origin} line {row} columns fn_n, pen_mm"),
+                        if empty("fn_n") { "both empty" } else { "both given" },
+                        "exactly one of fn_n (the normal force prescribed) and pen_mm (the approach prescribed) per row, the other cell empty",
+                    ));
+                }
+            }
             for (c, cell) in rec.iter().enumerate() {
                 let name = &header[c];
+                if per_row && cell.is_empty() && (name == "fn_n" || name == "pen_mm") {
+                    cols[c].push(f64::NAN);
+                    continue;
+                }
                 let v: f64 = cell.parse().map_err(|_| {
                     InputError::new(format!("{origin} line {row} column {name}"), format!("{cell:?}"), "a number")
                 })?;
@@ -221,6 +237,35 @@ impl CreepageTable {
         }
         let (t0, t1) = (ts[k - 1], ts[k]);
         series[k - 1] + (series[k] - series[k - 1]) * (t - t0) / (t1 - t0)
+    }
+
+    /// The normal input at time `t`: (FN, the approach if prescribed); `fn_default` where the
+    /// table has no `fn_n`. Between two rows of one kind interpolated; between a row with FN and
+    /// one with the approach, the row at `t` (exactly) or else the later row's.
+    pub fn normal_at(&self, t: f64, fn_default: f64) -> (f64, Option<f64>) {
+        match (&self.fn_n, &self.pen_mm) {
+            (None, None) => (fn_default, None),
+            (Some(f), None) => (self.interpolate(f, t), None),
+            (None, Some(p)) => (fn_default, Some(self.interpolate(p, t))),
+            (Some(f), Some(p)) => {
+                let ts = &self.t_s;
+                let k = ts.partition_point(|&x| x <= t).min(ts.len() - 1);
+                let (lo, hi) = (k.saturating_sub(1), k);
+                if p[lo].is_nan() == p[hi].is_nan() {
+                    return if p[hi].is_nan() {
+                        (self.interpolate(f, t), None)
+                    } else {
+                        (fn_default, Some(self.interpolate(p, t)))
+                    };
+                }
+                let row = if ts[lo] == t { lo } else { hi };
+                if p[row].is_nan() {
+                    (f[row], None)
+                } else {
+                    (fn_default, Some(p[row]))
+                }
+            }
+        }
     }
 
     /// Last time in the table [s].

@@ -93,7 +93,7 @@ fn a_prescribed_approach_and_its_force_give_the_same_history() {
 fn an_approach_with_a_force_column_or_a_model_without_it_is_refused() {
     let both = run_table("approach_both", "t_s,cx,fn_n,pen_mm\n0.002,0.001,50000.0,0.1\n", "[\"contact\"]");
     let e = both.unwrap_err();
-    assert!(e.contains("both fn_n and pen_mm") && e.contains("not both"), "{e}");
+    assert!(e.contains("columns fn_n, pen_mm") && e.contains("both given") && e.contains("exactly one"), "{e}");
     let negative = run_table("approach_negative", "t_s,cx,pen_mm\n0.002,0.001,-0.1\n", "[\"contact\"]");
     let e = negative.unwrap_err();
     assert!(e.contains("column pen_mm") && e.contains("(0, 10] mm"), "{e}");

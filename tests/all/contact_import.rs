@@ -299,9 +299,11 @@ fn carter2d_imports_the_strip_as_a_grid_with_its_quadratic_gap() {
 fn testbank_imports_two_cases_and_names_every_other_with_its_reason() {
     let imported = import_deck("testbank.inp");
     let (ok, no) = split(&imported);
-    // 10: a Cattaneo shift under FX, FY (the history's first case: case 11 that continues it is
-    // N = 0); 17: transient rolling from rest under FX.
-    assert_eq!(ok, vec![6, 7, 10, 17]);
+    // 1: a Cattaneo shift with the approach prescribed (N = 0); 10: a Cattaneo shift under FX, FY
+    // (case 11 that continues it is N = 0 with F = 2, not verified); 17: transient rolling from
+    // rest under FX.
+    assert_eq!(ok, vec![1, 6, 7, 10, 17]);
+    assert!(imported.statuses[10].refused.iter().any(|r| r.starts_with("N = 0, F = 2")), "{:?}", imported.statuses[10]);
     // 14, 15 continue case 13, a shift with B = 2.
     assert!(imported.statuses[13].refused.iter().any(|r| r.contains("holds case 13")), "{:?}", imported.statuses[13]);
     assert_eq!(ok.len() + no.len(), imported.statuses.len());

@@ -165,7 +165,7 @@ fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static 
         ("CHI, DQ", (a.chi_rad, a.dq_mm) == (b.chi_rad, b.dq_mm)),
         ("POISS, GG", (a.poiss, a.gg_mpa) == (b.poiss, b.gg_mpa)),
         ("the potential contact (IPOTCN and its line)", a.potcon == b.potcon),
-        ("the undeformed distance (IBASE)", a.undeformed == b.undeformed),
+        ("the undeformed distance (IBASE)", a.undeformed == b.undeformed || (load_varies && quadratics(a, b))),
         ("the friction law", a.friction_law == b.friction_law),
         ("SPINXO, SPINYO", a.spin_centre_mm == b.spin_centre_mm),
         ("the rolling step (CHI, DQ, VELOC read)", a.rolling_read == b.rolling_read),
@@ -280,6 +280,37 @@ fn sweep_continues(cases: &[Case], h: &History, c: &Case3) -> bool {
     let same_speed = c.state.veloc_mm_s == first.state.veloc_mm_s;
     let same_creepage = row(c)[..3].iter().zip(&row(first)[..3]).all(|(a, b)| a.to_bits() == b.to_bits());
     (same_speed && !speeds_vary) || (same_creepage && (speeds_vary || h.cases.len() == 1))
+}
+
+/// Whether both cases give a quadratic undeformed distance (IBASE = 1, IPLAN alike) on one grid:
+/// new B(1..6) per case are the table's columns `b1_per_mm` … `b6_mm`.
+fn quadratics(a: &State, b: &State) -> bool {
+    let q = |s: &State| s.undeformed.as_ref().filter(|u| u.ibase == 1).map(|u| u.iplan);
+    matches!(a.potcon, Some(Potcon::Grid { .. })) && q(a).is_some() && q(a) == q(b)
+}
+
+/// The B(1..6) of each case where they change within the history (IBASE = 1), else `None`.
+fn quadratic_rows(cases: &[Case], h: &History) -> Option<Vec<[f64; 6]>> {
+    let b = |k: usize| {
+        let u = case3(cases, k).state.undeformed.as_ref()?;
+        <[f64; 6]>::try_from(u.values.as_slice()).ok().filter(|_| u.ibase == 1)
+    };
+    let rows: Vec<[f64; 6]> = h.cases.iter().map(|&k| b(k)).collect::<Option<_>>()?;
+    rows.iter().any(|r| r != &rows[0]).then_some(rows)
+}
+
+/// The load of approach `pen_mm` on undeformed distance `h_mm` (CONTACT's element order) of a
+/// `mx × my` grid of `dx × dy` elements: the nominal `contact.fn_n` of a case with N = 0.
+fn load_of_approach(
+    h_mm: &[f64],
+    (mx, my, dx, dy): (usize, usize, f64, f64),
+    (g, nu): (f64, f64),
+    pen_mm: f64,
+) -> Option<f64> {
+    use crate::physics::halfspace::{influence::Kernel, normal};
+    let kernel = Kernel::new(mx, my, dx, dy, g, nu, 0.0).ok()?;
+    let s = normal::NormalSolver::new(&kernel).ok()?.solve_approach(h_mm, pen_mm, &Default::default()).ok()?;
+    Some(s.pn_mpa.iter().sum::<f64>() * dx * dy).filter(|f| f.is_finite() && *f > 0.0)
 }
 
 /// Which of x, y the case prescribes as a force (F = 1: x; F = 2: x and y).
@@ -490,6 +521,7 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     // The rolling step of the history (after a shift start, its first rolling case's).
     let roll = &case3(cases, h.cases[usize::from(h.run == (Run::Transient { start: Start::Shift }))]).state;
     let rows: Vec<[f64; 5]> = h.cases.iter().map(|&k| row(case3(cases, k))).collect();
+    let quads = quadratic_rows(cases, h);
     let mut doc = Table::new();
     let mut files: Vec<(String, String)> = Vec::new();
     doc.insert("name".into(), Value::String(name.clone()));
@@ -538,6 +570,19 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
                     })
                     .collect()
             };
+            if first.digits.n == 0 {
+                // N = 0: the nominal load (it forms the nominal contact) of the first case's PEN.
+                let m = combine_bodies(s.poiss, s.gg_mpa);
+                let fn_n = load_of_approach(&h_mm, (mx, my, *dx_mm, *dy_mm), (m.g_mpa, m.poisson), rows[0][3])
+                    .ok_or_else(|| {
+                        InputError::new(
+                            format!("{file}, case {}", numbers[0]),
+                            format!("PEN = {}", rows[0][3]),
+                            "an approach at which the undeformed distance makes contact on the grid",
+                        )
+                    })?;
+                contact[0] = ("fn_n", Value::Float(fn_n));
+            }
             let mut csv = String::from("ix,iy,h_mm\n");
             for (e, v) in h_mm.iter().enumerate() {
                 let _ = writeln!(csv, "{},{},{v:?}", e % mx + 1, e / mx + 1);
@@ -602,23 +647,57 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
             let dt_s = if h.run == Run::Shifts { 1.0 } else { roll.dq_mm / roll.veloc_mm_s };
             let varies = |j: usize| rows.iter().any(|r| r[j].to_bits() != rows[0][j].to_bits());
             let forces = prescribed(first);
-            let columns: Vec<usize> = (0..5).filter(|&j| j == 0 || (j == 1 && forces[1]) || varies(j)).collect();
+            // N = 0: PEN is the column pen_mm, always written (FN is the solver's); N = 0 and 1 in
+            // one history: both columns, each row's other cell empty.
+            let normal: Vec<bool> = h.cases.iter().map(|&k| case3(cases, k).digits.n == 0).collect();
+            let (by_pen, by_fn) = (normal.iter().any(|&p| p), normal.iter().any(|&p| !p));
+            let columns: Vec<usize> =
+                (0..5).filter(|&j| j == 0 || (j == 1 && forces[1]) || (j == 3 && by_pen) || varies(j)).collect();
             let names = [
                 if forces[0] { "fx_over_fn" } else { "cx" },
                 if forces[1] { "fy_over_fn" } else { "cy" },
                 "cs",
-                "fn_n",
+                match (by_pen, by_fn) {
+                    (true, true) => "fn_n,pen_mm",
+                    (true, false) => "pen_mm",
+                    _ => "fn_n",
+                },
                 "mu",
             ];
             let speed_column = if speeds(cases, h).is_some() { ",v_mm_s" } else { "" };
-            let mut csv =
-                format!("t_s,{}{speed_column}\n", columns.iter().map(|&j| names[j]).collect::<Vec<_>>().join(","));
+            let quad_columns = if quads.is_some() { ",b1_per_mm,b2_per_mm,b3_per_mm,b4,b5,b6_mm" } else { "" };
+            let mut csv = format!(
+                "t_s,{}{speed_column}{quad_columns}\n",
+                columns.iter().map(|&j| names[j]).collect::<Vec<_>>().join(",")
+            );
             match speeds(cases, h) {
+                Some(_) if quads.is_some() => {
+                    return Err(InputError::new(
+                        format!("{file}, cases {} to {}", numbers[0], numbers[1]),
+                        "VELOC and B(1..6) changing in one history",
+                        "one of the speed (VELOC) and the undeformed distance (IBASE = 1) changing per case",
+                    ))
+                }
+                Some(_) if by_pen && by_fn => {
+                    return Err(InputError::new(
+                        format!("{file}, cases {} to {}", numbers[0], numbers[1]),
+                        "VELOC changing with N = 0 and N = 1 in one history",
+                        "one of the speed (VELOC) changing per case and N changing per case",
+                    ))
+                }
                 Some(v) => speed_rows(&mut csv, &rows, &columns, &v, roll.dq_mm, steady_start),
                 None => {
                     for (n, r) in rows.iter().enumerate() {
                         let step = if steady_start { n } else { n + 1 };
-                        let values: Vec<String> = columns.iter().map(|&j| format!("{:?}", r[j])).collect();
+                        let cell = |j: usize| match (j, by_pen && by_fn, normal[n]) {
+                            (3, true, true) => format!(",{:?}", r[3]),
+                            (3, true, false) => format!("{:?},", r[3]),
+                            _ => format!("{:?}", r[j]),
+                        };
+                        let mut values: Vec<String> = columns.iter().map(|&j| cell(j)).collect();
+                        if let Some(q) = &quads {
+                            values.extend(q[n].iter().map(|b| format!("{b:?}")));
+                        }
                         let _ = writeln!(csv, "{:?},{}", step as f64 * dt_s, values.join(","));
                     }
                 }
@@ -678,7 +757,7 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
         }
     }
     let problem = read_back(dir.path(), &scene_file, &doc, &files)?;
-    check_rows(&problem, &rows, &h.cases.iter().map(|&k| cases[k].number).collect::<Vec<_>>())?;
+    check_rows(&problem, &rows, quads.as_deref(), &h.cases.iter().map(|&k| cases[k].number).collect::<Vec<_>>())?;
     let text = format!(
         "# Imported by `creepbench import contact` from {file}, cases {} to {}.\n{}",
         numbers[0],
@@ -714,13 +793,31 @@ fn read_back(dir: &Path, scene_file: &str, doc: &Table, files: &[(String, String
     crate::pipeline::resolve(&scene)
 }
 
-/// Every row of the resolved scene equals its case: cx, cy, cs, FN and μ bit for bit.
-fn check_rows(problem: &Problem, rows: &[[f64; 5]], numbers: &[usize]) -> Result<(), InputError> {
+/// Every row of the resolved scene equals its case: cx, cy, cs, FN (or PEN) and μ bit for bit,
+/// and B(1..6) where they change per case.
+fn check_rows(
+    problem: &Problem,
+    rows: &[[f64; 5]],
+    quads: Option<&[[f64; 6]]>,
+    numbers: &[usize],
+) -> Result<(), InputError> {
     let got: Vec<[f64; 5]> = problem
         .loading
         .rows()
-        .map(|s| [s.fx_target.unwrap_or(s.cx), s.fy_target.unwrap_or(s.cy), s.cs, s.fn_n, s.mu])
+        .map(|s| [s.fx_target.unwrap_or(s.cx), s.fy_target.unwrap_or(s.cy), s.cs, s.pen_mm.unwrap_or(s.fn_n), s.mu])
         .collect();
+    let got_quads: Vec<Option<[f64; 6]>> = problem.loading.rows().map(|s| s.h_coefficients).collect();
+    for (n, (g, q)) in
+        got_quads.iter().zip(quads.map(|q| q.iter().map(Some).collect::<Vec<_>>()).unwrap_or_default()).enumerate()
+    {
+        if g.map(|g| g.map(f64::to_bits)) != q.map(|q| q.map(f64::to_bits)) {
+            return Err(InputError::new(
+                format!("scene {}, case {}", problem.name, numbers[n]),
+                format!("{g:?}"),
+                format!("the case's B(1..6) = {q:?} exactly"),
+            ));
+        }
+    }
     if got.len() != rows.len() {
         return Err(InputError::new(
             format!("scene {}", problem.name),

@@ -391,6 +391,9 @@ impl Stepper for Contact<'_> {
             }
             Motion::Shift => shift_slope,
         };
+        if self.loaded.is_some() && p.rolling.motion == Motion::Shift {
+            self.outer.from_rest();
+        }
         self.loaded = Some(Loaded { key, fn_n, pn: pn_mpa, pn_sum, pn_max, slope, shift_slope });
         self.older = None;
         Ok(())
