@@ -76,7 +76,10 @@ pub fn module3_input(p: &Problem) -> String {
         let pv = if new_sequence { 2 } else { 0 };
         // F = 1: Fx prescribed with CETA given, F = 2: Fx and Fy (the scene refuses Fy alone).
         let f = usize::from(s.fx_target.is_some()) + usize::from(s.fy_target.is_some());
-        let _ = writeln!(out, "  {pv}0{t}1{f}0      P-B-T-N-F-S   PVTIME, BOUND , TANG  , NORM  , FORCE , STRESS");
+        // N = 0: the approach prescribed (PEN), N = 1: FN.
+        let n_digit = u8::from(s.pen_mm.is_none());
+        let _ =
+            writeln!(out, "  {pv}0{t}{n_digit}{f}0      P-B-T-N-F-S   PVTIME, BOUND , TANG  , NORM  , FORCE , STRESS");
         // CONTACT solves the steady start with DQ = DX and keeps that DQ for the cases that follow
         // (`m_sdis.f90`): where the scene's DQ is another, the first transient case gives it again
         // (C = 2: kinematics and material read again, influence coefficients recomputed).
@@ -87,9 +90,16 @@ pub fn module3_input(p: &Problem) -> String {
         let dq_again =
             (steady_start && n == 1 && p.rolling.dq_mm != p.grid.dx_mm) || (shift_start && n == 1) || speed_changed;
         let law = law_digit(&p.friction);
+        // A row's own undeformed distance (IBASE = 1) is read again where it changes (Z = 2).
+        let new_h = !first && s.h_coefficients.is_some() && s.h_coefficients != rows[n - 1].h_coefficients;
         let ldc = match (first, dq_again) {
             (true, _) => format!("{law}22020"),
-            (false, again) => format!("{}0{}000", if read_mu { law } else { 1 }, if again { 2 } else { 0 }),
+            (false, again) => format!(
+                "{}0{}0{}0",
+                if read_mu { law } else { 1 },
+                if again { 2 } else { 0 },
+                if new_h { 2 } else { 0 }
+            ),
         };
         let _ = writeln!(out, "  {ldc}      L-D-C-M-Z-E   FRCLAW, DISCNS, INFLCF, MATER , RZNORM, EXRHS");
         let (g, w) = if falling { (4, 2) } else { (0, 1) };
@@ -109,18 +119,22 @@ pub fn module3_input(p: &Problem) -> String {
         // CONTACT's FXREL, FYREL: the force over FSTAT·FN, its sign flipped (fx = −FX/FN here).
         let (x, y) = (s.fx_target.map_or(s.cx, |f| -f / s.mu), s.fy_target.map_or(s.cy, |f| -f / s.mu));
         let names = [
-            "FN",
+            if s.pen_mm.is_some() { "PEN" } else { "FN" },
             if s.fx_target.is_some() { "FXREL" } else { "CKSI" },
             if s.fy_target.is_some() { "FYREL" } else { "CETA" },
         ];
-        let _ = writeln!(out, "  {:?}   {x:?}   {y:?}   {:?}        {}, CPHI", s.fn_n, s.cs, names.join(", "));
+        let normal = s.pen_mm.unwrap_or(s.fn_n);
+        let _ = writeln!(out, "  {normal:?}   {x:?}   {y:?}   {:?}        {}, CPHI", s.cs, names.join(", "));
         if read_mu {
             friction_lines(p, s.mu, &mut out);
         }
         if first {
-            geometry(p, (!shift).then_some(v_mm_s), load_varies, &mut out);
+            geometry(p, (!shift).then_some(v_mm_s), load_varies, s.h_coefficients, &mut out);
         } else if dq_again {
             kinematics_and_material(p, Some(v_mm_s), &mut out);
+        }
+        if let (false, Some(b)) = (first, s.h_coefficients.filter(|_| new_h)) {
+            quadratic(b, &mut out);
         }
     }
     out.push_str("\n 0  MODULE\n");
@@ -177,7 +191,7 @@ fn kinematics_and_material(p: &Problem, v_mm_s: Option<f64>, out: &mut String) {
 }
 
 /// The first case's kinematics, material and geometry lines.
-fn geometry(p: &Problem, v_mm_s: Option<f64>, load_varies: bool, out: &mut String) {
+fn geometry(p: &Problem, v_mm_s: Option<f64>, load_varies: bool, b: Option<[f64; 6]>, out: &mut String) {
     let (m, g) = (&p.material, &p.grid);
     kinematics_and_material(p, v_mm_s, out);
     if p.geometry.elliptic() && !load_varies {
@@ -207,6 +221,10 @@ fn geometry(p: &Problem, v_mm_s: Option<f64>, load_varies: bool, out: &mut Strin
         let _ = writeln!(out, "  {a1:?}   0.0   {b1:?}   0.0   0.0   0.0     B1..B6");
         return;
     }
+    if let Some(b) = b {
+        quadratic(b, out);
+        return;
+    }
     let h = p.geometry.undeformed_distance_mm(g, p.hertz().fn_n, m);
     let _ = writeln!(out, "  9    1                                      IBASE, IPLAN");
     let contact_order: Vec<f64> = (0..g.len()).map(|k| h[g.index(g.mx - 1 - k % g.mx, k / g.mx)]).collect();
@@ -214,4 +232,11 @@ fn geometry(p: &Problem, v_mm_s: Option<f64>, load_varies: bool, out: &mut Strin
         let line: Vec<String> = chunk.iter().map(|v| format!("{v:?}")).collect();
         let _ = writeln!(out, "  {}", line.join("  "));
     }
+}
+
+/// CONTACT's IBASE = 1: `h = B1 x² + B2 xy + B3 y² + B4 x + B5 y + B6` in its coordinates.
+fn quadratic(b: [f64; 6], out: &mut String) {
+    let _ = writeln!(out, "  1    1                                      IBASE, IPLAN");
+    let line: Vec<String> = b.iter().map(|v| format!("{v:?}")).collect();
+    let _ = writeln!(out, "  {}     B1..B6", line.join("   "));
 }

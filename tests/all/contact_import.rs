@@ -101,17 +101,19 @@ fn differences(original: &Problem, imported: &Problem, split: bool) -> Vec<Strin
     out
 }
 
-/// A row's time, creepages (or the forces prescribed in their place), load and friction, as
-/// bits, and μ.
-fn row_bits(s: &creepbench::problem::Sample) -> ([u64; 7], f64) {
-    let force = |f: Option<f64>| f.map_or(u64::MAX, f64::to_bits);
-    let [t, cx, cy, cs, fn_n] = [s.t_s, s.cx, s.cy, s.cs, s.fn_n].map(f64::to_bits);
-    ([t, cx, cy, cs, fn_n, force(s.fx_target), force(s.fy_target)], s.mu)
+/// A row's time, creepages (or the forces prescribed in their place), load (or approach), its
+/// own undeformed distance (B1..B6) and friction, as bits, and μ.
+fn row_bits(s: &creepbench::problem::Sample) -> (Vec<u64>, f64) {
+    let opt = |f: Option<f64>| f.map_or(u64::MAX, f64::to_bits);
+    let mut bits: Vec<u64> = [s.t_s, s.cx, s.cy, s.cs, s.fn_n].map(f64::to_bits).to_vec();
+    bits.extend([opt(s.fx_target), opt(s.fy_target), opt(s.pen_mm)]);
+    bits.extend(s.h_coefficients.map_or(vec![u64::MAX], |b| b.map(f64::to_bits).to_vec()));
+    (bits, s.mu)
 }
 
 /// Rows equal: bit for bit, μ within the export's 1e-9 relative (a table's μ interpolated at a
 /// printed time is read again only where it changed beyond rounding, `export::contact`).
-fn same_row(a: &([u64; 7], f64), b: &([u64; 7], f64)) -> bool {
+fn same_row(a: &(Vec<u64>, f64), b: &(Vec<u64>, f64)) -> bool {
     a.0 == b.0 && (a.1 - b.1).abs() <= 1e-9 * a.1.abs()
 }
 
