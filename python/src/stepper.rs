@@ -112,6 +112,8 @@ impl Stepper {
             v_mm_s: None,
             fx_target: None,
             fy_target: None,
+            pen_mm: None,
+            h_coefficients: None,
         };
         if self.loaded != Some((fn_n, mu)) {
             self.stepper.load(&s).map_err(|e| solve_error(&self.problem, &self.model, e))?;

@@ -3,7 +3,9 @@
 //! digits and case structure of `reference/contact/README.contact.md` ("How the time histories are
 //! formed"): a steady sweep is one steady case (T = 3) per point; a transient history starts a
 //! sequence (P = 2) with its steady start (T = 3, step 0) or its first step (T = 2), then one
-//! transient case (P = 0, T = 2) per step. Exact theory, Coulomb friction FSTAT = FKIN = μ (read
+//! transient case (P = 0, T = 2) per step; shifts (`[rolling] motion = "shift"`) are T = 1 cases,
+//! and a shift start (`[init] kind = "shift"`) the first case as T = 1 before the rolling ones
+//! (which read CHI, DQ, VELOC with C = 2). Exact theory, Coulomb friction FSTAT = FKIN = μ (read
 //! again, L = 0, in a case whose μ changed), FN prescribed (N = 1), both bodies of the scene's
 //! material, rolling in CONTACT's +x (CHI = 0) with DQ = courant·dx (CONTACT solves a steady case
 //! with DQ = DX and keeps it: after a steady start at another DQ the first transient case gives DQ
@@ -24,7 +26,7 @@
 
 use crate::physics::FrictionLaw;
 use crate::problem::{LoadingKind, Problem, Sample};
-use crate::scene::InitialSlip;
+use crate::scene::{InitialSlip, Motion};
 use std::fmt::Write;
 
 /// Values per line of an element-wise undeformed distance.
@@ -39,6 +41,9 @@ const SABSH2_UNUSED_MM_S: f64 = 1000.0;
 pub fn module3_input(p: &Problem) -> String {
     let rows: Vec<&Sample> = p.loading.rows().collect();
     let steady_start = p.loading.steady_start().is_some();
+    // Shifts (T = 1): every case, or the first one before the rolling (`[init] kind = "shift"`).
+    let shifts = p.rolling.motion == Motion::Shift;
+    let shift_start = p.loading.shift_start().is_some();
     let sweep = p.loading.kind == LoadingKind::Sweep;
     let load_varies = rows.iter().any(|s| s.fn_n != rows[0].fn_n);
     let mut out = format!(
@@ -60,21 +65,39 @@ pub fn module3_input(p: &Problem) -> String {
             prev_mu = s.mu;
         }
         let _ = writeln!(out, "\n 3  MODULE      % step {}, t={} s", s.step, s.t_s);
-        let (pv, t) = (if new_sequence { 2 } else { 0 }, if steady { 3 } else { 2 });
+        let shift = shifts || (shift_start && first);
+        let t = match (steady, shift) {
+            (true, _) => 3,
+            (_, true) => 1,
+            _ => 2,
+        };
+        let pv = if new_sequence { 2 } else { 0 };
         // F = 1: Fx prescribed with CETA given, F = 2: Fx and Fy (the scene refuses Fy alone).
         let f = usize::from(s.fx_target.is_some()) + usize::from(s.fy_target.is_some());
-        let _ = writeln!(out, "  {pv}0{t}1{f}0      P-B-T-N-F-S   PVTIME, BOUND , TANG  , NORM  , FORCE , STRESS");
+        // N = 0: the approach prescribed (PEN), N = 1: FN.
+        let n_digit = u8::from(s.pen_mm.is_none());
+        let _ =
+            writeln!(out, "  {pv}0{t}{n_digit}{f}0      P-B-T-N-F-S   PVTIME, BOUND , TANG  , NORM  , FORCE , STRESS");
         // CONTACT solves the steady start with DQ = DX and keeps that DQ for the cases that follow
         // (`m_sdis.f90`): where the scene's DQ is another, the first transient case gives it again
         // (C = 2: kinematics and material read again, influence coefficients recomputed).
         let v_mm_s = s.v_mm_s.unwrap_or(p.rolling.v_mm_s);
         let speed_changed = !first && v_mm_s != prev_v_mm_s;
         prev_v_mm_s = v_mm_s;
-        let dq_again = (steady_start && n == 1 && p.rolling.dq_mm != p.grid.dx_mm) || speed_changed;
+        // The first rolling case after a shift start reads its rolling step (a shift reads none).
+        let dq_again =
+            (steady_start && n == 1 && p.rolling.dq_mm != p.grid.dx_mm) || (shift_start && n == 1) || speed_changed;
         let law = law_digit(&p.friction);
+        // A row's own undeformed distance (IBASE = 1) is read again where it changes (Z = 2).
+        let new_h = !first && s.h_coefficients.is_some() && s.h_coefficients != rows[n - 1].h_coefficients;
         let ldc = match (first, dq_again) {
             (true, _) => format!("{law}22020"),
-            (false, again) => format!("{}0{}000", if read_mu { law } else { 1 }, if again { 2 } else { 0 }),
+            (false, again) => format!(
+                "{}0{}0{}0",
+                if read_mu { law } else { 1 },
+                if again { 2 } else { 0 },
+                if new_h { 2 } else { 0 }
+            ),
         };
         let _ = writeln!(out, "  {ldc}      L-D-C-M-Z-E   FRCLAW, DISCNS, INFLCF, MATER , RZNORM, EXRHS");
         let (g, w) = if falling { (4, 2) } else { (0, 1) };
@@ -95,18 +118,22 @@ pub fn module3_input(p: &Problem) -> String {
         // CONTACT's FXREL, FYREL: the force over FSTAT·FN, its sign flipped (fx = −FX/FN here).
         let (x, y) = (s.fx_target.map_or(s.cx, |f| -f / s.mu), s.fy_target.map_or(s.cy, |f| -f / s.mu));
         let names = [
-            "FN",
+            if s.pen_mm.is_some() { "PEN" } else { "FN" },
             if s.fx_target.is_some() { "FXREL" } else { "CKSI" },
             if s.fy_target.is_some() { "FYREL" } else { "CETA" },
         ];
-        let _ = writeln!(out, "  {:?}   {x:?}   {y:?}   {:?}        {}, CPHI", s.fn_n, s.cs, names.join(", "));
+        let normal = s.pen_mm.unwrap_or(s.fn_n);
+        let _ = writeln!(out, "  {normal:?}   {x:?}   {y:?}   {:?}        {}, CPHI", s.cs, names.join(", "));
         if read_mu {
             friction_lines(p, s.mu, &mut out);
         }
         if first {
-            geometry(p, v_mm_s, load_varies, &mut out);
+            geometry(p, (!shift).then_some(v_mm_s), load_varies, s.h_coefficients, &mut out);
         } else if dq_again {
-            kinematics_and_material(p, v_mm_s, &mut out);
+            kinematics_and_material(p, Some(v_mm_s), &mut out);
+        }
+        if let (false, Some(b)) = (first, s.h_coefficients.filter(|_| new_h)) {
+            quadratic(b, &mut out);
         }
     }
     out.push_str("\n 0  MODULE\n");
@@ -152,15 +179,18 @@ fn friction_lines(p: &Problem, mu: f64, out: &mut String) {
     let _ = writeln!(out, "  {:?}   {:?}                           MEMDST, MEM_S0", m.memory_mm, m.s0_mm_s);
 }
 
-/// The kinematics (CHI, DQ, VELOC at the row's speed) and material lines of a case with C = 2.
-fn kinematics_and_material(p: &Problem, v_mm_s: f64, out: &mut String) {
+/// The kinematics (CHI, DQ, VELOC at the row's speed; `None`: a shift, which reads none) and
+/// material lines of a case with C = 2.
+fn kinematics_and_material(p: &Problem, v_mm_s: Option<f64>, out: &mut String) {
     let m = &p.material;
-    let _ = writeln!(out, "  0.0   {:?}   {v_mm_s:?}                 CHI, DQ, VELOC", p.rolling.dq_mm);
+    if let Some(v_mm_s) = v_mm_s {
+        let _ = writeln!(out, "  0.0   {:?}   {v_mm_s:?}                 CHI, DQ, VELOC", p.rolling.dq_mm);
+    }
     let _ = writeln!(out, "  {:?}   {:?}   {:?}   {:?}    POISS 1,2,  GG 1,2", m.poisson, m.poisson, m.g_mpa, m.g_mpa);
 }
 
 /// The first case's kinematics, material and geometry lines.
-fn geometry(p: &Problem, v_mm_s: f64, load_varies: bool, out: &mut String) {
+fn geometry(p: &Problem, v_mm_s: Option<f64>, load_varies: bool, b: Option<[f64; 6]>, out: &mut String) {
     let (m, g) = (&p.material, &p.grid);
     kinematics_and_material(p, v_mm_s, out);
     if p.geometry.elliptic() && !load_varies {
@@ -190,6 +220,10 @@ fn geometry(p: &Problem, v_mm_s: f64, load_varies: bool, out: &mut String) {
         let _ = writeln!(out, "  {a1:?}   0.0   {b1:?}   0.0   0.0   0.0     B1..B6");
         return;
     }
+    if let Some(b) = b {
+        quadratic(b, out);
+        return;
+    }
     let h = p.geometry.undeformed_distance_mm(g, p.hertz().fn_n, m);
     let _ = writeln!(out, "  9    1                                      IBASE, IPLAN");
     let contact_order: Vec<f64> = (0..g.len()).map(|k| h[g.index(g.mx - 1 - k % g.mx, k / g.mx)]).collect();
@@ -197,4 +231,11 @@ fn geometry(p: &Problem, v_mm_s: f64, load_varies: bool, out: &mut String) {
         let line: Vec<String> = chunk.iter().map(|v| format!("{v:?}")).collect();
         let _ = writeln!(out, "  {}", line.join("  "));
     }
+}
+
+/// CONTACT's IBASE = 1: `h = B1 x² + B2 xy + B3 y² + B4 x + B5 y + B6` in its coordinates.
+fn quadratic(b: [f64; 6], out: &mut String) {
+    let _ = writeln!(out, "  1    1                                      IBASE, IPLAN");
+    let line: Vec<String> = b.iter().map(|v| format!("{v:?}")).collect();
+    let _ = writeln!(out, "  {}     B1..B6", line.join("   "));
 }

@@ -190,8 +190,8 @@ fn validate(mut h: History, problem: &Problem, out_csv: &Path) -> Result<History
             return Err(ExternalError::Twice { out: out(), column: c.clone() });
         }
     }
-    // Step 0 (the initial state) is part of the output only when the scene starts steady.
-    if problem.loading.steady_start().is_none() {
+    // Step 0 (the initial state) is part of the output only when the scene starts steady or from a shift.
+    if problem.loading.start().is_none() {
         h.rows.retain(|r| r.sample.step != 0);
     }
     let expected: Vec<&Sample> = problem.loading.rows().collect();

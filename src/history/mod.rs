@@ -151,6 +151,8 @@ impl History {
                     v_mm_s: None,
                     fx_target: None,
                     fy_target: None,
+                    pen_mm: None,
+                    h_coefficients: None,
                 },
                 fx_over_fn: num(6)?,
                 fy_over_fn: num(7)?,

@@ -1,5 +1,5 @@
 //! The one sample loop (as argmin's `Executor`): it owns the stepping of every built-in model —
-//! the steady initial state, sweep points, transient steps, a reload when FN or μ changes — and
+//! the steady initial state, sweep points, transient steps, a reload when FN (or the approach, or the undeformed distance) or μ changes — and
 //! writes the history, the termination of every solve and the field indicators the scene asks for.
 //! It sits at the history stage (README, "The code"): it turns a model's steps into history rows,
 //! so it stands above the models it runs and below the metrics, which hand it their field
@@ -30,6 +30,14 @@ pub struct ModelRun {
 /// Something that watches each solve's field (tests, field comparisons).
 pub type Observer<'o> = dyn FnMut(&Sample, &FieldView) + 'o;
 
+/// Which solve a row is.
+#[derive(Debug, Clone, Copy)]
+enum Solve {
+    Steady,
+    Shift,
+    Transient,
+}
+
 /// Run `def` over the problem's samples.
 pub fn run(
     problem: &Problem,
@@ -53,15 +61,22 @@ pub fn run(
     history.rows.reserve(loading.samples.len() + 1);
     let mut field_values: Vec<(&'static str, f64)> = field_metrics.iter().map(|&(name, _)| (name, 0.0)).collect();
     let mut observer = observer;
-    let mut loaded = (first.fn_n, first.mu);
-    let steady_start = loading.steady_start();
+    let key = |s: &Sample| (s.fn_n, s.mu, s.pen_mm, s.h_coefficients);
+    let mut loaded = key(first);
     let sweep = !loading.is_transient();
-    for (s, steady) in steady_start.map(|s| (s, true)).into_iter().chain(loading.samples.iter().map(|s| (s, sweep))) {
-        if (s.fn_n, s.mu) != loaded {
+    let initial =
+        loading.steady_start().map(|s| (s, Solve::Steady)).or(loading.shift_start().map(|s| (s, Solve::Shift)));
+    let each = if sweep { Solve::Steady } else { Solve::Transient };
+    for (s, solve) in initial.into_iter().chain(loading.samples.iter().map(|s| (s, each))) {
+        if key(s) != loaded {
             stepper.load(s)?;
-            loaded = (s.fn_n, s.mu);
+            loaded = key(s);
         }
-        let step = if steady { stepper.steady(s)? } else { stepper.transient(s)? };
+        let step = match solve {
+            Solve::Steady => stepper.steady(s)?,
+            Solve::Shift => stepper.shift(s)?,
+            Solve::Transient => stepper.transient(s)?,
+        };
         if !(step.fx_over_fn.is_finite() && step.fy_over_fn.is_finite()) {
             return Err(SolveError::NonFinite { step: s.step });
         }
@@ -70,11 +85,13 @@ pub fn run(
             extra.push(step.termination.code());
         }
         extra.push(step.mz_nmm);
-        // Prescribed forces: the row reports the creepages found (and the forces reached).
+        // Prescribed forces: the row reports the creepages found (and the forces reached); a
+        // prescribed approach: the FN found.
         let row = match stepper.solved_creepage() {
             Some([cx, cy]) => Sample { cx, cy, ..*s },
             None => *s,
         };
+        let row = Sample { fn_n: stepper.solved_fn_n().unwrap_or(row.fn_n), ..row };
         history.rows.push(Row::new(&row, step.fx_over_fn, step.fy_over_fn, extra));
         if !field_values.is_empty() || observer.is_some() {
             if let Some(view) = stepper.field() {

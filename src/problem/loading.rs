@@ -33,6 +33,14 @@ pub struct Sample {
     /// Fy/FN prescribed (CONTACT F = 2): the solver finds cy; `None`: cy is given.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub fy_target: Option<f64>,
+    /// The approach [mm] prescribed (CONTACT N = 0, PEN): the solver finds FN (`fn_n` then holds
+    /// the scene's nominal `contact.fn_n`); `None`: FN is given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pen_mm: Option<f64>,
+    /// The undeformed distance of this row, CONTACT's IBASE = 1 `h = b1 x² + b2 xy + b3 y² + b4 x
+    /// + b5 y + b6` in CONTACT's coordinates, in place of the scene's geometry; `None`: the geometry's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub h_coefficients: Option<[f64; 6]>,
 }
 
 impl Sample {
@@ -184,6 +192,18 @@ impl Loading {
         self.rows().any(Sample::prescribes_force)
     }
 
+    /// What the rows give for the normal problem in place of FN or the scene's geometry, named
+    /// for a model that cannot take it: the approach (CONTACT N = 0), the undeformed distance.
+    pub fn normal_rows(&self) -> Option<&'static str> {
+        if self.rows().any(|s| s.pen_mm.is_some()) {
+            Some("the approach prescribed (creepage table column pen_mm)")
+        } else if self.rows().any(|s| s.h_coefficients.is_some()) {
+            Some("an undeformed distance per row (creepage table columns b1_per_mm to b6_mm)")
+        } else {
+            None
+        }
+    }
+
     /// Fy/FN is prescribed only with Fx/FN (CONTACT F = 2). A prescribed force must stay below μ·FN: at or above it the whole contact slides and no
     /// creepage gives it (Coulomb: |F| <= μ FN, reached only in full slip).
     fn check_forces(&self) -> Result<(), InputError> {
@@ -229,9 +249,19 @@ impl Loading {
         self.initial.as_ref().filter(|_| self.init == InitKind::Steady && self.is_transient())
     }
 
-    /// Every row a run writes, in order: the steady start (if any), then the samples.
+    /// The initial state when the run starts from a shift (`[init] kind = "shift"`, a row with step 0).
+    pub fn shift_start(&self) -> Option<&Sample> {
+        self.initial.as_ref().filter(|_| self.init == InitKind::Shift && self.is_transient())
+    }
+
+    /// The initial state a run solves (steady or shift start; a row with step 0), if any.
+    pub fn start(&self) -> Option<&Sample> {
+        self.steady_start().or(self.shift_start())
+    }
+
+    /// Every row a run writes, in order: the start (if any), then the samples.
     pub fn rows(&self) -> impl Iterator<Item = &Sample> {
-        self.steady_start().into_iter().chain(&self.samples)
+        self.start().into_iter().chain(&self.samples)
     }
 
     /// Largest μ over the rows (a table may vary it).
@@ -253,17 +283,20 @@ fn table_row(scene: &Scene, rows: &CreepageTable, k: usize, t: f64) -> Sample {
         (None, Some(fy)) => (0.0, Some(rows.interpolate(fy, t))),
         (None, None) => (scene.cy, scene.fy_over_fn),
     };
+    let (fn_n, pen_mm) = rows.normal_at(t, scene.fn_n);
     Sample {
         step: k,
         t_s: t,
         cx,
         cy,
         cs: get(&rows.cs, scene.cs_per_mm),
-        fn_n: get(&rows.fn_n, scene.fn_n),
+        fn_n,
         mu: get(&rows.mu, scene.mu),
         v_mm_s: None,
         fx_target,
         fy_target,
+        pen_mm,
+        h_coefficients: rows.h_coefficients.as_ref().map(|b| b.each_ref().map(|v| rows.interpolate(v, t))),
     }
 }
 
@@ -334,6 +367,8 @@ impl Sample {
             v_mm_s: None,
             fx_target: None,
             fy_target: scene.fy_over_fn,
+            pen_mm: None,
+            h_coefficients: None,
         }
     }
 

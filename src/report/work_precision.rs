@@ -172,6 +172,8 @@ mod tests {
                     v_mm_s: None,
                     fx_target: None,
                     fy_target: None,
+                    pen_mm: None,
+                    h_coefficients: None,
                 },
                 fx_over_fn: f(t),
                 fy_over_fn: 0.0,

@@ -51,6 +51,9 @@ pub enum Creepage {
 pub enum InitKind {
     Zero,
     Steady,
+    /// A shift from rest (CONTACT T = 1, P = 2) at the loading of t = 0, whose traction the
+    /// rolling history then continues (CONTACT T = 2, P = 0: `examples/catt_to_cart.inp`).
+    Shift,
 }
 
 /// Model options the simplified models share (`[model]`); a model's own parameters are its
@@ -355,7 +358,7 @@ impl Scene {
         let material = sections::material(&mut top)?;
         let (v_mm_s, courant, motion) = sections::rolling(&mut top)?;
         let loading = sections::creepage(&mut top, dir)?;
-        let init = sections::init(&mut top)?;
+        let init = sections::init(&mut top, motion, &loading.creepage)?;
         let (model, model_params) = sections::model(&mut top)?;
         let contact_solver = sections::contact_solver(&mut top)?;
         let limits = sections::limits(&mut top)?;
@@ -394,6 +397,7 @@ impl Scene {
         };
         scene.check_sweep_points()?;
         scene.check_table_friction()?;
+        scene.check_table_geometry()?;
         Ok(scene)
     }
 
@@ -432,6 +436,21 @@ impl Scene {
             Some(list) => list.get(k.checked_sub(1)?).copied(),
             None => Some(from + (to - from) * f),
         }
+    }
+
+    /// An undeformed distance per row (columns `b1_per_mm` … `b6_mm`) replaces a geometry given per
+    /// element on an explicit grid: an ellipse sizes its grid from its load and has none to replace.
+    fn check_table_geometry(&self) -> Result<(), InputError> {
+        if let Creepage::Table { file, rows } = &self.creepage {
+            if rows.h_coefficients.is_some() && !self.geometry.is_elementwise() {
+                return Err(InputError::new(
+                    format!("creepage.file ({})", file.display()),
+                    "columns b1_per_mm to b6_mm with a Hertzian contact",
+                    "an undeformed distance per row only with a [geometry] given per element on an explicit grid ([grid] x_mm, y_mm)",
+                ));
+            }
+        }
+        Ok(())
     }
 
     /// A falling law gives μ itself: a table may not vary it (`mu` column).

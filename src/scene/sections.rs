@@ -386,14 +386,25 @@ fn sweep_direction(cr: &mut Section) -> Result<[f64; 3], InputError> {
     })
 }
 
-/// `[init]` (optional): the initial tangential state (default zero).
-pub fn init(top: &mut Section) -> Result<InitKind, InputError> {
+/// `[init]` (optional): the initial tangential state (default zero). A shift start (`"shift"`)
+/// needs a rolling time history: it is the shift before the rolling.
+pub fn init(top: &mut Section, motion: Motion, creepage: &Creepage) -> Result<InitKind, InputError> {
     let mut init = InitKind::Zero;
     if let Some(mut i) = top.opt_table("init")? {
-        init = match i.opt_choice("kind", &["zero", "steady"])? {
+        init = match i.opt_choice("kind", &["zero", "steady", "shift"])? {
             Some("steady") => InitKind::Steady,
+            Some("shift") => InitKind::Shift,
             _ => InitKind::Zero,
         };
+        let sweep = matches!(creepage, Creepage::Sweep { .. });
+        if init == InitKind::Shift && (motion == Motion::Shift || sweep) {
+            let got = if sweep { "with creepage.kind = \"sweep\"" } else { "with rolling.motion = \"shift\"" };
+            return Err(InputError::new(
+                i.field("kind"),
+                format!("\"shift\" {got}"),
+                "a shift start before a rolling time history (rolling.motion = \"rolling\", creepage.kind step, sine or table); shifts alone start from rest (kind = \"zero\")",
+            ));
+        }
         i.finish()?;
     }
     Ok(init)

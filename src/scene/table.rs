@@ -1,11 +1,35 @@
 //! The `table` creepage kind: a CSV `t_s,cx[,cy,cs,fn_n,mu,v_mm_s]` read and validated row by row
-//! (`fx_over_fn`, `fy_over_fn` in place of `cx`, `cy`: the total forces prescribed, CONTACT's F = 1, 2).
+//! (`fx_over_fn`, `fy_over_fn` in place of `cx`, `cy`: the total forces prescribed, CONTACT's F = 1, 2;
+//! `pen_mm` in place of `fn_n`: the approach prescribed, CONTACT's N = 0).
 
 use crate::error::InputError;
 use std::path::Path;
 
 /// Columns a creepage table may have; `t_s` and one of `cx`, `fx_over_fn` are required.
-pub const COLUMNS: [&str; 9] = ["t_s", "cx", "cy", "cs", "fn_n", "mu", "v_mm_s", "fx_over_fn", "fy_over_fn"];
+pub const COLUMNS: [&str; 16] = [
+    "t_s",
+    "cx",
+    "cy",
+    "cs",
+    "fn_n",
+    "mu",
+    "v_mm_s",
+    "fx_over_fn",
+    "fy_over_fn",
+    "pen_mm",
+    "b1_per_mm",
+    "b2_per_mm",
+    "b3_per_mm",
+    "b4",
+    "b5",
+    "b6_mm",
+];
+
+/// The columns of a row's undeformed distance, CONTACT's IBASE = 1 B(1..6): all or none.
+pub const H_COLUMNS: [&str; 6] = ["b1_per_mm", "b2_per_mm", "b3_per_mm", "b4", "b5", "b6_mm"];
+
+/// The largest approach a table may prescribe [mm]: beyond any elastic contact of rail steel.
+pub const PEN_MAX_MM: f64 = 10.0;
 
 /// The table's longitudinal column: the creepage given, or the force prescribed.
 #[derive(Debug, Clone, PartialEq)]
@@ -37,6 +61,12 @@ pub struct CreepageTable {
     pub fy_over_fn: Option<Vec<f64>>,
     pub cs: Option<Vec<f64>>,
     pub fn_n: Option<Vec<f64>>,
+    /// The approach [mm] prescribed in place of FN (CONTACT N = 0, PEN): FN is then an outcome.
+    /// With both columns each row gives one of `fn_n`, `pen_mm` (the other NaN): [`Self::normal_at`].
+    pub pen_mm: Option<Vec<f64>>,
+    /// The undeformed distance per row, `h = b1 x² + b2 xy + b3 y² + b4 x + b5 y + b6` in
+    /// CONTACT's coordinates (its IBASE = 1 B(1..6), one case per row), columns [`H_COLUMNS`].
+    pub h_coefficients: Option<[Vec<f64>; 6]>,
     pub mu: Option<Vec<f64>>,
     /// The rolling speed [mm/s]: step k lasts dq/v_k.
     pub v_mm_s: Option<Vec<f64>>,
@@ -79,15 +109,28 @@ impl CreepageTable {
                 ));
             }
         }
-        for (a, b) in [("cx", "fx_over_fn"), ("cy", "fy_over_fn")] {
+        for (a, b, what) in [
+            ("cx", "fx_over_fn", "(the creepage given) and fx_over_fn (the force prescribed)"),
+            ("cy", "fy_over_fn", "(the creepage given) and fy_over_fn (the force prescribed)"),
+        ] {
             if has(a) && has(b) {
                 return Err(InputError::new(
                     format!("{origin} header"),
                     format!("both {a} and {b}"),
-                    format!("one of {a} (the creepage given) and {b} (the force prescribed), not both"),
+                    format!("one of {a} {what}, not both"),
                 ));
             }
         }
+        let h_given = H_COLUMNS.iter().filter(|c| has(c)).count();
+        if h_given != 0 && h_given != H_COLUMNS.len() {
+            return Err(InputError::new(
+                format!("{origin} header"),
+                format!("{h_given} of the columns {}", H_COLUMNS.join(", ")),
+                "all six (the row's undeformed distance b1 x² + b2 xy + b3 y² + b4 x + b5 y + b6) or none",
+            ));
+        }
+        // Both fn_n and pen_mm: each row gives exactly one of them, the other cell empty.
+        let per_row = has("fn_n") && has("pen_mm");
         let mut cols: Vec<Vec<f64>> = vec![Vec::new(); header.len()];
         for (r, rec) in rdr.records().enumerate() {
             let row = r + 2; // 1-based line number, header is line 1
@@ -105,8 +148,22 @@ impl CreepageTable {
                     format!("{} fields", header.len()),
                 ));
             }
+            if per_row {
+                let empty = |c: &str| header.iter().position(|h| h == c).is_some_and(|i| rec[i].is_empty());
+                if empty("fn_n") == empty("pen_mm") {
+                    return Err(InputError::new(
+                        format!("{origin} line {row} columns fn_n, pen_mm"),
+                        if empty("fn_n") { "both empty" } else { "both given" },
+                        "exactly one of fn_n (the normal force prescribed) and pen_mm (the approach prescribed) per row, the other cell empty",
+                    ));
+                }
+            }
             for (c, cell) in rec.iter().enumerate() {
                 let name = &header[c];
+                if per_row && cell.is_empty() && (name == "fn_n" || name == "pen_mm") {
+                    cols[c].push(f64::NAN);
+                    continue;
+                }
                 let v: f64 = cell.parse().map_err(|_| {
                     InputError::new(format!("{origin} line {row} column {name}"), format!("{cell:?}"), "a number")
                 })?;
@@ -116,6 +173,8 @@ impl CreepageTable {
                     "fx_over_fn" | "fy_over_fn" => v.is_finite() && v.abs() < 1.0,
                     "cs" => v.is_finite() && v.abs() <= 10.0,
                     "v_mm_s" => super::SPEED_LIMIT.contains(v),
+                    "pen_mm" => v.is_finite() && v > 0.0 && v <= PEN_MAX_MM,
+                    c if H_COLUMNS.contains(&c) => v.is_finite(),
                     _ => v.is_finite() && v > 0.0, // fn_n, mu
                 };
                 if !ok {
@@ -125,6 +184,8 @@ impl CreepageTable {
                         "fx_over_fn" | "fy_over_fn" => "a finite force ratio in (-1, 1) (below the row's mu)",
                         "cs" => "a finite spin in [-10, 10] 1/mm",
                         "v_mm_s" => "a rolling speed in (0, 1e6] mm/s",
+                        "pen_mm" => "a finite approach in (0, 10] mm",
+                        c if H_COLUMNS.contains(&c) => "a finite coefficient",
                         _ => "a finite number > 0",
                     };
                     return Err(InputError::new(format!("{origin} line {row} column {name}"), v, allowed));
@@ -155,6 +216,8 @@ impl CreepageTable {
             fy_over_fn: col("fy_over_fn"),
             cs: col("cs"),
             fn_n: col("fn_n"),
+            pen_mm: col("pen_mm"),
+            h_coefficients: (h_given > 0).then(|| H_COLUMNS.map(|c| col(c).unwrap_or_default())),
             mu: col("mu"),
             v_mm_s: col("v_mm_s"),
             t_s,
@@ -174,6 +237,35 @@ impl CreepageTable {
         }
         let (t0, t1) = (ts[k - 1], ts[k]);
         series[k - 1] + (series[k] - series[k - 1]) * (t - t0) / (t1 - t0)
+    }
+
+    /// The normal input at time `t`: (FN, the approach if prescribed); `fn_default` where the
+    /// table has no `fn_n`. Between two rows of one kind interpolated; between a row with FN and
+    /// one with the approach, the row at `t` (exactly) or else the later row's.
+    pub fn normal_at(&self, t: f64, fn_default: f64) -> (f64, Option<f64>) {
+        match (&self.fn_n, &self.pen_mm) {
+            (None, None) => (fn_default, None),
+            (Some(f), None) => (self.interpolate(f, t), None),
+            (None, Some(p)) => (fn_default, Some(self.interpolate(p, t))),
+            (Some(f), Some(p)) => {
+                let ts = &self.t_s;
+                let k = ts.partition_point(|&x| x <= t).min(ts.len() - 1);
+                let (lo, hi) = (k.saturating_sub(1), k);
+                if p[lo].is_nan() == p[hi].is_nan() {
+                    return if p[hi].is_nan() {
+                        (self.interpolate(f, t), None)
+                    } else {
+                        (fn_default, Some(self.interpolate(p, t)))
+                    };
+                }
+                let row = if ts[lo] == t { lo } else { hi };
+                if p[row].is_nan() {
+                    (f[row], None)
+                } else {
+                    (fn_default, Some(p[row]))
+                }
+            }
+        }
     }
 
     /// Last time in the table [s].

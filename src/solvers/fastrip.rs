@@ -41,6 +41,7 @@ pub const MODEL: ModelDef = ModelDef {
     iterative: false,
     prescribed_forces: false,
     shifts: false,
+    normal_rows: false,
     check,
     cost_per_row: linear_in_elements,
     params: None,

@@ -34,6 +34,9 @@ pub enum SolveError {
     /// The exact-theory solver failed.
     #[error(transparent)]
     Contact(#[from] contact::ContactRunError),
+    /// A shift start asked of a model that solves no shifts (refused before a run).
+    #[error("step {step}: this model solves no shifts")]
+    NoShifts { step: usize },
 }
 
 /// A built-in model: everything the tool needs to know of it, in one record.
@@ -52,6 +55,10 @@ pub struct ModelDef {
     /// Whether it solves shifts without rolling (`[rolling] motion = "shift"`, CONTACT T = 1); a
     /// model that cannot is refused on such a scene.
     pub shifts: bool,
+    /// Whether it solves each row's normal problem from what a table gives in place of FN or the
+    /// geometry: the approach (`pen_mm`, CONTACT N = 0) and the undeformed distance (`b1_per_mm`
+    /// … `b6_mm`, CONTACT's IBASE = 1 per case); a model that cannot is refused on such a scene.
+    pub normal_rows: bool,
     /// Refuses a problem the model cannot run, naming the scene field.
     pub check: fn(&Problem) -> Result<(), InputError>,
     /// Relative cost of one history row, for scheduling a suite (longest first).
@@ -91,7 +98,8 @@ pub fn builtin_names() -> Vec<&'static str> {
 /// Every built-in model the problem names must accept it (e.g. the UBA needs courant ≤ 1; only a
 /// model that finds creepages can take prescribed forces).
 pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
-    if problem.friction.is_falling() && problem.rolling.motion == crate::scene::Motion::Shift {
+    let shifts = problem.rolling.motion == Motion::Shift || problem.loading.shift_start().is_some();
+    if problem.friction.is_falling() && shifts {
         return Err(InputError::new(
             "rolling.motion",
             "\"shift\" with a falling [friction] law",
@@ -103,6 +111,14 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
             "creepage.fx_over_fn",
             "prescribed forces with a falling [friction] law",
             "prescribed forces with Coulomb friction, or creepages with a falling law (the two iterations are not combined)",
+        ));
+    }
+    let rows_what = problem.loading.normal_rows();
+    if let Some((name, what)) = problem.solvers.iter().find(|s| builtin(s).is_none()).zip(rows_what) {
+        return Err(InputError::new(
+            "solvers",
+            format!("{name:?} (an external model) with {what}"),
+            "built-in models that solve each row's normal problem (an external model is given FN and the scene's geometry)",
         ));
     }
     problem.solvers.iter().filter_map(|s| builtin(s)).try_for_each(|m| {
@@ -121,11 +137,19 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
                 format!("models that find the creepages of prescribed forces: {} (leave {} out of this scene: it takes creepages only)", able.join(", "), m.name),
             ));
         }
-        if problem.rolling.motion == Motion::Shift && !m.shifts {
+        if let Some(what) = rows_what.filter(|_| !m.normal_rows) {
+            let able: Vec<&str> = MODELS.iter().filter(|m| m.normal_rows).map(|m| m.name).collect();
+            return Err(InputError::new(
+                "solvers",
+                format!("{:?} with {what}", m.name),
+                format!("models that solve each row's normal problem: {} (leave {} out of this scene: it takes FN and the scene's geometry only)", able.join(", "), m.name),
+            ));
+        }
+        if shifts && !m.shifts {
             let able: Vec<&str> = MODELS.iter().filter(|m| m.shifts).map(|m| m.name).collect();
             return Err(InputError::new(
                 "solvers",
-                format!("{:?} with rolling.motion = \"shift\"", m.name),
+                format!("{:?} with {}", m.name, if problem.rolling.motion == Motion::Shift { "rolling.motion = \"shift\"" } else { "init.kind = \"shift\"" }),
                 format!("models that solve shifts without rolling: {} (leave {} out of this scene: it models rolling only)", able.join(", "), m.name),
             ));
         }
@@ -166,6 +190,7 @@ pub const fn closed_form(
         iterative: false,
         prescribed_forces: false,
         shifts: false,
+        normal_rows: false,
         check: always,
         cost_per_row: negligible,
         params: None,

@@ -37,6 +37,7 @@ pub const MODEL: ModelDef = ModelDef {
     iterative: false,
     prescribed_forces: false,
     shifts: false,
+    normal_rows: false,
     check: always,
     cost_per_row: linear_in_elements,
     params: Some(read_params),

@@ -46,6 +46,11 @@ pub trait Stepper {
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError>;
     /// One time step from the model's current state to this sample.
     fn transient(&mut self, at: &Sample) -> Result<Step, SolveError>;
+    /// A shift from rest at this sample (`[init] kind = "shift"`): only models with
+    /// `ModelDef::shifts` are run on such a scene (`solvers::check_applicable`).
+    fn shift(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        Err(SolveError::NoShifts { step: at.step })
+    }
     /// The traction field of the last solve, if the model has one.
     fn field(&self) -> Option<FieldView<'_>>;
     /// Columns this run writes after the model's `extra_columns` (their values end `Step::extra`):
@@ -57,6 +62,12 @@ pub trait Stepper {
     /// The creepages (cx, cy) the last solve found where its sample prescribed forces in their
     /// place (CONTACT F = 1, 2); `None`: the sample's creepages were used.
     fn solved_creepage(&self) -> Option<[f64; 2]> {
+        None
+    }
+
+    /// The total normal force [N] the last load found where its sample prescribed the approach
+    /// in its place (CONTACT N = 0); `None`: the sample's FN was used.
+    fn solved_fn_n(&self) -> Option<f64> {
         None
     }
 }

@@ -102,14 +102,19 @@ fn differences(original: &Problem, imported: &Problem, split: bool) -> Vec<Strin
     out
 }
 
-/// A row's time, creepages, load and friction, as bits, and μ.
-fn row_bits(s: &creepbench::problem::Sample) -> ([u64; 5], f64) {
-    ([s.t_s, s.cx, s.cy, s.cs, s.fn_n].map(f64::to_bits), s.mu)
+/// A row's time, creepages (or the forces prescribed in their place), load (or approach), its
+/// own undeformed distance (B1..B6) and friction, as bits, and μ.
+fn row_bits(s: &creepbench::problem::Sample) -> (Vec<u64>, f64) {
+    let opt = |f: Option<f64>| f.map_or(u64::MAX, f64::to_bits);
+    let mut bits: Vec<u64> = [s.t_s, s.cx, s.cy, s.cs, s.fn_n].map(f64::to_bits).to_vec();
+    bits.extend([opt(s.fx_target), opt(s.fy_target), opt(s.pen_mm)]);
+    bits.extend(s.h_coefficients.map_or(vec![u64::MAX], |b| b.map(f64::to_bits).to_vec()));
+    (bits, s.mu)
 }
 
 /// Rows equal: bit for bit, μ within the export's 1e-9 relative (a table's μ interpolated at a
 /// printed time is read again only where it changed beyond rounding, `export::contact`).
-fn same_row(a: &([u64; 5], f64), b: &([u64; 5], f64)) -> bool {
+fn same_row(a: &(Vec<u64>, f64), b: &(Vec<u64>, f64)) -> bool {
     a.0 == b.0 && (a.1 - b.1).abs() <= 1e-9 * a.1.abs()
 }
 
@@ -189,12 +194,19 @@ fn scene_of(imported: &Imported, name: &str) -> Problem {
 }
 
 #[test]
-fn cattaneo_imports_its_normal_case_and_refuses_the_shift_by_force() {
+fn cattaneo_imports_its_normal_case_and_the_shift_by_force() {
     let imported = import_deck("cattaneo.inp");
-    assert_eq!(split(&imported), (vec![1], vec![2]));
-    let case2 = &imported.statuses[1].refused;
+    assert_eq!(split(&imported), (vec![1, 2], vec![]));
+    let case2 = &imported.statuses[1].notes;
     assert!(case2.iter().any(|r| r.starts_with("T = 1: shifts")), "{case2:?}");
     assert!(case2.iter().any(|r| r.starts_with("F = 2: prescribed tangential forces")), "{case2:?}");
+    // Case 2: FX = −0.875 (of FSTAT·FN on body 1), FY = 0 → Fx/FN = 0.875 · 0.4 on body 2, one
+    // shift from rest with CONTACT's dummy time step of 1 s.
+    let p = scene_of(&imported, "cattaneo_2");
+    assert_eq!(p.rolling.motion, creepbench::scene::Motion::Shift);
+    assert_eq!(p.rolling.dt_s, 1.0);
+    let rows: Vec<_> = p.loading.rows().map(|s| (s.step, s.t_s, s.fx_target, s.fy_target, s.fn_n, s.mu)).collect();
+    assert_eq!(rows, vec![(1, 1.0, Some(0.875 * 0.4), Some(-0.0), 9.1954, 0.4)]);
     // Case 1: T = 0 (frictionless compression) as a steady point at zero creepage.
     assert!(imported.statuses[0].notes.iter().any(|n| n.starts_with("T = 0: frictionless compression")));
     let p = scene_of(&imported, "cattaneo_1");
@@ -220,6 +232,35 @@ fn fastsim_imports_the_exact_theory_case_and_refuses_contacts_simplified_theorie
     assert_eq!((r.v_mm_s, r.dq_mm), (30000.0, 0.4));
     let s = &r.history[0];
     assert_eq!([s.cx, s.cy, s.cs], [0.0, -0.000625, 0.000625]);
+}
+
+/// catt_to_cart.inp cases 1-57: a Cattaneo shift under FX (T = 1, P = 2) then 56 steps of
+/// transient rolling (T = 2, P = 0) that continue its traction under the same FX: one scene, the
+/// shift its step 0 (`[init] kind = "shift"`), the rolling at t = k DQ/VELOC.
+#[test]
+fn catt_to_cart_imports_the_shift_and_the_rolling_after_it_as_one_history() {
+    let deck = root().join("reference/contact_public/examples/catt_to_cart.inp");
+    let imported = creepbench::import::contact::import(&deck).unwrap();
+    let first = &imported.scenes[0];
+    assert_eq!((first.name.as_str(), first.cases), ("catt_to_cart_1", [1, 57]));
+    let p = scene_of(&imported, "catt_to_cart_1");
+    assert_eq!(p.rolling.motion, creepbench::scene::Motion::Rolling);
+    assert_eq!(p.loading.init, creepbench::scene::InitKind::Shift);
+    let rows: Vec<_> = p.loading.rows().collect();
+    assert_eq!(rows.len(), 57);
+    // FX = −0.657 of FSTAT·FN = 0.4013 on body 1 → Fx/FN = 0.657 · 0.4013 on body 2.
+    assert!(rows.iter().all(|s| s.fx_target == Some(0.657 * 0.4013) && s.fy_target.is_none()));
+    assert_eq!((rows[0].step, rows[0].t_s, rows[56].step), (0, 0.0, 56));
+    assert_eq!(rows[56].t_s, 56.0 * (0.25 / 1000.0));
+    // A shift that continues rolling (case 3 as T = 1, P = 0) is refused with its reason; the
+    // cases before it are still one history.
+    let mut text = std::fs::read_to_string(&deck).unwrap();
+    let at = text.match_indices("  002110      P-B-T").nth(1).unwrap().0;
+    text.replace_range(at..at + 8, "  001110");
+    let again = import_text("c.inp", "c", &text).unwrap();
+    let case3 = &again.statuses[2];
+    assert!(case3.refused.iter().any(|r| r.starts_with("T = 1 with P = 0 after a rolling case")), "{case3:?}");
+    assert_eq!(again.scenes[0].cases, [1, 2]);
 }
 
 #[test]
@@ -287,7 +328,13 @@ fn veldep_fric_imports_its_circular_gap_and_both_branches() {
 fn testbank_imports_two_cases_and_names_every_other_with_its_reason() {
     let imported = import_deck("testbank.inp");
     let (ok, no) = split(&imported);
-    assert_eq!(ok, vec![6, 7]);
+    // 1: a Cattaneo shift with the approach prescribed (N = 0); 10: a Cattaneo shift under FX, FY
+    // (case 11 that continues it is N = 0 with F = 2, not verified); 17: transient rolling from
+    // rest under FX.
+    assert_eq!(ok, vec![1, 6, 7, 10, 17]);
+    assert!(imported.statuses[10].refused.iter().any(|r| r.starts_with("N = 0, F = 2")), "{:?}", imported.statuses[10]);
+    // 14, 15 continue case 13, a shift with B = 2.
+    assert!(imported.statuses[13].refused.iter().any(|r| r.contains("holds case 13")), "{:?}", imported.statuses[13]);
     assert_eq!(ok.len() + no.len(), imported.statuses.len());
     let module1: Vec<usize> = imported.statuses.iter().filter(|s| s.module == 1).map(|s| s.case).collect();
     assert!(!module1.is_empty());
@@ -307,12 +354,15 @@ fn creepbench(args: &[&str]) -> std::process::Output {
 #[test]
 fn the_command_refuses_a_deck_with_unsupported_cases_whole_unless_asked() {
     let dir = common::tempdir("contact_import_cli");
-    let deck = root().join("tests/data/contact_decks/cattaneo.inp");
+    // cattaneo.inp with its second case's traction bound approximate (B = 2): refused.
+    let text = std::fs::read_to_string(root().join("tests/data/contact_decks/cattaneo.inp")).unwrap();
+    let deck = dir.join("cattaneo.inp");
+    std::fs::write(&deck, text.replace("  201120     P-B-T", "  221120     P-B-T")).unwrap();
     let out = dir.join("scenes");
     let o = creepbench(&["import", "contact", deck.to_str().unwrap(), "--out", out.to_str().unwrap()]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(err.contains("refused case 2 (line 34): not supported: T = 1"), "{err}");
+    assert!(err.contains("refused case 2 (line 34): not supported: B = 2"), "{err}");
     assert!(!out.exists(), "nothing written");
     let args = ["import", "contact", deck.to_str().unwrap(), "--out", out.to_str().unwrap(), "--supported-only"];
     let o = creepbench(&args);
@@ -399,4 +449,18 @@ fn contacts_falling_friction_inputs_import_as_the_shipped_scenes() {
         }
     }
     assert!(failures.is_empty(), "{} of 10 differ:\n{}", failures.len(), failures.join("\n"));
+}
+
+/// spence35.inp: its subsurface points (S = 3, ISUBS = 2) are two lines of three integers, as
+/// CONTACT reads them (`m_subsurf.f90`); the deck is read and every one of its 35 cases is
+/// refused for its real reason, the dissimilar bodies (POISS 0 and 0.5, GG 0.5 and 1e5 MPa).
+#[test]
+fn spence35_is_read_and_its_cases_are_refused_for_dissimilar_materials() {
+    let deck = root().join("reference/contact_public/examples/spence35.inp");
+    let imported = creepbench::import::contact::import(&deck).unwrap();
+    assert_eq!(imported.statuses.len(), 35);
+    assert!(imported.scenes.is_empty());
+    for s in &imported.statuses {
+        assert!(s.refused[0].starts_with("K = 4.99995") && s.refused[0].contains("dissimilar materials"), "{s:?}");
+    }
 }

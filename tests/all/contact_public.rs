@@ -58,19 +58,40 @@ fn the_report_lists_every_case_of_every_deck() {
         }
     }
     // The imported cases are reproduced, each within one printed unit (2 half-units).
+    // Shifts (T = 1) and prescribed forces (F = 1, 2): cattaneo 2, testbank 10 and 17, the
+    // shift then rolling of catt_to_cart 1-57 and the shifts 58 and 115 that start its sequences.
+    let forces = [
+        ("cattaneo.inp", 2),
+        ("testbank.inp", 10),
+        ("testbank.inp", 17),
+        ("catt_to_cart.inp", 58),
+        ("catt_to_cart.inp", 115),
+    ];
     for (deck, case) in
         [("carter2d.inp", 1), ("cattaneo.inp", 1), ("fastsim.inp", 1), ("testbank.inp", 6), ("testbank.inp", 7)]
             .into_iter()
+            .chain(forces)
             .chain((1..=30).map(|c| ("tractcurv.inp", c)))
             .chain((1..=53).map(|c| ("veldep_fric.inp", c)))
+            .chain((1..=57).map(|c| ("catt_to_cart.inp", c)))
+            // The approach prescribed (N = 0) with the quadratic moved per case: catt_to_cart
+            // 59-114 after the shift 58, testbank 1.
+            .chain((59..=114).map(|c| ("catt_to_cart.inp", c)))
+            .chain([("testbank.inp", 1)])
     {
         let row = format!("| {deck} | {case} | reproduced: worst ");
         let line = table.lines().find(|l| l.starts_with(&row)).unwrap_or_else(|| panic!("{row} not reproduced"));
         let worst: f64 = line[row.len()..].split_whitespace().next().unwrap().parse().unwrap();
         assert!(worst <= 2.0, "{line}");
     }
-    assert_eq!(table.lines().filter(|l| l.contains(" | reproduced: ")).count(), 88);
+    assert_eq!(table.lines().filter(|l| l.contains(" | reproduced: ")).count(), 207);
+    // N = 0: the FN found is compared with the printed FN.
+    let fn_checked = |c: usize| format!("| catt_to_cart.inp | {c} | reproduced: ");
+    assert!((59..=114).all(|c| table.contains(&fn_checked(c))));
+    // Under prescribed forces the creepage solved for is compared too (and is some cases' worst).
+    assert!(table.contains("half-units of the printed rounding (cx_in_rounding)"), "{table}");
     // A case the importer refuses names what is missing.
-    assert!(table.contains("| cattaneo.inp | 2 | not supported: T = 1: shifts"), "{table}");
+    assert!(table.contains("| testbank.inp | 13 | not supported: B = 2: approximate traction bounds"), "{table}");
+    assert!(table.contains("| spence35.inp | 1 | not supported: K = 4.99995"), "{table}");
     assert!(rows >= 500, "{rows} rows");
 }

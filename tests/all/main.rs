@@ -1,5 +1,6 @@
 //! Every integration test in one binary: one link of the library instead of one per file.
 
+mod approach;
 mod cli;
 mod cli_safety;
 mod common;

@@ -118,3 +118,28 @@ fn shifts_refuse_other_models_and_sweeps() {
     let e = run_in(&circle(1.0, 10.0, 8, step).replace("\"shift\"", "\"slide\""), &dir).unwrap_err();
     assert!(e.contains("rolling.motion") && e.contains("shift"), "{e}");
 }
+
+/// A shift start (`[init] kind = "shift"`) is read once, in the scene reader: only before a
+/// rolling time history, only for the models that solve shifts.
+#[test]
+fn a_shift_start_needs_a_rolling_history_and_the_exact_model() {
+    let dir = tempdir("shift_start_refused");
+    let rolling = |creepage: &str| circle(1.0, 10.0, 8, creepage).replace("motion = \"shift\"", "motion = \"rolling\"");
+    let step = "kind = \"step\"\nc = 0.001\nsteps = 2\n[init]\nkind = \"shift\"";
+    let e = run_in(&circle(1.0, 10.0, 8, step), &dir).unwrap_err();
+    assert!(
+        e.contains("init.kind") && e.contains("rolling.motion = \"shift\"") && e.contains("kind = \"zero\""),
+        "{e}"
+    );
+    let sweep = "kind = \"sweep\"\nover = \"cx\"\nfrom = 0.0\nto = 0.001\npoints = 2\n[init]\nkind = \"shift\"";
+    let e = run_in(&rolling(sweep), &dir).unwrap_err();
+    assert!(e.contains("init.kind") && e.contains("sweep"), "{e}");
+    let e = run_in(&rolling(step).replace("[\"contact\"]", "[\"contact\", \"fastsim\"]"), &dir).unwrap_err();
+    assert!(e.contains("fastsim") && e.contains("init.kind = \"shift\""), "{e}");
+    // The exact model runs it: the shift of step 0 (c_before = 0: no shift, no traction), then rolling.
+    let h = run_in(&rolling(step), &dir).unwrap();
+    let steps: Vec<usize> = h.rows.iter().map(|r| r.sample.step).collect();
+    assert_eq!(steps, vec![0, 1, 2]);
+    assert_eq!(h.rows[0].fx_over_fn, 0.0);
+    assert!(h.rows[2].fx_over_fn > 0.0);
+}

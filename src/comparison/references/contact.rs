@@ -168,6 +168,8 @@ pub fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> Result<H
                     v_mm_s: None,
                     fx_target: None,
                     fy_target: None,
+                    pen_mm: None,
+                    h_coefficients: None,
                 },
                 fx_over_fn: n(cols[5])?,
                 fy_over_fn: n(cols[6])?,

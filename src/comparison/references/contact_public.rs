@@ -1,8 +1,12 @@
 //! CONTACT's public examples and test bank (reference/contact_public/, issue 32 item 4): a scene
 //! imported from one of its decks (`[origin]` in scene.json) is compared with the totals CONTACT
 //! printed in the deck's `.ref_out`, read by [`super::contact_output`] (signs converted there).
-//! Step s ≥ 1 of a history is case `first + s − 1` of the deck (after a steady start, step s is
-//! case `first + s`). Each difference is measured in
+//! Row k of a history is case `first + k` of the deck when its step-0 row (a steady or shift
+//! start) is a case; otherwise step s ≥ 1 is case `first + s − 1`. Under prescribed forces
+//! CONTACT prints the force prescribed and the creepage (shift) it solved for: the creepages found
+//! are compared with the latter (`cx_in_rounding`, `cy_in_rounding`) and the forces reached with
+//! the former; with the approach prescribed (N = 0) the FN found with the printed FN
+//! (`fn_in_rounding`). Each difference is measured in
 //! half-units of the printed value's last digit (its rounding bound, [`Printed::half_unit`]), so
 //! that one rule per quantity holds for every case: `tolerances.toml` states k per quantity.
 
@@ -27,6 +31,12 @@ pub const FOLDER: &str = "contact_public";
 pub const FX: &str = "fx_over_fn_in_rounding";
 pub const FY: &str = "fy_over_fn_in_rounding";
 pub const MZ_Q: &str = "mz_in_rounding";
+/// The creepage (shift [mm]) solved for under a prescribed force, against CONTACT's CREEP X
+/// (SHIFT X) and Y.
+pub const CX: &str = "cx_in_rounding";
+pub const CY: &str = "cy_in_rounding";
+/// FN where the approach is prescribed (N = 0: the solver finds FN), against CONTACT's FN.
+pub const FN_Q: &str = "fn_in_rounding";
 
 /// Every deck's printed cases, by the deck's file name (`cattaneo.inp`).
 #[derive(Debug, Clone, Default)]
@@ -100,19 +110,30 @@ impl PublicCases {
         let rows: Vec<_> = h.rows.iter().filter(|r| steady_start || r.sample.step >= 1).collect();
         let Some(cases) = cases.filter(|c| c.len() == rows.len()) else {
             return Err(format!(
-                "{} rows of steps ≥ 1, cases {first} to {last} of {}: not one printed case per row",
+                "{} rows, cases {first} to {last} of {}: not one printed case per row",
                 rows.len(),
                 origin.file
             ));
         };
         let mz: Option<BTreeMap<usize, f64>> =
             h.column(MZ).map(|v| h.rows.iter().map(|r| r.sample.step).zip(v).collect());
+        // The steps whose FN the solver found for a prescribed approach (scene.json's history).
+        let by_approach: Vec<usize> =
+            scene.scene.history.iter().filter(|s| s.pen_mm.is_some()).map(|s| s.step).collect();
         let mut out = Vec::new();
         for (k, (r, t)) in rows.iter().zip(&cases).enumerate() {
             let (step, case) = (r.sample.step, first + k);
             let d = |quantity, ours, printed| RowDiff { step, case, quantity, ours, printed };
             out.push(d(FX, r.fx_over_fn, printed_ratio(t, t.x, t.fx_n, r.sample.mu)));
             out.push(d(FY, r.fy_over_fn, printed_ratio(t, t.y, t.fy_n, r.sample.mu)));
+            if by_approach.contains(&step) {
+                out.push(d(FN_Q, r.sample.fn_n, t.fn_n));
+            }
+            for (quantity, ours, printed) in [(CX, r.sample.cx, t.x), (CY, r.sample.cy, t.y)] {
+                if let Tangential::SolvedCreepage(c) | Tangential::SolvedShiftMm(c) = printed {
+                    out.push(d(quantity, ours, c));
+                }
+            }
             if let Some(m) = mz.as_ref().and_then(|m| m.get(&step)) {
                 out.push(d(MZ_Q, *m, t.mz_nmm));
             }
@@ -175,7 +196,7 @@ impl ReferenceSet for PublicCases {
             let ctx = Ctx { scene: &ours.name, solver, against: AGAINST, rules };
             match self.row_diffs(ours, h) {
                 Ok(diffs) => {
-                    for q in [FX, FY, MZ_Q] {
+                    for q in [FX, FY, MZ_Q, CX, CY, FN_Q] {
                         let fs = diffs.iter().filter(|d| d.quantity == q).map(|d| finding(&ctx, d));
                         out.extend(fs.max_by(|a, b| a.severity().total_cmp(&b.severity())));
                     }

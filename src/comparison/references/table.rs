@@ -79,6 +79,8 @@ pub fn load(dir: &Path) -> Result<EnvelopeCases, Error> {
                             v_mm_s: None,
                             fx_target: None,
                             fy_target: None,
+                            pen_mm: None,
+                            h_coefficients: None,
                         },
                         fx_over_fn: -MU * fx,
                         fy_over_fn: -MU * fy,

@@ -556,7 +556,11 @@ impl CaseReader<'_> {
             let count = |x: f64| x.clamp(0.0, 1e7) as usize;
             match isubs {
                 0 => return Ok(()),
-                2 | 6 => drop(self.ints("IXL, IXINC, IXH, IYL, IYINC, IYH", 6)?),
+                2 | 6 => {
+                    // Two lines of three, as CONTACT reads them (`m_subsurf.f90`: 'iii' twice).
+                    self.ints("IXL, IXINC, IXH", 3)?;
+                    self.ints("IYL, IYINC, IYH", 3)?;
+                }
                 3 | 7 => {
                     let (n, _) = self.ints("NX, NY", 2)?;
                     self.lx.array("IX(i)", count(n[0] as f64))?;

@@ -43,8 +43,8 @@ pub const FEATURES: &[Feature] = &[
     Feature {
         name: "shifts and frictional compression",
         control: "T",
-        supported: false,
-        reason: "supported: T = 0 (as a steady case at zero creepage), 2 (transient rolling), 3 (steady rolling)",
+        supported: true,
+        reason: "imported as `[rolling] motion = \"shift\"` (CKSI, CETA the shifts of a step [mm], CPHI its rotation), or as the shift that starts a rolling history (`[init] kind = \"shift\"`)",
         used: |c| digit("T", c.digits.t, c.digits.t == 1),
     },
     Feature {
@@ -55,18 +55,42 @@ pub const FEATURES: &[Feature] = &[
         used: |c| digit("T", c.digits.t, c.digits.t == 0),
     },
     Feature {
-        name: "approach prescribed instead of the normal force",
+        name: "approach prescribed instead of the normal force in a steady case or on a Hertzian contact",
         control: "N",
         supported: false,
-        reason: "supported: N = 1 (FN prescribed)",
-        used: |c| digit("N", c.digits.n, c.digits.n == 0),
+        reason: "supported: N = 1 (FN prescribed), N = 0 in shifts and transient rolling (T = 1, 2) on a grid (IPOTCN > 0)",
+        used: |c| {
+            let hertz = matches!(c.state.potcon, Some(Potcon::Hertz { .. }));
+            digit("N", c.digits.n, c.digits.n == 0 && (!matches!(c.digits.t, 1 | 2) || hertz))
+        },
+    },
+    Feature {
+        name: "approach prescribed together with both tangential forces",
+        control: "N, F",
+        supported: false,
+        reason: "supported: N = 0 with F = 0, 1; with F = 2 not verified: the one public case (testbank.inp 11, Fy = 0) prints its solved SHIFT Y = -3.407e-12 mm, CONTACT's force-iteration noise (its NR stops at |Fy| ~ 2e-9), which no solver reproduces to its printed digits",
+        used: |c| (c.digits.n == 0 && c.digits.f == 2).then(|| "N = 0, F = 2".to_string()),
+    },
+    Feature {
+        name: "approach prescribed instead of the normal force",
+        control: "N",
+        supported: true,
+        reason: "imported as the creepage table's column pen_mm (PEN): the exact solver finds FN",
+        used: |c| digit("N", c.digits.n, c.digits.n == 0 && matches!(c.digits.t, 1 | 2)),
     },
     Feature {
         name: "prescribed tangential forces",
         control: "F",
+        supported: true,
+        reason: "imported as the table's fx_over_fn (F = 1) and fy_over_fn (F = 2): Fx/FN = −FX·FSTAT (scene::force_ratio)",
+        used: |c| digit("F", c.digits.f, c.digits.f != 0 && matches!(c.digits.t, 1 | 2)),
+    },
+    Feature {
+        name: "prescribed tangential forces in steady rolling",
+        control: "F",
         supported: false,
-        reason: "supported: F = 0 (creepages CKSI, CETA prescribed)",
-        used: |c| digit("F", c.digits.f, c.digits.f != 0),
+        reason: "supported: F = 1, 2 in shifts and transient rolling (T = 1, 2); in steady rolling (T = 3) F = 0",
+        used: |c| digit("F", c.digits.f, c.digits.f != 0 && c.digits.t == 3),
     },
     Feature {
         name: "subsurface stresses",
@@ -92,8 +116,8 @@ pub const FEATURES: &[Feature] = &[
     Feature {
         name: "static friction other than kinetic friction",
         control: "FSTAT, FKIN",
-        supported: false,
-        reason: "supported: FSTAT = FKIN (one coefficient of friction)",
+        supported: true,
+        reason: "CONTACT's Coulomb law (L = 0) takes FSTAT as its one coefficient and overwrites FKIN with it (`fric_update` in m_friclaw.f90: fkin := fstat; the traction bound is FSTAT pn): mu = FSTAT",
         used: |c| {
             let f = &c.state.friction;
             (c.state.friction_law == 0 && f.len() == 2 && f[0] != f[1])

@@ -37,8 +37,28 @@ pub struct Imported {
 enum Run {
     /// Steady cases of one setup.
     Sweep,
-    /// Transient cases, after a steady start or from zero traction.
-    Transient { steady_start: bool },
+    /// Transient rolling cases (T = 2) from `start`.
+    Transient { start: Start },
+    /// Shifts (T = 1) from zero traction: `[rolling] motion = "shift"`.
+    Shifts,
+}
+
+/// The state a transient rolling history starts from (its step 0, where it has one).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Start {
+    /// Zero traction (P = 2): no step 0.
+    Zero,
+    /// The steady case before it (`[init] kind = "steady"`).
+    Steady,
+    /// The shift (T = 1) before it (`[init] kind = "shift"`).
+    Shift,
+}
+
+impl Run {
+    /// Whether the history's first case is its step 0 (an initial state, not a step).
+    fn has_start(self) -> bool {
+        matches!(self, Run::Transient { start: Start::Steady | Start::Shift })
+    }
 }
 
 #[derive(Debug, Clone)]
@@ -70,15 +90,23 @@ pub fn import_text(file: &str, stem: &str, text: &str) -> Result<Imported, Input
     for h in histories {
         let numbers: Vec<usize> = h.cases.iter().map(|&k| cases[k].number).collect();
         let span = format!("cases {} to {}", numbers[0], numbers[numbers.len() - 1]);
-        if let Some(&bad) = h.cases.iter().find(|&&k| !statuses[k].supported()) {
-            for &k in &h.cases {
-                if statuses[k].supported() {
-                    let why = format!("its history ({span}) holds case {}, which is not supported", cases[bad].number);
-                    statuses[k].refused.push(why);
-                }
+        // A history's state flows forward: the cases before its first refused one are a history.
+        let cut = h.cases.iter().position(|&k| !statuses[k].supported()).unwrap_or(h.cases.len());
+        for &k in &h.cases[cut..] {
+            if statuses[k].supported() {
+                let bad = cases[h.cases[cut]].number;
+                statuses[k].refused.push(format!("its history ({span}) holds case {bad}, which is not supported"));
             }
-            continue;
         }
+        let h = match (h.run, cut) {
+            (_, 0) => continue,
+            // A start alone: the steady case or the shift itself.
+            (Run::Transient { start: Start::Steady }, 1) => History { run: Run::Sweep, cases: vec![h.cases[0]] },
+            (Run::Transient { start: Start::Shift }, 1) => History { run: Run::Shifts, cases: vec![h.cases[0]] },
+            (run, cut) => History { run, cases: h.cases[..cut].to_vec() },
+        };
+        let numbers: Vec<usize> = h.cases.iter().map(|&k| cases[k].number).collect();
+        let span = format!("cases {} to {}", numbers[0], numbers[numbers.len() - 1]);
         match build(file, stem, &cases, &h) {
             Ok(s) => {
                 for &k in &h.cases {
@@ -147,12 +175,18 @@ fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static 
     let coulomb = a.friction_law == 0 && b.friction_law == 0;
     let pairs: [(&'static str, bool); 10] = [
         ("FN", load_varies || a.pen_or_fn == b.pen_or_fn),
-        ("FSTAT, FKIN", (load_varies && coulomb) || a.friction == b.friction),
+        // Coulomb: FSTAT alone counts (CONTACT overwrites FKIN with it).
+        (
+            "FSTAT, FKIN",
+            (load_varies && coulomb)
+                || a.friction == b.friction
+                || (coulomb && a.friction.first() == b.friction.first()),
+        ),
         ("MEMDST, MEM_S0", a.memory == b.memory),
         ("CHI, DQ", (a.chi_rad, a.dq_mm) == (b.chi_rad, b.dq_mm)),
         ("POISS, GG", (a.poiss, a.gg_mpa) == (b.poiss, b.gg_mpa)),
         ("the potential contact (IPOTCN and its line)", a.potcon == b.potcon),
-        ("the undeformed distance (IBASE)", a.undeformed == b.undeformed),
+        ("the undeformed distance (IBASE)", a.undeformed == b.undeformed || (load_varies && quadratics(a, b))),
         ("the friction law", a.friction_law == b.friction_law),
         ("SPINXO, SPINYO", a.spin_centre_mm == b.spin_centre_mm),
         ("the rolling step (CHI, DQ, VELOC read)", a.rolling_read == b.rolling_read),
@@ -172,14 +206,14 @@ fn group(cases: &[Case], statuses: &mut [CaseStatus]) -> Vec<History> {
             continue;
         };
         let d = c3.digits;
-        let continues = d.t == 2 && d.p != 2 && open;
+        let continues = matches!(d.t, 1 | 2) && d.p != 2 && open;
         if d.t == 0 {
             // Frictionless compression: a history of its own (what follows starts from zero traction).
             hs.push(History { run: Run::Sweep, cases: vec![k] });
             open = false;
             continue;
         }
-        if d.t != 2 {
+        if d.t == 3 {
             let joins = match hs.last() {
                 Some(h) if open && h.run == Run::Sweep => {
                     let first = case3(cases, h.cases[0]);
@@ -199,19 +233,33 @@ fn group(cases: &[Case], statuses: &mut [CaseStatus]) -> Vec<History> {
         }
         if continues {
             let h = hs.last_mut().expect("an open history");
-            if h.run == Run::Sweep {
+            if let Some(why) = continuation_refused(h, d.t) {
+                statuses[k].refused.push(why.into());
+                let run = if d.t == 1 { Run::Shifts } else { Run::Transient { start: Start::Zero } };
+                hs.push(History { run, cases: vec![k] });
+                open = true;
+                continue;
+            }
+            let mut prev = case3(cases, h.cases[h.cases.len() - 1]).state.clone();
+            if h.run == Run::Shifts && d.t == 2 && h.cases.len() == 1 {
+                // The shift is this rolling history's initial state; the rolling step is read now.
+                h.run = Run::Transient { start: Start::Shift };
+                (prev.chi_rad, prev.dq_mm, prev.veloc_mm_s) = (c3.state.chi_rad, c3.state.dq_mm, c3.state.veloc_mm_s);
+                prev.rolling_read = c3.state.rolling_read;
+            }
+            if h.run == Run::Sweep && d.t == 2 {
                 // The last steady case is this transient history's steady start.
                 let start = h.cases.pop().expect("a steady case");
                 if h.cases.is_empty() {
                     hs.pop();
                 }
-                hs.push(History { run: Run::Transient { steady_start: true }, cases: vec![start] });
+                hs.push(History { run: Run::Transient { start: Start::Steady }, cases: vec![start] });
             }
             let h = hs.last_mut().expect("a history");
-            let prev = &case3(cases, h.cases[h.cases.len() - 1]).state;
+            let last = case3(cases, h.cases[h.cases.len() - 1]);
             let hertz = matches!(prev.potcon, Some(Potcon::Hertz { .. }));
-            let after_start = h.run == (Run::Transient { steady_start: true }) && h.cases.len() == 1;
-            let other_iteration = falling(&c3.state) && slip_iteration(prev) != slip_iteration(&c3.state);
+            let after_start = h.run == (Run::Transient { start: Start::Steady }) && h.cases.len() == 1;
+            let other_iteration = falling(&c3.state) && slip_iteration(&prev) != slip_iteration(&c3.state);
             if after_start && other_iteration {
                 let (start, omgslp) = slip_iteration(&c3.state);
                 statuses[h.cases[0]].notes.push(format!(
@@ -219,7 +267,13 @@ fn group(cases: &[Case], statuses: &mut [CaseStatus]) -> Vec<History> {
                     prev.slip_start.unwrap_or((0, crate::scene::OMGSLP))
                 ));
             }
-            if let Some(what) = setup_difference(prev, &c3.state, true) {
+            if prescribed(last) != prescribed(c3) {
+                statuses[k].refused.push(format!(
+                    "F = {} after F = {}: the prescribed forces change within a history (one table has either creepages or forces)",
+                    d.f, last.digits.f
+                ));
+            }
+            if let Some(what) = setup_difference(&prev, &c3.state, true) {
                 statuses[k].refused.push(format!("changes {what} within a transient history"));
             } else if other_iteration && !after_start {
                 statuses[k].refused.push(
@@ -232,12 +286,25 @@ fn group(cases: &[Case], statuses: &mut [CaseStatus]) -> Vec<History> {
                 ));
             }
             h.cases.push(k);
+        } else if d.t == 1 {
+            hs.push(History { run: Run::Shifts, cases: vec![k] });
         } else {
-            hs.push(History { run: Run::Transient { steady_start: false }, cases: vec![k] });
+            hs.push(History { run: Run::Transient { start: Start::Zero }, cases: vec![k] });
         }
         open = true;
     }
     hs
+}
+
+/// Why a transient case (`t`: its T) cannot continue history `h` (P = 0), if it cannot: a shift
+/// continues shifts only; rolling continues rolling, a steady case or one shift.
+fn continuation_refused(h: &History, t: u8) -> Option<&'static str> {
+    match (h.run, t) {
+        (Run::Shifts, 1) | (Run::Transient { .. }, 2) | (Run::Sweep, 2) => None,
+        (Run::Shifts, _) if h.cases.len() == 1 => None,
+        (Run::Shifts, _) => Some("T = 2 after several shifts (T = 1) with P = 0: supported: one shift, the initial state of the rolling (`[init] kind = \"shift\"`)"),
+        (_, _) => Some("T = 1 with P = 0 after a rolling case: supported: shifts from rest (P = 2) or after shifts"),
+    }
 }
 
 /// Whether a steady case continues a sweep: at the sweep's speed (VELOC) where its creepages
@@ -250,24 +317,83 @@ fn sweep_continues(cases: &[Case], h: &History, c: &Case3) -> bool {
     (same_speed && !speeds_vary) || (same_creepage && (speeds_vary || h.cases.len() == 1))
 }
 
-/// A case's row: [cx, cy, cs, FN, μ] (T = 0: zero creepage).
+/// Whether both cases give a quadratic undeformed distance (IBASE = 1, IPLAN alike) on one grid:
+/// new B(1..6) per case are the table's columns `b1_per_mm` … `b6_mm`.
+fn quadratics(a: &State, b: &State) -> bool {
+    let q = |s: &State| s.undeformed.as_ref().filter(|u| u.ibase == 1).map(|u| u.iplan);
+    matches!(a.potcon, Some(Potcon::Grid { .. })) && q(a).is_some() && q(a) == q(b)
+}
+
+/// The B(1..6) of each case where they change within the history (IBASE = 1), else `None`.
+fn quadratic_rows(cases: &[Case], h: &History) -> Option<Vec<[f64; 6]>> {
+    let b = |k: usize| {
+        let u = case3(cases, k).state.undeformed.as_ref()?;
+        <[f64; 6]>::try_from(u.values.as_slice()).ok().filter(|_| u.ibase == 1)
+    };
+    let rows: Vec<[f64; 6]> = h.cases.iter().map(|&k| b(k)).collect::<Option<_>>()?;
+    rows.iter().any(|r| r != &rows[0]).then_some(rows)
+}
+
+/// The load of approach `pen_mm` on undeformed distance `h_mm` (CONTACT's element order) of a
+/// `mx × my` grid of `dx × dy` elements: the nominal `contact.fn_n` of a case with N = 0.
+fn load_of_approach(
+    h_mm: &[f64],
+    (mx, my, dx, dy): (usize, usize, f64, f64),
+    (g, nu): (f64, f64),
+    pen_mm: f64,
+) -> Option<f64> {
+    use crate::physics::halfspace::{influence::Kernel, normal};
+    let kernel = Kernel::new(mx, my, dx, dy, g, nu, 0.0).ok()?;
+    let s = normal::NormalSolver::new(&kernel).ok()?.solve_approach(h_mm, pen_mm, &Default::default()).ok()?;
+    Some(s.pn_mpa.iter().sum::<f64>() * dx * dy).filter(|f| f.is_finite() && *f > 0.0)
+}
+
+/// Which of x, y the case prescribes as a force (F = 1: x; F = 2: x and y).
+fn prescribed(c: &Case3) -> [bool; 2] {
+    [c.digits.f >= 1, c.digits.f == 2]
+}
+
+/// CONTACT's FX, FY under F = 1, 2 are FXREL, FYREL: the force on body 1 over FSTAT·FN (user
+/// guide, "Tangential forces"); this project's Fx/FN is the force on body 2 over FN: −FXREL·FSTAT.
+/// The one place the importer converts a prescribed force.
+pub fn force_ratio(relative: f64, fstat: f64) -> f64 {
+    -relative * fstat
+}
+
+/// A case's row: [cx or Fx/FN, cy or Fy/FN, cs, FN, μ] (T = 0: zero creepage; the forces where
+/// [`prescribed`], converted by [`force_ratio`]).
 fn row(c: &Case3) -> [f64; 5] {
     let s = &c.state;
     let mu = match (s.friction_law, s.friction.as_slice()) {
         // FSTAT = μ_s(0) = FKIN + F1 + F2 (`m_friclaw.f90` lines 303-305), as `FrictionLaw::mu_static`.
         (2..=4, [fkin, f1, _, f2, _]) => fkin + f1 + f2,
-        _ => s.friction.get(1).copied().unwrap_or(f64::NAN),
+        // Coulomb (L = 0): FSTAT, CONTACT's one coefficient (`fric_update`: fkin := fstat).
+        _ => s.friction.first().copied().unwrap_or(f64::NAN),
     };
     if c.digits.t == 0 {
-        [0.0, 0.0, 0.0, s.pen_or_fn, mu]
-    } else {
-        [s.cksi_or_fx, s.ceta_or_fy, s.cphi_per_mm, s.pen_or_fn, mu]
+        return [0.0, 0.0, 0.0, s.pen_or_fn, mu];
     }
+    // FSTAT is μ: Coulomb's one coefficient, a falling law's μ at zero slip.
+    let [fx, fy] = prescribed(c);
+    let x = if fx { force_ratio(s.cksi_or_fx, mu) } else { s.cksi_or_fx };
+    let y = if fy { force_ratio(s.ceta_or_fy, mu) } else { s.ceta_or_fy };
+    [x, y, s.cphi_per_mm, s.pen_or_fn, mu]
 }
 
 /// The speeds (VELOC) of a history's cases where they change within it.
 fn speeds(cases: &[Case], h: &History) -> Option<Vec<f64>> {
-    let v: Vec<f64> = h.cases.iter().map(|&k| case3(cases, k).state.veloc_mm_s).collect();
+    if h.run == Run::Shifts {
+        return None;
+    }
+    // A shift that starts a rolling history has no speed of its own: its rolling's.
+    let rolling = |n: usize| {
+        h.cases[if h.run == (Run::Transient { start: Start::Shift }) && n == 0 {
+            (n + 1).min(h.cases.len() - 1)
+        } else {
+            n
+        }]
+    };
+    let v: Vec<f64> = (0..h.cases.len()).map(|n| case3(cases, rolling(n)).state.veloc_mm_s).collect();
     v.iter().any(|x| *x != v[0]).then_some(v)
 }
 
@@ -428,7 +554,10 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     let first = case3(cases, h.cases[0]);
     let last = case3(cases, h.cases[h.cases.len() - 1]);
     let s = &first.state;
+    // The rolling step of the history (after a shift start, its first rolling case's).
+    let roll = &case3(cases, h.cases[usize::from(h.run == (Run::Transient { start: Start::Shift }))]).state;
     let rows: Vec<[f64; 5]> = h.cases.iter().map(|&k| row(case3(cases, k))).collect();
+    let quads = quadratic_rows(cases, h);
     let mut doc = Table::new();
     let mut files: Vec<(String, String)> = Vec::new();
     doc.insert("name".into(), Value::String(name.clone()));
@@ -478,6 +607,19 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
                     })
                     .collect(),
             };
+            if first.digits.n == 0 {
+                // N = 0: the nominal load (it forms the nominal contact) of the first case's PEN.
+                let m = combine_bodies(s.poiss, s.gg_mpa);
+                let fn_n = load_of_approach(&h_mm, (mx, my, *dx_mm, *dy_mm), (m.g_mpa, m.poisson), rows[0][3])
+                    .ok_or_else(|| {
+                        InputError::new(
+                            format!("{file}, case {}", numbers[0]),
+                            format!("PEN = {}", rows[0][3]),
+                            "an approach at which the undeformed distance makes contact on the grid",
+                        )
+                    })?;
+                contact[0] = ("fn_n", Value::Float(fn_n));
+            }
             let mut csv = String::from("ix,iy,h_mm\n");
             for (e, v) in h_mm.iter().enumerate() {
                 let _ = writeln!(csv, "{},{},{v:?}", e % mx + 1, e / mx + 1);
@@ -535,20 +677,64 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
             }
             doc.insert("creepage".into(), table(cr));
         }
-        Run::Transient { steady_start } => {
-            let dt_s = s.dq_mm / s.veloc_mm_s;
+        Run::Transient { .. } | Run::Shifts => {
+            let steady_start = h.run.has_start();
+            // Shifts: CONTACT's time step is a dummy 1 s (user guide, "Tangential quantities in
+            // case of a shift"); here too, with [rolling] v_mm_s = dx and courant 1.
+            let dt_s = if h.run == Run::Shifts { 1.0 } else { roll.dq_mm / roll.veloc_mm_s };
             let varies = |j: usize| rows.iter().any(|r| r[j].to_bits() != rows[0][j].to_bits());
-            let columns: Vec<usize> = (0..5).filter(|&j| j == 0 || varies(j)).collect();
-            let names = ["cx", "cy", "cs", "fn_n", "mu"];
+            let forces = prescribed(first);
+            // N = 0: PEN is the column pen_mm, always written (FN is the solver's); N = 0 and 1 in
+            // one history: both columns, each row's other cell empty.
+            let normal: Vec<bool> = h.cases.iter().map(|&k| case3(cases, k).digits.n == 0).collect();
+            let (by_pen, by_fn) = (normal.iter().any(|&p| p), normal.iter().any(|&p| !p));
+            let columns: Vec<usize> =
+                (0..5).filter(|&j| j == 0 || (j == 1 && forces[1]) || (j == 3 && by_pen) || varies(j)).collect();
+            let names = [
+                if forces[0] { "fx_over_fn" } else { "cx" },
+                if forces[1] { "fy_over_fn" } else { "cy" },
+                "cs",
+                match (by_pen, by_fn) {
+                    (true, true) => "fn_n,pen_mm",
+                    (true, false) => "pen_mm",
+                    _ => "fn_n",
+                },
+                "mu",
+            ];
             let speed_column = if speeds(cases, h).is_some() { ",v_mm_s" } else { "" };
-            let mut csv =
-                format!("t_s,{}{speed_column}\n", columns.iter().map(|&j| names[j]).collect::<Vec<_>>().join(","));
+            let quad_columns = if quads.is_some() { ",b1_per_mm,b2_per_mm,b3_per_mm,b4,b5,b6_mm" } else { "" };
+            let mut csv = format!(
+                "t_s,{}{speed_column}{quad_columns}\n",
+                columns.iter().map(|&j| names[j]).collect::<Vec<_>>().join(",")
+            );
             match speeds(cases, h) {
-                Some(v) => speed_rows(&mut csv, &rows, &columns, &v, s.dq_mm, steady_start),
+                Some(_) if quads.is_some() => {
+                    return Err(InputError::new(
+                        format!("{file}, cases {} to {}", numbers[0], numbers[1]),
+                        "VELOC and B(1..6) changing in one history",
+                        "one of the speed (VELOC) and the undeformed distance (IBASE = 1) changing per case",
+                    ))
+                }
+                Some(_) if by_pen && by_fn => {
+                    return Err(InputError::new(
+                        format!("{file}, cases {} to {}", numbers[0], numbers[1]),
+                        "VELOC changing with N = 0 and N = 1 in one history",
+                        "one of the speed (VELOC) changing per case and N changing per case",
+                    ))
+                }
+                Some(v) => speed_rows(&mut csv, &rows, &columns, &v, roll.dq_mm, steady_start),
                 None => {
                     for (n, r) in rows.iter().enumerate() {
                         let step = if steady_start { n } else { n + 1 };
-                        let values: Vec<String> = columns.iter().map(|&j| format!("{:?}", r[j])).collect();
+                        let cell = |j: usize| match (j, by_pen && by_fn, normal[n]) {
+                            (3, true, true) => format!(",{:?}", r[3]),
+                            (3, true, false) => format!("{:?},", r[3]),
+                            _ => format!("{:?}", r[j]),
+                        };
+                        let mut values: Vec<String> = columns.iter().map(|&j| cell(j)).collect();
+                        if let Some(q) = &quads {
+                            values.extend(q[n].iter().map(|b| format!("{b:?}")));
+                        }
                         let _ = writeln!(csv, "{:?},{}", step as f64 * dt_s, values.join(","));
                     }
                 }
@@ -556,13 +742,18 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
             let file_name = format!("{name}_table.csv");
             let mut cr = vec![("kind", Value::String("table".into())), ("file", Value::String(file_name.clone()))];
             for (j, key) in [(1, "cy"), (2, "cs")] {
-                if !varies(j) && rows[0][j].to_bits() != 0 {
+                if !columns.contains(&j) && rows[0][j].to_bits() != 0 {
                     cr.push((key, Value::Float(rows[0][j])));
                 }
             }
             doc.insert("creepage".into(), table(cr));
-            if steady_start {
-                doc.insert("init".into(), table(vec![("kind", Value::String("steady".into()))]));
+            let init = match h.run {
+                Run::Transient { start: Start::Steady } => Some("steady"),
+                Run::Transient { start: Start::Shift } => Some("shift"),
+                _ => None,
+            };
+            if let Some(kind) = init {
+                doc.insert("init".into(), table(vec![("kind", Value::String(kind.into()))]));
             }
             files.push((file_name, csv));
         }
@@ -580,10 +771,12 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
         }
         doc.insert("contact_solver".into(), table(cs));
     }
-    if s.rolling_read {
+    if h.run == Run::Shifts {
+        doc.insert("rolling".into(), table(vec![("motion", Value::String("shift".into()))]));
+    } else if roll.rolling_read {
         doc.insert(
             "rolling".into(),
-            table(vec![("v_mm_s", Value::Float(s.veloc_mm_s)), ("courant", Value::Float(1.0))]),
+            table(vec![("v_mm_s", Value::Float(roll.veloc_mm_s)), ("courant", Value::Float(1.0))]),
         );
     }
     doc.insert(
@@ -599,15 +792,22 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     let dir = tempfile::tempdir()
         .map_err(|e| InputError::new(&place, "a temporary folder", format!("a writable temporary folder: {e}")))?;
     let scene_file = format!("{name}.toml");
-    if s.rolling_read {
+    if h.run == Run::Shifts {
+        // dt = courant·dx/v = 1 s exactly with v = dx, courant = 1 (dx from the project's grid).
+        let dx_mm = read_back(dir.path(), &scene_file, &probe(&doc), &files)?.grid.dx_mm;
+        if let Some(Value::Table(r)) = doc.get_mut("rolling") {
+            r.insert("v_mm_s".into(), Value::Float(dx_mm));
+            r.insert("courant".into(), Value::Float(1.0));
+        }
+    } else if roll.rolling_read {
         let problem = read_back(dir.path(), &scene_file, &doc, &files)?;
-        let courant = courant_for(s.dq_mm, problem.grid.dx_mm);
+        let courant = courant_for(roll.dq_mm, problem.grid.dx_mm);
         if let Some(Value::Table(r)) = doc.get_mut("rolling") {
             r.insert("courant".into(), Value::Float(courant));
         }
     }
     let problem = read_back(dir.path(), &scene_file, &doc, &files)?;
-    check_rows(&problem, &rows, &h.cases.iter().map(|&k| cases[k].number).collect::<Vec<_>>())?;
+    check_rows(&problem, &rows, quads.as_deref(), &h.cases.iter().map(|&k| cases[k].number).collect::<Vec<_>>())?;
     let text = format!(
         "# Imported by `creepbench import contact` from {file}, cases {} to {}.\n{}",
         numbers[0],
@@ -637,6 +837,16 @@ fn circular_in_x(b: &[f64], (x, y): (f64, f64)) -> f64 {
     heights[left] + slope * (y - y_left) + (x - xm) * (x - xm) / (2.0 * rx)
 }
 
+/// The scene with a one-step loading at zero creepage in place of its own (no `[init]`): read
+/// back only for its grid.
+fn probe(doc: &Table) -> Table {
+    let mut probe = doc.clone();
+    probe.remove("init");
+    let step = vec![("kind", Value::String("step".into())), ("c", Value::Float(0.0)), ("steps", Value::Integer(1))];
+    probe.insert("creepage".into(), table(step));
+    probe
+}
+
 /// Write the scene and its files into `dir`, read the scene back with the project's reader and
 /// resolve it.
 fn read_back(dir: &Path, scene_file: &str, doc: &Table, files: &[(String, String)]) -> Result<Problem, InputError> {
@@ -652,9 +862,31 @@ fn read_back(dir: &Path, scene_file: &str, doc: &Table, files: &[(String, String
     crate::pipeline::resolve(&scene)
 }
 
-/// Every row of the resolved scene equals its case: cx, cy, cs, FN and μ bit for bit.
-fn check_rows(problem: &Problem, rows: &[[f64; 5]], numbers: &[usize]) -> Result<(), InputError> {
-    let got: Vec<[f64; 5]> = problem.loading.rows().map(|s| [s.cx, s.cy, s.cs, s.fn_n, s.mu]).collect();
+/// Every row of the resolved scene equals its case: cx, cy, cs, FN (or PEN) and μ bit for bit,
+/// and B(1..6) where they change per case.
+fn check_rows(
+    problem: &Problem,
+    rows: &[[f64; 5]],
+    quads: Option<&[[f64; 6]]>,
+    numbers: &[usize],
+) -> Result<(), InputError> {
+    let got: Vec<[f64; 5]> = problem
+        .loading
+        .rows()
+        .map(|s| [s.fx_target.unwrap_or(s.cx), s.fy_target.unwrap_or(s.cy), s.cs, s.pen_mm.unwrap_or(s.fn_n), s.mu])
+        .collect();
+    let got_quads: Vec<Option<[f64; 6]>> = problem.loading.rows().map(|s| s.h_coefficients).collect();
+    for (n, (g, q)) in
+        got_quads.iter().zip(quads.map(|q| q.iter().map(Some).collect::<Vec<_>>()).unwrap_or_default()).enumerate()
+    {
+        if g.map(|g| g.map(f64::to_bits)) != q.map(|q| q.map(f64::to_bits)) {
+            return Err(InputError::new(
+                format!("scene {}, case {}", problem.name, numbers[n]),
+                format!("{g:?}"),
+                format!("the case's B(1..6) = {q:?} exactly"),
+            ));
+        }
+    }
     if got.len() != rows.len() {
         return Err(InputError::new(
             format!("scene {}", problem.name),
@@ -729,6 +961,17 @@ mod tests {
         assert_eq!(at(2.0, 5.0), 1.0);
         // (x - XM)²/(2 RX1): the parabola CONTACT uses, not the circle.
         assert_eq!(at(4.0, 1.0), 3.0 + 0.4);
+    }
+
+    #[test]
+    fn coulomb_friction_is_fstat_whatever_fkin_says() {
+        // CONTACT's L = 0 overwrites FKIN with FSTAT (`fric_update`, m_friclaw.f90).
+        let deck =
+            DECK.replace(" 0.3  0.3                     FSTAT, FKIN", " 0.3  0.25                    FSTAT, FKIN");
+        let imported = import_text("t.inp", "t", &deck).unwrap();
+        assert!(imported.statuses.iter().all(CaseStatus::supported), "{:?}", imported.statuses);
+        assert!(imported.statuses[0].notes.iter().any(|n| n.starts_with("FSTAT = 0.3, FKIN = 0.25")));
+        assert!(imported.scenes[0].files[0].1.contains("mu = 0.3\n"), "{}", imported.scenes[0].files[0].1);
     }
 
     #[test]

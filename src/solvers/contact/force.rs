@@ -85,6 +85,17 @@ pub struct Memory {
     last: Option<(Vec<usize>, Vec<f64>, Vec<f64>)>,
 }
 
+impl Memory {
+    /// The next sample starts from zero creepage, the last Jacobian kept: a shift's increment
+    /// after the contact changed (a new load or undeformed distance: the last increment, which
+    /// may have been the first shift from rest, is no guess of the next).
+    pub fn from_rest(&mut self) {
+        if let Some((_, u, _)) = self.last.as_mut() {
+            u.iter_mut().for_each(|v| *v = 0.0);
+        }
+    }
+}
+
 /// Find the creepages giving `targets`. `given` holds the creepages (cx, cy) of the directions
 /// not prescribed; `slope` Kalker's linear d(f)/d(c) per direction (> 0); `eval(cx, cy)` solves
 /// the tangential problem and gives its result with the force ratios reached. Starts from the

@@ -112,6 +112,8 @@ mod tests {
             v_mm_s: None,
             fx_target: None,
             fy_target: None,
+            pen_mm: None,
+            h_coefficients: None,
         }
     }
 

@@ -10,6 +10,7 @@ use super::tangential::{StepResult, TangentialParams, TangentialSolver};
 use super::veldep::{Motion as LawStep, VelDep, VelDepOptions, VelDepOutcome};
 use super::ContactError;
 use crate::error::InputError;
+use crate::physics::geometry::element::equivalent_ellipse;
 use crate::physics::{moment_sum, LinearTheory};
 use crate::problem::{Problem, Sample};
 use crate::scene::Motion;
@@ -27,6 +28,7 @@ pub const MODEL: ModelDef = ModelDef {
     iterative: true,
     prescribed_forces: true,
     shifts: true,
+    normal_rows: true,
     check,
     cost_per_row,
     params: None,
@@ -73,6 +75,10 @@ pub enum ContactRunError {
     Normal { fn_n: f64, source: ContactError },
     #[error("normal problem at FN = {fn_n} N did not converge in {iterations} iterations (residual {residual:.2e})")]
     NormalNotConverged { fn_n: f64, iterations: usize, residual: f64 },
+    #[error("normal problem at the approach {pen_mm} mm: {source}")]
+    Approach { pen_mm: f64, source: ContactError },
+    #[error("normal problem at the approach {pen_mm} mm did not converge in {iterations} iterations (residual {residual:.2e})")]
+    ApproachNotConverged { pen_mm: f64, iterations: usize, residual: f64 },
     #[error("no element of the {mx}x{my} grid carries load at FN = {fn_n} N")]
     NoContact { mx: usize, my: usize, fn_n: f64 },
     #[error("tangential problem at FN = {fn_n} N: {source}")]
@@ -83,13 +89,18 @@ pub enum ContactRunError {
 
 /// The normal solution at one load.
 struct Loaded {
+    /// The sample's (FN, approach, undeformed distance) it was solved for.
+    key: (f64, Option<f64>, Option<[f64; 6]>),
+    /// The total normal force [N]: the sample's, or found for its approach.
     fn_n: f64,
     pn: Vec<f64>,
     pn_sum: f64,
     pn_max: f64,
-    /// Kalker's linear d(fx/FN)/d(cx), d(fy/FN)/d(cy) at this load: the prescribed-force
-    /// iteration's start ([`super::force`]).
+    /// Kalker's linear d(fx/FN)/d(cx), d(fy/FN)/d(cy) at this load (shifts: Mindlin's per mm):
+    /// the prescribed-force iteration's start ([`super::force`]).
     slope: [f64; 2],
+    /// Mindlin's d(f/FN)/d(shift) [1/mm] at this load: the start of a shift start's iteration.
+    shift_slope: [f64; 2],
 }
 
 /// The solver's state: the normal and tangential solvers (kernels and FFT plans built once per
@@ -102,6 +113,9 @@ struct Contact<'a> {
     /// CONTACT solves steady rolling with DQ = DX whatever DQ the input gives (SteadyGS;
     /// `m_sdis.f90` warns "Using DQ = DX"), so does this solver; `None`: `tangential` serves.
     steady_dx: Option<TangentialSolver>,
+    /// The shift from rest that starts a rolling history (`[init] kind = "shift"`); `None`: no
+    /// shift start.
+    shift_start: Option<TangentialSolver>,
     loaded: Option<Loaded>,
     /// The last solve (the previous traction of the next transient step).
     last: Option<StepResult>,
@@ -143,11 +157,16 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     } else {
         None
     };
+    let shift_start = match p.loading.shift_start() {
+        Some(_) => Some(TangentialSolver::for_shifts(&k0, &x, &y).map_err(ContactRunError::Kernel)?),
+        None => None,
+    };
     Ok(Box::new(Contact {
         p,
         normal,
         tangential,
         steady_dx,
+        shift_start,
         loaded: None,
         last: None,
         older: None,
@@ -277,44 +296,102 @@ impl Contact<'_> {
     }
 }
 
+impl Contact<'_> {
+    /// The sample's undeformed distance: its own (CONTACT's IBASE = 1 per case, in CONTACT's
+    /// coordinates x_C = −x), else the geometry's at its load.
+    fn undeformed_mm(&self, at: &Sample) -> Vec<f64> {
+        let p = self.p;
+        match at.h_coefficients {
+            Some(b) => {
+                let (x, y) = p.grid.centres();
+                x.iter()
+                    .zip(&y)
+                    .map(|(x, y)| {
+                        let xc = -x;
+                        b[0] * xc * xc + b[1] * xc * y + b[2] * y * y + b[3] * xc + b[4] * y + b[5]
+                    })
+                    .collect()
+            }
+            None => p.geometry.undeformed_distance_mm(&p.grid, at.fn_n, &p.material),
+        }
+    }
+
+    /// The pressure at the sample's FN: the geometry's own where it has solved it, else the
+    /// normal problem.
+    fn normal_by_force(&mut self, at: &Sample) -> Result<Vec<f64>, ContactRunError> {
+        let (p, fn_n) = (self.p, at.fn_n);
+        if let Some(pn) = at.h_coefficients.is_none().then(|| p.geometry.normal_pressure_mpa(fn_n)).flatten() {
+            return Ok(pn);
+        }
+        let h = self.undeformed_mm(at);
+        let normal = self
+            .normal
+            .solve(&h, fn_n, &NormalParams::default())
+            .map_err(|source| ContactRunError::Normal { fn_n, source })?;
+        if !normal.converged {
+            let (iterations, residual) = (normal.iterations, normal.residual);
+            return Err(ContactRunError::NormalNotConverged { fn_n, iterations, residual });
+        }
+        Ok(normal.pn_mpa)
+    }
+
+    /// The pressure at the approach `pen_mm` (CONTACT N = 0) on the sample's undeformed distance.
+    fn normal_by_approach(&mut self, at: &Sample, pen_mm: f64) -> Result<Vec<f64>, ContactRunError> {
+        let h = self.undeformed_mm(at);
+        let normal = self
+            .normal
+            .solve_approach(&h, pen_mm, &NormalParams::default())
+            .map_err(|source| ContactRunError::Approach { pen_mm, source })?;
+        if !normal.converged {
+            let (iterations, residual) = (normal.iterations, normal.residual);
+            return Err(ContactRunError::ApproachNotConverged { pen_mm, iterations, residual });
+        }
+        Ok(normal.pn_mpa)
+    }
+}
+
 impl Stepper for Contact<'_> {
     fn load(&mut self, at: &Sample) -> Result<(), SolveError> {
-        if self.loaded.as_ref().is_some_and(|l| l.fn_n == at.fn_n) {
+        let key = (at.fn_n, at.pen_mm, at.h_coefficients);
+        if self.loaded.as_ref().is_some_and(|l| l.key == key) {
             return Ok(());
         }
-        let (p, fn_n) = (self.p, at.fn_n);
-        let pn_mpa = match p.geometry.normal_pressure_mpa(fn_n) {
-            Some(pn) => pn,
-            None => {
-                let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
-                let normal = self
-                    .normal
-                    .solve(&h, fn_n, &NormalParams::default())
-                    .map_err(|source| ContactRunError::Normal { fn_n, source })?;
-                if !normal.converged {
-                    let (iterations, residual) = (normal.iterations, normal.residual);
-                    return Err(ContactRunError::NormalNotConverged { fn_n, iterations, residual }.into());
-                }
-                normal.pn_mpa
+        let p = self.p;
+        let (pn_mpa, fn_n) = match at.pen_mm {
+            Some(pen_mm) => {
+                let pn = self.normal_by_approach(at, pen_mm)?;
+                let fn_n = pn.iter().sum::<f64>() * p.grid.element_area_mm2();
+                (pn, fn_n)
             }
+            None => (self.normal_by_force(at)?, at.fn_n),
         };
         let pn_sum: f64 = pn_mpa.iter().sum();
         if pn_sum <= 0.0 {
             return Err(ContactRunError::NoContact { mx: p.grid.mx, my: p.grid.my, fn_n }.into());
         }
-        for solver in std::iter::once(&mut self.tangential).chain(self.steady_dx.as_mut()) {
+        let solvers =
+            std::iter::once(&mut self.tangential).chain(self.steady_dx.as_mut()).chain(self.shift_start.as_mut());
+        for solver in solvers {
             solver.set_pressure(&pn_mpa).map_err(|source| ContactRunError::Setup { fn_n, source })?;
         }
         let pn_max = pn_mpa.iter().fold(0.0f64, |a, &b| a.max(b));
-        let e = p.geometry.ellipse_at(fn_n);
+        // A row's own undeformed distance: the equivalent ellipse of its pressure (as the geometry's).
+        let e = match at.h_coefficients {
+            Some(_) => equivalent_ellipse(&p.grid, &pn_mpa, fn_n).unwrap_or_else(|| p.geometry.ellipse_at(fn_n)),
+            None => p.geometry.ellipse_at(fn_n),
+        };
+        let shift_slope = [mindlin_stiffness_n_mm(p, e.a_mm * e.b_mm) / fn_n; 2];
         let slope = match p.rolling.motion {
             Motion::Rolling => {
                 let linear = LinearTheory::new(p.material.g_mpa, e.a_mm, e.b_mm, fn_n);
                 [linear.forces(&p.coefficients, (1.0, 0.0, 0.0)).0, linear.forces(&p.coefficients, (0.0, 1.0, 0.0)).1]
             }
-            Motion::Shift => [mindlin_stiffness_n_mm(p, e.a_mm * e.b_mm) / fn_n; 2],
+            Motion::Shift => shift_slope,
         };
-        self.loaded = Some(Loaded { fn_n, pn: pn_mpa, pn_sum, pn_max, slope });
+        if self.loaded.is_some() && p.rolling.motion == Motion::Shift {
+            self.outer.from_rest();
+        }
+        self.loaded = Some(Loaded { key, fn_n, pn: pn_mpa, pn_sum, pn_max, slope, shift_slope });
         self.older = None;
         Ok(())
     }
@@ -337,6 +414,25 @@ impl Stepper for Contact<'_> {
         self.found = found;
         self.older = None;
         self.after_steady = Some(SteadyStart::of(at));
+        Ok(self.record(r))
+    }
+
+    /// The shift from rest (CONTACT T = 1, P = 2): its traction is the previous traction of the
+    /// first rolling step; the prescribed-force iteration then starts afresh.
+    fn shift(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        let params = TangentialParams { dq_mm: 1.0, ..self.params(at) };
+        let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.shift_slope, l.pn_sum)).expect("loaded before a solve");
+        let solver = self.shift_start.as_mut().expect("built for a shift start");
+        let zero = &self.zero;
+        let (r, found) = force::solve_sample(at, &params, slope, pn_sum, &mut force::Memory::default(), |q| {
+            solver.transient_step(q, zero, zero, None)
+        })
+        .map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        self.found = found;
+        if r.px.iter().chain(&r.py).any(|v| !v.is_finite()) {
+            return Err(SolveError::NonFinite { step: at.step });
+        }
+        self.older = None;
         Ok(self.record(r))
     }
 
@@ -394,6 +490,10 @@ impl Stepper for Contact<'_> {
 
     fn solved_creepage(&self) -> Option<[f64; 2]> {
         self.found
+    }
+
+    fn solved_fn_n(&self) -> Option<f64> {
+        self.loaded.as_ref().filter(|l| l.key.1.is_some()).map(|l| l.fn_n)
     }
 
     fn field(&self) -> Option<FieldView<'_>> {
