@@ -259,7 +259,7 @@ impl Contact<'_> {
                 tangential.set_bound(g)?;
                 let params = TangentialParams { tol, ..params };
                 match start {
-                    Some(start) => tangential.transient_step_from(&params, px, py, start),
+                    Some(start) => tangential.transient_resolve_from(&params, start),
                     None => tangential.transient_step(&params, px, py, older),
                 }
             })
