@@ -220,6 +220,13 @@ fn bench_fft_length(c: &mut Criterion) {
 /// against the same with Coulomb's μ at the law's static value, at 22×22 on the step into the
 /// falling branch (scenes/stability/stab_fr_step_mem: cx = 0.012, most elements slip; the
 /// falling law solves each slipping element's bound g = p μ(s(g)) with the memory's update).
+/// Target: within 1.5× of Coulomb's time. Measured back to back (2026-11-25 05:20 UTC, 2-core
+/// machine, little load): FASTSIM 43.8 µs against 3.14 µs (14×), the UBA step 44.4 µs against
+/// 0.54 µs (82×): not met. Before (loaded): 159 µs and 160 µs, of which a quarter was libm's
+/// underflow path of the absent second exponential term (now skipped). What is left is the
+/// Newton on g per slipping element (~3.5 evaluations of μ(s) and μ'(s): five divisions and one
+/// exponential each, sequential) against Coulomb's one projection per element (the UBA's
+/// vectorised in AVX): no exact root costs 1.5× a projection.
 fn bench_falling(c: &mut Criterion) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let falling = std::fs::read_to_string(root.join("scenes/stability/stab_fr_step_mem.toml")).unwrap();
@@ -253,9 +260,13 @@ criterion_group!(benches, bench_uba, bench_fastsim, bench_fast_models, bench_uba
 /// (μ = the law's static value 0.45) on the same scenes/friction case, per element-step (the
 /// throughput: steps × elements): a transient step into the falling branch with memory
 /// (`fr_exp_step_cx_mem`, 66 steps) and a steady traction curve (`fr_exp_sweep_cx`, 27 points).
-/// Target: falling friction at most 3× Coulomb's time. Measured (2026-11-25, 2-core machine shared
-/// with four other builds): transient 246 ms against 23.1 ms (10.6×), steady 245 ms against
-/// 43.1 ms (5.7×): not met; each row takes 6-18 fixed-point iterations of a full tangential solve.
+/// Target: falling friction at most 3× Coulomb's time. Measured back to back (2026-11-25 05:20
+/// UTC, 2-core machine, little load): transient 72.3 ms against 9.24 ms (7.8×, not met), steady
+/// 45.8 ms against 17.4 ms (2.6×, met). Before (loaded, 04:25 UTC): 186 ms against 13.1 ms (14×)
+/// and 121 ms against 19.4 ms (6.3×). The fixed point's early iterates are solved loosely and a
+/// transient step's re-solves keep its right-hand side; a transient row still takes ~11
+/// fixed-point iterations at steady state (the start, CONTACT's INISLP = 0, is the previous slip
+/// velocity moved by dq, one element off a stationary field) where Coulomb takes one solve.
 fn bench_falling_friction(c: &mut Criterion) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut g = c.benchmark_group("contact_falling_friction");

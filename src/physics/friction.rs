@@ -74,7 +74,15 @@ impl FrictionLaw {
             }
             // m_friclaw.f90 lines 434-438
             FrictionLaw::Exponential(t) => {
-                let term = |f: f64, sh: f64| f * (-LN_2 * s_mm_s / FallingTerms::scale(f, sh)).exp();
+                // An absent term (F = 0) adds 0 without its exponential: exp(−ln2 s/1e-4)
+                // underflows, and libm's underflow path costs ten ordinary exponentials.
+                let term = |f: f64, sh: f64| {
+                    if f == 0.0 {
+                        0.0
+                    } else {
+                        f * (-LN_2 * s_mm_s / FallingTerms::scale(f, sh)).exp()
+                    }
+                };
                 t.fkin + term(t.f1, t.sabsh1_mm_s) + term(t.f2, t.sabsh2_mm_s)
             }
         }
@@ -110,6 +118,10 @@ impl FrictionLaw {
             }
             FrictionLaw::Exponential(t) => {
                 let term = |f: f64, sh: f64| {
+                    if f == 0.0 {
+                        // 0 · exp(…) without the exponential (see `mu_steady`).
+                        return (0.0, 0.0);
+                    }
                     let h = sc(f, sh);
                     let e = f * (-LN_2 * s_mm_s / h).exp();
                     (e, -LN_2 / h * e)

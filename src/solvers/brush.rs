@@ -161,6 +161,8 @@ pub struct Falling {
     pub c_mm_s: (f64, f64),
     /// The time the material takes to cross one element [s].
     pub dt_s: f64,
+    /// The memory's weight θ and the law's μ_s at s = 0 (the stick test's coefficient, made once).
+    stick: (f64, f64),
 }
 
 impl Falling {
@@ -172,21 +174,29 @@ impl Falling {
         }
         let v_mm_s = at.speed_mm_s(p.rolling.v_mm_s);
         let (l1, l2, _) = flexibilities(at, local);
+        let dt_s = dq_mm / v_mm_s;
         Some(Falling {
             law: p.friction,
             memory: p.memory,
             c_mm_s: (v_mm_s * l1 / dq_mm, v_mm_s * l2 / dq_mm),
-            dt_s: dq_mm / v_mm_s,
+            dt_s,
+            stick: (p.memory.theta(dt_s, 0.0), p.friction.mu_steady(0.0)),
         })
     }
 
-    /// μ at slip velocity `s_mm_s` of material that carried `mu_up` in.
+    /// μ at s = 0 from the constants made once: the same arithmetic as [`Memory::update`] at s = 0.
     #[inline]
-    fn mu(&self, mu_up: f64, s_mm_s: f64) -> f64 {
-        self.memory.update(&self.law, mu_up, self.dt_s, s_mm_s)
+    fn mu_stick(&self, mu_up: f64) -> f64 {
+        let (theta, mu_s) = self.stick;
+        if theta == 0.0 {
+            mu_s
+        } else {
+            theta * mu_up + (1.0 - theta) * mu_s
+        }
     }
 
-    /// [`Falling::mu`] and its derivative in s.
+    /// μ at slip velocity `s_mm_s` of material that carried `mu_up` in ([`Memory::update`]) and
+    /// its derivative in s.
     #[inline]
     fn mu_and_slope(&self, mu_up: f64, s_mm_s: f64) -> (f64, f64) {
         self.memory.update_and_slope(&self.law, mu_up, self.dt_s, s_mm_s)
@@ -200,7 +210,7 @@ impl ElementBound for Falling {
 
     #[inline]
     fn apply(&self, ux: f64, uy: f64, p: f64, gain: f64, mu_up: f64) -> (f64, f64, bool, f64) {
-        let mu_stick = self.mu(mu_up, 0.0);
+        let mu_stick = self.mu_stick(mu_up);
         if within_bound(ux, uy, mu_stick * p) {
             return (ux, uy, false, mu_stick);
         }

@@ -178,6 +178,8 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
                 max_iterations: VELDEP_MAX_ITERATIONS,
                 initial: p.contact_solver.inislp,
                 omgslp: p.contact_solver.omgslp,
+                // The fixed point on s can get only as tight as its solves: a tenth of its tolerance.
+                solve_tolerance: p.contact_solver.tolerance.min(0.1 * p.contact_solver.veldep_tolerance),
             };
             VelDep::new(p.friction, p.memory, options, g.mx, g.len())
         }),
@@ -196,11 +198,8 @@ impl Contact<'_> {
         // With falling friction the bound μ_k pn_k is set per element (`set_bound`), μ = 1.
         let mu = if self.veldep.is_some() { 1.0 } else { s.mu };
         let mut t = TangentialParams::new(mu, s.cx, s.cy, s.cs, dq_mm);
+        // With falling friction each solve's tolerance is the fixed point's (`veldep::inner_tolerance`).
         t.tol = self.p.contact_solver.tolerance;
-        if self.veldep.is_some() {
-            // The fixed point on s can get only as tight as its solves: a tenth of its tolerance.
-            t.tol = t.tol.min(0.1 * self.p.contact_solver.veldep_tolerance);
-        }
         t.max_iter = self.p.contact_solver.max_iterations;
         t
     }
@@ -261,9 +260,9 @@ impl Contact<'_> {
                 }
                 None => &mut self.tangential,
             };
-            veldep.step(pn, motion, |g, start| {
+            veldep.step(pn, motion, |g, start, tol| {
                 solver.set_bound(g)?;
-                solver.steady(&params, start)
+                solver.steady(&TangentialParams { tol, ..params }, start)
             })
         } else {
             let (px, py) = match &self.last {
@@ -272,10 +271,11 @@ impl Contact<'_> {
             };
             let older = self.older.as_ref().map(|(a, b)| (a.as_slice(), b.as_slice()));
             let tangential = &mut self.tangential;
-            veldep.step(pn, motion, |g, start| {
+            veldep.step(pn, motion, |g, start, tol| {
                 tangential.set_bound(g)?;
+                let params = TangentialParams { tol, ..params };
                 match start {
-                    Some(start) => tangential.transient_step_from(&params, px, py, start),
+                    Some(start) => tangential.transient_resolve_from(&params, start),
                     None => tangential.transient_step(&params, px, py, older),
                 }
             })

@@ -26,6 +26,22 @@ pub struct VelDepOptions {
     pub initial: InitialSlip,
     /// The damping OMGSLP (CONTACT's default 0.5).
     pub omgslp: f64,
+    /// The tolerance of the tangential solve the fixed point ends on ([`inner_tolerance`]).
+    pub solve_tolerance: f64,
+}
+
+/// The tangential tolerance per unit of the fixed point's last relative change: an iterate still
+/// far from the fixed point is solved only as tightly as the next change can use.
+const INNER_PER_CHANGE: f64 = 1e-2;
+
+/// The loosest tangential tolerance of an early iterate (the first one's too: its change is unknown).
+const INNER_LOOSEST: f64 = 1e-2;
+
+/// The tangential tolerance of the next solve after a relative change `change` (None: the
+/// first): `INNER_PER_CHANGE · change` within [`solve`, `INNER_LOOSEST`], `solve` the final one's.
+fn inner_tolerance(solve: f64, change: Option<f64>) -> f64 {
+    let loose = change.map_or(INNER_LOOSEST, |c| (INNER_PER_CHANGE * c).min(INNER_LOOSEST));
+    loose.max(solve)
 }
 
 /// How the fixed point of one step or steady point ended.
@@ -76,14 +92,15 @@ impl VelDep {
         &self.mu
     }
 
-    /// Solve one step (or steady point) on pressure `pn`: `solve(bound, start)` solves the
-    /// tangential problem with the bound μ_k pn_k [MPa], warm started from `start` (the last
-    /// iterate's tractions) when given.
+    /// Solve one step (or steady point) on pressure `pn`: `solve(bound, start, tol)` solves the
+    /// tangential problem with the bound μ_k pn_k [MPa] to the tolerance `tol`, warm started from
+    /// `start` (the last iterate's tractions) when given. Early iterates are solved loosely
+    /// ([`inner_tolerance`]); the fixed point ends only on a solve at `solve_tolerance`.
     pub fn step(
         &mut self,
         pn: &[f64],
         motion: Motion,
-        mut solve: impl FnMut(&[f64], Option<(&[f64], &[f64])>) -> Result<StepResult, ContactError>,
+        mut solve: impl FnMut(&[f64], Option<(&[f64], &[f64])>, f64) -> Result<StepResult, ContactError>,
     ) -> Result<(StepResult, VelDepOutcome), ContactError> {
         let n = pn.len();
         let fstat = self.law.mu_static();
@@ -99,20 +116,23 @@ impl VelDep {
         let mut last: Option<StepResult> = None;
         let mut inner = 0;
         let mut s_new = vec![0.0; n];
+        let mut last_change = None;
         for it in 1..=self.options.max_iterations {
             self.friction_field(&s, &moved_mu, motion, &mut mu, &mut mu_prev);
             for k in 0..n {
                 bound[k] = mu[k] * pn[k];
             }
             let start = last.as_ref().map(|r| (r.px.as_slice(), r.py.as_slice()));
-            let r = solve(&bound, start)?;
+            let tol = inner_tolerance(self.options.solve_tolerance, last_change);
+            let r = solve(&bound, start, tol)?;
             inner += r.iterations;
             for k in 0..n {
                 s_new[k] = if pn[k] > 0.0 { r.sx[k].hypot(r.sy[k]) / motion.dt_s } else { 0.0 };
             }
             let (dif, size) = rms_pair(pn, &s_new, &s);
             let change = if size > 0.0 { dif / size } else { 0.0 };
-            let converged = dif <= self.options.tolerance * size || r.n_slip == 0;
+            let tight = tol <= self.options.solve_tolerance;
+            let converged = tight && (dif <= self.options.tolerance * size || r.n_slip == 0);
             let changed = last.as_ref().is_some_and(|l| l.state != r.state);
             if converged || it == self.options.max_iterations {
                 let outcome = VelDepOutcome { iterations: it, converged, change, inner_iterations: inner };
@@ -124,6 +144,7 @@ impl VelDep {
                 s[k] = if damp { (omgslp * s_new[k] + (1.0 - omgslp) * s[k]).max(0.0) } else { s_new[k] };
             }
 
+            last_change = Some(change);
             if changed && it % 20 == 0 {
                 omgslp *= 0.8;
             }

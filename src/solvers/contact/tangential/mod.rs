@@ -463,6 +463,9 @@ pub struct TangentialSolver {
     steady: Option<SteadyWork>,
     /// The last two steady solutions (warm start of the next steady point).
     steady_prev: Vec<SteadyPoint>,
+    /// Whether the state holds the right-hand side of the last [`TangentialSolver::transient_step`]
+    /// (what [`TangentialSolver::transient_resolve_from`] solves again).
+    rhs_kept: bool,
 }
 
 impl TangentialSolver {
@@ -531,6 +534,7 @@ impl TangentialSolver {
             cg: CgWork::new(n),
             steady: None,
             steady_prev: Vec::with_capacity(2),
+            rhs_kept: false,
         })
     }
 
@@ -545,6 +549,7 @@ impl TangentialSolver {
         self.cg = CgWork::new(n);
         self.steady = None;
         self.steady_prev.clear();
+        self.rhs_kept = false;
         Ok(())
     }
 
@@ -606,6 +611,7 @@ impl TangentialSolver {
             check_grid_array("older traction py", oy, n)?;
         }
         self.transient_rhs(params, prev_px, prev_py)?;
+        self.rhs_kept = true;
         let (lay, st) = (&self.layout, &mut self.state);
         st.px.fill(0.0);
         st.py.fill(0.0);
@@ -618,20 +624,26 @@ impl TangentialSolver {
         self.transient_solve(params)
     }
 
-    /// One transient rolling step as [`TangentialSolver::transient_step`], warm started from the
+    /// The step of the last [`TangentialSolver::transient_step`] again (the same creepages in
+    /// `params` and previous tractions: its right-hand side b = w + u' is kept, one convolution
+    /// less) with the bound changed since ([`TangentialSolver::set_bound`]), warm started from the
     /// tractions `start` [MPa] (an earlier solve of the same step with another bound).
-    pub fn transient_step_from(
+    pub fn transient_resolve_from(
         &mut self,
         params: &TangentialParams,
-        prev_px: &[f64],
-        prev_py: &[f64],
         start: (&[f64], &[f64]),
     ) -> Result<StepResult, ContactError> {
         self.check_params(params)?;
+        if !self.rhs_kept {
+            return Err(ContactError::OutOfRange {
+                name: "transient re-solve without a transient step of this load before it",
+                value: 0.0,
+                requirement: "after transient_step",
+            });
+        }
         let n = self.layout.n();
         check_grid_array("start traction px", start.0, n)?;
         check_grid_array("start traction py", start.1, n)?;
-        self.transient_rhs(params, prev_px, prev_py)?;
         let (lay, st) = (&self.layout, &mut self.state);
         st.px.fill(0.0);
         st.py.fill(0.0);
@@ -696,6 +708,7 @@ impl TangentialSolver {
         check_grid_array("px", p.0, n)?;
         check_grid_array("py", p.1, n)?;
         self.transient_rhs(params, prev.0, prev.1)?;
+        self.rhs_kept = false;
         let (lay, st) = (&self.layout, &mut self.state);
         st.px.copy_from_slice(p.0);
         st.py.copy_from_slice(p.1);
@@ -731,6 +744,7 @@ impl TangentialSolver {
             check_grid_array("start traction py", sy0, n)?;
         }
         self.warm_start(params, start);
+        self.rhs_kept = false;
         let (lay, st) = (&self.layout, &mut self.state);
         st.clip_to_bound(lay, params.mu);
         let gmax = lay.gmax(params.mu);
