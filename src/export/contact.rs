@@ -156,7 +156,8 @@ fn friction_lines(p: &Problem, mu: f64, out: &mut String) {
 /// The kinematics (CHI, DQ, VELOC at the row's speed) and material lines of a case with C = 2.
 fn kinematics_and_material(p: &Problem, v_mm_s: f64, out: &mut String) {
     let m = &p.material;
-    let _ = writeln!(out, "  0.0   {:?}   {v_mm_s:?}                 CHI, DQ, VELOC", p.rolling.dq_mm);
+    let chi = if p.rolling.backward() { "180d" } else { "0.0" };
+    let _ = writeln!(out, "  {chi}   {:?}   {v_mm_s:?}                 CHI, DQ, VELOC", p.rolling.dq_mm);
     let _ = writeln!(out, "  {:?}   {:?}   {:?}   {:?}    POISS 1,2,  GG 1,2", m.poisson, m.poisson, m.g_mpa, m.g_mpa);
 }
 

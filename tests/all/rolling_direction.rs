@@ -84,3 +84,36 @@ fn other_angles_and_models_are_refused() {
     let e = creepbench::pipeline::resolve(&scene).map(|_| ()).unwrap_err().to_string();
     assert!(e.contains("rolling.chi_deg") && e.contains("fastsim"), "{e}");
 }
+
+/// `export contact` writes CHI = 180d, `import contact` reads it back into `[rolling] chi_deg`
+/// (the same resolved scene, the same rows); a deck at another angle is refused naming CHI.
+#[test]
+fn export_then_import_keeps_the_direction() {
+    use creepbench::export::contact::module3_input;
+    use creepbench::import::contact::scene::import_text;
+    use creepbench::problem::ResolvedScene;
+    for creepage in
+        ["kind = \"sweep\"\nfrom = 0.0\nto = 0.002\npoints = 3\ncs = 0.0002", "kind = \"step\"\nc = 0.002\nsteps = 4"]
+    {
+        let original = problem(&scene(creepage, 180.0));
+        let deck = module3_input(&original);
+        assert!(deck.contains("  180d   "), "{deck}");
+        let imported = import_text("chi.inp", "chi", &deck).unwrap();
+        assert!(imported.statuses.iter().all(|s| s.supported()), "{:?}", imported.statuses);
+        assert_eq!(imported.scenes.len(), 1);
+        let dir = tempdir("rolling_direction_round_trip");
+        for (name, text) in &imported.scenes[0].files {
+            std::fs::write(dir.join(name), text).unwrap();
+        }
+        let back = creepbench::pipeline::load(&dir.join(&imported.scenes[0].files[0].0), &[]).unwrap();
+        assert_eq!(back.rolling.chi_deg, 180.0);
+        let (a, b) = (ResolvedScene::of(&original, &original.solvers), ResolvedScene::of(&back, &back.solvers));
+        assert_eq!((a.chi_deg, a.dq_mm, a.v_mm_s), (b.chi_deg, b.dq_mm, b.v_mm_s));
+        let rows = |p: &creepbench::problem::Problem| p.loading.rows().map(|s| [s.cx, s.cy, s.cs]).collect::<Vec<_>>();
+        assert_eq!(rows(&original), rows(&back));
+        let at_90 = deck.replace("  180d   ", "  90d   ");
+        let refused = import_text("chi.inp", "chi", &at_90).unwrap();
+        let reasons: Vec<String> = refused.statuses.iter().flat_map(|s| s.refused.clone()).collect();
+        assert!(reasons.iter().any(|r| r.contains("CHI = 1.57")), "{reasons:?}");
+    }
+}
