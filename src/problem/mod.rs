@@ -49,6 +49,15 @@ pub struct Rolling {
     pub dq_mm: f64,
     /// Rolling, or shifts without rolling (the creepages then shifts per step).
     pub motion: Motion,
+    /// The rolling direction CHI [deg]: 0 (+x) or 180 (-x, CONTACT's CHI = 180°).
+    pub chi_deg: f64,
+}
+
+impl Rolling {
+    /// Whether the bodies roll along -x (CHI = 180°).
+    pub fn backward(&self) -> bool {
+        self.chi_deg == 180.0
+    }
 }
 
 /// A contact given per element: every load of the history gives a normal contact (else an input
@@ -190,7 +199,14 @@ impl Problem {
                 crate::physics::geometry::Extent::Edges { x_mm, y_mm } => Some((x_mm, y_mm)),
                 crate::physics::geometry::Extent::Scale(_) => None,
             },
-            rolling: Rolling { v_mm_s: scene.v_mm_s, courant: scene.courant, dt_s, dq_mm, motion: scene.motion },
+            rolling: Rolling {
+                v_mm_s: scene.v_mm_s,
+                courant: scene.courant,
+                dt_s,
+                dq_mm,
+                motion: scene.motion,
+                chi_deg: scene.chi_deg,
+            },
             friction: scene.friction,
             memory: scene.memory,
             nominal,

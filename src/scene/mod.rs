@@ -267,6 +267,8 @@ pub struct Scene {
     pub courant: f64,
     /// Rolling, or shifts without rolling (CONTACT T = 1: the creepages are shifts per step).
     pub motion: Motion,
+    /// The rolling direction CHI [deg]: 0 (+x) or 180 (-x) (`[rolling] chi_deg`).
+    pub chi_deg: f64,
     pub creepage: Creepage,
     pub cy: f64,
     /// Fy/FN prescribed in place of `cy` (`[creepage] fy_over_fn`, CONTACT F = 2).
@@ -356,7 +358,7 @@ impl Scene {
         let contact = sections::contact(&mut top, element_geometry)?;
         let friction = sections::friction(&mut top, contact.mu)?;
         let material = sections::material(&mut top)?;
-        let (v_mm_s, courant, motion) = sections::rolling(&mut top)?;
+        let (v_mm_s, courant, motion, chi_deg) = sections::rolling(&mut top)?;
         let loading = sections::creepage(&mut top, dir)?;
         let init = sections::init(&mut top, motion, &loading.creepage)?;
         let (model, model_params) = sections::model(&mut top)?;
@@ -381,6 +383,7 @@ impl Scene {
             v_mm_s,
             courant,
             motion,
+            chi_deg,
             creepage: loading.creepage,
             cy: loading.cy,
             fy_over_fn: loading.fy_over_fn,

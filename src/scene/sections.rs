@@ -260,11 +260,20 @@ pub fn material(top: &mut Section) -> Result<MaterialSpec, InputError> {
     Ok(MaterialSpec { g_mpa, e_mpa, poisson })
 }
 
-/// `[rolling]` (optional): the speed [mm/s] (default 1000), the Courant number (default 1) and
-/// the motion (default rolling; `"shift"`: CONTACT's T = 1).
-pub fn rolling(top: &mut Section) -> Result<(f64, f64, Motion), InputError> {
-    let (mut v_mm_s, mut courant, mut motion) = (1000.0, 1.0, Motion::Rolling);
+/// `[rolling]` (optional): the speed [mm/s] (default 1000), the Courant number (default 1), the
+/// motion (default rolling; `"shift"`: CONTACT's T = 1) and the rolling direction CHI [deg]
+/// (default 0; 0 or 180, CONTACT's two steady directions, `m_sdis.f90`).
+pub fn rolling(top: &mut Section) -> Result<(f64, f64, Motion, f64), InputError> {
+    let (mut v_mm_s, mut courant, mut motion, mut chi_deg) = (1000.0, 1.0, Motion::Rolling, 0.0);
     if let Some(mut r) = top.opt_table("rolling")? {
+        chi_deg = r.opt_f64("chi_deg", Range::new(0.0, true, 180.0, true))?.unwrap_or(chi_deg);
+        if chi_deg != 0.0 && chi_deg != 180.0 {
+            return Err(InputError::new(
+                "rolling.chi_deg",
+                chi_deg,
+                "0 or 180 (rolling along +x or -x; other directions, CONTACT's transient CHI, are not implemented)",
+            ));
+        }
         v_mm_s = r.opt_f64("v_mm_s", super::SPEED_LIMIT)?.unwrap_or(v_mm_s);
         courant = r.opt_f64("courant", Range::new(0.0, false, 100.0, true))?.unwrap_or(courant);
         if r.opt_choice("motion", &["rolling", "shift"])? == Some("shift") {
@@ -272,7 +281,7 @@ pub fn rolling(top: &mut Section) -> Result<(f64, f64, Motion), InputError> {
         }
         r.finish()?;
     }
-    Ok((v_mm_s, courant, motion))
+    Ok((v_mm_s, courant, motion, chi_deg))
 }
 
 /// `[creepage]`: the kind's history, and the constant cy and cs.

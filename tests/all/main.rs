@@ -34,6 +34,7 @@ mod properties;
 mod python;
 mod reference_columns;
 mod relaxation_model;
+mod rolling_direction;
 mod scene_extensions;
 mod she_model;
 mod shift;

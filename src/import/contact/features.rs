@@ -184,11 +184,15 @@ pub const FEATURES: &[Feature] = &[
         },
     },
     Feature {
-        name: "a rolling direction other than +x",
+                name: "a rolling direction other than +x or -x, or -x with a falling friction law",
         control: "CHI",
         supported: false,
-        reason: "supported: CHI = 0",
-        used: |c| (c.digits.t >= 2 && c.state.chi_rad != 0.0).then(|| format!("CHI = {} rad", c.state.chi_rad)),
+        reason: "supported: CHI = 0 or 180 degrees (within 0.01 rad, as CONTACT), 180 with Coulomb friction ([rolling] chi_deg)",
+        used: |c| {
+            let chi = c.state.chi_rad;
+            let along_x = super::scene::chi_deg(chi).is_some_and(|d| d == 0.0 || c.state.friction_law == 0);
+            (c.digits.t >= 2 && !along_x).then(|| format!("CHI = {chi} rad"))
+        },
     },
     Feature {
         name: "a spin centre away from the origin",

@@ -446,6 +446,18 @@ fn upper_edge(x0: f64, n: usize, d: f64) -> f64 {
     candidates.into_iter().find(|&x1| (x1 - x0) / n as f64 == d).unwrap_or(start)
 }
 
+/// `[rolling] chi_deg` of CONTACT's CHI [rad]: 0 or 180 within 0.01 rad (CONTACT's own test,
+/// `m_sdis.f90`), `None` for other directions.
+pub fn chi_deg(chi_rad: f64) -> Option<f64> {
+    if chi_rad.abs() < 0.01 {
+        Some(0.0)
+    } else if (chi_rad - std::f64::consts::PI).abs() < 0.01 {
+        Some(180.0)
+    } else {
+        None
+    }
+}
+
 /// The Courant number whose `courant · dx` is DQ exactly where one is within a few ulps.
 fn courant_for(dq_mm: f64, dx_mm: f64) -> f64 {
     let start = dq_mm / dx_mm;
@@ -555,7 +567,8 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     let last = case3(cases, h.cases[h.cases.len() - 1]);
     let s = &first.state;
     // The rolling step of the history (after a shift start, its first rolling case's).
-    let roll = &case3(cases, h.cases[usize::from(h.run == (Run::Transient { start: Start::Shift }))]).state;
+    let roll_case = case3(cases, h.cases[usize::from(h.run == (Run::Transient { start: Start::Shift }))]);
+    let (roll, roll_t) = (&roll_case.state, roll_case.digits.t);
     let rows: Vec<[f64; 5]> = h.cases.iter().map(|&k| row(case3(cases, k))).collect();
     let quads = quadratic_rows(cases, h);
     let mut doc = Table::new();
@@ -774,10 +787,12 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     if h.run == Run::Shifts {
         doc.insert("rolling".into(), table(vec![("motion", Value::String("shift".into()))]));
     } else if roll.rolling_read {
-        doc.insert(
-            "rolling".into(),
-            table(vec![("v_mm_s", Value::Float(roll.veloc_mm_s)), ("courant", Value::Float(1.0))]),
-        );
+        let mut rolling = vec![("v_mm_s", Value::Float(roll.veloc_mm_s)), ("courant", Value::Float(1.0))];
+        // CONTACT rolls along CHI for T = 2, 3 only (shifts take CHI = 0, `m_sdis.f90`).
+        if roll_t >= 2 && chi_deg(roll.chi_rad) == Some(180.0) {
+            rolling.push(("chi_deg", Value::Float(180.0)));
+        }
+        doc.insert("rolling".into(), table(rolling));
     }
     doc.insert(
         "origin".into(),

@@ -23,6 +23,7 @@
 
 pub mod anderson;
 pub mod force;
+pub mod mirror;
 pub mod restart;
 pub mod stepper;
 pub mod tangential;

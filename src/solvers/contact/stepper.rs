@@ -4,6 +4,7 @@
 
 use super::force;
 use super::influence::Kernel;
+use super::mirror;
 use super::normal::{NormalParams, NormalSolver};
 use super::restart::{contact_restart, SteadyRestart, SteadyStart};
 use super::tangential::{StepResult, TangentialParams, TangentialSolver};
@@ -41,6 +42,13 @@ const SECONDS_PER_COST: f64 = 1.3e-7;
 
 /// A run estimated to take longer than `[limits] max_estimated_s` is refused before it starts.
 fn check(p: &Problem) -> Result<(), InputError> {
+    if p.rolling.backward() && (p.rolling.motion == Motion::Shift || p.friction.is_falling()) {
+        return Err(InputError::new(
+            "rolling.chi_deg",
+            180,
+            "0 with rolling.motion = \"shift\" or a falling [friction] law (the exact solver rolls along -x with Coulomb friction only)",
+        ));
+    }
     let estimated_s = p.loading.rows().count() as f64 * cost_per_row(p) * SECONDS_PER_COST;
     if estimated_s <= p.limits.max_estimated_s {
         return Ok(());
@@ -130,6 +138,17 @@ struct Contact<'a> {
     found: Option<[f64; 2]>,
     /// The prescribed-force iteration's last creepages and Jacobian (the next sample's start).
     outer: force::Memory,
+    /// CHI = 180°: the pressure and the last solve's tractions and states back in the scene's
+    /// frame (the solver's are mirrored, [`mirror`]); `None` when rolling along +x.
+    shown: Option<Shown>,
+}
+
+/// A field in the scene's frame where the solver works in the mirrored one.
+struct Shown {
+    pn: Vec<f64>,
+    px: Vec<f64>,
+    py: Vec<f64>,
+    state: Vec<crate::solvers::stepper::ElementState>,
 }
 
 /// The history's columns of a run with falling friction.
@@ -146,6 +165,8 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let k0 = kernel(0.0)?;
     let normal = NormalSolver::new(&k0).map_err(ContactRunError::Kernel)?;
     let (x, y) = g.centres();
+    // CHI = 180°: the solver works on the grid mirrored about x = 0 ([`mirror`]).
+    let x = if p.rolling.backward() { mirror::field_x(g.mx, &x) } else { x };
     let tangential = match p.rolling.motion {
         Motion::Rolling => TangentialSolver::new(&k0, &kernel(p.rolling.dq_mm)?, &x, &y),
         Motion::Shift => TangentialSolver::for_shifts(&k0, &x, &y),
@@ -185,6 +206,7 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
         }),
         found: None,
         outer: force::Memory::default(),
+        shown: None,
     }))
 }
 
@@ -204,6 +226,20 @@ impl Contact<'_> {
         t
     }
 
+    /// The sample in the solver's frame (mirrored for CHI = 180°, [`mirror::sample`]).
+    fn frame(&self, at: &Sample) -> Sample {
+        if self.p.rolling.backward() {
+            mirror::sample(at)
+        } else {
+            *at
+        }
+    }
+
+    /// Creepages found under prescribed forces, in the scene's frame.
+    fn unframe(&self, found: Option<[f64; 2]>) -> Option<[f64; 2]> {
+        found.map(|c| if self.p.rolling.backward() { mirror::found(c) } else { c })
+    }
+
     fn loaded(&self) -> &Loaded {
         self.loaded.as_ref().expect("the sample loop loads before it solves")
     }
@@ -215,11 +251,19 @@ impl Contact<'_> {
     /// The step's row; with falling friction the fixed point's columns ([`VELDEP_COLUMNS`]), and
     /// a fixed point that did not converge ends the row at the iteration limit.
     fn record_with(&mut self, r: StepResult, veldep: Option<VelDepOutcome>) -> Step {
+        let mx = self.p.grid.mx;
+        self.shown = self.p.rolling.backward().then(|| Shown {
+            pn: mirror::field(mx, &self.loaded().pn),
+            px: mirror::field_x(mx, &r.px),
+            py: mirror::field(mx, &r.py),
+            state: mirror::field(mx, &r.state),
+        });
+        let (px, py) = self.shown.as_ref().map_or((&r.px, &r.py), |s| (&s.px, &s.py));
         let l = self.loaded();
         let mut step = Step {
-            fx_over_fn: r.px.iter().sum::<f64>() / l.pn_sum,
-            fy_over_fn: r.py.iter().sum::<f64>() / l.pn_sum,
-            mz_nmm: moment_sum(&self.p.grid, &r.px, &r.py) * self.p.grid.element_area_mm2(),
+            fx_over_fn: px.iter().sum::<f64>() / l.pn_sum,
+            fy_over_fn: py.iter().sum::<f64>() / l.pn_sum,
+            mz_nmm: moment_sum(&self.p.grid, px, py) * self.p.grid.element_area_mm2(),
             extra: vec![r.n_adhesion as f64, r.n_slip as f64, r.iterations as f64, r.residual, l.pn_max],
             termination: r.termination,
         };
@@ -365,6 +409,7 @@ impl Stepper for Contact<'_> {
             }
             None => (self.normal_by_force(at)?, at.fn_n),
         };
+        let pn_mpa = if p.rolling.backward() { mirror::field(p.grid.mx, &pn_mpa) } else { pn_mpa };
         let pn_sum: f64 = pn_mpa.iter().sum();
         if pn_sum <= 0.0 {
             return Err(ContactRunError::NoContact { mx: p.grid.mx, my: p.grid.my, fn_n }.into());
@@ -397,6 +442,7 @@ impl Stepper for Contact<'_> {
     }
 
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        let at = &self.frame(at);
         if self.veldep.is_some() {
             return self.veldep_step(at, true);
         }
@@ -411,7 +457,7 @@ impl Stepper for Contact<'_> {
         let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.slope, l.pn_sum)).expect("loaded before a solve");
         let (r, found) = force::solve_sample(at, &params, slope, pn_sum, &mut self.outer, |q| solver.steady(q, None))
             .map_err(|source| ContactRunError::Step { step: at.step, source })?;
-        self.found = found;
+        self.found = self.unframe(found);
         self.older = None;
         self.after_steady = Some(SteadyStart::of(at));
         Ok(self.record(r))
@@ -437,6 +483,7 @@ impl Stepper for Contact<'_> {
     }
 
     fn transient(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        let at = &self.frame(at);
         if self.veldep.is_some() {
             return self.veldep_step(at, false);
         }
@@ -469,7 +516,7 @@ impl Stepper for Contact<'_> {
             tangential.transient_step(q, px, py, older)
         })
         .map_err(|source| ContactRunError::Step { step: at.step, source })?;
-        self.found = found;
+        self.found = self.unframe(found);
         if r.px.iter().chain(&r.py).any(|v| !v.is_finite()) {
             return Err(SolveError::NonFinite { step: at.step });
         }
@@ -498,6 +545,15 @@ impl Stepper for Contact<'_> {
 
     fn field(&self) -> Option<FieldView<'_>> {
         let (l, r) = (self.loaded.as_ref()?, self.last.as_ref()?);
+        if let Some(s) = &self.shown {
+            return Some(FieldView {
+                grid: &self.p.grid,
+                pressure_mpa: &s.pn,
+                tx_mpa: &s.px,
+                ty_mpa: &s.py,
+                state: Some(&s.state),
+            });
+        }
         Some(FieldView { grid: &self.p.grid, pressure_mpa: &l.pn, tx_mpa: &r.px, ty_mpa: &r.py, state: Some(&r.state) })
     }
 }
