@@ -110,6 +110,27 @@ pub struct ContactSolverOptions {
     /// Falling friction: the damping of the slip-velocity update (CONTACT's OMGSLP).
     #[serde(default = "omgslp", skip_serializing_if = "is_omgslp")]
     pub omgslp: f64,
+    /// Falling friction: how tightly the fixed point's early tangential solves are made.
+    #[serde(default, skip_serializing_if = "VeldepSolves::is_default")]
+    pub veldep_solves: VeldepSolves,
+}
+
+/// `[contact_solver] veldep_solves`: the tangential solves of the slip-velocity fixed point.
+/// `Adaptive` solves early iterates loosely (1e-2 × the last relative change) and ends on a
+/// tight solve; `Tight` solves every iterate at the final tolerance, as CONTACT does, so that
+/// CONTACT's own loose stop (1e-3) is met at the same iterate.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum VeldepSolves {
+    #[default]
+    Adaptive,
+    Tight,
+}
+
+impl VeldepSolves {
+    pub fn is_default(&self) -> bool {
+        *self == VeldepSolves::default()
+    }
 }
 
 /// Default `[contact_solver] veldep_tolerance`.
@@ -185,6 +206,7 @@ impl Default for ContactSolverOptions {
             veldep_tolerance: VELDEP_TOLERANCE,
             inislp: InitialSlip::Previous,
             omgslp: OMGSLP,
+            veldep_solves: VeldepSolves::Adaptive,
         }
     }
 }

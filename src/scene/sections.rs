@@ -491,6 +491,10 @@ pub fn contact_solver(top: &mut Section) -> Result<ContactSolverOptions, InputEr
         if let Some(w) = cs.opt_f64("omgslp", Range::new(0.0, false, 2.0, true))? {
             contact_solver.omgslp = w;
         }
+        if let Some(v) = cs.opt_choice("veldep_solves", &["adaptive", "tight"])? {
+            contact_solver.veldep_solves =
+                if v == "tight" { crate::scene::VeldepSolves::Tight } else { crate::scene::VeldepSolves::Adaptive };
+        }
         cs.finish()?;
     }
     Ok(contact_solver)

@@ -775,7 +775,11 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
         // CONTACT's slip-velocity iteration as the deck sets it (the last case's: a steady start
         // is solved with its transient cases'), stopped where CONTACT stops it.
         let (start, omgslp) = slip_iteration(&last.state);
-        let mut cs = vec![("veldep_tolerance", Value::Float(CONTACT_VELDEP_TOLERANCE))];
+        // Every iterate solved tightly, as CONTACT does: its loose stop then falls on the same iterate.
+        let mut cs = vec![
+            ("veldep_tolerance", Value::Float(CONTACT_VELDEP_TOLERANCE)),
+            ("veldep_solves", Value::String("tight".into())),
+        ];
         if start != "previous" {
             cs.push(("inislp", Value::String(start.into())));
         }

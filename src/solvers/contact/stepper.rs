@@ -201,6 +201,7 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
                 omgslp: p.contact_solver.omgslp,
                 // The fixed point on s can get only as tight as its solves: a tenth of its tolerance.
                 solve_tolerance: p.contact_solver.tolerance.min(0.1 * p.contact_solver.veldep_tolerance),
+                adaptive_solves: p.contact_solver.veldep_solves == crate::scene::VeldepSolves::Adaptive,
             };
             VelDep::new(p.friction, p.memory, options, g.mx, g.len())
         }),

@@ -28,6 +28,8 @@ pub struct VelDepOptions {
     pub omgslp: f64,
     /// The tolerance of the tangential solve the fixed point ends on ([`inner_tolerance`]).
     pub solve_tolerance: f64,
+    /// Early iterates solved loosely ([`inner_tolerance`]); false: every one at `solve_tolerance`.
+    pub adaptive_solves: bool,
 }
 
 /// The tangential tolerance per unit of the fixed point's last relative change: an iterate still
@@ -123,7 +125,11 @@ impl VelDep {
                 bound[k] = mu[k] * pn[k];
             }
             let start = last.as_ref().map(|r| (r.px.as_slice(), r.py.as_slice()));
-            let tol = inner_tolerance(self.options.solve_tolerance, last_change);
+            let tol = if self.options.adaptive_solves {
+                inner_tolerance(self.options.solve_tolerance, last_change)
+            } else {
+                self.options.solve_tolerance
+            };
             let r = solve(&bound, start, tol)?;
             inner += r.iterations;
             for k in 0..n {
