@@ -134,7 +134,10 @@ fn omgslp_damps_the_path_not_the_fixed_point() {
     let half = run_with("omgslp = 1.1", "omgslp = 0.5");
     assert_ne!(iterations(&half), vec![6.0, 5.0]);
     let tight = |omgslp: &str| {
-        run_with("omgslp = 1.1\nveldep_tolerance = 0.001", &format!("omgslp = {omgslp}\nveldep_tolerance = 1e-9"))
+        run_with(
+            "omgslp = 1.1\nveldep_solves = \"tight\"\nveldep_tolerance = 0.001",
+            &format!("omgslp = {omgslp}\nveldep_solves = \"tight\"\nveldep_tolerance = 1e-9"),
+        )
     };
     let (a, b) = (f(&tight("1.1")), f(&tight("0.5")));
     for k in 0..2 {
