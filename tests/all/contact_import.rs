@@ -263,6 +263,45 @@ fn catt_to_cart_imports_the_shift_and_the_rolling_after_it_as_one_history() {
     assert_eq!(again.scenes[0].cases, [1, 2]);
 }
 
+/// catt_to_cart.inp cases 115-171: a Cattaneo shift on a 34 x 33 window, then 56 shifts under FX
+/// with the approach prescribed, each on the window moved by one DX with its quadratic: one scene on
+/// the union grid (90 x 33 from XL = -4.125), each moved case noting why that is exact. Where an
+/// element outside a case's window would carry pressure (a deeper PEN), the case is refused naming
+/// it and its XL, and its history stops before it.
+#[test]
+fn catt_to_cart_maps_the_moving_window_to_its_union_grid() {
+    let deck = root().join("reference/contact_public/examples/catt_to_cart.inp");
+    let imported = creepbench::import::contact::import(&deck).unwrap();
+    let s = imported.scenes.iter().find(|s| s.name == "catt_to_cart_115").unwrap();
+    assert_eq!(s.cases, [115, 171]);
+    let p = scene_of(&imported, "catt_to_cart_115");
+    let r = ResolvedScene::of(&p, &p.solvers);
+    assert_eq!((r.mx, r.my), (90, 33));
+    assert_eq!(p.grid_edges.map(|(x, _)| x[0]), Some(-4.125));
+    assert_eq!(p.loading.rows().count(), 57);
+    let note = |c: usize| imported.statuses[c - 1].notes.iter().find(|n| n.contains("union grid")).cloned();
+    assert!((115..=171).all(|c| note(c).is_some() && imported.statuses[c - 1].scene.is_some()));
+    assert!(note(116)
+        .unwrap()
+        .starts_with("XL = -3.875: the moving window (34 x 33) is mapped to the union grid (90 x 33 from XL = -4.125"));
+    assert!(note(116).unwrap().contains("normal solution is zero outside the window"));
+    // Case 170 pressed three times deeper: its contact reaches past its window.
+    let mut text = std::fs::read_to_string(&deck).unwrap();
+    // The PEN line: four lines after case 170's MODULE line.
+    let at: usize = text.split_inclusive('\n').take(imported.statuses[169].line + 4).map(str::len).sum();
+    assert!(text[at..].starts_with("  0.07258"), "{}", &text[at..at + 40]);
+    text.replace_range(at..at + 9, "  0.21774");
+    let again = import_text("c.inp", "c", &text).unwrap();
+    let case170 = &again.statuses[169].refused;
+    assert!(
+        case170.iter().any(|r| r
+            .starts_with("XL = 9.625: the grid moves by whole elements, but at PEN or FN = 0.21774 element (")
+            && r.contains("outside case 170's window, carries pressure")),
+        "{case170:?}"
+    );
+    assert_eq!(again.scenes.iter().find(|s| s.name == "c_115").unwrap().cases, [115, 169]);
+}
+
 #[test]
 fn tractcurv_imports_the_coulomb_creep_curve_as_one_sweep() {
     let imported = import_deck("tractcurv.inp");

@@ -5,7 +5,8 @@
 //! transient history is a creepage table (`<name>_table.csv`) at the times `k DQ / VELOC`; a grid
 //! geometry is h per element (`<name>_h.csv`). Each scene is written as a TOML table, read back
 //! with the project's scene reader and resolved in a temporary folder, and must give every case's
-//! creepages, load and friction bit for bit.
+//! creepages, load and friction bit for bit. A history whose cases move one grid by whole elements
+//! (a moving window) is written on the union grid of its windows, checked exact per case.
 
 use super::deck::{self, Case, Case3, CaseKind, Potcon, State};
 use super::{features, CaseStatus};
@@ -74,7 +75,11 @@ pub fn import_text(file: &str, stem: &str, text: &str) -> Result<Imported, Input
     let cases = deck::parse(file, text)?;
     let mut statuses: Vec<CaseStatus> = cases.iter().map(status).collect();
     // Steady cases whose creepages no sweep reproduces exactly are scenes of one case each.
-    let histories: Vec<History> = group(&cases, &mut statuses)
+    let grouped = group(&cases, &mut statuses);
+    for h in &grouped {
+        check_union(&cases, h, &mut statuses);
+    }
+    let histories: Vec<History> = grouped
         .into_iter()
         .flat_map(|h| {
             let points: Vec<[f64; 3]> =
@@ -185,7 +190,10 @@ fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static 
         ("MEMDST, MEM_S0", a.memory == b.memory),
         ("CHI, DQ", (a.chi_rad, a.dq_mm) == (b.chi_rad, b.dq_mm)),
         ("POISS, GG", (a.poiss, a.gg_mpa) == (b.poiss, b.gg_mpa)),
-        ("the potential contact (IPOTCN and its line)", a.potcon == b.potcon),
+        (
+            "the potential contact (IPOTCN and its line)",
+            a.potcon == b.potcon || (load_varies && quadratics(a, b) && window_shift(a, b).is_some()),
+        ),
         ("the undeformed distance (IBASE)", a.undeformed == b.undeformed || (load_varies && quadratics(a, b))),
         ("the friction law", a.friction_law == b.friction_law),
         ("SPINXO, SPINYO", a.spin_centre_mm == b.spin_centre_mm),
@@ -324,6 +332,97 @@ fn quadratics(a: &State, b: &State) -> bool {
     matches!(a.potcon, Some(Potcon::Grid { .. })) && q(a).is_some() && q(a) == q(b)
 }
 
+/// The whole elements (x, y) by which `b`'s grid is `a`'s moved (same IPOTCN, MX, MY, DX, DY;
+/// XL, YL shifted by integer multiples of DX, DY), if it is.
+fn window_shift(a: &State, b: &State) -> Option<(i64, i64)> {
+    let (
+        Some(Potcon::Grid { ipotcn: ia, mx: ma, my: na, xl_mm: xa, yl_mm: ya, dx_mm: dxa, dy_mm: dya }),
+        Some(Potcon::Grid { ipotcn: ib, mx: mb, my: nb, xl_mm: xb, yl_mm: yb, dx_mm: dxb, dy_mm: dyb }),
+    ) = (&a.potcon, &b.potcon)
+    else {
+        return None;
+    };
+    let whole = |from: f64, to: f64, d: f64| {
+        let k = ((to - from) / d).round();
+        ((from + k * d - to).abs() <= 1e-9 * d).then_some(k as i64)
+    };
+    let same = (ia, ma, na, dxa, dya) == (ib, mb, nb, dxb, dyb);
+    same.then_some(())?;
+    Some((whole(*xa, *xb, *dxa)?, whole(*ya, *yb, *dya)?))
+}
+
+/// The quadratic undeformed distance B(1..6) at (x, y) (IBASE = 1).
+fn quadratic(b: &[f64], (x, y): (f64, f64)) -> f64 {
+    b[0] * x * x + b[1] * x * y + b[2] * y * y + b[3] * x + b[4] * y + b[5]
+}
+
+/// The union grid of a history whose cases move one grid by whole elements (`None` where the grid
+/// does not move): the lowest XL, YL and the extent of every window.
+fn union_grid(cases: &[Case], h: &History) -> Option<Potcon> {
+    let first = &case3(cases, h.cases[0]).state;
+    let shifts: Vec<(i64, i64)> =
+        h.cases.iter().map(|&k| window_shift(first, &case3(cases, k).state)).collect::<Option<_>>()?;
+    if shifts.iter().all(|&s| s == (0, 0)) {
+        return None;
+    }
+    let Some(Potcon::Grid { ipotcn, mx, my, xl_mm, yl_mm, dx_mm, dy_mm }) = first.potcon.clone() else {
+        return None;
+    };
+    let lo = |f: fn(&(i64, i64)) -> i64| shifts.iter().map(f).min().unwrap_or(0);
+    let hi = |f: fn(&(i64, i64)) -> i64| shifts.iter().map(f).max().unwrap_or(0);
+    let (x0, y0) = (lo(|s| s.0), lo(|s| s.1));
+    Some(Potcon::Grid {
+        ipotcn,
+        mx: mx + (hi(|s| s.0) - x0) as usize,
+        my: my + (hi(|s| s.1) - y0) as usize,
+        xl_mm: xl_mm + x0 as f64 * dx_mm,
+        yl_mm: yl_mm + y0 as f64 * dy_mm,
+        dx_mm,
+        dy_mm,
+    })
+}
+
+/// A moving window (its grid moved by whole elements per case) is written on the union grid of
+/// its history, exact where no element outside a case's window can touch: with the approach
+/// prescribed (N = 0), the undeformed distance exceeds PEN at every such element, so its gap stays
+/// open and its traction zero, as CONTACT's, which has no element there. Each case is refused
+/// where this fails, or noted where it holds.
+fn check_union(cases: &[Case], h: &History, statuses: &mut [CaseStatus]) {
+    let Some(Potcon::Grid { mx, my, xl_mm, yl_mm, dx_mm, dy_mm, .. }) = union_grid(cases, h) else {
+        return;
+    };
+    for &k in &h.cases {
+        let c = case3(cases, k);
+        let Some(Potcon::Grid { mx: wx, my: wy, xl_mm: xl, yl_mm: yl, .. }) = &c.state.potcon else { continue };
+        let (ox, oy) = (((xl - xl_mm) / dx_mm).round() as usize, ((yl - yl_mm) / dy_mm).round() as usize);
+        let b = c.state.undeformed.as_ref().map(|u| u.values.clone()).unwrap_or_default();
+        let pen = c.state.pen_or_fn;
+        let h_mm: Vec<f64> = (0..mx * my)
+            .map(|e| quadratic(&b, (xl_mm + ((e % mx) as f64 + 0.5) * dx_mm, yl_mm + ((e / mx) as f64 + 0.5) * dy_mm)))
+            .collect();
+        let m = combine_bodies(c.state.poiss, c.state.gg_mpa);
+        let by_pen = c.digits.n == 0;
+        let pn = pressure_on(&h_mm, (mx, my, dx_mm, dy_mm), (m.g_mpa, m.poisson), pen, by_pen).unwrap_or_default();
+        let touching = (0..mx * my).map(|e| (e % mx, e / mx)).find(|&(ix, iy)| {
+            let inside = (ox..ox + wx).contains(&ix) && (oy..oy + wy).contains(&iy);
+            !inside && pn.get(iy * mx + ix).map_or(true, |p| *p != 0.0)
+        });
+        match touching {
+            Some((ix, iy)) => statuses[k].refused.push(format!(
+                "XL = {xl}: the grid moves by whole elements, but at PEN or FN = {pen} element ({}, {}) of the union grid ({mx} x {my} from XL = {xl_mm}), outside case {}'s window, carries pressure {:?} MPa: it touches where CONTACT has no element (supported: a moving window outside which the union grid's normal solution is zero)",
+                ix + 1,
+                iy + 1,
+                cases[k].number,
+                pn.get(iy * mx + ix)
+            )),
+            None => statuses[k].notes.push(format!(
+                "XL = {xl}: the moving window ({wx} x {wy}) is mapped to the union grid ({mx} x {my} from XL = {xl_mm}, YL = {yl_mm}) of its history; exact: at {} = {pen} the union grid's normal solution is zero outside the window, so it is the window's (the normal problem's solution is unique; no normal-tangential coupling) and the tangential traction, bounded by mu times it, is zero there too, as where CONTACT has no element",
+                if by_pen { "PEN" } else { "FN" }
+            )),
+        }
+    }
+}
+
 /// The B(1..6) of each case where they change within the history (IBASE = 1), else `None`.
 fn quadratic_rows(cases: &[Case], h: &History) -> Option<Vec<[f64; 6]>> {
     let b = |k: usize| {
@@ -346,6 +445,27 @@ fn load_of_approach(
     let kernel = Kernel::new(mx, my, dx, dy, g, nu, 0.0).ok()?;
     let s = normal::NormalSolver::new(&kernel).ok()?.solve_approach(h_mm, pen_mm, &Default::default()).ok()?;
     Some(s.pn_mpa.iter().sum::<f64>() * dx * dy).filter(|f| f.is_finite() && *f > 0.0)
+}
+
+/// The pressure on undeformed distance `h_mm` (CONTACT's element order) of a `mx × my` grid of
+/// `dx × dy` elements at approach `pen_or_fn` (`by_pen`, N = 0) or load (N = 1), or `None` where
+/// the normal solver fails.
+fn pressure_on(
+    h_mm: &[f64],
+    (mx, my, dx, dy): (usize, usize, f64, f64),
+    (g, nu): (f64, f64),
+    pen_or_fn: f64,
+    by_pen: bool,
+) -> Option<Vec<f64>> {
+    use crate::physics::halfspace::{influence::Kernel, normal};
+    let kernel = Kernel::new(mx, my, dx, dy, g, nu, 0.0).ok()?;
+    let mut solver = normal::NormalSolver::new(&kernel).ok()?;
+    let s = if by_pen {
+        solver.solve_approach(h_mm, pen_or_fn, &Default::default()).ok()?
+    } else {
+        solver.solve(h_mm, pen_or_fn, &Default::default()).ok()?
+    };
+    s.converged.then_some(s.pn_mpa)
 }
 
 /// Which of x, y the case prescribes as a force (F = 1: x; F = 2: x and y).
@@ -583,9 +703,10 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
         }
         None => contact.push(("mu", Value::Float(rows[0][4]))),
     }
-    let (mx, my) = s.potcon.as_ref().map_or((0, 0), Potcon::mx_my);
+    let potcon = union_grid(cases, h).or_else(|| s.potcon.clone());
+    let (mx, my) = potcon.as_ref().map_or((0, 0), Potcon::mx_my);
     let mut grid = vec![("mx", Value::Integer(mx as i64)), ("my", Value::Integer(my as i64))];
-    match &s.potcon {
+    match &potcon {
         Some(Potcon::Hertz { ipotcn: -3, params, .. }) => {
             contact.extend([("a_mm", Value::Float(params[0])), ("b_mm", Value::Float(params[1]))]);
             grid.push(("scale", Value::Float(params[2])));
@@ -613,12 +734,7 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
             let h_mm: Vec<f64> = match u.ibase {
                 9 => b.clone(),
                 2 => (0..mx * my).map(|e| circular_in_x(b, centre(e))).collect(),
-                _ => (0..mx * my)
-                    .map(|e| {
-                        let (x, y) = centre(e);
-                        b[0] * x * x + b[1] * x * y + b[2] * y * y + b[3] * x + b[4] * y + b[5]
-                    })
-                    .collect(),
+                _ => (0..mx * my).map(|e| quadratic(b, centre(e))).collect(),
             };
             if first.digits.n == 0 {
                 // N = 0: the nominal load (it forms the nominal contact) of the first case's PEN.
