@@ -405,7 +405,7 @@ fn check_union(cases: &[Case], h: &History, statuses: &mut [CaseStatus]) {
         let pn = pressure_on(&h_mm, (mx, my, dx_mm, dy_mm), (m.g_mpa, m.poisson), pen, by_pen).unwrap_or_default();
         let touching = (0..mx * my).map(|e| (e % mx, e / mx)).find(|&(ix, iy)| {
             let inside = (ox..ox + wx).contains(&ix) && (oy..oy + wy).contains(&iy);
-            !inside && pn.get(iy * mx + ix).map_or(true, |p| *p != 0.0)
+            !inside && pn.get(iy * mx + ix).is_none_or(|p| *p != 0.0)
         });
         match touching {
             Some((ix, iy)) => statuses[k].refused.push(format!(
