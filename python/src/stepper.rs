@@ -101,20 +101,7 @@ impl Stepper {
                 return Err(errors::input(InputError::new(field, v, allowed)));
             }
         }
-        let s = Sample {
-            step,
-            t_s: step as f64 * self.problem.rolling.dt_s,
-            cx,
-            cy,
-            cs,
-            fn_n,
-            mu,
-            v_mm_s: None,
-            fx_target: None,
-            fy_target: None,
-            pen_mm: None,
-            h_coefficients: None,
-        };
+        let s = Sample::given(step, step as f64 * self.problem.rolling.dt_s, cx, cy, cs, fn_n, mu);
         if self.loaded != Some((fn_n, mu)) {
             self.stepper.load(&s).map_err(|e| solve_error(&self.problem, &self.model, e))?;
             self.loaded = Some((fn_n, mu));

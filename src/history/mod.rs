@@ -140,20 +140,15 @@ impl History {
             let step = rec[0].parse::<usize>().map_err(|_| bad(0, "a step index"))?;
             let extra = (first_extra..header.len()).map(num).collect::<Result<Vec<_>, _>>()?;
             h.rows.push(Row {
-                sample: Sample {
+                sample: Sample::given(
                     step,
-                    t_s: num(1)?,
-                    cx: num(2)?,
-                    cy: num(3)?,
-                    cs: num(4)?,
-                    fn_n: num(5)?,
-                    mu: if has_mu { num(COLUMNS.len())? } else { f64::NAN },
-                    v_mm_s: None,
-                    fx_target: None,
-                    fy_target: None,
-                    pen_mm: None,
-                    h_coefficients: None,
-                },
+                    num(1)?,
+                    num(2)?,
+                    num(3)?,
+                    num(4)?,
+                    num(5)?,
+                    if has_mu { num(COLUMNS.len())? } else { f64::NAN },
+                ),
                 fx_over_fn: num(6)?,
                 fy_over_fn: num(7)?,
                 extra,

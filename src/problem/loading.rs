@@ -44,6 +44,25 @@ pub struct Sample {
 }
 
 impl Sample {
+    /// A row with its creepages, FN and μ given and nothing prescribed in their place (the
+    /// rolling speed the scene's).
+    pub fn given(step: usize, t_s: f64, cx: f64, cy: f64, cs: f64, fn_n: f64, mu: f64) -> Sample {
+        Sample {
+            step,
+            t_s,
+            cx,
+            cy,
+            cs,
+            fn_n,
+            mu,
+            v_mm_s: None,
+            fx_target: None,
+            fy_target: None,
+            pen_mm: None,
+            h_coefficients: None,
+        }
+    }
+
     /// Whether a total force is prescribed in place of a creepage.
     pub fn prescribes_force(&self) -> bool {
         self.fx_target.is_some() || self.fy_target.is_some()

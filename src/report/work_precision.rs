@@ -161,20 +161,7 @@ mod tests {
         for k in 0..=n {
             let t = k as f64 * dt;
             let row = Row {
-                sample: Sample {
-                    step: k,
-                    t_s: t,
-                    cx: 0.0,
-                    cy: 0.0,
-                    cs: 0.0,
-                    fn_n: 1.0,
-                    mu: 1.0,
-                    v_mm_s: None,
-                    fx_target: None,
-                    fy_target: None,
-                    pen_mm: None,
-                    h_coefficients: None,
-                },
+                sample: Sample::given(k, t, 0.0, 0.0, 0.0, 1.0, 1.0),
                 fx_over_fn: f(t),
                 fy_over_fn: 0.0,
                 extra: Vec::new(),

@@ -68,20 +68,7 @@ pub fn load(dir: &Path) -> Result<EnvelopeCases, Error> {
                     let (fx, fy, mz) = parse_case(line).ok_or_else(|| bad(n, line.chars().take(60).collect()))?;
                     // Forces on body 1 over mu FN, moment over mu FN cp: flipped and scaled.
                     h.rows.push(Row {
-                        sample: Sample {
-                            step,
-                            t_s: 0.0,
-                            cx: f64::NAN,
-                            cy: f64::NAN,
-                            cs: f64::NAN,
-                            fn_n: FN_N,
-                            mu: MU,
-                            v_mm_s: None,
-                            fx_target: None,
-                            fy_target: None,
-                            pen_mm: None,
-                            h_coefficients: None,
-                        },
+                        sample: Sample::given(step, 0.0, f64::NAN, f64::NAN, f64::NAN, FN_N, MU),
                         fx_over_fn: -MU * fx,
                         fy_over_fn: -MU * fy,
                         extra: vec![-MU * FN_N * cp_mm * mz],

@@ -101,20 +101,7 @@ mod tests {
     }
 
     fn sample(mu: f64) -> Sample {
-        Sample {
-            step: 1,
-            t_s: 0.0,
-            cx: 0.003,
-            cy: 0.0,
-            cs: 0.0,
-            fn_n: 1.0,
-            mu,
-            v_mm_s: None,
-            fx_target: None,
-            fy_target: None,
-            pen_mm: None,
-            h_coefficients: None,
-        }
+        Sample::given(1, 0.0, 0.003, 0.0, 0.0, 1.0, mu)
     }
 
     #[test]
