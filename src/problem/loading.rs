@@ -146,14 +146,18 @@ impl Loading {
                 }
                 (LoadingKind::Sine, Some(*freq_hz), Some(Sample { cx: *c0, ..base }), s)
             }
-            Creepage::Sweep { points, direction, .. } => {
+            Creepage::Sweep { points, direction, fx_prescribed, .. } => {
                 if *points > max {
                     return Err(too_many(*points as f64));
                 }
                 let s = (1..=*points)
                     .map(|k| {
-                        let [cx, cy, cs] = scene.sweep_point(k).unwrap_or_default();
-                        Sample { step: k, t_s: 0.0, cx, cy, cs, v_mm_s: scene.sweep_speed(k), ..base }
+                        let [x, y, cs] = scene.sweep_point(k).unwrap_or_default();
+                        // A force ratio prescribed in place of a creepage: the creepage starts at 0.
+                        let (cx, fx_target) = if *fx_prescribed { (0.0, Some(x)) } else { (x, None) };
+                        let (cy, fy_target) = if scene.fy_over_fn.is_some() { (0.0, Some(y)) } else { (y, None) };
+                        let v_mm_s = scene.sweep_speed(k);
+                        Sample { step: k, t_s: 0.0, cx, cy, cs, v_mm_s, fx_target, fy_target, ..base }
                     })
                     .collect();
                 sweep_direction = Some(*direction);
@@ -241,9 +245,13 @@ impl Loading {
         };
         let f = s.fx_target.unwrap_or(0.0).hypot(s.fy_target.unwrap_or(0.0));
         let field = if s.fx_target.is_some() { "creepage.fx_over_fn" } else { "creepage.fy_over_fn" };
+        let at = match self.kind {
+            LoadingKind::Sweep => format!("sweep point {}", s.step),
+            _ => format!("step {} (t = {} s)", s.step, s.t_s),
+        };
         Err(InputError::new(
             field,
-            format!("|(Fx, Fy)|/FN = {f} at step {} (t = {} s)", s.step, s.t_s),
+            format!("|(Fx, Fy)|/FN = {f} at {at}"),
             format!("a prescribed force below mu = {} times FN: at or above it the whole contact slides and no creepage in partial slip gives it", s.mu),
         ))
     }

@@ -39,7 +39,19 @@ pub enum Creepage {
     /// `at` (then `from`, `to` are its first and last) — at the creepage `[cx, cy, cs] +
     /// t·direction` (cy, cs the scene's constants; see [`Scene::sweep_point`]).
     /// With `speed` (`over = "v_mm_s"`) t is the rolling speed [mm/s] and the creepages are held.
-    Sweep { from: f64, to: f64, points: usize, direction: [f64; 3], cx: f64, at: Option<Vec<f64>>, speed: bool },
+    /// With `fx_prescribed` (CONTACT's F = 1, 2 in steady rolling) the point's first component
+    /// (and `cx`) is Fx/FN prescribed in place of cx; its second is Fy/FN where the scene's
+    /// `fy_over_fn` is given.
+    Sweep {
+        from: f64,
+        to: f64,
+        points: usize,
+        direction: [f64; 3],
+        cx: f64,
+        at: Option<Vec<f64>>,
+        speed: bool,
+        fx_prescribed: bool,
+    },
     /// A CSV table `t_s,cx[,cy,cs,fn_n,mu,v_mm_s]`, interpolated at t_k = k dt up to its last time
     /// (within `problem::loading::TABLE_END_REL`).
     Table { file: PathBuf, rows: table::CreepageTable },
@@ -313,6 +325,8 @@ pub struct Scene {
 }
 
 const CREEPAGE_LIMIT: Range = Range::new(-1.0, true, 1.0, true);
+/// A prescribed force ratio Fx/FN or Fy/FN: below 1 in size (and below μ, checked per sample).
+pub(crate) const FORCE_RATIO: Range = Range::new(-1.0, false, 1.0, false);
 const SPIN_LIMIT: Range = Range::new(-10.0, true, 10.0, true);
 /// A rolling speed [mm/s] (`[rolling] v_mm_s`, a table's or a sweep's).
 pub const SPEED_LIMIT: Range = Range::new(0.0, false, 1e6, true);
@@ -448,7 +462,8 @@ impl Scene {
                 c + d * t
             }
         };
-        Some([add(*cx, direction[0]), add(self.cy, direction[1]), add(self.cs_per_mm, direction[2])])
+        let y = self.fy_over_fn.unwrap_or(self.cy);
+        Some([add(*cx, direction[0]), add(y, direction[1]), add(self.cs_per_mm, direction[2])])
     }
 
     /// Rolling speed [mm/s] of sweep point k of a speed sweep (`over = "v_mm_s"`), else `None`.
@@ -496,7 +511,7 @@ impl Scene {
     /// the first and the last (computed as they are sampled) bound them all and the error names
     /// the end; a list `at` is checked point by point and the error names the entry.
     fn check_sweep_points(&self) -> Result<(), InputError> {
-        let Creepage::Sweep { from, to, points, at, speed, .. } = &self.creepage else {
+        let Creepage::Sweep { from, to, points, at, speed, fx_prescribed, .. } = &self.creepage else {
             return Ok(());
         };
         if *speed {
@@ -513,15 +528,20 @@ impl Scene {
         };
         for (k, key, t) in checked.iter().map(|(k, key, t)| (*k, key, t)) {
             let point = self.sweep_point(k).unwrap_or_default();
-            let limits = [("cx", CREEPAGE_LIMIT), ("cy", CREEPAGE_LIMIT), ("cs", SPIN_LIMIT)];
+            let x = if *fx_prescribed { ("fx_over_fn", FORCE_RATIO) } else { ("cx", CREEPAGE_LIMIT) };
+            let y = if self.fy_over_fn.is_some() { ("fy_over_fn", FORCE_RATIO) } else { ("cy", CREEPAGE_LIMIT) };
+            let limits = [x, y, ("cs", SPIN_LIMIT)];
             for ((name, range), v) in limits.iter().zip(point) {
                 if !range.contains(v) {
                     return Err(InputError::new(
                         format!("creepage.{key}"),
                         format!("{} (sweep point {k}: {name} = {})", compact(*t), compact(v)),
                         format!(
-                            "a sweep whose every point [cx, cy, cs] + t·direction has cx and cy {}, cs {} [1/mm]",
+                            "a sweep whose every point [{}, {}, cs] + t·direction has cx and cy {}, Fx/FN and Fy/FN {}, cs {} [1/mm]",
+                            x.0,
+                            y.0,
                             CREEPAGE_LIMIT.describe(),
+                            FORCE_RATIO.describe(),
                             SPIN_LIMIT.describe()
                         ),
                     ));

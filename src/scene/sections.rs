@@ -5,8 +5,8 @@
 use super::reader::{Deferred, Range, Section};
 use super::{
     is_valid_name, table, ContactSolverOptions, Creepage, ExternalSolver, InitKind, InitialSlip, Limits, MaterialSpec,
-    ModelOptions, Motion, SteadyRestart, CREEPAGE_LIMIT, FINITE, GRID_SCALE, HARD_MAX_STEPS, MAX_ELEMENTS_PER_AXIS,
-    SPIN_LIMIT,
+    ModelOptions, Motion, SteadyRestart, CREEPAGE_LIMIT, FINITE, FORCE_RATIO, GRID_SCALE, HARD_MAX_STEPS,
+    MAX_ELEMENTS_PER_AXIS, SPIN_LIMIT,
 };
 use crate::error::InputError;
 use crate::physics::geometry::{Extent, GeometrySpec};
@@ -47,9 +47,6 @@ pub struct CreepageSpec {
     pub fy_over_fn: Option<f64>,
     pub cs_per_mm: f64,
 }
-
-/// A prescribed force ratio Fx/FN or Fy/FN: below 1 in size (and below μ, checked per sample).
-const FORCE_RATIO: Range = Range::new(-1.0, false, 1.0, false);
 
 /// `name`: 1 to 100 characters of `[a-z0-9_]`.
 pub fn name(top: &mut Section) -> Result<String, InputError> {
@@ -328,17 +325,20 @@ pub fn creepage(top: &mut Section, dir: &Path) -> Result<CreepageSpec, InputErro
             cr.refuse(key, &only_sweep)?;
         }
     }
-    if kind != "step" {
-        cr.refuse("fx_over_fn", "only with kind = \"step\" (a table prescribes Fx/FN as its column fx_over_fn)")?;
+    if kind != "step" && kind != "sweep" {
+        cr.refuse(
+            "fx_over_fn",
+            "only with kind = \"step\" or \"sweep\" (a table prescribes Fx/FN as its column fx_over_fn)",
+        )?;
     }
-    let fy_over_fn = if kind == "sweep" {
-        cr.refuse("fy_over_fn", "a kind other than \"sweep\" (a sweep moves the creepages it is given)")?;
-        None
-    } else {
-        cr.opt_f64("fy_over_fn", FORCE_RATIO)?
-    };
+    // A sweep over Fy/FN prescribes it at every point (its constant 0 where not given).
+    let over_fy = kind == "sweep" && cr.opt_choice("over", SWEEP_OVER)? == Some("fy_over_fn");
+    let fy_over_fn = cr.opt_f64("fy_over_fn", FORCE_RATIO)?.or(over_fy.then_some(0.0));
     if fy_over_fn.is_some() {
         cr.refuse("cy", "only one of creepage.cy (cy given) and creepage.fy_over_fn (Fy/FN prescribed)")?;
+        if kind == "sweep" && cr.opt_choice("over", SWEEP_OVER)? == Some("cy") {
+            cr.refuse("over", "over = \"fy_over_fn\" with fy_over_fn (Fy/FN prescribed in place of cy)")?;
+        }
     }
     let cy = cr.opt_f64("cy", CREEPAGE_LIMIT)?.unwrap_or(0.0);
     let cs_per_mm = cr.opt_f64("cs", SPIN_LIMIT)?.unwrap_or(0.0);
@@ -346,8 +346,12 @@ pub fn creepage(top: &mut Section, dir: &Path) -> Result<CreepageSpec, InputErro
     Ok(CreepageSpec { creepage, cy, fy_over_fn, cs_per_mm })
 }
 
+/// What a sweep's `over` may name: a creepage, a prescribed force ratio or the speed.
+const SWEEP_OVER: &[&str] = &["cx", "cy", "cs", "v_mm_s", "fx_over_fn", "fy_over_fn"];
+
 /// `[creepage] kind = "sweep"`: the parameter's points (`from, to, points` or the list `at`),
-/// the direction (`over` or `direction`) and the constant cx.
+/// the direction (`over` or `direction`) and the constant cx, or Fx/FN prescribed in its place
+/// (`fx_over_fn` or `over = "fx_over_fn"`, CONTACT's F = 1, 2 in steady rolling).
 fn sweep(cr: &mut Section) -> Result<Creepage, InputError> {
     let at = cr.opt_f64_list("at", FINITE, HARD_MAX_STEPS)?;
     let (from, to, points) = match &at {
@@ -359,20 +363,35 @@ fn sweep(cr: &mut Section) -> Result<Creepage, InputError> {
         }
         None => (cr.f64("from", FINITE)?, cr.f64("to", FINITE)?, cr.usize("points", 1, HARD_MAX_STEPS)?),
     };
-    let speed = cr.opt_choice("over", &["cx", "cy", "cs", "v_mm_s"])? == Some("v_mm_s");
+    let over = cr.opt_choice("over", SWEEP_OVER)?;
+    let speed = over == Some("v_mm_s");
     let direction = if speed {
         cr.refuse("direction", "not with over = \"v_mm_s\" (a speed sweep holds the creepages)")?;
         [0.0; 3]
     } else {
         sweep_direction(cr)?
     };
-    let cx = cr.opt_f64("cx", CREEPAGE_LIMIT)?.unwrap_or(0.0);
-    Ok(Creepage::Sweep { from, to, points, direction, cx, at, speed })
+    let fx = cr.opt_f64("fx_over_fn", FORCE_RATIO)?;
+    let fx_prescribed = fx.is_some() || over == Some("fx_over_fn");
+    if fx_prescribed {
+        let instead =
+            "only one of creepage.cx (cx given) and creepage.fx_over_fn or over = \"fx_over_fn\" (Fx/FN prescribed)";
+        cr.refuse("cx", instead)?;
+        if over == Some("cx") {
+            cr.refuse("over", "over = \"fx_over_fn\" with fx_over_fn (Fx/FN prescribed in place of cx)")?;
+        }
+    }
+    let cx = match fx {
+        Some(f) => f,
+        None => cr.opt_f64("cx", CREEPAGE_LIMIT)?.unwrap_or(0.0),
+    };
+    Ok(Creepage::Sweep { from, to, points, direction, cx, at, speed, fx_prescribed })
 }
 
-/// A sweep's direction in (cx, cy, cs): `over` one creepage, or `direction` (not both; default cx).
+/// A sweep's direction in (x, y, cs), x and y the creepages or the force ratios prescribed in
+/// their place: `over` one of them, or `direction` (not both; default x).
 fn sweep_direction(cr: &mut Section) -> Result<[f64; 3], InputError> {
-    let over = cr.opt_choice("over", &["cx", "cy", "cs", "v_mm_s"])?;
+    let over = cr.opt_choice("over", SWEEP_OVER)?;
     Ok(match (over, cr.opt_f64_array::<3>("direction", FINITE)?) {
         (Some(o), Some(d)) => {
             return Err(InputError::new(
@@ -389,7 +408,7 @@ fn sweep_direction(cr: &mut Section) -> Result<[f64; 3], InputError> {
             ))
         }
         (None, Some(d)) => d,
-        (Some("cy"), None) => [0.0, 1.0, 0.0],
+        (Some("cy" | "fy_over_fn"), None) => [0.0, 1.0, 0.0],
         (Some("cs"), None) => [0.0, 0.0, 1.0],
         _ => [1.0, 0.0, 0.0],
     })

@@ -40,6 +40,7 @@ mod she_model;
 mod shift;
 mod simplified_models;
 mod stability;
+mod steady_force;
 mod steady_restart;
 mod strip;
 mod studies;

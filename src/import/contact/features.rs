@@ -88,8 +88,8 @@ pub const FEATURES: &[Feature] = &[
     Feature {
         name: "prescribed tangential forces in steady rolling",
         control: "F",
-        supported: false,
-        reason: "supported: F = 1, 2 in shifts and transient rolling (T = 1, 2); in steady rolling (T = 3) F = 0",
+        supported: true,
+        reason: "imported as a sweep's fx_over_fn (F = 1) and fy_over_fn (F = 2), or the step-0 row of a steady start: the exact solver finds CKSI (and CETA) by the same force iteration as in transient rolling",
         used: |c| digit("F", c.digits.f, c.digits.f != 0 && c.digits.t == 3),
     },
     Feature {

@@ -228,6 +228,7 @@ fn group(cases: &[Case], statuses: &mut [CaseStatus]) -> Vec<History> {
                     setup_difference(&first.state, &c3.state, false).is_none()
                         && (!falling(&c3.state) || slip_iteration(&first.state) == slip_iteration(&c3.state))
                         && statuses[h.cases[0]].supported() == statuses[k].supported()
+                        && prescribed(first) == prescribed(c3)
                         && sweep_continues(cases, h, c3)
                 }
                 _ => false,
@@ -468,9 +469,19 @@ fn pressure_on(
     s.converged.then_some(s.pn_mpa)
 }
 
-/// Which of x, y the case prescribes as a force (F = 1: x; F = 2: x and y).
+/// Which of x, y the case prescribes as a force (F = 1: x; F = 2: x and y; frictionless
+/// compression, T = 0, has no tangential problem and prescribes none).
 fn prescribed(c: &Case3) -> [bool; 2] {
-    [c.digits.f >= 1, c.digits.f == 2]
+    let tangential = c.digits.t != 0;
+    [tangential && c.digits.f >= 1, tangential && c.digits.f == 2]
+}
+
+/// A steady sweep's keys for its point's (x, y, cs): the creepages, or the force ratios
+/// prescribed in their place (F = 1, 2: `fx_over_fn`, `fy_over_fn`), and which are forces.
+fn sweep_axes(c: &Case3) -> ([&'static str; 3], [bool; 3]) {
+    let [fx, fy] = prescribed(c);
+    let axis = [if fx { "fx_over_fn" } else { "cx" }, if fy { "fy_over_fn" } else { "cy" }, "cs"];
+    (axis, [fx, fy, false])
 }
 
 /// CONTACT's FX, FY under F = 1, 2 are FXREL, FYREL: the force on body 1 over FSTAT·FN (user
@@ -781,8 +792,9 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
                 ("over", Value::String("v_mm_s".into())),
                 ("at", floats(&at)),
             ];
-            for (j, key) in ["cx", "cy", "cs"].iter().enumerate() {
-                if rows[0][j].to_bits() != 0 {
+            let (axis, forced) = sweep_axes(first);
+            for (j, key) in axis.iter().enumerate() {
+                if rows[0][j].to_bits() != 0 || forced[j] {
                     cr.push((key, Value::Float(rows[0][j])));
                 }
             }
@@ -793,14 +805,17 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
             let Sweep { param: k, direction, constants, t } =
                 sweep_of(&points).expect("histories are split where no sweep fits");
             let mut cr = vec![("kind", Value::String("sweep".into())), ("at", floats(&t))];
-            let axis = ["cx", "cy", "cs"];
-            if direction.iter().filter(|&&d| d != 0.0).count() == 1 {
+            let (axis, forced) = sweep_axes(first);
+            let over = direction.iter().filter(|&&d| d != 0.0).count() == 1;
+            if over {
                 cr.push(("over", Value::String(axis[k].into())));
             } else {
                 cr.push(("direction", floats(&direction)));
             }
+            // A prescribed force's constant is written even where 0 (the key prescribes it),
+            // unless `over` names it.
             for (j, key) in axis.iter().enumerate() {
-                if constants[j].to_bits() != 0 {
+                if constants[j].to_bits() != 0 || (forced[j] && !(over && j == k)) {
                     cr.push((key, Value::Float(constants[j])));
                 }
             }
