@@ -293,7 +293,10 @@ fn bench_falling_friction(c: &mut Criterion) {
 /// (CONTACT F = 1: `fx_over_fn` in place of `c`) against its creepage-prescribed twin, per
 /// element-step: `step_cx001` (22×22, 44 steps), the force being the twin's last fx/fn. Target:
 /// at most a few times the twin's time. Measured (2026-11-25, idle 2-core machine): 33.2 ms
-/// against 11.1 ms, 3.0×.
+/// against 11.1 ms, 3.0×. Steady rolling (T = 3, F = 1): the envelope's `steady_cx_courant_two`
+/// sweep (22×22, 8 points) against the sweep over its forces: 62.5 ms against 33.5 ms, 1.9×
+/// (2026-11-25, 2-core machine shared with other builds; step_cx001 measured 102.6 against
+/// 34.0 ms, 3.0×, in the same run).
 fn bench_prescribed_force(c: &mut Criterion) {
     let creepage = thesis_text("step_cx001").replace(
         "solvers = [\"uba\", \"fastsim\", \"contact\", \"linear\", \"she\", \"polach\", \"fastrip\", \"relaxation\"]",
@@ -304,10 +307,30 @@ fn bench_prescribed_force(c: &mut Criterion) {
     let run = |p: &Problem| sample_loop::run(p, &creepbench::solvers::contact::MODEL, &[], None).unwrap().history;
     let fx_over_fn = run(&twin).rows.last().unwrap().fx_over_fn;
     let force = resolve(&creepage.replace("c = 0.001\n", &format!("fx_over_fn = {fx_over_fn:?}\n")));
+    // Steady rolling (CONTACT T = 3, F = 1): the envelope's cx sweep (22×22, 8 points, cy held)
+    // and the sweep over the forces it gives.
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/envelope");
+    let sweep = creepbench::suite::find(&[dir], "steady_cx_courant_two").unwrap().text().unwrap().replace(
+        "solvers = [\"uba\", \"fastsim\", \"contact\", \"linear\", \"she\", \"polach\", \"fastrip\", \"relaxation\"]",
+        "solvers = [\"contact\"]",
+    );
+    let steady_twin = resolve(&sweep);
+    let forces: Vec<String> = run(&steady_twin).rows.iter().map(|r| format!("{:?}", r.fx_over_fn)).collect();
+    let steady_force = resolve(&sweep.replace(
+        "over = \"cx\"\nfrom = 0.0005\nto = 0.004\npoints = 8\n",
+        &format!("over = \"fx_over_fn\"\nat = [{}]\n", forces.join(", ")),
+    ));
+    assert!(steady_force.loading.prescribes_force());
     let mut g = c.benchmark_group("contact_prescribed_force");
-    for (name, p) in [("creepage", &twin), ("force", &force)] {
+    let cases = [
+        ("step_cx001", "creepage", &twin),
+        ("step_cx001", "force", &force),
+        ("steady_cx_courant_two", "creepage", &steady_twin),
+        ("steady_cx_courant_two", "force", &steady_force),
+    ];
+    for (case, name, p) in cases {
         g.throughput(Throughput::Elements((p.loading.rows().count() * p.grid.len()) as u64));
-        g.bench_function(BenchmarkId::new("step_cx001", name), |b| b.iter(|| run(p).rows.len()));
+        g.bench_function(BenchmarkId::new(case, name), |b| b.iter(|| run(p).rows.len()));
     }
     g.finish();
 }
