@@ -6,13 +6,13 @@
 //! transient case (P = 0, T = 2) per step; shifts (`[rolling] motion = "shift"`) are T = 1 cases,
 //! and a shift start (`[init] kind = "shift"`) the first case as T = 1 before the rolling ones
 //! (which read CHI, DQ, VELOC with C = 2). Exact theory, Coulomb friction FSTAT = FKIN = μ (read
-//! again, L = 0, in a case whose μ changed), FN prescribed (N = 1), both bodies of the scene's
+//! again, L = 0, in a case whose μ changed), FN prescribed (N = 1) or the approach (N = 0, PEN), both bodies of the scene's
 //! material, rolling in CONTACT's +x (CHI = 0) with DQ = courant·dx (CONTACT solves a steady case
 //! with DQ = DX and keeps it: after a steady start at another DQ the first transient case gives DQ
 //! again).
 //!
 //! Geometry (first case): Hertz's ellipse as IPOTCN = −3 (AA, BB, SCALE) when the load is constant;
-//! when the load changes within the history, the ellipse's fixed curvatures h = A1 x² + B1 y² on the
+//! when the load changes within the history or the approach is prescribed, the ellipse's fixed curvatures h = A1 x² + B1 y² on the
 //! fixed grid (IPOTCN = 1, IBASE = 1), as this project's solvers keep the geometry; a geometry given
 //! per element as IPOTCN = 1 with its grid and IBASE = 9, h per element in CONTACT's order.
 //! Signs: cx, cy, cs are CKSI, CETA, CPHI as they are (this project uses CONTACT's convention).
@@ -45,7 +45,9 @@ pub fn module3_input(p: &Problem) -> String {
     let shifts = p.rolling.motion == Motion::Shift;
     let shift_start = p.loading.shift_start().is_some();
     let sweep = p.loading.kind == LoadingKind::Sweep;
-    let load_varies = rows.iter().any(|s| s.fn_n != rows[0].fn_n);
+    // With the approach prescribed CONTACT would derive the curvatures (IPOTCN = −3) or the grid
+    // (−1) from PEN (`hzcalc3d`): the fixed grid and curvatures keep this project's.
+    let load_varies = rows.iter().any(|s| s.fn_n != rows[0].fn_n || s.pen_mm.is_some());
     let mut out = format!(
         "%\n% CONTACT input written by creepbench for scene \"{}\" ({} cases, one per history row).\n%\n",
         p.name,

@@ -101,6 +101,28 @@ impl HertzContact {
         let compliance = |c2: f64, rd_value: f64| ((1.0 - nu) * rf + nu * c2 * rd_value / 3.0) / (PI * g);
         (1.0 / compliance(a2, rd(0.0, b2, a2)), 1.0 / compliance(b2, rd(0.0, a2, b2)))
     }
+    /// Hertz's approach δ [mm] of this ellipse under its load: δ = p0 b K(e)/E* (Johnson 1985,
+    /// §4.2, a ≥ b), written with Carlson's R_F as `δ = 3 FN R_F(0, a², b²)/(2π E*)`,
+    /// symmetric in a and b; a circle gives δ = a²/R (Johnson §4.2).
+    pub fn approach_mm(&self, material: &Material) -> f64 {
+        let rf = elliprf(0.0, self.a_mm * self.a_mm, self.b_mm * self.b_mm).unwrap_or(f64::NAN);
+        3.0 * self.fn_n * rf / (2.0 * PI * material.e_star_mpa())
+    }
+
+    /// The ellipse of semi-axes `a_mm`, `b_mm` whose approach is `pen_mm` (CONTACT IPOTCN = −3,
+    /// N = 0: the curvatures follow): FN = 2π E* δ/(3 R_F(0, a², b²)), [`Self::approach_mm`] inverted.
+    pub fn with_approach(a_mm: f64, b_mm: f64, pen_mm: f64, material: &Material) -> HertzContact {
+        let unit = HertzContact { a_mm, b_mm, fn_n: 1.0 }.approach_mm(material);
+        HertzContact { a_mm, b_mm, fn_n: pen_mm / unit }
+    }
+
+    /// The ellipse of the radii whose approach is `pen_mm` (CONTACT IPOTCN = −1, −2 with N = 0):
+    /// δ ∝ FN^(2/3) at fixed curvatures, so FN = (δ/δ₁)^(3/2) with δ₁ the approach under 1 N.
+    pub fn from_radii_and_approach(radii: &Radii, pen_mm: f64, material: &Material) -> Result<Self, HertzError> {
+        let unit = HertzContact::from_radii(radii, 1.0, material)?;
+        let fn_n = (pen_mm / unit.approach_mm(material)).powf(1.5);
+        HertzContact::from_radii(radii, fn_n, material)
+    }
 }
 
 /// `((K − E)/m, ((1/(1−m)) E − K)/m)` for parameter m = e² ∈ [0, 1): the two brackets of
@@ -220,6 +242,38 @@ mod tests {
             let rd2 = elliprd(0.0, 1.0, 1.0 - m).unwrap() / 3.0;
             assert!(((k - e) / m / rd1 - 1.0).abs() < 1e-9);
             assert!(((e / (1.0 - m) - k) / m / rd2 - 1.0).abs() < 1e-9);
+        }
+    }
+
+    /// Johnson 1985 §4.2 (circle): δ = a²/R and FN = (4/3) E* R^(1/2) δ^(3/2).
+    #[test]
+    fn approach_of_a_circle_is_johnsons() {
+        let mat = Material::from_g(82000.0, 0.28);
+        let r_mm: f64 = 400.0;
+        let radii = Radii { r_wx_mm: r_mm, r_wy_mm: r_mm, r_ry_mm: f64::INFINITY };
+        let h = HertzContact::from_radii(&radii, 1e5, &mat).unwrap();
+        let delta = h.a_mm * h.a_mm / r_mm;
+        assert!((h.approach_mm(&mat) / delta - 1.0).abs() < 1e-12, "{} vs {delta}", h.approach_mm(&mat));
+        let pen: f64 = 0.05;
+        let fn_n = 4.0 / 3.0 * mat.e_star_mpa() * r_mm.sqrt() * pen.powf(1.5);
+        let back = HertzContact::from_radii_and_approach(&radii, pen, &mat).unwrap();
+        assert!((back.fn_n / fn_n - 1.0).abs() < 1e-12, "{} vs {fn_n}", back.fn_n);
+        assert!((back.a_mm / (pen * r_mm).sqrt() - 1.0).abs() < 1e-9, "{back:?}");
+    }
+
+    /// An ellipse: δ = p0 b K(e)/E*, e² = 1 − b²/a² (Johnson 1985, §4.2) with Legendre's K;
+    /// [`HertzContact::with_approach`] inverts it, and its curvatures give the ellipse back.
+    #[test]
+    fn approach_of_an_ellipse_is_johnsons() {
+        let mat = Material::from_g(82000.0, 0.28);
+        for (a, b) in [(8.56, 4.08), (4.25, 7.0), (3.0, 9.0)] {
+            let h = HertzContact { a_mm: a, b_mm: b, fn_n: 42000.0 };
+            let (long, short) = if a >= b { (a, b) } else { (b, a) };
+            let (k, _) = ellipke(1.0 - short * short / (long * long)).unwrap();
+            let delta = h.p0_mpa() * short * k / mat.e_star_mpa();
+            assert!((h.approach_mm(&mat) / delta - 1.0).abs() < 1e-12, "{a} {b}: {} vs {delta}", h.approach_mm(&mat));
+            let back = HertzContact::with_approach(a, b, delta, &mat);
+            assert!((back.fn_n / 42000.0 - 1.0).abs() < 1e-12, "{back:?}");
         }
     }
 }

@@ -114,6 +114,15 @@ impl Loading {
             )
         };
         let mut sweep_direction = None;
+        if let (Some(pen_mm), Creepage::Table { rows, .. }) = (scene.pen_mm, &scene.creepage) {
+            if rows.fn_n.is_some() || rows.pen_mm.is_some() {
+                return Err(InputError::new(
+                    "contact.pen_mm",
+                    format!("{pen_mm} with a creepage table column fn_n or pen_mm"),
+                    "one of contact.pen_mm (the approach at every step) and the table's own fn_n or pen_mm column",
+                ));
+            }
+        }
         let (kind, freq_hz, initial, samples) = match &scene.creepage {
             Creepage::Step { c, steps, c_before, fx_prescribed } => {
                 if *steps > max {
@@ -311,6 +320,8 @@ fn table_row(scene: &Scene, rows: &CreepageTable, k: usize, t: f64) -> Sample {
         (None, None) => (scene.cy, scene.fy_over_fn),
     };
     let (fn_n, pen_mm) = rows.normal_at(t, scene.fn_n);
+    // A table without fn_n or pen_mm takes the scene's approach where it prescribes one.
+    let pen_mm = pen_mm.or(scene.pen_mm);
     Sample {
         step: k,
         t_s: t,
@@ -381,7 +392,8 @@ fn speed_table(scene: &Scene, rows: &CreepageTable, dq_mm: f64, max: usize) -> R
 }
 
 impl Sample {
-    /// The scene's loading at t = 0: contact.fn_n, μ, the constant cy and cs, cx = 0.
+    /// The scene's loading at t = 0: contact.fn_n (and the approach `contact.pen_mm` where
+    /// prescribed), μ, the constant cy and cs, cx = 0.
     pub fn nominal(scene: &Scene) -> Sample {
         Sample {
             step: 0,
@@ -394,7 +406,7 @@ impl Sample {
             v_mm_s: None,
             fx_target: None,
             fy_target: scene.fy_over_fn,
-            pen_mm: None,
+            pen_mm: scene.pen_mm,
             h_coefficients: None,
         }
     }

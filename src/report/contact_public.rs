@@ -51,7 +51,9 @@ fn worst_by_case(scenes: &[StoredScene], public: &PublicCases) -> BTreeMap<(Stri
 fn status(deck: &str, case: usize, worst: Option<&RowDiff>, survey: Option<&Survey>, printed: bool) -> String {
     if let Some(d) = worst {
         let verdict = if d.half_units() <= ONE_PRINTED_UNIT { "reproduced" } else { "**differs**" };
-        return format!("{verdict}: worst {:.2} half-units of the printed rounding ({})", d.half_units(), d.quantity);
+        // A value CONTACT prints at its noise level is measured against the noise floor.
+        let unit = if d.quantity.ends_with("_at_noise_floor") { "the noise floor" } else { "the printed rounding" };
+        return format!("{verdict}: worst {:.2} half-units of {unit} ({})", d.half_units(), d.quantity);
     }
     let reasons = match survey {
         Some(Survey::Cases(cases)) => cases.get(&case).map(|r| r.join("; ")),

@@ -284,6 +284,9 @@ pub struct Scene {
     pub metrics: Option<toml::Value>,
     pub geometry: GeometrySpec,
     pub fn_n: f64,
+    /// The approach [mm] prescribed at every step or sweep point in place of `fn_n` (`[contact]
+    /// pen_mm`, CONTACT N = 0); `fn_n` then sizes the grid. `None`: FN prescribed.
+    pub pen_mm: Option<f64>,
     /// Coulomb's μ, or a falling law's static value FKIN + F1 + F2.
     pub mu: f64,
     /// The friction law (`[friction]`; Coulomb with `mu` when absent).
@@ -408,6 +411,7 @@ impl Scene {
             metrics,
             geometry: contact.geometry,
             fn_n: contact.fn_n,
+            pen_mm: contact.pen_mm,
             mu: friction.mu_static,
             friction: friction.law,
             memory: friction.memory,

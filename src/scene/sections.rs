@@ -30,6 +30,8 @@ pub struct ContactSpec {
     pub fn_n: f64,
     /// `contact.mu` as given (required with Coulomb's law, optional with a falling one).
     pub mu: Option<f64>,
+    /// `contact.pen_mm`: the approach prescribed at every step or sweep point (CONTACT N = 0).
+    pub pen_mm: Option<f64>,
 }
 
 /// The friction law (`[friction]`, optional: Coulomb with `contact.mu`) and μ's static value.
@@ -138,8 +140,9 @@ pub fn contact(top: &mut Section, element_geometry: Option<GeometrySpec>) -> Res
     };
     let fn_n = c.f64("fn_n", Range::new(0.0, false, 1e9, true))?;
     let mu = c.opt_f64("mu", Range::new(0.0, false, 1e3, true))?;
+    let pen_mm = c.opt_f64("pen_mm", Range::new(0.0, false, super::table::PEN_MAX_MM, true))?;
     c.finish()?;
-    Ok(ContactSpec { geometry, fn_n, mu })
+    Ok(ContactSpec { geometry, fn_n, mu, pen_mm })
 }
 
 /// Relative difference allowed between a given `contact.mu` and a falling law's FKIN + F1 + F2

@@ -190,3 +190,128 @@ fn an_undeformed_distance_per_row_needs_all_six_a_grid_and_the_exact_model() {
     let e = Scene::from_toml(&hertz, &dir).map(|_| ()).unwrap_err().to_string();
     assert!(e.contains("with a Hertzian contact") && e.contains("explicit grid"), "{e}");
 }
+
+/// Import a deck's text and run each scene with the exact model: (the scene, its history).
+fn import_and_run(name: &str, deck: &str) -> Vec<(creepbench::problem::Problem, History)> {
+    let imported = creepbench::import::contact::scene::import_text(&format!("{name}.inp"), name, deck).unwrap();
+    assert!(imported.statuses.iter().all(|s| s.supported()), "{:?}", imported.statuses);
+    let dir = tempdir(name);
+    imported
+        .scenes
+        .iter()
+        .map(|s| {
+            for (file, text) in &s.files {
+                std::fs::write(dir.join(file), text).unwrap();
+            }
+            let p = creepbench::pipeline::load(&dir.join(&s.files[0].0), &[]).unwrap();
+            let h = run(&p, "contact");
+            (p, h)
+        })
+        .collect()
+}
+
+/// |ours − printed| in half-units of the printed value's last digit (`half`: that half-unit).
+fn half_units(ours: f64, printed: f64, half: f64) -> f64 {
+    (ours - printed).abs() / half
+}
+
+/// CONTACT's steady rolling on a Hertzian contact (IPOTCN = −3: AA = 4.25, BB = 7 mm on 21 x 33)
+/// with the approach PEN = 0.05 mm prescribed: the first case of CONTACT's
+/// `testbank/contact_nonhz.ref_inp` (eve70a/CONTACT d431cdb, Apache-2.0), whose `.ref_out` prints
+/// FN = 4.208E+04, FX/FSTAT/FN = −0.3868, FY/FSTAT/FN = −0.3657, MZ = −2.367E+04, PMAX = 675.4,
+/// NADH 138, NSLIP 225, the grid XL = −5.250, DX = 0.5000, DY = 0.5241, and through the library's
+/// log fn = 42083.1, tx = 4883.3, ty = 4617.4 (CONTACT derives the curvatures from PEN,
+/// `hzcalc3d`). The deck's lines are verbatim but for SCALE: the `.ref_inp` prints it rounded to
+/// 1.235, while CONTACT's printed grid (XL = −5.250 = −AA·SCALE, DX = 0.5000) shows the run used
+/// 21/17 = MX/(MX − 4) (the user guide's "two unused rows and columns"), written here in full.
+const NONHZ_CASE_1: &str = "\
+   3   1   2  MODULE, RE, CP: case 1 for result element  1, contact problem  2
+  203000          P-B-T-N-F-S           PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS
+  022020          L-D-C-M-Z-E           FRCLAW, DISCNS, INFLCF, MATER,  RZNORM, EXRHS
+ 0000341        H-G-I-A-O-W-R     HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW,   RETURN
+   999    30   30    1    1.0E-04        MAXGS , MAXIN , MAXNR , MAXOUT, EPS
+  0.5000E-01  0.1000E-02   0.000      0.4000E-03          PEN, CKSI, CETA, CPHI
+  0.3000      0.3000                                      FSTAT, FKIN
+   0.000      0.5000      0.2400E+05                      CHI, DQ, VELOC
+  0.2800      0.2800      0.8200E+05  0.8200E+05          POISS 1,2,  GG 1,2
+   -3                                                     IPOTCN
+   21   33   4.250       7.000       1.2352941176470589   MX,MY,AA,BB,SCALE
+ 0  MODULE
+";
+
+#[test]
+fn contacts_steady_hertzian_case_by_approach_is_reproduced() {
+    let runs = import_and_run("nonhz_pen", NONHZ_CASE_1);
+    assert_eq!(runs.len(), 1);
+    let (p, h) = &runs[0];
+    // The grid is CONTACT's: SCALE times AA, BB kept (the ellipse of Hertz's load at PEN).
+    let grid_half_units = [half_units(p.grid.dx_mm, 0.5, 5e-5), half_units(p.grid.dy_mm, 0.5241, 5e-5)];
+    assert!(grid_half_units.iter().all(|&k| k <= 1.0), "{grid_half_units:?}");
+    // Hertz's load at PEN on that ellipse, the nominal load: 2 pi E* PEN / (3 R_F(0, a², b²)).
+    let e_star = 82000.0 / (1.0 - 0.28);
+    let rf = ellip::elliprf(0.0, 4.25f64 * 4.25, 49.0).unwrap();
+    let hertz_fn = 2.0 * std::f64::consts::PI * e_star * 0.05 / (3.0 * rf);
+    assert!((p.hertz().fn_n / hertz_fn - 1.0).abs() < 1e-12, "{} vs {hertz_fn}", p.hertz().fn_n);
+    let col = |c: &str| h.column(c).unwrap()[0];
+    let (fn_n, mu) = (col("fn_n"), 0.3);
+    println!("FN {fn_n}, fx/fn {}, fy/fn {}, mz {}", col("fx_over_fn"), col("fy_over_fn"), col("mz_nmm"));
+    // Measured: FN 42083.076 (0.48 half-units of the log's 0.1 N), FX 4883.33, FY 4617.40,
+    // fx/(mu FN) 0.386801, fy/(mu FN) 0.365737, MZ 23666.8 N mm (CONTACT's MZ on body 1, the sign
+    // converted), PMAX within its last digit; each within the half-unit of its printed rounding.
+    for (name, ours, printed, half) in [
+        ("FN", fn_n, 4.208e4, 5.0),
+        ("fn (log)", fn_n, 42083.1, 0.05),
+        ("tx (log)", col("fx_over_fn") * fn_n, 4883.3, 0.05),
+        ("ty (log)", col("fy_over_fn") * fn_n, 4617.4, 0.05),
+        ("FX/FSTAT/FN", -col("fx_over_fn") / mu, -0.3868, 5e-5),
+        ("FY/FSTAT/FN", -col("fy_over_fn") / mu, -0.3657, 5e-5),
+        ("MZ", -col("mz_nmm"), -2.367e4, 5.0),
+        ("PMAX", col("pn_max_mpa"), 675.4, 0.05),
+    ] {
+        let k = half_units(ours, printed, half);
+        println!("{name}: ours {ours}, printed {printed}: {k:.2} half-units");
+        assert!(k <= 1.0, "{name}: ours {ours}, printed {printed}: {k} half-units");
+    }
+    assert_eq!((col("n_adhesion"), col("n_slip")), (138.0, 225.0));
+}
+
+/// A deck of one frictionless compression (T = 0) with the approach PEN = `pen` on a Hertzian
+/// contact given by its curvatures A1 = B1 (IPOTCN = −1: a sphere of radius 1/(2 A1)), 40 x 40
+/// elements over SCALE 1.05 times the ellipse CONTACT derives from PEN.
+fn sphere_deck(a1: f64, pen: f64) -> String {
+    format!(
+        " 3  MODULE
+  200000      P-B-T-N-F-S
+  022020      L-D-C-M-Z-E
+ 0100341      H-G-I-A-O-W-R
+ {pen:?}  0.0  0.0  0.0      PEN, CKSI, CETA, CPHI
+ 0.3 0.3                    FSTAT, FKIN
+ 0.28 0.28 82000. 82000.    POISS, GG
+ -1
+ 40  40  {a1:?}  {a1:?}  1.05
+ 0  MODULE
+"
+    )
+}
+
+#[test]
+fn a_hertzian_approach_gives_hertzs_load_and_ellipse() {
+    // Johnson 1985 §4.2, a sphere of radius R on a plane of the same material: a = (R δ)^(1/2),
+    // FN = (4/3) E* R^(1/2) δ^(3/2), E* = G/(1 − ν).
+    let (r_mm, pen) = (250.0, 0.04);
+    let runs = import_and_run("sphere_pen", &sphere_deck(0.5 / r_mm, pen));
+    let (p, h) = &runs[0];
+    let e_star = 82000.0 / (1.0 - 0.28);
+    let (a_hertz, fn_hertz) = ((r_mm * pen).sqrt(), 4.0 / 3.0 * e_star * r_mm.sqrt() * pen.powf(1.5));
+    // The nominal ellipse and load are Hertz's at PEN (the grid CONTACT's, 1.05 a either side).
+    let e = p.hertz();
+    assert!((e.a_mm / a_hertz - 1.0).abs() < 1e-9 && (e.b_mm / a_hertz - 1.0).abs() < 1e-9, "{e:?} vs {a_hertz}");
+    assert!((e.fn_n / fn_hertz - 1.0).abs() < 1e-9, "{e:?} vs {fn_hertz}");
+    assert!((p.grid.dx_mm / (2.1 * a_hertz / 40.0) - 1.0).abs() < 1e-9, "{:?}", p.grid);
+    // The FN the exact solver finds at that approach: Hertz's within the grid's accuracy (19
+    // elements per radius). Measured +1.9e-4.
+    let fn_n = h.column("fn_n").unwrap()[0];
+    println!("FN {fn_n} vs Hertz {fn_hertz}: {:+.2e}", fn_n / fn_hertz - 1.0);
+    assert!((fn_n / fn_hertz - 1.0).abs() < 2e-3, "FN {fn_n} vs Hertz {fn_hertz}");
+    assert_eq!(h.column("fx_over_fn").unwrap()[0], 0.0);
+}

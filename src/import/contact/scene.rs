@@ -226,6 +226,7 @@ fn group(cases: &[Case], statuses: &mut [CaseStatus]) -> Vec<History> {
                 Some(h) if open && h.run == Run::Sweep => {
                     let first = case3(cases, h.cases[0]);
                     setup_difference(&first.state, &c3.state, false).is_none()
+                        && first.digits.n == d.n
                         && (!falling(&c3.state) || slip_iteration(&first.state) == slip_iteration(&c3.state))
                         && statuses[h.cases[0]].supported() == statuses[k].supported()
                         && prescribed(first) == prescribed(c3)
@@ -288,10 +289,11 @@ fn group(cases: &[Case], statuses: &mut [CaseStatus]) -> Vec<History> {
                 statuses[k].refused.push(
                     "changes INISLP, OMGSLP within a transient history (supported: one start and damping of the slip-velocity iteration per history, [contact_solver] inislp, omgslp)".into(),
                 );
-            } else if hertz && prev.pen_or_fn != c3.state.pen_or_fn {
+            } else if hertz && (prev.pen_or_fn != c3.state.pen_or_fn || last.digits.n != d.n) {
+                let name = |n: u8| if n == 0 { "PEN" } else { "FN" };
                 statuses[k].refused.push(format!(
-                    "FN = {} after {}: a Hertzian geometry (IPOTCN < 0) under a load that changes within a transient history (supported: the geometry as a grid, IPOTCN > 0)",
-                    c3.state.pen_or_fn, prev.pen_or_fn
+                    "{} = {} after {} = {}: a Hertzian geometry (IPOTCN < 0) under a load or approach that changes within a transient history (CONTACT derives the curvatures or the grid from it anew; supported: one FN or one PEN per Hertzian history, or the geometry as a grid, IPOTCN > 0)",
+                    name(d.n), c3.state.pen_or_fn, name(last.digits.n), prev.pen_or_fn
                 ));
             }
             h.cases.push(k);
@@ -717,10 +719,22 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     let potcon = union_grid(cases, h).or_else(|| s.potcon.clone());
     let (mx, my) = potcon.as_ref().map_or((0, 0), Potcon::mx_my);
     let mut grid = vec![("mx", Value::Integer(mx as i64)), ("my", Value::Integer(my as i64))];
+    // N = 0 on a Hertzian contact: the nominal load is Hertz's at the first case's PEN.
+    let hertz_pen = (first.digits.n == 0).then_some(rows[0][3]);
+    let hertz_material = || {
+        let m = combine_bodies(s.poiss, s.gg_mpa);
+        crate::physics::Material::from_g(m.g_mpa, m.poisson)
+    };
     match &potcon {
         Some(Potcon::Hertz { ipotcn: -3, params, .. }) => {
             contact.extend([("a_mm", Value::Float(params[0])), ("b_mm", Value::Float(params[1]))]);
             grid.push(("scale", Value::Float(params[2])));
+            if let Some(pen) = hertz_pen {
+                // CONTACT (`hzcalc3d`, IPOTCN = −3, N = 0): AA, BB kept, the curvatures follow from
+                // PEN, so FN is Hertz's of that ellipse at that approach.
+                let e = crate::physics::HertzContact::with_approach(params[0], params[1], pen, &hertz_material());
+                contact[0] = ("fn_n", Value::Float(e.fn_n));
+            }
         }
         Some(Potcon::Hertz { ipotcn, params, .. }) => {
             // IPOTCN = −1: h = A1 x² + B1 y², as the radii R_wx = 1/(2 A1), R_wy = R_ry = 1/B1;
@@ -733,6 +747,15 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
                 ("r_ry_mm", Value::Float(ry)),
             ]);
             grid.push(("scale", Value::Float(params[2])));
+            if let Some(pen) = hertz_pen {
+                // CONTACT (`hzcalc3d`, N = 0): the curvatures kept, AA, BB (so the grid) follow from
+                // PEN: the nominal load is Hertz's at that approach.
+                let radii = crate::physics::Radii { r_wx_mm: rx, r_wy_mm: ry, r_ry_mm: ry };
+                let e = crate::physics::HertzContact::from_radii_and_approach(&radii, pen, &hertz_material()).map_err(
+                    |e| InputError::new(format!("{file}, case {}", numbers[0]), format!("PEN = {pen}"), e.to_string()),
+                )?;
+                contact[0] = ("fn_n", Value::Float(e.fn_n));
+            }
         }
         Some(Potcon::Grid { xl_mm, yl_mm, dx_mm, dy_mm, .. }) => {
             let x1 = upper_edge(*xl_mm, mx, *dx_mm);
@@ -778,6 +801,10 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
                 "a potential contact (D = 2 in a case before)",
             ))
         }
+    }
+    if h.run == Run::Sweep && first.digits.n == 0 {
+        // Steady cases (T = 0, 3) with N = 0: one PEN for the sweep (a setup of its own).
+        contact.push(("pen_mm", Value::Float(rows[0][3])));
     }
     doc.insert("contact".into(), table(contact));
     let m = combine_bodies(s.poiss, s.gg_mpa);
