@@ -17,6 +17,9 @@
 //! per element as IPOTCN = 1 with its grid and IBASE = 9, h per element in CONTACT's order.
 //! Signs: cx, cy, cs are CKSI, CETA, CPHI as they are (this project uses CONTACT's convention).
 //!
+//! Friction per grid row (`[friction] mu_rows`) is CONTACT's V = 3: FSTAT = FKIN = μ_j of every
+//! row after the first case's geometry, V = 3 with L = 1 after it, prescribed forces over FN.
+//!
 //! A falling friction law (`[friction]`) is given as CONTACT's L = 2, 3, 4 in the first case (FKIN,
 //! F1, SABSH1, F2, SABSH2 and MEMDST, MEM_S0) and kept (L = 1) afterwards, with the slip-velocity
 //! iteration's start (G = 4: INISLP, OMGSLP) and its progress printed (W = 2); a rolling speed that
@@ -92,10 +95,12 @@ pub fn module3_input(p: &Problem) -> String {
         let law = law_digit(&p.friction);
         // A row's own undeformed distance (IBASE = 1) is read again where it changes (Z = 2).
         let new_h = !first && s.h_coefficients.is_some() && s.h_coefficients != rows[n - 1].h_coefficients;
+        // V = 3: friction per grid row, in every case (CONTACT refuses a V that changes under L = 1).
+        let v = if p.friction_rows.is_some() { "3" } else { "" };
         let ldc = match (first, dq_again) {
-            (true, _) => format!("{law}22020"),
+            (true, _) => format!("{v}{law}22020"),
             (false, again) => format!(
-                "{}0{}0{}0",
+                "{v}{}0{}0{}0",
                 if read_mu { law } else { 1 },
                 if again { 2 } else { 0 },
                 if new_h { 2 } else { 0 }
@@ -117,8 +122,10 @@ pub fn module3_input(p: &Problem) -> String {
                 p.contact_solver.omgslp
             );
         }
-        // CONTACT's FXREL, FYREL: the force over FSTAT·FN, its sign flipped (fx = −FX/FN here).
-        let (x, y) = (s.fx_target.map_or(s.cx, |f| -f / s.mu), s.fy_target.map_or(s.cy, |f| -f / s.mu));
+        // CONTACT's FXREL, FYREL: the force over FSTAT·FN (over FN with V = 3, its muscal = 1),
+        // its sign flipped (fx = −FX/FN here).
+        let muscal = if p.friction_rows.is_some() { 1.0 } else { s.mu };
+        let (x, y) = (s.fx_target.map_or(s.cx, |f| -f / muscal), s.fy_target.map_or(s.cy, |f| -f / muscal));
         let names = [
             if s.pen_mm.is_some() { "PEN" } else { "FN" },
             if s.fx_target.is_some() { "FXREL" } else { "CKSI" },
@@ -126,11 +133,12 @@ pub fn module3_input(p: &Problem) -> String {
         ];
         let normal = s.pen_mm.unwrap_or(s.fn_n);
         let _ = writeln!(out, "  {normal:?}   {x:?}   {y:?}   {:?}        {}, CPHI", s.cs, names.join(", "));
-        if read_mu {
+        if read_mu && p.friction_rows.is_none() {
             friction_lines(p, s.mu, &mut out);
         }
         if first {
             geometry(p, (!shift).then_some(v_mm_s), load_varies, s.h_coefficients, &mut out);
+            row_friction_lines(p, &mut out);
         } else if dq_again {
             kinematics_and_material(p, Some(v_mm_s), &mut out);
         }
@@ -179,6 +187,13 @@ fn friction_lines(p: &Problem, mu: f64, out: &mut String) {
     );
     let m = &p.memory;
     let _ = writeln!(out, "  {:?}   {:?}                           MEMDST, MEM_S0", m.memory_mm, m.s0_mm_s);
+}
+
+/// V = 3: FSTAT, FKIN = μ_j of every grid row IY (after the geometry, as CONTACT reads them).
+fn row_friction_lines(p: &Problem, out: &mut String) {
+    for mu in p.friction_rows.iter().flat_map(|r| r.rows()) {
+        let _ = writeln!(out, "  {mu:?}   {mu:?}                            FSTAT, FKIN");
+    }
 }
 
 /// The kinematics (CHI, DQ, VELOC at the row's speed; `None`: a shift, which reads none) and

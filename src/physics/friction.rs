@@ -209,6 +209,50 @@ impl Default for Memory {
     }
 }
 
+/// Coulomb friction that varies per grid row (CONTACT's V = 3: one FSTAT per row IY, rows in
+/// increasing y; user guide sec. "Friction variation"): the bound of an element of row j is
+/// μ_j p. Solvers take it as the one coefficient μ_max on the bound pressure p μ_j/μ_max.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RowFriction {
+    mu: Vec<f64>,
+}
+
+impl RowFriction {
+    /// The coefficients of the rows, the first at the lowest y; `None` unless every one is
+    /// finite and positive and there is at least one.
+    pub fn new(mu: Vec<f64>) -> Option<RowFriction> {
+        (!mu.is_empty() && mu.iter().all(|m| m.is_finite() && *m > 0.0)).then_some(RowFriction { mu })
+    }
+
+    /// μ_j of every row, the first at the lowest y.
+    pub fn rows(&self) -> &[f64] {
+        &self.mu
+    }
+
+    /// The largest coefficient: the nominal μ (|F| ≤ Σ μ_j p ≤ μ_max FN).
+    pub fn mu_max(&self) -> f64 {
+        self.mu.iter().copied().fold(0.0, f64::max)
+    }
+
+    /// The bound pressure p_k μ_j/μ_max per element (flat order `k = j mx + i`) [MPa]: times
+    /// μ_max it is the row's bound μ_j p_k; where μ_j = μ_max it is p_k itself, bit for bit.
+    pub fn bound_pressure(&self, mx: usize, pn_mpa: &[f64]) -> Vec<f64> {
+        let top = self.mu_max();
+        pn_mpa
+            .iter()
+            .enumerate()
+            .map(|(k, &p)| {
+                let mu = self.mu[k / mx];
+                if mu == top {
+                    p
+                } else {
+                    p * (mu / top)
+                }
+            })
+            .collect()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -220,6 +264,22 @@ mod tests {
     /// The rational law of reference/contact_friction (RAT: FSTAT 0.45).
     fn rat() -> FrictionLaw {
         FrictionLaw::Rational(FallingTerms { fkin: 0.22, f1: 0.15, sabsh1_mm_s: 400.0, f2: 0.08, sabsh2_mm_s: 2500.0 })
+    }
+
+    #[test]
+    fn row_friction_scales_the_bound_pressure_per_row() {
+        assert!(RowFriction::new(vec![]).is_none());
+        assert!(RowFriction::new(vec![0.3, 0.0]).is_none());
+        assert!(RowFriction::new(vec![0.3, f64::NAN]).is_none());
+        let rows = RowFriction::new(vec![0.2, 0.4]).expect("positive");
+        assert_eq!(rows.mu_max(), 0.4);
+        // Two rows of two elements: row 0 at half the bound of row 1.
+        let pn = [1.0, 3.0, 5.0, 0.7];
+        assert_eq!(rows.bound_pressure(2, &pn), vec![0.5, 1.5, 5.0, 0.7]);
+        // All rows equal: the pressure itself, bit for bit.
+        let same = RowFriction::new(vec![0.3; 2]).expect("positive");
+        let pn = [0.1234567, 2.0 / 3.0, 0.0, 1e-300];
+        assert_eq!(same.bound_pressure(2, &pn), pn.to_vec());
     }
 
     #[test]

@@ -18,7 +18,7 @@ pub mod pressure;
 pub mod slip;
 
 pub use bound::project_to_bound;
-pub use friction::{FallingTerms, FrictionLaw, Memory};
+pub use friction::{FallingTerms, FrictionLaw, Memory, RowFriction};
 pub use geometry::{ContactGeometry, HertzEllipse, Planform};
 pub use grid::{Grid, LeadingEdge};
 pub use hertz::{HertzContact, Radii};

@@ -118,6 +118,8 @@ pub struct Problem {
     pub friction: FrictionLaw,
     /// The friction memory (none by default).
     pub memory: Memory,
+    /// Coulomb's μ per grid row (`[friction] mu_rows`, CONTACT V = 3); `None`: one μ.
+    pub friction_rows: Option<crate::physics::RowFriction>,
     /// The scene's nominal loading (contact.fn_n, contact.mu, the constant cy and cs).
     pub nominal: Sample,
     pub loading: Loading,
@@ -209,6 +211,7 @@ impl Problem {
             },
             friction: scene.friction,
             memory: scene.memory,
+            friction_rows: scene.friction_rows.clone(),
             nominal,
             loading,
             model: scene.model,

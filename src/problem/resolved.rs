@@ -24,6 +24,9 @@ pub struct ResolvedScene {
     /// The friction memory (absent: none).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub memory: Option<crate::physics::Memory>,
+    /// Coulomb's μ per grid row, the first at the lowest y (`[friction] mu_rows`; absent: one μ).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mu_rows: Option<Vec<f64>>,
     /// Hertz peak pressure 3FN/(2πab) [MPa].
     pub p0_mpa: f64,
     /// Peak of the simplified models' pressure (`model.pressure`) [MPa].
@@ -124,6 +127,7 @@ impl ResolvedScene {
             mu: p.nominal.mu,
             friction: p.friction.is_falling().then_some(p.friction),
             memory: p.memory.is_active().then_some(p.memory),
+            mu_rows: p.friction_rows.as_ref().map(|r| r.rows().to_vec()),
             p0_mpa: h.p0_mpa(),
             p_model_peak_mpa: p.model.pressure.peak_mpa(h.fn_n, h.a_mm, h.b_mm),
             g_mpa: p.material.g_mpa,

@@ -293,6 +293,8 @@ pub struct Scene {
     pub friction: crate::physics::FrictionLaw,
     /// The friction memory (`[friction] memory_mm`; none when absent).
     pub memory: crate::physics::Memory,
+    /// Coulomb's μ per grid row (`[friction] mu_rows`; `mu` is their largest).
+    pub friction_rows: Option<crate::physics::RowFriction>,
     pub material: MaterialSpec,
     pub mx: usize,
     pub my: usize,
@@ -395,7 +397,7 @@ impl Scene {
             None => None,
         };
         let contact = sections::contact(&mut top, element_geometry)?;
-        let friction = sections::friction(&mut top, contact.mu)?;
+        let friction = sections::friction(&mut top, contact.mu, grid.my)?;
         let material = sections::material(&mut top)?;
         let (v_mm_s, courant, motion, chi_deg) = sections::rolling(&mut top)?;
         let loading = sections::creepage(&mut top, dir)?;
@@ -415,6 +417,7 @@ impl Scene {
             mu: friction.mu_static,
             friction: friction.law,
             memory: friction.memory,
+            friction_rows: friction.rows,
             material,
             mx: grid.mx,
             my: grid.my,
@@ -505,6 +508,13 @@ impl Scene {
                     format!("creepage.file ({})", file.display()),
                     "a column mu",
                     "no mu column with a falling [friction] law (the law gives mu)",
+                ));
+            }
+            if rows.mu.is_some() && self.friction_rows.is_some() {
+                return Err(InputError::new(
+                    format!("creepage.file ({})", file.display()),
+                    "a column mu",
+                    "no mu column with [friction] mu_rows (the rows give mu)",
                 ));
             }
         }

@@ -12,7 +12,7 @@ use crate::error::InputError;
 use crate::physics::geometry::{Extent, GeometrySpec};
 use crate::physics::{
     CoefficientSource, FallingTerms, FlexibilityModel, FrictionLaw, LeadingEdge, Memory, PatchFlexibility,
-    PressureShape, Radii,
+    PressureShape, Radii, RowFriction,
 };
 use std::path::Path;
 
@@ -39,6 +39,8 @@ pub struct FrictionSpec {
     pub law: FrictionLaw,
     pub memory: Memory,
     pub mu_static: f64,
+    /// Coulomb's μ per grid row (`[friction] mu_rows`, CONTACT V = 3); `mu_static` is their largest.
+    pub rows: Option<RowFriction>,
 }
 
 /// The loading: the creepage history and the constant lateral and spin creepages.
@@ -150,8 +152,9 @@ pub fn contact(top: &mut Section, element_geometry: Option<GeometrySpec>) -> Res
 const MU_STATIC_REL: f64 = 1e-12;
 
 /// `[friction]` (optional): the law and its parameters (CONTACT's names), the memory; `mu` is
-/// `contact.mu` as given (required by Coulomb's law; a falling law's static value FKIN + F1 + F2).
-pub fn friction(top: &mut Section, mu: Option<f64>) -> Result<FrictionSpec, InputError> {
+/// `contact.mu` as given (required by Coulomb's law; a falling law's static value FKIN + F1 + F2);
+/// Coulomb's law may give μ per grid row instead (`mu_rows`, `my` values).
+pub fn friction(top: &mut Section, mu: Option<f64>, my: usize) -> Result<FrictionSpec, InputError> {
     let Some(mut f) = top.opt_table("friction")? else {
         return coulomb(mu, Memory::NONE);
     };
@@ -162,9 +165,22 @@ pub fn friction(top: &mut Section, mu: Option<f64>) -> Result<FrictionSpec, Inpu
         for key in ["fkin", "f1", "sabsh1_mm_s", "f2", "sabsh2_mm_s", "memory_mm", "memory_s0_mm_s"] {
             f.refuse(key, "only with a falling law (law = \"linear\", \"rational\" or \"exponential\")")?;
         }
+        let rows = mu_rows(&mut f, mu, my)?;
         f.finish()?;
-        return coulomb(mu, Memory::NONE);
+        return match rows {
+            Some(rows) => {
+                let mu_static = rows.mu_max();
+                Ok(FrictionSpec {
+                    law: FrictionLaw::Coulomb { mu: mu_static },
+                    memory: Memory::NONE,
+                    mu_static,
+                    rows: Some(rows),
+                })
+            }
+            None => coulomb(mu, Memory::NONE),
+        };
     }
+    f.refuse("mu_rows", "only with law = \"coulomb\" (a falling law is one for the whole contact)")?;
     let terms = FallingTerms {
         fkin: f.f64("fkin", coefficient)?,
         f1: f.f64("f1", coefficient)?,
@@ -207,7 +223,30 @@ pub fn friction(top: &mut Section, mu: Option<f64>) -> Result<FrictionSpec, Inpu
             ));
         }
     }
-    Ok(FrictionSpec { law, memory, mu_static })
+    Ok(FrictionSpec { law, memory, mu_static, rows: None })
+}
+
+/// `[friction] mu_rows` (Coulomb only): μ of every grid row, `my` values in (0, 1000], the first
+/// at the lowest y (CONTACT's V = 3, FSTAT per row IY); `contact.mu` is then left out.
+fn mu_rows(f: &mut Section, mu: Option<f64>, my: usize) -> Result<Option<RowFriction>, InputError> {
+    let Some(list) = f.opt_f64_list("mu_rows", Range::new(0.0, false, 1e3, true), MAX_ELEMENTS_PER_AXIS)? else {
+        return Ok(None);
+    };
+    if list.len() != my {
+        return Err(InputError::new(
+            f.field("mu_rows"),
+            format!("{} values", list.len()),
+            format!("one coefficient per grid row: grid.my = {my} values, the first at the lowest y"),
+        ));
+    }
+    if let Some(given) = mu {
+        return Err(InputError::new(
+            "contact.mu",
+            given,
+            "left out with [friction] mu_rows (the rows give the friction; the nominal mu is their largest)",
+        ));
+    }
+    Ok(RowFriction::new(list))
 }
 
 /// Coulomb's law with `contact.mu` (required).
@@ -215,7 +254,7 @@ fn coulomb(mu: Option<f64>, memory: Memory) -> Result<FrictionSpec, InputError> 
     let mu = mu.ok_or_else(|| {
         InputError::new("contact.mu", "missing", "a coefficient of friction in (0, 1000] (or a falling [friction] law)")
     })?;
-    Ok(FrictionSpec { law: FrictionLaw::Coulomb { mu }, memory, mu_static: mu })
+    Ok(FrictionSpec { law: FrictionLaw::Coulomb { mu }, memory, mu_static: mu, rows: None })
 }
 
 /// `[contact]` semi-axes `a_mm, b_mm`, or the radii `r_wx_mm, r_wy_mm, r_ry_mm` (not both).

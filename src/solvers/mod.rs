@@ -121,7 +121,26 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
             "built-in models that solve each row's normal problem (an external model is given FN and the scene's geometry)",
         ));
     }
+    if let Some(name) =
+        problem.solvers.iter().find(|s| builtin(s).is_none()).filter(|_| problem.friction_rows.is_some())
+    {
+        return Err(InputError::new(
+            "solvers",
+            format!("{name:?} (an external model) with [friction] mu_rows"),
+            format!(
+                "models that take a friction per grid row: {} (an external model is given one mu)",
+                FRICTION_ROWS.join(", ")
+            ),
+        ));
+    }
     problem.solvers.iter().filter_map(|s| builtin(s)).try_for_each(|m| {
+        if problem.friction_rows.is_some() && !FRICTION_ROWS.contains(&m.name) {
+            return Err(InputError::new(
+                "solvers",
+                format!("{:?} with [friction] mu_rows", m.name),
+                format!("models that take a friction per grid row: {} (leave {} out of this scene: it takes one mu for the whole contact)", FRICTION_ROWS.join(", "), m.name),
+            ));
+        }
         if problem.friction.is_falling() && !FALLING_FRICTION.contains(&m.name) {
             return Err(InputError::new(
                 "solvers",
@@ -163,6 +182,11 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
         (m.check)(problem)
     })
 }
+
+/// The built-in models that take Coulomb's μ per grid row (`[friction] mu_rows`, CONTACT V = 3):
+/// the exact solver's bound μ_j p per element. The simplified models take one μ (their
+/// flexibilities, strips and closed forms are written for it).
+const FRICTION_ROWS: [&str; 1] = [contact::NAME];
 
 /// The built-in models that take CHI = 180° (rolling along -x; CONTACT `m_sdis.f90`).
 const BACKWARD_ROLLING: [&str; 1] = [contact::NAME];

@@ -304,10 +304,20 @@ impl CaseReader<'_> {
         let (k, _) = self.lx.group("kinematics PEN/FN, CKSI/FX, CETA/FY, CPHI", &[Kind::Real; 4], (2, Kind::Real))?;
         (state.pen_or_fn, state.cksi_or_fx, state.ceta_or_fy, state.cphi_per_mm) = (k[0], k[1], k[2], k[3]);
         state.spin_centre_mm = if k.len() >= 6 { [k[4], k[5]] } else { [0.0, 0.0] };
+        if d.l == 1 && (d.v == 3) != !state.friction_rows.is_empty() {
+            // CONTACT (`m_sinput.f90`): switching V on or off needs new friction parameters.
+            let allowed =
+                "the previous case's V when L = 1 keeps its friction (V changes only with new friction, L != 1)";
+            return Err(self.digit_error("L-D-C-M-Z-E", "V", d.v.into(), allowed));
+        }
         if d.l != 1 {
             state.friction_law = d.l;
             state.friction_rows.clear();
             state.memory = [0.0; 2];
+            if d.v == 3 {
+                // One set per grid row follows the geometry; no single set is in force.
+                state.friction.clear();
+            }
             if d.v == 0 {
                 state.friction = self.friction_values(d.l)?;
                 if matches!(d.l, 2..=4 | 6) {

@@ -83,11 +83,18 @@ pub const FEATURES: &[Feature] = &[
         used: |c| digit("S", c.digits.s, c.digits.s != 0),
     },
     Feature {
+        name: "friction varying per grid row with a law other than Coulomb's",
+        control: "V, L",
+        supported: false,
+        reason: "supported: V = 3 with Coulomb friction (L = 0), V = 0 with every supported law",
+        used: |c| (c.digits.v == 3 && c.state.friction_law != 0).then(|| format!("V = 3, L = {}", c.state.friction_law)),
+    },
+    Feature {
         name: "friction varying per grid row",
         control: "V",
-        supported: false,
-        reason: "supported: V = 0 (one friction for the whole contact)",
-        used: |c| digit("V", c.digits.v, c.digits.v != 0),
+        supported: true,
+        reason: "imported as `[friction] law = \"coulomb\"` with `mu_rows`, the FSTAT of every row IY (CONTACT's one Coulomb coefficient), the nominal mu their largest; prescribed forces are over FN, not FSTAT FN (CONTACT's muscal = 1 with V = 3); the exact solver only",
+        used: |c| digit("V", c.digits.v, c.digits.v == 3 && c.state.friction_law == 0),
     },
     Feature {
         name: "friction laws other than Coulomb's and the falling laws",

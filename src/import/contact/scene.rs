@@ -178,7 +178,7 @@ fn falling(s: &State) -> bool {
 /// FN and a Coulomb friction), named. A falling law and its memory are one for the whole history.
 fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static str> {
     let coulomb = a.friction_law == 0 && b.friction_law == 0;
-    let pairs: [(&'static str, bool); 10] = [
+    let pairs: [(&'static str, bool); 11] = [
         ("FN", load_varies || a.pen_or_fn == b.pen_or_fn),
         // Coulomb: FSTAT alone counts (CONTACT overwrites FKIN with it).
         (
@@ -188,6 +188,7 @@ fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static 
                 || (coulomb && a.friction.first() == b.friction.first()),
         ),
         ("MEMDST, MEM_S0", a.memory == b.memory),
+        ("FSTAT, FKIN per grid row (V = 3)", a.friction_rows == b.friction_rows),
         ("CHI, DQ", (a.chi_rad, a.dq_mm) == (b.chi_rad, b.dq_mm)),
         ("POISS, GG", (a.poiss, a.gg_mpa) == (b.poiss, b.gg_mpa)),
         (
@@ -497,20 +498,31 @@ pub fn force_ratio(relative: f64, fstat: f64) -> f64 {
 /// [`prescribed`], converted by [`force_ratio`]).
 fn row(c: &Case3) -> [f64; 5] {
     let s = &c.state;
-    let mu = match (s.friction_law, s.friction.as_slice()) {
+    let per_row = row_mu(s);
+    let mu = match (s.friction_law, s.friction.as_slice(), &per_row) {
+        // V = 3: the scene's nominal μ is the rows' largest ([friction] mu_rows).
+        (_, _, Some(rows)) => rows.iter().copied().fold(0.0, f64::max),
         // FSTAT = μ_s(0) = FKIN + F1 + F2 (`m_friclaw.f90` lines 303-305), as `FrictionLaw::mu_static`.
-        (2..=4, [fkin, f1, _, f2, _]) => fkin + f1 + f2,
+        (2..=4, [fkin, f1, _, f2, _], None) => fkin + f1 + f2,
         // Coulomb (L = 0): FSTAT, CONTACT's one coefficient (`fric_update`: fkin := fstat).
         _ => s.friction.first().copied().unwrap_or(f64::NAN),
     };
     if c.digits.t == 0 {
         return [0.0, 0.0, 0.0, s.pen_or_fn, mu];
     }
-    // FSTAT is μ: Coulomb's one coefficient, a falling law's μ at zero slip.
+    // FSTAT is μ: Coulomb's one coefficient, a falling law's μ at zero slip. With V = 3 CONTACT
+    // scales the forces by 1, not FSTAT (`m_sinput.f90`: muscal = 1 unless V = 0, 2).
+    let scale = if per_row.is_some() { 1.0 } else { mu };
     let [fx, fy] = prescribed(c);
-    let x = if fx { force_ratio(s.cksi_or_fx, mu) } else { s.cksi_or_fx };
-    let y = if fy { force_ratio(s.ceta_or_fy, mu) } else { s.ceta_or_fy };
+    let x = if fx { force_ratio(s.cksi_or_fx, scale) } else { s.cksi_or_fx };
+    let y = if fy { force_ratio(s.ceta_or_fy, scale) } else { s.ceta_or_fy };
     [x, y, s.cphi_per_mm, s.pen_or_fn, mu]
+}
+
+/// Coulomb's μ per grid row of a case with V = 3 (L = 0: FSTAT of each row IY, CONTACT's one
+/// coefficient as with V = 0), the first at the lowest y; `None` for one friction (V = 0).
+fn row_mu(s: &State) -> Option<Vec<f64>> {
+    (!s.friction_rows.is_empty() && s.friction_law == 0).then(|| s.friction_rows.chunks(2).map(|r| r[0]).collect())
 }
 
 /// The speeds (VELOC) of a history's cases where they change within it.
@@ -710,11 +722,15 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     doc.insert("solvers".into(), Value::Array(vec![Value::String("contact".into())]));
     // The contact, its geometry and grid.
     let mut contact = vec![("fn_n", Value::Float(rows[0][3]))];
-    match friction_table(s) {
-        Some(f) => {
+    match (friction_table(s), row_mu(s)) {
+        (Some(f), _) => {
             doc.insert("friction".into(), f);
         }
-        None => contact.push(("mu", Value::Float(rows[0][4]))),
+        (None, Some(per_row)) => {
+            let f = table(vec![("law", Value::String("coulomb".into())), ("mu_rows", floats(&per_row))]);
+            doc.insert("friction".into(), f);
+        }
+        (None, None) => contact.push(("mu", Value::Float(rows[0][4]))),
     }
     let potcon = union_grid(cases, h).or_else(|| s.potcon.clone());
     let (mx, my) = potcon.as_ref().map_or((0, 0), Potcon::mx_my);

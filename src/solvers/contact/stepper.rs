@@ -102,6 +102,9 @@ struct Loaded {
     /// The total normal force [N]: the sample's, or found for its approach.
     fn_n: f64,
     pn: Vec<f64>,
+    /// With μ per grid row, the tangential solvers' bound pressure p μ_j/μ_max
+    /// ([`crate::physics::RowFriction::bound_pressure`]); `None`: `pn` itself.
+    bound_pn: Option<Vec<f64>>,
     pn_sum: f64,
     pn_max: f64,
     /// Kalker's linear d(fx/FN)/d(cx), d(fy/FN)/d(cy) at this load (shifts: Mindlin's per mm):
@@ -415,10 +418,14 @@ impl Stepper for Contact<'_> {
         if pn_sum <= 0.0 {
             return Err(ContactRunError::NoContact { mx: p.grid.mx, my: p.grid.my, fn_n }.into());
         }
+        // μ per grid row: every solve takes μ_max on the pressure scaled per row (rows keep their
+        // place under the mirror of CHI = 180°, which flips x only).
+        let bound_pn = p.friction_rows.as_ref().map(|rows| rows.bound_pressure(p.grid.mx, &pn_mpa));
         let solvers =
             std::iter::once(&mut self.tangential).chain(self.steady_dx.as_mut()).chain(self.shift_start.as_mut());
         for solver in solvers {
-            solver.set_pressure(&pn_mpa).map_err(|source| ContactRunError::Setup { fn_n, source })?;
+            let bound = bound_pn.as_deref().unwrap_or(&pn_mpa);
+            solver.set_pressure(bound).map_err(|source| ContactRunError::Setup { fn_n, source })?;
         }
         let pn_max = pn_mpa.iter().fold(0.0f64, |a, &b| a.max(b));
         // A row's own undeformed distance: the equivalent ellipse of its pressure (as the geometry's).
@@ -437,7 +444,7 @@ impl Stepper for Contact<'_> {
         if self.loaded.is_some() && p.rolling.motion == Motion::Shift {
             self.outer.from_rest();
         }
-        self.loaded = Some(Loaded { key, fn_n, pn: pn_mpa, pn_sum, pn_max, slope, shift_slope });
+        self.loaded = Some(Loaded { key, fn_n, pn: pn_mpa, bound_pn, pn_sum, pn_max, slope, shift_slope });
         self.older = None;
         Ok(())
     }
@@ -495,7 +502,8 @@ impl Stepper for Contact<'_> {
         if let (Some(start), Some(steady), SteadyRestart::Contact) =
             (start, &self.last, self.p.contact_solver.steady_restart)
         {
-            let pn = &self.loaded.as_ref().expect("the sample loop loads before it solves").pn;
+            let l = self.loaded.as_ref().expect("the sample loop loads before it solves");
+            let pn = l.bound_pn.as_ref().unwrap_or(&l.pn);
             let tangential = &mut self.tangential;
             let slip_at =
                 |px: &[f64], py: &[f64]| tangential.transient_slip(&params, (&steady.px, &steady.py), (px, py));
