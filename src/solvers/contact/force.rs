@@ -19,6 +19,13 @@ pub const MAX_OUTER: usize = 60;
 /// Most halvings of one Broyden step.
 const MAX_HALVINGS: usize = 4;
 
+/// The largest change of a creepage in one Broyden step, in units of μ/slope (the creepage at
+/// which Kalker's linear theory reaches full slip): near saturation the force hardly moves with
+/// the creepage and a Newton step from there (or a Jacobian kept from such a point) would leap
+/// far beyond any solution; a trust region of this size walks there instead, doubled after each
+/// step it shortened that was taken whole (a far solution is reached in logarithmically many).
+const STEP_CAP: f64 = 2.0;
+
 /// The forces prescribed, per FN (`None`: that creepage is given).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Targets {
@@ -99,8 +106,9 @@ impl Memory {
 /// Find the creepages giving `targets`. `given` holds the creepages (cx, cy) of the directions
 /// not prescribed; `slope` Kalker's linear d(f)/d(c) per direction (> 0); `eval(cx, cy)` solves
 /// the tangential problem and gives its result with the force ratios reached. Starts from the
-/// last sample's creepages and Jacobian (`memory`), else from the linear theory's; a Broyden step
-/// that does not shrink the error after a few halvings has its Jacobian remade by differences.
+/// last sample's creepages and Jacobian (`memory`), else from the linear theory's; each step is
+/// kept within [`STEP_CAP`] μ/slope per creepage; a Broyden step that does not shrink the error
+/// after a few halvings has its Jacobian remade by differences.
 pub fn solve<R>(
     targets: Targets,
     given: [f64; 2],
@@ -137,9 +145,12 @@ pub fn solve<R>(
     };
     let (mut result, mut f, mut r) = at(&u, &mut solves)?;
     let mut remade = false;
+    let mut cap: Vec<f64> = dirs.iter().map(|&i| STEP_CAP * mu / slope[i]).collect();
     while norm(&r) > tol && solves < MAX_OUTER {
         let step = solve_linear(&jac, &r, n).unwrap_or_else(|| vec![0.0; n]);
-        let mut lambda = 1.0;
+        // The whole step shortened to the trust region (its direction kept).
+        let capped = step.iter().zip(&cap).fold(1.0f64, |l, (s, c)| if s.abs() > *c { l.min(c / s.abs()) } else { l });
+        let mut lambda = capped;
         let mut best = None;
         for _ in 0..=MAX_HALVINGS {
             let u_new: Vec<f64> = u.iter().zip(&step).map(|(a, s)| a - lambda * s).collect();
@@ -159,6 +170,9 @@ pub fn solve<R>(
             Some((u_new, out)) => {
                 (u, result, f, r) = (u_new, out.0, out.1, out.2);
                 remade = false;
+                if capped < 1.0 && lambda == capped {
+                    cap.iter_mut().for_each(|c| *c *= 2.0);
+                }
             }
             None if !remade && solves + n < MAX_OUTER => {
                 jac = differences(&u, &r, &mut |v: &[f64]| at(v, &mut solves).map(|o| o.2))?;
@@ -273,6 +287,26 @@ mod tests {
         assert!(!found.met);
         assert_eq!(found.reached[0], 0.1);
         assert!(found.solves <= MAX_OUTER);
+    }
+
+    /// Steady points in any order, each starting from the last one's creepage and Jacobian: a
+    /// near-saturated point (slope ~1e-3 of the linear one) followed by a small force, the
+    /// opposite saturation and back, on a law approaching μ as 1/c (as rolling contact does).
+    #[test]
+    fn far_targets_after_a_saturated_point_are_reached() {
+        let (mu, slope) = (0.33, 200.0);
+        let law = |cx: f64| {
+            let w = slope * cx / mu;
+            mu * w / (1.0 + w.abs())
+        };
+        let mut memory = Memory::default();
+        for target in [0.98 * mu, 0.001, -0.99 * mu, 0.5 * mu, 0.999 * mu, 0.0] {
+            let t = Targets { fx: Some(target), fy: None };
+            let found =
+                solve(t, [0.0, 0.0], [slope, slope], mu, &mut memory, |cx, _| Ok(((), [law(cx), 0.0]))).unwrap();
+            assert!(found.met, "target {target}: {found:?}");
+            assert!((law(found.cx) - target).abs() <= FORCE_TOL * mu, "target {target}: {found:?}");
+        }
     }
 
     /// F = 1: only cx is sought; cy stays as given.
