@@ -1,7 +1,9 @@
 //! Issue 32 item 3: the normal problem with the approach prescribed (CONTACT N = 0, PEN), a
 //! creepage table's `pen_mm` column in place of `fn_n`. The exact solver finds FN (the history's
 //! `fn_n`); references: Hertz's closed form for a circle, δ = 3 FN / (4 a E*) with a ∝ FN^(1/3)
-//! (Johnson 1985, eq. 4.23), and the solver's own FN-prescribed twin.
+//! (Johnson 1985, eq. 4.23), and the solver's own FN-prescribed twin. Steady cases and Hertzian
+//! contacts (`[contact] pen_mm`, the importer's N = 0 with IPOTCN = −1..−3): CONTACT's printed
+//! output of a steady Hertzian case by approach (`contact_nonhz`) and Hertz's closed form.
 
 use crate::common::*;
 use creepbench::history::History;
