@@ -1,7 +1,9 @@
 //! Issue 32 item 3: the normal problem with the approach prescribed (CONTACT N = 0, PEN), a
 //! creepage table's `pen_mm` column in place of `fn_n`. The exact solver finds FN (the history's
 //! `fn_n`); references: Hertz's closed form for a circle, δ = 3 FN / (4 a E*) with a ∝ FN^(1/3)
-//! (Johnson 1985, eq. 4.23), and the solver's own FN-prescribed twin.
+//! (Johnson 1985, eq. 4.23), and the solver's own FN-prescribed twin. Steady cases and Hertzian
+//! contacts (`[contact] pen_mm`, the importer's N = 0 with IPOTCN = −1..−3): CONTACT's printed
+//! output of a steady Hertzian case by approach (`contact_nonhz`) and Hertz's closed form.
 
 use crate::common::*;
 use creepbench::history::History;
@@ -314,4 +316,95 @@ fn a_hertzian_approach_gives_hertzs_load_and_ellipse() {
     println!("FN {fn_n} vs Hertz {fn_hertz}: {:+.2e}", fn_n / fn_hertz - 1.0);
     assert!((fn_n / fn_hertz - 1.0).abs() < 2e-3, "FN {fn_n} vs Hertz {fn_hertz}");
     assert_eq!(h.column("fx_over_fn").unwrap()[0], 0.0);
+}
+
+/// The Hertzian contact of [`NONHZ_CASE_1`] (IPOTCN = −3) at PEN = 0.05 mm, rolling without spin:
+/// a steady case, then transient cases continuing it at the approaches `pens` (P = 0, T = 2,
+/// D = 0: the geometry kept).
+fn hertz_history_deck(pens: &[f64]) -> String {
+    let mut deck = String::from(
+        " 3  MODULE
+  203000      P-B-T-N-F-S
+  022020      L-D-C-M-Z-E
+ 0100340      H-G-I-A-O-W-R
+ 0.05  0.001  0.0  0.0        PEN, CKSI, CETA, CPHI
+ 0.3  0.3                     FSTAT, FKIN
+ 0.0  0.5  24000.             CHI, DQ, VELOC
+ 0.28 0.28 82000. 82000.      POISS, GG
+ -3
+ 21  33  4.25  7.0  1.2352941176470589
+",
+    );
+    for (k, pen) in pens.iter().enumerate() {
+        let r = if k + 1 == pens.len() { 1 } else { 0 };
+        deck.push_str(&format!("  002000\n  100000\n 010034{r}\n {pen:?}  0.002  0.0  0.0\n"));
+    }
+    deck.push_str(" 0  MODULE\n");
+    deck
+}
+
+#[test]
+fn a_hertzian_history_at_one_approach_is_one_scene_and_a_changing_one_is_refused() {
+    let runs = import_and_run("hertz_history_pen", &hertz_history_deck(&[0.05, 0.05]));
+    assert_eq!(runs.len(), 1);
+    let (p, h) = &runs[0];
+    assert_eq!(p.loading.rows().count(), 3);
+    assert!(p.loading.rows().all(|s| s.pen_mm == Some(0.05)));
+    // The normal problem at that approach is CONTACT's steady case's: FN = 42083.1 as its log
+    // prints (the creepages do not enter it), in every row.
+    let fn_n = h.column("fn_n").unwrap();
+    println!("FN {fn_n:?}");
+    assert!(fn_n.iter().all(|&f| f == fn_n[0]) && half_units(fn_n[0], 42083.1, 0.05) <= 1.0, "{fn_n:?}");
+    // A changing approach would make CONTACT derive the curvatures anew: the case is refused.
+    let deck = hertz_history_deck(&[0.05, 0.06]);
+    let imported = creepbench::import::contact::scene::import_text("h.inp", "h", &deck).unwrap();
+    let refused = &imported.statuses[2].refused;
+    assert!(
+        refused.iter().any(|r| r.starts_with("PEN = 0.06 after PEN = 0.05: a Hertzian geometry (IPOTCN < 0)")),
+        "{refused:?}"
+    );
+    assert_eq!(imported.scenes.len(), 1);
+    assert_eq!(imported.scenes[0].cases, [1, 2]);
+}
+
+/// Steady rolling (T = 3) at two creepages with the approach prescribed on a grid (IPOTCN = 1,
+/// IBASE = 1: the sphere h = (x² + y²)/(2 R), R = 250 mm, on 40 x 40 elements of 0.175 mm).
+const GRID_SWEEP: &str = " 3  MODULE
+  203000      P-B-T-N-F-S
+  022020      L-D-C-M-Z-E
+ 0100340      H-G-I-A-O-W-R
+ 0.04  0.001  0.0  0.0        PEN, CKSI, CETA, CPHI
+ 0.3  0.3                     FSTAT, FKIN
+ 0.0  0.175  10000.           CHI, DQ, VELOC
+ 0.28 0.28 82000. 82000.      POISS, GG
+ 1
+ 40  40  -3.5  -3.5  0.175  0.175
+ 1  1                         IBASE, IPLAN
+ 0.002  0.0  0.002  0.0  0.0  0.0
+  3000        P-B-T-N-F-S
+  100000      L-D-C-M-Z-E
+ 0100341      H-G-I-A-O-W-R
+ 0.04  0.002  0.0  0.0
+ 0  MODULE
+";
+
+#[test]
+fn a_steady_sweep_with_the_approach_prescribed_on_a_grid_finds_hertzs_load() {
+    let runs = import_and_run("grid_sweep_pen", GRID_SWEEP);
+    assert_eq!(runs.len(), 1);
+    let (p, h) = &runs[0];
+    // One sweep at the one approach (`[contact] pen_mm`).
+    assert_eq!(p.loading.samples.len(), 2);
+    assert!(p.loading.samples.iter().all(|s| s.pen_mm == Some(0.04)));
+    let fn_n = h.column("fn_n").unwrap();
+    let (r_mm, pen) = (250.0f64, 0.04f64);
+    let fn_hertz = 4.0 / 3.0 * 82000.0 / (1.0 - 0.28) * r_mm.sqrt() * pen.powf(1.5);
+    println!("FN {fn_n:?} vs Hertz {fn_hertz}: {:+.2e}", fn_n[0] / fn_hertz - 1.0);
+    // Both points at the one approach, Hertz's load within the grid's accuracy (18 elements per
+    // radius). Measured +2.4e-4.
+    assert_eq!(fn_n[0], fn_n[1]);
+    assert!((fn_n[0] / fn_hertz - 1.0).abs() < 2e-3, "FN {fn_n:?} vs Hertz {fn_hertz}");
+    // Rolling at twice the creepage, more force (both in partial slip below mu).
+    let fx = h.column("fx_over_fn").unwrap();
+    assert!(fx[0] > 0.0 && fx[1] > fx[0] && fx[1] < 0.3, "{fx:?}");
 }

@@ -368,10 +368,15 @@ fn testbank_imports_two_cases_and_names_every_other_with_its_reason() {
     let imported = import_deck("testbank.inp");
     let (ok, no) = split(&imported);
     // 1: a Cattaneo shift with the approach prescribed (N = 0); 10: a Cattaneo shift under FX, FY
-    // (case 11 that continues it is N = 0 with F = 2, not verified); 17: transient rolling from
-    // rest under FX; 8: steady rolling with friction per grid row (V = 3).
-    assert_eq!(ok, vec![1, 6, 7, 8, 10, 17]);
-    assert!(imported.statuses[10].refused.iter().any(|r| r.starts_with("N = 0, F = 2")), "{:?}", imported.statuses[10]);
+    // and 11 that continues it with the approach prescribed (N = 0, F = 2: one scene); 17:
+    // transient rolling from rest under FX; 8: steady rolling with friction per grid row (V = 3).
+    assert_eq!(ok, vec![1, 6, 7, 8, 10, 11, 17]);
+    assert_eq!(imported.statuses[10].scene.as_deref(), Some("testbank_10"), "{:?}", imported.statuses[10]);
+    assert!(
+        imported.statuses[10].notes.iter().any(|r| r.starts_with("N = 0: approach prescribed")),
+        "{:?}",
+        imported.statuses[10]
+    );
     // 14, 15 continue case 13, a shift with B = 2.
     assert!(imported.statuses[13].refused.iter().any(|r| r.contains("holds case 13")), "{:?}", imported.statuses[13]);
     assert_eq!(ok.len() + no.len(), imported.statuses.len());
