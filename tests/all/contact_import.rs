@@ -369,8 +369,15 @@ fn testbank_imports_two_cases_and_names_every_other_with_its_reason() {
     let (ok, no) = split(&imported);
     // 1: a Cattaneo shift with the approach prescribed (N = 0); 10: a Cattaneo shift under FX, FY
     // (case 11 that continues it is N = 0 with F = 2, not verified); 17: transient rolling from
-    // rest under FX; 8: steady rolling with friction per grid row (V = 3).
-    assert_eq!(ok, vec![1, 6, 7, 8, 10, 17]);
+    // rest under FX; 8: steady rolling with friction per grid row (V = 3); 2: case 1 with C = 3.
+    assert_eq!(ok, vec![1, 2, 6, 7, 8, 10, 17]);
+    // 2: case 1 with the influence functions of bilinear tractions (C = 3).
+    let s2 = imported.scenes.iter().find(|s| s.cases == [2, 2]).expect("case 2");
+    assert!(s2.files[0].1.contains("[contact_solver]\ninfluence = \"bilinear\"\n"), "{}", s2.files[0].1);
+    let s1 = imported.scenes.iter().find(|s| s.cases == [1, 1]).expect("case 1");
+    assert!(!s1.files[0].1.contains("influence"), "{}", s1.files[0].1);
+    // 5: C = 3 is carried, its dissimilar materials are not.
+    assert!(imported.statuses[4].refused.iter().all(|r| !r.starts_with("C = ")), "{:?}", imported.statuses[4]);
     assert!(imported.statuses[10].refused.iter().any(|r| r.starts_with("N = 0, F = 2")), "{:?}", imported.statuses[10]);
     // 14, 15 continue case 13, a shift with B = 2.
     assert!(imported.statuses[13].refused.iter().any(|r| r.contains("holds case 13")), "{:?}", imported.statuses[13]);
