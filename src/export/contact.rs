@@ -17,6 +17,9 @@
 //! per element as IPOTCN = 1 with its grid and IBASE = 9, h per element in CONTACT's order.
 //! Signs: cx, cy, cs are CKSI, CETA, CPHI as they are (this project uses CONTACT's convention).
 //!
+//! The influence functions of bilinear tractions (`[contact_solver] influence = "bilinear"`) are
+//! CONTACT's C = 3 wherever C is given (C = 2 otherwise).
+//!
 //! Friction per grid row (`[friction] mu_rows`) is CONTACT's V = 3: FSTAT = FKIN = μ_j of every
 //! row after the first case's geometry, V = 3 with L = 1 after it, prescribed forces over FN.
 //!
@@ -27,6 +30,7 @@
 //! VELOC and the material again), as reference/contact_friction/README.contact_friction.md forms
 //! its histories.
 
+use crate::physics::halfspace::influence::Basis;
 use crate::physics::FrictionLaw;
 use crate::problem::{LoadingKind, Problem, Sample};
 use crate::scene::{InitialSlip, Motion};
@@ -97,12 +101,14 @@ pub fn module3_input(p: &Problem) -> String {
         let new_h = !first && s.h_coefficients.is_some() && s.h_coefficients != rows[n - 1].h_coefficients;
         // V = 3: friction per grid row, in every case (CONTACT refuses a V that changes under L = 1).
         let v = if p.friction_rows.is_some() { "3" } else { "" };
+        // C = 2: uniform elements, C = 3: bilinear tractions (`[contact_solver] influence`).
+        let c = if p.contact_solver.influence == Basis::Bilinear { 3 } else { 2 };
         let ldc = match (first, dq_again) {
-            (true, _) => format!("{v}{law}22020"),
+            (true, _) => format!("{v}{law}2{c}020"),
             (false, again) => format!(
                 "{v}{}0{}0{}0",
                 if read_mu { law } else { 1 },
-                if again { 2 } else { 0 },
+                if again { c } else { 0 },
                 if new_h { 2 } else { 0 }
             ),
         };

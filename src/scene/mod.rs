@@ -125,6 +125,9 @@ pub struct ContactSolverOptions {
     /// Falling friction: how tightly the fixed point's early tangential solves are made.
     #[serde(default, skip_serializing_if = "VeldepSolves::is_default")]
     pub veldep_solves: VeldepSolves,
+    /// The influence functions' traction basis (`[contact_solver] influence`, CONTACT's C = 2, 3).
+    #[serde(default, skip_serializing_if = "crate::physics::halfspace::influence::Basis::is_default")]
+    pub influence: crate::physics::halfspace::influence::Basis,
 }
 
 /// `[contact_solver] veldep_solves`: the tangential solves of the slip-velocity fixed point.
@@ -219,6 +222,7 @@ impl Default for ContactSolverOptions {
             inislp: InitialSlip::Previous,
             omgslp: OMGSLP,
             veldep_solves: VeldepSolves::Adaptive,
+            influence: crate::physics::halfspace::influence::Basis::Constant,
         }
     }
 }

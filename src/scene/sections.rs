@@ -556,6 +556,10 @@ pub fn contact_solver(top: &mut Section) -> Result<ContactSolverOptions, InputEr
             contact_solver.veldep_solves =
                 if v == "tight" { crate::scene::VeldepSolves::Tight } else { crate::scene::VeldepSolves::Adaptive };
         }
+        if let Some(b) = cs.opt_choice("influence", &["constant", "bilinear"])? {
+            use crate::physics::halfspace::influence::Basis;
+            contact_solver.influence = if b == "bilinear" { Basis::Bilinear } else { Basis::Constant };
+        }
         cs.finish()?;
     }
     Ok(contact_solver)

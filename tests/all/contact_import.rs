@@ -369,14 +369,21 @@ fn testbank_imports_two_cases_and_names_every_other_with_its_reason() {
     let (ok, no) = split(&imported);
     // 1: a Cattaneo shift with the approach prescribed (N = 0); 10: a Cattaneo shift under FX, FY
     // and 11 that continues it with the approach prescribed (N = 0, F = 2: one scene); 17:
-    // transient rolling from rest under FX; 8: steady rolling with friction per grid row (V = 3).
-    assert_eq!(ok, vec![1, 6, 7, 8, 10, 11, 17]);
+    // transient rolling from rest under FX; 8: steady rolling with friction per grid row (V = 3); 2: case 1 with C = 3.
+    assert_eq!(ok, vec![1, 2, 6, 7, 8, 10, 11, 17]);
     assert_eq!(imported.statuses[10].scene.as_deref(), Some("testbank_10"), "{:?}", imported.statuses[10]);
     assert!(
         imported.statuses[10].notes.iter().any(|r| r.starts_with("N = 0: approach prescribed")),
         "{:?}",
         imported.statuses[10]
     );
+    // 2: case 1 with the influence functions of bilinear tractions (C = 3).
+    let s2 = imported.scenes.iter().find(|s| s.cases == [2, 2]).expect("case 2");
+    assert!(s2.files[0].1.contains("[contact_solver]\ninfluence = \"bilinear\"\n"), "{}", s2.files[0].1);
+    let s1 = imported.scenes.iter().find(|s| s.cases == [1, 1]).expect("case 1");
+    assert!(!s1.files[0].1.contains("influence"), "{}", s1.files[0].1);
+    // 5: C = 3 is carried, its dissimilar materials are not.
+    assert!(imported.statuses[4].refused.iter().all(|r| !r.starts_with("C = ")), "{:?}", imported.statuses[4]);
     // 14, 15 continue case 13, a shift with B = 2.
     assert!(imported.statuses[13].refused.iter().any(|r| r.contains("holds case 13")), "{:?}", imported.statuses[13]);
     assert_eq!(ok.len() + no.len(), imported.statuses.len());

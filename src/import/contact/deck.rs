@@ -100,6 +100,9 @@ pub struct State {
     pub undeformed: Option<Undeformed>,
     /// Whether an extra rigid-slip term is in force (E = 2, 3, 9, or kept by E = 1).
     pub extra_rhs: bool,
+    /// The influence functions in force: the last C of 2, 3, 4, 9 (0 before any: CONTACT's first
+    /// case must give one).
+    pub inflcf: u8,
     /// INISLP, OMGSLP of the slip-velocity iteration as last read (G = 2, 3, 4); `None`: CONTACT's
     /// defaults 0, 0.5 (`m_hierarch_data.f90` lines 1748-1749).
     pub slip_start: Option<(i64, f64)>,
@@ -327,6 +330,7 @@ impl CaseReader<'_> {
             }
         }
         if matches!(d.c, 2..=4 | 9) {
+            state.inflcf = d.c;
             if d.t >= 2 {
                 let (v, _) =
                     self.lx.group("CHI, DQ, VELOC", &[Kind::Angle, Kind::Real, Kind::Real], (1, Kind::Real))?;

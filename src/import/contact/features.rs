@@ -115,11 +115,18 @@ pub const FEATURES: &[Feature] = &[
         },
     },
     Feature {
-        name: "influence functions other than the half-space's with piecewise constant tractions",
+        name: "influence functions other than the half-space's with piecewise constant or bilinear tractions",
         control: "C",
         supported: false,
-        reason: "supported: C = 2 (or 0, 1 keeping it), the influence functions of this project's solver",
-        used: |c| digit("C", c.digits.c, matches!(c.digits.c, 3 | 4 | 9)),
+        reason: "supported: C = 2 (piecewise constant), 3 (bilinear) or 0, 1 keeping it; not the conformal (4) or numerical (9) ones",
+        used: |c| digit("C", c.digits.c, matches!(c.digits.c, 4 | 9)),
+    },
+    Feature {
+        name: "influence functions of the half-space with bilinear tractions",
+        control: "C",
+        supported: true,
+        reason: "imported as `[contact_solver] influence = \"bilinear\"`: the exact solver's kernels of the bilinear hat per element centre (physics::halfspace::bilinear)",
+        used: |c| digit("C", c.digits.c, c.digits.c == 3),
     },
     Feature {
         name: "material models other than elastic",

@@ -178,7 +178,7 @@ fn falling(s: &State) -> bool {
 /// FN and a Coulomb friction), named. A falling law and its memory are one for the whole history.
 fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static str> {
     let coulomb = a.friction_law == 0 && b.friction_law == 0;
-    let pairs: [(&'static str, bool); 11] = [
+    let pairs: [(&'static str, bool); 12] = [
         ("FN", load_varies || a.pen_or_fn == b.pen_or_fn),
         // Coulomb: FSTAT alone counts (CONTACT overwrites FKIN with it).
         (
@@ -189,6 +189,7 @@ fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static 
         ),
         ("MEMDST, MEM_S0", a.memory == b.memory),
         ("FSTAT, FKIN per grid row (V = 3)", a.friction_rows == b.friction_rows),
+        ("the influence functions (C)", a.inflcf == b.inflcf),
         ("CHI, DQ", (a.chi_rad, a.dq_mm) == (b.chi_rad, b.dq_mm)),
         ("POISS, GG", (a.poiss, a.gg_mpa) == (b.poiss, b.gg_mpa)),
         (
@@ -945,6 +946,7 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
             files.push((file_name, csv));
         }
     }
+    let mut contact_solver = Vec::new();
     if falling(&last.state) {
         // CONTACT's slip-velocity iteration as the deck sets it (the last case's: a steady start
         // is solved with its transient cases'), stopped where CONTACT stops it.
@@ -960,7 +962,13 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
         if omgslp != crate::scene::OMGSLP {
             cs.push(("omgslp", Value::Float(omgslp)));
         }
-        doc.insert("contact_solver".into(), table(cs));
+        contact_solver.extend(cs);
+    }
+    if last.state.inflcf == 3 {
+        contact_solver.push(("influence", Value::String("bilinear".into())));
+    }
+    if !contact_solver.is_empty() {
+        doc.insert("contact_solver".into(), table(contact_solver));
     }
     if h.run == Run::Shifts {
         doc.insert("rolling".into(), table(vec![("motion", Value::String("shift".into()))]));

@@ -97,6 +97,31 @@ pub struct Kernel {
     pub xy: Vec<f64>,
 }
 
+/// How the traction varies over the grid, the influence functions' basis (CONTACT's C digit).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Basis {
+    /// Uniform over each element (C = 2): [`rect_integrals`].
+    #[default]
+    Constant,
+    /// Bilinear between the element centres (C = 3): [`super::bilinear::hat_integrals`].
+    Bilinear,
+}
+
+impl Basis {
+    pub fn is_default(&self) -> bool {
+        *self == Basis::default()
+    }
+
+    /// The integrals of the basis function of the element at offset `(x, y)` [mm].
+    fn integrals(self, x: f64, y: f64, dx: f64, dy: f64) -> RectIntegrals {
+        match self {
+            Basis::Constant => rect_integrals(x, y, dx, dy),
+            Basis::Bilinear => super::bilinear::hat_integrals(x, y, dx, dy),
+        }
+    }
+}
+
 impl Kernel {
     /// Builds the kernel for an `mx x my` grid of `dx x dy` [mm] elements, combined shear modulus
     /// `g_mpa` [MPa], Poisson's ratio `nu`, field-point shift `shift_mm` [mm] (Kalker 1990, sec. 5.2).
@@ -108,6 +133,19 @@ impl Kernel {
         g_mpa: f64,
         nu: f64,
         shift_mm: f64,
+    ) -> Result<Kernel, ContactError> {
+        Kernel::with_basis(mx, my, (dx_mm, dy_mm), (g_mpa, nu), shift_mm, Basis::Constant)
+    }
+
+    /// [`Kernel::new`] for tractions of the given [`Basis`] (the same combination of the four
+    /// integrals, CONTACT's `elascf` for C = 2 and 3).
+    pub fn with_basis(
+        mx: usize,
+        my: usize,
+        (dx_mm, dy_mm): (f64, f64),
+        (g_mpa, nu): (f64, f64),
+        shift_mm: f64,
+        basis: Basis,
     ) -> Result<Kernel, ContactError> {
         if mx == 0 || my == 0 {
             return Err(ContactError::EmptyGrid { mx, my });
@@ -140,7 +178,7 @@ impl Kernel {
             for ki in 0..nkx {
                 let di = ki as f64 - (mx - 1) as f64;
                 let x = di * dx_mm - shift_mm;
-                let r = rect_integrals(x, y, dx_mm, dy_mm);
+                let r = basis.integrals(x, y, dx_mm, dy_mm);
                 zz.push(c * (1.0 - nu) * r.one_over_r);
                 xx.push(c * (r.xx + (1.0 - nu) * r.yy));
                 yy.push(c * (r.yy + (1.0 - nu) * r.xx));

@@ -1,8 +1,9 @@
 //! The elastic half-space on the element grid, shared by every solver: influence coefficients of
-//! uniformly loaded rectangles ([`influence`]), u = A p by direct sums or FFT ([`convolution`]),
+//! uniformly loaded rectangles ([`influence`]) or bilinear tractions ([`bilinear`]), u = A p by direct sums or FFT ([`convolution`]),
 //! and the normal contact problem for a prescribed FN or approach on any undeformed distance ([`normal`]),
 //! whose pressure the exact solver uses and the simplified models take on non-Hertzian contacts.
 
+pub mod bilinear;
 pub mod convolution;
 pub mod influence;
 pub mod normal;

@@ -3,7 +3,7 @@
 //! transient: [`TangentialSolver::transient_step`] from the last two steps' tractions).
 
 use super::force;
-use super::influence::Kernel;
+use super::influence::{Basis, Kernel};
 use super::mirror;
 use super::normal::{NormalParams, NormalSolver};
 use super::restart::{contact_restart, SteadyRestart, SteadyStart};
@@ -162,8 +162,10 @@ const VELDEP_MAX_ITERATIONS: usize = 190;
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let (g, m) = (&p.grid, &p.material);
+    let basis = p.contact_solver.influence;
     let kernel = |shift: f64| {
-        Kernel::new(g.mx, g.my, g.dx_mm, g.dy_mm, m.g_mpa, m.poisson, shift).map_err(ContactRunError::Kernel)
+        Kernel::with_basis(g.mx, g.my, (g.dx_mm, g.dy_mm), (m.g_mpa, m.poisson), shift, basis)
+            .map_err(ContactRunError::Kernel)
     };
     let k0 = kernel(0.0)?;
     let normal = NormalSolver::new(&k0).map_err(ContactRunError::Kernel)?;
@@ -364,11 +366,12 @@ impl Contact<'_> {
         }
     }
 
-    /// The pressure at the sample's FN: the geometry's own where it has solved it, else the
-    /// normal problem.
+    /// The pressure at the sample's FN: the geometry's own where it has solved it (with the
+    /// uniform elements' influence functions), else the normal problem.
     fn normal_by_force(&mut self, at: &Sample) -> Result<Vec<f64>, ContactRunError> {
         let (p, fn_n) = (self.p, at.fn_n);
-        if let Some(pn) = at.h_coefficients.is_none().then(|| p.geometry.normal_pressure_mpa(fn_n)).flatten() {
+        let geometry_solves = at.h_coefficients.is_none() && p.contact_solver.influence == Basis::Constant;
+        if let Some(pn) = geometry_solves.then(|| p.geometry.normal_pressure_mpa(fn_n)).flatten() {
             return Ok(pn);
         }
         let h = self.undeformed_mm(at);
