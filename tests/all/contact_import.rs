@@ -368,12 +368,36 @@ fn testbank_imports_two_cases_and_names_every_other_with_its_reason() {
     let imported = import_deck("testbank.inp");
     let (ok, no) = split(&imported);
     // 1: a Cattaneo shift with the approach prescribed (N = 0); 10: a Cattaneo shift under FX, FY
-    // (case 11 that continues it is N = 0 with F = 2, not verified); 17: transient rolling from
-    // rest under FX.
-    assert_eq!(ok, vec![1, 6, 7, 10, 17]);
+    // (case 11 that continues it is N = 0 with F = 2, not verified); 13-16: a shift with B = 2
+    // under FX, rolling under FX (14, 15), then with CKSI and DQ 0.8 on the Hertzian grid given
+    // again by A1, AOB (16); 17: transient rolling from rest under FX.
+    assert_eq!(ok, vec![1, 6, 7, 10, 13, 14, 15, 16, 17]);
     assert!(imported.statuses[10].refused.iter().any(|r| r.starts_with("N = 0, F = 2")), "{:?}", imported.statuses[10]);
-    // 14, 15 continue case 13, a shift with B = 2.
-    assert!(imported.statuses[13].refused.iter().any(|r| r.contains("holds case 13")), "{:?}", imported.statuses[13]);
+    assert!(
+        imported.statuses[12].notes.iter().any(|n| n.starts_with("B = 2: traction bound from Hertz")),
+        "{:?}",
+        imported.statuses[12]
+    );
+    assert!(
+        imported.statuses[15].notes.iter().any(|n| n.starts_with("IPOTCN = -2 re-specifies")),
+        "{:?}",
+        imported.statuses[15]
+    );
+    // Case 12: B = 3 with FASTSIM (M = 3) stays refused for M.
+    assert!(imported.statuses[11].refused.iter().any(|r| r.starts_with("M = 3")), "{:?}", imported.statuses[11]);
+    assert!(!imported.statuses[11].refused.iter().any(|r| r.starts_with("B = 3")), "{:?}", imported.statuses[11]);
+    let p = scene_of(&imported, "testbank_13");
+    assert_eq!(p.normal.pressure, creepbench::physics::NormalPressure::Solved);
+    assert_eq!(p.normal.start_pressure, creepbench::physics::NormalPressure::Elliptical);
+    let rows: Vec<_> = p.loading.rows().copied().collect();
+    assert_eq!(rows.len(), 4);
+    // F = 1 in 13-15 (Fx/FN = -FX FSTAT), CKSI in 16; DQ 0.2, 0.2, 0.2, 0.8 mm.
+    assert!(rows[..3].iter().all(|s| s.fx_target == Some(-0.657 * 0.4013)));
+    assert_eq!((rows[3].fx_target, rows[3].cx), (None, -0.002124));
+    let dq: Vec<f64> = rows.iter().map(|s| s.courant.unwrap() * p.grid.dx_mm).collect();
+    assert_eq!(dq, [0.2, 0.2, 0.2, 0.8]);
+    let t: Vec<f64> = rows.iter().map(|s| s.t_s).collect();
+    assert!((t[3] - 0.0012).abs() < 1e-15 && (t[1] - 0.0002).abs() < 1e-15, "{t:?}");
     assert_eq!(ok.len() + no.len(), imported.statuses.len());
     let module1: Vec<usize> = imported.statuses.iter().filter(|s| s.module == 1).map(|s| s.case).collect();
     assert!(!module1.is_empty());
