@@ -224,7 +224,8 @@ fn fastsim_imports_the_exact_theory_case_and_refuses_contacts_simplified_theorie
     assert_eq!(split(&imported), (vec![1], (2..=8).collect()));
     for s in &imported.statuses[1..] {
         assert!(s.refused.iter().any(|r| r.contains("material models other than elastic")), "{s:?}");
-        assert!(s.refused.iter().any(|r| r.contains("approximate traction bounds")), "{s:?}");
+        // B = 2, 3 on its Hertzian contact is carried ([normal] pressure): refused for M alone.
+        assert!(!s.refused.iter().any(|r| r.starts_with("B = ")), "{s:?}");
     }
     let p = scene_of(&imported, "fastsim_1");
     let r = ResolvedScene::of(&p, &p.solvers);
