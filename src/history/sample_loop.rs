@@ -61,16 +61,18 @@ pub fn run(
     history.rows.reserve(loading.samples.len() + 1);
     let mut field_values: Vec<(&'static str, f64)> = field_metrics.iter().map(|&(name, _)| (name, 0.0)).collect();
     let mut observer = observer;
-    let key = |s: &Sample| (s.fn_n, s.mu, s.pen_mm, s.h_coefficients);
-    let mut loaded = key(first);
+    // The start row's normal problem may differ from the steps' (`[normal] start_pressure`).
+    let key = |s: &Sample, start: bool| (s.fn_n, s.mu, s.pen_mm, s.h_coefficients, problem.normal.of_row(start));
+    let mut loaded = key(first, loading.start().is_some());
     let sweep = !loading.is_transient();
     let initial =
         loading.steady_start().map(|s| (s, Solve::Steady)).or(loading.shift_start().map(|s| (s, Solve::Shift)));
     let each = if sweep { Solve::Steady } else { Solve::Transient };
     for (s, solve) in initial.into_iter().chain(loading.samples.iter().map(|s| (s, each))) {
-        if key(s) != loaded {
+        let start = matches!(solve, Solve::Shift) || (matches!(solve, Solve::Steady) && !sweep);
+        if key(s, start) != loaded {
             stepper.load(s)?;
-            loaded = key(s);
+            loaded = key(s, start);
         }
         let step = match solve {
             Solve::Steady => stepper.steady(s)?,

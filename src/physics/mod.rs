@@ -27,5 +27,5 @@ pub use kalker::{
 };
 pub use material::Material;
 pub use moment::moment_sum;
-pub use pressure::PressureShape;
+pub use pressure::{NormalPressure, PressureShape};
 pub use slip::RigidSlip;

@@ -3,7 +3,7 @@
 
 use crate::error::InputError;
 use crate::physics::{ContactGeometry, Grid};
-use crate::scene::table::{CreepageTable, TableX};
+use crate::scene::table::{CreepageTable, Either, TableX};
 use crate::scene::{Creepage, InitKind, Scene};
 
 /// A table covers step k when `k dt <= t_end (1 + TABLE_END_REL)`: its last time may be printed
@@ -26,6 +26,10 @@ pub struct Sample {
     /// `None`: `[rolling] v_mm_s`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub v_mm_s: Option<f64>,
+    /// The Courant number of this row's step where it differs per row (a table's `courant`:
+    /// CONTACT's DQ changing within a history): the step rolls courant·dx; `None`: `[rolling] courant`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub courant: Option<f64>,
     /// Fx/FN prescribed (CONTACT F = 1, 2): the solver finds cx (which then holds 0, the start);
     /// `None`: cx is given.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -56,6 +60,7 @@ impl Sample {
             fn_n,
             mu,
             v_mm_s: None,
+            courant: None,
             fx_target: None,
             fy_target: None,
             pen_mm: None,
@@ -172,10 +177,11 @@ impl Loading {
                 sweep_direction = Some(*direction);
                 (LoadingKind::Sweep, None, None, s)
             }
-            Creepage::Table { rows, .. } if rows.v_mm_s.is_some() => {
-                let samples = speed_table(scene, rows, dt_s * scene.v_mm_s, max)?;
+            Creepage::Table { rows, .. } if rows.v_mm_s.is_some() || rows.courant.is_some() => {
+                let samples = speed_table(scene, rows, (dt_s * scene.v_mm_s, grid.dx_mm), max)?;
                 let initial = Sample {
-                    v_mm_s: Some(rows.interpolate(rows.v_mm_s.as_deref().unwrap_or(&[]), 0.0)),
+                    v_mm_s: rows.v_mm_s.as_ref().map(|v| rows.interpolate(v, 0.0)),
+                    courant: rows.courant.as_ref().map(|c| rows.interpolate(c, 0.0)),
                     ..table_row(scene, rows, 0, 0.0)
                 };
                 (LoadingKind::Table, None, Some(initial), samples)
@@ -309,12 +315,19 @@ impl Loading {
 /// The table's loading at step k, time `t` (columns it lacks: the scene's constants).
 fn table_row(scene: &Scene, rows: &CreepageTable, k: usize, t: f64) -> Sample {
     let get = |s: &Option<Vec<f64>>, d: f64| s.as_ref().map_or(d, |v| rows.interpolate(v, t));
+    // Per row one of the creepage and the force: the row's ([`CreepageTable::either_at`]).
+    let given_or_force = |c: &[f64], f: &[f64]| match rows.either_at(c, f, t) {
+        Either::First(c) => (c, None),
+        Either::Second(f) => (0.0, Some(f)),
+    };
     let (cx, fx_target) = match &rows.cx {
         TableX::Creepage(cx) => (rows.interpolate(cx, t), None),
         TableX::Force(fx) => (0.0, Some(rows.interpolate(fx, t))),
+        TableX::PerRow { cx, fx_over_fn } => given_or_force(cx, fx_over_fn),
     };
     // A column (cy or fy_over_fn) replaces the constant (cy or fy_over_fn).
     let (cy, fy_target) = match (&rows.cy, &rows.fy_over_fn) {
+        (Some(cy), Some(fy)) => given_or_force(cy, fy),
         (Some(cy), _) => (rows.interpolate(cy, t), None),
         (None, Some(fy)) => (0.0, Some(rows.interpolate(fy, t))),
         (None, None) => (scene.cy, scene.fy_over_fn),
@@ -331,6 +344,7 @@ fn table_row(scene: &Scene, rows: &CreepageTable, k: usize, t: f64) -> Sample {
         fn_n,
         mu: get(&rows.mu, scene.mu),
         v_mm_s: None,
+        courant: None,
         fx_target,
         fy_target,
         pen_mm,
@@ -341,33 +355,40 @@ fn table_row(scene: &Scene, rows: &CreepageTable, k: usize, t: f64) -> Sample {
 /// Iterations allowed to find a step's speed in a table with `v_mm_s`.
 const SPEED_ITERATIONS: usize = 200;
 
-/// A table with a speed column: the rolling distance per step stays `dq_mm`, step k lasts
-/// dq/v_k and t_k = t_(k−1) + dq/v_k with v_k the table's speed at t_k (CONTACT's VELOC of the
-/// case, reference/contact_friction/README.md "How the histories are formed"); v_k is the fixed
-/// point of v = V(t_(k−1) + dq/v), reached while the speed changes by less than itself per step.
-fn speed_table(scene: &Scene, rows: &CreepageTable, dq_mm: f64, max: usize) -> Result<Vec<Sample>, InputError> {
-    let speed = rows.v_mm_s.as_deref().unwrap_or(&[]);
+/// A table with a speed or Courant column: step k rolls dq_k (`[rolling]`'s dq, or the table's
+/// courant_k·dx) and lasts dq_k/v_k, t_k = t_(k−1) + dq_k/v_k with v_k, dq_k the table's at t_k
+/// (CONTACT's VELOC and DQ of the case, reference/contact_friction/README.md "How the histories
+/// are formed"); (v_k, dq_k) is the fixed point of (v, dq) = (V, DQ)(t_(k−1) + dq/v), reached while
+/// they change by less than themselves per step.
+fn speed_table(
+    scene: &Scene,
+    rows: &CreepageTable,
+    (dq_mm, dx_mm): (f64, f64),
+    max: usize,
+) -> Result<Vec<Sample>, InputError> {
+    let speed = |t: f64| rows.v_mm_s.as_ref().map_or(scene.v_mm_s, |v| rows.interpolate(v, t));
+    let step = |t: f64| rows.courant.as_ref().map_or(dq_mm, |c| rows.interpolate(c, t) * dx_mm);
     let end = rows.end_s() * (1.0 + TABLE_END_REL);
     let (mut t, mut samples) = (0.0, Vec::new());
     loop {
-        let mut v = rows.interpolate(speed, t);
+        let (mut v, mut dq) = (speed(t), step(t));
         let mut settled = false;
         for _ in 0..SPEED_ITERATIONS {
-            let next = rows.interpolate(speed, t + dq_mm / v);
-            settled = (next - v).abs() <= 1e-14 * v;
-            v = next;
+            let (next_v, next_dq) = (speed(t + dq / v), step(t + dq / v));
+            settled = (next_v - v).abs() <= 1e-14 * v && (next_dq - dq).abs() <= 1e-14 * dq;
+            (v, dq) = (next_v, next_dq);
             if settled {
                 break;
             }
         }
         if !settled {
             return Err(InputError::new(
-                "creepage.file column v_mm_s",
-                format!("{v} mm/s near t = {t} s"),
-                "a speed that changes by less than itself within one step dq/v",
+                "creepage.file columns v_mm_s, courant",
+                format!("{v} mm/s, dq = {dq} mm near t = {t} s"),
+                "a speed and a Courant number that change by less than themselves within one step dq/v",
             ));
         }
-        let t_next = t + dq_mm / v;
+        let t_next = t + dq / v;
         if t_next > end {
             break;
         }
@@ -379,7 +400,11 @@ fn speed_table(scene: &Scene, rows: &CreepageTable, dq_mm: f64, max: usize) -> R
             ));
         }
         t = t_next;
-        samples.push(Sample { v_mm_s: Some(v), ..table_row(scene, rows, samples.len() + 1, t) });
+        samples.push(Sample {
+            v_mm_s: rows.v_mm_s.is_some().then_some(v),
+            courant: rows.courant.as_ref().map(|c| rows.interpolate(c, t)),
+            ..table_row(scene, rows, samples.len() + 1, t)
+        });
     }
     if samples.is_empty() {
         return Err(InputError::new(
@@ -404,6 +429,7 @@ impl Sample {
             fn_n: scene.fn_n,
             mu: scene.mu,
             v_mm_s: None,
+            courant: None,
             fx_target: None,
             fy_target: scene.fy_over_fn,
             pen_mm: scene.pen_mm,

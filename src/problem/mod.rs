@@ -16,7 +16,7 @@ use crate::physics::{
     CoefficientSource, Coefficients, ContactGeometry, Flexibilities, FrictionLaw, Grid, HertzContact, Material, Memory,
     PatchFlexibility, Planform,
 };
-use crate::scene::{ContactSolverOptions, ExternalSolver, Limits, ModelOptions, Motion, Scene};
+use crate::scene::{ContactSolverOptions, ExternalSolver, Limits, ModelOptions, Motion, NormalOptions, Scene};
 use std::path::PathBuf;
 use std::sync::Arc;
 
@@ -127,6 +127,8 @@ pub struct Problem {
     /// Each model's own parameters, read and validated once ([`params`]).
     pub model_params: ModelParamSet,
     pub contact_solver: ContactSolverOptions,
+    /// The exact solver's normal problem: solved or Hertz's pressure imposed (`[normal]`).
+    pub normal: NormalOptions,
     pub external: Vec<ExternalSolver>,
     pub limits: Limits,
     pub scene_dir: PathBuf,
@@ -217,6 +219,7 @@ impl Problem {
             model: scene.model,
             model_params,
             contact_solver: scene.contact_solver,
+            normal: scene.normal,
             external: scene.external.clone(),
             limits: scene.limits,
             scene_dir: scene.dir.clone(),

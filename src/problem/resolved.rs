@@ -4,7 +4,7 @@
 
 use super::params::ParamEntries;
 use super::{LoadingKind, Problem, Sample};
-use crate::scene::{ContactSolverOptions, InitKind, ModelOptions};
+use crate::scene::{ContactSolverOptions, InitKind, ModelOptions, NormalOptions};
 use serde::{Deserialize, Serialize};
 
 /// scene.json.
@@ -66,6 +66,9 @@ pub struct ResolvedScene {
     pub init: InitKind,
     pub model: ModelRecord,
     pub contact_solver: ContactSolverOptions,
+    /// The exact solver's normal problem (`[normal]`; absent: solved).
+    #[serde(default, skip_serializing_if = "NormalOptions::is_default")]
+    pub normal: NormalOptions,
     pub metrics: Vec<String>,
     /// (metric, why it was left out).
     pub skipped_metrics: Vec<(String, String)>,
@@ -156,6 +159,7 @@ impl ResolvedScene {
             init: p.loading.init,
             model: ModelRecord { options: p.model, params: p.model_params.scene_json() },
             contact_solver: p.contact_solver,
+            normal: p.normal,
             metrics: p.metrics.clone(),
             skipped_metrics: p.skipped_metrics.clone(),
             warnings: p.warnings.clone(),

@@ -103,6 +103,34 @@ impl Default for ModelOptions {
     }
 }
 
+/// The exact solver's normal problem (`[normal]`, optional): solved, or Hertz's pressure imposed
+/// (CONTACT's B = 2, 3); the start row's (step 0) may differ (the B of the case that starts a
+/// history: `examples` of CONTACT shift with B = 2, then roll with B = 0).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+pub struct NormalOptions {
+    /// The pressure of every row (`[normal] pressure`).
+    pub pressure: crate::physics::NormalPressure,
+    /// The start row's (`[normal] start_pressure`, default `pressure`).
+    pub start_pressure: crate::physics::NormalPressure,
+}
+
+impl NormalOptions {
+    /// Whether every row's normal problem is solved (the default; left out of `scene.json`).
+    pub fn is_default(&self) -> bool {
+        *self == NormalOptions::default()
+    }
+
+    /// The pressure of a row: the start row's (step 0 of a run with a steady or shift start) or
+    /// every other row's.
+    pub fn of_row(&self, start: bool) -> crate::physics::NormalPressure {
+        if start {
+            self.start_pressure
+        } else {
+            self.pressure
+        }
+    }
+}
+
 /// Options of the CONTACT-style solver (`[contact_solver]`, optional).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct ContactSolverOptions {
@@ -323,6 +351,8 @@ pub struct Scene {
     /// model read and validate its own, then refuses a key no one read).
     pub model_params: Deferred,
     pub contact_solver: ContactSolverOptions,
+    /// The exact solver's normal problem (`[normal]`).
+    pub normal: NormalOptions,
     pub external: Vec<ExternalSolver>,
     pub limits: Limits,
     /// Folder of the scene file (relative paths in the scene are resolved against it).
@@ -408,6 +438,7 @@ impl Scene {
         let init = sections::init(&mut top, motion, &loading.creepage)?;
         let (model, model_params) = sections::model(&mut top)?;
         let contact_solver = sections::contact_solver(&mut top)?;
+        let normal = sections::normal(&mut top, &contact.geometry, init)?;
         let limits = sections::limits(&mut top)?;
         let origin = sections::origin(&mut top)?;
         top.finish()?;
@@ -439,6 +470,7 @@ impl Scene {
             model,
             model_params,
             contact_solver,
+            normal,
             external,
             limits,
             dir: dir.to_path_buf(),

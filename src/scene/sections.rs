@@ -5,14 +5,14 @@
 use super::reader::{Deferred, Range, Section};
 use super::{
     is_valid_name, table, ContactSolverOptions, Creepage, ExternalSolver, InitKind, InitialSlip, Limits, MaterialSpec,
-    ModelOptions, Motion, SteadyRestart, CREEPAGE_LIMIT, FINITE, FORCE_RATIO, GRID_SCALE, HARD_MAX_STEPS,
+    ModelOptions, Motion, NormalOptions, SteadyRestart, CREEPAGE_LIMIT, FINITE, FORCE_RATIO, GRID_SCALE, HARD_MAX_STEPS,
     MAX_ELEMENTS_PER_AXIS, SPIN_LIMIT,
 };
 use crate::error::InputError;
 use crate::physics::geometry::{Extent, GeometrySpec};
 use crate::physics::{
-    CoefficientSource, FallingTerms, FlexibilityModel, FrictionLaw, LeadingEdge, Memory, PatchFlexibility,
-    PressureShape, Radii, RowFriction,
+    CoefficientSource, FallingTerms, FlexibilityModel, FrictionLaw, LeadingEdge, Memory, NormalPressure,
+    PatchFlexibility, PressureShape, Radii, RowFriction,
 };
 use std::path::Path;
 
@@ -523,6 +523,47 @@ fn slope_reduction(md: &mut Section) -> Result<Option<[f64; 3]>, InputError> {
         ));
     }
     Ok(Some([k0, alpha, beta]))
+}
+
+/// `[normal]` (optional): the exact solver's pressure, solved or Hertz's imposed (CONTACT's B = 0,
+/// 2, 3), and the start row's. An imposed pressure needs Hertz's ellipse (CONTACT: IPOTCN < 0); a
+/// start pressure needs a start (`[init] kind = "steady"` or `"shift"`).
+pub fn normal(top: &mut Section, geometry: &GeometrySpec, init: InitKind) -> Result<NormalOptions, InputError> {
+    let mut normal = NormalOptions::default();
+    let Some(mut n) = top.opt_table("normal")? else {
+        return Ok(normal);
+    };
+    let choices = ["solved", "elliptical", "parabolic"];
+    let of = |name: &str| match name {
+        "elliptical" => NormalPressure::Elliptical,
+        "parabolic" => NormalPressure::Parabolic,
+        _ => NormalPressure::Solved,
+    };
+    if let Some(p) = n.opt_choice("pressure", &choices)? {
+        normal.pressure = of(p);
+    }
+    normal.start_pressure = normal.pressure;
+    if let Some(p) = n.opt_choice("start_pressure", &choices)? {
+        if init == InitKind::Zero {
+            return Err(InputError::new(
+                n.field("start_pressure"),
+                format!("{p:?} without a start row"),
+                "a start pressure only with [init] kind = \"steady\" or \"shift\" (the row of step 0)",
+            ));
+        }
+        normal.start_pressure = of(p);
+    }
+    let hertz = matches!(geometry, GeometrySpec::SemiAxes { .. } | GeometrySpec::Radii(_));
+    if !hertz && normal != NormalOptions::default() {
+        let key = if normal.pressure != NormalPressure::Solved { "pressure" } else { "start_pressure" };
+        return Err(InputError::new(
+            n.field(key),
+            "an imposed pressure with a [geometry] table",
+            "\"solved\" with a [geometry] table: the elliptical and parabolic pressures are Hertz's ellipse (contact.a_mm, b_mm or the radii; CONTACT's IPOTCN < 0)",
+        ));
+    }
+    n.finish()?;
+    Ok(normal)
 }
 
 /// `[contact_solver]` (optional): tolerance, iteration limit, steady restart.

@@ -6,8 +6,9 @@ use crate::error::InputError;
 use std::path::Path;
 
 /// Columns a creepage table may have; `t_s` and one of `cx`, `fx_over_fn` are required.
-pub const COLUMNS: [&str; 16] = [
+pub const COLUMNS: [&str; 17] = [
     "t_s",
+    "courant",
     "cx",
     "cy",
     "cs",
@@ -31,22 +32,44 @@ pub const H_COLUMNS: [&str; 6] = ["b1_per_mm", "b2_per_mm", "b3_per_mm", "b4", "
 /// The largest approach a table may prescribe [mm]: beyond any elastic contact of rail steel.
 pub const PEN_MAX_MM: f64 = 10.0;
 
-/// The table's longitudinal column: the creepage given, or the force prescribed.
+/// The table's longitudinal column: the creepage given, or the force prescribed, or per row one
+/// of them (both columns, each row's other cell empty: CONTACT's F changing within a history).
 #[derive(Debug, Clone, PartialEq)]
 pub enum TableX {
     /// `cx`.
     Creepage(Vec<f64>),
     /// `fx_over_fn`.
     Force(Vec<f64>),
+    /// `cx` and `fx_over_fn`, NaN where a row leaves the cell empty.
+    PerRow { cx: Vec<f64>, fx_over_fn: Vec<f64> },
 }
 
 impl TableX {
-    /// The column's values, whichever it is.
+    /// The column's values, whichever it is (per row: the creepage column, NaN where a force is
+    /// prescribed).
     pub fn values(&self) -> &[f64] {
         match self {
-            TableX::Creepage(v) | TableX::Force(v) => v,
+            TableX::Creepage(v) | TableX::Force(v) | TableX::PerRow { cx: v, .. } => v,
         }
     }
+}
+
+/// Pairs of columns a row may choose between (both in the header: each row gives exactly one,
+/// the other cell empty).
+const PER_ROW: [(&str, &str, &str); 3] = [
+    ("fn_n", "pen_mm", "fn_n (the normal force prescribed) and pen_mm (the approach prescribed)"),
+    ("cx", "fx_over_fn", "cx (the creepage given) and fx_over_fn (the force prescribed)"),
+    ("cy", "fy_over_fn", "cy (the creepage given) and fy_over_fn (the force prescribed)"),
+];
+
+/// The Courant number of a table row (as `[rolling] courant`).
+const COURANT_LIMIT: super::reader::Range = super::reader::Range::new(0.0, false, 100.0, true);
+
+/// Which of two per-row columns a row gives ([`CreepageTable::either_at`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Either {
+    First(f64),
+    Second(f64),
 }
 
 /// A validated table: strictly increasing times, finite values in range.
@@ -70,6 +93,9 @@ pub struct CreepageTable {
     pub mu: Option<Vec<f64>>,
     /// The rolling speed [mm/s]: step k lasts dq/v_k.
     pub v_mm_s: Option<Vec<f64>>,
+    /// The Courant number per row: step k rolls dq_k = courant_k dx and lasts dq_k/v_k
+    /// (CONTACT's DQ changing within a history).
+    pub courant: Option<Vec<f64>>,
 }
 
 impl CreepageTable {
@@ -109,18 +135,6 @@ impl CreepageTable {
                 ));
             }
         }
-        for (a, b, what) in [
-            ("cx", "fx_over_fn", "(the creepage given) and fx_over_fn (the force prescribed)"),
-            ("cy", "fy_over_fn", "(the creepage given) and fy_over_fn (the force prescribed)"),
-        ] {
-            if has(a) && has(b) {
-                return Err(InputError::new(
-                    format!("{origin} header"),
-                    format!("both {a} and {b}"),
-                    format!("one of {a} {what}, not both"),
-                ));
-            }
-        }
         let h_given = H_COLUMNS.iter().filter(|c| has(c)).count();
         if h_given != 0 && h_given != H_COLUMNS.len() {
             return Err(InputError::new(
@@ -129,8 +143,10 @@ impl CreepageTable {
                 "all six (the row's undeformed distance b1 x² + b2 xy + b3 y² + b4 x + b5 y + b6) or none",
             ));
         }
-        // Both fn_n and pen_mm: each row gives exactly one of them, the other cell empty.
-        let per_row = has("fn_n") && has("pen_mm");
+        // Both fn_n and pen_mm (cx and fx_over_fn, cy and fy_over_fn): each row gives exactly one
+        // of them, the other cell empty.
+        let pairs: Vec<(&str, &str, &str)> = PER_ROW.iter().copied().filter(|(a, b, _)| has(a) && has(b)).collect();
+        let per_row = |name: &str| pairs.iter().any(|(a, b, _)| *a == name || *b == name);
         let mut cols: Vec<Vec<f64>> = vec![Vec::new(); header.len()];
         for (r, rec) in rdr.records().enumerate() {
             let row = r + 2; // 1-based line number, header is line 1
@@ -148,19 +164,19 @@ impl CreepageTable {
                     format!("{} fields", header.len()),
                 ));
             }
-            if per_row {
+            for (a, b, what) in &pairs {
                 let empty = |c: &str| header.iter().position(|h| h == c).is_some_and(|i| rec[i].is_empty());
-                if empty("fn_n") == empty("pen_mm") {
+                if empty(a) == empty(b) {
                     return Err(InputError::new(
-                        format!("{origin} line {row} columns fn_n, pen_mm"),
-                        if empty("fn_n") { "both empty" } else { "both given" },
-                        "exactly one of fn_n (the normal force prescribed) and pen_mm (the approach prescribed) per row, the other cell empty",
+                        format!("{origin} line {row} columns {a}, {b}"),
+                        if empty(a) { "both empty" } else { "both given" },
+                        format!("exactly one of {what} per row, the other cell empty"),
                     ));
                 }
             }
             for (c, cell) in rec.iter().enumerate() {
                 let name = &header[c];
-                if per_row && cell.is_empty() && (name == "fn_n" || name == "pen_mm") {
+                if cell.is_empty() && per_row(name) {
                     cols[c].push(f64::NAN);
                     continue;
                 }
@@ -173,6 +189,7 @@ impl CreepageTable {
                     "fx_over_fn" | "fy_over_fn" => v.is_finite() && v.abs() < 1.0,
                     "cs" => v.is_finite() && v.abs() <= 10.0,
                     "v_mm_s" => super::SPEED_LIMIT.contains(v),
+                    "courant" => COURANT_LIMIT.contains(v),
                     "pen_mm" => v.is_finite() && v > 0.0 && v <= PEN_MAX_MM,
                     c if H_COLUMNS.contains(&c) => v.is_finite(),
                     _ => v.is_finite() && v > 0.0, // fn_n, mu
@@ -184,6 +201,7 @@ impl CreepageTable {
                         "fx_over_fn" | "fy_over_fn" => "a finite force ratio in (-1, 1) (below the row's mu)",
                         "cs" => "a finite spin in [-10, 10] 1/mm",
                         "v_mm_s" => "a rolling speed in (0, 1e6] mm/s",
+                        "courant" => "a Courant number in (0, 100] (the step's rolling distance dq = courant dx)",
                         "pen_mm" => "a finite approach in (0, 10] mm",
                         c if H_COLUMNS.contains(&c) => "a finite coefficient",
                         _ => "a finite number > 0",
@@ -208,9 +226,10 @@ impl CreepageTable {
             }
         }
         Ok(CreepageTable {
-            cx: match col("fx_over_fn") {
-                Some(f) => TableX::Force(f),
-                None => TableX::Creepage(col("cx").unwrap_or_default()),
+            cx: match (col("cx"), col("fx_over_fn")) {
+                (Some(cx), Some(fx_over_fn)) => TableX::PerRow { cx, fx_over_fn },
+                (None, Some(f)) => TableX::Force(f),
+                (cx, None) => TableX::Creepage(cx.unwrap_or_default()),
             },
             cy: col("cy"),
             fy_over_fn: col("fy_over_fn"),
@@ -220,6 +239,7 @@ impl CreepageTable {
             h_coefficients: (h_given > 0).then(|| H_COLUMNS.map(|c| col(c).unwrap_or_default())),
             mu: col("mu"),
             v_mm_s: col("v_mm_s"),
+            courant: col("courant"),
             t_s,
         })
     }
@@ -247,24 +267,32 @@ impl CreepageTable {
             (None, None) => (fn_default, None),
             (Some(f), None) => (self.interpolate(f, t), None),
             (None, Some(p)) => (fn_default, Some(self.interpolate(p, t))),
-            (Some(f), Some(p)) => {
-                let ts = &self.t_s;
-                let k = ts.partition_point(|&x| x <= t).min(ts.len() - 1);
-                let (lo, hi) = (k.saturating_sub(1), k);
-                if p[lo].is_nan() == p[hi].is_nan() {
-                    return if p[hi].is_nan() {
-                        (self.interpolate(f, t), None)
-                    } else {
-                        (fn_default, Some(self.interpolate(p, t)))
-                    };
-                }
-                let row = if ts[lo] == t { lo } else { hi };
-                if p[row].is_nan() {
-                    (f[row], None)
-                } else {
-                    (fn_default, Some(p[row]))
-                }
-            }
+            (Some(f), Some(p)) => match self.either_at(f, p, t) {
+                Either::First(f) => (f, None),
+                Either::Second(p) => (fn_default, Some(p)),
+            },
+        }
+    }
+
+    /// One of two per-row columns `a`, `b` (NaN where a row leaves its cell empty) at time `t`:
+    /// between two rows of one kind interpolated; between a row of each kind, the row at `t`
+    /// (exactly) or else the later row's.
+    pub fn either_at(&self, a: &[f64], b: &[f64], t: f64) -> Either {
+        let ts = &self.t_s;
+        let k = ts.partition_point(|&x| x <= t).min(ts.len() - 1);
+        let (lo, hi) = (k.saturating_sub(1), k);
+        if b[lo].is_nan() == b[hi].is_nan() {
+            return if b[hi].is_nan() {
+                Either::First(self.interpolate(a, t))
+            } else {
+                Either::Second(self.interpolate(b, t))
+            };
+        }
+        let row = if ts[lo] == t { lo } else { hi };
+        if b[row].is_nan() {
+            Either::First(a[row])
+        } else {
+            Either::Second(b[row])
         }
     }
 

@@ -164,6 +164,20 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
                 format!("models that solve each row's normal problem: {} (leave {} out of this scene: it takes FN and the scene's geometry only)", able.join(", "), m.name),
             ));
         }
+        if problem.loading.rows().any(|s| s.courant.is_some()) && m.name != contact::NAME {
+            return Err(InputError::new(
+                "creepage.file column courant",
+                format!("a rolling distance per row with {:?}", m.name),
+                format!("a courant column only with the exact model ({}); [rolling] courant for every model (leave {} out of this scene)", contact::NAME, m.name),
+            ));
+        }
+        if !problem.normal.is_default() && m.name != contact::NAME {
+            return Err(InputError::new(
+                "normal.pressure",
+                format!("{:?} with {:?}", problem.normal.pressure.name(), m.name),
+                format!("[normal] only with the exact model ({}): the simplified models take their pressure from [model] pressure (leave {} out of this scene)", contact::NAME, m.name),
+            ));
+        }
         if problem.rolling.backward() && !BACKWARD_ROLLING.contains(&m.name) {
             return Err(InputError::new(
                 "rolling.chi_deg",

@@ -47,3 +47,4 @@ mod strip;
 mod studies;
 mod test_table;
 mod tolerance_files;
+mod traction_bound;

@@ -166,6 +166,7 @@ pub fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> Result<H
                     fn_n: n(cols[4])?,
                     mu: opt(mu_col, f64::NAN)?,
                     v_mm_s: None,
+                    courant: None,
                     fx_target: None,
                     fy_target: None,
                     pen_mm: None,

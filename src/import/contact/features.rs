@@ -34,11 +34,24 @@ pub const FEATURES: &[Feature] = &[
         used: |c| digit("P", c.digits.p, matches!(c.digits.p, 1 | 3)),
     },
     Feature {
-        name: "approximate traction bounds or a thin elastic layer",
+        name: "approximate normal problems (SDEC, KPEC, ANALYN) or a thin elastic layer",
         control: "B",
         supported: false,
-        reason: "supported: B = 0 (the full elastic normal problem)",
-        used: |c| digit("B", c.digits.b, c.digits.b != 0),
+        reason: "supported: B = 0 (the full elastic normal problem), B = 2, 3 (Hertz's elliptical or parabolic pressure) on a Hertzian geometry (IPOTCN < 0)",
+        used: |c| {
+            let hertz = matches!(c.state.potcon, Some(Potcon::Hertz { .. }));
+            digit("B", c.digits.b, c.digits.b != 0 && !(matches!(c.digits.b, 2 | 3) && hertz))
+        },
+    },
+    Feature {
+        name: "traction bound from Hertz's pressure (elliptical or parabolic)",
+        control: "B",
+        supported: true,
+        reason: "imported as `[normal] pressure = \"elliptical\"` (B = 2) or `\"parabolic\"` (B = 3): Hertz's pressure of the case's ellipse and FN at the element centres, the normal problem not solved (`m_sdis.f90`); `[normal] start_pressure` where only the case that starts a rolling history has it",
+        used: |c| {
+            let hertz = matches!(c.state.potcon, Some(Potcon::Hertz { .. }));
+            digit("B", c.digits.b, matches!(c.digits.b, 2 | 3) && hertz)
+        },
     },
     Feature {
         name: "shifts and frictional compression",

@@ -190,11 +190,14 @@ fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static 
         ("MEMDST, MEM_S0", a.memory == b.memory),
         ("FSTAT, FKIN per grid row (V = 3)", a.friction_rows == b.friction_rows),
         ("the influence functions (C)", a.inflcf == b.inflcf),
-        ("CHI, DQ", (a.chi_rad, a.dq_mm) == (b.chi_rad, b.dq_mm)),
+        // DQ may change within a transient history (the table's courant column).
+        ("CHI, DQ", a.chi_rad == b.chi_rad && (load_varies || a.dq_mm == b.dq_mm)),
         ("POISS, GG", (a.poiss, a.gg_mpa) == (b.poiss, b.gg_mpa)),
         (
             "the potential contact (IPOTCN and its line)",
-            a.potcon == b.potcon || (load_varies && quadratics(a, b) && window_shift(a, b).is_some()),
+            a.potcon == b.potcon
+                || (load_varies && quadratics(a, b) && window_shift(a, b).is_some())
+                || (load_varies && same_hertz_grid(a, b)),
         ),
         ("the undeformed distance (IBASE)", a.undeformed == b.undeformed || (load_varies && quadratics(a, b))),
         ("the friction law", a.friction_law == b.friction_law),
@@ -230,6 +233,7 @@ fn group(cases: &[Case], statuses: &mut [CaseStatus]) -> Vec<History> {
                     setup_difference(&first.state, &c3.state, false).is_none()
                         && first.digits.n == d.n
                         && (!falling(&c3.state) || slip_iteration(&first.state) == slip_iteration(&c3.state))
+                        && first.digits.b == c3.digits.b
                         && statuses[h.cases[0]].supported() == statuses[k].supported()
                         && prescribed(first) == prescribed(c3)
                         && sweep_continues(cases, h, c3)
@@ -279,10 +283,21 @@ fn group(cases: &[Case], statuses: &mut [CaseStatus]) -> Vec<History> {
                     prev.slip_start.unwrap_or((0, crate::scene::OMGSLP))
                 ));
             }
-            if prescribed(last) != prescribed(c3) {
+            // B: one pressure for the history's steps, its start's may differ ([normal] start_pressure).
+            let only_start = h.run.has_start() && h.cases.len() == 1;
+            if !only_start && last.digits.b != d.b {
                 statuses[k].refused.push(format!(
-                    "F = {} after F = {}: the prescribed forces change within a history (one table has either creepages or forces)",
-                    d.f, last.digits.f
+                    "B = {} after B = {}: the normal problem changes within a history (supported: one B for the steps of a history, [normal] pressure, and another for the shift or steady case that starts it, [normal] start_pressure)",
+                    d.b, last.digits.b
+                ));
+            }
+            if prev.potcon != c3.state.potcon && same_hertz_grid(&prev, &c3.state) {
+                let axes = |s: &State| hertz_axes(s).map(|(.., [a, b])| format!("a = {a}, b = {b} mm"));
+                statuses[k].notes.push(format!(
+                    "IPOTCN = {} re-specifies the Hertzian grid ({}) as the case before it ({}): the same MX, MY, SCALE and semi-axes within {HERTZ_GRID_REL:e}; the history keeps its first case's",
+                    c3.state.potcon.as_ref().map_or(0, Potcon::ipotcn),
+                    axes(&c3.state).unwrap_or_default(),
+                    axes(&prev).unwrap_or_default()
                 ));
             }
             if let Some(what) = setup_difference(&prev, &c3.state, true) {
@@ -328,6 +343,45 @@ fn sweep_continues(cases: &[Case], h: &History, c: &Case3) -> bool {
     let same_speed = c.state.veloc_mm_s == first.state.veloc_mm_s;
     let same_creepage = row(c)[..3].iter().zip(&row(first)[..3]).all(|(a, b)| a.to_bits() == b.to_bits());
     (same_speed && !speeds_vary) || (same_creepage && (speeds_vary || h.cases.len() == 1))
+}
+
+/// Largest relative difference of the semi-axes of two Hertzian potential contacts taken as one
+/// grid: CONTACT's printed curvature A1 = 0.2963e-2 of `testbank.inp` case 16 gives a = 4.09992
+/// mm where case 13's AA = 4.1 (2e-5).
+const HERTZ_GRID_REL: f64 = 1e-4;
+
+/// The semi-axes [mm] of a case's Hertzian potential contact (IPOTCN = -3: AA, BB; -1: Hertz's of
+/// A1, B1 at its FN; -2: of A1 and AOB), with MX, MY and SCALE; `None`: not Hertzian or N = 0.
+fn hertz_axes(s: &State) -> Option<(usize, usize, f64, [f64; 2])> {
+    let Some(Potcon::Hertz { ipotcn, mx, my, params }) = &s.potcon else {
+        return None;
+    };
+    let axes = match ipotcn {
+        -3 => [params[0], params[1]],
+        -1 | -2 => {
+            let b1 = if *ipotcn == -2 { params[0] * curvature_ratio(params[1], s) } else { params[1] };
+            let radii = crate::physics::Radii { r_wx_mm: 0.5 / params[0], r_wy_mm: 1.0 / b1, r_ry_mm: 1.0 / b1 };
+            let m = combine_bodies(s.poiss, s.gg_mpa);
+            let material = crate::physics::Material::from_g(m.g_mpa, m.poisson);
+            let e = crate::physics::HertzContact::from_radii(&radii, s.pen_or_fn, &material).ok()?;
+            [e.a_mm, e.b_mm]
+        }
+        _ => return None,
+    };
+    Some((*mx, *my, params[2], axes))
+}
+
+/// Whether a case re-specifies its history's Hertzian grid as the same grid: MX, MY and SCALE
+/// equal, the semi-axes within [`HERTZ_GRID_REL`] (the history keeps the first case's).
+fn same_hertz_grid(a: &State, b: &State) -> bool {
+    match (hertz_axes(a), hertz_axes(b)) {
+        (Some((mx, my, scale, [aa, ab])), Some((nx, ny, sc, [ba, bb]))) => {
+            (mx, my, scale) == (nx, ny, sc)
+                && ((aa - ba) / aa).abs() <= HERTZ_GRID_REL
+                && ((ab - bb) / ab).abs() <= HERTZ_GRID_REL
+        }
+        _ => false,
+    }
 }
 
 /// Whether both cases give a quadratic undeformed distance (IBASE = 1, IPLAN alike) on one grid:
@@ -543,28 +597,40 @@ fn speeds(cases: &[Case], h: &History) -> Option<Vec<f64>> {
     v.iter().any(|x| *x != v[0]).then_some(v)
 }
 
-/// The table rows of a history whose speed changes per case: t_k = t_(k-1) + DQ / VELOC_k (the
-/// steady start at t = 0), each case's values held over a quarter of the steps either side of t_k
-/// (from t = 0 for the first), so that the scene's step k, the fixed point of v = V(t_(k-1) + DQ/v)
-/// (`problem::loading`), finds VELOC_k and t_k exactly.
-fn speed_rows(csv: &mut String, rows: &[[f64; 5]], columns: &[usize], v: &[f64], dq_mm: f64, steady_start: bool) {
-    let mut t = Vec::with_capacity(rows.len());
-    let mut t_s = 0.0;
-    for (n, speed) in v.iter().enumerate() {
-        if !(steady_start && n == 0) {
-            t_s += dq_mm / speed;
-        }
-        t.push(t_s);
-    }
-    for (n, r) in rows.iter().enumerate() {
-        let mut values: Vec<String> = columns.iter().map(|&j| format!("{:?}", r[j])).collect();
-        values.push(format!("{:?}", v[n]));
-        let values = values.join(",");
+/// The rows of a history whose speed or step changes per case, at t_k = t_(k-1) + DQ_k / VELOC_k
+/// (`t_s`; the steady or shift start at t = 0): each case's values held over a quarter of the
+/// steps either side of t_k (from t = 0 for the first), so that the scene's step k, the fixed
+/// point of (v, dq) = (V, DQ)(t_(k-1) + dq/v) (`problem::loading`), finds VELOC_k, DQ_k and t_k.
+/// Where DQ changes (`own`: each case's DQ_k / VELOC_k) the hold after t_k is also shorter than a
+/// quarter of case k's own step: a step k + 1 four times as long as step k would otherwise find
+/// the false fixed point t_k + DQ_k / VELOC_k inside it.
+fn speed_rows(csv: &mut String, values: &[Vec<String>], t: &[f64], own: Option<&[f64]>) {
+    for (n, cells) in values.iter().enumerate() {
+        let cells = cells.join(",");
         let gap_after = if n + 1 < t.len() { t[n + 1] - t[n] } else { t[n] - if n > 0 { t[n - 1] } else { 0.0 } };
+        let gap_after = own.map_or(gap_after, |d| gap_after.min(d[n]));
         let lower = if n == 0 { 0.0 } else { t[n] - 0.25 * (t[n] - t[n - 1]) };
-        let _ = writeln!(csv, "{lower:?},{values}");
-        let _ = writeln!(csv, "{:?},{values}", t[n] + 0.25 * gap_after);
+        let _ = writeln!(csv, "{lower:?},{cells}");
+        let _ = writeln!(csv, "{:?},{cells}", t[n] + 0.25 * gap_after);
     }
+}
+
+/// The rolling steps (DQ) of a history's cases where they change within it (a shift start takes
+/// its rolling's).
+fn step_lengths(cases: &[Case], h: &History) -> Option<Vec<f64>> {
+    if !matches!(h.run, Run::Transient { .. }) {
+        return None;
+    }
+    let rolling = |n: usize| h.cases[if h.run.has_start() && n == 0 { (n + 1).min(h.cases.len() - 1) } else { n }];
+    let dq: Vec<f64> = (0..h.cases.len()).map(|n| case3(cases, rolling(n)).state.dq_mm).collect();
+    // A steady start rolls DX whatever its DQ (CONTACT's steady rolling): its row takes its rolling's.
+    dq.iter().any(|x| *x != dq[0]).then_some(dq)
+}
+
+/// A temporary folder to read a scene back in.
+fn tempdir_for(place: &str) -> Result<tempfile::TempDir, InputError> {
+    tempfile::tempdir()
+        .map_err(|e| InputError::new(place, "a temporary folder", format!("a writable temporary folder: {e}")))
 }
 
 /// A scene name from the deck's stem: lower case, `[a-z0-9_]`.
@@ -705,6 +771,26 @@ fn floats(v: &[f64]) -> Value {
     Value::Array(v.iter().map(|&x| Value::Float(x)).collect())
 }
 
+/// `[normal]` of a history whose B is 2 or 3 (Hertz's elliptical or parabolic pressure) in some
+/// case: `pressure` its steps' B, `start_pressure` its start's where it differs; `None`: B = 0.
+fn normal_table(cases: &[Case], h: &History) -> Option<Value> {
+    let name = |b: u8| match b {
+        2 => "elliptical",
+        3 => "parabolic",
+        _ => "solved",
+    };
+    let b_of = |n: usize| case3(cases, h.cases[n]).digits.b;
+    let (start, steps) = if h.run.has_start() { (b_of(0), b_of(1)) } else { (b_of(0), b_of(0)) };
+    let mut pairs = Vec::new();
+    if steps != 0 {
+        pairs.push(("pressure", Value::String(name(steps).into())));
+    }
+    if start != steps {
+        pairs.push(("start_pressure", Value::String(name(start).into())));
+    }
+    (!pairs.is_empty()).then(|| table(pairs))
+}
+
 /// The scene of one history.
 fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFiles, InputError> {
     let numbers = [cases[h.cases[0]].number, cases[h.cases[h.cases.len() - 1]].number];
@@ -824,6 +910,9 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
         contact.push(("pen_mm", Value::Float(rows[0][3])));
     }
     doc.insert("contact".into(), table(contact));
+    if let Some(normal) = normal_table(cases, h) {
+        doc.insert("normal".into(), normal);
+    }
     let m = combine_bodies(s.poiss, s.gg_mpa);
     doc.insert("material".into(), table(vec![("g_mpa", Value::Float(m.g_mpa)), ("poisson", Value::Float(m.poisson))]));
     doc.insert("grid".into(), table(grid));
@@ -871,60 +960,110 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
             // case of a shift"); here too, with [rolling] v_mm_s = dx and courant 1.
             let dt_s = if h.run == Run::Shifts { 1.0 } else { roll.dq_mm / roll.veloc_mm_s };
             let varies = |j: usize| rows.iter().any(|r| r[j].to_bits() != rows[0][j].to_bits());
-            let forces = prescribed(first);
+            // F per case: the force's column where a case prescribes it; creepages and forces in
+            // one history (F changing): both columns, each row's other cell empty.
+            let forces: Vec<[bool; 2]> = h.cases.iter().map(|&k| prescribed(case3(cases, k))).collect();
+            let any = |i: usize| forces.iter().any(|f| f[i]);
+            let mixed = |i: usize| any(i) && !forces.iter().all(|f| f[i]);
             // N = 0: PEN is the column pen_mm, always written (FN is the solver's); N = 0 and 1 in
             // one history: both columns, each row's other cell empty.
             let normal: Vec<bool> = h.cases.iter().map(|&k| case3(cases, k).digits.n == 0).collect();
             let (by_pen, by_fn) = (normal.iter().any(|&p| p), normal.iter().any(|&p| !p));
             let columns: Vec<usize> =
-                (0..5).filter(|&j| j == 0 || (j == 1 && forces[1]) || (j == 3 && by_pen) || varies(j)).collect();
+                (0..5).filter(|&j| j == 0 || (j == 1 && any(1)) || (j == 3 && by_pen) || varies(j)).collect();
+            let pair = |i: usize, given: &str, force: &str| match (any(i), mixed(i)) {
+                (false, _) => given.to_string(),
+                (true, false) => force.to_string(),
+                (true, true) => format!("{given},{force}"),
+            };
             let names = [
-                if forces[0] { "fx_over_fn" } else { "cx" },
-                if forces[1] { "fy_over_fn" } else { "cy" },
-                "cs",
+                pair(0, "cx", "fx_over_fn"),
+                pair(1, "cy", "fy_over_fn"),
+                "cs".to_string(),
                 match (by_pen, by_fn) {
                     (true, true) => "fn_n,pen_mm",
                     (true, false) => "pen_mm",
                     _ => "fn_n",
-                },
-                "mu",
+                }
+                .to_string(),
+                "mu".to_string(),
             ];
-            let speed_column = if speeds(cases, h).is_some() { ",v_mm_s" } else { "" };
+            // Row n's cell of column j: a pair's two cells (the given one first), one left empty.
+            let cell = |j: usize, n: usize| {
+                let (both, second) = match j {
+                    0 => (mixed(0), forces[n][0]),
+                    1 => (mixed(1), forces[n][1]),
+                    3 => (by_pen && by_fn, normal[n]),
+                    _ => (false, false),
+                };
+                match (both, second) {
+                    (true, true) => format!(",{:?}", rows[n][j]),
+                    (true, false) => format!("{:?},", rows[n][j]),
+                    _ => format!("{:?}", rows[n][j]),
+                }
+            };
+            let speed = speeds(cases, h);
+            // DQ changing within the history: a courant column, courant·dx = DQ exactly (dx the
+            // project's grid, read back from a probe of the scene).
+            let courant = match step_lengths(cases, h) {
+                Some(dq) => {
+                    let dir = tempdir_for(&format!("{file}, cases {} to {}", numbers[0], numbers[1]))?;
+                    let dx_mm = read_back(dir.path(), &format!("{name}.toml"), &probe(&doc), &files)?.grid.dx_mm;
+                    Some((dq.iter().map(|&q| courant_for(q, dx_mm)).collect::<Vec<f64>>(), dx_mm))
+                }
+                None => None,
+            };
+            let speed_column = if speed.is_some() { ",v_mm_s" } else { "" };
+            let courant_column = if courant.is_some() { ",courant" } else { "" };
             let quad_columns = if quads.is_some() { ",b1_per_mm,b2_per_mm,b3_per_mm,b4,b5,b6_mm" } else { "" };
             let mut csv = format!(
-                "t_s,{}{speed_column}{quad_columns}\n",
-                columns.iter().map(|&j| names[j]).collect::<Vec<_>>().join(",")
+                "t_s,{}{speed_column}{courant_column}{quad_columns}\n",
+                columns.iter().map(|&j| names[j].as_str()).collect::<Vec<_>>().join(",")
             );
-            match speeds(cases, h) {
-                Some(_) if quads.is_some() => {
-                    return Err(InputError::new(
-                        format!("{file}, cases {} to {}", numbers[0], numbers[1]),
-                        "VELOC and B(1..6) changing in one history",
-                        "one of the speed (VELOC) and the undeformed distance (IBASE = 1) changing per case",
-                    ))
-                }
-                Some(_) if by_pen && by_fn => {
-                    return Err(InputError::new(
-                        format!("{file}, cases {} to {}", numbers[0], numbers[1]),
-                        "VELOC changing with N = 0 and N = 1 in one history",
-                        "one of the speed (VELOC) changing per case and N changing per case",
-                    ))
-                }
-                Some(v) => speed_rows(&mut csv, &rows, &columns, &v, roll.dq_mm, steady_start),
-                None => {
-                    for (n, r) in rows.iter().enumerate() {
+            let row_cells = |n: usize| columns.iter().map(|&j| cell(j, n)).collect::<Vec<String>>();
+            match (&speed, &courant) {
+                (None, None) => {
+                    for n in 0..rows.len() {
                         let step = if steady_start { n } else { n + 1 };
-                        let cell = |j: usize| match (j, by_pen && by_fn, normal[n]) {
-                            (3, true, true) => format!(",{:?}", r[3]),
-                            (3, true, false) => format!("{:?},", r[3]),
-                            _ => format!("{:?}", r[j]),
-                        };
-                        let mut values: Vec<String> = columns.iter().map(|&j| cell(j)).collect();
+                        let mut values = row_cells(n);
                         if let Some(q) = &quads {
                             values.extend(q[n].iter().map(|b| format!("{b:?}")));
                         }
                         let _ = writeln!(csv, "{:?},{}", step as f64 * dt_s, values.join(","));
                     }
+                }
+                _ if quads.is_some() => return Err(InputError::new(
+                    format!("{file}, cases {} to {}", numbers[0], numbers[1]),
+                    "VELOC or DQ and B(1..6) changing in one history",
+                    "one of the speed (VELOC) or step (DQ) and the undeformed distance (IBASE = 1) changing per case",
+                )),
+                _ if by_pen && by_fn => {
+                    return Err(InputError::new(
+                        format!("{file}, cases {} to {}", numbers[0], numbers[1]),
+                        "VELOC or DQ changing with N = 0 and N = 1 in one history",
+                        "one of the speed (VELOC) or step (DQ) changing per case and N changing per case",
+                    ))
+                }
+                (speed, courant) => {
+                    let mut values: Vec<Vec<String>> = (0..rows.len()).map(row_cells).collect();
+                    let (mut t_s, mut own) = (Vec::with_capacity(rows.len()), Vec::with_capacity(rows.len()));
+                    let mut t = 0.0;
+                    for (n, row) in values.iter_mut().enumerate() {
+                        let v = speed.as_ref().map_or(roll.veloc_mm_s, |v| v[n]);
+                        let dq = courant.as_ref().map_or(roll.dq_mm, |(c, dx)| c[n] * dx);
+                        if !(steady_start && n == 0) {
+                            t += dq / v;
+                        }
+                        t_s.push(t);
+                        own.push(dq / v);
+                        if let Some(v) = speed {
+                            row.push(format!("{:?}", v[n]));
+                        }
+                        if let Some((c, _)) = courant {
+                            row.push(format!("{:?}", c[n]));
+                        }
+                    }
+                    speed_rows(&mut csv, &values, &t_s, courant.is_some().then_some(own.as_slice()));
                 }
             }
             let file_name = format!("{name}_table.csv");
@@ -1043,6 +1182,7 @@ fn circular_in_x(b: &[f64], (x, y): (f64, f64)) -> f64 {
 fn probe(doc: &Table) -> Table {
     let mut probe = doc.clone();
     probe.remove("init");
+    probe.remove("normal");
     let step = vec![("kind", Value::String("step".into())), ("c", Value::Float(0.0)), ("steps", Value::Integer(1))];
     probe.insert("creepage".into(), table(step));
     probe

@@ -12,7 +12,7 @@ use super::veldep::{Motion as LawStep, VelDep, VelDepOptions, VelDepOutcome};
 use super::ContactError;
 use crate::error::InputError;
 use crate::physics::geometry::element::equivalent_ellipse;
-use crate::physics::{moment_sum, LinearTheory};
+use crate::physics::{moment_sum, LinearTheory, NormalPressure};
 use crate::problem::{Problem, Sample};
 use crate::scene::Motion;
 use crate::solvers::stepper::{FieldView, Step, Stepper};
@@ -42,6 +42,20 @@ const SECONDS_PER_COST: f64 = 1.3e-7;
 
 /// A run estimated to take longer than `[limits] max_estimated_s` is refused before it starts.
 fn check(p: &Problem) -> Result<(), InputError> {
+    if p.friction.is_falling() && p.loading.rows().any(|s| s.courant.is_some()) {
+        return Err(InputError::new(
+            "creepage.file column courant",
+            "a rolling distance per row with a falling [friction] law",
+            "a courant column with Coulomb friction, or [rolling] courant with a falling law (its memory and slip velocity take one rolling distance)",
+        ));
+    }
+    if let Some(what) = p.loading.normal_rows().filter(|_| !p.normal.is_default()) {
+        return Err(InputError::new(
+            "normal.pressure",
+            format!("{:?} with {what}", p.normal.pressure.name()),
+            "an imposed pressure (Hertz's ellipse at the row's FN) only on rows that give FN: leave out the table's pen_mm and b1_per_mm..b6_mm, or solve the normal problem (\"solved\")",
+        ));
+    }
     if p.rolling.backward() && (p.rolling.motion == Motion::Shift || p.friction.is_falling()) {
         return Err(InputError::new(
             "rolling.chi_deg",
@@ -97,14 +111,17 @@ pub enum ContactRunError {
 
 /// The normal solution at one load.
 struct Loaded {
-    /// The sample's (FN, approach, undeformed distance) it was solved for.
-    key: (f64, Option<f64>, Option<[f64; 6]>),
+    /// The sample's (FN, approach, undeformed distance, pressure kind) it was solved for.
+    key: (f64, Option<f64>, Option<[f64; 6]>, NormalPressure),
     /// The total normal force [N]: the sample's, or found for its approach.
     fn_n: f64,
     pn: Vec<f64>,
     /// With μ per grid row, the tangential solvers' bound pressure p μ_j/μ_max
     /// ([`crate::physics::RowFriction::bound_pressure`]); `None`: `pn` itself.
     bound_pn: Option<Vec<f64>>,
+    /// FN over the element area: the sum of a solved pressure; of an imposed one (CONTACT B = 2,
+    /// 3) the prescribed FN's, as CONTACT's force ratios take FNTRUE (`m_solvpt.f90` line 586),
+    /// not the sum of the pressure sampled at the element centres.
     pn_sum: f64,
     pn_max: f64,
     /// Kalker's linear d(fx/FN)/d(cx), d(fy/FN)/d(cy) at this load (shifts: Mindlin's per mm):
@@ -124,6 +141,9 @@ struct Contact<'a> {
     /// CONTACT solves steady rolling with DQ = DX whatever DQ the input gives (SteadyGS;
     /// `m_sdis.f90` warns "Using DQ = DX"), so does this solver; `None`: `tangential` serves.
     steady_dx: Option<TangentialSolver>,
+    /// The solvers of the rows' own rolling distances (a table's `courant`: CONTACT's DQ changing
+    /// within a history), one per distinct dq [mm] other than `[rolling]`'s.
+    rolled: Vec<(f64, TangentialSolver)>,
     /// The shift from rest that starts a rolling history (`[init] kind = "shift"`); `None`: no
     /// shift start.
     shift_start: Option<TangentialSolver>,
@@ -160,6 +180,25 @@ const VELDEP_COLUMNS: [&str; 4] = ["veldep_iterations", "veldep_converged", "mu_
 /// Iteration limit of the slip-velocity fixed point (CONTACT: max(1, MAXIN − 10) = 190).
 const VELDEP_MAX_ITERATIONS: usize = 190;
 
+/// The rolling distance of a row's step [mm]: its own Courant number's (a table's `courant`) or
+/// `[rolling]`'s.
+fn row_dq_mm(p: &Problem, s: &Sample) -> f64 {
+    s.courant.map_or(p.rolling.dq_mm, |c| c * p.grid.dx_mm)
+}
+
+/// The transient solver of rolling distance `dq_mm`: a row's own ([`Contact::rolled`]) or the
+/// scene's.
+fn solver_for<'s>(
+    tangential: &'s mut TangentialSolver,
+    rolled: &'s mut [(f64, TangentialSolver)],
+    dq_mm: f64,
+) -> &'s mut TangentialSolver {
+    match rolled.iter_mut().find(|(d, _)| *d == dq_mm) {
+        Some((_, solver)) => solver,
+        None => tangential,
+    }
+}
+
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let (g, m) = (&p.grid, &p.material);
     let basis = p.contact_solver.influence;
@@ -183,6 +222,16 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     } else {
         None
     };
+    let mut rolled: Vec<(f64, TangentialSolver)> = Vec::new();
+    if p.rolling.motion == Motion::Rolling {
+        for s in &p.loading.samples {
+            let dq = row_dq_mm(p, s);
+            if dq != p.rolling.dq_mm && !rolled.iter().any(|(d, _)| *d == dq) {
+                let solver = TangentialSolver::new(&k0, &kernel(dq)?, &x, &y).map_err(ContactRunError::Kernel)?;
+                rolled.push((dq, solver));
+            }
+        }
+    }
     let shift_start = match p.loading.shift_start() {
         Some(_) => Some(TangentialSolver::for_shifts(&k0, &x, &y).map_err(ContactRunError::Kernel)?),
         None => None,
@@ -192,6 +241,7 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
         normal,
         tangential,
         steady_dx,
+        rolled,
         shift_start,
         loaded: None,
         last: None,
@@ -220,7 +270,7 @@ impl Contact<'_> {
     fn params(&self, s: &Sample) -> TangentialParams {
         // Shifts: the creepages are the shifts of the step [mm], taken over a unit "dq".
         let dq_mm = match self.p.rolling.motion {
-            Motion::Rolling => self.p.rolling.dq_mm,
+            Motion::Rolling => row_dq_mm(self.p, s),
             Motion::Shift => 1.0,
         };
         // With falling friction the bound μ_k pn_k is set per element (`set_bound`), μ = 1.
@@ -366,10 +416,15 @@ impl Contact<'_> {
         }
     }
 
-    /// The pressure at the sample's FN: the geometry's own where it has solved it (with the
-    /// uniform elements' influence functions), else the normal problem.
-    fn normal_by_force(&mut self, at: &Sample) -> Result<Vec<f64>, ContactRunError> {
+    /// The pressure at the sample's FN: Hertz's imposed (`[normal] pressure`, CONTACT B = 2, 3:
+    /// at the element centres, `m_sdis.f90` lines 645-690), the geometry's own where it has solved
+    /// it (with the uniform elements' influence functions), else the normal problem.
+    fn normal_by_force(&mut self, at: &Sample, pressure: NormalPressure) -> Result<Vec<f64>, ContactRunError> {
         let (p, fn_n) = (self.p, at.fn_n);
+        if let Some(shape) = pressure.shape() {
+            let e = p.geometry.ellipse_at(fn_n);
+            return Ok(shape.on_grid(&p.grid, fn_n, e.a_mm, e.b_mm));
+        }
         let geometry_solves = at.h_coefficients.is_none() && p.contact_solver.influence == Basis::Constant;
         if let Some(pn) = geometry_solves.then(|| p.geometry.normal_pressure_mpa(fn_n)).flatten() {
             return Ok(pn);
@@ -403,21 +458,26 @@ impl Contact<'_> {
 
 impl Stepper for Contact<'_> {
     fn load(&mut self, at: &Sample) -> Result<(), SolveError> {
-        let key = (at.fn_n, at.pen_mm, at.h_coefficients);
+        let p = self.p;
+        let pressure = p.normal.of_row(at.step == 0 && p.loading.start().is_some());
+        let key = (at.fn_n, at.pen_mm, at.h_coefficients, pressure);
         if self.loaded.as_ref().is_some_and(|l| l.key == key) {
             return Ok(());
         }
-        let p = self.p;
         let (pn_mpa, fn_n) = match at.pen_mm {
             Some(pen_mm) => {
                 let pn = self.normal_by_approach(at, pen_mm)?;
                 let fn_n = pn.iter().sum::<f64>() * p.grid.element_area_mm2();
                 (pn, fn_n)
             }
-            None => (self.normal_by_force(at)?, at.fn_n),
+            None => (self.normal_by_force(at, pressure)?, at.fn_n),
         };
         let pn_mpa = if p.rolling.backward() { mirror::field(p.grid.mx, &pn_mpa) } else { pn_mpa };
-        let pn_sum: f64 = pn_mpa.iter().sum();
+        let pn_sum: f64 = match pressure {
+            NormalPressure::Solved => pn_mpa.iter().sum(),
+            _ if pn_mpa.iter().any(|&v| v > 0.0) => fn_n / p.grid.element_area_mm2(),
+            _ => 0.0,
+        };
         if pn_sum <= 0.0 {
             return Err(ContactRunError::NoContact { mx: p.grid.mx, my: p.grid.my, fn_n }.into());
         }
@@ -426,6 +486,7 @@ impl Stepper for Contact<'_> {
         let bound_pn = p.friction_rows.as_ref().map(|rows| rows.bound_pressure(p.grid.mx, &pn_mpa));
         let solvers =
             std::iter::once(&mut self.tangential).chain(self.steady_dx.as_mut()).chain(self.shift_start.as_mut());
+        let solvers = solvers.chain(self.rolled.iter_mut().map(|(_, solver)| solver));
         for solver in solvers {
             let bound = bound_pn.as_deref().unwrap_or(&pn_mpa);
             solver.set_pressure(bound).map_err(|source| ContactRunError::Setup { fn_n, source })?;
@@ -463,7 +524,11 @@ impl Stepper for Contact<'_> {
                 params.dq_mm = self.p.grid.dx_mm;
                 solver
             }
-            None => &mut self.tangential,
+            None => {
+                // The steady solve rolls dx = [rolling]'s dq whatever a row's own courant says.
+                params.dq_mm = self.p.rolling.dq_mm;
+                &mut self.tangential
+            }
         };
         let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.slope, l.pn_sum)).expect("loaded before a solve");
         let (r, found) = force::solve_sample(at, &params, slope, pn_sum, &mut self.outer, |q| solver.steady(q, None))
@@ -507,7 +572,7 @@ impl Stepper for Contact<'_> {
         {
             let l = self.loaded.as_ref().expect("the sample loop loads before it solves");
             let pn = l.bound_pn.as_ref().unwrap_or(&l.pn);
-            let tangential = &mut self.tangential;
+            let tangential = solver_for(&mut self.tangential, &mut self.rolled, params.dq_mm);
             let slip_at =
                 |px: &[f64], py: &[f64]| tangential.transient_slip(&params, (&steady.px, &steady.py), (px, py));
             let restart = contact_restart(&start, steady, at, pn, slip_at)
@@ -523,7 +588,7 @@ impl Stepper for Contact<'_> {
         };
         let older = self.older.as_ref().map(|(a, b)| (a.as_slice(), b.as_slice()));
         let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.slope, l.pn_sum)).expect("loaded before a solve");
-        let tangential = &mut self.tangential;
+        let tangential = solver_for(&mut self.tangential, &mut self.rolled, params.dq_mm);
         let (r, found) = force::solve_sample(at, &params, slope, pn_sum, &mut self.outer, |q| {
             tangential.transient_step(q, px, py, older)
         })
