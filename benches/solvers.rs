@@ -221,12 +221,16 @@ fn bench_fft_length(c: &mut Criterion) {
 /// falling branch (scenes/stability/stab_fr_step_mem: cx = 0.012, most elements slip; the
 /// falling law solves each slipping element's bound g = p μ(s(g)) with the memory's update).
 /// Target: within 1.5× of Coulomb's time. Measured back to back (2026-11-25 05:20 UTC, 2-core
-/// machine, little load): FASTSIM 43.8 µs against 3.14 µs (14×), the UBA step 44.4 µs against
-/// 0.54 µs (82×): not met. Before (loaded): 159 µs and 160 µs, of which a quarter was libm's
-/// underflow path of the absent second exponential term (now skipped). What is left is the
-/// Newton on g per slipping element (~3.5 evaluations of μ(s) and μ'(s): five divisions and one
-/// exponential each, sequential) against Coulomb's one projection per element (the UBA's
-/// vectorised in AVX): no exact root costs 1.5× a projection.
+/// machine, little load), before: FASTSIM 43.8 µs against 3.14 µs (14×), the UBA step 44.4 µs
+/// against 0.54 µs (82×): a scalar Newton per slipping element, ~3.5 evaluations of μ(s), μ'(s)
+/// (five divisions and a libm exponential each). After (physics/law_kernel.rs: constants divided
+/// out once per sample, one reciprocal for the memory, a branch-free exp; the Newton started from
+/// the element's own coefficient of the previous solve or sub-step; four elements' iterations in
+/// step compiled for AVX2: the UBA's four neighbours, FASTSIM's four rows), measured back to back
+/// at 07:44 UTC under a load of ~13 on 2 cores: FASTSIM 36.7 µs against 11.9 µs (3.1×), the UBA
+/// step 27.9 µs against 1.98 µs (14×): not met. Here the state repeats, so the start is the root
+/// and one evaluation settles each element; what is left is that evaluation (an exponential, two
+/// divisions, the element's scalar set-up) against a projection of one multiply-add per element.
 fn bench_falling(c: &mut Criterion) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let falling = std::fs::read_to_string(root.join("scenes/stability/stab_fr_step_mem.toml")).unwrap();

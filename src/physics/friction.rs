@@ -33,7 +33,7 @@ pub struct FallingTerms {
 
 impl FallingTerms {
     /// A term's SABSH as CONTACT uses it: max(1e-4, SABSH) when its F < 1e-8 (`m_friclaw.f90` 833-846).
-    fn scale(f: f64, sabsh: f64) -> f64 {
+    pub(crate) fn scale(f: f64, sabsh: f64) -> f64 {
         if f < 1e-8 {
             sabsh.max(1e-4)
         } else {

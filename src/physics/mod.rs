@@ -12,6 +12,7 @@ pub mod halfspace;
 pub mod hertz;
 pub mod kalker;
 pub mod lanes;
+pub mod law_kernel;
 pub mod material;
 pub mod moment;
 pub mod pressure;

@@ -3,11 +3,12 @@
 //! march along each row from the leading edge with the traction bound, and the traction field.
 //! FASTSIM and the UBA differ only in how they march.
 
-use crate::physics::bound::{falling_bound, scale_to_bound, within_bound};
-use crate::physics::friction::{FrictionLaw, Memory};
+use crate::physics::bound::{falling_bound, falling_bound4, scale_to_bound, within_bound};
+use crate::physics::law_kernel::LawKernel;
 pub use crate::physics::LeadingEdge;
 use crate::physics::{moment_sum, project_to_bound, Flexibilities, Grid, Planform, RigidSlip};
 use crate::problem::{LocalContact, Problem, Sample};
+use crate::simd::with_avx2;
 use crate::solvers::{FieldView, Step, Termination};
 
 /// The rigid slip over the flexibilities [MPa/mm] (the left side of thesis Eq. 3.4/3.6):
@@ -124,8 +125,23 @@ pub trait ElementBound {
     fn inflow_mu(&self) -> f64;
     /// The bounded traction of an element of pressure `p` > 0 and row gain `gain` from its
     /// unbounded traction (ux, uy), the coefficient `mu_up` its material carried in from
-    /// upstream: (τx, τy, whether it slips, the coefficient it carries downstream).
-    fn apply(&self, ux: f64, uy: f64, p: f64, gain: f64, mu_up: f64) -> (f64, f64, bool, f64);
+    /// upstream and `mu_start` a guess of its own (where an iteration starts; it changes no
+    /// result beyond the iteration's tolerance): (τx, τy, whether it slips, the coefficient it
+    /// carries downstream).
+    fn apply(&self, u: (f64, f64), p: f64, gain: f64, mu: (f64, f64)) -> (f64, f64, bool, f64);
+    /// Whether [`steady_march_with`] marches four rows in step through [`ElementBound::apply4`]
+    /// (a bound whose four-element form is faster than four single ones).
+    const GROUPED: bool = false;
+    /// [`ElementBound::apply`] of four elements (lanes with `p ≤ 0` are the caller's to
+    /// overwrite), the same bits per lane.
+    #[inline(always)]
+    fn apply4(&self, e: &Four) -> [(f64, f64, bool, f64); 4] {
+        let mut out = [(0.0, 0.0, false, 0.0); 4];
+        for l in 0..4 {
+            out[l] = self.apply((e.ux[l], e.uy[l]), e.p[l], e.gain[l], (e.mu_up[l], e.mu_start[l]));
+        }
+        out
+    }
 }
 
 /// Coulomb's bound μ p ([`project_to_bound`], thesis Eq. 2.29).
@@ -139,7 +155,7 @@ impl ElementBound for Coulomb {
     }
 
     #[inline(always)]
-    fn apply(&self, ux: f64, uy: f64, p: f64, _gain: f64, _mu_up: f64) -> (f64, f64, bool, f64) {
+    fn apply(&self, (ux, uy): (f64, f64), p: f64, _gain: f64, _mu: (f64, f64)) -> (f64, f64, bool, f64) {
         let (px, py, slip) = project_to_bound(ux, uy, self.0 * p);
         (px, py, slip, self.0)
     }
@@ -151,16 +167,17 @@ impl ElementBound for Coulomb {
 /// slip over one element, Kalker 1990 Eq. 3.36), and its slip velocity `s = V |w|`
 /// = `(|u| − g) V |(L1 ux, L2 uy)| / (|u| gain dx)`. g solves g = p μ(s(g)) ([`falling_bound`]);
 /// with a memory μ = θ μ_up + (1 − θ) μ_s(s), θ of the time `dt_s` the material takes to cross
-/// the element (backward Euler, [`Memory::update`]), μ_up carried along the row from the leading
-/// edge (fresh material: the static value).
+/// the element (backward Euler, [`crate::physics::Memory::update`]), μ_up carried along the row
+/// from the leading edge (fresh material: the static value).
 #[derive(Debug, Clone, Copy)]
 pub struct Falling {
-    pub law: FrictionLaw,
-    pub memory: Memory,
+    /// The law and its memory over the time `dt_s` the material takes to cross one element
+    /// (constants made once, [`LawKernel`]).
+    pub kernel: LawKernel,
+    /// The static coefficient μ_s(0): fresh material's.
+    pub mu_static: f64,
     /// V L1 / dx and V L2 / dx [mm/s per MPa]: slip velocity per unit of u − τ.
     pub c_mm_s: (f64, f64),
-    /// The time the material takes to cross one element [s].
-    pub dt_s: f64,
     /// The memory's weight θ and the law's μ_s at s = 0 (the stick test's coefficient, made once).
     stick: (f64, f64),
 }
@@ -174,18 +191,18 @@ impl Falling {
         }
         let v_mm_s = at.speed_mm_s(p.rolling.v_mm_s);
         let (l1, l2, _) = flexibilities(at, local);
-        let dt_s = dq_mm / v_mm_s;
+        let kernel = LawKernel::new(&p.friction, &p.memory, dq_mm / v_mm_s);
         Some(Falling {
-            law: p.friction,
-            memory: p.memory,
+            kernel,
+            mu_static: p.friction.mu_static(),
             c_mm_s: (v_mm_s * l1 / dq_mm, v_mm_s * l2 / dq_mm),
-            dt_s,
-            stick: (p.memory.theta(dt_s, 0.0), p.friction.mu_steady(0.0)),
+            stick: kernel.stick(),
         })
     }
 
-    /// μ at s = 0 from the constants made once: the same arithmetic as [`Memory::update`] at s = 0.
-    #[inline]
+    /// μ at s = 0 from the constants made once: the same arithmetic as
+    /// [`crate::physics::Memory::update`] at s = 0.
+    #[inline(always)]
     fn mu_stick(&self, mu_up: f64) -> f64 {
         let (theta, mu_s) = self.stick;
         if theta == 0.0 {
@@ -194,22 +211,24 @@ impl Falling {
             theta * mu_up + (1.0 - theta) * mu_s
         }
     }
-
-    /// μ at slip velocity `s_mm_s` of material that carried `mu_up` in ([`Memory::update`]) and
-    /// its derivative in s.
-    #[inline]
-    fn mu_and_slope(&self, mu_up: f64, s_mm_s: f64) -> (f64, f64) {
-        self.memory.update_and_slope(&self.law, mu_up, self.dt_s, s_mm_s)
-    }
 }
 
 impl ElementBound for Falling {
+    const GROUPED: bool = true;
+
     fn inflow_mu(&self) -> f64 {
-        self.law.mu_static()
+        self.mu_static
     }
 
-    #[inline]
-    fn apply(&self, ux: f64, uy: f64, p: f64, gain: f64, mu_up: f64) -> (f64, f64, bool, f64) {
+    #[inline(always)]
+    fn apply4(&self, e: &Four) -> [(f64, f64, bool, f64); 4] {
+        self.apply4_lanes(e)
+    }
+
+    /// The Newton on the element's bound starts from `mu_start` (the element's own coefficient
+    /// of the previous sample or sub-step: the root moves little from one to the next).
+    #[inline(always)]
+    fn apply(&self, (ux, uy): (f64, f64), p: f64, gain: f64, (mu_up, mu_start): (f64, f64)) -> (f64, f64, bool, f64) {
         let mu_stick = self.mu_stick(mu_up);
         if within_bound(ux, uy, mu_stick * p) {
             return (ux, uy, false, mu_stick);
@@ -217,10 +236,60 @@ impl ElementBound for Falling {
         let a = (ux * ux + uy * uy).sqrt();
         let (cx, cy) = (self.c_mm_s.0 * ux, self.c_mm_s.1 * uy);
         let c = (cx * cx + cy * cy).sqrt() / (a * gain);
-        // Newton from the coefficient the material carried in (the upstream element's).
-        let (g, _) = falling_bound(a, p, c, mu_up * p, |s| self.mu_and_slope(mu_up, s));
+        let (g, _) = falling_bound(a, p, c, mu_start * p, |s| self.kernel.update_and_slope(mu_up, s));
         let (px, py) = scale_to_bound(ux, uy, g);
         (px, py, true, g / p)
+    }
+}
+
+/// Four elements' unbounded tractions, pressures (> 0), row gains and coefficients (carried in,
+/// start) for [`Falling::apply4`].
+pub struct Four {
+    pub ux: [f64; 4],
+    pub uy: [f64; 4],
+    pub p: [f64; 4],
+    pub gain: [f64; 4],
+    pub mu_up: [f64; 4],
+    pub mu_start: [f64; 4],
+}
+
+impl Falling {
+    /// [`ElementBound::apply4`]: the stick test, then the slipping lanes' bounds in step
+    /// ([`falling_bound4`], one vectorised evaluation of the law for the four).
+    #[inline(always)]
+    fn apply4_lanes(&self, e: &Four) -> [(f64, f64, bool, f64); 4] {
+        let (mut stick, mut a, mut c, mut g0) = ([0.0; 4], [0.0; 4], [0.0; 4], [0.0; 4]);
+        let mut slips = [false; 4];
+        for l in 0..4 {
+            let (ux, uy, p) = (e.ux[l], e.uy[l], e.p[l]);
+            stick[l] = self.mu_stick(e.mu_up[l]);
+            slips[l] = p > 0.0 && !within_bound(ux, uy, stick[l] * p);
+            a[l] = (ux * ux + uy * uy).sqrt();
+            let (cx, cy) = (self.c_mm_s.0 * ux, self.c_mm_s.1 * uy);
+            c[l] = (cx * cx + cy * cy).sqrt() / (a[l] * e.gain[l]);
+            g0[l] = e.mu_start[l] * p;
+        }
+        let g = if slips.iter().any(|s| *s) {
+            falling_bound4(
+                (a, e.p, c),
+                g0,
+                slips,
+                #[inline(always)]
+                |s| self.kernel.update_and_slope4(e.mu_up, s),
+            )
+        } else {
+            g0
+        };
+        let mut out = [(0.0, 0.0, false, 0.0); 4];
+        for l in 0..4 {
+            out[l] = if slips[l] {
+                let (px, py) = scale_to_bound(e.ux[l], e.uy[l], g[l]);
+                (px, py, true, g[l] / e.p[l])
+            } else {
+                (e.ux[l], e.uy[l], false, stick[l])
+            };
+        }
+        out
     }
 }
 
@@ -239,7 +308,7 @@ pub fn steady_march(
 }
 
 /// [`steady_march`] with any element bound (a falling law's, [`Falling`]); each element's
-/// coefficient into `mu_out` unless it is empty.
+/// coefficient into `mu_out` unless it is empty (its values before: the bound's starts).
 pub fn steady_march_with<B: ElementBound>(
     grid: &Grid,
     local: &LocalContact,
@@ -250,6 +319,24 @@ pub fn steady_march_with<B: ElementBound>(
 ) -> usize {
     let row = |j| RowMarch { j, local, rates };
     let mut n_slip = 0;
+    if B::GROUPED {
+        return with_avx2(
+            #[inline(always)]
+            || {
+                (0..grid.my)
+                    .step_by(4)
+                    .map(|j0| {
+                        let mut rows = [row(j0); 4];
+                        let len = 4.min(grid.my - j0);
+                        for (r, slot) in rows.iter_mut().enumerate().take(len) {
+                            *slot = row(j0 + r);
+                        }
+                        march_four_rows(grid, bound, how, &rows[..len], (&mut *out, &mut *mu_out))
+                    })
+                    .sum()
+            },
+        );
+    }
     for j in (0..grid.my).step_by(2) {
         n_slip += if j + 1 < grid.my {
             march_rows_with(grid, bound, how, [row(j), row(j + 1)], (&mut *out, &mut *mu_out)).iter().sum::<usize>()
@@ -306,10 +393,61 @@ fn march_rows_with<const N: usize, B: ElementBound>(
                 continue;
             }
             let (ux, uy) = unbounded(grid, row.local, row.rates, how, (i, row.j), loaded.then_some((tx, ty)));
-            let (px, py, slip, mu) = bound.apply(ux, uy, p, row.local.row_gain[row.j], mu_up);
+            // The element's coefficient of the previous solve where there is one (a start).
+            let mu_start = if mu_out.is_empty() { mu_up } else { mu_out[k] };
+            let (px, py, slip, mu) = bound.apply((ux, uy), p, row.local.row_gain[row.j], (mu_up, mu_start));
             out.tx[k] = px;
             out.ty[k] = py;
             n_slip[r] += slip as usize;
+            upstream[r] = (px, py, true, mu);
+            if !mu_out.is_empty() {
+                mu_out[k] = mu;
+            }
+        }
+    }
+    n_slip
+}
+
+/// [`march_rows_with`] of up to four rows through [`ElementBound::apply4`]: the rows' elements
+/// of one column as the four lanes (missing rows as unloaded lanes). Returns the number of
+/// slipping elements.
+#[inline(always)]
+fn march_four_rows<B: ElementBound>(
+    grid: &Grid,
+    bound: &B,
+    how: (LeadingEdge, Integration),
+    rows: &[RowMarch],
+    (out, mu_out): (&mut Tractions, &mut [f64]),
+) -> usize {
+    let mut n_slip = 0;
+    let fresh = bound.inflow_mu();
+    let mut upstream = [(0.0, 0.0, false, fresh); 4];
+    for i in 0..grid.mx {
+        let mut e =
+            Four { ux: [0.0; 4], uy: [0.0; 4], p: [0.0; 4], gain: [1.0; 4], mu_up: [fresh; 4], mu_start: [fresh; 4] };
+        for (r, row) in rows.iter().enumerate() {
+            let k = grid.index(i, row.j);
+            let p = row.local.planform.pressure_mpa[k];
+            if p <= 0.0 {
+                continue;
+            }
+            let (tx, ty, loaded, mu_up) = upstream[r];
+            (e.ux[r], e.uy[r]) = unbounded(grid, row.local, row.rates, how, (i, row.j), loaded.then_some((tx, ty)));
+            (e.p[r], e.gain[r], e.mu_up[r]) = (p, row.local.row_gain[row.j], mu_up);
+            // The element's coefficient of the previous solve where there is one (a start).
+            e.mu_start[r] = if mu_out.is_empty() { mu_up } else { mu_out[k] };
+        }
+        let bounded = bound.apply4(&e);
+        for (r, row) in rows.iter().enumerate() {
+            let k = grid.index(i, row.j);
+            if e.p[r] <= 0.0 {
+                (out.tx[k], out.ty[k]) = (0.0, 0.0);
+                upstream[r] = (upstream[r].0, upstream[r].1, false, fresh);
+                continue;
+            }
+            let (px, py, slip, mu) = bounded[r];
+            (out.tx[k], out.ty[k]) = (px, py);
+            n_slip += usize::from(slip);
             upstream[r] = (px, py, true, mu);
             if !mu_out.is_empty() {
                 mu_out[k] = mu;
@@ -353,4 +491,51 @@ fn unbounded(
     });
     let (dtx, dty) = integration.increment(rates, grid.x_mm[i], grid.y_mm[j], grid.dx_mm);
     (tx + gain * dtx, ty + gain * dty)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::{FallingTerms, FrictionLaw, Memory};
+
+    /// Four elements through [`ElementBound::apply4`] give what [`ElementBound::apply`] gives each
+    /// of them, bit for bit (one sticking, three slipping with different iteration counts), for
+    /// every falling law with and without memory; and a slipping element's bound is the fixed
+    /// point g = p μ(s(g)).
+    #[test]
+    fn four_elements_are_four_bounds() {
+        let t = |fkin, f1, s1, f2, s2| FallingTerms { fkin, f1, sabsh1_mm_s: s1, f2, sabsh2_mm_s: s2 };
+        let laws = [
+            FrictionLaw::Exponential(t(0.25, 0.2, 600.0, 0.0, 0.0)),
+            FrictionLaw::Linear(t(0.2, 0.25, 800.0, 0.05, 100.0)),
+            FrictionLaw::Rational(t(0.22, 0.15, 400.0, 0.08, 2500.0)),
+        ];
+        let e = Four {
+            ux: [100.0, 900.0, 2000.0, -700.0],
+            uy: [50.0, 10.0, -300.0, 400.0],
+            p: [1200.0, 1500.0, 1800.0, 900.0],
+            gain: [1.0, 1.0, 0.9, 1.1],
+            mu_up: [0.45, 0.4, 0.3, 0.45],
+            mu_start: [0.45, 0.41, 0.1, 0.35],
+        };
+        for law in laws {
+            for memory in [Memory::NONE, Memory { memory_mm: 0.01, s0_mm_s: 10.0 }] {
+                let kernel = LawKernel::new(&law, &memory, 2.6e-5);
+                let bound =
+                    Falling { kernel, mu_static: law.mu_static(), c_mm_s: (3.0e3, 2.8e3), stick: kernel.stick() };
+                let four = bound.apply4(&e);
+                for l in 0..4 {
+                    let one = bound.apply((e.ux[l], e.uy[l]), e.p[l], e.gain[l], (e.mu_up[l], e.mu_start[l]));
+                    assert_eq!(four[l], one, "{law:?} {memory:?} lane {l}");
+                    assert_eq!(one.2, l > 0, "lane {l} slips");
+                }
+                let (tx, ty, _, mu) = four[2];
+                let (a, g) = (e.ux[2].hypot(e.uy[2]), tx.hypot(ty));
+                let (cx, cy) = (3.0e3 * e.ux[2], 2.8e3 * e.uy[2]);
+                let s = cx.hypot(cy) / (a * e.gain[2]) * (a - g);
+                let (want, _) = memory.update_and_slope(&law, e.mu_up[2], 2.6e-5, s);
+                assert!((mu - want).abs() < 1e-12, "{law:?} {memory:?}: {mu} vs {want}");
+            }
+        }
+    }
 }

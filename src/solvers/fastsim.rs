@@ -26,13 +26,16 @@ pub const MODEL: ModelDef = ModelDef {
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let local = p.local_contact(p.loading.first().fn_n);
-    Ok(Box::new(Fastsim { p, local, t: Tractions::zero(p.grid.len()) }))
+    let mu = vec![p.friction.mu_static(); p.grid.len()];
+    Ok(Box::new(Fastsim { p, local, t: Tractions::zero(p.grid.len()), mu }))
 }
 
 struct Fastsim<'a> {
     p: &'a Problem,
     local: LocalContact,
     t: Tractions,
+    /// Each element's coefficient of the last solve with a falling law (its bound's start).
+    mu: Vec<f64>,
 }
 
 impl Stepper for Fastsim<'_> {
@@ -49,7 +52,7 @@ impl Stepper for Fastsim<'_> {
         let n_slip = match Falling::of(self.p, at, &self.local, self.p.grid.dx_mm) {
             None => brush::steady_march(&self.p.grid, &self.local, at.mu, &rates, how, &mut self.t),
             Some(bound) => {
-                brush::steady_march_with(&self.p.grid, &self.local, &bound, &rates, how, (&mut self.t, &mut []))
+                brush::steady_march_with(&self.p.grid, &self.local, &bound, &rates, how, (&mut self.t, &mut self.mu))
             }
         };
         let (grid, planform) = (&self.p.grid, &self.local.planform);

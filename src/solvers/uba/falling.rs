@@ -1,18 +1,36 @@
 //! The UBA's step with a falling friction law: the upwind update of [`super::flat::unbounded`],
-//! then each element's bound μ(s) p at its own slip velocity ([`brush::Falling`], the fixed point
+//! then each element's bound μ(s) p at its own slip velocity ([`Falling`], the fixed point
 //! of [`crate::physics::bound::falling_bound`]). The coefficient of the friction memory is
 //! carried with the material by the same upwind difference as the tractions,
 //! `μ_adv = μ + C (μ_up − μ)` (fresh material at a row's start: the static value), before the
-//! memory's backward-Euler update over the sub-step's time C dx / V. Element by element (no AVX
-//! path: the bound is an iteration per slipping element); the sums in the four-lane order.
+//! memory's backward-Euler update over the sub-step's time C dx / V. Four elements at a time
+//! ([`ElementBound::apply4`]: their bounds' iterations in step, compiled for AVX2 where the CPU has
+//! it, the same bits either way); the sums in the four-lane order.
 
 use super::flat::{unbounded, Io, Lanes};
 use super::{Prepared, StepSums};
-use crate::solvers::brush::{ElementBound, Falling};
+use crate::simd::with_avx2;
+use crate::solvers::brush::{ElementBound, Falling, Four};
 
 /// One sub-step from `old` into `new` (tractions in `io`, coefficients `mu_old` into `mu_new`),
 /// `k` the constants of [`super::flat::step`], `pressure_mpa` the planform's pressure.
 pub(super) fn step<const GHOST: bool, const SPIN: bool>(
+    p: &Prepared,
+    (bound, pressure_mpa): (&Falling, &[f64]),
+    io: Io,
+    mu: (&[f64], &mut [f64]),
+    k: [f64; 5],
+) -> StepSums {
+    with_avx2(
+        #[inline(always)]
+        || groups::<GHOST, SPIN>(p, (bound, pressure_mpa), io, mu, k),
+    )
+}
+
+/// [`step`] in groups of four elements ([`ElementBound::apply4`]; the last group padded with
+/// unloaded lanes), each element as [`crate::solvers::brush::ElementBound::apply`] would give it.
+#[inline(always)]
+fn groups<const GHOST: bool, const SPIN: bool>(
     p: &Prepared,
     (bound, pressure_mpa): (&Falling, &[f64]),
     (ox, oy, nx, ny): Io,
@@ -22,21 +40,35 @@ pub(super) fn step<const GHOST: bool, const SPIN: bool>(
     let mut sums = Lanes::default();
     let n = ox.len();
     let (c, fresh) = (k[0], bound.inflow_mu());
-    for m in 0..n {
-        let pm = pressure_mpa[m];
-        let r = if pm > 0.0 {
-            let (vx, vy) = unbounded::<GHOST, SPIN>(p, (ox, oy), k, m);
-            let mu_up = if p.upstream[m] > 0.0 { mu_old[m - 1] } else { fresh };
-            let mu_adv = mu_old[m] + c * (mu_up - mu_old[m]);
-            let (tx, ty, slips, mu) = bound.apply(vx, vy, pm, p.gain[m], mu_adv);
-            mu_new[m] = mu;
-            (tx, ty, slips)
-        } else {
-            mu_new[m] = fresh;
-            (0.0, 0.0, false)
-        };
-        (nx[m], ny[m]) = (r.0, r.1);
-        sums.add(p, m, n, r);
+    for m0 in (0..n).step_by(4) {
+        let len = 4.min(n - m0);
+        let mut e =
+            Four { ux: [0.0; 4], uy: [0.0; 4], p: [0.0; 4], gain: [1.0; 4], mu_up: [fresh; 4], mu_start: [fresh; 4] };
+        for l in 0..len {
+            let m = m0 + l;
+            e.p[l] = pressure_mpa[m];
+            if e.p[l] > 0.0 {
+                (e.ux[l], e.uy[l]) = unbounded::<GHOST, SPIN>(p, (ox, oy), k, m);
+                let mu_up = if p.upstream[m] > 0.0 { mu_old[m - 1] } else { fresh };
+                e.mu_up[l] = mu_old[m] + c * (mu_up - mu_old[m]);
+                // Newton from the element's own coefficient of the last sub-step.
+                e.mu_start[l] = mu_old[m];
+                e.gain[l] = p.gain[m];
+            }
+        }
+        let out = ElementBound::apply4(bound, &e);
+        for (l, &(tx, ty, slips, mu)) in out.iter().enumerate().take(len) {
+            let m = m0 + l;
+            let r = if e.p[l] > 0.0 {
+                mu_new[m] = mu;
+                (tx, ty, slips)
+            } else {
+                mu_new[m] = fresh;
+                (0.0, 0.0, false)
+            };
+            (nx[m], ny[m]) = (r.0, r.1);
+            sums.add(p, m, n, r);
+        }
     }
     sums.finish()
 }
