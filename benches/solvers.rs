@@ -264,13 +264,14 @@ criterion_group!(benches, bench_uba, bench_fastsim, bench_fast_models, bench_uba
 /// (μ = the law's static value 0.45) on the same scenes/friction case, per element-step (the
 /// throughput: steps × elements): a transient step into the falling branch with memory
 /// (`fr_exp_step_cx_mem`, 66 steps) and a steady traction curve (`fr_exp_sweep_cx`, 27 points).
-/// Target: falling friction at most 3× Coulomb's time. Measured back to back (2026-11-25 05:20
-/// UTC, 2-core machine, little load): transient 72.3 ms against 9.24 ms (7.8×, not met), steady
-/// 45.8 ms against 17.4 ms (2.6×, met). Before (loaded, 04:25 UTC): 186 ms against 13.1 ms (14×)
-/// and 121 ms against 19.4 ms (6.3×). The fixed point's early iterates are solved loosely and a
-/// transient step's re-solves keep its right-hand side; a transient row still takes ~11
-/// fixed-point iterations at steady state (the start, CONTACT's INISLP = 0, is the previous slip
-/// velocity moved by dq, one element off a stationary field) where Coulomb takes one solve.
+/// Target: falling friction at most 3× Coulomb's time. Measured back to back (2026-11-25 07:58
+/// UTC, 2-core machine under load 12): transient 59.1 ms against 34.1 ms (1.7×, met), steady
+/// 162 ms against 63.0 ms (2.6×, met). Before (05:20 UTC, little load): 72.3 ms against 9.24 ms
+/// (7.8×) and 45.8 ms against 17.4 ms (2.6×). Adaptive solves start each solve with the slip
+/// area on the new bound and a transient step from the last two steps' slip velocity
+/// extrapolated in the contact's frame: at steady state a transient row is one fixed-point
+/// iteration of one CG iteration, as Coulomb's; the rest is the start-up (steps 1-20: 6-17
+/// fixed-point iterations, where Coulomb takes 4-24 CG iterations in one solve).
 fn bench_falling_friction(c: &mut Criterion) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut g = c.benchmark_group("contact_falling_friction");

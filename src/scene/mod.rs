@@ -160,8 +160,10 @@ pub struct ContactSolverOptions {
 
 /// `[contact_solver] veldep_solves`: the tangential solves of the slip-velocity fixed point.
 /// `Adaptive` solves early iterates loosely (1e-2 × the last relative change) and ends on a
-/// tight solve; `Tight` solves every iterate at the final tolerance, as CONTACT does, so that
-/// CONTACT's own loose stop (1e-3) is met at the same iterate.
+/// tight solve, each solve started with the last one's slip area on the new bound, a transient
+/// step from the extrapolated slip velocity; `Tight` solves every iterate at the final
+/// tolerance from CONTACT's starts, as CONTACT does, so that CONTACT's own loose stop (1e-3) is
+/// met at the same iterate.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum VeldepSolves {

@@ -8,7 +8,7 @@ use super::mirror;
 use super::normal::{NormalParams, NormalSolver};
 use super::restart::{contact_restart, SteadyRestart, SteadyStart};
 use super::tangential::{StepResult, TangentialParams, TangentialSolver};
-use super::veldep::{Motion as LawStep, VelDep, VelDepOptions, VelDepOutcome};
+use super::veldep::{step_start, Motion as LawStep, VelDep, VelDepOptions, VelDepOutcome};
 use super::ContactError;
 use crate::error::InputError;
 use crate::physics::geometry::element::equivalent_ellipse;
@@ -349,6 +349,7 @@ impl Contact<'_> {
             shift_elements: self.p.rolling.courant,
         };
         let pn = &self.loaded.as_ref().expect("the sample loop loads before it solves").pn;
+        let adaptive = self.p.contact_solver.veldep_solves == crate::scene::VeldepSolves::Adaptive;
         let veldep = self.veldep.as_mut().expect("veldep_step runs with a falling law");
         let fail = |source| ContactRunError::Step { step: at.step, source };
         let (r, outcome) = if steady {
@@ -370,13 +371,19 @@ impl Contact<'_> {
                 None => (&self.zero, &self.zero),
             };
             let older = self.older.as_ref().map(|(a, b)| (a.as_slice(), b.as_slice()));
+            // Adaptive solves: the first solve starts with the last step's slip area on the new bound.
+            let previous_state = self.last.as_ref().map(|r| r.state.as_slice()).filter(|_| adaptive);
             let tangential = &mut self.tangential;
             veldep.step(pn, motion, |g, start, tol| {
                 tangential.set_bound(g)?;
                 let params = TangentialParams { tol, ..params };
-                match start {
-                    Some(start) => tangential.transient_resolve_from(&params, start),
-                    None => tangential.transient_step(&params, px, py, older),
+                match (start, previous_state) {
+                    (Some(start), _) => tangential.transient_resolve_from(&params, start),
+                    (None, Some(state)) => {
+                        let (sx, sy) = step_start(px, py, older, state, g);
+                        tangential.transient_step_from(&params, px, py, (&sx, &sy))
+                    }
+                    (None, None) => tangential.transient_step(&params, px, py, older),
                 }
             })
         }

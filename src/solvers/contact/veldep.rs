@@ -7,10 +7,14 @@
 //! s_new = |S|/dt (0 outside the contact); stop when rms(s_new − s) ≤ tol·rms(s_new) over the
 //! contact or when no element slips; else s := s_new, damped by OMGSLP in slip elements whose μ
 //! exceeds μ_prev, OMGSLP × 0.8 every 20 iterations while the element division changes.
+//! Adaptive solves (the default) reach the same fixed point with less work: loose early solves,
+//! warm starts with the slip area on the new bound, and a transient step started from the last
+//! two steps' slip velocity extrapolated in the contact's frame (stationary fields: one solve).
 //! Axes as the solver's: leading edge at ix = 0, material moving to +x.
 
 use super::tangential::{ElementState, StepResult};
 use super::ContactError;
+use crate::physics::bound::scale_to_bound;
 use crate::physics::{FrictionLaw, Memory};
 use crate::scene::InitialSlip;
 
@@ -28,7 +32,10 @@ pub struct VelDepOptions {
     pub omgslp: f64,
     /// The tolerance of the tangential solve the fixed point ends on ([`inner_tolerance`]).
     pub solve_tolerance: f64,
-    /// Early iterates solved loosely ([`inner_tolerance`]); false: every one at `solve_tolerance`.
+    /// Early iterates solved loosely ([`inner_tolerance`]), each solve started with the last
+    /// one's slip area on the new bound ([`onto_bound`]), a transient step's slip velocity
+    /// extrapolated ([`extrapolated_slip`]); false: CONTACT's path, every iterate at
+    /// `solve_tolerance` from CONTACT's starts.
     pub adaptive_solves: bool,
 }
 
@@ -82,11 +89,23 @@ pub struct VelDep {
     shift_mm: Vec<f64>,
     /// Whether `mu`, `shift_mm` hold a previous step (else: a start from zero, FSTAT and s = 0).
     has_previous: bool,
+    /// The converged slip velocity [mm/s] of the last two transient steps in the contact's frame
+    /// (last first; emptied by a steady solve): the adaptive start ([`VelDep::initial_slip`]).
+    recent_mm_s: Vec<Vec<f64>>,
 }
 
 impl VelDep {
     pub fn new(law: FrictionLaw, memory: Memory, options: VelDepOptions, mx: usize, n: usize) -> VelDep {
-        VelDep { law, memory, options, mx, mu: vec![law.mu_static(); n], shift_mm: vec![0.0; n], has_previous: false }
+        VelDep {
+            law,
+            memory,
+            options,
+            mx,
+            mu: vec![law.mu_static(); n],
+            shift_mm: vec![0.0; n],
+            has_previous: false,
+            recent_mm_s: Vec::new(),
+        }
     }
 
     /// The μ field of the last solve.
@@ -124,7 +143,16 @@ impl VelDep {
             for k in 0..n {
                 bound[k] = mu[k] * pn[k];
             }
-            let start = last.as_ref().map(|r| (r.px.as_slice(), r.py.as_slice()));
+            // Adaptive: the last iterate's slip area on the new bound.
+            let on_bound = last
+                .as_ref()
+                .filter(|_| self.options.adaptive_solves)
+                .map(|r| onto_bound(&r.px, &r.py, &r.state, &bound));
+            let start = match (&on_bound, &last) {
+                (Some((x, y)), _) => Some((x.as_slice(), y.as_slice())),
+                (None, Some(r)) => Some((r.px.as_slice(), r.py.as_slice())),
+                (None, None) => None,
+            };
             let tol = if self.options.adaptive_solves {
                 inner_tolerance(self.options.solve_tolerance, last_change)
             } else {
@@ -137,12 +165,13 @@ impl VelDep {
             }
             let (dif, size) = rms_pair(pn, &s_new, &s);
             let change = if size > 0.0 { dif / size } else { 0.0 };
-            let tight = tol <= self.options.solve_tolerance;
+            // A loose solve that happened to get as tight as the final one counts as final.
+            let tight = tol <= self.options.solve_tolerance || r.residual <= self.options.solve_tolerance;
             let converged = tight && (dif <= self.options.tolerance * size || r.n_slip == 0);
             let changed = last.as_ref().is_some_and(|l| l.state != r.state);
             if converged || it == self.options.max_iterations {
                 let outcome = VelDepOutcome { iterations: it, converged, change, inner_iterations: inner };
-                self.keep(&r, &mu);
+                self.keep(&r, &mu, &s_new, motion.steady);
                 return Ok((r, outcome));
             }
             for k in 0..n {
@@ -160,13 +189,17 @@ impl VelDep {
     }
 
     /// The start of s (m_stang.f90 lines 258-264): the previous step's |S|/dt moved by dq
-    /// (`Previous` in a transient step; 0 in steady rolling and from zero), 0, or V everywhere.
+    /// (`Previous` in a transient step, with adaptive solves after a transient step the last two
+    /// extrapolated, [`extrapolated_slip`]; 0 in steady rolling and from zero), 0, or V everywhere.
     fn initial_slip(&self, pn: &[f64], motion: Motion) -> Vec<f64> {
         let n = pn.len();
         match self.options.initial {
             InitialSlip::Below => vec![0.0; n],
             InitialSlip::Above => vec![motion.v_mm_s; n],
             InitialSlip::Previous if motion.steady || !self.has_previous => vec![0.0; n],
+            InitialSlip::Previous if self.options.adaptive_solves && !self.recent_mm_s.is_empty() => {
+                extrapolated_slip(&self.recent_mm_s, pn)
+            }
             InitialSlip::Previous => {
                 let moved = shift_rows(&self.shift_mm, self.mx, motion.shift_elements, 0.0);
                 moved.iter().zip(pn).map(|(&s, &p)| if p > 0.0 { s / motion.dt_s } else { 0.0 }).collect()
@@ -190,14 +223,65 @@ impl VelDep {
         }
     }
 
-    /// Keep the converged step's μ and |S| for the next step.
-    fn keep(&mut self, r: &StepResult, mu: &[f64]) {
+    /// Keep the converged step's μ, |S| and slip velocity `s_mm_s` for the next step.
+    fn keep(&mut self, r: &StepResult, mu: &[f64], s_mm_s: &[f64], steady: bool) {
         self.mu.copy_from_slice(mu);
         for (k, s) in self.shift_mm.iter_mut().enumerate() {
             *s = r.sx[k].hypot(r.sy[k]);
         }
         self.has_previous = true;
+        if steady {
+            self.recent_mm_s.clear();
+        } else {
+            self.recent_mm_s.truncate(1);
+            self.recent_mm_s.insert(0, s_mm_s.to_vec());
+        }
     }
+}
+
+/// A warm start for the bound `bound` [MPa] from the tractions `px`, `py` [MPa] of a solve whose
+/// element division was `state`: its slip elements moved onto the new bound along their
+/// direction (else, inside a bound that grew, they would start as adhesion and the solve would
+/// first have to find the slip area again), the others as they are.
+pub fn onto_bound(px: &[f64], py: &[f64], state: &[ElementState], bound: &[f64]) -> (Vec<f64>, Vec<f64>) {
+    let (mut x, mut y) = (px.to_vec(), py.to_vec());
+    for k in 0..x.len() {
+        if state[k] == ElementState::Slip {
+            (x[k], y[k]) = scale_to_bound(px[k], py[k], bound[k]);
+        }
+    }
+    (x, y)
+}
+
+/// The adaptive start of a transient step's slip velocity [mm/s] from the last two steps'
+/// (`recent`, last first) in the contact's frame: `max(0, 2 s_(k−1) − s_(k−2))`, or `s_(k−1)`
+/// after one step; 0 outside the contact. A stationary field is its own prediction, where the
+/// previous field moved by dq (CONTACT's start) is one element off it.
+fn extrapolated_slip(recent: &[Vec<f64>], pn: &[f64]) -> Vec<f64> {
+    let last = &recent[0];
+    let older = recent.get(1).unwrap_or(last);
+    (0..pn.len()).map(|k| if pn[k] > 0.0 { (2.0 * last[k] - older[k]).max(0.0) } else { 0.0 }).collect()
+}
+
+/// The warm start of a transient step's first solve on the bound `bound` [MPa]: the last two
+/// steps' tractions extrapolated in time, `2 p_n − p_(n−1)` (`p_n` without `older`; as
+/// [`super::tangential::TangentialSolver::transient_step`] makes it), the last step's slip area
+/// `state` on the new bound ([`onto_bound`]).
+pub fn step_start(
+    px: &[f64],
+    py: &[f64],
+    older: Option<(&[f64], &[f64])>,
+    state: &[ElementState],
+    bound: &[f64],
+) -> (Vec<f64>, Vec<f64>) {
+    let (x, y): (Vec<f64>, Vec<f64>) = match older {
+        Some((ox, oy)) => (
+            px.iter().zip(ox).map(|(&p, &o)| 2.0 * p - o).collect(),
+            py.iter().zip(oy).map(|(&p, &o)| 2.0 * p - o).collect(),
+        ),
+        None => (px.to_vec(), py.to_vec()),
+    };
+    onto_bound(&x, &y, state, bound)
 }
 
 /// rms over the contact elements (pn > 0) of `a − b` and of `a` (CONTACT's gf3_rms over AllInt).
@@ -240,6 +324,32 @@ mod tests {
         let f = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0];
         assert_eq!(shift_rows(&f, 3, 1.0, 0.5), vec![0.5, 1.0, 2.0, 0.5, 4.0, 5.0]);
         assert_eq!(shift_rows(&f, 3, 0.5, 0.0), vec![0.5, 1.5, 2.5, 2.0, 4.5, 5.5]);
+    }
+
+    #[test]
+    fn slip_elements_start_on_the_new_bound_others_as_they_were() {
+        use ElementState::{Adhesion, Exterior, Slip};
+        let state = [Slip, Adhesion, Slip, Exterior];
+        let (x, y) = onto_bound(&[3.0, 1.0, -2.0, 0.0], &[4.0, 0.5, 0.0, 0.0], &state, &[10.0, 10.0, 1.0, 0.0]);
+        assert_eq!(x, vec![6.0, 1.0, -1.0, 0.0]);
+        assert_eq!(y, vec![8.0, 0.5, 0.0, 0.0]);
+    }
+
+    #[test]
+    fn a_step_starts_from_the_extrapolated_tractions_on_the_new_bound() {
+        let state = [ElementState::Slip, ElementState::Adhesion];
+        let (x, y) = step_start(&[2.0, 1.0], &[0.0, 1.0], Some((&[1.0, 0.5], &[0.0, 0.0])), &state, &[5.0, 9.0]);
+        assert_eq!((x, y), (vec![5.0, 1.5], vec![0.0, 2.0]));
+        let (x, _) = step_start(&[2.0, 1.0], &[0.0, 1.0], None, &state, &[5.0, 9.0]);
+        assert_eq!(x, vec![5.0, 1.0]);
+    }
+
+    #[test]
+    fn slip_velocity_extrapolates_in_the_contact_frame_not_below_zero() {
+        let pn = [1.0, 1.0, 0.0];
+        let recent = vec![vec![3.0, 1.0, 7.0], vec![2.0, 4.0, 7.0]];
+        assert_eq!(extrapolated_slip(&recent, &pn), vec![4.0, 0.0, 0.0]);
+        assert_eq!(extrapolated_slip(&recent[..1], &pn), vec![3.0, 1.0, 0.0]);
     }
 
     #[test]

@@ -624,6 +624,22 @@ impl TangentialSolver {
         self.transient_solve(params)
     }
 
+    /// One transient rolling step after the previous tractions `prev_px`, `prev_py` [MPa], as
+    /// [`TangentialSolver::transient_step`], warm started from the tractions `start` [MPa] (clipped
+    /// to the bound) in place of the previous tractions' extrapolation.
+    pub fn transient_step_from(
+        &mut self,
+        params: &TangentialParams,
+        prev_px: &[f64],
+        prev_py: &[f64],
+        start: (&[f64], &[f64]),
+    ) -> Result<StepResult, ContactError> {
+        self.check_params(params)?;
+        self.transient_rhs(params, prev_px, prev_py)?;
+        self.rhs_kept = true;
+        self.transient_resolve_from(params, start)
+    }
+
     /// The step of the last [`TangentialSolver::transient_step`] again (the same creepages in
     /// `params` and previous tractions: its right-hand side b = w + u' is kept, one convolution
     /// less) with the bound changed since ([`TangentialSolver::set_bound`]), warm started from the
