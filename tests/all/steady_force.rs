@@ -216,3 +216,20 @@ fn a_steady_force_at_or_above_mu_is_refused() {
     let why = case5.refused.join("; ");
     assert!(why.contains("creepage.fx_over_fn") && why.contains("below mu = 0.3"), "{why}");
 }
+
+/// A steady force sweep whose points come in any order (near saturation, then a small force, the
+/// opposite saturation, zero): every point starts from the last one's creepage and Jacobian and
+/// still reaches its force (the iteration's trust region, `solvers::contact::force`).
+#[test]
+fn a_steady_force_sweep_in_any_order_reaches_every_force() {
+    let text = suite_scene_text("contact_public", "tractcurv_1");
+    let at = "at = [0.3298, 0.001, 0.32, -0.2, 0.0, 0.3299, -0.3299, 0.05]";
+    let start = text.find("at = [").unwrap();
+    let end = start + text[start..].find(']').unwrap() + 1;
+    let text = format!("{}{at}{}", &text[..start], &text[end..]).replace("over = \"cx\"", "over = \"fx_over_fn\"");
+    let p = problem(&text);
+    let h = run(&p, "contact");
+    assert_forces_reached(&p, &h);
+    let cx = h.column("cx").unwrap();
+    assert!(cx[0] > 0.004 && cx[6] < -0.006 && cx[4].abs() < 1e-9, "{cx:?}");
+}
