@@ -31,7 +31,7 @@
 //! its histories.
 
 use crate::physics::halfspace::influence::Basis;
-use crate::physics::FrictionLaw;
+use crate::physics::{FrictionLaw, NormalPressure};
 use crate::problem::{LoadingKind, Problem, Sample};
 use crate::scene::{InitialSlip, Motion};
 use std::fmt::Write;
@@ -63,6 +63,9 @@ pub fn module3_input(p: &Problem) -> String {
     let falling = p.friction.is_falling();
     let mut prev_mu = f64::NAN;
     let mut prev_v_mm_s = p.rolling.v_mm_s;
+    // A row's own rolling step (a table's courant: CONTACT's DQ per case).
+    let dq_of = |s: &Sample| s.courant.map_or(p.rolling.dq_mm, |c| c * p.grid.dx_mm);
+    let mut prev_dq_mm = p.rolling.dq_mm;
     for (n, s) in rows.iter().enumerate() {
         let first = n == 0;
         let steady = sweep || (steady_start && first);
@@ -85,14 +88,25 @@ pub fn module3_input(p: &Problem) -> String {
         let f = usize::from(s.fx_target.is_some()) + usize::from(s.fy_target.is_some());
         // N = 0: the approach prescribed (PEN), N = 1: FN.
         let n_digit = u8::from(s.pen_mm.is_none());
-        let _ =
-            writeln!(out, "  {pv}0{t}{n_digit}{f}0      P-B-T-N-F-S   PVTIME, BOUND , TANG  , NORM  , FORCE , STRESS");
+        // B: the row's pressure, solved (0) or Hertz's elliptical (2), parabolic (3).
+        let b = match p.normal.of_row(first && (steady_start || shift_start)) {
+            NormalPressure::Solved => 0,
+            NormalPressure::Elliptical => 2,
+            NormalPressure::Parabolic => 3,
+        };
+        let _ = writeln!(
+            out,
+            "  {pv}{b}{t}{n_digit}{f}0      P-B-T-N-F-S   PVTIME, BOUND , TANG  , NORM  , FORCE , STRESS"
+        );
         // CONTACT solves the steady start with DQ = DX and keeps that DQ for the cases that follow
         // (`m_sdis.f90`): where the scene's DQ is another, the first transient case gives it again
         // (C = 2: kinematics and material read again, influence coefficients recomputed).
         let v_mm_s = s.v_mm_s.unwrap_or(p.rolling.v_mm_s);
-        let speed_changed = !first && v_mm_s != prev_v_mm_s;
+        // The steady start rolls DX whatever its row says; the scene's DQ is written for it.
+        let dq_mm = if steady && !sweep { p.rolling.dq_mm } else { dq_of(s) };
+        let speed_changed = !first && (v_mm_s != prev_v_mm_s || (dq_mm != prev_dq_mm && !(shift_start && n == 1)));
         prev_v_mm_s = v_mm_s;
+        prev_dq_mm = dq_mm;
         // The first rolling case after a shift start reads its rolling step (a shift reads none).
         let dq_again =
             (steady_start && n == 1 && p.rolling.dq_mm != p.grid.dx_mm) || (shift_start && n == 1) || speed_changed;
@@ -143,10 +157,10 @@ pub fn module3_input(p: &Problem) -> String {
             friction_lines(p, s.mu, &mut out);
         }
         if first {
-            geometry(p, (!shift).then_some(v_mm_s), load_varies, s.h_coefficients, &mut out);
+            geometry(p, (!shift).then_some((v_mm_s, dq_mm)), load_varies, s.h_coefficients, &mut out);
             row_friction_lines(p, &mut out);
         } else if dq_again {
-            kinematics_and_material(p, Some(v_mm_s), &mut out);
+            kinematics_and_material(p, Some((v_mm_s, dq_mm)), &mut out);
         }
         if let (false, Some(b)) = (first, s.h_coefficients.filter(|_| new_h)) {
             quadratic(b, &mut out);
@@ -204,19 +218,19 @@ fn row_friction_lines(p: &Problem, out: &mut String) {
 
 /// The kinematics (CHI, DQ, VELOC at the row's speed; `None`: a shift, which reads none) and
 /// material lines of a case with C = 2.
-fn kinematics_and_material(p: &Problem, v_mm_s: Option<f64>, out: &mut String) {
+fn kinematics_and_material(p: &Problem, v_and_dq: Option<(f64, f64)>, out: &mut String) {
     let m = &p.material;
-    if let Some(v_mm_s) = v_mm_s {
+    if let Some((v_mm_s, dq_mm)) = v_and_dq {
         let chi = if p.rolling.backward() { "180d" } else { "0.0" };
-        let _ = writeln!(out, "  {chi}   {:?}   {v_mm_s:?}                 CHI, DQ, VELOC", p.rolling.dq_mm);
+        let _ = writeln!(out, "  {chi}   {dq_mm:?}   {v_mm_s:?}                 CHI, DQ, VELOC");
     }
     let _ = writeln!(out, "  {:?}   {:?}   {:?}   {:?}    POISS 1,2,  GG 1,2", m.poisson, m.poisson, m.g_mpa, m.g_mpa);
 }
 
 /// The first case's kinematics, material and geometry lines.
-fn geometry(p: &Problem, v_mm_s: Option<f64>, load_varies: bool, b: Option<[f64; 6]>, out: &mut String) {
+fn geometry(p: &Problem, v_and_dq: Option<(f64, f64)>, load_varies: bool, b: Option<[f64; 6]>, out: &mut String) {
     let (m, g) = (&p.material, &p.grid);
-    kinematics_and_material(p, v_mm_s, out);
+    kinematics_and_material(p, v_and_dq, out);
     if p.geometry.elliptic() && !load_varies {
         let e = p.hertz();
         let _ = writeln!(out, "  -3                                          IPOTCN");

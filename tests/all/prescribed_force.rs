@@ -115,7 +115,8 @@ fn impossible_or_ambiguous_forces_are_refused() {
     assert!(e.contains("creepage.fx_over_fn") && e.contains("step"), "{e}");
     std::fs::write(dir.join("both.csv"), "t_s,cx,fx_over_fn\n0.0,0.0,0.1\n").unwrap();
     let e = err("kind = \"table\"\nfile = \"both.csv\"", "[\"contact\"]");
-    assert!(e.contains("both cx and fx_over_fn"), "{e}");
+    // Both columns: one cell per row (F changing within a history), never both in one row.
+    assert!(e.contains("columns cx, fx_over_fn") && e.contains("both given"), "{e}");
     std::fs::write(dir.join("high.csv"), "t_s,fx_over_fn,mu\n0.0,0.1,0.3\n0.01,0.25,0.2\n").unwrap();
     let e = err("kind = \"table\"\nfile = \"high.csv\"", "[\"contact\"]");
     assert!(e.contains("creepage.fx_over_fn") && e.contains("below mu = 0.2"), "{e}");
