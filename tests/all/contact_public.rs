@@ -80,13 +80,15 @@ fn the_report_lists_every_case_of_every_deck() {
             .chain([("testbank.inp", 1)])
             // The same on a window moved by one DX per case, on its union grid: 116-171.
             .chain((116..=171).map(|c| ("catt_to_cart.inp", c)))
+            // Friction per grid row (V = 3) and the bilinear influence functions (C = 3).
+            .chain([("testbank.inp", 8), ("testbank.inp", 2)])
     {
         let row = format!("| {deck} | {case} | reproduced: worst ");
         let line = table.lines().find(|l| l.starts_with(&row)).unwrap_or_else(|| panic!("{row} not reproduced"));
         let worst: f64 = line[row.len()..].split_whitespace().next().unwrap().parse().unwrap();
         assert!(worst <= 2.0, "{line}");
     }
-    assert_eq!(table.lines().filter(|l| l.contains(" | reproduced: ")).count(), 263);
+    assert_eq!(table.lines().filter(|l| l.contains(" | reproduced: ")).count(), 265);
     // N = 0: the FN found is compared with the printed FN.
     let fn_checked = |c: usize| format!("| catt_to_cart.inp | {c} | reproduced: ");
     assert!((59..=114).all(|c| table.contains(&fn_checked(c))));
