@@ -79,12 +79,14 @@ fn the_report_lists_every_case_of_every_deck() {
             // The approach prescribed (N = 0) with the quadratic moved per case: catt_to_cart
             // 59-114 after the shift 58, testbank 1.
             .chain((59..=114).map(|c| ("catt_to_cart.inp", c)))
-            .chain([("testbank.inp", 1)])
+            .chain([("testbank.inp", 1), ("testbank.inp", 11)])
             // Hertz's elliptical pressure (B = 2) under the shift that starts rolling under FX,
             // then CKSI with DQ 0.8 (F and DQ changing within the history): testbank 13-16.
             .chain((13..=16).map(|c| ("testbank.inp", c)))
             // The same on a window moved by one DX per case, on its union grid: 116-171.
             .chain((116..=171).map(|c| ("catt_to_cart.inp", c)))
+            // Friction per grid row (V = 3) and the bilinear influence functions (C = 3).
+            .chain([("testbank.inp", 8), ("testbank.inp", 2)])
     {
         let row = format!("| {deck} | {case} | reproduced: worst ");
         let line = table.lines().find(|l| l.starts_with(&row)).unwrap_or_else(|| panic!("{row} not reproduced"));
