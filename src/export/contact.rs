@@ -184,7 +184,11 @@ fn friction_lines(p: &Problem, mu: f64, out: &mut String) {
 fn kinematics_and_material(p: &Problem, v_mm_s: Option<f64>, out: &mut String) {
     let m = &p.material;
     if let Some(v_mm_s) = v_mm_s {
-        let chi = if p.rolling.backward() { "180d" } else { "0.0" };
+        let chi = match p.rolling.chi_deg {
+            0.0 => "0.0".to_string(),
+            180.0 => "180d".to_string(),
+            deg => format!("{deg:?}d"),
+        };
         let _ = writeln!(out, "  {chi}   {:?}   {v_mm_s:?}                 CHI, DQ, VELOC", p.rolling.dq_mm);
     }
     let _ = writeln!(out, "  {:?}   {:?}   {:?}   {:?}    POISS 1,2,  GG 1,2", m.poisson, m.poisson, m.g_mpa, m.g_mpa);

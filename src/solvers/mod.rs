@@ -145,11 +145,11 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
                 format!("models that solve each row's normal problem: {} (leave {} out of this scene: it takes FN and the scene's geometry only)", able.join(", "), m.name),
             ));
         }
-        if problem.rolling.backward() && !BACKWARD_ROLLING.contains(&m.name) {
+        if problem.rolling.chi_deg != 0.0 && !OTHER_DIRECTIONS.contains(&m.name) {
             return Err(InputError::new(
                 "rolling.chi_deg",
-                format!("180 with {:?}", m.name),
-                format!("models that roll along -x: {} (leave {} out of this scene: it rolls along +x only)", BACKWARD_ROLLING.join(", "), m.name),
+                format!("{} with {:?}", problem.rolling.chi_deg, m.name),
+                format!("models that roll along another direction than +x: {} (leave {} out of this scene: it rolls along +x only)", OTHER_DIRECTIONS.join(", "), m.name),
             ));
         }
         if shifts && !m.shifts {
@@ -164,8 +164,9 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
     })
 }
 
-/// The built-in models that take CHI = 180° (rolling along -x; CONTACT `m_sdis.f90`).
-const BACKWARD_ROLLING: [&str; 1] = [contact::NAME];
+/// The built-in models that take a rolling direction CHI other than 0 (along -x, or any angle in
+/// transient rolling; CONTACT `m_sdis.f90`).
+const OTHER_DIRECTIONS: [&str; 1] = [contact::NAME];
 
 /// The built-in models that take a falling friction law: the exact solver, FASTSIM and the UBA
 /// (each element's bound μ(s) p, [`brush::Falling`]), the relaxation model (FASTSIM's falling

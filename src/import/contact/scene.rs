@@ -567,15 +567,21 @@ fn upper_edge(x0: f64, n: usize, d: f64) -> f64 {
 }
 
 /// `[rolling] chi_deg` of CONTACT's CHI [rad]: 0 or 180 within 0.01 rad (CONTACT's own test,
-/// `m_sdis.f90`), `None` for other directions.
-pub fn chi_deg(chi_rad: f64) -> Option<f64> {
+/// `m_sdis.f90`), other directions in degrees in [0, 360), rounded to 1e-9 degrees (a deck's
+/// `30d` is read in radians: its 30 comes back exactly).
+pub fn chi_deg(chi_rad: f64) -> f64 {
     if chi_rad.abs() < 0.01 {
-        Some(0.0)
+        0.0
     } else if (chi_rad - std::f64::consts::PI).abs() < 0.01 {
-        Some(180.0)
+        180.0
     } else {
-        None
+        ((chi_rad.to_degrees() * 1e9).round() / 1e9).rem_euclid(360.0)
     }
+}
+
+/// Whether CHI [rad] rolls along +x or -x (CONTACT's test, within 0.01 rad).
+pub fn along_x(chi_rad: f64) -> bool {
+    matches!(chi_deg(chi_rad), 0.0 | 180.0)
 }
 
 /// The Courant number whose `courant · dx` is DQ exactly where one is within a few ulps.
@@ -909,8 +915,8 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     } else if roll.rolling_read {
         let mut rolling = vec![("v_mm_s", Value::Float(roll.veloc_mm_s)), ("courant", Value::Float(1.0))];
         // CONTACT rolls along CHI for T = 2, 3 only (shifts take CHI = 0, `m_sdis.f90`).
-        if roll_t >= 2 && chi_deg(roll.chi_rad) == Some(180.0) {
-            rolling.push(("chi_deg", Value::Float(180.0)));
+        if roll_t >= 2 && chi_deg(roll.chi_rad) != 0.0 {
+            rolling.push(("chi_deg", Value::Float(chi_deg(roll.chi_rad))));
         }
         doc.insert("rolling".into(), table(rolling));
     }

@@ -2,6 +2,7 @@
 //! once per load, then one tangential solve per sample (steady: [`TangentialSolver::steady`];
 //! transient: [`TangentialSolver::transient_step`] from the last two steps' tractions).
 
+use super::direction;
 use super::force;
 use super::influence::Kernel;
 use super::mirror;
@@ -42,11 +43,20 @@ const SECONDS_PER_COST: f64 = 1.3e-7;
 
 /// A run estimated to take longer than `[limits] max_estimated_s` is refused before it starts.
 fn check(p: &Problem) -> Result<(), InputError> {
-    if p.rolling.backward() && (p.rolling.motion == Motion::Shift || p.friction.is_falling()) {
+    let chi_deg = p.rolling.chi_deg;
+    if chi_deg != 0.0 && (p.rolling.motion == Motion::Shift || p.friction.is_falling()) {
         return Err(InputError::new(
             "rolling.chi_deg",
-            180,
-            "0 with rolling.motion = \"shift\" or a falling [friction] law (the exact solver rolls along -x with Coulomb friction only)",
+            chi_deg,
+            "0 with rolling.motion = \"shift\" or a falling [friction] law (the exact solver rolls along another direction than +x with Coulomb friction only)",
+        ));
+    }
+    let steady = !p.loading.is_transient() || p.loading.steady_start().is_some();
+    if p.rolling.oblique() && steady {
+        return Err(InputError::new(
+            "rolling.chi_deg",
+            chi_deg,
+            "0 or 180 in steady rolling (a sweep or a steady start; CONTACT's steady solver rolls along +x or -x, m_sdis.f90 check_roll_stepsize), any angle in transient rolling",
         ));
     }
     let estimated_s = p.loading.rows().count() as f64 * cost_per_row(p) * SECONDS_PER_COST;
@@ -168,6 +178,12 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     // CHI = 180°: the solver works on the grid mirrored about x = 0 ([`mirror`]).
     let x = if p.rolling.backward() { mirror::field_x(g.mx, &x) } else { x };
     let tangential = match p.rolling.motion {
+        Motion::Rolling if p.rolling.oblique() => {
+            let towards = direction::towards(p.rolling.chi_deg);
+            let ks = Kernel::rolling(g.mx, g.my, g.dx_mm, g.dy_mm, m.g_mpa, m.poisson, p.rolling.dq_mm, towards)
+                .map_err(ContactRunError::Kernel)?;
+            TangentialSolver::rolling_towards(&k0, &ks, towards, &x, &y)
+        }
         Motion::Rolling => TangentialSolver::new(&k0, &kernel(p.rolling.dq_mm)?, &x, &y),
         Motion::Shift => TangentialSolver::for_shifts(&k0, &x, &y),
     }
