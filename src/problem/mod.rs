@@ -59,11 +59,6 @@ impl Rolling {
     pub fn backward(&self) -> bool {
         self.chi_deg == 180.0
     }
-
-    /// Whether the bodies roll along neither +x nor -x (CHI other than 0 and 180°).
-    pub fn oblique(&self) -> bool {
-        self.chi_deg != 0.0 && !self.backward()
-    }
 }
 
 /// A contact given per element: every load of the history gives a normal contact (else an input

@@ -145,10 +145,11 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
                 format!("models that solve each row's normal problem: {} (leave {} out of this scene: it takes FN and the scene's geometry only)", able.join(", "), m.name),
             ));
         }
-        if problem.rolling.chi_deg != 0.0 && !OTHER_DIRECTIONS.contains(&m.name) {
+        let turned = problem.loading.rows().map(|s| s.chi_deg_or(problem.rolling.chi_deg)).find(|&c| c != 0.0);
+        if let Some(chi_deg) = turned.filter(|_| !OTHER_DIRECTIONS.contains(&m.name)) {
             return Err(InputError::new(
                 "rolling.chi_deg",
-                format!("{} with {:?}", problem.rolling.chi_deg, m.name),
+                format!("{chi_deg} with {:?}", m.name),
                 format!("models that roll along another direction than +x: {} (leave {} out of this scene: it rolls along +x only)", OTHER_DIRECTIONS.join(", "), m.name),
             ));
         }

@@ -147,12 +147,16 @@ fn export_then_import_keeps_the_direction() {
 /// element centres symmetric under quarter turns, so rolling along CHI is rolling along +x turned
 /// by CHI. `creepage` is a `[creepage]` body; the solver stopped at 1e-12.
 fn circle(n: usize, chi_deg: f64, creepage: &str) -> creepbench::problem::Problem {
-    let text = format!(
-        "name = \"circle\"\nsolvers = [\"contact\"]\n[contact]\na_mm = 6.0\nb_mm = 6.0\nfn_n = 50000.0\nmu = 0.3\n\
+    problem(&circle_text("[\"contact\"]", n, chi_deg, creepage))
+}
+
+/// The scene text of [`circle`] with `solvers`.
+fn circle_text(solvers: &str, n: usize, chi_deg: f64, creepage: &str) -> String {
+    format!(
+        "name = \"circle\"\nsolvers = {solvers}\n[contact]\na_mm = 6.0\nb_mm = 6.0\nfn_n = 50000.0\nmu = 0.3\n\
          [material]\ng_mpa = 82000.0\npoisson = 0.28\n[grid]\nmx = {n}\nmy = {n}\n[creepage]\n{creepage}\n\
          [rolling]\nchi_deg = {chi_deg:?}\n[contact_solver]\ntolerance = 1e-12\n"
-    );
-    problem(&text)
+    )
 }
 
 /// A step from rest to `c` in cx with `cy`, `cs` held, `steps` steps.
@@ -251,4 +255,49 @@ fn transient_rolling_at_30_deg_approaches_the_turned_steady_state() {
     }
     assert!(errors[1] < 0.5 * errors[0], "no convergence with the grid: {errors:?}");
     assert!(errors[1] < 5e-3, "{errors:?}");
+}
+
+/// A history of `steps` steps at the creepages (cx, cy, cs), its rolling direction CHI given per
+/// step by the table column chi_deg (`chis[k - 1]` at step k), on the circle of [`circle`].
+fn turning(name: &str, chis: &[f64], c: [f64; 3]) -> creepbench::problem::Problem {
+    problem(&turning_text(name, "[\"contact\"]", chis, c))
+}
+
+/// The scene text of [`turning`] with `solvers` (its table written to a folder `name`).
+fn turning_text(name: &str, solvers: &str, chis: &[f64], c: [f64; 3]) -> String {
+    let dir = tempdir(name);
+    let dt_s = 0.6 / 1000.0; // dx = 12 mm / 20, V = 1000 mm/s, courant 1
+    let mut csv = String::from("t_s,cx,cy,cs,chi_deg\n");
+    for (k, chi) in chis.iter().enumerate() {
+        csv.push_str(&format!("{:?},{:?},{:?},{:?},{chi:?}\n", (k + 1) as f64 * dt_s, c[0], c[1], c[2]));
+    }
+    let file = dir.join("table.csv");
+    std::fs::write(&file, csv).unwrap();
+    circle_text(solvers, 20, 0.0, &format!("kind = \"table\"\nfile = {:?}", file.to_str().unwrap()))
+}
+
+/// CHI changing within a history (the table's chi_deg, CONTACT's CHI read anew in a case): a
+/// history rolling along +x for 6 steps, then along +y (CONTACT's frame) for 10, turned as a
+/// whole by a quarter turn (its directions 90 then 180, the creepage vector turned) gives the
+/// forces turned, row by row to 1e-10; the turn matters (the forces differ from rolling on
+/// along +x by more than 1e-2 of |F|).
+#[test]
+fn a_history_that_turns_is_the_turned_history() {
+    let (c, cs) = (0.0015, 0.0004);
+    let chis = |first: f64, then: f64| [vec![first; 6], vec![then; 10]].concat();
+    let base = run(&turning("turning_base", &chis(0.0, 90.0), [c, 0.0, cs]), "contact");
+    let turned = run(&turning("turning_turned", &chis(90.0, 180.0), [0.0, c, cs]), "contact");
+    let worst = assert_turned(&turned, &base, 1);
+    println!("a history turning 0 -> 90 deg against 90 -> 180 deg turned back: worst {worst:.2e}");
+    assert!(worst < 1e-10, "worst relative difference {worst:.2e}");
+    let straight = run(&turning("turning_straight", &chis(0.0, 0.0), [c, 0.0, cs]), "contact");
+    let plain = run(&circle(20, 0.0, &step(c, 0.0, cs, 16)), "contact");
+    assert!(assert_turned(&straight, &plain, 0) < 1e-13, "a chi_deg column of zeros changes the history");
+    let turn = assert_turned(&base, &straight, 0);
+    assert!(turn > 1e-2, "the turn has no effect: {turn:.2e}");
+    // Another model refuses a history that turns, naming the key (the scene's own CHI is 0).
+    let text = turning_text("turning_fastsim", "[\"fastsim\"]", &chis(0.0, 90.0), [c, 0.0, cs]);
+    let scene = Scene::from_toml(&text, std::path::Path::new(".")).unwrap();
+    let e = creepbench::pipeline::resolve(&scene).map(|_| ()).unwrap_err().to_string();
+    assert!(e.contains("rolling.chi_deg") && e.contains("90 with \"fastsim\""), "{e}");
 }

@@ -43,20 +43,34 @@ const SECONDS_PER_COST: f64 = 1.3e-7;
 
 /// A run estimated to take longer than `[limits] max_estimated_s` is refused before it starts.
 fn check(p: &Problem) -> Result<(), InputError> {
-    let chi_deg = p.rolling.chi_deg;
-    if chi_deg != 0.0 && (p.rolling.motion == Motion::Shift || p.friction.is_falling()) {
+    let chi_of = |s: &Sample| s.chi_deg_or(p.rolling.chi_deg);
+    let turned = p.loading.rows().map(chi_of).find(|&c| c != 0.0);
+    if let Some(chi_deg) = turned.filter(|_| p.rolling.motion == Motion::Shift || p.friction.is_falling()) {
         return Err(InputError::new(
             "rolling.chi_deg",
             chi_deg,
             "0 with rolling.motion = \"shift\" or a falling [friction] law (the exact solver rolls along another direction than +x with Coulomb friction only)",
         ));
     }
-    let steady = !p.loading.is_transient() || p.loading.steady_start().is_some();
-    if p.rolling.oblique() && steady {
+    let steady: Vec<&Sample> = match p.loading.steady_start() {
+        Some(start) => vec![start],
+        None if !p.loading.is_transient() => p.loading.rows().collect(),
+        None => Vec::new(),
+    };
+    let mirrored = mirrored(p);
+    if let Some(chi_deg) = steady.iter().map(|&s| chi_of(s)).find(|&c| c != 0.0 && !(c == 180.0 && mirrored)) {
         return Err(InputError::new(
             "rolling.chi_deg",
             chi_deg,
-            "0 or 180 in steady rolling (a sweep or a steady start; CONTACT's steady solver rolls along +x or -x, m_sdis.f90 check_roll_stepsize), any angle in transient rolling",
+            "0 or 180 in steady rolling (a sweep or a steady start, 0 where the table's chi_deg turns the history; CONTACT's steady solver rolls along +x or -x, m_sdis.f90 check_roll_stepsize), any angle in transient rolling",
+        ));
+    }
+    let entering = p.rolling.dq_mm > p.grid.dx_mm;
+    if !mirrored && entering && p.loading.rows().any(|s| chi_of(s) == 180.0) {
+        return Err(InputError::new(
+            "creepage.file column chi_deg",
+            180,
+            "another direction with dq > dx (rolling.courant > 1) where the history turns: CONTACT's leading-edge correction follows -x at CHI = 180 only when the whole history rolls so",
         ));
     }
     let estimated_s = p.loading.rows().count() as f64 * cost_per_row(p) * SECONDS_PER_COST;
@@ -68,6 +82,31 @@ fn check(p: &Problem) -> Result<(), InputError> {
         p.limits.max_estimated_s,
         format!("a limit above the exact-theory solver's estimated {estimated_s:.0} s for {} rows on {}x{} elements (raise it to run this scene)", p.loading.rows().count(), p.grid.mx, p.grid.my),
     ))
+}
+
+/// Whether the solver works in the frame mirrored about x = 0 ([`mirror`]): the whole history
+/// rolls along -x (`[rolling] chi_deg = 180`, no table column `chi_deg` turning it).
+fn mirrored(p: &Problem) -> bool {
+    p.rolling.backward() && p.loading.rows().all(|s| s.chi_deg.is_none())
+}
+
+/// The tangential solver rolling along CHI = `chi_deg` (grid coordinates; 0: the solver's own
+/// direction, bit for bit).
+fn tangential_at(
+    p: &Problem,
+    k0: &Kernel,
+    chi_deg: f64,
+    x: &[f64],
+    y: &[f64],
+) -> Result<TangentialSolver, ContactError> {
+    let (g, m) = (&p.grid, &p.material);
+    if chi_deg == 0.0 {
+        let ks = Kernel::new(g.mx, g.my, g.dx_mm, g.dy_mm, m.g_mpa, m.poisson, p.rolling.dq_mm)?;
+        return TangentialSolver::new(k0, &ks, x, y);
+    }
+    let towards = direction::towards(chi_deg);
+    let ks = Kernel::rolling(g.mx, g.my, g.dx_mm, g.dy_mm, m.g_mpa, m.poisson, p.rolling.dq_mm, towards)?;
+    TangentialSolver::rolling_towards(k0, &ks, towards, x, y)
 }
 
 /// About `N log N` per transient step for `N` elements (FFT products); a steady point about 3 steps.
@@ -151,6 +190,12 @@ struct Contact<'a> {
     /// CHI = 180°: the pressure and the last solve's tractions and states back in the scene's
     /// frame (the solver's are mirrored, [`mirror`]); `None` when rolling along +x.
     shown: Option<Shown>,
+    /// Whether the solver works in the mirrored frame ([`mirrored`]).
+    mirrored: bool,
+    /// The rolling direction [deg] `tangential` rolls along (the scene's frame; 0 when mirrored).
+    chi_deg: f64,
+    /// The unshifted kernel (a turn builds the shifted one anew).
+    k0: Kernel,
 }
 
 /// A field in the scene's frame where the solver works in the mirrored one.
@@ -176,15 +221,16 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let normal = NormalSolver::new(&k0).map_err(ContactRunError::Kernel)?;
     let (x, y) = g.centres();
     // CHI = 180°: the solver works on the grid mirrored about x = 0 ([`mirror`]).
-    let x = if p.rolling.backward() { mirror::field_x(g.mx, &x) } else { x };
+    let mirrored = mirrored(p);
+    let x = if mirrored { mirror::field_x(g.mx, &x) } else { x };
+    // The first row's direction (a table's chi_deg turns the solver from row to row).
+    let chi_deg = match p.loading.rows().next() {
+        _ if mirrored => 0.0,
+        Some(s) => s.chi_deg_or(p.rolling.chi_deg),
+        None => p.rolling.chi_deg,
+    };
     let tangential = match p.rolling.motion {
-        Motion::Rolling if p.rolling.oblique() => {
-            let towards = direction::towards(p.rolling.chi_deg);
-            let ks = Kernel::rolling(g.mx, g.my, g.dx_mm, g.dy_mm, m.g_mpa, m.poisson, p.rolling.dq_mm, towards)
-                .map_err(ContactRunError::Kernel)?;
-            TangentialSolver::rolling_towards(&k0, &ks, towards, &x, &y)
-        }
-        Motion::Rolling => TangentialSolver::new(&k0, &kernel(p.rolling.dq_mm)?, &x, &y),
+        Motion::Rolling => tangential_at(p, &k0, chi_deg, &x, &y),
         Motion::Shift => TangentialSolver::for_shifts(&k0, &x, &y),
     }
     .map_err(ContactRunError::Kernel)?;
@@ -224,6 +270,9 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
         found: None,
         outer: force::Memory::default(),
         shown: None,
+        mirrored,
+        chi_deg,
+        k0,
     }))
 }
 
@@ -243,9 +292,26 @@ impl Contact<'_> {
         t
     }
 
+    /// The tangential solver turned to the row's rolling direction (a table's chi_deg; CONTACT
+    /// computes the influence coefficients anew for a case that reads a new CHI, C = 2).
+    fn turn(&mut self, at: &Sample) -> Result<(), SolveError> {
+        let chi_deg = at.chi_deg_or(self.p.rolling.chi_deg);
+        if self.mirrored || chi_deg == self.chi_deg || self.p.rolling.motion != Motion::Rolling {
+            return Ok(());
+        }
+        let (x, y) = self.p.grid.centres();
+        let mut t = tangential_at(self.p, &self.k0, chi_deg, &x, &y).map_err(ContactRunError::Kernel)?;
+        if let Some(l) = &self.loaded {
+            t.set_pressure(&l.pn).map_err(|source| ContactRunError::Setup { fn_n: l.fn_n, source })?;
+        }
+        self.tangential = t;
+        self.chi_deg = chi_deg;
+        Ok(())
+    }
+
     /// The sample in the solver's frame (mirrored for CHI = 180°, [`mirror::sample`]).
     fn frame(&self, at: &Sample) -> Sample {
-        if self.p.rolling.backward() {
+        if self.mirrored {
             mirror::sample(at)
         } else {
             *at
@@ -254,7 +320,7 @@ impl Contact<'_> {
 
     /// Creepages found under prescribed forces, in the scene's frame.
     fn unframe(&self, found: Option<[f64; 2]>) -> Option<[f64; 2]> {
-        found.map(|c| if self.p.rolling.backward() { mirror::found(c) } else { c })
+        found.map(|c| if self.mirrored { mirror::found(c) } else { c })
     }
 
     fn loaded(&self) -> &Loaded {
@@ -269,7 +335,7 @@ impl Contact<'_> {
     /// a fixed point that did not converge ends the row at the iteration limit.
     fn record_with(&mut self, r: StepResult, veldep: Option<VelDepOutcome>) -> Step {
         let mx = self.p.grid.mx;
-        self.shown = self.p.rolling.backward().then(|| Shown {
+        self.shown = self.mirrored.then(|| Shown {
             pn: mirror::field(mx, &self.loaded().pn),
             px: mirror::field_x(mx, &r.px),
             py: mirror::field(mx, &r.py),
@@ -426,7 +492,7 @@ impl Stepper for Contact<'_> {
             }
             None => (self.normal_by_force(at)?, at.fn_n),
         };
-        let pn_mpa = if p.rolling.backward() { mirror::field(p.grid.mx, &pn_mpa) } else { pn_mpa };
+        let pn_mpa = if self.mirrored { mirror::field(p.grid.mx, &pn_mpa) } else { pn_mpa };
         let pn_sum: f64 = pn_mpa.iter().sum();
         if pn_sum <= 0.0 {
             return Err(ContactRunError::NoContact { mx: p.grid.mx, my: p.grid.my, fn_n }.into());
@@ -459,6 +525,7 @@ impl Stepper for Contact<'_> {
     }
 
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        self.turn(at)?;
         let at = &self.frame(at);
         if self.veldep.is_some() {
             return self.veldep_step(at, true);
@@ -500,6 +567,7 @@ impl Stepper for Contact<'_> {
     }
 
     fn transient(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        self.turn(at)?;
         let at = &self.frame(at);
         if self.veldep.is_some() {
             return self.veldep_step(at, false);
