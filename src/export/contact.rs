@@ -54,6 +54,7 @@ pub fn module3_input(p: &Problem) -> String {
     let falling = p.friction.is_falling();
     let mut prev_mu = f64::NAN;
     let mut prev_v_mm_s = p.rolling.v_mm_s;
+    let mut prev_chi_deg = p.rolling.chi_deg;
     for (n, s) in rows.iter().enumerate() {
         let first = n == 0;
         let steady = sweep || (steady_start && first);
@@ -84,9 +85,15 @@ pub fn module3_input(p: &Problem) -> String {
         let v_mm_s = s.v_mm_s.unwrap_or(p.rolling.v_mm_s);
         let speed_changed = !first && v_mm_s != prev_v_mm_s;
         prev_v_mm_s = v_mm_s;
+        // A row's own rolling direction (the table's chi_deg) is read again where it changes.
+        let chi_deg = s.chi_deg_or(p.rolling.chi_deg);
+        let chi_changed = !first && chi_deg != prev_chi_deg;
+        prev_chi_deg = chi_deg;
         // The first rolling case after a shift start reads its rolling step (a shift reads none).
-        let dq_again =
-            (steady_start && n == 1 && p.rolling.dq_mm != p.grid.dx_mm) || (shift_start && n == 1) || speed_changed;
+        let dq_again = (steady_start && n == 1 && p.rolling.dq_mm != p.grid.dx_mm)
+            || (shift_start && n == 1)
+            || speed_changed
+            || chi_changed;
         let law = law_digit(&p.friction);
         // A row's own undeformed distance (IBASE = 1) is read again where it changes (Z = 2).
         let new_h = !first && s.h_coefficients.is_some() && s.h_coefficients != rows[n - 1].h_coefficients;
@@ -128,9 +135,9 @@ pub fn module3_input(p: &Problem) -> String {
             friction_lines(p, s.mu, &mut out);
         }
         if first {
-            geometry(p, (!shift).then_some(v_mm_s), load_varies, s.h_coefficients, &mut out);
+            geometry(p, (!shift).then_some((v_mm_s, chi_deg)), load_varies, s.h_coefficients, &mut out);
         } else if dq_again {
-            kinematics_and_material(p, Some(v_mm_s), &mut out);
+            kinematics_and_material(p, Some((v_mm_s, chi_deg)), &mut out);
         }
         if let (false, Some(b)) = (first, s.h_coefficients.filter(|_| new_h)) {
             quadratic(b, &mut out);
@@ -179,12 +186,12 @@ fn friction_lines(p: &Problem, mu: f64, out: &mut String) {
     let _ = writeln!(out, "  {:?}   {:?}                           MEMDST, MEM_S0", m.memory_mm, m.s0_mm_s);
 }
 
-/// The kinematics (CHI, DQ, VELOC at the row's speed; `None`: a shift, which reads none) and
+/// The kinematics (CHI, DQ, VELOC at the row's direction and speed; `None`: a shift, which reads none) and
 /// material lines of a case with C = 2.
-fn kinematics_and_material(p: &Problem, v_mm_s: Option<f64>, out: &mut String) {
+fn kinematics_and_material(p: &Problem, rolling: Option<(f64, f64)>, out: &mut String) {
     let m = &p.material;
-    if let Some(v_mm_s) = v_mm_s {
-        let chi = match p.rolling.chi_deg {
+    if let Some((v_mm_s, chi_deg)) = rolling {
+        let chi = match chi_deg {
             0.0 => "0.0".to_string(),
             180.0 => "180d".to_string(),
             deg => format!("{deg:?}d"),
@@ -195,9 +202,9 @@ fn kinematics_and_material(p: &Problem, v_mm_s: Option<f64>, out: &mut String) {
 }
 
 /// The first case's kinematics, material and geometry lines.
-fn geometry(p: &Problem, v_mm_s: Option<f64>, load_varies: bool, b: Option<[f64; 6]>, out: &mut String) {
+fn geometry(p: &Problem, rolling: Option<(f64, f64)>, load_varies: bool, b: Option<[f64; 6]>, out: &mut String) {
     let (m, g) = (&p.material, &p.grid);
-    kinematics_and_material(p, v_mm_s, out);
+    kinematics_and_material(p, rolling, out);
     if p.geometry.elliptic() && !load_varies {
         let e = p.hertz();
         let _ = writeln!(out, "  -3                                          IPOTCN");

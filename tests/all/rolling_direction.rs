@@ -301,3 +301,56 @@ fn a_history_that_turns_is_the_turned_history() {
     let e = creepbench::pipeline::resolve(&scene).map(|_| ()).unwrap_err().to_string();
     assert!(e.contains("rolling.chi_deg") && e.contains("90 with \"fastsim\""), "{e}");
 }
+
+/// A deck written by hand whose CHI changes within a transient history (case 2 reads CHI = 90d
+/// with C = 2, case 3 keeps it): `import contact` writes one scene with the table column chi_deg
+/// 0, 90, 90; the scene runs (the turn changes Fy of case 2 against rolling on along +x); `export
+/// contact` writes CHI again in case 2 only, and importing that gives the same rows.
+#[test]
+fn a_deck_that_turns_imports_with_the_column_and_exports_back() {
+    use creepbench::export::contact::module3_input;
+    use creepbench::import::contact::scene::import_text;
+    let case = |first: bool, chi: Option<&str>| {
+        let (p, ldc, h) =
+            if first { ("2", "022020", "0") } else { ("0", if chi.is_some() { "102000" } else { "100000" }, "1") };
+        let mut c = format!(
+            " 3  MODULE\n  {p}02100   P-B-T-N-F-S\n  {ldc}   L-D-C-M-Z-E\n 00{h}2211   H-G-I-A-O-W-R\n   999   200    30     1   1e-08\n  50000.0   0.0015   0.0   0.0004   FN, CKSI, CETA, CPHI\n"
+        );
+        if first {
+            c.push_str("  0.3   0.3   FSTAT, FKIN\n");
+        }
+        if let Some(chi) = chi {
+            c.push_str(&format!("  {chi}   0.6   1000.0   CHI, DQ, VELOC\n  0.28   0.28   82000.0   82000.0\n"));
+        }
+        if first {
+            c.push_str("  -3\n  20   20   6.0   6.0   1.0   MX, MY, AA, BB, SCALE\n");
+        }
+        c
+    };
+    let deck = format!("{}{}{} 0  MODULE\n", case(true, Some("0.0")), case(false, Some("90d")), case(false, None));
+    let load = |name: &str, text: &str| {
+        let imported = import_text("turn.inp", "turn", text).unwrap();
+        let refused: Vec<String> = imported.statuses.iter().flat_map(|s| s.refused.clone()).collect();
+        assert!(refused.is_empty(), "{refused:?}");
+        assert_eq!(imported.scenes.len(), 1);
+        let dir = tempdir(name);
+        for (file, text) in &imported.scenes[0].files {
+            std::fs::write(dir.join(file), text).unwrap();
+        }
+        creepbench::pipeline::load(&dir.join(&imported.scenes[0].files[0].0), &[]).unwrap()
+    };
+    let p = load("turn_import", &deck);
+    let chis: Vec<f64> = p.loading.rows().map(|s| s.chi_deg_or(p.rolling.chi_deg)).collect();
+    assert_eq!(chis, [0.0, 90.0, 90.0]);
+    let turned = forces(&run(&p, "contact"));
+    let straight = forces(&run(&load("turn_straight", &deck.replace("90d", "0.0")), "contact"));
+    assert!((turned[1][1] - straight[1][1]).abs() > 1e-3, "{turned:?} {straight:?}");
+    let again = module3_input(&p);
+    assert_eq!(again.matches("CHI, DQ, VELOC").count(), 2, "{again}");
+    assert!(again.contains("  90.0d   "), "{again}");
+    let back = load("turn_export", &again);
+    let rows = |p: &creepbench::problem::Problem| {
+        p.loading.rows().map(|s| [s.cx, s.cy, s.cs, s.chi_deg_or(p.rolling.chi_deg)]).collect::<Vec<_>>()
+    };
+    assert_eq!(rows(&p), rows(&back));
+}
