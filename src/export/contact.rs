@@ -66,6 +66,7 @@ pub fn module3_input(p: &Problem) -> String {
     // A row's own rolling step (a table's courant: CONTACT's DQ per case).
     let dq_of = |s: &Sample| s.courant.map_or(p.rolling.dq_mm, |c| c * p.grid.dx_mm);
     let mut prev_dq_mm = p.rolling.dq_mm;
+    let mut prev_chi_deg = p.rolling.chi_deg;
     for (n, s) in rows.iter().enumerate() {
         let first = n == 0;
         let steady = sweep || (steady_start && first);
@@ -107,9 +108,15 @@ pub fn module3_input(p: &Problem) -> String {
         let speed_changed = !first && (v_mm_s != prev_v_mm_s || (dq_mm != prev_dq_mm && !(shift_start && n == 1)));
         prev_v_mm_s = v_mm_s;
         prev_dq_mm = dq_mm;
+        // A row's own rolling direction (the table's chi_deg) is read again where it changes.
+        let chi_deg = s.chi_deg_or(p.rolling.chi_deg);
+        let chi_changed = !first && chi_deg != prev_chi_deg;
+        prev_chi_deg = chi_deg;
         // The first rolling case after a shift start reads its rolling step (a shift reads none).
-        let dq_again =
-            (steady_start && n == 1 && p.rolling.dq_mm != p.grid.dx_mm) || (shift_start && n == 1) || speed_changed;
+        let dq_again = (steady_start && n == 1 && p.rolling.dq_mm != p.grid.dx_mm)
+            || (shift_start && n == 1)
+            || speed_changed
+            || chi_changed;
         let law = law_digit(&p.friction);
         // A row's own undeformed distance (IBASE = 1) is read again where it changes (Z = 2).
         let new_h = !first && s.h_coefficients.is_some() && s.h_coefficients != rows[n - 1].h_coefficients;
@@ -157,10 +164,10 @@ pub fn module3_input(p: &Problem) -> String {
             friction_lines(p, s.mu, &mut out);
         }
         if first {
-            geometry(p, (!shift).then_some((v_mm_s, dq_mm)), load_varies, s.h_coefficients, &mut out);
+            geometry(p, (!shift).then_some((v_mm_s, dq_mm, chi_deg)), load_varies, s.h_coefficients, &mut out);
             row_friction_lines(p, &mut out);
         } else if dq_again {
-            kinematics_and_material(p, Some((v_mm_s, dq_mm)), &mut out);
+            kinematics_and_material(p, Some((v_mm_s, dq_mm, chi_deg)), &mut out);
         }
         if let (false, Some(b)) = (first, s.h_coefficients.filter(|_| new_h)) {
             quadratic(b, &mut out);
@@ -216,21 +223,25 @@ fn row_friction_lines(p: &Problem, out: &mut String) {
     }
 }
 
-/// The kinematics (CHI, DQ, VELOC at the row's speed; `None`: a shift, which reads none) and
-/// material lines of a case with C = 2.
-fn kinematics_and_material(p: &Problem, v_and_dq: Option<(f64, f64)>, out: &mut String) {
+/// The kinematics (CHI, DQ, VELOC at the row's direction, rolling step and speed; `None`: a
+/// shift, which reads none) and material lines of a case with C = 2.
+fn kinematics_and_material(p: &Problem, rolling: Option<(f64, f64, f64)>, out: &mut String) {
     let m = &p.material;
-    if let Some((v_mm_s, dq_mm)) = v_and_dq {
-        let chi = if p.rolling.backward() { "180d" } else { "0.0" };
+    if let Some((v_mm_s, dq_mm, chi_deg)) = rolling {
+        let chi = match chi_deg {
+            0.0 => "0.0".to_string(),
+            180.0 => "180d".to_string(),
+            deg => format!("{deg:?}d"),
+        };
         let _ = writeln!(out, "  {chi}   {dq_mm:?}   {v_mm_s:?}                 CHI, DQ, VELOC");
     }
     let _ = writeln!(out, "  {:?}   {:?}   {:?}   {:?}    POISS 1,2,  GG 1,2", m.poisson, m.poisson, m.g_mpa, m.g_mpa);
 }
 
 /// The first case's kinematics, material and geometry lines.
-fn geometry(p: &Problem, v_and_dq: Option<(f64, f64)>, load_varies: bool, b: Option<[f64; 6]>, out: &mut String) {
+fn geometry(p: &Problem, rolling: Option<(f64, f64, f64)>, load_varies: bool, b: Option<[f64; 6]>, out: &mut String) {
     let (m, g) = (&p.material, &p.grid);
-    kinematics_and_material(p, v_and_dq, out);
+    kinematics_and_material(p, rolling, out);
     if p.geometry.elliptic() && !load_varies {
         let e = p.hertz();
         let _ = writeln!(out, "  -3                                          IPOTCN");

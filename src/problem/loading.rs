@@ -45,6 +45,10 @@ pub struct Sample {
     /// + b5 y + b6` in CONTACT's coordinates, in place of the scene's geometry; `None`: the geometry's.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub h_coefficients: Option<[f64; 6]>,
+    /// The rolling direction CHI [deg] of this row where a table gives it (column `chi_deg`);
+    /// `None`: `[rolling] chi_deg`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub chi_deg: Option<f64>,
 }
 
 impl Sample {
@@ -65,7 +69,13 @@ impl Sample {
             fy_target: None,
             pen_mm: None,
             h_coefficients: None,
+            chi_deg: None,
         }
+    }
+
+    /// The rolling direction of this row [deg]: its own, else `rolling`'s.
+    pub fn chi_deg_or(&self, rolling_chi_deg: f64) -> f64 {
+        self.chi_deg.unwrap_or(rolling_chi_deg)
     }
 
     /// Whether a total force is prescribed in place of a creepage.
@@ -349,6 +359,7 @@ fn table_row(scene: &Scene, rows: &CreepageTable, k: usize, t: f64) -> Sample {
         fy_target,
         pen_mm,
         h_coefficients: rows.h_coefficients.as_ref().map(|b| b.each_ref().map(|v| rows.interpolate(v, t))),
+        chi_deg: rows.chi_deg.as_ref().map(|v| rows.held(v, t)),
     }
 }
 
@@ -434,6 +445,7 @@ impl Sample {
             fy_target: scene.fy_over_fn,
             pen_mm: scene.pen_mm,
             h_coefficients: None,
+            chi_deg: None,
         }
     }
 

@@ -49,7 +49,8 @@ pub struct Rolling {
     pub dq_mm: f64,
     /// Rolling, or shifts without rolling (the creepages then shifts per step).
     pub motion: Motion,
-    /// The rolling direction CHI [deg]: 0 (+x) or 180 (-x, CONTACT's CHI = 180°).
+    /// The rolling direction CHI [deg] in [0, 360): 0 (+x), 180 (-x, CONTACT's CHI = 180°), any
+    /// angle in transient rolling.
     pub chi_deg: f64,
 }
 

@@ -54,7 +54,7 @@ pub struct ResolvedScene {
     pub courant: f64,
     pub dq_mm: f64,
     pub dt_s: f64,
-    /// The rolling direction [deg] where it is 180 (`[rolling] chi_deg`; absent along +x).
+    /// The rolling direction [deg] where it is not 0 (`[rolling] chi_deg`; absent along +x).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub chi_deg: Option<f64>,
     pub n_steps: usize,
@@ -152,7 +152,7 @@ impl ResolvedScene {
             courant: p.rolling.courant,
             dq_mm: p.rolling.dq_mm,
             dt_s: p.rolling.dt_s,
-            chi_deg: p.rolling.backward().then_some(p.rolling.chi_deg),
+            chi_deg: (p.rolling.chi_deg != 0.0).then_some(p.rolling.chi_deg),
             n_steps: p.loading.samples.len(),
             freq_hz: p.loading.freq_hz,
             sweep_direction: p.loading.sweep_direction,

@@ -340,7 +340,8 @@ pub struct Scene {
     pub courant: f64,
     /// Rolling, or shifts without rolling (CONTACT T = 1: the creepages are shifts per step).
     pub motion: Motion,
-    /// The rolling direction CHI [deg]: 0 (+x) or 180 (-x) (`[rolling] chi_deg`).
+    /// The rolling direction CHI [deg] in [0, 360): 0 (+x), 180 (-x), any angle in transient
+    /// rolling (`[rolling] chi_deg`).
     pub chi_deg: f64,
     pub creepage: Creepage,
     pub cy: f64,

@@ -301,18 +301,11 @@ pub fn material(top: &mut Section) -> Result<MaterialSpec, InputError> {
 
 /// `[rolling]` (optional): the speed [mm/s] (default 1000), the Courant number (default 1), the
 /// motion (default rolling; `"shift"`: CONTACT's T = 1) and the rolling direction CHI [deg]
-/// (default 0; 0 or 180, CONTACT's two steady directions, `m_sdis.f90`).
+/// (default 0, in [0, 360); steady rolling at 0 or 180 only, CONTACT `m_sdis.f90`).
 pub fn rolling(top: &mut Section) -> Result<(f64, f64, Motion, f64), InputError> {
     let (mut v_mm_s, mut courant, mut motion, mut chi_deg) = (1000.0, 1.0, Motion::Rolling, 0.0);
     if let Some(mut r) = top.opt_table("rolling")? {
-        chi_deg = r.opt_f64("chi_deg", Range::new(0.0, true, 180.0, true))?.unwrap_or(chi_deg);
-        if chi_deg != 0.0 && chi_deg != 180.0 {
-            return Err(InputError::new(
-                "rolling.chi_deg",
-                chi_deg,
-                "0 or 180 (rolling along +x or -x; other directions, CONTACT's transient CHI, are not implemented)",
-            ));
-        }
+        chi_deg = r.opt_f64("chi_deg", Range::new(0.0, true, 360.0, false))?.unwrap_or(chi_deg);
         v_mm_s = r.opt_f64("v_mm_s", super::SPEED_LIMIT)?.unwrap_or(v_mm_s);
         courant = r.opt_f64("courant", Range::new(0.0, false, 100.0, true))?.unwrap_or(courant);
         if r.opt_choice("motion", &["rolling", "shift"])? == Some("shift") {

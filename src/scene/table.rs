@@ -6,7 +6,7 @@ use crate::error::InputError;
 use std::path::Path;
 
 /// Columns a creepage table may have; `t_s` and one of `cx`, `fx_over_fn` are required.
-pub const COLUMNS: [&str; 17] = [
+pub const COLUMNS: [&str; 18] = [
     "t_s",
     "courant",
     "cx",
@@ -24,6 +24,7 @@ pub const COLUMNS: [&str; 17] = [
     "b4",
     "b5",
     "b6_mm",
+    "chi_deg",
 ];
 
 /// The columns of a row's undeformed distance, CONTACT's IBASE = 1 B(1..6): all or none.
@@ -96,6 +97,9 @@ pub struct CreepageTable {
     /// The Courant number per row: step k rolls dq_k = courant_k dx and lasts dq_k/v_k
     /// (CONTACT's DQ changing within a history).
     pub courant: Option<Vec<f64>>,
+    /// The rolling direction CHI [deg] per row (CONTACT's CHI read anew in a case of a history):
+    /// held, not interpolated ([`Self::held`]).
+    pub chi_deg: Option<Vec<f64>>,
 }
 
 impl CreepageTable {
@@ -191,6 +195,7 @@ impl CreepageTable {
                     "v_mm_s" => super::SPEED_LIMIT.contains(v),
                     "courant" => COURANT_LIMIT.contains(v),
                     "pen_mm" => v.is_finite() && v > 0.0 && v <= PEN_MAX_MM,
+                    "chi_deg" => (0.0..360.0).contains(&v),
                     c if H_COLUMNS.contains(&c) => v.is_finite(),
                     _ => v.is_finite() && v > 0.0, // fn_n, mu
                 };
@@ -203,6 +208,7 @@ impl CreepageTable {
                         "v_mm_s" => "a rolling speed in (0, 1e6] mm/s",
                         "courant" => "a Courant number in (0, 100] (the step's rolling distance dq = courant dx)",
                         "pen_mm" => "a finite approach in (0, 10] mm",
+                        "chi_deg" => "a rolling direction in [0, 360) degrees",
                         c if H_COLUMNS.contains(&c) => "a finite coefficient",
                         _ => "a finite number > 0",
                     };
@@ -240,6 +246,7 @@ impl CreepageTable {
             mu: col("mu"),
             v_mm_s: col("v_mm_s"),
             courant: col("courant"),
+            chi_deg: col("chi_deg"),
             t_s,
         })
     }
@@ -294,6 +301,16 @@ impl CreepageTable {
         } else {
             Either::Second(b[row])
         }
+    }
+
+    /// The value of `series` at time `t` held from row to row: the row at `t` (exactly), else the
+    /// later row (the first before the first row, the last beyond the last), as one CONTACT case
+    /// per row gives it.
+    pub fn held(&self, series: &[f64], t: f64) -> f64 {
+        let ts = &self.t_s;
+        let k = ts.partition_point(|&x| x <= t).min(ts.len() - 1);
+        let lo = k.saturating_sub(1);
+        series[if ts[lo] == t { lo } else { k }]
     }
 
     /// Last time in the table [s].

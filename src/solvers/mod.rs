@@ -178,11 +178,12 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
                 format!("[normal] only with the exact model ({}): the simplified models take their pressure from [model] pressure (leave {} out of this scene)", contact::NAME, m.name),
             ));
         }
-        if problem.rolling.backward() && !BACKWARD_ROLLING.contains(&m.name) {
+        let turned = problem.loading.rows().map(|s| s.chi_deg_or(problem.rolling.chi_deg)).find(|&c| c != 0.0);
+        if let Some(chi_deg) = turned.filter(|_| !OTHER_DIRECTIONS.contains(&m.name)) {
             return Err(InputError::new(
                 "rolling.chi_deg",
-                format!("180 with {:?}", m.name),
-                format!("models that roll along -x: {} (leave {} out of this scene: it rolls along +x only)", BACKWARD_ROLLING.join(", "), m.name),
+                format!("{chi_deg} with {:?}", m.name),
+                format!("models that roll along another direction than +x: {} (leave {} out of this scene: it rolls along +x only)", OTHER_DIRECTIONS.join(", "), m.name),
             ));
         }
         if shifts && !m.shifts {
@@ -202,8 +203,9 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
 /// flexibilities, strips and closed forms are written for it).
 const FRICTION_ROWS: [&str; 1] = [contact::NAME];
 
-/// The built-in models that take CHI = 180° (rolling along -x; CONTACT `m_sdis.f90`).
-const BACKWARD_ROLLING: [&str; 1] = [contact::NAME];
+/// The built-in models that take a rolling direction CHI other than 0 (along -x, or any angle in
+/// transient rolling; CONTACT `m_sdis.f90`).
+const OTHER_DIRECTIONS: [&str; 1] = [contact::NAME];
 
 /// The built-in models that take a falling friction law: the exact solver, FASTSIM and the UBA
 /// (each element's bound μ(s) p, [`brush::Falling`]), the relaxation model (FASTSIM's falling

@@ -171,6 +171,7 @@ pub fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> Result<H
                     fy_target: None,
                     pen_mm: None,
                     h_coefficients: None,
+                    chi_deg: None,
                 },
                 fx_over_fn: n(cols[5])?,
                 fy_over_fn: n(cols[6])?,

@@ -194,14 +194,26 @@ pub const FEATURES: &[Feature] = &[
         },
     },
     Feature {
-                name: "a rolling direction other than +x or -x, or -x with a falling friction law",
+        name: "a rolling direction other than +x with a falling friction law, or other than +x or -x in steady rolling",
         control: "CHI",
         supported: false,
-        reason: "supported: CHI = 0 or 180 degrees (within 0.01 rad, as CONTACT), 180 with Coulomb friction ([rolling] chi_deg)",
+        reason: "supported: CHI = 0 or 180 degrees (within 0.01 rad, as CONTACT) in steady rolling, any CHI in transient rolling (T = 2), with Coulomb friction where it is not 0 ([rolling] chi_deg)",
         used: |c| {
             let chi = c.state.chi_rad;
-            let along_x = super::scene::chi_deg(chi).is_some_and(|d| d == 0.0 || c.state.friction_law == 0);
-            (c.digits.t >= 2 && !along_x).then(|| format!("CHI = {chi} rad"))
+            let zero = super::scene::chi_deg(chi) == 0.0;
+            let steady_oblique = c.digits.t == 3 && !super::scene::along_x(chi);
+            let falling_turned = !zero && c.state.friction_law != 0;
+            (c.digits.t >= 2 && (steady_oblique || falling_turned)).then(|| format!("CHI = {chi} rad"))
+        },
+    },
+    Feature {
+        name: "a rolling direction other than +x or -x in transient rolling",
+        control: "CHI",
+        supported: true,
+        reason: "imported as [rolling] chi_deg in degrees: the exact solver rolls along CHI (the previous tractions shifted by DQ along it, the spin term's offset DQ/6 along it, as CONTACT)",
+        used: |c| {
+            let chi = c.state.chi_rad;
+            (c.digits.t == 2 && !super::scene::along_x(chi)).then(|| format!("CHI = {chi} rad"))
         },
     },
     Feature {

@@ -190,8 +190,9 @@ fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static 
         ("MEMDST, MEM_S0", a.memory == b.memory),
         ("FSTAT, FKIN per grid row (V = 3)", a.friction_rows == b.friction_rows),
         ("the influence functions (C)", a.inflcf == b.inflcf),
-        // DQ may change within a transient history (the table's courant column).
-        ("CHI, DQ", a.chi_rad == b.chi_rad && (load_varies || a.dq_mm == b.dq_mm)),
+        // CHI or DQ may change within a transient history (the table's chi_deg, [`turn_refused`],
+        // or its courant column; not both in one history, `build`).
+        ("CHI, DQ", load_varies || (a.chi_rad, a.dq_mm) == (b.chi_rad, b.dq_mm)),
         ("POISS, GG", (a.poiss, a.gg_mpa) == (b.poiss, b.gg_mpa)),
         (
             "the potential contact (IPOTCN and its line)",
@@ -302,6 +303,8 @@ fn group(cases: &[Case], statuses: &mut [CaseStatus]) -> Vec<History> {
             }
             if let Some(what) = setup_difference(&prev, &c3.state, true) {
                 statuses[k].refused.push(format!("changes {what} within a transient history"));
+            } else if let Some(why) = turn_refused(cases, h, &prev, &c3.state) {
+                statuses[k].refused.push(why);
             } else if other_iteration && !after_start {
                 statuses[k].refused.push(
                     "changes INISLP, OMGSLP within a transient history (supported: one start and damping of the slip-velocity iteration per history, [contact_solver] inislp, omgslp)".into(),
@@ -333,6 +336,36 @@ fn continuation_refused(h: &History, t: u8) -> Option<&'static str> {
         (Run::Shifts, _) => Some("T = 2 after several shifts (T = 1) with P = 0: supported: one shift, the initial state of the rolling (`[init] kind = \"shift\"`)"),
         (_, _) => Some("T = 1 with P = 0 after a rolling case: supported: shifts from rest (P = 2) or after shifts"),
     }
+}
+
+/// Why a transient case may not roll along another CHI than the history so far, if it may not
+/// (the table's chi_deg: the steady start at 0, no VELOC or B(1..6) changing with it, no -x).
+fn turn_refused(cases: &[Case], h: &History, prev: &State, next: &State) -> Option<String> {
+    let directions = |s: &State| chi_deg(s.chi_rad);
+    let turns = h.cases.iter().map(|&k| directions(&case3(cases, k).state)).any(|d| d != directions(next))
+        || directions(prev) != directions(next);
+    if !turns {
+        return None;
+    }
+    let start_turned =
+        h.run == (Run::Transient { start: Start::Steady }) && directions(&case3(cases, h.cases[0]).state) != 0.0;
+    let along_minus_x =
+        std::iter::once(next).chain(h.cases.iter().map(|&k| &case3(cases, k).state)).any(|s| directions(s) == 180.0);
+    let speeds = h.cases.iter().any(|&k| case3(cases, k).state.veloc_mm_s != next.veloc_mm_s);
+    let quads = h.cases.iter().any(|&k| case3(cases, k).state.undeformed != next.undeformed);
+    let why = if start_turned {
+        "a steady start at CHI other than 0"
+    } else if along_minus_x {
+        "CHI = 180 degrees in it (rolling along -x is imported for a whole history only)"
+    } else if speeds || quads {
+        "VELOC or the undeformed distance (IBASE) changing in it too"
+    } else {
+        return None;
+    };
+    Some(format!(
+        "CHI = {} rad: the rolling direction changes within a transient history with {why} (supported: CHI changing per case in transient rolling, the table's column chi_deg)",
+        next.chi_rad
+    ))
 }
 
 /// Whether a steady case continues a sweep: at the sweep's speed (VELOC) where its creepages
@@ -659,15 +692,21 @@ fn upper_edge(x0: f64, n: usize, d: f64) -> f64 {
 }
 
 /// `[rolling] chi_deg` of CONTACT's CHI [rad]: 0 or 180 within 0.01 rad (CONTACT's own test,
-/// `m_sdis.f90`), `None` for other directions.
-pub fn chi_deg(chi_rad: f64) -> Option<f64> {
+/// `m_sdis.f90`), other directions in degrees in [0, 360), rounded to 1e-9 degrees (a deck's
+/// `30d` is read in radians: its 30 comes back exactly).
+pub fn chi_deg(chi_rad: f64) -> f64 {
     if chi_rad.abs() < 0.01 {
-        Some(0.0)
+        0.0
     } else if (chi_rad - std::f64::consts::PI).abs() < 0.01 {
-        Some(180.0)
+        180.0
     } else {
-        None
+        ((chi_rad.to_degrees() * 1e9).round() / 1e9).rem_euclid(360.0)
     }
+}
+
+/// Whether CHI [rad] rolls along +x or -x (CONTACT's test, within 0.01 rad).
+pub fn along_x(chi_rad: f64) -> bool {
+    matches!(chi_deg(chi_rad), 0.0 | 180.0)
 }
 
 /// The Courant number whose `courant · dx` is DQ exactly where one is within a few ulps.
@@ -1013,9 +1052,31 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
                 }
                 None => None,
             };
+            // CHI changing per case (a shift start takes its rolling cases' direction).
+            let chis: Vec<f64> = h
+                .cases
+                .iter()
+                .enumerate()
+                .map(|(n, &k)| match (n, h.run) {
+                    (0, Run::Transient { start: Start::Shift }) => chi_deg(roll.chi_rad),
+                    _ => chi_deg(case3(cases, k).state.chi_rad),
+                })
+                .collect();
+            let turns = h.run != Run::Shifts && chis.iter().any(|&c| c != chis[0]);
+            if turns && courant.is_some() {
+                return Err(InputError::new(
+                    format!("{file}, cases {} to {}", numbers[0], numbers[1]),
+                    "CHI and DQ changing in one history",
+                    "one of the rolling direction (CHI) and the rolling step (DQ) changing per case",
+                ));
+            }
             let speed_column = if speed.is_some() { ",v_mm_s" } else { "" };
             let courant_column = if courant.is_some() { ",courant" } else { "" };
-            let quad_columns = if quads.is_some() { ",b1_per_mm,b2_per_mm,b3_per_mm,b4,b5,b6_mm" } else { "" };
+            let quad_columns = match (quads.is_some(), turns) {
+                (true, _) => ",b1_per_mm,b2_per_mm,b3_per_mm,b4,b5,b6_mm",
+                (false, true) => ",chi_deg",
+                (false, false) => "",
+            };
             let mut csv = format!(
                 "t_s,{}{speed_column}{courant_column}{quad_columns}\n",
                 columns.iter().map(|&j| names[j].as_str()).collect::<Vec<_>>().join(",")
@@ -1028,6 +1089,8 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
                         let mut values = row_cells(n);
                         if let Some(q) = &quads {
                             values.extend(q[n].iter().map(|b| format!("{b:?}")));
+                        } else if turns {
+                            values.push(format!("{:?}", chis[n]));
                         }
                         let _ = writeln!(csv, "{:?},{}", step as f64 * dt_s, values.join(","));
                     }
@@ -1114,8 +1177,8 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     } else if roll.rolling_read {
         let mut rolling = vec![("v_mm_s", Value::Float(roll.veloc_mm_s)), ("courant", Value::Float(1.0))];
         // CONTACT rolls along CHI for T = 2, 3 only (shifts take CHI = 0, `m_sdis.f90`).
-        if roll_t >= 2 && chi_deg(roll.chi_rad) == Some(180.0) {
-            rolling.push(("chi_deg", Value::Float(180.0)));
+        if roll_t >= 2 && chi_deg(roll.chi_rad) != 0.0 {
+            rolling.push(("chi_deg", Value::Float(chi_deg(roll.chi_rad))));
         }
         doc.insert("rolling".into(), table(rolling));
     }

@@ -72,7 +72,8 @@ pub fn rect_integrals(x: f64, y: f64, dx: f64, dy: f64) -> RectIntegrals {
 
 /// Translation-invariant influence kernel over the grid offsets `di = i - I` in
 /// `-(mx-1)..=(mx-1)`, `dj = j - J` in `-(my-1)..=(my-1)`, evaluated at
-/// `X = di*dx - shift_mm`, `Y = dj*dy`. Storage index `(dj + my - 1)*(2mx - 1) + (di + mx - 1)`.
+/// `X = di*dx - shift_mm`, `Y = dj*dy` (a rolling kernel at another direction: shifted in x and y,
+/// [`Kernel::rolling`]). Storage index `(dj + my - 1)*(2mx - 1) + (di + mx - 1)`.
 /// Coefficients in mm/MPa. `shift_mm = 0` is the ordinary kernel (u = A p); `shift_mm = dq` gives
 /// the kernel of the displacement at the previous position of the material (u' = A_s p').
 #[derive(Debug, Clone, PartialEq)]
@@ -147,6 +148,37 @@ impl Kernel {
         shift_mm: f64,
         basis: Basis,
     ) -> Result<Kernel, ContactError> {
+        Kernel::shifted(mx, my, (dx_mm, dy_mm), (g_mpa, nu), shift_mm, [shift_mm, 0.0], basis)
+    }
+
+    /// The kernel of the displacement at the previous position of the material when the bodies
+    /// roll `dq_mm` [mm] per step along the unit vector `towards` (grid coordinates: the material
+    /// moves by `dq towards` against the contact; CONTACT's previous-traction grid offset
+    /// `(xoffs, yoffs)` of `m_inflcf.f90`, any rolling direction CHI): coefficients at
+    /// `X = di dx - dq towards_x`, `Y = dj dy - dq towards_y`; `shift_mm` = dq.
+    pub fn rolling(
+        mx: usize,
+        my: usize,
+        (dx_mm, dy_mm): (f64, f64),
+        (g_mpa, nu): (f64, f64),
+        (dq_mm, towards): (f64, [f64; 2]),
+        basis: Basis,
+    ) -> Result<Kernel, ContactError> {
+        let offset = [dq_mm * towards[0], dq_mm * towards[1]];
+        Kernel::shifted(mx, my, (dx_mm, dy_mm), (g_mpa, nu), dq_mm, offset, basis)
+    }
+
+    /// [`Kernel::new`] with the field point shifted by `offset_mm` [mm] in x and y, recorded as
+    /// the shift `shift_mm`.
+    fn shifted(
+        mx: usize,
+        my: usize,
+        (dx_mm, dy_mm): (f64, f64),
+        (g_mpa, nu): (f64, f64),
+        shift_mm: f64,
+        offset_mm: [f64; 2],
+        basis: Basis,
+    ) -> Result<Kernel, ContactError> {
         if mx == 0 || my == 0 {
             return Err(ContactError::EmptyGrid { mx, my });
         }
@@ -161,8 +193,8 @@ impl Kernel {
         if !(nu.is_finite() && (-1.0..0.5).contains(&nu)) {
             return Err(ContactError::OutOfRange { name: "Poisson's ratio", value: nu, requirement: "in [-1, 0.5)" });
         }
-        if !shift_mm.is_finite() {
-            return Err(ContactError::OutOfRange { name: "kernel shift [mm]", value: shift_mm, requirement: "finite" });
+        if let Some(&value) = [shift_mm, offset_mm[0], offset_mm[1]].iter().find(|v| !v.is_finite()) {
+            return Err(ContactError::OutOfRange { name: "kernel shift [mm]", value, requirement: "finite" });
         }
         let nkx = 2 * mx - 1;
         let nky = 2 * my - 1;
@@ -174,10 +206,10 @@ impl Kernel {
         let c = 1.0 / (std::f64::consts::PI * g_mpa);
         for kj in 0..nky {
             let dj = kj as f64 - (my - 1) as f64;
-            let y = dj * dy_mm;
+            let y = dj * dy_mm - offset_mm[1];
             for ki in 0..nkx {
                 let di = ki as f64 - (mx - 1) as f64;
-                let x = di * dx_mm - shift_mm;
+                let x = di * dx_mm - offset_mm[0];
                 let r = basis.integrals(x, y, dx_mm, dy_mm);
                 zz.push(c * (1.0 - nu) * r.one_over_r);
                 xx.push(c * (r.xx + (1.0 - nu) * r.yy));

@@ -22,6 +22,7 @@
 //! when comparing fields).
 
 pub mod anderson;
+pub mod direction;
 pub mod force;
 pub mod mirror;
 pub mod restart;

@@ -2,6 +2,7 @@
 //! once per load, then one tangential solve per sample (steady: [`TangentialSolver::steady`];
 //! transient: [`TangentialSolver::transient_step`] from the last two steps' tractions).
 
+use super::direction;
 use super::force;
 use super::influence::{Basis, Kernel};
 use super::mirror;
@@ -56,11 +57,41 @@ fn check(p: &Problem) -> Result<(), InputError> {
             "an imposed pressure (Hertz's ellipse at the row's FN) only on rows that give FN: leave out the table's pen_mm and b1_per_mm..b6_mm, or solve the normal problem (\"solved\")",
         ));
     }
-    if p.rolling.backward() && (p.rolling.motion == Motion::Shift || p.friction.is_falling()) {
+    if p.loading.rows().any(|s| s.courant.is_some()) && p.loading.rows().any(|s| s.chi_deg_or(p.rolling.chi_deg) != 0.0) {
+        return Err(InputError::new(
+            "creepage.file column courant",
+            "a rolling distance per row with a rolling direction other than +x",
+            "a courant column with CHI = 0 only (rolling.chi_deg and the table's chi_deg 0), or one rolling distance ([rolling] courant) with another direction",
+        ));
+    }
+    let chi_of = |s: &Sample| s.chi_deg_or(p.rolling.chi_deg);
+    let turned = p.loading.rows().map(chi_of).find(|&c| c != 0.0);
+    if let Some(chi_deg) = turned.filter(|_| p.rolling.motion == Motion::Shift || p.friction.is_falling()) {
         return Err(InputError::new(
             "rolling.chi_deg",
+            chi_deg,
+            "0 with rolling.motion = \"shift\" or a falling [friction] law (the exact solver rolls along another direction than +x with Coulomb friction only)",
+        ));
+    }
+    let steady: Vec<&Sample> = match p.loading.steady_start() {
+        Some(start) => vec![start],
+        None if !p.loading.is_transient() => p.loading.rows().collect(),
+        None => Vec::new(),
+    };
+    let mirrored = mirrored(p);
+    if let Some(chi_deg) = steady.iter().map(|&s| chi_of(s)).find(|&c| c != 0.0 && !(c == 180.0 && mirrored)) {
+        return Err(InputError::new(
+            "rolling.chi_deg",
+            chi_deg,
+            "0 or 180 in steady rolling (a sweep or a steady start, 0 where the table's chi_deg turns the history; CONTACT's steady solver rolls along +x or -x, m_sdis.f90 check_roll_stepsize), any angle in transient rolling",
+        ));
+    }
+    let entering = p.rolling.dq_mm > p.grid.dx_mm;
+    if !mirrored && entering && p.loading.rows().any(|s| chi_of(s) == 180.0) {
+        return Err(InputError::new(
+            "creepage.file column chi_deg",
             180,
-            "0 with rolling.motion = \"shift\" or a falling [friction] law (the exact solver rolls along -x with Coulomb friction only)",
+            "another direction with dq > dx (rolling.courant > 1) where the history turns: CONTACT's leading-edge correction follows -x at CHI = 180 only when the whole history rolls so",
         ));
     }
     let estimated_s = p.loading.rows().count() as f64 * cost_per_row(p) * SECONDS_PER_COST;
@@ -72,6 +103,31 @@ fn check(p: &Problem) -> Result<(), InputError> {
         p.limits.max_estimated_s,
         format!("a limit above the exact-theory solver's estimated {estimated_s:.0} s for {} rows on {}x{} elements (raise it to run this scene)", p.loading.rows().count(), p.grid.mx, p.grid.my),
     ))
+}
+
+/// Whether the solver works in the frame mirrored about x = 0 ([`mirror`]): the whole history
+/// rolls along -x (`[rolling] chi_deg = 180`, no table column `chi_deg` turning it).
+fn mirrored(p: &Problem) -> bool {
+    p.rolling.backward() && p.loading.rows().all(|s| s.chi_deg.is_none())
+}
+
+/// The tangential solver rolling along CHI = `chi_deg` (grid coordinates; 0: the solver's own
+/// direction, bit for bit).
+fn tangential_at(
+    p: &Problem,
+    k0: &Kernel,
+    chi_deg: f64,
+    x: &[f64],
+    y: &[f64],
+) -> Result<TangentialSolver, ContactError> {
+    let (g, m, basis) = (&p.grid, &p.material, p.contact_solver.influence);
+    if chi_deg == 0.0 {
+        let ks = Kernel::with_basis(g.mx, g.my, (g.dx_mm, g.dy_mm), (m.g_mpa, m.poisson), p.rolling.dq_mm, basis)?;
+        return TangentialSolver::new(k0, &ks, x, y);
+    }
+    let towards = direction::towards(chi_deg);
+    let ks = Kernel::rolling(g.mx, g.my, (g.dx_mm, g.dy_mm), (m.g_mpa, m.poisson), (p.rolling.dq_mm, towards), basis)?;
+    TangentialSolver::rolling_towards(k0, &ks, towards, x, y)
 }
 
 /// About `N log N` per transient step for `N` elements (FFT products); a steady point about 3 steps.
@@ -164,6 +220,12 @@ struct Contact<'a> {
     /// CHI = 180°: the pressure and the last solve's tractions and states back in the scene's
     /// frame (the solver's are mirrored, [`mirror`]); `None` when rolling along +x.
     shown: Option<Shown>,
+    /// Whether the solver works in the mirrored frame ([`mirrored`]).
+    mirrored: bool,
+    /// The rolling direction [deg] `tangential` rolls along (the scene's frame; 0 when mirrored).
+    chi_deg: f64,
+    /// The unshifted kernel (a turn builds the shifted one anew).
+    k0: Kernel,
 }
 
 /// A field in the scene's frame where the solver works in the mirrored one.
@@ -210,9 +272,16 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let normal = NormalSolver::new(&k0).map_err(ContactRunError::Kernel)?;
     let (x, y) = g.centres();
     // CHI = 180°: the solver works on the grid mirrored about x = 0 ([`mirror`]).
-    let x = if p.rolling.backward() { mirror::field_x(g.mx, &x) } else { x };
+    let mirrored = mirrored(p);
+    let x = if mirrored { mirror::field_x(g.mx, &x) } else { x };
+    // The first row's direction (a table's chi_deg turns the solver from row to row).
+    let chi_deg = match p.loading.rows().next() {
+        _ if mirrored => 0.0,
+        Some(s) => s.chi_deg_or(p.rolling.chi_deg),
+        None => p.rolling.chi_deg,
+    };
     let tangential = match p.rolling.motion {
-        Motion::Rolling => TangentialSolver::new(&k0, &kernel(p.rolling.dq_mm)?, &x, &y),
+        Motion::Rolling => tangential_at(p, &k0, chi_deg, &x, &y),
         Motion::Shift => TangentialSolver::for_shifts(&k0, &x, &y),
     }
     .map_err(ContactRunError::Kernel)?;
@@ -263,6 +332,9 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
         found: None,
         outer: force::Memory::default(),
         shown: None,
+        mirrored,
+        chi_deg,
+        k0,
     }))
 }
 
@@ -282,9 +354,26 @@ impl Contact<'_> {
         t
     }
 
+    /// The tangential solver turned to the row's rolling direction (a table's chi_deg; CONTACT
+    /// computes the influence coefficients anew for a case that reads a new CHI, C = 2).
+    fn turn(&mut self, at: &Sample) -> Result<(), SolveError> {
+        let chi_deg = at.chi_deg_or(self.p.rolling.chi_deg);
+        if self.mirrored || chi_deg == self.chi_deg || self.p.rolling.motion != Motion::Rolling {
+            return Ok(());
+        }
+        let (x, y) = self.p.grid.centres();
+        let mut t = tangential_at(self.p, &self.k0, chi_deg, &x, &y).map_err(ContactRunError::Kernel)?;
+        if let Some(l) = &self.loaded {
+            t.set_pressure(&l.pn).map_err(|source| ContactRunError::Setup { fn_n: l.fn_n, source })?;
+        }
+        self.tangential = t;
+        self.chi_deg = chi_deg;
+        Ok(())
+    }
+
     /// The sample in the solver's frame (mirrored for CHI = 180°, [`mirror::sample`]).
     fn frame(&self, at: &Sample) -> Sample {
-        if self.p.rolling.backward() {
+        if self.mirrored {
             mirror::sample(at)
         } else {
             *at
@@ -293,7 +382,7 @@ impl Contact<'_> {
 
     /// Creepages found under prescribed forces, in the scene's frame.
     fn unframe(&self, found: Option<[f64; 2]>) -> Option<[f64; 2]> {
-        found.map(|c| if self.p.rolling.backward() { mirror::found(c) } else { c })
+        found.map(|c| if self.mirrored { mirror::found(c) } else { c })
     }
 
     fn loaded(&self) -> &Loaded {
@@ -308,7 +397,7 @@ impl Contact<'_> {
     /// a fixed point that did not converge ends the row at the iteration limit.
     fn record_with(&mut self, r: StepResult, veldep: Option<VelDepOutcome>) -> Step {
         let mx = self.p.grid.mx;
-        self.shown = self.p.rolling.backward().then(|| Shown {
+        self.shown = self.mirrored.then(|| Shown {
             pn: mirror::field(mx, &self.loaded().pn),
             px: mirror::field_x(mx, &r.px),
             py: mirror::field(mx, &r.py),
@@ -479,7 +568,7 @@ impl Stepper for Contact<'_> {
             }
             None => (self.normal_by_force(at, pressure)?, at.fn_n),
         };
-        let pn_mpa = if p.rolling.backward() { mirror::field(p.grid.mx, &pn_mpa) } else { pn_mpa };
+        let pn_mpa = if self.mirrored { mirror::field(p.grid.mx, &pn_mpa) } else { pn_mpa };
         let pn_sum: f64 = match pressure {
             NormalPressure::Solved => pn_mpa.iter().sum(),
             _ if pn_mpa.iter().any(|&v| v > 0.0) => fn_n / p.grid.element_area_mm2(),
@@ -521,6 +610,7 @@ impl Stepper for Contact<'_> {
     }
 
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        self.turn(at)?;
         let at = &self.frame(at);
         if self.veldep.is_some() {
             return self.veldep_step(at, true);
@@ -566,6 +656,7 @@ impl Stepper for Contact<'_> {
     }
 
     fn transient(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        self.turn(at)?;
         let at = &self.frame(at);
         if self.veldep.is_some() {
             return self.veldep_step(at, false);

@@ -5,9 +5,10 @@
 //!
 //! Per contact element `k` (pn_k > 0), traction bound `g_k = mu pn_k` [MPa]:
 //! * rigid slip of the step `w_k = dq (cx - cs y_k, cy - cs (x_k - dq/6))` [mm] ([`RigidSlip`] in
-//!   grid coordinates, spin evaluated `dq/6` downstream of the centre as CONTACT does);
+//!   grid coordinates, spin evaluated `dq/6` downstream of the centre as CONTACT does; rolling
+//!   at another angle: `dq/6` against the material's motion `t`, at `x_k - t dq/6`);
 //! * transient: previous displacement `u'_k = (A_s p')_k`, kernel shifted by `dq` (material that is
-//!   at `x_k` now was at `x_k - dq`), slip `s_k = w_k + u'_k - (A p)_k` [mm]; for `dq > dx`
+//!   at `x_k` now was at `x_k - dq`; at another angle at `x_k - t dq`, [`Kernel::rolling`]), slip `s_k = w_k + u'_k - (A p)_k` [mm]; for `dq > dx`
 //!   material that entered the contact during the step slips only from the leading edge on:
 //!   `s_k = facdt_k w_k + u_edge - (A p)_k` ([`Entering`]);
 //! * steady rolling: the fixed point `p' = p`, `s = w - (A - A_s) p`;
@@ -218,6 +219,9 @@ struct Layout {
     /// Whether the bodies roll (else shifts without rolling: the kernel does not shift, no
     /// steady state, no entering material, the spin term at the centre).
     rolls: bool,
+    /// Unit vector the material moves along against the contact (grid coordinates; `[1, 0]`:
+    /// CHI = 0, [`super::direction`]): the spin term's offset `FACPHI dq` points against it.
+    towards: [f64; 2],
     /// Element centres [mm].
     x_mm: Vec<f64>,
     y_mm: Vec<f64>,
@@ -306,15 +310,16 @@ impl Layout {
     fn add_rigid_slip(&self, p: &TangentialParams, edge_u: Option<(&[f64], &[f64])>, bx: &mut [f64], by: &mut [f64]) {
         let (dq, w) = (p.dq_mm, p.rigid_slip());
         // Shifts: the rotation about the origin, no offset (CONTACT's FACPHI = 0 for T = 1).
-        let offset_mm = if self.rolls { FACPHI * dq } else { 0.0 };
+        let (ox, oy) =
+            if self.rolls { (FACPHI * dq * self.towards[0], FACPHI * dq * self.towards[1]) } else { (0.0, 0.0) };
         for &k in &self.contact {
-            let (wx, wy) = w.at(self.x_mm[k] - offset_mm, self.y_mm[k]);
+            let (wx, wy) = w.at(self.x_mm[k] - ox, self.y_mm[k] - oy);
             bx[k] += dq * wx;
             by[k] += dq * wy;
         }
         let Some((ux, uy)) = edge_u else { return };
         for e in &self.entering {
-            let (wx, wy) = w.at(self.x_mm[e.k] - offset_mm, self.y_mm[e.k]);
+            let (wx, wy) = w.at(self.x_mm[e.k] - ox, self.y_mm[e.k] - oy);
             let (ex, ey) = e.edge.map_or((0.0, 0.0), |m| (ux[m], uy[m]));
             bx[e.k] = e.facdt * dq * wx + ex;
             by[e.k] = e.facdt * dq * wy + ey;
@@ -473,6 +478,20 @@ impl TangentialSolver {
     /// (`ks.shift_mm = dq`); `x_mm`, `y_mm`: element centres [mm] (flat index `k = j*mx + i`).
     /// No load yet: call [`TangentialSolver::set_pressure`] before solving.
     pub fn new(k0: &Kernel, ks: &Kernel, x_mm: &[f64], y_mm: &[f64]) -> Result<TangentialSolver, ContactError> {
+        Self::rolling_towards(k0, ks, [1.0, 0.0], x_mm, y_mm)
+    }
+
+    /// [`TangentialSolver::new`] for rolling at another direction: the material moves along the
+    /// unit vector `towards` (grid coordinates, [`super::direction::towards`]), `ks` the kernel
+    /// shifted along it ([`Kernel::rolling`]). The leading-edge correction for `dq > dx` stays
+    /// along x, as CONTACT's (`m_leadedge.f90`: rolling assumed along ±x).
+    pub fn rolling_towards(
+        k0: &Kernel,
+        ks: &Kernel,
+        towards: [f64; 2],
+        x_mm: &[f64],
+        y_mm: &[f64],
+    ) -> Result<TangentialSolver, ContactError> {
         if ks.shift_mm.is_nan() || ks.shift_mm <= 0.0 {
             return Err(ContactError::OutOfRange {
                 name: "shift dq of the shifted kernel [mm]",
@@ -480,7 +499,12 @@ impl TangentialSolver {
                 requirement: "> 0",
             });
         }
-        Self::build(k0, ks, x_mm, y_mm, true)
+        if let Some(&value) = towards.iter().find(|v| !v.is_finite()) {
+            return Err(ContactError::OutOfRange { name: "rolling direction", value, requirement: "finite" });
+        }
+        let mut s = Self::build(k0, ks, x_mm, y_mm, true)?;
+        s.layout.towards = towards;
+        Ok(s)
     }
 
     /// Sets up the solver for shifts without rolling (CONTACT T = 1; Kalker 1990 §5.2.1): the
@@ -518,6 +542,7 @@ impl TangentialSolver {
             dx_mm: k0.dx_mm,
             shift_mm: if rolls { ks.shift_mm } else { 1.0 },
             rolls,
+            towards: [1.0, 0.0],
             x_mm: x_mm.to_vec(),
             y_mm: y_mm.to_vec(),
             pn: vec![0.0; n],

@@ -326,3 +326,37 @@ fn reloading_a_solver_equals_building_a_new_one() {
     assert!(fresh.n_contact() < loaded(&k0, &ks, &pn, &x, &y).n_contact());
     assert_eq!(run(&mut reused), run(&mut fresh));
 }
+
+/// Rolling along −x through the shifted kernel and spin offset of any direction
+/// ([`TangentialSolver::rolling_towards`] with `[−1, 0]`) is the mirror image of rolling along +x
+/// (the solver of CHI = 180°, [`super::super::mirror`]): tractions `(px, py)(x) = (−px', py')(−x)`
+/// of the +x solve at `(−cx, cy, −cs)`, step by step to 1e-12 of the bound (dq ≤ dx: no
+/// leading-edge correction, which CONTACT takes along +x for every CHI but 180°).
+#[test]
+fn rolling_towards_minus_x_is_the_mirrored_plus_x_solve() {
+    use super::super::mirror;
+    let (mx, my) = (14, 12);
+    let (k0, ks, pn, grid) = hertz_setup(mx, my, 0.75);
+    let (x, y) = grid.centres();
+    let g = Material::from_g(82000.0, 0.28).g_mpa;
+    let back = Kernel::rolling(mx, my, (grid.dx_mm, grid.dy_mm), (g, 0.28), (ks.shift_mm, [-1.0, 0.0]), Basis::Constant).unwrap();
+    let mut turned = TangentialSolver::rolling_towards(&k0, &back, [-1.0, 0.0], &x, &y).unwrap();
+    turned.set_pressure(&pn).unwrap();
+    let mut mirrored = loaded(&k0, &ks, &mirror::field(mx, &pn), &mirror::field_x(mx, &x), &y);
+    let mut p = TangentialParams::new(0.3, 0.001, -0.0005, 0.003, ks.shift_mm);
+    p.tol = 1e-13;
+    let q = TangentialParams { cx: -p.cx, cs: -p.cs, ..p };
+    let gmax = 0.3 * pn.iter().cloned().fold(0.0, f64::max);
+    let n = mx * my;
+    let (mut a, mut b) = ((vec![0.0; n], vec![0.0; n]), (vec![0.0; n], vec![0.0; n]));
+    for _ in 0..8 {
+        let ra = turned.transient_step(&p, &a.0, &a.1, None).unwrap();
+        let rb = mirrored.transient_step(&q, &b.0, &b.1, None).unwrap();
+        let (bx, by) = (mirror::field_x(mx, &rb.px), mirror::field(mx, &rb.py));
+        let d = ra.px.iter().zip(&bx).chain(ra.py.iter().zip(&by)).fold(0.0f64, |m, (u, v)| m.max((u - v).abs()));
+        assert!(d < 1e-12 * gmax, "differ by {d} MPa");
+        assert!(ra.n_slip > 0 && ra.n_adhesion > 0);
+        a = (ra.px, ra.py);
+        b = (rb.px, rb.py);
+    }
+}
