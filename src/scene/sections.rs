@@ -5,8 +5,8 @@
 use super::reader::{Deferred, Range, Section};
 use super::{
     is_valid_name, table, ContactSolverOptions, Creepage, ExternalSolver, InitKind, InitialSlip, Limits, MaterialSpec,
-    ModelOptions, Motion, NormalOptions, SteadyRestart, CREEPAGE_LIMIT, FINITE, FORCE_RATIO, GRID_SCALE, HARD_MAX_STEPS,
-    MAX_ELEMENTS_PER_AXIS, SPIN_LIMIT,
+    ModelOptions, Motion, NormalOptions, SteadyRestart, CREEPAGE_LIMIT, FINITE, FORCE_RATIO, GRID_SCALE,
+    HARD_MAX_STEPS, MAX_ELEMENTS_PER_AXIS, SPIN_LIMIT,
 };
 use crate::error::InputError;
 use crate::physics::geometry::{Extent, GeometrySpec};

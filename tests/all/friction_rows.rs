@@ -9,24 +9,7 @@ use std::path::Path;
 
 /// The thesis contact on a 16 × 16 grid with `friction` TOML in place of `contact.mu`.
 fn scene(name: &str, solvers: &str, friction: &str, creepage: &str) -> String {
-    format!(
-        r#"name = "{name}"
-solvers = {solvers}
-[contact]
-a_mm = 8.56
-b_mm = 4.08
-fn_n = 100000.0
-{friction}
-[material]
-g_mpa = 82000.0
-poisson = 0.28
-[grid]
-mx = 16
-my = 16
-[creepage]
-{creepage}
-"#
-    )
+    common::scene_text(name, solvers, 0.3, 16, creepage, "").replace("mu = 0.3\n", &format!("{friction}\n"))
 }
 
 fn rows(values: &[f64]) -> String {

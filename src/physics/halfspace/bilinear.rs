@@ -125,26 +125,24 @@ mod tests {
         const N: usize = 16;
         // Nodes/weights of 16-point Gauss–Legendre by Newton on P_16 (no table to mistype).
         let (mut xg, mut wg) = ([0.0; N], [0.0; N]);
+        // P_16(z) and its derivative by the three-term recurrence.
+        let legendre = |z: f64| {
+            let (mut p0, mut p1) = (1.0, z);
+            for k in 2..=N {
+                let p2 = ((2 * k - 1) as f64 * z * p1 - (k - 1) as f64 * p0) / k as f64;
+                p0 = p1;
+                p1 = p2;
+            }
+            (p1, N as f64 * (z * p1 - p0) / (z * z - 1.0))
+        };
         for i in 0..N {
             let mut z = (std::f64::consts::PI * (i as f64 + 0.75) / (N as f64 + 0.5)).cos();
             for _ in 0..100 {
-                let (mut p0, mut p1) = (1.0, z);
-                for k in 2..=N {
-                    let p2 = ((2 * k - 1) as f64 * z * p1 - (k - 1) as f64 * p0) / k as f64;
-                    p0 = p1;
-                    p1 = p2;
-                }
-                let dp = N as f64 * (z * p1 - p0) / (z * z - 1.0);
-                let dz = p1 / dp;
+                let (p, dp) = legendre(z);
+                let dz = p / dp;
                 z -= dz;
                 if dz.abs() < 1e-16 {
-                    let (mut p0, mut p1) = (1.0, z);
-                    for k in 2..=N {
-                        let p2 = ((2 * k - 1) as f64 * z * p1 - (k - 1) as f64 * p0) / k as f64;
-                        p0 = p1;
-                        p1 = p2;
-                    }
-                    let dp = N as f64 * (z * p1 - p0) / (z * z - 1.0);
+                    let (_, dp) = legendre(z);
                     xg[i] = z;
                     wg[i] = 2.0 / ((1.0 - z * z) * dp * dp);
                     break;

@@ -57,7 +57,8 @@ fn check(p: &Problem) -> Result<(), InputError> {
             "an imposed pressure (Hertz's ellipse at the row's FN) only on rows that give FN: leave out the table's pen_mm and b1_per_mm..b6_mm, or solve the normal problem (\"solved\")",
         ));
     }
-    if p.loading.rows().any(|s| s.courant.is_some()) && p.loading.rows().any(|s| s.chi_deg_or(p.rolling.chi_deg) != 0.0) {
+    if p.loading.rows().any(|s| s.courant.is_some()) && p.loading.rows().any(|s| s.chi_deg_or(p.rolling.chi_deg) != 0.0)
+    {
         return Err(InputError::new(
             "creepage.file column courant",
             "a rolling distance per row with a rolling direction other than +x",

@@ -3,6 +3,7 @@
 use super::super::normal::{solve_normal, NormalParams};
 use super::element::norm2;
 use super::*;
+use crate::physics::halfspace::influence::Basis;
 use crate::physics::{Grid, HertzContact, Material};
 
 /// A solver for the grid of `k0`, loaded with `pn`.
@@ -339,7 +340,9 @@ fn rolling_towards_minus_x_is_the_mirrored_plus_x_solve() {
     let (k0, ks, pn, grid) = hertz_setup(mx, my, 0.75);
     let (x, y) = grid.centres();
     let g = Material::from_g(82000.0, 0.28).g_mpa;
-    let back = Kernel::rolling(mx, my, (grid.dx_mm, grid.dy_mm), (g, 0.28), (ks.shift_mm, [-1.0, 0.0]), Basis::Constant).unwrap();
+    let back =
+        Kernel::rolling(mx, my, (grid.dx_mm, grid.dy_mm), (g, 0.28), (ks.shift_mm, [-1.0, 0.0]), Basis::Constant)
+            .unwrap();
     let mut turned = TangentialSolver::rolling_towards(&k0, &back, [-1.0, 0.0], &x, &y).unwrap();
     turned.set_pressure(&pn).unwrap();
     let mut mirrored = loaded(&k0, &ks, &mirror::field(mx, &pn), &mirror::field_x(mx, &x), &y);
