@@ -432,20 +432,9 @@ impl Sample {
     /// prescribed), μ, the constant cy and cs, cx = 0.
     pub fn nominal(scene: &Scene) -> Sample {
         Sample {
-            step: 0,
-            t_s: 0.0,
-            cx: 0.0,
-            cy: scene.cy,
-            cs: scene.cs_per_mm,
-            fn_n: scene.fn_n,
-            mu: scene.mu,
-            v_mm_s: None,
-            courant: None,
-            fx_target: None,
             fy_target: scene.fy_over_fn,
             pen_mm: scene.pen_mm,
-            h_coefficients: None,
-            chi_deg: None,
+            ..Sample::given(0, 0.0, 0.0, scene.cy, scene.cs_per_mm, scene.fn_n, scene.mu)
         }
     }
 

@@ -157,22 +157,15 @@ pub fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> Result<H
                 });
             }
             Ok(Row {
-                sample: Sample {
+                sample: Sample::given(
                     step,
-                    t_s: n(cols[1])?,
-                    cx: n(cols[2])?,
-                    cy: n(cols[3])?,
-                    cs: opt(cs_col, 0.0)?,
-                    fn_n: n(cols[4])?,
-                    mu: opt(mu_col, f64::NAN)?,
-                    v_mm_s: None,
-                    courant: None,
-                    fx_target: None,
-                    fy_target: None,
-                    pen_mm: None,
-                    h_coefficients: None,
-                    chi_deg: None,
-                },
+                    n(cols[1])?,
+                    n(cols[2])?,
+                    n(cols[3])?,
+                    opt(cs_col, 0.0)?,
+                    n(cols[4])?,
+                    opt(mu_col, f64::NAN)?,
+                ),
                 fx_over_fn: n(cols[5])?,
                 fy_over_fn: n(cols[6])?,
                 extra: cols[7..].iter().map(|&c| n(c)).collect::<Result<Vec<f64>, FormatError>>()?,
