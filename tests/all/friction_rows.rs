@@ -113,3 +113,29 @@ fn testbank_case_8_imports_its_rows_and_exports_them_back() {
     assert!(back.statuses.iter().all(|s| s.supported()), "{:?}", back.statuses);
     assert!(back.scenes[0].files[0].1.contains("mu_rows = [0.2, 0.21, 0.22,"));
 }
+
+/// A history that turns (the table's chi_deg: 0 for 10 steps, then 90) keeps each row's μ in the
+/// bound after the turn: in full sliding |F|/FN = (0.2 + 0.4)/2 along x before it and along y
+/// after it, not the nominal 0.4 of the largest row.
+#[test]
+fn a_turning_history_keeps_each_rows_bound() {
+    let mu = rows(&(0..16).map(|j| if j < 8 { 0.2 } else { 0.4 }).collect::<Vec<f64>>());
+    let dt_s = common::problem(&scene("dt", "[\"contact\"]", &mu, SWEEP)).rolling.dt_s;
+    let dir = common::tempdir("friction_rows_turning");
+    let mut csv = String::from("t_s,cx,cy,chi_deg\n");
+    for k in 1..=20 {
+        let (cx, cy, chi) = if k <= 10 { (0.5, 0.0, 0.0) } else { (0.0, 0.5, 90.0) };
+        csv.push_str(&format!("{:?},{cx:?},{cy:?},{chi:?}\n", k as f64 * dt_s));
+    }
+    let file = dir.join("table.csv");
+    std::fs::write(&file, csv).unwrap();
+    let creepage = format!("kind = \"table\"\nfile = {:?}", file.to_str().unwrap());
+    let h = common::run(&common::problem(&scene("turning", "[\"contact\"]", &mu, &creepage)), "contact");
+    let (fx, fy) = (h.column("fx_over_fn").unwrap(), h.column("fy_over_fn").unwrap());
+    assert_eq!(fx.len(), 20);
+    for k in [9, 19] {
+        let f = fx[k].hypot(fy[k]);
+        assert!((f - 0.3).abs() < 1e-6, "step {}: |F|/FN = {f}", k + 1);
+    }
+    assert!(fy[19].abs() > 0.29, "{}", fy[19]);
+}

@@ -365,7 +365,9 @@ impl Contact<'_> {
         let (x, y) = self.p.grid.centres();
         let mut t = tangential_at(self.p, &self.k0, chi_deg, &x, &y).map_err(ContactRunError::Kernel)?;
         if let Some(l) = &self.loaded {
-            t.set_pressure(&l.pn).map_err(|source| ContactRunError::Setup { fn_n: l.fn_n, source })?;
+            // The bound's pressure, as `load` gives every solver (μ per grid row scales it).
+            let bound = l.bound_pn.as_deref().unwrap_or(&l.pn);
+            t.set_pressure(bound).map_err(|source| ContactRunError::Setup { fn_n: l.fn_n, source })?;
         }
         self.tangential = t;
         self.chi_deg = chi_deg;
