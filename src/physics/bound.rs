@@ -92,40 +92,49 @@ pub fn falling_bound(a: f64, p: f64, c: f64, g0: f64, mu: impl Fn(f64) -> (f64, 
     (state.2, c * (a - state.2))
 }
 
-/// [`falling_bound`] of four elements in step (lanes whose `active` is false are left alone and
+/// [`falling_bound`] of L elements in step (lanes whose `active` is false are left alone and
 /// return their start): each lane takes the iterates, the evaluations of `mu` and the result of
-/// [`falling_bound`] on its own, bit for bit; `mu` evaluates four slip velocities at once (so
-/// that it vectorises).
+/// [`falling_bound`] on its own, bit for bit; `mu` evaluates L slip velocities at once. The
+/// state is held per quantity (lo, hi, g of the lanes) and every choice of [`falling_step`] is a
+/// select, so that the iteration compiles to vector instructions.
 #[inline(always)]
-pub fn falling_bound4(
-    (a, p, c): ([f64; 4], [f64; 4], [f64; 4]),
-    g0: [f64; 4],
-    active: [bool; 4],
-    mu: impl Fn([f64; 4]) -> ([f64; 4], [f64; 4]),
-) -> [f64; 4] {
-    let mut state = [(0.0, 0.0, 0.0); 4];
-    let mut done = [false; 4];
-    for l in 0..4 {
-        state[l] = falling_start(a[l], g0[l]);
+pub fn falling_bound_lanes<const L: usize>(
+    (a, p, c): ([f64; L], [f64; L], [f64; L]),
+    g0: [f64; L],
+    active: [bool; L],
+    mu: impl Fn([f64; L]) -> ([f64; L], [f64; L]),
+) -> [f64; L] {
+    let (mut lo, mut hi, mut g) = ([0.0; L], a, [0.0; L]);
+    let mut done = [false; L];
+    for l in 0..L {
+        g[l] = falling_start(a[l], g0[l]).2;
         done[l] = !active[l];
     }
     for _ in 0..FALLING_MAX_ITER {
-        if done.iter().all(|d| *d) {
+        if done == [true; L] {
             break;
         }
-        let mut s = [0.0; 4];
-        for l in 0..4 {
-            s[l] = c[l] * (a[l] - state[l].2);
-        }
+        let s: [f64; L] = std::array::from_fn(|l| c[l] * (a[l] - g[l]));
         let (m, dm) = mu(s);
-        for l in 0..4 {
-            let (next, converged) = falling_step(state[l], (a[l], p[l], c[l]), (m[l], dm[l]));
-            if !done[l] {
-                (state[l], done[l]) = (next, converged);
-            }
+        for l in 0..L {
+            // falling_step's arithmetic, its branches as selects.
+            let h = g[l] - p[l] * m[l];
+            let below = h < 0.0;
+            let (lo_n, hi_n) = (if below { g[l] } else { lo[l] }, if below { hi[l] } else { g[l] });
+            let slope = 1.0 + p[l] * c[l] * dm[l];
+            let newton = g[l] - h / slope;
+            let take = slope > 0.0 && newton > lo_n && newton < hi_n;
+            let next = if take { newton } else { 0.5 * (lo_n + hi_n) };
+            let root = h == 0.0;
+            let stop = root || (next - g[l]).abs() <= FALLING_TOL * a[l];
+            let moves = !done[l] && !root;
+            lo[l] = if moves { lo_n } else { lo[l] };
+            hi[l] = if moves { hi_n } else { hi[l] };
+            g[l] = if moves { next } else { g[l] };
+            done[l] = done[l] || stop;
         }
     }
-    state.map(|(_, _, g)| g)
+    g
 }
 
 /// The bracket (0, a) and the start of [`falling_bound`]: `g0` where it lies inside, else a/2.
@@ -246,7 +255,7 @@ mod tests {
         let p = [1500.0, 800.0, 1900.0, 1000.0];
         let c = [3.0, 0.5, 40.0, 2.0];
         let g0 = [600.0, 0.0, 1190.0, 300.0];
-        let got = falling_bound4((a, p, c), g0, [true, true, true, false], |s| {
+        let got = falling_bound_lanes((a, p, c), g0, [true, true, true, false], |s| {
             let r = s.map(law);
             (r.map(|x| x.0), r.map(|x| x.1))
         });

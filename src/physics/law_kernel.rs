@@ -3,7 +3,7 @@
 //! [`Memory::update_and_slope`] with every constant divided out beforehand (ln2/S, 1/(2S), 1/S),
 //! so that an evaluation costs the law's exponentials and at most one division per term, and the
 //! memory's weight θ = d_c/(d_c + dt max(s, s0)) and its slope one reciprocal. The exponential
-//! is [`exp`], branch-free, so that four elements' evaluations ([`LawKernel::update_and_slope4`])
+//! is [`exp`], branch-free, so that several elements' evaluations ([`LawKernel::update_lanes`])
 //! compile to vector instructions with the same bits as one element's.
 
 use super::friction::{FallingTerms, FrictionLaw, Memory};
@@ -174,15 +174,9 @@ impl LawKernel {
         (mu[0], d[0])
     }
 
-    /// [`LawKernel::update_and_slope`] of four elements (the same bits per lane).
+    /// [`LawKernel::update_and_slope`] of L elements (the same bits per lane).
     #[inline(always)]
-    pub fn update_and_slope4(&self, mu_prev: [f64; 4], s_mm_s: [f64; 4]) -> ([f64; 4], [f64; 4]) {
-        self.update_lanes(mu_prev, s_mm_s)
-    }
-
-    /// [`LawKernel::update_and_slope`] of L elements.
-    #[inline(always)]
-    fn update_lanes<const L: usize>(&self, mu_prev: [f64; L], s: [f64; L]) -> ([f64; L], [f64; L]) {
+    pub fn update_lanes<const L: usize>(&self, mu_prev: [f64; L], s: [f64; L]) -> ([f64; L], [f64; L]) {
         let (mut mu, mut d) = self.steady_lanes(s);
         let (d_c, dt, s0) = self.memory;
         if d_c == 0.0 {

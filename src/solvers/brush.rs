@@ -3,7 +3,7 @@
 //! march along each row from the leading edge with the traction bound, and the traction field.
 //! FASTSIM and the UBA differ only in how they march.
 
-use crate::physics::bound::{falling_bound, falling_bound4, scale_to_bound, within_bound};
+use crate::physics::bound::{falling_bound, falling_bound_lanes, scale_to_bound, within_bound};
 use crate::physics::law_kernel::LawKernel;
 pub use crate::physics::LeadingEdge;
 use crate::physics::{moment_sum, project_to_bound, Flexibilities, Grid, Planform, RigidSlip};
@@ -129,15 +129,15 @@ pub trait ElementBound {
     /// result beyond the iteration's tolerance): (τx, τy, whether it slips, the coefficient it
     /// carries downstream).
     fn apply(&self, u: (f64, f64), p: f64, gain: f64, mu: (f64, f64)) -> (f64, f64, bool, f64);
-    /// Whether [`steady_march_with`] marches four rows in step through [`ElementBound::apply4`]
-    /// (a bound whose four-element form is faster than four single ones).
+    /// Whether [`steady_march_with`] marches [`ROW_GROUP`] rows in step through
+    /// [`ElementBound::apply_lanes`] (a bound whose grouped form is faster than single ones).
     const GROUPED: bool = false;
-    /// [`ElementBound::apply`] of four elements (lanes with `p ≤ 0` are the caller's to
+    /// [`ElementBound::apply`] of L elements (lanes with `p ≤ 0` are the caller's to
     /// overwrite), the same bits per lane.
     #[inline(always)]
-    fn apply4(&self, e: &Four) -> [(f64, f64, bool, f64); 4] {
-        let mut out = [(0.0, 0.0, false, 0.0); 4];
-        for l in 0..4 {
+    fn apply_lanes<const L: usize>(&self, e: &Group<L>) -> [(f64, f64, bool, f64); L] {
+        let mut out = [(0.0, 0.0, false, 0.0); L];
+        for l in 0..L {
             out[l] = self.apply((e.ux[l], e.uy[l]), e.p[l], e.gain[l], (e.mu_up[l], e.mu_start[l]));
         }
         out
@@ -221,8 +221,8 @@ impl ElementBound for Falling {
     }
 
     #[inline(always)]
-    fn apply4(&self, e: &Four) -> [(f64, f64, bool, f64); 4] {
-        self.apply4_lanes(e)
+    fn apply_lanes<const L: usize>(&self, e: &Group<L>) -> [(f64, f64, bool, f64); L] {
+        self.group_bounds(e)
     }
 
     /// The Newton on the element's bound starts from `mu_start` (the element's own coefficient
@@ -242,52 +242,66 @@ impl ElementBound for Falling {
     }
 }
 
-/// Four elements' unbounded tractions, pressures (> 0), row gains and coefficients (carried in,
-/// start) for [`Falling::apply4`].
-pub struct Four {
-    pub ux: [f64; 4],
-    pub uy: [f64; 4],
-    pub p: [f64; 4],
-    pub gain: [f64; 4],
-    pub mu_up: [f64; 4],
-    pub mu_start: [f64; 4],
+/// L elements' unbounded tractions, pressures (> 0), row gains and coefficients (carried in,
+/// start) for [`ElementBound::apply_lanes`].
+pub struct Group<const L: usize> {
+    pub ux: [f64; L],
+    pub uy: [f64; L],
+    pub p: [f64; L],
+    pub gain: [f64; L],
+    pub mu_up: [f64; L],
+    pub mu_start: [f64; L],
+}
+
+impl<const L: usize> Group<L> {
+    /// Every lane unloaded (p = 0), carrying `fresh` material's coefficient.
+    #[inline(always)]
+    pub fn unloaded(fresh: f64) -> Self {
+        Group { ux: [0.0; L], uy: [0.0; L], p: [0.0; L], gain: [1.0; L], mu_up: [fresh; L], mu_start: [fresh; L] }
+    }
 }
 
 impl Falling {
-    /// [`ElementBound::apply4`]: the stick test, then the slipping lanes' bounds in step
-    /// ([`falling_bound4`], one vectorised evaluation of the law for the four).
+    /// [`ElementBound::apply_lanes`]: the stick test, then the slipping lanes' bounds in step
+    /// ([`falling_bound_lanes`], one vectorised evaluation of the law for the lanes).
     #[inline(always)]
-    fn apply4_lanes(&self, e: &Four) -> [(f64, f64, bool, f64); 4] {
-        let (mut stick, mut a, mut c, mut g0) = ([0.0; 4], [0.0; 4], [0.0; 4], [0.0; 4]);
-        let mut slips = [false; 4];
-        for l in 0..4 {
+    fn group_bounds<const L: usize>(&self, e: &Group<L>) -> [(f64, f64, bool, f64); L] {
+        // Every lane's arithmetic unconditionally and every choice a select (`&`, not `&&`), so
+        // that the lanes compile to vector instructions; the selected values are those of
+        // `within_bound` and `scale_to_bound` to the bit.
+        let (mut stick, mut a, mut c, mut g0) = ([0.0; L], [0.0; L], [0.0; L], [0.0; L]);
+        let mut slips = [false; L];
+        for l in 0..L {
             let (ux, uy, p) = (e.ux[l], e.uy[l], e.p[l]);
             stick[l] = self.mu_stick(e.mu_up[l]);
-            slips[l] = p > 0.0 && !within_bound(ux, uy, stick[l] * p);
-            a[l] = (ux * ux + uy * uy).sqrt();
+            let (n2, bound) = (ux * ux + uy * uy, stick[l] * p);
+            slips[l] = (p > 0.0) & !(n2 <= bound * bound);
+            a[l] = n2.sqrt();
             let (cx, cy) = (self.c_mm_s.0 * ux, self.c_mm_s.1 * uy);
             c[l] = (cx * cx + cy * cy).sqrt() / (a[l] * e.gain[l]);
             g0[l] = e.mu_start[l] * p;
         }
         let g = if slips.iter().any(|s| *s) {
-            falling_bound4(
+            falling_bound_lanes(
                 (a, e.p, c),
                 g0,
                 slips,
                 #[inline(always)]
-                |s| self.kernel.update_and_slope4(e.mu_up, s),
+                |s| self.kernel.update_lanes(e.mu_up, s),
             )
         } else {
             g0
         };
-        let mut out = [(0.0, 0.0, false, 0.0); 4];
-        for l in 0..4 {
-            out[l] = if slips[l] {
-                let (px, py) = scale_to_bound(e.ux[l], e.uy[l], g[l]);
-                (px, py, true, g[l] / e.p[l])
-            } else {
-                (e.ux[l], e.uy[l], false, stick[l])
-            };
+        let mut out = [(0.0, 0.0, false, 0.0); L];
+        for l in 0..L {
+            let (ux, uy) = (e.ux[l], e.uy[l]);
+            // scale_to_bound(ux, uy, g): zero unless g > 0 and |u| finite, u g/|u| for |u| > 0.
+            let f = g[l] / a[l];
+            let valid = (g[l] > 0.0) & a[l].is_finite();
+            let (sx, sy) = if a[l] > 0.0 { (ux * f, uy * f) } else { (ux, uy) };
+            let (px, py) = if valid { (sx, sy) } else { (0.0, 0.0) };
+            let mu = g[l] / e.p[l];
+            out[l] = if slips[l] { (px, py, true, mu) } else { (ux, uy, false, stick[l]) };
         }
         out
     }
@@ -323,17 +337,20 @@ pub fn steady_march_with<B: ElementBound>(
         return with_avx2(
             #[inline(always)]
             || {
-                (0..grid.my)
-                    .step_by(4)
-                    .map(|j0| {
-                        let mut rows = [row(j0); 4];
-                        let len = 4.min(grid.my - j0);
-                        for (r, slot) in rows.iter_mut().enumerate().take(len) {
-                            *slot = row(j0 + r);
-                        }
-                        march_four_rows(grid, bound, how, &rows[..len], (&mut *out, &mut *mu_out))
-                    })
-                    .sum()
+                // A plain loop: an iterator adapter's fold would be compiled outside the AVX2
+                // function (not inlined into it), and the rows' arithmetic with it.
+                let mut n_slip = 0;
+                let mut j0 = 0;
+                while j0 < grid.my {
+                    let mut rows = [row(j0); ROW_GROUP];
+                    let len = ROW_GROUP.min(grid.my - j0);
+                    for (r, slot) in rows.iter_mut().enumerate().take(len) {
+                        *slot = row(j0 + r);
+                    }
+                    n_slip += march_row_group(grid, bound, how, &rows[..len], (&mut *out, &mut *mu_out));
+                    j0 += ROW_GROUP;
+                }
+                n_slip
             },
         );
     }
@@ -408,11 +425,16 @@ fn march_rows_with<const N: usize, B: ElementBound>(
     n_slip
 }
 
-/// [`march_rows_with`] of up to four rows through [`ElementBound::apply4`]: the rows' elements
-/// of one column as the four lanes (missing rows as unloaded lanes). Returns the number of
+/// Rows a grouped march ([`ElementBound::GROUPED`]) takes in step: two vector registers of
+/// four lanes, so that the rows' chains of dependent bounds (each element waits for its
+/// upstream neighbour's) overlap.
+pub const ROW_GROUP: usize = 4;
+
+/// [`march_rows_with`] of up to [`ROW_GROUP`] rows through [`ElementBound::apply_lanes`]: the
+/// rows' elements of one column as the lanes (missing rows as unloaded lanes). Returns the number of
 /// slipping elements.
 #[inline(always)]
-fn march_four_rows<B: ElementBound>(
+fn march_row_group<B: ElementBound>(
     grid: &Grid,
     bound: &B,
     how: (LeadingEdge, Integration),
@@ -421,10 +443,9 @@ fn march_four_rows<B: ElementBound>(
 ) -> usize {
     let mut n_slip = 0;
     let fresh = bound.inflow_mu();
-    let mut upstream = [(0.0, 0.0, false, fresh); 4];
+    let mut upstream = [(0.0, 0.0, false, fresh); ROW_GROUP];
     for i in 0..grid.mx {
-        let mut e =
-            Four { ux: [0.0; 4], uy: [0.0; 4], p: [0.0; 4], gain: [1.0; 4], mu_up: [fresh; 4], mu_start: [fresh; 4] };
+        let mut e = Group::<ROW_GROUP>::unloaded(fresh);
         for (r, row) in rows.iter().enumerate() {
             let k = grid.index(i, row.j);
             let p = row.local.planform.pressure_mpa[k];
@@ -437,7 +458,7 @@ fn march_four_rows<B: ElementBound>(
             // The element's coefficient of the previous solve where there is one (a start).
             e.mu_start[r] = if mu_out.is_empty() { mu_up } else { mu_out[k] };
         }
-        let bounded = bound.apply4(&e);
+        let bounded = bound.apply_lanes(&e);
         for (r, row) in rows.iter().enumerate() {
             let k = grid.index(i, row.j);
             if e.p[r] <= 0.0 {
@@ -498,7 +519,7 @@ mod tests {
     use super::*;
     use crate::physics::{FallingTerms, FrictionLaw, Memory};
 
-    /// Four elements through [`ElementBound::apply4`] give what [`ElementBound::apply`] gives each
+    /// Four elements through [`ElementBound::apply_lanes`] give what [`ElementBound::apply`] gives each
     /// of them, bit for bit (one sticking, three slipping with different iteration counts), for
     /// every falling law with and without memory; and a slipping element's bound is the fixed
     /// point g = p μ(s(g)).
@@ -510,7 +531,7 @@ mod tests {
             FrictionLaw::Linear(t(0.2, 0.25, 800.0, 0.05, 100.0)),
             FrictionLaw::Rational(t(0.22, 0.15, 400.0, 0.08, 2500.0)),
         ];
-        let e = Four {
+        let e = Group::<4> {
             ux: [100.0, 900.0, 2000.0, -700.0],
             uy: [50.0, 10.0, -300.0, 400.0],
             p: [1200.0, 1500.0, 1800.0, 900.0],
@@ -523,7 +544,7 @@ mod tests {
                 let kernel = LawKernel::new(&law, &memory, 2.6e-5);
                 let bound =
                     Falling { kernel, mu_static: law.mu_static(), c_mm_s: (3.0e3, 2.8e3), stick: kernel.stick() };
-                let four = bound.apply4(&e);
+                let four = bound.apply_lanes(&e);
                 for l in 0..4 {
                     let one = bound.apply((e.ux[l], e.uy[l]), e.p[l], e.gain[l], (e.mu_up[l], e.mu_start[l]));
                     assert_eq!(four[l], one, "{law:?} {memory:?} lane {l}");

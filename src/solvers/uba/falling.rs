@@ -4,13 +4,13 @@
 //! carried with the material by the same upwind difference as the tractions,
 //! `μ_adv = μ + C (μ_up − μ)` (fresh material at a row's start: the static value), before the
 //! memory's backward-Euler update over the sub-step's time C dx / V. Four elements at a time
-//! ([`ElementBound::apply4`]: their bounds' iterations in step, compiled for AVX2 where the CPU has
+//! ([`ElementBound::apply_lanes`]: their bounds' iterations in step, compiled for AVX2 where the CPU has
 //! it, the same bits either way); the sums in the four-lane order.
 
 use super::flat::{unbounded, Io, Lanes};
 use super::{Prepared, StepSums};
 use crate::simd::with_avx2;
-use crate::solvers::brush::{ElementBound, Falling, Four};
+use crate::solvers::brush::{ElementBound, Falling, Group};
 
 /// One sub-step from `old` into `new` (tractions in `io`, coefficients `mu_old` into `mu_new`),
 /// `k` the constants of [`super::flat::step`], `pressure_mpa` the planform's pressure.
@@ -27,7 +27,7 @@ pub(super) fn step<const GHOST: bool, const SPIN: bool>(
     )
 }
 
-/// [`step`] in groups of four elements ([`ElementBound::apply4`]; the last group padded with
+/// [`step`] in groups of four elements ([`ElementBound::apply_lanes`]; the last group padded with
 /// unloaded lanes), each element as [`crate::solvers::brush::ElementBound::apply`] would give it.
 #[inline(always)]
 fn groups<const GHOST: bool, const SPIN: bool>(
@@ -42,8 +42,7 @@ fn groups<const GHOST: bool, const SPIN: bool>(
     let (c, fresh) = (k[0], bound.inflow_mu());
     for m0 in (0..n).step_by(4) {
         let len = 4.min(n - m0);
-        let mut e =
-            Four { ux: [0.0; 4], uy: [0.0; 4], p: [0.0; 4], gain: [1.0; 4], mu_up: [fresh; 4], mu_start: [fresh; 4] };
+        let mut e = Group::<4>::unloaded(fresh);
         for l in 0..len {
             let m = m0 + l;
             e.p[l] = pressure_mpa[m];
@@ -56,7 +55,7 @@ fn groups<const GHOST: bool, const SPIN: bool>(
                 e.gain[l] = p.gain[m];
             }
         }
-        let out = ElementBound::apply4(bound, &e);
+        let out = ElementBound::apply_lanes(bound, &e);
         for (l, &(tx, ty, slips, mu)) in out.iter().enumerate().take(len) {
             let m = m0 + l;
             let r = if e.p[l] > 0.0 {
