@@ -274,9 +274,8 @@ impl Falling {
         for l in 0..L {
             let (ux, uy, p) = (e.ux[l], e.uy[l], e.p[l]);
             stick[l] = self.mu_stick(e.mu_up[l]);
-            let (n2, bound) = (ux * ux + uy * uy, stick[l] * p);
-            slips[l] = (p > 0.0) & !(n2 <= bound * bound);
-            a[l] = n2.sqrt();
+            slips[l] = (p > 0.0) & !within_bound(ux, uy, stick[l] * p);
+            a[l] = (ux * ux + uy * uy).sqrt();
             let (cx, cy) = (self.c_mm_s.0 * ux, self.c_mm_s.1 * uy);
             c[l] = (cx * cx + cy * cy).sqrt() / (a[l] * e.gain[l]);
             g0[l] = e.mu_start[l] * p;
