@@ -231,6 +231,12 @@ fn bench_fft_length(c: &mut Criterion) {
 /// step 27.9 µs against 1.98 µs (14×): not met. Here the state repeats, so the start is the root
 /// and one evaluation settles each element; what is left is that evaluation (an exponential, two
 /// divisions, the element's scalar set-up) against a projection of one multiply-add per element.
+/// 2026-11-27 (back to back, load ~2 on 2 cores): the Newton written per quantity with selects
+/// (vectorised), FASTSIM's grouped march compiled inside the AVX2 function (an iterator fold had
+/// kept it out), and more independent bounds in step: FASTSIM with `ROW_GROUP` 4 / 8 / 12 / 16
+/// rows 8.2 / 6.4 / 5.8 / 7.3 µs, the UBA step with `GROUP` 4 / 8 / 12 / 16 elements
+/// 7.4 / 6.0 / 5.3 / 5.2 µs (12 kept for both). `law_floor`, one evaluation of the law and the
+/// memory per element and nothing else, 1.18 µs: 2.2× the UBA's Coulomb step by itself.
 fn bench_falling(c: &mut Criterion) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let falling = std::fs::read_to_string(root.join("scenes/stability/stab_fr_step_mem.toml")).unwrap();
@@ -239,6 +245,7 @@ fn bench_falling(c: &mut Criterion) {
     let coulomb = format!("{}{}", &falling[..start], &falling[end..])
         .replace("fn_n = 100000.0\n", "fn_n = 100000.0\nmu = 0.45\n");
     let mut g = c.benchmark_group("falling_friction");
+    law_floor(&mut g, &falling);
     for (law, text) in [("coulomb", coulomb), ("falling", falling)] {
         let p = creepbench::pipeline::resolve(&Scene::from_toml(&text, root).unwrap()).unwrap();
         let sample = p.loading.samples[3];
@@ -257,6 +264,38 @@ fn bench_falling(c: &mut Criterion) {
         }
     }
     g.finish();
+}
+
+/// The least an exact falling bound costs per step: one evaluation of the law and the memory
+/// (`LawKernel::update_lanes`, four elements per call, compiled for AVX2) at every element of the
+/// 22×22 grid, with no Newton, no stick test and no projection: a floor under `uba_step_falling`
+/// and `fastsim_falling` to set against `uba_step_coulomb` (issue 33 item 6).
+fn law_floor(g: &mut criterion::BenchmarkGroup<criterion::measurement::WallTime>, text: &str) {
+    use creepbench::physics::law_kernel::LawKernel;
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let p = creepbench::pipeline::resolve(&Scene::from_toml(text, root).unwrap()).unwrap();
+    let kernel = LawKernel::new(&p.friction, &p.memory, p.rolling.dq_mm / p.rolling.v_mm_s);
+    let n = p.grid.len();
+    // Slip velocities and carried coefficients of the order of the step's (0 to 1.2 m/s).
+    let s: Vec<f64> = (0..n).map(|k| 1200.0 * (k % 97) as f64 / 97.0).collect();
+    let mu_up: Vec<f64> = (0..n).map(|k| 0.3 + 0.1 * (k % 13) as f64 / 13.0).collect();
+    g.bench_function("law_floor", |b| {
+        b.iter(|| {
+            creepbench::simd::with_avx2(
+                #[inline(always)]
+                || {
+                    let mut sum = [0.0; 4];
+                    for (s4, m4) in black_box(&s).chunks_exact(4).zip(mu_up.chunks_exact(4)) {
+                        let (mu, d) = kernel.update_lanes([m4[0], m4[1], m4[2], m4[3]], [s4[0], s4[1], s4[2], s4[3]]);
+                        for l in 0..4 {
+                            sum[l] += mu[l] + d[l];
+                        }
+                    }
+                    sum
+                },
+            )
+        })
+    });
 }
 
 criterion_group!(benches, bench_uba, bench_fastsim, bench_fast_models, bench_uba_run, bench_fft_length, bench_falling);

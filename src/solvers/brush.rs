@@ -424,10 +424,10 @@ fn march_rows_with<const N: usize, B: ElementBound>(
     n_slip
 }
 
-/// Rows a grouped march ([`ElementBound::GROUPED`]) takes in step: two vector registers of
+/// Rows a grouped march ([`ElementBound::GROUPED`]) takes in step: three vector registers of
 /// four lanes, so that the rows' chains of dependent bounds (each element waits for its
-/// upstream neighbour's) overlap.
-pub const ROW_GROUP: usize = 4;
+/// upstream neighbour's) overlap (benches/solvers.rs `falling_friction`).
+pub const ROW_GROUP: usize = 12;
 
 /// [`march_rows_with`] of up to [`ROW_GROUP`] rows through [`ElementBound::apply_lanes`]: the
 /// rows' elements of one column as the lanes (missing rows as unloaded lanes). Returns the number of
