@@ -12,9 +12,9 @@ use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
 /// The default suites: the thesis scenes, CONTACT's case sets (envelope, non-Hertzian, test
-/// table, falling friction), the stability scenes, the studies behind the report and CONTACT's
-/// public examples.
-pub const DEFAULT_SUITES: [&str; 8] = [
+/// table, falling friction and its variants), the stability scenes, the studies behind the report
+/// and CONTACT's public examples.
+pub const DEFAULT_SUITES: [&str; 9] = [
     "scenes/thesis",
     "scenes/envelope",
     "scenes/nonhertz",
@@ -22,6 +22,7 @@ pub const DEFAULT_SUITES: [&str; 8] = [
     "scenes/stability",
     "scenes/report",
     "scenes/friction",
+    "scenes/friction_variants",
     "scenes/contact_public",
 ];
 

@@ -484,23 +484,38 @@ fn bad_decks_are_refused_at_their_line_and_column() {
 
 /// Issue 33 item 1: CONTACT's own inputs of the falling-friction cases
 /// (reference/contact_friction/<case>.inp: laws L = 2, 3, 4, friction memory, a speed changing per
-/// case with C = 2) import as one scene each that resolves to the problem of scenes/friction/<case>:
+/// case with C = 2; and the variants' inputs, reference/contact_friction_variants/<case>.inp: two
+/// terms, other grids and ellipses, Courant 0.5 to 2, a load ramp) import as one scene each that
+/// resolves to the problem of scenes/friction/<case> (scenes/friction_variants/<case>):
 /// the same resolved scene, and every row's time, creepages, load, μ and speed equal to the
 /// input's printed precision (relative 1e-9, absolute 1e-11, as `contact_export`).
 #[test]
 fn contacts_falling_friction_inputs_import_as_the_shipped_scenes() {
-    let reference = root().join("reference/contact_friction");
-    let mut rdr = csv::Reader::from_path(reference.join("cases.csv")).unwrap();
-    let names: Vec<String> = rdr.records().map(|r| r.unwrap()[0].to_string()).collect();
-    assert_eq!(names.len(), 10);
+    let (mut failures, mut n) = (Vec::new(), 0);
+    for (folder, suite, count) in
+        [("contact_friction", "scenes/friction", 10), ("contact_friction_variants", "scenes/friction_variants", 25)]
+    {
+        let reference = root().join("reference").join(folder);
+        let mut rdr = csv::Reader::from_path(reference.join("cases.csv")).unwrap();
+        let names: Vec<String> = rdr.records().map(|r| r.unwrap()[0].to_string()).collect();
+        assert_eq!(names.len(), count, "{folder}");
+        n += count;
+        failures.extend(import_as_scenes(&reference, suite, &names));
+    }
+    assert!(failures.is_empty(), "{} of {n} differ:\n{}", failures.len(), failures.join("\n"));
+}
+
+/// Each input `reference/<case>.inp` imported against the scene of that name in `suite`: the
+/// differences found.
+fn import_as_scenes(reference: &Path, suite: &str, names: &[String]) -> Vec<String> {
     let mut failures = Vec::new();
-    for name in &names {
+    for name in names {
         let imported = creepbench::import::contact::import(&reference.join(format!("{name}.inp"))).unwrap();
         assert!(imported.statuses.iter().all(|s| s.supported()), "{name}: {:?}", imported.statuses);
         let dir = common::tempdir(&format!("contact_friction_{name}"));
         let backs = load_all(&imported, &dir);
         assert_eq!(backs.len(), 1, "{name}: one scene");
-        let source = creepbench::suite::find(&[root().join("scenes/friction")], name).unwrap();
+        let source = creepbench::suite::find(&[root().join(suite)], name).unwrap();
         let original = creepbench::pipeline::load_source(&source, &[]).unwrap();
         // CONTACT's inputs print the scenes' values to 10-16 digits: equal to the printed precision.
         let values = |p: &Problem| -> Vec<[f64; 7]> {
@@ -525,7 +540,7 @@ fn contacts_falling_friction_inputs_import_as_the_shipped_scenes() {
             failures.push(format!("{name}: {}", diff.join(", ")));
         }
     }
-    assert!(failures.is_empty(), "{} of 10 differ:\n{}", failures.len(), failures.join("\n"));
+    failures
 }
 
 /// spence35.inp: its subsurface points (S = 3, ISUBS = 2) are two lines of three integers, as

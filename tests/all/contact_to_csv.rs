@@ -33,11 +33,12 @@ fn script() -> String {
     root().join("scripts/contact_to_csv.py").display().to_string()
 }
 
-/// A CSV as a header and rows of numbers.
+/// A CSV as a header and rows of numbers (an empty cell, a value the script could not form, as NaN).
 fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
     let mut rdr = csv::Reader::from_path(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let head = rdr.headers().unwrap().iter().map(String::from).collect();
-    let rows = rdr.records().map(|r| r.unwrap().iter().map(|v| v.parse::<f64>().unwrap()).collect()).collect();
+    let cell = |v: &str| if v.is_empty() { f64::NAN } else { v.parse::<f64>().unwrap() };
+    let rows = rdr.records().map(|r| r.unwrap().iter().map(cell).collect()).collect();
     (head, rows)
 }
 
@@ -334,4 +335,53 @@ fn missing_results_are_an_input_error() {
     let o = python(&[&script(), inp.to_str().unwrap()], &dir);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("--out only"));
+}
+
+/// A falling friction law (L = 2, 3, 4): the input gives FKIN, F1, SABSH1, F2, SABSH2 and no FSTAT
+/// line; CONTACT's FSTAT is FKIN + F1 + F2. The variant x05 (rational law FKIN 0.24, F1 0.2, a
+/// steady speed sweep 10 … 50 m/s with C = 2 and VELOC per case) from its shipped input and
+/// CONTACT's output of that run (tests/fixtures/contact_output/, no .mat files: the printed
+/// totals): every row equals reference/contact_friction_variants/x05_…csv, which was integrated
+/// from the run's .mat files, to CONTACT's 4 printed digits; the speed, the slip-velocity
+/// iterations and their convergence exactly.
+#[test]
+fn a_falling_friction_input_gives_the_variants_history() {
+    let name = "x05_rat_speed_sweep_tinymem_spin";
+    let dir = tempdir("contact_to_csv_falling");
+    let inp = dir.join(format!("{name}.inp"));
+    std::fs::copy(root().join(format!("reference/contact_friction_variants/{name}.inp")), &inp).unwrap();
+    let out = root().join(format!("tests/fixtures/contact_output/{name}.out"));
+    let out_csv = dir.join(format!("{name}.csv"));
+    let o = python(
+        &[&script(), inp.to_str().unwrap(), "--out", out.to_str().unwrap(), "--csv", out_csv.to_str().unwrap()],
+        &root(),
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    assert!(err.contains("5 cases: 0 from .mat files, 5 from the printed totals"), "{err}");
+    let (head, ours) = read_csv(&out_csv);
+    assert!(head.join(",").ends_with(",v_mm_s,mu_min,mu_max,s_max_mm_s,veldep_its,converged"), "{head:?}");
+    let (rhead, theirs) = read_csv(&root().join(format!("reference/contact_friction_variants/{name}.csv")));
+    assert_eq!(ours.len(), theirs.len());
+    assert_eq!(ours.len(), 5);
+    for (a, b) in ours.iter().zip(&theirs) {
+        let (x, y) = (|n: &str| a[col(&head, n)], |n: &str| b[col(&rhead, n)]);
+        let step = y("step");
+        for n in ["step", "t_s", "cx", "cy", "cs", "v_mm_s", "n_adhesion", "n_slip", "veldep_its", "converged"] {
+            assert_eq!(x(n), y(n), "step {step}: {n}");
+        }
+        // Over the elements of a .mat file: empty where the case came from the printed totals.
+        for n in ["mu_min", "mu_max", "s_max_mm_s"] {
+            assert!(x(n).is_nan() && y(n) > 0.0, "step {step}: {n}");
+        }
+        // FSTAT = FKIN + F1 + F2 = 0.24 + 0.2 + 0.
+        assert!((x("mu") - 0.44).abs() < 1e-15, "step {step}: mu {}", x("mu"));
+        for n in ["fn_n", "fx_n", "fy_n", "mz_nmm"] {
+            assert!((x(n) - y(n)).abs() <= 1.01 * half_unit(x(n)), "step {step}: {n} printed {} vs {}", x(n), y(n));
+        }
+        let slack = x("fx_over_fn").abs() * (half_unit(x("fx_n")) / x("fx_n") + half_unit(x("fn_n")) / x("fn_n"));
+        assert!((x("fx_over_fn") - y("fx_over_fn")).abs() <= 1.01 * slack, "step {step}: fx_over_fn");
+    }
+    // The speed changes from case to case (C = 2 with VELOC in every case).
+    assert_eq!(ours.iter().map(|r| r[col(&head, "v_mm_s")]).collect::<Vec<_>>(), [1e4, 2e4, 3e4, 4e4, 5e4]);
 }

@@ -1,13 +1,17 @@
-//! CONTACT's cases with friction falling with the slip velocity (reference/contact_friction:
-//! cases.csv, one history per case; its README gives the laws, the memory and the inputs). The
-//! exact solver's fx/fn, fy/fn and mz/(FN a) are compared at every step with CONTACT's published
-//! values (gated to 2e-4) and fx/fn, fy/fn with the tightly converged `*_tight` columns (gated to
-//! 1e-5), on the cases whose `gate` is `yes`; the others are compared and reported with the
-//! reason of their note (issue 33).
+//! CONTACT's cases with friction falling with the slip velocity: two sets of one format,
+//! reference/contact_friction (CONTACT's shared folder, issue 33) and
+//! reference/contact_friction_variants (25 variants run for this project): cases.csv, one history
+//! per case; each folder's README gives the laws, the memory and the inputs. One loader reads
+//! either with its own labels ([`Labels`]). The exact solver's fx/fn, fy/fn and mz/(FN a) are
+//! compared at every step with CONTACT's published values (gated to 2e-4) and fx/fn, fy/fn with
+//! the tightly converged `*_tight` columns (gated to 1e-5), by each case's `gate`: `yes` both;
+//! `tight` the tight columns only (CONTACT's own iteration error exceeds what the published
+//! values are gated to), its published values reported; `no` none, reported with the reason of
+//! its note.
 
 use super::contact::read_history;
 use super::envelope::EnvelopeCases;
-use super::{read, ReferenceSet};
+use super::{read, ReferenceSet, SetDef};
 use crate::comparison::finding::{Against, Finding};
 use crate::comparison::rule::Rule;
 use crate::error::{Error, FormatError};
@@ -24,9 +28,47 @@ pub const FRICTION_UNGATED: Against = Against::Reference("CONTACT friction, not 
 
 /// The set's folder inside the reference folder.
 pub const FOLDER: &str = "contact_friction";
+/// The labels of `contact_friction`.
+pub const LABELS: Labels = Labels { published: FRICTION, tight: FRICTION_TIGHT, ungated: FRICTION_UNGATED };
+
+/// The variants' published values on the cases whose gate is `yes`.
+pub const VARIANTS: Against = Against::Reference("CONTACT friction variants");
+/// The variants' tightly converged fixed point on the cases whose gate is `yes` or `tight`.
+pub const VARIANTS_TIGHT: Against = Against::Reference("CONTACT friction variants tight");
+/// The variants' published values on the cases whose gate is `tight` or `no`.
+pub const VARIANTS_UNGATED: Against = Against::Reference("CONTACT friction variants, not gated");
+
+/// The variants' folder inside the reference folder.
+pub const VARIANTS_FOLDER: &str = "contact_friction_variants";
+/// The labels of `contact_friction_variants`.
+pub const VARIANTS_LABELS: Labels = Labels { published: VARIANTS, tight: VARIANTS_TIGHT, ungated: VARIANTS_UNGATED };
+
+/// The registry's entry of the variants (`SETS`): their labels with the catch-all reasons of the
+/// comparisons no rule of `tolerances.toml` covers, and their loader.
+pub const VARIANTS_SET: SetDef = SetDef {
+    labels: &[
+        (VARIANTS, "the fast models against the exact theory on the falling-friction variants: reported"),
+        (VARIANTS_TIGHT, "the fast models against the variants' tightly converged exact theory: reported"),
+        (VARIANTS_UNGATED, "the variants' published values that cases.csv does not gate (gate = tight: CONTACT's own iteration error exceeds 2e-4 there, the tight values are gated; gate = no: two steady solutions; each note says why): reported"),
+    ],
+    load: |dir| Ok(Box::new(FrictionCases::load(dir, VARIANTS_FOLDER, VARIANTS_LABELS)?)),
+    section: None,
+};
+
+/// The labels a falling-friction set's findings carry, one per comparison.
+#[derive(Debug, Clone, Copy)]
+pub struct Labels {
+    /// CONTACT's published values on the cases whose gate is `yes`.
+    pub published: Against,
+    /// The `*_tight` columns on the cases whose gate is `yes` or `tight`.
+    pub tight: Against,
+    /// CONTACT's published values on the cases whose gate is `tight` or `no` (reported).
+    pub ungated: Against,
+}
 
 /// The three comparisons, each a case set of its own label.
 pub struct FrictionCases {
+    label: &'static str,
     published: EnvelopeCases,
     tight: EnvelopeCases,
     ungated: EnvelopeCases,
@@ -42,15 +84,16 @@ fn tight_history(path: &Path) -> Result<History, Error> {
 }
 
 impl FrictionCases {
-    /// Load `dir/contact_friction/cases.csv` and every case's history.
-    pub fn load(dir: &Path) -> Result<FrictionCases, Error> {
-        let folder = dir.join(FOLDER);
+    /// Load `dir/<folder>/cases.csv` and every case's history, its findings carrying `labels`.
+    pub fn load(dir: &Path, folder: &str, labels: Labels) -> Result<FrictionCases, Error> {
+        let folder = dir.join(folder);
         let path = folder.join("cases.csv");
         let empty = |against| EnvelopeCases { against: Some(against), ..EnvelopeCases::default() };
         let mut out = FrictionCases {
-            published: empty(FRICTION),
-            tight: empty(FRICTION_TIGHT),
-            ungated: empty(FRICTION_UNGATED),
+            label: labels.published.label(),
+            published: empty(labels.published),
+            tight: empty(labels.tight),
+            ungated: empty(labels.ungated),
         };
         let text = read(&path)?;
         let mut rdr = csv::Reader::from_reader(text.as_bytes());
@@ -63,17 +106,31 @@ impl FrictionCases {
             })
         };
         let (name_col, gate_col, note_col) = (column("name")?, column("gate")?, column("note")?);
-        for rec in rdr.records() {
+        for (line, rec) in rdr.records().enumerate() {
             let rec = rec.map_err(bad)?;
             let field = |c: usize| rec.get(c).unwrap_or("").to_string();
-            let (name, note) = (field(name_col), field(note_col));
+            let (name, note, gate) = (field(name_col), field(note_col), field(gate_col));
             let case = folder.join(format!("{name}.csv"));
             let history = read_history(&case, 0, &[MZ])?;
-            let set = if field(gate_col) == "yes" {
+            // yes: published and tight gated; tight: the tight columns gated, the published values
+            // reported (CONTACT's own iteration error there exceeds their tolerance); no: reported.
+            if gate == "yes" || gate == "tight" {
                 out.tight.histories.insert(name.clone(), tight_history(&case)?);
-                &mut out.published
-            } else {
-                &mut out.ungated
+            }
+            let set = match gate.as_str() {
+                "yes" => &mut out.published,
+                "tight" | "no" => &mut out.ungated,
+                _ => {
+                    return Err(Error::Format {
+                        path: path.clone(),
+                        source: FormatError::Value {
+                            line: line + 2,
+                            column: "gate".into(),
+                            value: crate::error::excerpt(&gate),
+                            what: "yes, tight or no",
+                        },
+                    })
+                }
             };
             set.histories.insert(name.clone(), history);
             set.notes.insert(name, note);
@@ -84,7 +141,7 @@ impl FrictionCases {
 
 impl ReferenceSet for FrictionCases {
     fn label(&self) -> &'static str {
-        "CONTACT friction"
+        self.label
     }
 
     fn compare(&self, ours: &StoredScene, rules: &[Rule]) -> Vec<Finding> {

@@ -48,7 +48,7 @@ pub struct SetDef {
 
 /// The registry: every reference set, in the order of the gate and the report. Adding a set:
 /// its file and a line here (and its gated rules in `tolerances.toml`, if it has any).
-pub const SETS: [SetDef; 7] = [
+pub const SETS: [SetDef; 8] = [
     SetDef {
         labels: &[
             (contact::EXACT, "simplified models differ from the exact theory by design; the report shows by how much"),
@@ -95,9 +95,10 @@ pub const SETS: [SetDef; 7] = [
             (friction::FRICTION_TIGHT, "the fast models against the tightly converged exact theory: reported"),
             (friction::FRICTION_UNGATED, "cases CONTACT's README does not gate (cases.csv gate = no, its note says why: two steady solutions, or the memoryless falling branch oscillating in time): reported"),
         ],
-        load: |dir| Ok(Box::new(friction::FrictionCases::load(dir)?)),
+        load: |dir| Ok(Box::new(friction::FrictionCases::load(dir, friction::FOLDER, friction::LABELS)?)),
         section: None,
     },
+    friction::VARIANTS_SET,
     SetDef {
         labels: &[(
             contact_public::AGAINST,
