@@ -120,7 +120,9 @@ fn exported_falling_friction_inputs_equal_contacts_own() {
         let names: Vec<String> = rdr.records().map(|r| r.unwrap()[0].to_string()).collect();
         let failures: Vec<String> = names
             .iter()
-            .filter_map(|name| difference(suite, name, &format!("{reference}/{name}.inp")).map(|d| format!("{name}: {d}")))
+            .filter_map(|name| {
+                difference(suite, name, &format!("{reference}/{name}.inp")).map(|d| format!("{name}: {d}"))
+            })
             .collect();
         assert!(failures.is_empty(), "{} of {} differ:\n{}", failures.len(), names.len(), failures.join("\n"));
         assert_eq!(names.len(), count, "{reference}");

@@ -12,20 +12,27 @@ use creepbench::suite;
 use creepbench::suite::results::StoredScene;
 use std::path::Path;
 
+/// Runs the suite `folder` (its `scenes` scenes), compares it with golden/ and the references and
+/// asserts that no gated comparison fails; every comparison.
+fn run_gated(folder: &str, scenes: usize) -> Vec<creepbench::comparison::finding::Finding> {
+    let files = suite::scene_files(&[root().join(folder)], None).unwrap();
+    let results = suite::run(&files, false).unwrap();
+    let stored: Vec<StoredScene> = results.iter().map(StoredScene::from_result).collect();
+    assert_eq!(stored.len(), scenes);
+    let refs = References::load(&root().join("reference")).unwrap();
+    let all = compare::evaluate(&stored, &refs, Some((&root().join("golden"), Against::Golden))).unwrap();
+    println!("{}", compare::table(&compare::worst_per_group(&all)));
+    let fails = compare::failures(&all);
+    assert!(fails.is_empty(), "gated drift:\n{}", fails.join("\n"));
+    all
+}
+
 /// The suite runs, matches golden/ and passes every gated comparison with `contact_friction`;
 /// against the `*_tight` columns the exact solver is within 1e-6 on every gated case (it solves
 /// the fixed point to 1e-6 in s; measured 1.4e-7), and the ungated cases are compared, not gated.
 #[test]
 fn suite_matches_golden_and_contact_with_falling_friction() {
-    let files = suite::scene_files(&[root().join("scenes/friction")], None).unwrap();
-    let results = suite::run(&files, false).unwrap();
-    let scenes: Vec<StoredScene> = results.iter().map(StoredScene::from_result).collect();
-    assert_eq!(scenes.len(), 10);
-    let refs = References::load(&root().join("reference")).unwrap();
-    let all = compare::evaluate(&scenes, &refs, Some((&root().join("golden"), Against::Golden))).unwrap();
-    println!("{}", compare::table(&compare::worst_per_group(&all)));
-    let fails = compare::failures(&all);
-    assert!(fails.is_empty(), "gated drift:\n{}", fails.join("\n"));
+    let all = run_gated("scenes/friction", 10);
     let of = |label: &'static str| all.iter().filter(move |f| f.against.label() == label && f.solver == "contact");
     let tight: Vec<_> = of("CONTACT friction tight").collect();
     assert_eq!(tight.len(), 16, "fx and fy of the 8 gated cases");
@@ -54,20 +61,20 @@ fn suite_matches_golden_and_contact_with_falling_friction() {
 /// two solutions) compared and reported.
 #[test]
 fn variants_match_golden_and_contact() {
-    let files = suite::scene_files(&[root().join("scenes/friction_variants")], None).unwrap();
-    let results = suite::run(&files, false).unwrap();
-    let scenes: Vec<StoredScene> = results.iter().map(StoredScene::from_result).collect();
-    assert_eq!(scenes.len(), 25);
-    let refs = References::load(&root().join("reference")).unwrap();
-    let all = compare::evaluate(&scenes, &refs, Some((&root().join("golden"), Against::Golden))).unwrap();
-    let fails = compare::failures(&all);
-    assert!(fails.is_empty(), "gated drift:\n{}", fails.join("\n"));
+    let all = run_gated("scenes/friction_variants", 25);
     let of = |label: &'static str| all.iter().filter(move |f| f.against.label() == label && f.solver == "contact");
     let tight: Vec<_> = of("CONTACT friction variants tight").collect();
     assert_eq!(tight.len(), 48, "fx and fy of the 24 cases gated against the tight values");
     assert!(tight.iter().any(|f| f.scene == "x02_exp2_fast_courant15_step_mem"));
     for f in &tight {
-        assert!(f.gated && f.diff < 1e-6, "{} {} step {:?}: {} off the tight value", f.scene, f.quantity, f.step, f.diff);
+        assert!(
+            f.gated && f.diff < 1e-6,
+            "{} {} step {:?}: {} off the tight value",
+            f.scene,
+            f.quantity,
+            f.step,
+            f.diff
+        );
     }
     let published: Vec<_> = of("CONTACT friction variants").collect();
     assert_eq!(published.len(), 69, "fx, fy, mz of the 23 cases gated against the published values");
