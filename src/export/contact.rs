@@ -190,7 +190,8 @@ fn law_digit(law: &FrictionLaw) -> u8 {
 /// CONTACT's INISLP of the slip-velocity iteration's start (`m_stang.f90` lines 258-264).
 fn inislp(start: InitialSlip) -> i8 {
     match start {
-        InitialSlip::Previous => 0,
+        // CONTACT has no extrapolated start: its INISLP 0 is the start this one speeds up.
+        InitialSlip::Previous | InitialSlip::Extrapolated => 0,
         InitialSlip::Below => 1,
         InitialSlip::Above => -1,
     }

@@ -160,10 +160,9 @@ pub struct ContactSolverOptions {
 
 /// `[contact_solver] veldep_solves`: the tangential solves of the slip-velocity fixed point.
 /// `Adaptive` solves early iterates loosely (1e-2 × the last relative change) and ends on a
-/// tight solve, each solve started with the last one's slip area on the new bound, a transient
-/// step from the extrapolated slip velocity; `Tight` solves every iterate at the final
-/// tolerance from CONTACT's starts, as CONTACT does, so that CONTACT's own loose stop (1e-3) is
-/// met at the same iterate.
+/// tight solve, each solve started with the last one's slip area on the new bound; `Tight` solves
+/// every iterate at the final tolerance from CONTACT's starts, as CONTACT does, so that CONTACT's
+/// own loose stop (1e-3) is met at the same iterate.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum VeldepSolves {
@@ -213,6 +212,12 @@ pub enum InitialSlip {
     Below,
     /// INISLP = −1: from s = V ("from above"): the high-slip solution.
     Above,
+    /// Not CONTACT's: as `Previous`, but a transient step after a transient step starts from the
+    /// last two steps' slip velocity extrapolated in the contact's frame (at a stationary state
+    /// the start is the solution, where the moved field is one element off it). The same fixed
+    /// point where the step has one; where it has several, it may keep the last step's branch
+    /// where CONTACT's start leaves it.
+    Extrapolated,
 }
 
 impl InitialSlip {

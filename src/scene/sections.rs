@@ -576,10 +576,11 @@ pub fn contact_solver(top: &mut Section) -> Result<ContactSolverOptions, InputEr
         if let Some(t) = cs.opt_f64("veldep_tolerance", Range::new(1e-14, true, 1e-2, true))? {
             contact_solver.veldep_tolerance = t;
         }
-        if let Some(start) = cs.opt_choice("inislp", &["previous", "below", "above"])? {
+        if let Some(start) = cs.opt_choice("inislp", &["previous", "below", "above", "extrapolated"])? {
             contact_solver.inislp = match start {
                 "below" => InitialSlip::Below,
                 "above" => InitialSlip::Above,
+                "extrapolated" => InitialSlip::Extrapolated,
                 _ => InitialSlip::Previous,
             };
         }

@@ -7,9 +7,11 @@
 //! s_new = |S|/dt (0 outside the contact); stop when rms(s_new − s) ≤ tol·rms(s_new) over the
 //! contact or when no element slips; else s := s_new, damped by OMGSLP in slip elements whose μ
 //! exceeds μ_prev, OMGSLP × 0.8 every 20 iterations while the element division changes.
-//! Adaptive solves (the default) reach the same fixed point with less work: loose early solves,
-//! warm starts with the slip area on the new bound, and a transient step started from the last
-//! two steps' slip velocity extrapolated in the contact's frame (stationary fields: one solve).
+//! Adaptive solves (the default) reach the same fixed point with less work: loose early solves
+//! and warm starts with the slip area on the new bound. `inislp = "extrapolated"` starts a
+//! transient step from the last two steps' slip velocity extrapolated in the contact's frame
+//! (stationary fields: one solve), at the price of CONTACT's branch where a step has several
+//! solutions.
 //! Axes as the solver's: leading edge at ix = 0, material moving to +x.
 
 use super::tangential::{ElementState, StepResult};
@@ -33,8 +35,7 @@ pub struct VelDepOptions {
     /// The tolerance of the tangential solve the fixed point ends on ([`inner_tolerance`]).
     pub solve_tolerance: f64,
     /// Early iterates solved loosely ([`inner_tolerance`]), each solve started with the last
-    /// one's slip area on the new bound ([`onto_bound`]), a transient step's slip velocity
-    /// extrapolated ([`extrapolated_slip`]); false: CONTACT's path, every iterate at
+    /// one's slip area on the new bound ([`onto_bound`]); false: CONTACT's path, every iterate at
     /// `solve_tolerance` from CONTACT's starts.
     pub adaptive_solves: bool,
 }
@@ -90,7 +91,7 @@ pub struct VelDep {
     /// Whether `mu`, `shift_mm` hold a previous step (else: a start from zero, FSTAT and s = 0).
     has_previous: bool,
     /// The converged slip velocity [mm/s] of the last two transient steps in the contact's frame
-    /// (last first; emptied by a steady solve): the adaptive start ([`VelDep::initial_slip`]).
+    /// (last first; emptied by a steady solve): the extrapolated start ([`VelDep::initial_slip`]).
     recent_mm_s: Vec<Vec<f64>>,
 }
 
@@ -189,18 +190,16 @@ impl VelDep {
     }
 
     /// The start of s (m_stang.f90 lines 258-264): the previous step's |S|/dt moved by dq
-    /// (`Previous` in a transient step, with adaptive solves after a transient step the last two
-    /// extrapolated, [`extrapolated_slip`]; 0 in steady rolling and from zero), 0, or V everywhere.
+    /// (`Previous` in a transient step; 0 in steady rolling and from zero), 0, or V everywhere;
+    /// `Extrapolated` after a transient step: the last two extrapolated ([`extrapolated_slip`]).
     fn initial_slip(&self, pn: &[f64], motion: Motion) -> Vec<f64> {
         let n = pn.len();
         match self.options.initial {
             InitialSlip::Below => vec![0.0; n],
             InitialSlip::Above => vec![motion.v_mm_s; n],
-            InitialSlip::Previous if motion.steady || !self.has_previous => vec![0.0; n],
-            InitialSlip::Previous if self.options.adaptive_solves && !self.recent_mm_s.is_empty() => {
-                extrapolated_slip(&self.recent_mm_s, pn)
-            }
-            InitialSlip::Previous => {
+            InitialSlip::Previous | InitialSlip::Extrapolated if motion.steady || !self.has_previous => vec![0.0; n],
+            InitialSlip::Extrapolated if !self.recent_mm_s.is_empty() => extrapolated_slip(&self.recent_mm_s, pn),
+            InitialSlip::Previous | InitialSlip::Extrapolated => {
                 let moved = shift_rows(&self.shift_mm, self.mx, motion.shift_elements, 0.0);
                 moved.iter().zip(pn).map(|(&s, &p)| if p > 0.0 { s / motion.dt_s } else { 0.0 }).collect()
             }
