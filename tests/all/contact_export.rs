@@ -114,7 +114,7 @@ fn exported_inputs_equal_contacts_own() {
 fn exported_falling_friction_inputs_equal_contacts_own() {
     for (reference, suite, count) in [
         ("reference/contact_friction", "scenes/friction", 10),
-        ("reference/contact_friction_variants", "scenes/friction_variants", 25),
+        ("reference/contact_friction_variants", "scenes/friction_variants", 30),
     ] {
         let mut rdr = csv::Reader::from_path(root().join(reference).join("cases.csv")).unwrap();
         let names: Vec<String> = rdr.records().map(|r| r.unwrap()[0].to_string()).collect();

@@ -493,7 +493,7 @@ fn bad_decks_are_refused_at_their_line_and_column() {
 fn contacts_falling_friction_inputs_import_as_the_shipped_scenes() {
     let (mut failures, mut n) = (Vec::new(), 0);
     for (folder, suite, count) in
-        [("contact_friction", "scenes/friction", 10), ("contact_friction_variants", "scenes/friction_variants", 25)]
+        [("contact_friction", "scenes/friction", 10), ("contact_friction_variants", "scenes/friction_variants", 30)]
     {
         let reference = root().join("reference").join(folder);
         let mut rdr = csv::Reader::from_path(reference.join("cases.csv")).unwrap();
