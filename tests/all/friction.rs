@@ -79,6 +79,26 @@ fn the_extrapolated_start_leaves_contacts_branch() {
     assert!((ours - tight[k]).abs() > 1e-2, "step 4: {ours} vs {}", tight[k]);
 }
 
+/// With CONTACT's start (the default) a transient step goes on from the last steps' branch
+/// extrapolated once two iterates of CONTACT's path hold the last step's element division
+/// (`VelDep::settle_target`): on `fr_exp_step_cx_mem`, stationary from about step 22, each step
+/// then takes 3 fixed-point iterations (CONTACT's path alone about 11), and every row equals
+/// CONTACT's own path (`veldep_solves = "tight"`, which never settles) within 1e-6 in fx/fn.
+#[test]
+fn a_stationary_step_settles_on_contacts_path() {
+    let text = std::fs::read_to_string(root().join("scenes/friction/fr_exp_step_cx_mem.toml")).unwrap();
+    let own = text.replace("[contact]\n", "[contact_solver]\nveldep_solves = \"tight\"\n\n[contact]\n");
+    assert_ne!(own, text);
+    let (settled, path) = (run(&problem(&text), "contact"), run(&problem(&own), "contact"));
+    let worst = f(&settled).iter().zip(f(&path)).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+    let its = settled.column("veldep_iterations").unwrap();
+    let path_its = path.column("veldep_iterations").unwrap();
+    println!("worst |diff| {worst:.2e}; iterations {:?} against {:?}", &its[40..44], &path_its[40..44]);
+    assert!(worst < 1e-6, "{worst}");
+    assert!(its[25..].iter().all(|&n| n == 3.0), "{its:?}");
+    assert!(path_its[25..].iter().all(|&n| n > 3.0), "{path_its:?}");
+}
+
 /// The exact solver's comparisons with a falling-friction reference set `set`: `counts` =
 /// [against its tight values (gated, each within 1e-6), against its published values (gated,
 /// within 2e-4), its ungated cases (reported)]; returns the ungated ones.

@@ -7,8 +7,9 @@
 //! s_new = |S|/dt (0 outside the contact); stop when rms(s_new − s) ≤ tol·rms(s_new) over the
 //! contact or when no element slips; else s := s_new, damped by OMGSLP in slip elements whose μ
 //! exceeds μ_prev, OMGSLP × 0.8 every 20 iterations while the element division changes.
-//! Adaptive solves (the default) reach the same fixed point with less work: loose early solves
-//! and warm starts with the slip area on the new bound. `inislp = "extrapolated"` starts a
+//! Adaptive solves (the default) reach the same fixed point with less work: loose early solves,
+//! warm starts with the slip area on the new bound, and in a transient step, once CONTACT's path
+//! holds the last step's element division, the last steps' field extrapolated as the next iterate. `inislp = "extrapolated"` starts a
 //! transient step from the last two steps' slip velocity extrapolated in the contact's frame
 //! (stationary fields: one solve), at the price of CONTACT's branch where a step has several
 //! solutions.
@@ -93,6 +94,8 @@ pub struct VelDep {
     /// The converged slip velocity [mm/s] of the last two transient steps in the contact's frame
     /// (last first; emptied by a steady solve): the extrapolated start ([`VelDep::initial_slip`]).
     recent_mm_s: Vec<Vec<f64>>,
+    /// The element division of the last converged transient step (empty after a steady solve).
+    recent_state: Vec<ElementState>,
 }
 
 impl VelDep {
@@ -106,6 +109,7 @@ impl VelDep {
             shift_mm: vec![0.0; n],
             has_previous: false,
             recent_mm_s: Vec::new(),
+            recent_state: Vec::new(),
         }
     }
 
@@ -133,6 +137,8 @@ impl VelDep {
             _ => vec![fstat; n],
         };
         let mut s = self.initial_slip(pn, motion);
+        // The last steps' field extrapolated, taken over once CONTACT's path holds their branch.
+        let mut settle = self.settle_target(pn, motion);
         let (mut mu, mut mu_prev, mut bound) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
         let mut omgslp = self.options.omgslp;
         let mut last: Option<StepResult> = None;
@@ -179,8 +185,14 @@ impl VelDep {
                 let damp = it > 1 && r.state[k] == ElementState::Slip && mu[k] > mu_prev[k];
                 s[k] = if damp { (omgslp * s_new[k] + (1.0 - omgslp) * s[k]).max(0.0) } else { s_new[k] };
             }
-
             last_change = Some(change);
+            let held = !changed && last.is_some() && r.state == self.recent_state;
+            if let Some(target) = settle.take_if(|_| held) {
+                // Two iterates of CONTACT's path in the last step's element division: go on from
+                // that step's branch extrapolated, solved tightly from here.
+                s = target;
+                last_change = Some(0.0);
+            }
             if changed && it % 20 == 0 {
                 omgslp *= 0.8;
             }
@@ -204,6 +216,18 @@ impl VelDep {
                 moved.iter().zip(pn).map(|(&s, &p)| if p > 0.0 { s / motion.dt_s } else { 0.0 }).collect()
             }
         }
+    }
+
+    /// With adaptive solves, CONTACT's start (`Previous`) in a transient step after a transient
+    /// step: the last two steps' slip velocity extrapolated ([`extrapolated_slip`]), which the
+    /// iteration takes over once two of its iterates have the last step's element division (at a
+    /// stationary state the extrapolated field is the solution, where CONTACT's moved start is
+    /// one element off it and needs about ten iterations to come back).
+    fn settle_target(&self, pn: &[f64], motion: Motion) -> Option<Vec<f64>> {
+        let contacts = self.options.adaptive_solves && self.options.initial == InitialSlip::Previous;
+        let after_step = !motion.steady && self.has_previous && !self.recent_mm_s.is_empty();
+        (contacts && after_step && self.recent_state.len() == pn.len())
+            .then(|| extrapolated_slip(&self.recent_mm_s, pn))
     }
 
     /// μ per element from s: the law and the memory recursion along each row from the leading
@@ -231,7 +255,9 @@ impl VelDep {
         self.has_previous = true;
         if steady {
             self.recent_mm_s.clear();
+            self.recent_state.clear();
         } else {
+            self.recent_state.clone_from(&r.state);
             self.recent_mm_s.truncate(1);
             self.recent_mm_s.insert(0, s_mm_s.to_vec());
         }
