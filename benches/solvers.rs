@@ -233,9 +233,9 @@ fn bench_fft_length(c: &mut Criterion) {
 /// divisions, the element's scalar set-up) against a projection of one multiply-add per element.
 /// 2026-11-27 (back to back, load ~2 on 2 cores): the Newton written per quantity with selects
 /// (vectorised), FASTSIM's grouped march compiled inside the AVX2 function (an iterator fold had
-/// kept it out), and more independent bounds in step: FASTSIM with `ROW_GROUP` 4 / 8 / 12 / 16
-/// rows 8.2 / 6.4 / 5.8 / 7.3 µs, the UBA step with `GROUP` 4 / 8 / 12 / 16 elements
-/// 7.4 / 6.0 / 5.3 / 5.2 µs (12 kept for both). `law_floor`, one evaluation of the law and the
+/// kept it out), and more independent bounds in step (`BOUND_GROUP`): FASTSIM with 4 / 8 / 12 /
+/// 16 rows 8.2 / 6.4 / 5.8 / 7.3 µs, the UBA step with 4 / 8 / 12 / 16 elements 7.4 / 6.0 / 5.3 /
+/// 5.2 µs (12 kept, one constant for both). `law_floor`, one evaluation of the law and the
 /// memory per element and nothing else, 1.18 µs: 2.2× the UBA's Coulomb step by itself.
 fn bench_falling(c: &mut Criterion) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));

@@ -30,14 +30,19 @@ pub fn project_to_bound(tx: f64, ty: f64, g: f64) -> (f64, f64, bool) {
 /// zero; otherwise the module policy applies (zero for `g ≤ 0`, NaN `g` or a non-finite `|τ|`).
 #[inline]
 pub fn scale_to_bound(tx: f64, ty: f64, g: f64) -> (f64, f64) {
-    let a = (tx * tx + ty * ty).sqrt();
-    if !(g > 0.0 && a.is_finite()) {
-        (0.0, 0.0)
-    } else if a > 0.0 {
-        let s = g / a;
-        (tx * s, ty * s)
+    scale_with_modulus(tx, ty, (tx * tx + ty * ty).sqrt(), g)
+}
+
+/// [`scale_to_bound`] of a traction whose modulus `a` = |τ| is known, its cases as selects (so
+/// that lanes of elements vectorise, [`crate::solvers::brush`]'s falling bound).
+#[inline(always)]
+pub fn scale_with_modulus(tx: f64, ty: f64, a: f64, g: f64) -> (f64, f64) {
+    let s = g / a;
+    let (x, y) = if a > 0.0 { (tx * s, ty * s) } else { (tx, ty) };
+    if g > 0.0 && a.is_finite() {
+        (x, y)
     } else {
-        (tx, ty)
+        (0.0, 0.0)
     }
 }
 
@@ -117,21 +122,11 @@ pub fn falling_bound_lanes<const L: usize>(
         let s: [f64; L] = std::array::from_fn(|l| c[l] * (a[l] - g[l]));
         let (m, dm) = mu(s);
         for l in 0..L {
-            // falling_step's arithmetic, its branches as selects.
-            let h = g[l] - p[l] * m[l];
-            let below = h < 0.0;
-            let (lo_n, hi_n) = (if below { g[l] } else { lo[l] }, if below { hi[l] } else { g[l] });
-            let slope = 1.0 + p[l] * c[l] * dm[l];
-            let newton = g[l] - h / slope;
-            let take = slope > 0.0 && newton > lo_n && newton < hi_n;
-            let next = if take { newton } else { 0.5 * (lo_n + hi_n) };
-            let root = h == 0.0;
-            let stop = root || (next - g[l]).abs() <= FALLING_TOL * a[l];
-            let moves = !done[l] && !root;
-            lo[l] = if moves { lo_n } else { lo[l] };
-            hi[l] = if moves { hi_n } else { hi[l] };
-            g[l] = if moves { next } else { g[l] };
-            done[l] = done[l] || stop;
+            let ((lo_n, hi_n, g_n), stop) = falling_step((lo[l], hi[l], g[l]), (a[l], p[l], c[l]), (m[l], dm[l]));
+            let keep = done[l];
+            (lo[l], hi[l], g[l]) =
+                (if keep { lo[l] } else { lo_n }, if keep { hi[l] } else { hi_n }, if keep { g[l] } else { g_n });
+            done[l] = keep || stop;
         }
     }
     g
@@ -145,7 +140,8 @@ fn falling_start(a: f64, g0: f64) -> (f64, f64, f64) {
 
 /// One iteration of [`falling_bound`] from the bracket and iterate (lo, hi, g) with (μ, dμ/ds)
 /// evaluated at g: the next (lo, hi, g) and whether the iteration stops (h(g) = 0, or a step of
-/// at most `FALLING_TOL · a`).
+/// at most `FALLING_TOL · a`). Every choice is a select (no early return), so that
+/// [`falling_bound_lanes`] compiles it to vector instructions.
 #[inline(always)]
 fn falling_step(
     (lo, hi, g): (f64, f64, f64),
@@ -153,14 +149,16 @@ fn falling_step(
     (m, dm): (f64, f64),
 ) -> ((f64, f64, f64), bool) {
     let h = g - p * m;
-    if h == 0.0 {
-        return ((lo, hi, g), true);
-    }
-    let (lo, hi) = if h < 0.0 { (g, hi) } else { (lo, g) };
+    let below = h < 0.0;
+    let (lo_n, hi_n) = (if below { g } else { lo }, if below { hi } else { g });
     let slope = 1.0 + p * c * dm;
     let newton = g - h / slope;
-    let next = if slope > 0.0 && newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
-    ((lo, hi, next), (next - g).abs() <= FALLING_TOL * a)
+    let take = slope > 0.0 && newton > lo_n && newton < hi_n;
+    let next = if take { newton } else { 0.5 * (lo_n + hi_n) };
+    // At a root (h = 0) the state stays as it is.
+    let root = h == 0.0;
+    let state = (if root { lo } else { lo_n }, if root { hi } else { hi_n }, if root { g } else { next });
+    (state, root || (next - g).abs() <= FALLING_TOL * a)
 }
 
 #[cfg(test)]

@@ -3,7 +3,7 @@
 //! march along each row from the leading edge with the traction bound, and the traction field.
 //! FASTSIM and the UBA differ only in how they march.
 
-use crate::physics::bound::{falling_bound, falling_bound_lanes, scale_to_bound, within_bound};
+use crate::physics::bound::{falling_bound, falling_bound_lanes, scale_to_bound, scale_with_modulus, within_bound};
 use crate::physics::law_kernel::LawKernel;
 pub use crate::physics::LeadingEdge;
 use crate::physics::{moment_sum, project_to_bound, Flexibilities, Grid, Planform, RigidSlip};
@@ -129,7 +129,7 @@ pub trait ElementBound {
     /// result beyond the iteration's tolerance): (τx, τy, whether it slips, the coefficient it
     /// carries downstream).
     fn apply(&self, u: (f64, f64), p: f64, gain: f64, mu: (f64, f64)) -> (f64, f64, bool, f64);
-    /// Whether [`steady_march_with`] marches [`ROW_GROUP`] rows in step through
+    /// Whether [`steady_march_with`] marches [`BOUND_GROUP`] rows in step through
     /// [`ElementBound::apply_lanes`] (a bound whose grouped form is faster than single ones).
     const GROUPED: bool = false;
     /// [`ElementBound::apply`] of L elements (lanes with `p ≤ 0` are the caller's to
@@ -294,11 +294,7 @@ impl Falling {
         let mut out = [(0.0, 0.0, false, 0.0); L];
         for l in 0..L {
             let (ux, uy) = (e.ux[l], e.uy[l]);
-            // scale_to_bound(ux, uy, g): zero unless g > 0 and |u| finite, u g/|u| for |u| > 0.
-            let f = g[l] / a[l];
-            let valid = (g[l] > 0.0) & a[l].is_finite();
-            let (sx, sy) = if a[l] > 0.0 { (ux * f, uy * f) } else { (ux, uy) };
-            let (px, py) = if valid { (sx, sy) } else { (0.0, 0.0) };
+            let (px, py) = scale_with_modulus(ux, uy, a[l], g[l]);
             let mu = g[l] / e.p[l];
             out[l] = if slips[l] { (px, py, true, mu) } else { (ux, uy, false, stick[l]) };
         }
@@ -341,13 +337,13 @@ pub fn steady_march_with<B: ElementBound>(
                 let mut n_slip = 0;
                 let mut j0 = 0;
                 while j0 < grid.my {
-                    let mut rows = [row(j0); ROW_GROUP];
-                    let len = ROW_GROUP.min(grid.my - j0);
+                    let mut rows = [row(j0); BOUND_GROUP];
+                    let len = BOUND_GROUP.min(grid.my - j0);
                     for (r, slot) in rows.iter_mut().enumerate().take(len) {
                         *slot = row(j0 + r);
                     }
                     n_slip += march_row_group(grid, bound, how, &rows[..len], (&mut *out, &mut *mu_out));
-                    j0 += ROW_GROUP;
+                    j0 += BOUND_GROUP;
                 }
                 n_slip
             },
@@ -424,12 +420,13 @@ fn march_rows_with<const N: usize, B: ElementBound>(
     n_slip
 }
 
-/// Rows a grouped march ([`ElementBound::GROUPED`]) takes in step: three vector registers of
-/// four lanes, so that the rows' chains of dependent bounds (each element waits for its
-/// upstream neighbour's) overlap (benches/solvers.rs `falling_friction`).
-pub const ROW_GROUP: usize = 12;
+/// Falling bounds solved in step ([`ElementBound::apply_lanes`]): three vector registers of
+/// four lanes, so that their Newtons overlap, the rows' chains of dependent bounds of a grouped
+/// march (each element waits for its upstream neighbour's) and a UBA step's independent elements
+/// alike (benches/solvers.rs `falling_friction`).
+pub const BOUND_GROUP: usize = 12;
 
-/// [`march_rows_with`] of up to [`ROW_GROUP`] rows through [`ElementBound::apply_lanes`]: the
+/// [`march_rows_with`] of up to [`BOUND_GROUP`] rows through [`ElementBound::apply_lanes`]: the
 /// rows' elements of one column as the lanes (missing rows as unloaded lanes). Returns the number of
 /// slipping elements.
 #[inline(always)]
@@ -442,9 +439,9 @@ fn march_row_group<B: ElementBound>(
 ) -> usize {
     let mut n_slip = 0;
     let fresh = bound.inflow_mu();
-    let mut upstream = [(0.0, 0.0, false, fresh); ROW_GROUP];
+    let mut upstream = [(0.0, 0.0, false, fresh); BOUND_GROUP];
     for i in 0..grid.mx {
-        let mut e = Group::<ROW_GROUP>::unloaded(fresh);
+        let mut e = Group::<BOUND_GROUP>::unloaded(fresh);
         for (r, row) in rows.iter().enumerate() {
             let k = grid.index(i, row.j);
             let p = row.local.planform.pressure_mpa[k];

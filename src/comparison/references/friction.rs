@@ -31,6 +31,18 @@ pub const FOLDER: &str = "contact_friction";
 /// The labels of `contact_friction`.
 pub const LABELS: Labels = Labels { published: FRICTION, tight: FRICTION_TIGHT, ungated: FRICTION_UNGATED };
 
+/// The registry's entry of `contact_friction` (`SETS`): its labels with the catch-all reasons of
+/// the comparisons no rule of `tolerances.toml` covers, and its loader.
+pub const SET: SetDef = SetDef {
+    labels: &[
+        (FRICTION, "the fast models against the exact theory with falling friction: reported"),
+        (FRICTION_TIGHT, "the fast models against the tightly converged exact theory: reported"),
+        (FRICTION_UNGATED, "cases CONTACT's README does not gate (cases.csv gate = no, its note says why: two steady solutions, or the memoryless falling branch oscillating in time): reported"),
+    ],
+    load: |dir| Ok(Box::new(FrictionCases::load(dir, FOLDER, LABELS)?)),
+    section: None,
+};
+
 /// The variants' published values on the cases whose gate is `yes`.
 pub const VARIANTS: Against = Against::Reference("CONTACT friction variants");
 /// The variants' tightly converged fixed point on the cases whose gate is `yes` or `tight`.

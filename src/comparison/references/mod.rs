@@ -89,15 +89,7 @@ pub const SETS: [SetDef; 8] = [
         load: |dir| Ok(Box::new(thesis::ThesisTables::load(dir)?)),
         section: None,
     },
-    SetDef {
-        labels: &[
-            (friction::FRICTION, "the fast models against the exact theory with falling friction: reported"),
-            (friction::FRICTION_TIGHT, "the fast models against the tightly converged exact theory: reported"),
-            (friction::FRICTION_UNGATED, "cases CONTACT's README does not gate (cases.csv gate = no, its note says why: two steady solutions, or the memoryless falling branch oscillating in time): reported"),
-        ],
-        load: |dir| Ok(Box::new(friction::FrictionCases::load(dir, friction::FOLDER, friction::LABELS)?)),
-        section: None,
-    },
+    friction::SET,
     friction::VARIANTS_SET,
     SetDef {
         labels: &[(

@@ -9,10 +9,10 @@
 //! exceeds μ_prev, OMGSLP × 0.8 every 20 iterations while the element division changes.
 //! Adaptive solves (the default) reach the same fixed point with less work: loose early solves,
 //! warm starts with the slip area on the new bound, and in a transient step, once CONTACT's path
-//! holds the last step's element division, the last steps' field extrapolated as the next iterate. `inislp = "extrapolated"` starts a
-//! transient step from the last two steps' slip velocity extrapolated in the contact's frame
-//! (stationary fields: one solve), at the price of CONTACT's branch where a step has several
-//! solutions.
+//! holds the last step's element division, the last steps' field extrapolated as the next
+//! iterate. `inislp = "extrapolated"` starts a transient step from the last two steps' slip
+//! velocity extrapolated in the contact's frame (stationary fields: one solve), at the price of
+//! CONTACT's branch where a step has several solutions.
 //! Axes as the solver's: leading edge at ix = 0, material moving to +x.
 
 use super::tangential::{ElementState, StepResult};

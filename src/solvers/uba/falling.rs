@@ -3,18 +3,14 @@
 //! of [`crate::physics::bound::falling_bound`]). The coefficient of the friction memory is
 //! carried with the material by the same upwind difference as the tractions,
 //! `μ_adv = μ + C (μ_up − μ)` (fresh material at a row's start: the static value), before the
-//! memory's backward-Euler update over the sub-step's time C dx / V. [`GROUP`] elements at a time
-//! ([`ElementBound::apply_lanes`]: their bounds' iterations in step, compiled for AVX2 where the
-//! CPU has it, the same bits either way); the sums in the four-lane order.
+//! memory's backward-Euler update over the sub-step's time C dx / V. [`BOUND_GROUP`] elements
+//! at a time ([`ElementBound::apply_lanes`]: their bounds' iterations in step, compiled for AVX2
+//! where the CPU has it, the same bits either way); the sums in the four-lane order.
 
 use super::flat::{unbounded, Io, Lanes};
 use super::{Prepared, StepSums};
 use crate::simd::with_avx2;
-use crate::solvers::brush::{ElementBound, Falling, Group};
-
-/// Elements whose bounds are iterated in step: three vector registers of four lanes, so that
-/// the independent Newtons overlap (benches/solvers.rs `falling_friction`).
-const GROUP: usize = 12;
+use crate::solvers::brush::{ElementBound, Falling, Group, BOUND_GROUP};
 
 /// One sub-step from `old` into `new` (tractions in `io`, coefficients `mu_old` into `mu_new`),
 /// `k` the constants of [`super::flat::step`], `pressure_mpa` the planform's pressure.
@@ -31,8 +27,8 @@ pub(super) fn step<const GHOST: bool, const SPIN: bool>(
     )
 }
 
-/// [`step`] in groups of [`GROUP`] elements ([`ElementBound::apply_lanes`]; the last group padded with
-/// unloaded lanes), each element as [`crate::solvers::brush::ElementBound::apply`] would give it.
+/// [`step`] in groups of [`BOUND_GROUP`] elements ([`ElementBound::apply_lanes`]; the last group
+/// padded with unloaded lanes), each element as [`crate::solvers::brush::ElementBound::apply`] would give it.
 #[inline(always)]
 fn groups<const GHOST: bool, const SPIN: bool>(
     p: &Prepared,
@@ -44,9 +40,9 @@ fn groups<const GHOST: bool, const SPIN: bool>(
     let mut sums = Lanes::default();
     let n = ox.len();
     let (c, fresh) = (k[0], bound.inflow_mu());
-    for m0 in (0..n).step_by(GROUP) {
-        let len = GROUP.min(n - m0);
-        let mut e = Group::<GROUP>::unloaded(fresh);
+    for m0 in (0..n).step_by(BOUND_GROUP) {
+        let len = BOUND_GROUP.min(n - m0);
+        let mut e = Group::<BOUND_GROUP>::unloaded(fresh);
         for l in 0..len {
             let m = m0 + l;
             e.p[l] = pressure_mpa[m];
