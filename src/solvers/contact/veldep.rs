@@ -145,17 +145,19 @@ impl VelDep {
         let mut inner = 0;
         let mut s_new = vec![0.0; n];
         let mut last_change = None;
+        // The next solve starts as the step's first (`start` None), not from the last iterate.
+        let mut settled_now = false;
         for it in 1..=self.options.max_iterations {
             self.friction_field(&s, &moved_mu, motion, &mut mu, &mut mu_prev);
             for k in 0..n {
                 bound[k] = mu[k] * pn[k];
             }
             // Adaptive: the last iterate's slip area on the new bound.
-            let on_bound = last
-                .as_ref()
+            let from = last.as_ref().filter(|_| !std::mem::take(&mut settled_now));
+            let on_bound = from
                 .filter(|_| self.options.adaptive_solves)
                 .map(|r| onto_bound(&r.px, &r.py, &r.state, &bound));
-            let start = match (&on_bound, &last) {
+            let start = match (&on_bound, from) {
                 (Some((x, y)), _) => Some((x.as_slice(), y.as_slice())),
                 (None, Some(r)) => Some((r.px.as_slice(), r.py.as_slice())),
                 (None, None) => None,
@@ -189,9 +191,11 @@ impl VelDep {
             let held = !changed && last.is_some() && r.state == self.recent_state;
             if let Some(target) = settle.take_if(|_| held) {
                 // Two iterates of CONTACT's path in the last step's element division: go on from
-                // that step's branch extrapolated, solved tightly from here.
+                // that step's branch extrapolated, solved tightly from here, the next solve started
+                // as the step's first (the last steps' tractions extrapolated, on the new bound).
                 s = target;
                 last_change = Some(0.0);
+                settled_now = true;
             }
             if changed && it % 20 == 0 {
                 omgslp *= 0.8;
