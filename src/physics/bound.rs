@@ -30,14 +30,21 @@ pub fn project_to_bound(tx: f64, ty: f64, g: f64) -> (f64, f64, bool) {
 /// zero; otherwise the module policy applies (zero for `g ≤ 0`, NaN `g` or a non-finite `|τ|`).
 #[inline]
 pub fn scale_to_bound(tx: f64, ty: f64, g: f64) -> (f64, f64) {
-    scale_with_modulus(tx, ty, (tx * tx + ty * ty).sqrt(), g)
+    let a = (tx * tx + ty * ty).sqrt();
+    scale_by_factor(tx, ty, a, g, g / a)
 }
 
-/// [`scale_to_bound`] of a traction whose modulus `a` = |τ| is known, its cases as selects (so
-/// that lanes of elements vectorise, [`crate::solvers::brush`]'s falling bound).
+/// [`scale_to_bound`] of a traction whose modulus `a` = |τ| and its reciprocal `inv_a` = 1/a
+/// are known (where the caller has them): the factor g · inv_a in place of a division.
 #[inline(always)]
-pub fn scale_with_modulus(tx: f64, ty: f64, a: f64, g: f64) -> (f64, f64) {
-    let s = g / a;
+pub fn scale_with_reciprocal(tx: f64, ty: f64, (a, inv_a): (f64, f64), g: f64) -> (f64, f64) {
+    scale_by_factor(tx, ty, a, g, g * inv_a)
+}
+
+/// The cases of [`scale_to_bound`] around its factor `s` = g/a: the zero traction stays, and
+/// the result is zero for `g ≤ 0`, NaN `g` or a non-finite `a`.
+#[inline(always)]
+fn scale_by_factor(tx: f64, ty: f64, a: f64, g: f64, s: f64) -> (f64, f64) {
     let (x, y) = if a > 0.0 { (tx * s, ty * s) } else { (tx, ty) };
     if g > 0.0 && a.is_finite() {
         (x, y)

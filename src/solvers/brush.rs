@@ -3,7 +3,7 @@
 //! march along each row from the leading edge with the traction bound, and the traction field.
 //! FASTSIM and the UBA differ only in how they march.
 
-use crate::physics::bound::{falling_bound, falling_bound_lanes, scale_to_bound, scale_with_modulus, within_bound};
+use crate::physics::bound::{falling_bound, falling_bound_lanes, scale_with_reciprocal, within_bound};
 use crate::physics::law_kernel::LawKernel;
 pub use crate::physics::LeadingEdge;
 use crate::physics::{moment_sum, project_to_bound, Flexibilities, Grid, Planform, RigidSlip};
@@ -233,12 +233,13 @@ impl ElementBound for Falling {
         if within_bound(ux, uy, mu_stick * p) {
             return (ux, uy, false, mu_stick);
         }
-        let a = (ux * ux + uy * uy).sqrt();
+        let (a, inv_p) = ((ux * ux + uy * uy).sqrt(), 1.0 / p);
+        let inv = 1.0 / (a * gain);
         let (cx, cy) = (self.c_mm_s.0 * ux, self.c_mm_s.1 * uy);
-        let c = (cx * cx + cy * cy).sqrt() / (a * gain);
+        let c = (cx * cx + cy * cy).sqrt() * inv;
         let (g, _) = falling_bound(a, p, c, mu_start * p, |s| self.kernel.update_and_slope(mu_up, s));
-        let (px, py) = scale_to_bound(ux, uy, g);
-        (px, py, true, g / p)
+        let (px, py) = scale_with_reciprocal(ux, uy, (a, gain * inv), g);
+        (px, py, true, g * inv_p)
     }
 }
 
@@ -268,16 +269,19 @@ impl Falling {
     fn group_bounds<const L: usize>(&self, e: &Group<L>) -> [(f64, f64, bool, f64); L] {
         // Every lane's arithmetic unconditionally and every choice a select (`&`, not `&&`), so
         // that the lanes compile to vector instructions; the selected values are those of
-        // `within_bound` and `scale_to_bound` to the bit.
+        // `within_bound` and `scale_with_reciprocal` to the bit.
         let (mut stick, mut a, mut c, mut g0) = ([0.0; L], [0.0; L], [0.0; L], [0.0; L]);
+        let (mut inv, mut inv_p) = ([0.0; L], [0.0; L]);
         let mut slips = [false; L];
         for l in 0..L {
             let (ux, uy, p) = (e.ux[l], e.uy[l], e.p[l]);
             stick[l] = self.mu_stick(e.mu_up[l]);
             slips[l] = (p > 0.0) & !within_bound(ux, uy, stick[l] * p);
-            a[l] = (ux * ux + uy * uy).sqrt();
+            // The reciprocals 1/p and 1/(a gain) once, off the chain of dependent bounds.
+            (a[l], inv_p[l]) = ((ux * ux + uy * uy).sqrt(), 1.0 / p);
+            inv[l] = 1.0 / (a[l] * e.gain[l]);
             let (cx, cy) = (self.c_mm_s.0 * ux, self.c_mm_s.1 * uy);
-            c[l] = (cx * cx + cy * cy).sqrt() / (a[l] * e.gain[l]);
+            c[l] = (cx * cx + cy * cy).sqrt() * inv[l];
             g0[l] = e.mu_start[l] * p;
         }
         let g = if slips.iter().any(|s| *s) {
@@ -294,8 +298,12 @@ impl Falling {
         let mut out = [(0.0, 0.0, false, 0.0); L];
         for l in 0..L {
             let (ux, uy) = (e.ux[l], e.uy[l]);
-            let (px, py) = scale_with_modulus(ux, uy, a[l], g[l]);
-            let mu = g[l] / e.p[l];
+            // `scale_with_reciprocal` of a slipping lane (a > 0 or NaN there: |u| exceeds a
+            // bound ≥ 0), its cases as one select.
+            let f = g[l] * (e.gain[l] * inv[l]);
+            let onto = (g[l] > 0.0) & a[l].is_finite();
+            let (px, py) = if onto { (ux * f, uy * f) } else { (0.0, 0.0) };
+            let mu = g[l] * inv_p[l];
             out[l] = if slips[l] { (px, py, true, mu) } else { (ux, uy, false, stick[l]) };
         }
         out
