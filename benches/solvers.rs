@@ -239,7 +239,12 @@ fn bench_fft_length(c: &mut Criterion) {
 /// memory per element and nothing else, 1.18 µs: 2.2× the UBA's Coulomb step by itself.
 /// 14:45 UTC (idle): 1/p and 1/(a gain) made once per lane beside the chain of dependent bounds,
 /// the projection and μ = g/p as products: FASTSIM 5.82 / 3.59 µs (1.62×, was 6.08 / 3.61), the
-/// UBA step 5.20 / 0.556 µs (9.4×, was 5.49 / 0.570).
+/// UBA step 5.20 / 0.556 µs (9.4×, was 5.49 / 0.570). Where the rest goes (14:50 UTC, timing
+/// only, the numbers then wrong): the law's exponential replaced by a linear term, FASTSIM 5.13
+/// µs and the UBA step 4.46 µs; the memory's division by a product, 5.69 and 4.91 µs. The
+/// exponential with fused multiply-adds measured 5.67–5.71 µs against Coulomb's 3.50–3.67 µs
+/// (within the run-to-run spread of the ratio, not kept). A vectorised fill of the UBA's groups
+/// (selects, no branches) measured 5.58 against 5.49 µs (not kept).
 fn bench_falling(c: &mut Criterion) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let falling = std::fs::read_to_string(root.join("scenes/stability/stab_fr_step_mem.toml")).unwrap();
