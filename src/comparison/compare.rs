@@ -151,7 +151,8 @@ pub fn traction_bound(s: &StoredScene, against: Against) -> Vec<Finding> {
     for (solver, h) in &s.histories {
         let beyond = |(coef, r): &(f64, &crate::history::Row)| {
             let limit = if r.sample.mu.is_nan() { f64::INFINITY } else { r.sample.mu * (1.0 + BOUND_MARGIN) };
-            !(*coef <= limit)
+            // NaN counts as beyond.
+            coef.partial_cmp(&limit).is_none_or(std::cmp::Ordering::is_gt)
         };
         let worst = h
             .rows

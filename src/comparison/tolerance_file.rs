@@ -180,7 +180,7 @@ pub fn apply(
             let r = &rules[i];
             let allowed = r.allowed(f.theirs);
             decided[i] += 1;
-            if f.gated && (!r.gated || !(allowed <= f.allowed)) {
+            if f.gated && (!r.gated || allowed.partial_cmp(&f.allowed).is_none_or(std::cmp::Ordering::is_gt)) {
                 if !r.gated && !r.disable {
                     return Err(InputError::new(
                         &r.origin,

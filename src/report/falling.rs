@@ -39,9 +39,11 @@ fn x_of(sc: &StoredScene, h: &History) -> (&'static str, Vec<f64>) {
     if sc.scene.kind != LoadingKind::Sweep {
         return ("t_s", h.rows.iter().map(|r| r.sample.t_s).collect());
     }
-    let quantities: [(&str, fn(&crate::problem::Sample, f64) -> f64); 4] =
+    // A swept quantity of a sample at the scene's speed.
+    type Swept = fn(&crate::problem::Sample, f64) -> f64;
+    let quantities: [(&str, Swept); 4] =
         [("cx", |s, _| s.cx), ("cy", |s, _| s.cy), ("cs", |s, _| s.cs), ("v_mm_s", |s, v| s.speed_mm_s(v))];
-    let spread = |q: fn(&crate::problem::Sample, f64) -> f64| {
+    let spread = |q: Swept| {
         let vals: Vec<f64> = h.rows.iter().map(|r| q(&r.sample, v)).collect();
         let (lo, hi) = vals.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
         (hi - lo) / hi.abs().max(lo.abs()).max(f64::MIN_POSITIVE)

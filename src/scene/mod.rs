@@ -54,7 +54,7 @@ pub enum Creepage {
     },
     /// A CSV table `t_s,cx[,cy,cs,fn_n,mu,v_mm_s]`, interpolated at t_k = k dt up to its last time
     /// (within `problem::loading::TABLE_END_REL`).
-    Table { file: PathBuf, rows: table::CreepageTable },
+    Table { file: PathBuf, rows: Box<table::CreepageTable> },
 }
 
 /// The initial tangential state.

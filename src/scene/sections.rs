@@ -350,7 +350,7 @@ pub fn creepage(top: &mut Section, dir: &Path) -> Result<CreepageSpec, InputErro
         _ => {
             let file = cr.str("file", "a CSV path relative to the scene file")?;
             let path = dir.join(file);
-            let rows = table::CreepageTable::from_file(&path, &cr.field("file"))?;
+            let rows = Box::new(table::CreepageTable::from_file(&path, &cr.field("file"))?);
             Creepage::Table { file: path, rows }
         }
     };

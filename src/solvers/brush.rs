@@ -136,11 +136,7 @@ pub trait ElementBound {
     /// overwrite), the same bits per lane.
     #[inline(always)]
     fn apply_lanes<const L: usize>(&self, e: &Group<L>) -> [(f64, f64, bool, f64); L] {
-        let mut out = [(0.0, 0.0, false, 0.0); L];
-        for l in 0..L {
-            out[l] = self.apply((e.ux[l], e.uy[l]), e.p[l], e.gain[l], (e.mu_up[l], e.mu_start[l]));
-        }
-        out
+        std::array::from_fn(|l| self.apply((e.ux[l], e.uy[l]), e.p[l], e.gain[l], (e.mu_up[l], e.mu_start[l])))
     }
 }
 
@@ -549,9 +545,9 @@ mod tests {
                 let bound =
                     Falling { kernel, mu_static: law.mu_static(), c_mm_s: (3.0e3, 2.8e3), stick: kernel.stick() };
                 let four = bound.apply_lanes(&e);
-                for l in 0..4 {
+                for (l, four) in four.iter().enumerate() {
                     let one = bound.apply((e.ux[l], e.uy[l]), e.p[l], e.gain[l], (e.mu_up[l], e.mu_start[l]));
-                    assert_eq!(four[l], one, "{law:?} {memory:?} lane {l}");
+                    assert_eq!(*four, one, "{law:?} {memory:?} lane {l}");
                     assert_eq!(one.2, l > 0, "lane {l} slips");
                 }
                 let (tx, ty, _, mu) = four[2];

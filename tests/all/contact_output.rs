@@ -77,7 +77,7 @@ fn read(rel_path: &str) -> Vec<CaseOutput> {
     contact_output::read(&root().join("reference/contact_public").join(rel_path)).unwrap()
 }
 
-fn totals<'a>(cases: &'a [CaseOutput], case: u32) -> &'a Totals {
+fn totals(cases: &[CaseOutput], case: u32) -> &Totals {
     match &cases.iter().find(|c| c.case == case).unwrap_or_else(|| panic!("no case {case}")).body {
         CaseBody::Totals(t) => t,
         other => panic!("case {case}: {other:?}"),

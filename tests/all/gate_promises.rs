@@ -309,7 +309,8 @@ fn edited_reference(dir: &Path, edit: impl Fn(&str) -> String) -> Result<(), Str
 fn reference_histories_with_garbage_steps_or_no_rows_are_refused_whatever_the_manifest_says() {
     let tmp = tempfile::tempdir().unwrap();
     edited_reference(&tmp.path().join("same"), |t| t.to_string()).unwrap();
-    let cases: [(&str, fn(&str) -> String); 4] = [
+    type Edit = fn(&str) -> String;
+    let cases: [(&str, Edit); 4] = [
         ("a repeated step (a wrong row before the right one)", |t| {
             let mut lines: Vec<String> = t.lines().map(String::from).collect();
             let wrong = lines[2].replace("215.5133", "999.9");

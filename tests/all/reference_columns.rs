@@ -28,7 +28,7 @@ fn cases_without(drop: Option<&str>) -> String {
 }
 
 fn load_error(dir: &Path) -> String {
-    ContactCases::load(dir).err().expect("an error").to_string()
+    ContactCases::load(dir).expect_err("an error").to_string()
 }
 
 #[test]

@@ -75,7 +75,7 @@ fn contacts_printed_forces_give_back_its_creepages_in_steady_rolling() {
                 break;
             }
         }
-        let line = match line.trim_start().split_whitespace().collect::<Vec<_>>().as_slice() {
+        let line = match line.split_whitespace().collect::<Vec<_>>().as_slice() {
             ["203100", ..] => line.replacen("203100", "203110", 1),
             [fn_n, cksi, ceta, cphi, "FN,", ..] => {
                 let fx = totals(case).fx_over_fstat_fn().unwrap();

@@ -307,7 +307,7 @@ impl CaseReader<'_> {
         let (k, _) = self.lx.group("kinematics PEN/FN, CKSI/FX, CETA/FY, CPHI", &[Kind::Real; 4], (2, Kind::Real))?;
         (state.pen_or_fn, state.cksi_or_fx, state.ceta_or_fy, state.cphi_per_mm) = (k[0], k[1], k[2], k[3]);
         state.spin_centre_mm = if k.len() >= 6 { [k[4], k[5]] } else { [0.0, 0.0] };
-        if d.l == 1 && (d.v == 3) != !state.friction_rows.is_empty() {
+        if d.l == 1 && (d.v == 3) == state.friction_rows.is_empty() {
             // CONTACT (`m_sinput.f90`): switching V on or off needs new friction parameters.
             let allowed =
                 "the previous case's V when L = 1 keeps its friction (V changes only with new friction, L != 1)";

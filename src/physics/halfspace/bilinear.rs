@@ -99,19 +99,18 @@ mod tests {
         let h = 1e-4;
         for &(s, t) in &[(0.7f64, 0.3f64), (-1.3, 0.45), (0.2, -2.1), (-0.8, -0.9), (2.5, 0.05)] {
             let r3 = s.hypot(t).powi(3);
-            let cases: [(fn(f64, f64) -> [f64; 4], f64); 3] =
-                [(f_ss, s * s / r3), (f_tt, t * t / r3), (f_st, s * t / r3)];
+            type Antiderivatives = fn(f64, f64) -> [f64; 4];
+            let cases: [(Antiderivatives, f64); 3] = [(f_ss, s * s / r3), (f_tt, t * t / r3), (f_st, s * t / r3)];
             for (f, k) in cases {
                 let mixed = |j: usize| {
                     (f(s + h, t + h)[j] - f(s - h, t + h)[j] - f(s + h, t - h)[j] + f(s - h, t - h)[j]) / (4.0 * h * h)
                 };
                 let want = [k, s * k, t * k, s * t * k];
-                for j in 0..4 {
+                for (j, want) in want.into_iter().enumerate() {
                     assert!(
-                        (mixed(j) - want[j]).abs() < 1e-6 * (1.0 + want[j].abs()),
-                        "F{j} at ({s}, {t}): {} vs {}",
+                        (mixed(j) - want).abs() < 1e-6 * (1.0 + want.abs()),
+                        "F{j} at ({s}, {t}): {} vs {want}",
                         mixed(j),
-                        want[j]
                     );
                 }
             }

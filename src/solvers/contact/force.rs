@@ -202,12 +202,11 @@ fn broyden(jac: &mut [f64], u_new: &[f64], u: &[f64], r_new: &[f64], r: &[f64]) 
     }
 }
 
+/// The residual of the prescribed forces at the creepages it is given.
+type Residual<'a> = dyn FnMut(&[f64]) -> Result<Vec<f64>, ContactError> + 'a;
+
 /// The Jacobian by forward differences at `u` (residual `r`), a step of 1e-4 of |u| (or 1e-8).
-fn differences(
-    u: &[f64],
-    r: &[f64],
-    at: &mut dyn FnMut(&[f64]) -> Result<Vec<f64>, ContactError>,
-) -> Result<Vec<f64>, ContactError> {
+fn differences(u: &[f64], r: &[f64], at: &mut Residual<'_>) -> Result<Vec<f64>, ContactError> {
     let n = u.len();
     let mut jac = vec![0.0; n * n];
     for b in 0..n {

@@ -25,7 +25,7 @@ pub fn field_x(mx: usize, v: &[f64]) -> Vec<f64> {
 
 /// The sample in the mirrored frame: cx, cs and a prescribed Fx/FN change sign.
 pub fn sample(s: &Sample) -> Sample {
-    Sample { cx: -s.cx, cs: -s.cs, fx_target: s.fx_target.map(|f| -f), ..s.clone() }
+    Sample { cx: -s.cx, cs: -s.cs, fx_target: s.fx_target.map(|f| -f), ..*s }
 }
 
 /// Creepages found under prescribed forces, back from the mirrored frame.

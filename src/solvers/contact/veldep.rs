@@ -154,9 +154,8 @@ impl VelDep {
             }
             // Adaptive: the last iterate's slip area on the new bound.
             let from = last.as_ref().filter(|_| !std::mem::take(&mut settled_now));
-            let on_bound = from
-                .filter(|_| self.options.adaptive_solves)
-                .map(|r| onto_bound(&r.px, &r.py, &r.state, &bound));
+            let on_bound =
+                from.filter(|_| self.options.adaptive_solves).map(|r| onto_bound(&r.px, &r.py, &r.state, &bound));
             let start = match (&on_bound, from) {
                 (Some((x, y)), _) => Some((x.as_slice(), y.as_slice())),
                 (None, Some(r)) => Some((r.px.as_slice(), r.py.as_slice())),

@@ -144,7 +144,7 @@ impl Row<'_> {
 fn number(v: f64) -> String {
     match v {
         v if v.is_nan() => "NaN".into(),
-        v if v == 0.0 => "0".into(), // -0 too: a printed 0.000 negated
+        0.0 => "0".into(), // -0 too (it equals 0): a printed 0.000 negated
         v if !(1e-4..1e15).contains(&v.abs()) => format!("{v:e}"),
         v => format!("{v}"),
     }
