@@ -246,7 +246,10 @@ fn bench_fft_length(c: &mut Criterion) {
 /// (within the run-to-run spread of the ratio, not kept). A vectorised fill of the UBA's groups
 /// (selects, no branches) measured 5.58 against 5.49 µs (not kept). The whole history (15:25
 /// UTC, idle): FASTSIM 405 / 235 µs (1.72×), the UBA 393 / 42.8 µs (9.2×); per step in the same
-/// run FASTSIM 5.79 / 3.43 µs (1.69×), the UBA 5.16 / 0.548 µs (9.4×).
+/// run FASTSIM 5.79 / 3.43 µs (1.69×), the UBA 5.16 / 0.548 µs (9.4×). Coulomb's FASTSIM through
+/// the grouped march (12 rows in step, its projection as selects) measured 3.83 µs against the
+/// two-row march's 3.4–3.6 µs (not kept): the grouped march's own per-element set-up, not the
+/// bound, is what both laws share.
 fn bench_falling(c: &mut Criterion) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let falling = std::fs::read_to_string(root.join("scenes/stability/stab_fr_step_mem.toml")).unwrap();
