@@ -35,7 +35,8 @@ pub fn scale_to_bound(tx: f64, ty: f64, g: f64) -> (f64, f64) {
 }
 
 /// [`scale_to_bound`] of a traction whose modulus `a` = |τ| and its reciprocal `inv_a` = 1/a
-/// are known (where the caller has them): the factor g · inv_a in place of a division.
+/// are known (where the caller has them): the factor g · inv_a in place of a division, its cases
+/// as selects (lanes of elements vectorise: [`crate::solvers::brush`]'s falling bound).
 #[inline(always)]
 pub fn scale_with_reciprocal(tx: f64, ty: f64, (a, inv_a): (f64, f64), g: f64) -> (f64, f64) {
     scale_by_factor(tx, ty, a, g, g * inv_a)
@@ -46,7 +47,7 @@ pub fn scale_with_reciprocal(tx: f64, ty: f64, (a, inv_a): (f64, f64), g: f64) -
 #[inline(always)]
 fn scale_by_factor(tx: f64, ty: f64, a: f64, g: f64, s: f64) -> (f64, f64) {
     let (x, y) = if a > 0.0 { (tx * s, ty * s) } else { (tx, ty) };
-    if g > 0.0 && a.is_finite() {
+    if (g > 0.0) & a.is_finite() {
         (x, y)
     } else {
         (0.0, 0.0)

@@ -294,11 +294,7 @@ impl Falling {
         let mut out = [(0.0, 0.0, false, 0.0); L];
         for l in 0..L {
             let (ux, uy) = (e.ux[l], e.uy[l]);
-            // `scale_with_reciprocal` of a slipping lane (a > 0 or NaN there: |u| exceeds a
-            // bound ≥ 0), its cases as one select.
-            let f = g[l] * (e.gain[l] * inv[l]);
-            let onto = (g[l] > 0.0) & a[l].is_finite();
-            let (px, py) = if onto { (ux * f, uy * f) } else { (0.0, 0.0) };
+            let (px, py) = scale_with_reciprocal(ux, uy, (a[l], e.gain[l] * inv[l]), g[l]);
             let mu = g[l] * inv_p[l];
             out[l] = if slips[l] { (px, py, true, mu) } else { (ux, uy, false, stick[l]) };
         }
