@@ -153,7 +153,7 @@ impl VelDep {
                 bound[k] = mu[k] * pn[k];
             }
             // Adaptive: the last iterate's slip area on the new bound.
-            let from = last.as_ref().filter(|_| !std::mem::take(&mut settled_now));
+            let from = if std::mem::take(&mut settled_now) { None } else { last.as_ref() };
             let on_bound =
                 from.filter(|_| self.options.adaptive_solves).map(|r| onto_bound(&r.px, &r.py, &r.state, &bound));
             let start = match (&on_bound, from) {
