@@ -1,0 +1,153 @@
+//! The report's figures by scene group: each scene's history or sweep and, for sine scenes, its
+//! hysteresis loop, CONTACT's drawn as markers.
+
+use crate::history::History;
+use crate::problem::LoadingKind;
+use crate::report::plot::{line_chart, titles::of as title_of, Axis, Series};
+use crate::report::sections;
+use crate::report::{Report, ReportInput};
+use crate::suite::results::StoredScene;
+use std::fmt::Write;
+
+/// A scene group of the report: its title, which scenes it holds, and how they are drawn.
+struct Group {
+    title: &'static str,
+    member: fn(&str) -> bool,
+    /// Whether its sine scenes draw their time history beside their loop (where the delay is the
+    /// subject); every other scene draws its history or sweep anyway.
+    sine_histories: bool,
+    /// Whether it is drawn at all (a group whose scenes only feed the report's sections is not).
+    drawn: bool,
+}
+
+const fn group(title: &'static str, member: fn(&str) -> bool) -> Group {
+    Group { title, member, sine_histories: false, drawn: true }
+}
+
+/// Scene groups of the report; a scene belongs to the first that holds it, the last holds any.
+const GROUPS: &[Group] = &[
+    group("Step response: friction", |n| n.starts_with("step_mu")),
+    group("Step response: load, shape and creepage", |n| n.starts_with("step_") && !n.starts_with("step_mu")),
+    Group {
+        sine_histories: true,
+        ..group("Sine: frequency at μ = 1", |n| n.starts_with("sine_f") && n.ends_with("_mu10"))
+    },
+    group("Sine: frequency at μ = 0.6", |n| n.starts_with("sine_f") && n.ends_with("_mu06")),
+    group("Sine: friction at 10 Hz", |n| n.starts_with("sine_f10_mu0")),
+    group("Sine: normal load", |n| n.starts_with("sine_f") && n.contains("_fn")),
+    group("Sine: mean creepage C0", |n| n.starts_with("sine_f10_c0_")),
+    Group {
+        sine_histories: true,
+        ..group("Grid refinement", |n| n.starts_with("sine") && (n.ends_with("_g44") || n.ends_with("_g88")))
+    },
+    group("Steady sweeps", |n| n.starts_with("steady_")),
+    group("Stability and extreme cases", |n| n.starts_with(sections::STABILITY_SCENES)),
+    Group { drawn: false, ..group("Studies behind the report's sections", |n| n.starts_with("report_")) },
+    group("Other scenes", |_| true),
+];
+
+/// The index in [`GROUPS`] of the group that holds a scene.
+fn group_of(name: &str) -> usize {
+    GROUPS.iter().position(|g| (g.member)(name)).unwrap_or(GROUPS.len() - 1)
+}
+
+/// Down-sample a curve to at most `n` points (keeps the plot files small).
+fn thin(points: Vec<(f64, f64)>, n: usize) -> Vec<(f64, f64)> {
+    if points.len() <= n {
+        return points;
+    }
+    let step = points.len() as f64 / n as f64;
+    let mut out: Vec<(f64, f64)> = (0..n).map(|k| points[(k as f64 * step) as usize]).collect();
+    out.push(*points.last().unwrap());
+    out
+}
+
+fn xy(h: &History, x: &str, y: &str) -> Vec<(f64, f64)> {
+    h.column(x).unwrap_or_default().into_iter().zip(h.column(y).unwrap_or_default()).collect()
+}
+
+/// A sweep's plot axis: the creepage its direction moves most ((cx, cy, cs) order on ties).
+fn swept_axis(direction: [f64; 3]) -> (&'static str, &'static str) {
+    let axes = [("cx", "creepage c_x [–]"), ("cy", "creepage c_y [–]"), ("cs", "spin creepage c_s [1/mm]")];
+    let k = (1..3).fold(0, |k, i| if direction[i].abs() > direction[k].abs() { i } else { k });
+    axes[k]
+}
+
+fn last_period(h: &History, period: f64) -> Vec<(f64, f64)> {
+    let t_end = h.rows.last().map(|r| r.sample.t_s).unwrap_or(0.0);
+    let periods = (t_end / period + 1e-9).floor();
+    let t0 = (periods - 1.0) * period;
+    h.rows.iter().filter(|r| r.sample.t_s >= t0 - 1e-12).map(|r| (r.sample.cx, r.fx_over_fn)).collect()
+}
+
+/// Section: a subsection per drawn group, with the figures of each of its scenes and their links.
+pub fn histories_and_loops(body: &mut Report, input: &ReportInput) {
+    let _ = writeln!(body.markdown, "## Histories and loops by group\n");
+    for (k, group) in GROUPS.iter().enumerate() {
+        let members = members(input, k);
+        if members.is_empty() || !group.drawn {
+            continue;
+        }
+        let _ = writeln!(body.markdown, "### {}\n", group.title);
+        for sc in members {
+            scene_figures(body, sc, input.refs.history(&sc.name), group.sine_histories);
+        }
+    }
+}
+
+/// The scenes the group of index `k` holds and draws.
+fn members<'a>(input: &ReportInput<'a>, k: usize) -> Vec<&'a StoredScene> {
+    // A reference set's cases drawn in a section of their own are not drawn again.
+    input.scenes.iter().filter(|s| group_of(&s.name) == k && input.refs.section_of(&s.name).is_none()).collect()
+}
+
+/// A scene's figures and their links: its history or sweep, and its loop if it is a sine;
+/// `contact` is CONTACT's history of it, if any.
+fn scene_figures(body: &mut Report, sc: &StoredScene, contact: Option<&History>, sine_histories: bool) {
+    // Sine scenes show their loop; the time history only where the delay is the subject.
+    if sc.scene.period_s().is_none() || sine_histories {
+        history_figure(body, sc, contact);
+    }
+    if let Some(period_s) = sc.scene.period_s() {
+        loop_figure(body, sc, contact, period_s);
+    }
+    body.markdown.push('\n');
+}
+
+/// A scene's f = Fx/FN against time, or against the swept creepage for a sweep.
+fn history_figure(body: &mut Report, sc: &StoredScene, contact: Option<&History>) {
+    let sweep = sc.scene.kind == LoadingKind::Sweep;
+    let (x, xl) =
+        if sweep { swept_axis(sc.scene.sweep_direction.unwrap_or([1.0, 0.0, 0.0])) } else { ("t_s", "t [s]") };
+    let mut series: Vec<Series> =
+        sc.histories.iter().map(|(name, h)| Series::model(name, thin(xy(h, x, "fx_over_fn"), 300))).collect();
+    if let Some(c) = contact {
+        series.push(Series::reference("CONTACT", thin(xy(c, x, "fx_over_fn"), 150)));
+    }
+    let file = format!("{}_{}.svg", sc.name, if sweep { "sweep" } else { "history" });
+    let svg = line_chart(&sc.name, &Axis::linear(xl), &Axis::linear(title_of("fx_over_fn")), &series);
+    figure(body, file, svg, &sc.name);
+}
+
+/// A sine scene's hysteresis loop: f = Fx/FN against cx over its last period (`period_s`).
+fn loop_figure(body: &mut Report, sc: &StoredScene, contact: Option<&History>, period_s: f64) {
+    let mut loops: Vec<Series> =
+        sc.histories.iter().map(|(n, h)| Series::model(n, thin(last_period(h, period_s), 300))).collect();
+    if let Some(c) = contact {
+        loops.push(Series::reference("CONTACT", thin(last_period(c, period_s), 150)));
+    }
+    let file = format!("{}_loop.svg", sc.name);
+    let svg = line_chart(
+        &format!("{} — last period", sc.name),
+        &Axis::linear("creepage c_x [–]"),
+        &Axis::linear(title_of("fx_over_fn")),
+        &loops,
+    );
+    figure(body, file, svg, &format!("{} loop", sc.name));
+}
+
+/// Add a figure (file name, SVG) to the report and its link, with the text `alt`, to the Markdown.
+fn figure(body: &mut Report, file: String, svg: String, alt: &str) {
+    let _ = writeln!(body.markdown, "![{alt}](figures/{file})");
+    body.figures.push((file, svg));
+}
