@@ -99,6 +99,13 @@ pub fn builtin_names() -> Vec<&'static str> {
 /// model that finds creepages can take prescribed forces).
 pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
     let shifts = problem.rolling.motion == Motion::Shift || problem.loading.shift_start().is_some();
+    check_falling_combinations(problem, shifts)?;
+    check_external(problem)?;
+    problem.solvers.iter().filter_map(|s| builtin(s)).try_for_each(|m| check_model(problem, m, shifts))
+}
+
+/// A falling friction law with what no model combines it with: shifts (`shifts`) or prescribed forces.
+fn check_falling_combinations(problem: &Problem, shifts: bool) -> Result<(), InputError> {
     if problem.friction.is_falling() && shifts {
         return Err(InputError::new(
             "rolling.motion",
@@ -113,17 +120,21 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
             "prescribed forces with Coulomb friction, or creepages with a falling law (the two iterations are not combined)",
         ));
     }
-    let rows_what = problem.loading.normal_rows();
-    if let Some((name, what)) = problem.solvers.iter().find(|s| builtin(s).is_none()).zip(rows_what) {
+    Ok(())
+}
+
+/// An external model is given FN, one μ and the scene's geometry: no normal problem per row, no
+/// friction per grid row.
+fn check_external(problem: &Problem) -> Result<(), InputError> {
+    let external = problem.solvers.iter().find(|s| builtin(s).is_none());
+    if let Some((name, what)) = external.zip(problem.loading.normal_rows()) {
         return Err(InputError::new(
             "solvers",
             format!("{name:?} (an external model) with {what}"),
             "built-in models that solve each row's normal problem (an external model is given FN and the scene's geometry)",
         ));
     }
-    if let Some(name) =
-        problem.solvers.iter().find(|s| builtin(s).is_none()).filter(|_| problem.friction_rows.is_some())
-    {
+    if let Some(name) = external.filter(|_| problem.friction_rows.is_some()) {
         return Err(InputError::new(
             "solvers",
             format!("{name:?} (an external model) with [friction] mu_rows"),
@@ -133,69 +144,87 @@ pub fn check_applicable(problem: &Problem) -> Result<(), InputError> {
             ),
         ));
     }
-    problem.solvers.iter().filter_map(|s| builtin(s)).try_for_each(|m| {
-        if problem.friction_rows.is_some() && !FRICTION_ROWS.contains(&m.name) {
-            return Err(InputError::new(
-                "solvers",
-                format!("{:?} with [friction] mu_rows", m.name),
-                format!("models that take a friction per grid row: {} (leave {} out of this scene: it takes one mu for the whole contact)", FRICTION_ROWS.join(", "), m.name),
-            ));
-        }
-        if problem.friction.is_falling() && !FALLING_FRICTION.contains(&m.name) {
-            return Err(InputError::new(
-                "solvers",
-                format!("{:?} with a falling [friction] law", m.name),
-                format!("models that take a falling friction law: {}", FALLING_FRICTION.join(", ")),
-            ));
-        }
-        if problem.loading.prescribes_force() && !m.prescribed_forces {
-            let able: Vec<&str> = MODELS.iter().filter(|m| m.prescribed_forces).map(|m| m.name).collect();
-            return Err(InputError::new(
-                "solvers",
-                format!("{:?} with prescribed forces (creepage.fx_over_fn or fy_over_fn)", m.name),
-                format!("models that find the creepages of prescribed forces: {} (leave {} out of this scene: it takes creepages only)", able.join(", "), m.name),
-            ));
-        }
-        if let Some(what) = rows_what.filter(|_| !m.normal_rows) {
-            let able: Vec<&str> = MODELS.iter().filter(|m| m.normal_rows).map(|m| m.name).collect();
-            return Err(InputError::new(
-                "solvers",
-                format!("{:?} with {what}", m.name),
-                format!("models that solve each row's normal problem: {} (leave {} out of this scene: it takes FN and the scene's geometry only)", able.join(", "), m.name),
-            ));
-        }
-        if problem.loading.rows().any(|s| s.courant.is_some()) && m.name != contact::NAME {
-            return Err(InputError::new(
-                "creepage.file column courant",
-                format!("a rolling distance per row with {:?}", m.name),
-                format!("a courant column only with the exact model ({}); [rolling] courant for every model (leave {} out of this scene)", contact::NAME, m.name),
-            ));
-        }
-        if !problem.normal.is_default() && m.name != contact::NAME {
-            return Err(InputError::new(
-                "normal.pressure",
-                format!("{:?} with {:?}", problem.normal.pressure.name(), m.name),
-                format!("[normal] only with the exact model ({}): the simplified models take their pressure from [model] pressure (leave {} out of this scene)", contact::NAME, m.name),
-            ));
-        }
-        let turned = problem.loading.rows().map(|s| s.chi_deg_or(problem.rolling.chi_deg)).find(|&c| c != 0.0);
-        if let Some(chi_deg) = turned.filter(|_| !OTHER_DIRECTIONS.contains(&m.name)) {
-            return Err(InputError::new(
-                "rolling.chi_deg",
-                format!("{chi_deg} with {:?}", m.name),
-                format!("models that roll along another direction than +x: {} (leave {} out of this scene: it rolls along +x only)", OTHER_DIRECTIONS.join(", "), m.name),
-            ));
-        }
-        if shifts && !m.shifts {
-            let able: Vec<&str> = MODELS.iter().filter(|m| m.shifts).map(|m| m.name).collect();
-            return Err(InputError::new(
-                "solvers",
-                format!("{:?} with {}", m.name, if problem.rolling.motion == Motion::Shift { "rolling.motion = \"shift\"" } else { "init.kind = \"shift\"" }),
-                format!("models that solve shifts without rolling: {} (leave {} out of this scene: it models rolling only)", able.join(", "), m.name),
-            ));
-        }
-        (m.check)(problem)
-    })
+    Ok(())
+}
+
+/// Built-in model `m` takes what the problem asks of it (friction per row, a falling law,
+/// prescribed forces, normal rows, a courant column, `[normal]`, a direction, shifts when
+/// `shifts`), then its own [`ModelDef::check`].
+fn check_model(problem: &Problem, m: &ModelDef, shifts: bool) -> Result<(), InputError> {
+    let rows_what = problem.loading.normal_rows();
+    if problem.friction_rows.is_some() && !FRICTION_ROWS.contains(&m.name) {
+        return Err(InputError::new(
+            "solvers",
+            format!("{:?} with [friction] mu_rows", m.name),
+            format!("models that take a friction per grid row: {} (leave {} out of this scene: it takes one mu for the whole contact)", FRICTION_ROWS.join(", "), m.name),
+        ));
+    }
+    if problem.friction.is_falling() && !FALLING_FRICTION.contains(&m.name) {
+        return Err(InputError::new(
+            "solvers",
+            format!("{:?} with a falling [friction] law", m.name),
+            format!("models that take a falling friction law: {}", FALLING_FRICTION.join(", ")),
+        ));
+    }
+    if problem.loading.prescribes_force() && !m.prescribed_forces {
+        let able: Vec<&str> = MODELS.iter().filter(|m| m.prescribed_forces).map(|m| m.name).collect();
+        return Err(InputError::new(
+            "solvers",
+            format!("{:?} with prescribed forces (creepage.fx_over_fn or fy_over_fn)", m.name),
+            format!("models that find the creepages of prescribed forces: {} (leave {} out of this scene: it takes creepages only)", able.join(", "), m.name),
+        ));
+    }
+    if let Some(what) = rows_what.filter(|_| !m.normal_rows) {
+        let able: Vec<&str> = MODELS.iter().filter(|m| m.normal_rows).map(|m| m.name).collect();
+        return Err(InputError::new(
+            "solvers",
+            format!("{:?} with {what}", m.name),
+            format!("models that solve each row's normal problem: {} (leave {} out of this scene: it takes FN and the scene's geometry only)", able.join(", "), m.name),
+        ));
+    }
+    if problem.loading.rows().any(|s| s.courant.is_some()) && m.name != contact::NAME {
+        return Err(InputError::new(
+            "creepage.file column courant",
+            format!("a rolling distance per row with {:?}", m.name),
+            format!("a courant column only with the exact model ({}); [rolling] courant for every model (leave {} out of this scene)", contact::NAME, m.name),
+        ));
+    }
+    if !problem.normal.is_default() && m.name != contact::NAME {
+        return Err(InputError::new(
+            "normal.pressure",
+            format!("{:?} with {:?}", problem.normal.pressure.name(), m.name),
+            format!("[normal] only with the exact model ({}): the simplified models take their pressure from [model] pressure (leave {} out of this scene)", contact::NAME, m.name),
+        ));
+    }
+    let turned = problem.loading.rows().map(|s| s.chi_deg_or(problem.rolling.chi_deg)).find(|&c| c != 0.0);
+    if let Some(chi_deg) = turned.filter(|_| !OTHER_DIRECTIONS.contains(&m.name)) {
+        return Err(InputError::new(
+            "rolling.chi_deg",
+            format!("{chi_deg} with {:?}", m.name),
+            format!("models that roll along another direction than +x: {} (leave {} out of this scene: it rolls along +x only)", OTHER_DIRECTIONS.join(", "), m.name),
+        ));
+    }
+    if shifts && !m.shifts {
+        let able: Vec<&str> = MODELS.iter().filter(|m| m.shifts).map(|m| m.name).collect();
+        return Err(InputError::new(
+            "solvers",
+            format!(
+                "{:?} with {}",
+                m.name,
+                if problem.rolling.motion == Motion::Shift {
+                    "rolling.motion = \"shift\""
+                } else {
+                    "init.kind = \"shift\""
+                }
+            ),
+            format!(
+                "models that solve shifts without rolling: {} (leave {} out of this scene: it models rolling only)",
+                able.join(", "),
+                m.name
+            ),
+        ));
+    }
+    (m.check)(problem)
 }
 
 /// The built-in models that take Coulomb's μ per grid row (`[friction] mu_rows`, CONTACT V = 3):
