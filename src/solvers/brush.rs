@@ -245,6 +245,8 @@ pub struct Group<const L: usize> {
     pub ux: [f64; L],
     pub uy: [f64; L],
     pub p: [f64; L],
+    /// 1/p ([`Planform::inv_pressure_per_mpa`]).
+    pub inv_p: [f64; L],
     pub gain: [f64; L],
     pub mu_up: [f64; L],
     pub mu_start: [f64; L],
@@ -254,7 +256,15 @@ impl<const L: usize> Group<L> {
     /// Every lane unloaded (p = 0), carrying `fresh` material's coefficient.
     #[inline(always)]
     pub fn unloaded(fresh: f64) -> Self {
-        Group { ux: [0.0; L], uy: [0.0; L], p: [0.0; L], gain: [1.0; L], mu_up: [fresh; L], mu_start: [fresh; L] }
+        Group {
+            ux: [0.0; L],
+            uy: [0.0; L],
+            p: [0.0; L],
+            inv_p: [0.0; L],
+            gain: [1.0; L],
+            mu_up: [fresh; L],
+            mu_start: [fresh; L],
+        }
     }
 }
 
@@ -267,14 +277,14 @@ impl Falling {
         // that the lanes compile to vector instructions; the selected values are those of
         // `within_bound` and `scale_with_reciprocal` to the bit.
         let (mut stick, mut a, mut c, mut g0) = ([0.0; L], [0.0; L], [0.0; L], [0.0; L]);
-        let (mut inv, mut inv_p) = ([0.0; L], [0.0; L]);
+        let mut inv = [0.0; L];
         let mut slips = [false; L];
         for l in 0..L {
             let (ux, uy, p) = (e.ux[l], e.uy[l], e.p[l]);
             stick[l] = self.mu_stick(e.mu_up[l]);
             slips[l] = (p > 0.0) & !within_bound(ux, uy, stick[l] * p);
-            // The reciprocals 1/p and 1/(a gain) once, off the chain of dependent bounds.
-            (a[l], inv_p[l]) = ((ux * ux + uy * uy).sqrt(), 1.0 / p);
+            // The reciprocal 1/(a gain) once, off the chain of dependent bounds (1/p made per load).
+            a[l] = (ux * ux + uy * uy).sqrt();
             inv[l] = 1.0 / (a[l] * e.gain[l]);
             let (cx, cy) = (self.c_mm_s.0 * ux, self.c_mm_s.1 * uy);
             c[l] = (cx * cx + cy * cy).sqrt() * inv[l];
@@ -295,7 +305,7 @@ impl Falling {
         for l in 0..L {
             let (ux, uy) = (e.ux[l], e.uy[l]);
             let (px, py) = scale_with_reciprocal(ux, uy, (a[l], e.gain[l] * inv[l]), g[l]);
-            let mu = g[l] * inv_p[l];
+            let mu = g[l] * e.inv_p[l];
             out[l] = if slips[l] { (px, py, true, mu) } else { (ux, uy, false, stick[l]) };
         }
         out
@@ -451,6 +461,7 @@ fn march_row_group<B: ElementBound>(
             let (tx, ty, loaded, mu_up) = upstream[r];
             (e.ux[r], e.uy[r]) = unbounded(grid, row.local, row.rates, how, (i, row.j), loaded.then_some((tx, ty)));
             (e.p[r], e.gain[r], e.mu_up[r]) = (p, row.local.row_gain[row.j], mu_up);
+            e.inv_p[r] = row.local.planform.inv_pressure_per_mpa[k];
             // The element's coefficient of the previous solve where there is one (a start).
             e.mu_start[r] = if mu_out.is_empty() { mu_up } else { mu_out[k] };
         }
@@ -531,6 +542,7 @@ mod tests {
             ux: [100.0, 900.0, 2000.0, -700.0],
             uy: [50.0, 10.0, -300.0, 400.0],
             p: [1200.0, 1500.0, 1800.0, 900.0],
+            inv_p: [1.0 / 1200.0, 1.0 / 1500.0, 1.0 / 1800.0, 1.0 / 900.0],
             gain: [1.0, 1.0, 0.9, 1.1],
             mu_up: [0.45, 0.4, 0.3, 0.45],
             mu_start: [0.45, 0.41, 0.1, 0.35],

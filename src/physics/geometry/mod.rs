@@ -134,6 +134,9 @@ pub struct Planform {
     pub ellipse: HertzContact,
     /// Pressure per element [MPa], flat order; zero outside the contact.
     pub pressure_mpa: Vec<f64>,
+    /// 1/p per element [1/MPa] where it is loaded, 0 elsewhere: made once per load for the
+    /// falling bound's μ = g/p (solvers::brush `Falling`).
+    pub inv_pressure_per_mpa: Vec<f64>,
     /// Σ pressure over the grid [MPa], the denominator of the traction coefficients (Eq. 3.12).
     pub pressure_sum_mpa: f64,
     /// Number of loaded elements (p > 0).
@@ -156,7 +159,16 @@ impl Planform {
     ) -> Self {
         let pressure_sum_mpa = pressure_mpa.iter().sum();
         let loaded = pressure_mpa.iter().filter(|&&p| p > 0.0).count();
-        Planform { ellipse, pressure_mpa, pressure_sum_mpa, loaded, leading_edge_mm, half_length_mm }
+        let inv_pressure_per_mpa = pressure_mpa.iter().map(|&p| if p > 0.0 { 1.0 / p } else { 0.0 }).collect();
+        Planform {
+            ellipse,
+            pressure_mpa,
+            inv_pressure_per_mpa,
+            pressure_sum_mpa,
+            loaded,
+            leading_edge_mm,
+            half_length_mm,
+        }
     }
 
     /// Traction coefficients `(Σ τx / Σ p, Σ τy / Σ p)` from the traction sums (thesis Eq. 3.12).

@@ -12,18 +12,22 @@ use super::{Prepared, StepSums};
 use crate::simd::with_avx2;
 use crate::solvers::brush::{ElementBound, Falling, Group, BOUND_GROUP};
 
+/// The planform's pressure [MPa] and its reciprocal [1/MPa] per element.
+pub(super) type Pressure<'a> = (&'a [f64], &'a [f64]);
+
 /// One sub-step from `old` into `new` (tractions in `io`, coefficients `mu_old` into `mu_new`),
-/// `k` the constants of [`super::flat::step`], `pressure_mpa` the planform's pressure.
+/// `k` the constants of [`super::flat::step`], `pressure` the planform's pressure and its
+/// reciprocal ([`crate::physics::Planform`]).
 pub(super) fn step<const GHOST: bool, const SPIN: bool>(
     p: &Prepared,
-    (bound, pressure_mpa): (&Falling, &[f64]),
+    (bound, pressure): (&Falling, Pressure),
     io: Io,
     mu: (&[f64], &mut [f64]),
     k: [f64; 5],
 ) -> StepSums {
     with_avx2(
         #[inline(always)]
-        || groups::<GHOST, SPIN>(p, (bound, pressure_mpa), io, mu, k),
+        || groups::<GHOST, SPIN>(p, (bound, pressure), io, mu, k),
     )
 }
 
@@ -32,7 +36,7 @@ pub(super) fn step<const GHOST: bool, const SPIN: bool>(
 #[inline(always)]
 fn groups<const GHOST: bool, const SPIN: bool>(
     p: &Prepared,
-    (bound, pressure_mpa): (&Falling, &[f64]),
+    (bound, (pressure_mpa, inv_pressure)): (&Falling, Pressure),
     (ox, oy, nx, ny): Io,
     (mu_old, mu_new): (&[f64], &mut [f64]),
     k: [f64; 5],
@@ -45,7 +49,7 @@ fn groups<const GHOST: bool, const SPIN: bool>(
         let mut e = Group::<BOUND_GROUP>::unloaded(fresh);
         for l in 0..len {
             let m = m0 + l;
-            e.p[l] = pressure_mpa[m];
+            (e.p[l], e.inv_p[l]) = (pressure_mpa[m], inv_pressure[m]);
             if e.p[l] > 0.0 {
                 (e.ux[l], e.uy[l]) = unbounded::<GHOST, SPIN>(p, (ox, oy), k, m);
                 let mu_up = if p.upstream[m] > 0.0 { mu_old[m - 1] } else { fresh };

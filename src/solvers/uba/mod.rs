@@ -300,7 +300,7 @@ fn step_falling(
 ) -> StepSums {
     let (ghost, spin, consts) = prepare_step((grid, planform), prep, rates, scheme);
     let io = (old.tx.as_slice(), old.ty.as_slice(), new.tx.as_mut_slice(), new.ty.as_mut_slice());
-    let b = (bound, planform.pressure_mpa.as_slice());
+    let b = (bound, (planform.pressure_mpa.as_slice(), planform.inv_pressure_per_mpa.as_slice()));
     let m = (mu.0.as_slice(), mu.1.as_mut_slice());
     match (ghost, spin) {
         (false, false) => falling::step::<false, false>(prep, b, io, m, consts),
