@@ -287,7 +287,7 @@ fn bench_falling(c: &mut Criterion) {
 }
 
 /// The least an exact falling bound costs per step: one evaluation of the law and the memory
-/// (`LawKernel::update_lanes`, four elements per call, compiled for AVX2) at every element of the
+/// (`LawKernel::update_ratio_lanes`, four elements per call, compiled for AVX2) at every element of the
 /// 22×22 grid, with no Newton, no stick test and no projection: a floor under `uba_step_falling`
 /// and `fastsim_falling` to set against `uba_step_coulomb` (issue 33 item 6).
 fn law_floor(g: &mut criterion::BenchmarkGroup<criterion::measurement::WallTime>, text: &str) {
@@ -306,9 +306,10 @@ fn law_floor(g: &mut criterion::BenchmarkGroup<criterion::measurement::WallTime>
                 || {
                     let mut sum = [0.0; 4];
                     for (s4, m4) in black_box(&s).chunks_exact(4).zip(mu_up.chunks_exact(4)) {
-                        let (mu, d) = kernel.update_lanes([m4[0], m4[1], m4[2], m4[3]], [s4[0], s4[1], s4[2], s4[3]]);
+                        let (n, d, m) =
+                            kernel.update_ratio_lanes([m4[0], m4[1], m4[2], m4[3]], [s4[0], s4[1], s4[2], s4[3]]);
                         for l in 0..4 {
-                            sum[l] += mu[l] + d[l];
+                            sum[l] += n[l] + d[l] + m[l];
                         }
                     }
                     sum

@@ -84,19 +84,30 @@ pub const FALLING_TOL: f64 = 1e-12;
 /// bracket where a Newton step leaves it: 100 bisections narrow any bracket below `FALLING_TOL`).
 const FALLING_MAX_ITER: usize = 100;
 
+/// The friction coefficient at an iterate as a ratio, as the law and its memory give it without
+/// dividing ([`crate::physics::law_kernel::LawKernel::update_ratio`]): μ = n/d and dμ/ds = m/d²,
+/// d > 0 (d = 1 without memory).
+pub type MuRatio = (f64, f64, f64);
+
 /// The bound g of a slipping element whose coefficient falls with its own slip velocity: the
 /// root in (0, a) of `h(g) = g − p μ(c (a − g))`, where a = |τ| of the unbounded traction, the
 /// slip velocity of the projected traction is `s = c (a − g)` [mm/s] and `mu(s)` gives the
-/// friction law's (μ, dμ/ds) (with the memory's weight when there is one). The element slips, so
-/// `h(a) = a − p μ(0) > 0`, and `h(0) = −p μ(c a) < 0`: a root exists and the bracket keeps it.
-/// Newton from `g0` (h' = 1 + p c dμ/ds), a bisection where a step leaves the bracket, until a
-/// step is at most `FALLING_TOL · a`. With several roots (a law steeper than 1/(p c)) it settles
-/// on one of them; the history's oscillation flag watches the result. Returns g and the slip
-/// velocity c (a − g).
-pub fn falling_bound(a: f64, p: f64, c: f64, g0: f64, mu: impl Fn(f64) -> (f64, f64)) -> (f64, f64) {
+/// friction law's μ and dμ/ds ([`MuRatio`], with the memory's weight when there is one). The
+/// element slips, so `h(a) = a − p μ(0) > 0`, and `h(0) = −p μ(c a) < 0`: a root exists and the
+/// bracket keeps it. Newton from `g0` (h' = 1 + p c dμ/ds), a bisection where a step leaves the
+/// bracket; it stops at an iterate whose Newton step would be at most `FALLING_TOL · a` (that
+/// iterate is the result: the test needs no division), or after a step of at most that. With
+/// several roots (a law steeper than 1/(p c)) it settles on one of them; the history's
+/// oscillation flag watches the result. Returns g and the slip velocity c (a − g).
+pub fn falling_bound(a: f64, p: f64, c: f64, g0: f64, mu: impl Fn(f64) -> MuRatio) -> (f64, f64) {
     let mut state = falling_start(a, g0);
     for _ in 0..FALLING_MAX_ITER {
-        let (next, done) = falling_step(state, (a, p, c), mu(c * (a - state.2)));
+        let at = mu(c * (a - state.2));
+        let (residual, settled) = falling_test(state.2, (a, p, c), at);
+        if settled {
+            break;
+        }
+        let (next, done) = falling_step(state, a, (residual, at.1));
         state = next;
         if done {
             break;
@@ -109,13 +120,14 @@ pub fn falling_bound(a: f64, p: f64, c: f64, g0: f64, mu: impl Fn(f64) -> (f64, 
 /// return their start): each lane takes the iterates, the evaluations of `mu` and the result of
 /// [`falling_bound`] on its own, bit for bit; `mu` evaluates L slip velocities at once. The
 /// state is held per quantity (lo, hi, g of the lanes) and every choice of [`falling_step`] is a
-/// select, so that the iteration compiles to vector instructions.
+/// select, so that the iteration compiles to vector instructions; an iteration in which every
+/// lane settles ([`falling_test`]) divides nothing.
 #[inline(always)]
 pub fn falling_bound_lanes<const L: usize>(
     (a, p, c): ([f64; L], [f64; L], [f64; L]),
     g0: [f64; L],
     active: [bool; L],
-    mu: impl Fn([f64; L]) -> ([f64; L], [f64; L]),
+    mu: impl Fn([f64; L]) -> ([f64; L], [f64; L], [f64; L]),
 ) -> [f64; L] {
     let (mut lo, mut hi, mut g) = ([0.0; L], a, [0.0; L]);
     let mut done = [false; L];
@@ -128,9 +140,18 @@ pub fn falling_bound_lanes<const L: usize>(
             break;
         }
         let s: [f64; L] = std::array::from_fn(|l| c[l] * (a[l] - g[l]));
-        let (m, dm) = mu(s);
+        let (n, d, m) = mu(s);
+        let mut residual = [(0.0, 0.0); L];
         for l in 0..L {
-            let ((lo_n, hi_n, g_n), stop) = falling_step((lo[l], hi[l], g[l]), (a[l], p[l], c[l]), (m[l], dm[l]));
+            let settled;
+            (residual[l], settled) = falling_test(g[l], (a[l], p[l], c[l]), (n[l], d[l], m[l]));
+            done[l] |= settled;
+        }
+        if done == [true; L] {
+            break;
+        }
+        for l in 0..L {
+            let ((lo_n, hi_n, g_n), stop) = falling_step((lo[l], hi[l], g[l]), a[l], (residual[l], d[l]));
             let keep = done[l];
             (lo[l], hi[l], g[l]) =
                 (if keep { lo[l] } else { lo_n }, if keep { hi[l] } else { hi_n }, if keep { g[l] } else { g_n });
@@ -146,27 +167,28 @@ fn falling_start(a: f64, g0: f64) -> (f64, f64, f64) {
     (0.0, a, if g0 > 0.0 && g0 < a { g0 } else { 0.5 * a })
 }
 
-/// One iteration of [`falling_bound`] from the bracket and iterate (lo, hi, g) with (μ, dμ/ds)
-/// evaluated at g: the next (lo, hi, g) and whether the iteration stops (h(g) = 0, or a step of
-/// at most `FALLING_TOL · a`). Every choice is a select (no early return), so that
-/// [`falling_bound_lanes`] compiles it to vector instructions.
+/// At iterate g with the law's ratio (n, d, m) ([`MuRatio`]): h d = g d − p n and h' d² =
+/// d² + p c m (the residual and the slope times d > 0 and d²: no division), and whether g is
+/// settled: a root (h = 0), or a Newton step h/h' = (h d) d/(h' d²) of at most `FALLING_TOL · a`.
 #[inline(always)]
-fn falling_step(
-    (lo, hi, g): (f64, f64, f64),
-    (a, p, c): (f64, f64, f64),
-    (m, dm): (f64, f64),
-) -> ((f64, f64, f64), bool) {
-    let h = g - p * m;
-    let below = h < 0.0;
+fn falling_test(g: f64, (a, p, c): (f64, f64, f64), (n, d, m): MuRatio) -> ((f64, f64), bool) {
+    let (hd, slope) = (g * d - p * n, d * d + p * c * m);
+    let small = (slope > 0.0) & ((hd * d).abs() <= FALLING_TOL * a * slope);
+    ((hd, slope), (hd == 0.0) | small)
+}
+
+/// One iteration of [`falling_bound`] from the bracket and iterate (lo, hi, g) with the
+/// residual and slope of [`falling_test`] and the ratio's d: the next (lo, hi, g) and whether
+/// the step taken was at most `FALLING_TOL · a`. Every choice is a select (no early return), so
+/// that [`falling_bound_lanes`] compiles it to vector instructions.
+#[inline(always)]
+fn falling_step((lo, hi, g): (f64, f64, f64), a: f64, ((hd, slope), d): ((f64, f64), f64)) -> ((f64, f64, f64), bool) {
+    let below = hd < 0.0;
     let (lo_n, hi_n) = (if below { g } else { lo }, if below { hi } else { g });
-    let slope = 1.0 + p * c * dm;
-    let newton = g - h / slope;
+    let newton = g - hd * d / slope;
     let take = slope > 0.0 && newton > lo_n && newton < hi_n;
     let next = if take { newton } else { 0.5 * (lo_n + hi_n) };
-    // At a root (h = 0) the state stays as it is.
-    let root = h == 0.0;
-    let state = (if root { lo } else { lo_n }, if root { hi } else { hi_n }, if root { g } else { next });
-    (state, root || (next - g).abs() <= FALLING_TOL * a)
+    ((lo_n, hi_n, next), (next - g).abs() <= FALLING_TOL * a)
 }
 
 #[cfg(test)]
@@ -239,13 +261,13 @@ mod tests {
     #[test]
     fn falling_bound_is_the_fixed_point() {
         // μ(s) = 0.4 − 1e-4 s, p = 1, c = 1000, a = 1: g = 0.4 − 0.1 (1 − g) → g = 0.3/0.9.
-        let (g, s) = falling_bound(1.0, 1.0, 1000.0, 0.0, |s| (0.4 - 1e-4 * s, -1e-4));
+        let (g, s) = falling_bound(1.0, 1.0, 1000.0, 0.0, |s| (0.4 - 1e-4 * s, 1.0, -1e-4));
         assert!((g - 1.0 / 3.0).abs() < 1e-12, "{g}");
         assert!((s - 2000.0 / 3.0).abs() < 1e-8, "{s}");
         let k = std::f64::consts::LN_2 / 600.0;
         let mu = |s: f64| 0.25 + 0.2 * (-k * s).exp();
         let (a, p, c) = (900.0, 1500.0, 3.0);
-        let (g, s) = falling_bound(a, p, c, 0.0, |s| (mu(s), -k * 0.2 * (-k * s).exp()));
+        let (g, s) = falling_bound(a, p, c, 0.0, |s| (mu(s), 1.0, -k * 0.2 * (-k * s).exp()));
         assert!(g > 0.0 && g < a);
         assert!((g - p * mu(s)).abs() <= 1e-9 * a, "residual {}", g - p * mu(s));
         assert!((s - c * (a - g)).abs() < 1e-9);
@@ -256,14 +278,18 @@ mod tests {
     #[test]
     fn four_lanes_are_four_falling_bounds() {
         let k = std::f64::consts::LN_2 / 600.0;
-        let law = |s: f64| (0.25 + 0.2 * (-k * s).exp(), -k * 0.2 * (-k * s).exp());
+        // With a memory's denominator d ≠ 1: μ = n/d, dμ/ds = m/d².
+        let law = |s: f64| {
+            let d = 1.0 + 1e-3 * s;
+            (d * (0.25 + 0.2 * (-k * s).exp()), d, d * d * (-k * 0.2 * (-k * s).exp()))
+        };
         let a = [900.0, 450.0, 1200.0, 700.0];
         let p = [1500.0, 800.0, 1900.0, 1000.0];
         let c = [3.0, 0.5, 40.0, 2.0];
         let g0 = [600.0, 0.0, 1190.0, 300.0];
         let got = falling_bound_lanes((a, p, c), g0, [true, true, true, false], |s| {
             let r = s.map(law);
-            (r.map(|x| x.0), r.map(|x| x.1))
+            (r.map(|x| x.0), r.map(|x| x.1), r.map(|x| x.2))
         });
         for l in 0..3 {
             assert_eq!(got[l], falling_bound(a[l], p[l], c[l], g0[l], law).0, "lane {l}");

@@ -1,11 +1,14 @@
 //! A falling law and its memory prepared once per sample for the simplified models' per-element
 //! bound (issue 33 item 6, speed): μ(s) and dμ/ds of [`FrictionLaw::mu_steady_and_slope`] and
 //! [`Memory::update_and_slope`] with every constant divided out beforehand (ln2/S, 1/(2S), 1/S),
-//! so that an evaluation costs the law's exponentials and at most one division per term, and the
-//! memory's weight θ = d_c/(d_c + dt max(s, s0)) and its slope one reciprocal. The exponential
-//! is [`exp`], branch-free, so that several elements' evaluations ([`LawKernel::update_lanes`])
-//! compile to vector instructions with the same bits as one element's.
+//! so that an evaluation costs the law's exponentials and at most one division per term (the
+//! rational law's), and the memory's weight θ = d_c/(d_c + dt max(s, s0)) none: μ is given as a
+//! ratio ([`crate::physics::bound::MuRatio`]) whose denominator the bound's Newton multiplies
+//! through. The exponential is [`exp`], branch-free, so that several elements' evaluations
+//! ([`LawKernel::update_ratio_lanes`]) compile to vector instructions with the same bits as one
+//! element's.
 
+use super::bound::MuRatio;
 use super::friction::{FallingTerms, FrictionLaw, Memory};
 
 /// ln 2, the exponential law's half-value scale (`m_friclaw.f90` line 436).
@@ -166,31 +169,33 @@ impl LawKernel {
     }
 
     /// μ after one step of material that carried `mu_prev` in, at slip velocity `s_mm_s`, and
-    /// its slope in s ([`Memory::update_and_slope`]): θ = d_c r, dθ/ds = −θ dt r above s0 with
-    /// r = 1/(d_c + dt max(s, s0)), one division.
+    /// its slope, as the ratio ([`MuRatio`]) of [`Memory::update_and_slope`] without its division.
     #[inline(always)]
-    pub fn update_and_slope(&self, mu_prev: f64, s_mm_s: f64) -> (f64, f64) {
-        let (mu, d) = self.update_lanes([mu_prev], [s_mm_s]);
-        (mu[0], d[0])
+    pub fn update_ratio(&self, mu_prev: f64, s_mm_s: f64) -> MuRatio {
+        let (n, d, m) = self.update_ratio_lanes([mu_prev], [s_mm_s]);
+        (n[0], d[0], m[0])
     }
 
-    /// [`LawKernel::update_and_slope`] of L elements (the same bits per lane).
+    /// [`LawKernel::update_ratio`] of L elements (the same bits per lane): with s' = max(s, s0)
+    /// and d = d_c + dt s', μ = (d_c μ_prev + dt s' μ_s)/d (θ = d_c/d, backward Euler) and
+    /// d² dμ/ds = d dt s' dμ_s/ds − d_c dt (μ_prev − μ_s) above s0 (the second term: θ's slope);
+    /// without memory (μ_s, 1, dμ_s/ds).
     #[inline(always)]
-    pub fn update_lanes<const L: usize>(&self, mu_prev: [f64; L], s: [f64; L]) -> ([f64; L], [f64; L]) {
-        let (mut mu, mut d) = self.steady_lanes(s);
+    pub fn update_ratio_lanes<const L: usize>(&self, mu_prev: [f64; L], s: [f64; L]) -> ([f64; L], [f64; L], [f64; L]) {
+        let (mu, slope) = self.steady_lanes(s);
         let (d_c, dt, s0) = self.memory;
         if d_c == 0.0 {
-            return (mu, d);
+            return (mu, [1.0; L], slope);
         }
+        let (mut n, mut d, mut m) = ([0.0; L], [0.0; L], [0.0; L]);
         for l in 0..L {
-            let r = 1.0 / (d_c + dt * s[l].max(s0));
-            let theta = d_c * r;
-            let d_theta = if s[l] > s0 { -theta * dt * r } else { 0.0 };
-            let (mu_s, d_s) = (mu[l], d[l]);
-            mu[l] = theta * mu_prev[l] + (1.0 - theta) * mu_s;
-            d[l] = d_theta * (mu_prev[l] - mu_s) + (1.0 - theta) * d_s;
+            let w = dt * s[l].max(s0);
+            d[l] = d_c + w;
+            n[l] = d_c * mu_prev[l] + w * mu[l];
+            let theta_slope = if s[l] > s0 { d_c * dt * (mu_prev[l] - mu[l]) } else { 0.0 };
+            m[l] = d[l] * w * slope[l] - theta_slope;
         }
-        (mu, d)
+        (n, d, m)
     }
 }
 
@@ -236,9 +241,11 @@ mod tests {
                 let k = LawKernel::new(&law, &memory, 2.6e-5);
                 for s in [0.0, 5.0, 150.0, 199.0, 700.0, 1700.0, 3000.0, 9000.0] {
                     let (mu, d) = memory.update_and_slope(&law, 0.41, 2.6e-5, s);
-                    let (km, kd) = k.update_and_slope(0.41, s);
+                    let (n, den, m) = k.update_ratio(0.41, s);
+                    // The ratio's quotients as the test forms them (their roundings: a few ulps).
+                    let (km, kd) = (n / den, m / (den * den));
                     assert!((km - mu).abs() <= 4e-16, "{law:?} {memory:?} at {s}: {km} vs {mu}");
-                    assert!((kd - d).abs() <= 1e-15 * d.abs().max(1e-6), "{law:?} {memory:?} at {s}: {kd} vs {d}");
+                    assert!((kd - d).abs() <= 4e-15 * d.abs().max(1e-6), "{law:?} {memory:?} at {s}: {kd} vs {d}");
                 }
                 let (theta, mu0) = k.stick();
                 assert_eq!(theta, memory.theta(2.6e-5, 0.0), "{law:?}");

@@ -233,7 +233,7 @@ impl ElementBound for Falling {
         let inv = 1.0 / (a * gain);
         let (cx, cy) = (self.c_mm_s.0 * ux, self.c_mm_s.1 * uy);
         let c = (cx * cx + cy * cy).sqrt() * inv;
-        let (g, _) = falling_bound(a, p, c, mu_start * p, |s| self.kernel.update_and_slope(mu_up, s));
+        let (g, _) = falling_bound(a, p, c, mu_start * p, |s| self.kernel.update_ratio(mu_up, s));
         let (px, py) = scale_with_reciprocal(ux, uy, (a, gain * inv), g);
         (px, py, true, g * inv_p)
     }
@@ -296,7 +296,7 @@ impl Falling {
                 g0,
                 slips,
                 #[inline(always)]
-                |s| self.kernel.update_lanes(e.mu_up, s),
+                |s| self.kernel.update_ratio_lanes(e.mu_up, s),
             )
         } else {
             g0
