@@ -47,134 +47,261 @@ const SABSH2_UNUSED_MM_S: f64 = 1000.0;
 /// The CONTACT input that computes the problem's history, one case per row.
 pub fn module3_input(p: &Problem) -> String {
     let rows: Vec<&Sample> = p.loading.rows().collect();
-    let steady_start = p.loading.steady_start().is_some();
-    // Shifts (T = 1): every case, or the first one before the rolling (`[init] kind = "shift"`).
-    let shifts = p.rolling.motion == Motion::Shift;
-    let shift_start = p.loading.shift_start().is_some();
-    let sweep = p.loading.kind == LoadingKind::Sweep;
-    // With the approach prescribed CONTACT would derive the curvatures (IPOTCN = −3) or the grid
-    // (−1) from PEN (`hzcalc3d`): the fixed grid and curvatures keep this project's.
-    let load_varies = rows.iter().any(|s| s.fn_n != rows[0].fn_n || s.pen_mm.is_some());
+    let history = History::of(p, &rows);
+    let mut last = LastRead::of(p);
     let mut out = format!(
         "%\n% CONTACT input written by creepbench for scene \"{}\" ({} cases, one per history row).\n%\n",
         p.name,
         rows.len()
     );
-    let falling = p.friction.is_falling();
-    let mut prev_mu = f64::NAN;
-    let mut prev_v_mm_s = p.rolling.v_mm_s;
-    // A row's own rolling step (a table's courant: CONTACT's DQ per case).
-    let dq_of = |s: &Sample| s.courant.map_or(p.rolling.dq_mm, |c| c * p.grid.dx_mm);
-    let mut prev_dq_mm = p.rolling.dq_mm;
-    let mut prev_chi_deg = p.rolling.chi_deg;
     for (n, s) in rows.iter().enumerate() {
-        let first = n == 0;
-        let steady = sweep || (steady_start && first);
-        let new_sequence = sweep || first;
-        // A table's μ interpolated at a row's printed time may differ from the row by rounding:
-        // read again only a μ that changed beyond that.
-        let read_mu = first || (!falling && (s.mu - prev_mu).abs() > MU_CHANGE_REL * prev_mu.abs());
-        if read_mu {
-            prev_mu = s.mu;
-        }
-        let _ = writeln!(out, "\n 3  MODULE      % step {}, t={} s", s.step, s.t_s);
-        let shift = shifts || (shift_start && first);
-        let t = match (steady, shift) {
-            (true, _) => 3,
-            (_, true) => 1,
-            _ => 2,
-        };
-        let pv = if new_sequence { 2 } else { 0 };
-        // F = 1: Fx prescribed with CETA given, F = 2: Fx and Fy (the scene refuses Fy alone).
-        let f = usize::from(s.fx_target.is_some()) + usize::from(s.fy_target.is_some());
-        // N = 0: the approach prescribed (PEN), N = 1: FN.
-        let n_digit = u8::from(s.pen_mm.is_none());
-        // B: the row's pressure, solved (0) or Hertz's elliptical (2), parabolic (3).
-        let b = match p.normal.of_row(first && (steady_start || shift_start)) {
-            NormalPressure::Solved => 0,
-            NormalPressure::Elliptical => 2,
-            NormalPressure::Parabolic => 3,
-        };
-        let _ = writeln!(
-            out,
-            "  {pv}{b}{t}{n_digit}{f}0      P-B-T-N-F-S   PVTIME, BOUND , TANG  , NORM  , FORCE , STRESS"
-        );
-        // CONTACT solves the steady start with DQ = DX and keeps that DQ for the cases that follow
-        // (`m_sdis.f90`): where the scene's DQ is another, the first transient case gives it again
-        // (C = 2: kinematics and material read again, influence coefficients recomputed).
-        let v_mm_s = s.v_mm_s.unwrap_or(p.rolling.v_mm_s);
-        // The steady start rolls DX whatever its row says; the scene's DQ is written for it.
-        let dq_mm = if steady && !sweep { p.rolling.dq_mm } else { dq_of(s) };
-        let speed_changed = !first && (v_mm_s != prev_v_mm_s || (dq_mm != prev_dq_mm && !(shift_start && n == 1)));
-        prev_v_mm_s = v_mm_s;
-        prev_dq_mm = dq_mm;
-        // A row's own rolling direction (the table's chi_deg) is read again where it changes.
-        let chi_deg = s.chi_deg_or(p.rolling.chi_deg);
-        let chi_changed = !first && chi_deg != prev_chi_deg;
-        prev_chi_deg = chi_deg;
-        // The first rolling case after a shift start reads its rolling step (a shift reads none).
-        let dq_again = (steady_start && n == 1 && p.rolling.dq_mm != p.grid.dx_mm)
-            || (shift_start && n == 1)
-            || speed_changed
-            || chi_changed;
-        let law = law_digit(&p.friction);
-        // A row's own undeformed distance (IBASE = 1) is read again where it changes (Z = 2).
-        let new_h = !first && s.h_coefficients.is_some() && s.h_coefficients != rows[n - 1].h_coefficients;
-        // V = 3: friction per grid row, in every case (CONTACT refuses a V that changes under L = 1).
-        let v = if p.friction_rows.is_some() { "3" } else { "" };
-        // C = 2: uniform elements, C = 3: bilinear tractions (`[contact_solver] influence`).
-        let c = if p.contact_solver.influence == Basis::Bilinear { 3 } else { 2 };
-        let ldc = match (first, dq_again) {
-            (true, _) => format!("{v}{law}2{c}020"),
-            (false, again) => format!(
-                "{v}{}0{}0{}0",
-                if read_mu { law } else { 1 },
-                if again { c } else { 0 },
-                if new_h { 2 } else { 0 }
-            ),
-        };
-        let _ = writeln!(out, "  {ldc}      L-D-C-M-Z-E   FRCLAW, DISCNS, INFLCF, MATER , RZNORM, EXRHS");
-        let (g, w) = if falling { (4, 2) } else { (0, 1) };
-        let _ = writeln!(
-            out,
-            " 0{g}{}22{w}1    H-G-I-A-O-W-R   HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW, RETURN",
-            if first { 0 } else { 1 }
-        );
-        let _ = writeln!(out, "   999   200    30     1   1e-08          MAXGS, MAXIN, MAXNR, MAXOUT, EPS");
-        if falling {
-            let _ = writeln!(
-                out,
-                "   {}   {:?}                                INISLP, OMGSLP",
-                inislp(p.contact_solver.inislp),
-                p.contact_solver.omgslp
-            );
-        }
-        // CONTACT's FXREL, FYREL: the force over FSTAT·FN (over FN with V = 3, its muscal = 1),
-        // its sign flipped (fx = −FX/FN here).
-        let muscal = if p.friction_rows.is_some() { 1.0 } else { s.mu };
-        let (x, y) = (s.fx_target.map_or(s.cx, |f| -f / muscal), s.fy_target.map_or(s.cy, |f| -f / muscal));
-        let names = [
-            if s.pen_mm.is_some() { "PEN" } else { "FN" },
-            if s.fx_target.is_some() { "FXREL" } else { "CKSI" },
-            if s.fy_target.is_some() { "FYREL" } else { "CETA" },
-        ];
-        let normal = s.pen_mm.unwrap_or(s.fn_n);
-        let _ = writeln!(out, "  {normal:?}   {x:?}   {y:?}   {:?}        {}, CPHI", s.cs, names.join(", "));
-        if read_mu && p.friction_rows.is_none() {
-            friction_lines(p, s.mu, &mut out);
-        }
-        if first {
-            geometry(p, (!shift).then_some((v_mm_s, dq_mm, chi_deg)), load_varies, s.h_coefficients, &mut out);
-            row_friction_lines(p, &mut out);
-        } else if dq_again {
-            kinematics_and_material(p, Some((v_mm_s, dq_mm, chi_deg)), &mut out);
-        }
-        if let (false, Some(b)) = (first, s.h_coefficients.filter(|_| new_h)) {
-            quadratic(b, &mut out);
-        }
+        let case = Case::of(p, &history, &rows, n, &mut last);
+        write_case(p, &history, &case, s, &mut out);
     }
     out.push_str("\n 0  MODULE\n");
     out
+}
+
+/// What holds for every case of the history: its kind of cases, whether the load changes and
+/// whether the friction falls with the slip velocity.
+struct History {
+    /// A steady start (T = 3, step 0) before the transient cases.
+    steady_start: bool,
+    /// Shifts (T = 1) in every case (`[rolling] motion = "shift"`).
+    shifts: bool,
+    /// A shift start (`[init] kind = "shift"`): the first case a shift before the rolling ones.
+    shift_start: bool,
+    /// A steady sweep: one steady case (T = 3) per point.
+    sweep: bool,
+    /// FN changes within the history or the approach is prescribed.
+    load_varies: bool,
+    /// A friction law falling with the slip velocity (L = 2, 3, 4).
+    falling: bool,
+}
+
+impl History {
+    /// The history of `p`, whose cases are `rows`.
+    fn of(p: &Problem, rows: &[&Sample]) -> History {
+        History {
+            steady_start: p.loading.steady_start().is_some(),
+            shifts: p.rolling.motion == Motion::Shift,
+            shift_start: p.loading.shift_start().is_some(),
+            sweep: p.loading.kind == LoadingKind::Sweep,
+            // With the approach prescribed CONTACT would derive the curvatures (IPOTCN = −3) or the
+            // grid (−1) from PEN (`hzcalc3d`): the fixed grid and curvatures keep this project's.
+            load_varies: rows.iter().any(|s| s.fn_n != rows[0].fn_n || s.pen_mm.is_some()),
+            falling: p.friction.is_falling(),
+        }
+    }
+}
+
+/// What CONTACT last read and keeps for the cases that follow: μ, rolling speed, step and direction.
+struct LastRead {
+    mu: f64,
+    v_mm_s: f64,
+    dq_mm: f64,
+    chi_deg: f64,
+}
+
+impl LastRead {
+    /// Before the first case: no μ, the scene's rolling.
+    fn of(p: &Problem) -> LastRead {
+        LastRead { mu: f64::NAN, v_mm_s: p.rolling.v_mm_s, dq_mm: p.rolling.dq_mm, chi_deg: p.rolling.chi_deg }
+    }
+
+    /// Whether a case reads its μ (the first, or one whose μ changed), which it then keeps. A table's μ
+    /// interpolated at a row's printed time may differ from the row by rounding: read again only a μ
+    /// that changed beyond that.
+    fn reads_mu(&mut self, mu: f64, first: bool, falling: bool) -> bool {
+        let read_mu = first || (!falling && (mu - self.mu).abs() > MU_CHANGE_REL * self.mu.abs());
+        if read_mu {
+            self.mu = mu;
+        }
+        read_mu
+    }
+
+    /// Whether a case after the first (not `first`) rolls at another speed, step (where `dq_counts`)
+    /// or direction than the case before; its rolling `(v_mm_s, dq_mm, chi_deg)` is then kept.
+    fn rolling_changed(&mut self, first: bool, (v_mm_s, dq_mm, chi_deg): (f64, f64, f64), dq_counts: bool) -> bool {
+        let speed_changed = !first && (v_mm_s != self.v_mm_s || (dq_mm != self.dq_mm && dq_counts));
+        self.v_mm_s = v_mm_s;
+        self.dq_mm = dq_mm;
+        // A row's own rolling direction (the table's chi_deg) is read again where it changes.
+        let chi_changed = !first && chi_deg != self.chi_deg;
+        self.chi_deg = chi_deg;
+        speed_changed || chi_changed
+    }
+}
+
+/// One case's control decisions and rolling.
+struct Case {
+    first: bool,
+    /// A steady case (T = 3): a sweep's point or the steady start.
+    steady: bool,
+    /// A shift (T = 1).
+    shift: bool,
+    /// A case that starts a sequence (P = 2).
+    new_sequence: bool,
+    /// The case reads its friction (L ≠ 1).
+    read_mu: bool,
+    v_mm_s: f64,
+    dq_mm: f64,
+    chi_deg: f64,
+    /// The case reads its kinematics and material again (C = 2 or 3 after the first case).
+    dq_again: bool,
+    /// The case reads its own undeformed distance again (Z = 2).
+    new_h: bool,
+}
+
+impl Case {
+    /// Case `n` of the history's `rows`, after the cases before it read `last`.
+    fn of(p: &Problem, h: &History, rows: &[&Sample], n: usize, last: &mut LastRead) -> Case {
+        let s = rows[n];
+        let first = n == 0;
+        let steady = h.sweep || (h.steady_start && first);
+        let read_mu = last.reads_mu(s.mu, first, h.falling);
+        let (v_mm_s, dq_mm, chi_deg) = rolling(p, s, steady && !h.sweep);
+        let rolling_changed = last.rolling_changed(first, (v_mm_s, dq_mm, chi_deg), !(h.shift_start && n == 1));
+        Case {
+            first,
+            steady,
+            shift: h.shifts || (h.shift_start && first),
+            new_sequence: h.sweep || first,
+            read_mu,
+            v_mm_s,
+            dq_mm,
+            chi_deg,
+            // The first rolling case after a shift start reads its rolling step (a shift reads none).
+            dq_again: (h.steady_start && n == 1 && p.rolling.dq_mm != p.grid.dx_mm)
+                || (h.shift_start && n == 1)
+                || rolling_changed,
+            // A row's own undeformed distance (IBASE = 1) is read again where it changes (Z = 2).
+            new_h: !first && s.h_coefficients.is_some() && s.h_coefficients != rows[n - 1].h_coefficients,
+        }
+    }
+
+    /// CHI, DQ, VELOC of the case as `kinematics_and_material` takes them (speed, step, direction).
+    fn rolling(&self) -> (f64, f64, f64) {
+        (self.v_mm_s, self.dq_mm, self.chi_deg)
+    }
+}
+
+/// A row's rolling speed [mm/s], step [mm] (CONTACT's DQ) and direction [deg]. CONTACT solves the
+/// steady start with DQ = DX and keeps that DQ for the cases that follow (`m_sdis.f90`): where the
+/// scene's DQ is another, the first transient case gives it again (C = 2: kinematics and material
+/// read again, influence coefficients recomputed); the steady start (`steady_start`) rolls DX
+/// whatever its row says, and the scene's DQ is written for it.
+fn rolling(p: &Problem, s: &Sample, steady_start: bool) -> (f64, f64, f64) {
+    let v_mm_s = s.v_mm_s.unwrap_or(p.rolling.v_mm_s);
+    // A row's own rolling step (a table's courant: CONTACT's DQ per case).
+    let dq_mm = if steady_start { p.rolling.dq_mm } else { s.courant.map_or(p.rolling.dq_mm, |c| c * p.grid.dx_mm) };
+    (v_mm_s, dq_mm, s.chi_deg_or(p.rolling.chi_deg))
+}
+
+/// One case of the deck: its MODULE line, control digits, solver settings, loading and the inputs
+/// it reads (again).
+fn write_case(p: &Problem, h: &History, case: &Case, s: &Sample, out: &mut String) {
+    let _ = writeln!(out, "\n 3  MODULE      % step {}, t={} s", s.step, s.t_s);
+    pbtnfs(p, h, case, s, out);
+    ldcmze(p, case, out);
+    solver_lines(p, h.falling, case.first, out);
+    loading_line(p, s, out);
+    case_inputs(p, h, case, s, out);
+}
+
+/// The control digits P-B-T-N-F-S: a new sequence (P = 2) or its continuation (0), the row's
+/// pressure B, the kind of case T, the normal problem N and the forces prescribed F.
+fn pbtnfs(p: &Problem, h: &History, case: &Case, s: &Sample, out: &mut String) {
+    let t = match (case.steady, case.shift) {
+        (true, _) => 3,
+        (_, true) => 1,
+        _ => 2,
+    };
+    let pv = if case.new_sequence { 2 } else { 0 };
+    // F = 1: Fx prescribed with CETA given, F = 2: Fx and Fy (the scene refuses Fy alone).
+    let f = usize::from(s.fx_target.is_some()) + usize::from(s.fy_target.is_some());
+    // N = 0: the approach prescribed (PEN), N = 1: FN.
+    let n_digit = u8::from(s.pen_mm.is_none());
+    // B: the row's pressure, solved (0) or Hertz's elliptical (2), parabolic (3).
+    let b = match p.normal.of_row(case.first && (h.steady_start || h.shift_start)) {
+        NormalPressure::Solved => 0,
+        NormalPressure::Elliptical => 2,
+        NormalPressure::Parabolic => 3,
+    };
+    let _ =
+        writeln!(out, "  {pv}{b}{t}{n_digit}{f}0      P-B-T-N-F-S   PVTIME, BOUND , TANG  , NORM  , FORCE , STRESS");
+}
+
+/// The control digits L-D-C-M-Z-E: the friction law read (L) or kept (1), the influence functions
+/// (C) where the kinematics are read, a new undeformed distance (Z = 2); V = 3 before them with
+/// friction per grid row.
+fn ldcmze(p: &Problem, case: &Case, out: &mut String) {
+    let law = law_digit(&p.friction);
+    // V = 3: friction per grid row, in every case (CONTACT refuses a V that changes under L = 1).
+    let v = if p.friction_rows.is_some() { "3" } else { "" };
+    // C = 2: uniform elements, C = 3: bilinear tractions (`[contact_solver] influence`).
+    let c = if p.contact_solver.influence == Basis::Bilinear { 3 } else { 2 };
+    let ldc = match (case.first, case.dq_again) {
+        (true, _) => format!("{v}{law}2{c}020"),
+        (false, again) => format!(
+            "{v}{}0{}0{}0",
+            if case.read_mu { law } else { 1 },
+            if again { c } else { 0 },
+            if case.new_h { 2 } else { 0 }
+        ),
+    };
+    let _ = writeln!(out, "  {ldc}      L-D-C-M-Z-E   FRCLAW, DISCNS, INFLCF, MATER , RZNORM, EXRHS");
+}
+
+/// The control digits H-G-I-A-O-W-R and the solver's iteration limits, with a falling law the
+/// slip-velocity iteration's start (G = 4: INISLP, OMGSLP) and its progress printed (W = 2).
+fn solver_lines(p: &Problem, falling: bool, first: bool, out: &mut String) {
+    let (g, w) = if falling { (4, 2) } else { (0, 1) };
+    let _ = writeln!(
+        out,
+        " 0{g}{}22{w}1    H-G-I-A-O-W-R   HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW, RETURN",
+        if first { 0 } else { 1 }
+    );
+    let _ = writeln!(out, "   999   200    30     1   1e-08          MAXGS, MAXIN, MAXNR, MAXOUT, EPS");
+    if falling {
+        let _ = writeln!(
+            out,
+            "   {}   {:?}                                INISLP, OMGSLP",
+            inislp(p.contact_solver.inislp),
+            p.contact_solver.omgslp
+        );
+    }
+}
+
+/// The loading line: FN or PEN, CKSI or FXREL, CETA or FYREL, CPHI. CONTACT's FXREL, FYREL are
+/// the force over FSTAT·FN (over FN with V = 3, its muscal = 1), its sign flipped (fx = −FX/FN here).
+fn loading_line(p: &Problem, s: &Sample, out: &mut String) {
+    let muscal = if p.friction_rows.is_some() { 1.0 } else { s.mu };
+    let (x, y) = (s.fx_target.map_or(s.cx, |f| -f / muscal), s.fy_target.map_or(s.cy, |f| -f / muscal));
+    let names = [
+        if s.pen_mm.is_some() { "PEN" } else { "FN" },
+        if s.fx_target.is_some() { "FXREL" } else { "CKSI" },
+        if s.fy_target.is_some() { "FYREL" } else { "CETA" },
+    ];
+    let normal = s.pen_mm.unwrap_or(s.fn_n);
+    let _ = writeln!(out, "  {normal:?}   {x:?}   {y:?}   {:?}        {}, CPHI", s.cs, names.join(", "));
+}
+
+/// The input lines after the loading: the friction where the case reads it, the first case's
+/// geometry (or the kinematics and material read again), a new undeformed distance (Z = 2).
+fn case_inputs(p: &Problem, h: &History, case: &Case, s: &Sample, out: &mut String) {
+    if case.read_mu && p.friction_rows.is_none() {
+        friction_lines(p, s.mu, out);
+    }
+    if case.first {
+        geometry(p, (!case.shift).then_some(case.rolling()), h.load_varies, s.h_coefficients, out);
+        row_friction_lines(p, out);
+    } else if case.dq_again {
+        kinematics_and_material(p, Some(case.rolling()), out);
+    }
+    if let (false, Some(b)) = (case.first, s.h_coefficients.filter(|_| case.new_h)) {
+        quadratic(b, out);
+    }
 }
 
 /// CONTACT's L of the law: 0 Coulomb, 2 linear, 3 rational, 4 exponential (`m_friclaw.f90`).

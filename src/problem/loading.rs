@@ -119,120 +119,29 @@ impl Loading {
         grid: &Grid,
         warnings: &mut Vec<String>,
     ) -> Result<Loading, InputError> {
-        let base = Sample::nominal(scene);
-        let max = scene.limits.max_steps;
-        let too_many = |n: f64| {
-            InputError::new(
-                "creepage",
-                format!("{n:.0} steps"),
-                format!("at most {max} steps or points (dt = {dt_s:e} s); [limits] max_steps raises the limit"),
-            )
-        };
-        let mut sweep_direction = None;
-        if let (Some(pen_mm), Creepage::Table { rows, .. }) = (scene.pen_mm, &scene.creepage) {
-            if rows.fn_n.is_some() || rows.pen_mm.is_some() {
-                return Err(InputError::new(
-                    "contact.pen_mm",
-                    format!("{pen_mm} with a creepage table column fn_n or pen_mm"),
-                    "one of contact.pen_mm (the approach at every step) and the table's own fn_n or pen_mm column",
-                ));
-            }
-        }
-        let (kind, freq_hz, initial, samples) = match &scene.creepage {
+        check_approach_once(scene)?;
+        let loading = match &scene.creepage {
             Creepage::Step { c, steps, c_before, fx_prescribed } => {
-                if *steps > max {
-                    return Err(too_many(*steps as f64));
-                }
-                let at = |k: usize, c: f64| match fx_prescribed {
-                    true => Sample { step: k, t_s: k as f64 * dt_s, fx_target: Some(c), ..base },
-                    false => Sample { step: k, t_s: k as f64 * dt_s, cx: c, ..base },
-                };
-                let s: Vec<Sample> = (1..=*steps).map(|k| at(k, *c)).collect();
-                (LoadingKind::Step, None, Some(at(0, *c_before)), s)
+                step_history(scene, dt_s, *c, *c_before, *steps, *fx_prescribed)?
             }
             Creepage::Sine { c0, cp, freq_hz, periods } => {
-                let n = (periods / (freq_hz * dt_s)).ceil();
-                if n > max as f64 {
-                    return Err(too_many(n));
-                }
-                let w = 2.0 * std::f64::consts::PI * freq_hz;
-                let s = (1..=n as usize)
-                    .map(|k| {
-                        let t = k as f64 * dt_s;
-                        Sample { step: k, t_s: t, cx: c0 + cp * (w * t).sin(), ..base }
-                    })
-                    .collect();
-                if 1.0 / (freq_hz * dt_s) < 3.0 {
-                    warnings.push(format!(
-                        "creepage.freq_hz = {freq_hz}: only {:.2} steps per period (dt = {dt_s:e} s); the history is aliased",
-                        1.0 / (freq_hz * dt_s)
-                    ));
-                }
-                (LoadingKind::Sine, Some(*freq_hz), Some(Sample { cx: *c0, ..base }), s)
+                sine_history(scene, dt_s, *c0, *cp, *freq_hz, *periods, warnings)?
             }
             Creepage::Sweep { points, direction, fx_prescribed, .. } => {
-                if *points > max {
-                    return Err(too_many(*points as f64));
-                }
-                let s = (1..=*points)
-                    .map(|k| {
-                        let [x, y, cs] = scene.sweep_point(k).unwrap_or_default();
-                        // A force ratio prescribed in place of a creepage: the creepage starts at 0.
-                        let (cx, fx_target) = if *fx_prescribed { (0.0, Some(x)) } else { (x, None) };
-                        let (cy, fy_target) = if scene.fy_over_fn.is_some() { (0.0, Some(y)) } else { (y, None) };
-                        let v_mm_s = scene.sweep_speed(k);
-                        Sample { step: k, t_s: 0.0, cx, cy, cs, v_mm_s, fx_target, fy_target, ..base }
-                    })
-                    .collect();
-                sweep_direction = Some(*direction);
-                (LoadingKind::Sweep, None, None, s)
+                sweep_points(scene, dt_s, *points, *direction, *fx_prescribed)?
             }
             Creepage::Table { rows, .. } if rows.v_mm_s.is_some() || rows.courant.is_some() => {
-                let samples = speed_table(scene, rows, (dt_s * scene.v_mm_s, grid.dx_mm), max)?;
-                let initial = Sample {
-                    v_mm_s: rows.v_mm_s.as_ref().map(|v| rows.interpolate(v, 0.0)),
-                    courant: rows.courant.as_ref().map(|c| rows.interpolate(c, 0.0)),
-                    ..table_row(scene, rows, 0, 0.0)
-                };
-                (LoadingKind::Table, None, Some(initial), samples)
+                speed_table_history(scene, rows, dt_s, grid)?
             }
-            Creepage::Table { rows, .. } => {
-                let n = table_steps(rows.end_s(), dt_s);
-                if n > max as f64 {
-                    return Err(too_many(n));
-                }
-                let at = |k: usize| table_row(scene, rows, k, k as f64 * dt_s);
-                if n < 1.0 {
-                    return Err(InputError::new(
-                        "creepage.file",
-                        format!("table ending at t = {} s", rows.end_s()),
-                        format!("a table reaching at least one step, t >= dt = {dt_s:e} s (within {TABLE_END_REL:e} relative)"),
-                    ));
-                }
-                if let Some(fn_max) = rows
-                    .fn_n
-                    .as_ref()
-                    .filter(|_| geometry.elliptic())
-                    .map(|f| f.iter().fold(0.0, |a: f64, &b| a.max(b)))
-                {
-                    let (e, nominal) = (geometry.ellipse_at(fn_max), geometry.nominal());
-                    let fits = |semi: f64, half: f64| semi <= half * (1.0 + 1e-12);
-                    if !(fits(e.a_mm, grid.half_x_mm) && fits(e.b_mm, grid.half_y_mm)) {
-                        // The smallest scale (rounded up to 0.001) whose grid holds that ellipse.
-                        let need = (e.a_mm / nominal.a_mm).max(e.b_mm / nominal.b_mm);
-                        let need = (need * 1000.0 * (1.0 + 1e-9)).ceil() / 1000.0;
-                        warnings.push(format!(
-                            "creepage table: fn_n up to {fn_max} N gives a contact of a = {:.4} mm, b = {:.4} mm, beyond the grid's half-extents {:.4} x {:.4} mm ([grid] scale = {} times the ellipse at contact.fn_n = {} N); the contact is clipped to the grid: [grid] scale = {need} or more covers it",
-                            e.a_mm, e.b_mm, grid.half_x_mm, grid.half_y_mm, scene.grid_scale, scene.fn_n
-                        ));
-                    }
-                }
-                (LoadingKind::Table, None, Some(at(0)), (1..=n as usize).map(at).collect())
-            }
+            Creepage::Table { rows, .. } => table_history(scene, rows, dt_s, geometry, grid, warnings)?,
         };
-        let loading = Loading { kind, freq_hz, sweep_direction, initial, samples, init: scene.init };
         loading.check_forces()?;
         Ok(loading)
+    }
+
+    /// A loading of `kind` with its rows, neither a sine's frequency nor a sweep's direction.
+    fn of_rows(scene: &Scene, kind: LoadingKind, initial: Option<Sample>, samples: Vec<Sample>) -> Loading {
+        Loading { kind, freq_hz: None, sweep_direction: None, initial, samples, init: scene.init }
     }
 
     /// Whether any row prescribes a total force in place of a creepage (CONTACT F = 1, 2).
@@ -319,6 +228,175 @@ impl Loading {
     /// Largest μ over the rows (a table may vary it).
     pub fn mu_max(&self) -> f64 {
         self.rows().map(|s| s.mu).fold(0.0, f64::max)
+    }
+}
+
+/// The error of a loading with `n` steps or points, more than `[limits] max_steps` (`max`).
+fn too_many(n: f64, max: usize, dt_s: f64) -> InputError {
+    InputError::new(
+        "creepage",
+        format!("{n:.0} steps"),
+        format!("at most {max} steps or points (dt = {dt_s:e} s); [limits] max_steps raises the limit"),
+    )
+}
+
+/// The approach `contact.pen_mm` is prescribed only where a creepage table gives neither fn_n nor pen_mm.
+fn check_approach_once(scene: &Scene) -> Result<(), InputError> {
+    if let (Some(pen_mm), Creepage::Table { rows, .. }) = (scene.pen_mm, &scene.creepage) {
+        if rows.fn_n.is_some() || rows.pen_mm.is_some() {
+            return Err(InputError::new(
+                "contact.pen_mm",
+                format!("{pen_mm} with a creepage table column fn_n or pen_mm"),
+                "one of contact.pen_mm (the approach at every step) and the table's own fn_n or pen_mm column",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// A step: cx (or Fx/FN with `fx_prescribed`) = `c_before` at t = 0, then `c` at steps 1..=`steps`.
+fn step_history(
+    scene: &Scene,
+    dt_s: f64,
+    c: f64,
+    c_before: f64,
+    steps: usize,
+    fx_prescribed: bool,
+) -> Result<Loading, InputError> {
+    let (base, max) = (Sample::nominal(scene), scene.limits.max_steps);
+    if steps > max {
+        return Err(too_many(steps as f64, max, dt_s));
+    }
+    let at = |k: usize, c: f64| match fx_prescribed {
+        true => Sample { step: k, t_s: k as f64 * dt_s, fx_target: Some(c), ..base },
+        false => Sample { step: k, t_s: k as f64 * dt_s, cx: c, ..base },
+    };
+    let s: Vec<Sample> = (1..=steps).map(|k| at(k, c)).collect();
+    Ok(Loading::of_rows(scene, LoadingKind::Step, Some(at(0, c_before)), s))
+}
+
+/// A sine: cx = c0 + cp sin(2π F t_k) over `periods` periods of F = `freq_hz`, c0 at t = 0; a
+/// warning where a period has fewer than 3 steps.
+fn sine_history(
+    scene: &Scene,
+    dt_s: f64,
+    c0: f64,
+    cp: f64,
+    freq_hz: f64,
+    periods: f64,
+    warnings: &mut Vec<String>,
+) -> Result<Loading, InputError> {
+    let (base, max) = (Sample::nominal(scene), scene.limits.max_steps);
+    let n = (periods / (freq_hz * dt_s)).ceil();
+    if n > max as f64 {
+        return Err(too_many(n, max, dt_s));
+    }
+    let w = 2.0 * std::f64::consts::PI * freq_hz;
+    let s = (1..=n as usize)
+        .map(|k| {
+            let t = k as f64 * dt_s;
+            Sample { step: k, t_s: t, cx: c0 + cp * (w * t).sin(), ..base }
+        })
+        .collect();
+    if 1.0 / (freq_hz * dt_s) < 3.0 {
+        warnings.push(format!(
+            "creepage.freq_hz = {freq_hz}: only {:.2} steps per period (dt = {dt_s:e} s); the history is aliased",
+            1.0 / (freq_hz * dt_s)
+        ));
+    }
+    let initial = Sample { cx: c0, ..base };
+    Ok(Loading { freq_hz: Some(freq_hz), ..Loading::of_rows(scene, LoadingKind::Sine, Some(initial), s) })
+}
+
+/// A sweep's `points` steady points along `direction` ([`Scene::sweep_point`], [`Scene::sweep_speed`]),
+/// a force ratio prescribed in place of cx (`fx_prescribed`) or cy (the scene's `fy_over_fn`).
+fn sweep_points(
+    scene: &Scene,
+    dt_s: f64,
+    points: usize,
+    direction: [f64; 3],
+    fx_prescribed: bool,
+) -> Result<Loading, InputError> {
+    let (base, max) = (Sample::nominal(scene), scene.limits.max_steps);
+    if points > max {
+        return Err(too_many(points as f64, max, dt_s));
+    }
+    let s = (1..=points)
+        .map(|k| {
+            let [x, y, cs] = scene.sweep_point(k).unwrap_or_default();
+            // A force ratio prescribed in place of a creepage: the creepage starts at 0.
+            let (cx, fx_target) = if fx_prescribed { (0.0, Some(x)) } else { (x, None) };
+            let (cy, fy_target) = if scene.fy_over_fn.is_some() { (0.0, Some(y)) } else { (y, None) };
+            let v_mm_s = scene.sweep_speed(k);
+            Sample { step: k, t_s: 0.0, cx, cy, cs, v_mm_s, fx_target, fy_target, ..base }
+        })
+        .collect();
+    Ok(Loading { sweep_direction: Some(direction), ..Loading::of_rows(scene, LoadingKind::Sweep, None, s) })
+}
+
+/// A table with a speed or Courant column: its steps of [`speed_table`], its speed and Courant
+/// number at t = 0 in the initial state.
+fn speed_table_history(scene: &Scene, rows: &CreepageTable, dt_s: f64, grid: &Grid) -> Result<Loading, InputError> {
+    let samples = speed_table(scene, rows, (dt_s * scene.v_mm_s, grid.dx_mm), scene.limits.max_steps)?;
+    let initial = Sample {
+        v_mm_s: rows.v_mm_s.as_ref().map(|v| rows.interpolate(v, 0.0)),
+        courant: rows.courant.as_ref().map(|c| rows.interpolate(c, 0.0)),
+        ..table_row(scene, rows, 0, 0.0)
+    };
+    Ok(Loading::of_rows(scene, LoadingKind::Table, Some(initial), samples))
+}
+
+/// A table at t_k = k dt up to its last time ([`table_steps`]); a warning where its largest FN
+/// gives a contact beyond the grid ([`warn_beyond_grid`]).
+fn table_history(
+    scene: &Scene,
+    rows: &CreepageTable,
+    dt_s: f64,
+    geometry: &dyn ContactGeometry,
+    grid: &Grid,
+    warnings: &mut Vec<String>,
+) -> Result<Loading, InputError> {
+    let max = scene.limits.max_steps;
+    let n = table_steps(rows.end_s(), dt_s);
+    if n > max as f64 {
+        return Err(too_many(n, max, dt_s));
+    }
+    let at = |k: usize| table_row(scene, rows, k, k as f64 * dt_s);
+    if n < 1.0 {
+        return Err(InputError::new(
+            "creepage.file",
+            format!("table ending at t = {} s", rows.end_s()),
+            format!("a table reaching at least one step, t >= dt = {dt_s:e} s (within {TABLE_END_REL:e} relative)"),
+        ));
+    }
+    warn_beyond_grid(scene, rows, geometry, grid, warnings);
+    Ok(Loading::of_rows(scene, LoadingKind::Table, Some(at(0)), (1..=n as usize).map(at).collect()))
+}
+
+/// A warning where a table's largest FN gives an ellipse of `geometry` beyond the grid's
+/// half-extents, with the smallest `[grid] scale` that covers it.
+fn warn_beyond_grid(
+    scene: &Scene,
+    rows: &CreepageTable,
+    geometry: &dyn ContactGeometry,
+    grid: &Grid,
+    warnings: &mut Vec<String>,
+) {
+    let Some(fn_max) =
+        rows.fn_n.as_ref().filter(|_| geometry.elliptic()).map(|f| f.iter().fold(0.0, |a: f64, &b| a.max(b)))
+    else {
+        return;
+    };
+    let (e, nominal) = (geometry.ellipse_at(fn_max), geometry.nominal());
+    let fits = |semi: f64, half: f64| semi <= half * (1.0 + 1e-12);
+    if !(fits(e.a_mm, grid.half_x_mm) && fits(e.b_mm, grid.half_y_mm)) {
+        // The smallest scale (rounded up to 0.001) whose grid holds that ellipse.
+        let need = (e.a_mm / nominal.a_mm).max(e.b_mm / nominal.b_mm);
+        let need = (need * 1000.0 * (1.0 + 1e-9)).ceil() / 1000.0;
+        warnings.push(format!(
+            "creepage table: fn_n up to {fn_max} N gives a contact of a = {:.4} mm, b = {:.4} mm, beyond the grid's half-extents {:.4} x {:.4} mm ([grid] scale = {} times the ellipse at contact.fn_n = {} N); the contact is clipped to the grid: [grid] scale = {need} or more covers it",
+            e.a_mm, e.b_mm, grid.half_x_mm, grid.half_y_mm, scene.grid_scale, scene.fn_n
+        ));
     }
 }
 
