@@ -161,6 +161,39 @@ pub fn set(doc: &mut Table, path: &str, value: Value, field: &str) -> Result<(),
 /// Expand a study file's table into its scenes, in axis order (the first axis outermost);
 /// `study.metrics` must name metrics of `metric_names` (the registry's, given by the pipeline).
 pub fn expand(doc: &Table, metric_names: &[&str]) -> Result<Vec<Expanded>, InputError> {
+    let (study, template) = study_and_template(doc)?;
+    let study = read_study(study, metric_names)?;
+    let total = point_count(&study.axes)?;
+    let mut out = Vec::with_capacity(total);
+    let mut names = std::collections::HashSet::with_capacity(total);
+    for n in 0..total {
+        let scene = expand_point(template, &study, &axis_indices(n, &study.axes))?;
+        if !names.insert(scene.name.clone()) {
+            return Err(err(
+                "study.scene_name",
+                format!("{:?} twice", scene.name),
+                "labels that make every scene name distinct",
+            ));
+        }
+        out.push(scene);
+    }
+    Ok(out)
+}
+
+/// A study's `[study]` table read and checked: all its scenes need besides the template.
+struct Study {
+    name: String,
+    title: String,
+    axes: Vec<Axis>,
+    /// The axis on the curves' x (its index in `axes`).
+    x_axis: usize,
+    metrics: Vec<String>,
+    /// The scene names, `{axis}` standing for that axis's label.
+    pattern: String,
+}
+
+/// The file's `[study]` and `[scene]` tables (nothing else), the template without `name`.
+fn study_and_template(doc: &Table) -> Result<(&Table, &Table), InputError> {
     if let Some(k) = doc.keys().find(|k| *k != "study" && *k != "scene") {
         return Err(err(k.as_str(), "given", "a study file holds only [study] and [scene]"));
     }
@@ -177,19 +210,42 @@ pub fn expand(doc: &Table, metric_names: &[&str]) -> Result<Vec<Expanded>, Input
             "no name in the template: the study names its scenes (study.scene_name)",
         ));
     }
+    Ok((study, template))
+}
+
+/// Read the `[study]` table, checked in this order: its keys, name and title, axes, x axis,
+/// metrics and scene-name pattern.
+fn read_study(study: &Table, metric_names: &[&str]) -> Result<Study, InputError> {
+    check_study_keys(study)?;
+    let name = text("name", study)?.ok_or_else(|| err("study.name", "missing", "a name of [a-z0-9_]+"))?;
+    let title = text("title", study)?.unwrap_or_else(|| name.clone());
+    let axes = read_axes(study)?;
+    let x_axis = read_x_axis(study, &axes)?;
+    let metrics = read_metrics(study, metric_names)?;
+    let pattern = read_pattern(study, &name, &axes)?;
+    Ok(Study { name, title, axes, x_axis, metrics, pattern })
+}
+
+/// Refuse a `[study]` key the format (module doc) does not have.
+fn check_study_keys(study: &Table) -> Result<(), InputError> {
     let allowed = ["name", "title", "scene_name", "x", "metrics", "axis"];
     if let Some(k) = study.keys().find(|k| !allowed.contains(&k.as_str())) {
         return Err(err(format!("study.{k}"), "given", format!("one of {}", allowed.join(", "))));
     }
-    let text = |k: &str| -> Result<Option<String>, InputError> {
-        match study.get(k) {
-            None => Ok(None),
-            Some(Value::String(s)) => Ok(Some(s.clone())),
-            Some(v) => Err(err(format!("study.{k}"), v, "a string")),
-        }
-    };
-    let name = text("name")?.ok_or_else(|| err("study.name", "missing", "a name of [a-z0-9_]+"))?;
-    let title = text("title")?.unwrap_or_else(|| name.clone());
+    Ok(())
+}
+
+/// The string `study.<k>` if given (`k` first, a literal: tests/all/docs.rs reads the keys from these calls).
+fn text(k: &str, study: &Table) -> Result<Option<String>, InputError> {
+    match study.get(k) {
+        None => Ok(None),
+        Some(Value::String(s)) => Ok(Some(s.clone())),
+        Some(v) => Err(err(format!("study.{k}"), v, "a string")),
+    }
+}
+
+/// The `[[study.axis]]` tables, each as [`read_axis`] reads it, their names distinct.
+fn read_axes(study: &Table) -> Result<Vec<Axis>, InputError> {
     let axes: Vec<Axis> = match study.get("axis") {
         Some(Value::Array(a)) if !a.is_empty() => {
             a.iter().enumerate().map(|(n, t)| read_axis(n, t)).collect::<Result<_, _>>()?
@@ -204,7 +260,13 @@ pub fn expand(doc: &Table, metric_names: &[&str]) -> Result<Vec<Expanded>, Input
             return Err(err(format!("study.axis[{i}].name"), format!("{:?}", a.name), "distinct axis names"));
         }
     }
-    let x_axis = match text("x")? {
+    Ok(axes)
+}
+
+/// The index of the axis on the curves' x (`study.x`, default the first): its values numbers,
+/// or its `x_values` given.
+fn read_x_axis(study: &Table, axes: &[Axis]) -> Result<usize, InputError> {
+    let x_axis = match text("x", study)? {
         None => 0,
         Some(x) => axes.iter().position(|a| a.name == x).ok_or_else(|| {
             let names: Vec<&str> = axes.iter().map(|a| a.name.as_str()).collect();
@@ -218,25 +280,34 @@ pub fn expand(doc: &Table, metric_names: &[&str]) -> Result<Vec<Expanded>, Input
             "numbers on the x axis (or the axis's x_values)",
         ));
     }
-    let metrics = match study.get("metrics") {
-        None => Vec::new(),
+    Ok(x_axis)
+}
+
+/// `study.metrics`: names from `metric_names` (none given: every scalar metric is drawn).
+fn read_metrics(study: &Table, metric_names: &[&str]) -> Result<Vec<String>, InputError> {
+    match study.get("metrics") {
+        None => Ok(Vec::new()),
         Some(Value::Array(a)) => a
             .iter()
             .map(|m| match m.as_str() {
                 Some(s) if metric_names.contains(&s) => Ok(s.to_string()),
                 _ => Err(err("study.metrics", m, format!("names from {}", metric_names.join(", ")))),
             })
-            .collect::<Result<_, _>>()?,
-        Some(v) => return Err(err("study.metrics", v, "an array of metric names")),
-    };
-    let pattern = match text("scene_name")? {
+            .collect(),
+        Some(v) => Err(err("study.metrics", v, "an array of metric names")),
+    }
+}
+
+/// `study.scene_name` (default `name_axis{axis}_…`): a pattern naming every axis.
+fn read_pattern(study: &Table, name: &str, axes: &[Axis]) -> Result<String, InputError> {
+    let pattern = match text("scene_name", study)? {
         Some(p) => p,
-        None => std::iter::once(name.clone())
+        None => std::iter::once(name.to_string())
             .chain(axes.iter().map(|a| format!("{}{{{}}}", a.name, a.name)))
             .collect::<Vec<_>>()
             .join("_"),
     };
-    for a in &axes {
+    for a in axes {
         if !pattern.contains(&format!("{{{}}}", a.name)) {
             return Err(err(
                 "study.scene_name",
@@ -245,63 +316,82 @@ pub fn expand(doc: &Table, metric_names: &[&str]) -> Result<Vec<Expanded>, Input
             ));
         }
     }
-    // Refused before anything is allocated: a study of more points than any suite could run.
-    let total = axes
-        .iter()
-        .try_fold(1usize, |n, a| n.checked_mul(a.labels.len()))
-        .filter(|&n| n <= MAX_STUDY_POINTS)
-        .ok_or_else(|| {
+    Ok(pattern)
+}
+
+/// The number of points, the axes' lengths multiplied; refused before anything is allocated
+/// beyond [`MAX_STUDY_POINTS`] (more points than any suite could run).
+fn point_count(axes: &[Axis]) -> Result<usize, InputError> {
+    let total = axes.iter().try_fold(1usize, |n, a| n.checked_mul(a.labels.len()));
+    total.filter(|&n| n <= MAX_STUDY_POINTS).ok_or_else(|| {
         let sizes: Vec<String> = axes.iter().map(|a| a.labels.len().to_string()).collect();
         err("study.axis", format!("{} points", sizes.join(" x ")), format!("at most {MAX_STUDY_POINTS} points"))
-    })?;
-    let mut out = Vec::with_capacity(total);
-    let mut names = std::collections::HashSet::with_capacity(total);
-    for n in 0..total {
-        // Mixed radix, the last axis fastest.
-        let mut rest = n;
-        let mut at = vec![0; axes.len()];
-        for (i, a) in axes.iter().enumerate().rev() {
-            at[i] = rest % a.labels.len();
-            rest /= a.labels.len();
-        }
-        let mut scene = template.clone();
-        let mut scene_name = pattern.clone();
-        for (a, &k) in axes.iter().zip(&at) {
-            for (key, values) in &a.keys {
-                set(&mut scene, key, values[k].clone(), &format!("study.axis {:?} key {key:?}", a.name))?;
-            }
-            scene_name = scene_name.replace(&format!("{{{}}}", a.name), &a.labels[k]);
-        }
-        scene.insert("name".into(), Value::String(scene_name.clone()));
-        let series: Vec<String> = axes
-            .iter()
-            .zip(&at)
-            .enumerate()
-            .filter(|(i, _)| *i != x_axis)
-            .map(|(_, (a, &k))| format!("{} {}", a.name, a.labels[k]))
-            .collect();
-        let point = StudyPoint {
-            study: name.clone(),
-            title: title.clone(),
-            x_key: match &axes[x_axis].x_values {
-                Some(_) => axes[x_axis].name.clone(),
-                None => axes[x_axis].keys[0].0.clone(),
-            },
-            x: match &axes[x_axis].x_values {
-                Some(v) => v[at[x_axis]],
-                None => as_f64(&axes[x_axis].keys[0].1[at[x_axis]]).unwrap_or(f64::NAN),
-            },
-            series: series.join(", "),
-            metrics: metrics.clone(),
-        };
-        if !names.insert(scene_name.clone()) {
-            return Err(err(
-                "study.scene_name",
-                format!("{scene_name:?} twice"),
-                "labels that make every scene name distinct",
-            ));
-        }
-        out.push(Expanded { name: scene_name, doc: scene, point });
+    })
+}
+
+/// Point `n`'s value index on each axis: mixed radix, the last axis fastest.
+fn axis_indices(n: usize, axes: &[Axis]) -> Vec<usize> {
+    let mut rest = n;
+    let mut at = vec![0; axes.len()];
+    for (i, a) in axes.iter().enumerate().rev() {
+        at[i] = rest % a.labels.len();
+        rest /= a.labels.len();
     }
-    Ok(out)
+    at
+}
+
+/// The scene at the value indices `at`: the template with the axes' keys set, named by the pattern.
+fn expand_point(template: &Table, study: &Study, at: &[usize]) -> Result<Expanded, InputError> {
+    let mut doc = scene_at(template, &study.axes, at)?;
+    let name = scene_name_at(&study.pattern, &study.axes, at);
+    doc.insert("name".into(), Value::String(name.clone()));
+    Ok(Expanded { name, doc, point: study_point(study, at) })
+}
+
+/// The template with each axis's keys set to their values at `at`.
+fn scene_at(template: &Table, axes: &[Axis], at: &[usize]) -> Result<Table, InputError> {
+    let mut scene = template.clone();
+    for (a, &k) in axes.iter().zip(at) {
+        for (key, values) in &a.keys {
+            set(&mut scene, key, values[k].clone(), &format!("study.axis {:?} key {key:?}", a.name))?;
+        }
+    }
+    Ok(scene)
+}
+
+/// The scene name at `at`: the pattern with each `{axis}` replaced by that axis's label.
+fn scene_name_at(pattern: &str, axes: &[Axis], at: &[usize]) -> String {
+    let mut scene_name = pattern.to_string();
+    for (a, &k) in axes.iter().zip(at) {
+        scene_name = scene_name.replace(&format!("{{{}}}", a.name), &a.labels[k]);
+    }
+    scene_name
+}
+
+/// Where the point `at` sits in the study: its x (the x axis's value, or its `x_values`) and the
+/// labels of the other axes (its series).
+fn study_point(study: &Study, at: &[usize]) -> StudyPoint {
+    let x_axis = &study.axes[study.x_axis];
+    let series: Vec<String> = study
+        .axes
+        .iter()
+        .zip(at)
+        .enumerate()
+        .filter(|(i, _)| *i != study.x_axis)
+        .map(|(_, (a, &k))| format!("{} {}", a.name, a.labels[k]))
+        .collect();
+    StudyPoint {
+        study: study.name.clone(),
+        title: study.title.clone(),
+        x_key: match &x_axis.x_values {
+            Some(_) => x_axis.name.clone(),
+            None => x_axis.keys[0].0.clone(),
+        },
+        x: match &x_axis.x_values {
+            Some(v) => v[at[study.x_axis]],
+            None => as_f64(&x_axis.keys[0].1[at[study.x_axis]]).unwrap_or(f64::NAN),
+        },
+        series: series.join(", "),
+        metrics: study.metrics.clone(),
+    }
 }

@@ -110,128 +110,24 @@ impl CreepageTable {
         Self::from_csv(&text, &format!("{field} ({})", path.display()))
     }
 
-    /// Parse CSV text.
+    /// Parse CSV text: the header's columns checked, then every row, then the times.
     pub fn from_csv(text: &str, origin: &str) -> Result<Self, InputError> {
         let mut rdr = csv::ReaderBuilder::new().trim(csv::Trim::All).from_reader(text.as_bytes());
-        let header: Vec<String> = rdr
-            .headers()
-            .map_err(|e| InputError::new(origin, "unreadable header", format!("a CSV header line ({e})")))?
-            .iter()
-            .map(str::to_string)
-            .collect();
-        for (n, h) in header.iter().enumerate() {
-            if !COLUMNS.contains(&h.as_str()) || header[..n].contains(h) {
-                return Err(InputError::new(
-                    format!("{origin} header column {}", n + 1),
-                    crate::error::name_excerpt(h),
-                    format!("distinct columns from {}", COLUMNS.join(", ")),
-                ));
-            }
-        }
-        let has = |c: &str| header.iter().any(|h| h == c);
-        for (req, or) in [("t_s", "t_s"), ("cx", "fx_over_fn")] {
-            if !has(req) && !has(or) {
-                let what = if req == or { req.to_string() } else { format!("{req} or {or}") };
-                return Err(InputError::new(
-                    format!("{origin} header"),
-                    format!("{} columns", header.len()),
-                    format!("must include column {what}"),
-                ));
-            }
-        }
-        let h_given = H_COLUMNS.iter().filter(|c| has(c)).count();
-        if h_given != 0 && h_given != H_COLUMNS.len() {
-            return Err(InputError::new(
-                format!("{origin} header"),
-                format!("{h_given} of the columns {}", H_COLUMNS.join(", ")),
-                "all six (the row's undeformed distance b1 x² + b2 xy + b3 y² + b4 x + b5 y + b6) or none",
-            ));
-        }
-        // Both fn_n and pen_mm (cx and fx_over_fn, cy and fy_over_fn): each row gives exactly one
-        // of them, the other cell empty.
-        let pairs: Vec<(&str, &str, &str)> = PER_ROW.iter().copied().filter(|(a, b, _)| has(a) && has(b)).collect();
-        let per_row = |name: &str| pairs.iter().any(|(a, b, _)| *a == name || *b == name);
-        let mut cols: Vec<Vec<f64>> = vec![Vec::new(); header.len()];
-        for (r, rec) in rdr.records().enumerate() {
-            let row = r + 2; // 1-based line number, header is line 1
-            let rec = rec.map_err(|e| {
-                InputError::new(
-                    format!("{origin} line {row}"),
-                    "malformed",
-                    format!("a CSV row of {} numbers ({e})", header.len()),
-                )
-            })?;
-            if rec.len() != header.len() {
-                return Err(InputError::new(
-                    format!("{origin} line {row}"),
-                    rec.len(),
-                    format!("{} fields", header.len()),
-                ));
-            }
-            for (a, b, what) in &pairs {
-                let empty = |c: &str| header.iter().position(|h| h == c).is_some_and(|i| rec[i].is_empty());
-                if empty(a) == empty(b) {
-                    return Err(InputError::new(
-                        format!("{origin} line {row} columns {a}, {b}"),
-                        if empty(a) { "both empty" } else { "both given" },
-                        format!("exactly one of {what} per row, the other cell empty"),
-                    ));
-                }
-            }
-            for (c, cell) in rec.iter().enumerate() {
-                let name = &header[c];
-                if cell.is_empty() && per_row(name) {
-                    cols[c].push(f64::NAN);
-                    continue;
-                }
-                let v: f64 = cell.parse().map_err(|_| {
-                    InputError::new(format!("{origin} line {row} column {name}"), format!("{cell:?}"), "a number")
-                })?;
-                let ok = match name.as_str() {
-                    "t_s" => v.is_finite() && v >= 0.0,
-                    "cx" | "cy" => v.is_finite() && v.abs() <= 1.0,
-                    "fx_over_fn" | "fy_over_fn" => v.is_finite() && v.abs() < 1.0,
-                    "cs" => v.is_finite() && v.abs() <= 10.0,
-                    "v_mm_s" => super::SPEED_LIMIT.contains(v),
-                    "courant" => COURANT_LIMIT.contains(v),
-                    "pen_mm" => v.is_finite() && v > 0.0 && v <= PEN_MAX_MM,
-                    "chi_deg" => (0.0..360.0).contains(&v),
-                    c if H_COLUMNS.contains(&c) => v.is_finite(),
-                    _ => v.is_finite() && v > 0.0, // fn_n, mu
-                };
-                if !ok {
-                    let allowed = match name.as_str() {
-                        "t_s" => "a finite time >= 0",
-                        "cx" | "cy" => "a finite creepage in [-1, 1]",
-                        "fx_over_fn" | "fy_over_fn" => "a finite force ratio in (-1, 1) (below the row's mu)",
-                        "cs" => "a finite spin in [-10, 10] 1/mm",
-                        "v_mm_s" => "a rolling speed in (0, 1e6] mm/s",
-                        "courant" => "a Courant number in (0, 100] (the step's rolling distance dq = courant dx)",
-                        "pen_mm" => "a finite approach in (0, 10] mm",
-                        "chi_deg" => "a rolling direction in [0, 360) degrees",
-                        c if H_COLUMNS.contains(&c) => "a finite coefficient",
-                        _ => "a finite number > 0",
-                    };
-                    return Err(InputError::new(format!("{origin} line {row} column {name}"), v, allowed));
-                }
-                cols[c].push(v);
-            }
-        }
+        let header = read_header(&mut rdr, origin)?;
+        check_columns(&header, origin)?;
+        check_required(&header, origin)?;
+        let h_given = h_columns_given(&header, origin)?;
+        let cols = read_rows(&mut rdr, &header, origin)?;
+        let table = Self::from_columns(&header, &cols, h_given);
+        check_times(&table.t_s, origin)?;
+        Ok(table)
+    }
+
+    /// The table of the checked columns `cols` (`cols[i]` the values of `header[i]`); `h_given`:
+    /// the header has the [`H_COLUMNS`].
+    fn from_columns(header: &[String], cols: &[Vec<f64>], h_given: bool) -> Self {
         let col = |name: &str| header.iter().position(|h| h == name).map(|i| cols[i].clone());
-        let t_s = col("t_s").unwrap_or_default();
-        if t_s.is_empty() {
-            return Err(InputError::new(origin, "no data rows", "at least one row"));
-        }
-        for w in 1..t_s.len() {
-            if t_s[w] <= t_s[w - 1] {
-                return Err(InputError::new(
-                    format!("{origin} line {} column t_s", w + 2),
-                    t_s[w],
-                    format!("strictly increasing times (previous {})", t_s[w - 1]),
-                ));
-            }
-        }
-        Ok(CreepageTable {
+        CreepageTable {
             cx: match (col("cx"), col("fx_over_fn")) {
                 (Some(cx), Some(fx_over_fn)) => TableX::PerRow { cx, fx_over_fn },
                 (None, Some(f)) => TableX::Force(f),
@@ -242,13 +138,13 @@ impl CreepageTable {
             cs: col("cs"),
             fn_n: col("fn_n"),
             pen_mm: col("pen_mm"),
-            h_coefficients: (h_given > 0).then(|| H_COLUMNS.map(|c| col(c).unwrap_or_default())),
+            h_coefficients: h_given.then(|| H_COLUMNS.map(|c| col(c).unwrap_or_default())),
             mu: col("mu"),
             v_mm_s: col("v_mm_s"),
             courant: col("courant"),
             chi_deg: col("chi_deg"),
-            t_s,
-        })
+            t_s: col("t_s").unwrap_or_default(),
+        }
     }
 
     /// Linear interpolation of `series` at time `t`, held at the first row before it and at the
@@ -317,4 +213,182 @@ impl CreepageTable {
     pub fn end_s(&self) -> f64 {
         *self.t_s.last().unwrap_or(&0.0)
     }
+}
+
+/// The header line's column names.
+fn read_header(rdr: &mut csv::Reader<&[u8]>, origin: &str) -> Result<Vec<String>, InputError> {
+    Ok(rdr
+        .headers()
+        .map_err(|e| InputError::new(origin, "unreadable header", format!("a CSV header line ({e})")))?
+        .iter()
+        .map(str::to_string)
+        .collect())
+}
+
+/// Whether the header has column `c`.
+fn has(header: &[String], c: &str) -> bool {
+    header.iter().any(|h| h == c)
+}
+
+/// Every header column one of [`COLUMNS`], none twice.
+fn check_columns(header: &[String], origin: &str) -> Result<(), InputError> {
+    for (n, h) in header.iter().enumerate() {
+        if !COLUMNS.contains(&h.as_str()) || header[..n].contains(h) {
+            return Err(InputError::new(
+                format!("{origin} header column {}", n + 1),
+                crate::error::name_excerpt(h),
+                format!("distinct columns from {}", COLUMNS.join(", ")),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The required columns in the header: `t_s`, and `cx` or `fx_over_fn`.
+fn check_required(header: &[String], origin: &str) -> Result<(), InputError> {
+    for (req, or) in [("t_s", "t_s"), ("cx", "fx_over_fn")] {
+        if !has(header, req) && !has(header, or) {
+            let what = if req == or { req.to_string() } else { format!("{req} or {or}") };
+            return Err(InputError::new(
+                format!("{origin} header"),
+                format!("{} columns", header.len()),
+                format!("must include column {what}"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Whether the header has the undeformed distance's columns [`H_COLUMNS`]: all six or none.
+fn h_columns_given(header: &[String], origin: &str) -> Result<bool, InputError> {
+    let h_given = H_COLUMNS.iter().filter(|c| has(header, c)).count();
+    if h_given != 0 && h_given != H_COLUMNS.len() {
+        return Err(InputError::new(
+            format!("{origin} header"),
+            format!("{h_given} of the columns {}", H_COLUMNS.join(", ")),
+            "all six (the row's undeformed distance b1 x² + b2 xy + b3 y² + b4 x + b5 y + b6) or none",
+        ));
+    }
+    Ok(h_given > 0)
+}
+
+/// The data rows' values, one series per header column: each row of the header's fields, one
+/// of each per-row pair given ([`PER_ROW`]), every cell a number in its column's range.
+fn read_rows(rdr: &mut csv::Reader<&[u8]>, header: &[String], origin: &str) -> Result<Vec<Vec<f64>>, InputError> {
+    // Both fn_n and pen_mm (cx and fx_over_fn, cy and fy_over_fn): each row gives exactly one
+    // of them, the other cell empty.
+    let pairs: Vec<(&str, &str, &str)> =
+        PER_ROW.iter().copied().filter(|(a, b, _)| has(header, a) && has(header, b)).collect();
+    let per_row = |name: &str| pairs.iter().any(|(a, b, _)| *a == name || *b == name);
+    let mut cols: Vec<Vec<f64>> = vec![Vec::new(); header.len()];
+    for (r, rec) in rdr.records().enumerate() {
+        let row = r + 2; // 1-based line number, header is line 1
+        let rec = check_record(rec, header.len(), origin, row)?;
+        check_pairs(&rec, header, &pairs, origin, row)?;
+        for (c, cell) in rec.iter().enumerate() {
+            cols[c].push(read_cell(cell, &header[c], per_row(&header[c]), origin, row)?);
+        }
+    }
+    Ok(cols)
+}
+
+/// The record of line `row`: readable CSV of `fields` fields (the header's).
+fn check_record(
+    rec: csv::Result<csv::StringRecord>,
+    fields: usize,
+    origin: &str,
+    row: usize,
+) -> Result<csv::StringRecord, InputError> {
+    let rec = rec.map_err(|e| {
+        InputError::new(format!("{origin} line {row}"), "malformed", format!("a CSV row of {fields} numbers ({e})"))
+    })?;
+    if rec.len() != fields {
+        return Err(InputError::new(format!("{origin} line {row}"), rec.len(), format!("{fields} fields")));
+    }
+    Ok(rec)
+}
+
+/// Line `row` gives exactly one cell of each per-row pair of the header (`pairs`), the other empty.
+fn check_pairs(
+    rec: &csv::StringRecord,
+    header: &[String],
+    pairs: &[(&str, &str, &str)],
+    origin: &str,
+    row: usize,
+) -> Result<(), InputError> {
+    let empty = |c: &str| header.iter().position(|h| h == c).is_some_and(|i| rec[i].is_empty());
+    for (a, b, what) in pairs {
+        if empty(a) == empty(b) {
+            return Err(InputError::new(
+                format!("{origin} line {row} columns {a}, {b}"),
+                if empty(a) { "both empty" } else { "both given" },
+                format!("exactly one of {what} per row, the other cell empty"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The cell of column `name` on line `row`: NaN where it is empty in a per-row column, else a
+/// number in the column's range ([`in_range`]).
+fn read_cell(cell: &str, name: &str, per_row: bool, origin: &str, row: usize) -> Result<f64, InputError> {
+    if cell.is_empty() && per_row {
+        return Ok(f64::NAN);
+    }
+    let v: f64 = cell
+        .parse()
+        .map_err(|_| InputError::new(format!("{origin} line {row} column {name}"), format!("{cell:?}"), "a number"))?;
+    if !in_range(name, v) {
+        return Err(InputError::new(format!("{origin} line {row} column {name}"), v, allowed(name)));
+    }
+    Ok(v)
+}
+
+/// Whether `v` is in the range of column `name` (as [`allowed`] says it).
+fn in_range(name: &str, v: f64) -> bool {
+    match name {
+        "t_s" => v.is_finite() && v >= 0.0,
+        "cx" | "cy" => v.is_finite() && v.abs() <= 1.0,
+        "fx_over_fn" | "fy_over_fn" => v.is_finite() && v.abs() < 1.0,
+        "cs" => v.is_finite() && v.abs() <= 10.0,
+        "v_mm_s" => super::SPEED_LIMIT.contains(v),
+        "courant" => COURANT_LIMIT.contains(v),
+        "pen_mm" => v.is_finite() && v > 0.0 && v <= PEN_MAX_MM,
+        "chi_deg" => (0.0..360.0).contains(&v),
+        c if H_COLUMNS.contains(&c) => v.is_finite(),
+        _ => v.is_finite() && v > 0.0, // fn_n, mu
+    }
+}
+
+/// What column `name` allows, as an error says it ([`in_range`]).
+fn allowed(name: &str) -> &'static str {
+    match name {
+        "t_s" => "a finite time >= 0",
+        "cx" | "cy" => "a finite creepage in [-1, 1]",
+        "fx_over_fn" | "fy_over_fn" => "a finite force ratio in (-1, 1) (below the row's mu)",
+        "cs" => "a finite spin in [-10, 10] 1/mm",
+        "v_mm_s" => "a rolling speed in (0, 1e6] mm/s",
+        "courant" => "a Courant number in (0, 100] (the step's rolling distance dq = courant dx)",
+        "pen_mm" => "a finite approach in (0, 10] mm",
+        "chi_deg" => "a rolling direction in [0, 360) degrees",
+        c if H_COLUMNS.contains(&c) => "a finite coefficient",
+        _ => "a finite number > 0",
+    }
+}
+
+/// The times `t_s`: at least one row, strictly increasing.
+fn check_times(t_s: &[f64], origin: &str) -> Result<(), InputError> {
+    if t_s.is_empty() {
+        return Err(InputError::new(origin, "no data rows", "at least one row"));
+    }
+    for w in 1..t_s.len() {
+        if t_s[w] <= t_s[w - 1] {
+            return Err(InputError::new(
+                format!("{origin} line {} column t_s", w + 2),
+                t_s[w],
+                format!("strictly increasing times (previous {})", t_s[w - 1]),
+            ));
+        }
+    }
+    Ok(())
 }
