@@ -249,7 +249,11 @@ fn bench_fft_length(c: &mut Criterion) {
 /// run FASTSIM 5.79 / 3.43 µs (1.69×), the UBA 5.16 / 0.548 µs (9.4×). Coulomb's FASTSIM through
 /// the grouped march (12 rows in step, its projection as selects) measured 3.83 µs against the
 /// two-row march's 3.4–3.6 µs (not kept): the grouped march's own per-element set-up, not the
-/// bound, is what both laws share.
+/// bound, is what both laws share. 2026-11-27 17:17 UTC (idle), 1/p made per load and the
+/// Newton's stop without division (μ as a ratio n/d): law_floor 1.09 µs, FASTSIM 5.42 / 3.48 µs
+/// (1.56×, was 1.62–1.69×), the UBA step 4.99 / 0.540 µs (9.2×); whole histories FASTSIM 388.6 /
+/// 230.0 µs (1.69×), the UBA 400 / 43.2 µs (9.3×). Rows marched aligned at their leading edges
+/// and sorted by length (fewer empty lanes) measured 5.42 against 5.40 µs (not kept).
 fn bench_falling(c: &mut Criterion) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let falling = std::fs::read_to_string(root.join("scenes/stability/stab_fr_step_mem.toml")).unwrap();
