@@ -160,81 +160,21 @@ impl FitSpec {
         Self::read(doc, file).map_err(in_file)
     }
 
+    /// The fit file's tables in order: [fit] with its [[fit.param]], then [set].
     fn read(doc: &Table, file: &Path) -> Result<FitSpec, InputError> {
-        let dir = file.parent().map(Path::to_path_buf).unwrap_or_default();
         let mut top = Section::new("", doc);
         let mut f = top.table("fit")?;
-        let name = f.str("name", "a name of [a-z0-9_]+")?.to_string();
-        if !is_name(&name) {
-            return Err(InputError::new(f.field("name"), format!("{name:?}"), "1 to 100 characters of [a-z0-9_]"));
-        }
+        let name = Self::name(&mut f)?;
         let model = f.str("model", "a built-in model or an [external.NAME] of the scenes")?.to_string();
-        let against = f.str("against", "\"solver:NAME\" or \"reference\"")?;
-        let target = match against.strip_prefix("solver:") {
-            // The same model is allowed: the target runs the scene as written, the fit with [set].
-            Some(s) if !s.is_empty() => Target::Solver(s.to_string()),
-            None if against == "reference" => Target::Reference,
-            _ => {
-                return Err(InputError::new(
-                    f.field("against"),
-                    format!("{against:?}"),
-                    "\"solver:NAME\" (a model of the scenes) or \"reference\"",
-                ))
-            }
-        };
-        let norm_names: Vec<&str> = Norm::ALL.iter().map(|n| n.name()).collect();
-        let norm = f.choice("norm", &norm_names).map(|n| Norm::parse(n).unwrap_or(Norm::RmsDf))?;
-        let suites: Vec<PathBuf> = f
-            .opt_str_list("suites", "folders of scenes, relative to the fit file")?
-            .filter(|s| !s.is_empty())
-            .ok_or_else(|| InputError::new(f.field("suites"), "missing", "a non-empty list of folders of scenes"))?
-            .iter()
-            .map(|s| dir.join(s))
-            .collect();
-        let patterns = |f: &mut Section, key: &str| -> Result<Vec<String>, InputError> {
-            Ok(f.opt_str_list(key, "scene names or patterns (* and ?)")?.unwrap_or_default())
-        };
-        let fit = patterns(&mut f, "fit")?;
-        if fit.is_empty() {
-            return Err(InputError::new(f.field("fit"), "missing or empty", "scene names or patterns (* and ?)"));
-        }
-        let holdout = patterns(&mut f, "holdout")?;
+        let target = Self::target(&mut f)?;
+        let norm = Self::norm(&mut f)?;
+        let suites = Self::suites(&mut f, file)?;
+        let fit = Self::fitted(&mut f)?;
+        let holdout = Self::patterns(&mut f, "holdout")?;
         let max_iterations = f.opt_usize("max_iterations", 1, 100_000)?.unwrap_or(200) as u64;
         let params = Self::params(&mut f)?;
         f.finish()?;
-
-        let s = top.table("set")?;
-        let mut set = Vec::new();
-        let mut used = Vec::new();
-        for (key, v) in s.raw() {
-            let field = s.field(&format!("\"{key}\""));
-            if key.split('.').any(str::is_empty) || key == "name" || key == "solvers" {
-                return Err(InputError::new(
-                    field,
-                    format!("{key:?}"),
-                    "dotted scene keys such as \"model.relaxation_length_mm\" (not name or solvers)",
-                ));
-            }
-            let mut refs = Vec::new();
-            placeholders(v, &mut refs);
-            if let Some(r) = refs.iter().find(|r| !params.iter().any(|p| &p.name == *r)) {
-                let names: Vec<&str> = params.iter().map(|p| p.name.as_str()).collect();
-                return Err(InputError::new(
-                    field,
-                    format!("\"{{{r}}}\""),
-                    format!("a placeholder of a [[fit.param]]: {}", names.join(", ")),
-                ));
-            }
-            used.extend(refs);
-            set.push((key.clone(), v.clone()));
-        }
-        if let Some(p) = params.iter().find(|p| !used.contains(&p.name)) {
-            return Err(InputError::new(
-                format!("fit.param {}", p.name),
-                "not used",
-                format!("a parameter that some [set] value names as \"{{{}}}\"", p.name),
-            ));
-        }
+        let set = Self::set(&mut top, &params)?;
         top.finish()?;
         Ok(FitSpec {
             file: file.to_path_buf(),
@@ -249,6 +189,115 @@ impl FitSpec {
             params,
             set,
         })
+    }
+
+    /// `fit.name`: 1 to 100 characters of [a-z0-9_].
+    fn name(f: &mut Section) -> Result<String, InputError> {
+        let name = f.str("name", "a name of [a-z0-9_]+")?.to_string();
+        if !is_name(&name) {
+            return Err(InputError::new(f.field("name"), format!("{name:?}"), "1 to 100 characters of [a-z0-9_]"));
+        }
+        Ok(name)
+    }
+
+    /// `fit.against`: "solver:NAME" or "reference".
+    fn target(f: &mut Section) -> Result<Target, InputError> {
+        let against = f.str("against", "\"solver:NAME\" or \"reference\"")?;
+        match against.strip_prefix("solver:") {
+            // The same model is allowed: the target runs the scene as written, the fit with [set].
+            Some(s) if !s.is_empty() => Ok(Target::Solver(s.to_string())),
+            None if against == "reference" => Ok(Target::Reference),
+            _ => Err(InputError::new(
+                f.field("against"),
+                format!("{against:?}"),
+                "\"solver:NAME\" (a model of the scenes) or \"reference\"",
+            )),
+        }
+    }
+
+    /// `fit.norm`: one of [`Norm::ALL`] by name.
+    fn norm(f: &mut Section) -> Result<Norm, InputError> {
+        let norm_names: Vec<&str> = Norm::ALL.iter().map(|n| n.name()).collect();
+        f.choice("norm", &norm_names).map(|n| Norm::parse(n).unwrap_or(Norm::RmsDf))
+    }
+
+    /// `fit.suites`: a non-empty list of folders, joined to the fit file's folder.
+    fn suites(f: &mut Section, file: &Path) -> Result<Vec<PathBuf>, InputError> {
+        let dir = file.parent().map(Path::to_path_buf).unwrap_or_default();
+        Ok(f.opt_str_list("suites", "folders of scenes, relative to the fit file")?
+            .filter(|s| !s.is_empty())
+            .ok_or_else(|| InputError::new(f.field("suites"), "missing", "a non-empty list of folders of scenes"))?
+            .iter()
+            .map(|s| dir.join(s))
+            .collect())
+    }
+
+    /// `fit.fit`: the scenes fitted on, one pattern or more.
+    fn fitted(f: &mut Section) -> Result<Vec<String>, InputError> {
+        let fit = Self::patterns(f, "fit")?;
+        if fit.is_empty() {
+            return Err(InputError::new(f.field("fit"), "missing or empty", "scene names or patterns (* and ?)"));
+        }
+        Ok(fit)
+    }
+
+    /// An optional list of scene names or patterns (* and ?), empty when absent.
+    fn patterns(f: &mut Section, key: &str) -> Result<Vec<String>, InputError> {
+        Ok(f.opt_str_list(key, "scene names or patterns (* and ?)")?.unwrap_or_default())
+    }
+
+    /// The [set] table: each dotted scene key with its value, every parameter used by some value.
+    fn set(top: &mut Section, params: &[Param]) -> Result<Vec<(String, Value)>, InputError> {
+        let s = top.table("set")?;
+        let mut set = Vec::new();
+        let mut used = Vec::new();
+        for (key, v) in s.raw() {
+            let field = s.field(&format!("\"{key}\""));
+            Self::set_key(key, &field)?;
+            used.extend(Self::set_refs(v, params, &field)?);
+            set.push((key.clone(), v.clone()));
+        }
+        Self::all_used(params, &used)?;
+        Ok(set)
+    }
+
+    /// A [set] key: dotted scene keys with no empty part, not `name` or `solvers`.
+    fn set_key(key: &str, field: &str) -> Result<(), InputError> {
+        if key.split('.').any(str::is_empty) || key == "name" || key == "solvers" {
+            return Err(InputError::new(
+                field,
+                format!("{key:?}"),
+                "dotted scene keys such as \"model.relaxation_length_mm\" (not name or solvers)",
+            ));
+        }
+        Ok(())
+    }
+
+    /// The parameter names a [set] value refers to, each one of `params`.
+    fn set_refs(v: &Value, params: &[Param], field: &str) -> Result<Vec<String>, InputError> {
+        let mut refs = Vec::new();
+        placeholders(v, &mut refs);
+        if let Some(r) = refs.iter().find(|r| !params.iter().any(|p| &p.name == *r)) {
+            let names: Vec<&str> = params.iter().map(|p| p.name.as_str()).collect();
+            return Err(InputError::new(
+                field,
+                format!("\"{{{r}}}\""),
+                format!("a placeholder of a [[fit.param]]: {}", names.join(", ")),
+            ));
+        }
+        Ok(refs)
+    }
+
+    /// Every parameter among the names `used` by the [set] values.
+    fn all_used(params: &[Param], used: &[String]) -> Result<(), InputError> {
+        if let Some(p) = params.iter().find(|p| !used.contains(&p.name)) {
+            return Err(InputError::new(
+                format!("fit.param {}", p.name),
+                "not used",
+                format!("a parameter that some [set] value names as \"{{{}}}\"", p.name),
+            ));
+        }
+        Ok(())
     }
 
     fn params(f: &mut Section) -> Result<Vec<Param>, InputError> {
