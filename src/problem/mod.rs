@@ -12,6 +12,7 @@ pub use params::{ModelParamSet, ModelParams};
 pub use resolved::ResolvedScene;
 
 use crate::error::InputError;
+use crate::physics::geometry::Extent;
 use crate::physics::{
     CoefficientSource, Coefficients, ContactGeometry, Flexibilities, FrictionLaw, Grid, HertzContact, Material, Memory,
     PatchFlexibility, Planform,
@@ -97,6 +98,111 @@ fn check_loads(
     Ok(())
 }
 
+/// The parts of a problem computed from the scene (not copied): material, contact, grid,
+/// coefficients, rolling step, sampled loading, and the warnings met on the way.
+struct Physics {
+    material: Material,
+    geometry: Arc<dyn ContactGeometry>,
+    coefficients: Coefficients,
+    grid: Grid,
+    rolling: Rolling,
+    loading: Loading,
+    warnings: Vec<String>,
+}
+
+impl Physics {
+    /// Compute a scene's physics in order: material, geometry and grid, coefficients, rolling
+    /// step, loading, and (a contact given per element) the loads checked against the grid.
+    fn resolve(scene: &Scene) -> Result<Physics, InputError> {
+        let material = material_of(scene)?;
+        let (geometry, grid) = scene.geometry.build(scene.fn_n, &material, (scene.mx, scene.my), scene.extent)?;
+        let mut warnings = Vec::new();
+        let coefficients = coefficients_of(scene, &geometry.nominal(), &material, &mut warnings)?;
+        let rolling = rolling_of(scene, grid.dx_mm);
+        let loading = Loading::sample(scene, rolling.dt_s, geometry.as_ref(), &grid, &mut warnings)?;
+        if !geometry.elliptic() {
+            check_loads(geometry.as_ref(), &loading, &mut warnings)?;
+        }
+        Ok(Physics { material, geometry, coefficients, grid, rolling, loading, warnings })
+    }
+}
+
+/// The scene's material from G or E (or both, consistent within [`E_G_TOLERANCE`]) and ν.
+fn material_of(scene: &Scene) -> Result<Material, InputError> {
+    match (scene.material.g_mpa, scene.material.e_mpa) {
+        (Some(g), Some(e)) => material_of_g_and_e(g, e, scene.material.poisson),
+        (Some(g), None) => Ok(Material::from_g(g, scene.material.poisson)),
+        (None, Some(e)) => Ok(Material::from_e(e, scene.material.poisson)),
+        (None, None) => Err(InputError::new("material.g_mpa", "missing", "g_mpa or e_mpa")),
+    }
+}
+
+/// A material given both G and E: they must agree, E = 2G(1 + ν) within [`E_G_TOLERANCE`].
+fn material_of_g_and_e(g_mpa: f64, e_mpa: f64, poisson: f64) -> Result<Material, InputError> {
+    // E = 2G(1 + ν) for an isotropic material; the thesis's own Table 4.1 pair
+    // (G 82000, E 210000, ν 0.28) is 4e-4 off, a rounding of the printed values.
+    let from_g_mpa = 2.0 * g_mpa * (1.0 + poisson);
+    if ((e_mpa - from_g_mpa) / from_g_mpa).abs() > E_G_TOLERANCE {
+        return Err(InputError::new(
+            "material.e_mpa",
+            e_mpa,
+            format!(
+                "E = 2 G (1 + poisson) = {from_g_mpa} within {E_G_TOLERANCE:e} relative, or only one of g_mpa and e_mpa"
+            ),
+        ));
+    }
+    Ok(Material { g_mpa, poisson, e_mpa })
+}
+
+/// Kalker's coefficients at the nominal contact `hertz`, from the source the scene names; its
+/// range checked (the fit's b/a an error, its ν and the table's extrapolation warnings).
+fn coefficients_of(
+    scene: &Scene,
+    hertz: &HertzContact,
+    material: &Material,
+    warnings: &mut Vec<String>,
+) -> Result<Coefficients, InputError> {
+    let ratio = hertz.b_mm / hertz.a_mm;
+    if scene.model.coefficients == CoefficientSource::Fit {
+        check_fit(ratio, scene.material.poisson, warnings)?;
+    }
+    if scene.model.coefficients == CoefficientSource::Table && !(0.1..=10.0).contains(&ratio) {
+        warnings
+            .push(format!("b/a = {ratio:.4} is beyond Kalker's Table A1 (0.1 … 10): c11, c22, c23 are extrapolated"));
+    }
+    Ok(Coefficients::new(scene.model.coefficients, hertz.a_mm, hertz.b_mm, material.poisson))
+}
+
+/// The fit Eq. 2.36's range: b/a within 1/25 … 25 (else an error), ν near 0.27 (else a warning).
+fn check_fit(ratio: f64, poisson: f64, warnings: &mut Vec<String>) -> Result<(), InputError> {
+    if !(1.0 / 25.0..=25.0).contains(&ratio) {
+        return Err(InputError::new(
+            "model.coefficients",
+            "\"fit\"",
+            format!("the fit Eq. 2.36 holds for 1/25 <= b/a <= 25; this contact has b/a = {ratio:.4}: use \"table\""),
+        ));
+    }
+    if (poisson - 0.27).abs() > 0.02 {
+        warnings.push(format!("model.coefficients = fit was made for poisson 0.27, scene has {poisson}"));
+    }
+    Ok(())
+}
+
+/// The rolling step on a grid of element length `dx_mm`: dq = courant·dx, dt = dq / V.
+fn rolling_of(scene: &Scene, dx_mm: f64) -> Rolling {
+    let dq_mm = scene.courant * dx_mm;
+    let dt_s = dq_mm / scene.v_mm_s;
+    Rolling { v_mm_s: scene.v_mm_s, courant: scene.courant, dt_s, dq_mm, motion: scene.motion, chi_deg: scene.chi_deg }
+}
+
+/// The grid's edges [mm] when the scene gives them (`[grid] x_mm, y_mm`), else `None`.
+fn grid_edges_mm(extent: Extent) -> Option<([f64; 2], [f64; 2])> {
+    match extent {
+        Extent::Edges { x_mm, y_mm } => Some((x_mm, y_mm)),
+        Extent::Scale(_) => None,
+    }
+}
+
 /// Everything a solver needs, resolved once.
 #[derive(Debug, Clone)]
 pub struct Problem {
@@ -144,79 +250,32 @@ impl Problem {
     /// Resolve a validated scene whose model names (`solvers`, checked against the registry) and
     /// models' parameters are given; its metrics are chosen after (the pipeline wires the three).
     pub fn resolve(scene: &Scene, solvers: Vec<String>, model_params: ModelParamSet) -> Result<Problem, InputError> {
-        let material = match (scene.material.g_mpa, scene.material.e_mpa) {
-            (Some(g), Some(e)) => {
-                // E = 2G(1 + ν) for an isotropic material; the thesis's own Table 4.1 pair
-                // (G 82000, E 210000, ν 0.28) is 4e-4 off, a rounding of the printed values.
-                let from_g = 2.0 * g * (1.0 + scene.material.poisson);
-                if ((e - from_g) / from_g).abs() > E_G_TOLERANCE {
-                    return Err(InputError::new(
-                        "material.e_mpa",
-                        e,
-                        format!("E = 2 G (1 + poisson) = {from_g} within {E_G_TOLERANCE:e} relative, or only one of g_mpa and e_mpa"),
-                    ));
-                }
-                Material { g_mpa: g, poisson: scene.material.poisson, e_mpa: e }
-            }
-            (Some(g), None) => Material::from_g(g, scene.material.poisson),
-            (None, Some(e)) => Material::from_e(e, scene.material.poisson),
-            (None, None) => return Err(InputError::new("material.g_mpa", "missing", "g_mpa or e_mpa")),
-        };
-        let (geometry, grid) = scene.geometry.build(scene.fn_n, &material, (scene.mx, scene.my), scene.extent)?;
-        let hertz = geometry.nominal();
-        let mut warnings = Vec::new();
-        let ratio = hertz.b_mm / hertz.a_mm;
-        if scene.model.coefficients == CoefficientSource::Fit {
-            if !(1.0 / 25.0..=25.0).contains(&ratio) {
-                return Err(InputError::new("model.coefficients", "\"fit\"", format!("the fit Eq. 2.36 holds for 1/25 <= b/a <= 25; this contact has b/a = {ratio:.4}: use \"table\"")));
-            }
-            if (scene.material.poisson - 0.27).abs() > 0.02 {
-                warnings.push(format!(
-                    "model.coefficients = fit was made for poisson 0.27, scene has {}",
-                    scene.material.poisson
-                ));
-            }
-        }
-        if scene.model.coefficients == CoefficientSource::Table && !(0.1..=10.0).contains(&ratio) {
-            warnings.push(format!(
-                "b/a = {ratio:.4} is beyond Kalker's Table A1 (0.1 … 10): c11, c22, c23 are extrapolated"
-            ));
-        }
-        let coefficients = Coefficients::new(scene.model.coefficients, hertz.a_mm, hertz.b_mm, material.poisson);
-        let dq_mm = scene.courant * grid.dx_mm;
-        let dt_s = dq_mm / scene.v_mm_s;
-        let loading = Loading::sample(scene, dt_s, geometry.as_ref(), &grid, &mut warnings)?;
-        if !geometry.elliptic() {
-            check_loads(geometry.as_ref(), &loading, &mut warnings)?;
-        }
-        let nominal = Sample::nominal(scene);
-        let problem = Problem {
+        let physics = Physics::resolve(scene)?;
+        let problem = Problem::assemble(scene, solvers, model_params, physics);
+        problem.check_derived()?;
+        Ok(problem)
+    }
+
+    /// The problem of `scene` from its resolved physics and the scene's settings, copied as given;
+    /// no metrics yet.
+    fn assemble(scene: &Scene, solvers: Vec<String>, model_params: ModelParamSet, physics: Physics) -> Problem {
+        Problem {
             name: scene.name.clone(),
             solvers,
             metrics: Vec::new(),
             skipped_metrics: Vec::new(),
-            material,
-            geometry,
-            coefficients,
-            grid,
+            material: physics.material,
+            geometry: physics.geometry,
+            coefficients: physics.coefficients,
+            grid: physics.grid,
             grid_scale: scene.grid_scale,
-            grid_edges: match scene.extent {
-                crate::physics::geometry::Extent::Edges { x_mm, y_mm } => Some((x_mm, y_mm)),
-                crate::physics::geometry::Extent::Scale(_) => None,
-            },
-            rolling: Rolling {
-                v_mm_s: scene.v_mm_s,
-                courant: scene.courant,
-                dt_s,
-                dq_mm,
-                motion: scene.motion,
-                chi_deg: scene.chi_deg,
-            },
+            grid_edges: grid_edges_mm(scene.extent),
+            rolling: physics.rolling,
             friction: scene.friction,
             memory: scene.memory,
             friction_rows: scene.friction_rows.clone(),
-            nominal,
-            loading,
+            nominal: Sample::nominal(scene),
+            loading: physics.loading,
             model: scene.model,
             model_params,
             contact_solver: scene.contact_solver,
@@ -226,10 +285,8 @@ impl Problem {
             scene_dir: scene.dir.clone(),
             studies: scene.studies.clone(),
             origin: scene.origin.clone(),
-            warnings,
-        };
-        problem.check_derived()?;
-        Ok(problem)
+            warnings: physics.warnings,
+        }
     }
 
     /// Quantities derived from valid inputs can still be absurd (an axis ratio of 1e-20, a speed

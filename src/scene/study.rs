@@ -86,35 +86,61 @@ fn as_f64(v: &Value) -> Option<f64> {
     }
 }
 
+/// The `n`th `[[study.axis]]` table, checked in this order: its name, varied keys, their common
+/// length, labels and x values.
 fn read_axis(n: usize, t: &Value) -> Result<Axis, InputError> {
     let field = format!("study.axis[{n}]");
     let t = t.as_table().ok_or_else(|| err(&field, t, "a table: name, dotted scene keys with value lists, labels"))?;
-    let name = match t.get("name") {
+    let name = axis_name(t, &field)?;
+    let keys = axis_keys(t, &field)?;
+    let len = axis_len(&keys, &field)?;
+    let labels = axis_labels(t, &field, &keys[0].1, len)?;
+    let x_values = axis_x_values(t, &field, len)?;
+    Ok(Axis { name, keys, labels, x_values })
+}
+
+/// The axis's `name`: a name of [a-z0-9_]+.
+fn axis_name(t: &Table, field: &str) -> Result<String, InputError> {
+    match t.get("name") {
         Some(Value::String(s))
             if !s.is_empty() && s.bytes().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'_') =>
         {
-            s.clone()
+            Ok(s.clone())
         }
-        Some(v) => return Err(err(format!("{field}.name"), v, "a name of [a-z0-9_]+")),
-        None => return Err(err(format!("{field}.name"), "missing", "a name of [a-z0-9_]+")),
-    };
-    let mut keys = Vec::new();
-    for (k, v) in t.iter().filter(|(k, _)| !["name", "labels", "x_values"].contains(&k.as_str())) {
-        let values = v
-            .as_array()
-            .filter(|a| !a.is_empty())
-            .ok_or_else(|| err(format!("{field}.\"{k}\""), v, "a non-empty array of values"))?;
-        if k.split('.').any(str::is_empty) || k == "name" {
-            return Err(err(&field, format!("{k:?}"), "dotted scene keys such as \"contact.mu\""));
-        }
-        if let Some(v) = values.iter().find(|v| v.as_float().is_some_and(|f| !f.is_finite())) {
-            return Err(err(format!("{field}.\"{k}\""), v, "finite numbers (no nan or inf)"));
-        }
-        keys.push((k.clone(), values.clone()));
+        Some(v) => Err(err(format!("{field}.name"), v, "a name of [a-z0-9_]+")),
+        None => Err(err(format!("{field}.name"), "missing", "a name of [a-z0-9_]+")),
     }
+}
+
+/// The axis's varied keys, in the table's order: every entry but `name`, `labels` and
+/// `x_values`, each as [`axis_key`] reads it.
+fn axis_keys(t: &Table, field: &str) -> Result<Vec<(String, Vec<Value>)>, InputError> {
+    t.iter()
+        .filter(|(k, _)| !["name", "labels", "x_values"].contains(&k.as_str()))
+        .map(|(k, v)| axis_key(k, v, field))
+        .collect()
+}
+
+/// One varied key `k` and its values `v`: a non-empty array, a dotted scene key, finite numbers.
+fn axis_key(k: &str, v: &Value, field: &str) -> Result<(String, Vec<Value>), InputError> {
+    let values = v
+        .as_array()
+        .filter(|a| !a.is_empty())
+        .ok_or_else(|| err(format!("{field}.\"{k}\""), v, "a non-empty array of values"))?;
+    if k.split('.').any(str::is_empty) || k == "name" {
+        return Err(err(field, format!("{k:?}"), "dotted scene keys such as \"contact.mu\""));
+    }
+    if let Some(v) = values.iter().find(|v| v.as_float().is_some_and(|f| !f.is_finite())) {
+        return Err(err(format!("{field}.\"{k}\""), v, "finite numbers (no nan or inf)"));
+    }
+    Ok((k.to_string(), values.clone()))
+}
+
+/// The axis's length: that of its first key, which every other key must share (at least one key).
+fn axis_len(keys: &[(String, Vec<Value>)], field: &str) -> Result<usize, InputError> {
     let len = keys.first().map(|(_, v)| v.len()).ok_or_else(|| {
         err(
-            &field,
+            field,
             "no varied key",
             "at least one dotted scene key with a list of values, e.g. \"contact.mu\" = [0.1, 0.2]",
         )
@@ -126,21 +152,29 @@ fn read_axis(n: usize, t: &Value) -> Result<Axis, InputError> {
             format!("{len} values, as the axis's first key"),
         ));
     }
-    let labels = match t.get("labels") {
-        None => keys[0].1.iter().map(label_of).collect(),
+    Ok(len)
+}
+
+/// The axis's `labels`: `len` strings, or by default the `first` key's values, compact ([`label_of`]).
+fn axis_labels(t: &Table, field: &str, first: &[Value], len: usize) -> Result<Vec<String>, InputError> {
+    match t.get("labels") {
+        None => Ok(first.iter().map(label_of).collect()),
         Some(Value::Array(a)) if a.len() == len && a.iter().all(Value::is_str) => {
-            a.iter().filter_map(|v| v.as_str().map(String::from)).collect()
+            Ok(a.iter().filter_map(|v| v.as_str().map(String::from)).collect())
         }
-        Some(v) => return Err(err(format!("{field}.labels"), v, format!("{len} strings, one per value"))),
-    };
-    let x_values = match t.get("x_values") {
-        None => None,
+        Some(v) => Err(err(format!("{field}.labels"), v, format!("{len} strings, one per value"))),
+    }
+}
+
+/// The axis's `x_values` if given: `len` finite numbers, the axis's numbers on the curves' x.
+fn axis_x_values(t: &Table, field: &str, len: usize) -> Result<Option<Vec<f64>>, InputError> {
+    match t.get("x_values") {
+        None => Ok(None),
         Some(Value::Array(a)) if a.len() == len && a.iter().all(|v| as_f64(v).is_some_and(f64::is_finite)) => {
-            Some(a.iter().filter_map(as_f64).collect())
+            Ok(Some(a.iter().filter_map(as_f64).collect()))
         }
-        Some(v) => return Err(err(format!("{field}.x_values"), v, format!("{len} numbers, one per value (finite)"))),
-    };
-    Ok(Axis { name, keys, labels, x_values })
+        Some(v) => Err(err(format!("{field}.x_values"), v, format!("{len} numbers, one per value (finite)"))),
+    }
 }
 
 /// Set the dotted key `path` of `doc` to `value`, creating tables on the way.
