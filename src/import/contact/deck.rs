@@ -304,40 +304,80 @@ impl CaseReader<'_> {
         if let Some(start) = self.solver(d.g)? {
             state.slip_start = Some(start);
         }
+        self.kinematics(state)?;
+        self.friction(&d, state)?;
+        if matches!(d.c, 2..=4 | 9) {
+            self.rolling_and_material(&d, state)?;
+        }
+        self.damping_and_heat(&d)?;
+        if d.d == 2 {
+            state.potcon = Some(self.potcon()?);
+        }
+        let gridded = state.potcon.as_ref().is_some_and(|p| p.ipotcn() > 0);
+        if d.z == 2 && gridded {
+            let npot = state.potcon.as_ref().map_or(0, |p| p.mx_my().0 * p.mx_my().1);
+            state.undeformed = Some(self.undeformed(npot)?);
+        }
+        if d.l != 1 && d.v == 3 {
+            self.friction_per_row(&d, state)?;
+        }
+        self.extra_rhs(&d, state)?;
+        if d.s >= 2 {
+            self.subsurface(d.s)?;
+        }
+        Ok(d)
+    }
+
+    /// PEN or FN, CKSI or FX, CETA or FY, CPHI, and SPINXO, SPINYO where given.
+    fn kinematics(&mut self, state: &mut State) -> Result<(), DeckError> {
         let (k, _) = self.lx.group("kinematics PEN/FN, CKSI/FX, CETA/FY, CPHI", &[Kind::Real; 4], (2, Kind::Real))?;
         (state.pen_or_fn, state.cksi_or_fx, state.ceta_or_fy, state.cphi_per_mm) = (k[0], k[1], k[2], k[3]);
         state.spin_centre_mm = if k.len() >= 6 { [k[4], k[5]] } else { [0.0, 0.0] };
+        Ok(())
+    }
+
+    /// L, V: a new friction law (L ≠ 1) and, with V = 0, its one set of parameters and memory
+    /// (V = 3: one set per grid row, read after the geometry, [`CaseReader::friction_per_row`]).
+    fn friction(&mut self, d: &Digits, state: &mut State) -> Result<(), DeckError> {
         if d.l == 1 && (d.v == 3) == state.friction_rows.is_empty() {
             // CONTACT (`m_sinput.f90`): switching V on or off needs new friction parameters.
             let allowed =
                 "the previous case's V when L = 1 keeps its friction (V changes only with new friction, L != 1)";
             return Err(self.digit_error("L-D-C-M-Z-E", "V", d.v.into(), allowed));
         }
-        if d.l != 1 {
-            state.friction_law = d.l;
-            state.friction_rows.clear();
-            state.memory = [0.0; 2];
-            if d.v == 3 {
-                // One set per grid row follows the geometry; no single set is in force.
-                state.friction.clear();
-            }
-            if d.v == 0 {
-                state.friction = self.friction_values(d.l)?;
-                if matches!(d.l, 2..=4 | 6) {
-                    let m = self.reals("MEMDST, MEM_S0", 2)?;
-                    state.memory = [m[0], m[1]];
-                }
+        if d.l == 1 {
+            return Ok(());
+        }
+        state.friction_law = d.l;
+        state.friction_rows.clear();
+        state.memory = [0.0; 2];
+        if d.v == 3 {
+            // One set per grid row follows the geometry; no single set is in force.
+            state.friction.clear();
+        }
+        if d.v == 0 {
+            state.friction = self.friction_values(d.l)?;
+            if matches!(d.l, 2..=4 | 6) {
+                let m = self.reals("MEMDST, MEM_S0", 2)?;
+                state.memory = [m[0], m[1]];
             }
         }
-        if matches!(d.c, 2..=4 | 9) {
-            state.inflcf = d.c;
-            if d.t >= 2 {
-                let (v, _) =
-                    self.lx.group("CHI, DQ, VELOC", &[Kind::Angle, Kind::Real, Kind::Real], (1, Kind::Real))?;
-                (state.chi_rad, state.dq_mm, state.veloc_mm_s, state.rolling_read) = (v[0], v[1], v[2], true);
-            }
-            self.material(&d, state)?;
+        Ok(())
+    }
+
+    /// C = 2, 3, 4, 9: the influence functions, CHI, DQ, VELOC for rolling (T ≥ 2) and the material.
+    fn rolling_and_material(&mut self, d: &Digits, state: &mut State) -> Result<(), DeckError> {
+        state.inflcf = d.c;
+        if d.t >= 2 {
+            let (v, _) = self.lx.group("CHI, DQ, VELOC", &[Kind::Angle, Kind::Real, Kind::Real], (1, Kind::Real))?;
+            (state.chi_rad, state.dq_mm, state.veloc_mm_s, state.rolling_read) = (v[0], v[1], v[2], true);
         }
+        self.material(d, state)
+    }
+
+    /// M = 2: the damping line; H = 3: both bodies' temperature lines (and BETAPL with M = 4).
+    /// Read past: the project models neither.
+    fn damping_and_heat(&mut self, d: &Digits) -> Result<(), DeckError> {
         if d.m2 == 2 {
             self.reals("CDAMPN, CDAMPT, DFNMAX, DFTMAX", 4)?;
         }
@@ -348,25 +388,27 @@ impl CaseReader<'_> {
                 self.reals("BETAPL", 1)?;
             }
         }
-        if d.d == 2 {
-            state.potcon = Some(self.potcon()?);
+        Ok(())
+    }
+
+    /// V = 3 with a new law: one set of friction parameters per grid row (MY of the potential
+    /// contact), then the memory.
+    fn friction_per_row(&mut self, d: &Digits, state: &mut State) -> Result<(), DeckError> {
+        let my = state.potcon.as_ref().map_or(0, |p| p.mx_my().1);
+        for _ in 0..my {
+            let row = self.friction_values(d.l)?;
+            state.friction_rows.extend(row);
         }
-        let gridded = state.potcon.as_ref().is_some_and(|p| p.ipotcn() > 0);
-        if d.z == 2 && gridded {
-            let npot = state.potcon.as_ref().map_or(0, |p| p.mx_my().0 * p.mx_my().1);
-            state.undeformed = Some(self.undeformed(npot)?);
+        if matches!(d.l, 2..=4 | 6) {
+            let m = self.reals("MEMDST, MEM_S0", 2)?;
+            state.memory = [m[0], m[1]];
         }
-        if d.l != 1 && d.v == 3 {
-            let my = state.potcon.as_ref().map_or(0, |p| p.mx_my().1);
-            for _ in 0..my {
-                let row = self.friction_values(d.l)?;
-                state.friction_rows.extend(row);
-            }
-            if matches!(d.l, 2..=4 | 6) {
-                let m = self.reals("MEMDST, MEM_S0", 2)?;
-                state.memory = [m[0], m[1]];
-            }
-        }
+        Ok(())
+    }
+
+    /// E: whether an extra right-hand side (EXRHS) is in force (0: none, 1: as before, else a new
+    /// one), its values read past where E = 9 gives them per element.
+    fn extra_rhs(&mut self, d: &Digits, state: &mut State) -> Result<(), DeckError> {
         state.extra_rhs = match d.e {
             0 => false,
             1 => state.extra_rhs,
@@ -376,10 +418,7 @@ impl CaseReader<'_> {
             let npot = state.potcon.as_ref().map_or(0, |p| p.mx_my().0 * p.mx_my().1);
             self.lx.array("EXRHS", 2 * npot)?;
         }
-        if d.s >= 2 {
-            self.subsurface(d.s)?;
-        }
-        Ok(d)
+        Ok(())
     }
 
     /// G: the iteration constants; INISLP, OMGSLP where G = 2, 3, 4 gives them.
