@@ -43,31 +43,7 @@ pub struct FitOutcome {
 /// Run a fit: load the scenes and targets, search, and measure before and after.
 pub fn fit(spec: &FitSpec, refs: &References) -> Result<FitOutcome, Error> {
     let sources = suite::scene_files(&spec.suites, None)?;
-    let names: Vec<String> = sources.iter().map(|s| s.name.clone()).collect();
-    // A pattern that matches nothing is a typo, not an empty set (README: names or patterns).
-    if let Some((key, pattern)) = spec.unmatched(&names) {
-        return Err(InputError::new(
-            format!("{}: fit.{key}", spec.file.display()),
-            format!("{pattern:?}"),
-            format!(
-                "a name or pattern (* and ?) matching a scene of {}",
-                spec.suites.iter().map(|s| s.display().to_string()).collect::<Vec<_>>().join(", ")
-            ),
-        )
-        .into());
-    }
-    let (fitted, held_out) = (spec.select(&names, false), spec.select(&names, true));
-    if fitted.is_empty() {
-        return Err(InputError::new(
-            format!("{}: fit.fit", spec.file.display()),
-            spec.fit.join(", "),
-            format!(
-                "names or patterns matching scenes of {}",
-                spec.suites.iter().map(|s| s.display().to_string()).collect::<Vec<_>>().join(", ")
-            ),
-        )
-        .into());
-    }
+    let (fitted, held_out) = select(spec, &sources)?;
     let load = |names: &[String]| -> Result<Vec<Case>, Error> {
         sources.iter().filter(|s| names.contains(&s.name)).map(|s| Case::load(spec, s, refs)).collect()
     };
@@ -83,9 +59,66 @@ pub fn fit(spec: &FitSpec, refs: &References) -> Result<FitOutcome, Error> {
         )
         .into());
     }
+    let found = search(spec, &fit_cases)?;
+    let values = spec.values(&found.best);
+    let before_holdout = (!holdout_cases.is_empty()).then(|| measure(&holdout_cases, &start)).transpose()?;
+    let after_holdout = (!holdout_cases.is_empty()).then(|| measure(&holdout_cases, &values)).transpose()?;
+    Ok(FitOutcome {
+        spec: spec.clone(),
+        fitted,
+        held_out,
+        after_fit: measure(&fit_cases, &values)?,
+        values,
+        before_fit,
+        before_holdout,
+        after_holdout,
+        iterations: found.iterations,
+        evaluations: found.evaluations,
+        ended: found.ended,
+    })
+}
+
+/// The scenes of the spec's suites it fits and holds out, by name; a pattern that matches nothing
+/// is a typo, not an empty set (README: names or patterns), and the fitted set may not be empty.
+fn select(spec: &FitSpec, sources: &[suite::SceneSource]) -> Result<(Vec<String>, Vec<String>), Error> {
+    let names: Vec<String> = sources.iter().map(|s| s.name.clone()).collect();
+    let suites = || spec.suites.iter().map(|s| s.display().to_string()).collect::<Vec<_>>().join(", ");
+    if let Some((key, pattern)) = spec.unmatched(&names) {
+        return Err(InputError::new(
+            format!("{}: fit.{key}", spec.file.display()),
+            format!("{pattern:?}"),
+            format!("a name or pattern (* and ?) matching a scene of {}", suites()),
+        )
+        .into());
+    }
+    let (fitted, held_out) = (spec.select(&names, false), spec.select(&names, true));
+    if fitted.is_empty() {
+        return Err(InputError::new(
+            format!("{}: fit.fit", spec.file.display()),
+            spec.fit.join(", "),
+            format!("names or patterns matching scenes of {}", suites()),
+        )
+        .into());
+    }
+    Ok((fitted, held_out))
+}
+
+/// What the search found: the best point in the search coordinates, why it ended, its
+/// iterations and the objective's evaluations.
+struct Found {
+    best: Vec<f64>,
+    ended: String,
+    iterations: u64,
+    evaluations: u64,
+}
+
+/// Nelder–Mead from the spec's start (a simplex of [`SIMPLEX_STEP`] along each coordinate) over
+/// the fitted cases, run by argmin's executor until the cost's spread is below
+/// [`COST_SD_TOLERANCE`] or `max_iterations`.
+fn search(spec: &FitSpec, fit_cases: &[Case]) -> Result<Found, Error> {
     // A model that fails inside the search leaves its typed error here (argmin's errors are untyped).
     let failure = std::sync::Mutex::new(None);
-    let problem = Objective { spec, cases: &fit_cases, failure: &failure };
+    let problem = Objective { spec, cases: fit_cases, failure: &failure };
     let z0: Vec<f64> = spec.params.iter().map(|p| p.coordinate(p.start)).collect();
     let mut simplex = vec![z0.clone()];
     for i in 0..z0.len() {
@@ -105,24 +138,11 @@ pub fn fit(spec: &FitSpec, refs: &References) -> Result<FitOutcome, Error> {
         }
     };
     let state = result.state();
-    let best = state.get_best_param().cloned().unwrap_or(z0);
-    let values = spec.values(&best);
-    let ended = state.get_termination_reason().map_or("unknown", TerminationReason::text).to_string();
-    let (iterations, evaluations) = (state.get_iter(), result.problem().counts.get("cost_count").copied().unwrap_or(0));
-    let before_holdout = (!holdout_cases.is_empty()).then(|| measure(&holdout_cases, &start)).transpose()?;
-    let after_holdout = (!holdout_cases.is_empty()).then(|| measure(&holdout_cases, &values)).transpose()?;
-    Ok(FitOutcome {
-        spec: spec.clone(),
-        fitted,
-        held_out,
-        after_fit: measure(&fit_cases, &values)?,
-        values,
-        before_fit,
-        before_holdout,
-        after_holdout,
-        iterations,
-        evaluations,
-        ended,
+    Ok(Found {
+        best: state.get_best_param().cloned().unwrap_or(z0),
+        ended: state.get_termination_reason().map_or("unknown", TerminationReason::text).to_string(),
+        iterations: state.get_iter(),
+        evaluations: result.problem().counts.get("cost_count").copied().unwrap_or(0),
     })
 }
 
