@@ -2,6 +2,7 @@
 //! `<solver>.csv` format of docs/scene-format.md; made by the [`sample_loop`] from a built-in model's
 //! steps, or read from an [`external`] model's output.
 
+pub mod abscissa;
 pub mod external;
 pub mod sample_loop;
 

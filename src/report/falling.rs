@@ -7,6 +7,7 @@
 //! data only.
 
 use crate::comparison::references::References;
+use crate::history::abscissa::abscissa;
 use crate::history::History;
 use crate::metrics::oscillation_index::{oscillation_index, own_oscillation};
 use crate::problem::LoadingKind;
@@ -35,21 +36,7 @@ fn case_of(name: &str) -> String {
 
 /// The x of a row: the quantity a sweep moves (cx, cy, cs or the speed), time otherwise.
 fn x_of(sc: &StoredScene, h: &History) -> (&'static str, Vec<f64>) {
-    let v = sc.scene.v_mm_s;
-    if sc.scene.kind != LoadingKind::Sweep {
-        return ("t_s", h.rows.iter().map(|r| r.sample.t_s).collect());
-    }
-    // A swept quantity of a sample at the scene's speed.
-    type Swept = fn(&crate::problem::Sample, f64) -> f64;
-    let quantities: [(&str, Swept); 4] =
-        [("cx", |s, _| s.cx), ("cy", |s, _| s.cy), ("cs", |s, _| s.cs), ("v_mm_s", |s, v| s.speed_mm_s(v))];
-    let spread = |q: Swept| {
-        let vals: Vec<f64> = h.rows.iter().map(|r| q(&r.sample, v)).collect();
-        let (lo, hi) = vals.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
-        (hi - lo) / hi.abs().max(lo.abs()).max(f64::MIN_POSITIVE)
-    };
-    let (name, q) = quantities.into_iter().max_by(|a, b| spread(a.1).total_cmp(&spread(b.1))).unwrap_or(quantities[0]);
-    (name, h.rows.iter().map(|r| q(&r.sample, v)).collect())
+    abscissa(h, sc.scene.kind, sc.scene.v_mm_s)
 }
 
 /// |f| = |(fx, fy)|/FN of each row.
@@ -133,10 +120,9 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
             .collect();
         let file = format!("falling_{}.svg", sc.name);
         let title = format!("{} — friction falling with the slip velocity", sc.name);
-        let xlabel = if xname == "v_mm_s" { "V [mm/s]".to_string() } else { titles::of(xname) };
         figures.push((
             file.clone(),
-            line_chart(&title, &Axis::linear(&xlabel), &Axis::linear(titles::of("fx_over_fn")), &series),
+            line_chart(&title, &Axis::linear(titles::of(xname)), &Axis::linear(titles::of("fx_over_fn")), &series),
         ));
         let _ = writeln!(pictures, "![{} fx/fn](figures/{file})", sc.name);
     }

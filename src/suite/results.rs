@@ -164,7 +164,8 @@ pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
     }
     for solver in &s.scene.solvers {
         let file = d.join(format!("{solver}.csv"));
-        let h = History::from_csv(solver, &read(&format!("{solver}.csv"))?).map_err(Error::format(&file))?;
+        let mut h = History::from_csv(solver, &read(&format!("{solver}.csv"))?).map_err(Error::format(&file))?;
+        restore_speeds(&mut h, &s.scene);
         s.histories.insert(solver.clone(), h);
         // What an external model printed, carried along (by `merge`) when the folder holds it.
         for log in [format!("{solver}.stdout.txt"), format!("{solver}.stderr.txt")] {
@@ -184,6 +185,18 @@ pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
         }
     }
     Ok(s)
+}
+
+/// The rows' own rolling speeds (a table's `v_mm_s`, a speed sweep), which a history CSV does
+/// not hold, from scene.json's loading, matched by step.
+fn restore_speeds(h: &mut History, scene: &ResolvedScene) {
+    let speeds: BTreeMap<usize, f64> = scene.history.iter().filter_map(|s| Some((s.step, s.v_mm_s?))).collect();
+    if speeds.is_empty() {
+        return;
+    }
+    for row in &mut h.rows {
+        row.sample.v_mm_s = speeds.get(&row.sample.step).copied();
+    }
 }
 
 /// Names of the scene folders in `dir` (those holding a scene.json), sorted.

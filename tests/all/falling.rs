@@ -117,3 +117,22 @@ fn polach_fit_to_the_falling_curve() {
     let (before, after) = row("held out", "rms_df");
     assert!((before - 0.04274).abs() < 1e-4 && (after - 0.03585).abs() < 2e-4, "{before} -> {after}");
 }
+
+/// A speed sweep (fr_exp_mem_speed_sweep: cx = 0.01 at V = 5 to 45 m/s) reads back with each
+/// row's speed, from scene.json's loading for the stored histories and from the v_mm_s column
+/// for CONTACT's, so that the report draws it against V (`history::abscissa`), not at the
+/// scene's single `[rolling] v_mm_s`.
+#[test]
+fn a_speed_sweep_reads_back_with_its_speeds() {
+    use creepbench::comparison::references::References;
+    use creepbench::history::abscissa::abscissa;
+    let golden = root().join("golden");
+    let sc = creepbench::suite::results::read_scene(&golden, "fr_exp_mem_speed_sweep").unwrap();
+    let want: Vec<f64> = (0..17).map(|k| 5000.0 + 2500.0 * k as f64).collect();
+    let refs = References::load(&root().join("reference")).unwrap();
+    let contact = refs.history("fr_exp_mem_speed_sweep").unwrap();
+    assert_eq!(sc.histories.len(), 5);
+    for (name, h) in sc.histories.iter().chain([(&"CONTACT".to_string(), contact)]) {
+        assert_eq!(abscissa(h, sc.scene.kind, sc.scene.v_mm_s), ("v_mm_s", want.clone()), "{name}");
+    }
+}

@@ -108,8 +108,8 @@ impl ContactCases {
 }
 
 /// A CONTACT history CSV (the reference READMEs' format) as a [`History`] named "CONTACT": steps
-/// shifted by `step_offset` (the thesis sweeps number from 0, ours from 1), `cs` and `mu` read
-/// where the file has them, and the extra columns `n_adhesion, n_slip` plus `extra`.
+/// shifted by `step_offset` (the thesis sweeps number from 0, ours from 1), `cs`, `mu` and the
+/// row's rolling speed `v_mm_s` read where the file has them, and the extra columns `n_adhesion, n_slip` plus `extra`.
 pub fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> Result<History, Error> {
     let text = read(path)?;
     let fail = Error::format(path);
@@ -126,7 +126,7 @@ pub fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> Result<H
         Ok(c) => c,
         Err(e) => return Err(fail(e)),
     };
-    let (cs_col, mu_col) = (find("cs"), find("mu"));
+    let (cs_col, mu_col, v_col) = (find("cs"), find("mu"), find("v_mm_s"));
     let mut extra_names = vec!["n_adhesion", "n_slip"];
     extra_names.extend_from_slice(extra);
     let mut h = History::new("CONTACT", &extra_names);
@@ -156,16 +156,17 @@ pub fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> Result<H
                     what: "a whole step index >= 0, greater than the previous row's",
                 });
             }
+            let sample = Sample::given(
+                step,
+                n(cols[1])?,
+                n(cols[2])?,
+                n(cols[3])?,
+                opt(cs_col, 0.0)?,
+                n(cols[4])?,
+                opt(mu_col, f64::NAN)?,
+            );
             Ok(Row {
-                sample: Sample::given(
-                    step,
-                    n(cols[1])?,
-                    n(cols[2])?,
-                    n(cols[3])?,
-                    opt(cs_col, 0.0)?,
-                    n(cols[4])?,
-                    opt(mu_col, f64::NAN)?,
-                ),
+                sample: Sample { v_mm_s: v_col.map(n).transpose()?, ..sample },
                 fx_over_fn: n(cols[5])?,
                 fy_over_fn: n(cols[6])?,
                 extra: cols[7..].iter().map(|&c| n(c)).collect::<Result<Vec<f64>, FormatError>>()?,

@@ -2,8 +2,9 @@
 //! `frequency [Hz]`, `delay_ratio` → `delay ratio [–]`), never the raw key.
 
 /// Known keys and metrics with their titles.
-const KNOWN: [(&str, &str); 23] = [
+const KNOWN: [(&str, &str); 24] = [
     ("t_s", "t [s]"),
+    ("v_mm_s", "V [mm/s]"),
     ("cx", "creepage c_x [–]"),
     ("cy", "creepage c_y [–]"),
     ("cs", "spin creepage c_s [1/mm]"),
