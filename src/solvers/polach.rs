@@ -113,7 +113,7 @@ impl Stepper for Polach<'_> {
         let s = sx.hypot(sy);
         let (mut fx, mut fy) = (0.0, 0.0);
         if s > 0.0 {
-            let mu = falling_friction(at.mu, s * self.p.rolling.v_mm_s * 1e-3, q);
+            let mu = falling_friction(at.mu, s * at.speed_mm_s(self.p.rolling.v_mm_s) * 1e-3, q);
             let stiffness = 3.0 * g / (8.0 * a) * ((c.c11 * sx / s).powi(2) + (c.c22 * sy / s).powi(2)).sqrt();
             let eps = 2.0 / 3.0 * stiffness * PI * a * a * b / (at.fn_n * mu) * s;
             let f = mu * resultant(eps, q.k_a, q.k_s);

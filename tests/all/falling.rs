@@ -89,7 +89,8 @@ fn uba_refuses_a_stiff_memoryless_step() {
 
 /// The shipped Polach fit (fits/polach_falling.toml) against CONTACT's falling curve
 /// fr_exp_sweep_cx: A = 0.3868, B = 0.6572 s/m; RMS |Δf| on the fitted curve 0.0678 -> 0.00896,
-/// max 0.158 -> 0.0174; held out (the same law's speed sweep with memory) RMS 0.0427 -> 0.0359.
+/// max 0.158 -> 0.0174; held out (the same law's speed sweep with memory, Polach's w = s V at
+/// each row's speed) RMS 0.0418 -> 0.00277.
 #[test]
 fn polach_fit_to_the_falling_curve() {
     let out = tempdir("fit_polach_falling").join("polach.toml");
@@ -115,7 +116,7 @@ fn polach_fit_to_the_falling_curve() {
     let (before, after) = row("fitted", "rms_df");
     assert!((before - 0.0678).abs() < 1e-4 && (after - 0.00896).abs() < 1e-4, "{before} -> {after}");
     let (before, after) = row("held out", "rms_df");
-    assert!((before - 0.04274).abs() < 1e-4 && (after - 0.03585).abs() < 2e-4, "{before} -> {after}");
+    assert!((before - 0.04178).abs() < 1e-4 && (after - 0.00277).abs() < 2e-4, "{before} -> {after}");
 }
 
 /// A speed sweep (fr_exp_mem_speed_sweep: cx = 0.01 at V = 5 to 45 m/s) reads back with each

@@ -24,6 +24,27 @@ fn polach_has_the_linear_slope_and_saturates_at_mu() {
     assert!(f < mu && mu - f < 1e-3, "{f}");
 }
 
+/// Polach's falling friction at each row's own speed: a sweep over the rolling speed at
+/// cx = 0.2 (V = 1, 3, 5 m/s: w = 0.2, 0.6, 1.0 m/s) against Eq. 8 and the closed form of each row.
+#[test]
+fn polach_falls_with_the_rows_speed() {
+    let mu0 = 0.5;
+    let extra = "[model]\npolach_k_a = 1.0\npolach_k_s = 0.4\npolach_a = 0.4\npolach_b_s_per_m = 0.6";
+    let creepage = format!("{}\ncx = 0.2", sweep("v_mm_s", 1000.0, 5000.0, 3));
+    let p = problem(&scene_text("pol", "[\"polach\"]", mu0, 22, &creepage, extra));
+    let f: Vec<f64> = run(&p, "polach").rows.iter().map(|r| r.fx_over_fn).collect();
+    let (h, c, g) = (p.hertz(), p.coefficients, p.material.g_mpa);
+    for (k, w_m_s) in [0.2f64, 0.6, 1.0].into_iter().enumerate() {
+        let mu = mu0 * (0.6 * (-0.6 * w_m_s).exp() + 0.4);
+        let eps = 2.0 / 3.0 * (3.0 * g * c.c11 / (8.0 * h.a_mm)) * std::f64::consts::PI * h.a_mm * h.a_mm * h.b_mm
+            / (h.fn_n * mu)
+            * 0.2;
+        let expected = mu * resultant(eps, 1.0, 0.4);
+        assert!((f[k] - expected).abs() < 1e-12, "row {k} (w = {w_m_s} m/s): {} vs {expected}", f[k]);
+    }
+    assert!(f[0] > f[1] && f[1] > f[2], "{f:?}");
+}
+
 #[test]
 fn polach_falling_friction_and_reductions() {
     let mu0 = 0.5;
