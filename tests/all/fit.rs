@@ -223,4 +223,31 @@ fn run_puts_the_fitted_variant_beside_the_published_model() {
     let ladder_rms: f64 = ladder_row.split('|').nth(6).unwrap().trim().parse().unwrap();
     assert_eq!(format!("{ladder_rms:.4}"), format!("{published:.4}"), "{ladder_row}");
     assert!(report.contains("The fitted variant beside the published `relaxation`"));
+    // The before/after curves: the two fitted scenes, then the held-out one the fitted length
+    // carries worst; on the fitted scenes the fitted curve is the closer to the exact theory.
+    let curves = record["curves"].as_array().unwrap();
+    let sets: Vec<(&str, &str)> =
+        curves.iter().map(|c| (c["scene"].as_str().unwrap(), c["set"].as_str().unwrap())).collect();
+    assert_eq!(sets[..2], [("sine_f10_mu10", "fitted"), ("sine_f30_mu10", "fitted")], "{sets:?}");
+    assert_eq!(sets.len(), 3, "{sets:?}");
+    assert_eq!(sets[2].1, "held out");
+    let ys = |c: &serde_json::Value, k: &str| -> Vec<f64> {
+        c[k].as_array().unwrap().iter().map(|p| p[1].as_f64().unwrap()).collect()
+    };
+    let rms =
+        |a: &[f64], b: &[f64]| (a.iter().zip(b).map(|(x, y)| (x - y).powi(2)).sum::<f64>() / a.len() as f64).sqrt();
+    for c in &curves[..2] {
+        let (target, before, after) = (ys(c, "target"), ys(c, "before"), ys(c, "after"));
+        assert!(target.len() > 50 && before.len() == target.len() && after.len() == target.len(), "{}", c["scene"]);
+        let (b, a) = (rms(&before, &target), rms(&after, &target));
+        println!("{}: RMS |dfx| before {b:.4}, after {a:.4}", c["scene"]);
+        assert!(a < 0.8 * b, "{}: {b} -> {a}", c["scene"]);
+    }
+    for (scene, _) in &sets {
+        let svg = std::fs::read_to_string(rep.join(format!("figures/fit_relaxation_sine_{scene}.svg"))).unwrap();
+        for model in ["contact", "relaxation", "relaxation (fitted)"] {
+            assert!(svg.contains(&format!("data-model=\"{model}\"")), "{scene}: {model}");
+        }
+        assert!(report.contains(&format!("figures/fit_relaxation_sine_{scene}.svg")), "{scene}");
+    }
 }

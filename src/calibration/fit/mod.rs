@@ -4,6 +4,7 @@
 //! sine transform), and judge the fitted values on held-out scenes as well as on the fitted ones.
 //! The result is a scene `[model]` block (the `[set]` keys with the fitted values).
 
+mod curves;
 pub mod objective;
 pub mod record;
 pub mod spec;
@@ -38,6 +39,8 @@ pub struct FitOutcome {
     pub evaluations: u64,
     /// How the search ended (argmin's termination reason).
     pub ended: String,
+    /// The before/after curves ([`curves::curves`]).
+    pub curves: Vec<record::CurveRecord>,
 }
 
 /// Run a fit: load the scenes and targets, search, and measure before and after.
@@ -63,6 +66,8 @@ pub fn fit(spec: &FitSpec, refs: &References) -> Result<FitOutcome, Error> {
     let values = spec.values(&found.best);
     let before_holdout = (!holdout_cases.is_empty()).then(|| measure(&holdout_cases, &start)).transpose()?;
     let after_holdout = (!holdout_cases.is_empty()).then(|| measure(&holdout_cases, &values)).transpose()?;
+    let sets = (spec.assignments(&start), spec.assignments(&values));
+    let curves = curves::curves(&spec.model, (&fit_cases, &holdout_cases), (&sets.0, &sets.1))?;
     Ok(FitOutcome {
         spec: spec.clone(),
         fitted,
@@ -75,6 +80,7 @@ pub fn fit(spec: &FitSpec, refs: &References) -> Result<FitOutcome, Error> {
         iterations: found.iterations,
         evaluations: found.evaluations,
         ended: found.ended,
+        curves,
     })
 }
 

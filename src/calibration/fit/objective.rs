@@ -129,6 +129,18 @@ impl Case {
     }
 }
 
+impl Case {
+    /// The model on this scene with the set keys `set`: the resolved problem and the history.
+    pub fn run(&self, model: &str, set: &[(String, Value)]) -> Result<(crate::problem::Problem, History), Error> {
+        run_one(&self.source, with(&self.doc, model, set, "set")?)
+    }
+
+    /// The target's history on this scene.
+    pub fn target(&self) -> &History {
+        &self.target
+    }
+}
+
 /// The model on `cases` with the set keys `set`: its errors against the targets. The scenes run
 /// in parallel; the sums are taken in the cases' order (the same bits for any thread count).
 pub fn errors(model: &str, cases: &[Case], set: &[(String, Value)]) -> Result<SetErrors, Error> {
@@ -140,7 +152,7 @@ pub fn errors(model: &str, cases: &[Case], set: &[(String, Value)]) -> Result<Se
     let each = cases
         .par_iter()
         .map(|c| {
-            let (problem, h) = run_one(&c.source, with(&c.doc, model, set, "set")?)?;
+            let (problem, h) = c.run(model, set)?;
             let delay = c.target_delay.zip(metric(&problem, &h, crate::metrics::delay_ratio::NAME)).map(|(t, o)| o - t);
             let loop_rel =
                 c.target_loop.zip(metric(&problem, &h, crate::metrics::loop_area::NAME)).map(|(t, o)| (o - t) / t);

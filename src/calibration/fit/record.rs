@@ -43,6 +43,21 @@ pub struct SuiteRecord {
     pub fitted: [f64; 3],
 }
 
+/// One scene's curves of a fit (`super::curves`): f (column `y`) against the abscissa (column `x`,
+/// [`crate::history::abscissa`]) of the target, of the model at the start values and at the
+/// fitted values; finite points only.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct CurveRecord {
+    pub scene: String,
+    /// "fitted" or "held out".
+    pub set: String,
+    pub x: String,
+    pub y: String,
+    pub target: Vec<(f64, f64)>,
+    pub before: Vec<(f64, f64)>,
+    pub after: Vec<(f64, f64)>,
+}
+
 /// A fit's outcome.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct FitRecord {
@@ -61,6 +76,9 @@ pub struct FitRecord {
     /// The fitted variant beside the published model over the suites' scenes (`creepbench run`).
     #[serde(default)]
     pub suites: Vec<SuiteRecord>,
+    /// The before/after curves of the fitted scenes and of the worst held-out one.
+    #[serde(default)]
+    pub curves: Vec<CurveRecord>,
 }
 
 fn finite(v: f64) -> Option<f64> {
@@ -103,6 +121,7 @@ impl FitRecord {
             evaluations: o.evaluations,
             ended: o.ended.clone(),
             suites: Vec::new(),
+            curves: o.curves.clone(),
         }
     }
 

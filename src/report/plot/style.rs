@@ -124,9 +124,17 @@ fn leftover() -> Vec<Style> {
     out
 }
 
+/// The suffix of a fitted variant's name (`polach (fitted)`, the calibration's figures).
+pub const FITTED: &str = " (fitted)";
+
 /// A model's style: the registry's for a built-in model, else one of the leftover styles chosen
-/// by a hash of the name (the same name always gets the same style).
+/// by a hash of the name (the same name always gets the same style). A fitted variant
+/// (`<model>` + [`FITTED`]) is drawn in its model's colour and marker, outlined, dotted (a dash
+/// no model has).
 pub fn model(name: &str) -> Style {
+    if let Some(base) = name.strip_suffix(FITTED) {
+        return Style { dash: Dash::Dotted, filled: false, ..model(base) };
+    }
     if let Some((_, s)) = BUILTIN.iter().find(|(n, _)| *n == name) {
         return *s;
     }
@@ -183,6 +191,16 @@ mod tests {
         }
         assert_eq!(leftover().len(), 9 * 8 - 8);
         assert_eq!(model("uba").color, "#CC6677");
+    }
+
+    #[test]
+    fn a_fitted_variant_is_its_model_outlined_and_dotted() {
+        for name in ["polach", "uba", "relaxation", "my_model"] {
+            let (m, f) = (model(name), model(&format!("{name}{FITTED}")));
+            assert_eq!((f.color, f.marker), (m.color, m.marker), "{name}");
+            assert_eq!((f.dash, f.filled), (Dash::Dotted, false), "{name}");
+            assert_ne!(m.dash, Dash::Dotted, "{name}: no model is dotted");
+        }
     }
 
     #[test]
