@@ -6,8 +6,8 @@
 
 use crate::comparison::references::envelope::EnvelopeCases;
 use crate::comparison::references::{References, ENVELOPE_SECTION, NONHERTZ_SECTION};
+use crate::history::abscissa::{abscissa, Drawn};
 use crate::history::{History, MZ};
-use crate::problem::LoadingKind;
 use crate::report::plot::{line_chart, patch_map, titles, Axis, PatchCell, Series};
 use crate::report::section::Section;
 use crate::suite::results::StoredScene;
@@ -37,17 +37,6 @@ fn cell(w: Option<(f64, usize)>) -> String {
         Some((d, k)) => format!("{d:.4} ({k})"),
         None => "—".into(),
     }
-}
-
-/// The x axis of a case's figure: the swept creepage of a sweep, else time.
-fn axis(sc: &StoredScene) -> (&'static str, String) {
-    if sc.scene.kind != LoadingKind::Sweep {
-        return ("t_s", titles::of("t_s"));
-    }
-    let d = sc.scene.sweep_direction.unwrap_or([1.0, 0.0, 0.0]);
-    let k = (1..3).fold(0, |k, i| if d[i].abs() > d[k].abs() { i } else { k });
-    let x = ["cx", "cy", "cs"][k];
-    (x, titles::of(x))
 }
 
 /// What differs between the case-set sections.
@@ -113,18 +102,18 @@ fn case_section(scenes: &[StoredScene], set: &EnvelopeCases, spec: &Spec) -> Opt
         // The figure: the larger force component of CONTACT's history (both when both matter).
         let size = |col: &str| contact.column(col).unwrap_or_default().iter().fold(0.0f64, |m, v| m.max(v.abs()));
         let (sx, sy) = (size("fx_over_fn"), size("fy_over_fn"));
-        let (x, xl) = axis(sc);
+        let drawn = Drawn::of_scene(&sc.scene);
+        let xl = titles::of(abscissa(contact, drawn).0);
         for (col, label, shown) in [("fx_over_fn", "fx/fn", sx >= 0.3 * sy), ("fy_over_fn", "fy/fn", sy >= 0.3 * sx)] {
             if !shown {
                 continue;
             }
             let mut series: Vec<Series> = Vec::new();
             for (name, h) in &sc.histories {
-                let points =
-                    h.column(x).unwrap_or_default().into_iter().zip(h.column(col).unwrap_or_default()).collect();
+                let points = abscissa(h, drawn).1.into_iter().zip(h.column(col).unwrap_or_default()).collect();
                 series.push(Series::model(name, points));
             }
-            let theirs = contact.column(x).unwrap_or_default().into_iter().zip(contact.column(col).unwrap_or_default());
+            let theirs = abscissa(contact, drawn).1.into_iter().zip(contact.column(col).unwrap_or_default());
             series.push(Series::reference("CONTACT", theirs.collect()));
             let file = format!("{}_{}_{}.svg", spec.prefix, sc.name, &col[..2]);
             figures.push((

@@ -7,7 +7,7 @@
 //! data only.
 
 use crate::comparison::references::References;
-use crate::history::abscissa::abscissa;
+use crate::history::abscissa::{abscissa, Drawn};
 use crate::history::History;
 use crate::metrics::oscillation_index::{oscillation_index, own_oscillation};
 use crate::problem::LoadingKind;
@@ -36,7 +36,7 @@ fn case_of(name: &str) -> String {
 
 /// The x of a row: the quantity a sweep moves (cx, cy, cs or the speed), time otherwise.
 fn x_of(sc: &StoredScene, h: &History) -> (&'static str, Vec<f64>) {
-    abscissa(h, sc.scene.kind, sc.scene.v_mm_s)
+    abscissa(h, Drawn::of_scene(&sc.scene))
 }
 
 /// |f| = |(fx, fy)|/FN of each row.

@@ -1,6 +1,7 @@
 //! The report's figures by scene group: each scene's history or sweep and, for sine scenes, its
 //! hysteresis loop, CONTACT's drawn as markers.
 
+use crate::history::abscissa::{abscissa, Drawn};
 use crate::history::History;
 use crate::problem::LoadingKind;
 use crate::report::plot::{line_chart, titles::of as title_of, Axis, Series};
@@ -62,15 +63,9 @@ fn thin(points: Vec<(f64, f64)>, n: usize) -> Vec<(f64, f64)> {
     out
 }
 
-fn xy(h: &History, x: &str, y: &str) -> Vec<(f64, f64)> {
-    h.column(x).unwrap_or_default().into_iter().zip(h.column(y).unwrap_or_default()).collect()
-}
-
-/// A sweep's plot axis: the creepage its direction moves most ((cx, cy, cs) order on ties).
-fn swept_axis(direction: [f64; 3]) -> (&'static str, &'static str) {
-    let axes = [("cx", "creepage c_x [–]"), ("cy", "creepage c_y [–]"), ("cs", "spin creepage c_s [1/mm]")];
-    let k = (1..3).fold(0, |k, i| if direction[i].abs() > direction[k].abs() { i } else { k });
-    axes[k]
+/// f = Fx/FN of each row against the scene's abscissa ([`abscissa`]).
+fn xy(h: &History, drawn: Drawn) -> Vec<(f64, f64)> {
+    abscissa(h, drawn).1.into_iter().zip(h.column("fx_over_fn").unwrap_or_default()).collect()
 }
 
 fn last_period(h: &History, period: f64) -> Vec<(f64, f64)> {
@@ -114,18 +109,18 @@ fn scene_figures(body: &mut Report, sc: &StoredScene, contact: Option<&History>,
     body.markdown.push('\n');
 }
 
-/// A scene's f = Fx/FN against time, or against the swept creepage for a sweep.
+/// A scene's f = Fx/FN against time, or for a sweep against the quantity it moves ([`abscissa`]).
 fn history_figure(body: &mut Report, sc: &StoredScene, contact: Option<&History>) {
     let sweep = sc.scene.kind == LoadingKind::Sweep;
-    let (x, xl) =
-        if sweep { swept_axis(sc.scene.sweep_direction.unwrap_or([1.0, 0.0, 0.0])) } else { ("t_s", "t [s]") };
+    let drawn = Drawn::of_scene(&sc.scene);
+    let x = sc.histories.values().next().map_or("t_s", |h| abscissa(h, drawn).0);
     let mut series: Vec<Series> =
-        sc.histories.iter().map(|(name, h)| Series::model(name, thin(xy(h, x, "fx_over_fn"), 300))).collect();
+        sc.histories.iter().map(|(name, h)| Series::model(name, thin(xy(h, drawn), 300))).collect();
     if let Some(c) = contact {
-        series.push(Series::reference("CONTACT", thin(xy(c, x, "fx_over_fn"), 150)));
+        series.push(Series::reference("CONTACT", thin(xy(c, drawn), 150)));
     }
     let file = format!("{}_{}.svg", sc.name, if sweep { "sweep" } else { "history" });
-    let svg = line_chart(&sc.name, &Axis::linear(xl), &Axis::linear(title_of("fx_over_fn")), &series);
+    let svg = line_chart(&sc.name, &Axis::linear(title_of(x)), &Axis::linear(title_of("fx_over_fn")), &series);
     figure(body, file, svg, &sc.name);
 }
 

@@ -126,7 +126,7 @@ fn polach_fit_to_the_falling_curve() {
 #[test]
 fn a_speed_sweep_reads_back_with_its_speeds() {
     use creepbench::comparison::references::References;
-    use creepbench::history::abscissa::abscissa;
+    use creepbench::history::abscissa::{abscissa, Drawn};
     let golden = root().join("golden");
     let sc = creepbench::suite::results::read_scene(&golden, "fr_exp_mem_speed_sweep").unwrap();
     let want: Vec<f64> = (0..17).map(|k| 5000.0 + 2500.0 * k as f64).collect();
@@ -134,6 +134,6 @@ fn a_speed_sweep_reads_back_with_its_speeds() {
     let contact = refs.history("fr_exp_mem_speed_sweep").unwrap();
     assert_eq!(sc.histories.len(), 5);
     for (name, h) in sc.histories.iter().chain([(&"CONTACT".to_string(), contact)]) {
-        assert_eq!(abscissa(h, sc.scene.kind, sc.scene.v_mm_s), ("v_mm_s", want.clone()), "{name}");
+        assert_eq!(abscissa(h, Drawn::of_scene(&sc.scene)), ("v_mm_s", want.clone()), "{name}");
     }
 }

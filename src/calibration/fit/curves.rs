@@ -6,7 +6,7 @@ use super::objective::Case;
 use super::record::CurveRecord;
 use crate::comparison::model_error::{rms, row_diffs};
 use crate::error::Error;
-use crate::history::abscissa::abscissa;
+use crate::history::abscissa::{abscissa, Drawn};
 use crate::history::History;
 use crate::problem::Problem;
 use rayon::prelude::*;
@@ -62,16 +62,16 @@ fn record(case: &Case, runs: &Runs, set: &str) -> CurveRecord {
     let target = case.target();
     let largest = |col: &str| target.column(col).unwrap_or_default().iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let y = if largest("fy_over_fn") > largest("fx_over_fn") { "fy_over_fn" } else { "fx_over_fn" };
-    let (kind, v_mm_s) = (runs.problem.loading.kind, runs.problem.rolling.v_mm_s);
+    let drawn = Drawn::of_problem(&runs.problem);
     let points = |h: &History| -> Vec<(f64, f64)> {
-        let (_, x) = abscissa(h, kind, v_mm_s);
+        let (_, x) = abscissa(h, drawn);
         // Finite points only: the record is JSON, which has no NaN.
         x.into_iter().zip(h.column(y).unwrap_or_default()).filter(|p| p.0.is_finite() && p.1.is_finite()).collect()
     };
     CurveRecord {
         scene: case.name.clone(),
         set: set.into(),
-        x: abscissa(target, kind, v_mm_s).0.into(),
+        x: abscissa(target, drawn).0.into(),
         y: y.into(),
         target: points(target),
         before: points(&runs.before),
