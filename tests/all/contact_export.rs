@@ -109,12 +109,14 @@ fn exported_inputs_equal_contacts_own() {
 
 /// Issue 33: the falling-friction cases (laws L = 2, 3, 4, friction memory, a speed changing per
 /// row with C = 2): the export of every scene of scenes/friction gives CONTACT's own input, and of
-/// every scene of scenes/friction_variants the input its CONTACT run was made from.
+/// every scene of scenes/friction_variants (scenes/friction_hidden) the input its CONTACT run was
+/// made from.
 #[test]
 fn exported_falling_friction_inputs_equal_contacts_own() {
     for (reference, suite, count) in [
         ("reference/contact_friction", "scenes/friction", 10),
         ("reference/contact_friction_variants", "scenes/friction_variants", 30),
+        ("reference/contact_friction_hidden", "scenes/friction_hidden", 19),
     ] {
         let mut rdr = csv::Reader::from_path(root().join(reference).join("cases.csv")).unwrap();
         let names: Vec<String> = rdr.records().map(|r| r.unwrap()[0].to_string()).collect();

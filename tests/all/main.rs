@@ -19,6 +19,7 @@ mod fastrip_model;
 mod figures;
 mod fit;
 mod friction;
+mod friction_hidden;
 mod friction_rows;
 mod gate;
 mod gate_baselines;
