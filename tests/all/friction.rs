@@ -228,3 +228,48 @@ fn omgslp_damps_the_path_not_the_fixed_point() {
         assert!((a[k] - b[k]).abs() < 1e-8, "row {k}: {} vs {}", a[k], b[k]);
     }
 }
+
+/// `creepbench simulate` on the scene of fr_exp_step_cx_mem with `replace` applied and the files
+/// `files` beside it, in a fresh folder `name`: the exit status and the error output; nothing may
+/// be written where the run fails.
+fn simulate_variant(name: &str, replace: &[(&str, &str)], files: &[(&str, &str)]) -> (Option<i32>, String) {
+    let dir = tempdir(name);
+    let mut text = std::fs::read_to_string(root().join("scenes/friction/fr_exp_step_cx_mem.toml")).unwrap();
+    for (from, to) in replace {
+        assert!(text.contains(from), "{from}");
+        text = text.replace(from, to);
+    }
+    std::fs::write(dir.join("s.toml"), text).unwrap();
+    for (file, content) in files {
+        std::fs::write(dir.join(file), content).unwrap();
+    }
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(&dir)
+        .args(["simulate", "s.toml", "--out", "out"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr).to_string();
+    assert!(o.status.success() || !dir.join("out").exists(), "{name}: written after an error: {err}");
+    (o.status.code(), err)
+}
+
+/// A speed table's errors name the line of the file: the CSV reader skips empty lines, so a row
+/// after one is not on line (its index + 2), where the errors used to point.
+#[test]
+fn a_speed_table_error_names_the_line_after_empty_lines() {
+    let table = [("kind = \"step\"\nc = 0.012\nsteps = 66", "kind = \"table\"\nfile = \"t.csv\"")];
+    let (code, err) = simulate_variant(
+        "speed_table_lines",
+        &table,
+        &[("t.csv", "t_s,cx,v_mm_s\n0,0.012,30000\n\n0.0001,0.012,20000\n0.0003,0.012,-5\n")],
+    );
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("creepage.file (t.csv) line 5 column v_mm_s` = -5: allowed: a rolling speed"), "{err}");
+    let (code, err) = simulate_variant(
+        "speed_table_time_lines",
+        &table,
+        &[("t.csv", "\nt_s,cx,v_mm_s\n0,0.012,30000\n\n0.0002,0.012,20000\n0.0001,0.012,20000\n")],
+    );
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("(t.csv) line 6 column t_s` = 0.0001: allowed: strictly increasing times"), "{err}");
+}
