@@ -273,3 +273,18 @@ fn a_speed_table_error_names_the_line_after_empty_lines() {
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("(t.csv) line 6 column t_s` = 0.0001: allowed: strictly increasing times"), "{err}");
 }
+
+/// A speed that changes by more than itself within one step: the error names the table's file,
+/// its column and the rows (it used to name "columns v_mm_s, courant" without the file, and its
+/// value was cut before the time).
+#[test]
+fn a_speed_table_whose_step_does_not_settle_names_the_rows() {
+    let (code, err) = simulate_variant(
+        "speed_table_unsettled",
+        &[("kind = \"step\"\nc = 0.012\nsteps = 66", "kind = \"table\"\nfile = \"t.csv\"")],
+        &[("t.csv", "t_s,cx,v_mm_s\n0,0.012,10000\n0.0001,0.012,1e-300\n0.0003,0.012,30000\n")],
+    );
+    assert_eq!(code, Some(2), "{err}");
+    let want = "s.toml: creepage.file (t.csv) column v_mm_s` = the rows at t_s = 0 and 0.0001 s: allowed: a speed";
+    assert!(err.contains(want) && err.contains("the step from t = 0 s does not settle"), "{err}");
+}
