@@ -288,3 +288,18 @@ fn a_speed_table_whose_step_does_not_settle_names_the_rows() {
     let want = "s.toml: creepage.file (t.csv) column v_mm_s` = the rows at t_s = 0 and 0.0001 s: allowed: a speed";
     assert!(err.contains(want) && err.contains("the step from t = 0 s does not settle"), "{err}");
 }
+
+/// The friction errors show the value given: fkin as written beside the static value it makes
+/// (it showed the sum as fkin's value) and a sabsh2_mm_s left out as missing (it showed 0).
+#[test]
+fn friction_errors_show_the_value_given() {
+    let cases = [
+        ("f1 = 0.2\n", "f1 = 1000.0\n", "friction.fkin` = 0.25 (fkin + f1 + f2 = 1000.25): allowed: a static value"),
+        ("f1 = 0.2\n", "f1 = 0.2\nf2 = 0.1\n", "friction.sabsh2_mm_s` = missing: allowed: a slip velocity > 0"),
+    ];
+    for (n, (from, to, want)) in cases.into_iter().enumerate() {
+        let (code, err) = simulate_variant(&format!("friction_value_{n}"), &[(from, to)], &[]);
+        assert_eq!(code, Some(2), "{err}");
+        assert!(err.contains(want), "{to}: {err}");
+    }
+}
