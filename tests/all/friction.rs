@@ -303,3 +303,17 @@ fn friction_errors_show_the_value_given() {
         assert!(err.contains(want), "{to}: {err}");
     }
 }
+
+/// A huge value in an error is shown with its exponent: fkin = 1e300 was shown as 60 of its 301
+/// digits, and so was the UBA's stiffness κ of a law with sabsh1_mm_s = 1e-300 (about 1e302).
+#[test]
+fn huge_values_are_shown_with_their_exponent() {
+    let (code, err) = simulate_variant("friction_value_huge", &[("fkin = 0.25\n", "fkin = 1e300\n")], &[]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("friction.fkin` = 1e300: allowed: a finite number in [0, 1000]"), "{err}");
+    let steep = [("sabsh1_mm_s = 600.0\nmemory_mm = 0.01\nmemory_s0_mm_s = 10.0\n", "sabsh1_mm_s = 1e-300\n")];
+    let (code, err) = simulate_variant("friction_value_kappa", &steep, &[]);
+    assert_eq!(code, Some(2), "{err}");
+    let kappa = err.split("uba's kappa = ").nth(1).and_then(|k| k.split(')').next()).unwrap_or_default();
+    assert!(kappa.parse::<f64>().is_ok_and(|k| k > 1e300 && k.is_finite()), "{err}");
+}
