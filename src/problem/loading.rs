@@ -4,7 +4,7 @@
 use crate::error::InputError;
 use crate::physics::{ContactGeometry, Grid};
 use crate::scene::table::{CreepageTable, Either, TableX};
-use crate::scene::{Creepage, InitKind, Scene};
+use crate::scene::{compact, Creepage, InitKind, Scene};
 
 /// A table covers step k when `k dt <= t_end (1 + TABLE_END_REL)`: its last time may be printed
 /// rounded (10 significant digits are 5e-11 relative) and still cover the step it was written for.
@@ -471,11 +471,7 @@ fn speed_table(
             }
         }
         if !settled {
-            return Err(InputError::new(
-                "creepage.file columns v_mm_s, courant",
-                format!("{v} mm/s, dq = {dq} mm near t = {t} s"),
-                "a speed and a Courant number that change by less than themselves within one step dq/v",
-            ));
+            return Err(unsettled_step(scene, rows, t, (v, dq)));
         }
         let t_next = t + dq / v;
         if t_next > end {
@@ -503,6 +499,38 @@ fn speed_table(
         ));
     }
     Ok(samples)
+}
+
+/// The step from `t` of a table with a speed or Courant column whose (v, dq) does not settle
+/// ([`speed_table`]; `(v, dq)` the last iterate): names the table's file and those of its columns
+/// it has, and the table's rows around `t` by their times.
+fn unsettled_step(scene: &Scene, rows: &CreepageTable, t: f64, (v, dq): (f64, f64)) -> InputError {
+    let file = match &scene.creepage {
+        Creepage::Table { file, .. } => file.display().to_string(),
+        _ => String::new(),
+    };
+    let columns: Vec<&str> = [("v_mm_s", rows.v_mm_s.is_some()), ("courant", rows.courant.is_some())]
+        .into_iter()
+        .filter_map(|(name, given)| given.then_some(name))
+        .collect();
+    let ts = &rows.t_s;
+    let next = ts.partition_point(|&x| x <= t).min(ts.len() - 1);
+    let (lo, hi) = (ts[next.saturating_sub(1)], ts[next]);
+    let near = if lo < hi {
+        format!("the rows at t_s = {} and {} s", compact(lo), compact(hi))
+    } else {
+        format!("the row at t_s = {} s", compact(hi))
+    };
+    InputError::new(
+        format!("creepage.file ({file}) column {}", columns.join(", ")),
+        near,
+        format!(
+            "a speed and a Courant number that change by less than themselves within one step dq/v (the step from t = {} s does not settle: v = {} mm/s, dq = {} mm)",
+            compact(t),
+            compact(v),
+            compact(dq)
+        ),
+    )
 }
 
 impl Sample {

@@ -383,7 +383,7 @@ const FINITE: Range = Range::new(f64::NEG_INFINITY, false, f64::INFINITY, false)
 const GRID_SCALE: Range = Range::new(1.0, true, 10.0, true);
 
 /// A number for a message: plain, or in exponent form when very large or small.
-fn compact(v: f64) -> String {
+pub(crate) fn compact(v: f64) -> String {
     if v != 0.0 && !(1e-6..1e9).contains(&v.abs()) {
         format!("{v:e}")
     } else {

@@ -112,6 +112,10 @@ impl Range {
     }
 }
 
+/// Longest plain decimal a message shows; a longer one (1e300 has 301 digits, which the message's
+/// excerpt would cut) is written with an exponent.
+const PLAIN_DIGITS_MAX: usize = 24;
+
 fn fmt_num(v: f64) -> String {
     if v.is_infinite() {
         if v > 0.0 {
@@ -120,7 +124,12 @@ fn fmt_num(v: f64) -> String {
             "-inf".into()
         }
     } else {
-        format!("{v}")
+        let plain = format!("{v}");
+        if plain.len() > PLAIN_DIGITS_MAX {
+            format!("{v:e}")
+        } else {
+            plain
+        }
     }
 }
 

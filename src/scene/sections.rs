@@ -189,11 +189,8 @@ pub fn friction(top: &mut Section, mu: Option<f64>, my: usize) -> Result<Frictio
         sabsh2_mm_s: f.opt_f64("sabsh2_mm_s", speed)?.unwrap_or(0.0),
     };
     if terms.f2 > 0.0 && terms.sabsh2_mm_s <= 0.0 {
-        return Err(InputError::new(
-            f.field("sabsh2_mm_s"),
-            terms.sabsh2_mm_s,
-            "a slip velocity > 0 [mm/s] when f2 > 0",
-        ));
+        let given = if f.has("sabsh2_mm_s") { terms.sabsh2_mm_s.to_string() } else { "missing".into() };
+        return Err(InputError::new(f.field("sabsh2_mm_s"), given, "a slip velocity > 0 [mm/s] when f2 > 0"));
     }
     let law = match law {
         "linear" => FrictionLaw::Linear(terms),
@@ -209,7 +206,8 @@ pub fn friction(top: &mut Section, mu: Option<f64>, my: usize) -> Result<Frictio
     };
     let mu_static = law.mu_static();
     if !(mu_static > 0.0 && mu_static <= 1e3) {
-        return Err(InputError::new(f.field("fkin"), mu_static, "a static value fkin + f1 + f2 in (0, 1000]"));
+        let given = format!("{} (fkin + f1 + f2 = {mu_static})", terms.fkin);
+        return Err(InputError::new(f.field("fkin"), given, "a static value fkin + f1 + f2 in (0, 1000]"));
     }
     f.finish()?;
     if let Some(given) = mu {

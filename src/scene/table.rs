@@ -117,9 +117,9 @@ impl CreepageTable {
         check_columns(&header, origin)?;
         check_required(&header, origin)?;
         let h_given = h_columns_given(&header, origin)?;
-        let cols = read_rows(&mut rdr, &header, origin)?;
+        let (cols, lines) = read_rows(&mut rdr, &header, origin)?;
         let table = Self::from_columns(&header, &cols, h_given);
-        check_times(&table.t_s, origin)?;
+        check_times(&table.t_s, &lines, origin)?;
         Ok(table)
     }
 
@@ -273,23 +273,40 @@ fn h_columns_given(header: &[String], origin: &str) -> Result<bool, InputError> 
 }
 
 /// The data rows' values, one series per header column: each row of the header's fields, one
-/// of each per-row pair given ([`PER_ROW`]), every cell a number in its column's range.
-fn read_rows(rdr: &mut csv::Reader<&[u8]>, header: &[String], origin: &str) -> Result<Vec<Vec<f64>>, InputError> {
+/// of each per-row pair given ([`PER_ROW`]), every cell a number in its column's range; and the
+/// line of the file each row is on (for messages).
+fn read_rows(
+    rdr: &mut csv::Reader<&[u8]>,
+    header: &[String],
+    origin: &str,
+) -> Result<(Vec<Vec<f64>>, Vec<usize>), InputError> {
     // Both fn_n and pen_mm (cx and fx_over_fn, cy and fy_over_fn): each row gives exactly one
     // of them, the other cell empty.
     let pairs: Vec<(&str, &str, &str)> =
         PER_ROW.iter().copied().filter(|(a, b, _)| has(header, a) && has(header, b)).collect();
     let per_row = |name: &str| pairs.iter().any(|(a, b, _)| *a == name || *b == name);
     let mut cols: Vec<Vec<f64>> = vec![Vec::new(); header.len()];
+    let mut lines = Vec::new();
     for (r, rec) in rdr.records().enumerate() {
-        let row = r + 2; // 1-based line number, header is line 1
+        let row = line_of(&rec).unwrap_or(r + 2);
         let rec = check_record(rec, header.len(), origin, row)?;
         check_pairs(&rec, header, &pairs, origin, row)?;
         for (c, cell) in rec.iter().enumerate() {
             cols[c].push(read_cell(cell, &header[c], per_row(&header[c]), origin, row)?);
         }
+        lines.push(row);
     }
-    Ok(cols)
+    Ok((cols, lines))
+}
+
+/// The 1-based line of the file a record starts on, as the CSV reader counts it: the reader skips
+/// empty lines, so a record's index is not its line.
+fn line_of(rec: &csv::Result<csv::StringRecord>) -> Option<usize> {
+    let position = match rec {
+        Ok(rec) => rec.position(),
+        Err(e) => e.position(),
+    };
+    position.map(|p| p.line() as usize)
 }
 
 /// The record of line `row`: readable CSV of `fields` fields (the header's).
@@ -376,15 +393,15 @@ fn allowed(name: &str) -> &'static str {
     }
 }
 
-/// The times `t_s`: at least one row, strictly increasing.
-fn check_times(t_s: &[f64], origin: &str) -> Result<(), InputError> {
+/// The times `t_s`: at least one row, strictly increasing; `lines`: each row's line of the file.
+fn check_times(t_s: &[f64], lines: &[usize], origin: &str) -> Result<(), InputError> {
     if t_s.is_empty() {
         return Err(InputError::new(origin, "no data rows", "at least one row"));
     }
     for w in 1..t_s.len() {
         if t_s[w] <= t_s[w - 1] {
             return Err(InputError::new(
-                format!("{origin} line {} column t_s", w + 2),
+                format!("{origin} line {} column t_s", lines[w]),
                 t_s[w],
                 format!("strictly increasing times (previous {})", t_s[w - 1]),
             ));

@@ -80,9 +80,12 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
 }
 
 /// Polach's resultant force over μ Q for the stiffness ratio `eps` (Eq. 1) and reductions kA, kS.
+/// An infinite `eps` (μ FN so small that the ratio overflows, a subnormal μ) takes the limit of
+/// Eq. 1, full sliding: the adhesion term kA ε/(1 + (kA ε)²) → 0 (∞/∞ would be NaN).
 pub fn resultant(eps: f64, k_a: f64, k_s: f64) -> f64 {
     let e = k_a * eps;
-    2.0 / PI * (e / (1.0 + e * e) + (k_s * eps).atan())
+    let adhesion = if e.is_finite() { e / (1.0 + e * e) } else { 0.0 };
+    2.0 / PI * (adhesion + (k_s * eps).atan())
 }
 
 /// The friction coefficient at slip velocity `w_m_s` [m/s] (Eq. 8): `μ0 ((1 − A) e^(−B w) + A)`.

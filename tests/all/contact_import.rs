@@ -556,3 +556,30 @@ fn spence35_is_read_and_its_cases_are_refused_for_dissimilar_materials() {
         assert!(s.refused[0].starts_with("K = 4.99995") && s.refused[0].contains("dissimilar materials"), "{s:?}");
     }
 }
+
+/// A falling law's absent term (F < 1e-8) with SABSH = 0: CONTACT takes max(1e-4, SABSH) there
+/// (`fric_input`, m_friclaw.f90) and runs the deck; the import writes that SABSH, so the deck
+/// imports (it used to be refused: `friction.sabsh1_mm_s` = 0) and resolves to the same law.
+#[test]
+fn an_absent_falling_term_takes_contacts_smallest_sabsh() {
+    let dir = common::tempdir("contact_import_absent_term");
+    let text =
+        std::fs::read_to_string(root().join("reference/contact_friction_variants/v07_exp_sine_mem.inp")).unwrap();
+    let one_case: String = text.lines().take(17).map(|l| format!("{l}\n")).collect();
+    let line = "  0.28   0.17   900.0   0.0   1000.0        FKIN, F1, SABSH1, F2, SABSH2";
+    assert!(one_case.contains(line));
+    for (values, law) in [
+        ("0.3   0.0   0.0   0.0   0.0", [0.3, 0.0, 1e-4, 0.0]),
+        ("0.3   0.1   100.0   1e-9   0.0", [0.3, 0.1, 100.0, 1e-9]),
+    ] {
+        let deck = dir.join("absent.inp");
+        std::fs::write(&deck, one_case.replace(line, &format!("  {values}   FKIN, F1, SABSH1, F2, SABSH2"))).unwrap();
+        let out = dir.join(format!("o_{}", law[3]));
+        let o = creepbench(&["import", "contact", deck.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(0), "{values}: {}", String::from_utf8_lossy(&o.stderr));
+        let p = creepbench::pipeline::load(&out.join("absent_1.toml"), &[]).unwrap();
+        let creepbench::physics::FrictionLaw::Exponential(t) = p.friction else { panic!("{:?}", p.friction) };
+        assert_eq!([t.fkin, t.f1, t.sabsh1_mm_s, t.f2], law, "{values}");
+        assert!(t.f2 == 0.0 || t.sabsh2_mm_s == 1e-4, "{values}: {t:?}");
+    }
+}

@@ -137,3 +137,31 @@ fn a_speed_sweep_reads_back_with_its_speeds() {
         assert_eq!(abscissa(h, Drawn::of_scene(&sc.scene)), ("v_mm_s", want.clone()), "{name}");
     }
 }
+
+/// A falling law with FKIN = 0 falls to μ = 0 (the linear law at s ≥ 2·SABSH1), which the exact
+/// solver's traction bound μ(s)·p cannot take: `simulate` refuses it before anything runs, naming
+/// `friction.fkin`, its value and what is allowed (exit 2, nothing written), where it used to
+/// fail at step 1 with exit 1 ("traction bound [MPa] = 0"). FASTSIM runs the same law.
+#[test]
+fn the_exact_solver_refuses_a_law_falling_to_zero() {
+    let dir = tempdir("falling_fkin_zero");
+    let law = "[friction]\nlaw = \"linear\"\nfkin = 0\nf1 = 0.3\nsabsh1_mm_s = 100.0\n";
+    let text = |solvers: &str| {
+        scene_text("fkin_zero", solvers, 0.3, 10, "kind = \"step\"\nc = 0.3\nsteps = 5", law).replace("mu = 0.3\n", "")
+    };
+    let simulate = |solvers: &str, out: &str| {
+        std::fs::write(dir.join("s.toml"), text(solvers)).unwrap();
+        std::process::Command::new(env!("CARGO_BIN_EXE_creepbench"))
+            .current_dir(&dir)
+            .args(["simulate", "s.toml", "--out", out])
+            .output()
+            .unwrap()
+    };
+    let o = simulate("[\"contact\"]", "out_contact");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("s.toml: friction.fkin` = 0: allowed: a kinetic coefficient > 0"), "{err}");
+    assert!(!err.contains("panicked") && !dir.join("out_contact").exists(), "{err}");
+    let o = simulate("[\"fastsim\"]", "out_fastsim");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}

@@ -228,3 +228,92 @@ fn omgslp_damps_the_path_not_the_fixed_point() {
         assert!((a[k] - b[k]).abs() < 1e-8, "row {k}: {} vs {}", a[k], b[k]);
     }
 }
+
+/// `creepbench simulate` on the scene of fr_exp_step_cx_mem with `replace` applied and the files
+/// `files` beside it, in a fresh folder `name`: the exit status and the error output; nothing may
+/// be written where the run fails.
+fn simulate_variant(name: &str, replace: &[(&str, &str)], files: &[(&str, &str)]) -> (Option<i32>, String) {
+    let dir = tempdir(name);
+    let mut text = std::fs::read_to_string(root().join("scenes/friction/fr_exp_step_cx_mem.toml")).unwrap();
+    for (from, to) in replace {
+        assert!(text.contains(from), "{from}");
+        text = text.replace(from, to);
+    }
+    std::fs::write(dir.join("s.toml"), text).unwrap();
+    for (file, content) in files {
+        std::fs::write(dir.join(file), content).unwrap();
+    }
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(&dir)
+        .args(["simulate", "s.toml", "--out", "out"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr).to_string();
+    assert!(o.status.success() || !dir.join("out").exists(), "{name}: written after an error: {err}");
+    (o.status.code(), err)
+}
+
+/// A speed table's errors name the line of the file: the CSV reader skips empty lines, so a row
+/// after one is not on line (its index + 2), where the errors used to point.
+#[test]
+fn a_speed_table_error_names_the_line_after_empty_lines() {
+    let table = [("kind = \"step\"\nc = 0.012\nsteps = 66", "kind = \"table\"\nfile = \"t.csv\"")];
+    let (code, err) = simulate_variant(
+        "speed_table_lines",
+        &table,
+        &[("t.csv", "t_s,cx,v_mm_s\n0,0.012,30000\n\n0.0001,0.012,20000\n0.0003,0.012,-5\n")],
+    );
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("creepage.file (t.csv) line 5 column v_mm_s` = -5: allowed: a rolling speed"), "{err}");
+    let (code, err) = simulate_variant(
+        "speed_table_time_lines",
+        &table,
+        &[("t.csv", "\nt_s,cx,v_mm_s\n0,0.012,30000\n\n0.0002,0.012,20000\n0.0001,0.012,20000\n")],
+    );
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("(t.csv) line 6 column t_s` = 0.0001: allowed: strictly increasing times"), "{err}");
+}
+
+/// A speed that changes by more than itself within one step: the error names the table's file,
+/// its column and the rows (it used to name "columns v_mm_s, courant" without the file, and its
+/// value was cut before the time).
+#[test]
+fn a_speed_table_whose_step_does_not_settle_names_the_rows() {
+    let (code, err) = simulate_variant(
+        "speed_table_unsettled",
+        &[("kind = \"step\"\nc = 0.012\nsteps = 66", "kind = \"table\"\nfile = \"t.csv\"")],
+        &[("t.csv", "t_s,cx,v_mm_s\n0,0.012,10000\n0.0001,0.012,1e-300\n0.0003,0.012,30000\n")],
+    );
+    assert_eq!(code, Some(2), "{err}");
+    let want = "s.toml: creepage.file (t.csv) column v_mm_s` = the rows at t_s = 0 and 0.0001 s: allowed: a speed";
+    assert!(err.contains(want) && err.contains("the step from t = 0 s does not settle"), "{err}");
+}
+
+/// The friction errors show the value given: fkin as written beside the static value it makes
+/// (it showed the sum as fkin's value) and a sabsh2_mm_s left out as missing (it showed 0).
+#[test]
+fn friction_errors_show_the_value_given() {
+    let cases = [
+        ("f1 = 0.2\n", "f1 = 1000.0\n", "friction.fkin` = 0.25 (fkin + f1 + f2 = 1000.25): allowed: a static value"),
+        ("f1 = 0.2\n", "f1 = 0.2\nf2 = 0.1\n", "friction.sabsh2_mm_s` = missing: allowed: a slip velocity > 0"),
+    ];
+    for (n, (from, to, want)) in cases.into_iter().enumerate() {
+        let (code, err) = simulate_variant(&format!("friction_value_{n}"), &[(from, to)], &[]);
+        assert_eq!(code, Some(2), "{err}");
+        assert!(err.contains(want), "{to}: {err}");
+    }
+}
+
+/// A huge value in an error is shown with its exponent: fkin = 1e300 was shown as 60 of its 301
+/// digits, and so was the UBA's stiffness κ of a law with sabsh1_mm_s = 1e-300 (about 1e302).
+#[test]
+fn huge_values_are_shown_with_their_exponent() {
+    let (code, err) = simulate_variant("friction_value_huge", &[("fkin = 0.25\n", "fkin = 1e300\n")], &[]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("friction.fkin` = 1e300: allowed: a finite number in [0, 1000]"), "{err}");
+    let steep = [("sabsh1_mm_s = 600.0\nmemory_mm = 0.01\nmemory_s0_mm_s = 10.0\n", "sabsh1_mm_s = 1e-300\n")];
+    let (code, err) = simulate_variant("friction_value_kappa", &steep, &[]);
+    assert_eq!(code, Some(2), "{err}");
+    let kappa = err.split("uba's kappa = ").nth(1).and_then(|k| k.split(')').next()).unwrap_or_default();
+    assert!(kappa.parse::<f64>().is_ok_and(|k| k > 1e300 && k.is_finite()), "{err}");
+}

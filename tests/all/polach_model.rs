@@ -67,3 +67,27 @@ fn polach_falling_friction_and_reductions() {
     let e = creepbench::pipeline::resolve(&scene).unwrap_err().to_string();
     assert!(e.contains("model.polach_k_s"), "{e}");
 }
+
+/// A friction coefficient so small that Polach's ratio ε overflows (μ = 1e-310, allowed by
+/// contact.mu's (0, 1000]; likewise a falling law's static value fkin + f1 + f2): full sliding,
+/// f = μ, where the run used to fail with "non-finite traction coefficient at step 1" (exit 1).
+#[test]
+fn polach_slides_fully_where_its_ratio_overflows() {
+    let step = "kind = \"step\"\nc = 0.3\nsteps = 3";
+    let coulomb = problem(&scene_text("pol", "[\"polach\"]", 1e-310, 8, step, ""));
+    let falling = scene_text(
+        "pol",
+        "[\"polach\"]",
+        1.0,
+        8,
+        step,
+        "[friction]\nlaw = \"exponential\"\nfkin = 0\nf1 = 1e-320\nsabsh1_mm_s = 600.0",
+    )
+    .replace("mu = 1\n", "");
+    for (p, mu) in [(coulomb, 1e-310), (problem(&falling), 1e-320)] {
+        for v in f(&run(&p, "polach")) {
+            assert!(v.is_finite() && (v - mu).abs() <= 1e-3 * mu, "{v} vs {mu}");
+        }
+    }
+    assert!((resultant(f64::INFINITY, 1.0, 1.0) - 1.0).abs() < 1e-15);
+}

@@ -13,7 +13,7 @@ use super::veldep::{step_start, Motion as LawStep, VelDep, VelDepOptions, VelDep
 use super::ContactError;
 use crate::error::InputError;
 use crate::physics::geometry::element::equivalent_ellipse;
-use crate::physics::{moment_sum, LinearTheory, NormalPressure};
+use crate::physics::{moment_sum, FrictionLaw, LinearTheory, NormalPressure};
 use crate::problem::{Problem, Sample};
 use crate::scene::Motion;
 use crate::solvers::stepper::{FieldView, Step, Stepper};
@@ -43,6 +43,7 @@ const SECONDS_PER_COST: f64 = 1.3e-7;
 
 /// A run estimated to take longer than `[limits] max_estimated_s` is refused before it starts.
 fn check(p: &Problem) -> Result<(), InputError> {
+    check_kinetic_floor(p)?;
     if p.friction.is_falling() && p.loading.rows().any(|s| s.courant.is_some()) {
         return Err(InputError::new(
             "creepage.file column courant",
@@ -103,6 +104,26 @@ fn check(p: &Problem) -> Result<(), InputError> {
         "limits.max_estimated_s",
         p.limits.max_estimated_s,
         format!("a limit above the exact-theory solver's estimated {estimated_s:.0} s for {} rows on {}x{} elements (raise it to run this scene)", p.loading.rows().count(), p.grid.mx, p.grid.my),
+    ))
+}
+
+/// A falling law needs FKIN > 0 here: the traction bound μ(s)·pn must be positive on the whole
+/// contact ([`TangentialSolver::set_bound`]). μ_s(s) ≥ FKIN, and the memory's μ lies between μ_prev
+/// and μ_s (`physics::Memory::update`), so FKIN > 0 keeps it positive; with FKIN = 0 the bound
+/// reaches 0: the linear law at s ≥ 2·SABSH (`m_friclaw.f90` lines 422-426), the exponential and
+/// rational laws where their terms underflow.
+fn check_kinetic_floor(p: &Problem) -> Result<(), InputError> {
+    let fkin = match &p.friction {
+        FrictionLaw::Coulomb { .. } => return Ok(()),
+        FrictionLaw::Linear(t) | FrictionLaw::Rational(t) | FrictionLaw::Exponential(t) => t.fkin,
+    };
+    if fkin > 0.0 {
+        return Ok(());
+    }
+    Err(InputError::new(
+        "friction.fkin",
+        fkin,
+        "a kinetic coefficient > 0 when the scene runs contact (the exact solver's traction bound mu(s) p must stay positive on the contact; with fkin = 0 the law falls to mu = 0: the linear law at s >= 2 sabsh1_mm_s, the others where their terms underflow); fastsim, uba, relaxation and polach take fkin = 0",
     ))
 }
 

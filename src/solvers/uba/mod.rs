@@ -77,11 +77,21 @@ fn check_falling(p: &Problem) -> Result<(), InputError> {
     }
     Err(InputError::new(
         "friction.memory_mm",
-        format!("none (uba's kappa = {kappa:.3})"),
+        format!("none (uba's kappa = {})", kappa_text(kappa)),
         format!(
             "uba's stiffness kappa = p_max V L max|dmu/ds| / (gain C dx) < {MAX_STIFFNESS} with a falling law and no friction memory (each element's bound mu(s) p then has one root; sub-steps only raise kappa): give memory_mm > 0, a flatter law (larger sabsh1_mm_s), a lower speed, a larger courant, or leave uba out"
         ),
     ))
+}
+
+/// κ as a message shows it: three decimals, with an exponent where that would be longer than a
+/// message's excerpt keeps (κ reaches 1e300 with a tiny sabsh1_mm_s).
+fn kappa_text(kappa: f64) -> String {
+    if kappa < 1e9 {
+        format!("{kappa:.3}")
+    } else {
+        format!("{kappa:.3e}")
+    }
 }
 
 /// κ = max over the history of p_max V max(L1, L2) max|dμ_s/ds| / (min gain · C dx), C the

@@ -9,6 +9,7 @@ use super::window::{circular_in_x, curvature_ratio, load_of_approach, quadratic,
 use super::{case3, floats, material_of, table, Draft, Source};
 use crate::error::InputError;
 use crate::physics::material::combine_bodies;
+use crate::physics::FallingTerms;
 use std::fmt::Write;
 use toml::Value;
 
@@ -142,6 +143,9 @@ fn grid_geometry(
 
 /// `[friction]` of a falling law (L = 2, 3, 4) with its memory; `None`: Coulomb (`contact.mu`).
 /// An absent second term (F2 = 0) and an absent memory (MEMDST = 0) are left out: they change no μ.
+/// Each term's SABSH is the one CONTACT uses, max(1e-4, SABSH) where its F < 1e-8 (`fric_input`,
+/// `m_friclaw.f90` lines 833-846: [`FallingTerms::scale`]), so that a deck CONTACT accepts with
+/// SABSH = 0 in such a term gives the same law.
 fn friction_table(s: &State) -> Option<Value> {
     let law = match s.friction_law {
         2 => "linear",
@@ -154,10 +158,10 @@ fn friction_table(s: &State) -> Option<Value> {
         ("law", Value::String(law.into())),
         ("fkin", Value::Float(f[0])),
         ("f1", Value::Float(f[1])),
-        ("sabsh1_mm_s", Value::Float(f[2])),
+        ("sabsh1_mm_s", Value::Float(FallingTerms::scale(f[1], f[2]))),
     ];
     if f[3] != 0.0 {
-        pairs.extend([("f2", Value::Float(f[3])), ("sabsh2_mm_s", Value::Float(f[4]))]);
+        pairs.extend([("f2", Value::Float(f[3])), ("sabsh2_mm_s", Value::Float(FallingTerms::scale(f[3], f[4])))]);
     }
     if s.memory[0] != 0.0 {
         pairs.extend([("memory_mm", Value::Float(s.memory[0])), ("memory_s0_mm_s", Value::Float(s.memory[1]))]);
