@@ -719,10 +719,13 @@ pub fn manifest(dir: &Path) -> Result<(), Error> {
 /// (`DIR/<name>.inp`, written whole; never inside golden/); a study file: one per point.
 pub fn export_contact(scene_path: &Path, out: &Path, golden: &Path) -> Result<Vec<PathBuf>, Error> {
     // A scene file, or a study file: every point, all validated before anything is written.
-    let problems = suite::sources_of_file(scene_path)?
-        .iter()
-        .map(|s| pipeline::load_source(s, &[]))
-        .collect::<Result<Vec<_>, _>>()?;
+    // CONTACT's own input check refuses what the deck would give it out of its ranges.
+    let export_ready = |s: &suite::SceneSource| -> Result<_, Error> {
+        let problem = pipeline::load_source(s, &[])?;
+        crate::export::contact::check(&problem).map_err(|e| pipeline::in_source(s, e))?;
+        Ok(problem)
+    };
+    let problems = suite::sources_of_file(scene_path)?.iter().map(export_ready).collect::<Result<Vec<_>, _>>()?;
     let paths: Vec<PathBuf> = problems.iter().map(|p| out.join(format!("{}.inp", p.name))).collect();
     guard::guard_output_dir(out, golden)?;
     for path in &paths {

@@ -54,16 +54,7 @@ pub fn load_source(source: &SceneSource, only: &[String]) -> Result<Problem, Err
 /// [`InProcess`]) in its `solvers`.
 pub fn load_source_with(source: &SceneSource, only: &[String], in_process: &[String]) -> Result<Problem, Error> {
     let path = &source.path;
-    let place = match source.study {
-        None => path.display().to_string(),
-        Some(_) => format!("{} (study point {})", path.display(), source.name),
-    };
-    let in_file = |mut e: InputError| {
-        if !e.field.starts_with(&path.display().to_string()) {
-            e.field = format!("{place}: {}", e.field);
-        }
-        e
-    };
+    let in_file = |e: InputError| in_source(source, e);
     let scene = match &source.study {
         None => Scene::from_file(path),
         Some((doc, points)) => {
@@ -75,6 +66,19 @@ pub fn load_source_with(source: &SceneSource, only: &[String], in_process: &[Str
     let mut problem = resolve_with(scene, in_process).map_err(in_file)?;
     narrow(&mut problem, only)?;
     Ok(problem)
+}
+
+/// `e`, a scene's error, naming the file it comes from (and the study point) before its field.
+pub fn in_source(source: &SceneSource, mut e: InputError) -> InputError {
+    let path = source.path.display().to_string();
+    if !e.field.starts_with(&path) {
+        let place = match source.study {
+            None => path,
+            Some(_) => format!("{path} (study point {})", source.name),
+        };
+        e.field = format!("{place}: {}", e.field);
+    }
+    e
 }
 
 /// Validate and resolve a scene given as a table (not read from a file: errors name the field

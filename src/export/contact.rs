@@ -30,6 +30,7 @@
 //! VELOC and the material again), as reference/contact_friction/README.contact_friction.md forms
 //! its histories.
 
+use crate::error::InputError;
 use crate::physics::halfspace::influence::Basis;
 use crate::physics::{FrictionLaw, NormalPressure};
 use crate::problem::{LoadingKind, Problem, Sample};
@@ -43,6 +44,64 @@ const MU_CHANGE_REL: f64 = 1e-9;
 /// SABSH2 written for a second term that is absent (F2 = 0): any positive value gives the same
 /// law; CONTACT's own inputs use 1000 mm/s.
 const SABSH2_UNUSED_MM_S: f64 = 1000.0;
+
+/// CONTACT's range of FSTAT = FKIN with L = 0, V = 3 (`m_friclaw.f90` line 803, `fric_input`:
+/// `check_range('FKIN', fkin, 1d-4, 1d10)`).
+const FKIN_COULOMB: (f64, f64) = (1e-4, 1e10);
+/// CONTACT's range of SABSH1, SABSH2 [mm/s] with L = 2, 3, 4 (`m_friclaw.f90` lines 853-854,
+/// `fric_input`), checked after a term whose F is below [`F_ABSENT`] had its SABSH raised to at
+/// least 1e-4 (lines 833-846).
+const SABSH_RANGE: (f64, f64) = (1e-5, 1e20);
+/// A falling term with F below this is absent to CONTACT (`m_friclaw.f90` lines 833-846).
+const F_ABSENT: f64 = 1e-8;
+
+/// The values the deck gives CONTACT within the ranges of CONTACT's own input check (`fric_input`,
+/// `m_friclaw.f90` lines 798-855): Coulomb's μ (FSTAT = FKIN, of every case and grid row) and a
+/// falling law's SABSH1, SABSH2 where their term is present. An error names the scene's key.
+pub fn check(p: &Problem) -> Result<(), InputError> {
+    match &p.friction {
+        FrictionLaw::Coulomb { .. } => check_coulomb(p),
+        FrictionLaw::Linear(t) | FrictionLaw::Rational(t) | FrictionLaw::Exponential(t) => {
+            check_sabsh("friction.sabsh1_mm_s", t.sabsh1_mm_s, ("friction.f1", t.f1))?;
+            check_sabsh("friction.sabsh2_mm_s", t.sabsh2_mm_s, ("friction.f2", t.f2))
+        }
+    }
+}
+
+/// Coulomb's μ written as FSTAT = FKIN: each grid row's (`mu_rows`, V = 3), else each case's
+/// (`contact.mu`, or a table's column `mu`), in [`FKIN_COULOMB`].
+fn check_coulomb(p: &Problem) -> Result<(), InputError> {
+    let (lo, hi) = FKIN_COULOMB;
+    let allowed =
+        format!("a coefficient of friction in [{lo:e}, {hi:e}] (CONTACT's FSTAT = FKIN, m_friclaw.f90 fric_input)");
+    if let Some(rows) = &p.friction_rows {
+        return match rows.rows().iter().enumerate().find(|(_, mu)| !(lo..=hi).contains(*mu)) {
+            Some((j, mu)) => Err(InputError::new(format!("friction.mu_rows[{j}]"), mu, allowed)),
+            None => Ok(()),
+        };
+    }
+    match p.loading.rows().find(|s| !(lo..=hi).contains(&s.mu)) {
+        Some(s) if s.mu == p.nominal.mu => Err(InputError::new("contact.mu", s.mu, allowed)),
+        Some(s) => Err(InputError::new(format!("creepage.file column mu (step {})", s.step), s.mu, allowed)),
+        None => Ok(()),
+    }
+}
+
+/// A falling term's SABSH `key` = `sabsh` in [`SABSH_RANGE`] where its F (`f_key` = `f`) is at least
+/// [`F_ABSENT`] (an absent term's SABSH CONTACT raises itself).
+fn check_sabsh(key: &str, sabsh: f64, (f_key, f): (&str, f64)) -> Result<(), InputError> {
+    let (lo, hi) = SABSH_RANGE;
+    if f < F_ABSENT || (lo..=hi).contains(&sabsh) {
+        return Ok(());
+    }
+    Err(InputError::new(
+        key,
+        sabsh,
+        format!(
+            "a slip velocity in [{lo:e}, {hi:e}] mm/s where {f_key} >= {F_ABSENT:e} ({f_key} = {f}; CONTACT's SABSH, m_friclaw.f90 fric_input)"
+        ),
+    ))
+}
 
 /// The CONTACT input that computes the problem's history, one case per row.
 pub fn module3_input(p: &Problem) -> String {

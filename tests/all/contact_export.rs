@@ -130,3 +130,49 @@ fn exported_falling_friction_inputs_equal_contacts_own() {
         assert_eq!(names.len(), count, "{reference}");
     }
 }
+
+/// `creepbench export contact` on the scene `suite`/`name` with `replace` applied, in a fresh
+/// folder `dir`: the exit status and the error output; nothing may be written where it fails.
+fn export_variant(dir: &str, (suite, name): (&str, &str), replace: (&str, &str)) -> (Option<i32>, String) {
+    let dir = common::tempdir(dir);
+    let text = std::fs::read_to_string(root().join(suite).join(format!("{name}.toml"))).unwrap();
+    assert!(text.contains(replace.0), "{}", replace.0);
+    std::fs::write(dir.join("s.toml"), text.replace(replace.0, replace.1)).unwrap();
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(&dir)
+        .args(["export", "contact", "s.toml", "--out", "out"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr).to_string();
+    assert!(o.status.success() || !dir.join("out").exists(), "{name}: written after an error: {err}");
+    (o.status.code(), err)
+}
+
+/// CONTACT's own input check (`fric_input`, m_friclaw.f90) refuses SABSH1, SABSH2 below 1e-5 mm/s
+/// where their F ≥ 1e-8, and a Coulomb FSTAT = FKIN below 1e-4: the export refuses such a scene
+/// (exit 2, naming the file, the key, the value and CONTACT's range) and writes nothing; at the
+/// bounds it writes the deck.
+#[test]
+fn export_refuses_what_contacts_input_check_refuses() {
+    let falling = ("scenes/friction", "fr_exp_mem_speed_sweep");
+    let (code, err) = export_variant("export_sabsh1", falling, ("sabsh1_mm_s = 600.0", "sabsh1_mm_s = 9e-6"));
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("s.toml: friction.sabsh1_mm_s` = 0.000009: allowed: a slip velocity in [1e-5, 1e20] mm/s"),
+        "{err}"
+    );
+    let two = "sabsh1_mm_s = 600.0\nf2 = 0.1\nsabsh2_mm_s = 1e-6";
+    let (code, err) = export_variant("export_sabsh2", falling, ("sabsh1_mm_s = 600.0", two));
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("friction.sabsh2_mm_s` = 0.000001"), "{err}");
+    // An absent second term (F2 < 1e-8): CONTACT raises its SABSH2 itself.
+    let absent = "sabsh1_mm_s = 1e-5\nf2 = 1e-9\nsabsh2_mm_s = 1e-6";
+    let (code, err) = export_variant("export_sabsh_absent", falling, ("sabsh1_mm_s = 600.0", absent));
+    assert_eq!(code, Some(0), "{err}");
+    let coulomb = ("scenes/thesis", "step_cx001");
+    let (code, err) = export_variant("export_mu", coulomb, ("mu = 0.4", "mu = 9e-5"));
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("s.toml: contact.mu` = 0.00009: allowed: a coefficient of friction in [1e-4, 1e10]"), "{err}");
+    let (code, err) = export_variant("export_mu_bound", coulomb, ("mu = 0.4", "mu = 1e-4"));
+    assert_eq!(code, Some(0), "{err}");
+}
