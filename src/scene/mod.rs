@@ -377,6 +377,8 @@ pub(crate) const FORCE_RATIO: Range = Range::new(-1.0, false, 1.0, false);
 const SPIN_LIMIT: Range = Range::new(-10.0, true, 10.0, true);
 /// A rolling speed [mm/s] (`[rolling] v_mm_s`, a table's or a sweep's).
 pub const SPEED_LIMIT: Range = Range::new(0.0, false, 1e6, true);
+/// A coefficient of friction (`[contact] mu`, `[friction] mu_rows`, a table's column `mu`).
+pub const MU_LIMIT: Range = Range::new(0.0, false, 1e3, true);
 /// Any finite number (a sweep's parameter and direction; the points are checked).
 const FINITE: Range = Range::new(f64::NEG_INFINITY, false, f64::INFINITY, false);
 /// `[grid] scale`: the grid's extent in nominal semi-axes.

@@ -141,7 +141,7 @@ pub fn contact(top: &mut Section, element_geometry: Option<GeometrySpec>) -> Res
         None => ellipse(&mut c)?,
     };
     let fn_n = c.f64("fn_n", Range::new(0.0, false, 1e9, true))?;
-    let mu = c.opt_f64("mu", Range::new(0.0, false, 1e3, true))?;
+    let mu = c.opt_f64("mu", super::MU_LIMIT)?;
     let pen_mm = c.opt_f64("pen_mm", Range::new(0.0, false, super::table::PEN_MAX_MM, true))?;
     c.finish()?;
     Ok(ContactSpec { geometry, fn_n, mu, pen_mm })
@@ -227,7 +227,7 @@ pub fn friction(top: &mut Section, mu: Option<f64>, my: usize) -> Result<Frictio
 /// `[friction] mu_rows` (Coulomb only): μ of every grid row, `my` values in (0, 1000], the first
 /// at the lowest y (CONTACT's V = 3, FSTAT per row IY); `contact.mu` is then left out.
 fn mu_rows(f: &mut Section, mu: Option<f64>, my: usize) -> Result<Option<RowFriction>, InputError> {
-    let Some(list) = f.opt_f64_list("mu_rows", Range::new(0.0, false, 1e3, true), MAX_ELEMENTS_PER_AXIS)? else {
+    let Some(list) = f.opt_f64_list("mu_rows", super::MU_LIMIT, MAX_ELEMENTS_PER_AXIS)? else {
         return Ok(None);
     };
     if list.len() != my {

@@ -369,11 +369,12 @@ fn in_range(name: &str, v: f64) -> bool {
         "fx_over_fn" | "fy_over_fn" => v.is_finite() && v.abs() < 1.0,
         "cs" => v.is_finite() && v.abs() <= 10.0,
         "v_mm_s" => super::SPEED_LIMIT.contains(v),
+        "mu" => super::MU_LIMIT.contains(v),
         "courant" => COURANT_LIMIT.contains(v),
         "pen_mm" => v.is_finite() && v > 0.0 && v <= PEN_MAX_MM,
         "chi_deg" => (0.0..360.0).contains(&v),
         c if H_COLUMNS.contains(&c) => v.is_finite(),
-        _ => v.is_finite() && v > 0.0, // fn_n, mu
+        _ => v.is_finite() && v > 0.0, // fn_n
     }
 }
 
@@ -385,6 +386,7 @@ fn allowed(name: &str) -> &'static str {
         "fx_over_fn" | "fy_over_fn" => "a finite force ratio in (-1, 1) (below the row's mu)",
         "cs" => "a finite spin in [-10, 10] 1/mm",
         "v_mm_s" => "a rolling speed in (0, 1e6] mm/s",
+        "mu" => "a coefficient of friction in (0, 1000] (as [contact] mu)",
         "courant" => "a Courant number in (0, 100] (the step's rolling distance dq = courant dx)",
         "pen_mm" => "a finite approach in (0, 10] mm",
         "chi_deg" => "a rolling direction in [0, 360) degrees",

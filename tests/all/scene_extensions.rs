@@ -316,3 +316,27 @@ fn interpolation_clamps_to_the_first_and_last_rows() {
     assert_eq!(t.interpolate(t.cx.values(), 0.2 * (1.0 + 1e-9)), 0.003);
     assert_eq!(t.interpolate(t.cx.values(), 1.0), 0.003);
 }
+
+/// A table's `mu` column has `[contact] mu`'s range (0, 1000]: 1e300 was accepted. The error
+/// names the table's file, the line and the column.
+#[test]
+fn a_tables_mu_has_the_range_of_contact_mu() {
+    let e = CreepageTable::from_csv("t_s,cx,mu\n0,0.001,0.4\n0.001,0.001,1e300\n", "t.csv").unwrap_err();
+    assert_eq!(e.field, "t.csv line 3 column mu", "{e}");
+    assert_eq!(e.value, "100000000000000000000000000000000000000000000000000000000000… (301 bytes)", "{e}");
+    assert!(e.allowed.contains("a coefficient of friction in (0, 1000]"), "{e}");
+    assert!(CreepageTable::from_csv("t_s,cx,mu\n0,0.001,0.4\n0.001,0.001,1000\n", "t.csv").is_ok());
+    let dir = tempdir("table_mu_range");
+    let text = scene("kind = \"table\"\nfile = \"t.csv\"", "");
+    std::fs::write(dir.join("s.toml"), text).unwrap();
+    std::fs::write(dir.join("t.csv"), "t_s,cx,mu\n0,0.001,0.4\n0.001,0.001,1000.5\n").unwrap();
+    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(&dir)
+        .args(["simulate", "s.toml", "--out", "out"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("s.toml: creepage.file (t.csv) line 3 column mu` = 1000.5: allowed: a coefficient"), "{err}");
+    assert!(!dir.join("out").exists());
+}
