@@ -17,7 +17,9 @@ use crate::physics::{
     CoefficientSource, Coefficients, ContactGeometry, Flexibilities, FrictionLaw, Grid, HertzContact, Material, Memory,
     PatchFlexibility, Planform,
 };
-use crate::scene::{ContactSolverOptions, ExternalSolver, Limits, ModelOptions, Motion, NormalOptions, Scene};
+use crate::scene::{
+    ContactSolverOptions, Creepage, ExternalSolver, Limits, ModelOptions, Motion, NormalOptions, Scene,
+};
 use std::path::PathBuf;
 use std::sync::Arc;
 
@@ -253,7 +255,34 @@ impl Problem {
         let physics = Physics::resolve(scene)?;
         let problem = Problem::assemble(scene, solvers, model_params, physics);
         problem.check_derived()?;
+        problem.check_sweep_speeds(scene)?;
         Ok(problem)
+    }
+
+    /// A speed sweep's speeds (`over = "v_mm_s"`) within `[rolling] v_mm_s`'s range, its lower
+    /// bound included: a time step courant dx / v that is finite ([`Self::check_derived`]). The
+    /// error names the entry of `at` or the end (`from`, `to`).
+    fn check_sweep_speeds(&self, scene: &Scene) -> Result<(), InputError> {
+        let Creepage::Sweep { at, speed: true, .. } = &scene.creepage else {
+            return Ok(());
+        };
+        for (k, v) in self.loading.samples.iter().filter_map(|s| Some((s.step, s.v_mm_s?))) {
+            let dt_s = self.rolling.dq_mm / v;
+            if dt_s.is_finite() && dt_s > 0.0 {
+                continue;
+            }
+            let key = match at {
+                Some(_) => format!("at[{}]", k - 1),
+                None if k == 1 => "from".into(),
+                None => "to".into(),
+            };
+            return Err(InputError::new(
+                format!("creepage.{key}"),
+                format!("{v:e} (sweep point {k}: dt = {dt_s:e} s)"),
+                "a speed sweep's speeds as [rolling] v_mm_s: in (0, 1e6] mm/s with a finite time step courant dx / v",
+            ));
+        }
+        Ok(())
     }
 
     /// The problem of `scene` from its resolved physics and the scene's settings, copied as given;

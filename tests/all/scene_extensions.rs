@@ -340,3 +340,19 @@ fn a_tables_mu_has_the_range_of_contact_mu() {
     assert!(err.contains("s.toml: creepage.file (t.csv) line 3 column mu` = 1000.5: allowed: a coefficient"), "{err}");
     assert!(!dir.join("out").exists());
 }
+
+/// A speed sweep's speeds have `[rolling] v_mm_s`'s range, its lower bound included: a speed
+/// whose time step courant dx / v overflows (5e-324 mm/s) is refused as `rolling.v_mm_s` refuses
+/// it, naming the entry of `at` or the end; 1e-300 mm/s (a finite step) passes.
+#[test]
+fn a_speed_sweep_has_the_speed_range_of_rolling() {
+    let allowed = "a speed sweep's speeds as [rolling] v_mm_s: in (0, 1e6] mm/s with a finite time step";
+    let at = "kind = \"sweep\"\nover = \"v_mm_s\"\nat = [1000.0, 5e-324]";
+    assert_refused(&scene(at, ""), "creepage.at[1]", "5e-324 (sweep point 2: dt = inf s)", allowed);
+    let ends = "kind = \"sweep\"\nover = \"v_mm_s\"\nfrom = 5e-324\nto = 1e-300\npoints = 3";
+    assert_refused(&scene(ends, ""), "creepage.from", "5e-324 (sweep point 1", allowed);
+    let rolling = "[rolling]\nv_mm_s = 5e-324\n";
+    assert_refused(&scene("kind = \"step\"\nc = 0.001\nsteps = 4", rolling), "rolling.v_mm_s", "5e-324", "finite");
+    let fine = scene("kind = \"sweep\"\nover = \"v_mm_s\"\nat = [1000.0, 1e-300]", "");
+    problem(&fine);
+}
