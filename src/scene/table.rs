@@ -117,7 +117,7 @@ impl CreepageTable {
         check_columns(&header, origin)?;
         check_required(&header, origin)?;
         let h_given = h_columns_given(&header, origin)?;
-        let (cols, lines) = read_rows(&mut rdr, &header, origin)?;
+        let (cols, lines) = read_rows(&mut rdr, text, &header, origin)?;
         let table = Self::from_columns(&header, &cols, h_given);
         check_times(&table.t_s, &lines, origin)?;
         Ok(table)
@@ -277,6 +277,7 @@ fn h_columns_given(header: &[String], origin: &str) -> Result<bool, InputError> 
 /// line of the file each row is on (for messages).
 fn read_rows(
     rdr: &mut csv::Reader<&[u8]>,
+    text: &str,
     header: &[String],
     origin: &str,
 ) -> Result<(Vec<Vec<f64>>, Vec<usize>), InputError> {
@@ -288,7 +289,7 @@ fn read_rows(
     let mut cols: Vec<Vec<f64>> = vec![Vec::new(); header.len()];
     let mut lines = Vec::new();
     for (r, rec) in rdr.records().enumerate() {
-        let row = line_of(&rec).unwrap_or(r + 2);
+        let row = line_of(text, &rec).unwrap_or(r + 2);
         let rec = check_record(rec, header.len(), origin, row)?;
         check_pairs(&rec, header, &pairs, origin, row)?;
         for (c, cell) in rec.iter().enumerate() {
@@ -299,14 +300,17 @@ fn read_rows(
     Ok((cols, lines))
 }
 
-/// The 1-based line of the file a record starts on, as the CSV reader counts it: the reader skips
-/// empty lines, so a record's index is not its line.
-fn line_of(rec: &csv::Result<csv::StringRecord>) -> Option<usize> {
+/// The 1-based line of `text` (the CSV read) a record starts on: the reader skips empty lines, so
+/// a record's index is not its line, and the position it gives a record after empty lines is that
+/// of the first of them (csv 1.4: its line and byte): the empty lines from there are counted too.
+pub(super) fn line_of(text: &str, rec: &csv::Result<csv::StringRecord>) -> Option<usize> {
     let position = match rec {
         Ok(rec) => rec.position(),
         Err(e) => e.position(),
-    };
-    position.map(|p| p.line() as usize)
+    }?;
+    let rest = text.as_bytes().get(usize::try_from(position.byte()).ok()?..)?;
+    let empty_lines = rest.iter().take_while(|b| matches!(b, b'\r' | b'\n')).filter(|&&b| b == b'\n').count();
+    Some(position.line() as usize + empty_lines)
 }
 
 /// The record of line `row`: readable CSV of `fields` fields (the header's).

@@ -217,3 +217,35 @@ fn nonhertz_input_errors_and_warnings() {
     let p = resolve(&base.replace("y_mm = [-7.5, 7.5]", "y_mm = [-4.0, 4.0]").replace("my = 30", "my = 16")).unwrap();
     assert!(p.warnings.iter().any(|w| w.contains("grid's edge") && w.contains("% of the load")), "{:?}", p.warnings);
 }
+
+/// The profile and field readers name the line of the file: the CSV reader skips empty lines, so
+/// a row after them is not on line (its index + 2), where the errors used to point.
+#[test]
+fn geometry_errors_name_the_line_after_empty_lines() {
+    let base = std::fs::read_to_string(root().join("scenes/nonhertz/nh_flat_sweep_cx.toml")).unwrap();
+    let dir = root().join("scenes/nonhertz");
+    let err = |text: &str| {
+        let e = Scene::from_toml(text, &dir).and_then(|s| creepbench::pipeline::resolve(&s));
+        e.expect_err("an input error").to_string()
+    };
+    let tmp = tempdir("nonhertz_lines");
+    let with_file = |text: &str, file: &str| {
+        text.replace(
+            "\"../../reference/contact_nonhertz/profile_flat.csv\"",
+            &format!("\"{}\"", tmp.join(file).display()),
+        )
+    };
+    // y_mm not increasing on line 6, after two empty lines (the row index + 2 is 4).
+    std::fs::write(tmp.join("p.csv"), "y_mm,g_mm\n-10,1\n\n\n0,0\n0,0.5\n10,1\n").unwrap();
+    let e = err(&with_file(&base, "p.csv"));
+    assert!(e.contains("geometry.profile line 6` = y_mm = 0 after 0"), "{e}");
+    // An element given twice, on line 4 right after an empty line (CRLF line ends).
+    std::fs::write(tmp.join("f.csv"), "ix,iy,h_mm\r\n1,1,0.0\r\n\r\n1,1,0.0\r\n").unwrap();
+    let field = base.replace("kind = \"profile\"\na1_per_mm = 0.001086956522\nprofile", "kind = \"field\"\nfield");
+    let e = err(&with_file(&field, "f.csv"));
+    assert!(e.contains("geometry.field line 4` = ix = 1, iy = 1: allowed: every element once"), "{e}");
+    // A cell that is not a number on line 5, the first row after the header's empty lines.
+    std::fs::write(tmp.join("g.csv"), "\nix,iy,h_mm\n\n\nx,1,0.0\n").unwrap();
+    let e = err(&with_file(&field, "g.csv"));
+    assert!(e.contains("g.csv) line 5 column ix` = \"x\""), "{e}");
+}

@@ -356,3 +356,13 @@ fn a_speed_sweep_has_the_speed_range_of_rolling() {
     let fine = scene("kind = \"sweep\"\nover = \"v_mm_s\"\nat = [1000.0, 1e-300]", "");
     problem(&fine);
 }
+
+/// A table row right after empty lines is named by its own line: the CSV reader gives it the
+/// position of the first empty line (c6081a0 named line 3 for a row on line 5).
+#[test]
+fn a_table_row_right_after_empty_lines_names_its_line() {
+    let e = CreepageTable::from_csv("t_s,cx,mu\n0,0.001,0.4\n\n\n0.001,0.001,1e300\n", "t.csv").unwrap_err();
+    assert_eq!(e.field, "t.csv line 5 column mu", "{e}");
+    let e = CreepageTable::from_csv("\r\nt_s,cx\r\n\r\n0.1,0.001\r\n\r\n0.1,0.003\r\n", "t.csv").unwrap_err();
+    assert_eq!(e.field, "t.csv line 6 column t_s", "{e}");
+}
