@@ -46,6 +46,21 @@ pub fn excerpt(v: &str) -> String {
     }
 }
 
+/// Longest plain decimal a message shows; a longer one (1e300 has 301 digits, which [`excerpt`]
+/// would cut) is written with an exponent.
+const PLAIN_DIGITS_MAX: usize = 24;
+
+/// A number as a message shows it: plain (`0.25`, `inf`), or with an exponent where the plain form
+/// is longer than [`PLAIN_DIGITS_MAX`] (`1e300`).
+pub fn number(v: f64) -> String {
+    let plain = format!("{v}");
+    if plain.len() > PLAIN_DIGITS_MAX {
+        format!("{v:e}")
+    } else {
+        plain
+    }
+}
+
 /// A data file that does not have the expected form (a history, metrics, a reference table).
 #[derive(Debug, thiserror::Error)]
 pub enum FormatError {

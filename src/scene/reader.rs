@@ -1,7 +1,7 @@
 //! A strict reader over a TOML table: typed getters with range checks, and unknown-key errors.
 //! Every error names the dotted field, the value given and what is allowed.
 
-use crate::error::InputError;
+use crate::error::{number, InputError};
 use std::collections::BTreeSet;
 use toml::{Table, Value};
 
@@ -108,28 +108,7 @@ impl Range {
     pub fn describe(&self) -> String {
         let lo = if self.min_inclusive { '[' } else { '(' };
         let hi = if self.max_inclusive { ']' } else { ')' };
-        format!("a finite number in {lo}{}, {}{hi}", fmt_num(self.min), fmt_num(self.max))
-    }
-}
-
-/// Longest plain decimal a message shows; a longer one (1e300 has 301 digits, which the message's
-/// excerpt would cut) is written with an exponent.
-const PLAIN_DIGITS_MAX: usize = 24;
-
-fn fmt_num(v: f64) -> String {
-    if v.is_infinite() {
-        if v > 0.0 {
-            "inf".into()
-        } else {
-            "-inf".into()
-        }
-    } else {
-        let plain = format!("{v}");
-        if plain.len() > PLAIN_DIGITS_MAX {
-            format!("{v:e}")
-        } else {
-            plain
-        }
+        format!("a finite number in {lo}{}, {}{hi}", number(self.min), number(self.max))
     }
 }
 
@@ -184,7 +163,7 @@ impl<'a> Section<'a> {
             other => return Err(InputError::new(self.field(key), show(other), range.describe())),
         };
         if !range.contains(x) {
-            return Err(InputError::new(self.field(key), fmt_num(x), range.describe()));
+            return Err(InputError::new(self.field(key), number(x), range.describe()));
         }
         Ok(Some(x))
     }
@@ -234,7 +213,7 @@ impl<'a> Section<'a> {
                 other => return Err(InputError::new(format!("{}[{n}]", self.field(key)), show(other), allowed)),
             };
             if !range.contains(x) {
-                return Err(InputError::new(format!("{}[{n}]", self.field(key)), fmt_num(x), allowed));
+                return Err(InputError::new(format!("{}[{n}]", self.field(key)), number(x), allowed));
             }
             out.push(x);
         }

@@ -323,7 +323,8 @@ fn interpolation_clamps_to_the_first_and_last_rows() {
 fn a_tables_mu_has_the_range_of_contact_mu() {
     let e = CreepageTable::from_csv("t_s,cx,mu\n0,0.001,0.4\n0.001,0.001,1e300\n", "t.csv").unwrap_err();
     assert_eq!(e.field, "t.csv line 3 column mu", "{e}");
-    assert_eq!(e.value, "100000000000000000000000000000000000000000000000000000000000… (301 bytes)", "{e}");
+    // The value with its exponent (error::number), not 60 of its 301 digits.
+    assert_eq!(e.value, "1e300", "{e}");
     assert!(e.allowed.contains("a coefficient of friction in (0, 1000]"), "{e}");
     assert!(CreepageTable::from_csv("t_s,cx,mu\n0,0.001,0.4\n0.001,0.001,1000\n", "t.csv").is_ok());
     let dir = tempdir("table_mu_range");
