@@ -14,14 +14,14 @@ pub fn read(mut g: Section, dir: &Path, (mx, my): (usize, usize)) -> Result<Geom
             let a1_per_mm = g.f64("a1_per_mm", Range::new(0.0, true, 1e3, true))?;
             let field = g.field("profile");
             let file = g.str("profile", "a CSV path (columns y_mm, g_mm) relative to the scene file")?;
-            let (cols, lines) = read_columns(&dir.join(file), &field, &["y_mm", "g_mm"])?;
+            let (cols, lines, origin) = read_columns(&dir.join(file), &field, &["y_mm", "g_mm"])?;
             let (y_mm, g_mm) = (cols[0].clone(), cols[1].clone());
             if y_mm.len() < 2 {
-                return Err(InputError::new(&field, format!("{} rows", y_mm.len()), "at least two rows"));
+                return Err(InputError::new(&origin, format!("{} rows", y_mm.len()), "at least two rows"));
             }
             if let Some(r) = (1..y_mm.len()).find(|&r| y_mm[r] <= y_mm[r - 1]) {
                 return Err(InputError::new(
-                    format!("{field} line {}", lines[r]),
+                    format!("{origin} line {}", lines[r]),
                     format!("y_mm = {} after {}", y_mm[r], y_mm[r - 1]),
                     "strictly increasing y_mm",
                 ));
@@ -31,10 +31,10 @@ pub fn read(mut g: Section, dir: &Path, (mx, my): (usize, usize)) -> Result<Geom
         _ => {
             let field = g.field("field");
             let file = g.str("field", "a CSV path (columns ix, iy, h_mm) relative to the scene file")?;
-            let (cols, lines) = read_columns(&dir.join(file), &field, &["ix", "iy", "h_mm"])?;
+            let (cols, lines, origin) = read_columns(&dir.join(file), &field, &["ix", "iy", "h_mm"])?;
             let mut h_mm = vec![f64::NAN; mx * my];
             for (r, ((&ix, &iy), &h)) in cols[0].iter().zip(&cols[1]).zip(&cols[2]).enumerate() {
-                let line = format!("{field} line {}", lines[r]);
+                let line = format!("{origin} line {}", lines[r]);
                 let index = |v: f64, n: usize| (v.fract() == 0.0 && v >= 1.0 && v <= n as f64).then(|| v as usize - 1);
                 let (Some(i), Some(j)) = (index(ix, mx), index(iy, my)) else {
                     return Err(InputError::new(
@@ -50,7 +50,7 @@ pub fn read(mut g: Section, dir: &Path, (mx, my): (usize, usize)) -> Result<Geom
             }
             if let Some(k) = h_mm.iter().position(|v| v.is_nan()) {
                 return Err(InputError::new(
-                    &field,
+                    &origin,
                     format!("{} of {} elements", cols[0].len(), mx * my),
                     format!(
                         "every element of the {mx} x {my} grid (ix = {}, iy = {} is missing)",
@@ -66,9 +66,13 @@ pub fn read(mut g: Section, dir: &Path, (mx, my): (usize, usize)) -> Result<Geom
     Ok(spec)
 }
 
-/// The columns `names` (exactly these, in this order) of a CSV of finite numbers, and the line of
-/// the file each row is on (for messages; empty lines are skipped, [`super::table::line_of`]).
-fn read_columns(path: &Path, field: &str, names: &[&str]) -> Result<(Vec<Vec<f64>>, Vec<usize>), InputError> {
+/// The columns `names` (exactly these, in this order) of a CSV of finite numbers, the line of
+/// the file each row is on (for messages; empty lines are skipped, [`super::table::line_of`]) and
+/// the origin messages name (`field (file)`).
+type Columns = (Vec<Vec<f64>>, Vec<usize>, String);
+
+/// [`Columns`] of the CSV at `path`, given as the scene's `field`.
+fn read_columns(path: &Path, field: &str, names: &[&str]) -> Result<Columns, InputError> {
     let text = crate::safety::read::read_text(path, crate::safety::read::TABLE_LIMIT_BYTES, "geometry file")
         .map_err(|e| InputError::new(field, path.display(), format!("an existing, readable CSV file ({e})")))?;
     let origin = format!("{field} ({})", path.display());
@@ -112,5 +116,5 @@ fn read_columns(path: &Path, field: &str, names: &[&str]) -> Result<(Vec<Vec<f64
     if cols[0].is_empty() {
         return Err(InputError::new(&origin, "no rows", "at least one row of numbers"));
     }
-    Ok((cols, lines))
+    Ok((cols, lines, origin))
 }

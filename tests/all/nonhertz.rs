@@ -238,12 +238,14 @@ fn geometry_errors_name_the_line_after_empty_lines() {
     // y_mm not increasing on line 6, after two empty lines (the row index + 2 is 4).
     std::fs::write(tmp.join("p.csv"), "y_mm,g_mm\n-10,1\n\n\n0,0\n0,0.5\n10,1\n").unwrap();
     let e = err(&with_file(&base, "p.csv"));
-    assert!(e.contains("geometry.profile line 6` = y_mm = 0 after 0"), "{e}");
+    // The message names the file as well as the key.
+    assert!(e.contains("p.csv) line 6` = y_mm = 0 after 0") && e.contains("geometry.profile ("), "{e}");
     // An element given twice, on line 4 right after an empty line (CRLF line ends).
     std::fs::write(tmp.join("f.csv"), "ix,iy,h_mm\r\n1,1,0.0\r\n\r\n1,1,0.0\r\n").unwrap();
     let field = base.replace("kind = \"profile\"\na1_per_mm = 0.001086956522\nprofile", "kind = \"field\"\nfield");
     let e = err(&with_file(&field, "f.csv"));
-    assert!(e.contains("geometry.field line 4` = ix = 1, iy = 1: allowed: every element once"), "{e}");
+    assert!(e.contains("f.csv) line 4` = ix = 1, iy = 1: allowed: every element once"), "{e}");
+    assert!(e.contains("geometry.field ("), "{e}");
     // A cell that is not a number on line 5, the first row after the header's empty lines.
     std::fs::write(tmp.join("g.csv"), "\nix,iy,h_mm\n\n\nx,1,0.0\n").unwrap();
     let e = err(&with_file(&field, "g.csv"));
