@@ -138,14 +138,7 @@ fn export_variant(dir: &str, (suite, name): (&str, &str), replace: (&str, &str))
     let text = std::fs::read_to_string(root().join(suite).join(format!("{name}.toml"))).unwrap();
     assert!(text.contains(replace.0), "{}", replace.0);
     std::fs::write(dir.join("s.toml"), text.replace(replace.0, replace.1)).unwrap();
-    let o = std::process::Command::new(env!("CARGO_BIN_EXE_creepbench"))
-        .current_dir(&dir)
-        .args(["export", "contact", "s.toml", "--out", "out"])
-        .output()
-        .unwrap();
-    let err = String::from_utf8_lossy(&o.stderr).to_string();
-    assert!(o.status.success() || !dir.join("out").exists(), "{name}: written after an error: {err}");
-    (o.status.code(), err)
+    common::run_in(&dir, &["export", "contact", "s.toml", "--out", "out"], name)
 }
 
 /// CONTACT's own input check (`fric_input`, m_friclaw.f90) refuses SABSH1, SABSH2 below 1e-5 mm/s

@@ -243,14 +243,7 @@ fn simulate_variant(name: &str, replace: &[(&str, &str)], files: &[(&str, &str)]
     for (file, content) in files {
         std::fs::write(dir.join(file), content).unwrap();
     }
-    let o = std::process::Command::new(env!("CARGO_BIN_EXE_creepbench"))
-        .current_dir(&dir)
-        .args(["simulate", "s.toml", "--out", "out"])
-        .output()
-        .unwrap();
-    let err = String::from_utf8_lossy(&o.stderr).to_string();
-    assert!(o.status.success() || !dir.join("out").exists(), "{name}: written after an error: {err}");
-    (o.status.code(), err)
+    run_in(&dir, &["simulate", "s.toml", "--out", "out"], name)
 }
 
 /// A speed table's errors name the line of the file: the CSV reader skips empty lines, so a row

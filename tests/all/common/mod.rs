@@ -161,3 +161,12 @@ pub fn take_kept_folder(message: &str) -> (PathBuf, Vec<String>, String, String)
     std::fs::remove_dir_all(&folder).unwrap();
     (folder, files, stdout, stderr)
 }
+
+/// `creepbench args` run in `dir` (writing to `dir/out`): its exit code and error output; where
+/// it fails, nothing may have been written to `dir/out` (`what` names the case in that message).
+pub fn run_in(dir: &Path, args: &[&str], what: &str) -> (Option<i32>, String) {
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_creepbench")).current_dir(dir).args(args).output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr).to_string();
+    assert!(o.status.success() || !dir.join("out").exists(), "{what}: written after an error: {err}");
+    (o.status.code(), err)
+}
