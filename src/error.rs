@@ -19,9 +19,17 @@ pub struct InputError {
 }
 
 impl InputError {
-    /// An input error; the value is cut to a short excerpt (a message never echoes a whole input).
+    /// An input error; a number longer than [`PLAIN_DIGITS_MAX`] is shown as [`number`] shows it
+    /// (with an exponent), and the value is cut to a short
+    /// excerpt (a message never echoes a whole input).
     pub fn new(field: impl Into<String>, value: impl fmt::Display, allowed: impl Into<String>) -> Self {
-        Self { field: field.into(), value: excerpt(&value.to_string()), allowed: allowed.into() }
+        let text = value.to_string();
+        let shown = match text.parse::<f64>() {
+            // Only a number whose plain form a message would cut; any other value as given.
+            Ok(v) if v.is_finite() && text.len() > PLAIN_DIGITS_MAX => number(v),
+            _ => text,
+        };
+        Self { field: field.into(), value: excerpt(&shown), allowed: allowed.into() }
     }
 }
 

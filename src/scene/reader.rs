@@ -163,7 +163,7 @@ impl<'a> Section<'a> {
             other => return Err(InputError::new(self.field(key), show(other), range.describe())),
         };
         if !range.contains(x) {
-            return Err(InputError::new(self.field(key), number(x), range.describe()));
+            return Err(InputError::new(self.field(key), x, range.describe()));
         }
         Ok(Some(x))
     }
@@ -213,7 +213,7 @@ impl<'a> Section<'a> {
                 other => return Err(InputError::new(format!("{}[{n}]", self.field(key)), show(other), allowed)),
             };
             if !range.contains(x) {
-                return Err(InputError::new(format!("{}[{n}]", self.field(key)), number(x), allowed));
+                return Err(InputError::new(format!("{}[{n}]", self.field(key)), x, allowed));
             }
             out.push(x);
         }

@@ -360,11 +360,7 @@ fn read_cell(cell: &str, name: &str, per_row: bool, origin: &str, row: usize) ->
         .parse()
         .map_err(|_| InputError::new(format!("{origin} line {row} column {name}"), format!("{cell:?}"), "a number"))?;
     if !in_range(name, v) {
-        return Err(InputError::new(
-            format!("{origin} line {row} column {name}"),
-            crate::error::number(v),
-            allowed(name),
-        ));
+        return Err(InputError::new(format!("{origin} line {row} column {name}"), v, allowed(name)));
     }
     Ok(v)
 }
