@@ -27,5 +27,6 @@ pub mod scene;
 pub mod simd;
 pub mod solvers;
 pub mod suite;
+pub mod wheelrail;
 
 pub use error::{Error, InputError};

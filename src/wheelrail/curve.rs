@@ -1,0 +1,95 @@
+//! A profile as the contact search uses it: the height z [mm] (CONTACT's z, pointing down into the
+//! rail) as a function of the lateral position y [mm] in the profile's own frame (user guide,
+//! "Form as needed by CONTACT"). Profiles read from files and the closed forms below both give it.
+
+use std::fmt::Debug;
+
+/// z(y) with its slope; `None` outside the profile's lateral range.
+pub trait Curve: Send + Sync + Debug {
+    /// z [mm] at y [mm].
+    fn z_mm(&self, y_mm: f64) -> Option<f64>;
+    /// dz/dy at y.
+    fn dz_dy(&self, y_mm: f64) -> Option<f64>;
+    /// The lateral range [y_min, y_max] [mm] the curve is defined on.
+    fn y_range_mm(&self) -> [f64; 2];
+}
+
+/// A circular arc `z = z0 ± (R − √(R² − (y − yc)²))` over `|y − yc| ≤ half_width`: convex (a rail
+/// crown, z grows away from the top) or, with `concave`, a hollow (a wheel tread of lateral
+/// radius R seen from the rail: z falls away from yc). Closed form for tests and Hertz's case.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Arc {
+    pub radius_mm: f64,
+    pub centre_y_mm: f64,
+    pub half_width_mm: f64,
+    /// Hollow instead of crowned.
+    pub concave: bool,
+}
+
+impl Arc {
+    fn sign(&self) -> f64 {
+        if self.concave {
+            -1.0
+        } else {
+            1.0
+        }
+    }
+    fn inside(&self, y_mm: f64) -> Option<f64> {
+        let u = y_mm - self.centre_y_mm;
+        (u.abs() <= self.half_width_mm).then_some(u)
+    }
+}
+
+impl Curve for Arc {
+    fn z_mm(&self, y_mm: f64) -> Option<f64> {
+        let u = self.inside(y_mm)?;
+        let r = self.radius_mm;
+        Some(self.sign() * (r - (r * r - u * u).sqrt()))
+    }
+    fn dz_dy(&self, y_mm: f64) -> Option<f64> {
+        let u = self.inside(y_mm)?;
+        let r = self.radius_mm;
+        Some(self.sign() * u / (r * r - u * u).sqrt())
+    }
+    fn y_range_mm(&self) -> [f64; 2] {
+        [self.centre_y_mm - self.half_width_mm, self.centre_y_mm + self.half_width_mm]
+    }
+}
+
+/// A straight line `z = z0 + slope · y` over a lateral range (a cone's tread, a flat rail).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Line {
+    pub z0_mm: f64,
+    pub slope: f64,
+    pub y_range_mm: [f64; 2],
+}
+
+impl Curve for Line {
+    fn z_mm(&self, y_mm: f64) -> Option<f64> {
+        let [lo, hi] = self.y_range_mm;
+        (lo..=hi).contains(&y_mm).then_some(self.z0_mm + self.slope * y_mm)
+    }
+    fn dz_dy(&self, y_mm: f64) -> Option<f64> {
+        self.z_mm(y_mm).map(|_| self.slope)
+    }
+    fn y_range_mm(&self) -> [f64; 2] {
+        self.y_range_mm
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_arc_has_its_radius_and_slope() {
+        let a = Arc { radius_mm: 300.0, centre_y_mm: 2.0, half_width_mm: 30.0, concave: false };
+        assert_eq!(a.z_mm(2.0), Some(0.0));
+        let z = a.z_mm(12.0).unwrap();
+        assert!((z - (300.0 - (300.0f64 * 300.0 - 100.0).sqrt())).abs() < 1e-15);
+        let h = 1e-5;
+        let fd = (a.z_mm(12.0 + h).unwrap() - a.z_mm(12.0 - h).unwrap()) / (2.0 * h);
+        assert!((a.dz_dy(12.0).unwrap() - fd).abs() < 1e-9);
+        assert_eq!(a.z_mm(40.0), None);
+    }
+}

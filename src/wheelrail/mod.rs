@@ -1,0 +1,163 @@
+//! The wheel–rail stage: profiles, track and wheelset → contact patches (CONTACT's module 1,
+//! steady planar contact). It sits between the scene and the problem: each patch it finds is a
+//! module-3 problem (an undeformed distance per element, creepages, a normal force) that every
+//! model solves alike; the models never see a profile.
+//!
+//! The order of the work, one file each: [`rail`] and [`wheel`] place the surfaces,
+//! [`search`] scans the contact locus for interpenetration regions, [`patch`] turns a region
+//! into a reference frame, a grid and an undeformed distance, [`vertical`] finds the height for a
+//! prescribed vertical force, [`creepage`] the kinematic creepages. Everything is computed on the
+//! right side; [`side`] mirrors a left wheel.
+
+pub mod creepage;
+pub mod curve;
+pub mod patch;
+pub mod rail;
+pub mod search;
+pub mod side;
+pub mod vertical;
+pub mod wheel;
+
+use crate::physics::halfspace::influence::Kernel;
+use crate::physics::halfspace::normal::{NormalParams, NormalSolver};
+use crate::physics::halfspace::ContactError;
+use crate::physics::Material;
+use curve::Curve;
+use patch::PatchGeometry;
+use rail::{PlacedRail, Track};
+use side::Side;
+use wheel::{PlacedWheel, Pose, Velocity, WheelsetGeometry};
+
+/// Why a wheel–rail case has no solution.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum WheelRailError {
+    #[error("the rail profile has no gauge face at depth {height_mm} mm below its top")]
+    NoGaugeFace { height_mm: f64 },
+    #[error("the wheel does not touch the rail")]
+    NoContact,
+    #[error("the wheel and rail profiles do not overlap laterally")]
+    NoOverlap,
+    #[error("no wheelset height gives FZ = {fz_n} N (last height {z_mm} mm)")]
+    VerticalNotConverged { fz_n: f64, z_mm: f64 },
+    #[error("patch {patch}: the grid of {elements} elements exceeds the limit of {limit}")]
+    GridTooLarge { patch: usize, elements: usize, limit: usize },
+    #[error("patch {patch}: normal problem: {source}")]
+    Normal { patch: usize, source: ContactError },
+}
+
+/// Largest potential contact of one patch [elements].
+pub const MAX_ELEMENTS: usize = 250_000;
+
+/// The vertical problem (CONTACT's N digit).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Vertical {
+    /// FZ prescribed (N = 1): the height z_ws is found.
+    Force { fz_n: f64 },
+    /// The height z_ws of the pose prescribed (N = 0).
+    Position,
+}
+
+/// One side's case: the surfaces, their placement, the wheelset's state and the discretisation.
+#[derive(Debug, Clone, Copy)]
+pub struct WheelRailCase<'a> {
+    pub side: Side,
+    pub rail: &'a dyn Curve,
+    pub wheel: &'a dyn Curve,
+    pub track: Track,
+    pub wheelset: WheelsetGeometry,
+    /// In the side's own frame (CONTACT's input).
+    pub pose: Pose,
+    pub velocity: Velocity,
+    pub vertical: Vertical,
+    pub dx_mm: f64,
+    pub ds_mm: f64,
+    pub material: Material,
+}
+
+/// A patch with its normal solution and creepages (right-side frame).
+#[derive(Debug, Clone, PartialEq)]
+pub struct NormalPatch {
+    pub geometry: PatchGeometry,
+    pub fn_n: f64,
+    /// Pressure per element [MPa], CONTACT's element order.
+    pub pn_mpa: Vec<f64>,
+    pub creepages: creepage::Creepages,
+}
+
+/// The normal contact of one case (right-side frame).
+#[derive(Debug, Clone, PartialEq)]
+pub struct NormalContact {
+    pub side: Side,
+    /// The wheelset height found (or given) [mm].
+    pub z_ws_mm: f64,
+    pub patches: Vec<NormalPatch>,
+}
+
+impl NormalContact {
+    /// Σ FN cos δ: the patches' normal forces' vertical part [N].
+    pub fn fz_normal_n(&self) -> f64 {
+        self.patches.iter().map(|p| p.fn_n * p.geometry.frame.delta_rad.cos()).sum()
+    }
+}
+
+/// The normal contact of `case`; with a prescribed force, the height where the normal forces'
+/// vertical parts sum to `fz_normal_n` (the vertical force less the tangential forces' part).
+pub fn normal_contact(case: &WheelRailCase, fz_normal_n: Option<f64>) -> Result<NormalContact, WheelRailError> {
+    let rail = PlacedRail::place(case.rail, &case.track)?;
+    let pose = case.side.pose(&case.pose);
+    let at = |z_mm: f64| patches_at(case, &rail, &Pose { z_mm, ..pose });
+    let z_ws_mm = match (case.vertical, fz_normal_n) {
+        (Vertical::Position, _) => pose.z_mm,
+        (Vertical::Force { fz_n }, target) => {
+            let wheel = PlacedWheel::place(case.wheel, &case.wheelset, &Pose { z_mm: 0.0, ..pose });
+            let deepest = search::deepest_mm(&search::scan(&wheel, &rail)).ok_or(WheelRailError::NoOverlap)?;
+            let target = target.unwrap_or(fz_n);
+            vertical::solve(-deepest, target, |z| {
+                Ok(at(z)?.iter().map(|p| p.fn_n * p.geometry.frame.delta_rad.cos()).sum())
+            })?
+            .0
+        }
+    };
+    let patches = at(z_ws_mm)?;
+    if patches.is_empty() {
+        return Err(WheelRailError::NoContact);
+    }
+    Ok(NormalContact { side: case.side, z_ws_mm, patches })
+}
+
+/// The patches and their normal solutions with the wheelset at `pose` (right-side frame).
+fn patches_at(case: &WheelRailCase, rail: &PlacedRail, pose: &Pose) -> Result<Vec<NormalPatch>, WheelRailError> {
+    let wheel = PlacedWheel::place(case.wheel, &case.wheelset, pose);
+    let samples = search::scan(&wheel, rail);
+    if samples.is_empty() {
+        return Err(WheelRailError::NoOverlap);
+    }
+    let velocity = case.side.velocity(&case.velocity);
+    let mut out = Vec::new();
+    for (k, region) in search::regions(&samples).into_iter().enumerate() {
+        let geometry = patch::build(region, &wheel, rail, case.dx_mm, case.ds_mm)?;
+        if geometry.grid.len() > MAX_ELEMENTS {
+            return Err(WheelRailError::GridTooLarge {
+                patch: k + 1,
+                elements: geometry.grid.len(),
+                limit: MAX_ELEMENTS,
+            });
+        }
+        let (fn_n, pn_mpa) = solve_normal(&geometry, &case.material)
+            .map_err(|source| WheelRailError::Normal { patch: k + 1, source })?;
+        let creepages = creepage::at_reference(&geometry.frame, &wheel, &velocity);
+        out.push(NormalPatch { geometry, fn_n, pn_mpa, creepages });
+    }
+    Ok(out)
+}
+
+/// The normal problem of one patch with the geometry's own approach (the interpenetration).
+fn solve_normal(g: &PatchGeometry, m: &Material) -> Result<(f64, Vec<f64>), ContactError> {
+    let kernel = Kernel::new(g.grid.mx, g.grid.ms, g.grid.dx_mm, g.grid.ds_mm, m.g_mpa, m.poisson, 0.0)?;
+    let sol = NormalSolver::new(&kernel)?.solve_approach(&g.h_mm, 0.0, &NormalParams::default())?;
+    let fn_n = sol.pn_mpa.iter().sum::<f64>() * g.grid.dx_mm * g.grid.ds_mm;
+    Ok((fn_n, sol.pn_mpa))
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,193 @@
+//! The rail in the track (user guide, "Track and roller geometry"; CONTACT's m_wr_profiles): the
+//! profile turned by its installation angle (−CANT for the right rail, whose track centre lies at
+//! −y), then placed by the gauge point (GAUGHT > 0: the top on the track plane z = 0, the inner face
+//! at depth GAUGHT at y = GAUGWD/2) or absolutely (its origin at RAILY0, RAILZ0), then displaced by
+//! the rail's deviations. Everything here is the right side; the left is its mirror ([`super::side`]).
+
+use super::curve::Curve;
+use super::WheelRailError;
+
+/// How the rail profile's origin is placed in the track.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum RailPlacement {
+    /// The gauge-point computation (GAUGHT > 0, GAUGWD).
+    Gauge { height_mm: f64, width_mm: f64 },
+    /// The origin at (y, z) in track coordinates (GAUGHT ≤ 0: RAILY0, RAILZ0).
+    Absolute { y_mm: f64, z_mm: f64 },
+}
+
+/// The track as one side sees it: placement, cant and the rail's deviation from its design place.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Track {
+    pub placement: RailPlacement,
+    /// CANT: rotation from track vertical to rail vertical, positive towards the track centre.
+    pub cant_rad: f64,
+    /// DYRAIL, DZRAIL [mm], DROLLR [rad]: the rail's offsets from its design position.
+    pub deviation_mm_rad: [f64; 3],
+}
+
+/// Sampling step of the placement's scans [mm] (top and gauge face).
+const SCAN_MM: f64 = 0.01;
+
+/// The rail profile placed in the track: a profile point (y_r, z_r) lies at
+/// `origin + R(angle) (y_r, z_r)` in track coordinates (y, z), R the rotation about x.
+#[derive(Debug)]
+pub struct PlacedRail<'a> {
+    pub curve: &'a dyn Curve,
+    /// The profile's origin in track coordinates (y, z) [mm].
+    pub origin_mm: [f64; 2],
+    /// The profile's rotation about x [rad] (−CANT + DROLLR on the right side).
+    pub angle_rad: f64,
+}
+
+impl<'a> PlacedRail<'a> {
+    /// The rail placed as `track` says.
+    pub fn place(curve: &'a dyn Curve, track: &Track) -> Result<PlacedRail<'a>, WheelRailError> {
+        let angle_rad = -track.cant_rad;
+        let design = PlacedRail { curve, origin_mm: [0.0, 0.0], angle_rad };
+        let origin = match track.placement {
+            RailPlacement::Absolute { y_mm, z_mm } => [y_mm, z_mm],
+            RailPlacement::Gauge { height_mm, width_mm } => {
+                let points = design.sampled();
+                let top = points.iter().map(|p| p[1]).fold(f64::INFINITY, f64::min);
+                let face = gauge_face_y(&points, top + height_mm).ok_or(WheelRailError::NoGaugeFace { height_mm })?;
+                [0.5 * width_mm - face, -top]
+            }
+        };
+        let [dy, dz, droll] = track.deviation_mm_rad;
+        Ok(PlacedRail { curve, origin_mm: [origin[0] + dy, origin[1] + dz], angle_rad: angle_rad + droll })
+    }
+
+    /// A profile point in track coordinates.
+    fn to_track(&self, y_r: f64, z_r: f64) -> [f64; 2] {
+        let (s, c) = self.angle_rad.sin_cos();
+        [self.origin_mm[0] + c * y_r - s * z_r, self.origin_mm[1] + s * y_r + c * z_r]
+    }
+
+    /// The profile sampled every [`SCAN_MM`] in track coordinates.
+    fn sampled(&self) -> Vec<[f64; 2]> {
+        let [lo, hi] = self.curve.y_range_mm();
+        let n = ((hi - lo) / SCAN_MM).ceil().max(1.0) as usize;
+        (0..=n)
+            .filter_map(|k| {
+                let y = (lo + (hi - lo) * k as f64 / n as f64).min(hi);
+                self.curve.z_mm(y).map(|z| self.to_track(y, z))
+            })
+            .collect()
+    }
+
+    /// The profile's y_r whose point lies at track y (Newton on `y(y_r) = y`), if on the profile.
+    fn profile_y(&self, y_mm: f64) -> Option<f64> {
+        let (s, c) = self.angle_rad.sin_cos();
+        let mut y_r = (y_mm - self.origin_mm[0]) / c;
+        for _ in 0..50 {
+            let [lo, hi] = self.curve.y_range_mm();
+            let y_r_in = y_r.clamp(lo, hi);
+            let (z, dz) = (self.curve.z_mm(y_r_in)?, self.curve.dz_dy(y_r_in)?);
+            let f = self.origin_mm[0] + c * y_r_in - s * z - y_mm;
+            let step = f / (c - s * dz);
+            y_r = y_r_in - step;
+            if step.abs() < 1e-12 {
+                return (lo..=hi).contains(&y_r).then_some(y_r);
+            }
+        }
+        None
+    }
+
+    /// Height z [mm] of the rail surface at track y [mm].
+    pub fn z_mm(&self, y_mm: f64) -> Option<f64> {
+        if self.angle_rad == 0.0 {
+            return Some(self.origin_mm[1] + self.curve.z_mm(y_mm - self.origin_mm[0])?);
+        }
+        let y_r = self.profile_y(y_mm)?;
+        Some(self.to_track(y_r, self.curve.z_mm(y_r)?)[1])
+    }
+
+    /// Slope dz/dy of the rail surface at track y.
+    pub fn dz_dy(&self, y_mm: f64) -> Option<f64> {
+        let y_r = if self.angle_rad == 0.0 { y_mm - self.origin_mm[0] } else { self.profile_y(y_mm)? };
+        let d = self.curve.dz_dy(y_r)?;
+        let (s, c) = self.angle_rad.sin_cos();
+        Some((s + c * d) / (c - s * d))
+    }
+
+    /// Track y of the profile's lateral range ends (the rotated range's first and last points).
+    pub fn y_range_mm(&self) -> [f64; 2] {
+        let [lo, hi] = self.curve.y_range_mm();
+        let a = self.curve.z_mm(lo).map(|z| self.to_track(lo, z)[0]).unwrap_or(f64::NAN);
+        let b = self.curve.z_mm(hi).map(|z| self.to_track(hi, z)[0]).unwrap_or(f64::NAN);
+        [a.min(b), a.max(b)]
+    }
+
+    /// The point of the rail at track y where the line `(y, z) + t (ny, nz)` meets it: the
+    /// distance t [mm] along the unit direction, found by Newton from t = 0.
+    pub fn along(&self, [y, z]: [f64; 2], [ny, nz]: [f64; 2]) -> Option<f64> {
+        let mut t = 0.0;
+        for _ in 0..50 {
+            let yt = y + t * ny;
+            let g = z + t * nz - self.z_mm(yt)?;
+            let dg = nz - self.dz_dy(yt)? * ny;
+            let step = g / dg;
+            t -= step;
+            if step.abs() < 1e-12 {
+                return Some(t);
+            }
+        }
+        None
+    }
+}
+
+/// The smallest y where the profile, scanned from its inner (−y) end, first rises to depth z.
+fn gauge_face_y(points: &[[f64; 2]], z_mm: f64) -> Option<f64> {
+    let mut sorted = points.to_vec();
+    sorted.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    let k = sorted.iter().position(|p| p[1] <= z_mm)?;
+    if k == 0 {
+        return None;
+    }
+    let ([y0, z0], [y1, z1]) = (sorted[k - 1], sorted[k]);
+    Some(y0 + (y1 - y0) * (z_mm - z0) / (z1 - z0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::wheelrail::curve::Arc;
+
+    fn crown() -> Arc {
+        Arc { radius_mm: 300.0, centre_y_mm: 0.0, half_width_mm: 40.0, concave: false }
+    }
+
+    #[test]
+    fn the_gauge_point_puts_the_top_on_the_plane_and_the_face_at_half_the_gauge() {
+        let c = crown();
+        let track = Track {
+            placement: RailPlacement::Gauge { height_mm: 1.0, width_mm: 1435.0 },
+            cant_rad: 0.0,
+            deviation_mm_rad: [0.0; 3],
+        };
+        let r = PlacedRail::place(&c, &track).unwrap();
+        // z = 300 − √(300² − u²) = 1 at u = −√(599): the face at y = 717.5.
+        let u = (300.0f64 * 300.0 - 299.0 * 299.0).sqrt();
+        assert!((r.origin_mm[0] - (717.5 + u)).abs() < 1e-4, "{:?}", r.origin_mm);
+        assert!(r.origin_mm[1].abs() < 1e-9);
+        assert!((r.z_mm(717.5).unwrap() - 1.0).abs() < 1e-4);
+    }
+
+    #[test]
+    fn a_canted_rail_turns_its_slope() {
+        let c = crown();
+        let cant = 1.0f64 / 40.0;
+        let track = Track {
+            placement: RailPlacement::Absolute { y_mm: 0.0, z_mm: 0.0 },
+            cant_rad: cant.atan(),
+            deviation_mm_rad: [0.0; 3],
+        };
+        let r = PlacedRail::place(&c, &track).unwrap();
+        // The crown's top (slope 0 on the profile) turns to slope tan(−cant) at its new place.
+        let y_top = -(0.0f64 - 0.0) * 0.0; // the origin stays at the crown's top
+        assert!((r.dz_dy(y_top).unwrap() - (-cant)).abs() < 1e-12);
+        let t = r.along([5.0, -1.0], [0.0, 1.0]).unwrap();
+        assert!((t - (r.z_mm(5.0).unwrap() + 1.0)).abs() < 1e-10);
+    }
+}

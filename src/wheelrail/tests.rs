@@ -1,0 +1,75 @@
+//! The stage against closed forms: a cylindrical wheel on a crowned rail is Hertz's contact; a
+//! yawed cone's contact moves along the track by the locus's closed form.
+
+use super::curve::{Arc, Line};
+use super::rail::{RailPlacement, Track};
+use super::side::Side;
+use super::wheel::{Pose, Velocity, WheelsetGeometry};
+use super::*;
+use crate::physics::hertz::Radii;
+use crate::physics::HertzContact;
+
+const WHEELSET: WheelsetGeometry =
+    WheelsetGeometry { flange_back_distance_mm: 1360.0, flange_back_position_mm: -70.0, nominal_radius_mm: 460.0 };
+
+fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side, pose: Pose) -> WheelRailCase<'a> {
+    WheelRailCase {
+        side,
+        rail,
+        wheel,
+        track: Track {
+            placement: RailPlacement::Absolute { y_mm: 750.0, z_mm: 0.0 },
+            cant_rad: 0.0,
+            deviation_mm_rad: [0.0; 3],
+        },
+        wheelset: WHEELSET,
+        pose,
+        velocity: Velocity { vs_mm_s: 2000.0, vpitch_rad_s: -2000.0 / 460.0, ..Velocity::default() },
+        vertical: Vertical::Force { fz_n: 10000.0 },
+        dx_mm: 0.2,
+        ds_mm: 0.2,
+        material: Material::from_g(82000.0, 0.28),
+    }
+}
+
+fn crown() -> Arc {
+    Arc { radius_mm: 300.0, centre_y_mm: 0.0, half_width_mm: 35.0, concave: false }
+}
+
+#[test]
+fn a_cylinder_on_a_crowned_rail_is_hertz() {
+    let (rail, wheel) = (crown(), Line { z0_mm: 0.0, slope: 0.0, y_range_mm: [-60.0, 60.0] });
+    let c = case(&rail, &wheel, Side::Right, Pose::default());
+    let contact = normal_contact(&c, None).unwrap();
+    assert_eq!(contact.patches.len(), 1);
+    let p = &contact.patches[0];
+    let radii = Radii { r_wx_mm: 460.0, r_wy_mm: f64::INFINITY, r_ry_mm: 300.0 };
+    let hertz = HertzContact::from_radii(&radii, 10000.0, &c.material).unwrap();
+    // Height: first touch at z = 0, so z_ws is the approach (Hertz: 1.7 % on a 0.2 mm grid).
+    let approach = hertz.approach_mm(&c.material);
+    assert!((contact.z_ws_mm / approach - 1.0).abs() < 0.02, "z_ws {} approach {approach}", contact.z_ws_mm);
+    assert!((p.fn_n - 10000.0).abs() < 1e-5, "{}", p.fn_n);
+    assert!(p.geometry.frame.delta_rad.abs() < 1e-12);
+    let area = p.pn_mpa.iter().filter(|&&v| v > 0.0).count() as f64 * 0.04;
+    let ellipse = std::f64::consts::PI * hertz.a_mm * hertz.b_mm;
+    assert!((area / ellipse - 1.0).abs() < 0.03, "area {area} ellipse {ellipse}");
+    // Pure rolling at the nominal radius less the approach: cksi = approach / r (z down).
+    assert!(p.creepages.cphi_per_mm.abs() < 1e-15 && p.creepages.ceta.abs() < 1e-15);
+}
+
+#[test]
+fn a_yawed_cone_touches_where_the_locus_says() {
+    let slope = 1.0 / 40.0;
+    let (rail, wheel) = (crown(), Line { z0_mm: 0.0, slope: -slope, y_range_mm: [-60.0, 60.0] });
+    let yaw = 0.01f64;
+    for side in [Side::Right, Side::Left] {
+        let c = case(&rail, &wheel, side, Pose { yaw_rad: side.sign() * yaw, ..Pose::default() });
+        let contact = normal_contact(&c, None).unwrap();
+        let f = &contact.patches[0].geometry.frame;
+        // Locus: sin θ = slope tan ψ, x = ρ sin θ cos ψ − Y sin ψ with ρ ≈ 460, Y ≈ 750 + y_w.
+        let y_w = f.origin.y - 750.0;
+        let rho = 460.0 - slope * y_w;
+        let x = rho * slope * yaw.tan() * yaw.cos() - (750.0 + y_w) * yaw.sin();
+        assert!((f.origin.x - x).abs() < 0.02, "{side:?}: x {} expected {x}", f.origin.x);
+    }
+}

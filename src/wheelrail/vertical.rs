@@ -1,0 +1,44 @@
+//! The wheelset's height for a prescribed vertical force (CONTACT's N = 1: z_ws found by a
+//! Newton–secant iteration, user guide "Wheelset geometry & state"): every patch's normal
+//! problem solved at each trial height, the heights stepped by the secant of FN^(2/3), which
+//! Hertz's law makes nearly linear in the height.
+
+use super::WheelRailError;
+
+/// Relative force tolerance of the height iteration.
+pub const FORCE_TOL: f64 = 1e-9;
+const MAX_ITER: usize = 40;
+
+/// The height z where `force(z)` (≥ 0, increasing in z) equals `target_n`, from the height of
+/// first touch `z_touch`; returns the height and the force's evaluations' last value.
+pub fn solve<F>(z_touch_mm: f64, target_n: f64, mut force: F) -> Result<(f64, usize), WheelRailError>
+where
+    F: FnMut(f64) -> Result<f64, WheelRailError>,
+{
+    let g = |f: f64| f.max(0.0).powf(2.0 / 3.0) - target_n.powf(2.0 / 3.0);
+    let (mut z0, mut g0) = (z_touch_mm, g(0.0));
+    let mut z1 = z_touch_mm + 0.05;
+    let mut g1 = g(force(z1)?);
+    for k in 0..MAX_ITER {
+        let z2 = z1 - g1 * (z1 - z0) / (g1 - g0);
+        let f2 = force(z2)?;
+        (z0, g0, z1, g1) = (z1, g1, z2, g(f2));
+        if (f2 - target_n).abs() <= FORCE_TOL * target_n {
+            return Ok((z1, k + 2));
+        }
+    }
+    Err(WheelRailError::VerticalNotConverged { fz_n: target_n, z_mm: z1 })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn finds_the_height_of_a_hertzian_law() {
+        // F = k (z − z0)^1.5: the secant on F^(2/3) is exact after one step.
+        let (k, z_touch) = (2.0e6, 0.18);
+        let (z, _) = solve(z_touch, 10000.0, |z| Ok(k * (z - z_touch).max(0.0).powf(1.5))).unwrap();
+        assert!((z - (z_touch + (10000.0f64 / k).powf(2.0 / 3.0))).abs() < 1e-12);
+    }
+}

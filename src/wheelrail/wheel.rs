@@ -1,0 +1,124 @@
+//! The wheel of a wheelset in the track (user guide, "Wheelset geometry" and "Wheelset degrees of
+//! freedom"): the profile origin at `(0, FBDIST/2 − FBPOS, NOMRAD)` from the wheelset centre
+//! (right wheel), the centre at `(0, y_ws, z_ws − NOMRAD)` in track coordinates (z down), turned by
+//! roll then yaw (pitch does not move a round wheel's surface). A surface point at profile
+//! position y_w lies at radius `NOMRAD + z_w(y_w)` from the axle.
+
+use super::curve::Curve;
+use nalgebra::{Point3, Rotation3, Vector3};
+
+/// FBDIST, FBPOS, NOMRAD [mm].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WheelsetGeometry {
+    pub flange_back_distance_mm: f64,
+    pub flange_back_position_mm: f64,
+    pub nominal_radius_mm: f64,
+}
+
+/// The wheelset's position and orientation in track coordinates (Y, Z, ROLL, YAW).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Pose {
+    pub y_mm: f64,
+    pub z_mm: f64,
+    pub roll_rad: f64,
+    pub yaw_rad: f64,
+}
+
+/// The wheelset's velocities (VS, VY, VZ, VROLL, VYAW, VPITCH).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Velocity {
+    pub vs_mm_s: f64,
+    pub vy_mm_s: f64,
+    pub vz_mm_s: f64,
+    pub vroll_rad_s: f64,
+    pub vyaw_rad_s: f64,
+    pub vpitch_rad_s: f64,
+}
+
+/// The right wheel's surface placed in the track.
+#[derive(Debug)]
+pub struct PlacedWheel<'a> {
+    pub curve: &'a dyn Curve,
+    /// Lateral position of the profile origin in wheelset coordinates [mm].
+    pub y_offset_mm: f64,
+    pub nominal_radius_mm: f64,
+    /// The wheelset centre in track coordinates.
+    pub centre: Point3<f64>,
+    /// Wheelset → track orientation: roll about x, then yaw about the rolled z.
+    pub rotation: Rotation3<f64>,
+    pub roll_rad: f64,
+    pub yaw_rad: f64,
+}
+
+impl<'a> PlacedWheel<'a> {
+    pub fn place(curve: &'a dyn Curve, g: &WheelsetGeometry, pose: &Pose) -> PlacedWheel<'a> {
+        let rotation = Rotation3::from_axis_angle(&Vector3::x_axis(), pose.roll_rad)
+            * Rotation3::from_axis_angle(&Vector3::z_axis(), pose.yaw_rad);
+        PlacedWheel {
+            curve,
+            y_offset_mm: 0.5 * g.flange_back_distance_mm - g.flange_back_position_mm,
+            nominal_radius_mm: g.nominal_radius_mm,
+            centre: Point3::new(0.0, pose.y_mm, pose.z_mm - g.nominal_radius_mm),
+            rotation,
+            roll_rad: pose.roll_rad,
+            yaw_rad: pose.yaw_rad,
+        }
+    }
+
+    /// The contact locus at profile position y_w: the point of that circle of the wheel whose
+    /// surface normal has no x component in the track (it can touch the prismatic rail there):
+    /// `sin θ = −z_w'(y_w) tan ψ` (CONTACT's contact locus, Vollebregt 2020 "wr geometry").
+    pub fn locus(&self, y_w_mm: f64) -> Option<Point3<f64>> {
+        let rho = self.nominal_radius_mm + self.curve.z_mm(y_w_mm)?;
+        let slope = self.curve.dz_dy(y_w_mm)?;
+        let (sin_yaw, cos_yaw) = self.yaw_rad.sin_cos();
+        let sin_t = (-slope * sin_yaw / cos_yaw).clamp(-0.999, 0.999);
+        let cos_t = (1.0 - sin_t * sin_t).sqrt();
+        Some(self.to_track(Vector3::new(rho * sin_t, self.y_offset_mm + y_w_mm, rho * cos_t)))
+    }
+
+    fn to_track(&self, p_ws: Vector3<f64>) -> Point3<f64> {
+        self.centre + self.rotation * p_ws
+    }
+
+    /// How far a track point lies outside the wheel [mm]: its distance from the axle less the
+    /// wheel's radius at its lateral place (negative inside the wheel).
+    fn outside_mm(&self, p: &Point3<f64>) -> Option<f64> {
+        let q = self.rotation.inverse() * (p - self.centre);
+        let radius = self.nominal_radius_mm + self.curve.z_mm(q.y - self.y_offset_mm)?;
+        Some((q.x * q.x + q.z * q.z).sqrt() - radius)
+    }
+
+    /// Distance t [mm] along the unit direction `n` from `p` to the wheel surface (secant steps
+    /// from t = 0), if the line meets it within the profile.
+    pub fn along(&self, p: &Point3<f64>, n: &Vector3<f64>) -> Option<f64> {
+        let f = |t: f64| self.outside_mm(&(p + n * t));
+        let (mut t0, mut f0) = (0.0, f(0.0)?);
+        let (mut t1, mut f1) = (-f0, f(-f0)?);
+        for _ in 0..60 {
+            if f1 == f0 {
+                break;
+            }
+            let t2 = t1 - f1 * (t1 - t0) / (f1 - f0);
+            (t0, f0) = (t1, f1);
+            t1 = t2;
+            f1 = f(t1)?;
+            if (t1 - t0).abs() < 1e-13 {
+                break;
+            }
+        }
+        Some(t1)
+    }
+
+    /// The wheelset's angular velocity in track coordinates: roll rate about x, yaw rate about the
+    /// rolled z, pitch rate about the axle.
+    pub fn angular_velocity(&self, v: &Velocity) -> Vector3<f64> {
+        let rolled_z = Rotation3::from_axis_angle(&Vector3::x_axis(), self.roll_rad) * Vector3::z();
+        Vector3::x() * v.vroll_rad_s + rolled_z * v.vyaw_rad_s + self.rotation * Vector3::y() * v.vpitch_rad_s
+    }
+
+    /// Velocity [mm/s] of the wheel's material at track point p.
+    pub fn material_velocity(&self, p: &Point3<f64>, v: &Velocity) -> Vector3<f64> {
+        Vector3::new(v.vs_mm_s, v.vy_mm_s, v.vz_mm_s) + self.angular_velocity(v).cross(&(p - self.centre))
+    }
+}
