@@ -306,3 +306,5 @@ pub fn run_with(mut problem: Problem, in_process: &[InProcess]) -> Result<SceneR
     }
     Ok(SceneResult { problem, histories, timing, metrics: all_metrics, logs })
 }
+
+pub mod wheelrail;

@@ -1,0 +1,186 @@
+//! One wheel–rail case through the stages: the wheel–rail geometry gives the patches with their
+//! exact normal solution; each patch becomes a module-3 scene that every model solves in steady
+//! rolling (the same grid, undeformed distance, FN and creepages for all); the patches' forces sum
+//! to the totals on the rail. With FZ prescribed the height is found with the exact theory's
+//! tangential forces included (CONTACT's N = 1 solves the full problem at each height): the
+//! normal forces' vertical parts must carry FZ less the tangential forces' vertical parts.
+//!
+//! Signs and frames are CONTACT's module-1 output's: forces on the rail; each patch's FX along the
+//! track, FS in its tangent plane (lateral), FN along its normal; totals in track and wheelset
+//! coordinates, y to the right on both sides.
+
+use super::{resolve, run};
+use crate::error::{Error, InputError};
+use crate::physics::geometry::{Extent, GeometrySpec};
+use crate::problem::Problem;
+use crate::scene::Scene;
+use crate::solvers;
+use crate::wheelrail::{self, NormalContact, NormalPatch, Vertical, WheelRailCase};
+use nalgebra::{Rotation3, Vector3};
+use std::path::Path;
+
+/// The model whose tangential forces enter the vertical balance: the exact theory.
+pub const EXACT: &str = "contact";
+/// Rounds of the vertical balance with the tangential forces (each a height search).
+const VERTICAL_ROUNDS: usize = 6;
+
+/// One model's forces on one patch, CONTACT's signs (on the rail), the side's frame.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PatchForces {
+    pub fn_n: f64,
+    pub fx_n: f64,
+    pub fs_n: f64,
+    pub mn_nmm: f64,
+    /// Elements in adhesion and in slip, where the model tells them apart.
+    pub n_adhesion: Option<usize>,
+    pub n_slip: Option<usize>,
+}
+
+/// The forces on the rail summed over the patches [N]: track and wheelset coordinates.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Totals {
+    pub track_n: [f64; 3],
+    pub wheelset_n: [f64; 3],
+}
+
+/// A case solved: its patches (normal contact) and per model the patches' forces and totals.
+#[derive(Debug, Clone)]
+pub struct CaseResult {
+    pub normal: NormalContact,
+    /// `(model, forces per patch, totals)` in the order of the models asked for.
+    pub models: Vec<(String, Vec<PatchForces>, Totals)>,
+}
+
+/// Solve `case` with `models` (names of the registry) at Coulomb friction `mu`.
+pub fn solve(case: &WheelRailCase, models: &[String], mu: f64) -> Result<CaseResult, Error> {
+    let geometry = |e: wheelrail::WheelRailError| Error::from(InputError::new("wheelrail", "the case", e.to_string()));
+    let mut normal = wheelrail::normal_contact(case, None).map_err(geometry)?;
+    if let Vertical::Force { fz_n } = case.vertical {
+        for _ in 0..VERTICAL_ROUNDS {
+            let exact = patch_forces(&normal, EXACT, mu, case)?;
+            let tangential_z: f64 = normal
+                .patches
+                .iter()
+                .zip(&exact)
+                .map(|(p, f)| case.side.sign() * f.fs_n * p.geometry.frame.delta_rad.sin())
+                .sum();
+            let next = wheelrail::normal_contact(case, Some(fz_n - tangential_z)).map_err(geometry)?;
+            let moved = (next.z_ws_mm - normal.z_ws_mm).abs();
+            normal = next;
+            if moved < 1e-12 {
+                break;
+            }
+        }
+    }
+    let mut out = Vec::new();
+    for model in models {
+        let forces = patch_forces(&normal, model, mu, case)?;
+        let totals = totals(&normal, &forces, case);
+        out.push((model.clone(), forces, totals));
+    }
+    Ok(CaseResult { normal, models: out })
+}
+
+/// One model's forces on every patch.
+fn patch_forces(normal: &NormalContact, model: &str, mu: f64, case: &WheelRailCase) -> Result<Vec<PatchForces>, Error> {
+    normal.patches.iter().map(|p| patch_solve(p, model, mu, case)).collect()
+}
+
+/// The module-3 scene text of a patch with `contact` (its geometry's keys) and `grid` tables.
+fn scene_text(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase, contact: &str, grid: &str) -> String {
+    let c = &p.creepages;
+    format!(
+        "name = \"patch\"\nsolvers = [\"{model}\"]\n\
+         [contact]\n{contact}\nfn_n = {fn_n}\nmu = {mu}\n\
+         [material]\ng_mpa = {g}\npoisson = {nu}\n\
+         [grid]\n{grid}\n\
+         [rolling]\nv_mm_s = {v}\n\
+         [creepage]\nkind = \"sweep\"\nat = [0.0]\ncx = {cx}\ncy = {cy}\ncs = {cs}\n",
+        fn_n = p.fn_n,
+        g = case.material.g_mpa,
+        nu = case.material.poisson,
+        v = c.veloc_mm_s,
+        cx = c.cksi,
+        cy = c.ceta,
+        cs = c.cphi_per_mm,
+    )
+}
+
+/// The patch as a module-3 scene on its own grid: its undeformed distance per element (CONTACT's
+/// element order), FN, creepages and rolling speed, one steady sweep point.
+fn field_scene(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> Result<Scene, InputError> {
+    let g = &p.geometry.grid;
+    let text = scene_text(p, model, mu, case, "a_mm = 1.0\nb_mm = 1.0", &format!("mx = {}\nmy = {}", g.mx, g.ms));
+    let mut scene = Scene::from_toml(&text, Path::new("."))?;
+    scene.geometry = GeometrySpec::Field { h_mm: p.geometry.h_mm.clone() };
+    scene.extent = Extent::Edges {
+        x_mm: [g.x0_mm, g.x0_mm + g.dx_mm * g.mx as f64],
+        y_mm: [g.s0_mm, g.s0_mm + g.ds_mm * g.ms as f64],
+    };
+    Ok(scene)
+}
+
+/// The patch for a model that needs Hertz's ellipse (FaStrip): the equivalent ellipse of its
+/// exact contact (Kik & Piotrowski: the same area and length-to-width ratio, CONTACT's
+/// `equiv_ellipse`) at the patch's FN, its bounding box in elements of the patch's size.
+fn ellipse_scene(
+    field: &Problem,
+    p: &NormalPatch,
+    model: &str,
+    mu: f64,
+    case: &WheelRailCase,
+) -> Result<Scene, InputError> {
+    let e = field.hertz();
+    let g = &p.geometry.grid;
+    let elements = |length_mm: f64, size_mm: f64| ((length_mm / size_mm).ceil() as usize).clamp(8, 512);
+    let grid = format!("mx = {}\nmy = {}", elements(2.0 * e.a_mm, g.dx_mm), elements(2.0 * e.b_mm, g.ds_mm));
+    let text = scene_text(p, model, mu, case, &format!("a_mm = {}\nb_mm = {}", e.a_mm, e.b_mm), &grid);
+    Scene::from_toml(&text, Path::new("."))
+}
+
+/// The problem a model solves on a patch: the patch's own grid and undeformed distance where the
+/// model takes a contact given per element, else the equivalent ellipse.
+fn patch_problem(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> Result<Problem, Error> {
+    let field = resolve(&field_scene(p, model, mu, case)?);
+    let Some(def) = solvers::builtin(model) else {
+        return Ok(field?);
+    };
+    let exact = resolve(&field_scene(p, EXACT, mu, case)?)?;
+    match (def.check)(&exact) {
+        Ok(()) => Ok(field?),
+        Err(_) => Ok(resolve(&ellipse_scene(&exact, p, model, mu, case)?)?),
+    }
+}
+
+/// One model on one patch, its forces turned to CONTACT's signs and the side's frame.
+fn patch_solve(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> Result<PatchForces, Error> {
+    let result = run(patch_problem(p, model, mu, case)?)?;
+    let h = &result.histories[0];
+    let row = &h.rows[0];
+    let count = |name: &str| h.column(name).map(|c| c[0] as usize);
+    let m = case.side.sign();
+    Ok(PatchForces {
+        fn_n: p.fn_n,
+        fx_n: -row.fx_over_fn * p.fn_n,
+        fs_n: -m * row.fy_over_fn * p.fn_n,
+        mn_nmm: -m * h.column(crate::history::MZ).map_or(f64::NAN, |c| c[0]),
+        n_adhesion: count("n_adhesion"),
+        n_slip: count("n_slip"),
+    })
+}
+
+/// The totals on the rail in track and wheelset coordinates (the side's frame).
+fn totals(normal: &NormalContact, forces: &[PatchForces], case: &WheelRailCase) -> Totals {
+    let m = case.side.sign();
+    let mut f = Vector3::zeros();
+    for (p, pf) in normal.patches.iter().zip(forces) {
+        let frame = &p.geometry.frame;
+        // Right-side frame: FS along e_s, FN along n; pf.fs_n is in the side's sign.
+        f += Vector3::x() * pf.fx_n + frame.e_s() * (m * pf.fs_n) + frame.n() * pf.fn_n;
+    }
+    let side = |v: Vector3<f64>| [v.x, m * v.y, v.z];
+    let pose = case.side.pose(&case.pose);
+    let rotation = Rotation3::from_axis_angle(&Vector3::x_axis(), pose.roll_rad)
+        * Rotation3::from_axis_angle(&Vector3::z_axis(), pose.yaw_rad);
+    Totals { track_n: side(f), wheelset_n: side(rotation.inverse() * f) }
+}
