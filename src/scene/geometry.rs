@@ -69,10 +69,10 @@ pub fn read(mut g: Section, dir: &Path, (mx, my): (usize, usize)) -> Result<Geom
 /// The columns `names` (exactly these, in this order) of a CSV of finite numbers, the line of
 /// the file each row is on (for messages; empty lines are skipped, [`super::table::line_of`]) and
 /// the origin messages name (`field (file)`).
-type Columns = (Vec<Vec<f64>>, Vec<usize>, String);
+pub(crate) type Columns = (Vec<Vec<f64>>, Vec<usize>, String);
 
 /// [`Columns`] of the CSV at `path`, given as the scene's `field`.
-fn read_columns(path: &Path, field: &str, names: &[&str]) -> Result<Columns, InputError> {
+pub(crate) fn read_columns(path: &Path, field: &str, names: &[&str]) -> Result<Columns, InputError> {
     let text = crate::safety::read::read_text(path, crate::safety::read::TABLE_LIMIT_BYTES, "geometry file")
         .map_err(|e| InputError::new(field, path.display(), format!("an existing, readable CSV file ({e})")))?;
     let origin = format!("{field} ({})", path.display());

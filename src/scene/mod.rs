@@ -9,6 +9,7 @@ mod sections;
 pub mod source;
 pub mod study;
 pub mod table;
+pub mod wheelrail;
 
 use crate::error::InputError;
 use crate::physics::geometry::{Extent, GeometrySpec};

@@ -1,0 +1,230 @@
+//! A wheel–rail scene (docs/scene-format.md, "A wheel–rail scene"): two profiles, the track,
+//! the wheelset's dimensions and a table of wheelset positions and velocities, one case a row
+//! (CONTACT's module 1). Read and checked here like every scene; the profiles are read by the
+//! wheel–rail stage, from the paths resolved here.
+
+use super::reader::{parse_toml, Range, Section};
+use super::{is_valid_name, MaterialSpec};
+use crate::error::InputError;
+use std::path::{Path, PathBuf};
+
+/// Which side of the track the wheel runs on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SideSpec {
+    Left,
+    Right,
+}
+
+/// A profile file and how to take it (CONTACT's RFNAME/WFNAME, MIRRORY, SCALE, SMOOTH).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ProfileSpec {
+    /// Resolved against the scene's folder.
+    pub path: PathBuf,
+    pub mirror_y: bool,
+    pub scale: f64,
+    pub smooth: f64,
+}
+
+/// The rail's placement (GAUGHT > 0: gauge point; else absolute).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum PlacementSpec {
+    Gauge { height_mm: f64, width_mm: f64 },
+    Absolute { y_mm: f64, z_mm: f64 },
+}
+
+/// How the cases fix the height: a vertical force or a position (CONTACT's N = 1, 0).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum VerticalSpec {
+    Force,
+    Position,
+}
+
+/// One case: the wheelset's position and velocities (a row of the cases table).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CaseRow {
+    /// The case's number (CONTACT's case for an imported deck).
+    pub contact_case: u64,
+    pub y_mm: f64,
+    /// FZ [N] or z [mm], as [`VerticalSpec`] says.
+    pub vertical: f64,
+    pub roll_rad: f64,
+    pub yaw_rad: f64,
+    pub velocity: [f64; 6],
+}
+
+/// A validated wheel–rail scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WheelRailScene {
+    pub name: String,
+    pub solvers: Vec<String>,
+    pub side: SideSpec,
+    pub rail: ProfileSpec,
+    pub wheel: ProfileSpec,
+    pub placement: PlacementSpec,
+    pub cant_rad: f64,
+    pub flange_back_distance_mm: f64,
+    pub flange_back_position_mm: f64,
+    pub nominal_radius_mm: f64,
+    pub mu: f64,
+    pub material: MaterialSpec,
+    pub dx_mm: f64,
+    pub ds_mm: f64,
+    pub vertical: VerticalSpec,
+    pub cases: Vec<CaseRow>,
+    /// The scene file's folder.
+    pub dir: PathBuf,
+}
+
+/// The columns of the cases table: the leading ones, then `fz_n` or `z_mm`, then the rest.
+const LEAD: [&str; 2] = ["contact_case", "y_mm"];
+const TAIL: [&str; 8] = ["roll_rad", "yaw_rad", "vs_mm_s", "vy_mm_s", "vz_mm_s", "vroll_rad_s", "vyaw_rad_s", "vpitch_rad_s"];
+const LENGTH: Range = Range::new(-1e5, true, 1e5, true);
+const ANGLE: Range = Range::new(-1.5, true, 1.5, true);
+const MAX_CASES: usize = 100_000;
+
+/// Whether a parsed TOML document is a wheel–rail scene (it has a `[wheelrail]` table).
+pub fn is_wheelrail(doc: &toml::Table) -> bool {
+    doc.contains_key("wheelrail")
+}
+
+impl WheelRailScene {
+    pub fn from_toml(text: &str, dir: &Path) -> Result<WheelRailScene, InputError> {
+        Self::from_table(&parse_toml(text, "scene")?, dir)
+    }
+
+    pub fn from_table(doc: &toml::Table, dir: &Path) -> Result<WheelRailScene, InputError> {
+        let mut top = Section::new("", doc);
+        let name = top.str("name", "a scene name of a-z, 0-9, _")?.to_string();
+        if !is_valid_name(&name) {
+            return Err(InputError::new("name", format!("{name:?}"), "a scene name of a-z, 0-9, _ (a folder name, at most 100 characters)"));
+        }
+        let solvers = top.opt_str_list("solvers", "model names")?.unwrap_or_else(|| vec!["contact".into()]);
+        let mut w = top.table("wheelrail")?;
+        let side = match w.choice("side", &["left", "right"])? {
+            "left" => SideSpec::Left,
+            _ => SideSpec::Right,
+        };
+        let mu = w.f64("mu", Range::new(0.0, false, 10.0, true))?;
+        let dx_mm = w.f64("dx_mm", Range::new(1e-3, true, 100.0, true))?;
+        let ds_mm = w.f64("ds_mm", Range::new(1e-3, true, 100.0, true))?;
+        w.finish()?;
+        let (rail, placement, cant_rad) = rail(&mut top, dir)?;
+        let (wheel, fbd, fbp, radius) = wheel(&mut top, dir)?;
+        let material = super::sections::material(&mut top)?;
+        let (vertical, cases) = cases(&mut top, dir)?;
+        top.finish()?;
+        Ok(WheelRailScene {
+            name,
+            solvers,
+            side,
+            rail,
+            wheel,
+            placement,
+            cant_rad,
+            flange_back_distance_mm: fbd,
+            flange_back_position_mm: fbp,
+            nominal_radius_mm: radius,
+            mu,
+            material,
+            dx_mm,
+            ds_mm,
+            vertical,
+            cases,
+            dir: dir.to_path_buf(),
+        })
+    }
+}
+
+/// A profile's keys: `profile` (path), `mirror_y`, `scale`, `smooth`.
+fn profile(s: &mut Section, dir: &Path) -> Result<ProfileSpec, InputError> {
+    let path = dir.join(s.str("profile", "a profile file's path relative to the scene (.prr, .prw, .ban, .whl, or two columns y z)")?);
+    Ok(ProfileSpec {
+        path,
+        mirror_y: s.opt_bool("mirror_y")?.unwrap_or(false),
+        scale: s.opt_f64("scale", Range::new(0.0, false, 1e4, true))?.unwrap_or(1.0),
+        smooth: s.opt_f64("smooth", Range::new(0.0, true, 1e10, true))?.unwrap_or(0.0),
+    })
+}
+
+/// `[rail]`: its profile, its placement (gauge point or absolute) and the cant.
+fn rail(top: &mut Section, dir: &Path) -> Result<(ProfileSpec, PlacementSpec, f64), InputError> {
+    let mut r = top.table("rail")?;
+    let spec = profile(&mut r, dir)?;
+    let placement = match r.opt_f64("gauge_height_mm", Range::new(0.0, false, 1e3, true))? {
+        Some(height_mm) => {
+            r.refuse("y_mm", "no y_mm with gauge_height_mm (the gauge point places the rail)")?;
+            PlacementSpec::Gauge { height_mm, width_mm: r.f64("gauge_width_mm", Range::new(0.0, false, 1e5, true))? }
+        }
+        None => PlacementSpec::Absolute { y_mm: r.f64("y_mm", LENGTH)?, z_mm: r.opt_f64("z_mm", LENGTH)?.unwrap_or(0.0) },
+    };
+    let cant_rad = r.opt_f64("cant_rad", ANGLE)?.unwrap_or(0.0);
+    r.finish()?;
+    Ok((spec, placement, cant_rad))
+}
+
+/// `[wheel]`: its profile and the wheelset's FBDIST, FBPOS, NOMRAD.
+fn wheel(top: &mut Section, dir: &Path) -> Result<(ProfileSpec, f64, f64, f64), InputError> {
+    let mut w = top.table("wheel")?;
+    let spec = profile(&mut w, dir)?;
+    let fbd = w.f64("flange_back_distance_mm", Range::new(0.0, false, 1e5, true))?;
+    let fbp = w.f64("flange_back_position_mm", LENGTH)?;
+    let radius = w.f64("nominal_radius_mm", Range::new(1.0, true, 1e5, true))?;
+    w.finish()?;
+    Ok((spec, fbd, fbp, radius))
+}
+
+/// `[cases]`: `vertical` ("force" or "position") and the table `file`.
+fn cases(top: &mut Section, dir: &Path) -> Result<(VerticalSpec, Vec<CaseRow>), InputError> {
+    let mut c = top.table("cases")?;
+    let vertical = match c.opt_choice("vertical", &["force", "position"])?.unwrap_or("force") {
+        "force" => VerticalSpec::Force,
+        _ => VerticalSpec::Position,
+    };
+    let field = c.field("file");
+    let file = c.str("file", "a CSV path relative to the scene file (columns in docs/scene-format.md)")?;
+    c.finish()?;
+    let middle = if vertical == VerticalSpec::Force { "fz_n" } else { "z_mm" };
+    let names: Vec<&str> = LEAD.iter().copied().chain([middle]).chain(TAIL).collect();
+    let (cols, lines, origin) = super::geometry::read_columns(&dir.join(file), &field, &names)?;
+    let n = cols[0].len();
+    if n == 0 || n > MAX_CASES {
+        return Err(InputError::new(&origin, format!("{n} rows"), format!("1 to {MAX_CASES} cases")));
+    }
+    (0..n).map(|r| row(&cols, r, &format!("{origin} line {}", lines[r]), vertical)).collect::<Result<_, _>>().map(|rows| (vertical, rows))
+}
+
+/// One row of the cases table, its values checked.
+fn row(cols: &[Vec<f64>], r: usize, line: &str, vertical: VerticalSpec) -> Result<CaseRow, InputError> {
+    let check = |c: usize, name: &str, range: Range| {
+        let v = cols[c][r];
+        if range.contains(v) {
+            Ok(v)
+        } else {
+            Err(InputError::new(format!("{line} column {name}"), v, range.describe()))
+        }
+    };
+    let case = check(0, "contact_case", Range::new(0.0, true, 1e9, true))?;
+    if case.fract() != 0.0 {
+        return Err(InputError::new(format!("{line} column contact_case"), case, "a whole number"));
+    }
+    let vertical_value = match vertical {
+        VerticalSpec::Force => check(2, "fz_n", Range::new(0.0, false, 1e8, true))?,
+        VerticalSpec::Position => check(2, "z_mm", LENGTH)?,
+    };
+    let speed = Range::new(-1e7, true, 1e7, true);
+    let mut velocity = [0.0; 6];
+    for (k, v) in velocity.iter_mut().enumerate() {
+        *v = check(5 + k, TAIL[2 + k], speed)?;
+    }
+    if velocity[0] == 0.0 {
+        return Err(InputError::new(format!("{line} column vs_mm_s"), 0, "a rolling speed other than 0 (the creepages are over it)"));
+    }
+    Ok(CaseRow {
+        contact_case: case as u64,
+        y_mm: check(1, "y_mm", LENGTH)?,
+        vertical: vertical_value,
+        roll_rad: check(3, "roll_rad", ANGLE)?,
+        yaw_rad: check(4, "yaw_rad", ANGLE)?,
+        velocity,
+    })
+}
