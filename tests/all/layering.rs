@@ -12,6 +12,7 @@ use std::path::{Path, PathBuf};
 const STAGES: &[&[&str]] = &[
     &["error", "safety", "simd", "physics"], // the foundation
     &["scene"],
+    &["wheelrail"],
     &["problem"],
     &["solvers"],
     &["history"],
