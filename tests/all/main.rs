@@ -49,3 +49,4 @@ mod studies;
 mod test_table;
 mod tolerance_files;
 mod traction_bound;
+mod wheelrail_profiles;
