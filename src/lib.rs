@@ -2,7 +2,7 @@
 //!
 //! The data flow is one straight path, one module per stage, each importing only from the stages
 //! below it (the order: README, "The code"; checked by tests/all/layering.rs):
-//! [`scene`] (file, validated) → [`problem`] (resolved: Hertz, Kalker, grid, samples) →
+//! [`scene`] (file, validated) → [`wheelrail`] (profiles; CONTACT's module 1) → [`problem`] (resolved: Hertz, Kalker, grid, samples) →
 //! [`solvers`] (UBA, FASTSIM, CONTACT-style, external) → [`history`] (the sample loop, external models) → [`metrics`] →
 //! [`pipeline`] (wires one scene through them) → [`suite`] (many scenes, result folders) →
 //! [`comparison`] (reference and golden data, tolerances, findings) → [`report`] →

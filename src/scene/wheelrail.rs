@@ -77,7 +77,8 @@ pub struct WheelRailScene {
 
 /// The columns of the cases table: the leading ones, then `fz_n` or `z_mm`, then the rest.
 const LEAD: [&str; 2] = ["contact_case", "y_mm"];
-const TAIL: [&str; 8] = ["roll_rad", "yaw_rad", "vs_mm_s", "vy_mm_s", "vz_mm_s", "vroll_rad_s", "vyaw_rad_s", "vpitch_rad_s"];
+const TAIL: [&str; 8] =
+    ["roll_rad", "yaw_rad", "vs_mm_s", "vy_mm_s", "vz_mm_s", "vroll_rad_s", "vyaw_rad_s", "vpitch_rad_s"];
 const LENGTH: Range = Range::new(-1e5, true, 1e5, true);
 const ANGLE: Range = Range::new(-1.5, true, 1.5, true);
 const MAX_CASES: usize = 100_000;
@@ -96,7 +97,11 @@ impl WheelRailScene {
         let mut top = Section::new("", doc);
         let name = top.str("name", "a scene name of a-z, 0-9, _")?.to_string();
         if !is_valid_name(&name) {
-            return Err(InputError::new("name", format!("{name:?}"), "a scene name of a-z, 0-9, _ (a folder name, at most 100 characters)"));
+            return Err(InputError::new(
+                "name",
+                format!("{name:?}"),
+                "a scene name of a-z, 0-9, _ (a folder name, at most 100 characters)",
+            ));
         }
         let solvers = top.opt_str_list("solvers", "model names")?.unwrap_or_else(|| vec!["contact".into()]);
         let mut w = top.table("wheelrail")?;
@@ -137,7 +142,9 @@ impl WheelRailScene {
 
 /// A profile's keys: `profile` (path), `mirror_y`, `scale`, `smooth`.
 fn profile(s: &mut Section, dir: &Path) -> Result<ProfileSpec, InputError> {
-    let path = dir.join(s.str("profile", "a profile file's path relative to the scene (.prr, .prw, .ban, .whl, or two columns y z)")?);
+    let path = dir.join(
+        s.str("profile", "a profile file's path relative to the scene (.prr, .prw, .ban, .whl, or two columns y z)")?,
+    );
     Ok(ProfileSpec {
         path,
         mirror_y: s.opt_bool("mirror_y")?.unwrap_or(false),
@@ -155,7 +162,9 @@ fn rail(top: &mut Section, dir: &Path) -> Result<(ProfileSpec, PlacementSpec, f6
             r.refuse("y_mm", "no y_mm with gauge_height_mm (the gauge point places the rail)")?;
             PlacementSpec::Gauge { height_mm, width_mm: r.f64("gauge_width_mm", Range::new(0.0, false, 1e5, true))? }
         }
-        None => PlacementSpec::Absolute { y_mm: r.f64("y_mm", LENGTH)?, z_mm: r.opt_f64("z_mm", LENGTH)?.unwrap_or(0.0) },
+        None => {
+            PlacementSpec::Absolute { y_mm: r.f64("y_mm", LENGTH)?, z_mm: r.opt_f64("z_mm", LENGTH)?.unwrap_or(0.0) }
+        }
     };
     let cant_rad = r.opt_f64("cant_rad", ANGLE)?.unwrap_or(0.0);
     r.finish()?;
@@ -190,7 +199,10 @@ fn cases(top: &mut Section, dir: &Path) -> Result<(VerticalSpec, Vec<CaseRow>), 
     if n == 0 || n > MAX_CASES {
         return Err(InputError::new(&origin, format!("{n} rows"), format!("1 to {MAX_CASES} cases")));
     }
-    (0..n).map(|r| row(&cols, r, &format!("{origin} line {}", lines[r]), vertical)).collect::<Result<_, _>>().map(|rows| (vertical, rows))
+    (0..n)
+        .map(|r| row(&cols, r, &format!("{origin} line {}", lines[r]), vertical))
+        .collect::<Result<_, _>>()
+        .map(|rows| (vertical, rows))
 }
 
 /// One row of the cases table, its values checked.
@@ -217,7 +229,11 @@ fn row(cols: &[Vec<f64>], r: usize, line: &str, vertical: VerticalSpec) -> Resul
         *v = check(5 + k, TAIL[2 + k], speed)?;
     }
     if velocity[0] == 0.0 {
-        return Err(InputError::new(format!("{line} column vs_mm_s"), 0, "a rolling speed other than 0 (the creepages are over it)"));
+        return Err(InputError::new(
+            format!("{line} column vs_mm_s"),
+            0,
+            "a rolling speed other than 0 (the creepages are over it)",
+        ));
     }
     Ok(CaseRow {
         contact_case: case as u64,

@@ -77,6 +77,20 @@ impl Curve for Line {
     }
 }
 
+/// A profile read from a file: CONTACT's spline through its cleaned points.
+impl Curve for super::profile::Profile {
+    fn z_mm(&self, y_mm: f64) -> Option<f64> {
+        self.z_at(y_mm)
+    }
+    fn dz_dy(&self, y_mm: f64) -> Option<f64> {
+        self.slope_at(y_mm)
+    }
+    fn y_range_mm(&self) -> [f64; 2] {
+        let (lo, hi) = self.y_range();
+        [lo, hi]
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

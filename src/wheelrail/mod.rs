@@ -12,6 +12,7 @@
 pub mod creepage;
 pub mod curve;
 pub mod patch;
+pub mod profile;
 pub mod rail;
 pub mod search;
 pub mod side;
@@ -110,7 +111,8 @@ pub fn normal_contact(case: &WheelRailCase, fz_normal_n: Option<f64>) -> Result<
         (Vertical::Position, _) => pose.z_mm,
         (Vertical::Force { fz_n }, target) => {
             let wheel = PlacedWheel::place(case.wheel, &case.wheelset, &Pose { z_mm: 0.0, ..pose });
-            let deepest = search::deepest_mm(&search::scan(&wheel, &rail)).ok_or(WheelRailError::NoOverlap)?;
+            let deepest =
+                search::deepest_mm(&search::scan(&wheel, &rail, case.ds_mm)).ok_or(WheelRailError::NoOverlap)?;
             let target = target.unwrap_or(fz_n);
             vertical::solve(-deepest, target, |z| {
                 Ok(at(z)?.iter().map(|p| p.fn_n * p.geometry.frame.delta_rad.cos()).sum())
@@ -128,7 +130,7 @@ pub fn normal_contact(case: &WheelRailCase, fz_normal_n: Option<f64>) -> Result<
 /// The patches and their normal solutions with the wheelset at `pose` (right-side frame).
 fn patches_at(case: &WheelRailCase, rail: &PlacedRail, pose: &Pose) -> Result<Vec<NormalPatch>, WheelRailError> {
     let wheel = PlacedWheel::place(case.wheel, &case.wheelset, pose);
-    let samples = search::scan(&wheel, rail);
+    let samples = search::scan(&wheel, rail, case.ds_mm);
     if samples.is_empty() {
         return Err(WheelRailError::NoOverlap);
     }
@@ -145,7 +147,8 @@ fn patches_at(case: &WheelRailCase, rail: &PlacedRail, pose: &Pose) -> Result<Ve
         }
         let (fn_n, pn_mpa) = solve_normal(&geometry, &case.material)
             .map_err(|source| WheelRailError::Normal { patch: k + 1, source })?;
-        let creepages = creepage::at_reference(&geometry.frame, &wheel, &velocity);
+        let pen_mm = -geometry.h_mm.iter().copied().fold(f64::INFINITY, f64::min);
+        let creepages = creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm);
         out.push(NormalPatch { geometry, fn_n, pn_mpa, creepages });
     }
     Ok(out)

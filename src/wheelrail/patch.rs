@@ -10,8 +10,8 @@ use super::wheel::PlacedWheel;
 use super::WheelRailError;
 use nalgebra::{Point3, Vector3};
 
-/// Elements added around the interpenetration on every side.
-const MARGIN_ELEMENTS: f64 = 2.0;
+/// Elements added on every side of the interpenetration's extent (CONTACT's guard band).
+const GUARD_ELEMENTS: i64 = 1;
 
 /// The contact's local frame: origin on the rail, x along the track, s in the tangent plane
 /// (the rail's lateral direction turned by δ), n into the rail.
@@ -36,7 +36,7 @@ impl PatchFrame {
 }
 
 /// The potential contact: `mx × ms` elements of `dx × ds` over `[x0, x0 + mx dx] × [s0, s0 + ms ds]`
-/// in plane coordinates.
+/// in plane coordinates, element centres on whole multiples of dx and ds from the reference.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PatchGrid {
     pub mx: usize,
@@ -71,38 +71,87 @@ pub struct PatchGeometry {
     pub pen_max_mm: f64,
 }
 
-/// The interpenetration-weighted reference point and contact angle of a region.
-pub fn reference(region: &[LocusSample], rail: &PlacedRail) -> Option<PatchFrame> {
-    let w: f64 = region.iter().map(|s| s.pen_mm).sum();
+/// The weight of a mesh point: `∫ (pen − a x²)² dx` over the chord where the wheel, a circle
+/// of curvature 2a = 1/R_nom along x, reaches below the rail (CONTACT's squared-gap weight,
+/// `compute_wgt_center_1d`).
+fn weight(pen_mm: f64, a_per_mm: f64) -> f64 {
+    let t0 = (pen_mm / a_per_mm).sqrt();
+    (2.0 * pen_mm * pen_mm * t0 - 4.0 / 3.0 * pen_mm * a_per_mm * t0.powi(3) + 0.4 * a_per_mm * a_per_mm * t0.powi(5))
+        .max(1e-10)
+}
+
+/// The interpenetration-weighted reference point and contact angle of a region (CONTACT's
+/// "interpenetration centre of gravity", and the rail's height at its y).
+pub fn reference(region: &[LocusSample], rail: &PlacedRail, radius_mm: f64) -> Option<PatchFrame> {
+    let a = 0.5 / radius_mm;
+    let inside = || region.iter().filter(|s| s.pen_mm >= 0.0);
+    let w: f64 = inside().map(|s| weight(s.pen_mm, a)).sum();
     if w <= 0.0 {
         return None;
     }
-    let mean = |f: &dyn Fn(&LocusSample) -> f64| region.iter().map(|s| s.pen_mm * f(s)).sum::<f64>() / w;
+    let mean = |f: &dyn Fn(&LocusSample) -> f64| inside().map(|s| weight(s.pen_mm, a) * f(s)).sum::<f64>() / w;
     let (x, y) = (mean(&|s| s.x_mm), mean(&|s| s.y_mm));
-    let delta_rad = mean(&|s| s.rail_slope.atan());
+    let delta_rad = mean(&|s| s.rail_angle_rad);
     Some(PatchFrame { origin: Point3::new(x, y, rail.z_mm(y)?), delta_rad })
 }
 
-/// The grid covering the region with [`MARGIN_ELEMENTS`] on each side: laterally the region's
-/// extent in s, longitudinally each locus point's `x ± √(2 R pen)` (a circle of the wheel's radius
-/// R cut at depth pen).
-pub fn grid(region: &[LocusSample], frame: &PatchFrame, radius_mm: f64, dx_mm: f64, ds_mm: f64) -> PatchGrid {
-    let e_s = frame.e_s();
-    let s_of = |s: &LocusSample| (Point3::new(s.x_mm, s.y_mm, s.z_mm) - frame.origin).dot(&e_s);
-    let (mut s_lo, mut s_hi, mut x_lo, mut x_hi) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for p in region {
-        let half = (2.0 * radius_mm * p.pen_mm).sqrt();
-        let x = p.x_mm - frame.origin.x;
-        (x_lo, x_hi) = (x_lo.min(x - half), x_hi.max(x + half));
-        (s_lo, s_hi) = (s_lo.min(s_of(p)), s_hi.max(s_of(p)));
+/// Where the gap crosses zero between mesh points k and k + step (linear), or point k's y.
+fn crossing(region: &[LocusSample], k: usize, next: usize) -> f64 {
+    let (a, b) = (&region[k], &region[next]);
+    let d = b.pen_mm - a.pen_mm;
+    if a.pen_mm * b.pen_mm <= -1e-12 && d.abs() >= 1e-9 {
+        a.y_mm - a.pen_mm * (b.y_mm - a.y_mm) / d
+    } else {
+        a.y_mm
     }
-    let edges = |lo: f64, hi: f64, d: f64| {
-        let (a, b) = ((lo / d).floor() - MARGIN_ELEMENTS, (hi / d).ceil() + MARGIN_ELEMENTS);
-        (a * d, (b - a) as usize)
-    };
-    let (x0_mm, mx) = edges(x_lo, x_hi, dx_mm);
-    let (s0_mm, ms) = edges(s_lo, s_hi, ds_mm);
-    PatchGrid { mx, ms, dx_mm, ds_mm, x0_mm, s0_mm }
+}
+
+/// Arc length [mm] along the rail from track y0 to y1 (signed; Simpson's rule on √(1 + z'²)).
+fn arc_length(rail: &PlacedRail, y0: f64, y1: f64) -> f64 {
+    const N: usize = 200;
+    let h = (y1 - y0) / N as f64;
+    let f = |y: f64| (1.0 + rail.dz_dy(y).unwrap_or(0.0).powi(2)).sqrt();
+    let inner: f64 = (1..N).map(|k| if k % 2 == 1 { 4.0 } else { 2.0 } * f(y0 + h * k as f64)).sum();
+    h / 3.0 * (f(y0) + inner + f(y1))
+}
+
+/// Element indices `[lo, hi]` covering `[from, to]` with centres on multiples of `d`, one guard
+/// element beyond (CONTACT's `set_planar_potcon`).
+fn indices(from: f64, to: f64, d: f64) -> (i64, i64) {
+    ((from / d).floor() as i64 - GUARD_ELEMENTS, (to / d).ceil() as i64 + GUARD_ELEMENTS)
+}
+
+/// The potential contact: longitudinally each interpenetrating mesh point's `x ± √(pen/a)` (the
+/// chord of a circle of curvature 2a = 1/R_nom), laterally the rail's arc length from the
+/// reference to the region's zero crossings; rounded out to whole elements plus a guard element.
+pub fn grid(
+    region: &[LocusSample],
+    frame: &PatchFrame,
+    rail: &PlacedRail,
+    radius_mm: f64,
+    dx_mm: f64,
+    ds_mm: f64,
+) -> PatchGrid {
+    let a = 0.5 / radius_mm;
+    let (mut x_lo, mut x_hi) = (f64::MAX, f64::MIN);
+    for p in region.iter().filter(|s| s.pen_mm >= 0.0) {
+        let half = (p.pen_mm / a).sqrt();
+        (x_lo, x_hi) = (x_lo.min(p.x_mm - half), x_hi.max(p.x_mm + half));
+    }
+    let last = region.len() - 1;
+    let (y_sta, y_end) = (crossing(region, 0, 1.min(last)), crossing(region, last, last.saturating_sub(1)));
+    let s_of = |y: f64| arc_length(rail, frame.origin.y, y);
+    let (s_a, s_b) = (s_of(y_sta), s_of(y_end));
+    let (ix_l, ix_h) = indices(x_lo - frame.origin.x, x_hi - frame.origin.x, dx_mm);
+    let (is_l, is_h) = indices(s_a.min(s_b), s_a.max(s_b), ds_mm);
+    PatchGrid {
+        mx: (ix_h - ix_l + 1) as usize,
+        ms: (is_h - is_l + 1) as usize,
+        dx_mm,
+        ds_mm,
+        x0_mm: (ix_l as f64 - 0.5) * dx_mm,
+        s0_mm: (is_l as f64 - 0.5) * ds_mm,
+    }
 }
 
 /// Gap [mm] used where a normal line misses one of the surfaces (off the profiles' ends): far
@@ -136,8 +185,8 @@ pub fn build(
     dx_mm: f64,
     ds_mm: f64,
 ) -> Result<PatchGeometry, WheelRailError> {
-    let frame = reference(region, rail).ok_or(WheelRailError::NoContact)?;
-    let grid = grid(region, &frame, wheel.nominal_radius_mm, dx_mm, ds_mm);
+    let frame = reference(region, rail, wheel.nominal_radius_mm).ok_or(WheelRailError::NoContact)?;
+    let grid = grid(region, &frame, rail, wheel.nominal_radius_mm, dx_mm, ds_mm);
     let h_mm = undeformed_distance(&frame, &grid, wheel, rail);
     let pen_max_mm = region.iter().map(|s| s.pen_mm).fold(0.0, f64::max);
     Ok(PatchGeometry { frame, grid, h_mm, pen_max_mm })

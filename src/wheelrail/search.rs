@@ -1,36 +1,48 @@
 //! The contact search (user guide, "Identification of contact patches"; CONTACT's
-//! m_wr_locatecp): the wheel's contact locus scanned across its profile, its height over the rail
-//! below each locus point (the gap function), and the interpenetration regions where the wheel
-//! reaches below the rail.
+//! m_wr_locatecp, `compute_wr_locus` and `locate_interpen_1d`): the gap function on a uniform
+//! lateral mesh over the rail (step 0.3 DS), the wheel's contact locus above each mesh point and
+//! the rail below it, and the interpenetration regions where the wheel reaches below the rail.
 
 use super::rail::PlacedRail;
 use super::wheel::PlacedWheel;
 
-/// Lateral step [mm] of the scan over the wheel profile.
-pub const SCAN_STEP_MM: f64 = 0.02;
+/// The gap mesh's step over DS (CONTACT's `fac_dyds`).
+pub const MESH_STEP_OVER_DS: f64 = 0.3;
 
-/// One locus point with the rail below it.
+/// One mesh point: the locus point and the rail below it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LocusSample {
     /// The locus point in track coordinates [mm].
     pub x_mm: f64,
     pub y_mm: f64,
     pub z_mm: f64,
-    /// The wheel's reach below the rail surface [mm] (positive: interpenetration).
+    /// The rail surface's height there [mm].
+    pub z_rail_mm: f64,
+    /// The wheel's reach below the rail surface [mm] (positive: interpenetration; minus the gap).
     pub pen_mm: f64,
-    /// The rail's slope dz/dy there.
-    pub rail_slope: f64,
+    /// The rail's inclination atan(dz/dy) there [rad].
+    pub rail_angle_rad: f64,
 }
 
-/// The gap function over the wheel profile, in the order of the profile's y.
-pub fn scan(wheel: &PlacedWheel, rail: &PlacedRail) -> Vec<LocusSample> {
-    let [lo, hi] = wheel.curve.y_range_mm();
-    let n = ((hi - lo) / SCAN_STEP_MM).ceil() as usize;
-    (0..=n)
+/// The gap function on the uniform mesh `y_k = y_min + k dy` over the rail's lateral range,
+/// where the wheel's locus covers it.
+pub fn scan(wheel: &PlacedWheel, rail: &PlacedRail, ds_mm: f64) -> Vec<LocusSample> {
+    let [lo, hi] = rail.y_range_mm();
+    let dy = MESH_STEP_OVER_DS * ds_mm;
+    let n = ((hi - lo) / dy).ceil() as usize + 1;
+    (0..n)
         .filter_map(|k| {
-            let p = wheel.locus((lo + SCAN_STEP_MM * k as f64).min(hi))?;
-            let z_rail = rail.z_mm(p.y)?;
-            Some(LocusSample { x_mm: p.x, y_mm: p.y, z_mm: p.z, pen_mm: p.z - z_rail, rail_slope: rail.dz_dy(p.y)? })
+            let y = lo + dy * k as f64;
+            let p = wheel.locus_at_track_y(y)?;
+            let z_rail_mm = rail.z_mm(y)?;
+            Some(LocusSample {
+                x_mm: p.x,
+                y_mm: y,
+                z_mm: p.z,
+                z_rail_mm,
+                pen_mm: p.z - z_rail_mm,
+                rail_angle_rad: rail.dz_dy(y)?.atan(),
+            })
         })
         .collect()
 }
@@ -40,7 +52,21 @@ pub fn deepest_mm(samples: &[LocusSample]) -> Option<f64> {
     samples.iter().map(|s| s.pen_mm).reduce(f64::max)
 }
 
-/// The interpenetration regions: the maximal runs of samples with pen > 0.
+/// The interpenetration regions: each maximal run of mesh points with pen ≥ 0, with one guard
+/// point on each side where the mesh has it (CONTACT's bounding box with `nguard = 1`).
 pub fn regions(samples: &[LocusSample]) -> Vec<&[LocusSample]> {
-    samples.split(|s| s.pen_mm <= 0.0).filter(|r| !r.is_empty()).collect()
+    let mut out = Vec::new();
+    let mut k = 0;
+    while k < samples.len() {
+        if samples[k].pen_mm < 0.0 {
+            k += 1;
+            continue;
+        }
+        let start = k;
+        while k < samples.len() && samples[k].pen_mm >= 0.0 {
+            k += 1;
+        }
+        out.push(&samples[start.saturating_sub(1)..(k + 1).min(samples.len())]);
+    }
+    out
 }

@@ -49,12 +49,15 @@ fn a_cylinder_on_a_crowned_rail_is_hertz() {
     let approach = hertz.approach_mm(&c.material);
     assert!((contact.z_ws_mm / approach - 1.0).abs() < 0.02, "z_ws {} approach {approach}", contact.z_ws_mm);
     assert!((p.fn_n - 10000.0).abs() < 1e-5, "{}", p.fn_n);
-    assert!(p.geometry.frame.delta_rad.abs() < 1e-12);
+    // The crown is symmetric: only the gap mesh's placement (0.06 mm steps) tilts the weighted
+    // angle and centre.
+    assert!(p.geometry.frame.delta_rad.abs() < 1e-5, "{}", p.geometry.frame.delta_rad);
+    assert!((p.geometry.frame.origin.y - 750.0).abs() < 1e-3, "{}", p.geometry.frame.origin.y);
     let area = p.pn_mpa.iter().filter(|&&v| v > 0.0).count() as f64 * 0.04;
     let ellipse = std::f64::consts::PI * hertz.a_mm * hertz.b_mm;
     assert!((area / ellipse - 1.0).abs() < 0.03, "area {area} ellipse {ellipse}");
-    // Pure rolling at the nominal radius less the approach: cksi = approach / r (z down).
-    assert!(p.creepages.cphi_per_mm.abs() < 1e-15 && p.creepages.ceta.abs() < 1e-15);
+    // No yaw, no lateral motion: spin and lateral creepage only from the mesh's tilt of δ.
+    assert!(p.creepages.cphi_per_mm.abs() < 1e-8 && p.creepages.ceta.abs() < 1e-8, "{:?}", p.creepages);
 }
 
 #[test]

@@ -77,6 +77,26 @@ impl<'a> PlacedWheel<'a> {
         Some(self.to_track(Vector3::new(rho * sin_t, self.y_offset_mm + y_w_mm, rho * cos_t)))
     }
 
+    /// The locus point above track y: the profile position y_w whose locus point lies at y
+    /// (secant steps from the unturned wheel's y_w), if the profile reaches it.
+    pub fn locus_at_track_y(&self, y_mm: f64) -> Option<Point3<f64>> {
+        let lateral = |y_w: f64| self.locus(y_w).map(|p| p.y - y_mm);
+        let [lo, hi] = self.curve.y_range_mm();
+        let start = (y_mm - self.centre.y - self.y_offset_mm).clamp(lo, hi);
+        let (mut w0, mut f0) = (start, lateral(start)?);
+        let mut w1 = (w0 - f0).clamp(lo, hi);
+        for _ in 0..30 {
+            let f1 = lateral(w1)?;
+            if f1.abs() < 1e-12 || f1 == f0 {
+                break;
+            }
+            let w2 = (w1 - f1 * (w1 - w0) / (f1 - f0)).clamp(lo, hi);
+            (w0, f0, w1) = (w1, f1, w2);
+        }
+        let p = self.locus(w1)?;
+        ((p.y - y_mm).abs() < 1e-9).then_some(p)
+    }
+
     fn to_track(&self, p_ws: Vector3<f64>) -> Point3<f64> {
         self.centre + self.rotation * p_ws
     }
@@ -115,6 +135,11 @@ impl<'a> PlacedWheel<'a> {
     pub fn angular_velocity(&self, v: &Velocity) -> Vector3<f64> {
         let rolled_z = Rotation3::from_axis_angle(&Vector3::x_axis(), self.roll_rad) * Vector3::z();
         Vector3::x() * v.vroll_rad_s + rolled_z * v.vyaw_rad_s + self.rotation * Vector3::y() * v.vpitch_rad_s
+    }
+
+    /// The part of the material velocity at p that the pitch rotation alone gives [mm/s].
+    pub fn pitch_velocity(&self, p: &Point3<f64>, v: &Velocity) -> Vector3<f64> {
+        (self.rotation * Vector3::y() * v.vpitch_rad_s).cross(&(p - self.centre))
     }
 
     /// Velocity [mm/s] of the wheel's material at track point p.

@@ -50,3 +50,4 @@ mod test_table;
 mod tolerance_files;
 mod traction_bound;
 mod wheelrail;
+mod wheelrail_profiles;

@@ -58,5 +58,6 @@ fn hertz_patch_for_every_model_and_mirrored_sides() {
         assert!((tr.track_n[1] + tl.track_n[1]).abs() <= 1e-9 * pr[0].fn_n, "{model}: FY mirrored");
     }
     let (_, _, exact) = &right.models[0];
-    assert!((exact.track_n[2] - 10000.0).abs() < 1e-6, "FZ(TR) {}", exact.track_n[2]);
+    // The height iteration stops at a relative force error of 1e-9 (wheelrail::vertical::FORCE_TOL).
+    assert!((exact.track_n[2] - 10000.0).abs() < 2e-9 * 10000.0, "FZ(TR) {}", exact.track_n[2]);
 }

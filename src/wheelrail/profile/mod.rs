@@ -1,0 +1,448 @@
+//! A wheel or rail profile as CONTACT's module 1 uses it (user guide, Section "Inputs regarding
+//! wheel and rail profiles"; `m_varprof.f90` `profile_read_file`, `m_profile.f90`
+//! `profile_finish_grid`, `profile_store_values`): read from a SIMPACK, Miniprof or plain file
+//! ([`read_profile`]) or given as values ([`Profile::from_points`]), brought into CONTACT's
+//! canonical form ([`canonical`]), cleaned ([`clean`]) and fitted with CONTACT's parametric spline
+//! ([`spline`]). A [`Profile`] is read once per scene and shared: cloning it is cheap.
+//!
+//! Units are in the names: `_mm` for lengths, `_rad` for angles, `_per_mm` for curvatures.
+
+pub mod canonical;
+pub mod clean;
+pub mod error;
+mod foldback;
+pub mod lines;
+pub mod miniprof;
+pub mod options;
+pub mod read;
+pub mod simpack;
+pub mod spline;
+
+pub use error::ProfileError;
+pub use options::ProfileOptions;
+pub use read::read_profile;
+
+use canonical::Pt;
+use spline::ParamSpline;
+use std::sync::Arc;
+
+/// Which body a profile belongs to (CONTACT's `is_wheel` 0 or 1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ProfileKind {
+    Rail,
+    Wheel,
+}
+
+impl ProfileKind {
+    /// "rail" or "wheel".
+    pub fn name(self) -> &'static str {
+        match self {
+            ProfileKind::Rail => "rail",
+            ProfileKind::Wheel => "wheel",
+        }
+    }
+}
+
+/// What reading and cleaning did to the points (CONTACT prints these as INFO and WARNING lines).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Cleaning {
+    /// Points in the file (or given).
+    pub read: usize,
+    /// Dropped as too close to the previous point kept (`point.dist.min`, 1e-4 in the file's
+    /// units for Miniprof and plain tables).
+    pub too_close: usize,
+    /// Dropped by replacing zig-zags with their mean (ZIGTHRS).
+    pub zigzag: usize,
+    /// Dropped outside SIMPACK's `bound.y.min`, `bound.y.max`.
+    pub outside_bounds: usize,
+    /// y was mirrored (MIRRORY, SIMPACK's `mirror.y`).
+    pub mirrored_y: bool,
+    /// z was mirrored (MIRRORZ, SIMPACK's `mirror.z`, or CONTACT's detection).
+    pub mirrored_z: bool,
+    /// The order of the points was reversed (SIMPACK's `inversion`, or CONTACT's detection).
+    pub inverted: bool,
+}
+
+/// A point of the profile's spline with its derivatives in s.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ProfilePoint {
+    pub s_mm: f64,
+    pub y_mm: f64,
+    pub z_mm: f64,
+    /// dy/ds: about a unit vector with `dz_ds` (s is the chord length of the points).
+    pub dy_ds: f64,
+    pub dz_ds: f64,
+    /// Signed curvature (y′z″ − z′y″)/(y′² + z′²)^{3/2}, positive where the surface is convex
+    /// (the top of a rail, the tread of a wheel); CONTACT's ±1e6 where the denominator is below
+    /// 1e-6.
+    pub curvature_per_mm: f64,
+}
+
+impl ProfilePoint {
+    /// The unit tangent (dy/ds, dz/ds) normalised; the material lies to its right.
+    pub fn tangent(&self) -> [f64; 2] {
+        let n = self.dy_ds.hypot(self.dz_ds);
+        [self.dy_ds / n, self.dz_ds / n]
+    }
+
+    /// The slope dz/dy; CONTACT's ±1e6 (the sign of dz/ds) where |dy/ds| < 1e-6 (a vertical
+    /// flank).
+    pub fn slope_dz_dy(&self) -> f64 {
+        if self.dy_ds.abs() < 1e-6 {
+            1e6_f64.copysign(self.dz_ds)
+        } else {
+            self.dz_ds / self.dy_ds
+        }
+    }
+}
+
+/// A profile in CONTACT's canonical form with its spline.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Profile(Arc<Data>);
+
+#[derive(Debug, PartialEq)]
+struct Data {
+    file: String,
+    kind: ProfileKind,
+    y_mm: Vec<f64>,
+    z_mm: Vec<f64>,
+    s_mm: Vec<f64>,
+    spline: ParamSpline,
+    breaks: Vec<usize>,
+    cleaning: Cleaning,
+    max_omit: f64,
+    /// Each segment's y-range (interior extrema included), for the search by y.
+    segment_y: Vec<(f64, f64)>,
+}
+
+/// CONTACT's bounds on a profile's total length [mm] (`profile_finish_grid`, errors 241 and 242):
+/// a profile outside them has its unit wrong.
+pub const LENGTH_MIN_MM: f64 = 5.0;
+pub const LENGTH_MAX_MM: f64 = 500.0;
+
+/// Most points accepted (measured profiles have a few thousand; the loop check is quadratic).
+pub const MAX_POINTS: usize = 20_000;
+
+impl Profile {
+    /// A profile given as values (CONTACT's `cntc_setprofileinputvalues`, `profile_store_values`):
+    /// points closer than 1e-4 dropped, MIRRORY, MIRRORZ (0: detected), the order checked and
+    /// reversed where needed, SCALEYZ, then cleaned and fitted as a file is. No zig-zag filter,
+    /// as in CONTACT.
+    pub fn from_points(
+        y_mm: &[f64],
+        z_mm: &[f64],
+        kind: ProfileKind,
+        opts: &ProfileOptions,
+    ) -> Result<Profile, ProfileError> {
+        let file = "<values>";
+        let opts = opts.checked()?;
+        if y_mm.len() != z_mm.len() {
+            return Err(ProfileError::profile(
+                file,
+                "the number of y and z values",
+                format!("{} and {}", y_mm.len(), z_mm.len()),
+                "as many z values as y values",
+            ));
+        }
+        if let Some(k) = y_mm.iter().chain(z_mm).position(|v| !v.is_finite()) {
+            let i = k % y_mm.len().max(1);
+            return Err(ProfileError::profile(
+                file,
+                format!("point {}", i + 1),
+                format!("({}, {})", y_mm[i], z_mm[i]),
+                "finite coordinates",
+            ));
+        }
+        let mut pts: Vec<Pt> = y_mm.iter().zip(z_mm).map(|(&y, &z)| Pt::new(y, z, 0)).collect();
+        let mut cleaning = Cleaning { read: pts.len(), ..Default::default() };
+        check_count(&pts, file)?;
+        cleaning.too_close = clean::drop_close_points(&mut pts, clean::POINT_DIST_MIN);
+        check_count(&pts, file)?;
+        if opts.mirror_y >= 1 {
+            canonical::mirror_y(&mut pts);
+            cleaning.mirrored_y = true;
+        }
+        let mirror_z = match opts.mirror_z {
+            0 => canonical::z_mirror_needed(&pts, kind),
+            m => m == 1,
+        };
+        if mirror_z {
+            canonical::mirror_z(&mut pts);
+            cleaning.mirrored_z = true;
+        }
+        if canonical::inversion_needed(&pts, kind).0 {
+            canonical::invert(&mut pts);
+            cleaning.inverted = true;
+        }
+        canonical::check_overall_order(&pts, kind, file)?;
+        canonical::scale(&mut pts, opts.scale);
+        Profile::finish(file, kind, pts, &opts, cleaning)
+    }
+
+    /// The canonical, cleaned points made into a profile (CONTACT's `profile_finish_grid`): no
+    /// loop, the order at the top of the rail or bottom of the wheel, the arc length, the total
+    /// length in [5, 500] mm, the kinks and the spline.
+    pub(crate) fn finish(
+        file: &str,
+        kind: ProfileKind,
+        pts: Vec<Pt>,
+        opts: &ProfileOptions,
+        cleaning: Cleaning,
+    ) -> Result<Profile, ProfileError> {
+        check_count(&pts, file)?;
+        check_distinct(&pts, file)?;
+        clean::check_no_loop(&pts, file)?;
+        canonical::check_inversion(&pts, kind, file)?;
+        let s_mm = arc_length(&pts);
+        check_length(&s_mm, file)?;
+        let kinks = clean::KinkSettings {
+            high_rad: opts.kink_high_rad,
+            low_rad: opts.kink_low_rad,
+            width_mm: opts.kink_wid_mm,
+        };
+        let breaks = clean::find_kinks(&pts, &kinks);
+        let (lambda, use_spacing) = opts.lambda();
+        let wgt = spline::weights(&s_mm, &breaks, use_spacing);
+        let ys: Vec<f64> = pts.iter().map(|p| p.y).collect();
+        let zs: Vec<f64> = pts.iter().map(|p| p.z).collect();
+        let y = spline::fit(&s_mm, &ys, &breaks, lambda, &wgt);
+        let z = spline::fit(&s_mm, &zs, &breaks, lambda, &wgt);
+        let spline = ParamSpline { s: s_mm.clone(), y, z };
+        let segment_y = (0..s_mm.len() - 1).map(|i| spline.y_bounds(i)).collect();
+        Ok(Profile(Arc::new(Data {
+            file: file.to_string(),
+            kind,
+            y_mm: spline.y.a0.clone(),
+            z_mm: spline.z.a0.clone(),
+            s_mm,
+            spline,
+            breaks,
+            cleaning,
+            max_omit: opts.max_omit,
+            segment_y,
+        })))
+    }
+
+    /// The file the profile was read from (`<values>` for [`Self::from_points`]).
+    pub fn file(&self) -> &str {
+        &self.0.file
+    }
+
+    pub fn kind(&self) -> ProfileKind {
+        self.0.kind
+    }
+
+    /// The points' y after cleaning [mm] (smoothed where SMOOTH > 0, as CONTACT replaces them).
+    pub fn y_mm(&self) -> &[f64] {
+        &self.0.y_mm
+    }
+
+    /// The points' z after cleaning [mm], positive down.
+    pub fn z_mm(&self) -> &[f64] {
+        &self.0.z_mm
+    }
+
+    /// The arc length at each point [mm]: the summed chord length, 0 where the profile crosses
+    /// y = 0 (or at the point nearest the origin where y is not monotone), as CONTACT's
+    /// `grid_make_arclength`.
+    pub fn s_mm(&self) -> &[f64] {
+        &self.0.s_mm
+    }
+
+    /// The number of points after cleaning.
+    pub fn len(&self) -> usize {
+        self.0.s_mm.len()
+    }
+
+    /// Never true: a profile has at least two points.
+    pub fn is_empty(&self) -> bool {
+        self.0.s_mm.is_empty()
+    }
+
+    /// The spline's section ends (0-based point indices): the first point, each kink, the last.
+    pub fn breaks(&self) -> &[usize] {
+        &self.0.breaks
+    }
+
+    /// What reading and cleaning did.
+    pub fn cleaning(&self) -> &Cleaning {
+        &self.0.cleaning
+    }
+
+    /// The spline (coefficients per segment).
+    pub fn spline(&self) -> &ParamSpline {
+        &self.0.spline
+    }
+
+    /// The range of s [mm].
+    pub fn s_range(&self) -> (f64, f64) {
+        (self.0.s_mm[0], self.0.s_mm[self.len() - 1])
+    }
+
+    /// The range of y the spline covers [mm] (min, max; bulges between points included).
+    pub fn y_range(&self) -> (f64, f64) {
+        self.0.segment_y.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(a, b)| (lo.min(a), hi.max(b)))
+    }
+
+    /// The point of the spline at arc length `s_mm`, `None` outside [`Self::s_range`]. At a kink
+    /// the derivatives are those of the section that starts there.
+    pub fn point_at_s(&self, s_mm: f64) -> Option<ProfilePoint> {
+        let i = self.0.spline.segment(s_mm)?;
+        Some(self.point_on(i, s_mm))
+    }
+
+    fn point_on(&self, i: usize, s_mm: f64) -> ProfilePoint {
+        let ([y, y1, y2], [z, z1, z2]) = self.0.spline.eval_on(i, s_mm);
+        let numer = y1 * z2 - z1 * y2;
+        let denom = (y1 * y1 + z1 * z1).powf(1.5);
+        let curvature_per_mm = if denom.abs() < 1e-6 { 1e6_f64.copysign(numer) } else { numer / denom };
+        ProfilePoint { s_mm, y_mm: y, z_mm: z, dy_ds: y1, dz_ds: z1, curvature_per_mm }
+    }
+
+    /// The visible point at lateral position `y_mm`: where the spline has several points at that
+    /// y (a flange that folds back, a vertical flank) the one seen from above a rail (smallest z)
+    /// or from below a wheel (largest z), as CONTACT's top view; the only one where y is
+    /// monotone, as its `spline_get_xz_at_y`. `None` outside [`Self::y_range`].
+    pub fn point_at_y(&self, y_mm: f64) -> Option<ProfilePoint> {
+        if !y_mm.is_finite() {
+            return None;
+        }
+        let mut best: Option<ProfilePoint> = None;
+        for (i, &(lo, hi)) in self.0.segment_y.iter().enumerate() {
+            if y_mm < lo || y_mm > hi {
+                continue;
+            }
+            for s in self.0.spline.s_at_y_on(i, y_mm) {
+                let p = self.point_on(i, s);
+                let better = match (best, self.0.kind) {
+                    (None, _) => true,
+                    (Some(b), ProfileKind::Rail) => p.z_mm < b.z_mm,
+                    (Some(b), ProfileKind::Wheel) => p.z_mm > b.z_mm,
+                };
+                if better {
+                    best = Some(p);
+                }
+            }
+        }
+        best
+    }
+
+    /// z [mm] at `y_mm` ([`Self::point_at_y`]).
+    pub fn z_at(&self, y_mm: f64) -> Option<f64> {
+        self.point_at_y(y_mm).map(|p| p.z_mm)
+    }
+
+    /// The slope dz/dy at `y_mm` ([`ProfilePoint::slope_dz_dy`]).
+    pub fn slope_at(&self, y_mm: f64) -> Option<f64> {
+        self.point_at_y(y_mm).map(|p| p.slope_dz_dy())
+    }
+
+    /// The signed curvature [1/mm] at `y_mm` ([`ProfilePoint::curvature_per_mm`]).
+    pub fn curvature_at(&self, y_mm: f64) -> Option<f64> {
+        self.point_at_y(y_mm).map(|p| p.curvature_per_mm)
+    }
+}
+
+/// At least two points, at most [`MAX_POINTS`] (CONTACT's error 190 for too few).
+fn check_count(pts: &[Pt], file: &str) -> Result<(), ProfileError> {
+    if pts.len() < 2 {
+        return Err(ProfileError::profile(
+            file,
+            "the number of points",
+            pts.len(),
+            "at least 2 points (CONTACT's error 190)",
+        ));
+    }
+    if pts.len() > MAX_POINTS {
+        return Err(ProfileError::profile(
+            file,
+            "the number of points",
+            pts.len(),
+            format!("at most {MAX_POINTS} points"),
+        ));
+    }
+    Ok(())
+}
+
+/// No two successive points at the same place (CONTACT stops with an internal error: its spline
+/// needs s strictly increasing).
+fn check_distinct(pts: &[Pt], file: &str) -> Result<(), ProfileError> {
+    if let Some(k) = pts.windows(2).position(|w| w[0].y == w[1].y && w[0].z == w[1].z) {
+        let (a, b) = (pts[k], pts[k + 1]);
+        let lines = if a.line > 0 { format!(" (lines {} and {})", a.line, b.line) } else { String::new() };
+        return Err(ProfileError::profile(
+            file,
+            format!("points {} and {}{lines} after cleaning", k + 1, k + 2),
+            format!("both ({}, {})", a.y, a.z),
+            "distinct successive points (the spline's arc length must increase)",
+        ));
+    }
+    Ok(())
+}
+
+/// The summed chord length, shifted to 0 at y = 0 (linear interpolation, the end values beyond)
+/// where y is strictly monotone, else at the point nearest the origin (the last of equals), as
+/// CONTACT's `grid_make_arclength`.
+fn arc_length(pts: &[Pt]) -> Vec<f64> {
+    let mut s = vec![0.0; pts.len()];
+    for i in 1..pts.len() {
+        let (dy, dz) = (pts[i].y - pts[i - 1].y, pts[i].z - pts[i - 1].z);
+        s[i] = s[i - 1] + (dy * dy + dz * dz).sqrt();
+    }
+    let y: Vec<f64> = pts.iter().map(|p| p.y).collect();
+    let s0 = if strictly_monotone(&y) { interpolate_at_zero(&y, &s) } else { s[nearest_origin(pts)] };
+    s.iter_mut().for_each(|v| *v -= s0);
+    s
+}
+
+fn strictly_monotone(y: &[f64]) -> bool {
+    y.windows(2).all(|w| w[1] > w[0]) || y.windows(2).all(|w| w[1] < w[0])
+}
+
+/// f at x = 0 by linear interpolation in the monotone x (CONTACT's `interp_1d_to_scalar`).
+fn interpolate_at_zero(x: &[f64], f: &[f64]) -> f64 {
+    let n = x.len();
+    let ascending = x[n - 1] > x[0];
+    let before = |v: f64, at: f64| if ascending { v < at } else { v > at };
+    if before(0.0, x[0]) {
+        return f[0];
+    }
+    if before(x[n - 1], 0.0) || 0.0 == x[n - 1] {
+        return f[n - 1];
+    }
+    let i = (0..n - 1).find(|&i| !before(0.0, x[i]) && before(0.0, x[i + 1])).unwrap_or(n - 2);
+    let dx = if ascending { (x[i + 1] - x[i]).max(1e-9) } else { (x[i + 1] - x[i]).min(-1e-9) };
+    let fac = (0.0 - x[i]) / dx;
+    (1.0 - fac) * f[i] + fac * f[i + 1]
+}
+
+/// The index of the point nearest (0, 0), the last of equals.
+fn nearest_origin(pts: &[Pt]) -> usize {
+    let mut best = 0;
+    let mut dmin = 1e12;
+    for (k, p) in pts.iter().enumerate() {
+        let d = p.y * p.y + p.z * p.z;
+        if d <= dmin {
+            best = k;
+            dmin = d;
+        }
+    }
+    best
+}
+
+/// The total length within CONTACT's bounds (errors 241, 242).
+fn check_length(s: &[f64], file: &str) -> Result<(), ProfileError> {
+    let total = s[s.len() - 1] - s[0];
+    if !(LENGTH_MIN_MM..=LENGTH_MAX_MM).contains(&total) {
+        let code = if total < LENGTH_MIN_MM { 241 } else { 242 };
+        return Err(ProfileError::profile(
+            file,
+            "the total length of the profile (summed chord length, mm)",
+            crate::error::number(total),
+            format!(
+                "{LENGTH_MIN_MM} to {LENGTH_MAX_MM} mm (CONTACT's error {code}: a unit conversion amiss? SCALEYZ, SIMPACK's units.len.f)"
+            ),
+        ));
+    }
+    Ok(())
+}
