@@ -207,6 +207,7 @@ impl Profile {
         cleaning: Cleaning,
     ) -> Result<Profile, ProfileError> {
         check_count(&pts, file)?;
+        check_finite(&pts, file)?;
         check_distinct(&pts, file)?;
         clean::check_no_loop(&pts, file)?;
         canonical::check_inversion(&pts, kind, file)?;
@@ -376,6 +377,21 @@ fn check_count(pts: &[Pt], file: &str) -> Result<(), ProfileError> {
             "the number of points",
             pts.len(),
             format!("at most {MAX_POINTS} points"),
+        ));
+    }
+    Ok(())
+}
+
+/// Coordinates still finite after the offsets and the unit (1e300 mm times SCALEYZ 1000 is not).
+fn check_finite(pts: &[Pt], file: &str) -> Result<(), ProfileError> {
+    if let Some(k) = pts.iter().position(|p| !(p.y.is_finite() && p.z.is_finite())) {
+        let p = pts[k];
+        let line = if p.line > 0 { format!(" (line {})", p.line) } else { String::new() };
+        return Err(ProfileError::profile(
+            file,
+            format!("point {}{line} after its shift and unit", k + 1),
+            format!("({}, {})", p.y, p.z),
+            "finite coordinates in mm",
         ));
     }
     Ok(())
