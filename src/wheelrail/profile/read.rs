@@ -137,12 +137,10 @@ mod tests {
                 (0..n).map(|_| format!("{}\n", tokens[(next() % tokens.len() as u64) as usize])).collect();
             for kind in [ProfileKind::Rail, ProfileKind::Wheel] {
                 let opts = ProfileOptions { mirror_z: (next() % 3) as i32 - 1, ..Default::default() };
-                for result in [simpack::read(&text, "f.prr", kind, &opts), miniprof::read(&text, "f.txt", kind, &opts)]
-                {
-                    if let Ok((pts, cleaning)) = result {
-                        let _ = Profile::finish("f", kind, pts, &opts, cleaning)
-                            .map(|p| (p.z_at(0.0), p.uni_valued_range()));
-                    }
+                let results = [simpack::read(&text, "f.prr", kind, &opts), miniprof::read(&text, "f.txt", kind, &opts)];
+                for (pts, cleaning) in results.into_iter().flatten() {
+                    let _ =
+                        Profile::finish("f", kind, pts, &opts, cleaning).map(|p| (p.z_at(0.0), p.uni_valued_range()));
                 }
             }
         }
