@@ -6,6 +6,9 @@
 //! Tolerances: the points to the bit; z within 1e-6 mm (CONTACT's Newton solve for s at y stops at
 //! |Δy| < 1e-8 mm, which moves z by up to 3e-7 mm on a steep flank); slope and curvature within
 //! 1e-6 relative.
+//!
+//! CONTACT's numbers are written as it printed them, to 17 digits.
+#![allow(clippy::excessive_precision)]
 
 use crate::common::root;
 use creepbench::wheelrail::profile::{read_profile, Profile, ProfileError, ProfileKind, ProfileOptions};

@@ -144,7 +144,8 @@ fn wrap_half_open(mut d: f64) -> f64 {
 }
 
 /// Whether the points run the wrong way at the top of the rail (its smallest z) or the bottom of
-/// the wheel (its largest z, typically the flange), CONTACT's `check_inversion`. Returns the
+/// the wheel (its largest z, typically the flange), CONTACT's `check_inversion` (the coordinates
+/// are finite: its negated comparisons are plain ones here). Returns the
 /// 1-based indices of the points it looked at with the answer.
 pub fn inversion_needed(pts: &[Pt], kind: ProfileKind) -> (bool, [usize; 3]) {
     let n = pts.len();
@@ -160,19 +161,19 @@ pub fn inversion_needed(pts: &[Pt], kind: ProfileKind) -> (bool, [usize; 3]) {
             let i = first_extreme_z(pts, false);
             let around = [i.saturating_sub(1).max(1), i, (i + 1).min(n)];
             if i <= 1 {
-                return (!(y(i + 1) < y(i)), around);
+                return (y(i + 1) >= y(i), around);
             }
             if i >= n {
-                return (!(y(i) < y(i - 1)), around);
+                return (y(i) >= y(i - 1), around);
             }
             let (dy1, dy2) = (y(i) - y(i - 1), y(i + 1) - y(i));
             if dy1 * dy2 > 0.0 {
-                return (!(dy1 < 0.0), around);
+                return (dy1 >= 0.0, around);
             }
             // A sharp corner, '<' or '>': the profile must turn to the right.
             let (dz1, dz2) = (z(i) - z(i - 1), z(i + 1) - z(i));
             let dalph = wrap_half_open(dz2.atan2(dy2) - dz1.atan2(dy1));
-            (!(dalph >= 0.0), around)
+            (dalph < 0.0, around)
         }
     }
 }

@@ -156,6 +156,14 @@ pub fn read(
     }
     cleaning.too_close = clean::drop_close_points(&mut points, clean::POINT_DIST_MIN);
     cleaning.zigzag = clean::replace_zigzags(&mut points, opts.zig_thrs_rad);
+    if points.len() < 2 {
+        return Err(ProfileError::profile(
+            file,
+            "the number of points 1e-4 apart",
+            points.len(),
+            "at least 2 points (CONTACT's error 190)",
+        ));
+    }
     points.iter_mut().for_each(|p| {
         p.y += h.x_offset;
         p.z += h.y_offset;

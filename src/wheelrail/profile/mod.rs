@@ -100,7 +100,7 @@ impl ProfilePoint {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Profile(Arc<Data>);
 
-#[derive(Debug, PartialEq)]
+#[derive(PartialEq)]
 struct Data {
     file: String,
     kind: ProfileKind,
@@ -113,6 +113,23 @@ struct Data {
     max_omit: f64,
     /// Each segment's y-range (interior extrema included), for the search by y.
     segment_y: Vec<(f64, f64)>,
+}
+
+/// A summary: a profile has hundreds of points.
+impl std::fmt::Debug for Data {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let n = self.s_mm.len();
+        f.debug_struct("Profile")
+            .field("file", &self.file)
+            .field("kind", &self.kind)
+            .field("points", &n)
+            .field("first_mm", &(self.y_mm[0], self.z_mm[0]))
+            .field("last_mm", &(self.y_mm[n - 1], self.z_mm[n - 1]))
+            .field("s_mm", &(self.s_mm[0], self.s_mm[n - 1]))
+            .field("breaks", &self.breaks)
+            .field("cleaning", &self.cleaning)
+            .finish_non_exhaustive()
+    }
 }
 
 /// CONTACT's bounds on a profile's total length [mm] (`profile_finish_grid`, errors 241 and 242):
@@ -190,6 +207,7 @@ impl Profile {
         cleaning: Cleaning,
     ) -> Result<Profile, ProfileError> {
         check_count(&pts, file)?;
+        check_finite(&pts, file)?;
         check_distinct(&pts, file)?;
         clean::check_no_loop(&pts, file)?;
         canonical::check_inversion(&pts, kind, file)?;
@@ -364,6 +382,21 @@ fn check_count(pts: &[Pt], file: &str) -> Result<(), ProfileError> {
     Ok(())
 }
 
+/// Coordinates still finite after the offsets and the unit (1e300 mm times SCALEYZ 1000 is not).
+fn check_finite(pts: &[Pt], file: &str) -> Result<(), ProfileError> {
+    if let Some(k) = pts.iter().position(|p| !(p.y.is_finite() && p.z.is_finite())) {
+        let p = pts[k];
+        let line = if p.line > 0 { format!(" (line {})", p.line) } else { String::new() };
+        return Err(ProfileError::profile(
+            file,
+            format!("point {}{line} after its shift and unit", k + 1),
+            format!("({}, {})", p.y, p.z),
+            "finite coordinates in mm",
+        ));
+    }
+    Ok(())
+}
+
 /// No two successive points at the same place (CONTACT stops with an internal error: its spline
 /// needs s strictly increasing).
 fn check_distinct(pts: &[Pt], file: &str) -> Result<(), ProfileError> {
@@ -445,4 +478,113 @@ fn check_length(s: &[f64], file: &str) -> Result<(), ProfileError> {
         ));
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A rail crown z = R − √(R² − y²), z down, every `step_mm` over |y| ≤ `half_width_mm`.
+    fn circle(r_mm: f64, half_width_mm: f64, step_mm: f64) -> (Vec<f64>, Vec<f64>) {
+        let n = (2.0 * half_width_mm / step_mm).round() as usize;
+        let y: Vec<f64> = (0..=n).map(|i| -half_width_mm + i as f64 * step_mm).collect();
+        let z = y.iter().map(|y| r_mm - (r_mm * r_mm - y * y).sqrt()).collect();
+        (y, z)
+    }
+
+    /// Closed form: a circle of radius 100 mm sampled exactly every 0.5 mm has curvature 1/100
+    /// within 1e-6 relative away from the free ends, and z within 1e-9 mm of the circle.
+    #[test]
+    fn a_circle_has_curvature_one_over_its_radius() {
+        let (y, z) = circle(100.0, 60.0, 0.5);
+        let p = Profile::from_points(&y, &z, ProfileKind::Rail, &ProfileOptions::default()).unwrap();
+        assert_eq!(p.len(), y.len());
+        for k in -40..=40 {
+            let yq = f64::from(k) + 0.123;
+            let q = p.point_at_y(yq).unwrap();
+            assert!((q.curvature_per_mm * 100.0 - 1.0).abs() < 1e-6, "y = {yq}: {}", q.curvature_per_mm);
+            assert!((q.z_mm - (100.0 - (1e4 - yq * yq).sqrt())).abs() < 1e-9, "y = {yq}");
+            let slope = yq / (1e4 - yq * yq).sqrt();
+            assert!((q.slope_dz_dy() - slope).abs() < 1e-7, "y = {yq}: slope {}", q.slope_dz_dy());
+        }
+        // s is 0 at y = 0 and runs with the arc length.
+        let q = p.point_at_s(0.0).unwrap();
+        assert!(q.y_mm.abs() < 1e-12 && q.z_mm.abs() < 1e-12);
+        let a = p.point_at_s(100.0 * 0.5).unwrap();
+        assert!((a.y_mm - 100.0 * 0.5f64.sin()).abs() < 1e-4, "{a:?}");
+        assert_eq!(p.point_at_s(p.s_range().1 + 1e-9), None);
+    }
+
+    /// Closed form: a straight inclined line stays one (slope 0.1, curvature 0) and its tangent is
+    /// the line's direction.
+    #[test]
+    fn a_straight_line_has_its_slope_and_no_curvature() {
+        let y: Vec<f64> = (0..=20).map(|i| -10.0 + i as f64).collect();
+        let z: Vec<f64> = y.iter().map(|y| 0.1 * y + 2.0).collect();
+        let opts = ProfileOptions { mirror_z: -1, ..Default::default() };
+        let p = Profile::from_points(&y, &z, ProfileKind::Rail, &opts).unwrap();
+        for yq in [-9.5, -3.25, 0.0, 7.75] {
+            let q = p.point_at_y(yq).unwrap();
+            assert!((q.z_mm - (0.1 * yq + 2.0)).abs() < 1e-12 && (q.slope_dz_dy() - 0.1).abs() < 1e-12);
+            assert!(q.curvature_per_mm.abs() < 1e-12);
+            let t = q.tangent();
+            assert!((t[0] - 1.0 / 1.01f64.sqrt()).abs() < 1e-12 && (t[1] - 0.1 / 1.01f64.sqrt()).abs() < 1e-12);
+        }
+        assert_eq!(p.y_range(), (-10.0, 10.0));
+        assert_eq!(p.z_at(10.5), None);
+        // s = 0 where y = 0, at the line's 10th point.
+        assert!((p.s_mm()[10]).abs() < 1e-12 && (p.s_mm()[20] - 10.0 * 1.01f64.sqrt()).abs() < 1e-12);
+    }
+
+    /// MIRRORY gives the mirror image (in the canonical order) and SCALEYZ multiplies every
+    /// coordinate, the curvature divided by it.
+    #[test]
+    fn mirroring_and_scaling() {
+        // An asymmetric crown.
+        let y: Vec<f64> = (0..=40).map(|i| -15.0 + i as f64 * 0.75).collect();
+        let z: Vec<f64> = y.iter().map(|y| y * y / 80.0 + y * y * y / 4000.0).collect();
+        let p = Profile::from_points(&y, &z, ProfileKind::Rail, &ProfileOptions::default()).unwrap();
+        let opts = ProfileOptions { mirror_y: 1, ..Default::default() };
+        let m = Profile::from_points(&y, &z, ProfileKind::Rail, &opts).unwrap();
+        assert!(m.cleaning().mirrored_y && m.cleaning().inverted && !m.cleaning().mirrored_z);
+        assert!(m.y_mm().windows(2).all(|w| w[1] > w[0]));
+        for yq in [-10.0, -2.5, 4.0, 12.0] {
+            assert!((m.z_at(-yq).unwrap() - p.z_at(yq).unwrap()).abs() < 1e-12, "y = {yq}");
+            assert!((m.slope_at(-yq).unwrap() + p.slope_at(yq).unwrap()).abs() < 1e-10);
+        }
+        let opts = ProfileOptions { scale: 2.0, ..Default::default() };
+        let s = Profile::from_points(&y, &z, ProfileKind::Rail, &opts).unwrap();
+        for yq in [-10.0, 0.0, 7.0] {
+            assert!((s.z_at(2.0 * yq).unwrap() - 2.0 * p.z_at(yq).unwrap()).abs() < 1e-12);
+            assert!((2.0 * s.curvature_at(2.0 * yq).unwrap() - p.curvature_at(yq).unwrap()).abs() < 1e-12);
+        }
+        // MIRRORZ = 1 on a crown already z-down makes a trough: CONTACT's checks look only at the
+        // order near the smallest z (now the last point), so it is accepted, as by CONTACT.
+        let opts = ProfileOptions { mirror_z: 1, ..Default::default() };
+        let t = Profile::from_points(&y, &z, ProfileKind::Rail, &opts).unwrap();
+        assert!(t.cleaning().mirrored_z && (t.z_at(4.0).unwrap() + p.z_at(4.0).unwrap()).abs() < 1e-12);
+    }
+
+    #[test]
+    fn values_that_cannot_make_a_profile_are_refused() {
+        let opts = ProfileOptions::default();
+        let e = Profile::from_points(&[0.0, 1.0], &[0.0], ProfileKind::Rail, &opts).unwrap_err();
+        assert!(e.to_string().contains("as many z values"), "{e}");
+        let e = Profile::from_points(&[0.0, 1.0, 2.0], &[0.0, f64::NAN, 0.0], ProfileKind::Rail, &opts).unwrap_err();
+        assert!(e.to_string().contains("point 2"), "{e}");
+        let e = Profile::from_points(&[0.0], &[0.0], ProfileKind::Rail, &opts).unwrap_err();
+        assert!(e.to_string().contains("190"), "{e}");
+        // Two points 1e-5 apart are one (CONTACT's minimum distance 1e-4): too few.
+        let e = Profile::from_points(&[0.0, 1e-5], &[0.0, 0.0], ProfileKind::Rail, &opts).unwrap_err();
+        assert!(e.to_string().contains("at least 2"), "{e}");
+    }
+
+    #[test]
+    fn a_profile_is_cheap_to_clone_and_equal_to_its_clone() {
+        let (y, z) = circle(300.0, 30.0, 1.0);
+        let p = Profile::from_points(&y, &z, ProfileKind::Rail, &ProfileOptions::default()).unwrap();
+        let q = p.clone();
+        assert!(Arc::ptr_eq(&p.0, &q.0));
+        assert_eq!(p, q);
+    }
 }

@@ -117,8 +117,13 @@ mod tests {
     #[test]
     fn contact_defaults_are_the_default() {
         let o = ProfileOptions::default();
-        assert!((o.zig_thrs_rad - 2.618).abs() < 1e-3 && (o.kink_high_rad - 0.5236).abs() < 1e-4);
-        assert!((o.kink_low_rad - 0.1047).abs() < 1e-4 && o.kink_wid_mm == 2.0 && o.max_omit == 0.5);
+        // The user guide's 2.618, 0.5236, 0.1047 rad: 150°, 30°, 6°.
+        let shown = |v: f64| format!("{v:.4}");
+        assert_eq!(
+            [shown(o.zig_thrs_rad), shown(o.kink_high_rad), shown(o.kink_low_rad)],
+            ["2.6180", "0.5236", "0.1047"]
+        );
+        assert!(o.kink_wid_mm == 2.0 && o.max_omit == 0.5);
         assert_eq!(o.checked().unwrap(), o);
     }
 

@@ -84,6 +84,68 @@ pub fn read_profile(path: &Path, kind: ProfileKind, opts: &ProfileOptions) -> Re
 mod tests {
     use super::*;
 
+    /// Lines of profile-like garbage never make a reader panic: each file is a profile or an error.
+    #[test]
+    fn no_input_makes_the_readers_panic() {
+        let tokens = [
+            "header.begin",
+            "header.end",
+            "spline.begin",
+            "spline.end",
+            "point.begin",
+            "point.end",
+            "type = 0",
+            "type = 1",
+            "units.len.f = 0",
+            "units.len.f = 1e-300",
+            "mirror.y = 1",
+            "inversion = 1",
+            "bound.y.min = 5",
+            "bound.y.max = -5",
+            "ColumnDef=X",
+            "ColumnDef=Y,X,K",
+            "XOffset=1e308",
+            "1 2",
+            "0 0",
+            "1e300 1e300",
+            "-1 3 4 5",
+            "nan 1",
+            "2,3",
+            "\"3 4",
+            "% c",
+            "",
+            "  ",
+            "x",
+            "=",
+            "1 2 note",
+            "0.00001 0",
+            "5 -3",
+            "-5 -3",
+            "=1",
+            "'",
+        ];
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        for _ in 0..3000 {
+            let n = (next() % 40) as usize;
+            let text: String =
+                (0..n).map(|_| format!("{}\n", tokens[(next() % tokens.len() as u64) as usize])).collect();
+            for kind in [ProfileKind::Rail, ProfileKind::Wheel] {
+                let opts = ProfileOptions { mirror_z: (next() % 3) as i32 - 1, ..Default::default() };
+                let results = [simpack::read(&text, "f.prr", kind, &opts), miniprof::read(&text, "f.txt", kind, &opts)];
+                for (pts, cleaning) in results.into_iter().flatten() {
+                    let _ =
+                        Profile::finish("f", kind, pts, &opts, cleaning).map(|p| (p.z_at(0.0), p.uni_valued_range()));
+                }
+            }
+        }
+    }
+
     #[test]
     fn the_format_comes_from_the_extension_as_contact_takes_it() {
         assert_eq!(format_of("a/b/UIC60.PRR").unwrap(), (Format::Simpack, Some(ProfileKind::Rail)));

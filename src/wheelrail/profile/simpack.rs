@@ -122,11 +122,9 @@ fn header_key(key: &str, value: &str, kind: ProfileKind, at: At<'_>) -> Result<(
 fn spline_key(sp: &mut SplineSection, key: &str, value: &str, at: At<'_>) -> Result<(), ProfileError> {
     let num = || lines::key_number(key, value, at);
     match key {
-        "approx.smooth" => {
-            // SIMPACK's own smoothing: CONTACT checks it is one number and disregards it.
-            if lines::leading_numbers(value).len() != 1 {
-                return Err(at.value(1, key, value, "one number (CONTACT's error 131)"));
-            }
+        // SIMPACK's own smoothing: CONTACT checks it is one number and disregards it.
+        "approx.smooth" if lines::leading_numbers(value).len() != 1 => {
+            return Err(at.value(1, key, value, "one number (CONTACT's error 131)"));
         }
         "point.dist.min" => sp.point_dist_min = num()?.max(1e-6),
         "shift.y" => sp.shift_y = num()?,

@@ -6,6 +6,10 @@
 //! (second derivative zero) at every section end. With λ = 0 each is the natural interpolating
 //! spline; with λ > 0 the smoothing spline minimising Σ w_i (f_i − f(s_i))² + (2/3) λ ∫ f″² … in
 //! CONTACT's discrete form (its `kappa = 2/3 λ`, weights `σ = 1/w`).
+//!
+//! The systems are written with CONTACT's 1-based local indices (index 0 unused), loop by loop as
+//! its routines have them, so that the two can be read side by side.
+#![allow(clippy::needless_range_loop)]
 
 /// The coefficients of one function f(s) per node: on segment i (s_i ≤ s < s_{i+1}),
 /// f = a0 + a1 t + a2 t² + a3 t³ with t = s − s_i. The node of a kink holds the next section's.
