@@ -108,7 +108,7 @@ fn every_printed_module1_case_and_patch_is_read() {
         for c in &cases {
             let h = c.heading.unwrap_or_else(|| panic!("{rel} case {}: no heading", c.case));
             assert_eq!(h.patches as usize, c.patches.len(), "{rel} case {}", c.case);
-            assert!(c.forces.is_some() && c.position.is_some() && c.velocity.is_some(), "{rel} case {}", c.case);
+            assert!(c.forces.is_some(), "{rel} case {}", c.case);
             for (k, p) in c.patches.iter().enumerate() {
                 assert_eq!(p.index as usize, k + 1, "{rel} case {}", c.case);
                 assert!(p.totals.is_some() && p.statistics.is_some() && p.reference.is_some(), "{rel} case {}", c.case);
@@ -139,12 +139,13 @@ fn sides_supports_and_result_elements_as_printed() {
     // Case 35 uses the conformal approach (D = 4): BAR_FN, TILDE_FN.
     let c35 = tb.iter().find(|c| c.case == 35).unwrap().patches[0].totals.unwrap();
     assert!(c35.conformal && matches!(c35.normal, NormalMeasure::TildeFnN(_)));
-    // iestim_site_b continues patches from case to case.
-    let ie = output("testbank/examples_trans/iestim_site_b.ref_out");
-    assert!(ie
-        .iter()
-        .flat_map(|c| &c.patches)
-        .any(|p| matches!(&p.history, PatchHistory::Previous(v) if v.len() == 2)));
+    // Case 39 continues case 38's patches (P = 0): its patch 2 splits off patch 1, patch 3 is 2.
+    let c39: Vec<PatchHistory> = tb.last().unwrap().patches.iter().map(|p| p.history.clone()).collect();
+    assert_eq!(
+        c39,
+        [PatchHistory::Previous(vec![1]), PatchHistory::Previous(vec![1]), PatchHistory::Previous(vec![2])]
+    );
+    assert!(tb[0].patches.iter().all(|p| p.history == PatchHistory::NotPrinted));
 }
 
 #[test]
@@ -186,10 +187,14 @@ fn mbench_a22_left_case_1_by_hand() {
 }
 
 #[test]
-fn friction_varying_across_the_rail_prints_ratios_over_fn() {
-    let cases = output("examples/mbench_a22_varfric.ref_out");
-    let t = cases[0].patches[0].totals.unwrap();
-    assert!(matches!(t.fx_ratio, Ratio::OverFn(_)) && matches!(t.fs_ratio, Ratio::OverFn(_)), "{t:?}");
+fn the_right_wheel_prints_its_lateral_values_as_computed() {
+    // mbench_a22_right case 1 is mbench_a22_left case 1 mirrored: FY, FS, MN change sign.
+    let (l, r) = (output("examples/mbench_a22_left.ref_out"), output("examples/mbench_a22_right.ref_out"));
+    let (fl, fr) = (l[0].forces.unwrap(), r[0].forces.unwrap());
+    assert_eq!((fl.fy_tr_n.value, fr.fy_tr_n.value), (-36.24, 36.24));
+    let (tl, tr) = (l[0].patches[0].totals.unwrap(), r[0].patches[0].totals.unwrap());
+    assert_eq!((tl.fs_n.value, tr.fs_n.value, tl.mn_nmm.value, tr.mn_nmm.value), (253.6, -253.6, 4605.0, -4605.0));
+    assert_eq!(tl.fn_n, tr.fn_n);
 }
 
 /// Per deck: its module-1 case numbers are those of its `.ref_out`.
@@ -222,17 +227,22 @@ fn every_deck_reads_the_cases_its_output_prints() {
                 "{stem} case {}",
                 c.number
             );
-            // The position the deck gives is the one printed (to its printed digits).
-            let (given, shown) = (c.state.position.unwrap(), p.position.unwrap());
+            // The position the deck gives is the one printed (to its printed digits), where
+            // printed (E >= 1).
+            let (given, Some(shown)) = (c.state.position.unwrap(), p.position) else { continue };
             let near = |x: f64, q: Printed| (x - q.value).abs() <= q.half_unit * (1.0 + 1e-9);
             assert!(near(given.y_mm, shown.y_mm), "{stem} case {}: Y {} vs {:?}", c.number, given.y_mm, shown.y_mm);
             assert!(near(given.yaw_rad, shown.yaw_rad), "{stem} case {}: YAW", c.number);
-            if let Vertical::ZMm(z) = given.vertical {
+            // With the massless rail (F = 3) CONTACT prints the height it found for the
+            // deflected rail (testbank case 36: 2.0855 for the given 2.0884).
+            if let (Vertical::ZMm(z), false) = (given.vertical, c.digits.f == 3) {
                 assert!(near(z, shown.z_mm), "{stem} case {}: Z {z} vs {:?}", c.number, shown.z_mm);
             }
             if let Vertical::FzN(fz) = given.vertical {
+                // CONTACT's total-force iteration stops near FZ (KPEC's approximate normal
+                // problem 0.2 % off).
                 let fz_tr = p.forces.unwrap().fz_tr_n.value;
-                assert!((fz_tr - fz).abs() <= 1e-3 * fz, "{stem} case {}: FZ {fz} vs {fz_tr}", c.number);
+                assert!((fz_tr - fz).abs() <= 5e-3 * fz, "{stem} case {}: FZ {fz} vs {fz_tr}", c.number);
             }
         }
     }
@@ -282,13 +292,17 @@ fn mbench_a22_left_case_2_by_hand_with_what_case_1_left_in_force() {
 }
 
 #[test]
-fn friction_varying_across_the_rail_is_read_and_named_unsupported() {
+fn friction_varying_across_the_rail_or_along_the_track_is_read_and_named_unsupported() {
     let cases = deck("examples/mbench_a22_varfric.inp");
     assert_eq!(cases.len(), 7);
-    let f = cases[6].state.friction.as_ref().unwrap();
+    // Cases 1-5: two sets across the rail (ALPHA in degrees); 6, 7: along the track (SVF [mm]).
+    let f = cases[4].state.friction.as_ref().unwrap();
     assert_eq!((f.law, f.variation, f.sets.len()), (0, FrictionVariation::AcrossRail, 2));
     assert_eq!(f.sets[0].at, Some((-20f64).to_radians()));
     assert_eq!(f.sets[1].values, FrictionValues::Coulomb { fstat: 0.3, fkin: 0.3 });
+    let f = cases[6].state.friction.as_ref().unwrap();
+    assert_eq!((f.variation, f.sets[0].at, f.sets[1].at), (FrictionVariation::AlongTrack, Some(0.0), Some(100.0)));
+    assert_eq!(f.sets[0].values, FrictionValues::Coulomb { fstat: 0.2, fkin: 0.2 });
     for c in &cases {
         let named: Vec<WheelRailFeature> = c.unsupported().iter().map(|u| u.feature).collect();
         assert!(named.contains(&WheelRailFeature::VaryingFriction), "case {}: {named:?}", c.number);
