@@ -1,10 +1,10 @@
 //! CONTACT's module-1 (wheel–rail) cases as typed records (user guide, "Specification of the input
-//! file", Module 1, and Chapter 2; the line order of CONTACT's `wr_input` in `m_wr_input.f90`):
-//! the control words C-P-B-T-N-F-S, V-L-D-C-M-Z-E {M2} and [X-]H-G-I-A-O-W-R, then every line the
-//! digits ask for. A group a case does not read is kept from the previous module-1 case, as
-//! CONTACT keeps its `wtd` ([`WheelRailState`]); the module-3 state is separate
-//! ([`super::deck::State`]). What the project does not carry is named per case by
-//! [`super::features::assess_wheelrail`], never dropped. Values as the deck gives them (N, mm,
+//! file", Module 1, and Chapter 3 "Module 1: wheel/rail contact"; the line order of CONTACT's
+//! `wr_input` in `m_wr_input.f90`): the control words C-P-B-T-N-F-S, V-L-D-C-M-Z-E {M2} and
+//! [X-]H-G-I-A-O-W-R, then every line the digits ask for. A group a case does not read is kept
+//! from the previous module-1 case, as CONTACT keeps its `wtd` ([`WheelRailState`]); the module-3
+//! state is separate ([`super::deck::State`]). What the project does not carry is named per case
+//! by [`super::features::assess_wheelrail`], never dropped. Values as the deck gives them (N, mm,
 //! rad, s; angles written `90d` converted to radians).
 
 use super::deck::{self, CaseKind, CaseReader};
@@ -51,7 +51,7 @@ pub struct WheelRailDigits {
 impl WheelRailDigits {
     /// The wheel the case computes.
     pub fn side(&self) -> Side {
-        if self.c % 2 == 0 {
+        if self.c.is_multiple_of(2) {
             Side::Left
         } else {
             Side::Right

@@ -1,4 +1,4 @@
-//! CONTACT's printed module-1 (wheel–rail) output read case by case (user guide, Section 2.8
+//! CONTACT's printed module-1 (wheel–rail) output read case by case (user guide, Section 3.8
 //! "Global outputs for module 1"; printed by `wr_output` in CONTACT's `m_wr_output.f90`): per
 //! case its heading (wheel side, rail or roller, number of patches), the wheelset position and
 //! velocity, the rail irregularity and massless-rail deflection, the flexible wheel deviations and
