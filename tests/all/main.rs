@@ -11,6 +11,7 @@ mod contact_output;
 mod contact_public;
 mod contact_solver;
 mod contact_to_csv;
+mod contact_wheelrail;
 mod docs;
 mod envelope;
 mod external_and_gate;

@@ -1,11 +1,13 @@
 //! CONTACT's module-3 cases as typed records (user guide, "Specification of the input file",
 //! module 3; the line order of CONTACT's `m_sinput.f90`): the control words P-B-T-N-F-S,
 //! [V-]L-D-C-M-Z-E {M2} and [X-]H-G-I-A-O-W-R, then every input line the digits ask for. A value not
-//! read in a case is kept from the previous case ([`State`]). Module-1 cases are skipped to the
-//! next `MODULE` line and named; module 0 ends the deck.
+//! read in a case is kept from the previous case ([`State`]). Module-1 cases are read by
+//! [`super::wheelrail_deck`] (their own state); module 0 ends the deck.
 
 use super::lexer::{Kind, Lexer, Place};
+use super::wheelrail_deck::{self, WheelRailCase, WheelRailState};
 use super::DeckError;
+use std::collections::BTreeMap;
 
 /// The control digits of a module-3 case.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -119,8 +121,8 @@ pub struct Case3 {
 #[derive(Debug, Clone, PartialEq)]
 pub enum CaseKind {
     Module3(Box<Case3>),
-    /// A module-1 (wheel–rail) case: skipped up to the next MODULE line.
-    Module1,
+    /// A module-1 (wheel–rail) case, read by [`super::wheelrail_deck`].
+    Module1(Box<WheelRailCase>),
 }
 
 /// One case: its number (counted from 1 over the deck, as CONTACT counts), the line it starts at.
@@ -131,72 +133,81 @@ pub struct Case {
     pub kind: CaseKind,
 }
 
-/// Read every case of a deck.
+/// Read every case of a deck: module-3 cases here, module-1 cases by [`super::wheelrail_deck`],
+/// each module with its own state carried from case to case (CONTACT's `gd` and `wtd`; a
+/// module-1 state per result element REID of the MODULE line).
 pub fn parse(file: &str, text: &str) -> Result<Vec<Case>, DeckError> {
     let mut lx = Lexer::new(file, text);
     let mut cases = Vec::new();
     let mut state = State::default();
-    // The module the next case belongs to (None: a MODULE line comes next).
-    let mut module: Option<i64> = None;
+    let mut wheelrail: BTreeMap<i64, WheelRailState> = BTreeMap::new();
+    // The module the next case belongs to, with its result element (None: a MODULE line comes next).
+    let mut module: Option<(i64, i64)> = None;
     while !lx.at_end() {
         let line = lx.line_number();
-        let current = match module {
+        let (current, reid) = match module {
             Some(m) => m,
-            None => {
-                let (v, place) = lx.group("MODULE", &[Kind::Int], (2, Kind::Int))?;
-                match v[0] as i64 {
-                    0 => break,
-                    m @ (1 | 3) => m,
-                    other => {
-                        return Err(DeckError::Value {
-                            file: file.into(),
-                            line: place.line,
-                            column: place.column,
-                            what: "MODULE".into(),
-                            value: other.to_string(),
-                            allowed: "1 (wheel-rail), 3 (basic contact) or 0 (stop)".into(),
-                        })
-                    }
-                }
-            }
+            None => match module_line(&mut lx)? {
+                Some(m) => m,
+                None => break,
+            },
         };
         let number = cases.len() + 1;
-        if current == 1 {
-            // Module 1 is not read: skip to the next MODULE line.
-            while !lx.at_end() && !lx.next_is_module_line() {
-                lx.skip_line();
-            }
-            cases.push(Case { number, line, kind: CaseKind::Module1 });
-            module = None;
-            continue;
-        }
         let mut reader = CaseReader { lx: &mut lx, number, first: number == 1 };
-        let digits = reader.case(&mut state)?;
-        cases.push(Case { number, line, kind: CaseKind::Module3(Box::new(Case3 { digits, state: state.clone() })) });
-        // R = 0, 2: stay in module 3 (the next case has no MODULE line); R = 1, 3: return.
-        module = if digits.r % 2 == 0 { Some(3) } else { None };
+        let (kind, stays) = if current == 1 {
+            let wr = wheelrail_deck::read_case(&mut reader, wheelrail.entry(reid).or_default(), reid)?;
+            let stays = wr.digits.r % 2 == 0;
+            (CaseKind::Module1(Box::new(wr)), stays)
+        } else {
+            let digits = reader.case(&mut state)?;
+            (CaseKind::Module3(Box::new(Case3 { digits, state: state.clone() })), digits.r % 2 == 0)
+        };
+        cases.push(Case { number, line, kind });
+        // R = 0, 2: stay in the module (the next case has no MODULE line); R = 1, 3: return.
+        module = if stays { Some((current, reid)) } else { None };
     }
     Ok(cases)
 }
 
-/// Reads one module-3 case.
-struct CaseReader<'a> {
-    lx: &'a mut Lexer,
-    number: usize,
-    first: bool,
+/// A MODULE line: the module (1 or 3) and its optional result element REID (0 when absent);
+/// None for module 0, the end of the deck.
+fn module_line(lx: &mut Lexer) -> Result<Option<(i64, i64)>, DeckError> {
+    let (v, place) = lx.group("MODULE", &[Kind::Int], (2, Kind::Int))?;
+    let reid = v.get(1).map_or(0, |&r| r as i64);
+    match v[0] as i64 {
+        0 => Ok(None),
+        m @ (1 | 3) => Ok(Some((m, reid))),
+        other => Err(DeckError::Value {
+            file: lx.file().into(),
+            line: place.line,
+            column: place.column,
+            what: "MODULE".into(),
+            value: other.to_string(),
+            allowed: "1 (wheel-rail), 3 (basic contact) or 0 (stop)".into(),
+        }),
+    }
+}
+
+/// Reads one case (module 3 here; module 1 in [`super::wheelrail_deck`] with the same helpers).
+pub(super) struct CaseReader<'a> {
+    pub(super) lx: &'a mut Lexer,
+    /// The case number, counted from 1 over the deck.
+    pub(super) number: usize,
+    /// Whether it is the deck's first case (CONTACT's checks of `ncase = 1`).
+    pub(super) first: bool,
 }
 
 impl CaseReader<'_> {
-    fn reals(&mut self, what: &str, n: usize) -> Result<Vec<f64>, DeckError> {
+    pub(super) fn reals(&mut self, what: &str, n: usize) -> Result<Vec<f64>, DeckError> {
         self.lx.group(what, &vec![Kind::Real; n], (0, Kind::Real)).map(|(v, _)| v)
     }
 
-    fn ints(&mut self, what: &str, n: usize) -> Result<(Vec<i64>, Place), DeckError> {
+    pub(super) fn ints(&mut self, what: &str, n: usize) -> Result<(Vec<i64>, Place), DeckError> {
         let (v, p) = self.lx.group(what, &vec![Kind::Int; n], (0, Kind::Real))?;
         Ok((v.into_iter().map(|x| x as i64).collect(), p))
     }
 
-    fn digit_error(&self, word: &str, digit: &str, value: i64, allowed: &str) -> DeckError {
+    pub(super) fn digit_error(&self, word: &str, digit: &str, value: i64, allowed: &str) -> DeckError {
         DeckError::Digit {
             file: self.lx.file().into(),
             case: self.number,
@@ -209,7 +220,12 @@ impl CaseReader<'_> {
 
     /// A control word's digits, most significant first; `n` digits, a leading extra one allowed
     /// when `extra` (so `n + 1` at most).
-    fn word(&mut self, word: &str, n: usize, optional_int: bool) -> Result<(Vec<u8>, Option<i64>), DeckError> {
+    pub(super) fn word(
+        &mut self,
+        word: &str,
+        n: usize,
+        optional_int: bool,
+    ) -> Result<(Vec<u8>, Option<i64>), DeckError> {
         let (v, place) = self.lx.group(word, &[Kind::Int], (usize::from(optional_int), Kind::Int))?;
         let value = v[0] as i64;
         if !(0..10_i64.pow(n as u32 + 1)).contains(&value) {
@@ -226,7 +242,7 @@ impl CaseReader<'_> {
         Ok((digits, v.get(1).map(|x| *x as i64)))
     }
 
-    fn check(&self, word: &str, digit: &str, value: u8, allowed: &[u8]) -> Result<(), DeckError> {
+    pub(super) fn check(&self, word: &str, digit: &str, value: u8, allowed: &[u8]) -> Result<(), DeckError> {
         if allowed.contains(&value) {
             Ok(())
         } else {
@@ -598,7 +614,7 @@ impl CaseReader<'_> {
     }
 
     /// S = 2, 3: the subsurface points (user guide, "Subsurface-stress input").
-    fn subsurface(&mut self, s: u8) -> Result<(), DeckError> {
+    pub(super) fn subsurface(&mut self, s: u8) -> Result<(), DeckError> {
         self.ints("MATFIL, OUTPUT (subsurface)", 2)?;
         if s < 3 {
             return Ok(());

@@ -1,9 +1,11 @@
 //! The one table of CONTACT's module-3 features and whether the import carries them: a feature
 //! the project's physics does not have is refused naming its control word and value, never
 //! dropped; one that changes no result is accepted with a note. New physics (prescribed forces,
-//! shifts, falling friction, …) is switched on here, in its row.
+//! shifts, falling friction, …) is switched on here, in its row. Module 1 (wheel–rail) has its
+//! own table, [`WHEELRAIL_FEATURES`], read by [`assess_wheelrail`].
 
 use super::deck::{Case3, Potcon};
+use super::wheelrail_deck::{FrictionVariation, ProfileFormat, ProfileSpec, WheelRailCase};
 use crate::physics::material::combine_bodies;
 
 /// One feature of a case.
@@ -295,4 +297,340 @@ pub fn assess(case: &Case3) -> (Vec<String>, Vec<String>) {
         }
     }
     (refused, notes)
+}
+
+/// A feature of CONTACT's module 1 (a row of [`WHEELRAIL_FEATURES`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum WheelRailFeature {
+    RollerRig,
+    TransientContact,
+    CompressibleLayer,
+    ApproximateNormalProblem,
+    PrescribedVerticalForce,
+    PrescribedLongitudinalForce,
+    MasslessRail,
+    VaryingFriction,
+    FrictionLaw,
+    ContactApproach,
+    ConformalInfluence,
+    BilinearInfluence,
+    MaterialModel,
+    DissimilarMaterials,
+    Damping,
+    Temperatures,
+    Subsurface,
+    PreprocessingOnly,
+    SolverSettings,
+    VariableRailProfile,
+    OutOfRoundWheel,
+    ProfileSmoothing,
+    RailDeviation,
+    TrackCurvature,
+    TapeCircle,
+    WheelDeviation,
+    PatchCombination,
+}
+
+/// One row of the module-1 table.
+pub struct WheelRailRow {
+    pub feature: WheelRailFeature,
+    pub name: &'static str,
+    pub control: &'static str,
+    /// Whether the project's physics and its wheel–rail geometry are to carry it (false: a case
+    /// using it is refused; the conversion to scenes does not exist yet).
+    pub supported: bool,
+    pub reason: &'static str,
+    pub used: fn(&WheelRailCase) -> Option<String>,
+}
+
+/// A feature a module-1 case uses: its row and the value the case gives it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FeatureUse {
+    pub feature: WheelRailFeature,
+    pub name: &'static str,
+    pub control: &'static str,
+    pub supported: bool,
+    pub reason: &'static str,
+    pub value: String,
+}
+
+impl std::fmt::Display for FeatureUse {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: {} ({})", self.value, self.name, self.reason)
+    }
+}
+
+fn wr_digit(name: &str, v: u8, used: bool) -> Option<String> {
+    used.then(|| format!("{name} = {v}"))
+}
+
+/// Every module-1 feature a case can use, in the order of the input (user guide, control digits
+/// of module 1, and `wr_input`).
+pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
+    WheelRailRow {
+        feature: WheelRailFeature::RollerRig,
+        name: "a wheel on a roller rig",
+        control: "C",
+        supported: false,
+        reason: "supported: C = 0, 1 (the left or right wheel of a wheelset on a track)",
+        used: |c| wr_digit("C", c.digits.c, c.digits.roller_rig()),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::TransientContact,
+        name: "shifts and transient rolling",
+        control: "T",
+        supported: false,
+        reason: "supported: T = 3 (steady rolling) and T = 0 (frictionless compression); T = 1, 2 need the tractions of the previous case carried on a wheel-rail grid",
+        used: |c| wr_digit("T", c.digits.t, matches!(c.digits.t, 1 | 2)),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::CompressibleLayer,
+        name: "a thin compressible elastic layer",
+        control: "B, FLXZ",
+        supported: false,
+        reason: "supported: B = 0 (the full elastic normal problem)",
+        used: |c| wr_digit("B", c.digits.b, c.digits.b == 1),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::ApproximateNormalProblem,
+        name: "approximate normal problems (KPEC, ANALYN)",
+        control: "B",
+        supported: false,
+        reason: "supported: B = 0 (the full elastic normal problem)",
+        used: |c| wr_digit("B", c.digits.b, matches!(c.digits.b, 5 | 6)),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::PrescribedVerticalForce,
+        name: "the vertical force prescribed instead of the wheelset height",
+        control: "N, FZ",
+        supported: true,
+        reason: "the wheelset height Z_WS is found for FZ on the rail, as CONTACT's total-force iteration does",
+        used: |c| wr_digit("N", c.digits.n, c.digits.n == 1),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::PrescribedLongitudinalForce,
+        name: "the longitudinal force (or moment) prescribed instead of the pitch velocity",
+        control: "F, FX_WS",
+        supported: false,
+        reason: "supported: F = 0 (VPITCH given)",
+        used: |c| wr_digit("F", c.digits.f, matches!(c.digits.f, 1 | 2)),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::MasslessRail,
+        name: "a massless rail deflecting under the contact forces",
+        control: "F, KYRAIL..DYSTEP0",
+        supported: false,
+        reason: "supported: F = 0 (the rail at its given position)",
+        used: |c| wr_digit("F", c.digits.f, c.digits.f == 3),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::VaryingFriction,
+        name: "friction varying across the rail (contact angle) or along the track",
+        control: "V, NVF, ALPHA/SVF",
+        supported: false,
+        reason: "supported: V = 0 (one friction for the whole rail); module 3's friction per grid row (V = 3) is not module 1's per contact angle",
+        used: |c| {
+            let f = c.state.friction.as_ref()?;
+            (f.variation != FrictionVariation::Uniform).then(|| format!("V = {} with NVF = {}", c.digits.v, f.sets.len()))
+        },
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::FrictionLaw,
+        name: "temperature-dependent friction",
+        control: "L",
+        supported: false,
+        reason: "supported: L = 0 (Coulomb) and 2, 3, 4 (friction falling with the slip velocity, with its memory), or L = 1 keeping them",
+        used: |c| c.state.friction.as_ref().filter(|f| f.law == 6).map(|_| "L (in force) = 6".to_string()),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::ContactApproach,
+        name: "contact approaches other than the planar one with the contact locus",
+        control: "D",
+        supported: false,
+        reason: "supported: D = 2 (planar contact, contact locus, weighted reference) or D = 0, 1 keeping it; not 3 (rigid slip on the actual surfaces), 4 (conformal), 5-9 (brute-force and other contact searches)",
+        used: |c| {
+            let m = c.state.discretisation.as_ref()?.method;
+            (m != 2).then(|| format!("D (in force) = {m}"))
+        },
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::ConformalInfluence,
+        name: "influence functions corrected for conformal contact (Blanco)",
+        control: "C3, IF_METH, VARIANT",
+        supported: false,
+        reason: "supported: C3 = 2 (piecewise constant) or 3 (bilinear) half-space influence functions",
+        used: |c| c.state.material.as_ref().filter(|m| m.influence == 4).map(|_| "C3 (in force) = 4".to_string()),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::BilinearInfluence,
+        name: "influence functions of the half-space with bilinear tractions",
+        control: "C3",
+        supported: true,
+        reason: "the exact solver's kernels of the bilinear hat (physics::halfspace::bilinear), as module 3",
+        used: |c| c.state.material.as_ref().filter(|m| m.influence == 3).map(|_| "C3 (in force) = 3".to_string()),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::MaterialModel,
+        name: "material models other than elastic",
+        control: "M",
+        supported: false,
+        reason: "supported: M = 0 (elastic half-spaces); viscoelastic (1), CONTACT's simplified theories (2, 3, 5-7) and interface layers (4) are not",
+        used: |c| wr_digit("M", c.digits.m, c.digits.m != 0),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::DissimilarMaterials,
+        name: "dissimilar materials (normal-tangential coupling)",
+        control: "POISS 1, 2, GG 1, 2",
+        supported: false,
+        reason: "supported: quasi-identical rail and wheel, Kalker's K = 0",
+        used: |c| {
+            let m = c.state.material.as_ref()?;
+            let k = combine_bodies(m.poiss, m.gg_mpa).k;
+            (k != 0.0).then(|| format!("K = {k:e}"))
+        },
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::Damping,
+        name: "force-based proportional damping",
+        control: "M2, CDAMPN..DFTMAX",
+        supported: false,
+        reason: "supported: M2 = 0, 1 without damping",
+        used: |c| c.state.damping.filter(|d| d.iter().any(|&x| x != 0.0)).map(|_| format!("M2 = {}", c.digits.m2)),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::Temperatures,
+        name: "surface temperatures",
+        control: "H",
+        supported: false,
+        reason: "supported: H = 0",
+        used: |c| wr_digit("H", c.digits.h, c.digits.h != 0),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::Subsurface,
+        name: "subsurface stresses",
+        control: "S",
+        supported: true,
+        reason: "S only prints stresses below the surface: the input is read and not computed",
+        used: |c| wr_digit("S", c.digits.s, c.digits.s != 0),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::PreprocessingOnly,
+        name: "preprocessing only (the case is not solved)",
+        control: "R",
+        supported: false,
+        reason: "supported: R = 0, 1 (the case is solved)",
+        used: |c| wr_digit("R", c.digits.r, c.digits.r >= 2),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::SolverSettings,
+        name: "debug output and solver settings",
+        control: "X, G, MAXGS..EPS, NPOT_MAX",
+        supported: true,
+        reason: "read and not carried: this project's solver has its own stopping rule ([contact_solver])",
+        used: |c| wr_digit("G", c.digits.g, c.digits.g != 1 || c.digits.x == 1),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::VariableRailProfile,
+        name: "a variable rail profile (slices file, switches and crossings)",
+        control: "RFNAME",
+        supported: false,
+        reason: "supported: one rail profile for the whole track (SIMPACK .prr, Miniprof .ban or a y-z table)",
+        used: |c| slices(c.state.rail_profile.as_ref()),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::OutOfRoundWheel,
+        name: "an out-of-round wheel (slices file)",
+        control: "WFNAME",
+        supported: false,
+        reason: "supported: one wheel profile around the circumference (SIMPACK .prw, Miniprof .whl or a y-z table)",
+        used: |c| slices(c.state.wheel_profile.as_ref()),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::ProfileSmoothing,
+        name: "profile smoothing",
+        control: "SMOOTH",
+        supported: false,
+        reason: "supported: SMOOTH = 0 (the profiles as given, mirrored and scaled)",
+        used: |c| {
+            let smooth = |p: Option<&ProfileSpec>| p.map_or(0.0, |p| p.smooth);
+            let (r, w) = (smooth(c.state.rail_profile.as_ref()), smooth(c.state.wheel_profile.as_ref()));
+            (r > 0.0 || w > 0.0).then(|| format!("SMOOTH = {r} (rail), {w} (wheel)"))
+        },
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::RailDeviation,
+        name: "rail deviations from the design position and their velocities",
+        control: "Z, DYRAIL..VROLLR",
+        supported: false,
+        reason: "supported: the rail at its design position (DYRAIL..VROLLR = 0)",
+        used: |c| {
+            let r = c.state.rail_deviation;
+            let any = [r.dy_mm, r.dz_mm, r.droll_rad, r.vy_mm_s, r.vz_mm_s, r.vroll_rad_s].iter().any(|&x| x != 0.0);
+            any.then(|| format!("DYRAIL, DZRAIL, DROLLR = {}, {}, {}", r.dy_mm, r.dz_mm, r.droll_rad))
+        },
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::TrackCurvature,
+        name: "track curvature in the creepages",
+        control: "CURV",
+        supported: false,
+        reason: "supported: tangent track (CURV = 0)",
+        used: |c| c.state.track.filter(|t| t.curv_per_mm != 0.0).map(|t| format!("CURV = {}", t.curv_per_mm)),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::TapeCircle,
+        name: "the wheel profile placed by its tape circle",
+        control: "YTAPE",
+        supported: false,
+        reason: "supported: no YTAPE (or |YTAPE| >= 1000 mm): the profile origin at NOMRAD",
+        used: |c| {
+            let y = c.state.wheelset?.ytape_mm?;
+            (y.abs() < 1000.0).then(|| format!("YTAPE = {y}"))
+        },
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::WheelDeviation,
+        name: "flexible wheelset deviations",
+        control: "E, DXWHL..VPITCHW",
+        supported: false,
+        reason: "supported: E = 0-3 (a rigid wheelset)",
+        used: |c| {
+            let w = c.state.wheel_deviation?;
+            w.position.iter().chain(&w.velocity).any(|&x| x != 0.0).then(|| format!("E = {}", c.digits.e))
+        },
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::PatchCombination,
+        name: "patch turning and near misses",
+        control: "D_TURN, G_MISS",
+        supported: true,
+        reason: "the thresholds of the patch search, carried as given",
+        used: |c| {
+            let d = c.state.discretisation.as_ref()?;
+            (d.d_turn_given_mm.is_some() || d.g_miss_mm >= 0.0)
+                .then(|| format!("D_TURN = {}, G_MISS = {}", d.d_turn_mm(), d.g_miss_mm))
+        },
+    },
+];
+
+fn slices(p: Option<&ProfileSpec>) -> Option<String> {
+    let p = p?;
+    (p.format() == ProfileFormat::Slices).then(|| format!("{:?}", p.file))
+}
+
+/// Every row of [`WHEELRAIL_FEATURES`] a module-1 case uses, with its value.
+pub fn assess_wheelrail(case: &WheelRailCase) -> Vec<FeatureUse> {
+    WHEELRAIL_FEATURES
+        .iter()
+        .filter_map(|row| {
+            (row.used)(case).map(|value| FeatureUse {
+                feature: row.feature,
+                name: row.name,
+                control: row.control,
+                supported: row.supported,
+                reason: row.reason,
+                value,
+            })
+        })
+        .collect()
 }

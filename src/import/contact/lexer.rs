@@ -53,23 +53,45 @@ pub struct Lexer {
     file: String,
     lines: Vec<Line>,
     next: usize,
+    /// Where each value of the last group came from (a quoted string first).
+    places: Vec<Place>,
 }
 
-/// Split a line into tokens (blanks and commas separate), comments cut off.
+/// Split a line into tokens (blanks, commas and `=` separate), comments cut off; a quoted string
+/// (`'My Documents\CONTACT'`) is one token, blanks and `%` inside it kept (CONTACT's
+/// `splitlinetowords`).
 fn tokens(text: &str) -> Vec<Token> {
-    let body = text.split(['%', '!']).next().unwrap_or("");
     let mut out = Vec::new();
     let mut start: Option<usize> = None;
-    for (k, c) in body.char_indices().chain(std::iter::once((body.len(), ' '))) {
-        let sep = c.is_whitespace() || c == ',';
+    let mut quoted = false;
+    let push = |s: usize, k: usize, out: &mut Vec<Token>| {
+        out.push(Token { text: text[s..k].to_string(), column: text[..s].chars().count() + 1 });
+    };
+    for (k, c) in text.char_indices() {
+        if quoted {
+            quoted = c != '\'';
+            continue;
+        }
+        let comment = c == '%' || c == '!';
+        let sep = comment || c.is_whitespace() || c == ',' || c == '=';
         match (sep, start) {
             (true, Some(s)) => {
-                out.push(Token { text: body[s..k].to_string(), column: body[..s].chars().count() + 1 });
+                push(s, k, &mut out);
                 start = None;
             }
-            (false, None) => start = Some(k),
+            (false, None) => {
+                start = Some(k);
+                quoted = c == '\'';
+            }
+            (false, Some(_)) => quoted = c == '\'',
             _ => {}
         }
+        if comment {
+            return out;
+        }
+    }
+    if let Some(s) = start {
+        push(s, text.len(), &mut out);
     }
     out
 }
@@ -109,7 +131,13 @@ impl Lexer {
             .map(|(k, l)| Line { number: k + 1, tokens: tokens(l) })
             .filter(|l| !l.tokens.is_empty())
             .collect();
-        Lexer { file: file.to_string(), lines, next: 0 }
+        Lexer { file: file.to_string(), lines, next: 0, places: Vec::new() }
+    }
+
+    /// Where value `k` of the last group came from (a [`Lexer::quoted_group`]'s name is value 0).
+    pub fn place(&self, k: usize) -> Place {
+        let fallback = Place { line: self.line_number(), column: 1 };
+        self.places.get(k).or(self.places.last()).copied().unwrap_or(fallback)
     }
 
     /// The input file's name (for messages).
@@ -127,20 +155,6 @@ impl Lexer {
         self.lines.get(self.next).or(self.lines.last()).map_or(0, |l| l.number)
     }
 
-    /// Whether the next line starts with a module number (a whole number) followed by the word
-    /// MODULE, as every CONTACT deck writes it (used to find the end of a skipped module-1 case).
-    pub fn next_is_module_line(&self) -> bool {
-        self.lines.get(self.next).is_some_and(|l| {
-            l.tokens[0].text.parse::<i64>().is_ok()
-                && l.tokens.get(1).is_some_and(|t| t.text.eq_ignore_ascii_case("module"))
-        })
-    }
-
-    /// Skip one line.
-    pub fn skip_line(&mut self) {
-        self.next += 1;
-    }
-
     /// Read a group: `mandatory` values (continuing over newlines), then up to `optional` more
     /// values of `optional_kind` on the same line; the rest of the last line is ignored.
     pub fn group(
@@ -149,10 +163,61 @@ impl Lexer {
         mandatory: &[Kind],
         optional: (usize, Kind),
     ) -> Result<(Vec<f64>, Place), DeckError> {
-        let mut out = Vec::with_capacity(mandatory.len() + optional.0);
+        self.group_with(what, mandatory, &vec![optional.1; optional.0])
+    }
+
+    /// Read a group as CONTACT's `readline` does: `mandatory` values (continuing over newlines),
+    /// then the `optional` values, one of each kind in turn, found on the same line (the first
+    /// that is missing or not of its kind ends the group); the rest of the last line is ignored.
+    pub fn group_with(
+        &mut self,
+        what: &str,
+        mandatory: &[Kind],
+        optional: &[Kind],
+    ) -> Result<(Vec<f64>, Place), DeckError> {
+        self.values_from(what, 0, mandatory, optional)
+    }
+
+    /// A group whose first value is a quoted string (a file name: `'MBench_UIC60_v3.prr'`), then
+    /// `mandatory` and `optional` values as [`Lexer::group_with`] (`readline` type `s` first).
+    pub fn quoted_group(
+        &mut self,
+        what: &str,
+        mandatory: &[Kind],
+        optional: &[Kind],
+    ) -> Result<(String, Vec<f64>, Place), DeckError> {
+        let line = self.lines.get(self.next).ok_or_else(|| self.end_of_file(what))?;
+        let tok = &line.tokens[0];
+        let place = Place { line: line.number, column: tok.column };
+        let name = tok.text.strip_prefix('\'').and_then(|t| t.strip_suffix('\'')).filter(|_| tok.text.len() >= 2);
+        let Some(name) = name.map(str::to_string) else {
+            return Err(DeckError::Value {
+                file: self.file.clone(),
+                line: place.line,
+                column: place.column,
+                what: what.to_string(),
+                value: crate::error::excerpt(&tok.text),
+                allowed: "a file name in single quotes".into(),
+            });
+        };
+        let (v, _) = self.values_from(what, 1, mandatory, optional)?;
+        self.places.insert(0, place);
+        Ok((name, v, place))
+    }
+
+    /// The values of a group from token `start` of the next line on.
+    fn values_from(
+        &mut self,
+        what: &str,
+        start: usize,
+        mandatory: &[Kind],
+        optional: &[Kind],
+    ) -> Result<(Vec<f64>, Place), DeckError> {
+        let mut out = Vec::with_capacity(mandatory.len() + optional.len());
+        self.places.clear();
         let mut first = None;
-        let mut last_line = None;
-        let mut pos = 0;
+        let mut last_line = (start > 0).then_some(self.next);
+        let mut pos = start;
         for &kind in mandatory {
             loop {
                 let line = self.lines.get(self.next).ok_or_else(|| self.end_of_file(what))?;
@@ -160,6 +225,7 @@ impl Lexer {
                     let place = Place { line: line.number, column: tok.column };
                     let v = value(kind, &tok.text).ok_or_else(|| self.bad(place, what, &tok.text, kind))?;
                     first.get_or_insert(place);
+                    self.places.push(place);
                     out.push(v);
                     pos += 1;
                     last_line = Some(self.next);
@@ -172,9 +238,12 @@ impl Lexer {
         }
         if let Some(k) = last_line {
             let line = &self.lines[k];
-            for tok in line.tokens.iter().skip(pos).take(optional.0) {
-                match value(optional.1, &tok.text) {
-                    Some(v) => out.push(v),
+            for (tok, &kind) in line.tokens.iter().skip(pos).zip(optional) {
+                match value(kind, &tok.text) {
+                    Some(v) => {
+                        out.push(v);
+                        self.places.push(Place { line: line.number, column: tok.column });
+                    }
                     None => break,
                 }
             }
@@ -237,6 +306,21 @@ mod tests {
         assert_eq!(e.to_string(), "t.inp:2:7: MX, MY: \"x2\" is not allowed: a whole number");
         let mut lx = Lexer::new("t.inp", " 3.0\n");
         assert!(lx.group("MODULE", &[Kind::Int], (0, Kind::Real)).is_err());
+    }
+
+    #[test]
+    fn quoted_file_names_keep_their_blanks_and_percent_signs() {
+        let t: Vec<String> = tokens(" 'My Docs/a%b.prr'  0  1.0, 0.0 % RFNAME").into_iter().map(|t| t.text).collect();
+        assert_eq!(t, ["'My Docs/a%b.prr'", "0", "1.0", "0.0"]);
+        let mut lx = Lexer::new("t.inp", " 'r.prr' 0 1.0 0.0 1 RFNAME\n 'w.prw' 0\n 2.0 0.0\n");
+        let (name, v, p) =
+            lx.quoted_group("RFNAME", &[Kind::Int, Kind::Real, Kind::Real], &[Kind::Int, Kind::Int]).unwrap();
+        assert_eq!((name.as_str(), v, p.column), ("r.prr", vec![0.0, 1.0, 0.0, 1.0], 2));
+        let (name, v, _) = lx.quoted_group("WFNAME", &[Kind::Int, Kind::Real, Kind::Real], &[Kind::Int]).unwrap();
+        assert_eq!((name.as_str(), v), ("w.prw", vec![0.0, 2.0, 0.0]));
+        let mut lx = Lexer::new("t.inp", " r.prr 0 1.0 0.0\n");
+        let e = lx.quoted_group("RFNAME", &[Kind::Int], &[]).unwrap_err();
+        assert_eq!(e.to_string(), "t.inp:1:2: RFNAME: \"r.prr\" is not allowed: a file name in single quotes");
     }
 
     #[test]

@@ -8,6 +8,7 @@ pub mod deck;
 pub mod features;
 pub mod lexer;
 pub mod scene;
+pub mod wheelrail_deck;
 
 use crate::error::InputError;
 use std::path::Path;

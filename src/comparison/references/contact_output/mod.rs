@@ -1,13 +1,14 @@
 //! CONTACT's printed output (`.out`, `.ref_out`) read case by case (issue 32 item 2): the totals
 //! it prints for each module-3 case, each value with the resolution of its printed digits, in
 //! this project's sign convention (reference/README.md, "Signs"; converted in [`totals`] only).
-//! Module-1 (wheel–rail) cases keep their case numbers and are not read. The one reader of
+//! Module-1 (wheel–rail) cases keep their case numbers and are not read here: [`wheelrail`] reads them. The one reader of
 //! CONTACT's printed totals: `scripts/contact_to_csv.py` reads the same text and
 //! `tests/all/contact_output.rs` checks that both give the same numbers on every shipped file.
 
 pub mod printed;
 pub mod reference_csv;
 pub mod scan;
+pub mod wheelrail;
 
 use crate::error::Error;
 use printed::Printed;

@@ -105,7 +105,7 @@ fn is_module1_marker(line: &str) -> bool {
 }
 
 /// The labels of a line that holds no number, two-word labels joined (`SHIFT X`, `CREEP Y`).
-fn labels(line: &str) -> Option<Vec<String>> {
+pub(super) fn labels(line: &str) -> Option<Vec<String>> {
     let words: Vec<&str> = line.split_whitespace().collect();
     if words.is_empty() || words.iter().any(|w| Printed::parse(w).is_some()) {
         return None;

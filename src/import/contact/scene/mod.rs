@@ -106,7 +106,7 @@ pub fn import_text(file: &str, stem: &str, text: &str) -> Result<Imported, Input
 fn status(c: &Case) -> CaseStatus {
     let base = CaseStatus { case: c.number, line: c.line, module: 3, scene: None, refused: vec![], notes: vec![] };
     match &c.kind {
-        CaseKind::Module1 => CaseStatus {
+        CaseKind::Module1(_) => CaseStatus {
             module: 1,
             refused: vec![
                 "MODULE = 1: wheel-rail contact (module 1) is not supported; module 3 cases are imported".into()
@@ -123,7 +123,7 @@ fn status(c: &Case) -> CaseStatus {
 fn case3(cases: &[Case], k: usize) -> &Case3 {
     match &cases[k].kind {
         CaseKind::Module3(c) => c,
-        CaseKind::Module1 => unreachable!("histories hold module-3 cases only"),
+        CaseKind::Module1(_) => unreachable!("histories hold module-3 cases only"),
     }
 }
 
