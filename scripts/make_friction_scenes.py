@@ -127,6 +127,8 @@ def main():
     for c in cases:
         rows = rows_of(c["name"])
         text = steady(c, rows) if c["kind"] == "steady" else transient(c, rows)
+        # The report's falling-friction section takes the scenes of this group (docs/scene-format.md).
+        text += '\n[report]\ngroup = "falling_friction"\n'
         with open(os.path.join(OUT, c["name"] + ".toml"), "w") as f:
             f.write(text)
         print(c["name"])

@@ -209,8 +209,8 @@ pub struct RunOutputs<'a> {
 }
 
 /// What [`run_with`] made: the result folder, the report (none for a shard), the report's
-/// findings with the rules of the run's files that loosened a default gate, and the histories
-/// flagged as oscillating.
+/// findings with the rules of the run's files that loosened a default gate, the histories
+/// flagged as oscillating, and what the result folder holds from other runs (left out).
 #[derive(Debug, Clone)]
 pub struct RunOutcome {
     pub results_dir: PathBuf,
@@ -219,10 +219,15 @@ pub struct RunOutcome {
     pub findings: Vec<Finding>,
     pub loosened: Vec<Loosening>,
     pub oscillating: Vec<String>,
+    /// The scene folders of the result folder this run did not write: left out of its report
+    /// and results.csv (named once on the console).
+    pub ignored_scenes: Vec<String>,
+    /// The fit records of `<results>/fits/` this run did not write: left out of its report.
+    pub ignored_fits: Vec<String>,
 }
 
-/// `creepbench run`: the suites → result folders, then the report from those results; ends with
-/// the gates' verdict and the report's path.
+/// `creepbench run`: the suites → result folders, then the report from this run's results;
+/// the console ends with the gates' verdict and the report's path, after any warnings.
 pub fn run(
     suite_dir: &[PathBuf],
     reference: &Path,
@@ -236,15 +241,17 @@ pub fn run(
         eprintln!("shard done; build the report with `creepbench merge {} ...`", outcome.results_dir.display());
         return Ok(());
     };
-    println!("gates: {}", Verdict::of(&outcome.findings));
     for line in &outcome.oscillating {
         println!("{line}");
     }
+    println!("gates: {}", Verdict::of(&outcome.findings));
     println!("report: {}", md.display());
     Ok(())
 }
 
 /// [`run`] without printing its outcome; `runner` also gives the models run in this process.
+/// The report, its verdict and results.csv cover exactly the scenes (and fits) this run wrote:
+/// the result folder's other scene folders and fit records are named once and left out.
 pub fn run_with(
     suite_dir: &[PathBuf],
     reference: &Path,
@@ -273,22 +280,32 @@ pub fn run_with(
     let _lock = lock::lock_folder(results_dir, lock::DEFAULT_LOCK_WAIT)?;
     results::write_scenes(results_dir, &scenes, true)?;
     eprintln!("results in {}", results_dir.display());
+    let mut ran: Vec<String> = scenes.iter().map(|s| s.name.clone()).collect();
+    ran.sort();
     let mut outcome = RunOutcome {
         results_dir: results_dir.to_path_buf(),
         report: None,
         findings: Vec::new(),
         loosened: Vec::new(),
         oscillating: Vec::new(),
+        ignored_scenes: other_runs_scenes(results_dir, &ran, shard.is_some()),
+        ignored_fits: Vec::new(),
     };
     if shard.is_some() {
         return Ok(outcome);
     }
-    if let Some(specs) = fit_specs {
-        run_fits(&specs, &refs, results_dir, (&scenes, &suite::scene_files(suite_dir, None)?))?;
-    }
-    let stored = read_results(&[results_dir.to_path_buf()])?;
+    let fitted = match fit_specs {
+        Some(specs) => {
+            run_fits(&specs, &refs, results_dir, (&scenes, &suite::scene_files(suite_dir, None)?))?;
+            specs.into_iter().map(|s| s.name).collect()
+        }
+        None => Vec::new(),
+    };
+    outcome.ignored_fits = other_runs_fits(results_dir, &fitted);
+    // This run's scenes read back as stored (the numbers `merge` would show), and only those.
+    let stored = ran.iter().map(|name| results::read_scene(results_dir, name)).collect::<Result<Vec<_>, _>>()?;
+    let records = read_run_fits(results_dir, &fitted)?;
     let rules = file_rules(&[], suite_dir)?;
-    let records = read_fit_records(&[results_dir.to_path_buf()])?;
     let (md, findings, loosened) =
         report_with_findings(&stored, &refs, report_dir, (Some(golden), &rules), &records, Vec::new())?;
     outcome.report = Some(md);
@@ -296,6 +313,54 @@ pub fn run_with(
     outcome.loosened = loosened;
     outcome.oscillating = console::oscillating(&stored, false);
     Ok(outcome)
+}
+
+/// The records of the fits `fitted` this run stored in `results_dir`, sorted by name.
+fn read_run_fits(results_dir: &Path, fitted: &[String]) -> Result<Vec<FitRecord>, Error> {
+    let mut records = fitted
+        .iter()
+        .map(|name| read_fit_record(&fit_record_path(results_dir, name)))
+        .collect::<Result<Vec<_>, _>>()?;
+    records.sort_by(|a, b| a.name.cmp(&b.name));
+    Ok(records)
+}
+
+/// The scene folders of `results_dir` that are not among `ran` (written by other runs), named
+/// once on the console: left out of this run's report, or (`shard`) read by `merge` of the folder.
+fn other_runs_scenes(results_dir: &Path, ran: &[String], shard: bool) -> Vec<String> {
+    let others: Vec<String> = results::scene_names(results_dir).into_iter().filter(|n| !ran.contains(n)).collect();
+    if !others.is_empty() {
+        let what = match shard {
+            true => "; `merge` reads every scene folder of the folders it is given",
+            false => ", left out of this run's report and results.csv",
+        };
+        eprintln!(
+            "warning: {} holds {} scene folder(s) this run did not write{what}: {}",
+            results_dir.display(),
+            others.len(),
+            others.join(", ")
+        );
+    }
+    others
+}
+
+/// The fit records of `<results_dir>/fits/` other than this run's `fitted`, named once on the
+/// console and left out of this run's report.
+fn other_runs_fits(results_dir: &Path, fitted: &[String]) -> Vec<String> {
+    let others: Vec<String> = fit_record_paths(results_dir)
+        .iter()
+        .filter_map(|p| p.file_stem().map(|s| s.to_string_lossy().to_string()))
+        .filter(|n| !fitted.contains(n))
+        .collect();
+    if !others.is_empty() {
+        eprintln!(
+            "warning: {} holds {} fit record(s) this run did not write, left out of this run's report: {}",
+            results_dir.join(FITS_SUBDIR).display(),
+            others.len(),
+            others.join(", ")
+        );
+    }
+    others
 }
 
 /// The folders a report writes beside validation.md.
@@ -363,7 +428,7 @@ fn run_fits(
         record.suites = fit::across_suites(&outcome, stored, sources)?;
         let json = serde_json::to_string_pretty(&record)
             .map_err(|e| Error::Fit { fit: spec.name.clone(), source: e.into() })?;
-        write_whole(&out.join(format!("{}.json", spec.name)), &json)?;
+        write_whole(&fit_record_path(results_dir, &spec.name), &json)?;
         write_whole(&out.join(format!("{}.toml", spec.name)), &fit::render(&outcome)?)?;
         eprintln!("fit {}: {} evaluations in {:.1} s", spec.name, outcome.evaluations, start.elapsed().as_secs_f64());
     }
@@ -374,26 +439,41 @@ fn run_fits(
 fn read_fit_records(dirs: &[PathBuf]) -> Result<Vec<FitRecord>, Error> {
     let mut records = Vec::new();
     for d in dirs {
-        let Ok(entries) = std::fs::read_dir(d.join(FITS_SUBDIR)) else { continue };
-        let mut paths: Vec<PathBuf> = entries
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.extension().is_some_and(|x| x == "json"))
-            .collect();
-        paths.sort();
-        for p in paths {
-            let text = crate::safety::read::read_text(&p, crate::safety::read::SCENE_LIMIT_BYTES, "fit record")?;
-            let r: FitRecord = serde_json::from_str(&text).map_err(|e| {
-                InputError::new(
-                    p.display().to_string(),
-                    "not a fit record",
-                    format!("JSON written by `creepbench run` ({e})"),
-                )
-            })?;
-            records.push(r);
+        for p in fit_record_paths(d) {
+            records.push(read_fit_record(&p)?);
         }
     }
     records.sort_by(|a, b| a.name.cmp(&b.name));
     Ok(records)
+}
+
+/// The fit records of a result folder (`<dir>/fits/*.json`; none without that folder), sorted.
+fn fit_record_paths(dir: &Path) -> Vec<PathBuf> {
+    let Ok(entries) = std::fs::read_dir(dir.join(FITS_SUBDIR)) else { return Vec::new() };
+    let mut paths: Vec<PathBuf> = entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    paths.sort();
+    paths
+}
+
+/// Where `run` stores the outcome of the fit `name` in the result folder `dir`.
+fn fit_record_path(dir: &Path, name: &str) -> PathBuf {
+    dir.join(FITS_SUBDIR).join(format!("{name}.json"))
+}
+
+/// One fit record, as `run` wrote it.
+fn read_fit_record(path: &Path) -> Result<FitRecord, Error> {
+    let text = crate::safety::read::read_text(path, crate::safety::read::SCENE_LIMIT_BYTES, "fit record")?;
+    let record = serde_json::from_str(&text).map_err(|e| {
+        InputError::new(
+            path.display().to_string(),
+            "not a fit record",
+            format!("JSON written by `creepbench run` ({e})"),
+        )
+    })?;
+    Ok(record)
 }
 
 /// `creepbench merge`: one report from the result folders of several shards, judged by the same

@@ -127,11 +127,13 @@ enum Command {
         golden: PathBuf,
     },
     /// Run the suites (default: the nine shipped suites of scenes/), then the fits of fits/, and
-    /// write the report (out/report/validation.md; `--report reports` regenerates the committed sample).
+    /// write the report of this run's scenes (out/report/validation.md; `--report reports`
+    /// regenerates the committed sample).
     Run {
         #[command(flatten)]
         suite: SuiteArgs,
-        /// Where the per-scene results go.
+        /// Where the per-scene results go (other runs' scene folders there are kept, left out of
+        /// this run's report and named).
         #[arg(long, default_value = "out/results")]
         results: PathBuf,
         /// Where the report goes (validation.md, results.csv, figures/, tables/).

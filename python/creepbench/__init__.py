@@ -374,7 +374,8 @@ def run(
 ) -> RunReport:
     """Run suites as ``creepbench run --suite ... --results ... --report ...`` does: each
     scene's result folder in ``results``, then the report (validation.md, figures, tables,
-    results.csv) in ``report`` from those results, gated against ``golden`` and the references
+    results.csv) in ``report`` from this run's results alone (another run's scene folders in
+    ``results`` are left out and named on standard error), gated against ``golden`` and the references
     with each suite's tolerance file; the fit files of the folder ``fits`` run too when given.
     ``models`` as in :func:`check`: an in-process model's history is written, compared and
     reported as an external model's. Returns a :class:`RunReport`."""

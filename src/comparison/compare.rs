@@ -64,8 +64,12 @@ pub fn is_no_baseline(f: &Finding) -> bool {
     f.diff.is_nan() && f.note == no_baseline_note(f.against)
 }
 
+/// The keys of scene.json that say where a scene is shown, not what it computes: a baseline's
+/// scene.json is compared without them (a scene moved to another report group is no drift).
+const NOT_A_RESULT: [&str; 1] = ["report_group"];
+
 /// What a baseline holds that this result set does not: solvers, metric values, and a scene.json
-/// that differs (a changed scene is a changed baseline).
+/// that differs (a changed scene is a changed baseline; [`NOT_A_RESULT`] aside).
 fn expected_sets(ours: &StoredScene, theirs: &StoredScene, against: Against) -> Vec<Finding> {
     let mut out = Vec::new();
     let scene_ctx = Ctx { scene: &ours.name, solver: "-", against, rules: tolerances::defaults() };
@@ -83,8 +87,11 @@ fn expected_sets(ours: &StoredScene, theirs: &StoredScene, against: Against) -> 
     }
     let (a, b) = (serde_json::to_value(&ours.scene), serde_json::to_value(&theirs.scene));
     if let (Ok(serde_json::Value::Object(a)), Ok(serde_json::Value::Object(b))) = (a, b) {
-        let differ: Vec<&String> =
-            a.keys().chain(b.keys().filter(|k| !a.contains_key(*k))).filter(|k| a.get(*k) != b.get(*k)).collect();
+        let differ: Vec<&String> = a
+            .keys()
+            .chain(b.keys().filter(|k| !a.contains_key(*k)))
+            .filter(|k| !NOT_A_RESULT.contains(&k.as_str()) && a.get(*k) != b.get(*k))
+            .collect();
         if !differ.is_empty() {
             out.push(scene_ctx.unmatched("scene.json", format!("resolved scene differs in {differ:?}")));
         }

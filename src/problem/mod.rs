@@ -245,6 +245,8 @@ pub struct Problem {
     pub studies: Vec<crate::scene::study::StudyPoint>,
     /// The CONTACT deck and cases the scene was imported from (the scene's `[origin]`).
     pub origin: Option<crate::scene::Origin>,
+    /// Where the report shows the scene (the scene's `[report] group`).
+    pub report_group: crate::scene::report::ReportGroup,
     pub warnings: Vec<String>,
 }
 
@@ -314,6 +316,7 @@ impl Problem {
             scene_dir: scene.dir.clone(),
             studies: scene.studies.clone(),
             origin: scene.origin.clone(),
+            report_group: scene.report_group,
             warnings: physics.warnings,
         }
     }

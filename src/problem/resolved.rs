@@ -4,6 +4,7 @@
 
 use super::params::ParamEntries;
 use super::{LoadingKind, Problem, Sample};
+use crate::scene::report::ReportGroup;
 use crate::scene::{ContactSolverOptions, InitKind, ModelOptions, NormalOptions};
 use serde::{Deserialize, Serialize};
 
@@ -94,6 +95,10 @@ pub struct ResolvedScene {
     /// scene of this project's own).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub origin: Option<crate::scene::Origin>,
+    /// Where the report shows the scene (`[report] group`; absent: `other`). Not a result: a
+    /// baseline's scene.json is compared without it.
+    #[serde(default, skip_serializing_if = "ReportGroup::is_default")]
+    pub report_group: ReportGroup,
     /// The loading at every row (step 0 = the initial state at t = 0, when the scene has one).
     pub history: Vec<Sample>,
 }
@@ -173,6 +178,7 @@ impl ResolvedScene {
             suite: p.scene_dir.file_name().map(|n| n.to_string_lossy().to_string()).unwrap_or_default(),
             studies: p.studies.clone(),
             origin: p.origin.clone(),
+            report_group: p.report_group,
             history: p.loading.initial.iter().chain(p.loading.samples.iter()).copied().collect(),
         }
     }

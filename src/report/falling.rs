@@ -1,10 +1,10 @@
 //! The report's "Falling friction" section (issue 33 item 5): the cases of CONTACT's
 //! falling-friction set (reference/contact_friction) run by every model (`scenes/friction/`,
-//! scene `fr_<case>`, CONTACT's case of the same name): the traction curves f(creepage) per law with
-//! CONTACT's points, the peak of each steady curve (the creepage at the maximum and the maximum)
-//! per model against CONTACT's, the worst |Δf| per case, the transient histories, and the
-//! stability suite's falling-friction cases (`stab_fr_*`). Reads stored results and reference
-//! data only.
+//! scene `fr_<case>`, CONTACT's case of the same name, declared `[report] group =
+//! "falling_friction"`): the traction curves f(creepage) per law with CONTACT's points, the peak
+//! of each steady curve (the creepage at the maximum and the maximum) per model against CONTACT's,
+//! the worst |Δf| per case, the transient histories, and the stability suite's falling-friction
+//! cases (group `stability_falling`). Reads stored results and reference data only.
 
 use crate::comparison::references::References;
 use crate::history::abscissa::{abscissa, Drawn};
@@ -13,20 +13,21 @@ use crate::metrics::oscillation_index::{oscillation_index, own_oscillation};
 use crate::problem::LoadingKind;
 use crate::report::plot::{line_chart, titles, Axis, Series};
 use crate::report::section::Section;
+use crate::scene::report::ReportGroup;
 use crate::suite::results::StoredScene;
 use std::fmt::Write;
 
-/// Prefix of the section's scenes (the falling-friction cases run by every model).
-pub const SCENES: &str = "fr_";
-/// Prefix of the stability suite's falling-friction scenes.
-pub const STABILITY: &str = "stab_fr_";
+/// The declared group of the section's scenes (the falling-friction cases run by every model).
+const CASES: ReportGroup = ReportGroup::FallingFriction;
+/// The declared group of the stability table's falling-friction cases (also in this section).
+const STABILITY: ReportGroup = ReportGroup::StabilityFalling;
 
 /// The section's id.
 pub const ID: &str = "falling_friction";
 
 /// Whether any stored scene is a falling-friction case or a falling-friction stability case.
 pub fn applies(scenes: &[StoredScene]) -> bool {
-    scenes.iter().any(|s| s.name.starts_with(SCENES) || s.name.starts_with(STABILITY))
+    scenes.iter().any(|s| [CASES, STABILITY].contains(&s.scene.report_group))
 }
 
 /// CONTACT's reference case of a falling-friction scene: the scene's own name.
@@ -64,7 +65,7 @@ const INTRO: &str = "CONTACT's cases with friction falling with the local slip v
 
 /// The section, if any falling-friction scene is stored.
 pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
-    let cases: Vec<&StoredScene> = scenes.iter().filter(|s| s.name.starts_with(SCENES)).collect();
+    let cases: Vec<&StoredScene> = scenes.iter().filter(|s| s.scene.report_group == CASES).collect();
     let mut body = format!("{INTRO}\n\n");
     let mut figures = Vec::new();
     let mut pictures = String::new();
@@ -135,7 +136,7 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
 /// oscillation index of |f|, whether the history oscillates on its own, and the last |f|.
 fn stability_table(scenes: &[StoredScene]) -> String {
     let mut s = String::from("\n**Stability on the falling branch** (`scenes/stability/stab_fr_*`: a step into the falling branch with and without memory, a sine across the peak, a speed ramp; courant 1 and 0.5). *oscillates*: |f| turns at 6 or more consecutive steps, more than the loading (also printed by `check` and `run`). The UBA refuses `stab_fr_step_nomem_c05` (κ = 1.76 ≥ 1), which runs FASTSIM only.\n\n| scene | solver | steps | oscillation index of \\|f\\| | oscillates | last \\|f\\| |\n|---|---|---|---|---|---|\n");
-    for sc in scenes.iter().filter(|s| s.name.starts_with(STABILITY)) {
+    for sc in scenes.iter().filter(|s| s.scene.report_group == STABILITY) {
         for (solver, h) in &sc.histories {
             let f = resultant(h);
             let first = h.rows.iter().position(|r| r.sample.step >= 1).unwrap_or(0);

@@ -5,52 +5,39 @@ use crate::history::abscissa::{abscissa, Drawn};
 use crate::history::History;
 use crate::problem::LoadingKind;
 use crate::report::plot::{line_chart, titles::of as title_of, Axis, Series};
-use crate::report::sections;
 use crate::report::{Report, ReportInput};
+use crate::scene::report::ReportGroup;
 use crate::suite::results::StoredScene;
 use std::fmt::Write;
 
-/// A scene group of the report: its title, which scenes it holds, and how they are drawn.
-struct Group {
+/// A figure group of the report: its title, the declared scene groups it draws (`[report]
+/// group`, [`ReportGroup`]) and how it draws them.
+struct FigureGroup {
     title: &'static str,
-    member: fn(&str) -> bool,
+    holds: &'static [ReportGroup],
     /// Whether its sine scenes draw their time history beside their loop (where the delay is the
     /// subject); every other scene draws its history or sweep anyway.
     sine_histories: bool,
-    /// Whether it is drawn at all (a group whose scenes only feed the report's sections is not).
-    drawn: bool,
 }
 
-const fn group(title: &'static str, member: fn(&str) -> bool) -> Group {
-    Group { title, member, sine_histories: false, drawn: true }
+const fn figures(title: &'static str, holds: &'static [ReportGroup]) -> FigureGroup {
+    FigureGroup { title, holds, sine_histories: false }
 }
 
-/// Scene groups of the report; a scene belongs to the first that holds it, the last holds any.
-const GROUPS: &[Group] = &[
-    group("Step response: friction", |n| n.starts_with("step_mu")),
-    group("Step response: load, shape and creepage", |n| n.starts_with("step_") && !n.starts_with("step_mu")),
-    Group {
-        sine_histories: true,
-        ..group("Sine: frequency at μ = 1", |n| n.starts_with("sine_f") && n.ends_with("_mu10"))
-    },
-    group("Sine: frequency at μ = 0.6", |n| n.starts_with("sine_f") && n.ends_with("_mu06")),
-    group("Sine: friction at 10 Hz", |n| n.starts_with("sine_f10_mu0")),
-    group("Sine: normal load", |n| n.starts_with("sine_f") && n.contains("_fn")),
-    group("Sine: mean creepage C0", |n| n.starts_with("sine_f10_c0_")),
-    Group {
-        sine_histories: true,
-        ..group("Grid refinement", |n| n.starts_with("sine") && (n.ends_with("_g44") || n.ends_with("_g88")))
-    },
-    group("Steady sweeps", |n| n.starts_with("steady_")),
-    group("Stability and extreme cases", |n| n.starts_with(sections::STABILITY_SCENES)),
-    Group { drawn: false, ..group("Studies behind the report's sections", |n| n.starts_with("report_")) },
-    group("Other scenes", |_| true),
+/// The report's figure groups, in order; a scene is drawn in the one that holds its declared group.
+const FIGURE_GROUPS: &[FigureGroup] = &[
+    figures("Step response: friction", &[ReportGroup::StepFriction]),
+    figures("Step response: load, shape and creepage", &[ReportGroup::StepLoad]),
+    FigureGroup { sine_histories: true, ..figures("Sine: frequency at μ = 1", &[ReportGroup::SineFrequencyMu1]) },
+    figures("Sine: frequency at μ = 0.6", &[ReportGroup::SineFrequencyMu06]),
+    figures("Sine: friction at 10 Hz", &[ReportGroup::SineFriction]),
+    figures("Sine: normal load", &[ReportGroup::SineLoad]),
+    figures("Sine: mean creepage C0", &[ReportGroup::SineMeanCreepage]),
+    FigureGroup { sine_histories: true, ..figures("Grid refinement", &[ReportGroup::GridRefinement]) },
+    figures("Steady sweeps", &[ReportGroup::Steady]),
+    figures("Stability and extreme cases", &[ReportGroup::Stability, ReportGroup::StabilityFalling]),
+    figures("Other scenes", &[ReportGroup::FallingFriction, ReportGroup::Other]),
 ];
-
-/// The index in [`GROUPS`] of the group that holds a scene.
-fn group_of(name: &str) -> usize {
-    GROUPS.iter().position(|g| (g.member)(name)).unwrap_or(GROUPS.len() - 1)
-}
 
 /// Down-sample a curve to at most `n` points (keeps the plot files small).
 fn thin(points: Vec<(f64, f64)>, n: usize) -> Vec<(f64, f64)> {
@@ -78,9 +65,9 @@ fn last_period(h: &History, period: f64) -> Vec<(f64, f64)> {
 /// Section: a subsection per drawn group, with the figures of each of its scenes and their links.
 pub fn histories_and_loops(body: &mut Report, input: &ReportInput) {
     let _ = writeln!(body.markdown, "## Histories and loops by group\n");
-    for (k, group) in GROUPS.iter().enumerate() {
-        let members = members(input, k);
-        if members.is_empty() || !group.drawn {
+    for group in FIGURE_GROUPS {
+        let members = members(input, group);
+        if members.is_empty() {
             continue;
         }
         let _ = writeln!(body.markdown, "### {}\n", group.title);
@@ -90,10 +77,12 @@ pub fn histories_and_loops(body: &mut Report, input: &ReportInput) {
     }
 }
 
-/// The scenes the group of index `k` holds and draws.
-fn members<'a>(input: &ReportInput<'a>, k: usize) -> Vec<&'a StoredScene> {
+/// The scenes `group` holds (by their declared group) and draws.
+fn members<'a>(input: &ReportInput<'a>, group: &FigureGroup) -> Vec<&'a StoredScene> {
     // A reference set's cases drawn in a section of their own are not drawn again.
-    input.scenes.iter().filter(|s| group_of(&s.name) == k && input.refs.section_of(&s.name).is_none()).collect()
+    let drawn =
+        |s: &StoredScene| group.holds.contains(&s.scene.report_group) && input.refs.section_of(&s.name).is_none();
+    input.scenes.iter().filter(|s| drawn(s)).collect()
 }
 
 /// A scene's figures and their links: its history or sweep, and its loop if it is a sine;
@@ -145,4 +134,20 @@ fn loop_figure(body: &mut Report, sc: &StoredScene, contact: Option<&History>, p
 fn figure(body: &mut Report, file: String, svg: String, alt: &str) {
     let _ = writeln!(body.markdown, "![{alt}](figures/{file})");
     body.figures.push((file, svg));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The groups whose scenes only feed the report's sections: drawn in no figure group.
+    const NOT_DRAWN: [ReportGroup; 2] = [ReportGroup::Scaling, ReportGroup::ThesisFigures];
+
+    #[test]
+    fn every_declared_group_is_drawn_in_one_figure_group_or_feeds_sections_only() {
+        for g in ReportGroup::ALL {
+            let holders = FIGURE_GROUPS.iter().filter(|f| f.holds.contains(&g)).count();
+            assert_eq!(holders + usize::from(NOT_DRAWN.contains(&g)), 1, "{}", g.id());
+        }
+    }
 }

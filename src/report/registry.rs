@@ -53,15 +53,11 @@ pub const SECTIONS: [SectionDef; 12] = [
     },
     SectionDef {
         id: "stability",
-        applies: |s, _| s.iter().any(|s| s.name.starts_with(sections::STABILITY_SCENES)),
+        applies: |s, _| sections::stability_applies(s),
         render: |s, _| Some(sections::stability(s)),
     },
     SectionDef { id: "timing", applies: |_, _| true, render: |s, r| Some(sections::timing(s, r)) },
-    SectionDef {
-        id: "scaling",
-        applies: |s, _| s.iter().any(|s| s.name.starts_with(sections::SCALING_SCENES)),
-        render: |s, _| sections::scaling(s),
-    },
+    SectionDef { id: "scaling", applies: |s, _| sections::scaling_applies(s), render: |s, _| sections::scaling(s) },
 ];
 
 /// Whether a stored scene is a case of the reference set drawn in the section `id`.

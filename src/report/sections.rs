@@ -1,7 +1,8 @@
 //! Report sections computed from several stored scenes at once: the thesis's figures beside
 //! ours, error against run time, grid convergence, stability, timing and cost per step. Each
 //! reads stored results and reference data only; the studies they need are scenes of the suite
-//! `scenes/report/` (named `report_*`), run and stored like any other.
+//! `scenes/report/`, run and stored like any other, found by their declared report group
+//! (`[report] group`) or, where a section draws one particular scene, by its name.
 
 use crate::comparison::references::contact::{self, ContactCases};
 use crate::comparison::references::thesis::{self, ThesisTables};
@@ -12,6 +13,7 @@ use crate::metrics::oscillation_index::own_oscillation;
 use crate::report::linked_table::{largest, place, Table};
 use crate::report::plot::{line_chart, Axis, Series};
 pub use crate::report::section::Section;
+use crate::scene::report::ReportGroup;
 use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
 use std::fmt::Write;
@@ -33,10 +35,16 @@ fn find<'a>(scenes: &'a [StoredScene], name: &str) -> Option<&'a StoredScene> {
     scenes.iter().find(|s| s.name == name)
 }
 
-/// The scenes of the stability suite (`scenes/stability/`): their names' prefix.
-pub const STABILITY_SCENES: &str = "stab_";
-/// The scenes of the cost-per-step study (`scenes/report/`): their names' prefix.
-pub const SCALING_SCENES: &str = "report_scaling_";
+/// Whether any stored scene is a case of the stability table (declared group `stability` or
+/// `stability_falling`).
+pub fn stability_applies(scenes: &[StoredScene]) -> bool {
+    scenes.iter().any(|s| s.scene.report_group.is_stability())
+}
+
+/// Whether any stored scene is a run of the cost-per-step study (declared group `scaling`).
+pub fn scaling_applies(scenes: &[StoredScene]) -> bool {
+    scenes.iter().any(|s| s.scene.report_group == ReportGroup::Scaling)
+}
 /// The scene of the thesis's Hertz example (`scenes/report/`).
 pub const HERTZ_RADII: &str = "report_hertz_radii";
 /// The steady sweeps on three grids, with their grid (CONTACT's 88×88 is the reference).
@@ -133,11 +141,12 @@ pub fn timing(scenes: &[StoredScene], refs: &References) -> Section {
     Section { tables: placed.file.into_iter().collect(), ..Section::new(TITLE, s) }
 }
 
-/// The stability suite (scenes named `stab_*`): per scene and solver, whether every value is
-/// finite, the largest |f|/μ, the oscillation and sawtooth indicators and, for the iterating
-/// models, the iteration counts and the solves that hit the iteration limit.
+/// The stability table's cases (declared groups `stability`, `stability_falling`): per scene and
+/// solver, whether every value is finite, the largest |f|/μ, the oscillation and sawtooth
+/// indicators and, for the iterating models, the iteration counts and the solves that hit the
+/// iteration limit.
 pub fn stability(scenes: &[StoredScene]) -> Section {
-    let stab: Vec<&StoredScene> = scenes.iter().filter(|s| s.name.starts_with(STABILITY_SCENES)).collect();
+    let stab: Vec<&StoredScene> = scenes.iter().filter(|s| s.scene.report_group.is_stability()).collect();
     let mut s = String::from("Extreme and stiff cases (`scenes/stability/`). The traction bound keeps |τ| ≤ μp even when a scheme has blown up, so the bound proves nothing; the indicators do: *oscillation* is the fraction of steps where f turns (a smooth response: about 2 per period; a step-to-step sawtooth: about 1; changes below 1e-6 of max |f|, the jitter of a converged iterative solver, do not count), *sawtooth* the largest fraction of loaded elements where the traction field τx zig-zags along x, *oscillates* flags a history whose |f| turns at 6 or more consecutive steps, more than its loading does (a period-2 oscillation: the memoryless falling branch; also printed by `check` and `run`). A courant number above 1 is refused before anything runs (exit 2).\n\n| scene | solver | steps | all finite | max \\|f\\|/μ | last f | oscillation | sawtooth | oscillates | iterations max | iteration limit hit | warnings |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for sc in stab {
         for (solver, h) in &sc.histories {
@@ -193,11 +202,12 @@ pub fn grid_convergence(scenes: &[StoredScene], refs: &References) -> Option<Sec
     Some(Section::new("Convergence under grid refinement", s))
 }
 
-/// Cost per step against element count from the stored `report_scaling_<solver>_g<n>` scenes:
-/// per step = (wall − set-up) / steps, with the fitted growth exponent (least squares, log–log).
+/// Cost per step against element count from the stored scenes of the declared group `scaling`
+/// (`report_scaling_<solver>_g<n>`): per step = (wall − set-up) / steps, with the fitted growth
+/// exponent (least squares, log–log).
 pub fn scaling(scenes: &[StoredScene]) -> Option<Section> {
     let mut per_solver: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
-    for sc in scenes.iter().filter(|s| s.name.starts_with(SCALING_SCENES)) {
+    for sc in scenes.iter().filter(|s| s.scene.report_group == ReportGroup::Scaling) {
         for (solver, h) in &sc.histories {
             let Some(t) = sc.timing.get(solver) else { continue };
             let per_step = ((t.wall_s - t.setup_s) / h.rows.len().max(1) as f64).max(1e-12);

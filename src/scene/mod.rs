@@ -5,6 +5,7 @@
 
 pub mod geometry;
 pub mod reader;
+pub mod report;
 mod sections;
 pub mod source;
 pub mod study;
@@ -370,6 +371,8 @@ pub struct Scene {
     pub studies: Vec<study::StudyPoint>,
     /// The CONTACT deck and cases the scene was imported from (`[origin]`).
     pub origin: Option<Origin>,
+    /// Where the report shows the scene (`[report] group`).
+    pub report_group: report::ReportGroup,
 }
 
 const CREEPAGE_LIMIT: Range = Range::new(-1.0, true, 1.0, true);
@@ -452,6 +455,7 @@ impl Scene {
         let normal = sections::normal(&mut top, &contact.geometry, init)?;
         let limits = sections::limits(&mut top)?;
         let origin = sections::origin(&mut top)?;
+        let report_group = report::read(&mut top)?;
         top.finish()?;
         let scene = Scene {
             name,
@@ -487,6 +491,7 @@ impl Scene {
             dir: dir.to_path_buf(),
             studies: Vec::new(),
             origin,
+            report_group,
         };
         scene.check_sweep_points()?;
         scene.check_table_friction()?;

@@ -24,11 +24,13 @@ fn load_all(imported: &Imported, dir: &Path) -> Vec<Problem> {
 
 /// Keys of scene.json a CONTACT deck does not carry: names and the models, metrics and solver
 /// options of this project, and the form the history was given in (a sine, a step or a sweep's
-/// `from`/`to`/`over` come back as the same rows of a table or a sweep's `at`), and `origin`
-/// (the deck a scene was imported from: the exported deck is another file).
+/// `from`/`to`/`over` come back as the same rows of a table or a sweep's `at`), `origin`
+/// (the deck a scene was imported from: the exported deck is another file) and `report_group`
+/// (where the report shows the scene).
 const OUTSIDE_A_DECK: &[&str] = &[
     "name",
     "origin",
+    "report_group",
     "solvers",
     "metrics",
     "skipped_metrics",

@@ -37,6 +37,8 @@ mod properties;
 mod python;
 mod reference_columns;
 mod relaxation_model;
+mod report_groups;
+mod report_scope;
 mod rolling_direction;
 mod scene_extensions;
 mod she_model;
