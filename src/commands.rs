@@ -22,6 +22,9 @@ use std::time::Instant;
 
 /// `creepbench simulate`: one scene into `out/<name>/` (a study file: each of its scenes).
 pub fn simulate(scene: &Path, solvers: &[String], out: &Path, golden: &Path) -> Result<Vec<PathBuf>, Error> {
+    if let Some(wr) = crate::scene::wheelrail::read_if_wheelrail(scene)? {
+        return simulate_wheelrail(wr, solvers, out, golden);
+    }
     let sources = suite::sources_of_file(scene)?;
     // Every scene validated (and its folder checked) before any runs: bad input writes nothing.
     let problems = sources.iter().map(|s| pipeline::load_source(s, solvers)).collect::<Result<Vec<_>, _>>()?;
@@ -49,6 +52,36 @@ pub fn simulate(scene: &Path, solvers: &[String], out: &Path, golden: &Path) -> 
         }
     }
     Ok(dirs)
+}
+
+/// `creepbench simulate` of a wheel–rail scene: its cases into `out/<name>/` (`<model>.csv`,
+/// `<model>_patches.csv`); `solvers` narrows its models.
+fn simulate_wheelrail(
+    mut scene: crate::scene::wheelrail::WheelRailScene,
+    solvers: &[String],
+    out: &Path,
+    golden: &Path,
+) -> Result<Vec<PathBuf>, Error> {
+    if !solvers.is_empty() {
+        scene.solvers.retain(|m| solvers.contains(m));
+        if scene.solvers.is_empty() {
+            return Err(InputError::new("--solvers", solvers.join(","), "models the scene names").into());
+        }
+    }
+    guard::guard_output_dir(out, golden)?;
+    guard::guard_not_under(&out.join(&scene.name), golden)?;
+    let start = Instant::now();
+    let run = pipeline::wheelrail_scene::run_scene(&scene)?;
+    let _lock = lock::lock_folder(out, lock::DEFAULT_LOCK_WAIT)?;
+    let dir = suite::wheelrail::write(out, &run)?;
+    eprintln!(
+        "{}: {} cases, {} models in {:.3} s",
+        run.name,
+        run.cases.len(),
+        run.models.len(),
+        start.elapsed().as_secs_f64()
+    );
+    Ok(vec![dir])
 }
 
 /// `creepbench expand`: a study's scenes as scene files `out/<name>.toml` (none is replaced).

@@ -3,7 +3,8 @@
 //! rolling (the same grid, undeformed distance, FN and creepages for all); the patches' forces sum
 //! to the totals on the rail. With FZ prescribed the height is found with the exact theory's
 //! tangential forces included (CONTACT's N = 1 solves the full problem at each height): the
-//! normal forces' vertical parts must carry FZ less the tangential forces' vertical parts.
+//! normal forces' vertical parts must carry FZ less the tangential forces' vertical parts, found
+//! by rounds of a height search for the normal share FZ / (1 + Fz_tangential / Fz_normal).
 //!
 //! Signs and frames are CONTACT's module-1 output's: forces on the rail; each patch's FX along the
 //! track, FS in its tangent plane (lateral), FN along its normal; totals in track and wheelset
@@ -22,7 +23,7 @@ use std::path::Path;
 /// The model whose tangential forces enter the vertical balance: the exact theory.
 pub const EXACT: &str = "contact";
 /// Rounds of the vertical balance with the tangential forces (each a height search).
-const VERTICAL_ROUNDS: usize = 6;
+const VERTICAL_ROUNDS: usize = 20;
 
 /// One model's forces on one patch, CONTACT's signs (on the rail), the side's frame.
 #[derive(Debug, Clone, PartialEq)]
@@ -58,18 +59,21 @@ pub fn solve(case: &WheelRailCase, models: &[String], mu: f64) -> Result<CaseRes
     if let Vertical::Force { fz_n } = case.vertical {
         for _ in 0..VERTICAL_ROUNDS {
             let exact = patch_forces(&normal, EXACT, mu, case)?;
+            let normal_z = normal.fz_normal_n();
             let tangential_z: f64 = normal
                 .patches
                 .iter()
                 .zip(&exact)
                 .map(|(p, f)| case.side.sign() * f.fs_n * p.geometry.frame.delta_rad.sin())
                 .sum();
-            let next = wheelrail::normal_contact(case, Some(fz_n - tangential_z)).map_err(geometry)?;
-            let moved = (next.z_ws_mm - normal.z_ws_mm).abs();
-            normal = next;
-            if moved < 1e-12 {
+            if (normal_z + tangential_z - fz_n).abs() <= 2.0 * wheelrail::vertical::FORCE_TOL * fz_n || normal_z <= 0.0
+            {
                 break;
             }
+            // The tangential forces grow with the normal ones (in full slip in proportion): the
+            // normal forces' share of FZ is FZ / (1 + tangential / normal).
+            let target = fz_n / (1.0 + tangential_z / normal_z);
+            normal = wheelrail::normal_contact(case, Some(target)).map_err(geometry)?;
         }
     }
     let mut out = Vec::new();

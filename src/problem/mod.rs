@@ -131,10 +131,15 @@ impl Physics {
 
 /// The scene's material from G or E (or both, consistent within [`E_G_TOLERANCE`]) and ν.
 fn material_of(scene: &Scene) -> Result<Material, InputError> {
-    match (scene.material.g_mpa, scene.material.e_mpa) {
-        (Some(g), Some(e)) => material_of_g_and_e(g, e, scene.material.poisson),
-        (Some(g), None) => Ok(Material::from_g(g, scene.material.poisson)),
-        (None, Some(e)) => Ok(Material::from_e(e, scene.material.poisson)),
+    material_of_spec(&scene.material)
+}
+
+/// A `[material]` table's material from G or E (or both, consistent within [`E_G_TOLERANCE`]) and ν.
+pub fn material_of_spec(m: &crate::scene::MaterialSpec) -> Result<Material, InputError> {
+    match (m.g_mpa, m.e_mpa) {
+        (Some(g), Some(e)) => material_of_g_and_e(g, e, m.poisson),
+        (Some(g), None) => Ok(Material::from_g(g, m.poisson)),
+        (None, Some(e)) => Ok(Material::from_e(e, m.poisson)),
         (None, None) => Err(InputError::new("material.g_mpa", "missing", "g_mpa or e_mpa")),
     }
 }

@@ -69,6 +69,10 @@ pub struct WheelRailScene {
     pub material: MaterialSpec,
     pub dx_mm: f64,
     pub ds_mm: f64,
+    /// A_SEP [rad], D_SEP [mm], D_COMB [mm]: which interpenetration regions make one patch.
+    pub a_sep_rad: f64,
+    pub d_sep_mm: f64,
+    pub d_comb_mm: f64,
     pub vertical: VerticalSpec,
     pub cases: Vec<CaseRow>,
     /// The scene file's folder.
@@ -86,6 +90,20 @@ const MAX_CASES: usize = 100_000;
 /// Whether a parsed TOML document is a wheel–rail scene (it has a `[wheelrail]` table).
 pub fn is_wheelrail(doc: &toml::Table) -> bool {
     doc.contains_key("wheelrail")
+}
+
+/// The wheel–rail scene in `path`, if the file is one (a TOML file with a `[wheelrail]` table);
+/// errors name the file.
+pub fn read_if_wheelrail(path: &Path) -> Result<Option<WheelRailScene>, InputError> {
+    let text = crate::safety::read::read_text(path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")
+        .map_err(|e| InputError::new("scene", path.display(), format!("a readable scene file (TOML): {e}")))?;
+    let in_file = |e: InputError| InputError { field: format!("{}: {}", path.display(), e.field), ..e };
+    let doc = parse_toml(&text, "scene").map_err(in_file)?;
+    if !is_wheelrail(&doc) {
+        return Ok(None);
+    }
+    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    WheelRailScene::from_table(&doc, &dir).map(Some).map_err(in_file)
 }
 
 impl WheelRailScene {
@@ -112,6 +130,14 @@ impl WheelRailScene {
         let mu = w.f64("mu", Range::new(0.0, false, 10.0, true))?;
         let dx_mm = w.f64("dx_mm", Range::new(1e-3, true, 100.0, true))?;
         let ds_mm = w.f64("ds_mm", Range::new(1e-3, true, 100.0, true))?;
+        let a_sep_rad = w
+            .opt_f64("a_sep_rad", Range::new(0.0, true, std::f64::consts::PI, true))?
+            .unwrap_or(std::f64::consts::FRAC_PI_2);
+        let d_sep_mm = w.opt_f64("d_sep_mm", Range::new(0.0, true, 1e3, true))?.unwrap_or(8.0);
+        let d_comb_mm = w.opt_f64("d_comb_mm", Range::new(0.0, true, 1e3, true))?.unwrap_or(4.0);
+        if d_comb_mm > d_sep_mm {
+            return Err(InputError::new("wheelrail.d_comb_mm", d_comb_mm, format!("at most d_sep_mm = {d_sep_mm}")));
+        }
         w.finish()?;
         let (rail, placement, cant_rad) = rail(&mut top, dir)?;
         let (wheel, fbd, fbp, radius) = wheel(&mut top, dir)?;
@@ -133,6 +159,9 @@ impl WheelRailScene {
             material,
             dx_mm,
             ds_mm,
+            a_sep_rad,
+            d_sep_mm,
+            d_comb_mm,
             vertical,
             cases,
             dir: dir.to_path_buf(),

@@ -4,6 +4,7 @@ use crate::error::{Error, InputError};
 use crate::pipeline::{self, InProcess, SceneResult};
 use crate::problem::Problem;
 pub mod results;
+pub mod wheelrail;
 
 pub use crate::scene::source::SceneSource;
 use crate::scene::study;

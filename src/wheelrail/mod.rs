@@ -72,6 +72,8 @@ pub struct WheelRailCase<'a> {
     pub vertical: Vertical,
     pub dx_mm: f64,
     pub ds_mm: f64,
+    /// A_SEP, D_SEP, D_COMB: which interpenetration regions make one patch.
+    pub separation: patch::Separation,
     pub material: Material,
 }
 
@@ -82,6 +84,8 @@ pub struct NormalPatch {
     pub fn_n: f64,
     /// Pressure per element [MPa], CONTACT's element order.
     pub pn_mpa: Vec<f64>,
+    /// The approach: the deepest overlap of the undeformed surfaces [mm].
+    pub pen_mm: f64,
     pub creepages: creepage::Creepages,
 }
 
@@ -92,9 +96,19 @@ pub struct NormalContact {
     /// The wheelset height found (or given) [mm].
     pub z_ws_mm: f64,
     pub patches: Vec<NormalPatch>,
+    /// The rail profile's origin (y, z) in track coordinates [mm] and its rotation about x [rad].
+    pub rail_origin_mm: [f64; 2],
+    pub rail_angle_rad: f64,
 }
 
 impl NormalContact {
+    /// A track point (y, z) in the rail profile's coordinates (right-side frame).
+    pub fn in_rail_mm(&self, y_mm: f64, z_mm: f64) -> [f64; 2] {
+        let (s, c) = self.rail_angle_rad.sin_cos();
+        let (dy, dz) = (y_mm - self.rail_origin_mm[0], z_mm - self.rail_origin_mm[1]);
+        [c * dy + s * dz, -s * dy + c * dz]
+    }
+
     /// Σ FN cos δ: the patches' normal forces' vertical part [N].
     pub fn fz_normal_n(&self) -> f64 {
         self.patches.iter().map(|p| p.fn_n * p.geometry.frame.delta_rad.cos()).sum()
@@ -121,10 +135,13 @@ pub fn normal_contact(case: &WheelRailCase, fz_normal_n: Option<f64>) -> Result<
         }
     };
     let patches = at(z_ws_mm)?;
-    if patches.is_empty() {
-        return Err(WheelRailError::NoContact);
-    }
-    Ok(NormalContact { side: case.side, z_ws_mm, patches })
+    Ok(NormalContact {
+        side: case.side,
+        z_ws_mm,
+        patches,
+        rail_origin_mm: rail.origin_mm,
+        rail_angle_rad: rail.angle_rad,
+    })
 }
 
 /// The patches and their normal solutions with the wheelset at `pose` (right-side frame).
@@ -135,9 +152,12 @@ fn patches_at(case: &WheelRailCase, rail: &PlacedRail, pose: &Pose) -> Result<Ve
         return Err(WheelRailError::NoOverlap);
     }
     let velocity = case.side.velocity(&case.velocity);
+    let radius = case.wheelset.nominal_radius_mm;
+    let candidates: Vec<_> =
+        search::regions(&samples).into_iter().filter_map(|r| patch::candidate(r, rail, radius)).collect();
     let mut out = Vec::new();
-    for (k, region) in search::regions(&samples).into_iter().enumerate() {
-        let geometry = patch::build(region, &wheel, rail, case.dx_mm, case.ds_mm)?;
+    for (k, c) in patch::combine(candidates, &case.separation).iter().enumerate() {
+        let geometry = patch::build(c, &wheel, rail, case.dx_mm, case.ds_mm)?;
         if geometry.grid.len() > MAX_ELEMENTS {
             return Err(WheelRailError::GridTooLarge {
                 patch: k + 1,
@@ -149,7 +169,7 @@ fn patches_at(case: &WheelRailCase, rail: &PlacedRail, pose: &Pose) -> Result<Ve
             .map_err(|source| WheelRailError::Normal { patch: k + 1, source })?;
         let pen_mm = -geometry.h_mm.iter().copied().fold(f64::INFINITY, f64::min);
         let creepages = creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm);
-        out.push(NormalPatch { geometry, fn_n, pn_mpa, creepages });
+        out.push(NormalPatch { geometry, fn_n, pn_mpa, pen_mm, creepages });
     }
     Ok(out)
 }

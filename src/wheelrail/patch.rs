@@ -80,19 +80,122 @@ fn weight(pen_mm: f64, a_per_mm: f64) -> f64 {
         .max(1e-10)
 }
 
-/// The interpenetration-weighted reference point and contact angle of a region (CONTACT's
-/// "interpenetration centre of gravity", and the rail's height at its y).
-pub fn reference(region: &[LocusSample], rail: &PlacedRail, radius_mm: f64) -> Option<PatchFrame> {
+/// A region's extent and weighted centre (CONTACT's `t_cpatch` before its grid): the chord's
+/// x range, the y range to the gap's zero crossings with the rail's z there, the
+/// interpenetration-weighted x, y and rail inclination, and the total weight.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Candidate {
+    pub x_mm: [f64; 2],
+    pub y_mm: [f64; 2],
+    pub z_mm: [f64; 2],
+    pub wgt_x_mm: f64,
+    pub wgt_y_mm: f64,
+    pub wgt_angle_rad: f64,
+    pub total_weight: f64,
+    /// The deepest interpenetration [mm].
+    pub pen_max_mm: f64,
+}
+
+/// The candidate patch of a region (CONTACT's `locate_interpen_1d` with `compute_wgt_center_1d`
+/// and `compute_contact_length_1d`); `None` where nothing interpenetrates.
+pub fn candidate(region: &[LocusSample], rail: &PlacedRail, radius_mm: f64) -> Option<Candidate> {
     let a = 0.5 / radius_mm;
     let inside = || region.iter().filter(|s| s.pen_mm >= 0.0);
-    let w: f64 = inside().map(|s| weight(s.pen_mm, a)).sum();
-    if w <= 0.0 {
+    let total_weight: f64 = inside().map(|s| weight(s.pen_mm, a)).sum();
+    if total_weight <= 0.0 {
         return None;
     }
-    let mean = |f: &dyn Fn(&LocusSample) -> f64| inside().map(|s| weight(s.pen_mm, a) * f(s)).sum::<f64>() / w;
-    let (x, y) = (mean(&|s| s.x_mm), mean(&|s| s.y_mm));
-    let delta_rad = mean(&|s| s.rail_angle_rad);
-    Some(PatchFrame { origin: Point3::new(x, y, rail.z_mm(y)?), delta_rad })
+    let mean =
+        |f: &dyn Fn(&LocusSample) -> f64| inside().map(|s| weight(s.pen_mm, a) * f(s)).sum::<f64>() / total_weight;
+    let (mut x_lo, mut x_hi) = (f64::MAX, f64::MIN);
+    for p in inside() {
+        let half = (p.pen_mm / a).sqrt();
+        (x_lo, x_hi) = (x_lo.min(p.x_mm - half), x_hi.max(p.x_mm + half));
+    }
+    let last = region.len() - 1;
+    let y_mm = [crossing(region, 0, 1.min(last)), crossing(region, last, last.saturating_sub(1))];
+    Some(Candidate {
+        x_mm: [x_lo, x_hi],
+        y_mm,
+        z_mm: [rail.z_mm(y_mm[0])?, rail.z_mm(y_mm[1])?],
+        wgt_x_mm: mean(&|s| s.x_mm),
+        wgt_y_mm: mean(&|s| s.y_mm),
+        wgt_angle_rad: mean(&|s| s.rail_angle_rad),
+        total_weight,
+        pen_max_mm: inside().map(|s| s.pen_mm).fold(0.0, f64::max),
+    })
+}
+
+/// CONTACT's distance between two candidates' extents (`cpatch_distance`): the gaps between their
+/// x ranges and between their y ranges, with the z step across the y gap.
+pub fn distance_mm(a: &Candidate, b: &Candidate) -> f64 {
+    let gap = |lo0: f64, hi0: f64, lo1: f64, hi1: f64| (lo0 - hi1).max(lo1 - hi0).max(0.0);
+    let dx = gap(a.x_mm[0], a.x_mm[1], b.x_mm[0], b.x_mm[1]);
+    let (dy, dz) = if a.y_mm[0] > b.y_mm[1] {
+        (a.y_mm[0] - b.y_mm[1], a.z_mm[0] - b.z_mm[1])
+    } else if b.y_mm[0] > a.y_mm[1] {
+        (b.y_mm[0] - a.y_mm[1], b.z_mm[0] - a.z_mm[1])
+    } else {
+        (0.0, 0.0)
+    };
+    (dx * dx + dy * dy + dz * dz).sqrt()
+}
+
+/// The thresholds of patch combination (A_SEP, D_SEP, D_COMB).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Separation {
+    pub angle_rad: f64,
+    pub distance_mm: f64,
+    pub combine_mm: f64,
+}
+
+/// `b` merged into `a`: the union of the extents, the weights' combined centre and angle.
+fn merge(a: &mut Candidate, b: &Candidate) {
+    let w = a.total_weight + b.total_weight;
+    let mix = |u: f64, v: f64| (u * a.total_weight + v * b.total_weight) / w;
+    a.wgt_x_mm = mix(a.wgt_x_mm, b.wgt_x_mm);
+    a.wgt_y_mm = mix(a.wgt_y_mm, b.wgt_y_mm);
+    a.wgt_angle_rad = mix(a.wgt_angle_rad, b.wgt_angle_rad);
+    a.total_weight = w;
+    a.x_mm = [a.x_mm[0].min(b.x_mm[0]), a.x_mm[1].max(b.x_mm[1])];
+    if b.y_mm[0] < a.y_mm[0] {
+        (a.y_mm[0], a.z_mm[0]) = (b.y_mm[0], b.z_mm[0]);
+    }
+    if b.y_mm[1] > a.y_mm[1] {
+        (a.y_mm[1], a.z_mm[1]) = (b.y_mm[1], b.z_mm[1]);
+    }
+    a.pen_max_mm = a.pen_max_mm.max(b.pen_max_mm);
+}
+
+/// CONTACT's `sort_cpatches_yvalue` and `combine_cpatches`: candidates from the field side to the
+/// track centre (y descending on the right side); a first pass merges those within D_COMB, a
+/// second those within D_SEP (CONTACT blends the second kind's cross-influence; here they are
+/// solved as one patch), never two whose angles differ by more than A_SEP.
+pub fn combine(mut c: Vec<Candidate>, sep: &Separation) -> Vec<Candidate> {
+    c.sort_by(|a, b| b.wgt_y_mm.total_cmp(&a.wgt_y_mm));
+    for limit in [sep.combine_mm, sep.distance_mm] {
+        let mut i = 0;
+        while i < c.len() {
+            let mut j = i + 1;
+            while j < c.len() {
+                let close = (c[i].wgt_angle_rad - c[j].wgt_angle_rad).abs() <= sep.angle_rad
+                    && distance_mm(&c[i], &c[j]) <= limit;
+                if close {
+                    let b = c.remove(j);
+                    merge(&mut c[i], &b);
+                } else {
+                    j += 1;
+                }
+            }
+            i += 1;
+        }
+    }
+    c
+}
+
+/// The reference frame of a candidate: its weighted x and y on the rail, its weighted angle.
+pub fn frame(c: &Candidate, rail: &PlacedRail) -> Option<PatchFrame> {
+    Some(PatchFrame { origin: Point3::new(c.wgt_x_mm, c.wgt_y_mm, rail.z_mm(c.wgt_y_mm)?), delta_rad: c.wgt_angle_rad })
 }
 
 /// Where the gap crosses zero between mesh points k and k + step (linear), or point k's y.
@@ -121,28 +224,12 @@ fn indices(from: f64, to: f64, d: f64) -> (i64, i64) {
     ((from / d).floor() as i64 - GUARD_ELEMENTS, (to / d).ceil() as i64 + GUARD_ELEMENTS)
 }
 
-/// The potential contact: longitudinally each interpenetrating mesh point's `x ± √(pen/a)` (the
-/// chord of a circle of curvature 2a = 1/R_nom), laterally the rail's arc length from the
-/// reference to the region's zero crossings; rounded out to whole elements plus a guard element.
-pub fn grid(
-    region: &[LocusSample],
-    frame: &PatchFrame,
-    rail: &PlacedRail,
-    radius_mm: f64,
-    dx_mm: f64,
-    ds_mm: f64,
-) -> PatchGrid {
-    let a = 0.5 / radius_mm;
-    let (mut x_lo, mut x_hi) = (f64::MAX, f64::MIN);
-    for p in region.iter().filter(|s| s.pen_mm >= 0.0) {
-        let half = (p.pen_mm / a).sqrt();
-        (x_lo, x_hi) = (x_lo.min(p.x_mm - half), x_hi.max(p.x_mm + half));
-    }
-    let last = region.len() - 1;
-    let (y_sta, y_end) = (crossing(region, 0, 1.min(last)), crossing(region, last, last.saturating_sub(1)));
+/// The potential contact of a candidate: its x range, and laterally the rail's arc length from the
+/// reference to its y range's ends, rounded out to whole elements plus a guard element.
+pub fn grid(c: &Candidate, frame: &PatchFrame, rail: &PlacedRail, dx_mm: f64, ds_mm: f64) -> PatchGrid {
     let s_of = |y: f64| arc_length(rail, frame.origin.y, y);
-    let (s_a, s_b) = (s_of(y_sta), s_of(y_end));
-    let (ix_l, ix_h) = indices(x_lo - frame.origin.x, x_hi - frame.origin.x, dx_mm);
+    let (s_a, s_b) = (s_of(c.y_mm[0]), s_of(c.y_mm[1]));
+    let (ix_l, ix_h) = indices(c.x_mm[0] - frame.origin.x, c.x_mm[1] - frame.origin.x, dx_mm);
     let (is_l, is_h) = indices(s_a.min(s_b), s_a.max(s_b), ds_mm);
     PatchGrid {
         mx: (ix_h - ix_l + 1) as usize,
@@ -177,17 +264,16 @@ pub fn undeformed_distance(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedW
     h
 }
 
-/// The patch of one region.
+/// The patch of one candidate.
 pub fn build(
-    region: &[LocusSample],
+    c: &Candidate,
     wheel: &PlacedWheel,
     rail: &PlacedRail,
     dx_mm: f64,
     ds_mm: f64,
 ) -> Result<PatchGeometry, WheelRailError> {
-    let frame = reference(region, rail, wheel.nominal_radius_mm).ok_or(WheelRailError::NoContact)?;
-    let grid = grid(region, &frame, rail, wheel.nominal_radius_mm, dx_mm, ds_mm);
+    let frame = frame(c, rail).ok_or(WheelRailError::NoContact)?;
+    let grid = grid(c, &frame, rail, dx_mm, ds_mm);
     let h_mm = undeformed_distance(&frame, &grid, wheel, rail);
-    let pen_max_mm = region.iter().map(|s| s.pen_mm).fold(0.0, f64::max);
-    Ok(PatchGeometry { frame, grid, h_mm, pen_max_mm })
+    Ok(PatchGeometry { frame, grid, h_mm, pen_max_mm: c.pen_max_mm })
 }

@@ -53,4 +53,5 @@ mod test_table;
 mod tolerance_files;
 mod traction_bound;
 mod wheelrail;
+mod wheelrail_mbench;
 mod wheelrail_profiles;

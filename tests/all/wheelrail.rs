@@ -32,6 +32,11 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side) -> WheelRailC
         vertical: Vertical::Force { fz_n: 10000.0 },
         dx_mm: 0.2,
         ds_mm: 0.2,
+        separation: creepbench::wheelrail::patch::Separation {
+            angle_rad: std::f64::consts::FRAC_PI_2,
+            distance_mm: 8.0,
+            combine_mm: 4.0,
+        },
         material: Material::from_g(82000.0, 0.28),
     }
 }

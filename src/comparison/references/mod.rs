@@ -6,6 +6,7 @@
 pub mod contact;
 pub mod contact_output;
 pub mod contact_public;
+pub mod contact_wheelrail;
 pub mod envelope;
 pub mod friction;
 pub mod table;

@@ -1,0 +1,90 @@
+//! CONTACT's printed module-1 results against a wheel–rail scene's: per case the totals on the
+//! rail, per patch the reference location, the creepages, the forces and the element counts, each
+//! difference measured in half-units of CONTACT's last printed digit (a difference of at most 1
+//! is the printed value reproduced).
+
+use super::contact_output::printed::Printed;
+use super::contact_output::wheelrail::{Patch, WheelRailCase};
+use crate::pipeline::wheelrail::CaseResult;
+
+/// One compared quantity.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Deviation {
+    pub contact_case: u64,
+    /// The patch (from 1), or 0 for the case's totals.
+    pub patch: usize,
+    pub quantity: &'static str,
+    pub ours: f64,
+    pub contact: f64,
+    /// |ours − contact| over half a unit of CONTACT's last printed digit.
+    pub half_units: f64,
+}
+
+fn deviation(case: u64, patch: usize, quantity: &'static str, ours: f64, p: &Printed) -> Deviation {
+    let half_units = (ours - p.value).abs() / p.half_unit.max(f64::MIN_POSITIVE);
+    Deviation { contact_case: case, patch, quantity, ours, contact: p.value, half_units }
+}
+
+/// Every compared quantity of one case of the model at index `model` of the run's models.
+pub fn compare_case(case: u64, ours: &CaseResult, model: usize, theirs: &WheelRailCase) -> Vec<Deviation> {
+    let mut out = Vec::new();
+    let (_, forces, totals) = &ours.models[model];
+    if let Some(f) = &theirs.forces {
+        let names = ["fx_tr_n", "fy_tr_n", "fz_tr_n", "fx_ws_n", "fy_ws_n", "fz_ws_n"];
+        let printed = [&f.fx_tr_n, &f.fy_tr_n, &f.fz_tr_n, &f.fx_ws_n, &f.fy_ws_n, &f.fz_ws_n];
+        let values = totals.track_n.iter().chain(&totals.wheelset_n);
+        out.extend(names.iter().zip(printed).zip(values).map(|((n, p), v)| deviation(case, 0, n, *v, p)));
+    }
+    let m = ours.normal.side.sign();
+    for (k, (p, f)) in ours.normal.patches.iter().zip(forces).enumerate() {
+        let Some(t) = theirs.patches.get(k) else { continue };
+        out.extend(patch_deviations(case, k + 1, m, ours, p, f, t));
+    }
+    out
+}
+
+fn patch_deviations(
+    case: u64,
+    patch: usize,
+    m: f64,
+    ours: &CaseResult,
+    p: &crate::wheelrail::NormalPatch,
+    f: &crate::pipeline::wheelrail::PatchForces,
+    t: &Patch,
+) -> Vec<Deviation> {
+    let mut out = Vec::new();
+    let mut add = |q: &'static str, v: f64, pr: &Printed| out.push(deviation(case, patch, q, v, pr));
+    let o = &p.geometry.frame.origin;
+    if let Some(r) = &t.reference {
+        let [y_r, z_r] = ours.normal.in_rail_mm(o.y, o.z);
+        add("xcp_tr_mm", o.x, &r.xcp_tr_mm);
+        add("ycp_tr_mm", m * o.y, &r.ycp_tr_mm);
+        add("zcp_tr_mm", o.z, &r.zcp_tr_mm);
+        add("deltcp_rad", m * p.geometry.frame.delta_rad, &r.deltcp_tr_rad);
+        add("ycp_r_mm", m * y_r, &r.ycp_r_mm);
+        add("zcp_r_mm", z_r, &r.zcp_r_mm);
+    }
+    if let Some(k) = &t.kinematics {
+        add("cksi", p.creepages.cksi, &k.cksi);
+        add("ceta", m * p.creepages.ceta, &k.ceta);
+        add("cphi_per_mm", m * p.creepages.cphi_per_mm, &k.cphi_per_mm);
+    }
+    if let Some(tt) = &t.totals {
+        add("fn_n", f.fn_n, &tt.fn_n);
+        add("fx_n", f.fx_n, &tt.fx_n);
+        add("fs_n", f.fs_n, &tt.fs_n);
+        add("mn_nmm", f.mn_nmm, &tt.mn_nmm);
+        add("pen_mm", p.pen_mm, &tt.approach_mm);
+    }
+    if let Some(s) = &t.statistics {
+        let count = |n: u32| Printed { value: n as f64, half_unit: 0.5 };
+        let ncon = p.pn_mpa.iter().filter(|&&v| v > 0.0).count() as f64;
+        add("npot", p.geometry.grid.len() as f64, &count(s.npot));
+        add("ncon", ncon, &count(s.ncon));
+        if let (Some(a), Some(sl)) = (f.n_adhesion, f.n_slip) {
+            add("nadh", a as f64, &count(s.nadh));
+            add("nslip", sl as f64, &count(s.nslip));
+        }
+    }
+    out
+}

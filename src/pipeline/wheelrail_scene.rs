@@ -1,0 +1,132 @@
+//! A wheel–rail scene through the stages: its profiles read once, each case (a row of its cases
+//! table) solved by [`super::wheelrail::solve`] with every model the scene names, cases in
+//! parallel (each alone, so the results do not depend on the thread count).
+
+use super::wheelrail::{solve, CaseResult};
+use crate::error::{Error, InputError};
+use crate::problem::material_of_spec;
+use crate::scene::wheelrail::{CaseRow, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene};
+use crate::solvers;
+use crate::wheelrail::patch::Separation;
+use crate::wheelrail::profile::{options::ProfileOptions, read::read_profile, Profile, ProfileKind};
+use crate::wheelrail::rail::{RailPlacement, Track};
+use crate::wheelrail::side::Side;
+use crate::wheelrail::wheel::{Pose, Velocity, WheelsetGeometry};
+use crate::wheelrail::{Vertical, WheelRailCase};
+use rayon::prelude::*;
+
+/// A scene's results: per case (in the table's order) its number and what it gave.
+#[derive(Debug, Clone)]
+pub struct SceneRun {
+    pub name: String,
+    pub models: Vec<String>,
+    pub cases: Vec<(u64, CaseResult)>,
+}
+
+/// The scene's models, checked against the registry (built-in models only).
+fn models(scene: &WheelRailScene) -> Result<Vec<String>, InputError> {
+    for m in &scene.solvers {
+        if solvers::builtin(m).is_none() {
+            return Err(InputError::new(
+                "solvers",
+                format!("{m:?}"),
+                format!("built-in models ({})", solvers::builtin_names().join(", ")),
+            ));
+        }
+    }
+    Ok(scene.solvers.clone())
+}
+
+/// A profile file read as the scene says.
+fn profile(spec: &ProfileSpec, kind: ProfileKind) -> Result<Profile, Error> {
+    let opts = ProfileOptions {
+        mirror_y: i32::from(spec.mirror_y),
+        scale: spec.scale,
+        smooth: spec.smooth,
+        ..ProfileOptions::default()
+    };
+    Ok(read_profile(&spec.path, kind, &opts)?)
+}
+
+/// Read the scene's profiles and check its models: everything that can fail on input, before
+/// any case runs.
+pub fn prepare(scene: &WheelRailScene) -> Result<(Profile, Profile, Vec<String>), Error> {
+    let rail = profile(&scene.rail, ProfileKind::Rail)?;
+    let wheel = profile(&scene.wheel, ProfileKind::Wheel)?;
+    Ok((rail, wheel, models(scene)?))
+}
+
+/// Solve every case of the scene.
+pub fn run_scene(scene: &WheelRailScene) -> Result<SceneRun, Error> {
+    let (rail, wheel, models) = prepare(scene)?;
+    let material = material_of_spec(&scene.material)?;
+    let cases = scene
+        .cases
+        .par_iter()
+        .map(|row| {
+            let case = case_of(scene, row, &rail, &wheel, material);
+            solve(&case, &models, scene.mu).map(|r| (row.contact_case, r)).map_err(|e| in_case(row, e))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(SceneRun { name: scene.name.clone(), models, cases })
+}
+
+/// An error of one case, naming it.
+fn in_case(row: &CaseRow, e: Error) -> Error {
+    match e {
+        Error::Input(i) => {
+            InputError::new(format!("case {}: {}", row.contact_case, i.field), i.value, i.allowed).into()
+        }
+        other => other,
+    }
+}
+
+/// The stage's input for one row of the scene.
+fn case_of<'a>(
+    s: &WheelRailScene,
+    row: &CaseRow,
+    rail: &'a Profile,
+    wheel: &'a Profile,
+    material: crate::physics::Material,
+) -> WheelRailCase<'a> {
+    let [vs, vy, vz, vroll, vyaw, vpitch] = row.velocity;
+    let (vertical, z_mm) = match s.vertical {
+        VerticalSpec::Force => (Vertical::Force { fz_n: row.vertical }, 0.0),
+        VerticalSpec::Position => (Vertical::Position, row.vertical),
+    };
+    WheelRailCase {
+        side: match s.side {
+            SideSpec::Left => Side::Left,
+            SideSpec::Right => Side::Right,
+        },
+        rail,
+        wheel,
+        track: Track {
+            placement: match s.placement {
+                PlacementSpec::Gauge { height_mm, width_mm } => RailPlacement::Gauge { height_mm, width_mm },
+                PlacementSpec::Absolute { y_mm, z_mm } => RailPlacement::Absolute { y_mm, z_mm },
+            },
+            cant_rad: s.cant_rad,
+            deviation_mm_rad: [0.0; 3],
+        },
+        wheelset: WheelsetGeometry {
+            flange_back_distance_mm: s.flange_back_distance_mm,
+            flange_back_position_mm: s.flange_back_position_mm,
+            nominal_radius_mm: s.nominal_radius_mm,
+        },
+        pose: Pose { y_mm: row.y_mm, z_mm, roll_rad: row.roll_rad, yaw_rad: row.yaw_rad },
+        velocity: Velocity {
+            vs_mm_s: vs,
+            vy_mm_s: vy,
+            vz_mm_s: vz,
+            vroll_rad_s: vroll,
+            vyaw_rad_s: vyaw,
+            vpitch_rad_s: vpitch,
+        },
+        vertical,
+        dx_mm: s.dx_mm,
+        ds_mm: s.ds_mm,
+        separation: Separation { angle_rad: s.a_sep_rad, distance_mm: s.d_sep_mm, combine_mm: s.d_comb_mm },
+        material,
+    }
+}

@@ -1,0 +1,110 @@
+//! A wheel–rail scene's result folder (docs/scene-format.md, "Wheel–rail result folders"): per
+//! model `<model>.csv`, one row per case with the totals on the rail in track and wheelset
+//! coordinates, and `<model>_patches.csv`, one row per case and patch (CONTACT's order, from 1).
+//! Signs and frames are CONTACT's module-1 output's: forces on the rail, y to the right on both
+//! sides, the rail's y towards the track centre on the left and to the field side on the right.
+
+use crate::error::Error;
+use crate::pipeline::wheelrail::{CaseResult, PatchForces};
+use crate::pipeline::wheelrail_scene::SceneRun;
+use crate::safety::folder;
+use crate::wheelrail::NormalPatch;
+use std::path::{Path, PathBuf};
+
+/// Columns of `<model>.csv`.
+pub const TOTAL_COLUMNS: [&str; 9] =
+    ["contact_case", "n_patches", "z_ws_mm", "fx_tr_n", "fy_tr_n", "fz_tr_n", "fx_ws_n", "fy_ws_n", "fz_ws_n"];
+
+/// Columns of `<model>_patches.csv`.
+pub const PATCH_COLUMNS: [&str; 24] = [
+    "contact_case",
+    "patch",
+    "xcp_tr_mm",
+    "ycp_tr_mm",
+    "zcp_tr_mm",
+    "deltcp_rad",
+    "ycp_r_mm",
+    "zcp_r_mm",
+    "cksi",
+    "ceta",
+    "cphi_per_mm",
+    "veloc_mm_s",
+    "pen_mm",
+    "fn_n",
+    "fx_n",
+    "fs_n",
+    "mn_nmm",
+    "mx",
+    "my",
+    "npot",
+    "ncon",
+    "nadh",
+    "nslip",
+    "pmax_mpa",
+];
+
+/// CSV text of rows of numbers under `header`.
+fn csv_text(header: &[&str], rows: &[Vec<String>]) -> Vec<u8> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record(header).expect("writing to memory");
+    for r in rows {
+        w.write_record(r).expect("writing to memory");
+    }
+    w.into_inner().expect("writing to memory")
+}
+
+/// One model's totals row for a case.
+fn total_row(case: u64, r: &CaseResult, model: usize) -> Vec<String> {
+    let t = &r.models[model].2;
+    let mut row = vec![case.to_string(), r.normal.patches.len().to_string(), r.normal.z_ws_mm.to_string()];
+    row.extend(t.track_n.iter().chain(&t.wheelset_n).map(f64::to_string));
+    row
+}
+
+/// One model's row for a patch of a case, in the side's frame.
+fn patch_row(case: u64, k: usize, r: &CaseResult, p: &NormalPatch, f: &PatchForces) -> Vec<String> {
+    let m = r.normal.side.sign();
+    let o = &p.geometry.frame.origin;
+    let [y_r, z_r] = r.normal.in_rail_mm(o.y, o.z);
+    let c = &p.creepages;
+    let g = &p.geometry.grid;
+    let count = |n: Option<usize>| n.map_or(String::new(), |v| v.to_string());
+    let ncon = p.pn_mpa.iter().filter(|&&v| v > 0.0).count();
+    let pmax = p.pn_mpa.iter().copied().fold(0.0, f64::max);
+    let nums = [o.x, m * o.y, o.z, m * p.geometry.frame.delta_rad, m * y_r, z_r, c.cksi, m * c.ceta, m * c.cphi_per_mm]
+        .into_iter()
+        .chain([c.veloc_mm_s, p.pen_mm, f.fn_n, f.fx_n, f.fs_n, f.mn_nmm]);
+    let mut row = vec![case.to_string(), (k + 1).to_string()];
+    row.extend(nums.map(|v| v.to_string()));
+    row.extend([g.mx.to_string(), g.ms.to_string(), g.len().to_string(), ncon.to_string()]);
+    row.extend([count(f.n_adhesion), count(f.n_slip), pmax.to_string()]);
+    row
+}
+
+/// The files of the result folder: name and contents.
+pub fn files(run: &SceneRun) -> Vec<(String, Vec<u8>)> {
+    let mut out = Vec::new();
+    for (k, model) in run.models.iter().enumerate() {
+        let totals: Vec<_> = run.cases.iter().map(|(c, r)| total_row(*c, r, k)).collect();
+        let patches: Vec<_> = run
+            .cases
+            .iter()
+            .flat_map(|(c, r)| {
+                r.normal
+                    .patches
+                    .iter()
+                    .zip(&r.models[k].1)
+                    .enumerate()
+                    .map(move |(j, (p, f))| patch_row(*c, j, r, p, f))
+            })
+            .collect();
+        out.push((format!("{model}.csv"), csv_text(&TOTAL_COLUMNS, &totals)));
+        out.push((format!("{model}_patches.csv"), csv_text(&PATCH_COLUMNS, &patches)));
+    }
+    out
+}
+
+/// Write the scene's result folder `dir/<name>` (replaced whole, as every result folder).
+pub fn write(dir: &Path, run: &SceneRun) -> Result<PathBuf, Error> {
+    Ok(folder::write_result_folder(dir, &run.name, files(run))?)
+}
