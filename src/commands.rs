@@ -829,8 +829,12 @@ pub fn manifest(dir: &Path) -> Result<(), Error> {
 }
 
 /// `creepbench export contact SCENE --out DIR`: the CONTACT module-3 input that computes the scene
-/// (`DIR/<name>.inp`, written whole; never inside golden/); a study file: one per point.
+/// (`DIR/<name>.inp`, written whole; never inside golden/); a study file: one per point; a
+/// wheel–rail scene: its module-1 input.
 pub fn export_contact(scene_path: &Path, out: &Path, golden: &Path) -> Result<Vec<PathBuf>, Error> {
+    if crate::scene::wheelrail::is_wheelrail_file(scene_path) {
+        return export_contact_wheelrail(scene_path, out, golden);
+    }
     // A scene file, or a study file: every point, all validated before anything is written.
     // CONTACT's own input check refuses what the deck would give it out of its ranges.
     let export_ready = |s: &suite::SceneSource| -> Result<_, Error> {
@@ -859,9 +863,33 @@ pub fn export_contact(scene_path: &Path, out: &Path, golden: &Path) -> Result<Ve
     Ok(paths)
 }
 
+/// `export contact` of a wheel–rail scene: CONTACT's module-1 input `DIR/<name>.inp`, one case per
+/// row, its profiles named from DIR (written whole, replacing nothing; never inside golden/).
+fn export_contact_wheelrail(scene_path: &Path, out: &Path, golden: &Path) -> Result<Vec<PathBuf>, Error> {
+    use crate::export::wheelrail;
+    let in_file = |mut e: InputError| {
+        e.field = format!("{}: {}", scene_path.display(), e.field);
+        e
+    };
+    let scene = crate::scene::wheelrail::WheelRailScene::from_file(scene_path).map_err(in_file)?;
+    wheelrail::check(&scene).map_err(in_file)?;
+    let text = wheelrail::module1_input(&scene, out).map_err(in_file)?;
+    let path = out.join(format!("{}.inp", scene.name));
+    guard::guard_output_dir(out, golden)?;
+    guard::guard_output_file(&path, golden)?;
+    if path.exists() {
+        let allowed = "a folder without this input file (export replaces nothing)";
+        return Err(InputError::new("--out", path.display(), allowed).into());
+    }
+    std::fs::create_dir_all(out).map_err(Error::io(out))?;
+    write_whole(&path, &text)?;
+    Ok(vec![path])
+}
+
 /// `creepbench import contact DECK [--out DIR] [--supported-only] [--overwrite]`: CONTACT's
-/// module-3 input as scenes, one per history (`DIR/<name>.toml` and its tables; DIR defaults to a
-/// folder named after the deck). A deck with a case that is not supported is refused whole (exit
+/// module-3 input as scenes, one per history, its module-1 input as wheel–rail scenes (profiles by
+/// their path from DIR) (`DIR/<name>.toml` and its tables; DIR defaults to a folder named after
+/// the deck). A deck with a case that is not supported is refused whole (exit
 /// 2, every such case listed, nothing written) unless `supported_only`, which writes the supported
 /// scenes and lists the cases skipped. Existing files are replaced only with `overwrite`.
 pub fn import_contact(
@@ -870,7 +898,12 @@ pub fn import_contact(
     options: ImportOptions,
     golden: &Path,
 ) -> Result<Vec<PathBuf>, Error> {
-    let imported = crate::import::contact::import(deck)?;
+    let stem = deck
+        .file_stem()
+        .map(|s| PathBuf::from(s.to_string_lossy().to_string()))
+        .unwrap_or_else(|| PathBuf::from("imported"));
+    let out = out.map(Path::to_path_buf).unwrap_or(stem);
+    let imported = crate::import::contact::import_into(deck, &out)?;
     let skipped: Vec<_> = imported.statuses.iter().filter(|s| !s.supported()).collect();
     for s in &skipped {
         eprintln!(
@@ -898,11 +931,6 @@ pub fn import_contact(
         )
         .into());
     }
-    let stem = deck
-        .file_stem()
-        .map(|s| PathBuf::from(s.to_string_lossy().to_string()))
-        .unwrap_or_else(|| PathBuf::from("imported"));
-    let out = out.map(Path::to_path_buf).unwrap_or(stem);
     guard::guard_output_dir(&out, golden)?;
     let files: Vec<(PathBuf, &String)> =
         imported.scenes.iter().flat_map(|s| s.files.iter().map(|(name, text)| (out.join(name), text))).collect();

@@ -35,9 +35,10 @@ struct SuiteArgs {
 #[derive(Subcommand)]
 enum ExportWhat {
     /// CONTACT module-3 input that computes the scene (one case per history row): OUT/<name>.inp
-    /// (a study file: one input per point).
+    /// (a study file: one input per point); a wheel–rail scene: module-1 input, one case per row
+    /// of its cases table, its profiles named from OUT.
     Contact {
-        /// The scene file, or a study file.
+        /// The scene file (module-3 or wheel–rail), or a study file.
         scene: PathBuf,
         #[arg(long, default_value = "out/contact")]
         out: PathBuf,
@@ -50,8 +51,10 @@ enum ExportWhat {
 /// What `import` reads.
 #[derive(Subcommand)]
 enum ImportWhat {
-    /// CONTACT module-3 input (FILE.inp) as scenes, one per history: OUT/<deck>_<case>.toml with
-    /// its tables (OUT defaults to a folder named after the deck).
+    /// CONTACT input (FILE.inp) as scenes: module-3 cases one per history, module-1 cases one
+    /// wheel–rail scene per run sharing all but the wheelset's position and velocity (profiles by
+    /// their path from OUT): OUT/<deck>_<case>.toml with its tables (OUT defaults to a folder
+    /// named after the deck).
     Contact {
         /// The CONTACT input file.
         deck: PathBuf,

@@ -87,7 +87,7 @@ pub fn same_place(a: &Path, b: &Path) -> Result<bool, GuardError> {
 }
 
 /// `path` made absolute: its longest existing ancestor canonicalised, the rest applied lexically.
-fn resolve(path: &Path) -> Result<PathBuf, GuardError> {
+pub fn resolve(path: &Path) -> Result<PathBuf, GuardError> {
     let io_err = |source| GuardError::Io { path: path.into(), source };
     let absolute = std::path::absolute(path).map_err(io_err)?;
     let mut existing = absolute.as_path();

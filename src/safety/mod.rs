@@ -12,5 +12,6 @@ pub mod lock;
 pub mod manifest;
 pub mod process;
 pub mod read;
+pub mod relative;
 pub mod threads;
 pub mod whole;

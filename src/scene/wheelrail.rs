@@ -4,7 +4,7 @@
 //! wheel–rail stage, from the paths resolved here.
 
 use super::reader::{parse_toml, Range, Section};
-use super::{is_valid_name, MaterialSpec};
+use super::{is_valid_name, MaterialSpec, Origin};
 use crate::error::InputError;
 use std::path::{Path, PathBuf};
 
@@ -75,6 +75,8 @@ pub struct WheelRailScene {
     pub d_comb_mm: f64,
     pub vertical: VerticalSpec,
     pub cases: Vec<CaseRow>,
+    /// The CONTACT deck and cases an imported scene came from (`[origin]`, as a module-3 scene's).
+    pub origin: Option<Origin>,
     /// The scene file's folder.
     pub dir: PathBuf,
 }
@@ -86,6 +88,12 @@ const TAIL: [&str; 8] =
 const LENGTH: Range = Range::new(-1e5, true, 1e5, true);
 const ANGLE: Range = Range::new(-1.5, true, 1.5, true);
 const MAX_CASES: usize = 100_000;
+
+/// The columns of the cases table, in their order: `fz_n` or `z_mm` as `vertical` says.
+pub fn case_columns(vertical: VerticalSpec) -> Vec<&'static str> {
+    let middle = if vertical == VerticalSpec::Force { "fz_n" } else { "z_mm" };
+    LEAD.iter().copied().chain([middle]).chain(TAIL).collect()
+}
 
 /// Whether a parsed TOML document is a wheel–rail scene (it has a `[wheelrail]` table).
 pub fn is_wheelrail(doc: &toml::Table) -> bool {
@@ -106,7 +114,24 @@ pub fn read_if_wheelrail(path: &Path) -> Result<Option<WheelRailScene>, InputErr
     WheelRailScene::from_table(&doc, &dir).map(Some).map_err(in_file)
 }
 
+/// Whether the file at `path` reads as a wheel–rail scene's TOML (false for anything else,
+/// unreadable files included: their reader says why).
+pub fn is_wheelrail_file(path: &Path) -> bool {
+    crate::safety::read::read_text(path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")
+        .ok()
+        .and_then(|text| toml::from_str::<toml::Table>(&text).ok())
+        .is_some_and(|doc| is_wheelrail(&doc))
+}
+
 impl WheelRailScene {
+    /// Read and check the scene file at `path` (its relative paths resolved against its folder).
+    pub fn from_file(path: &Path) -> Result<WheelRailScene, InputError> {
+        let text = crate::safety::read::read_text(path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")
+            .map_err(|e| InputError::new("scene", path.display(), format!("a readable scene file (TOML): {e}")))?;
+        let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        WheelRailScene::from_toml(&text, &dir)
+    }
+
     pub fn from_toml(text: &str, dir: &Path) -> Result<WheelRailScene, InputError> {
         Self::from_table(&parse_toml(text, "scene")?, dir)
     }
@@ -143,6 +168,8 @@ impl WheelRailScene {
         let (wheel, fbd, fbp, radius) = wheel(&mut top, dir)?;
         let material = super::sections::material(&mut top)?;
         let (vertical, cases) = cases(&mut top, dir)?;
+        let origin = super::sections::origin(&mut top)?;
+        check_origin(origin.as_ref(), &cases)?;
         top.finish()?;
         Ok(WheelRailScene {
             name,
@@ -164,9 +191,26 @@ impl WheelRailScene {
             d_comb_mm,
             vertical,
             cases,
+            origin,
             dir: dir.to_path_buf(),
         })
     }
+}
+
+/// `[origin] cases` = [first, last] are the smallest and largest `contact_case` of the table (an
+/// imported scene's rows are the deck's cases it names).
+fn check_origin(origin: Option<&Origin>, cases: &[CaseRow]) -> Result<(), InputError> {
+    let Some(o) = origin else { return Ok(()) };
+    let first = cases.iter().map(|c| c.contact_case).min().unwrap_or(0);
+    let last = cases.iter().map(|c| c.contact_case).max().unwrap_or(0);
+    if [first, last] == o.cases.map(|c| c as u64) {
+        return Ok(());
+    }
+    Err(InputError::new(
+        "origin.cases",
+        format!("{:?}", o.cases),
+        format!("[{first}, {last}]: the smallest and largest contact_case of the cases table"),
+    ))
 }
 
 /// A profile's keys: `profile` (path), `mirror_y`, `scale`, `smooth`.
@@ -221,9 +265,7 @@ fn cases(top: &mut Section, dir: &Path) -> Result<(VerticalSpec, Vec<CaseRow>), 
     let field = c.field("file");
     let file = c.str("file", "a CSV path relative to the scene file (columns in docs/scene-format.md)")?;
     c.finish()?;
-    let middle = if vertical == VerticalSpec::Force { "fz_n" } else { "z_mm" };
-    let names: Vec<&str> = LEAD.iter().copied().chain([middle]).chain(TAIL).collect();
-    let (cols, lines, origin) = super::geometry::read_columns(&dir.join(file), &field, &names)?;
+    let (cols, lines, origin) = super::geometry::read_columns(&dir.join(file), &field, &case_columns(vertical))?;
     let n = cols[0].len();
     if n == 0 || n > MAX_CASES {
         return Err(InputError::new(&origin, format!("{n} rows"), format!("1 to {MAX_CASES} cases")));

@@ -417,8 +417,10 @@ fn testbank_imports_two_cases_and_names_every_other_with_its_reason() {
     assert_eq!(ok.len() + no.len(), imported.statuses.len());
     let module1: Vec<usize> = imported.statuses.iter().filter(|s| s.module == 1).map(|s| s.case).collect();
     assert!(!module1.is_empty());
+    // Module 1: every case of the test bank is refused for what the wheel-rail scene lacks
+    // (tests/all/contact_wheelrail_import.rs names each).
     for s in imported.statuses.iter().filter(|s| s.module == 1) {
-        assert!(s.refused[0].starts_with("MODULE = 1: wheel-rail contact"), "{s:?}");
+        assert!(s.scene.is_none() && !s.refused.is_empty() && !s.refused[0].starts_with("MODULE = 1"), "{s:?}");
     }
     // Case 3: dissimilar materials are refused with Kalker's K.
     assert!(imported.statuses[2].refused.iter().any(|r| r.starts_with("K = ") && r.contains("dissimilar")));

@@ -12,6 +12,7 @@ mod contact_public;
 mod contact_solver;
 mod contact_to_csv;
 mod contact_wheelrail;
+mod contact_wheelrail_import;
 mod docs;
 mod envelope;
 mod external_and_gate;

@@ -2,7 +2,8 @@
 //! the project's physics does not have is refused naming its control word and value, never
 //! dropped; one that changes no result is accepted with a note. New physics (prescribed forces,
 //! shifts, falling friction, …) is switched on here, in its row. Module 1 (wheel–rail) has its
-//! own table, [`WHEELRAIL_FEATURES`], read by [`assess_wheelrail`].
+//! own table, [`WHEELRAIL_FEATURES`], read by [`assess_wheelrail`]; what the wheel–rail scene
+//! cannot say besides is in `scene::wheelrail::SCENE_LIMITS`, which gives the import's verdict.
 
 use super::deck::{Case3, Potcon};
 use super::wheelrail_deck::{FrictionVariation, ProfileFormat, ProfileSpec, WheelRailCase};

@@ -1,8 +1,10 @@
 //! `creepbench import contact FILE.inp` (issue 32): CONTACT's module-3 input → scenes of this
-//! project, one per history, each remembering its deck and cases (`[origin]`). The deck is read
-//! whole ([`deck`]), every case is assessed against the one feature table ([`features`]), the
-//! cases are grouped into histories and written as scenes ([`scene`]), and every scene is read back
-//! with the project's own reader before anything is written.
+//! project, one per history, each remembering its deck and cases (`[origin]`); its module-1 input
+//! (issue 44) → wheel–rail scenes, one per run of cases that share all but the wheelset's position
+//! and velocity ([`scene::wheelrail`]). The deck is read whole ([`deck`]), every case is assessed
+//! against the feature tables ([`features`], and for module 1 what the wheel–rail scene can say),
+//! the cases are grouped and written as scenes ([`scene`]), and every scene is read back with the
+//! project's own reader before anything is written.
 
 pub mod deck;
 pub mod features;
@@ -84,9 +86,18 @@ pub fn survey(path: &Path) -> Result<Vec<CaseStatus>, InputError> {
 }
 
 /// The scenes of the deck at `path` (built and read back with the project's reader in a
-/// temporary folder; nothing is written) and the status of every case.
+/// temporary folder; nothing is written) and the status of every case; wheel–rail scenes as
+/// written beside the deck (their profile paths relative to the deck's folder).
 pub fn import(path: &Path) -> Result<scene::Imported, InputError> {
+    import_into(path, path.parent().unwrap_or(Path::new("")))
+}
+
+/// [`import`] for scenes to be written into the folder `out`: a wheel–rail scene's profile paths
+/// lead from `out` to the files the deck names in its folder (which must exist).
+pub fn import_into(path: &Path, out: &Path) -> Result<scene::Imported, InputError> {
     let (file, text) = read(path)?;
     let stem = path.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default();
-    scene::import_text(&file, &stem, &text)
+    let deck = path.parent().unwrap_or(Path::new("")).to_path_buf();
+    let paths = scene::wheelrail::ProfilePaths::Relative { deck, out: out.to_path_buf() };
+    scene::import_text_with(&file, &stem, &text, &paths)
 }

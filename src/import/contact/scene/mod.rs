@@ -13,6 +13,7 @@ mod history;
 mod loading;
 mod read_back;
 mod rows;
+pub mod wheelrail;
 mod window;
 
 pub use rows::{along_x, chi_deg, force_ratio};
@@ -44,21 +45,41 @@ pub struct Imported {
 }
 
 /// The scenes of a deck's text (`file`: its name for `[origin]` and messages; `stem`: the scene
-/// names' prefix).
+/// names' prefix); a wheel–rail scene's profiles as the deck names them (a scene beside the deck).
 pub fn import_text(file: &str, stem: &str, text: &str) -> Result<Imported, InputError> {
+    import_text_with(file, stem, text, &wheelrail::ProfilePaths::AsNamed)
+}
+
+/// [`import_text`] with the wheel–rail scenes' profile paths from `paths`: module-3 cases become
+/// scenes of histories, module-1 cases wheel–rail scenes ([`wheelrail`]), in the deck's order.
+pub fn import_text_with(
+    file: &str,
+    stem: &str,
+    text: &str,
+    paths: &wheelrail::ProfilePaths,
+) -> Result<Imported, InputError> {
     let cases = deck::parse(file, text)?;
+    let mut imported = module3(file, stem, &cases)?;
+    let module1 = wheelrail::scenes(file, stem, &cases, &mut imported.statuses, paths);
+    imported.scenes.extend(module1);
+    imported.scenes.sort_by_key(|s| s.cases[0]);
+    Ok(imported)
+}
+
+/// The module-3 cases' scenes, and every case's status (a module-1 case's its assessment).
+fn module3(file: &str, stem: &str, cases: &[Case]) -> Result<Imported, InputError> {
     let mut statuses: Vec<CaseStatus> = cases.iter().map(status).collect();
     // Steady cases whose creepages no sweep reproduces exactly are scenes of one case each.
-    let grouped = group(&cases, &mut statuses);
+    let grouped = group(cases, &mut statuses);
     for h in &grouped {
-        check_union(&cases, h, &mut statuses);
+        check_union(cases, h, &mut statuses);
     }
     let histories: Vec<History> = grouped
         .into_iter()
         .flat_map(|h| {
             let points: Vec<[f64; 3]> =
-                h.cases.iter().map(|&k| row(case3(&cases, k))).map(|r| [r[0], r[1], r[2]]).collect();
-            if h.run == Run::Sweep && speeds(&cases, &h).is_none() && sweep_of(&points).is_none() {
+                h.cases.iter().map(|&k| row(case3(cases, k))).map(|r| [r[0], r[1], r[2]]).collect();
+            if h.run == Run::Sweep && speeds(cases, &h).is_none() && sweep_of(&points).is_none() {
                 h.cases.iter().map(|&k| History { run: Run::Sweep, cases: vec![k] }).collect()
             } else {
                 vec![h]
@@ -86,7 +107,7 @@ pub fn import_text(file: &str, stem: &str, text: &str) -> Result<Imported, Input
         };
         let numbers: Vec<usize> = h.cases.iter().map(|&k| cases[k].number).collect();
         let span = format!("cases {} to {}", numbers[0], numbers[numbers.len() - 1]);
-        match build(file, stem, &cases, &h) {
+        match build(file, stem, cases, &h) {
             Ok(s) => {
                 for &k in &h.cases {
                     statuses[k].scene = Some(s.name.clone());
@@ -106,13 +127,10 @@ pub fn import_text(file: &str, stem: &str, text: &str) -> Result<Imported, Input
 fn status(c: &Case) -> CaseStatus {
     let base = CaseStatus { case: c.number, line: c.line, module: 3, scene: None, refused: vec![], notes: vec![] };
     match &c.kind {
-        CaseKind::Module1(_) => CaseStatus {
-            module: 1,
-            refused: vec![
-                "MODULE = 1: wheel-rail contact (module 1) is not supported; module 3 cases are imported".into()
-            ],
-            ..base
-        },
+        CaseKind::Module1(wr) => {
+            let (refused, notes) = wheelrail::assess(wr);
+            CaseStatus { module: 1, refused, notes, ..base }
+        }
         CaseKind::Module3(c3) => {
             let (refused, notes) = features::assess(c3);
             CaseStatus { refused, notes, ..base }

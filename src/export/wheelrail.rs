@@ -1,0 +1,152 @@
+//! A wheel–rail scene as CONTACT module-1 input (issue 44; CONTACT's user guide, "Specification of
+//! the input file", module 1), one CONTACT case per row of its cases table, as
+//! reference/contact_wheelrail/examples/mbench_a22_left.inp forms its cases: the first case gives
+//! everything (C-P-B-T-N-F-S = C203N00, V-L-D-C-M-Z-E = 0022033, H-G-I-A-O-W-R = 0000321: the
+//! solver's limits, FSTAT = FKIN = mu, POISS and GG of both bodies the scene's, DX, DS with DQREL 1,
+//! the scene's A_SEP, D_SEP, D_COMB, the track, the rail profile with zero deviations, the
+//! wheelset's dimensions, the wheel profile, the position and velocities); each later case keeps all
+//! but its position and velocities (0111002, 0100321). C is the side (0 left, 1 right), N the
+//! vertical problem (1: FZ prescribed, 0: the height Z_WS); S_WS and PITCH are 0. Profile names are
+//! written relative to the deck's folder, where CONTACT looks for them.
+
+use crate::error::InputError;
+use crate::safety::relative::relative;
+use crate::scene::wheelrail::{CaseRow, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene};
+use crate::scene::MaterialSpec;
+use crate::wheelrail::profile::options::SCALE_MIN;
+use std::fmt::Write;
+use std::path::Path;
+
+/// CONTACT's smallest Coulomb coefficient (`m_friclaw.f90`, `fric_input`: FKIN in [1e-4, 1e10]).
+const FKIN_MIN: f64 = 1e-4;
+/// Longest profile name written: a line of CONTACT's input holds 256 characters
+/// (`m_print_output.f90`, MAX_CHAR_INP), the name and its three values.
+const NAME_MAX: usize = 200;
+
+/// The scene's values CONTACT's input check would refuse or change (an error names the scene's key):
+/// mu below CONTACT's FKIN range, a profile scale CONTACT replaces by 1.
+pub fn check(s: &WheelRailScene) -> Result<(), InputError> {
+    if s.mu < FKIN_MIN {
+        let allowed = format!(
+            "a coefficient of friction of at least {FKIN_MIN:e} (CONTACT's FSTAT = FKIN, m_friclaw.f90 fric_input)"
+        );
+        return Err(InputError::new("wheelrail.mu", s.mu, allowed));
+    }
+    for (key, p) in [("rail.scale", &s.rail), ("wheel.scale", &s.wheel)] {
+        if p.scale <= SCALE_MIN {
+            let allowed = format!("a scale above {SCALE_MIN} (CONTACT replaces a smaller SCALE by 1, m_profile.f90)");
+            return Err(InputError::new(key, p.scale, allowed));
+        }
+    }
+    Ok(())
+}
+
+/// The module-1 deck of the scene, to be written into the folder `deck_dir` (existing or not).
+pub fn module1_input(s: &WheelRailScene, deck_dir: &Path) -> Result<String, InputError> {
+    let rail = profile_name(&s.rail, "rail.profile", deck_dir)?;
+    let wheel = profile_name(&s.wheel, "wheel.profile", deck_dir)?;
+    let mut out = format!(
+        "%\n% CONTACT module-1 input written by creepbench for the wheel-rail scene \"{}\" ({} cases, one per row\n% of its cases table).\n%\n",
+        s.name,
+        s.cases.len()
+    );
+    for (n, row) in s.cases.iter().enumerate() {
+        let _ = writeln!(out, "\n  1 MODULE      % row {}, contact_case {}", n + 1, row.contact_case);
+        control_words(s, n == 0, &mut out);
+        if n == 0 {
+            setup(s, (&rail, &wheel), &mut out);
+        }
+        position_and_velocity(s.vertical, row, &mut out);
+    }
+    out.push_str("\n 0 MODULE\n");
+    Ok(out)
+}
+
+/// A profile's name as the deck gives it: its path from the deck's folder, which CONTACT can quote.
+fn profile_name(p: &ProfileSpec, key: &str, deck_dir: &Path) -> Result<String, InputError> {
+    let rel = relative(deck_dir, &p.path).map_err(|e| InputError::new(key, p.path.display(), e.to_string()))?;
+    match rel.to_str() {
+        Some(name) if !name.contains('\'') && name.len() <= NAME_MAX => Ok(name.to_string()),
+        _ => Err(InputError::new(
+            key,
+            rel.display(),
+            format!(
+                "a UTF-8 path from the deck's folder without ' of at most {NAME_MAX} characters (CONTACT's input line)"
+            ),
+        )),
+    }
+}
+
+/// The three control words: the first case reads everything, the later ones position and velocity.
+fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
+    let c = u8::from(s.side == SideSpec::Right);
+    let n = u8::from(s.vertical == VerticalSpec::Force);
+    let (vldcmze, hgiaowr) = if first { ("0022033", "0000321") } else { ("0111002", "0100321") };
+    let _ = writeln!(out, " {c}203{n}00    C-P-B-T-N-F-S   CONFIG, PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS");
+    let _ = writeln!(out, " {vldcmze}    V-L-D-C-M-Z-E   VARFRC, FRCLAW, DISCNS, INFLCF, MATER,  ZTRACK, EWHEEL");
+    let _ = writeln!(out, " {hgiaowr}    H-G-I-A-O-W-R     HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW,   RETURN");
+}
+
+/// The first case's groups: solver, friction, material, discretisation, track, rail, wheelset.
+fn setup(s: &WheelRailScene, (rail, wheel): (&str, &str), out: &mut String) {
+    let (g, nu) = (shear_modulus(&s.material), s.material.poisson);
+    let _ = writeln!(out, "    999     100    30    1     1e-5         MAXGS , MAXIN , MAXNR , MAXOUT, EPS");
+    let _ = writeln!(out, "  {:?}   {:?}                                 FSTAT, FKIN", s.mu, s.mu);
+    let _ = writeln!(out, "  {nu:?}   {nu:?}   {g:?}   {g:?}                POISS 1,2,  GG 1,2");
+    let _ = writeln!(
+        out,
+        "  {:?}   {:?}   1.0   {:?}   {:?}   {:?}       DX, DS, DQREL, A_SEP, D_SEP, D_COMB",
+        s.dx_mm, s.ds_mm, s.a_sep_rad, s.d_sep_mm, s.d_comb_mm
+    );
+    let _ = match s.placement {
+        PlacementSpec::Gauge { height_mm, width_mm } => {
+            writeln!(out, "  {height_mm:?}   0   {width_mm:?}   {:?}         GAUGHT, GAUGSQ, GAUGWD, CANT", s.cant_rad)
+        }
+        PlacementSpec::Absolute { y_mm, z_mm } => {
+            writeln!(out, "  -1.0   {y_mm:?}   {z_mm:?}   {:?}         GAUGHT, RAILY0, RAILZ0, CANT", s.cant_rad)
+        }
+    };
+    profile_line(rail, &s.rail, "RFNAME", out);
+    let _ = writeln!(out, "     0.0    0.0   0.0   0.0   0.0   0.0     DY, DZ, ROLL, VY, VZ, VROLL");
+    let _ = writeln!(
+        out,
+        "  {:?}   {:?}   {:?}                         FBDIST, FBPOS, NOMRAD",
+        s.flange_back_distance_mm, s.flange_back_position_mm, s.nominal_radius_mm
+    );
+    profile_line(wheel, &s.wheel, "WFNAME", out);
+}
+
+/// G as the scene gives it, or from E and ν (the reader requires one of them).
+fn shear_modulus(m: &MaterialSpec) -> f64 {
+    match (m.g_mpa, m.e_mpa) {
+        (Some(g), _) => g,
+        (None, Some(e)) => crate::physics::Material::from_e(e, m.poisson).g_mpa,
+        (None, None) => f64::NAN,
+    }
+}
+
+/// `'NAME' MIRRORY SCALE SMOOTH`.
+fn profile_line(name: &str, p: &ProfileSpec, what: &str, out: &mut String) {
+    let _ = writeln!(
+        out,
+        "  '{name}'   {}   {:?}   {:?}       {what}, MIRRORY, SCALE, SMOOTH",
+        u8::from(p.mirror_y),
+        p.scale,
+        p.smooth
+    );
+}
+
+/// S_WS = 0, Y_WS, FZ or Z_WS, ROLL, YAW, PITCH = 0; then VS, VY, VZ, VROLL, VYAW, VPITCH.
+fn position_and_velocity(vertical: VerticalSpec, r: &CaseRow, out: &mut String) {
+    let third = if vertical == VerticalSpec::Force { "FZ" } else { "Z" };
+    let _ = writeln!(
+        out,
+        "  0.0   {:?}   {:?}   {:?}   {:?}   0.0      S, Y, {third}, ROLL, YAW, PITCH",
+        r.y_mm, r.vertical, r.roll_rad, r.yaw_rad
+    );
+    let [vs, vy, vz, vroll, vyaw, vpitch] = r.velocity;
+    let _ = writeln!(
+        out,
+        "  {vs:?}   {vy:?}   {vz:?}   {vroll:?}   {vyaw:?}   {vpitch:?}      VS, VY, VZ, VROLL, VYAW, VPITCH"
+    );
+}

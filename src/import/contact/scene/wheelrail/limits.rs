@@ -1,0 +1,265 @@
+//! What a wheel–rail scene cannot say (docs/scene-format.md, "A wheel–rail scene"), beyond the
+//! unsupported rows of [`features::WHEELRAIL_FEATURES`]: a case using a refused row is not
+//! imported, named with the row's value and reason; an accepted row is a note (read, not carried,
+//! changes no result of the scene). The verdict of a case is [`assess`]: the feature table's
+//! unsupported rows and this table's refused ones, the rest notes.
+
+use super::super::super::features::{self, WheelRailFeature};
+use super::super::super::wheelrail_deck::{
+    Along, FrictionValues, ProfileCuration, ProfileFormat, ProfileSpec, RailPlacement, TrackFourth, WheelRailCase,
+};
+use std::f64::consts::PI;
+
+/// One thing the scene cannot carry (a row of [`SCENE_LIMITS`]).
+pub struct SceneLimit {
+    pub name: &'static str,
+    pub control: &'static str,
+    /// Whether a case using it is imported (its value then not carried: a note).
+    pub accepted: bool,
+    pub reason: &'static str,
+    pub used: fn(&WheelRailCase) -> Option<String>,
+}
+
+/// Rows of [`features::WHEELRAIL_FEATURES`] whose verdict [`SCENE_LIMITS`] gives instead: what the
+/// project's physics carries (or is to carry) but the scene does not say.
+const REPLACED: [WheelRailFeature; 5] = [
+    WheelRailFeature::TransientContact,
+    WheelRailFeature::FrictionLaw,
+    WheelRailFeature::ConformalInfluence,
+    WheelRailFeature::BilinearInfluence,
+    WheelRailFeature::PatchCombination,
+];
+
+/// CONTACT's defaults of the profile curation (`m_profile.f90`, `profile_init`): ISMOOTH 0,
+/// ZIGTHRS 150°, KINKHIGH 30°, KINKLOW KINKHIGH/5, KINKWID 2 mm, MAXOMIT 0.5 — the project's
+/// profile stage's (`wheelrail::profile::options`).
+const CURATION_DEFAULT: (i64, [f64; 4], f64) = (0, [150.0 * PI / 180.0, 30.0 * PI / 180.0, 6.0 * PI / 180.0, 2.0], 0.5);
+
+/// Every limit of the scene, in the order of the input.
+pub const SCENE_LIMITS: &[SceneLimit] = &[
+    SceneLimit {
+        name: "shifts, transient rolling and frictionless compression",
+        control: "T",
+        accepted: false,
+        reason: "supported: T = 3 (steady rolling); the wheel-rail scene solves steady rolling at its mu (T = 1, 2 would need the previous case's tractions carried on a wheel-rail grid)",
+        used: |c| (c.digits.t != 3).then(|| format!("T = {}", c.digits.t)),
+    },
+    SceneLimit {
+        name: "friction laws other than Coulomb's",
+        control: "L",
+        accepted: false,
+        reason: "supported: L = 0 (Coulomb) or L = 1 keeping it; the wheel-rail scene carries one Coulomb coefficient (wheelrail.mu), not the falling laws (2, 3, 4) nor temperature-dependent friction (6)",
+        used: |c| c.state.friction.as_ref().filter(|f| f.law != 0).map(|f| format!("L (in force) = {}", f.law)),
+    },
+    SceneLimit {
+        name: "influence functions other than the half-space's with piecewise constant tractions",
+        control: "C3",
+        accepted: false,
+        reason: "supported: C3 = 2 (piecewise constant) or 0, 1 keeping it; the wheel-rail scene has no choice of influence functions: not the bilinear (3) nor the conformal (4) ones",
+        used: |c| {
+            let m = c.state.material.as_ref()?;
+            (m.influence != 2).then(|| format!("C3 (in force) = {}", m.influence))
+        },
+    },
+    SceneLimit {
+        name: "the contact reference weighted linearly by the gap",
+        control: "M2 (tens digit)",
+        accepted: false,
+        reason: "supported: gap weighting 0 or 2 (CONTACT's default: the squared gap, as the project's patch search)",
+        used: |c| (c.digits.gap_weighting == 1).then(|| "gap weighting = 1".to_string()),
+    },
+    SceneLimit {
+        name: "a canted rail placed absolutely",
+        control: "GAUGHT, CANT",
+        accepted: false,
+        reason: "supported: CANT = 0 with absolute placement (GAUGHT <= 0), any CANT with the gauge point (GAUGHT > 0); the project's rotation of a rail placed by RAILY0, RAILZ0 is not checked against CONTACT",
+        used: |c| {
+            let t = c.state.track?;
+            let cant = match t.fourth {
+                TrackFourth::CantRad(r) => r,
+                TrackFourth::RollerRadiusMm(_) => 0.0,
+            };
+            (matches!(t.placement, RailPlacement::Absolute { .. }) && cant != 0.0)
+                .then(|| format!("GAUGHT = {}, CANT = {cant}", gaught(&t.placement)))
+        },
+    },
+    SceneLimit {
+        name: "a SIMPACK profile's own mirroring undone",
+        control: "MIRRORY",
+        accepted: false,
+        reason: "supported: MIRRORY = 0 or 1 on a SIMPACK file (-1 cancels the file's mirror.y, which the scene's mirror_y cannot say); -1 on other files is 0",
+        used: |c| each_profile(c, |p| p.format() == ProfileFormat::Simpack && p.mirror_y == -1, |p| format!("MIRRORY = {}", p.mirror_y)),
+    },
+    SceneLimit {
+        name: "MIRRORY = -1 on a profile that is not a SIMPACK file",
+        control: "MIRRORY",
+        accepted: true,
+        reason: "taken as 0 (as is), as CONTACT takes it: mirror_y = false",
+        used: |c| each_profile(c, |p| p.format() != ProfileFormat::Simpack && p.mirror_y == -1, |p| format!("MIRRORY = {}", p.mirror_y)),
+    },
+    SceneLimit {
+        name: "mirroring of a profile's z given",
+        control: "MIRRORZ",
+        accepted: false,
+        reason: "supported: MIRRORZ = 0 (CONTACT's default: detected for Miniprof files and tables, as the project's profile stage does)",
+        used: |c| each_profile(c, |p| p.mirror_z != 0, |p| format!("MIRRORZ = {}", p.mirror_z)),
+    },
+    SceneLimit {
+        name: "profile curation other than CONTACT's defaults",
+        control: "PRFOPT, ISMOOTH, ZIGTHRS, KINKHIGH, KINKLOW, KINKWID, MAXOMIT",
+        accepted: false,
+        reason: "supported: PRFOPT = 0, or PRFOPT = 1, 2 repeating CONTACT's defaults (ISMOOTH 0, ZIGTHRS 150d, KINKHIGH 30d, KINKLOW 6d, KINKWID 2 mm, MAXOMIT 0.5), which the project's profile stage uses",
+        used: |c| each_profile(c, |p| p.curation.is_some_and(|k| !default_curation(&k)), curation_value),
+    },
+    SceneLimit {
+        name: "profile curation repeating CONTACT's defaults",
+        control: "PRFOPT",
+        accepted: true,
+        reason: "the project's profile stage uses these defaults; ERRHND (messages only) is not carried",
+        used: |c| each_profile(c, |p| p.curation.is_some_and(|k| default_curation(&k)), curation_value),
+    },
+    SceneLimit {
+        name: "an input group never given",
+        control: "C3, D, E",
+        accepted: false,
+        reason: "each of POISS, GG (C3 = 2-4), DX, DS (D = 2-9), the track (Z = 1, 3), the wheelset position and velocity (E >= 2) in this or an earlier module-1 case: the scene carries no CONTACT default",
+        used: missing,
+    },
+    SceneLimit {
+        name: "the patch search's thresholds",
+        control: "DQREL, A_SEP, D_SEP, D_COMB, D_TURN, G_MISS",
+        accepted: true,
+        reason: "A_SEP, D_SEP, D_COMB carried ([wheelrail] a_sep_rad, d_sep_mm, d_comb_mm); regions within D_SEP are solved as one patch where CONTACT blends those beyond D_COMB, and D_TURN's turning and G_MISS's near misses are not modelled; DQREL is a transient step",
+        used: |c| {
+            let d = c.state.discretisation.as_ref()?;
+            Some(format!(
+                "DQREL, A_SEP, D_SEP, D_COMB, D_TURN, G_MISS = {}, {}, {}, {}, {}, {}",
+                d.dqrel,
+                d.a_sep_rad,
+                d.d_sep_mm,
+                d.d_comb_mm,
+                d.d_turn_mm(),
+                d.g_miss_mm
+            ))
+        },
+    },
+    SceneLimit {
+        name: "a gauge face other than the inner-most",
+        control: "GAUGSQ",
+        accepted: true,
+        reason: "not carried: CONTACT reserves GAUGSQ and uses the inner-most face (user guide: n.y.a.), as the project",
+        used: |c| match c.state.track?.placement {
+            RailPlacement::Gauge { gaugsq, .. } if gaugsq != 0 => Some(format!("GAUGSQ = {gaugsq}")),
+            _ => None,
+        },
+    },
+    SceneLimit {
+        name: "static friction other than kinetic friction",
+        control: "FSTAT, FKIN",
+        accepted: true,
+        reason: "CONTACT's Coulomb law takes FSTAT (FKIN within 0.1 % of it): mu = FSTAT",
+        used: |c| {
+            let f = c.state.friction.as_ref()?;
+            match f.sets.first()?.values {
+                FrictionValues::Coulomb { fstat, fkin } if fstat != fkin => Some(format!("FSTAT = {fstat}, FKIN = {fkin}")),
+                _ => None,
+            }
+        },
+    },
+    SceneLimit {
+        name: "the wheelset's place along the track and its pitch angle",
+        control: "S_WS, PITCH",
+        accepted: true,
+        reason: "not carried: one rail profile along the track and a wheel of revolution give the same contact at every S_WS and PITCH",
+        used: |c| {
+            let p = c.state.position?;
+            let s = match p.along {
+                Along::SMm(s) | Along::XMm(s) => s,
+            };
+            (s != 0.0 || p.pitch_rad != 0.0).then(|| format!("S_WS = {s}, PITCH = {}", p.pitch_rad))
+        },
+    },
+];
+
+fn gaught(p: &RailPlacement) -> f64 {
+    match *p {
+        RailPlacement::Gauge { gaught_mm, .. } | RailPlacement::Absolute { gaught_mm, .. } => gaught_mm,
+    }
+}
+
+/// The value of the rail's and the wheel's profile where `uses` holds ("rail: …, wheel: …").
+fn each_profile(
+    c: &WheelRailCase,
+    uses: impl Fn(&ProfileSpec) -> bool,
+    value: impl Fn(&ProfileSpec) -> String,
+) -> Option<String> {
+    let pairs = [("rail", c.state.rail_profile.as_ref()), ("wheel", c.state.wheel_profile.as_ref())];
+    let used: Vec<String> =
+        pairs.iter().filter_map(|(side, p)| p.filter(|p| uses(p)).map(|p| format!("{} ({side})", value(p)))).collect();
+    (!used.is_empty()).then(|| used.join(", "))
+}
+
+/// Whether a curation repeats CONTACT's defaults (angles within 1e-12 relative, as `90d` parses).
+fn default_curation(k: &ProfileCuration) -> bool {
+    let (ismooth, angles, max_omit) = CURATION_DEFAULT;
+    let given = [k.zigthrs_rad, k.kinkhigh_rad, k.kinklow_rad, k.kinkwid_mm];
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
+    k.ismooth == ismooth
+        && given.iter().zip(angles).all(|(&a, b)| close(a, b))
+        && k.errors.is_none_or(|(_, omit)| omit == max_omit)
+}
+
+fn curation_value(p: &ProfileSpec) -> String {
+    match p.curation {
+        Some(k) => format!(
+            "PRFOPT = {}: ISMOOTH, ZIGTHRS, KINKHIGH, KINKLOW, KINKWID = {}, {}, {}, {}, {}{}",
+            p.prfopt,
+            k.ismooth,
+            k.zigthrs_rad,
+            k.kinkhigh_rad,
+            k.kinklow_rad,
+            k.kinkwid_mm,
+            k.errors.map(|(e, m)| format!(", ERRHND, MAXOMIT = {e}, {m}")).unwrap_or_default()
+        ),
+        None => format!("PRFOPT = {}", p.prfopt),
+    }
+}
+
+/// The groups the case has never been given, named.
+fn missing(c: &WheelRailCase) -> Option<String> {
+    let s = &c.state;
+    let groups = [
+        ("POISS, GG", s.material.is_none()),
+        ("DX, DS", s.discretisation.is_none()),
+        ("the track", s.track.is_none()),
+        ("FBDIST, FBPOS, NOMRAD", s.wheelset.is_none()),
+        ("the wheelset position", s.position.is_none()),
+        ("the wheelset velocity", s.velocity.is_none()),
+        ("the friction", s.friction.is_none()),
+    ];
+    let names: Vec<&str> = groups.iter().filter(|(_, m)| *m).map(|(n, _)| *n).collect();
+    (!names.is_empty()).then(|| format!("never given: {}", names.join(", ")))
+}
+
+/// A case's refusals and notes, each `value: name (reason)` as module 3 names them.
+pub fn assess(case: &WheelRailCase) -> (Vec<String>, Vec<String>) {
+    let (mut refused, mut notes) = (Vec::new(), Vec::new());
+    for f in features::assess_wheelrail(case).into_iter().filter(|f| !REPLACED.contains(&f.feature)) {
+        if f.supported {
+            notes.push(f.to_string());
+        } else {
+            refused.push(f.to_string());
+        }
+    }
+    for limit in SCENE_LIMITS {
+        if let Some(value) = (limit.used)(case) {
+            let line = format!("{value}: {} ({})", limit.name, limit.reason);
+            if limit.accepted {
+                notes.push(line);
+            } else {
+                refused.push(line);
+            }
+        }
+    }
+    (refused, notes)
+}

@@ -1,0 +1,193 @@
+//! Module-1 cases → wheel–rail scenes (docs/scene-format.md, "A wheel–rail scene"; CONTACT's
+//! user guide, Chapter 3 "Module 1: wheel/rail contact"). Each case is assessed ([`limits`]); the
+//! supported ones become a one-row scene each ([`case_scene`]): the side (C), the profiles and
+//! their options, the track, the wheelset's dimensions, the material (POISS, GG combined as module 3
+//! combines them), Coulomb's mu = FSTAT, DX, DS and the vertical problem (N), the row its position
+//! and velocities. Consecutive cases whose one-row scenes agree but for the row are one scene
+//! (`<deck>_<first case>`, its rows in `<name>_cases.csv`, `[origin]` the deck and its first and
+//! last case), written ([`write`]) and read back before anything is written.
+
+mod limits;
+mod paths;
+mod write;
+
+pub use limits::{SceneLimit, SCENE_LIMITS};
+pub use paths::ProfilePaths;
+
+use super::super::deck::{Case, CaseKind};
+use super::super::wheelrail_deck::{
+    Along, Forward, PitchInput, RailPlacement, Side, TrackFourth, Vertical, WheelRailCase,
+};
+use super::super::CaseStatus;
+use super::{scene_name, SceneFiles};
+use crate::physics::material::combine_bodies;
+use crate::scene::wheelrail::{CaseRow, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene};
+use crate::scene::{MaterialSpec, Origin};
+use std::path::PathBuf;
+
+/// A module-1 case's refusals and notes ([`limits::assess`]).
+pub(super) fn assess(case: &WheelRailCase) -> (Vec<String>, Vec<String>) {
+    limits::assess(case)
+}
+
+/// A supported module-1 case as a one-row scene: its index into the deck's cases, number and scene.
+struct Member {
+    k: usize,
+    number: usize,
+    scene: WheelRailScene,
+}
+
+/// The wheel–rail scenes of the deck's supported module-1 cases; a case whose scene cannot be
+/// made or read back has the reason added to its status.
+pub(super) fn scenes(
+    file: &str,
+    stem: &str,
+    cases: &[Case],
+    statuses: &mut [CaseStatus],
+    paths: &ProfilePaths,
+) -> Vec<SceneFiles> {
+    let mut members = Vec::new();
+    for (k, c) in cases.iter().enumerate() {
+        let CaseKind::Module1(wr) = &c.kind else { continue };
+        if !statuses[k].supported() {
+            continue;
+        }
+        match case_scene(wr, paths) {
+            Ok(scene) => members.push(Member { k, number: c.number, scene }),
+            Err(why) => statuses[k].refused.push(why),
+        }
+    }
+    let mut out = Vec::new();
+    for group in groups(members) {
+        let ks: Vec<usize> = group.iter().map(|m| m.k).collect();
+        match build(file, stem, group) {
+            Ok(s) => {
+                for &k in &ks {
+                    statuses[k].scene = Some(s.name.clone());
+                }
+                out.push(s);
+            }
+            Err((span, e)) => {
+                for &k in &ks {
+                    statuses[k].refused.push(format!("the project refuses the scene of {span}: {e}"));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Runs of consecutive cases (case numbers one apart) whose scenes agree but for their rows.
+fn groups(members: Vec<Member>) -> Vec<Vec<Member>> {
+    let mut out: Vec<Vec<Member>> = Vec::new();
+    for m in members {
+        match out.last_mut() {
+            Some(g) if joins(g.last().map(|l| (l.number, &l.scene)), &m) => g.push(m),
+            _ => out.push(vec![m]),
+        }
+    }
+    out
+}
+
+/// Whether `m` continues the group whose last member is `last`.
+fn joins(last: Option<(usize, &WheelRailScene)>, m: &Member) -> bool {
+    last.is_some_and(|(number, scene)| {
+        number + 1 == m.number && WheelRailScene { cases: m.scene.cases.clone(), ..scene.clone() } == m.scene
+    })
+}
+
+/// The scene of a group: its name, rows and `[origin]`, written and read back; or the group's
+/// span and why not.
+fn build(file: &str, stem: &str, group: Vec<Member>) -> Result<SceneFiles, (String, crate::error::InputError)> {
+    let numbers = [group[0].number, group[group.len() - 1].number];
+    let span = format!("cases {} to {}", numbers[0], numbers[1]);
+    let mut scene = group[0].scene.clone();
+    scene.name = scene_name(stem, numbers[0]);
+    scene.cases = group.iter().flat_map(|m| m.scene.cases.iter().copied()).collect();
+    scene.origin = Some(Origin { file: file.to_string(), cases: numbers });
+    let place = format!("{file}, {span}");
+    let files = write::files(&scene, file).map_err(|e| (span.clone(), e))?;
+    write::read_back(&scene, &files, &place).map_err(|e| (span.clone(), e))?;
+    Ok(SceneFiles { name: scene.name, cases: numbers, files })
+}
+
+/// A supported case as a scene of one row (no name, no folder; profile paths as `paths` gives
+/// them), or why it has none.
+fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene, String> {
+    let s = &c.state;
+    let never = |what: &str| format!("{what} never given");
+    let (rail, wheel) =
+        (s.rail_profile.as_ref().ok_or(never("RFNAME"))?, s.wheel_profile.as_ref().ok_or(never("WFNAME"))?);
+    let track = s.track.ok_or(never("the track"))?;
+    let wheelset = s.wheelset.ok_or(never("FBDIST, FBPOS, NOMRAD"))?;
+    let material = s.material.as_ref().ok_or(never("POISS, GG"))?;
+    let disc = s.discretisation.as_ref().ok_or(never("DX, DS"))?;
+    let friction = s.friction.as_ref().and_then(|f| f.sets.first()).ok_or(never("the friction"))?;
+    let m = combine_bodies(material.poiss, material.gg_mpa);
+    let (vertical, row) = row(c)?;
+    Ok(WheelRailScene {
+        name: String::new(),
+        solvers: vec!["contact".into()],
+        side: if c.digits.side() == Side::Left { SideSpec::Left } else { SideSpec::Right },
+        rail: profile(rail, paths)?,
+        wheel: profile(wheel, paths)?,
+        placement: match track.placement {
+            RailPlacement::Gauge { gaught_mm, gaugwd_mm, .. } => {
+                PlacementSpec::Gauge { height_mm: gaught_mm, width_mm: gaugwd_mm }
+            }
+            RailPlacement::Absolute { raily0_mm, railz0_mm, .. } => {
+                PlacementSpec::Absolute { y_mm: raily0_mm, z_mm: railz0_mm }
+            }
+        },
+        cant_rad: match track.fourth {
+            TrackFourth::CantRad(r) => r,
+            TrackFourth::RollerRadiusMm(_) => return Err("a roller rig (C = 4, 5)".into()),
+        },
+        flange_back_distance_mm: wheelset.fbdist_mm,
+        flange_back_position_mm: wheelset.fbpos_mm,
+        nominal_radius_mm: wheelset.nomrad_mm,
+        mu: friction.values.fstat(),
+        material: MaterialSpec { g_mpa: Some(m.g_mpa), e_mpa: None, poisson: m.poisson },
+        dx_mm: disc.dx_mm,
+        ds_mm: disc.ds_mm,
+        a_sep_rad: disc.a_sep_rad,
+        d_sep_mm: disc.d_sep_mm,
+        d_comb_mm: disc.d_comb_mm,
+        vertical,
+        cases: vec![row],
+        origin: None,
+        dir: PathBuf::new(),
+    })
+}
+
+/// A profile as the scene takes it: the path from the scene's folder, MIRRORY = 1 as mirror_y.
+fn profile(p: &super::super::wheelrail_deck::ProfileSpec, paths: &ProfilePaths) -> Result<ProfileSpec, String> {
+    Ok(ProfileSpec {
+        path: PathBuf::from(paths.of(&p.file)?),
+        mirror_y: p.mirror_y == 1,
+        scale: p.scale,
+        smooth: p.smooth,
+    })
+}
+
+/// The case's row: its number, position (FZ or Z as N says) and velocities.
+fn row(c: &WheelRailCase) -> Result<(VerticalSpec, CaseRow), String> {
+    let p = c.state.position.ok_or("the wheelset position never given")?;
+    let v = c.state.velocity.ok_or("the wheelset velocity never given")?;
+    let Along::SMm(_) = p.along else { return Err("a roller rig (C = 4, 5)".into()) };
+    let Forward::VsMmS(vs) = v.forward else { return Err("a roller rig (C = 4, 5)".into()) };
+    let PitchInput::VpitchRadS(vpitch) = v.sixth else { return Err("FX_WS or MY_WS prescribed (F = 1, 2)".into()) };
+    let (vertical, value) = match p.vertical {
+        Vertical::FzN(fz) => (VerticalSpec::Force, fz),
+        Vertical::ZMm(z) => (VerticalSpec::Position, z),
+    };
+    let row = CaseRow {
+        contact_case: c.number as u64,
+        y_mm: p.y_mm,
+        vertical: value,
+        roll_rad: p.roll_rad,
+        yaw_rad: p.yaw_rad,
+        velocity: [vs, v.vy_mm_s, v.vz_mm_s, v.vroll_rad_s, v.vyaw_rad_s, vpitch],
+    };
+    Ok((vertical, row))
+}

@@ -1,0 +1,131 @@
+//! A wheel–rail scene as its files (docs/scene-format.md, "A wheel–rail scene"): the scene TOML
+//! and its cases table `<name>_cases.csv`, one row per CONTACT case. Every scene is read back with
+//! the project's reader ([`WheelRailScene::from_toml`]) in a temporary folder before anything is
+//! written, and must give the scene it was written from, every value equal.
+
+use super::super::read_back::tempdir_for;
+use crate::error::InputError;
+use crate::scene::wheelrail::{
+    case_columns, CaseRow, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
+};
+use std::fmt::Write;
+use std::path::{Path, PathBuf};
+use toml::Value;
+
+/// The scene's files (name, contents), the scene file first; its profile paths are written as
+/// the scene holds them (relative to the scene's folder).
+pub(super) fn files(scene: &WheelRailScene, deck: &str) -> Result<Vec<(String, String)>, InputError> {
+    let csv_name = format!("{}_cases.csv", scene.name);
+    let [first, last] = scene.origin.as_ref().map_or([0, 0], |o| o.cases);
+    let mut text = format!("# Imported by `creepbench import contact` from {deck}, cases {first} to {last}.\n");
+    for (section, pairs) in document(scene, &csv_name)? {
+        if let Some(name) = section {
+            let _ = writeln!(text, "\n[{name}]");
+        }
+        for (key, value) in pairs {
+            let _ = writeln!(text, "{key} = {value}");
+        }
+    }
+    Ok(vec![(format!("{}.toml", scene.name), text), (csv_name, cases_csv(scene.vertical, &scene.cases))])
+}
+
+/// A section's keys and values in the order they are written.
+type Pairs = Vec<(&'static str, Value)>;
+
+/// The scene's sections in the order of docs/scene-format.md (`None`: the top level).
+fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static str>, Pairs)>, InputError> {
+    let solvers = Value::Array(s.solvers.iter().map(|m| Value::String(m.clone())).collect());
+    let side = if s.side == SideSpec::Left { "left" } else { "right" };
+    let wheelrail = vec![
+        ("side", Value::String(side.into())),
+        ("mu", Value::Float(s.mu)),
+        ("dx_mm", Value::Float(s.dx_mm)),
+        ("ds_mm", Value::Float(s.ds_mm)),
+        ("a_sep_rad", Value::Float(s.a_sep_rad)),
+        ("d_sep_mm", Value::Float(s.d_sep_mm)),
+        ("d_comb_mm", Value::Float(s.d_comb_mm)),
+    ];
+    let mut rail = profile(&s.rail, &s.name)?;
+    match s.placement {
+        PlacementSpec::Gauge { height_mm, width_mm } => {
+            rail.push(("gauge_height_mm", Value::Float(height_mm)));
+            rail.push(("gauge_width_mm", Value::Float(width_mm)));
+        }
+        PlacementSpec::Absolute { y_mm, z_mm } => {
+            rail.push(("y_mm", Value::Float(y_mm)));
+            rail.push(("z_mm", Value::Float(z_mm)));
+        }
+    }
+    rail.push(("cant_rad", Value::Float(s.cant_rad)));
+    let mut wheel = profile(&s.wheel, &s.name)?;
+    wheel.push(("flange_back_distance_mm", Value::Float(s.flange_back_distance_mm)));
+    wheel.push(("flange_back_position_mm", Value::Float(s.flange_back_position_mm)));
+    wheel.push(("nominal_radius_mm", Value::Float(s.nominal_radius_mm)));
+    let vertical = if s.vertical == VerticalSpec::Force { "force" } else { "position" };
+    let cases = vec![("vertical", Value::String(vertical.into())), ("file", Value::String(csv_name.into()))];
+    let mut out = vec![
+        (None, vec![("name", Value::String(s.name.clone())), ("solvers", solvers)]),
+        (Some("wheelrail"), wheelrail),
+        (Some("rail"), rail),
+        (Some("wheel"), wheel),
+        (Some("material"), material(s)?),
+        (Some("cases"), cases),
+    ];
+    if let Some(o) = &s.origin {
+        let numbers = Value::Array(o.cases.iter().map(|&n| Value::Integer(n as i64)).collect());
+        out.push((Some("origin"), vec![("file", Value::String(o.file.clone())), ("cases", numbers)]));
+    }
+    Ok(out)
+}
+
+/// A profile's keys: its path (as the scene holds it), mirror_y, scale, smooth.
+fn profile(p: &ProfileSpec, scene: &str) -> Result<Pairs, InputError> {
+    let path = p.path.to_str().ok_or_else(|| InputError::new(scene, p.path.display(), "a UTF-8 profile path"))?;
+    Ok(vec![
+        ("profile", Value::String(path.into())),
+        ("mirror_y", Value::Boolean(p.mirror_y)),
+        ("scale", Value::Float(p.scale)),
+        ("smooth", Value::Float(p.smooth)),
+    ])
+}
+
+/// `[material]`: the combined G and ν.
+fn material(s: &WheelRailScene) -> Result<Pairs, InputError> {
+    let g = s.material.g_mpa.ok_or_else(|| InputError::new(&s.name, "no g_mpa", "the combined shear modulus"))?;
+    Ok(vec![("g_mpa", Value::Float(g)), ("poisson", Value::Float(s.material.poisson))])
+}
+
+/// The cases table: the reader's columns ([`case_columns`]), one row per case, every value in
+/// the shortest form that reads back to the same number.
+fn cases_csv(vertical: VerticalSpec, rows: &[CaseRow]) -> String {
+    let mut out = case_columns(vertical).join(",");
+    out.push('\n');
+    for r in rows {
+        let values = [r.y_mm, r.vertical, r.roll_rad, r.yaw_rad].into_iter().chain(r.velocity);
+        let _ = write!(out, "{}", r.contact_case);
+        for v in values {
+            let _ = write!(out, ",{v:?}");
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// Write `files` in a temporary folder, read the scene back with the project's reader and compare
+/// it with `scene` (its folder and profile paths taken as relative to the scene file).
+pub(super) fn read_back(scene: &WheelRailScene, files: &[(String, String)], place: &str) -> Result<(), InputError> {
+    let dir = tempdir_for(place)?;
+    let io = |e: std::io::Error| InputError::new(place, "a temporary folder", format!("writable: {e}"));
+    for (name, contents) in files {
+        std::fs::write(dir.path().join(name), contents).map_err(io)?;
+    }
+    let mut back = WheelRailScene::from_toml(&files[0].1, dir.path())?;
+    let local = |p: &Path| p.strip_prefix(dir.path()).map(Path::to_path_buf).unwrap_or_else(|_| p.to_path_buf());
+    back.rail.path = local(&back.rail.path);
+    back.wheel.path = local(&back.wheel.path);
+    back.dir = PathBuf::new();
+    if back == *scene {
+        return Ok(());
+    }
+    Err(InputError::new(place, format!("{back:?}"), format!("the scene read back as it was written: {scene:?}")))
+}

@@ -1,0 +1,299 @@
+//! Issue 44 item 5: CONTACT's module-1 decks import as wheel–rail scenes (one per run of cases that
+//! share all but the wheelset's position and velocity; profiles by their path from the scenes'
+//! folder) and wheel–rail scenes export as module-1 decks (one case per row) that import again to
+//! the same scene; what the scene cannot say is refused per case, named with its reason.
+
+use crate::common::{self, root};
+use creepbench::import::contact::wheelrail_deck::{self, PitchInput, Vertical};
+use creepbench::scene::wheelrail::{PlacementSpec, SideSpec, VerticalSpec, WheelRailScene};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn creepbench(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_creepbench")).args(args).output().expect("runs")
+}
+
+fn examples() -> PathBuf {
+    root().join("reference/contact_wheelrail/examples")
+}
+
+/// Import `deck` into `out` with the command; the scene files it names on standard output.
+fn import(deck: &Path, out: &Path, extra: &[&str]) -> Vec<PathBuf> {
+    let mut args = vec!["import", "contact", deck.to_str().unwrap(), "--out", out.to_str().unwrap()];
+    args.extend(extra);
+    let o = creepbench(&args);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    String::from_utf8_lossy(&o.stdout).lines().map(PathBuf::from).collect()
+}
+
+/// The scene's values without its name, origin, folder and the spelling of its profile paths
+/// (each resolved to the file it names).
+fn values(s: &WheelRailScene) -> WheelRailScene {
+    let mut v = s.clone();
+    v.name.clear();
+    v.origin = None;
+    v.dir = PathBuf::new();
+    v.rail.path = s.rail.path.canonicalize().unwrap();
+    v.wheel.path = s.wheel.path.canonicalize().unwrap();
+    v
+}
+
+#[test]
+fn the_manchester_decks_import_as_one_scene_of_21_cases_each() {
+    for (side, name) in [(SideSpec::Left, "mbench_a22_left"), (SideSpec::Right, "mbench_a22_right")] {
+        let deck = examples().join(format!("{name}.inp"));
+        let out = common::tempdir(&format!("m1_import_{name}"));
+        let written = import(&deck, &out, &[]);
+        assert_eq!(written, [out.join(format!("{name}_1.toml"))]);
+        let s = WheelRailScene::from_file(&written[0]).unwrap();
+        assert_eq!((s.side, s.mu, s.dx_mm, s.ds_mm, s.vertical), (side, 0.3, 0.2, 0.2, VerticalSpec::Force));
+        assert_eq!(s.placement, PlacementSpec::Gauge { height_mm: 14.0, width_mm: 1435.0 });
+        assert_eq!((s.cant_rad, s.flange_back_distance_mm, s.flange_back_position_mm), (0.0, 1360.0, -70.0));
+        assert_eq!((s.nominal_radius_mm, s.material.g_mpa, s.material.poisson), (460.0, Some(82000.0), 0.28));
+        // The profiles where the deck has them, by their path from the scene's folder.
+        let text = std::fs::read_to_string(&written[0]).unwrap();
+        assert!(text.contains("profile = \"../") && !text.contains(out.to_str().unwrap()), "{text}");
+        for (p, file) in [(&s.rail, "MBench_UIC60_v3.prr"), (&s.wheel, "MBench_S1002_v3.prw")] {
+            assert_eq!(p.path.canonicalize().unwrap(), examples().join(file).canonicalize().unwrap());
+            assert_eq!((p.mirror_y, p.scale, p.smooth), (false, 1.0, 0.0));
+        }
+        let origin = s.origin.as_ref().unwrap();
+        assert_eq!((origin.file.as_str(), origin.cases), (format!("{name}.inp").as_str(), [1, 21]));
+        // Every row is its case as the deck gives it.
+        let cases = wheelrail_deck::read(&deck).unwrap();
+        assert_eq!((s.cases.len(), cases.len()), (21, 21));
+        for (row, c) in s.cases.iter().zip(&cases) {
+            let (p, v) = (c.state.position.unwrap(), c.state.velocity.unwrap());
+            let (Vertical::FzN(fz), PitchInput::VpitchRadS(vpitch)) = (p.vertical, v.sixth) else { panic!("{c:?}") };
+            assert_eq!(row.contact_case, c.number as u64);
+            assert_eq!([row.y_mm, row.vertical, row.roll_rad, row.yaw_rad], [p.y_mm, fz, p.roll_rad, p.yaw_rad]);
+            assert_eq!(row.velocity, [2000.0, v.vy_mm_s, v.vz_mm_s, v.vroll_rad_s, v.vyaw_rad_s, vpitch]);
+        }
+        let two = &s.cases[1];
+        assert_eq!(
+            (two.contact_case, two.y_mm, two.vertical, two.roll_rad, two.yaw_rad, two.velocity[5]),
+            (2, 0.5, 10000.0, -0.00002304, 0.0012, -4.34741340)
+        );
+    }
+}
+
+/// mbench_a22_left.inp with its case 11 prescribing FX (F = 1, the sixth velocity then FX_WS).
+fn with_prescribed_fx(dir: &Path) -> PathBuf {
+    let text = std::fs::read_to_string(examples().join("mbench_a22_left.inp")).unwrap();
+    let case11 = text.find("% 11:").unwrap();
+    let at = case11 + text[case11..].find(" 0203100").unwrap();
+    let deck = dir.join("mbench_fx.inp");
+    std::fs::write(&deck, format!("{} 0203110{}", &text[..at], &text[at + 8..])).unwrap();
+    for p in ["MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"] {
+        std::fs::copy(examples().join(p), dir.join(p)).unwrap();
+    }
+    deck
+}
+
+#[test]
+fn a_refused_case_splits_its_run_and_is_named_with_its_reason() {
+    let dir = common::tempdir("m1_import_refused");
+    let deck = with_prescribed_fx(&dir);
+    let out = dir.join("scenes");
+    let o = creepbench(&["import", "contact", deck.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("refused case 11 (line 111): not supported: F = 1: the longitudinal force"), "{err}");
+    assert!(!out.exists(), "nothing written");
+    let written = import(&deck, &out, &["--supported-only"]);
+    assert_eq!(written, [out.join("mbench_fx_1.toml"), out.join("mbench_fx_12.toml")]);
+    let first = WheelRailScene::from_file(&written[0]).unwrap();
+    let second = WheelRailScene::from_file(&written[1]).unwrap();
+    let numbers = |s: &WheelRailScene| s.cases.iter().map(|c| c.contact_case).collect::<Vec<_>>();
+    assert_eq!((numbers(&first), numbers(&second)), ((1..=10).collect(), (12..=21).collect()));
+    // The profiles beside the deck, named from the scenes' folder.
+    assert!(std::fs::read_to_string(&written[0]).unwrap().contains("profile = \"../MBench_UIC60_v3.prr\""));
+    let imported = creepbench::import::contact::import(&deck).unwrap();
+    let s11 = &imported.statuses[10];
+    assert_eq!((s11.case, s11.module, s11.scene.as_deref()), (11, 1, None));
+    assert!(s11.refused[0].starts_with("F = 1: the longitudinal force"), "{s11:?}");
+    assert!(imported.statuses[11].scene.as_deref() == Some("mbench_fx_12"), "{:?}", imported.statuses[11]);
+    // The patch search's thresholds are read, not carried: a note.
+    assert!(
+        imported.statuses[0].notes.iter().any(|n| n.starts_with("DQREL, A_SEP, D_SEP")),
+        "{:?}",
+        imported.statuses[0]
+    );
+}
+
+/// Each module-1 case of CONTACT's test bank is refused naming what the scene lacks; its module-3
+/// cases import as before.
+#[test]
+fn the_testbank_module1_cases_are_refused_with_their_reasons() {
+    let deck = root().join("reference/contact_wheelrail/testbank/testbank.inp");
+    let imported = creepbench::import::contact::import(&deck).unwrap();
+    let m1: Vec<_> = imported.statuses.iter().filter(|s| s.module == 1).collect();
+    let numbers: Vec<usize> = m1.iter().map(|s| s.case).collect();
+    assert_eq!(numbers, [18, 19, 20, 21, 22, 23, 27, 28, 29, 30, 31, 32, 33, 34, 35, 36, 37, 38, 39]);
+    let reason = |case: usize, start: &str| {
+        let s = m1.iter().find(|s| s.case == case).unwrap();
+        assert!(s.scene.is_none() && s.refused.iter().any(|r| r.starts_with(start)), "case {case}: {s:?}");
+    };
+    reason(18, "DYRAIL, DZRAIL, DROLLR = 0, 5, ");
+    reason(19, "T = 0: shifts, transient rolling and frictionless compression");
+    reason(20, "C = 5: a wheel on a roller rig");
+    reason(21, "B = 1: a thin compressible elastic layer");
+    reason(22, "V = 1 with NVF = 2: friction varying across the rail");
+    reason(22, "SMOOTH = 10 (rail), 10 (wheel): profile smoothing");
+    reason(35, "D (in force) = 4: contact approaches other than the planar one");
+    reason(36, "F = 3: a massless rail");
+    reason(38, "T = 1: shifts, transient rolling and frictionless compression");
+    let scenes: Vec<&str> = imported.scenes.iter().map(|s| s.name.as_str()).collect();
+    assert!(
+        scenes.contains(&"testbank_1")
+            && scenes.iter().all(|s| s.split('_').nth(1).unwrap().parse::<usize>().unwrap() < 18)
+    );
+    // The command lists each with its reason and writes the module-3 scenes.
+    let out = common::tempdir("m1_import_testbank").join("scenes");
+    let o =
+        creepbench(&["import", "contact", deck.to_str().unwrap(), "--out", out.to_str().unwrap(), "--supported-only"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(err.contains("skipped case 20 (line 363): not supported: C = 5: a wheel on a roller rig"), "{err}");
+    assert!(out.join("testbank_1.toml").is_file());
+}
+
+#[test]
+fn a_malformed_module1_deck_is_refused_at_its_place_and_nothing_is_written() {
+    let dir = common::tempdir("m1_import_malformed");
+    let text = std::fs::read_to_string(examples().join("mbench_a22_left.inp")).unwrap();
+    let bad = text.replacen("  0.0  0.5  10000. ", "  0.0  0.5  1x000. ", 1);
+    let line = bad.lines().position(|l| l.contains("1x000.")).unwrap() + 1;
+    let column = bad.lines().nth(line - 1).unwrap().find("1x000.").unwrap() + 1;
+    let deck = dir.join("bad.inp");
+    std::fs::write(&deck, bad).unwrap();
+    let out = dir.join("scenes");
+    let o = creepbench(&["import", "contact", deck.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains(&format!("bad.inp:{line}:{column} (S_WS|X_WS, Y_WS, Z_WS|FZ")), "{err}");
+    assert!(!out.exists());
+}
+
+/// Export, then import the exported deck: the same scene, every value (the profiles the same files).
+fn round_trip(scene: &Path, dir: &Path) -> (WheelRailScene, WheelRailScene) {
+    let deck_dir = dir.join("deck");
+    let o = creepbench(&["export", "contact", scene.to_str().unwrap(), "--out", deck_dir.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let original = WheelRailScene::from_file(scene).unwrap();
+    let deck = deck_dir.join(format!("{}.inp", original.name));
+    assert_eq!(String::from_utf8_lossy(&o.stdout).trim(), deck.to_str().unwrap());
+    let again = import(&deck, &dir.join("again"), &[]);
+    assert_eq!(again.len(), 1);
+    (original, WheelRailScene::from_file(&again[0]).unwrap())
+}
+
+#[test]
+fn export_then_import_gives_the_same_scene() {
+    let dir = common::tempdir("m1_round_trip");
+    let scene = import(&examples().join("mbench_a22_left.inp"), &dir.join("scenes"), &[]).remove(0);
+    let (original, back) = round_trip(&scene, &dir);
+    assert_eq!(values(&back), values(&original));
+    assert_eq!(back.origin.unwrap().cases, [1, 21]);
+    // The height prescribed, the rail placed absolutely, a right wheel and mirrored profiles.
+    let text = std::fs::read_to_string(&scene).unwrap();
+    let text = text
+        .replace("vertical = \"force\"", "vertical = \"position\"")
+        .replace("side = \"left\"", "side = \"right\"")
+        .replace("gauge_height_mm = 14.0\ngauge_width_mm = 1435.0", "y_mm = 750.0\nz_mm = -0.5")
+        .replace("mirror_y = false", "mirror_y = true")
+        .replace("mbench_a22_left_1_cases.csv", "z.csv")
+        .replace("name = \"mbench_a22_left_1\"", "name = \"by_height\"");
+    let csv = std::fs::read_to_string(dir.join("scenes/mbench_a22_left_1_cases.csv")).unwrap();
+    let z = csv.replacen("fz_n", "z_mm", 1).replace(",10000.0,", ",-1.25,");
+    std::fs::write(dir.join("scenes/z.csv"), z).unwrap();
+    let variant = dir.join("scenes/by_height.toml");
+    std::fs::write(&variant, text).unwrap();
+    let (original, back) = round_trip(&variant, &dir.join("variant"));
+    assert_eq!(
+        (original.vertical, original.side, original.rail.mirror_y),
+        (VerticalSpec::Position, SideSpec::Right, true)
+    );
+    assert_eq!(original.placement, PlacementSpec::Absolute { y_mm: 750.0, z_mm: -0.5 });
+    assert_eq!(values(&back), values(&original));
+}
+
+#[test]
+fn a_wheelrail_scene_s_origin_names_its_first_and_last_case() {
+    let dir = common::tempdir("m1_origin");
+    let scene = import(&examples().join("mbench_a22_right.inp"), &dir, &[]).remove(0);
+    let text = std::fs::read_to_string(&scene).unwrap();
+    let e = WheelRailScene::from_toml(&text.replace("cases = [1, 21]", "cases = [1, 20]"), &dir).unwrap_err();
+    assert!(e.to_string().contains("origin.cases") && e.to_string().contains("[1, 21]"), "{e}");
+    assert!(WheelRailScene::from_toml(&text.replace("[origin]", "[origin]\nwhat = 1"), &dir).is_err());
+    let without: String = text.lines().take_while(|l| *l != "[origin]").map(|l| format!("{l}\n")).collect();
+    assert_eq!(WheelRailScene::from_toml(&without, &dir).unwrap().origin, None);
+}
+
+/// The exported deck run by CONTACT prints what the same CONTACT prints for the deck it was
+/// imported from (every total force and patch total the same number), and what CONTACT printed
+/// for it in the reference (reference/contact_wheelrail/README.md, "Running them": this build's
+/// agreement): per case the same patches, FY(TR), FZ(TR) and each patch's FN, FS equal as printed
+/// (within both values' half units), FX(TR) within 2.5e-5 FZ. Needs CONTACT:
+/// `CREEPBENCH_CONTACT=/path/to/contact_linux64`.
+#[test]
+#[ignore = "runs CONTACT: set CREEPBENCH_CONTACT to its executable"]
+fn the_exported_manchester_decks_run_by_contact_print_the_reference_totals() {
+    use creepbench::comparison::references::contact_output::printed::Printed;
+    use creepbench::comparison::references::contact_output::wheelrail::read;
+    let contact = std::env::var("CREEPBENCH_CONTACT").expect("CREEPBENCH_CONTACT");
+    for name in ["mbench_a22_left", "mbench_a22_right"] {
+        let dir = common::tempdir(&format!("m1_contact_{name}"));
+        let scene = import(&examples().join(format!("{name}.inp")), &dir.join("scenes"), &[]).remove(0);
+        let o =
+            creepbench(&["export", "contact", scene.to_str().unwrap(), "--out", dir.join("deck").to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+        let run =
+            Command::new(&contact).current_dir(dir.join("deck")).args(["2", &format!("{name}_1")]).output().unwrap();
+        assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stdout));
+        let ours = read(&dir.join(format!("deck/{name}_1.out"))).unwrap();
+        let original = run_original(&contact, name, &dir.join("original"));
+        for (a, b) in ours.iter().zip(&original) {
+            let totals = |c: &creepbench::comparison::references::contact_output::wheelrail::WheelRailCase| {
+                (c.forces, c.patches.iter().map(|p| p.totals).collect::<Vec<_>>())
+            };
+            assert_eq!(totals(a), totals(b), "{name} case {}: the exported deck against the original", a.case);
+        }
+        let theirs = read(&examples().join(format!("{name}.ref_out"))).unwrap();
+        assert_eq!((ours.len(), theirs.len()), (21, 21));
+        let same = |a: Printed, b: Printed| (a.value - b.value).abs() <= a.half_unit + b.half_unit;
+        let mut worst_fx = 0.0f64;
+        for (a, b) in ours.iter().zip(&theirs) {
+            let (fa, fb) = (a.forces.unwrap(), b.forces.unwrap());
+            assert_eq!((a.case, a.patches.len()), (b.case, b.patches.len()), "{name}");
+            assert!(
+                same(fa.fy_tr_n, fb.fy_tr_n) && same(fa.fz_tr_n, fb.fz_tr_n),
+                "{name} case {}: {fa:?} {fb:?}",
+                a.case
+            );
+            let fx = (fa.fx_tr_n.value - fb.fx_tr_n.value).abs() / fb.fz_tr_n.value;
+            worst_fx = worst_fx.max(fx);
+            assert!(fx <= 2.5e-5, "{name} case {}: FX {fa:?} {fb:?}", a.case);
+            for (p, q) in a.patches.iter().zip(&b.patches) {
+                let (t, u) = (p.totals.unwrap(), q.totals.unwrap());
+                assert!(same(t.fn_n, u.fn_n) && same(t.fs_n, u.fs_n), "{name} case {}: {t:?} {u:?}", a.case);
+            }
+        }
+        println!("{name}: 21 cases, FY, FZ, patch FN, FS as printed; FX within {worst_fx:.2e} FZ");
+    }
+}
+
+/// CONTACT's output for the shipped deck `name`, run in a copy of it and its profiles in `dir`.
+fn run_original(
+    contact: &str,
+    name: &str,
+    dir: &Path,
+) -> Vec<creepbench::comparison::references::contact_output::wheelrail::WheelRailCase> {
+    std::fs::create_dir_all(dir).unwrap();
+    for file in [format!("{name}.inp"), "MBench_UIC60_v3.prr".into(), "MBench_S1002_v3.prw".into()] {
+        std::fs::copy(examples().join(&file), dir.join(&file)).unwrap();
+    }
+    let run = Command::new(contact).current_dir(dir).args(["2", name]).output().unwrap();
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stdout));
+    creepbench::comparison::references::contact_output::wheelrail::read(&dir.join(format!("{name}.out"))).unwrap()
+}
