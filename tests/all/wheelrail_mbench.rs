@@ -22,13 +22,15 @@ fn deviations(side: &str) -> Vec<Deviation> {
     run.cases.iter().zip(&reference).flat_map(|((c, r), t)| compare_case(*c, r, 0, t)).collect()
 }
 
-/// The largest deviation per quantity, in half-units of CONTACT's printing.
-fn worst(devs: &[Deviation]) -> BTreeMap<&'static str, (f64, u64, usize)> {
-    let mut w: BTreeMap<&'static str, (f64, u64, usize)> = BTreeMap::new();
+/// The largest deviation per quantity, in half-units of CONTACT's printing, and the largest
+/// absolute difference.
+fn worst(devs: &[Deviation]) -> BTreeMap<&'static str, (f64, u64, usize, f64)> {
+    let mut w: BTreeMap<&'static str, (f64, u64, usize, f64)> = BTreeMap::new();
     for d in devs {
-        let e = w.entry(d.quantity).or_insert((0.0, 0, 0));
+        let e = w.entry(d.quantity).or_insert((0.0, 0, 0, 0.0));
+        e.3 = e.3.max((d.ours - d.contact).abs());
         if d.half_units > e.0 {
-            *e = (d.half_units, d.contact_case, d.patch);
+            (e.0, e.1, e.2) = (d.half_units, d.contact_case, d.patch);
         }
     }
     w
@@ -89,10 +91,11 @@ fn manchester_benchmark_left_and_right() {
     let mut failures = Vec::new();
     for side in ["left", "right"] {
         let devs = deviations(side);
-        for (q, (h, case, patch)) in
-            worst(&devs.iter().filter(|d| (side, d.contact_case) != BLENDED).cloned().collect::<Vec<_>>())
-        {
-            println!("{side} {q:>12}: {h:10.2} half-units (case {case}, patch {patch})");
+        let kept: Vec<Deviation> = devs.iter().filter(|d| (side, d.contact_case) != BLENDED).cloned().collect();
+        for (q, (h, case, patch, abs)) in worst(&kept) {
+            println!(
+                "{side} {q:>12}: {h:10.2} half-units (case {case}, patch {patch}), largest |difference| {abs:.3e}"
+            );
         }
         for d in devs.iter().filter(|d| (side, d.contact_case) != BLENDED) {
             let ok = loose(d).unwrap_or_else(|| {
