@@ -832,8 +832,8 @@ pub fn manifest(dir: &Path) -> Result<(), Error> {
 /// (`DIR/<name>.inp`, written whole; never inside golden/); a study file: one per point; a
 /// wheel–rail scene: its module-1 input.
 pub fn export_contact(scene_path: &Path, out: &Path, golden: &Path) -> Result<Vec<PathBuf>, Error> {
-    if crate::scene::wheelrail::is_wheelrail_file(scene_path) {
-        return export_contact_wheelrail(scene_path, out, golden);
+    if let Some(scene) = crate::scene::wheelrail::read_if_wheelrail(scene_path)? {
+        return export_contact_wheelrail(scene_path, &scene, out, golden);
     }
     // A scene file, or a study file: every point, all validated before anything is written.
     // CONTACT's own input check refuses what the deck would give it out of its ranges.
@@ -865,15 +865,19 @@ pub fn export_contact(scene_path: &Path, out: &Path, golden: &Path) -> Result<Ve
 
 /// `export contact` of a wheel–rail scene: CONTACT's module-1 input `DIR/<name>.inp`, one case per
 /// row, its profiles named from DIR (written whole, replacing nothing; never inside golden/).
-fn export_contact_wheelrail(scene_path: &Path, out: &Path, golden: &Path) -> Result<Vec<PathBuf>, Error> {
+fn export_contact_wheelrail(
+    scene_path: &Path,
+    scene: &crate::scene::wheelrail::WheelRailScene,
+    out: &Path,
+    golden: &Path,
+) -> Result<Vec<PathBuf>, Error> {
     use crate::export::wheelrail;
     let in_file = |mut e: InputError| {
         e.field = format!("{}: {}", scene_path.display(), e.field);
         e
     };
-    let scene = crate::scene::wheelrail::WheelRailScene::from_file(scene_path).map_err(in_file)?;
-    wheelrail::check(&scene).map_err(in_file)?;
-    let text = wheelrail::module1_input(&scene, out).map_err(in_file)?;
+    wheelrail::check(scene).map_err(in_file)?;
+    let text = wheelrail::module1_input(scene, out).map_err(in_file)?;
     let path = out.join(format!("{}.inp", scene.name));
     guard::guard_output_dir(out, golden)?;
     guard::guard_output_file(&path, golden)?;

@@ -145,14 +145,14 @@ fn ellipse_scene(
 /// The problem a model solves on a patch: the patch's own grid and undeformed distance where the
 /// model takes a contact given per element, else the equivalent ellipse.
 fn patch_problem(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> Result<Problem, Error> {
-    let field = resolve(&field_scene(p, model, mu, case)?);
-    let Some(def) = solvers::builtin(model) else {
-        return Ok(field?);
+    let refused = match resolve(&field_scene(p, model, mu, case)?) {
+        Ok(problem) => return Ok(problem),
+        Err(e) => e,
     };
     let exact = resolve(&field_scene(p, EXACT, mu, case)?)?;
-    match (def.check)(&exact) {
-        Ok(()) => Ok(field?),
-        Err(_) => Ok(resolve(&ellipse_scene(&exact, p, model, mu, case)?)?),
+    match solvers::builtin(model).map(|def| (def.check)(&exact)) {
+        Some(Err(_)) => Ok(resolve(&ellipse_scene(&exact, p, model, mu, case)?)?),
+        _ => Err(refused.into()),
     }
 }
 

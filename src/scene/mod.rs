@@ -434,6 +434,13 @@ impl Scene {
     /// Validate a parsed scene table (a scene file's, or one point of a study); `dir` resolves
     /// relative paths.
     pub fn from_table(doc: &toml::Table, dir: &Path) -> Result<Scene, InputError> {
+        if wheelrail::is_wheelrail(doc) {
+            return Err(InputError::new(
+                "wheelrail",
+                "a wheel–rail scene",
+                "a contact-patch scene here: a wheel–rail scene runs with `creepbench simulate` (run and check take suites of contact-patch scenes)",
+            ));
+        }
         let mut top = Section::new("", doc);
         let name = sections::name(&mut top)?;
         let external = sections::external(&mut top)?;

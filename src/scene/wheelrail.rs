@@ -114,22 +114,17 @@ pub fn read_if_wheelrail(path: &Path) -> Result<Option<WheelRailScene>, InputErr
     WheelRailScene::from_table(&doc, &dir).map(Some).map_err(in_file)
 }
 
-/// Whether the file at `path` reads as a wheel–rail scene's TOML (false for anything else,
-/// unreadable files included: their reader says why).
-pub fn is_wheelrail_file(path: &Path) -> bool {
-    crate::safety::read::read_text(path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")
-        .ok()
-        .and_then(|text| toml::from_str::<toml::Table>(&text).ok())
-        .is_some_and(|doc| is_wheelrail(&doc))
-}
-
 impl WheelRailScene {
-    /// Read and check the scene file at `path` (its relative paths resolved against its folder).
+    /// Read and check the scene file at `path` (its relative paths resolved against its folder);
+    /// a file without `[wheelrail]` is an error.
     pub fn from_file(path: &Path) -> Result<WheelRailScene, InputError> {
-        let text = crate::safety::read::read_text(path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")
-            .map_err(|e| InputError::new("scene", path.display(), format!("a readable scene file (TOML): {e}")))?;
-        let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        WheelRailScene::from_toml(&text, &dir)
+        read_if_wheelrail(path)?.ok_or_else(|| {
+            InputError::new(
+                path.display().to_string(),
+                "no [wheelrail] table",
+                "a wheel–rail scene (docs/scene-format.md)",
+            )
+        })
     }
 
     pub fn from_toml(text: &str, dir: &Path) -> Result<WheelRailScene, InputError> {
