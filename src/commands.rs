@@ -95,7 +95,7 @@ pub fn fit(file: &Path, out: Option<&Path>, reference: &Path, golden: &Path) -> 
     }
     let refs = References::load(reference)?;
     let outcome = fit::fit(&spec, &refs)?;
-    print!("{}", fit::record::FitRecord::of(&outcome).table());
+    crate::out!("{}", fit::record::FitRecord::of(&outcome).table());
     let text = fit::render(&outcome)?;
     if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).map_err(Error::io(dir))?;
@@ -242,10 +242,10 @@ pub fn run(
         return Ok(());
     };
     for line in &outcome.oscillating {
-        println!("{line}");
+        crate::outln!("{line}");
     }
-    println!("gates: {}", Verdict::of(&outcome.findings));
-    println!("report: {}", md.display());
+    crate::outln!("gates: {}", Verdict::of(&outcome.findings));
+    crate::outln!("report: {}", md.display());
     Ok(())
 }
 
@@ -531,8 +531,8 @@ pub fn merge(
     }
     let fits = read_fit_records(dirs)?;
     let (md, findings, _) = report_with_findings(&scenes, &refs, report_dir, (Some(golden), &rules), &fits, missing)?;
-    println!("gates: {}", Verdict::of(&findings));
-    println!("report: {}", md.display());
+    crate::outln!("gates: {}", Verdict::of(&findings));
+    crate::outln!("report: {}", md.display());
     if n_missing > 0 {
         return Err(Error::Drift { count: n_missing });
     }
@@ -701,18 +701,18 @@ pub fn check(
     let Gate { findings: all, loosened, suite_of, oscillating } =
         gate(suite_dir, reference, golden, against, shard, progress, files)?;
     let verdict = Verdict::of(&all);
-    println!("{verdict}\n");
-    print!("{}", console::per_model(&all, &suite_of));
+    crate::outln!("{verdict}\n");
+    crate::out!("{}", console::per_model(&all, &suite_of));
     if files.verbose {
-        println!();
-        print!("{}", compare::table(&compare::worst_per_group(&all)));
+        crate::outln!();
+        crate::out!("{}", compare::table(&compare::worst_per_group(&all)));
     }
     print_list("", &console::no_baseline(&all, files.verbose));
     print_list("", &oscillating);
     if !loosened.is_empty() {
-        println!("\n{} rule(s) of the run's files loosen what the defaults gate:", loosened.len());
+        crate::outln!("\n{} rule(s) of the run's files loosen what the defaults gate:", loosened.len());
         for l in &loosened {
-            println!("  {l}");
+            crate::outln!("  {l}");
         }
     }
     if against.is_some() {
@@ -739,12 +739,12 @@ fn print_list(head: &str, lines: &[String]) {
     if head.is_empty() && lines.is_empty() {
         return;
     }
-    println!();
+    crate::outln!();
     if !head.is_empty() {
-        println!("{head}");
+        crate::outln!("{head}");
     }
     for l in lines {
-        println!("  {l}");
+        crate::outln!("  {l}");
     }
 }
 
@@ -923,7 +923,7 @@ pub fn import_contact_output(file: &Path, out: Option<&Path>, cases: Option<&str
     }
     match out {
         Some(path) => write_whole(path, &csv)?,
-        None => print!("{csv}"),
+        None => crate::safety::stdout::write_data(csv.as_bytes()).map_err(Error::io("standard output"))?,
     }
     eprintln!(
         "{}: {} case(s): {rows} row(s) written; {module1} module-1 case(s) not read, {} without totals",
