@@ -4,8 +4,9 @@
 
 use crate::common;
 use common::*;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
 
 fn command(dir: &Path, args: &[&str]) -> Command {
     let mut c = Command::new(env!("CARGO_BIN_EXE_creepbench"));
@@ -111,4 +112,89 @@ fn a_closed_console_costs_neither_the_gate_files_nor_the_exit_status() {
     }
     assert!(w.path().join("rep/validation.md").is_file() && w.path().join("sim/a_one/uba.csv").is_file());
     assert!(w.path().join("merged/validation.md").is_file());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Item 3: leftovers of interrupted blesses
+
+/// The id of a process that has ended.
+fn dead_pid() -> u32 {
+    let mut child = Command::new("true").spawn().unwrap();
+    let pid = child.id();
+    child.wait().unwrap();
+    pid
+}
+
+/// The entries of `dir`, sorted.
+fn listing(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> =
+        std::fs::read_dir(dir).unwrap().flatten().map(|e| e.file_name().to_string_lossy().into()).collect();
+    v.sort();
+    v
+}
+
+/// A leftover as an interrupted cleanup leaves it: scene files, no marker.
+fn plant_leftover(dir: &Path) -> PathBuf {
+    std::fs::create_dir_all(dir.join("a_one")).unwrap();
+    std::fs::write(dir.join("a_one/uba.csv"), "half").unwrap();
+    std::fs::write(dir.join("metrics.csv"), "x").unwrap();
+    dir.to_path_buf()
+}
+
+#[test]
+fn leftovers_whose_owner_no_longer_runs_are_removed_by_the_next_run_that_takes_the_lock() {
+    let w = workspace(&["a_one", "a_two"], true);
+    let dead = dead_pid();
+    let gone = plant_leftover(&w.path().join(format!(".golden.creepbench-new-{dead}-0")));
+    // A live owner's folder (this test process) and a look-alike of no run's are left alone.
+    let live = plant_leftover(&w.path().join(format!(".golden.creepbench-new-{}-7", std::process::id())));
+    let foreign = plant_leftover(&w.path().join(".golden.creepbench-new-x-0"));
+    let o = creepbench(w.path(), &["bless", "--quiet", "--suite", "suite"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(!gone.exists(), "{:?}", listing(w.path()));
+    assert!(live.join("a_one/uba.csv").is_file() && foreign.join("a_one/uba.csv").is_file());
+    // In a results folder: the leftover of a scene this run does not write goes too.
+    let res = w.path().join("res");
+    std::fs::create_dir_all(&res).unwrap();
+    let gone = plant_leftover(&res.join(format!(".renamed_scene.creepbench-new-{dead}-3")));
+    let refs = refs();
+    let args = ["run", "--quiet", "--suite", "suite", "--reference", &refs, "--results", "res", "--report", "rep"];
+    let o = creepbench(w.path(), &args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(!gone.exists(), "{:?}", listing(&res));
+}
+
+#[test]
+fn blesses_interrupted_by_signals_leave_nothing_the_next_bless_does_not_remove() {
+    let names: Vec<String> = (0..40).map(|i| format!("s_{i:02}")).collect();
+    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+    let w = workspace(&refs, true);
+    let start = Instant::now();
+    let o = creepbench(w.path(), &["bless", "--quiet", "--suite", "suite"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let full = start.elapsed().as_secs_f64();
+    let signals = [rustix::process::Signal::INT, rustix::process::Signal::TERM, rustix::process::Signal::HUP];
+    let (mut rng, mut leftovers, mut trials) = (0x2545_f491_4f6c_dd1du64, 0, 0);
+    while trials < 30 && start.elapsed() < Duration::from_secs(30) {
+        trials += 1;
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        let mut child = command(w.path(), &["bless", "--quiet", "--suite", "suite"])
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(Duration::from_secs_f64(full * (rng % 1000) as f64 / 1000.0));
+        let pid = rustix::process::Pid::from_raw(child.id() as i32).unwrap();
+        let _ = rustix::process::kill_process(pid, signals[trials % 3]);
+        child.wait().unwrap();
+        if listing(w.path()).len() > 2 {
+            leftovers += 1;
+        }
+        let o = creepbench(w.path(), &["bless", "--quiet", "--suite", "suite"]);
+        assert_eq!(o.status.code(), Some(0), "trial {trials}: {}", stderr(&o));
+        assert_eq!(listing(w.path()), ["golden", "suite"], "trial {trials}");
+    }
+    eprintln!("{trials} interrupted blesses, {leftovers} left leftovers, all removed by the next bless");
 }
