@@ -9,6 +9,7 @@ pub mod delay;
 pub mod finding;
 pub mod gate_output;
 pub mod model_error;
+pub mod owed;
 pub mod references;
 pub mod rule;
 pub mod tolerance_file;

@@ -198,3 +198,48 @@ fn blesses_interrupted_by_signals_leave_nothing_the_next_bless_does_not_remove()
     }
     eprintln!("{trials} interrupted blesses, {leftovers} left leftovers, all removed by the next bless");
 }
+
+// ---------------------------------------------------------------------------------------------
+// Item 5: merge fails on drift and on what a scene is owed
+
+#[test]
+fn merge_exits_with_the_verdict_and_a_result_short_of_its_scene_fails() {
+    let w = workspace(&["a_one", "a_two"], true);
+    let refs = refs();
+    let args = ["run", "--quiet", "--suite", "suite", "--reference", &refs, "--results", "res", "--golden", "none"];
+    let o = creepbench(w.path(), &args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let merge = |report: &str, golden: &str| {
+        let args = ["merge", "res", "--suite", "suite", "--reference", &refs, "--report", report, "--golden", golden];
+        creepbench(w.path(), &args)
+    };
+    let o = merge("rep0", "golden");
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    // A drift fails the merge as it fails `check`.
+    drift_golden(w.path(), "0.2");
+    let o = merge("rep1", "golden");
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("gates: FAIL"));
+    // Without golden data: an edited scene.json and a history cut to half its rows each fail.
+    let json = w.path().join("res/a_one/scene.json");
+    let original = std::fs::read_to_string(&json).unwrap();
+    let mut scene: serde_json::Value = serde_json::from_str(&original).unwrap();
+    scene["freq_hz"] = serde_json::json!(0.0);
+    std::fs::write(&json, serde_json::to_string_pretty(&scene).unwrap()).unwrap();
+    let o = merge("rep2", "none");
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("SHORT scene a_one") && stderr(&o).contains("freq_hz"), "{}", stderr(&o));
+    let md = std::fs::read_to_string(w.path().join("rep2/validation.md")).unwrap();
+    assert!(md.contains("GATES FAIL") && !md.contains("All gates pass"));
+    std::fs::write(&json, original).unwrap();
+    let csv = w.path().join("res/a_two/uba.csv");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    std::fs::write(&csv, lines[..1 + (lines.len() - 1) / 2].join("\n") + "\n").unwrap();
+    let o = merge("rep3", "none");
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("SHORT scene a_two uba: rows (") && stderr(&o).contains("owes 4"), "{}", stderr(&o));
+    // A scene of a suite not given is named, not checked.
+    let o = creepbench(w.path(), &["merge", "res", "--reference", &refs, "--report", "rep4", "--golden", "none"]);
+    assert!(stderr(&o).contains("not checked against their scene files: a_one, a_two"), "{}", stderr(&o));
+}
