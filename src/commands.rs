@@ -142,18 +142,32 @@ fn run_suite(suite_dir: &[PathBuf], runner: Runner) -> Result<Vec<StoredScene>, 
     let Runner { shard, progress, in_process } = runner;
     let files = suite::scene_files(suite_dir, shard)?;
     if files.is_empty() {
-        let dirs: Vec<String> = suite_dir.iter().map(|d| d.display().to_string()).collect();
-        return Err(InputError::new(
-            "--suite",
-            dirs.join(", "),
-            "folders with at least one scene (*.toml) in this shard",
-        )
-        .into());
+        return empty_shard(suite_dir, shard).map(|()| Vec::new());
     }
     let start = Instant::now();
     let results = suite::run_with(&files, progress, in_process)?;
     eprintln!("ran {} scene(s) in {:.2} s", results.len(), start.elapsed().as_secs_f64());
     Ok(results.iter().map(StoredScene::from_result).collect())
+}
+
+/// A shard that holds none of the suites' scenes is a success with a one-line note (a CI matrix
+/// is sized before the suite is); suites without any scene are an input error.
+fn empty_shard(suite_dir: &[PathBuf], shard: Option<Shard>) -> Result<(), Error> {
+    let dirs: Vec<String> = suite_dir.iter().map(|d| d.display().to_string()).collect();
+    let all = match shard {
+        Some(_) => suite::scene_files(suite_dir, None)?.len(),
+        None => 0,
+    };
+    match shard {
+        Some(Shard { index, count }) if all > 0 => {
+            eprintln!(
+                "note: shard {index}/{count} holds none of the {all} scene(s) of {}: nothing to run",
+                dirs.join(", ")
+            );
+            Ok(())
+        }
+        _ => Err(InputError::new("--suite", dirs.join(", "), "folders with at least one scene (*.toml)").into()),
+    }
 }
 
 /// Build the report from stored scenes and reference data (it runs no model).
@@ -674,6 +688,10 @@ pub fn gate_with(
     files.check_paths(golden)?;
     let refs = load_references(reference)?;
     let rules = file_rules(&files.tolerances, suite_dir)?;
+    if files.strict {
+        // Refused before any scene runs; the verdict's own check below covers what this cannot.
+        crate::comparison::strict::refuse_loosening(&rules, tolerances::defaults())?;
+    }
     let (dir, key, what, kind) = match against {
         Some(dir) => {
             (dir, "--against", "a folder of results written by `creepbench run` (--results)", Against::Previous)
@@ -775,6 +793,10 @@ fn print_list(head: &str, lines: &[String]) {
 /// the blessed scenes of other suites and shards — and swapped in with one atomic exchange.
 pub fn bless(suite_dir: &[PathBuf], golden: &Path, shard: Option<Shard>, progress: bool) -> Result<(), Error> {
     let scenes = run_suite(suite_dir, Runner::cli(shard, progress))?;
+    if scenes.is_empty() {
+        // An empty shard (noted by `run_suite`): golden/ stays as it is.
+        return Ok(());
+    }
     let suites = suite_names(suite_dir);
     // One writer of golden/ at a time; what it keeps is read under the lock, so that concurrent
     // blesses of other suites or shards all land.

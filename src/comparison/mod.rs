@@ -12,5 +12,6 @@ pub mod model_error;
 pub mod owed;
 pub mod references;
 pub mod rule;
+pub mod strict;
 pub mod tolerance_file;
 pub mod tolerances;

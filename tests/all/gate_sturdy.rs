@@ -4,6 +4,7 @@
 
 use crate::common;
 use common::*;
+use creepbench::suite::Shard;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
@@ -242,4 +243,62 @@ fn merge_exits_with_the_verdict_and_a_result_short_of_its_scene_fails() {
     // A scene of a suite not given is named, not checked.
     let o = creepbench(w.path(), &["merge", "res", "--reference", &refs, "--report", "rep4", "--golden", "none"]);
     assert!(stderr(&o).contains("not checked against their scene files: a_one, a_two"), "{}", stderr(&o));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Item 8: an empty shard, huge numbers, --strict first
+
+#[test]
+fn an_empty_shard_is_a_success_with_a_one_line_note() {
+    let w = workspace(&["a_one", "a_two"], true);
+    let before = std::fs::read_dir(w.path().join("golden")).unwrap().count();
+    let empty = (1..=4).find(|&i| ["a_one", "a_two"].iter().all(|n| !Shard { index: i, count: 4 }.takes(n))).unwrap();
+    let shard = format!("{empty}/4");
+    let refs = refs();
+    for args in [
+        vec!["check", "--quiet", "--suite", "suite", "--reference", &refs, "--shard", &shard, "--junit", "j.xml"],
+        vec!["run", "--quiet", "--suite", "suite", "--reference", &refs, "--shard", &shard, "--results", "res"],
+        vec!["bless", "--quiet", "--suite", "suite", "--shard", &shard],
+    ] {
+        let o = creepbench(w.path(), &args);
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {}", stderr(&o));
+        let err = stderr(&o);
+        let notes: Vec<&str> = err.lines().filter(|l| l.contains("holds none of")).collect();
+        assert_eq!(notes, [format!("note: shard {shard} holds none of the 2 scene(s) of suite: nothing to run")]);
+    }
+    let junit = std::fs::read_to_string(w.path().join("j.xml")).unwrap();
+    assert!(junit.contains("tests=\"0\" failures=\"0\""), "{junit}");
+    assert_eq!(std::fs::read_dir(w.path().join("golden")).unwrap().count(), before);
+    // A suite without any scene stays an input error.
+    std::fs::create_dir_all(w.path().join("empty")).unwrap();
+    let o = creepbench(w.path(), &["check", "--quiet", "--suite", "empty", "--reference", &refs, "--shard", "1/4"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+}
+
+#[test]
+fn drift_lines_print_huge_numbers_with_an_exponent() {
+    let w = workspace(&["a_one", "a_two"], true);
+    drift_golden(w.path(), "1.7e308");
+    let refs = refs();
+    let o = creepbench(w.path(), &["check", "--quiet", "--suite", "suite", "--reference", &refs, "--summary", "s.md"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let summary = std::fs::read_to_string(w.path().join("s.md")).unwrap();
+    for text in [stderr(&o), summary] {
+        assert!(text.contains("1.7e308"), "{text}");
+        assert!(!text.contains("0000000000000000000000000"), "{text}");
+    }
+}
+
+#[test]
+fn strict_refuses_a_loosening_rule_before_any_scene_runs() {
+    let w = workspace(&["a_one", "a_two"], true);
+    let rule = "[[rule]]\nagainst = \"golden\"\nscene = \"a_one\"\nsolver = \"uba\"\nquantity = \"fx_over_fn\"\n\
+                abs = 0.01\nwhy = \"the test's reason\"\n";
+    std::fs::write(w.path().join("t.toml"), rule).unwrap();
+    let refs = refs();
+    let args = ["check", "--quiet", "--suite", "suite", "--reference", &refs, "--tolerances", "t.toml", "--strict"];
+    let o = creepbench(w.path(), &args);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("t.toml rule[0]") && stderr(&o).contains("--strict"), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("ran 2 scene(s)"), "a scene ran before the refusal: {}", stderr(&o));
 }
