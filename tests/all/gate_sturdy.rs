@@ -302,3 +302,37 @@ fn strict_refuses_a_loosening_rule_before_any_scene_runs() {
     assert!(stderr(&o).contains("t.toml rule[0]") && stderr(&o).contains("--strict"), "{}", stderr(&o));
     assert!(!stderr(&o).contains("ran 2 scene(s)"), "a scene ran before the refusal: {}", stderr(&o));
 }
+
+// ---------------------------------------------------------------------------------------------
+// Item 7: a foreign file in a suite is never quoted
+
+#[test]
+fn a_foreign_file_in_a_suite_is_named_by_path_and_position_only() {
+    let w = workspace(&["a_one"], false);
+    std::fs::create_dir(w.path().join("golden")).unwrap();
+    let passwd = "root:x:0:0:root:/root:/bin/bash\ndaemon:x:1:1:daemon:/usr/sbin:/usr/sbin/nologin\n";
+    std::fs::write(w.path().join("passwd"), passwd).unwrap();
+    std::os::unix::fs::symlink(w.path().join("passwd"), w.path().join("suite/passwd.toml")).unwrap();
+    let refs = refs();
+    for args in [
+        vec!["check", "--quiet", "--suite", "suite", "--reference", &refs],
+        vec!["simulate", "suite/passwd.toml", "--out", "out"],
+        vec!["check", "--quiet", "--suite", "suite", "--reference", &refs, "--tolerances", "passwd"],
+    ] {
+        let o = creepbench(w.path(), &args);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains("passwd") && err.contains("line 1, column"), "{args:?}: {err}");
+        for secret in ["x:0:0", "/bin/bash", "nologin", "daemon"] {
+            assert!(!err.contains(secret), "{args:?} quotes {secret:?}: {err}");
+        }
+    }
+    // A line of the tool's own files is still quoted (a typo is found by its text).
+    use creepbench::scene::reader::looks_like_own_toml;
+    for own in ["mu = 0.4 0.3", "abs = 1e-9 x", "[contact", "scene = \"sine_*\" x", "\"contact.mu\" = [0.3, 0.4"] {
+        assert!(looks_like_own_toml(own), "{own}");
+    }
+    for foreign in ["root:x:0:0:root:/root:/bin/bash", "KEY=abc/def+g", "user@host:~$ ls", "-----BEGIN KEY-----"] {
+        assert!(!looks_like_own_toml(foreign), "{foreign}");
+    }
+}
