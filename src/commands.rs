@@ -14,6 +14,7 @@ use crate::pipeline;
 use crate::report::table;
 use crate::report::{self, ReportInput};
 use crate::report::{ladder, registry, sections};
+use crate::safety::stdout::{out, outln};
 use crate::safety::{folder, guard, lock};
 use crate::suite::results::{self, StoredScene};
 use crate::suite::{self, Shard};
@@ -96,7 +97,7 @@ pub fn fit(file: &Path, out: Option<&Path>, reference: &Path, golden: &Path) -> 
     }
     let refs = References::load(reference)?;
     let outcome = fit::fit(&spec, &refs)?;
-    crate::out!("{}", fit::record::FitRecord::of(&outcome).table());
+    out!("{}", fit::record::FitRecord::of(&outcome).table());
     let text = fit::render(&outcome)?;
     if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).map_err(Error::io(dir))?;
@@ -257,10 +258,10 @@ pub fn run(
         return Ok(());
     };
     for line in &outcome.oscillating {
-        crate::outln!("{line}");
+        outln!("{line}");
     }
-    crate::outln!("gates: {}", Verdict::of(&outcome.findings));
-    crate::outln!("report: {}", md.display());
+    outln!("gates: {}", Verdict::of(&outcome.findings));
+    outln!("report: {}", md.display());
     Ok(())
 }
 
@@ -548,8 +549,8 @@ pub fn merge(
     let fits = read_fit_records(dirs)?;
     let (md, findings, _) = report_with_findings(&scenes, &refs, report_dir, (Some(golden), &rules), &fits, extra)?;
     let verdict = Verdict::of(&findings);
-    crate::outln!("gates: {verdict}");
-    crate::outln!("report: {}", md.display());
+    outln!("gates: {verdict}");
+    outln!("report: {}", md.display());
     // The exit status is the verdict's, as `check`'s: a drift fails the CI job that merges.
     match verdict.failed {
         0 => Ok(()),
@@ -741,18 +742,18 @@ pub fn check(
     let Gate { findings: all, loosened, suite_of, oscillating } =
         gate(suite_dir, reference, golden, against, shard, progress, files)?;
     let verdict = Verdict::of(&all);
-    crate::outln!("{verdict}\n");
-    crate::out!("{}", console::per_model(&all, &suite_of));
+    outln!("{verdict}\n");
+    out!("{}", console::per_model(&all, &suite_of));
     if files.verbose {
-        crate::outln!();
-        crate::out!("{}", compare::table(&compare::worst_per_group(&all)));
+        outln!();
+        out!("{}", compare::table(&compare::worst_per_group(&all)));
     }
     print_list("", &console::no_baseline(&all, files.verbose));
     print_list("", &oscillating);
     if !loosened.is_empty() {
-        crate::outln!("\n{} rule(s) of the run's files loosen what the defaults gate:", loosened.len());
+        outln!("\n{} rule(s) of the run's files loosen what the defaults gate:", loosened.len());
         for l in &loosened {
-            crate::outln!("  {l}");
+            outln!("  {l}");
         }
     }
     if against.is_some() {
@@ -779,12 +780,12 @@ fn print_list(head: &str, lines: &[String]) {
     if head.is_empty() && lines.is_empty() {
         return;
     }
-    crate::outln!();
+    outln!();
     if !head.is_empty() {
-        crate::outln!("{head}");
+        outln!("{head}");
     }
     for l in lines {
-        crate::outln!("  {l}");
+        outln!("  {l}");
     }
 }
 

@@ -56,7 +56,6 @@ pub fn write_data(bytes: &[u8]) -> io::Result<()> {
 }
 
 /// [`print`] with `format!` syntax: console text on standard output that never fails a command.
-#[macro_export]
 macro_rules! out {
     ($($arg:tt)*) => {
         $crate::safety::stdout::print(format_args!($($arg)*))
@@ -64,7 +63,6 @@ macro_rules! out {
 }
 
 /// [`out!`] with a newline.
-#[macro_export]
 macro_rules! outln {
     () => {
         $crate::safety::stdout::print(format_args!("\n"))
@@ -73,6 +71,8 @@ macro_rules! outln {
         $crate::safety::stdout::print(format_args!("{}\n", format_args!($($arg)*)))
     };
 }
+
+pub(crate) use {out, outln};
 
 #[cfg(test)]
 mod tests {
