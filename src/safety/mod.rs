@@ -8,6 +8,7 @@ pub mod excerpt;
 pub mod folder;
 pub mod guard;
 pub mod interrupt;
+pub mod link;
 pub mod lock;
 pub mod manifest;
 pub mod process;

@@ -336,3 +336,65 @@ fn a_foreign_file_in_a_suite_is_named_by_path_and_position_only() {
         assert!(!looks_like_own_toml(foreign), "{foreign}");
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Item 2: outputs through links
+
+/// Every file under `dir` with its contents.
+fn tree(dir: &Path) -> Vec<(PathBuf, Vec<u8>)> {
+    let mut out = Vec::new();
+    for e in std::fs::read_dir(dir).unwrap().flatten() {
+        if e.file_type().unwrap().is_dir() {
+            out.extend(tree(&e.path()));
+        } else {
+            out.push((e.path(), std::fs::read(e.path()).unwrap()));
+        }
+    }
+    out.sort();
+    out
+}
+
+#[test]
+fn outputs_through_links_are_written_through_and_a_protected_file_is_known_by_its_identity() {
+    use std::os::unix::fs::symlink;
+    let w = workspace(&["a_one", "a_two"], true);
+    let d = w.path();
+    let golden = tree(&d.join("golden"));
+    std::fs::create_dir(d.join("real")).unwrap();
+    std::fs::write(d.join("real/j.xml"), "old").unwrap();
+    symlink("real/j.xml", d.join("j.xml")).unwrap();
+    symlink(d.join("real/new.json"), d.join("c.json")).unwrap();
+    symlink("real/s.md", d.join("s.md")).unwrap();
+    let refs = refs();
+    let check = ["check", "--quiet", "--suite", "suite", "--reference", &refs];
+    let o = command(d, &check).args(["--junit", "j.xml", "--json", "c.json", "--summary", "s.md"]).output().unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    for (link, target, says) in [
+        ("j.xml", "real/j.xml", "<testsuites"),
+        ("c.json", "real/new.json", "\"passed\""),
+        ("s.md", "real/s.md", "## "),
+    ] {
+        assert!(std::fs::symlink_metadata(d.join(link)).unwrap().file_type().is_symlink(), "{link} was replaced");
+        assert!(std::fs::read_to_string(d.join(target)).unwrap().contains(says), "{target}");
+    }
+    // A link that names a file not yet there inside golden/: refused before any work.
+    symlink("golden/new.json", d.join("g.json")).unwrap();
+    let o = command(d, &check).args(["--json", "g.json"]).output().unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("refusing") && !stderr(&o).contains("ran 2 scene(s)"), "{}", stderr(&o));
+    // $GITHUB_STEP_SUMMARY or --junit that is a hard link of a golden file: refused by identity.
+    std::fs::hard_link(d.join("golden/a_one/metrics.csv"), d.join("summary.md")).unwrap();
+    let o = command(d, &check).env("GITHUB_STEP_SUMMARY", "summary.md").output().unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("hard link") && stderr(&o).contains("metrics.csv"), "{}", stderr(&o));
+    let o = command(d, &check).args(["--junit", "summary.md"]).output().unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    // A report file that is a link into golden/ is never written through.
+    std::fs::create_dir(d.join("rep")).unwrap();
+    symlink("../golden/a_one/notes.md", d.join("rep/validation.md")).unwrap();
+    let args = ["run", "--quiet", "--suite", "suite", "--reference", &refs, "--results", "res", "--report", "rep"];
+    let o = creepbench(d, &args);
+    assert_ne!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(std::fs::symlink_metadata(d.join("rep/validation.md")).unwrap().file_type().is_symlink());
+    assert_eq!(tree(&d.join("golden")), golden);
+}
