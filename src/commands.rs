@@ -5,6 +5,7 @@ use crate::calibration::fit::spec::FitSpec;
 use crate::calibration::section as calibration;
 use crate::comparison::compare::{self, Against, Finding};
 use crate::comparison::console::{self, Verdict};
+use crate::comparison::owed;
 use crate::comparison::references::References;
 use crate::comparison::tolerance_file::{self, Loosening, Rule};
 use crate::comparison::tolerances;
@@ -13,6 +14,7 @@ use crate::pipeline;
 use crate::report::table;
 use crate::report::{self, ReportInput};
 use crate::report::{ladder, registry, sections};
+use crate::safety::stdout::{out, outln};
 use crate::safety::{folder, guard, lock};
 use crate::suite::results::{self, StoredScene};
 use crate::suite::{self, Shard};
@@ -128,7 +130,7 @@ pub fn fit(file: &Path, out: Option<&Path>, reference: &Path, golden: &Path) -> 
     }
     let refs = References::load(reference)?;
     let outcome = fit::fit(&spec, &refs)?;
-    print!("{}", fit::record::FitRecord::of(&outcome).table());
+    out!("{}", fit::record::FitRecord::of(&outcome).table());
     let text = fit::render(&outcome)?;
     if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).map_err(Error::io(dir))?;
@@ -174,18 +176,32 @@ fn run_suite(suite_dir: &[PathBuf], runner: Runner) -> Result<Vec<StoredScene>, 
     let Runner { shard, progress, in_process } = runner;
     let files = suite::scene_files(suite_dir, shard)?;
     if files.is_empty() {
-        let dirs: Vec<String> = suite_dir.iter().map(|d| d.display().to_string()).collect();
-        return Err(InputError::new(
-            "--suite",
-            dirs.join(", "),
-            "folders with at least one scene (*.toml) in this shard",
-        )
-        .into());
+        return empty_shard(suite_dir, shard).map(|()| Vec::new());
     }
     let start = Instant::now();
     let results = suite::run_with(&files, progress, in_process)?;
     eprintln!("ran {} scene(s) in {:.2} s", results.len(), start.elapsed().as_secs_f64());
     Ok(results.iter().map(StoredScene::from_result).collect())
+}
+
+/// A shard that holds none of the suites' scenes is a success with a one-line note (a CI matrix
+/// is sized before the suite is); suites without any scene are an input error.
+fn empty_shard(suite_dir: &[PathBuf], shard: Option<Shard>) -> Result<(), Error> {
+    let dirs: Vec<String> = suite_dir.iter().map(|d| d.display().to_string()).collect();
+    let all = match shard {
+        Some(_) => suite::scene_files(suite_dir, None)?.len(),
+        None => 0,
+    };
+    match shard {
+        Some(Shard { index, count }) if all > 0 => {
+            eprintln!(
+                "note: shard {index}/{count} holds none of the {all} scene(s) of {}: nothing to run",
+                dirs.join(", ")
+            );
+            Ok(())
+        }
+        _ => Err(InputError::new("--suite", dirs.join(", "), "folders with at least one scene (*.toml)").into()),
+    }
 }
 
 /// Build the report from stored scenes and reference data (it runs no model).
@@ -275,10 +291,10 @@ pub fn run(
         return Ok(());
     };
     for line in &outcome.oscillating {
-        println!("{line}");
+        outln!("{line}");
     }
-    println!("gates: {}", Verdict::of(&outcome.findings));
-    println!("report: {}", md.display());
+    outln!("gates: {}", Verdict::of(&outcome.findings));
+    outln!("report: {}", md.display());
     Ok(())
 }
 
@@ -558,18 +574,39 @@ pub fn merge(
         true => compare::missing_scenes(golden, &scenes, Against::Golden, |_, suite| suites.contains(&suite))?,
         false => Vec::new(),
     };
-    let n_missing = missing.len();
     for f in &missing {
         eprintln!("MISSING scene {}: {}", f.scene, crate::comparison::gate_output::describe(f));
     }
+    let mut extra = missing;
+    extra.extend(owed_by_scenes(&scenes, &merged_suites)?);
     let fits = read_fit_records(dirs)?;
-    let (md, findings, _) = report_with_findings(&scenes, &refs, report_dir, (Some(golden), &rules), &fits, missing)?;
-    println!("gates: {}", Verdict::of(&findings));
-    println!("report: {}", md.display());
-    if n_missing > 0 {
-        return Err(Error::Drift { count: n_missing });
+    let (md, findings, _) = report_with_findings(&scenes, &refs, report_dir, (Some(golden), &rules), &fits, extra)?;
+    let verdict = Verdict::of(&findings);
+    outln!("gates: {verdict}");
+    outln!("report: {}", md.display());
+    // The exit status is the verdict's, as `check`'s: a drift fails the CI job that merges.
+    match verdict.failed {
+        0 => Ok(()),
+        count => Err(Error::Drift { count }),
     }
-    Ok(())
+}
+
+/// What the merged `scenes` owe their scene files in `suites` ([`owed::check`]): each
+/// shortfall named on stderr and returned as a gated failure; the scenes of suites not given
+/// named once.
+fn owed_by_scenes(scenes: &[StoredScene], suites: &[PathBuf]) -> Result<Vec<Finding>, Error> {
+    let owed = owed::check(scenes, suites)?;
+    for f in &owed.shortfalls {
+        eprintln!("SHORT scene {} {}: {} ({})", f.scene, f.solver, f.quantity, f.note);
+    }
+    if !owed.unchecked.is_empty() {
+        eprintln!(
+            "warning: {} merged scene(s) of suites not given with --suite, not checked against their scene files: {}",
+            owed.unchecked.len(),
+            owed.unchecked.join(", ")
+        );
+    }
+    Ok(owed.shortfalls)
 }
 
 /// The tolerance files of a run (`--tolerances`, then each suite's `tolerances.toml`), read and
@@ -685,6 +722,10 @@ pub fn gate_with(
     files.check_paths(golden)?;
     let refs = load_references(reference)?;
     let rules = file_rules(&files.tolerances, suite_dir)?;
+    if files.strict {
+        // Refused before any scene runs; the verdict's own check below covers what this cannot.
+        crate::comparison::strict::refuse_loosening(&rules, tolerances::defaults())?;
+    }
     let (dir, key, what, kind) = match against {
         Some(dir) => {
             (dir, "--against", "a folder of results written by `creepbench run` (--results)", Against::Previous)
@@ -734,18 +775,18 @@ pub fn check(
     let Gate { findings: all, loosened, suite_of, oscillating } =
         gate(suite_dir, reference, golden, against, shard, progress, files)?;
     let verdict = Verdict::of(&all);
-    println!("{verdict}\n");
-    print!("{}", console::per_model(&all, &suite_of));
+    outln!("{verdict}\n");
+    out!("{}", console::per_model(&all, &suite_of));
     if files.verbose {
-        println!();
-        print!("{}", compare::table(&compare::worst_per_group(&all)));
+        outln!();
+        out!("{}", compare::table(&compare::worst_per_group(&all)));
     }
     print_list("", &console::no_baseline(&all, files.verbose));
     print_list("", &oscillating);
     if !loosened.is_empty() {
-        println!("\n{} rule(s) of the run's files loosen what the defaults gate:", loosened.len());
+        outln!("\n{} rule(s) of the run's files loosen what the defaults gate:", loosened.len());
         for l in &loosened {
-            println!("  {l}");
+            outln!("  {l}");
         }
     }
     if against.is_some() {
@@ -772,12 +813,12 @@ fn print_list(head: &str, lines: &[String]) {
     if head.is_empty() && lines.is_empty() {
         return;
     }
-    println!();
+    outln!();
     if !head.is_empty() {
-        println!("{head}");
+        outln!("{head}");
     }
     for l in lines {
-        println!("  {l}");
+        outln!("  {l}");
     }
 }
 
@@ -786,6 +827,10 @@ fn print_list(head: &str, lines: &[String]) {
 /// the blessed scenes of other suites and shards — and swapped in with one atomic exchange.
 pub fn bless(suite_dir: &[PathBuf], golden: &Path, shard: Option<Shard>, progress: bool) -> Result<(), Error> {
     let scenes = run_suite(suite_dir, Runner::cli(shard, progress))?;
+    if scenes.is_empty() {
+        // An empty shard (noted by `run_suite`): golden/ stays as it is.
+        return Ok(());
+    }
     let suites = suite_names(suite_dir);
     // One writer of golden/ at a time; what it keeps is read under the lock, so that concurrent
     // blesses of other suites or shards all land.
@@ -988,7 +1033,7 @@ pub fn import_contact_output(file: &Path, out: Option<&Path>, cases: Option<&str
     }
     match out {
         Some(path) => write_whole(path, &csv)?,
-        None => print!("{csv}"),
+        None => crate::safety::stdout::write_data(csv.as_bytes()).map_err(Error::io("standard output"))?,
     }
     eprintln!(
         "{}: {} case(s): {rows} row(s) written; {module1} module-1 case(s) not read, {} without totals",

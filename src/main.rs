@@ -220,6 +220,11 @@ enum Command {
     },
 }
 
+/// One line on the console (standard output, which may be closed or full: never a panic).
+fn say(line: impl std::fmt::Display) {
+    creepbench::safety::stdout::print(format_args!("{line}\n"));
+}
+
 fn main() {
     let cli = Cli::parse();
     // An interrupted run kills the external models it started and removes their folders.
@@ -231,13 +236,14 @@ fn main() {
     }
     let result = match cli.command {
         Command::Fit { file, out, reference, golden } => {
-            commands::fit(&file, out.as_deref(), &reference, &golden).map(|f| println!("{}", f.display()))
+            commands::fit(&file, out.as_deref(), &reference, &golden).map(|f| say(f.display()))
         }
         Command::Expand { study, out, golden } => {
-            commands::expand(&study, &out, &golden).map(|files| files.iter().for_each(|f| println!("{}", f.display())))
+            commands::expand(&study, &out, &golden).map(|files| files.iter().for_each(|f| say(f.display())))
         }
-        Command::Simulate { scene, solvers, out, golden } => commands::simulate(&scene, &solvers, &out, &golden)
-            .map(|dirs| dirs.iter().for_each(|d| println!("{}", d.display()))),
+        Command::Simulate { scene, solvers, out, golden } => {
+            commands::simulate(&scene, &solvers, &out, &golden).map(|dirs| dirs.iter().for_each(|d| say(d.display())))
+        }
         Command::Run { suite: s, results, report, fits } => {
             // The shipped fits calibrate on the shipped suites: a suite of one's own runs none unless asked.
             let shipped = s.suite.iter().map(PathBuf::as_path).eq(DEFAULT_SUITES.iter().map(std::path::Path::new));
@@ -255,13 +261,12 @@ fn main() {
         }
         Command::Manifest { dir } => commands::manifest(&dir),
         Command::Export { what: ExportWhat::Contact { scene, out, golden } } => {
-            commands::export_contact(&scene, &out, &golden)
-                .map(|ps| ps.iter().for_each(|p| println!("{}", p.display())))
+            commands::export_contact(&scene, &out, &golden).map(|ps| ps.iter().for_each(|p| say(p.display())))
         }
         Command::Import { what: ImportWhat::Contact { deck, out, supported_only, overwrite, golden } } => {
             let options = commands::ImportOptions { supported_only, overwrite };
             commands::import_contact(&deck, out.as_deref(), options, &golden)
-                .map(|ps| ps.iter().for_each(|p| println!("{}", p.display())))
+                .map(|ps| ps.iter().for_each(|p| say(p.display())))
         }
         Command::Import { what: ImportWhat::ContactOutput { file, out, cases, golden } } => {
             commands::import_contact_output(&file, out.as_deref(), cases.as_deref(), &golden)

@@ -9,6 +9,9 @@ pub enum Against {
     Previous,
     /// A reference set from outside the project, by its label (`references`).
     Reference(&'static str),
+    /// The scene file a merged result was run from: what the result owes it (`owed`). No rule
+    /// file names it, so its failures cannot be loosened.
+    SceneFile,
 }
 
 impl Against {
@@ -17,6 +20,7 @@ impl Against {
             Against::Golden => "golden",
             Against::Previous => "previous",
             Against::Reference(label) => label,
+            Against::SceneFile => "scene file",
         }
     }
 

@@ -4,7 +4,7 @@
 pub use crate::comparison::finding::{Against, Ctx, Finding};
 use crate::comparison::references::References;
 use crate::comparison::tolerances;
-use crate::error::Error;
+use crate::error::{number, Error};
 use crate::suite::results::{self, StoredScene};
 use std::collections::BTreeMap;
 
@@ -249,7 +249,7 @@ pub fn failures(findings: &[Finding]) -> Vec<String> {
 }
 
 /// A gated miss: scene, solver, metric, step, both values and |diff| against allowed (or why the
-/// values could not be matched).
+/// values could not be matched); a number whose plain form is long (1.7e308) with an exponent.
 pub fn drift_line(f: &Finding) -> String {
     let head = format!(
         "DRIFT scene {} solver {} against {} metric {} step {}",
@@ -264,9 +264,9 @@ pub fn drift_line(f: &Finding) -> String {
     }
     format!(
         "{head}: ours {} vs {} (|diff| {} > allowed {:e}){}",
-        f.ours,
-        f.theirs,
-        f.diff,
+        number(f.ours),
+        number(f.theirs),
+        number(f.diff),
         f.allowed,
         if f.note.is_empty() { String::new() } else { format!(": {}", f.note) }
     )

@@ -128,8 +128,8 @@ pub fn moved(all: &[Finding], verbose: bool) -> (usize, Vec<String>) {
             f.solver,
             f.quantity,
             f.step.map_or("-".to_string(), |s| s.to_string()),
-            f.theirs,
-            f.ours,
+            crate::error::number(f.theirs),
+            crate::error::number(f.ours),
             f.diff,
             ratio(f)
         )

@@ -4,6 +4,7 @@
 
 use crate::comparison::compare::Finding;
 use crate::comparison::tolerance_file::Loosening;
+use crate::error::number;
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
@@ -36,9 +37,9 @@ pub fn describe(f: &Finding) -> String {
     let mut s = format!(
         "{} step {step}: ours {} vs {} {}, |diff| {:.3e}, allowed {:.3e}",
         f.quantity,
-        f.ours,
+        number(f.ours),
         f.against.label(),
-        f.theirs,
+        number(f.theirs),
         f.diff,
         f.allowed
     );

@@ -125,7 +125,7 @@ fn check_replaceable(found: &Path, target: &Path) -> Result<bool, FolderError> {
     }
 }
 
-#[derive(Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 enum Sibling {
     New,
     Old,
@@ -138,20 +138,47 @@ fn sibling_path(parent: &Path, name: &str, kind: Sibling) -> PathBuf {
     parent.join(format!(".{name}{TAG}{kind}-{}-{n}", std::process::id()))
 }
 
-/// The kind of a sibling of `name` from its file name, `None` for anything else.
-fn parse_sibling(file_name: &OsStr, name: &str) -> Option<Sibling> {
-    let rest = file_name.to_str()?.strip_prefix('.')?.strip_prefix(name)?.strip_prefix(TAG)?;
+/// A folder of this tool's name pattern `.{name}.creepbench-{new|old}-{pid}-{n}`: the target
+/// `name` it was built for, its kind and the process that made it.
+#[derive(Debug, Clone, PartialEq)]
+struct Leftover {
+    name: String,
+    kind: Sibling,
+    pid: u32,
+}
+
+/// The leftover a file name describes, `None` for anything else.
+fn parse_leftover(file_name: &OsStr) -> Option<Leftover> {
+    let rest = file_name.to_str()?.strip_prefix('.')?;
+    let (name, rest) = rest.rsplit_once(TAG)?;
     let (kind, rest) = rest.split_once('-')?;
     let (pid, n) = rest.split_once('-')?;
     let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
-    if !digits(pid) || !digits(n) {
+    if name.is_empty() || !digits(pid) || !digits(n) {
         return None;
     }
-    match kind {
-        "new" => Some(Sibling::New),
-        "old" => Some(Sibling::Old),
-        _ => None,
+    let kind = match kind {
+        "new" => Sibling::New,
+        "old" => Sibling::Old,
+        _ => return None,
+    };
+    Some(Leftover { name: name.into(), kind, pid: pid.parse().ok()? })
+}
+
+/// The kind of a sibling of `name` from its file name, `None` for anything else.
+#[cfg(test)]
+fn parse_sibling(file_name: &OsStr, name: &str) -> Option<Sibling> {
+    parse_leftover(file_name).filter(|l| l.name == name).map(|l| l.kind)
+}
+
+/// Whether the process `pid` that made a leftover no longer runs (this process always runs; a
+/// process of another user that cannot be signalled runs too).
+fn owner_gone(pid: u32) -> bool {
+    if pid == std::process::id() {
+        return false;
     }
+    let Some(pid) = i32::try_from(pid).ok().and_then(rustix::process::Pid::from_raw) else { return false };
+    rustix::process::test_kill_process(pid) == Err(rustix::io::Errno::SRCH)
 }
 
 /// Open `dir`'s marker (creating it when `create`) and lock it exclusively without waiting: a
@@ -175,28 +202,51 @@ fn lock_marker(dir: &Path, create: bool) -> io::Result<File> {
     Ok(file)
 }
 
-/// Remove the leftovers of killed runs for `target`: siblings whose marker nobody holds, and
-/// empty ones (killed before their marker). When `target` is missing because a run was killed
-/// between the two renames of the fallback, its old tree is put back.
+/// Remove the leftovers of killed runs for `target` (see [`clean_leftover`]).
 fn clean_stale(parent: &Path, name: &str, target: &Path) {
     let Ok(entries) = fs::read_dir(parent) else { return };
     for entry in entries.flatten() {
-        let Some(kind) = parse_sibling(&entry.file_name(), name) else { continue };
-        if !entry.file_type().is_ok_and(|t| t.is_dir()) {
-            continue;
+        match parse_leftover(&entry.file_name()) {
+            Some(l) if l.name == name => clean_leftover(&entry, &l, target),
+            _ => {}
         }
-        let path = entry.path();
-        match lock_marker(&path, false) {
-            Err(e) if e.kind() == io::ErrorKind::NotFound => {
-                let _ = fs::remove_dir(&path);
-            }
-            Err(_) => {}
-            Ok(_marker) => {
-                if kind == Sibling::Old && rename_noreplace(&path, target).is_ok() {
-                    continue;
-                }
+    }
+}
+
+/// Remove every leftover of killed runs in `dir`, whatever target it was built for (see
+/// [`clean_leftover`]): what the run that takes `dir`'s lock does first, so that a leftover of a
+/// target never written again (an interrupted `bless`, a scene since renamed) goes too.
+pub fn clean_leftovers(dir: &Path) {
+    let Ok(entries) = fs::read_dir(dir) else { return };
+    for entry in entries.flatten() {
+        if let Some(l) = parse_leftover(&entry.file_name()) {
+            clean_leftover(&entry, &l, &dir.join(&l.name));
+        }
+    }
+}
+
+/// Remove one leftover folder of a killed run: one whose marker nobody holds; an empty one
+/// (killed before its marker); one whose marker is gone (an interrupted cleanup removed it
+/// first) once the process that made it no longer runs. When `target` is missing because a run
+/// was killed between the two renames of the fallback, its old tree is put back instead. A
+/// folder a live run holds is left alone.
+fn clean_leftover(entry: &fs::DirEntry, leftover: &Leftover, target: &Path) {
+    if !entry.file_type().is_ok_and(|t| t.is_dir()) {
+        return;
+    }
+    let path = entry.path();
+    match lock_marker(&path, false) {
+        Err(e) if e.kind() == io::ErrorKind::NotFound => {
+            if fs::remove_dir(&path).is_err() && owner_gone(leftover.pid) {
                 let _ = fs::remove_dir_all(&path);
             }
+        }
+        Err(_) => {}
+        Ok(_marker) => {
+            if leftover.kind == Sibling::Old && rename_noreplace(&path, target).is_ok() {
+                return;
+            }
+            let _ = fs::remove_dir_all(&path);
         }
     }
 }

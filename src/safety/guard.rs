@@ -15,6 +15,8 @@ pub enum GuardError {
     Inside { path: PathBuf, protected: PathBuf },
     #[error("refusing to write {}: it is inside {}, reference data checksummed in its {}", path.display(), protected.display(), super::manifest::MANIFEST)]
     Reference { path: PathBuf, protected: PathBuf },
+    #[error("refusing to write {}: it is another name (a hard link) of {}, inside {}, which only `creepbench bless` writes", path.display(), file.display(), protected.display())]
+    Alias { path: PathBuf, file: PathBuf, protected: PathBuf },
     #[error("refusing to write {}: it exists and is not a regular file (a folder, FIFO or device)", path.display())]
     NotAFile { path: PathBuf },
     #[error("refusing to write into {}: it exists and is not a folder", path.display())]
@@ -54,14 +56,70 @@ pub fn is_blessed_tree(dir: &Path) -> bool {
         })
 }
 
-/// An output file: outside the protected trees, and a regular file or none yet (never a FIFO,
-/// a device or a folder: writing one would block or fail after the work).
+/// An output file: outside the protected trees — where its name leads, through a symbolic link
+/// that names a file not yet there too — and a regular file or none yet (never a FIFO, a device
+/// or a folder: writing one would block or fail after the work), nor another name (a hard link)
+/// of a file in `protected`: a protected file is known by its device and inode, whatever its name.
 pub fn guard_output_file(path: &Path, protected: &Path) -> Result<(), GuardError> {
     guard_not_under(path, protected)?;
+    let target = super::link::write_target(path).map_err(|source| GuardError::Io { path: path.into(), source })?;
+    guard_not_under(&target, protected)?;
     match std::fs::metadata(path) {
         Ok(m) if !m.is_file() => Err(GuardError::NotAFile { path: path.into() }),
-        _ => Ok(()),
+        Ok(m) => guard_not_alias(path, &m, protected),
+        Err(_) => Ok(()),
     }
+}
+
+/// Where a write through a symbolic link lands must not be inside a tree recognised as protected
+/// by what it is (a blessed tree, a checksummed one): [`super::whole::write`] asks this of every
+/// link it writes through, whoever its caller (a report's `validation.md` that is a link).
+pub fn guard_link_target(target: &Path) -> Result<(), GuardError> {
+    for dir in resolve(target)?.ancestors() {
+        if is_blessed_tree(dir) {
+            return Err(GuardError::Inside { path: target.into(), protected: dir.into() });
+        }
+        if dir.join(super::manifest::MANIFEST).is_file() {
+            return Err(GuardError::Reference { path: target.into(), protected: dir.into() });
+        }
+    }
+    Ok(())
+}
+
+/// An error if the existing file `path` (metadata `meta`) is a hard link of a file in `protected`.
+fn guard_not_alias(path: &Path, meta: &std::fs::Metadata, protected: &Path) -> Result<(), GuardError> {
+    use std::os::unix::fs::MetadataExt;
+    if meta.nlink() < 2 {
+        return Ok(());
+    }
+    match find_file(protected, (meta.dev(), meta.ino()), ALIAS_SEARCH_DEPTH) {
+        Some(file) => Err(GuardError::Alias { path: path.into(), file, protected: protected.into() }),
+        None => Ok(()),
+    }
+}
+
+/// Folder levels of a protected tree searched for another name of an output file (golden/ has
+/// two: scene folders and their files).
+const ALIAS_SEARCH_DEPTH: usize = 4;
+
+/// A regular file under `dir` (`depth` levels at most, links not followed) with this identity.
+fn find_file(dir: &Path, (dev, ino): (u64, u64), depth: usize) -> Option<PathBuf> {
+    use std::os::unix::fs::MetadataExt;
+    if depth == 0 {
+        return None;
+    }
+    for entry in std::fs::read_dir(dir).ok()?.flatten() {
+        let Ok(m) = std::fs::symlink_metadata(entry.path()) else { continue };
+        if m.is_file() && m.dev() == dev && m.ino() == ino {
+            return Some(entry.path());
+        }
+        if m.is_dir() {
+            if let Some(found) = find_file(&entry.path(), (dev, ino), depth - 1) {
+                return Some(found);
+            }
+        }
+    }
+    None
 }
 
 /// An output folder: outside the protected trees, and a folder or none yet.

@@ -1,6 +1,7 @@
 //! A lock on a folder that results are written into, so that two runs into one folder take
 //! turns (or the later one stops with a clear message) instead of failing on each other's files.
 
+use super::folder;
 use std::fs::{File, TryLockError};
 use std::io;
 use std::path::{Path, PathBuf};
@@ -34,7 +35,9 @@ pub struct FolderLock {
 
 /// Lock `dir` (created if missing) for writing, waiting up to `wait` for another holder. The
 /// lock is on the folder itself, an advisory `flock`: lock the folder that holds result folders
-/// (never one that is replaced whole), once per process.
+/// (never one that is replaced whole), once per process. Once it is taken, the leftovers of
+/// killed runs in `dir` are removed ([`folder::clean_leftovers`]: this tool's own folders by
+/// their name pattern, whose owner no longer runs or no live run holds).
 pub fn lock_folder(dir: &Path, wait: Duration) -> Result<FolderLock, LockError> {
     let io_err = |source| LockError::Io { path: dir.into(), source };
     std::fs::create_dir_all(dir).map_err(io_err)?;
@@ -42,7 +45,10 @@ pub fn lock_folder(dir: &Path, wait: Duration) -> Result<FolderLock, LockError> 
     let start = Instant::now();
     loop {
         match file.try_lock() {
-            Ok(()) => return Ok(FolderLock { _file: file }),
+            Ok(()) => {
+                folder::clean_leftovers(dir);
+                return Ok(FolderLock { _file: file });
+            }
             Err(TryLockError::Error(e)) => return Err(io_err(e)),
             Err(TryLockError::WouldBlock) if start.elapsed() >= wait => {
                 return Err(LockError::Busy { path: dir.into(), waited: start.elapsed() });

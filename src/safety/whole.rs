@@ -8,7 +8,15 @@ use std::path::Path;
 
 /// Write `contents` to `path` whole (a temporary file in the same folder, then one rename), with
 /// the permissions a newly created file gets (0666 less the umask), as `std::fs::write` would.
+/// A symbolic link is written through: the file it names is replaced (atomically, in that
+/// file's folder), the link stays ([`super::link::write_target`]); never into a protected tree
+/// ([`super::guard::guard_link_target`]).
 pub fn write(path: &Path, contents: &[u8]) -> std::io::Result<()> {
+    let target = super::link::write_target(path)?;
+    if target != path {
+        super::guard::guard_link_target(&target).map_err(std::io::Error::other)?;
+    }
+    let path = &target;
     let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
     let mut builder = tempfile::Builder::new();
     #[cfg(unix)]

@@ -6,7 +6,9 @@ use std::collections::BTreeSet;
 use toml::{Table, Value};
 
 /// Parse TOML text as a table; an error names `field` (a file, usually), the line and column
-/// where the parser stopped, an excerpt of that line and the parser's message.
+/// where the parser stopped, an excerpt of that line and the parser's message. The line is
+/// quoted only if it looks like a line of this tool's own files ([`looks_like_own_toml`]): a file
+/// that is not (`passwd.toml -> /etc/passwd`) is named by its path and position only.
 pub fn parse_toml(text: &str, field: impl Into<String>) -> Result<Table, InputError> {
     text.parse().map_err(|e: toml::de::Error| {
         let field = field.into();
@@ -14,15 +16,27 @@ pub fn parse_toml(text: &str, field: impl Into<String>) -> Result<Table, InputEr
         match e.span() {
             Some(span) => {
                 let at = LineColumn::of(text, span.start);
-                InputError::new(
-                    format!("{field} line {}, column {}", at.line, at.column),
-                    format!("malformed TOML in {:?}", at.excerpt),
-                    allowed,
-                )
+                let line = text.lines().nth(at.line - 1).unwrap_or("");
+                let value = match looks_like_own_toml(line) {
+                    true => format!("malformed TOML in {:?}", at.excerpt),
+                    false => "malformed TOML (not quoted: not this tool's TOML)".to_string(),
+                };
+                InputError::new(format!("{field} line {}, column {}", at.line, at.column), value, allowed)
             }
             None => InputError::new(field, "malformed TOML", allowed),
         }
     })
+}
+
+/// Whether a line may be quoted in a message, as [`crate::error::name_excerpt`] quotes a column
+/// name only if it looks like one: a table header or a `key = value` line of names, numbers and
+/// the punctuation of TOML (no `:`, `/`, `@`, `$`, …), as this tool's scene, study, fit and
+/// tolerance files are written. Any other line — a password file's, a key's — is not quoted.
+pub fn looks_like_own_toml(line: &str) -> bool {
+    let t = line.trim();
+    let key = |k: &str| !k.is_empty() && k.chars().all(|c| c.is_alphanumeric() || "_-.\"' ".contains(c));
+    let shape = t.starts_with('[') || t.split_once('=').is_some_and(|(k, _)| key(k.trim()));
+    shape && t.chars().all(|c| c.is_alphanumeric() || c.is_whitespace() || "_.-+=[]{},\"'#*".contains(c))
 }
 
 /// A byte offset of a text as a 1-based line and column (in characters) with an excerpt of

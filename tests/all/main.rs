@@ -28,6 +28,7 @@ mod gate_baselines;
 mod gate_outputs;
 mod gate_promises;
 mod gate_safety;
+mod gate_sturdy;
 mod layering;
 mod linear_model;
 mod nonhertz;

@@ -173,8 +173,10 @@ fn shards_merged_with_a_rule_file_give_the_unsharded_verdict() {
         args.extend(["--report", report]);
         args.extend(extra);
         let o = creepbench(&r, &args);
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-        report_verdict(&Path::new(report).join("validation.md"))
+        let verdict = report_verdict(&Path::new(report).join("validation.md"));
+        // merge exits with its verdict, as check does (issue 48).
+        assert_eq!(o.status.code(), Some(i32::from(verdict.1 > 0)), "{}", String::from_utf8_lossy(&o.stderr));
+        verdict
     };
     let report = dir.join("merged");
     assert_eq!(merge(&["--tolerances", rules_s], report.to_str().unwrap()), unsharded);
@@ -233,6 +235,7 @@ fn merge_applies_the_merged_suites_tolerance_files() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let report = dir.join("merged");
     let o = creepbench(&r, &["merge", res.to_str().unwrap(), "--suite", suite_s, "--report", report.to_str().unwrap()]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // Two failures: merge exits 1, as check did (issue 48).
+    assert_eq!(o.status.code(), Some(1), "{}", String::from_utf8_lossy(&o.stderr));
     assert_eq!(report_verdict(&report.join("validation.md")), checked);
 }
