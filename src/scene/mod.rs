@@ -416,11 +416,16 @@ pub fn is_valid_name(s: &str) -> bool {
     !s.is_empty() && s.len() <= 100 && s.bytes().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'_')
 }
 
+/// A scene file's text (any kind of scene), read within [`crate::safety::read::SCENE_LIMIT_BYTES`].
+pub fn read_scene_text(path: &Path) -> Result<String, InputError> {
+    crate::safety::read::read_text(path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")
+        .map_err(|e| InputError::new("scene", path.display(), format!("a readable scene file (TOML): {e}")))
+}
+
 impl Scene {
     /// Read and validate a scene file.
     pub fn from_file(path: &Path) -> Result<Scene, InputError> {
-        let text = crate::safety::read::read_text(path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")
-            .map_err(|e| InputError::new("scene", path.display(), format!("a readable scene file (TOML): {e}")))?;
+        let text = read_scene_text(path)?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         Scene::from_toml(&text, &dir)
     }

@@ -103,8 +103,7 @@ pub fn is_wheelrail(doc: &toml::Table) -> bool {
 /// The wheel–rail scene in `path`, if the file is one (a TOML file with a `[wheelrail]` table);
 /// errors name the file.
 pub fn read_if_wheelrail(path: &Path) -> Result<Option<WheelRailScene>, InputError> {
-    let text = crate::safety::read::read_text(path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")
-        .map_err(|e| InputError::new("scene", path.display(), format!("a readable scene file (TOML): {e}")))?;
+    let text = super::read_scene_text(path)?;
     let in_file = |e: InputError| InputError { field: format!("{}: {}", path.display(), e.field), ..e };
     let doc = parse_toml(&text, "scene").map_err(in_file)?;
     if !is_wheelrail(&doc) {
