@@ -14,7 +14,7 @@ use crate::pipeline;
 use crate::report::table;
 use crate::report::{self, ReportInput};
 use crate::report::{ladder, registry, sections};
-use crate::safety::stdout::{out, outln};
+use crate::safety::stdout::{errln, out, outln};
 use crate::safety::{folder, guard, lock};
 use crate::suite::results::{self, StoredScene};
 use crate::suite::{self, Shard};
@@ -39,18 +39,18 @@ pub fn simulate(scene: &Path, solvers: &[String], out: &Path, golden: &Path) -> 
     for problem in problems {
         let before = problem.warnings.len();
         for w in &problem.warnings {
-            eprintln!("warning: {w}");
+            errln!("warning: {w}");
         }
         let result = pipeline::run(problem)?;
         for w in &result.problem.warnings[before..] {
-            eprintln!("warning: {w}");
+            errln!("warning: {w}");
         }
         let stored = StoredScene::from_result(&result);
         // Writers into one folder take turns (as `run` does), so two simulations both land.
         let _lock = lock::lock_folder(out, lock::DEFAULT_LOCK_WAIT)?;
         dirs.push(results::write_scenes(out, std::slice::from_ref(&stored), false)?.remove(0));
         for (h, t) in result.histories.iter().zip(&result.timing) {
-            eprintln!("{}: {} rows in {:.3} s", h.solver, h.rows.len(), t.wall_s);
+            errln!("{}: {} rows in {:.3} s", h.solver, h.rows.len(), t.wall_s);
         }
     }
     Ok(dirs)
@@ -76,7 +76,7 @@ fn simulate_wheelrail(
     let run = pipeline::wheelrail_scene::run_scene(&scene)?;
     let _lock = lock::lock_folder(out, lock::DEFAULT_LOCK_WAIT)?;
     let dir = suite::wheelrail::write(out, &run)?;
-    eprintln!(
+    errln!(
         "{}: {} cases, {} models in {:.3} s",
         run.name,
         run.cases.len(),
@@ -180,7 +180,7 @@ fn run_suite(suite_dir: &[PathBuf], runner: Runner) -> Result<Vec<StoredScene>, 
     }
     let start = Instant::now();
     let results = suite::run_with(&files, progress, in_process)?;
-    eprintln!("ran {} scene(s) in {:.2} s", results.len(), start.elapsed().as_secs_f64());
+    errln!("ran {} scene(s) in {:.2} s", results.len(), start.elapsed().as_secs_f64());
     Ok(results.iter().map(StoredScene::from_result).collect())
 }
 
@@ -194,7 +194,7 @@ fn empty_shard(suite_dir: &[PathBuf], shard: Option<Shard>) -> Result<(), Error>
     };
     match shard {
         Some(Shard { index, count }) if all > 0 => {
-            eprintln!(
+            errln!(
                 "note: shard {index}/{count} holds none of the {all} scene(s) of {}: nothing to run",
                 dirs.join(", ")
             );
@@ -229,9 +229,9 @@ fn report_with_findings(
 ) -> Result<(PathBuf, Vec<Finding>, Vec<Loosening>), Error> {
     let mut findings = compare::evaluate(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
     findings.extend(missing);
-    let loosened = tolerance_file::apply(rules, &mut findings, |_| false)?;
+    let loosened = tolerance_file::apply(rules, &mut findings, &suite_of(scenes), |_| false)?;
     for l in &loosened {
-        eprintln!("loosened: {l}");
+        errln!("loosened: {l}");
     }
     let mut all = registry::all(scenes, refs);
     if let Some(s) = sections::loosened(&loosened) {
@@ -245,7 +245,7 @@ fn report_with_findings(
     let report = report::build(&input);
     std::fs::create_dir_all(out).map_err(Error::io(out))?;
     report.write(out)?;
-    table::write(out, &table::rows(scenes, &findings)).map_err(Error::io(out.join("results.csv")))?;
+    table::write(out, &table::rows(scenes, &findings)).map_err(Error::io(out.join(table::FILE)))?;
     Ok((out.join("validation.md"), findings, loosened))
 }
 
@@ -287,7 +287,7 @@ pub fn run(
 ) -> Result<(), Error> {
     let outcome = run_with(suite_dir, reference, outputs, Runner::cli(shard, progress), golden)?;
     let Some(md) = outcome.report else {
-        eprintln!("shard done; build the report with `creepbench merge {} ...`", outcome.results_dir.display());
+        errln!("shard done; build the report with `creepbench merge {} ...`", outcome.results_dir.display());
         return Ok(());
     };
     for line in &outcome.oscillating {
@@ -312,6 +312,9 @@ pub fn run_with(
     let shard = runner.shard;
     guard::guard_output_dir(results_dir, golden)?;
     guard::guard_output_dir(report_dir, golden)?;
+    if shard.is_none() {
+        report::check_outputs(report_dir, golden)?;
+    }
     // No scene's result folder may be another output's folder: refused before anything runs.
     let names = suite::scene_files(suite_dir, shard)?.into_iter().map(|s| s.name).collect::<Vec<_>>();
     if fits.is_some() {
@@ -328,7 +331,7 @@ pub fn run_with(
     // Runs into one folder take turns rather than fail on each other's half-written scenes.
     let _lock = lock::lock_folder(results_dir, lock::DEFAULT_LOCK_WAIT)?;
     results::write_scenes(results_dir, &scenes, true)?;
-    eprintln!("results in {}", results_dir.display());
+    errln!("results in {}", results_dir.display());
     let mut ran: Vec<String> = scenes.iter().map(|s| s.name.clone()).collect();
     ran.sort();
     let mut outcome = RunOutcome {
@@ -383,7 +386,7 @@ fn other_runs_scenes(results_dir: &Path, ran: &[String], shard: bool) -> Vec<Str
             true => "; `merge` reads every scene folder of the folders it is given",
             false => ", left out of this run's report and results.csv",
         };
-        eprintln!(
+        errln!(
             "warning: {} holds {} scene folder(s) this run did not write{what}: {}",
             results_dir.display(),
             others.len(),
@@ -402,7 +405,7 @@ fn other_runs_fits(results_dir: &Path, fitted: &[String]) -> Vec<String> {
         .filter(|n| !fitted.contains(n))
         .collect();
     if !others.is_empty() {
-        eprintln!(
+        errln!(
             "warning: {} holds {} fit record(s) this run did not write, left out of this run's report: {}",
             results_dir.join(FITS_SUBDIR).display(),
             others.len(),
@@ -479,7 +482,7 @@ fn run_fits(
             .map_err(|e| Error::Fit { fit: spec.name.clone(), source: e.into() })?;
         write_whole(&fit_record_path(results_dir, &spec.name), &json)?;
         write_whole(&out.join(format!("{}.toml", spec.name)), &fit::render(&outcome)?)?;
-        eprintln!("fit {}: {} evaluations in {:.1} s", spec.name, outcome.evaluations, start.elapsed().as_secs_f64());
+        errln!("fit {}: {} evaluations in {:.1} s", spec.name, outcome.evaluations, start.elapsed().as_secs_f64());
     }
     Ok(())
 }
@@ -538,6 +541,7 @@ pub fn merge(
     tolerances: &[PathBuf],
 ) -> Result<(), Error> {
     guard::guard_output_dir(report_dir, golden)?;
+    report::check_outputs(report_dir, golden)?;
     for (i, d) in dirs.iter().enumerate() {
         for e in &dirs[..i] {
             if guard::same_place(d, e)? {
@@ -575,7 +579,7 @@ pub fn merge(
         false => Vec::new(),
     };
     for f in &missing {
-        eprintln!("MISSING scene {}: {}", f.scene, crate::comparison::gate_output::describe(f));
+        errln!("MISSING scene {}: {}", f.scene, crate::comparison::gate_output::describe(f));
     }
     let mut extra = missing;
     extra.extend(owed_by_scenes(&scenes, &merged_suites)?);
@@ -597,10 +601,10 @@ pub fn merge(
 fn owed_by_scenes(scenes: &[StoredScene], suites: &[PathBuf]) -> Result<Vec<Finding>, Error> {
     let owed = owed::check(scenes, suites)?;
     for f in &owed.shortfalls {
-        eprintln!("SHORT scene {} {}: {} ({})", f.scene, f.solver, f.quantity, f.note);
+        errln!("SHORT scene {} {}: {} ({})", f.scene, f.solver, f.quantity, f.note);
     }
     if !owed.unchecked.is_empty() {
-        eprintln!(
+        errln!(
             "warning: {} merged scene(s) of suites not given with --suite, not checked against their scene files: {}",
             owed.unchecked.len(),
             owed.unchecked.join(", ")
@@ -614,8 +618,8 @@ fn owed_by_scenes(scenes: &[StoredScene], suites: &[PathBuf]) -> Result<Vec<Find
 pub fn file_rules(given: &[PathBuf], suite_dir: &[PathBuf]) -> Result<Vec<Rule>, Error> {
     let labels = tolerances::labels();
     let mut rules = Vec::new();
-    for path in tolerance_file::sources(given, suite_dir) {
-        rules.extend(tolerance_file::load(&path, &labels)?);
+    for (path, suite) in tolerance_file::sources(given, suite_dir) {
+        rules.extend(tolerance_file::load(&path, &labels)?.into_iter().map(|r| Rule { suite: suite.clone(), ..r }));
     }
     Ok(rules)
 }
@@ -747,14 +751,15 @@ pub fn gate_with(
         Some(s) => suite::scene_names(suite_dir)?.into_iter().filter(|n| !s.takes(n)).collect(),
         None => Vec::new(),
     };
-    let loosened =
-        tolerance_file::apply(&rules, &mut all, |r| other_shards.iter().any(|n| tolerance_file::glob(&r.scene, n)))?;
+    let suite_of = suite_of(&scenes);
+    let loosened = tolerance_file::apply(&rules, &mut all, &suite_of, |r| {
+        other_shards.iter().any(|n| tolerance_file::glob(&r.scene, n))
+    })?;
     if files.strict {
         if let Some(l) = loosened.first() {
             return Err(InputError::new(&l.origin, l.to_string(), "no loosening of a default gate (--strict)").into());
         }
     }
-    let suite_of: BTreeMap<String, String> = scenes.iter().map(|s| (s.name.clone(), s.scene.suite.clone())).collect();
     let oscillating = console::oscillating(&scenes, files.verbose);
     Ok(Gate { findings: all, loosened, suite_of, oscillating })
 }
@@ -802,7 +807,7 @@ pub fn check(
         Ok(())
     } else {
         for line in console::drifts(&all, files.verbose) {
-            eprintln!("{line}");
+            errln!("{line}");
         }
         Err(Error::Drift { count: verdict.failed })
     }
@@ -850,7 +855,7 @@ pub fn bless(suite_dir: &[PathBuf], golden: &Path, shard: Option<Shard>, progres
         results::write_scenes(new, &scenes, false)?;
         Ok(())
     })?;
-    eprintln!(
+    errln!(
         "blessed {} scene(s) into {} ({} kept from other suites or shards)",
         scenes.len(),
         golden.display(),
@@ -860,6 +865,11 @@ pub fn bless(suite_dir: &[PathBuf], golden: &Path, shard: Option<Shard>, progres
 }
 
 /// The folder names of the suites (a blessed scene records its suite's).
+/// Each scene's suite (its folder's name), by scene name.
+fn suite_of(scenes: &[StoredScene]) -> BTreeMap<String, String> {
+    scenes.iter().map(|s| (s.name.clone(), s.scene.suite.clone())).collect()
+}
+
 fn suite_names(suite_dir: &[PathBuf]) -> Vec<String> {
     suite_dir.iter().filter_map(|d| d.file_name().map(|n| n.to_string_lossy().to_string())).collect()
 }
@@ -869,7 +879,7 @@ pub fn manifest(dir: &Path) -> Result<(), Error> {
     // Blessed data are bless's alone.
     guard::guard_manifest_dir(dir)?;
     let n = crate::safety::manifest::write(dir).map_err(|source| Error::Manifest { dir: dir.to_path_buf(), source })?;
-    eprintln!("{n} file(s) listed in {}", dir.join(crate::safety::manifest::MANIFEST).display());
+    errln!("{n} file(s) listed in {}", dir.join(crate::safety::manifest::MANIFEST).display());
     Ok(())
 }
 
@@ -955,7 +965,7 @@ pub fn import_contact(
     let imported = crate::import::contact::import_into(deck, &out)?;
     let skipped: Vec<_> = imported.statuses.iter().filter(|s| !s.supported()).collect();
     for s in &skipped {
-        eprintln!(
+        errln!(
             "{} case {} (line {}): not supported: {}",
             if options.supported_only { "skipped" } else { "refused" },
             s.case,
@@ -1035,7 +1045,7 @@ pub fn import_contact_output(file: &Path, out: Option<&Path>, cases: Option<&str
         Some(path) => write_whole(path, &csv)?,
         None => crate::safety::stdout::write_data(csv.as_bytes()).map_err(Error::io("standard output"))?,
     }
-    eprintln!(
+    errln!(
         "{}: {} case(s): {rows} row(s) written; {module1} module-1 case(s) not read, {} without totals",
         file.display(),
         all.len(),

@@ -229,10 +229,10 @@ fn main() {
     let cli = Cli::parse();
     // An interrupted run kills the external models it started and removes their folders.
     if let Err(e) = creepbench::safety::interrupt::install() {
-        eprintln!("warning: {e}");
+        creepbench::safety::stdout::print_err(format_args!("warning: {e}\n"));
     }
     if let Some(w) = creepbench::safety::threads::cap_threads() {
-        eprintln!("warning: {w}");
+        creepbench::safety::stdout::print_err(format_args!("warning: {w}\n"));
     }
     let result = match cli.command {
         Command::Fit { file, out, reference, golden } => {
@@ -273,7 +273,7 @@ fn main() {
         }
     };
     if let Err(e) = result {
-        eprintln!("error: {e}");
+        creepbench::safety::stdout::print_err(format_args!("error: {e}\n"));
         std::process::exit(e.exit_code());
     }
 }

@@ -25,6 +25,9 @@ pub struct Rule {
     /// Said explicitly: this rule may make a gate unable to fail (`disable = true`, with its why).
     pub disable: bool,
     pub why: String,
+    /// The suite folder (its name) whose own `tolerances.toml` gave the rule: it covers that
+    /// suite's scenes only. `None` for `--tolerances` files and the defaults: every scene.
+    pub suite: Option<String>,
 }
 
 impl Rule {
@@ -91,6 +94,7 @@ fn reported(origin: String, against: Against, why: &str) -> Rule {
         gated: false,
         disable: false,
         why: why.into(),
+        suite: None,
     }
 }
 

@@ -124,6 +124,7 @@ mod tests {
             gated,
             disable: false,
             why: "test".into(),
+            suite: None,
         }
     }
 

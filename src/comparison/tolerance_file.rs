@@ -33,6 +33,7 @@ use crate::comparison::finding::Finding;
 pub use crate::comparison::rule::{glob, Rule};
 use crate::error::InputError;
 use crate::scene::reader::{Range, Section};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// Read a rule file; `labels` are the comparisons a rule may name.
@@ -151,15 +152,19 @@ pub fn parse(text: &str, name: &str, labels: &[Against]) -> Result<Vec<Rule>, In
         let disable = s.opt_bool("disable")?.unwrap_or(false);
         let why = s.str("why", "the reason for this tolerance (reviewed with it)")?.to_string();
         s.finish()?;
-        out.push(Rule { origin, against, scene, solver, quantity, abs, rel, gated, disable, why });
+        out.push(Rule { origin, against, scene, solver, quantity, abs, rel, gated, disable, why, suite: None });
     }
     Ok(out)
 }
 
-/// Every rule file of a run: the `--tolerances` files, then each suite folder's `tolerances.toml`.
-pub fn sources(given: &[PathBuf], suite_dirs: &[PathBuf]) -> Vec<PathBuf> {
-    let suite_files = suite_dirs.iter().map(|d| d.join(crate::suite::TOLERANCE_FILE)).filter(|p| p.is_file());
-    given.iter().cloned().chain(suite_files).collect()
+/// Every rule file of a run: the `--tolerances` files (every scene), then each suite folder's
+/// `tolerances.toml` with the folder's name (that suite's scenes only).
+pub fn sources(given: &[PathBuf], suite_dirs: &[PathBuf]) -> Vec<(PathBuf, Option<String>)> {
+    let suite_files = suite_dirs.iter().filter_map(|d| {
+        let path = d.join(crate::suite::TOLERANCE_FILE);
+        path.is_file().then(|| (path, d.file_name().map(|n| n.to_string_lossy().to_string())))
+    });
+    given.iter().map(|p| (p.clone(), None)).chain(suite_files).collect()
 }
 
 /// Re-judge every finding by the first file rule that covers it (the default rule stays where
@@ -171,12 +176,16 @@ pub fn sources(given: &[PathBuf], suite_dirs: &[PathBuf]) -> Vec<PathBuf> {
 pub fn apply(
     rules: &[Rule],
     findings: &mut [Finding],
+    suite_of: &BTreeMap<String, String>,
     elsewhere: impl Fn(&Rule) -> bool,
 ) -> Result<Vec<Loosening>, InputError> {
     let mut decided = vec![0usize; rules.len()];
     let mut loosened = vec![0usize; rules.len()];
+    // A suite's own rule covers its suite's scenes only.
+    let in_scope = |r: &Rule, scene: &str| r.suite.as_ref().is_none_or(|s| suite_of.get(scene) == Some(s));
     for f in findings.iter_mut() {
-        if let Some(i) = rules.iter().position(|r| r.covers(f.against, &f.scene, &f.solver, &f.quantity)) {
+        let covers = |r: &Rule| r.covers(f.against, &f.scene, &f.solver, &f.quantity) && in_scope(r, &f.scene);
+        if let Some(i) = rules.iter().position(covers) {
             let r = &rules[i];
             let allowed = r.allowed(f.theirs);
             decided[i] += 1;

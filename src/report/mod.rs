@@ -51,6 +51,26 @@ pub struct Report {
 /// The report's folder of figures.
 pub const FIGURES: &str = "figures";
 
+/// An error if any file or folder [`Report::write`] writes under `dir` could not be written:
+/// inside `protected` (also through a link), or a folder this tool did not write. Asked before
+/// any work (issue 48 item 4).
+pub fn check_outputs(dir: &Path, protected: &Path) -> Result<(), Error> {
+    for sub in [FIGURES, linked_table::DIR] {
+        let path = dir.join(sub);
+        crate::safety::guard::guard_output_dir(&path, protected)?;
+        folder::check_tree_replaceable(&path).map_err(|e| {
+            crate::error::InputError::new(
+                "--report",
+                path.display(),
+                format!("none yet, or a folder creepbench wrote ({e})"),
+            )
+        })?;
+    }
+    crate::safety::guard::guard_output_file(&dir.join("validation.md"), protected)?;
+    crate::safety::guard::guard_output_file(&dir.join(table::FILE), protected)?;
+    Ok(())
+}
+
 impl Report {
     /// Write `dir/figures/*.svg` and `dir/tables/*.md`, each folder replaced whole and atomically
     /// (and only a folder creepbench wrote: `safety::folder`), then `dir/validation.md`, written

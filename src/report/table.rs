@@ -44,6 +44,9 @@ pub fn rows(scenes: &[StoredScene], findings: &[Finding]) -> Vec<TableRow> {
     out
 }
 
+/// The results table's file name in the report folder.
+pub const FILE: &str = "results.csv";
+
 /// Write `dir/results.csv` whole (and `dir/results.parquet` with the `polars` feature).
 pub fn write(dir: &Path, rows: &[TableRow]) -> std::io::Result<()> {
     let mut s = String::from("scene,solver,quantity,step,value\n");
@@ -57,7 +60,7 @@ pub fn write(dir: &Path, rows: &[TableRow]) -> std::io::Result<()> {
             r.value
         ));
     }
-    crate::safety::whole::write(&dir.join("results.csv"), s.as_bytes())?;
+    crate::safety::whole::write(&dir.join(FILE), s.as_bytes())?;
     #[cfg(feature = "polars")]
     {
         let mut df = dataframe(rows).map_err(std::io::Error::other)?;

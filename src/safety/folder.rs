@@ -84,6 +84,12 @@ pub fn replace_tree_atomically<T, E: From<FolderError>>(
     Ok(value)
 }
 
+/// An error if [`replace_tree_atomically`] would refuse `target` (it exists and is not a folder
+/// this tool wrote): asked before any work, so a refusal comes before anything is written.
+pub fn check_tree_replaceable(target: &Path) -> Result<(), FolderError> {
+    check_replaceable(target, target).map(|_| ())
+}
+
 /// A plain, visible name: one path component, no leading dot (those are creepbench's siblings).
 fn check_plain_name(parent: &Path, name: &str) -> Result<(), FolderError> {
     let mut components = Path::new(name).components();

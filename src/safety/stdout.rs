@@ -5,6 +5,8 @@
 //! verdict's. What cannot be printed is dropped: silently for a closed pipe (the reader chose to
 //! stop reading, as `head` does), with one warning on standard error for any other failure.
 //!
+//! Standard error is best-effort too ([`errln!`]): `2> /dev/full` must not panic either.
+//!
 //! Data a command writes *as its output* to standard output (`import contact-output` without
 //! `--out`) is no console text: it goes through [`write_data`], whose failure is an error.
 
@@ -72,7 +74,20 @@ macro_rules! outln {
     };
 }
 
-pub(crate) use {out, outln};
+/// Print `args` on standard error: never panics (a full or closed standard error drops the
+/// text, as `eprintln!` would panic instead).
+pub fn print_err(args: fmt::Arguments) {
+    let _ = io::stderr().lock().write_fmt(args);
+}
+
+/// [`print_err`] with `format!` syntax and a newline: warnings and notes on standard error.
+macro_rules! errln {
+    ($($arg:tt)*) => {
+        $crate::safety::stdout::print_err(format_args!("{}\n", format_args!($($arg)*)))
+    };
+}
+
+pub(crate) use {errln, out, outln};
 
 #[cfg(test)]
 mod tests {

@@ -153,7 +153,7 @@ fn bad_fit_files_are_refused() {
     let dir = tempdir("fit_bad");
     let good =
         relaxation_fit("bad", "solver:contact", &root().join("scenes/thesis").display().to_string(), "sine_f10_mu10");
-    let cases: [(&str, &str, &str, &str); 10] = [
+    let cases: [(&str, &str, &str, &str); 11] = [
         ("norm = \"rms_df\"", "norm = \"l2\"", "fit.norm", "\"l2\""),
         ("against = \"solver:contact\"", "against = \"contact\"", "fit.against", "\"contact\""),
         ("\"{l}\"", "\"{m}\"", "model.relaxation_length_mm", "{m}"),
@@ -164,6 +164,8 @@ fn bad_fit_files_are_refused() {
         ("bounds = [1.0, 60.0]", "bounds = [-5.0, 60.0]", "relaxation_length_mm", "-5"),
         ("\"model.relaxation_length_mm\" = \"{l}\"", "\"model.relaxation_length_mm\" = 3.0", "fit.param l", "not used"),
         ("norm = \"rms_df\"", "norm = \"delay_ratio\"", "fit.norm", "delay_ratio"),
+        // A parameter the model ignores (the UBA has no relaxation length): refused, not 0 iterations.
+        ("model = \"relaxation\"", "model = \"uba\"", "fit.param l", "ignores"),
     ];
     for (n, (from, to, field, value)) in cases.iter().enumerate() {
         let spec = dir.join(format!("bad{n}.toml"));

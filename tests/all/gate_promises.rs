@@ -296,9 +296,14 @@ fn fit_patterns_that_match_nothing_are_errors() {
 /// The reference data copied into `dir` with `edit` applied to one CONTACT history, its manifest
 /// rewritten (as `creepbench manifest` would): the manifest guards change, not garbage.
 fn edited_reference(dir: &Path, edit: impl Fn(&str) -> String) -> Result<(), String> {
+    edited_reference_file(dir, "contact/sine_f10_c0_0000.csv", edit)
+}
+
+/// [`edited_reference`] with `edit` applied to the file `name` of the reference data.
+fn edited_reference_file(dir: &Path, name: &str, edit: impl Fn(&str) -> String) -> Result<(), String> {
     let status = Command::new("cp").arg("-r").arg(root().join("reference")).arg(dir).status().unwrap();
     assert!(status.success());
-    let file = dir.join("contact/sine_f10_c0_0000.csv");
+    let file = dir.join(name);
     let text = std::fs::read_to_string(&file).unwrap();
     std::fs::write(&file, edit(&text)).unwrap();
     creepbench::safety::manifest::write(dir).unwrap();
@@ -333,6 +338,22 @@ fn reference_histories_with_garbage_steps_or_no_rows_are_refused_whatever_the_ma
     for (i, (what, edit)) in cases.into_iter().enumerate() {
         let e = edited_reference(&tmp.path().join(format!("r{i}")), edit).unwrap_err();
         assert!(e.contains("sine_f10_c0_0000.csv") && e.contains("step"), "{what}: {e}");
+    }
+}
+
+#[test]
+fn a_case_given_twice_in_a_cases_file_is_refused_whatever_the_manifest_says() {
+    let tmp = tempfile::tempdir().unwrap();
+    // A second row of an existing case, with another note or method: it would replace the first.
+    let repeat_last = |t: &str| {
+        let last = t.lines().last().unwrap().to_string();
+        format!("{t}{}\n", last.replace("yes", "no"))
+    };
+    for (i, file) in
+        ["contact/cases.csv", "contact_envelope/cases.csv", "contact_friction/cases.csv"].iter().enumerate()
+    {
+        let e = edited_reference_file(&tmp.path().join(format!("d{i}")), file, repeat_last).unwrap_err();
+        assert!(e.contains(file) && e.contains("column name") && e.contains("no earlier row"), "{file}: {e}");
     }
 }
 

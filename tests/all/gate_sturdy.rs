@@ -113,6 +113,17 @@ fn a_closed_console_costs_neither_the_gate_files_nor_the_exit_status() {
     }
     assert!(w.path().join("rep/validation.md").is_file() && w.path().join("sim/a_one/uba.csv").is_file());
     assert!(w.path().join("merged/validation.md").is_file());
+    // A full standard error (`2> /dev/full`): the warnings and notes are dropped, no panic.
+    let full = || std::fs::OpenOptions::new().write(true).open("/dev/full").unwrap();
+    drift_golden(w.path(), "0.2");
+    let args = ["check", "--suite", "suite", "--reference", &refs, "--json", "full.json"];
+    let o = command(w.path(), &args).stderr(full()).stdout(Stdio::null()).output().unwrap();
+    assert_eq!(o.status.code(), Some(1));
+    assert!(std::fs::read_to_string(w.path().join("full.json")).unwrap().contains("\"passed\": false"));
+    let args = ["run", "--suite", "suite", "--reference", &refs, "--results", "res2", "--report", "rep2"];
+    let o = command(w.path(), &args).stderr(full()).stdout(Stdio::null()).output().unwrap();
+    assert_eq!(o.status.code(), Some(0));
+    assert!(w.path().join("rep2/validation.md").is_file());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -397,4 +408,71 @@ fn outputs_through_links_are_written_through_and_a_protected_file_is_known_by_it
     assert_ne!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(std::fs::symlink_metadata(d.join("rep/validation.md")).unwrap().file_type().is_symlink());
     assert_eq!(tree(&d.join("golden")), golden);
+}
+
+#[test]
+fn every_report_output_is_checked_before_any_work() {
+    use std::os::unix::fs::symlink;
+    let w = workspace(&["a_one"], true);
+    let d = w.path();
+    let golden = tree(&d.join("golden"));
+    let refs = refs();
+    let args = ["run", "--quiet", "--suite", "suite", "--reference", &refs, "--results", "res", "--report", "rep"];
+    // figures/ a link into golden/, tables/ a folder this tool did not write: each refused
+    // before any scene runs, and the results folder never made.
+    std::fs::create_dir(d.join("rep")).unwrap();
+    symlink("../golden/a_one", d.join("rep/figures")).unwrap();
+    let o = creepbench(d, &args);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("figures") && stderr(&o).contains("bless"), "{}", stderr(&o));
+    assert!(!d.join("res").exists(), "results written despite the refusal");
+    std::fs::remove_file(d.join("rep/figures")).unwrap();
+    std::fs::create_dir_all(d.join("rep/tables")).unwrap();
+    std::fs::write(d.join("rep/tables/mine.md"), "my notes").unwrap();
+    let o = creepbench(d, &args);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("tables"), "{}", stderr(&o));
+    assert!(!d.join("res").exists(), "results written despite the refusal");
+    assert_eq!(std::fs::read_to_string(d.join("rep/tables/mine.md")).unwrap(), "my notes");
+    // merge: the same check before reading anything.
+    std::fs::remove_dir_all(d.join("rep/tables")).unwrap();
+    let o = creepbench(
+        d,
+        &["run", "--quiet", "--suite", "suite", "--reference", &refs, "--results", "res", "--report", "ok"],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    symlink("../golden/a_one", d.join("rep/figures")).unwrap();
+    let o = creepbench(d, &["merge", "res", "--reference", &refs, "--report", "rep"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert_eq!(tree(&d.join("golden")), golden);
+}
+
+#[test]
+fn a_suites_own_tolerance_file_covers_only_that_suites_scenes() {
+    // Two suites, one scene each, blessed together; both drift by the same amount in golden/.
+    let w = tempfile::tempdir().unwrap();
+    let d = w.path();
+    write_scene(&d.join("one"), "a_one");
+    write_scene(&d.join("two"), "b_two");
+    let both = ["--suite", "one", "--suite", "two"];
+    let o = command(d, &["bless", "--quiet"]).args(both).output().unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    drift_golden(d, "0.2");
+    set_csv_field(&d.join("golden/b_two/uba.csv"), 1, 6, "0.2");
+    // Suite one's own file loosens every scene's UBA fx: it decides a_one, never b_two.
+    let rule = "[[rule]]\nagainst = \"golden\"\nscene = \"*\"\nsolver = \"uba\"\nquantity = \"fx_over_fn\"\n\
+                abs = 1.0\nwhy = \"suite one's own reason\"\n";
+    std::fs::write(d.join("one/tolerances.toml"), rule).unwrap();
+    let refs = refs();
+    let o = command(d, &["check", "--quiet", "--reference", &refs, "--json", "c.json"]).args(both).output().unwrap();
+    assert_eq!(o.status.code(), Some(1), "b_two's drift must still fail: {}", stderr(&o));
+    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("c.json")).unwrap()).unwrap();
+    let failed: Vec<&str> = json["findings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|f| f["gated"] == true && f["passed"] == false)
+        .map(|f| f["scene"].as_str().unwrap())
+        .collect();
+    assert!(!failed.is_empty() && failed.iter().all(|s| *s == "b_two"), "{failed:?}");
 }

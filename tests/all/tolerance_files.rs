@@ -86,7 +86,7 @@ fn suite_folders_tolerance_files_are_sources() {
     let given = vec![dir.join("mine.toml")];
     assert_eq!(
         tolerance_file::sources(&given, &[a, b.clone()]),
-        vec![dir.join("mine.toml"), b.join("tolerances.toml")]
+        vec![(dir.join("mine.toml"), None), (b.join("tolerances.toml"), Some("b".to_string()))]
     );
 }
 

@@ -62,6 +62,7 @@ pub fn fit(spec: &FitSpec, refs: &References) -> Result<FitOutcome, Error> {
         )
         .into());
     }
+    refuse_ignored(spec, before_fit.norm(spec.norm), |values| Ok(measure(&fit_cases, values)?.norm(spec.norm)))?;
     let found = search(spec, &fit_cases)?;
     let values = spec.values(&found.best);
     let before_holdout = (!holdout_cases.is_empty()).then(|| measure(&holdout_cases, &start)).transpose()?;
@@ -82,6 +83,39 @@ pub fn fit(spec: &FitSpec, refs: &References) -> Result<FitOutcome, Error> {
         ended: found.ended,
         curves,
     })
+}
+
+/// An error naming the first parameter whose bounds leave the objective (`at_start` at the start)
+/// bit-identical — the model ignores the keys it sets, and the search would end at once with no
+/// word (issue 48 item 8); `measure` gives the objective at a set of parameter values.
+fn refuse_ignored(
+    spec: &FitSpec,
+    at_start: f64,
+    mut measure: impl FnMut(&[f64]) -> Result<f64, Error>,
+) -> Result<(), Error> {
+    let start: Vec<f64> = spec.params.iter().map(|p| p.start).collect();
+    for (i, p) in spec.params.iter().enumerate() {
+        let mut moved = |x: f64| {
+            let mut v = start.clone();
+            v[i] = x;
+            measure(&v)
+        };
+        if moved(p.min)? == at_start && moved(p.max)? == at_start {
+            let keys: Vec<&str> = spec.set.iter().map(|(k, _)| k.as_str()).collect();
+            return Err(InputError::new(
+                format!("{}: fit.param {}", spec.file.display(), p.name),
+                format!("bounds [{}, {}]", p.min, p.max),
+                format!(
+                    "a parameter that changes the fit's {} (it is the same at the start and at both bounds: model `{}` ignores the keys it sets: {})",
+                    spec.norm.name(),
+                    spec.model,
+                    keys.join(", ")
+                ),
+            )
+            .into());
+        }
+    }
+    Ok(())
 }
 
 /// The scenes of the spec's suites it fits and holds out, by name; a pattern that matches nothing

@@ -66,11 +66,13 @@ impl ContactCases {
         let [name, kind, method, mx, n_steps, wall, loop_area, pn_max, freq] =
             [name?, kind?, method?, mx?, n_steps?, wall?, loop_area?, pn_max?, freq?];
         let mut out = ContactCases::default();
+        let mut seen = std::collections::BTreeSet::new();
         for (line, rec) in rdr.records().enumerate() {
             let line = line + 2;
             let rec =
                 rec.map_err(|e| Error::Format { path: path.clone(), source: FormatError::Csv { line, source: e } })?;
             let get = |i: usize| rec.get(i).unwrap_or("");
+            super::first_row(&mut seen, &path, line, get(name))?;
             let not_a_number = |i: usize| {
                 let (column, value) = (head[i].clone(), crate::error::excerpt(get(i)));
                 Error::Format {

@@ -81,9 +81,11 @@ impl EnvelopeCases {
             return Err(Error::Format { path, source: FormatError::MissingColumn { column: column.into() } });
         };
         let mut out = EnvelopeCases { against: Some(against), ..EnvelopeCases::default() };
-        for rec in rdr.records() {
+        let mut seen = std::collections::BTreeSet::new();
+        for (line, rec) in rdr.records().enumerate() {
             let rec = rec.map_err(bad)?;
             let (name, note) = (rec.get(name_col).unwrap_or(""), rec.get(note_col).unwrap_or(""));
+            super::first_row(&mut seen, &path, line + 2, name)?;
             let h = read_history(&dir.join(folder).join(format!("{name}.csv")), 0, &[MZ])?;
             out.histories.insert(name.to_string(), h);
             let field = dir.join(folder).join(format!("{name}_field.csv"));

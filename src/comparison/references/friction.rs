@@ -118,10 +118,12 @@ impl FrictionCases {
             })
         };
         let (name_col, gate_col, note_col) = (column("name")?, column("gate")?, column("note")?);
+        let mut seen = std::collections::BTreeSet::new();
         for (line, rec) in rdr.records().enumerate() {
             let rec = rec.map_err(bad)?;
             let field = |c: usize| rec.get(c).unwrap_or("").to_string();
             let (name, note, gate) = (field(name_col), field(note_col), field(gate_col));
+            super::first_row(&mut seen, &path, line + 2, &name)?;
             let case = folder.join(format!("{name}.csv"));
             let history = read_history(&case, 0, &[MZ])?;
             // yes: published and tight gated; tight: the tight columns gated, the published values

@@ -177,3 +177,20 @@ impl References {
 fn read(path: &Path) -> Result<String, Error> {
     Ok(crate::safety::read::read_text(path, crate::safety::read::REFERENCE_LIMIT_BYTES, "reference file")?)
 }
+
+/// An error if `name` was given by an earlier row of the cases file `path` (`seen` collects
+/// the names): a second row of one case would replace the first in silence.
+fn first_row(seen: &mut std::collections::BTreeSet<String>, path: &Path, line: usize, name: &str) -> Result<(), Error> {
+    if seen.insert(name.to_string()) {
+        return Ok(());
+    }
+    Err(Error::Format {
+        path: path.into(),
+        source: crate::error::FormatError::Value {
+            line,
+            column: "name".into(),
+            value: crate::error::excerpt(name),
+            what: "a case name no earlier row gives",
+        },
+    })
+}
