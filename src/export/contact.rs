@@ -429,7 +429,7 @@ fn kinematics_and_material(p: &Problem, rolling: Option<(f64, f64, f64)>, out: &
 fn geometry(p: &Problem, rolling: Option<(f64, f64, f64)>, load_varies: bool, b: Option<[f64; 6]>, out: &mut String) {
     let (m, g) = (&p.material, &p.grid);
     kinematics_and_material(p, rolling, out);
-    if p.geometry.elliptic() && !load_varies {
+    if p.geometry.elliptic() && !load_varies && p.grid_edges.is_none() {
         let e = p.hertz();
         let _ = writeln!(out, "  -3                                          IPOTCN");
         let _ = writeln!(

@@ -328,7 +328,11 @@ impl Staging {
                 Ok(marker) => return Ok(Staging { path, marker, _registration: registration, installed: false }),
                 // A concurrent cleanup took the folder before its marker was locked: another name.
                 Err(e) if matches!(e.kind(), io::ErrorKind::NotFound | io::ErrorKind::WouldBlock) => last = Some(e),
-                Err(e) => return Err(io_error("creating the marker in", &path)(e)),
+                // A full disk: the empty folder just made is not left behind.
+                Err(e) => {
+                    let _ = fs::remove_dir_all(&path);
+                    return Err(io_error("creating the marker in", &path)(e));
+                }
             }
         }
         Err(io_error("creating a folder beside", &parent.join(name))(

@@ -7,6 +7,7 @@ mod common;
 mod console;
 mod contact_export;
 mod contact_import;
+mod contact_import_hertz;
 mod contact_output;
 mod contact_public;
 mod contact_solver;

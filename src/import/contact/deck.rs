@@ -99,6 +99,9 @@ pub struct State {
     pub poiss: [f64; 2],
     pub gg_mpa: [f64; 2],
     pub potcon: Option<Potcon>,
+    /// The N digit and PEN or FN of the last case with D ≥ 1: a Hertzian grid is sized by that
+    /// case's ellipse and kept by cases with D = 0 (CONTACT's `init_curr_grid` runs for D ≥ 1).
+    pub grid_load: Option<(u8, f64)>,
     pub undeformed: Option<Undeformed>,
     /// Whether an extra rigid-slip term is in force (E = 2, 3, 9, or kept by E = 1).
     pub extra_rhs: bool,
@@ -328,6 +331,9 @@ impl CaseReader<'_> {
         self.damping_and_heat(&d)?;
         if d.d == 2 {
             state.potcon = Some(self.potcon()?);
+        }
+        if d.d >= 1 {
+            state.grid_load = Some((d.n, state.pen_or_fn));
         }
         let gridded = state.potcon.as_ref().is_some_and(|p| p.ipotcn() > 0);
         if d.z == 2 && gridded {

@@ -48,6 +48,17 @@ impl GeometrySpec {
         matches!(self, GeometrySpec::Profile { .. } | GeometrySpec::Field { .. })
     }
 
+    /// Hertz's ellipse of an elliptic geometry at `fn_n` [N] (semi-axes as given, or from radii).
+    fn nominal(&self, fn_n: f64, material: &Material) -> Result<HertzContact, InputError> {
+        match self {
+            GeometrySpec::SemiAxes { a_mm, b_mm } => Ok(HertzContact { a_mm: *a_mm, b_mm: *b_mm, fn_n }),
+            GeometrySpec::Radii(r) => HertzContact::from_radii(r, fn_n, material).map_err(|e| {
+                InputError::new("contact.r_wx_mm", format!("{r:?}"), format!("radii of a convex contact ({e})"))
+            }),
+            _ => unreachable!("called for an elliptic geometry"),
+        }
+    }
+
     /// The contact geometry at the nominal load `fn_n` [N] and its grid of `mx × my` elements
     /// over `extent`; errors name the scene field.
     pub fn build(
@@ -58,12 +69,9 @@ impl GeometrySpec {
         extent: Extent,
     ) -> Result<(Arc<dyn ContactGeometry>, Grid), InputError> {
         let nominal = match (self, extent) {
-            (GeometrySpec::SemiAxes { a_mm, b_mm }, Extent::Scale(_)) => {
-                HertzContact { a_mm: *a_mm, b_mm: *b_mm, fn_n }
+            (GeometrySpec::SemiAxes { .. } | GeometrySpec::Radii(_), Extent::Scale(_)) => {
+                Self::nominal(self, fn_n, material)?
             }
-            (GeometrySpec::Radii(r), Extent::Scale(_)) => HertzContact::from_radii(r, fn_n, material).map_err(|e| {
-                InputError::new("contact.r_wx_mm", format!("{r:?}"), format!("radii of a convex contact ({e})"))
-            })?,
             (_, Extent::Edges { x_mm: [x0, x1], y_mm }) if self.is_elementwise() => {
                 let grid = Grid::from_edges(mx, my, [-x1, -x0], y_mm);
                 let (kind, h_mm) = match self {
@@ -94,11 +102,17 @@ impl GeometrySpec {
                 })?;
                 return Ok((Arc::new(geometry), grid));
             }
+            (GeometrySpec::SemiAxes { .. } | GeometrySpec::Radii(_), Extent::Edges { x_mm: [x0, x1], y_mm }) => {
+                // An ellipse on a window of its own (CONTACT's grid kept by D = 0 while the load
+                // changes): the contact may reach beyond it and is cut there, as CONTACT's.
+                let nominal = Self::nominal(self, fn_n, material)?;
+                return Ok((Arc::new(HertzEllipse { nominal }), Grid::from_edges(mx, my, [-x1, -x0], y_mm)));
+            }
             (_, Extent::Edges { .. }) => {
                 return Err(InputError::new(
                     "grid.x_mm",
                     "given",
-                    "grid edges only with a [geometry] given per element (an ellipse sizes its own grid: [grid] scale)",
+                    "grid edges with a [geometry] given per element or an ellipse (a_mm, b_mm or radii)",
                 ))
             }
             (_, Extent::Scale(_)) => {

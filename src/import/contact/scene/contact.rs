@@ -82,14 +82,28 @@ fn given_curvatures(
     let b1 = if ipotcn == -2 { params[0] * curvature_ratio(params[1], s) } else { params[1] };
     let (rx, ry) = (0.5 / params[0], 1.0 / b1);
     contact.extend([("r_wx_mm", Value::Float(rx)), ("r_wy_mm", Value::Float(ry)), ("r_ry_mm", Value::Float(ry))]);
-    grid.push(("scale", Value::Float(params[2])));
-    let Some(pen) = pen else {
-        return Ok(None);
-    };
     let radii = crate::physics::Radii { r_wx_mm: rx, r_wy_mm: ry, r_ry_mm: ry };
-    let e = crate::physics::HertzContact::from_radii_and_approach(&radii, pen, &material_of(s))
-        .map_err(|e| InputError::new(src.first_place(), format!("PEN = {pen}"), e.to_string()))?;
-    Ok(Some(e.fn_n))
+    let hertz = |n: u8, load: f64| {
+        let m = material_of(s);
+        match n {
+            0 => crate::physics::HertzContact::from_radii_and_approach(&radii, load, &m),
+            _ => crate::physics::HertzContact::from_radii(&radii, load, &m),
+        }
+        .map_err(|e| {
+            InputError::new(src.first_place(), format!("{} = {load}", if n == 0 { "PEN" } else { "FN" }), e.to_string())
+        })
+    };
+    // D = 0 after another load: CONTACT keeps the grid its last D >= 1 case sized (SCALE times
+    // that case's ellipse) while the ellipse follows the curvatures to the new load.
+    match s.grid_load {
+        Some((n, load)) if (n, load) != (src.first.digits.n, s.pen_or_fn) => {
+            let w = hertz(n, load)?;
+            let (x, y) = (params[2] * w.a_mm, params[2] * w.b_mm);
+            grid.extend([("x_mm", floats(&[-x, x])), ("y_mm", floats(&[-y, y]))]);
+        }
+        _ => grid.push(("scale", Value::Float(params[2]))),
+    }
+    pen.map(|pen| hertz(0, pen).map(|e| e.fn_n)).transpose()
 }
 
 /// IPOTCN > 0: the grid's extent and the undeformed distance h per element (IBASE = 9 as given,
