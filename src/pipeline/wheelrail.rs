@@ -55,7 +55,10 @@ pub struct CaseResult {
 /// Solve `case` with `models` (names of the registry) at Coulomb friction `mu`.
 pub fn solve(case: &WheelRailCase, models: &[String], mu: f64) -> Result<CaseResult, Error> {
     let geometry = |e: wheelrail::WheelRailError| Error::from(InputError::new("wheelrail", "the case", e.to_string()));
-    let mut normal = wheelrail::normal_contact(case, None).map_err(geometry)?;
+    let mut cache = wheelrail::NormalCache::default();
+    let mut normal = wheelrail::normal_contact_with(case, None, &mut cache).map_err(geometry)?;
+    // The exact theory's forces on the patches of `normal`, where the balance has them.
+    let mut exact_now = None;
     if let Vertical::Force { fz_n } = case.vertical {
         for _ in 0..VERTICAL_ROUNDS {
             let exact = patch_forces(&normal, EXACT, mu, case)?;
@@ -68,17 +71,21 @@ pub fn solve(case: &WheelRailCase, models: &[String], mu: f64) -> Result<CaseRes
                 .sum();
             if (normal_z + tangential_z - fz_n).abs() <= 2.0 * wheelrail::vertical::FORCE_TOL * fz_n || normal_z <= 0.0
             {
+                exact_now = Some(exact);
                 break;
             }
             // The tangential forces grow with the normal ones (in full slip in proportion): the
             // normal forces' share of FZ is FZ / (1 + tangential / normal).
             let target = fz_n / (1.0 + tangential_z / normal_z);
-            normal = wheelrail::normal_contact(case, Some(target)).map_err(geometry)?;
+            normal = wheelrail::normal_contact_with(case, Some(target), &mut cache).map_err(geometry)?;
         }
     }
     let mut out = Vec::new();
     for model in models {
-        let forces = patch_forces(&normal, model, mu, case)?;
+        let forces = match exact_now.take_if(|_| model == EXACT) {
+            Some(exact) => exact,
+            None => patch_forces(&normal, model, mu, case)?,
+        };
         let totals = totals(&normal, &forces, case);
         out.push((model.clone(), forces, totals));
     }

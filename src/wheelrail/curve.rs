@@ -12,6 +12,10 @@ pub trait Curve: Send + Sync + Debug {
     fn dz_dy(&self, y_mm: f64) -> Option<f64>;
     /// The lateral range [y_min, y_max] [mm] the curve is defined on.
     fn y_range_mm(&self) -> [f64; 2];
+    /// z and dz/dy at y together (one search where a curve must find its point first).
+    fn z_and_slope(&self, y_mm: f64) -> Option<(f64, f64)> {
+        Some((self.z_mm(y_mm)?, self.dz_dy(y_mm)?))
+    }
 }
 
 /// A circular arc `z = z0 ± (R − √(R² − (y − yc)²))` over `|y − yc| ≤ half_width`: convex (a rail
@@ -88,6 +92,9 @@ impl Curve for super::profile::Profile {
     fn y_range_mm(&self) -> [f64; 2] {
         let (lo, hi) = self.y_range();
         [lo, hi]
+    }
+    fn z_and_slope(&self, y_mm: f64) -> Option<(f64, f64)> {
+        self.point_at_y(y_mm).map(|p| (p.z_mm, p.slope_dz_dy()))
     }
 }
 

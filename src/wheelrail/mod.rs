@@ -118,23 +118,47 @@ impl NormalContact {
 /// The normal contact of `case`; with a prescribed force, the height where the normal forces'
 /// vertical parts sum to `fz_normal_n` (the vertical force less the tangential forces' part).
 pub fn normal_contact(case: &WheelRailCase, fz_normal_n: Option<f64>) -> Result<NormalContact, WheelRailError> {
+    normal_contact_with(case, fz_normal_n, &mut NormalCache::default())
+}
+
+/// [`normal_contact`] with the normal solvers of earlier calls on the same case kept in `solvers`.
+pub fn normal_contact_with(
+    case: &WheelRailCase,
+    fz_normal_n: Option<f64>,
+    cache: &mut NormalCache,
+) -> Result<NormalContact, WheelRailError> {
     let rail = PlacedRail::place(case.rail, &case.track)?;
     let pose = case.side.pose(&case.pose);
-    let at = |z_mm: f64| patches_at(case, &rail, &Pose { z_mm, ..pose });
-    let z_ws_mm = match (case.vertical, fz_normal_n) {
-        (Vertical::Position, _) => pose.z_mm,
+    let NormalCache { solvers, touch_mm, heights } = cache;
+    let mut at = |z_mm: f64| patches_at(case, &rail, &Pose { z_mm, ..pose }, solvers);
+    let (z_ws_mm, patches) = match (case.vertical, fz_normal_n) {
+        (Vertical::Position, _) => (pose.z_mm, at(pose.z_mm)?),
         (Vertical::Force { fz_n }, target) => {
-            let wheel = PlacedWheel::place(case.wheel, &case.wheelset, &Pose { z_mm: 0.0, ..pose });
-            let deepest =
-                search::deepest_mm(&search::scan(&wheel, &rail, case.ds_mm)).ok_or(WheelRailError::NoOverlap)?;
+            let z_touch_mm = match *touch_mm {
+                Some(z) => z,
+                None => {
+                    let wheel = PlacedWheel::place(case.wheel, &case.wheelset, &Pose { z_mm: 0.0, ..pose });
+                    let deepest = search::deepest_mm(&search::scan(&wheel, &rail, case.ds_mm))
+                        .ok_or(WheelRailError::NoOverlap)?;
+                    *touch_mm.insert(-deepest)
+                }
+            };
             let target = target.unwrap_or(fz_n);
-            vertical::solve(-deepest, target, |z| {
-                Ok(at(z)?.iter().map(|p| p.fn_n * p.geometry.frame.delta_rad.cos()).sum())
-            })?
-            .0
+            // The search ends on the height it evaluated last: its patches are the answer.
+            let mut last: Option<(f64, Vec<NormalPatch>)> = None;
+            let (z, _, evaluations) = vertical::solve(z_touch_mm, target, *heights, |z| {
+                let patches = at(z)?;
+                let fz = patches.iter().map(|p| p.fn_n * p.geometry.frame.delta_rad.cos()).sum();
+                last = Some((z, patches));
+                Ok(fz)
+            })?;
+            *heights = Some(evaluations);
+            match last {
+                Some((z_last, patches)) if z_last == z => (z, patches),
+                _ => (z, at(z)?),
+            }
         }
     };
-    let patches = at(z_ws_mm)?;
     Ok(NormalContact {
         side: case.side,
         z_ws_mm,
@@ -144,20 +168,69 @@ pub fn normal_contact(case: &WheelRailCase, fz_normal_n: Option<f64>) -> Result<
     })
 }
 
-/// The patches and their normal solutions with the wheelset at `pose` (right-side frame).
-fn patches_at(case: &WheelRailCase, rail: &PlacedRail, pose: &Pose) -> Result<Vec<NormalPatch>, WheelRailError> {
-    let wheel = PlacedWheel::place(case.wheel, &case.wheelset, pose);
-    let samples = search::scan(&wheel, rail, case.ds_mm);
+/// What the searches of one case keep for the next (a prescribed force's rounds): the normal
+/// solvers (influence kernel and FFT plan) of the grids met, by grid size (every trial height has
+/// the same element size and material, most the same number of elements); the height of first
+/// touch; the last search's last two evaluations, from which the next search starts.
+#[derive(Default)]
+pub struct NormalCache {
+    solvers: NormalSolvers,
+    touch_mm: Option<f64>,
+    heights: Option<vertical::Evaluations>,
+}
+
+/// The normal solvers by grid size.
+#[derive(Default)]
+struct NormalSolvers {
+    solvers: Vec<((usize, usize), NormalSolver)>,
+}
+
+/// Grids kept per case (the oldest dropped first).
+const KEPT_SOLVERS: usize = 8;
+
+impl NormalSolvers {
+    /// The solver of grid `g` with material `m`.
+    fn get(&mut self, g: &patch::PatchGrid, m: &Material) -> Result<&mut NormalSolver, ContactError> {
+        let key = (g.mx, g.ms);
+        let k = match self.solvers.iter().position(|(k, _)| *k == key) {
+            Some(k) => k,
+            None => {
+                let kernel = Kernel::new(g.mx, g.ms, g.dx_mm, g.ds_mm, m.g_mpa, m.poisson, 0.0)?;
+                if self.solvers.len() == KEPT_SOLVERS {
+                    self.solvers.remove(0);
+                }
+                self.solvers.push((key, NormalSolver::new(&kernel)?));
+                self.solvers.len() - 1
+            }
+        };
+        Ok(&mut self.solvers[k].1)
+    }
+}
+
+/// The patches' geometry with the wheelset at height `z_ws_mm` (the case's pose otherwise): the
+/// contact search, each patch's frame, grid and undeformed distance, no normal problem solved.
+pub fn geometry(case: &WheelRailCase, z_ws_mm: f64) -> Result<Vec<PatchGeometry>, WheelRailError> {
+    let rail = PlacedRail::place(case.rail, &case.track)?;
+    let pose = Pose { z_mm: z_ws_mm, ..case.side.pose(&case.pose) };
+    geometry_at(case, &rail, &PlacedWheel::place(case.wheel, &case.wheelset, &pose))
+}
+
+/// The patches' geometry with the wheel placed as `wheel`.
+fn geometry_at(
+    case: &WheelRailCase,
+    rail: &PlacedRail,
+    wheel: &PlacedWheel,
+) -> Result<Vec<PatchGeometry>, WheelRailError> {
+    let samples = search::scan(wheel, rail, case.ds_mm);
     if samples.is_empty() {
         return Err(WheelRailError::NoOverlap);
     }
-    let velocity = case.side.velocity(&case.velocity);
     let radius = case.wheelset.nominal_radius_mm;
     let candidates: Vec<_> =
         search::regions(&samples).into_iter().filter_map(|r| patch::candidate(r, rail, radius)).collect();
     let mut out = Vec::new();
     for (k, c) in patch::combine(candidates, &case.separation).iter().enumerate() {
-        let geometry = patch::build(c, &wheel, rail, case.dx_mm, case.ds_mm)?;
+        let geometry = patch::build(c, wheel, rail, case.dx_mm, case.ds_mm)?;
         if geometry.grid.len() > MAX_ELEMENTS {
             return Err(WheelRailError::GridTooLarge {
                 patch: k + 1,
@@ -165,7 +238,23 @@ fn patches_at(case: &WheelRailCase, rail: &PlacedRail, pose: &Pose) -> Result<Ve
                 limit: MAX_ELEMENTS,
             });
         }
-        let (fn_n, pn_mpa) = solve_normal(&geometry, &case.material)
+        out.push(geometry);
+    }
+    Ok(out)
+}
+
+/// The patches and their normal solutions with the wheelset at `pose` (right-side frame).
+fn patches_at(
+    case: &WheelRailCase,
+    rail: &PlacedRail,
+    pose: &Pose,
+    solvers: &mut NormalSolvers,
+) -> Result<Vec<NormalPatch>, WheelRailError> {
+    let wheel = PlacedWheel::place(case.wheel, &case.wheelset, pose);
+    let velocity = case.side.velocity(&case.velocity);
+    let mut out = Vec::new();
+    for (k, geometry) in geometry_at(case, rail, &wheel)?.into_iter().enumerate() {
+        let (fn_n, pn_mpa) = solve_normal(&geometry, &case.material, solvers)
             .map_err(|source| WheelRailError::Normal { patch: k + 1, source })?;
         let pen_mm = -geometry.h_mm.iter().copied().fold(f64::INFINITY, f64::min);
         let creepages = creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm);
@@ -175,9 +264,8 @@ fn patches_at(case: &WheelRailCase, rail: &PlacedRail, pose: &Pose) -> Result<Ve
 }
 
 /// The normal problem of one patch with the geometry's own approach (the interpenetration).
-fn solve_normal(g: &PatchGeometry, m: &Material) -> Result<(f64, Vec<f64>), ContactError> {
-    let kernel = Kernel::new(g.grid.mx, g.grid.ms, g.grid.dx_mm, g.grid.ds_mm, m.g_mpa, m.poisson, 0.0)?;
-    let sol = NormalSolver::new(&kernel)?.solve_approach(&g.h_mm, 0.0, &NormalParams::default())?;
+fn solve_normal(g: &PatchGeometry, m: &Material, solvers: &mut NormalSolvers) -> Result<(f64, Vec<f64>), ContactError> {
+    let sol = solvers.get(&g.grid, m)?.solve_approach(&g.h_mm, 0.0, &NormalParams::default())?;
     let fn_n = sol.pn_mpa.iter().sum::<f64>() * g.grid.dx_mm * g.grid.ds_mm;
     Ok((fn_n, sol.pn_mpa))
 }

@@ -83,7 +83,7 @@ impl<'a> PlacedRail<'a> {
         for _ in 0..50 {
             let [lo, hi] = self.curve.y_range_mm();
             let y_r_in = y_r.clamp(lo, hi);
-            let (z, dz) = (self.curve.z_mm(y_r_in)?, self.curve.dz_dy(y_r_in)?);
+            let (z, dz) = self.curve.z_and_slope(y_r_in)?;
             let f = self.origin_mm[0] + c * y_r_in - s * z - y_mm;
             let step = f / (c - s * dz);
             y_r = y_r_in - step;
@@ -111,6 +111,19 @@ impl<'a> PlacedRail<'a> {
         Some((s + c * d) / (c - s * d))
     }
 
+    /// Height z and slope dz/dy of the rail surface at track y ([`Self::z_mm`], [`Self::dz_dy`]).
+    pub fn z_and_slope(&self, y_mm: f64) -> Option<(f64, f64)> {
+        let (s, c) = self.angle_rad.sin_cos();
+        let slope = |d: f64| (s + c * d) / (c - s * d);
+        if self.angle_rad == 0.0 {
+            let (z, d) = self.curve.z_and_slope(y_mm - self.origin_mm[0])?;
+            return Some((self.origin_mm[1] + z, slope(d)));
+        }
+        let y_r = self.profile_y(y_mm)?;
+        let (z, d) = self.curve.z_and_slope(y_r)?;
+        Some((self.to_track(y_r, z)[1], slope(d)))
+    }
+
     /// Track y of the profile's lateral range ends (the rotated range's first and last points).
     pub fn y_range_mm(&self) -> [f64; 2] {
         let [lo, hi] = self.curve.y_range_mm();
@@ -125,8 +138,9 @@ impl<'a> PlacedRail<'a> {
         let mut t = 0.0;
         for _ in 0..50 {
             let yt = y + t * ny;
-            let g = z + t * nz - self.z_mm(yt)?;
-            let dg = nz - self.dz_dy(yt)? * ny;
+            let (z_rail, dz_dy) = self.z_and_slope(yt)?;
+            let g = z + t * nz - z_rail;
+            let dg = nz - dz_dy * ny;
             let step = g / dg;
             t -= step;
             if step.abs() < 1e-12 {

@@ -69,8 +69,8 @@ impl<'a> PlacedWheel<'a> {
     /// surface normal has no x component in the track (it can touch the prismatic rail there):
     /// `sin θ = −z_w'(y_w) tan ψ` (CONTACT's contact locus, Vollebregt 2020 "wr geometry").
     pub fn locus(&self, y_w_mm: f64) -> Option<Point3<f64>> {
-        let rho = self.nominal_radius_mm + self.curve.z_mm(y_w_mm)?;
-        let slope = self.curve.dz_dy(y_w_mm)?;
+        let (z, slope) = self.curve.z_and_slope(y_w_mm)?;
+        let rho = self.nominal_radius_mm + z;
         let (sin_yaw, cos_yaw) = self.yaw_rad.sin_cos();
         let sin_t = (-slope * sin_yaw / cos_yaw).clamp(-0.999, 0.999);
         let cos_t = (1.0 - sin_t * sin_t).sqrt();

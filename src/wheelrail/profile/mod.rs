@@ -11,6 +11,7 @@ pub mod canonical;
 pub mod clean;
 pub mod error;
 mod foldback;
+mod index;
 pub mod lines;
 pub mod miniprof;
 pub mod options;
@@ -113,6 +114,9 @@ struct Data {
     max_omit: f64,
     /// Each segment's y-range (interior extrema included), for the search by y.
     segment_y: Vec<(f64, f64)>,
+    /// The segments by y, and the whole y-range (`segment_y`'s hull).
+    index: index::SegmentIndex,
+    y_range: (f64, f64),
 }
 
 /// A summary: a profile has hundreds of points.
@@ -226,7 +230,10 @@ impl Profile {
         let y = spline::fit(&s_mm, &ys, &breaks, lambda, &wgt);
         let z = spline::fit(&s_mm, &zs, &breaks, lambda, &wgt);
         let spline = ParamSpline { s: s_mm.clone(), y, z };
-        let segment_y = (0..s_mm.len() - 1).map(|i| spline.y_bounds(i)).collect();
+        let segment_y: Vec<(f64, f64)> = (0..s_mm.len() - 1).map(|i| spline.y_bounds(i)).collect();
+        let y_range =
+            segment_y.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(a, b)| (lo.min(a), hi.max(b)));
+        let index = index::SegmentIndex::new(&segment_y);
         Ok(Profile(Arc::new(Data {
             file: file.to_string(),
             kind,
@@ -238,6 +245,8 @@ impl Profile {
             cleaning,
             max_omit: opts.max_omit,
             segment_y,
+            index,
+            y_range,
         })))
     }
 
@@ -299,7 +308,7 @@ impl Profile {
 
     /// The range of y the spline covers [mm] (min, max; bulges between points included).
     pub fn y_range(&self) -> (f64, f64) {
-        self.0.segment_y.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(a, b)| (lo.min(a), hi.max(b)))
+        self.0.y_range
     }
 
     /// The point of the spline at arc length `s_mm`, `None` outside [`Self::s_range`]. At a kink
@@ -326,11 +335,12 @@ impl Profile {
             return None;
         }
         let mut best: Option<ProfilePoint> = None;
-        for (i, &(lo, hi)) in self.0.segment_y.iter().enumerate() {
+        for &i in self.0.index.candidates(y_mm) {
+            let (lo, hi) = self.0.segment_y[i];
             if y_mm < lo || y_mm > hi {
                 continue;
             }
-            for s in self.0.spline.s_at_y_on(i, y_mm) {
+            self.0.spline.each_s_at_y_on(i, y_mm, |s| {
                 let p = self.point_on(i, s);
                 let better = match (best, self.0.kind) {
                     (None, _) => true,
@@ -340,7 +350,7 @@ impl Profile {
                 if better {
                     best = Some(p);
                 }
-            }
+            });
         }
         best
     }

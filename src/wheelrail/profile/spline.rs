@@ -260,7 +260,8 @@ impl ParamSpline {
         let h = self.s[i + 1] - self.s[i];
         let mut lo = self.y.a0[i].min(self.y.eval(i, h)[0]);
         let mut hi = self.y.a0[i].max(self.y.eval(i, h)[0]);
-        for t in critical_points(&self.y, i, h) {
+        let (roots, n) = critical_points(&self.y, i, h);
+        for &t in &roots[..n] {
             let v = self.y.eval(i, t)[0];
             lo = lo.min(v);
             hi = hi.max(v);
@@ -270,29 +271,45 @@ impl ParamSpline {
 
     /// Every s on segment `i` where y(s) = `y` (each monotone piece of the cubic searched).
     pub fn s_at_y_on(&self, i: usize, y: f64) -> Vec<f64> {
-        let h = self.s[i + 1] - self.s[i];
-        let mut cuts = vec![0.0];
-        cuts.extend(critical_points(&self.y, i, h));
-        cuts.push(h);
-        let g = |t: f64| self.y.eval(i, t)[0] - y;
         let mut out = Vec::new();
-        for w in cuts.windows(2) {
+        self.each_s_at_y_on(i, y, |s| out.push(s));
+        out
+    }
+
+    /// [`Self::s_at_y_on`] without allocating: `found` is called with each s, ascending.
+    pub fn each_s_at_y_on(&self, i: usize, y: f64, mut found: impl FnMut(f64)) {
+        let h = self.s[i + 1] - self.s[i];
+        let (roots, n) = critical_points(&self.y, i, h);
+        let mut cuts = [0.0; 4];
+        cuts[1..=n].copy_from_slice(&roots[..n]);
+        cuts[n + 1] = h;
+        let g = |t: f64| {
+            let [f, df, _] = self.y.eval(i, t);
+            (f - y, df)
+        };
+        for w in cuts[..n + 2].windows(2) {
             if let Some(t) = bracketed_root(&g, w[0], w[1]) {
-                out.push(self.s[i] + t);
+                found(self.s[i] + t);
             }
         }
-        out
     }
 }
 
-/// The zeros of f′ on segment `i` strictly inside (0, h), ascending.
-fn critical_points(c: &Cubic, i: usize, h: f64) -> Vec<f64> {
+/// The zeros of f′ on segment `i` strictly inside (0, h), ascending: the first `n` of the array.
+fn critical_points(c: &Cubic, i: usize, h: f64) -> ([f64; 2], usize) {
     let (a1, a2, a3) = (c.a1[i], c.a2[i], c.a3[i]);
     // 3 a3 t² + 2 a2 t + a1 = 0
-    let mut roots = Vec::new();
+    let mut roots = [0.0; 2];
+    let mut n = 0;
+    let mut keep = |t: f64| {
+        if t > 0.0 && t < h {
+            roots[n] = t;
+            n += 1;
+        }
+    };
     if a3.abs() < 1e-300 {
         if a2 != 0.0 {
-            roots.push(-a1 / (2.0 * a2));
+            keep(-a1 / (2.0 * a2));
         }
     } else {
         let disc = 4.0 * a2 * a2 - 12.0 * a3 * a1;
@@ -301,22 +318,25 @@ fn critical_points(c: &Cubic, i: usize, h: f64) -> Vec<f64> {
             // The stable form of the two roots.
             let qv = -0.5 * (2.0 * a2 + r.copysign(a2));
             if qv != 0.0 {
-                roots.push(qv / (3.0 * a3));
-                roots.push(a1 / qv);
+                keep(qv / (3.0 * a3));
+                keep(a1 / qv);
             } else {
-                roots.push(0.0);
+                keep(0.0);
             }
         }
     }
-    roots.retain(|&t| t > 0.0 && t < h);
-    roots.sort_by(f64::total_cmp);
-    roots
+    if n == 2 && roots[0].total_cmp(&roots[1]).is_gt() {
+        roots.swap(0, 1);
+    }
+    (roots, n)
 }
 
-/// A zero of the monotone `g` on [lo, hi] if it changes sign there (ends included), found by
-/// bisection to the last bit.
-fn bracketed_root(g: &impl Fn(f64) -> f64, lo: f64, hi: f64) -> Option<f64> {
-    let (glo, ghi) = (g(lo), g(hi));
+/// A zero of the monotone `g` on [lo, hi] if it changes sign there (ends included): Newton's
+/// steps from the chord's zero, kept inside the bracket of the sign change (bisection where a step
+/// would leave it), to a step of a few units in the last place of the segment's length.
+/// `g` returns the value and the derivative.
+fn bracketed_root(g: &impl Fn(f64) -> (f64, f64), lo: f64, hi: f64) -> Option<f64> {
+    let (glo, ghi) = (g(lo).0, g(hi).0);
     if glo == 0.0 {
         return Some(lo);
     }
@@ -326,24 +346,29 @@ fn bracketed_root(g: &impl Fn(f64) -> f64, lo: f64, hi: f64) -> Option<f64> {
     if glo.signum() == ghi.signum() {
         return None;
     }
-    let (mut a, mut b, mut ga) = (lo, hi, glo);
+    let tol = 4.0 * f64::EPSILON * lo.abs().max(hi.abs());
+    // Below and above zero.
+    let (mut a, mut b) = if glo < 0.0 { (lo, hi) } else { (hi, lo) };
+    let mut t = (lo - glo * (hi - lo) / (ghi - glo)).clamp(lo, hi);
     for _ in 0..200 {
-        let m = 0.5 * (a + b);
-        if m <= a || m >= b {
-            break;
+        let (gt, dg) = g(t);
+        if gt == 0.0 {
+            return Some(t);
         }
-        let gm = g(m);
-        if gm == 0.0 {
-            return Some(m);
-        }
-        if gm.signum() == ga.signum() {
-            a = m;
-            ga = gm;
+        if gt < 0.0 {
+            a = t;
         } else {
-            b = m;
+            b = t;
         }
+        let (l, h) = (a.min(b), a.max(b));
+        let newton = t - gt / dg;
+        let next = if newton > l && newton < h { newton } else { 0.5 * (l + h) };
+        if (next - t).abs() <= tol || h - l <= tol {
+            return Some(next);
+        }
+        t = next;
     }
-    Some(0.5 * (a + b))
+    Some(t)
 }
 
 #[cfg(test)]

@@ -1,0 +1,60 @@
+//! Speed of the wheel–rail stage (issue 44 item 9) on the Manchester benchmark
+//! (scenes/wheelrail/mbench_a22_{left,right}.toml, DX = DS = 0.2 mm, FZ = 10 kN prescribed):
+//! `exact_case` — the exact solver on the left wheel's case 11 (lateral shift 5 mm, yaw 12 mrad),
+//! the height search with the tangential forces' vertical part included (target: 1/25 of a
+//! gfortran build of CONTACT on the same case); `geometry` — the contact search, the patches'
+//! grids and the undeformed distance alone at that case's height, per wheel (target ≤ 1 ms);
+//! `all_models_21_positions` — the 21 cases of both wheels with every model of the scenes
+//! (target: seconds). docs/wheelrail.md "Speed" has the measured numbers.
+//! Run: `cargo bench --bench wheelrail`.
+
+use creepbench::pipeline::wheelrail::solve;
+use creepbench::pipeline::wheelrail_scene::{case_of, prepare, run_scene};
+use creepbench::problem::material_of_spec;
+use creepbench::scene::wheelrail::WheelRailScene;
+use creepbench::wheelrail::geometry;
+use criterion::{criterion_group, criterion_main, Criterion};
+use std::hint::black_box;
+use std::path::Path;
+use std::time::Duration;
+
+/// The Manchester case's case 11: the lateral shift 5 mm.
+const CASE: u64 = 11;
+
+fn scene(side: &str) -> WheelRailScene {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/wheelrail/mbench_a22_{side}.toml"));
+    let text = std::fs::read_to_string(&path).unwrap();
+    WheelRailScene::from_toml(&text, path.parent().unwrap()).unwrap()
+}
+
+fn bench_case(c: &mut Criterion) {
+    let mut g = c.benchmark_group("wheelrail");
+    g.sample_size(10).measurement_time(Duration::from_secs(10));
+    for side in ["left", "right"] {
+        let s = scene(side);
+        let (rail, wheel, _) = prepare(&s).unwrap();
+        let material = material_of_spec(&s.material).unwrap();
+        let row = s.cases.iter().find(|r| r.contact_case == CASE).unwrap();
+        let case = case_of(&s, row, &rail, &wheel, material);
+        let exact = vec!["contact".to_string()];
+        let z_ws_mm = solve(&case, &exact, s.mu).unwrap().normal.z_ws_mm;
+        if side == "left" {
+            g.bench_function("exact_case/left_11", |b| b.iter(|| solve(black_box(&case), &exact, s.mu).unwrap()));
+        }
+        g.bench_function(format!("geometry/{side}_11"), |b| b.iter(|| geometry(black_box(&case), z_ws_mm).unwrap()));
+    }
+    g.finish();
+}
+
+fn bench_scenes(c: &mut Criterion) {
+    let mut g = c.benchmark_group("wheelrail");
+    g.sample_size(10).measurement_time(Duration::from_secs(30));
+    let scenes = [scene("left"), scene("right")];
+    g.bench_function("all_models_21_positions/both_wheels", |b| {
+        b.iter(|| scenes.iter().map(|s| run_scene(black_box(s)).unwrap().cases.len()).sum::<usize>())
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench_case, bench_scenes);
+criterion_main!(benches);
