@@ -157,23 +157,27 @@ fn load_references(reference: &Path) -> Result<References, Error> {
 /// How a command runs a suite's scenes: one shard (none: all), with a progress bar or not, and
 /// the models its caller runs in this process beside the built-in and external ones
 /// ([`pipeline::InProcess`]: the Python package's callables; none from the command line).
+/// `timing_repeats`: after the suite, the models of the scenes whose timings the report draws
+/// are re-timed alone, this many times each ([`suite::timing`]; 0: not re-timed, as `check` and
+/// `bless`, which write no timings, run).
 #[derive(Clone, Copy, Default)]
 pub struct Runner<'a> {
     pub shard: Option<Shard>,
     pub progress: bool,
     pub in_process: &'a [pipeline::InProcess<'a>],
+    pub timing_repeats: usize,
 }
 
 impl Runner<'_> {
-    /// The command line's runner: no in-process model.
+    /// The command line's runner: no in-process model, no re-timing.
     pub fn cli(shard: Option<Shard>, progress: bool) -> Self {
-        Runner { shard, progress, in_process: &[] }
+        Runner { shard, progress, in_process: &[], timing_repeats: 0 }
     }
 }
 
 /// Run a suite (or one shard) and return its results as stored scenes.
 fn run_suite(suite_dir: &[PathBuf], runner: Runner) -> Result<Vec<StoredScene>, Error> {
-    let Runner { shard, progress, in_process } = runner;
+    let Runner { shard, progress, in_process, timing_repeats } = runner;
     let files = suite::scene_files(suite_dir, shard)?;
     if files.is_empty() {
         return empty_shard(suite_dir, shard).map(|()| Vec::new());
@@ -181,7 +185,25 @@ fn run_suite(suite_dir: &[PathBuf], runner: Runner) -> Result<Vec<StoredScene>, 
     let start = Instant::now();
     let results = suite::run_with(&files, progress, in_process)?;
     errln!("ran {} scene(s) in {:.2} s", results.len(), start.elapsed().as_secs_f64());
-    Ok(results.iter().map(StoredScene::from_result).collect())
+    let mut stored: Vec<StoredScene> = results.iter().map(StoredScene::from_result).collect();
+    retime(&results, &mut stored, timing_repeats)?;
+    Ok(stored)
+}
+
+/// The models of the scenes whose timings the report draws ([`report::timed::wants_isolated`])
+/// re-timed alone, one after another on this thread, `repeats` times each (none for 0).
+fn retime(results: &[pipeline::SceneResult], stored: &mut [StoredScene], repeats: usize) -> Result<(), Error> {
+    let wanted: Vec<usize> = (0..stored.len()).filter(|&i| report::timed::wants_isolated(&stored[i])).collect();
+    if repeats == 0 || wanted.is_empty() {
+        return Ok(());
+    }
+    let start = Instant::now();
+    errln!("re-timing the models of {} scene(s) alone, {repeats} repeats each ...", wanted.len());
+    for i in wanted {
+        stored[i].repeats = suite::timing::retime(&results[i].problem, repeats)?;
+    }
+    errln!("re-timed in {:.2} s", start.elapsed().as_secs_f64());
+    Ok(())
 }
 
 /// A shard that holds none of the suites' scenes is a success with a one-line note (a CI matrix
@@ -281,11 +303,10 @@ pub fn run(
     suite_dir: &[PathBuf],
     reference: &Path,
     outputs: RunOutputs,
-    shard: Option<Shard>,
+    runner: Runner,
     golden: &Path,
-    progress: bool,
 ) -> Result<(), Error> {
-    let outcome = run_with(suite_dir, reference, outputs, Runner::cli(shard, progress), golden)?;
+    let outcome = run_with(suite_dir, reference, outputs, runner, golden)?;
     let Some(md) = outcome.report else {
         errln!("shard done; build the report with `creepbench merge {} ...`", outcome.results_dir.display());
         return Ok(());

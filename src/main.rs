@@ -147,6 +147,12 @@ enum Command {
         /// suites run; a suite of one's own runs no fits unless this is given).
         #[arg(long)]
         fits: Option<PathBuf>,
+        /// After the suites, the models of the scenes whose timings the report draws (the
+        /// work–precision grids, the cost-per-step study) are re-timed alone, this many times each:
+        /// the report gives the median with a 95 % interval (at least 6 for an interval; 0: not
+        /// re-timed).
+        #[arg(long, default_value_t = creepbench::suite::timing::DEFAULT_REPEATS)]
+        timing_repeats: usize,
     },
     /// Run the suites and compare with golden/ (or --against DIR) and the references; exit 1 on drift.
     Check {
@@ -244,12 +250,13 @@ fn main() {
         Command::Simulate { scene, solvers, out, golden } => {
             commands::simulate(&scene, &solvers, &out, &golden).map(|dirs| dirs.iter().for_each(|d| say(d.display())))
         }
-        Command::Run { suite: s, results, report, fits } => {
+        Command::Run { suite: s, results, report, fits, timing_repeats } => {
             // The shipped fits calibrate on the shipped suites: a suite of one's own runs none unless asked.
             let shipped = s.suite.iter().map(PathBuf::as_path).eq(DEFAULT_SUITES.iter().map(std::path::Path::new));
             let fits = fits.or_else(|| Some(PathBuf::from("fits")).filter(|d| shipped && d.is_dir()));
             let outputs = commands::RunOutputs { results_dir: &results, report_dir: &report, fits: fits.as_deref() };
-            commands::run(&s.suite, &s.reference, outputs, s.shard, &s.golden, !s.quiet)
+            let runner = commands::Runner { timing_repeats, ..commands::Runner::cli(s.shard, !s.quiet) };
+            commands::run(&s.suite, &s.reference, outputs, runner, &s.golden)
         }
         Command::Check { suite: s, against, junit, json, summary, tolerances, strict, verbose } => {
             let files = commands::GateFiles { tolerances, junit, json, summary, strict, verbose };

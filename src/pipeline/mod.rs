@@ -227,6 +227,11 @@ fn select_metrics(problem: &mut Problem, asked: Option<&[String]>) {
 /// which is validated as an external model's output is ([`history::external::validate_in_process`]).
 pub type InProcess<'a> = (&'a str, &'a (dyn Fn(&Problem) -> Result<History, Error> + Sync));
 
+/// The field indicators of the problem's field metrics (computed on every solve's field).
+pub fn field_indicators(problem: &Problem) -> Vec<FieldIndicator> {
+    problem.metrics.iter().filter_map(|m| metrics::by_name(m)?.field_indicator()).collect()
+}
+
 /// Run the problem's models (only those it lists) and compute its metrics.
 pub fn run(problem: Problem) -> Result<SceneResult, Error> {
     run_with(problem, &[])
@@ -234,8 +239,7 @@ pub fn run(problem: Problem) -> Result<SceneResult, Error> {
 
 /// [`run`], with the models `in_process` run in this process instead of as external programs.
 pub fn run_with(mut problem: Problem, in_process: &[InProcess]) -> Result<SceneResult, Error> {
-    let field_metrics: Vec<FieldIndicator> =
-        problem.metrics.iter().filter_map(|m| metrics::by_name(m)?.field_indicator()).collect();
+    let field_metrics = field_indicators(&problem);
     let (mut histories, mut timing, mut all_metrics, mut logs) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
     for name in &problem.solvers {
         let fail = |e: solvers::SolveError| Error::Solve {

@@ -41,20 +41,41 @@ pub struct Series {
     pub group: String,
     pub points: Vec<(f64, f64)>,
     pub reference: bool,
+    /// Error bars, one per point (empty: none): a measured quantity's interval.
+    pub bars: Vec<Bar>,
+}
+
+/// A point's error bars: its interval along x and along y (each optional).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Bar {
+    pub x: Option<(f64, f64)>,
+    pub y: Option<(f64, f64)>,
 }
 
 impl Series {
     /// A model's curve.
     pub fn model(name: impl Into<String>, points: Vec<(f64, f64)>) -> Series {
-        Series { name: name.into(), group: String::new(), points, reference: false }
+        Series { name: name.into(), group: String::new(), points, reference: false, bars: Vec::new() }
     }
     /// A reference set's points (CONTACT, the thesis).
     pub fn reference(name: impl Into<String>, points: Vec<(f64, f64)>) -> Series {
-        Series { name: name.into(), group: String::new(), points, reference: true }
+        Series { name: name.into(), group: String::new(), points, reference: true, bars: Vec::new() }
     }
     /// The same series in `group`.
     pub fn in_group(self, group: impl Into<String>) -> Series {
         Series { group: group.into(), ..self }
+    }
+    /// The same series with error bars, one per point.
+    pub fn with_bars(self, bars: Vec<Bar>) -> Series {
+        Series { bars, ..self }
+    }
+    /// The points and the ends of their error bars (what the axes must hold).
+    pub fn extent(&self) -> impl Iterator<Item = (f64, f64)> + '_ {
+        let ends = self.points.iter().zip(&self.bars).flat_map(|(&(x, y), b)| {
+            let xs = b.x.into_iter().flat_map(move |(lo, hi)| [(lo, y), (hi, y)]);
+            xs.chain(b.y.into_iter().flat_map(move |(lo, hi)| [(x, lo), (x, hi)]))
+        });
+        self.points.iter().copied().chain(ends)
     }
     /// How the series is drawn.
     pub fn style(&self) -> style::Style {

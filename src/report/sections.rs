@@ -11,8 +11,9 @@ use crate::comparison::tolerance_file::Loosening;
 use crate::history::History;
 use crate::metrics::oscillation_index::own_oscillation;
 use crate::report::linked_table::{largest, place, Table};
-use crate::report::plot::{line_chart, Axis, Series};
+use crate::report::plot::{line_chart, Axis, Bar, Series};
 pub use crate::report::section::Section;
+use crate::report::timed;
 use crate::scene::report::ReportGroup;
 use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
@@ -102,28 +103,98 @@ pub fn thesis_beside_ours(scenes: &[StoredScene], refs: &References) -> Section 
     Section::new("The thesis's figures beside ours", s)
 }
 
-/// Wall time per scene and solver, with CONTACT's time for the same case; the slowest runs inline,
-/// every run in a linked table.
+/// Timing: the isolated repeats' medians and intervals of the re-timed scenes (the
+/// work–precision grids and the cost-per-step study), then every scene's single run of the
+/// suite, with CONTACT's time for the same case; the slowest runs inline, every run in a linked table.
 pub fn timing(scenes: &[StoredScene], refs: &References) -> Section {
     const TITLE: &str = "Timing";
+    let mut s = isolated_timing(scenes, refs, TITLE);
+    let (single, file) = single_runs(scenes, refs, TITLE);
+    s.push_str(&single);
+    let files = file.into_iter().chain(isolated_file(scenes, refs, TITLE)).collect();
+    Section { tables: files, ..Section::new(TITLE, s) }
+}
+
+/// CONTACT's time for the case `name` [s] and per step [ms], as two cells (empty when none).
+fn contact_cells(refs: &References, name: &str) -> (String, String) {
+    let c = refs.get::<ContactCases>(contact::EXACT).and_then(|c| c.cases.get(name));
+    (
+        c.map(|c| format!("{:.2}", c.contact_wall_s)).unwrap_or_default(),
+        c.map(|c| format!("{:.2}", 1e3 * c.contact_wall_s / (c.n_steps.max(1) as f64))).unwrap_or_default(),
+    )
+}
+
+/// The table of the re-timed runs: per scene and solver, the median wall time with its interval.
+fn isolated_table(scenes: &[StoredScene], refs: &References) -> Table {
+    let mut table = Table::new(&[
+        "scene",
+        "steps",
+        "solver",
+        "repeats",
+        "median wall",
+        "95 % interval",
+        "coverage",
+        "median per step",
+        "CONTACT s",
+    ]);
+    for sc in scenes.iter().filter(|s| !s.repeats.is_empty()) {
+        for (solver, h) in &sc.histories {
+            let Some(m) = timed::wall_s(sc, solver) else { continue };
+            let (c_s, _) = contact_cells(refs, &sc.name);
+            table.rows.push(format!(
+                "| {} | {} | {solver} | {} | {} | {} | {} | {} | {c_s} |",
+                sc.name,
+                h.rows.len(),
+                m.n,
+                timed::fmt_s(m.median),
+                m.interval_cell(timed::fmt_s),
+                m.coverage.map_or("—".into(), |c| format!("{:.1} %", 100.0 * c)),
+                timed::fmt_s(m.median / h.rows.len().max(1) as f64),
+            ));
+        }
+    }
+    table
+}
+
+/// The re-timed runs' paragraph and table (inline up to the linked-table limit).
+fn isolated_timing(scenes: &[StoredScene], refs: &References, title: &str) -> String {
+    let table = isolated_table(scenes, refs);
+    let mut s = format!("**Re-timed alone.** {}.", timed::method(timed::repeats(scenes)));
+    if table.rows.is_empty() {
+        s.push_str(" No scene of this run was re-timed.\n\n");
+        return s;
+    }
+    s.push_str(" The scenes the work–precision and cost-per-step sections draw:\n\n");
+    let summary = format!("{} re-timed solver runs.", table.rows.len());
+    s.push_str(&place("timing_isolated", title, &table, &summary, &[], "").inline);
+    s.push('\n');
+    s
+}
+
+/// The re-timed runs' linked table, when too long to stay inline.
+fn isolated_file(scenes: &[StoredScene], refs: &References, title: &str) -> Option<(String, String)> {
+    let table = isolated_table(scenes, refs);
+    place("timing_isolated", title, &table, &format!("{} re-timed solver runs.", table.rows.len()), &[], "").file
+}
+
+/// Every scene's single run of the suite (contention included): the paragraph with the slowest
+/// runs inline, and the linked table of all when too long.
+fn single_runs(scenes: &[StoredScene], refs: &References, title: &str) -> (String, Option<(String, String)>) {
     const SLOWEST: usize = 10;
-    let mut s = String::from("Wall time of each solver over the whole scene on this machine (scenes run in parallel on 2 cores, so figures include contention), and CONTACT's own time for the case (`contact_wall_s`, whole run incl. start-up and output).\n\n");
+    let mut s = String::from("**Single runs of the suite.** Wall time of each solver over the whole scene on this machine, one run each while the scenes ran in parallel on 2 cores (figures include contention), and CONTACT's own time for the case (`contact_wall_s`, whole run incl. start-up and output).\n\n");
     let mut table =
         Table::new(&["scene", "steps", "solver", "wall s", "ms per step", "CONTACT s", "CONTACT ms per step"]);
     let mut walls = Vec::new();
-    let contact = refs.get::<ContactCases>(contact::EXACT);
     for sc in scenes {
         for (solver, h) in &sc.histories {
             let w = sc.timing.get(solver).map(|t| t.wall_s).unwrap_or(f64::NAN);
             walls.push(if w.is_finite() { w } else { 0.0 });
-            let c = contact.and_then(|c| c.cases.get(&sc.name));
+            let (c_s, c_ms) = contact_cells(refs, &sc.name);
             table.rows.push(format!(
-                "| {} | {} | {solver} | {w:.4} | {:.4} | {} | {} |",
+                "| {} | {} | {solver} | {w:.4} | {:.4} | {c_s} | {c_ms} |",
                 sc.name,
                 h.rows.len(),
                 1e3 * w / h.rows.len().max(1) as f64,
-                c.map(|c| format!("{:.2}", c.contact_wall_s)).unwrap_or_default(),
-                c.map(|c| format!("{:.2}", 1e3 * c.contact_wall_s / (c.n_steps.max(1) as f64))).unwrap_or_default()
             ));
         }
     }
@@ -133,12 +204,12 @@ pub fn timing(scenes: &[StoredScene], refs: &References) -> Section {
         table.rows.len(),
         scenes.iter().filter(|sc| !sc.histories.is_empty()).count()
     );
-    let placed = place("timing", TITLE, &table, &summary, &largest(&walls, SLOWEST), &format!("The {SLOWEST} slowest"));
+    let placed = place("timing", title, &table, &summary, &largest(&walls, SLOWEST), &format!("The {SLOWEST} slowest"));
     s.push_str(&placed.inline);
     if placed.file.is_none() {
         let _ = writeln!(s, "\n{summary}");
     }
-    Section { tables: placed.file.into_iter().collect(), ..Section::new(TITLE, s) }
+    (s, placed.file)
 }
 
 /// The stability table's cases (declared groups `stability`, `stability_falling`): per scene and
@@ -203,38 +274,49 @@ pub fn grid_convergence(scenes: &[StoredScene], refs: &References) -> Option<Sec
 }
 
 /// Cost per step against element count from the stored scenes of the declared group `scaling`
-/// (`report_scaling_<solver>_g<n>`): per step = (wall − set-up) / steps, with the fitted growth
-/// exponent (least squares, log–log).
+/// (`report_scaling_<solver>_g<n>`): per step = (wall − set-up) / steps, the median of the
+/// isolated repeats with its 95 % interval (error bars), with the fitted growth exponent of the
+/// medians (least squares, log–log).
 pub fn scaling(scenes: &[StoredScene]) -> Option<Section> {
-    let mut per_solver: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
+    // Per solver: (elements, median per step [s], its interval).
+    type Point = (f64, f64, Option<(f64, f64)>);
+    let mut per_solver: BTreeMap<String, Vec<Point>> = BTreeMap::new();
     for sc in scenes.iter().filter(|s| s.scene.report_group == ReportGroup::Scaling) {
         for (solver, h) in &sc.histories {
-            let Some(t) = sc.timing.get(solver) else { continue };
-            let per_step = ((t.wall_s - t.setup_s) / h.rows.len().max(1) as f64).max(1e-12);
-            per_solver.entry(solver.clone()).or_default().push(((sc.scene.mx * sc.scene.my) as f64, per_step));
+            let steps = h.rows.len().max(1);
+            let point = match timed::per_step_s(sc, solver, steps) {
+                Some(m) => (m.median.max(1e-12), m.interval),
+                None => {
+                    let Some(t) = sc.timing.get(solver) else { continue };
+                    (((t.wall_s - t.setup_s) / steps as f64).max(1e-12), None)
+                }
+            };
+            per_solver.entry(solver.clone()).or_default().push(((sc.scene.mx * sc.scene.my) as f64, point.0, point.1));
         }
     }
     if per_solver.is_empty() {
         return None;
     }
-    let mut s = String::from("Wall time per time step against the number of grid elements (scenes `report_scaling_*`: step creepage 0.005 from zero traction on the default contact, μ 0.4): (wall − set-up)/steps, set-up being the model's construction and first load (kernels, normal problem), measured by the sample loop. Exponent: slope of log(time) against log(elements). Scenes run in parallel with the rest of the suite, so the figures include contention.\n\n| solver | elements: time per step | exponent |\n|---|---|---|\n");
+    let mut s = format!("Wall time per time step against the number of grid elements (scenes `report_scaling_*`: step creepage 0.005 from zero traction on the default contact, μ 0.4): (wall − set-up)/steps, set-up being the model's construction and first load (kernels, normal problem), measured by the sample loop. {}; each cell gives the median and its 95 % interval (the figure's error bars). Exponent: slope of log(median time) against log(elements).\n\n| solver | elements: time per step [95 % interval] | exponent |\n|---|---|---|\n", timed::method(timed::repeats(scenes)));
     let mut series = Vec::new();
     for (solver, mut pts) in per_solver {
         pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let logs: Vec<(f64, f64)> = pts.iter().map(|(n, t)| (n.ln(), t.ln())).collect();
+        let logs: Vec<(f64, f64)> = pts.iter().map(|(n, t, _)| (n.ln(), t.ln())).collect();
         let m = logs.len() as f64;
         let (sx, sy) = (logs.iter().map(|p| p.0).sum::<f64>() / m, logs.iter().map(|p| p.1).sum::<f64>() / m);
         let slope = logs.iter().map(|p| (p.0 - sx) * (p.1 - sy)).sum::<f64>()
             / logs.iter().map(|p| (p.0 - sx).powi(2)).sum::<f64>();
         let cells: Vec<String> = pts
             .iter()
-            .map(|(n, t)| {
-                let v = if *t < 1e-3 { format!("{:.2} µs", t * 1e6) } else { format!("{:.2} ms", t * 1e3) };
-                format!("{n:.0}: {v}")
+            .map(|(n, t, i)| {
+                let interval =
+                    i.map_or(String::new(), |(lo, hi)| format!(" [{}, {}]", timed::fmt_s(lo), timed::fmt_s(hi)));
+                format!("{n:.0}: {}{interval}", timed::fmt_s(*t))
             })
             .collect();
         let _ = writeln!(s, "| {solver} | {} | {slope:.2} |", cells.join(", "));
-        series.push(Series::model(solver, pts));
+        let bars = pts.iter().map(|p| Bar { x: None, y: p.2 }).collect();
+        series.push(Series::model(solver, pts.iter().map(|p| (p.0, p.1)).collect()).with_bars(bars));
     }
     let svg = line_chart(
         "Cost per step against elements",

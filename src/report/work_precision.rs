@@ -6,15 +6,19 @@
 use crate::comparison::references::contact::{self, ContactCases};
 use crate::comparison::references::References;
 use crate::history::History;
-use crate::report::plot::{line_chart, Axis, Series};
+use crate::report::plot::{line_chart, Axis, Bar, Series};
 use crate::report::section::Section;
+use crate::report::timed;
 use crate::suite::results::StoredScene;
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
 /// The scene on its three grids (the element size halves from one to the next, at one Courant
 /// number: time steps halve with it, so each coarse time is a sample of the finer runs).
-const GRIDS: [(&str, usize); 3] = [("sine_f30_mu10", 22), ("sine_f30_mu10_g44", 44), ("sine_f30_mu10_g88", 88)];
+pub const GRIDS: [(&str, usize); 3] = [("sine_f30_mu10", 22), ("sine_f30_mu10_g44", 44), ("sine_f30_mu10_g88", 88)];
+/// A point of the work–precision figure (cost, error) with its error bar.
+type Point = ((f64, f64), Bar);
+
 /// The model extrapolated.
 const EXACT: &str = crate::solvers::contact::NAME;
 
@@ -93,49 +97,56 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
     let [c, m, f] = exact[..] else { return None };
     let x = richardson(c, m, f)?;
     let mut s = format!(
-        "Scene sine_f30_mu10 (30 Hz, μ = 1) on 22×22, 44×44 and 88×88 grids. Reference: the exact solver's (`{EXACT}`) three grids extrapolated to zero element size at the 22×22 run's {} times (Richardson: f∞ = f88 + (f88 − f44)/(2^p − 1), observed order p = log2(d(22, 44)/d(44, 88)) = log2({:.5}/{:.5}) = {:.2}). Error: max |fx/FN − f∞| over those times; cost: wall time per simulated second (this machine, scenes in parallel on 2 cores). CONTACT's own runs of the three grids are scored the same way (`contact_wall_s` includes start-up and file output). The 88×88 exact run's distance from f∞ is the discretisation error left at that grid, which a comparison with CONTACT's own 88×88 (1e-7) does not show.\n\n| model | grid | max \\|f − f∞\\| | wall s per simulated s | wall ms per step |\n|---|---|---|---|---|\n",
+        "Scene sine_f30_mu10 (30 Hz, μ = 1) on 22×22, 44×44 and 88×88 grids. Reference: the exact solver's (`{EXACT}`) three grids extrapolated to zero element size at the 22×22 run's {} times (Richardson: f∞ = f88 + (f88 − f44)/(2^p − 1), observed order p = log2(d(22, 44)/d(44, 88)) = log2({:.5}/{:.5}) = {:.2}). Error: max |fx/FN − f∞| over those times; cost: wall time per simulated second on this machine, the median with its 95 % interval (the figure's error bars). {}. CONTACT's own runs of the three grids are scored the same way (`contact_wall_s` includes start-up and file output). The 88×88 exact run's distance from f∞ is the discretisation error left at that grid, which a comparison with CONTACT's own 88×88 (1e-7) does not show.\n\n| model | grid | max \\|f − f∞\\| | wall s per simulated s | 95 % interval | wall ms per step |\n|---|---|---|---|---|---|\n",
         x.t_s.len(),
         x.d_coarse,
         x.d_fine,
-        x.order
+        x.order,
+        timed::method(timed::repeats(scenes))
     );
-    let mut curves: BTreeMap<String, Vec<(f64, f64)>> = Default::default();
+    let mut curves: BTreeMap<String, Vec<Point>> = Default::default();
     for (name, grid) in GRIDS {
         let Some(sc) = find(name) else { continue };
         let sim_s = sc.scene.history.last().map(|r| r.t_s).unwrap_or(f64::NAN);
         for (solver, h) in &sc.histories {
             let err = x.error(h);
-            let wall = sc.timing.get(solver).map(|t| t.wall_s).unwrap_or(f64::NAN);
+            let single = || sc.timing.get(solver).map(|t| t.wall_s).unwrap_or(f64::NAN);
+            let wall = timed::wall_s(sc, solver);
+            let per_sim = wall.map(|m| m.scaled(1.0 / sim_s));
+            let median = wall.map_or_else(single, |m| m.median);
             let _ = writeln!(
                 s,
-                "| {solver} | {grid} | {err:.2e} | {:.2e} | {:.2e} |",
-                wall / sim_s,
-                1e3 * wall / h.rows.len() as f64
+                "| {solver} | {grid} | {err:.2e} | {:.2e} | {} | {:.2e} |",
+                median / sim_s,
+                per_sim.map_or("—".into(), |m| m.interval_cell(|v| format!("{v:.2e}"))),
+                1e3 * median / h.rows.len() as f64
             );
-            curves.entry(solver.clone()).or_default().push((wall / sim_s, err.max(1e-12)));
+            let bar = Bar { x: per_sim.and_then(|m| m.interval), y: None };
+            curves.entry(solver.clone()).or_default().push(((median / sim_s, err.max(1e-12)), bar));
         }
         if let (Some(c), Some(ch)) = (contact.and_then(|c| c.cases.get(name)), contact.and_then(|c| c.history(name))) {
             let err = x.error(ch);
             let _ = writeln!(
                 s,
-                "| CONTACT (reference run) | {grid} | {err:.2e} | {:.2e} | {:.2e} |",
+                "| CONTACT (reference run) | {grid} | {err:.2e} | {:.2e} | one run | {:.2e} |",
                 c.contact_wall_s / sim_s,
                 1e3 * c.contact_wall_s / (c.n_steps as f64 + 1.0)
             );
-            curves.entry("CONTACT".into()).or_default().push((c.contact_wall_s / sim_s, err.max(1e-12)));
+            curves
+                .entry("CONTACT".into())
+                .or_default()
+                .push(((c.contact_wall_s / sim_s, err.max(1e-12)), Bar::default()));
         }
     }
     let series: Vec<Series> = curves
         .into_iter()
-        .map(
-            |(label, points)| {
-                if label == "CONTACT" {
-                    Series::reference(label, points)
-                } else {
-                    Series::model(label, points)
-                }
-            },
-        )
+        .map(|(label, points)| {
+            let (points, bars): (Vec<_>, Vec<_>) = points.into_iter().unzip();
+            match label.as_str() {
+                "CONTACT" => Series::reference(label, points),
+                _ => Series::model(label, points).with_bars(bars),
+            }
+        })
         .collect();
     let svg = line_chart(
         "Work-precision (sine_f30_mu10, grids 22, 44, 88)",

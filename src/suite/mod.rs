@@ -3,7 +3,9 @@
 use crate::error::{Error, InputError};
 use crate::pipeline::{self, InProcess, SceneResult};
 use crate::problem::Problem;
+pub mod median;
 pub mod results;
+pub mod timing;
 pub mod wheelrail;
 
 pub use crate::scene::source::SceneSource;

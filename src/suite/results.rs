@@ -1,5 +1,6 @@
 //! Result folders on disk: one folder per scene in the `simulate` format, plus `timing.csv`
-//! (wall times, kept apart so that the other files stay bit-identical run to run). `simulate`,
+//! (the suite's wall times) and `timing_repeats.csv` (the isolated repeats of `run`,
+//! [`super::timing`]), kept apart so that the other files stay bit-identical run to run. `simulate`,
 //! `run` and `bless` write them; `check --against`, `merge` and the report read them.
 
 use crate::error::{Error, FormatError};
@@ -26,6 +27,8 @@ pub struct StoredScene {
     pub metrics: MetricMap,
     /// Wall times per solver, when recorded (timing.csv).
     pub timing: BTreeMap<String, Timing>,
+    /// Wall times of each solver's isolated repeats, when re-timed (timing_repeats.csv).
+    pub repeats: BTreeMap<String, Vec<Timing>>,
     /// What external models printed, by file name (`<model>.stdout.txt`).
     pub logs: BTreeMap<String, String>,
 }
@@ -40,6 +43,7 @@ impl StoredScene {
             histories: r.histories.iter().map(|h| (h.solver.clone(), h.clone())).collect(),
             metrics: r.metrics.iter().map(|m| ((m.solver.clone(), m.name.clone(), m.step), m.value)).collect(),
             timing: r.histories.iter().zip(&r.timing).map(|(h, t)| (h.solver.clone(), *t)).collect(),
+            repeats: BTreeMap::new(),
             logs: r.logs.iter().cloned().collect(),
         }
     }
@@ -50,7 +54,8 @@ impl StoredScene {
     }
 
     /// The files of the result folder: scene.json, `<solver>.csv`, metrics.csv, the external
-    /// models' `<model>.stdout.txt` / `<model>.stderr.txt` and, with `with_timing`, timing.csv.
+    /// models' `<model>.stdout.txt` / `<model>.stderr.txt` and, with `with_timing`, timing.csv
+    /// (and timing_repeats.csv when re-timed).
     pub fn files(&self, with_timing: bool) -> Vec<(String, String)> {
         let mut files = vec![("scene.json".to_string(), self.scene.to_json())];
         for (solver, h) in &self.histories {
@@ -75,9 +80,41 @@ impl StoredScene {
                 t.push_str(&format!("{solver},{},{steps},{}\n", w.wall_s, w.setup_s));
             }
             files.push(("timing.csv".into(), t));
+            if !self.repeats.is_empty() {
+                files.push((REPEATS_FILE.into(), self.repeats_csv()));
+            }
         }
         files
     }
+
+    /// timing_repeats.csv: one row per solver and repeat.
+    fn repeats_csv(&self) -> String {
+        let mut t = String::from("solver,repeat,wall_s,steps,setup_s\n");
+        for (solver, runs) in &self.repeats {
+            let steps = self.histories.get(solver).map(|h| h.rows.len()).unwrap_or(0);
+            for (k, w) in runs.iter().enumerate() {
+                t.push_str(&format!("{solver},{},{},{steps},{}\n", k + 1, w.wall_s, w.setup_s));
+            }
+        }
+        t
+    }
+}
+
+/// The isolated repeats' wall times (`run`, [`super::timing`]).
+pub const REPEATS_FILE: &str = "timing_repeats.csv";
+
+/// The repeats of a timing_repeats.csv text, by solver (rows that do not parse are skipped: the
+/// file holds wall times only, never a result).
+fn parse_repeats(text: &str) -> BTreeMap<String, Vec<Timing>> {
+    let mut out: BTreeMap<String, Vec<Timing>> = BTreeMap::new();
+    for line in text.lines().skip(1) {
+        let parts: Vec<&str> = line.split(',').collect();
+        let num = |i: usize| parts.get(i).and_then(|w| w.parse::<f64>().ok());
+        if let (Some(n), Some(wall_s), Some(setup_s)) = (parts.first(), num(2), num(4)) {
+            out.entry(n.to_string()).or_default().push(Timing { wall_s, setup_s });
+        }
+    }
+    out
 }
 
 /// Write each scene's results as `dir/<name>/`, each folder atomically and marked as a result
@@ -142,6 +179,7 @@ pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
         histories: BTreeMap::new(),
         metrics: BTreeMap::new(),
         timing: BTreeMap::new(),
+        repeats: BTreeMap::new(),
         logs: BTreeMap::new(),
         scene,
     };
@@ -154,7 +192,7 @@ pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
     for entry in std::fs::read_dir(&d).map_err(Error::io(&d))?.flatten() {
         let file = entry.file_name().to_string_lossy().to_string();
         if let Some(stem) = file.strip_suffix(".csv") {
-            if !["metrics", "timing"].contains(&stem) && !s.scene.solvers.iter().any(|x| x == stem) {
+            if !["metrics", "timing", "timing_repeats"].contains(&stem) && !s.scene.solvers.iter().any(|x| x == stem) {
                 let source = FormatError::MissingColumn {
                     column: format!("{stem} in scene.json's solvers (the folder holds {file})"),
                 };
@@ -183,6 +221,9 @@ pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
                 s.timing.insert(n.to_string(), Timing { wall_s, setup_s: num(3).unwrap_or(0.0) });
             }
         }
+    }
+    if let Ok(t) = read(REPEATS_FILE) {
+        s.repeats = parse_repeats(&t);
     }
     Ok(s)
 }

@@ -53,6 +53,7 @@ mod steady_restart;
 mod strip;
 mod studies;
 mod test_table;
+mod timing;
 mod tolerance_files;
 mod traction_bound;
 mod wheelrail;

@@ -60,8 +60,8 @@ fn wrap(text: &str, width: usize) -> Vec<String> {
 pub fn draw(title: &str, x: &Axis, y: &Axis, panels: &[Panel<'_>]) -> String {
     let layout = Layout::of(panels.len());
     let all = || panels.iter().flat_map(|p| p.series.iter());
-    let xs = Scale::over(all().flat_map(|s| s.points.iter().map(|p| p.0)), x.log);
-    let ys = Scale::over(all().flat_map(|s| s.points.iter().map(|p| p.1)), y.log);
+    let xs = Scale::over(all().flat_map(|s| s.extent().map(|p| p.0)), x.log);
+    let ys = Scale::over(all().flat_map(|s| s.extent().map(|p| p.1)), y.log);
     let (xt, yt) = (axis::ticks(&xs, layout.plot.0, true), axis::ticks(&ys, layout.plot.1, false));
     let legend = legend_entries(panels);
     let legend_w = legend.iter().map(|(l, _, _)| axis::text_width(l, LEGEND_FONT_PX)).fold(0.0, f64::max) + 52.0;
@@ -181,6 +181,7 @@ fn draw_panel(
         if !s.reference {
             svg.polyline(&pts, &style, 1.8);
         }
+        draw_bars(svg, s, (xs, ys), (w, h));
         let r = match (s.reference, pts.len()) {
             (false, _) => 3.5,
             (true, n) if n <= 40 => 3.0,
@@ -194,6 +195,42 @@ fn draw_panel(
     svg.raw("</g>");
     svg.rect((0.0, 0.0), (w, h), "none", Some(("#444444", 1.0)));
     svg.raw("</g>");
+}
+
+/// A series' error bars: a line over each interval with a cap at each end (ends off the axis
+/// drawn at its edge).
+fn draw_bars(svg: &mut Svg, s: &Series, (xs, ys): (&Scale, &Scale), (w, h): (f64, f64)) {
+    const CAP: f64 = 3.0;
+    let px = |v: f64| axis::plottable(v, xs.log).map(|v| xs.frac(v) * w);
+    let py = |v: f64| axis::plottable(v, ys.log).map(|v| (1.0 - ys.frac(v)) * h);
+    let style = s.style();
+    for (&(x, y), bar) in s.points.iter().zip(&s.bars) {
+        let (Some(cx), Some(cy)) = (px(x), py(y)) else { continue };
+        if let Some((Some(a), Some(b))) = bar.x.map(|(lo, hi)| (px(lo), px(hi))) {
+            svg.bar(
+                &format!(
+                    "M{a:.1},{cy:.1}H{b:.1}M{a:.1},{:.1}V{:.1}M{b:.1},{:.1}V{:.1}",
+                    cy - CAP,
+                    cy + CAP,
+                    cy - CAP,
+                    cy + CAP
+                ),
+                &style,
+            );
+        }
+        if let Some((Some(a), Some(b))) = bar.y.map(|(lo, hi)| (py(lo), py(hi))) {
+            svg.bar(
+                &format!(
+                    "M{cx:.1},{a:.1}V{b:.1}M{:.1},{a:.1}H{:.1}M{:.1},{b:.1}H{:.1}",
+                    cx - CAP,
+                    cx + CAP,
+                    cx - CAP,
+                    cx + CAP
+                ),
+                &style,
+            );
+        }
+    }
 }
 
 /// The points that get a marker: every point of a reference or a short line, else about eight

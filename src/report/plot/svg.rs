@@ -71,6 +71,15 @@ impl Svg {
         );
     }
 
+    /// An error bar: the path `d` [px] in the style's colour, solid.
+    pub fn bar(&mut self, d: &str, style: &Style) {
+        let _ = writeln!(
+            self.out,
+            r#"<path class="error-bar" d="{d}" fill="none" stroke="{}" stroke-width="1.2"/>"#,
+            style.color
+        );
+    }
+
     /// The style's marker centred at (x, y), `r` px from centre to edge.
     pub fn marker(&mut self, (x, y): (f64, f64), style: &Style, r: f64) {
         let fill = if style.filled { style.color } else { "white" };
