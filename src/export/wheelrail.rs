@@ -24,8 +24,16 @@ const FKIN_MIN: f64 = 1e-4;
 const NAME_MAX: usize = 200;
 
 /// The scene's values CONTACT's input check would refuse or change (an error names the scene's key):
-/// mu below CONTACT's FKIN range, a profile scale CONTACT replaces by 1.
+/// mu below CONTACT's FKIN range, a profile scale CONTACT replaces by 1; a friction variation,
+/// which the deck is not written with yet.
 pub fn check(s: &WheelRailScene) -> Result<(), InputError> {
+    if let Some(v) = &s.mu_variation {
+        return Err(InputError::new(
+            "wheelrail.mu_by",
+            format!("{:?}", v.by),
+            "one mu for the whole rail (wheelrail.mu): the export writes V = 0 only, not yet CONTACT's friction variation (V = 1, 2)",
+        ));
+    }
     if s.mu < FKIN_MIN {
         let allowed = format!(
             "a coefficient of friction of at least {FKIN_MIN:e} (CONTACT's FSTAT = FKIN, m_friclaw.f90 fric_input)"

@@ -4,6 +4,7 @@
 //!
 //! Units throughout: mm, N, MPa (N/mm²), s; creepages dimensionless, spin in 1/mm.
 
+pub mod approximate;
 pub mod bound;
 pub mod friction;
 pub mod geometry;

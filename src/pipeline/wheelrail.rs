@@ -16,6 +16,7 @@ use crate::physics::geometry::{Extent, GeometrySpec};
 use crate::problem::Problem;
 use crate::scene::Scene;
 use crate::solvers;
+use crate::wheelrail::friction::Friction;
 use crate::wheelrail::{self, NormalContact, NormalPatch, Vertical, WheelRailCase};
 use nalgebra::{Rotation3, Vector3};
 use std::path::Path;
@@ -54,6 +55,12 @@ pub struct CaseResult {
 
 /// Solve `case` with `models` (names of the registry) at Coulomb friction `mu`.
 pub fn solve(case: &WheelRailCase, models: &[String], mu: f64) -> Result<CaseResult, Error> {
+    solve_with(case, models, &Friction { mu, variation: None })
+}
+
+/// Solve `case` with `models`, each patch at its Coulomb friction (varying across the rail or
+/// along the track where `mu` says so).
+pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Result<CaseResult, Error> {
     let geometry = |e: wheelrail::WheelRailError| Error::from(InputError::new("wheelrail", "the case", e.to_string()));
     let mut cache = wheelrail::NormalCache::default();
     let mut normal = wheelrail::normal_contact_with(case, None, &mut cache).map_err(geometry)?;
@@ -93,8 +100,13 @@ pub fn solve(case: &WheelRailCase, models: &[String], mu: f64) -> Result<CaseRes
 }
 
 /// One model's forces on every patch.
-fn patch_forces(normal: &NormalContact, model: &str, mu: f64, case: &WheelRailCase) -> Result<Vec<PatchForces>, Error> {
-    normal.patches.iter().map(|p| patch_solve(p, model, mu, case)).collect()
+fn patch_forces(
+    normal: &NormalContact,
+    model: &str,
+    mu: &Friction,
+    case: &WheelRailCase,
+) -> Result<Vec<PatchForces>, Error> {
+    normal.patches.iter().map(|p| patch_solve(p, model, mu.of_patch(p, case), case)).collect()
 }
 
 /// The module-3 scene text of a patch with `contact` (its geometry's keys) and `grid` tables.

@@ -1,12 +1,13 @@
 //! A wheel–rail scene through the stages: its profiles read once, each case (a row of its cases
-//! table) solved by [`super::wheelrail::solve`] with every model the scene names, cases in
+//! table) solved by [`super::wheelrail::solve_with`] with every model the scene names, cases in
 //! parallel (each alone, so the results do not depend on the thread count).
 
-use super::wheelrail::{solve, CaseResult};
+use super::wheelrail::{solve_with, CaseResult};
 use crate::error::{Error, InputError};
 use crate::problem::material_of_spec;
 use crate::scene::wheelrail::{CaseRow, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene};
 use crate::solvers;
+use crate::wheelrail::friction::Friction;
 use crate::wheelrail::patch::Separation;
 use crate::wheelrail::profile::{options::ProfileOptions, read::read_profile, Profile, ProfileKind};
 use crate::wheelrail::rail::{RailPlacement, Track};
@@ -65,7 +66,8 @@ pub fn run_scene(scene: &WheelRailScene) -> Result<SceneRun, Error> {
         .par_iter()
         .map(|row| {
             let case = case_of(scene, row, &rail, &wheel, material);
-            solve(&case, &models, scene.mu).map(|r| (row.contact_case, r)).map_err(|e| in_case(row, e))
+            let friction = Friction { mu: scene.mu, variation: scene.mu_variation.as_ref() };
+            solve_with(&case, &models, &friction).map(|r| (row.contact_case, r)).map_err(|e| in_case(row, e))
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(SceneRun { name: scene.name.clone(), models, cases })

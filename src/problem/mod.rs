@@ -387,7 +387,12 @@ impl Problem {
 
     /// The simplified models' contact at load `fn_n`.
     pub fn local_contact(&self, fn_n: f64) -> LocalContact {
-        let planform = self.geometry.planform(&self.grid, fn_n, self.model.pressure);
+        self.local_contact_of(self.geometry.planform(&self.grid, fn_n, self.model.pressure))
+    }
+
+    /// The simplified models' contact on a planform found otherwise (an approximate normal
+    /// problem's, [`crate::physics::approximate`]).
+    pub fn local_contact_of(&self, planform: Planform) -> LocalContact {
         let flex = self.flexibilities_of(&planform.ellipse);
         let strips = !self.geometry.elliptic() && self.model.nonhertz_flexibility == PatchFlexibility::Strip;
         let a_mm = planform.ellipse.a_mm;

@@ -52,6 +52,46 @@ pub struct CaseRow {
     pub velocity: [f64; 6],
 }
 
+/// What the friction coefficient varies with (CONTACT's V digit in module 1).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum MuBy {
+    /// V = 1: the contact angle of each patch on the wheel (CONTACT's ALPHVF) [rad].
+    ContactAngle,
+    /// V = 2: the wheelset's position along the track (SVF) [mm]; the case's position `s_mm`.
+    TrackS { s_mm: f64 },
+}
+
+/// Coulomb's μ at control points (`[wheelrail] mu_by`, `mu_at`, `mu_values`): linear between
+/// them, constant beyond (CONTACT's `fric_interp`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct MuVariation {
+    pub by: MuBy,
+    /// The control points, increasing: rad (contact angle) or mm (track position).
+    pub at: Vec<f64>,
+    pub values: Vec<f64>,
+}
+
+/// Largest number of friction control points (CONTACT's NVF).
+const MAX_MU_POINTS: usize = 1000;
+
+impl MuVariation {
+    /// μ at `x` (rad or mm as [`MuBy`] says): linear between the control points, the end values
+    /// beyond them.
+    pub fn at(&self, x: f64) -> f64 {
+        let (a, v) = (&self.at, &self.values);
+        let n = a.len();
+        if x <= a[0] {
+            return v[0];
+        }
+        if x >= a[n - 1] {
+            return v[n - 1];
+        }
+        let k = a.partition_point(|&p| p <= x).min(n - 1);
+        let t = (x - a[k - 1]) / (a[k] - a[k - 1]);
+        v[k - 1] + t * (v[k] - v[k - 1])
+    }
+}
+
 /// A validated wheel–rail scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct WheelRailScene {
@@ -65,7 +105,11 @@ pub struct WheelRailScene {
     pub flange_back_distance_mm: f64,
     pub flange_back_position_mm: f64,
     pub nominal_radius_mm: f64,
+    /// Coulomb's μ of every patch (`mu`); with a variation by track position its value at the
+    /// case's position; by contact angle its first value (each patch then takes its own).
     pub mu: f64,
+    /// μ varying across the rail or along the track (CONTACT's V = 1, 2), if it does.
+    pub mu_variation: Option<MuVariation>,
     pub material: MaterialSpec,
     pub dx_mm: f64,
     pub ds_mm: f64,
@@ -146,7 +190,7 @@ impl WheelRailScene {
             "left" => SideSpec::Left,
             _ => SideSpec::Right,
         };
-        let mu = w.f64("mu", Range::new(0.0, false, 10.0, true))?;
+        let (mu, mu_variation) = friction(&mut w)?;
         let dx_mm = w.f64("dx_mm", Range::new(1e-3, true, 100.0, true))?;
         let ds_mm = w.f64("ds_mm", Range::new(1e-3, true, 100.0, true))?;
         let a_sep_rad = w
@@ -177,6 +221,7 @@ impl WheelRailScene {
             flange_back_position_mm: fbp,
             nominal_radius_mm: radius,
             mu,
+            mu_variation,
             material,
             dx_mm,
             ds_mm,
@@ -189,6 +234,55 @@ impl WheelRailScene {
             dir: dir.to_path_buf(),
         })
     }
+}
+
+/// Coulomb's μ range.
+const MU: Range = Range::new(0.0, false, 10.0, true);
+
+/// `mu`, or `mu_by` with `mu_at`, `mu_values` (and `s_mm` for `mu_by = "track_s"`).
+fn friction(w: &mut Section) -> Result<(f64, Option<MuVariation>), InputError> {
+    let Some(by) = w.opt_choice("mu_by", &["contact_angle", "track_s"])? else {
+        w.refuse("mu_at", "no mu_at without mu_by")?;
+        w.refuse("mu_values", "no mu_values without mu_by")?;
+        w.refuse("s_mm", "no s_mm without mu_by = \"track_s\"")?;
+        return Ok((w.f64("mu", MU)?, None));
+    };
+    w.refuse("mu", "no mu with mu_by (mu_values give it)")?;
+    let range = match by {
+        "contact_angle" => Range::new(-std::f64::consts::PI, true, std::f64::consts::PI, true),
+        _ => LENGTH,
+    };
+    let field = w.field("mu_at");
+    let at = w
+        .opt_f64_list("mu_at", range, MAX_MU_POINTS)?
+        .ok_or_else(|| InputError::new(&field, "missing", "the control points of mu_by, increasing (rad or mm)"))?;
+    let values_field = w.field("mu_values");
+    let values = w
+        .opt_f64_list("mu_values", MU, MAX_MU_POINTS)?
+        .ok_or_else(|| InputError::new(&values_field, "missing", "mu at each point of mu_at"))?;
+    if at.is_empty() || at.windows(2).any(|p| p[1] <= p[0]) {
+        return Err(InputError::new(field, format!("{at:?}"), "at least one control point, strictly increasing"));
+    }
+    if values.len() != at.len() {
+        return Err(InputError::new(
+            values_field,
+            format!("{} values", values.len()),
+            format!("one mu per point of mu_at ({})", at.len()),
+        ));
+    }
+    let by = match by {
+        "contact_angle" => {
+            w.refuse("s_mm", "no s_mm with mu_by = \"contact_angle\" (the patch's contact angle selects mu)")?;
+            MuBy::ContactAngle
+        }
+        _ => MuBy::TrackS { s_mm: w.opt_f64("s_mm", LENGTH)?.unwrap_or(0.0) },
+    };
+    let v = MuVariation { by, at, values };
+    let mu = match by {
+        MuBy::ContactAngle => v.values[0],
+        MuBy::TrackS { s_mm } => v.at(s_mm),
+    };
+    Ok((mu, Some(v)))
 }
 
 /// `[origin] cases` = [first, last] are the smallest and largest `contact_case` of the table (an

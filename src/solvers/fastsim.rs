@@ -25,13 +25,22 @@ pub const MODEL: ModelDef = ModelDef {
 };
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
-    let local = p.local_contact(p.loading.first().fn_n);
+    with_contact(p, |p, fn_n| Ok(p.local_contact(fn_n)))
+}
+
+/// The contact FASTSIM marches over at a load: the problem's own, or one a normal model finds.
+pub type ContactAt = fn(&Problem, f64) -> Result<LocalContact, SolveError>;
+
+/// FASTSIM on the contact `contact` gives at each load.
+pub fn with_contact(p: &Problem, contact: ContactAt) -> Result<Box<dyn Stepper + '_>, SolveError> {
+    let local = contact(p, p.loading.first().fn_n)?;
     let mu = vec![p.friction.mu_static(); p.grid.len()];
-    Ok(Box::new(Fastsim { p, local, t: Tractions::zero(p.grid.len()), mu }))
+    Ok(Box::new(Fastsim { p, contact, local, t: Tractions::zero(p.grid.len()), mu }))
 }
 
 struct Fastsim<'a> {
     p: &'a Problem,
+    contact: ContactAt,
     local: LocalContact,
     t: Tractions,
     /// Each element's coefficient of the last solve with a falling law (its bound's start).
@@ -41,7 +50,7 @@ struct Fastsim<'a> {
 impl Stepper for Fastsim<'_> {
     fn load(&mut self, at: &Sample) -> Result<(), SolveError> {
         if at.fn_n != self.local.planform.ellipse.fn_n {
-            self.local = self.p.local_contact(at.fn_n);
+            self.local = (self.contact)(self.p, at.fn_n)?;
         }
         Ok(())
     }

@@ -9,6 +9,7 @@ pub mod brush;
 pub mod contact;
 pub mod fastrip;
 pub mod fastsim;
+pub mod kpec;
 pub mod linear;
 pub mod polach;
 pub mod relaxation;
@@ -34,6 +35,9 @@ pub enum SolveError {
     /// The exact-theory solver failed.
     #[error(transparent)]
     Contact(#[from] contact::ContactRunError),
+    /// An approximate normal problem (KPEC, ANALYN) has no answer.
+    #[error(transparent)]
+    Approximate(#[from] crate::physics::approximate::ApproximateError),
     /// A shift start asked of a model that solves no shifts (refused before a run).
     #[error("step {step}: this model solves no shifts")]
     NoShifts { step: usize },
@@ -83,6 +87,8 @@ pub const MODELS: &[&ModelDef] = &[
     &polach::MODEL,
     &fastrip::MODEL,
     &relaxation::MODEL,
+    &kpec::KPEC,
+    &kpec::ANALYN,
 ];
 
 /// The built-in model of that name.

@@ -11,6 +11,7 @@
 
 pub mod creepage;
 pub mod curve;
+pub mod friction;
 pub mod patch;
 pub mod profile;
 pub mod rail;

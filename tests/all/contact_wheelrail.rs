@@ -292,7 +292,7 @@ fn mbench_a22_left_case_2_by_hand_with_what_case_1_left_in_force() {
 }
 
 #[test]
-fn friction_varying_across_the_rail_or_along_the_track_is_read_and_named_unsupported() {
+fn friction_varying_across_the_rail_or_along_the_track_is_read_and_named() {
     let cases = deck("examples/mbench_a22_varfric.inp");
     assert_eq!(cases.len(), 7);
     // Cases 1-5: two sets across the rail (ALPHA in degrees); 6, 7: along the track (SVF [mm]).
@@ -303,9 +303,12 @@ fn friction_varying_across_the_rail_or_along_the_track_is_read_and_named_unsuppo
     let f = cases[6].state.friction.as_ref().unwrap();
     assert_eq!((f.variation, f.sets[0].at, f.sets[1].at), (FrictionVariation::AlongTrack, Some(0.0), Some(100.0)));
     assert_eq!(f.sets[0].values, FrictionValues::Coulomb { fstat: 0.2, fkin: 0.2 });
+    // Carried (a note): the planar contact takes one mu per patch; cases 5 and 7 are conformal (D = 4).
     for c in &cases {
-        let named: Vec<WheelRailFeature> = c.unsupported().iter().map(|u| u.feature).collect();
-        assert!(named.contains(&WheelRailFeature::VaryingFriction), "case {}: {named:?}", c.number);
+        let used: Vec<(WheelRailFeature, bool)> = c.features().iter().map(|u| (u.feature, u.supported)).collect();
+        assert!(used.contains(&(WheelRailFeature::VaryingFriction, true)), "case {}: {used:?}", c.number);
+        let conformal = c.unsupported().iter().any(|u| u.feature == WheelRailFeature::ContactApproach);
+        assert_eq!(conformal, [5, 7].contains(&c.number), "case {}", c.number);
     }
     assert_eq!((cases[0].digits.s, cases[0].state.subsurface_points), (3, true));
 }
@@ -354,11 +357,25 @@ fn approximate_normal_problems_are_named_per_case() {
     let cases = deck("examples/mbench_a22_kpec.inp");
     let named: Vec<bool> = cases
         .iter()
-        .map(|c| c.unsupported().iter().any(|u| u.feature == WheelRailFeature::ApproximateNormalProblem))
+        .map(|c| c.features().iter().any(|u| u.feature == WheelRailFeature::ApproximateNormalProblem && u.supported))
         .collect();
     assert_eq!(named, [true, true, true, true, true, true, false, false, false]);
-    let message = cases[0].unsupported()[0].to_string();
-    assert!(message.starts_with("B = 5: approximate normal problems"), "{message}");
+    assert!(cases.iter().all(|c| c.unsupported().is_empty()));
+    let message = cases[0]
+        .features()
+        .iter()
+        .find(|u| u.feature == WheelRailFeature::ApproximateNormalProblem)
+        .unwrap()
+        .to_string();
+    assert!(message.starts_with("B = 5, M = 3: approximate normal problems (KPEC, ANALYN) with FASTSIM"), "{message}");
+    // Without FASTSIM (case 2 with M = 0) KPEC is refused.
+    let text = std::fs::read_to_string(dir().join("examples/mbench_a22_kpec.inp")).unwrap();
+    let elastic = wheelrail_deck::parse("kpec.inp", &text.replacen(" 0111302 ", " 0111002 ", 1)).unwrap();
+    let message = elastic[1].unsupported().iter().map(|u| u.to_string()).collect::<Vec<_>>().join("; ");
+    assert!(
+        message.starts_with("B = 5, M = 0: approximate normal problems (KPEC, ANALYN) without FASTSIM"),
+        "{message}"
+    );
 }
 
 #[test]

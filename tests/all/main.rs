@@ -59,3 +59,4 @@ mod traction_bound;
 mod wheelrail;
 mod wheelrail_mbench;
 mod wheelrail_profiles;
+mod wheelrail_variants;

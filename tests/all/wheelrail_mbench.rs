@@ -42,7 +42,7 @@ fn worst(devs: &[Deviation]) -> BTreeMap<&'static str, (f64, u64, usize, f64)> {
 /// follows from it; the flange contacts (right cases 12–21, contact angles to 66°) are a few
 /// digits off in the reference's x and the approach (≤ 5e-4 mm, ≤ 9e-5 mm): the undeformed
 /// distance there is CONTACT's mesh interpolation against this project's exact surfaces.
-const HALF_UNITS: &[(&str, f64)] = &[
+pub(crate) const HALF_UNITS: &[(&str, f64)] = &[
     ("fn_n", 1.5),
     ("fs_n", 1.5),
     ("fy_tr_n", 1.5),
@@ -71,7 +71,7 @@ const HALF_UNITS: &[(&str, f64)] = &[
 /// contacts' FX(WS) is 0.9 N off at 1792 N), MN within its
 /// printed digits or 12 N·mm (1.2e-3 FZ times a millimetre; right case 14, full slip on the
 /// flange at 66°, is 11.4 N·mm off).
-fn loose(d: &Deviation) -> Option<bool> {
+pub(crate) fn loose(d: &Deviation) -> Option<bool> {
     let within = |abs: f64| Some(d.half_units <= 1.5 || (d.ours - d.contact).abs() <= abs);
     match d.quantity {
         "fx_n" | "fx_tr_n" | "fx_ws_n" => within(1.0),

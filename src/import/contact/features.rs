@@ -6,7 +6,7 @@
 //! cannot say besides is in `scene::wheelrail::SCENE_LIMITS`, which gives the import's verdict.
 
 use super::deck::{Case3, Potcon};
-use super::wheelrail_deck::{FrictionVariation, ProfileFormat, ProfileSpec, WheelRailCase};
+use super::wheelrail_deck::{FrictionVariation, MaterialModel, ProfileFormat, ProfileSpec, WheelRailCase};
 use crate::physics::material::combine_bodies;
 
 /// One feature of a case.
@@ -361,6 +361,13 @@ impl std::fmt::Display for FeatureUse {
     }
 }
 
+/// M = 3 (CONTACT's FASTSIM) without slope reduction (K0_MF = ALFAMF = BETAMF = 1).
+pub fn plain_fastsim(c: &WheelRailCase) -> bool {
+    let model = c.state.material.as_ref().map(|m| m.model);
+    c.digits.m == 3
+        && matches!(model, Some(MaterialModel::SlopeReduction { k0_mf, alfamf, betamf }) if [k0_mf, alfamf, betamf] == [1.0; 3])
+}
+
 fn wr_digit(name: &str, v: u8, used: bool) -> Option<String> {
     used.then(|| format!("{name} = {v}"))
 }
@@ -394,11 +401,21 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
     },
     WheelRailRow {
         feature: WheelRailFeature::ApproximateNormalProblem,
-        name: "approximate normal problems (KPEC, ANALYN)",
-        control: "B",
+        name: "approximate normal problems (KPEC, ANALYN) with FASTSIM",
+        control: "B, M",
+        supported: true,
+        reason: "imported as solvers = [\"kpec\"] (B = 5) or [\"analyn\"] (B = 6) with M = 3 (FASTSIM, no slope reduction): each patch's pressure from the approximation on the exact theory's patch at its FN (docs/wheelrail.md)",
+        used: |c| (matches!(c.digits.b, 5 | 6) && plain_fastsim(c)).then(|| format!("B = {}, M = 3", c.digits.b)),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::ApproximateNormalProblem,
+        name: "approximate normal problems (KPEC, ANALYN) without FASTSIM",
+        control: "B, M",
         supported: false,
-        reason: "supported: B = 0 (the full elastic normal problem)",
-        used: |c| wr_digit("B", c.digits.b, matches!(c.digits.b, 5 | 6)),
+        reason: "supported: B = 5, 6 with M = 3 (FASTSIM, K0_MF = ALFAMF = BETAMF = 1), B = 0",
+        used: |c| {
+            (matches!(c.digits.b, 5 | 6) && !plain_fastsim(c)).then(|| format!("B = {}, M = {}", c.digits.b, c.digits.m))
+        },
     },
     WheelRailRow {
         feature: WheelRailFeature::PrescribedVerticalForce,
@@ -428,8 +445,8 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         feature: WheelRailFeature::VaryingFriction,
         name: "friction varying across the rail (contact angle) or along the track",
         control: "V, NVF, ALPHA/SVF",
-        supported: false,
-        reason: "supported: V = 0 (one friction for the whole rail); module 3's friction per grid row (V = 3) is not module 1's per contact angle",
+        supported: true,
+        reason: "carried as [wheelrail] mu_by = \"contact_angle\" (V = 1: each patch's mu at its contact angle on the wheel) or \"track_s\" (V = 2: mu at S_WS), mu_at, mu_values = FSTAT, as CONTACT's planar contact takes them (one mu per patch); the conformal approach's mu per grid row (D = 4) is refused with D",
         used: |c| {
             let f = c.state.friction.as_ref()?;
             (f.variation != FrictionVariation::Uniform).then(|| format!("V = {} with NVF = {}", c.digits.v, f.sets.len()))
@@ -475,8 +492,16 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "material models other than elastic",
         control: "M",
         supported: false,
-        reason: "supported: M = 0 (elastic half-spaces); viscoelastic (1), CONTACT's simplified theories (2, 3, 5-7) and interface layers (4) are not",
-        used: |c| wr_digit("M", c.digits.m, c.digits.m != 0),
+        reason: "supported: M = 0 (elastic half-spaces), M = 3 without slope reduction (FASTSIM); viscoelastic (1), CONTACT's other simplified theories (2, 5-7), the modified FASTSIM's slope reduction and interface layers (4) are not",
+        used: |c| wr_digit("M", c.digits.m, c.digits.m != 0 && !plain_fastsim(c)),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::MaterialModel,
+        name: "FASTSIM for the tangential problem",
+        control: "M, K0_MF, ALFAMF, BETAMF",
+        supported: true,
+        reason: "imported as solvers = [\"fastsim\"] (B = 0), [\"kpec\"] (B = 5) or [\"analyn\"] (B = 6): Kalker's FASTSIM with his three flexibilities of the contact's equivalent ellipse",
+        used: |c| plain_fastsim(c).then(|| "M = 3, K0_MF = ALFAMF = BETAMF = 1".to_string()),
     },
     WheelRailRow {
         feature: WheelRailFeature::DissimilarMaterials,

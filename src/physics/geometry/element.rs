@@ -149,15 +149,7 @@ impl ContactGeometry for ElementGeometry {
     /// not apply); each row's leading edge is the upstream face of its first loaded element.
     fn planform(&self, grid: &Grid, fn_n: f64, _shape: PressureShape) -> Planform {
         let c = self.contact_or_empty(fn_n);
-        let (mut leading_edge, mut half_length) = (vec![0.0; grid.my], vec![0.0; grid.my]);
-        for j in 0..grid.my {
-            let row = &c.pn_mpa[grid.index(0, j)..grid.index(0, j) + grid.mx];
-            if let (Some(first), Some(last)) = (row.iter().position(|&p| p > 0.0), row.iter().rposition(|&p| p > 0.0)) {
-                leading_edge[j] = grid.x_mm[first] - 0.5 * grid.dx_mm;
-                half_length[j] = 0.5 * (grid.x_mm[last] - grid.x_mm[first] + grid.dx_mm);
-            }
-        }
-        Planform::new(c.ellipse, c.pn_mpa.clone(), leading_edge, half_length)
+        Planform::of_pressure(grid, c.ellipse, c.pn_mpa.clone())
     }
 
     fn edge_load_share(&self, fn_n: f64) -> f64 {

@@ -185,6 +185,20 @@ impl Planform {
         }
     }
 
+    /// The planform of a pressure given per element (grid order): each row's leading edge the
+    /// upstream face of its first loaded element, its half-length over its loaded span.
+    pub fn of_pressure(grid: &Grid, ellipse: HertzContact, pressure_mpa: Vec<f64>) -> Self {
+        let (mut leading_edge, mut half_length) = (vec![0.0; grid.my], vec![0.0; grid.my]);
+        for j in 0..grid.my {
+            let row = &pressure_mpa[grid.index(0, j)..grid.index(0, j) + grid.mx];
+            if let (Some(first), Some(last)) = (row.iter().position(|&p| p > 0.0), row.iter().rposition(|&p| p > 0.0)) {
+                leading_edge[j] = grid.x_mm[first] - 0.5 * grid.dx_mm;
+                half_length[j] = 0.5 * (grid.x_mm[last] - grid.x_mm[first] + grid.dx_mm);
+            }
+        }
+        Planform::new(ellipse, pressure_mpa, leading_edge, half_length)
+    }
+
     /// Traction coefficients `(Σ τx / Σ p, Σ τy / Σ p)` from the traction sums (thesis Eq. 3.12).
     pub fn coefficients(&self, sum_tx: f64, sum_ty: f64) -> (f64, f64) {
         if self.pressure_sum_mpa <= 0.0 {

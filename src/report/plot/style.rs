@@ -36,6 +36,10 @@ pub enum Marker {
     Plus,
     Cross,
     Star,
+    /// The two added with KPEC and ANALYN (outside [`Marker::ALL`], which the leftover styles of
+    /// other models draw from).
+    TriangleLeft,
+    TriangleRight,
 }
 
 impl Marker {
@@ -61,6 +65,8 @@ impl Marker {
             Marker::Plus => "plus",
             Marker::Cross => "cross",
             Marker::Star => "star",
+            Marker::TriangleLeft => "triangle-left",
+            Marker::TriangleRight => "triangle-right",
         }
     }
 }
@@ -87,8 +93,12 @@ const fn style(color: usize, dash: Dash, marker: Marker) -> Style {
     Style { color: PALETTE[color], dash, marker, filled: true }
 }
 
+/// Two colours beyond the muted scheme for KPEC and ANALYN, from Tol's "light" scheme (orange,
+/// light blue); the leftover styles keep to [`PALETTE`].
+const EXTRA: [&str; 2] = ["#EE8866", "#77AADD"];
+
 /// The built-in models (`crate::solvers::builtin_names`), each its own colour, dash and marker.
-const BUILTIN: [(&str, Style); 8] = [
+const BUILTIN: [(&str, Style); 10] = [
     ("contact", style(0, Dash::Solid, Marker::Circle)),
     ("uba", style(1, Dash::Solid, Marker::Square)),
     ("fastsim", style(2, Dash::Dashed, Marker::TriangleUp)),
@@ -97,6 +107,8 @@ const BUILTIN: [(&str, Style); 8] = [
     ("polach", style(5, Dash::DashDot, Marker::Plus)),
     ("fastrip", style(6, Dash::LongDash, Marker::Cross)),
     ("relaxation", style(7, Dash::LongDash, Marker::Star)),
+    ("kpec", Style { color: EXTRA[0], dash: Dash::Dashed, marker: Marker::TriangleLeft, filled: true }),
+    ("analyn", Style { color: EXTRA[1], dash: Dash::DashDot, marker: Marker::TriangleRight, filled: true }),
 ];
 
 /// Reference sets by label: CONTACT filled circles, the thesis open squares.

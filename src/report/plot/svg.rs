@@ -95,6 +95,8 @@ impl Svg {
             Marker::Square => poly(&[(-0.85, -0.85), (0.85, -0.85), (0.85, 0.85), (-0.85, 0.85)]),
             Marker::TriangleUp => poly(&[(0.0, -1.15), (1.0, 0.6), (-1.0, 0.6)]),
             Marker::TriangleDown => poly(&[(0.0, 1.15), (1.0, -0.6), (-1.0, -0.6)]),
+            Marker::TriangleLeft => poly(&[(-1.15, 0.0), (0.6, -1.0), (0.6, 1.0)]),
+            Marker::TriangleRight => poly(&[(1.15, 0.0), (-0.6, -1.0), (-0.6, 1.0)]),
             Marker::Diamond => poly(&[(0.0, -1.2), (1.0, 0.0), (0.0, 1.2), (-1.0, 0.0)]),
             Marker::Star => poly(&star()),
             Marker::Plus => path(format!(

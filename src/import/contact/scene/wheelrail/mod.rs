@@ -16,12 +16,14 @@ pub use paths::ProfilePaths;
 
 use super::super::deck::{Case, CaseKind};
 use super::super::wheelrail_deck::{
-    Along, Forward, PitchInput, RailPlacement, Side, TrackFourth, Vertical, WheelRailCase,
+    Along, Forward, Friction, FrictionVariation, PitchInput, RailPlacement, Side, TrackFourth, Vertical, WheelRailCase,
 };
 use super::super::CaseStatus;
 use super::{scene_name, SceneFiles};
 use crate::physics::material::combine_bodies;
-use crate::scene::wheelrail::{CaseRow, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene};
+use crate::scene::wheelrail::{
+    CaseRow, MuBy, MuVariation, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
+};
 use crate::scene::{MaterialSpec, Origin};
 use std::path::PathBuf;
 
@@ -122,12 +124,17 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
     let wheelset = s.wheelset.ok_or(never("FBDIST, FBPOS, NOMRAD"))?;
     let material = s.material.as_ref().ok_or(never("POISS, GG"))?;
     let disc = s.discretisation.as_ref().ok_or(never("DX, DS"))?;
-    let friction = s.friction.as_ref().and_then(|f| f.sets.first()).ok_or(never("the friction"))?;
+    let friction = s.friction.as_ref().filter(|f| !f.sets.is_empty()).ok_or(never("the friction"))?;
+    let s_ws = match s.position.map(|p| p.along) {
+        Some(Along::SMm(s)) => s,
+        _ => 0.0,
+    };
+    let (mu, mu_variation) = mu_of(friction, s_ws);
     let m = combine_bodies(material.poiss, material.gg_mpa);
     let (vertical, row) = row(c)?;
     Ok(WheelRailScene {
         name: String::new(),
-        solvers: vec!["contact".into()],
+        solvers: vec![model_of(c).into()],
         side: if c.digits.side() == Side::Left { SideSpec::Left } else { SideSpec::Right },
         rail: profile(rail, paths)?,
         wheel: profile(wheel, paths)?,
@@ -146,7 +153,8 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         flange_back_distance_mm: wheelset.fbdist_mm,
         flange_back_position_mm: wheelset.fbpos_mm,
         nominal_radius_mm: wheelset.nomrad_mm,
-        mu: friction.values.fstat(),
+        mu,
+        mu_variation,
         material: MaterialSpec { g_mpa: Some(m.g_mpa), e_mpa: None, poisson: m.poisson },
         dx_mm: disc.dx_mm,
         ds_mm: disc.ds_mm,
@@ -158,6 +166,37 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         origin: None,
         dir: PathBuf::new(),
     })
+}
+
+/// The model of the case's B and M digits: KPEC (B = 5) or ANALYN (B = 6) with FASTSIM, FASTSIM
+/// on the full normal problem (M = 3), else the exact theory.
+fn model_of(c: &WheelRailCase) -> &'static str {
+    match (c.digits.b, super::super::features::plain_fastsim(c)) {
+        (5, true) => "kpec",
+        (6, true) => "analyn",
+        (_, true) => "fastsim",
+        _ => "contact",
+    }
+}
+
+/// Coulomb's mu (FSTAT) of the case, and its variation across the rail (V = 1, at ALPHA) or along
+/// the track (V = 2, at SVF, the case at S_WS) where it has one.
+fn mu_of(f: &Friction, s_ws_mm: f64) -> (f64, Option<MuVariation>) {
+    let by = match f.variation {
+        FrictionVariation::Uniform => return (f.sets[0].values.fstat(), None),
+        FrictionVariation::AcrossRail => MuBy::ContactAngle,
+        FrictionVariation::AlongTrack => MuBy::TrackS { s_mm: s_ws_mm },
+    };
+    let v = MuVariation {
+        by,
+        at: f.sets.iter().map(|s| s.at.unwrap_or(0.0)).collect(),
+        values: f.sets.iter().map(|s| s.values.fstat()).collect(),
+    };
+    let mu = match by {
+        MuBy::ContactAngle => v.values[0],
+        MuBy::TrackS { s_mm } => v.at(s_mm),
+    };
+    (mu, Some(v))
 }
 
 /// A profile as the scene takes it: the path from the scene's folder, MIRRORY = 1 as mirror_y.

@@ -6,7 +6,7 @@
 use super::super::read_back::tempdir_for;
 use crate::error::InputError;
 use crate::scene::wheelrail::{
-    case_columns, CaseRow, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
+    case_columns, CaseRow, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
 };
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
@@ -36,15 +36,15 @@ type Pairs = Vec<(&'static str, Value)>;
 fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static str>, Pairs)>, InputError> {
     let solvers = Value::Array(s.solvers.iter().map(|m| Value::String(m.clone())).collect());
     let side = if s.side == SideSpec::Left { "left" } else { "right" };
-    let wheelrail = vec![
-        ("side", Value::String(side.into())),
-        ("mu", Value::Float(s.mu)),
+    let mut wheelrail = vec![("side", Value::String(side.into()))];
+    wheelrail.extend(friction(s));
+    wheelrail.extend([
         ("dx_mm", Value::Float(s.dx_mm)),
         ("ds_mm", Value::Float(s.ds_mm)),
         ("a_sep_rad", Value::Float(s.a_sep_rad)),
         ("d_sep_mm", Value::Float(s.d_sep_mm)),
         ("d_comb_mm", Value::Float(s.d_comb_mm)),
-    ];
+    ]);
     let mut rail = profile(&s.rail, &s.name)?;
     match s.placement {
         PlacementSpec::Gauge { height_mm, width_mm } => {
@@ -76,6 +76,21 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
         out.push((Some("origin"), vec![("file", Value::String(o.file.clone())), ("cases", numbers)]));
     }
     Ok(out)
+}
+
+/// `mu`, or `mu_by`, `mu_at`, `mu_values` (and `s_mm`) of a variation.
+fn friction(s: &WheelRailScene) -> Pairs {
+    let Some(v) = &s.mu_variation else { return vec![("mu", Value::Float(s.mu))] };
+    let floats = |x: &[f64]| Value::Array(x.iter().map(|&f| Value::Float(f)).collect());
+    let by = match v.by {
+        MuBy::ContactAngle => "contact_angle",
+        MuBy::TrackS { .. } => "track_s",
+    };
+    let mut out = vec![("mu_by", Value::String(by.into())), ("mu_at", floats(&v.at)), ("mu_values", floats(&v.values))];
+    if let MuBy::TrackS { s_mm } = v.by {
+        out.push(("s_mm", Value::Float(s_mm)));
+    }
+    out
 }
 
 /// A profile's keys: its path (as the scene holds it), mirror_y, scale, smooth.

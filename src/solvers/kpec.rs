@@ -1,0 +1,92 @@
+//! KPEC and ANALYN with FASTSIM (CONTACT's B = 5, 6 with M = 3): the pressure from an
+//! approximate normal problem on the scene's undeformed distance ([`crate::physics::approximate`]:
+//! Kik–Piotrowski with CONTACT's ellipse correction, or ANALYN) at the approach that carries the
+//! row's FN, the tangential problem by Kalker's FASTSIM on that pressure, its flexibilities from
+//! the equivalent ellipse of the approximate contact (Kik & Piotrowski: its area and
+//! length-to-width ratio kept).
+
+use super::fastsim;
+use super::{linear_in_elements, ModelDef, SolveError};
+use crate::error::InputError;
+use crate::physics::approximate::{self, Method};
+use crate::physics::geometry::element::equivalent_ellipse;
+use crate::physics::{HertzContact, Planform};
+use crate::problem::{LocalContact, Problem};
+
+/// KPEC with FASTSIM.
+pub const KPEC: ModelDef = ModelDef {
+    name: "kpec",
+    summary: "KPEC (Kik–Piotrowski's virtual interpenetration with CONTACT's ellipse correction, B = 5) for the pressure, FASTSIM on it",
+    check: check::<KPEC_METHOD>,
+    build: |p| fastsim::with_contact(p, contact::<KPEC_METHOD>),
+    ..MODEL
+};
+
+/// ANALYN with FASTSIM.
+pub const ANALYN: ModelDef = ModelDef {
+    name: "analyn",
+    summary: "ANALYN (Sichani, Enblom & Berg, VSD 52(12) 2014; CONTACT's B = 6) for the pressure, FASTSIM on it",
+    check: check::<ANALYN_METHOD>,
+    build: |p| fastsim::with_contact(p, contact::<ANALYN_METHOD>),
+    ..MODEL
+};
+
+const KPEC_METHOD: u8 = 0;
+const ANALYN_METHOD: u8 = 1;
+
+/// What the two share.
+const MODEL: ModelDef = ModelDef {
+    name: "",
+    summary: "",
+    extra_columns: &["n_adhesion", "n_slip"],
+    iterative: false,
+    prescribed_forces: false,
+    shifts: false,
+    normal_rows: false,
+    check: check::<KPEC_METHOD>,
+    cost_per_row: linear_in_elements,
+    params: None,
+    build: |p| fastsim::with_contact(p, contact::<KPEC_METHOD>),
+};
+
+fn method<const M: u8>() -> Method {
+    if M == KPEC_METHOD {
+        Method::Kpec
+    } else {
+        Method::Analyn
+    }
+}
+
+/// The approximate contact at `fn_n` as FASTSIM's contact.
+fn contact<const M: u8>(p: &Problem, fn_n: f64) -> Result<LocalContact, SolveError> {
+    let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
+    let c = approximate::at_load(method::<M>(), &p.grid, &h, fn_n, &p.material)?;
+    let ellipse = equivalent_ellipse(&p.grid, &c.pn_mpa, fn_n).unwrap_or(HertzContact { fn_n, ..p.hertz() });
+    Ok(p.local_contact_of(Planform::of_pressure(&p.grid, ellipse, c.pn_mpa)))
+}
+
+/// A contact given per element whose normal problem the approximation solves at every load of
+/// the scene; a Hertzian ellipse is refused (its pressure is Hertz's: run fastsim).
+fn check<const M: u8>(p: &Problem) -> Result<(), InputError> {
+    if p.geometry.elliptic() {
+        return Err(InputError::new(
+            "geometry.kind",
+            format!("{:?} with {:?}", p.geometry.kind(), method::<M>()),
+            "a contact given per element ([geometry] kind = \"field\" or \"profile\", or a wheel–rail patch) for kpec and analyn: on Hertz's ellipse their pressure is Hertz's (run fastsim)",
+        ));
+    }
+    let mut loads: Vec<f64> = p.loading.rows().map(|s| s.fn_n).collect();
+    loads.sort_by(f64::total_cmp);
+    loads.dedup();
+    for fn_n in loads {
+        let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
+        approximate::at_load(method::<M>(), &p.grid, &h, fn_n, &p.material).map_err(|e| {
+            InputError::new(
+                "contact.fn_n",
+                fn_n,
+                format!("a load the approximate normal problem carries on this grid ({e})"),
+            )
+        })?;
+    }
+    Ok(())
+}

@@ -1,0 +1,171 @@
+//! Issue 44 items 4 and 6 against CONTACT's printed results at their printed precision
+//! (reference/contact_wheelrail/examples/): the Manchester benchmark's variants with friction
+//! varying across the rail or along the track (mbench_a22_varfric: V = 1, 2) and with KPEC and
+//! ANALYN (mbench_a22_kpec: B = 5, 6 with FASTSIM), each deck imported with `creepbench import
+//! contact` and its scenes run through the wheel–rail pipeline.
+
+use crate::common::{self, root};
+use crate::wheelrail_mbench::{loose, HALF_UNITS};
+use creepbench::comparison::references::contact_output::wheelrail::read;
+use creepbench::comparison::references::contact_wheelrail::{compare_case, Deviation};
+use creepbench::pipeline::wheelrail::CaseResult;
+use creepbench::pipeline::wheelrail_scene::run_scene;
+use creepbench::scene::wheelrail::WheelRailScene;
+use std::collections::BTreeMap;
+use std::path::PathBuf;
+use std::process::Command;
+
+/// Import `deck` (a file of reference/contact_wheelrail/examples/); the scenes written and the
+/// command's standard error (its per-case verdicts).
+fn import(deck: &str) -> (Vec<PathBuf>, String) {
+    let out = common::tempdir(&format!("variants_{deck}"));
+    let path = root().join("reference/contact_wheelrail/examples").join(format!("{deck}.inp"));
+    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .args(["import", "contact", path.to_str().unwrap(), "--out", out.to_str().unwrap(), "--supported-only"])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let scenes = String::from_utf8_lossy(&o.stdout).lines().map(PathBuf::from).collect();
+    (scenes, String::from_utf8_lossy(&o.stderr).into_owned())
+}
+
+/// Every imported case of `deck` run with its scene's model: (case, model, result), and the
+/// import's verdicts.
+fn runs(deck: &str) -> (Vec<(u64, String, CaseResult)>, String) {
+    let (scenes, verdicts) = import(deck);
+    let mut out = Vec::new();
+    for path in scenes.iter().filter(|p| p.extension().is_some_and(|e| e == "toml")) {
+        let scene = WheelRailScene::from_file(path).unwrap();
+        let run = run_scene(&scene).unwrap();
+        out.extend(run.cases.into_iter().map(|(c, r)| (c, scene.solvers[0].clone(), r)));
+    }
+    out.sort_by_key(|(c, _, _)| *c);
+    (out, verdicts)
+}
+
+/// Every imported case of `deck` against the printed results: deviations, cases, verdicts.
+fn deviations(deck: &str) -> (Vec<Deviation>, Vec<u64>, String) {
+    let (runs, verdicts) = runs(deck);
+    let reference = read(&root().join(format!("reference/contact_wheelrail/examples/{deck}.ref_out"))).unwrap();
+    let devs = runs
+        .iter()
+        .flat_map(|(case, _, result)| {
+            compare_case(*case, result, 0, reference.iter().find(|r| u64::from(r.case) == *case).unwrap())
+        })
+        .collect();
+    (devs, runs.iter().map(|(c, _, _)| *c).collect(), verdicts)
+}
+
+/// The largest deviation per quantity [half-units] with its case.
+fn worst(devs: &[Deviation]) -> BTreeMap<&'static str, (f64, u64)> {
+    let mut w: BTreeMap<&'static str, (f64, u64)> = BTreeMap::new();
+    for d in devs {
+        let e = w.entry(d.quantity).or_insert((0.0, 0));
+        if d.half_units > e.0 {
+            *e = (d.half_units, d.contact_case);
+        }
+    }
+    for (q, (h, c)) in &w {
+        println!("{q:>12}: {h:10.2} half-units (case {c})");
+    }
+    w
+}
+
+/// Whether `d` is within the Manchester benchmark's tolerances (tests/all/wheelrail_mbench.rs:
+/// CONTACT's printed digits but for the reference's y and what follows from it).
+fn within_mbench(d: &Deviation) -> bool {
+    within(d, HALF_UNITS)
+}
+
+/// Whether `d` is within `limits` [half-units] (1 where a quantity has none), FX and MN as the
+/// benchmark takes them.
+fn within(d: &Deviation, limits: &[(&str, f64)]) -> bool {
+    loose(d).unwrap_or_else(|| d.half_units <= limits.iter().find(|(q, _)| *q == d.quantity).map_or(1.0, |(_, l)| *l))
+}
+
+/// The benchmark's tolerances but where case 6 (V = 2: case 1's y = 0 contact at μ = 0.26)
+/// measures more: its height, found with the tangential forces' vertical part at μ = 0.26, moves
+/// CKSI by 6.1 half-units (3e-8) and FY by 1.58 (0.008 N).
+fn varfric_limits() -> Vec<(&'static str, f64)> {
+    let wider = [("cksi", 6.2), ("fy_tr_n", 1.6), ("fy_ws_n", 1.6)];
+    let of = |q: &'static str, l: f64| wider.iter().find(|(w, _)| *w == q).map_or((q, l), |&w| w);
+    HALF_UNITS.iter().map(|&(q, l)| of(q, l)).collect()
+}
+
+/// Case 3 (y = 5 mm, yaw 12 mrad) has two patches 6 mm apart whose reference angles CONTACT turns
+/// towards each other (D_TURN, not modelled): its patch 1 at −0.1326 rad against CONTACT's
+/// −0.2480, so μ 0.3 where CONTACT takes 0.2581 there; FS of patch 1 −464.7 N against −396.3 N.
+const TURNED: u64 = 3;
+
+/// V = 1 (μ at each patch's contact angle on the wheel: ALPHA −20°, −10° with μ 0.2, 0.3) and
+/// V = 2 (μ at S_WS = 60 mm between SVF 0, 100 mm with μ 0.2, 0.3): every imported case but the
+/// turned one within the Manchester benchmark's tolerances; the conformal cases 5 and 7 (D = 4)
+/// refused, named with it.
+#[test]
+fn friction_varying_across_the_rail_and_along_the_track_against_contact() {
+    let (devs, cases, verdicts) = deviations("mbench_a22_varfric");
+    assert_eq!(cases, [1, 2, 3, 4, 6]);
+    for case in [5, 7] {
+        assert!(verdicts.contains(&format!("skipped case {case} ")), "{verdicts}");
+    }
+    assert_eq!(verdicts.matches("D (in force) = 4: contact approaches other than the planar one").count(), 2);
+    let kept: Vec<Deviation> = devs.into_iter().filter(|d| d.contact_case != TURNED || d.patch == 0).collect();
+    worst(&kept);
+    let limits = varfric_limits();
+    let failures: Vec<String> =
+        kept.iter().filter(|d| d.contact_case != TURNED && !within(d, &limits)).map(|d| format!("{d:?}")).collect();
+    assert!(failures.is_empty(), "{} deviations beyond the tolerances:\n{}", failures.len(), failures.join("\n"));
+}
+
+/// The KPEC deck: cases 1–3 KPEC, 4–6 ANALYN (both with FASTSIM), 7–9 the exact theory, each at
+/// y = 0, 0.5, 5 mm. The imported scenes name `kpec`, `analyn` and `contact`; the exact cases 7
+/// and 8 are within the Manchester benchmark's tolerances (9 is the benchmark's right case 11,
+/// two regions blended by CONTACT, see tests/all/wheelrail_mbench.rs). KPEC and ANALYN solve the
+/// exact solver's patch (docs/wheelrail.md, "Models"): the same reference, creepages and FN as
+/// cases 7–9, where CONTACT balances FZ with their own normal forces; their forces against
+/// CONTACT's are measured and bounded here.
+#[test]
+fn kpec_and_analyn_against_contact() {
+    let (runs, _) = runs("mbench_a22_kpec");
+    let models: Vec<(u64, &str)> = runs.iter().map(|(c, m, _)| (*c, m.as_str())).collect();
+    let names = ["kpec", "kpec", "kpec", "analyn", "analyn", "analyn", "contact", "contact", "contact"];
+    assert_eq!(models, (1..=9).zip(names).collect::<Vec<_>>());
+    let reference = read(&root().join("reference/contact_wheelrail/examples/mbench_a22_kpec.ref_out")).unwrap();
+    let devs = |case: u64| {
+        let (_, _, r) = &runs[case as usize - 1];
+        compare_case(case, r, 0, reference.iter().find(|t| u64::from(t.case) == case).unwrap())
+    };
+    let exact: Vec<Deviation> = [7, 8].into_iter().flat_map(devs).collect();
+    worst(&exact);
+    let failures: Vec<String> = exact.iter().filter(|d| !within_mbench(d)).map(|d| format!("{d:?}")).collect();
+    assert!(failures.is_empty(), "exact cases: {}", failures.join("\n"));
+    for k in 0..6 {
+        let (ours, exact_case) = (&runs[k].2, &runs[6 + k % 3].2);
+        assert_eq!(ours.normal, exact_case.normal, "case {}: the exact solver's patch", k + 1);
+    }
+    let approximate: Vec<Deviation> = (1..=6).flat_map(devs).collect();
+    println!("KPEC and ANALYN against CONTACT's:");
+    for d in approximate
+        .iter()
+        .filter(|d| ["fx_tr_n", "fy_tr_n", "fx_n", "fs_n", "mn_nmm", "nadh", "nslip"].contains(&d.quantity))
+    {
+        println!(
+            "case {} {:>8}: ours {:10.4} contact {:10.4} ({:+.2} %)",
+            d.contact_case,
+            d.quantity,
+            d.ours,
+            d.contact,
+            100.0 * (d.ours / d.contact - 1.0)
+        );
+    }
+    // Measured: FX within 0.92 % of FZ (92 N, case 6 at y = 5 mm in full slip), FS within 0.46 %
+    // (46 N, case 1 at y = 0, where CONTACT's KPEC creepage CKSI is −8.0e-5 against −5.7e-5 on the
+    // exact solver's patch): far beyond the printed digits (thousands of half-units).
+    let fz = 10_000.0;
+    let gap = |q: &str| {
+        approximate.iter().filter(|d| d.quantity == q).map(|d| (d.ours - d.contact).abs() / fz).fold(0.0, f64::max)
+    };
+    let (fx, fs) = (gap("fx_n"), gap("fs_n"));
+    println!("largest |dFX|/FZ {fx:.4}, |dFS|/FZ {fs:.4}");
+    assert!(fx <= 0.0095 && fs <= 0.0055, "FX {fx}, FS {fs} of FZ");
+}
