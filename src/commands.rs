@@ -6,16 +6,19 @@ use crate::calibration::section as calibration;
 use crate::comparison::compare::{self, Against, Finding};
 use crate::comparison::console::{self, Verdict};
 use crate::comparison::owed;
+use crate::comparison::references::wheelrail_cases::{self, WheelRailCases};
 use crate::comparison::references::References;
 use crate::comparison::tolerance_file::{self, Loosening, Rule};
 use crate::comparison::tolerances;
 use crate::error::{Error, InputError};
 use crate::pipeline;
+use crate::pipeline::wheelrail_scene::SceneRun;
 use crate::report::table;
 use crate::report::{self, ReportInput};
 use crate::report::{ladder, registry, sections};
 use crate::safety::stdout::{errln, out, outln};
 use crate::safety::{folder, guard, lock};
+use crate::scene::wheelrail::WheelRailScene;
 use crate::suite::results::{self, StoredScene};
 use crate::suite::{self, Shard};
 use std::collections::BTreeMap;
@@ -151,6 +154,15 @@ fn load_references(reference: &Path) -> Result<References, Error> {
             Err(e) => Survey::Unread(e.to_string()),
         });
     }
+    // The module-1 decks: their module-1 cases only.
+    if let Some(wr) = refs.get_mut::<WheelRailCases>(wheelrail_cases::AGAINST) {
+        wr.attach_survey(|inp| match crate::import::contact::survey(inp) {
+            Ok(cases) => {
+                Survey::Cases(cases.into_iter().filter(|c| c.module == 1).map(|c| (c.case, c.refused)).collect())
+            }
+            Err(e) => Survey::Unread(e.to_string()),
+        });
+    }
     Ok(refs)
 }
 
@@ -175,20 +187,55 @@ impl Runner<'_> {
     }
 }
 
-/// Run a suite (or one shard) and return its results as stored scenes.
-fn run_suite(suite_dir: &[PathBuf], runner: Runner) -> Result<Vec<StoredScene>, Error> {
+/// A suite's results: its module-3 scenes as stored, its wheel–rail scenes with their runs.
+#[derive(Default)]
+struct SuiteRun {
+    scenes: Vec<StoredScene>,
+    wheelrail: Vec<(WheelRailScene, SceneRun)>,
+}
+
+/// Run a suite (or one shard): its module-3 scenes, then, `with_wheelrail`, its wheel–rail
+/// scenes (`bless` leaves them out: they are gated against CONTACT, never against golden/).
+fn run_suite(suite_dir: &[PathBuf], runner: Runner, with_wheelrail: bool) -> Result<SuiteRun, Error> {
     let Runner { shard, progress, in_process, timing_repeats } = runner;
     let files = suite::scene_files(suite_dir, shard)?;
     if files.is_empty() {
-        return empty_shard(suite_dir, shard).map(|()| Vec::new());
+        return empty_shard(suite_dir, shard).map(|()| SuiteRun::default());
     }
+    let (files, wheelrail) = suite::wheelrail::split(files)?;
     let start = Instant::now();
-    let results = suite::run_with(&files, progress, in_process)?;
-    errln!("ran {} scene(s) in {:.2} s", results.len(), start.elapsed().as_secs_f64());
-    let mut stored: Vec<StoredScene> = results.iter().map(StoredScene::from_result).collect();
-    retime(&results, &mut stored, timing_repeats)?;
-    Ok(stored)
+    let results = if files.is_empty() { Vec::new() } else { suite::run_with(&files, progress, in_process)? };
+    let wheelrail = if with_wheelrail {
+        let runs = suite::wheelrail::run_all(&wheelrail)?;
+        wheelrail.into_iter().zip(runs).collect()
+    } else {
+        if !wheelrail.is_empty() {
+            errln!("note: {} wheel-rail scene(s) left out: they are gated against CONTACT only", wheelrail.len());
+        }
+        Vec::new()
+    };
+    errln!("ran {} scene(s) in {:.2} s", results.len() + wheelrail.len(), start.elapsed().as_secs_f64());
+    let mut scenes: Vec<StoredScene> = results.iter().map(StoredScene::from_result).collect();
+    retime(&results, &mut scenes, timing_repeats)?;
+    Ok(SuiteRun { scenes, wheelrail })
 }
+
+/// The wheel–rail scenes' comparisons with CONTACT's printed module-1 results (the set
+/// "CONTACT wheel-rail", judged by the defaults as every reference set's).
+fn wheelrail_findings(refs: &References, runs: &[(WheelRailScene, SceneRun)]) -> Vec<Finding> {
+    let Some(set) = refs.get::<WheelRailCases>(wheelrail_cases::AGAINST) else { return Vec::new() };
+    runs.iter().flat_map(|(s, r)| set.compare_run(r, s.origin.as_ref(), tolerances::defaults())).collect()
+}
+
+/// Attach each wheel–rail run's worst comparison per case to the set (the report's list).
+fn attach_wheelrail(refs: &mut References, runs: &[(WheelRailScene, SceneRun)]) {
+    if let Some(set) = refs.get_mut::<WheelRailCases>(wheelrail_cases::AGAINST) {
+        for (s, r) in runs {
+            if let Some(o) = &s.origin {
+                set.attach_run(r, o, tolerances::defaults());
+            }
+        }
+    }
 
 /// The models of the scenes whose timings the report draws ([`report::timed::wants_isolated`])
 /// re-timed alone, one after another on this thread, `repeats` times each (none for 0).
@@ -344,14 +391,17 @@ pub fn run_with(
     if guard::same_place(results_dir, report_dir)? && shard.is_none() {
         refuse_taken(&names, &REPORT_SUBDIRS, results_dir, "--report")?;
     }
-    let refs = load_references(reference)?;
+    let mut refs = load_references(reference)?;
     // Fit files validated before any scene runs: a bad --fits writes nothing.
     let fit_specs = fits.map(load_fit_specs).transpose()?;
-    let scenes = run_suite(suite_dir, runner)?;
+    let SuiteRun { scenes, wheelrail } = run_suite(suite_dir, runner, true)?;
     std::fs::create_dir_all(results_dir).map_err(Error::io(results_dir))?;
     // Runs into one folder take turns rather than fail on each other's half-written scenes.
     let _lock = lock::lock_folder(results_dir, lock::DEFAULT_LOCK_WAIT)?;
     results::write_scenes(results_dir, &scenes, true)?;
+    for (_, run) in &wheelrail {
+        suite::wheelrail::write(results_dir, run)?;
+    }
     errln!("results in {}", results_dir.display());
     let mut ran: Vec<String> = scenes.iter().map(|s| s.name.clone()).collect();
     ran.sort();
@@ -379,8 +429,10 @@ pub fn run_with(
     let stored = ran.iter().map(|name| results::read_scene(results_dir, name)).collect::<Result<Vec<_>, _>>()?;
     let records = read_run_fits(results_dir, &fitted)?;
     let rules = file_rules(&[], suite_dir)?;
+    let wheelrail_found = wheelrail_findings(&refs, &wheelrail);
+    attach_wheelrail(&mut refs, &wheelrail);
     let (md, findings, loosened) =
-        report_with_findings(&stored, &refs, report_dir, (Some(golden), &rules), &records, Vec::new())?;
+        report_with_findings(&stored, &refs, report_dir, (Some(golden), &rules), &records, wheelrail_found)?;
     outcome.report = Some(md);
     outcome.findings = findings;
     outcome.loosened = loosened;
@@ -761,8 +813,9 @@ pub fn gate_with(
         return Err(InputError::new(key, dir.display(), what).into());
     }
     let baseline = (dir, kind);
-    let scenes = run_suite(suite_dir, runner)?;
+    let SuiteRun { scenes, wheelrail } = run_suite(suite_dir, runner, true)?;
     let mut all = compare::evaluate(&scenes, &refs, Some(baseline))?;
+    all.extend(wheelrail_findings(&refs, &wheelrail));
     let suites = suite_names(suite_dir);
     let expected = |name: &str, suite: &str| shard.is_none_or(|s| s.takes(name)) && suites.iter().any(|x| x == suite);
     all.extend(compare::missing_scenes(dir, &scenes, kind, expected)?);
@@ -772,7 +825,8 @@ pub fn gate_with(
         Some(s) => suite::scene_names(suite_dir)?.into_iter().filter(|n| !s.takes(n)).collect(),
         None => Vec::new(),
     };
-    let suite_of = suite_of(&scenes);
+    let mut suite_of = suite_of(&scenes);
+    suite_of.extend(wheelrail.iter().map(|(s, _)| (s.name.clone(), suite::wheelrail::suite_of(s))));
     let loosened = tolerance_file::apply(&rules, &mut all, &suite_of, |r| {
         other_shards.iter().any(|n| tolerance_file::glob(&r.scene, n))
     })?;
@@ -852,7 +906,7 @@ fn print_list(head: &str, lines: &[String]) {
 /// golden/). All or nothing: the new tree is built beside the old one — this run's scenes plus
 /// the blessed scenes of other suites and shards — and swapped in with one atomic exchange.
 pub fn bless(suite_dir: &[PathBuf], golden: &Path, shard: Option<Shard>, progress: bool) -> Result<(), Error> {
-    let scenes = run_suite(suite_dir, Runner::cli(shard, progress))?;
+    let SuiteRun { scenes, .. } = run_suite(suite_dir, Runner::cli(shard, progress), false)?;
     if scenes.is_empty() {
         // An empty shard (noted by `run_suite`): golden/ stays as it is.
         return Ok(());

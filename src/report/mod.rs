@@ -4,6 +4,7 @@
 
 mod contact_error;
 pub mod contact_public;
+pub mod contact_wheelrail;
 pub mod envelope;
 pub mod falling;
 mod gates;

@@ -4,6 +4,7 @@
 
 use crate::comparison::references::{References, ENVELOPE_SECTION, NONHERTZ_SECTION};
 use crate::report::contact_public;
+use crate::report::contact_wheelrail;
 use crate::report::envelope;
 use crate::report::falling;
 use crate::report::ladder;
@@ -25,7 +26,7 @@ pub struct SectionDef {
 }
 
 /// Every section, in the report's order.
-pub const SECTIONS: [SectionDef; 12] = [
+pub const SECTIONS: [SectionDef; 13] = [
     SectionDef {
         id: "thesis",
         applies: |s, _| sections::thesis_applies(s),
@@ -45,6 +46,11 @@ pub const SECTIONS: [SectionDef; 12] = [
     },
     SectionDef { id: falling::ID, applies: |s, _| falling::applies(s), render: falling::section },
     SectionDef { id: contact_public::ID, applies: |s, _| contact_public::applies(s), render: contact_public::section },
+    SectionDef {
+        id: contact_wheelrail::ID,
+        applies: |_, r| contact_wheelrail::applies(r),
+        render: contact_wheelrail::section,
+    },
     SectionDef { id: "work_precision", applies: |s, _| work_precision::applies(s), render: work_precision::section },
     SectionDef {
         id: "grid_convergence",

@@ -8,6 +8,7 @@ use crate::error::Error;
 use crate::pipeline::wheelrail::{CaseResult, PatchForces};
 use crate::pipeline::wheelrail_scene::SceneRun;
 use crate::safety::folder;
+use crate::scene::wheelrail::WheelRailScene;
 use crate::wheelrail::NormalPatch;
 use std::path::{Path, PathBuf};
 
@@ -107,4 +108,38 @@ pub fn files(run: &SceneRun) -> Vec<(String, Vec<u8>)> {
 /// Write the scene's result folder `dir/<name>` (replaced whole, as every result folder).
 pub fn write(dir: &Path, run: &SceneRun) -> Result<PathBuf, Error> {
     Ok(folder::write_result_folder(dir, &run.name, files(run))?)
+}
+
+/// The suite's scene files split into module-3 scenes and wheel–rail scenes (a `[wheelrail]`
+/// table), the latter read and their profiles and models checked: bad input stops the run before
+/// anything is computed.
+pub fn split(
+    files: Vec<crate::suite::SceneSource>,
+) -> Result<(Vec<crate::suite::SceneSource>, Vec<WheelRailScene>), Error> {
+    let (mut plain, mut wheelrail) = (Vec::new(), Vec::new());
+    for f in files {
+        // A file that does not parse, or is no wheel–rail scene, is the module-3 reader's.
+        let doc = crate::safety::read::read_text(&f.path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")
+            .ok()
+            .and_then(|t| t.parse::<toml::Table>().ok());
+        if f.study.is_some() || !doc.is_some_and(|d| crate::scene::wheelrail::is_wheelrail(&d)) {
+            plain.push(f);
+            continue;
+        }
+        if let Some(s) = crate::scene::wheelrail::read_if_wheelrail(&f.path)? {
+            crate::pipeline::wheelrail_scene::prepare(&s)?;
+            wheelrail.push(s);
+        }
+    }
+    Ok((plain, wheelrail))
+}
+
+/// Run the wheel–rail scenes one after the other (each runs its cases in parallel).
+pub fn run_all(scenes: &[WheelRailScene]) -> Result<Vec<SceneRun>, Error> {
+    scenes.iter().map(crate::pipeline::wheelrail_scene::run_scene).collect()
+}
+
+/// The suite folder a wheel–rail scene belongs to (its file's folder name).
+pub fn suite_of(scene: &WheelRailScene) -> String {
+    scene.dir.file_name().map_or_else(|| "-".into(), |n| n.to_string_lossy().to_string())
 }

@@ -111,6 +111,11 @@ fn every_default_rule_decides_a_comparison_of_the_shipped_suites_or_is_a_catch_a
         decided[i.unwrap_or_else(|| panic!("no default rule for {f:?}"))] += 1;
     }
     for (r, n) in rules.iter().zip(&decided) {
+        // The wheel–rail gate's rules judge wheel–rail runs, which golden/ never holds: the test
+        // wheelrail_mbench checks that each decides a comparison of scenes/wheelrail.
+        if r.against == creepbench::comparison::references::wheelrail_cases::AGAINST {
+            continue;
+        }
         println!("{:>6} comparisons: {} {:?} {} {} {}", n, r.origin, r.against.label(), r.scene, r.solver, r.quantity);
         assert!(*n > 0 || r.is_catch_all(), "{} decides nothing on the shipped suites: {r:?}", r.origin);
     }

@@ -5,7 +5,6 @@
 //! contact` and its scenes run through the wheel–rail pipeline.
 
 use crate::common::{self, root};
-use crate::wheelrail_mbench::{loose, HALF_UNITS};
 use creepbench::comparison::references::contact_output::wheelrail::read;
 use creepbench::comparison::references::contact_wheelrail::{compare_case, Deviation};
 use creepbench::pipeline::wheelrail::CaseResult;
@@ -14,6 +13,51 @@ use creepbench::scene::wheelrail::WheelRailScene;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::process::Command;
+
+/// The Manchester benchmark's tolerances (the gate's rules "CONTACT wheel-rail" of
+/// tolerances.toml state the same for mbench_a22_left and _right). Largest deviation allowed per quantity, in half-units of CONTACT's printing (1 = its printed
+/// digits reproduced), set to what is measured: the tread contacts (left, and right cases 1–10)
+/// are at the printed digits but for the reference's y (≤ 0.7 µm, printed to 0.1 µm) and what
+/// follows from it; the flange contacts (right cases 12–21, contact angles to 66°) are a few
+/// digits off in the reference's x and the approach (≤ 5e-4 mm, ≤ 9e-5 mm): the undeformed
+/// distance there is CONTACT's mesh interpolation against this project's exact surfaces.
+const HALF_UNITS: &[(&str, f64)] = &[
+    ("fn_n", 1.5),
+    ("fs_n", 1.5),
+    ("fy_tr_n", 1.5),
+    ("fy_ws_n", 1.5),
+    ("fz_tr_n", 1.5),
+    ("fz_ws_n", 1.5),
+    ("deltcp_rad", 1.5),
+    ("ceta", 1.5),
+    ("cphi_per_mm", 2.0),
+    ("npot", 0.0),
+    ("nadh", 0.0),
+    // Two elements on the contact's edge (1 % of the smallest patch).
+    ("ncon", 4.0),
+    ("nslip", 4.0),
+    ("zcp_tr_mm", 3.0),
+    ("zcp_r_mm", 3.0),
+    ("xcp_tr_mm", 10.0),
+    ("ycp_tr_mm", 14.0),
+    ("ycp_r_mm", 14.0),
+    ("pen_mm", 18.0),
+    ("cksi", 6.0),
+];
+
+/// FX and MN are differences of large opposite tractions: where they are small the printed
+/// digits are not a fair scale. FX within its printed digits or 1 N (1e-4 FZ; the flange
+/// contacts' FX(WS) is 0.9 N off at 1792 N), MN within its
+/// printed digits or 12 N·mm (1.2e-3 FZ times a millimetre; right case 14, full slip on the
+/// flange at 66°, is 11.4 N·mm off).
+fn loose(d: &Deviation) -> Option<bool> {
+    let within = |abs: f64| Some(d.half_units <= 1.5 || (d.ours - d.contact).abs() <= abs);
+    match d.quantity {
+        "fx_n" | "fx_tr_n" | "fx_ws_n" => within(1.0),
+        "mn_nmm" => within(12.0),
+        _ => None,
+    }
+}
 
 /// Import `deck` (a file of reference/contact_wheelrail/examples/); the scenes written and the
 /// command's standard error (its per-case verdicts).

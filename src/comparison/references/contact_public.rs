@@ -121,7 +121,7 @@ impl PublicCases {
     /// Read every `.ref_out` under `dir/contact_public` (recursively), keyed by its deck's name.
     pub fn load(dir: &Path) -> Result<PublicCases, Error> {
         let mut files = Vec::new();
-        collect(&dir.join(FOLDER), &mut files)?;
+        collect_files(&dir.join(FOLDER), &mut files)?;
         let mut out = PublicCases::default();
         for path in files {
             let Some(stem) = path.file_stem().and_then(|s| s.to_str()) else { continue };
@@ -200,14 +200,14 @@ impl PublicCases {
 }
 
 /// Every `.ref_out` under `dir`, sorted.
-fn collect(dir: &Path, out: &mut Vec<std::path::PathBuf>) -> Result<(), Error> {
+pub(super) fn collect_files(dir: &Path, out: &mut Vec<std::path::PathBuf>) -> Result<(), Error> {
     let io = |e: std::io::Error| Error::Io { path: dir.to_path_buf(), source: e };
     let mut entries: Vec<_> =
         std::fs::read_dir(dir).map_err(io)?.map(|e| e.map(|e| e.path())).collect::<Result<_, _>>().map_err(io)?;
     entries.sort();
     for p in entries {
         if p.is_dir() {
-            collect(&p, out)?;
+            collect_files(&p, out)?;
         } else if p.extension().is_some_and(|e| e == "ref_out") {
             out.push(p);
         }

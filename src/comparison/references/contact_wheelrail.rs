@@ -16,18 +16,24 @@ pub struct Deviation {
     pub quantity: &'static str,
     pub ours: f64,
     pub contact: f64,
+    /// Half a unit of CONTACT's last printed digit (its rounding bound).
+    pub half_unit: f64,
     /// |ours − contact| over half a unit of CONTACT's last printed digit.
     pub half_units: f64,
 }
 
 fn deviation(case: u64, patch: usize, quantity: &'static str, ours: f64, p: &Printed) -> Deviation {
     let half_units = (ours - p.value).abs() / p.half_unit.max(f64::MIN_POSITIVE);
-    Deviation { contact_case: case, patch, quantity, ours, contact: p.value, half_units }
+    Deviation { contact_case: case, patch, quantity, ours, contact: p.value, half_unit: p.half_unit, half_units }
 }
 
-/// Every compared quantity of one case of the model at index `model` of the run's models.
+/// Every compared quantity of one case of the model at index `model` of the run's models: the
+/// number of patches (`n_patches`, a count: any difference is 2 half-units or more), the totals
+/// on the rail and, patch by patch in CONTACT's order, the patches both have.
 pub fn compare_case(case: u64, ours: &CaseResult, model: usize, theirs: &WheelRailCase) -> Vec<Deviation> {
     let mut out = Vec::new();
+    let count = Printed { value: theirs.patches.len() as f64, half_unit: 0.5 };
+    out.push(deviation(case, 0, "n_patches", ours.normal.patches.len() as f64, &count));
     let (_, forces, totals) = &ours.models[model];
     if let Some(f) = &theirs.forces {
         let names = ["fx_tr_n", "fy_tr_n", "fz_tr_n", "fx_ws_n", "fy_ws_n", "fz_ws_n"];

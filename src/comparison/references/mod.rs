@@ -11,6 +11,7 @@ pub mod envelope;
 pub mod friction;
 pub mod table;
 pub mod thesis;
+pub mod wheelrail_cases;
 
 use crate::comparison::finding::{Against, Finding};
 use crate::comparison::rule::{self, Rule};
@@ -49,7 +50,7 @@ pub struct SetDef {
 
 /// The registry: every reference set, in the order of the gate and the report. Adding a set:
 /// its file and a line here (and its gated rules in `tolerances.toml`, if it has any).
-pub const SETS: [SetDef; 8] = [
+pub const SETS: [SetDef; 9] = [
     SetDef {
         labels: &[
             (contact::EXACT, "simplified models differ from the exact theory by design; the report shows by how much"),
@@ -98,6 +99,14 @@ pub const SETS: [SetDef; 8] = [
             "CONTACT's printed totals of its public cases: a quantity no rule names is reported",
         )],
         load: |dir| Ok(Box::new(contact_public::PublicCases::load(dir)?)),
+        section: None,
+    },
+    SetDef {
+        labels: &[(
+            wheelrail_cases::AGAINST,
+            "CONTACT's printed module-1 results: a quantity no rule names is reported",
+        )],
+        load: |dir| Ok(Box::new(wheelrail_cases::WheelRailCases::load(dir)?)),
         section: None,
     },
 ];

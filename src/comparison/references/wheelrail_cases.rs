@@ -1,0 +1,266 @@
+//! CONTACT's module-1 (wheel–rail) decks and printed results (reference/contact_wheelrail/,
+//! issue 44 item 7): a wheel–rail scene with an `[origin]` deck is gated case by case and patch by
+//! patch against what CONTACT printed for that deck ([`super::contact_wheelrail::compare_case`]),
+//! each difference in half-units of the printed value's last digit; `tolerances.toml` states the
+//! bound per quantity (label "CONTACT wheel-rail"). Only the exact solver (`contact`) is compared:
+//! the other models differ from CONTACT's exact theory by design.
+
+use super::contact_output::wheelrail::{read, WheelRailCase};
+use super::contact_public::Survey;
+use super::contact_wheelrail::{compare_case, Deviation};
+use super::ReferenceSet;
+use crate::comparison::finding::{Against, Ctx, Finding};
+use crate::comparison::rule::Rule;
+use crate::error::Error;
+use crate::history::History;
+use crate::pipeline::wheelrail_scene::SceneRun;
+use crate::scene::Origin;
+use crate::suite::results::StoredScene;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+/// CONTACT's printed module-1 results.
+pub const AGAINST: Against = Against::Reference("CONTACT wheel-rail");
+
+/// The folder of the decks, profiles and printed output, under the reference folder.
+pub const FOLDER: &str = "contact_wheelrail";
+
+/// The model compared: CONTACT's exact theory.
+pub const SOLVER: &str = "contact";
+
+/// Outputs printed without a deck by CONTACT's library (`src/test_mbench.f90`): the file, its
+/// result element and the deck whose cases that element repeats (the same benchmark,
+/// element 1 the left wheel, 2 the right; every number printed equals the deck's own output).
+pub const LIBRARY: [(&str, u32, &str); 2] =
+    [("contact_mbench.ref_out", 1, "mbench_a22_left.inp"), ("contact_mbench.ref_out", 2, "mbench_a22_right.inp")];
+
+/// FX and MN are differences of large opposite tractions: where they are small their printed
+/// digits are no fair scale. Their half-unit is floored at the value given over 1.5, so that
+/// 1.5 half-units (the bound of `tolerances.toml`) is their printed digits or this many N (N·mm):
+/// FX 1 N (1e-4 of FZ = 10 kN), MN 12 N·mm (1.2e-3 FZ times a millimetre).
+pub const FLOORS: [(&str, f64); 4] = [("fx_tr_n", 1.0), ("fx_ws_n", 1.0), ("fx_n", 1.0), ("mn_nmm", 12.0)];
+
+/// The bound of `tolerances.toml` on the floored quantities, in half-units.
+pub const FLOORED_BOUND: f64 = 1.5;
+
+/// A case that differs from CONTACT for a feature this project does not model: its comparisons
+/// carry the quantity `<quantity>_known_gap`, which `tolerances.toml` reports (and bounds where it
+/// says), never passing it as reproduced.
+#[derive(Debug, Clone, Copy)]
+pub struct KnownGap {
+    pub deck: &'static str,
+    pub case: u64,
+    /// The missing feature.
+    pub feature: &'static str,
+}
+
+/// The declared gaps.
+pub const KNOWN_GAPS: [KnownGap; 1] = [KnownGap {
+    deck: "mbench_a22_right.inp",
+    case: 11,
+    feature: "CONTACT's blending of patches between D_COMB and D_SEP (two interpenetration regions 6 mm apart, their cross-influence attenuated; here one fully coupled patch)",
+}];
+
+/// The suffix of a known gap's quantities.
+pub const GAP_SUFFIX: &str = "_known_gap";
+
+/// The declared gap of a case, if any.
+pub fn known_gap(deck: &str, case: u64) -> Option<&'static KnownGap> {
+    KNOWN_GAPS.iter().find(|g| g.deck == deck && g.case == case)
+}
+
+/// The worst comparison of one case (the report's row).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CaseWorst {
+    /// Where CONTACT printed it (`mbench_a22_left.ref_out`).
+    pub source: String,
+    pub scene: String,
+    pub deviation: Deviation,
+    /// Its measure, in half-units ([`measure`]).
+    pub measure: f64,
+    /// The measure over its rule's bound.
+    pub ratio: f64,
+    /// Whether the rule of its quantity passes it.
+    pub passed: bool,
+    pub gap: Option<&'static str>,
+}
+
+/// Every printed module-1 output, the importer's survey of every deck and what this run gave.
+#[derive(Debug, Clone, Default)]
+pub struct WheelRailCases {
+    /// Printed cases by file name (`mbench_a22_left.ref_out`).
+    pub prints: BTreeMap<String, Vec<WheelRailCase>>,
+    /// Each deck's input file (`testbank.inp` → its path).
+    pub inputs: BTreeMap<String, PathBuf>,
+    /// The importer's verdict on each deck's module-1 cases (attached by the command).
+    pub survey: BTreeMap<String, Survey>,
+    /// The worst comparison of each (deck, case) of the wheel–rail scenes run (attached by the
+    /// command after the gate).
+    pub results: BTreeMap<(String, u64), CaseWorst>,
+}
+
+impl WheelRailCases {
+    /// Read every `.ref_out` under `dir/contact_wheelrail` (recursively).
+    pub fn load(dir: &Path) -> Result<WheelRailCases, Error> {
+        let mut files = Vec::new();
+        super::contact_public::collect_files(&dir.join(FOLDER), &mut files)?;
+        let mut out = WheelRailCases::default();
+        for path in files {
+            let Some(name) = path.file_name().and_then(|s| s.to_str()) else { continue };
+            out.prints.insert(name.to_string(), read(&path)?);
+            let inp = path.with_extension("inp");
+            if inp.exists() {
+                out.inputs.insert(format!("{}.inp", name.trim_end_matches(".ref_out")), inp);
+            }
+        }
+        Ok(out)
+    }
+
+    /// Attach the importer's verdict on every deck.
+    pub fn attach_survey(&mut self, survey: impl Fn(&Path) -> Survey) {
+        self.survey = self.inputs.iter().map(|(deck, inp)| (deck.clone(), survey(inp))).collect();
+    }
+
+    /// The printed cases of a deck: its own `.ref_out` and the library's prints of its cases,
+    /// each with its file's name.
+    pub fn sources(&self, deck: &str) -> Vec<(String, Vec<&WheelRailCase>)> {
+        let mut out = Vec::new();
+        let own = format!("{}.ref_out", deck.trim_end_matches(".inp"));
+        if let Some(cases) = self.prints.get(&own) {
+            out.push((own, cases.iter().collect()));
+        }
+        for (file, element, of) in LIBRARY {
+            if let (true, Some(cases)) = (of == deck, self.prints.get(file)) {
+                let label = format!("{file}, result element {element}");
+                out.push((label, cases.iter().filter(|c| c.result_element == Some(element)).collect()));
+            }
+        }
+        out
+    }
+
+    /// Every comparison of a wheel–rail scene's exact-solver results with CONTACT's prints of its
+    /// origin deck: per source and quantity the worst, judged by `rules` (a case CONTACT did not
+    /// print, or printed and the scene did not run, is unmatched: it fails).
+    pub fn compare_run(&self, run: &SceneRun, origin: Option<&Origin>, rules: &[Rule]) -> Vec<Finding> {
+        let ctx = Ctx { scene: &run.name, solver: SOLVER, against: AGAINST, rules };
+        let Some(origin) = origin else {
+            return vec![ctx.unmatched("origin", "no [origin] deck: nothing of CONTACT's to compare with".into())];
+        };
+        let Some(model) = run.models.iter().position(|m| m == SOLVER) else {
+            return vec![ctx.unmatched("origin", format!("the scene does not run {SOLVER:?}, the model compared"))];
+        };
+        let sources = self.sources(&origin.file);
+        if sources.is_empty() {
+            let note = format!("{}: no printed output of this deck under reference/{FOLDER}/", origin.file);
+            return vec![ctx.unmatched("origin", note)];
+        }
+        let mut out = Vec::new();
+        for (source, printed) in sources {
+            let mut worst: BTreeMap<String, Finding> = BTreeMap::new();
+            for (case, result) in &run.cases {
+                let Some(theirs) = printed.iter().find(|c| u64::from(c.case) == *case) else {
+                    let note = format!("case {case}: {source} prints no such case");
+                    out.push(Finding { step: Some(*case as usize), ..ctx.unmatched("case", note) });
+                    continue;
+                };
+                for d in compare_case(*case, result, model, theirs) {
+                    let f = finding(&ctx, &origin.file, &source, &d);
+                    if worst.get(&f.quantity).is_none_or(|w| f.severity() > w.severity()) {
+                        worst.insert(f.quantity.clone(), f);
+                    }
+                }
+            }
+            let [first, last] = origin.cases;
+            for c in printed.iter().filter(|c| (first..=last).contains(&(c.case as usize))) {
+                if !run.cases.iter().any(|(n, _)| *n == u64::from(c.case)) {
+                    let note = format!("case {}: printed in {source}, not run by the scene", c.case);
+                    out.push(Finding { step: Some(c.case as usize), ..ctx.unmatched("case", note) });
+                }
+            }
+            out.extend(worst.into_values());
+        }
+        out
+    }
+
+    /// Record the worst comparison of each case of a run (the report's rows).
+    pub fn attach_run(&mut self, run: &SceneRun, origin: &Origin, rules: &[Rule]) {
+        let Some(model) = run.models.iter().position(|m| m == SOLVER) else { return };
+        let mut rows = Vec::new();
+        for (source, printed) in self.sources(&origin.file) {
+            for (case, result) in &run.cases {
+                let Some(theirs) = printed.iter().find(|c| u64::from(c.case) == *case) else { continue };
+                let gap = known_gap(&origin.file, *case).map(|g| g.feature);
+                for d in compare_case(*case, result, model, theirs) {
+                    let q = quantity(&origin.file, &d);
+                    let rule = crate::comparison::rule::first(rules, AGAINST, &run.name, SOLVER, &q);
+                    // Reported quantities (no bound) never make a case's verdict.
+                    if !rule.gated {
+                        continue;
+                    }
+                    let (m, allowed) = (measure(&d), rule.allowed(0.0));
+                    let ratio = if m == 0.0 { 0.0 } else { m / allowed };
+                    let row = CaseWorst {
+                        source: source.clone(),
+                        scene: run.name.clone(),
+                        deviation: d,
+                        measure: m,
+                        ratio,
+                        passed: m <= allowed,
+                        gap,
+                    };
+                    rows.push(((origin.file.clone(), *case), row));
+                }
+            }
+        }
+        for (key, row) in rows {
+            if self.results.get(&key).is_none_or(|w| (!row.passed, row.ratio) > (!w.passed, w.ratio)) {
+                self.results.insert(key, row);
+            }
+        }
+    }
+}
+
+/// The quantity a deviation is gated as: its own, or `<quantity>_known_gap` in a declared gap.
+pub fn quantity(deck: &str, d: &Deviation) -> String {
+    match known_gap(deck, d.contact_case) {
+        Some(_) => format!("{}{GAP_SUFFIX}", d.quantity),
+        None => d.quantity.to_string(),
+    }
+}
+
+/// A deviation in half-units of CONTACT's last printed digit, the half-unit floored for FX and
+/// MN ([`FLOORS`]).
+pub fn measure(d: &Deviation) -> f64 {
+    let floor = FLOORS.iter().find(|(q, _)| *q == d.quantity).map_or(0.0, |(_, f)| f / FLOORED_BOUND);
+    (d.ours - d.contact).abs() / d.half_unit.max(floor).max(f64::MIN_POSITIVE)
+}
+
+/// One finding: the measure in half-units (theirs = 0); the note names the case, the patch, both
+/// values and the source.
+fn finding(ctx: &Ctx, deck: &str, source: &str, d: &Deviation) -> Finding {
+    let patch = if d.patch == 0 { "totals".to_string() } else { format!("patch {}", d.patch) };
+    let mut note = format!(
+        "case {} {patch}: ours {:.6e}, CONTACT {:e} ± {:e} ({source})",
+        d.contact_case, d.ours, d.contact, d.half_unit
+    );
+    if let Some(g) = known_gap(deck, d.contact_case) {
+        note.push_str(&format!("; known gap: {}", g.feature));
+    }
+    ctx.finding(&quantity(deck, d), Some(d.contact_case as usize), measure(d), 0.0, &note)
+}
+
+impl ReferenceSet for WheelRailCases {
+    fn label(&self) -> &'static str {
+        "CONTACT wheel-rail"
+    }
+
+    /// A module-3 result folder holds no wheel–rail case: the command compares wheel–rail runs
+    /// with [`WheelRailCases::compare_run`].
+    fn compare(&self, _scene: &StoredScene, _rules: &[Rule]) -> Vec<Finding> {
+        Vec::new()
+    }
+
+    fn history(&self, _scene: &str) -> Option<&History> {
+        None
+    }
+}
