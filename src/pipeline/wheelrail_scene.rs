@@ -82,7 +82,7 @@ fn in_case(row: &CaseRow, e: Error) -> Error {
 }
 
 /// The stage's input for one row of the scene.
-fn case_of<'a>(
+pub(crate) fn case_of<'a>(
     s: &WheelRailScene,
     row: &CaseRow,
     rail: &'a Profile,

@@ -18,6 +18,7 @@ pub mod sections;
 mod sines;
 pub mod studies;
 pub mod table;
+pub mod wheelrail;
 pub mod work_precision;
 
 use crate::comparison::compare::Finding;

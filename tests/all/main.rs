@@ -57,3 +57,4 @@ mod traction_bound;
 mod wheelrail;
 mod wheelrail_mbench;
 mod wheelrail_profiles;
+mod wheelrail_report;
