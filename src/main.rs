@@ -93,8 +93,9 @@ enum ImportWhat {
 enum Command {
     /// Run one scene and write OUT/<name>/{scene.json,<solver>.csv,metrics.csv} (a study file: each of its scenes).
     Simulate {
-        /// The scene file (TOML), or a study file.
-        scene: PathBuf,
+        /// The scene file (TOML), or a study file; several with --report (wheel–rail scenes).
+        #[arg(required = true)]
+        scene: Vec<PathBuf>,
         /// Run only these of the scene's solvers (repeatable).
         #[arg(long = "solver")]
         solvers: Vec<String>,
@@ -104,6 +105,10 @@ enum Command {
         /// The golden folder, which simulate never writes into.
         #[arg(long, default_value = "golden")]
         golden: PathBuf,
+        /// Wheel–rail scenes only: also write DIR/validation.md with the section "Wheel–rail
+        /// contact" of the scenes that declare [report] group = "wheelrail".
+        #[arg(long, value_name = "DIR")]
+        report: Option<PathBuf>,
     },
     /// Fit a model's free parameters (a fit file: model, target, norm, scenes, [[fit.param]], [set])
     /// and write them as a scene block OUT (default out/fits/<name>.toml; replaces none).
@@ -247,9 +252,17 @@ fn main() {
         Command::Expand { study, out, golden } => {
             commands::expand(&study, &out, &golden).map(|files| files.iter().for_each(|f| say(f.display())))
         }
-        Command::Simulate { scene, solvers, out, golden } => {
-            commands::simulate(&scene, &solvers, &out, &golden).map(|dirs| dirs.iter().for_each(|d| say(d.display())))
+        Command::Simulate { scene, solvers, out, golden, report } => match (report, scene.as_slice()) {
+            (Some(dir), scenes) => commands::simulate_report(scenes, &solvers, &out, &dir, &golden),
+            (None, [one]) => commands::simulate(one, &solvers, &out, &golden),
+            (None, _) => Err(creepbench::error::InputError::new(
+                "SCENE",
+                format!("{} files", scene.len()),
+                "one scene file (several only with --report)",
+            )
+            .into()),
         }
+        .map(|dirs| dirs.iter().for_each(|d| say(d.display()))),
         Command::Run { suite: s, results, report, fits, timing_repeats } => {
             // The shipped fits calibrate on the shipped suites: a suite of one's own runs none unless asked.
             let shipped = s.suite.iter().map(PathBuf::as_path).eq(DEFAULT_SUITES.iter().map(std::path::Path::new));

@@ -313,3 +313,4 @@ pub fn run_with(mut problem: Problem, in_process: &[InProcess]) -> Result<SceneR
 
 pub mod wheelrail;
 pub mod wheelrail_scene;
+pub mod wheelrail_view;

@@ -12,6 +12,7 @@
 
 use super::{resolve, run};
 use crate::error::{Error, InputError};
+use crate::history::sample_loop::{run_with_fields, Field};
 use crate::physics::geometry::{Extent, GeometrySpec};
 use crate::problem::Problem;
 use crate::scene::Scene;
@@ -190,6 +191,20 @@ fn patch_solve(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> R
         n_adhesion: count("n_adhesion"),
         n_slip: count("n_slip"),
     })
+}
+
+/// One model's field on a patch (pressure, tractions, adhesion or slip per element, CONTACT's
+/// element order), if the model solves the patch on its own grid and tells adhesion from slip.
+pub fn patch_field(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> Result<Option<Field>, Error> {
+    let problem = patch_problem(p, model, mu, case)?;
+    let Some(def) = solvers::builtin(model) else { return Ok(None) };
+    let (_, fields) = run_with_fields(&problem, def, &|_| true).map_err(|e| Error::Solve {
+        scene: "patch".into(),
+        solver: model.into(),
+        source: Box::new(e),
+    })?;
+    let own_grid = |f: &Field| f.pn_mpa.len() == p.geometry.grid.len() && f.state.len() == f.pn_mpa.len();
+    Ok(fields.into_iter().last().filter(own_grid))
 }
 
 /// The totals on the rail in track and wheelset coordinates (the side's frame).

@@ -20,6 +20,7 @@ mod sines;
 pub mod studies;
 pub mod table;
 pub mod timed;
+pub mod wheelrail;
 pub mod work_precision;
 
 use crate::comparison::compare::Finding;

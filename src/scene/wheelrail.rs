@@ -4,6 +4,7 @@
 //! wheel–rail stage, from the paths resolved here.
 
 use super::reader::{parse_toml, Range, Section};
+use super::wheelrail_cases::{ANGLE, LENGTH};
 use super::{is_valid_name, MaterialSpec, Origin};
 use crate::error::InputError;
 use std::path::{Path, PathBuf};
@@ -119,19 +120,35 @@ pub struct WheelRailScene {
     pub d_comb_mm: f64,
     pub vertical: VerticalSpec,
     pub cases: Vec<CaseRow>,
+    /// Where the report shows the scene (`[report]`).
+    pub report: WheelRailReport,
     /// The CONTACT deck and cases an imported scene came from (`[origin]`, as a module-3 scene's).
     pub origin: Option<Origin>,
     /// The scene file's folder.
     pub dir: PathBuf,
 }
 
+/// Where the report shows a wheel–rail scene (`[report]`; report::wheelrail).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct WheelRailReport {
+    /// The scene declares the group `wheelrail`: it is drawn in the section "Wheel–rail contact".
+    pub in_section: bool,
+    /// CONTACT's printed output of the same cases, drawn beside the models (resolved path).
+    pub contact_output: Option<PathBuf>,
+    /// The cases (`contact_case`) whose patches are drawn as maps and on the profiles, as given
+    /// (none: [`WheelRailScene::patch_cases`]'s default).
+    pub patch_cases: Vec<u64>,
+}
+
+/// The report groups a wheel–rail scene may declare.
+pub const WHEELRAIL_GROUPS: [&str; 2] = ["wheelrail", "other"];
+/// The most cases drawn as patch maps.
+const MAX_PATCH_CASES: usize = 20;
+
 /// The columns of the cases table: the leading ones, then `fz_n` or `z_mm`, then the rest.
 const LEAD: [&str; 2] = ["contact_case", "y_mm"];
 const TAIL: [&str; 8] =
     ["roll_rad", "yaw_rad", "vs_mm_s", "vy_mm_s", "vz_mm_s", "vroll_rad_s", "vyaw_rad_s", "vpitch_rad_s"];
-const LENGTH: Range = Range::new(-1e5, true, 1e5, true);
-const ANGLE: Range = Range::new(-1.5, true, 1.5, true);
-const MAX_CASES: usize = 100_000;
 
 /// The columns of the cases table, in their order: `fz_n` or `z_mm` as `vertical` says.
 pub fn case_columns(vertical: VerticalSpec) -> Vec<&'static str> {
@@ -158,6 +175,18 @@ pub fn read_if_wheelrail(path: &Path) -> Result<Option<WheelRailScene>, InputErr
 }
 
 impl WheelRailScene {
+    /// The cases drawn as patch maps and on the profiles: `[report] patch_cases`, or the first,
+    /// middle and last case.
+    pub fn patch_cases(&self) -> Vec<u64> {
+        if !self.report.patch_cases.is_empty() {
+            return self.report.patch_cases.clone();
+        }
+        let n: Vec<u64> = self.cases.iter().map(|c| c.contact_case).collect();
+        let mut out = vec![n[0], n[n.len() / 2], n[n.len() - 1]];
+        out.dedup();
+        out
+    }
+
     /// Read and check the scene file at `path` (its relative paths resolved against its folder);
     /// a file without `[wheelrail]` is an error.
     pub fn from_file(path: &Path) -> Result<WheelRailScene, InputError> {
@@ -205,9 +234,10 @@ impl WheelRailScene {
         let (rail, placement, cant_rad) = rail(&mut top, dir)?;
         let (wheel, fbd, fbp, radius) = wheel(&mut top, dir)?;
         let material = super::sections::material(&mut top)?;
-        let (vertical, cases) = cases(&mut top, dir)?;
+        let (vertical, cases) = super::wheelrail_cases::read(&mut top, dir, radius)?;
         let origin = super::sections::origin(&mut top)?;
         check_origin(origin.as_ref(), &cases)?;
+        let report = report(&mut top, dir, &cases)?;
         top.finish()?;
         Ok(WheelRailScene {
             name,
@@ -230,6 +260,7 @@ impl WheelRailScene {
             d_comb_mm,
             vertical,
             cases,
+            report,
             origin,
             dir: dir.to_path_buf(),
         })
@@ -343,63 +374,34 @@ fn wheel(top: &mut Section, dir: &Path) -> Result<(ProfileSpec, f64, f64, f64), 
     Ok((spec, fbd, fbp, radius))
 }
 
-/// `[cases]`: `vertical` ("force" or "position") and the table `file`.
-fn cases(top: &mut Section, dir: &Path) -> Result<(VerticalSpec, Vec<CaseRow>), InputError> {
-    let mut c = top.table("cases")?;
-    let vertical = match c.opt_choice("vertical", &["force", "position"])?.unwrap_or("force") {
-        "force" => VerticalSpec::Force,
-        _ => VerticalSpec::Position,
+/// `[report]` of a wheel–rail scene: `group` (`wheelrail` or `other`), `contact_output` (a path
+/// relative to the scene) and `patch_cases` (cases of the scene; default its first, middle and
+/// last).
+fn report(top: &mut Section, dir: &Path, cases: &[CaseRow]) -> Result<WheelRailReport, InputError> {
+    let numbers: Vec<u64> = cases.iter().map(|c| c.contact_case).collect();
+    let Some(mut t) = top.opt_table("report")? else {
+        return Ok(WheelRailReport::default());
     };
-    let field = c.field("file");
-    let file = c.str("file", "a CSV path relative to the scene file (columns in docs/scene-format.md)")?;
-    c.finish()?;
-    let (cols, lines, origin) = super::geometry::read_columns(&dir.join(file), &field, &case_columns(vertical))?;
-    let n = cols[0].len();
-    if n == 0 || n > MAX_CASES {
-        return Err(InputError::new(&origin, format!("{n} rows"), format!("1 to {MAX_CASES} cases")));
-    }
-    (0..n)
-        .map(|r| row(&cols, r, &format!("{origin} line {}", lines[r]), vertical))
-        .collect::<Result<_, _>>()
-        .map(|rows| (vertical, rows))
-}
-
-/// One row of the cases table, its values checked.
-fn row(cols: &[Vec<f64>], r: usize, line: &str, vertical: VerticalSpec) -> Result<CaseRow, InputError> {
-    let check = |c: usize, name: &str, range: Range| {
-        let v = cols[c][r];
-        if range.contains(v) {
-            Ok(v)
-        } else {
-            Err(InputError::new(format!("{line} column {name}"), v, range.describe()))
-        }
+    let in_section = t.opt_choice("group", &WHEELRAIL_GROUPS)? == Some("wheelrail");
+    let contact_output = t
+        .opt_str("contact_output", "a path relative to the scene file: CONTACT's printed output (.out, .ref_out)")?
+        .map(|p| dir.join(p));
+    let field = t.field("patch_cases");
+    let patch_cases = match t.opt_f64_list("patch_cases", Range::new(0.0, true, 1e9, true), MAX_PATCH_CASES)? {
+        None => Vec::new(),
+        Some(list) => list
+            .iter()
+            .enumerate()
+            .map(|(k, &v)| match numbers.iter().find(|&&n| n as f64 == v) {
+                Some(&n) => Ok(n),
+                None => Err(InputError::new(
+                    format!("{field}[{k}]"),
+                    v,
+                    format!("a contact_case of the scene's cases ({} to {})", numbers[0], numbers[numbers.len() - 1]),
+                )),
+            })
+            .collect::<Result<_, _>>()?,
     };
-    let case = check(0, "contact_case", Range::new(0.0, true, 1e9, true))?;
-    if case.fract() != 0.0 {
-        return Err(InputError::new(format!("{line} column contact_case"), case, "a whole number"));
-    }
-    let vertical_value = match vertical {
-        VerticalSpec::Force => check(2, "fz_n", Range::new(0.0, false, 1e8, true))?,
-        VerticalSpec::Position => check(2, "z_mm", LENGTH)?,
-    };
-    let speed = Range::new(-1e7, true, 1e7, true);
-    let mut velocity = [0.0; 6];
-    for (k, v) in velocity.iter_mut().enumerate() {
-        *v = check(5 + k, TAIL[2 + k], speed)?;
-    }
-    if velocity[0] == 0.0 {
-        return Err(InputError::new(
-            format!("{line} column vs_mm_s"),
-            0,
-            "a rolling speed other than 0 (the creepages are over it)",
-        ));
-    }
-    Ok(CaseRow {
-        contact_case: case as u64,
-        y_mm: check(1, "y_mm", LENGTH)?,
-        vertical: vertical_value,
-        roll_rad: check(3, "roll_rad", ANGLE)?,
-        yaw_rad: check(4, "yaw_rad", ANGLE)?,
-        velocity,
-    })
+    t.finish()?;
+    Ok(WheelRailReport { in_section, contact_output, patch_cases })
 }

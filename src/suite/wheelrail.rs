@@ -62,21 +62,29 @@ fn total_row(case: u64, r: &CaseResult, model: usize) -> Vec<String> {
     row
 }
 
-/// One model's row for a patch of a case, in the side's frame.
-fn patch_row(case: u64, k: usize, r: &CaseResult, p: &NormalPatch, f: &PatchForces) -> Vec<String> {
+/// The numbers of a patch's row after `contact_case` and `patch` (the columns of
+/// [`PATCH_COLUMNS`] from `xcp_tr_mm` to `mn_nmm`), in the side's frame.
+pub fn patch_numbers(r: &CaseResult, p: &NormalPatch, f: &PatchForces) -> [f64; 15] {
     let m = r.normal.side.sign();
     let o = &p.geometry.frame.origin;
     let [y_r, z_r] = r.normal.in_rail_mm(o.y, o.z);
     let c = &p.creepages;
+    [o.x, m * o.y, o.z, m * p.geometry.frame.delta_rad, m * y_r, z_r, c.cksi, m * c.ceta, m * c.cphi_per_mm]
+        .into_iter()
+        .chain([c.veloc_mm_s, p.pen_mm, f.fn_n, f.fx_n, f.fs_n, f.mn_nmm])
+        .collect::<Vec<_>>()
+        .try_into()
+        .expect("15 numbers")
+}
+
+/// One model's row for a patch of a case, in the side's frame.
+fn patch_row(case: u64, k: usize, r: &CaseResult, p: &NormalPatch, f: &PatchForces) -> Vec<String> {
     let g = &p.geometry.grid;
     let count = |n: Option<usize>| n.map_or(String::new(), |v| v.to_string());
     let ncon = p.pn_mpa.iter().filter(|&&v| v > 0.0).count();
     let pmax = p.pn_mpa.iter().copied().fold(0.0, f64::max);
-    let nums = [o.x, m * o.y, o.z, m * p.geometry.frame.delta_rad, m * y_r, z_r, c.cksi, m * c.ceta, m * c.cphi_per_mm]
-        .into_iter()
-        .chain([c.veloc_mm_s, p.pen_mm, f.fn_n, f.fx_n, f.fs_n, f.mn_nmm]);
     let mut row = vec![case.to_string(), (k + 1).to_string()];
-    row.extend(nums.map(|v| v.to_string()));
+    row.extend(patch_numbers(r, p, f).map(|v| v.to_string()));
     row.extend([g.mx.to_string(), g.ms.to_string(), g.len().to_string(), ncon.to_string()]);
     row.extend([count(f.n_adhesion), count(f.n_slip), pmax.to_string()]);
     row

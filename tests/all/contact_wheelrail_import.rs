@@ -26,12 +26,13 @@ fn import(deck: &Path, out: &Path, extra: &[&str]) -> Vec<PathBuf> {
     String::from_utf8_lossy(&o.stdout).lines().map(PathBuf::from).collect()
 }
 
-/// The scene's values without its name, origin, folder and the spelling of its profile paths
-/// (each resolved to the file it names).
+/// The scene's values without its name, origin, report, folder and the spelling of its profile
+/// paths (each resolved to the file it names).
 fn values(s: &WheelRailScene) -> WheelRailScene {
     let mut v = s.clone();
     v.name.clear();
     v.origin = None;
+    v.report = Default::default();
     v.dir = PathBuf::new();
     v.rail.path = s.rail.path.canonicalize().unwrap();
     v.wheel.path = s.wheel.path.canonicalize().unwrap();

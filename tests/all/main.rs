@@ -60,3 +60,4 @@ mod wheelrail;
 mod wheelrail_mbench;
 mod wheelrail_profiles;
 mod wheelrail_variants;
+mod wheelrail_report;

@@ -163,6 +163,7 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         d_comb_mm: disc.d_comb_mm,
         vertical,
         cases: vec![row],
+        report: Default::default(),
         origin: None,
         dir: PathBuf::new(),
     })

@@ -1,0 +1,141 @@
+//! The section "Wheel–rail contact" (`simulate --report`, issue 44 item 8) and the study axes of
+//! a wheel–rail scene's cases (item 5), end to end: the Manchester benchmark A-2.2's cases 1, 11
+//! and 21 on both wheels, every model, beside CONTACT's printed results.
+
+use crate::common;
+use creepbench::comparison::references::contact_output::wheelrail as printed;
+use creepbench::pipeline::{wheelrail_scene, wheelrail_view};
+use creepbench::scene::wheelrail::WheelRailScene;
+use std::path::{Path, PathBuf};
+
+const MODELS: [&str; 8] = ["contact", "fastsim", "uba", "linear", "she", "polach", "fastrip", "relaxation"];
+
+fn examples() -> PathBuf {
+    common::root().join("reference/contact_wheelrail/examples")
+}
+
+/// The benchmark's scene for `side` in `dir`, its cases table cut to `cases`, with `solvers`,
+/// declaring the group `wheelrail` and CONTACT's printed output.
+fn scene(dir: &Path, side: &str, cases: &[u64], solvers: &str) -> PathBuf {
+    let shipped = common::root().join(format!("scenes/wheelrail/mbench_a22_{side}"));
+    let table =
+        std::fs::read_to_string(shipped.with_extension("csv").with_file_name(format!("mbench_a22_{side}_cases.csv")))
+            .unwrap();
+    let mut lines = table.lines();
+    let mut csv = format!("{}\n", lines.next().unwrap());
+    for l in lines.filter(|l| cases.iter().any(|c| l.starts_with(&format!("{c},")))) {
+        csv += &format!("{l}\n");
+    }
+    std::fs::write(dir.join(format!("{side}_cases.csv")), csv).unwrap();
+    let ex = examples();
+    let text = format!(
+        "name = \"wr_{side}\"\nsolvers = {solvers}\n[wheelrail]\nside = \"{side}\"\nmu = 0.3\ndx_mm = 0.2\nds_mm = 0.2\n\
+         [rail]\nprofile = \"{}\"\ngauge_height_mm = 14.0\ngauge_width_mm = 1435.0\n\
+         [wheel]\nprofile = \"{}\"\nflange_back_distance_mm = 1360.0\nflange_back_position_mm = -70.0\nnominal_radius_mm = 460.0\n\
+         [material]\ng_mpa = 82000.0\npoisson = 0.28\n[cases]\nfile = \"{side}_cases.csv\"\n\
+         [report]\ngroup = \"wheelrail\"\ncontact_output = \"{}\"\npatch_cases = [{}]\n",
+        ex.join("MBench_UIC60_v3.prr").display(),
+        ex.join("MBench_S1002_v3.prw").display(),
+        ex.join(format!("mbench_a22_{side}.ref_out")).display(),
+        cases[0],
+    );
+    let path = dir.join(format!("wr_{side}.toml"));
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+#[test]
+fn the_section_draws_both_wheels_with_every_model_beside_contact() {
+    let dir = common::tempdir("wheelrail_report");
+    let (left, right) = (scene(&dir, "left", &[1, 11, 21], "[]"), scene(&dir, "right", &[1, 11, 21], "[]"));
+    for path in [&left, &right] {
+        let text = std::fs::read_to_string(path).unwrap().replace("solvers = []", &format!("solvers = {MODELS:?}"));
+        std::fs::write(path, text).unwrap();
+    }
+    let args = ["simulate", "wr_left.toml", "wr_right.toml", "--out", "results", "--report", "rep"];
+    let (code, err) = common::run_in(&dir, &args, "report");
+    assert_eq!(code, Some(0), "{err}");
+    let md = std::fs::read_to_string(dir.join("rep/validation.md")).unwrap();
+    assert!(md.contains("## Wheel–rail contact"), "{md}");
+    for wheel in ["### wr_left (left wheel)", "### wr_right (right wheel)"] {
+        assert!(md.contains(wheel), "{wheel}: {md}");
+    }
+    for model in &MODELS[1..] {
+        // The ladder table: per wheel, the model's patch and totals rows against the exact theory.
+        assert_eq!(md.matches(&format!("| {model} | totals | 3 |")).count(), 2, "{model}: {md}");
+        assert_eq!(md.matches(&format!("| {model} | 1 | 3 |")).count(), 2, "{model}: {md}");
+    }
+    let figures = dir.join("rep/figures");
+    for side in ["left", "right"] {
+        for q in ["fx_n", "fs_n", "mn_nmm"] {
+            let svg = std::fs::read_to_string(figures.join(format!("wheelrail_wr_{side}_p1_{q}.svg"))).unwrap();
+            for model in MODELS.iter().chain(&["CONTACT"]) {
+                assert!(svg.contains(&format!("data-model=\"{model}\"")), "{side} {q}: {model}");
+            }
+        }
+        for q in ["ycp_r_mm", "ycp_w_mm", "deltcp_rad", "fn_n", "cksi", "ceta", "cphi_per_mm"] {
+            let svg = std::fs::read_to_string(figures.join(format!("wheelrail_wr_{side}_p1_{q}.svg"))).unwrap();
+            assert!(svg.contains("data-model=\"contact\"") && svg.contains("data-model=\"CONTACT\""), "{side} {q}");
+        }
+        assert!(figures.join(format!("wheelrail_wr_{side}_profiles_1.svg")).exists());
+        assert!(figures.join(format!("wheelrail_wr_{side}_map_1_1_contact.svg")).exists());
+        assert!(figures.join(format!("wheelrail_wr_{side}_fy_tr.svg")).exists());
+        assert!(dir.join(format!("results/wr_{side}/contact_patches.csv")).exists());
+    }
+}
+
+/// The contact point on the wheel profile (the report's YCP(W)) against CONTACT's printed one,
+/// within 1 µm: the reference point on the rail it starts from is CONTACT's within 0.66 µm
+/// (`wheelrail_mbench`). Right case 11 is left out: CONTACT blends its two regions, this project
+/// solves them as one patch (docs/wheelrail.md), its reference 0.12 mm off.
+#[test]
+fn the_contact_point_on_the_wheel_is_contacts() {
+    let dir = common::tempdir("wheelrail_report_ycp_w");
+    let mut worst = Vec::new();
+    for side in ["left", "right"] {
+        let scene = WheelRailScene::from_file(&scene(&dir, side, &[1, 6, 12, 16, 21], "[\"contact\"]")).unwrap();
+        let run = wheelrail_scene::run_scene(&scene).unwrap();
+        let view = wheelrail_view::view(&scene, run).unwrap();
+        let theirs = printed::read(&examples().join(format!("mbench_a22_{side}.ref_out"))).unwrap();
+        let mut w = 0.0f64;
+        for ((case, _), ours) in view.run.cases.iter().zip(&view.ycp_w_mm) {
+            let t = theirs.iter().find(|c| u64::from(c.case) == *case).unwrap();
+            assert_eq!(ours.len(), t.patches.len(), "{side} case {case}: patches");
+            for (k, y) in ours.iter().enumerate() {
+                let p = t.patches[k].wheel_reference.as_ref().unwrap().ycp_w_mm;
+                println!("{side} case {case} patch {}: ours {y:.5}, CONTACT {} mm", k + 1, p.value);
+                w = w.max((y - p.value).abs());
+            }
+        }
+        println!("{side}: worst |ΔYCP(W)| = {w:.2e} mm");
+        worst.push(w);
+    }
+    assert!(worst.iter().all(|&w| w <= 1e-3), "{worst:?}");
+}
+
+#[test]
+fn bad_cases_axes_and_report_requests_exit_2_naming_the_field() {
+    let dir = common::tempdir("wheelrail_report_bad");
+    let path = scene(&dir, "left", &[1], "[\"contact\"]");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let axis = "[cases]\nfz_n = 10000.0\nvs_mm_s = 2000.0\n[[cases.axis]]\nname = \"shift\"\ny_mn = [0.0, 1.0]\n";
+    std::fs::write(&path, text.replace("[cases]\nfile = \"left_cases.csv\"\n", axis)).unwrap();
+    let (code, err) = common::run_in(&dir, &["simulate", "wr_left.toml"], "bad axis key");
+    assert_eq!(code, Some(2), "{err}");
+    for part in ["wr_left.toml", "cases.axis[0].y_mn", "[0.0, 1.0]", "columns of the cases table that vary: y_mm"] {
+        assert!(err.contains(part), "{part}: {err}");
+    }
+    let step = text.replace(
+        "[cases]\nfile = \"left_cases.csv\"\n",
+        "[cases]\nfz_n = 10000.0\nvs_mm_s = 2000.0\n[[cases.axis]]\nname = \"shift\"\ny_mm = { from = 0.0, to = 1.0, step = -0.5 }\n",
+    );
+    std::fs::write(&path, step).unwrap();
+    let (code, err) = common::run_in(&dir, &["simulate", "wr_left.toml", "--report", "rep"], "bad step");
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("cases.axis[0].y_mm.step") && err.contains("-0.5"), "{err}");
+    std::fs::write(&path, text.replace("group = \"wheelrail\"", "group = \"other\"")).unwrap();
+    let (code, err) = common::run_in(&dir, &["simulate", "wr_left.toml", "--report", "rep"], "no group");
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("--report") && err.contains("group = \"wheelrail\""), "{err}");
+    assert!(!dir.join("rep").exists());
+}
