@@ -325,6 +325,7 @@ fn attach_wheelrail(refs: &mut References, runs: &[(WheelRailScene, SceneRun)]) 
             }
         }
     }
+}
 
 /// The models of the scenes whose timings the report draws ([`report::timed::wants_isolated`])
 /// re-timed alone, one after another on this thread, `repeats` times each (none for 0).

@@ -167,7 +167,8 @@ impl Simulation {
             let kind = if previous { Against::Previous } else { Against::Golden };
             let baseline = baseline.as_deref().map(|g| (g, kind));
             let mut all = compare::evaluate(std::slice::from_ref(&self.stored), &refs, baseline)?;
-            let loosened = tolerance_file::apply(&rules, &mut all, |_| false)?;
+            // Rules of --tolerances files only (file_rules with no suite): every scene.
+            let loosened = tolerance_file::apply(&rules, &mut all, &Default::default(), |_| false)?;
             Ok((all, loosened))
         };
         let (all, loosened) = gate().map_err(errors::to_py)?;

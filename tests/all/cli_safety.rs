@@ -106,8 +106,9 @@ fn report_folders_are_replaced_only_when_creepbench_wrote_them() {
     assert!(std::fs::read_to_string(w.path().join("rep/validation.md")).unwrap().contains("rep_scene"));
     std::fs::create_dir_all(w.path().join("rep2/figures")).unwrap();
     std::fs::write(w.path().join("rep2/figures/mine.svg"), "<svg/>").unwrap();
+    // Refused before any scene runs (issue 48 item 4): an input error.
     let o = run("rep2");
-    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("did not write"), "{}", stderr(&o));
     assert_eq!(std::fs::read_to_string(w.path().join("rep2/figures/mine.svg")).unwrap(), "<svg/>");
     assert!(!w.path().join("rep2/validation.md").exists());

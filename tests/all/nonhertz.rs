@@ -192,8 +192,12 @@ fn nonhertz_input_errors_and_warnings() {
     let e = err(&base.replace("x_mm = [-7.0, 7.0]", "x_mm = [7.0, -7.0]"));
     assert!(e.contains("grid.x_mm") && e.contains("low < high"), "{e}");
     let hertz = scene_text("h", r#"["contact"]"#, 0.4, 8, "kind = \"step\"\nc = 0.001\nsteps = 2", "");
-    let e = err(&hertz.replace("my = 8", "my = 8\nx_mm = [-1.0, 1.0]\ny_mm = [-1.0, 1.0]"));
-    assert!(e.contains("grid.x_mm") && e.contains("per element"), "{e}");
+    // An ellipse on a window of its own (CONTACT's grid kept by D = 0): accepted, its grid the
+    // window; with `scale` beside the edges, refused.
+    let p = resolve(&hertz.replace("my = 8", "my = 8\nx_mm = [-1.0, 1.0]\ny_mm = [-2.0, 2.0]")).unwrap();
+    assert!((p.grid.dx_mm - 0.25).abs() < 1e-12 && (p.grid.dy_mm - 0.5).abs() < 1e-12, "{:?}", p.grid);
+    let e = err(&hertz.replace("my = 8", "my = 8\nx_mm = [-1.0, 1.0]\ny_mm = [-2.0, 2.0]\nscale = 1.2"));
+    assert!(e.contains("scale") && e.contains("explicit edges"), "{e}");
     // A missing profile file, a profile not increasing in y.
     let e = err(&base.replace("profile_flat.csv", "no_such_profile.csv"));
     assert!(e.contains("geometry.profile"), "{e}");

@@ -85,9 +85,10 @@ pub fn fit(spec: &FitSpec, refs: &References) -> Result<FitOutcome, Error> {
     })
 }
 
-/// An error naming the first parameter whose bounds leave the objective (`at_start` at the start)
-/// bit-identical — the model ignores the keys it sets, and the search would end at once with no
-/// word (issue 48 item 8); `measure` gives the objective at a set of parameter values.
+/// An error if every parameter's bounds leave the objective (`at_start` at the start)
+/// bit-identical: the model ignores the keys the fit sets, and the search would end at once with
+/// no word (issue 48 item 8). Parameters are moved one at a time: one that acts only with another
+/// (a slope reduction's alpha while beta is 0) is not ignored as long as some parameter acts.
 fn refuse_ignored(
     spec: &FitSpec,
     at_start: f64,
@@ -100,22 +101,23 @@ fn refuse_ignored(
             v[i] = x;
             measure(&v)
         };
-        if moved(p.min)? == at_start && moved(p.max)? == at_start {
-            let keys: Vec<&str> = spec.set.iter().map(|(k, _)| k.as_str()).collect();
-            return Err(InputError::new(
-                format!("{}: fit.param {}", spec.file.display(), p.name),
-                format!("bounds [{}, {}]", p.min, p.max),
-                format!(
-                    "a parameter that changes the fit's {} (it is the same at the start and at both bounds: model `{}` ignores the keys it sets: {})",
-                    spec.norm.name(),
-                    spec.model,
-                    keys.join(", ")
-                ),
-            )
-            .into());
+        if moved(p.min)? != at_start || moved(p.max)? != at_start {
+            return Ok(());
         }
     }
-    Ok(())
+    let names: Vec<&str> = spec.params.iter().map(|p| p.name.as_str()).collect();
+    let keys: Vec<&str> = spec.set.iter().map(|(k, _)| k.as_str()).collect();
+    Err(InputError::new(
+        format!("{}: fit.param {}", spec.file.display(), names.join(", ")),
+        "no effect at the bounds",
+        format!(
+            "parameters that change the fit's {} (it is the same at the start and with each parameter at each bound: model `{}` ignores the keys they set: {})",
+            spec.norm.name(),
+            spec.model,
+            keys.join(", ")
+        ),
+    )
+    .into())
 }
 
 /// The scenes of the spec's suites it fits and holds out, by name; a pattern that matches nothing

@@ -54,12 +54,15 @@ pub struct KnownGap {
     pub feature: &'static str,
 }
 
-/// The declared gaps.
-pub const KNOWN_GAPS: [KnownGap; 1] = [KnownGap {
-    deck: "mbench_a22_right.inp",
-    case: 11,
-    feature: "CONTACT's blending of patches between D_COMB and D_SEP (two interpenetration regions 6 mm apart, their cross-influence attenuated; here one fully coupled patch)",
-}];
+/// CONTACT's blending of two interpenetration regions (right wheel at y = 5 mm, yaw 12 mrad).
+const BLENDING: &str = "CONTACT's blending of patches between D_COMB and D_SEP (two interpenetration regions 6 mm apart, their cross-influence attenuated; here one fully coupled patch)";
+
+/// The declared gaps: the benchmark's right wheel at y = 5 mm, yaw 12 mrad (right case 11, and
+/// the same position as case 9 of the KPEC deck, computed there with CONTACT's full solution).
+pub const KNOWN_GAPS: [KnownGap; 2] = [
+    KnownGap { deck: "mbench_a22_right.inp", case: 11, feature: BLENDING },
+    KnownGap { deck: "mbench_a22_kpec.inp", case: 9, feature: BLENDING },
+];
 
 /// The suffix of a known gap's quantities.
 pub const GAP_SUFFIX: &str = "_known_gap";
