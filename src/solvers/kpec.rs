@@ -65,16 +65,9 @@ fn contact<const M: u8>(p: &Problem, fn_n: f64) -> Result<LocalContact, SolveErr
     Ok(p.local_contact_of(Planform::of_pressure(&p.grid, ellipse, c.pn_mpa)))
 }
 
-/// A contact given per element whose normal problem the approximation solves at every load of
-/// the scene; a Hertzian ellipse is refused (its pressure is Hertz's: run fastsim).
+/// Any geometry (on Hertz's ellipse the undeformed distance on the grid gives Hertz's contact)
+/// whose normal problem the approximation solves at every load of the scene.
 fn check<const M: u8>(p: &Problem) -> Result<(), InputError> {
-    if p.geometry.elliptic() {
-        return Err(InputError::new(
-            "geometry.kind",
-            format!("{:?} with {:?}", p.geometry.kind(), method::<M>()),
-            "a contact given per element ([geometry] kind = \"field\" or \"profile\", or a wheel–rail patch) for kpec and analyn: on Hertz's ellipse their pressure is Hertz's (run fastsim)",
-        ));
-    }
     let mut loads: Vec<f64> = p.loading.rows().map(|s| s.fn_n).collect();
     loads.sort_by(f64::total_cmp);
     loads.dedup();
