@@ -59,5 +59,5 @@ mod traction_bound;
 mod wheelrail;
 mod wheelrail_mbench;
 mod wheelrail_profiles;
-mod wheelrail_variants;
 mod wheelrail_report;
+mod wheelrail_variants;
