@@ -280,7 +280,7 @@ fn every_figure_of_the_report_passes_the_checks() {
         "{kinds:?}"
     );
     // Every built-in model the golden scenes ran and both reference sets were drawn (and so
-    // checked above). (`kpec` and `analyn` have no golden scene yet: they join after a bless.)
+    // checked above). (`kpec` and `analyn` have no golden scene: the wheel–rail report test draws every model.)
     let ran = |m: &str| scenes.iter().any(|s| s.histories.contains_key(m));
     for m in creepbench::solvers::builtin_names().into_iter().filter(|m| ran(m)) {
         assert!(model_styles.contains_key(&(m.to_string(), false)), "{m} in no figure");

@@ -8,7 +8,8 @@ use creepbench::pipeline::{wheelrail_scene, wheelrail_view};
 use creepbench::scene::wheelrail::WheelRailScene;
 use std::path::{Path, PathBuf};
 
-const MODELS: [&str; 8] = ["contact", "fastsim", "uba", "linear", "she", "polach", "fastrip", "relaxation"];
+const MODELS: [&str; 10] =
+    ["contact", "fastsim", "uba", "linear", "she", "polach", "fastrip", "relaxation", "kpec", "analyn"];
 
 fn examples() -> PathBuf {
     common::root().join("reference/contact_wheelrail/examples")
@@ -60,6 +61,13 @@ fn the_section_draws_both_wheels_with_every_model_beside_contact() {
     for wheel in ["### wr_left (left wheel)", "### wr_right (right wheel)"] {
         assert!(md.contains(wheel), "{wheel}: {md}");
     }
+    // Every model of the registry is drawn on the wheel–rail patches (kpec and analyn have no
+    // golden module-3 scene: the report's module-3 figures draw the models golden/ ran).
+    let mut all = creepbench::solvers::builtin_names();
+    all.sort();
+    let mut ours = MODELS.to_vec();
+    ours.sort();
+    assert_eq!(ours, all, "a model of the registry missing from the wheel–rail report test");
     for model in &MODELS[1..] {
         // The ladder table: per wheel, the model's patch and totals rows against the exact theory.
         assert_eq!(md.matches(&format!("| {model} | totals | 3 |")).count(), 2, "{model}: {md}");
