@@ -18,6 +18,9 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::path::PathBuf;
 
+/// A history's column names and its columns as NumPy arrays.
+type Columns<'py> = (Vec<String>, Vec<Bound<'py, PyArray1<f64>>>);
+
 /// One scene's results (`creepbench.Simulation` wraps it).
 #[pyclass(frozen, module = "creepbench._creepbench")]
 pub struct Simulation {
@@ -98,7 +101,7 @@ impl Simulation {
     }
 
     /// One model's history: column names and one float64 array per column (`step` included).
-    fn history<'py>(&self, py: Python<'py>, solver: &str) -> PyResult<(Vec<String>, Vec<Bound<'py, PyArray1<f64>>>)> {
+    fn history<'py>(&self, py: Python<'py>, solver: &str) -> PyResult<Columns<'py>> {
         let h = self.stored.histories.get(solver).ok_or_else(|| {
             errors::input(creepbench::InputError::new("solver", solver, format!("one of {}", self.order.join(", "))))
         })?;
