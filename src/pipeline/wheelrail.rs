@@ -62,7 +62,13 @@ pub fn solve(case: &WheelRailCase, models: &[String], mu: f64) -> Result<CaseRes
 /// Solve `case` with `models`, each patch at its Coulomb friction (varying across the rail or
 /// along the track where `mu` says so).
 pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Result<CaseResult, Error> {
-    let geometry = |e: wheelrail::WheelRailError| Error::from(InputError::new("wheelrail", "the case", e.to_string()));
+    let geometry = |e: wheelrail::WheelRailError| {
+        Error::from(InputError::new(
+            "contact geometry",
+            "no solution",
+            format!("{e}; a wheel that touches the rail, at a height that carries FZ, with patches within the grid limit (docs/wheelrail.md)"),
+        ))
+    };
     let mut cache = wheelrail::NormalCache::default();
     let mut normal = wheelrail::normal_contact_with(case, None, &mut cache).map_err(geometry)?;
     // The exact theory's forces on the patches of `normal`, where the balance has them.

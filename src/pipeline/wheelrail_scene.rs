@@ -67,17 +67,20 @@ pub fn run_scene(scene: &WheelRailScene) -> Result<SceneRun, Error> {
         .map(|row| {
             let case = case_of(scene, row, &rail, &wheel, material);
             let friction = Friction { mu: scene.mu, variation: scene.mu_variation.as_ref() };
-            solve_with(&case, &models, &friction).map(|r| (row.contact_case, r)).map_err(|e| in_case(row, e))
+            solve_with(&case, &models, &friction)
+                .map(|r| (row.contact_case, r))
+                .map_err(|e| in_case(&scene.name, row, e))
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(SceneRun { name: scene.name.clone(), models, cases })
 }
 
 /// An error of one case, naming it.
-fn in_case(row: &CaseRow, e: Error) -> Error {
+fn in_case(scene: &str, row: &CaseRow, e: Error) -> Error {
     match e {
         Error::Input(i) => {
-            InputError::new(format!("case {}: {}", row.contact_case, i.field), i.value, i.allowed).into()
+            let field = format!("scene {scene}, case {} (y_mm = {}): {}", row.contact_case, row.y_mm, i.field);
+            InputError::new(field, i.value, i.allowed).into()
         }
         other => other,
     }

@@ -58,8 +58,14 @@ fn csv_text(header: &[&str], rows: &[Vec<String>]) -> Vec<u8> {
 fn total_row(case: u64, r: &CaseResult, model: usize) -> Vec<String> {
     let t = &r.models[model].2;
     let mut row = vec![case.to_string(), r.normal.patches.len().to_string(), r.normal.z_ws_mm.to_string()];
-    row.extend(t.track_n.iter().chain(&t.wheelset_n).map(f64::to_string));
+    row.extend(t.track_n.iter().chain(&t.wheelset_n).map(|v| number(*v)));
     row
+}
+
+/// A number as written: shortest round-trip digits, a negative zero (a case without contact's
+/// forces turned to the side's frame) as 0.
+fn number(v: f64) -> String {
+    (v + 0.0).to_string()
 }
 
 /// The numbers of a patch's row after `contact_case` and `patch` (the columns of
@@ -84,7 +90,7 @@ fn patch_row(case: u64, k: usize, r: &CaseResult, p: &NormalPatch, f: &PatchForc
     let ncon = p.pn_mpa.iter().filter(|&&v| v > 0.0).count();
     let pmax = p.pn_mpa.iter().copied().fold(0.0, f64::max);
     let mut row = vec![case.to_string(), (k + 1).to_string()];
-    row.extend(patch_numbers(r, p, f).map(|v| v.to_string()));
+    row.extend(patch_numbers(r, p, f).map(number));
     row.extend([g.mx.to_string(), g.ms.to_string(), g.len().to_string(), ncon.to_string()]);
     row.extend([count(f.n_adhesion), count(f.n_slip), pmax.to_string()]);
     row

@@ -66,3 +66,49 @@ fn hertz_patch_for_every_model_and_mirrored_sides() {
     // The height iteration stops at a relative force error of 1e-9 (wheelrail::vertical::FORCE_TOL).
     assert!((exact.track_n[2] - 10000.0).abs() < 2e-9 * 10000.0, "FZ(TR) {}", exact.track_n[2]);
 }
+
+/// The Manchester scene with its cases table replaced by `rows` (`vertical` its height mode) in a
+/// temporary folder; the `simulate` command's exit status, standard error and the totals' CSV.
+fn simulate_rows(vertical: &str, header: &str, rows: &str) -> (Option<i32>, String, Option<String>) {
+    let root = crate::common::root();
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(root.join("scenes/wheelrail/mbench_a22_left.toml")).unwrap();
+    let examples = root.join("reference/contact_wheelrail/examples");
+    let text = text
+        .replace("../../reference/contact_wheelrail/examples", examples.to_str().unwrap())
+        .replace("vertical = \"force\"", &format!("vertical = \"{vertical}\""))
+        .replace("mbench_a22_left_cases.csv", "cases.csv")
+        .replace("cases = [1, 21]", "cases = [1, 1]")
+        .lines()
+        .filter(|l| !["solvers", "contact_output", "patch_cases"].iter().any(|k| l.starts_with(k)))
+        .collect::<Vec<_>>()
+        .join("\n")
+        .replacen("name = ", "solvers = [\"contact\"]\nname = ", 1);
+    std::fs::write(dir.path().join("s.toml"), text).unwrap();
+    std::fs::write(dir.path().join("cases.csv"), format!("{header}\n{rows}\n")).unwrap();
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(dir.path())
+        .args(["simulate", "s.toml", "--out", "out"])
+        .output()
+        .unwrap();
+    let csv = std::fs::read_to_string(dir.path().join("out/mbench_a22_left/contact.csv")).ok();
+    (o.status.code(), String::from_utf8_lossy(&o.stderr).to_string(), csv)
+}
+
+#[test]
+fn a_case_without_a_solution_is_an_input_error_and_a_wheel_in_the_air_a_result() {
+    let columns = "vs_mm_s,vy_mm_s,vz_mm_s,vroll_rad_s,vyaw_rad_s,vpitch_rad_s";
+    // Profiles that do not overlap laterally; a load whose patch exceeds the grid limit.
+    let header = format!("contact_case,y_mm,fz_n,roll_rad,yaw_rad,{columns}");
+    for (row, says) in [("1,200.0,10000", "do not overlap"), ("1,0.0,1e8", "exceeds the limit")] {
+        let (code, err, csv) = simulate_rows("force", &header, &format!("{row},0,0,2000,0,0,0,0,-4.348"));
+        assert_eq!(code, Some(2), "{err}");
+        assert!(err.contains("scene mbench_a22_left, case 1") && err.contains(says), "{err}");
+        assert!(csv.is_none(), "written despite the error");
+    }
+    // The wheelset 5 mm above the rail (height prescribed): no patch, zero forces, no -0.
+    let header = format!("contact_case,y_mm,z_mm,roll_rad,yaw_rad,{columns}");
+    let (code, err, csv) = simulate_rows("position", &header, "1,0.0,-5.0,0,0,2000,0,0,0,0,-4.348");
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(csv.unwrap().lines().nth(1), Some("1,0,-5,0,0,0,0,0,0"));
+}
