@@ -373,7 +373,7 @@ pub fn build_report(
     fits: &[FitRecord],
     missing: Vec<Finding>,
 ) -> Result<PathBuf, Error> {
-    report_with_findings(scenes, refs, out, (golden, rules), fits, missing).map(|(md, ..)| md)
+    report_with_findings(scenes, refs, out, (golden, rules), fits, (missing, &suite_of(scenes, &[]))).map(|(md, ..)| md)
 }
 
 /// [`build_report`], also returning the report's findings (the run's tolerance files applied)
@@ -384,11 +384,11 @@ fn report_with_findings(
     out: &Path,
     (golden, rules): (Option<&Path>, &[Rule]),
     fits: &[FitRecord],
-    missing: Vec<Finding>,
+    (missing, suites): (Vec<Finding>, &BTreeMap<String, String>),
 ) -> Result<(PathBuf, Vec<Finding>, Vec<Loosening>), Error> {
     let mut findings = compare::evaluate(scenes, refs, golden.filter(|g| g.exists()).map(|g| (g, Against::Golden)))?;
     findings.extend(missing);
-    let loosened = tolerance_file::apply(rules, &mut findings, &suite_of(scenes), |_| false)?;
+    let loosened = tolerance_file::apply(rules, &mut findings, suites, |_| false)?;
     for l in &loosened {
         errln!("loosened: {l}");
     }
@@ -521,8 +521,14 @@ pub fn run_with(
     let rules = file_rules(&[], suite_dir)?;
     let wheelrail_found = wheelrail_findings(&refs, &wheelrail);
     attach_wheelrail(&mut refs, &wheelrail);
-    let (md, findings, loosened) =
-        report_with_findings(&stored, &refs, report_dir, (Some(golden), &rules), &records, wheelrail_found)?;
+    let (md, findings, loosened) = report_with_findings(
+        &stored,
+        &refs,
+        report_dir,
+        (Some(golden), &rules),
+        &records,
+        (wheelrail_found, &suite_of(&stored, &wheelrail)),
+    )?;
     outcome.report = Some(md);
     outcome.findings = findings;
     outcome.loosened = loosened;
@@ -747,7 +753,14 @@ pub fn merge(
     let mut extra = missing;
     extra.extend(owed_by_scenes(&scenes, &merged_suites)?);
     let fits = read_fit_records(dirs)?;
-    let (md, findings, _) = report_with_findings(&scenes, &refs, report_dir, (Some(golden), &rules), &fits, extra)?;
+    let (md, findings, _) = report_with_findings(
+        &scenes,
+        &refs,
+        report_dir,
+        (Some(golden), &rules),
+        &fits,
+        (extra, &suite_of(&scenes, &[])),
+    )?;
     let verdict = Verdict::of(&findings);
     outln!("gates: {verdict}");
     outln!("report: {}", md.display());
@@ -915,8 +928,7 @@ pub fn gate_with(
         Some(s) => suite::scene_names(suite_dir)?.into_iter().filter(|n| !s.takes(n)).collect(),
         None => Vec::new(),
     };
-    let mut suite_of = suite_of(&scenes);
-    suite_of.extend(wheelrail.iter().map(|(s, _)| (s.name.clone(), suite::wheelrail::suite_of(s))));
+    let suite_of = suite_of(&scenes, &wheelrail);
     let loosened = tolerance_file::apply(&rules, &mut all, &suite_of, |r| {
         other_shards.iter().any(|n| tolerance_file::glob(&r.scene, n))
     })?;
@@ -1030,9 +1042,11 @@ pub fn bless(suite_dir: &[PathBuf], golden: &Path, shard: Option<Shard>, progres
 }
 
 /// The folder names of the suites (a blessed scene records its suite's).
-/// Each scene's suite (its folder's name), by scene name.
-fn suite_of(scenes: &[StoredScene]) -> BTreeMap<String, String> {
-    scenes.iter().map(|s| (s.name.clone(), s.scene.suite.clone())).collect()
+/// Each scene's suite (its folder's name), by scene name: the module-3 scenes' and the wheel–rail
+/// scenes' (a suite's own tolerance rules cover its scenes only).
+fn suite_of(scenes: &[StoredScene], wheelrail: &[(WheelRailScene, SceneRun)]) -> BTreeMap<String, String> {
+    let module3 = scenes.iter().map(|s| (s.name.clone(), s.scene.suite.clone()));
+    module3.chain(wheelrail.iter().map(|(s, _)| (s.name.clone(), suite::wheelrail::suite_of(s)))).collect()
 }
 
 fn suite_names(suite_dir: &[PathBuf]) -> Vec<String> {

@@ -286,18 +286,16 @@ pub const FEATURES: &[Feature] = &[
 
 /// The refusals (feature, value) and notes of a case.
 pub fn assess(case: &Case3) -> (Vec<String>, Vec<String>) {
-    let (mut refused, mut notes) = (Vec::new(), Vec::new());
-    for f in FEATURES {
-        if let Some(value) = (f.used)(case) {
-            let line = format!("{value}: {} ({})", f.name, f.reason);
-            if f.supported {
-                notes.push(line);
-            } else {
-                refused.push(line);
-            }
-        }
-    }
-    (refused, notes)
+    let used = FEATURES
+        .iter()
+        .filter_map(|f| (f.used)(case).map(|v| (f.supported, format!("{v}: {} ({})", f.name, f.reason))));
+    refused_and_notes(used)
+}
+
+/// Lines of (supported, text) split into the refusals and the notes, each in order.
+pub fn refused_and_notes(lines: impl Iterator<Item = (bool, String)>) -> (Vec<String>, Vec<String>) {
+    let (notes, refused): (Vec<_>, Vec<_>) = lines.partition(|(supported, _)| *supported);
+    (refused.into_iter().map(|(_, l)| l).collect(), notes.into_iter().map(|(_, l)| l).collect())
 }
 
 /// A feature of CONTACT's module 1 (a row of [`WHEELRAIL_FEATURES`]).

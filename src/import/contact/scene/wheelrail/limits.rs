@@ -243,23 +243,9 @@ fn missing(c: &WheelRailCase) -> Option<String> {
 
 /// A case's refusals and notes, each `value: name (reason)` as module 3 names them.
 pub fn assess(case: &WheelRailCase) -> (Vec<String>, Vec<String>) {
-    let (mut refused, mut notes) = (Vec::new(), Vec::new());
-    for f in features::assess_wheelrail(case).into_iter().filter(|f| !REPLACED.contains(&f.feature)) {
-        if f.supported {
-            notes.push(f.to_string());
-        } else {
-            refused.push(f.to_string());
-        }
-    }
-    for limit in SCENE_LIMITS {
-        if let Some(value) = (limit.used)(case) {
-            let line = format!("{value}: {} ({})", limit.name, limit.reason);
-            if limit.accepted {
-                notes.push(line);
-            } else {
-                refused.push(line);
-            }
-        }
-    }
-    (refused, notes)
+    let features = features::assess_wheelrail(case).into_iter().filter(|f| !REPLACED.contains(&f.feature));
+    let limits = SCENE_LIMITS
+        .iter()
+        .filter_map(|l| (l.used)(case).map(|v| (l.accepted, format!("{v}: {} ({})", l.name, l.reason))));
+    features::refused_and_notes(features.map(|f| (f.supported, f.to_string())).chain(limits))
 }
