@@ -134,7 +134,7 @@ enum Command {
         #[arg(long, default_value = "golden")]
         golden: PathBuf,
     },
-    /// Run the suites (default: the nine shipped suites of scenes/), then the fits of fits/, and
+    /// Run the suites (default: the ten shipped suites of scenes/), then the fits of fits/, and
     /// write the report of this run's scenes (out/report/validation.md; `--report reports`
     /// regenerates the committed sample).
     Run {

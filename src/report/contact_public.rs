@@ -5,6 +5,7 @@
 
 use crate::comparison::references::contact_output::CaseBody;
 use crate::comparison::references::contact_public::{PublicCases, RowDiff, Survey, AGAINST};
+use crate::comparison::references::wheelrail_cases::{WheelRailCases, AGAINST as WHEELRAIL};
 use crate::comparison::references::References;
 use crate::report::linked_table::{self, Table};
 use crate::report::section::Section;
@@ -47,60 +48,95 @@ fn worst_by_case(scenes: &[StoredScene], public: &PublicCases) -> BTreeMap<(Stri
     out
 }
 
-/// The status of case `case` of `deck`.
-fn status(deck: &str, case: usize, worst: Option<&RowDiff>, survey: Option<&Survey>, printed: bool) -> String {
+/// One case of a deck as the list shows it: its worst comparison (none: not run), the importer's
+/// verdict, the set of CONTACT's wheel–rail decks (a module-1 case's verdict is that gate's, when
+/// it holds the deck) and whether CONTACT printed totals for it.
+struct CaseRow<'a> {
+    deck: &'a str,
+    case: usize,
+    worst: Option<&'a RowDiff>,
+    survey: Option<&'a Survey>,
+    wheelrail: Option<&'a WheelRailCases>,
+    printed: bool,
+}
+
+/// The case's status.
+fn status(row: &CaseRow) -> String {
+    let CaseRow { deck, case, worst, survey, wheelrail, printed } = *row;
     if let Some(d) = worst {
         let verdict = if d.half_units() <= ONE_PRINTED_UNIT { "reproduced" } else { "**differs**" };
         // A value CONTACT prints at its noise level is measured against the noise floor.
         let unit = if d.quantity.ends_with("_at_noise_floor") { "the noise floor" } else { "the printed rounding" };
         return format!("{verdict}: worst {:.2} half-units of {unit} ({})", d.half_units(), d.quantity);
     }
-    let reasons = match survey {
-        Some(Survey::Cases(cases)) => cases.get(&case).map(|r| r.join("; ")),
-        Some(Survey::Unread(why)) => Some(format!("the deck is not read: {why}")),
+    let verdict = match survey {
+        Some(Survey::Cases(cases)) => cases.get(&case),
+        Some(Survey::Unread(why)) => return format!("not supported: the deck is not read: {}", why.replace('|', "/")),
         None => None,
     };
-    match reasons {
-        Some(r) if !r.is_empty() => format!("not supported: {}", r.replace('|', "/")),
+    match verdict {
+        // The wheel–rail gate's own copy of the deck has its profiles beside it.
+        Some(v) if v.module == 1 && wheelrail.is_some_and(|w| w.inputs.contains_key(deck)) => {
+            let w = wheelrail.expect("checked in the guard");
+            format!("{MODULE_1} {}", super::contact_wheelrail::status(w, deck, case as u64))
+        }
+        Some(v) if v.module == 1 && v.refused.is_empty() => {
+            format!("{MODULE_1} supported, not in the wheel–rail gate (import {deck} to run it)")
+        }
+        Some(v) if !v.refused.is_empty() => {
+            let head = if v.module == 1 { format!("{MODULE_1} not supported") } else { "not supported".into() };
+            format!("{head}: {}", v.refused.join("; ").replace('|', "/"))
+        }
         Some(_) if printed => format!("supported, not among these results (import {deck} to compare it)"),
         Some(_) => "supported; CONTACT printed no totals for it".into(),
         None => "not surveyed".into(),
     }
 }
 
+/// How a module-1 case's status starts (its verdict is the wheel–rail gate's, section
+/// "CONTACT's wheel–rail decks").
+const MODULE_1: &str = "wheel–rail (module 1):";
+
 /// The section.
 pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
     let public = refs.get::<PublicCases>(AGAINST)?;
+    let wheelrail = refs.get::<WheelRailCases>(WHEELRAIL);
     let worst = worst_by_case(scenes, public);
     let mut table = Table::new(&["deck", "case", "status"]);
-    let mut per_deck = String::from("| deck | cases | reproduced | not supported |\n|---|---|---|---|\n");
-    let (mut keep, mut keys) = (Vec::new(), Vec::new());
+    let mut per_deck = String::from(
+        "| deck | cases | reproduced | not supported | of them wheel–rail (module 1) |\n|---|---|---|---|---|\n",
+    );
+    let (mut keep, mut keys, mut reproduced_all) = (Vec::new(), Vec::new(), 0);
     for (deck, printed) in &public.decks {
         let survey = public.survey.get(deck);
         let mut cases: BTreeSet<usize> = printed.iter().map(|c| c.case as usize).collect();
         if let Some(Survey::Cases(c)) = survey {
             cases.extend(c.keys());
         }
-        let (mut reproduced, mut refused) = (0, 0);
+        let (mut reproduced, mut refused, mut module1) = (0, 0, 0);
         for &case in &cases {
             let has_totals = printed.iter().any(|c| c.case as usize == case && matches!(c.body, CaseBody::Totals(_)));
             let w = worst.get(&(deck.clone(), case));
-            let s = status(deck, case, w, survey, has_totals);
-            reproduced += usize::from(s.starts_with("reproduced"));
-            refused += usize::from(s.starts_with("not supported") || s.starts_with("not surveyed"));
+            let row = CaseRow { deck, case, worst: w, survey, wheelrail, printed: has_totals };
+            let s = status(&row);
+            let verdict = s.strip_prefix(MODULE_1).map_or(s.as_str(), str::trim_start);
+            module1 += usize::from(s.starts_with(MODULE_1));
+            reproduced += usize::from(verdict.starts_with("reproduced"));
+            refused += usize::from(verdict.starts_with("not supported") || verdict.starts_with("not surveyed"));
             if let Some(w) = w {
                 keep.push(table.rows.len());
                 keys.push(w.half_units());
             }
             table.rows.push(format!("| {deck} | {case} | {s} |"));
         }
-        let _ = writeln!(per_deck, "| {deck} | {} | {reproduced} | {refused} |", cases.len());
+        let _ = writeln!(per_deck, "| {deck} | {} | {reproduced} | {refused} | {module1} |", cases.len());
+        reproduced_all += reproduced;
     }
     let order = linked_table::largest(&keys, keys.len());
     let keep: Vec<usize> = order.into_iter().map(|i| keep[i]).collect();
     let summary = format!(
-        "Every case of every deck of `reference/contact_public/` (CONTACT's `examples/` and `testbank/`, read from its printed `.ref_out`): reproduced by the exact solver (its worst difference from the printed fx/fn, fy/fn and MZ in half-units of the printed value's last digit; the gate allows {ONE_PRINTED_UNIT}, one printed unit) or not supported, with the feature the importer refuses. {} of {} cases reproduced.",
-        worst.values().filter(|d| d.half_units() <= ONE_PRINTED_UNIT).count(),
+        "Every case of every deck of `reference/contact_public/` (CONTACT's `examples/` and `testbank/`, read from its printed `.ref_out`): reproduced by the exact solver (its worst difference from the printed fx/fn, fy/fn and MZ in half-units of the printed value's last digit; the gate allows {ONE_PRINTED_UNIT}, one printed unit) or not supported, with the feature the importer refuses. A wheel–rail case (CONTACT's module 1) has the wheel–rail gate's verdict (section \"CONTACT's wheel–rail decks\": every case and patch in half-units of CONTACT's printed digits) where that gate holds its deck. {} of {} cases reproduced.",
+        reproduced_all,
         table.rows.len()
     );
     let placed = linked_table::place(ID, TITLE, &table, &summary, &keep, "The compared cases, worst first");

@@ -22,7 +22,7 @@ pub fn applies(refs: &References) -> bool {
 }
 
 /// The status of one case of a deck.
-fn status(set: &WheelRailCases, deck: &str, case: u64) -> String {
+pub fn status(set: &WheelRailCases, deck: &str, case: u64) -> String {
     if let Some(w) = set.results.get(&(deck.to_string(), case)) {
         let d = &w.deviation;
         let at = if d.patch == 0 { "totals".to_string() } else { format!("patch {}", d.patch) };
@@ -36,7 +36,7 @@ fn status(set: &WheelRailCases, deck: &str, case: u64) -> String {
     }
     match set.survey.get(deck) {
         Some(Survey::Cases(c)) => match c.get(&(case as usize)) {
-            Some(r) if !r.is_empty() => format!("not supported: {}", r.join("; ").replace('|', "/")),
+            Some(r) if !r.refused.is_empty() => format!("not supported: {}", r.refused.join("; ").replace('|', "/")),
             Some(_) => "supported, not among these results".into(),
             None => "not a module-1 case".into(),
         },

@@ -31,6 +31,7 @@ use crate::physics::lanes::sum4;
 use crate::physics::{moment_sum, Planform, PressureShape};
 use crate::problem::{LocalContact, Problem, Sample};
 use crate::simd::with_avx2;
+use crate::solvers::style::{muted, Dash, Marker};
 use std::f64::consts::PI;
 
 /// FaStrip.
@@ -46,6 +47,7 @@ pub const MODEL: ModelDef = ModelDef {
     cost_per_row: linear_in_elements,
     params: None,
     build,
+    style: muted(6, Dash::LongDash, Marker::Cross),
 };
 
 /// Hertz's ellipse only (see the module's doc).

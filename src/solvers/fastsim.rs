@@ -7,6 +7,7 @@ use super::brush::{self, Falling, Integration, Tractions};
 use super::stepper::{FieldView, Step, Stepper};
 use super::{always, linear_in_elements, ModelDef, SolveError};
 use crate::problem::{LocalContact, Problem, Sample};
+use crate::solvers::style::{muted, Dash, Marker};
 
 /// Kalker's FASTSIM on the scene's grid.
 pub const MODEL: ModelDef = ModelDef {
@@ -22,6 +23,7 @@ pub const MODEL: ModelDef = ModelDef {
     cost_per_row: linear_in_elements,
     params: None,
     build,
+    style: muted(2, Dash::Dashed, Marker::TriangleUp),
 };
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {

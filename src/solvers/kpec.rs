@@ -12,6 +12,7 @@ use crate::physics::approximate::{self, Method};
 use crate::physics::geometry::element::equivalent_ellipse;
 use crate::physics::{HertzContact, Planform};
 use crate::problem::{LocalContact, Problem};
+use crate::solvers::style::{Dash, Marker, ModelStyle, LIGHT};
 
 /// KPEC with FASTSIM.
 pub const KPEC: ModelDef = ModelDef {
@@ -19,6 +20,7 @@ pub const KPEC: ModelDef = ModelDef {
     summary: "KPEC (Kik–Piotrowski's virtual interpenetration with CONTACT's ellipse correction, B = 5) for the pressure, FASTSIM on it",
     check: check::<KPEC_METHOD>,
     build: |p| fastsim::with_contact(p, contact::<KPEC_METHOD>),
+    style: ModelStyle { colour: LIGHT[0], dash: Dash::Dashed, marker: Marker::TriangleLeft },
     ..MODEL
 };
 
@@ -28,6 +30,7 @@ pub const ANALYN: ModelDef = ModelDef {
     summary: "ANALYN (Sichani, Enblom & Berg, VSD 52(12) 2014; CONTACT's B = 6) for the pressure, FASTSIM on it",
     check: check::<ANALYN_METHOD>,
     build: |p| fastsim::with_contact(p, contact::<ANALYN_METHOD>),
+    style: ModelStyle { colour: LIGHT[1], dash: Dash::DashDot, marker: Marker::TriangleRight },
     ..MODEL
 };
 
@@ -47,6 +50,7 @@ const MODEL: ModelDef = ModelDef {
     cost_per_row: linear_in_elements,
     params: None,
     build: |p| fastsim::with_contact(p, contact::<KPEC_METHOD>),
+    style: ModelStyle { colour: LIGHT[0], dash: Dash::Dashed, marker: Marker::TriangleLeft },
 };
 
 fn method<const M: u8>() -> Method {

@@ -13,12 +13,14 @@ use super::termination::Termination;
 use super::{closed_form, ModelDef, SolveError};
 use crate::physics::{project_to_bound, LinearTheory};
 use crate::problem::{Problem, Sample};
+use crate::solvers::style::{muted, Dash, Marker};
 
 /// Kalker's linear theory, saturated at μ.
 pub const MODEL: ModelDef = closed_form(
     "linear",
     "Kalker's linear theory (Kalker 1967; C11, C22, C23, C33 of Table A1), f saturated at μ",
     build,
+    muted(3, Dash::Dashed, Marker::Diamond),
 );
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {

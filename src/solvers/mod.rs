@@ -15,6 +15,7 @@ pub mod polach;
 pub mod relaxation;
 pub mod she;
 pub mod stepper;
+pub mod style;
 pub mod termination;
 pub mod uba;
 
@@ -72,6 +73,8 @@ pub struct ModelDef {
     pub params: Option<ReadParams>,
     /// The stepper for this problem.
     pub build: for<'a> fn(&'a Problem) -> Result<Box<dyn Stepper + 'a>, SolveError>,
+    /// How every figure draws it: a colour and marker no other built-in model has together.
+    pub style: style::ModelStyle,
 }
 
 /// A model's parameter reader over the scene's `[model]` table.
@@ -267,6 +270,7 @@ pub const fn closed_form(
     name: &'static str,
     summary: &'static str,
     build: for<'a> fn(&'a Problem) -> Result<Box<dyn Stepper + 'a>, SolveError>,
+    style: style::ModelStyle,
 ) -> ModelDef {
     ModelDef {
         name,
@@ -280,6 +284,7 @@ pub const fn closed_form(
         cost_per_row: negligible,
         params: None,
         build,
+        style,
     }
 }
 

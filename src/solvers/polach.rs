@@ -17,6 +17,7 @@ use crate::error::InputError;
 use crate::problem::params::ParamValue;
 use crate::problem::{ModelParams, Problem, Sample};
 use crate::scene::reader::{Range, Section};
+use crate::solvers::style::{muted, Dash, Marker};
 use std::f64::consts::PI;
 
 /// Polach's model.
@@ -26,6 +27,7 @@ pub const MODEL: ModelDef = ModelDef {
         "polach",
         "Polach (Wear 258, 2005): resultant creep force 2Qμ/π (kA ε/(1+(kA ε)²) + atan(kS ε)), falling friction μ0((1−A)e^(−Bw)+A)",
         build,
+        muted(5, Dash::DashDot, Marker::Plus),
     )
 };
 

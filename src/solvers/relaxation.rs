@@ -28,6 +28,7 @@ use crate::physics::{project_to_bound, LinearTheory};
 use crate::problem::params::ParamValue;
 use crate::problem::{ModelParams, Problem, Sample};
 use crate::scene::reader::{Range, Section};
+use crate::solvers::style::{muted, Dash, Marker};
 
 /// The relaxation (lag) model.
 pub const MODEL: ModelDef = ModelDef {
@@ -42,6 +43,7 @@ pub const MODEL: ModelDef = ModelDef {
     cost_per_row: linear_in_elements,
     params: Some(read_params),
     build,
+    style: muted(7, Dash::LongDash, Marker::Star),
 };
 
 /// The relaxation model's parameter: `[model] relaxation_length_mm`, one length [mm] for both

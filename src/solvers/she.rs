@@ -8,12 +8,14 @@ use super::linear::Saturated;
 use super::stepper::Stepper;
 use super::{closed_form, ModelDef, SolveError};
 use crate::problem::Problem;
+use crate::solvers::style::{muted, Dash, Marker};
 
 /// Shen–Hedrick–Elkins.
 pub const MODEL: ModelDef = closed_form(
     "she",
     "Shen–Hedrick–Elkins (1983): Kalker's linear forces saturated by ε − ε²/3 + ε³/27 (ε = |f_lin|/μ < 3)",
     build,
+    muted(4, Dash::DashDot, Marker::TriangleDown),
 );
 
 /// |f|/μ of the law for the linear |f|/μ = ε ≥ 0.

@@ -15,9 +15,9 @@ use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
 /// The default suites: the thesis scenes, CONTACT's case sets (envelope, non-Hertzian, test
-/// table, falling friction and its variants), the stability scenes, the studies behind the report
-/// and CONTACT's public examples.
-pub const DEFAULT_SUITES: [&str; 9] = [
+/// table, falling friction and its variants), the stability scenes, the studies behind the report,
+/// CONTACT's public examples and its wheel–rail decks (module 1, gated against CONTACT alone).
+pub const DEFAULT_SUITES: [&str; 10] = [
     "scenes/thesis",
     "scenes/envelope",
     "scenes/nonhertz",
@@ -27,6 +27,7 @@ pub const DEFAULT_SUITES: [&str; 9] = [
     "scenes/friction",
     "scenes/friction_variants",
     "scenes/contact_public",
+    "scenes/wheelrail",
 ];
 
 /// `--shard i/n`: this run takes the scenes whose name hashes to i − 1 modulo n.

@@ -281,7 +281,7 @@ fn help_and_ci_agree_with_the_readme() {
     for suite in creepbench::suite::DEFAULT_SUITES {
         assert!(help.contains(suite), "run --help does not name {suite}: {help}");
     }
-    assert!(help.contains("the nine shipped suites") && help.contains("[default: out/report]"), "{help}");
+    assert!(help.contains("the ten shipped suites") && help.contains("[default: out/report]"), "{help}");
     let readme = read(&root.join("README.md"));
     for promise in [
         "cargo run --release -- run",

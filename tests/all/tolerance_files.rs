@@ -98,7 +98,8 @@ fn every_default_rule_decides_a_comparison_of_the_shipped_suites_or_is_a_catch_a
     let golden = root().join("golden");
     let names = results::scene_names(&golden);
     let suites: Vec<PathBuf> = suite::DEFAULT_SUITES.iter().map(|s| root().join(s)).collect();
-    let mut shipped = suite::scene_names(&suites).unwrap();
+    let (module3, _) = suite::wheelrail::split(suite::scene_files(&suites, None).unwrap()).unwrap();
+    let mut shipped: Vec<String> = module3.into_iter().map(|s| s.name).collect();
     shipped.sort();
     assert_eq!(names, shipped, "golden/ holds exactly the shipped suites' scenes");
     let scenes: Vec<_> = names.iter().map(|n| results::read_scene(&golden, n).unwrap()).collect();

@@ -93,10 +93,19 @@ pub struct PublicCases {
 /// The importer's verdict on one deck's cases.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Survey {
-    /// Every case by number with the features that keep it out (empty: supported).
-    Cases(BTreeMap<usize, Vec<String>>),
+    /// Every case by number: its module and the features that keep it out.
+    Cases(BTreeMap<usize, CaseSurvey>),
     /// The deck could not be read as a whole (the importer's message).
     Unread(String),
+}
+
+/// The importer's verdict on one case.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CaseSurvey {
+    /// CONTACT's module: 1 wheel–rail contact from profiles, 3 a contact given by hand.
+    pub module: u8,
+    /// The features that keep the case out (empty: supported).
+    pub refused: Vec<String>,
 }
 
 /// One comparison of a row with its printed case: the quantity and the difference in

@@ -17,6 +17,7 @@ use crate::physics::{moment_sum, FrictionLaw, LinearTheory, NormalPressure};
 use crate::problem::{Problem, Sample};
 use crate::scene::Motion;
 use crate::solvers::stepper::{FieldView, Step, Stepper};
+use crate::solvers::style::{muted, Dash, Marker};
 use crate::solvers::{ModelDef, SolveError};
 
 /// The exact model's name in scenes and of its `<name>.csv`.
@@ -35,6 +36,7 @@ pub const MODEL: ModelDef = ModelDef {
     cost_per_row,
     params: None,
     build,
+    style: muted(0, Dash::Solid, Marker::Circle),
 };
 
 /// Wall time per unit of [`cost_per_row`] [s], the 88×88 transient step of the `contact_step`

@@ -24,6 +24,7 @@ use super::{linear_in_elements, ModelDef, SolveError};
 use crate::error::InputError;
 use crate::physics::{Grid, Planform, RigidSlip};
 use crate::problem::{LocalContact, Problem, Sample};
+use crate::solvers::style::{muted, Dash, Marker};
 
 /// The Unsteady Brush Algorithm.
 pub const MODEL: ModelDef = ModelDef {
@@ -38,6 +39,7 @@ pub const MODEL: ModelDef = ModelDef {
     cost_per_row: linear_in_elements,
     params: None,
     build,
+    style: muted(1, Dash::Solid, Marker::Square),
 };
 
 /// Largest Courant number the UBA accepts: it sub-steps (see [`substeps`]), and a scene asking
