@@ -103,8 +103,8 @@ fn setup(s: &WheelRailScene, (rail, wheel): (&str, &str), out: &mut String) {
     let _ = writeln!(out, "  {nu:?}   {nu:?}   {g:?}   {g:?}                POISS 1,2,  GG 1,2");
     let _ = writeln!(
         out,
-        "  {:?}   {:?}   1.0   {:?}   {:?}   {:?}       DX, DS, DQREL, A_SEP, D_SEP, D_COMB",
-        s.dx_mm, s.ds_mm, s.a_sep_rad, s.d_sep_mm, s.d_comb_mm
+        "  {:?}   {:?}   1.0   {:?}   {:?}   {:?}   {:?}       DX, DS, DQREL, A_SEP, D_SEP, D_COMB, D_TURN",
+        s.dx_mm, s.ds_mm, s.a_sep_rad, s.d_sep_mm, s.d_comb_mm, s.d_turn_mm
     );
     let _ = match s.placement {
         PlacementSpec::Gauge { height_mm, width_mm } => {

@@ -142,7 +142,7 @@ fn field_scene(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> R
     let g = &p.geometry.grid;
     let text = scene_text(p, model, mu, case, "a_mm = 1.0\nb_mm = 1.0", &format!("mx = {}\nmy = {}", g.mx, g.ms));
     let mut scene = Scene::from_toml(&text, Path::new("."))?;
-    scene.geometry = GeometrySpec::Field { h_mm: p.geometry.h_mm.clone() };
+    scene.geometry = GeometrySpec::Field { h_mm: p.geometry.h_mm.clone(), blend: p.geometry.blend.clone() };
     scene.extent = Extent::Edges {
         x_mm: [g.x0_mm, g.x0_mm + g.dx_mm * g.mx as f64],
         y_mm: [g.s0_mm, g.s0_mm + g.ds_mm * g.ms as f64],

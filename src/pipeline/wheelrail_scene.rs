@@ -131,7 +131,12 @@ pub fn case_of<'a>(
         vertical,
         dx_mm: s.dx_mm,
         ds_mm: s.ds_mm,
-        separation: Separation { angle_rad: s.a_sep_rad, distance_mm: s.d_sep_mm, combine_mm: s.d_comb_mm },
+        separation: Separation {
+            angle_rad: s.a_sep_rad,
+            distance_mm: s.d_sep_mm,
+            combine_mm: s.d_comb_mm,
+            turn_mm: s.d_turn_mm,
+        },
         material,
     }
 }

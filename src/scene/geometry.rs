@@ -59,7 +59,7 @@ pub fn read(mut g: Section, dir: &Path, (mx, my): (usize, usize)) -> Result<Geom
                     ),
                 ));
             }
-            GeometrySpec::Field { h_mm }
+            GeometrySpec::Field { h_mm, blend: None }
         }
     };
     g.finish()?;

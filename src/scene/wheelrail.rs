@@ -114,10 +114,12 @@ pub struct WheelRailScene {
     pub material: MaterialSpec,
     pub dx_mm: f64,
     pub ds_mm: f64,
-    /// A_SEP [rad], D_SEP [mm], D_COMB [mm]: which interpenetration regions make one patch.
+    /// A_SEP [rad], D_SEP [mm], D_COMB [mm]: which interpenetration regions make one patch;
+    /// D_TURN [mm]: up to where separate patches' angles are turned.
     pub a_sep_rad: f64,
     pub d_sep_mm: f64,
     pub d_comb_mm: f64,
+    pub d_turn_mm: f64,
     pub vertical: VerticalSpec,
     pub cases: Vec<CaseRow>,
     /// Where the report shows the scene (`[report]`).
@@ -230,6 +232,7 @@ impl WheelRailScene {
         if d_comb_mm > d_sep_mm {
             return Err(InputError::new("wheelrail.d_comb_mm", d_comb_mm, format!("at most d_sep_mm = {d_sep_mm}")));
         }
+        let d_turn_mm = w.opt_f64("d_turn_mm", Range::new(0.0, true, 1e3, true))?.unwrap_or(2.0 * d_sep_mm - d_comb_mm);
         w.finish()?;
         let (rail, placement, cant_rad) = rail(&mut top, dir)?;
         let (wheel, fbd, fbp, radius) = wheel(&mut top, dir)?;
@@ -258,6 +261,7 @@ impl WheelRailScene {
             a_sep_rad,
             d_sep_mm,
             d_comb_mm,
+            d_turn_mm,
             vertical,
             cases,
             report,

@@ -231,7 +231,7 @@ fn geometry_at(
         search::regions(&samples).into_iter().filter_map(|r| patch::candidate(r, rail, radius)).collect();
     let mut out = Vec::new();
     for (k, c) in patch::combine(candidates, &case.separation).iter().enumerate() {
-        let geometry = patch::build(c, wheel, rail, case.dx_mm, case.ds_mm)?;
+        let geometry = patch::build(c, wheel, rail, (case.dx_mm, case.ds_mm), &case.separation)?;
         if geometry.grid.len() > MAX_ELEMENTS {
             return Err(WheelRailError::GridTooLarge {
                 patch: k + 1,
@@ -266,7 +266,9 @@ fn patches_at(
 
 /// The normal problem of one patch with the geometry's own approach (the interpenetration).
 fn solve_normal(g: &PatchGeometry, m: &Material, solvers: &mut NormalSolvers) -> Result<(f64, Vec<f64>), ContactError> {
-    let sol = solvers.get(&g.grid, m)?.solve_approach(&g.h_mm, 0.0, &NormalParams::default())?;
+    let solver = solvers.get(&g.grid, m)?;
+    solver.set_blend(g.blend.clone())?;
+    let sol = solver.solve_approach(&g.h_mm, 0.0, &NormalParams::default())?;
     let fn_n = sol.pn_mpa.iter().sum::<f64>() * g.grid.dx_mm * g.grid.ds_mm;
     Ok((fn_n, sol.pn_mpa))
 }

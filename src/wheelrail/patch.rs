@@ -8,6 +8,7 @@ use super::rail::PlacedRail;
 use super::search::LocusSample;
 use super::wheel::PlacedWheel;
 use super::WheelRailError;
+use crate::physics::halfspace::blend::Blend;
 use nalgebra::{Point3, Vector3};
 
 /// Elements added on every side of the interpenetration's extent (CONTACT's guard band).
@@ -69,6 +70,9 @@ pub struct PatchGeometry {
     pub h_mm: Vec<f64>,
     /// The deepest interpenetration of the region [mm].
     pub pen_max_mm: f64,
+    /// The sub-patches of regions combined between D_COMB and D_SEP, their cross-influence
+    /// attenuated in the normal problem (CONTACT's blending approach); `None` for one region.
+    pub blend: Option<Blend>,
 }
 
 /// The weight of a mesh point: `∫ (pen − a x²)² dx` over the chord where the wheel, a circle
@@ -83,7 +87,7 @@ fn weight(pen_mm: f64, a_per_mm: f64) -> f64 {
 /// A region's extent and weighted centre (CONTACT's `t_cpatch` before its grid): the chord's
 /// x range, the y range to the gap's zero crossings with the rail's z there, the
 /// interpenetration-weighted x, y and rail inclination, and the total weight.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Candidate {
     pub x_mm: [f64; 2],
     pub y_mm: [f64; 2],
@@ -94,6 +98,23 @@ pub struct Candidate {
     pub total_weight: f64,
     /// The deepest interpenetration [mm].
     pub pen_max_mm: f64,
+    /// The extents of the sub-patches merged in between D_COMB and D_SEP (the first its own
+    /// extent at that pass); empty until then.
+    pub parts: Vec<Extent>,
+}
+
+/// An extent in track coordinates: x, y and the rail's z at the y ends [mm].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Extent {
+    pub x_mm: [f64; 2],
+    pub y_mm: [f64; 2],
+    pub z_mm: [f64; 2],
+}
+
+impl Candidate {
+    fn extent(&self) -> Extent {
+        Extent { x_mm: self.x_mm, y_mm: self.y_mm, z_mm: self.z_mm }
+    }
 }
 
 /// The candidate patch of a region (CONTACT's `locate_interpen_1d` with `compute_wgt_center_1d`
@@ -123,12 +144,18 @@ pub fn candidate(region: &[LocusSample], rail: &PlacedRail, radius_mm: f64) -> O
         wgt_angle_rad: mean(&|s| s.rail_angle_rad),
         total_weight,
         pen_max_mm: inside().map(|s| s.pen_mm).fold(0.0, f64::max),
+        parts: Vec::new(),
     })
 }
 
 /// CONTACT's distance between two candidates' extents (`cpatch_distance`): the gaps between their
 /// x ranges and between their y ranges, with the z step across the y gap.
 pub fn distance_mm(a: &Candidate, b: &Candidate) -> f64 {
+    extent_distance_mm(&a.extent(), &b.extent())
+}
+
+/// [`distance_mm`] between two extents.
+fn extent_distance_mm(a: &Extent, b: &Extent) -> f64 {
     let gap = |lo0: f64, hi0: f64, lo1: f64, hi1: f64| (lo0 - hi1).max(lo1 - hi0).max(0.0);
     let dx = gap(a.x_mm[0], a.x_mm[1], b.x_mm[0], b.x_mm[1]);
     let (dy, dz) = if a.y_mm[0] > b.y_mm[1] {
@@ -141,12 +168,15 @@ pub fn distance_mm(a: &Candidate, b: &Candidate) -> f64 {
     (dx * dx + dy * dy + dz * dz).sqrt()
 }
 
-/// The thresholds of patch combination (A_SEP, D_SEP, D_COMB).
+/// The thresholds of patch combination (A_SEP, D_SEP, D_COMB, D_TURN).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Separation {
     pub angle_rad: f64,
     pub distance_mm: f64,
     pub combine_mm: f64,
+    /// Separate patches closer than D_TURN have their reference angles turned towards their
+    /// weighted mean (CONTACT's default 2 D_SEP − D_COMB).
+    pub turn_mm: f64,
 }
 
 /// `b` merged into `a`: the union of the extents, the weights' combined centre and angle.
@@ -167,15 +197,20 @@ fn merge(a: &mut Candidate, b: &Candidate) {
     a.pen_max_mm = a.pen_max_mm.max(b.pen_max_mm);
 }
 
-/// CONTACT's `sort_cpatches_yvalue` and `combine_cpatches`: candidates from the field side to the
-/// track centre (y descending on the right side); a first pass merges those within D_COMB, a
-/// second those within D_SEP (CONTACT blends the second kind's cross-influence; here they are
-/// solved as one patch), never two whose angles differ by more than A_SEP.
+/// CONTACT's `sort_cpatches_yvalue`, `combine_cpatches` and `turn_cpatch_refangle`: candidates
+/// from the field side to the track centre (y descending on the right side); a first pass merges
+/// those within D_COMB, a second those within D_SEP keeping each merged region's extent as a
+/// sub-patch (blended: [`sub_patch_factors`]), never two whose angles differ by more than A_SEP;
+/// then neighbours between D_SEP and D_TURN apart have their angles turned ([`turn_angles`]).
 pub fn combine(mut c: Vec<Candidate>, sep: &Separation) -> Vec<Candidate> {
     c.sort_by(|a, b| b.wgt_y_mm.total_cmp(&a.wgt_y_mm));
-    for limit in [sep.combine_mm, sep.distance_mm] {
+    for (pass, limit) in [sep.combine_mm, sep.distance_mm].into_iter().enumerate() {
         let mut i = 0;
-        while i < c.len() {
+        // CONTACT starts the sub-patches of every patch but the last in the second pass.
+        while i + 1 < c.len() {
+            if pass == 1 {
+                c[i].parts = vec![c[i].extent()];
+            }
             let mut j = i + 1;
             while j < c.len() {
                 let close = (c[i].wgt_angle_rad - c[j].wgt_angle_rad).abs() <= sep.angle_rad
@@ -183,6 +218,9 @@ pub fn combine(mut c: Vec<Candidate>, sep: &Separation) -> Vec<Candidate> {
                 if close {
                     let b = c.remove(j);
                     merge(&mut c[i], &b);
+                    if pass == 1 {
+                        c[i].parts.push(b.extent());
+                    }
                 } else {
                     j += 1;
                 }
@@ -190,7 +228,71 @@ pub fn combine(mut c: Vec<Candidate>, sep: &Separation) -> Vec<Candidate> {
             i += 1;
         }
     }
+    turn_angles(&mut c, sep);
     c
+}
+
+/// CONTACT's `turn_cpatch_refangle`: for each pair of neighbours (in the order of [`combine`])
+/// whose y–z gap d lies in [D_SEP, D_TURN] and whose angles differ by at most A_SEP, both angles
+/// move by `(D_TURN − d) / (D_TURN − D_SEP)` of the way to their weighted mean (from the angles
+/// before any turning).
+fn turn_angles(c: &mut [Candidate], sep: &Separation) {
+    if sep.turn_mm <= sep.distance_mm + 1e-12 {
+        return;
+    }
+    let before: Vec<(f64, f64)> = c.iter().map(|p| (p.wgt_angle_rad, p.total_weight)).collect();
+    for i in 0..c.len().saturating_sub(1) {
+        let (a, b) = (&c[i], &c[i + 1]);
+        let d = (a.y_mm[0] - b.y_mm[1]).hypot(a.z_mm[0] - b.z_mm[1]);
+        let ((a0, w0), (a1, w1)) = (before[i], before[i + 1]);
+        if (a0 - a1).abs() > sep.angle_rad || d < sep.distance_mm || d > sep.turn_mm {
+            continue;
+        }
+        let mean = (a0 * w0 + a1 * w1) / (w0 + w1);
+        let f = (sep.turn_mm - d) / (sep.turn_mm - sep.distance_mm);
+        c[i].wgt_angle_rad += f * (mean - a0);
+        c[i + 1].wgt_angle_rad += f * (mean - a1);
+    }
+}
+
+/// The blending factors between a patch's sub-patches (CONTACT's `f_sep2`):
+/// `((D_SEP − d) / (D_SEP − D_COMB))^0.8` for sub-patches d apart (0 beyond D_SEP), 1 on the
+/// diagonal; row-major.
+pub fn sub_patch_factors(parts: &[Extent], sep: &Separation) -> Vec<f64> {
+    let n = parts.len();
+    let mut f = vec![1.0; n * n];
+    for i in 0..n {
+        for j in i + 1..n {
+            let d = extent_distance_mm(&parts[i], &parts[j]);
+            let v = ((sep.distance_mm - d).max(0.0) / (sep.distance_mm - sep.combine_mm)).powf(0.8);
+            (f[i * n + j], f[j * n + i]) = (v, v);
+        }
+    }
+    f
+}
+
+/// The sub-patch of every element (CONTACT's `eldiv_cpatches` on the rectangles of
+/// `m_wr_solvecp`): each sub-patch's x range and its y range in plane coordinates
+/// ((y − y_ref) / cos δ), widened by 0.4 D_COMB, rounded to the nearest element centres; a later
+/// sub-patch takes elements an earlier one holds; 0 outside all.
+pub fn sub_patch_of_elements(parts: &[Extent], frame: &PatchFrame, grid: &PatchGrid, sep: &Separation) -> Vec<u16> {
+    let widen = 0.4 * sep.combine_mm;
+    let mut part = vec![0u16; grid.len()];
+    let (xc0, sc0) = grid.centre(0, 0);
+    let index = |v: f64, c0: f64, size: f64, n: usize| ((v - c0) / size).round().clamp(-1.0, n as f64) as i64;
+    let cos = frame.delta_rad.cos();
+    for (p, e) in parts.iter().enumerate() {
+        let x = [e.x_mm[0] - frame.origin.x - widen, e.x_mm[1] - frame.origin.x + widen];
+        let s = [(e.y_mm[0] - frame.origin.y) / cos - widen, (e.y_mm[1] - frame.origin.y) / cos + widen];
+        let (i0, i1) = (index(x[0], xc0, grid.dx_mm, grid.mx).max(0), index(x[1], xc0, grid.dx_mm, grid.mx));
+        let (j0, j1) = (index(s[0], sc0, grid.ds_mm, grid.ms).max(0), index(s[1], sc0, grid.ds_mm, grid.ms));
+        for j in j0..=j1.min(grid.ms as i64 - 1) {
+            for i in i0..=i1.min(grid.mx as i64 - 1) {
+                part[j as usize * grid.mx + i as usize] = p as u16 + 1;
+            }
+        }
+    }
+    part
 }
 
 /// The reference frame of a candidate: its weighted x and y on the rail, its weighted angle.
@@ -269,11 +371,25 @@ pub fn build(
     c: &Candidate,
     wheel: &PlacedWheel,
     rail: &PlacedRail,
-    dx_mm: f64,
-    ds_mm: f64,
+    (dx_mm, ds_mm): (f64, f64),
+    sep: &Separation,
 ) -> Result<PatchGeometry, WheelRailError> {
     let frame = frame(c, rail).ok_or(WheelRailError::NoContact)?;
     let grid = grid(c, &frame, rail, dx_mm, ds_mm);
-    let h_mm = undeformed_distance(&frame, &grid, wheel, rail);
-    Ok(PatchGeometry { frame, grid, h_mm, pen_max_mm: c.pen_max_mm })
+    let mut h_mm = undeformed_distance(&frame, &grid, wheel, rail);
+    let blend = (c.parts.len() > 1).then(|| {
+        let part = sub_patch_of_elements(&c.parts, &frame, &grid, sep);
+        // Outside every sub-patch nothing touches (CONTACT's planform, IPLAN = 4).
+        for (h, p) in h_mm.iter_mut().zip(&part) {
+            if *p == 0 {
+                *h = MISSED_MM;
+            }
+        }
+        Blend { part, factor: sub_patch_factors(&c.parts, sep), n: c.parts.len() }
+    });
+    Ok(PatchGeometry { frame, grid, h_mm, pen_max_mm: c.pen_max_mm, blend })
 }
+
+#[cfg(test)]
+#[path = "patch_tests.rs"]
+mod tests;

@@ -164,7 +164,8 @@ fn equivalent_ellipse_of_a_hertz_contact_is_its_ellipse() {
     let grid = Grid::new(88, 88, 1.1 * e.a_mm, 1.1 * e.b_mm);
     let m = Material::from_g(82000.0, 0.28);
     let h = HertzEllipse { nominal: e }.undeformed_distance_mm(&grid, e.fn_n, &m);
-    let geometry = creepbench::physics::geometry::ElementGeometry::new("field", h, grid.clone(), &m, e.fn_n).unwrap();
+    let geometry =
+        creepbench::physics::geometry::ElementGeometry::new("field", h, grid.clone(), &m, e.fn_n, None).unwrap();
     let c = geometry.nominal_contact();
     let q = equivalent_ellipse(&grid, &c.pn_mpa, e.fn_n).unwrap();
     println!("equivalent ellipse {:.4} x {:.4} mm (Hertz 8.56 x 4.08)", q.a_mm, q.b_mm);

@@ -36,6 +36,7 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side) -> WheelRailC
             angle_rad: std::f64::consts::FRAC_PI_2,
             distance_mm: 8.0,
             combine_mm: 4.0,
+            turn_mm: 12.0,
         },
         material: Material::from_g(82000.0, 0.28),
     }

@@ -8,6 +8,7 @@
 //! its length to its width (as CONTACT's `equiv_ellipse`, m_hertz.f90).
 
 use super::{ContactGeometry, Planform};
+use crate::physics::halfspace::blend::Blend;
 use crate::physics::halfspace::influence::Kernel;
 use crate::physics::halfspace::normal::{NormalParams, NormalSolver};
 use crate::physics::halfspace::ContactError;
@@ -47,16 +48,19 @@ impl fmt::Debug for ElementGeometry {
 
 impl ElementGeometry {
     /// The geometry `kind` ("profile", "field") with undeformed distance `h_mm` per element of
-    /// `grid` (flat order), loaded by `fn_n` [N] nominally.
+    /// `grid` (flat order), loaded by `fn_n` [N] nominally; with `blend`, its sub-patches'
+    /// cross-influence attenuated in the normal problem (CONTACT's blending approach).
     pub fn new(
         kind: &'static str,
         h_mm: Vec<f64>,
         grid: Grid,
         material: &Material,
         fn_n: f64,
+        blend: Option<Blend>,
     ) -> Result<ElementGeometry, ContactError> {
         let kernel = Kernel::new(grid.mx, grid.my, grid.dx_mm, grid.dy_mm, material.g_mpa, material.poisson, 0.0)?;
         let mut solver = NormalSolver::new(&kernel)?;
+        solver.set_blend(blend)?;
         let nominal = solve(&mut solver, &grid, &h_mm, fn_n)?;
         let cache = Mutex::new(vec![Arc::new(nominal.clone())]);
         Ok(ElementGeometry { kind, h_mm, grid, nominal, solver: Mutex::new(solver), cache })

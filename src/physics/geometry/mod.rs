@@ -9,6 +9,7 @@ pub mod element;
 pub mod hertz;
 pub mod profile;
 
+use super::halfspace::blend::Blend;
 use super::halfspace::ContactError;
 use super::{Grid, HertzContact, Material, PressureShape, Radii};
 use crate::error::InputError;
@@ -29,8 +30,9 @@ pub enum GeometrySpec {
     /// `h = a1 x² + g(y)`, g linear between the rows of a profile (`[geometry] kind = "profile"`).
     Profile { a1_per_mm: f64, profile: Profile },
     /// h per element (`[geometry] kind = "field"`), in CONTACT's element order: index
-    /// `(iy − 1) mx + (ix − 1)`, ix along CONTACT's x.
-    Field { h_mm: Vec<f64> },
+    /// `(iy − 1) mx + (ix − 1)`, ix along CONTACT's x; with the sub-patches of CONTACT's blending
+    /// approach (same order) where a wheel–rail patch has them (never from a scene's keys).
+    Field { h_mm: Vec<f64>, blend: Option<Blend> },
 }
 
 /// The potential contact as a scene gives it (`[grid]`).
@@ -74,6 +76,7 @@ impl GeometrySpec {
             }
             (_, Extent::Edges { x_mm: [x0, x1], y_mm }) if self.is_elementwise() => {
                 let grid = Grid::from_edges(mx, my, [-x1, -x0], y_mm);
+                let mut blend_in_grid = None;
                 let (kind, h_mm) = match self {
                     GeometrySpec::Profile { a1_per_mm, profile } => {
                         if !profile.covers(&grid) {
@@ -90,16 +93,20 @@ impl GeometrySpec {
                         }
                         ("profile", profile.undeformed_distance_mm(&grid, *a1_per_mm))
                     }
-                    GeometrySpec::Field { h_mm } => ("field", field_in_grid_order(&grid, h_mm)),
+                    GeometrySpec::Field { h_mm, blend } => {
+                        blend_in_grid = blend.as_ref().map(|b| b.reordered(&contact_order(&grid)));
+                        ("field", field_in_grid_order(&grid, h_mm))
+                    }
                     _ => unreachable!("is_elementwise"),
                 };
-                let geometry = ElementGeometry::new(kind, h_mm, grid.clone(), material, fn_n).map_err(|e| {
-                    InputError::new(
-                        "contact.fn_n",
-                        fn_n,
-                        format!("a load the {kind} geometry's normal problem can carry on this grid ({e})"),
-                    )
-                })?;
+                let geometry =
+                    ElementGeometry::new(kind, h_mm, grid.clone(), material, fn_n, blend_in_grid).map_err(|e| {
+                        InputError::new(
+                            "contact.fn_n",
+                            fn_n,
+                            format!("a load the {kind} geometry's normal problem can carry on this grid ({e})"),
+                        )
+                    })?;
                 return Ok((Arc::new(geometry), grid));
             }
             (GeometrySpec::SemiAxes { .. } | GeometrySpec::Radii(_), Extent::Edges { x_mm: [x0, x1], y_mm }) => {
@@ -132,13 +139,18 @@ impl GeometrySpec {
 /// A field in CONTACT's element order (ix along CONTACT's x) in this grid's flat order
 /// (i along the grid's x = −x_C: i = mx − ix).
 fn field_in_grid_order(grid: &Grid, h_contact: &[f64]) -> Vec<f64> {
-    let mut h = vec![0.0; grid.len()];
+    contact_order(grid).into_iter().map(|k| h_contact[k]).collect()
+}
+
+/// For each element of this grid's flat order, its index in CONTACT's element order.
+fn contact_order(grid: &Grid) -> Vec<usize> {
+    let mut order = vec![0; grid.len()];
     for j in 0..grid.my {
         for i in 0..grid.mx {
-            h[grid.index(i, j)] = h_contact[j * grid.mx + (grid.mx - 1 - i)];
+            order[grid.index(i, j)] = j * grid.mx + (grid.mx - 1 - i);
         }
     }
-    h
+    order
 }
 
 /// The simplified models' contact at one load.

@@ -4,6 +4,7 @@
 //! whose pressure the exact solver uses and the simplified models take on non-Hertzian contacts.
 
 pub mod bilinear;
+pub mod blend;
 pub mod convolution;
 pub mod influence;
 pub mod normal;

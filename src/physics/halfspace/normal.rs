@@ -4,6 +4,7 @@
 //! Solved by the bound-constrained conjugate-gradient method of Polonsky & Keer (Wear 231 (1999)
 //! 206-219, sec. 3; the same scheme as CONTACT's NormCG), with `u = Azz pn` by [`Convolver`].
 
+use super::blend::Blend;
 use super::convolution::Convolver;
 use super::influence::Kernel;
 use super::ContactError;
@@ -44,6 +45,16 @@ pub struct NormalSolver {
     conv: Convolver,
     n: usize,
     area_mm2: f64,
+    /// Sub-patches with attenuated cross-influence, where the contact has them.
+    blend: Option<Blend>,
+}
+
+/// `u = A p`, through the blend's sub-patches where there is one.
+fn matvec(conv: &mut Convolver, blend: Option<&Blend>, p: &[f64], u: &mut [f64]) -> Result<(), ContactError> {
+    match blend {
+        Some(b) => b.normal(conv, p, u),
+        None => conv.normal(p, None, u),
+    }
 }
 
 /// Solves the normal problem for prescribed total force `fn_n` [N] and undeformed distance
@@ -65,7 +76,25 @@ impl NormalSolver {
             conv: Convolver::auto(kernel)?,
             n: kernel.mx * kernel.my,
             area_mm2: kernel.dx_mm * kernel.dy_mm,
+            blend: None,
         })
+    }
+
+    /// Solve the next problems with the cross-influence of `blend`'s sub-patches attenuated (and
+    /// no pressure outside them), or fully coupled (`None`).
+    pub fn set_blend(&mut self, blend: Option<Blend>) -> Result<(), ContactError> {
+        if let Some(b) = &blend {
+            if b.part.len() != self.n {
+                return Err(ContactError::SizeMismatch { name: "blend", len: b.part.len(), expected: self.n });
+            }
+        }
+        self.blend = blend;
+        Ok(())
+    }
+
+    /// Whether element `k` may carry pressure.
+    fn allows(&self, k: usize) -> bool {
+        self.blend.as_ref().is_none_or(|b| b.allows(k))
     }
 
     /// Solves the normal problem for prescribed total force `fn_n` [N] and undeformed distance
@@ -82,11 +111,13 @@ impl NormalSolver {
             });
         }
         // Start: uniform pressure carrying FN on all elements.
-        let p = vec![fn_n / (self.area_mm2 * self.n as f64); self.n];
+        let allowed = (0..self.n).filter(|&k| self.allows(k)).count().max(1);
+        let p: Vec<f64> =
+            (0..self.n).map(|k| if self.allows(k) { fn_n / (self.area_mm2 * allowed as f64) } else { 0.0 }).collect();
         let (p, iterations, residual, converged) = self.iterate(h_mm, p, Some(fn_n), params)?;
         // Approach: mean of h + u over the final contact set.
         let mut u = vec![0.0; self.n];
-        self.conv.normal(&p, None, &mut u)?;
+        matvec(&mut self.conv, self.blend.as_ref(), &p, &mut u)?;
         let (mut s, mut c) = (0.0, 0usize);
         for k in 0..self.n {
             if p[k] > 0.0 {
@@ -119,9 +150,10 @@ impl NormalSolver {
             return Err(ContactError::OutOfRange { name: "approach [mm]", value: approach_mm, requirement: "finite" });
         }
         let gap: Vec<f64> = h_mm.iter().map(|h| h - approach_mm).collect();
-        let overlap: Vec<f64> = gap.iter().map(|g| (-g).max(0.0)).collect();
+        let overlap: Vec<f64> =
+            gap.iter().enumerate().map(|(k, g)| if self.allows(k) { (-g).max(0.0) } else { 0.0 }).collect();
         let mut u = vec![0.0; self.n];
-        self.conv.normal(&overlap, None, &mut u)?;
+        matvec(&mut self.conv, self.blend.as_ref(), &overlap, &mut u)?;
         // The factor c minimising ½ pᵀAp + pᵀ(h − approach) along p = c · overlap.
         let (num, den) = overlap.iter().zip(&u).fold((0.0, 0.0), |(n, d), (o, u)| (n + o * o, d + o * u));
         if num <= 0.0 || den <= 0.0 {
@@ -167,7 +199,8 @@ impl NormalSolver {
         fn_n: Option<f64>,
         params: &NormalParams,
     ) -> Result<(Vec<f64>, usize, f64, bool), ContactError> {
-        let (n, area, conv) = (self.n, self.area_mm2, &mut self.conv);
+        let (n, area, conv, blend) = (self.n, self.area_mm2, &mut self.conv, self.blend.as_ref());
+        let allowed = |k: usize| blend.is_none_or(|b| b.allows(k));
         let mut p_old = vec![0.0; n];
         let mut u = vec![0.0; n];
         let mut g = vec![0.0; n];
@@ -181,7 +214,7 @@ impl NormalSolver {
 
         while iterations < params.max_iter {
             iterations += 1;
-            conv.normal(&p, None, &mut u)?;
+            matvec(conv, blend, &p, &mut u)?;
             let mut nc = 0usize;
             let mut gsum = 0.0;
             for k in 0..n {
@@ -207,7 +240,7 @@ impl NormalSolver {
                 t[k] = if p[k] > 0.0 { g[k] + beta * t[k] } else { 0.0 };
             }
             g_old = gg;
-            conv.normal(&t, None, &mut r)?;
+            matvec(conv, blend, &t, &mut r)?;
             let mut rsum = 0.0;
             for k in 0..n {
                 if p[k] > 0.0 {
@@ -235,7 +268,7 @@ impl NormalSolver {
             // Overlapping elements outside the contact set re-enter (Polonsky & Keer, step 9).
             let mut n_overlap = 0usize;
             for k in 0..n {
-                if p[k] <= 0.0 && g[k] < 0.0 {
+                if p[k] <= 0.0 && g[k] < 0.0 && allowed(k) {
                     p[k] -= tau * g[k];
                     n_overlap += 1;
                 }

@@ -129,7 +129,7 @@ pub const SCENE_LIMITS: &[SceneLimit] = &[
         name: "the patch search's thresholds",
         control: "DQREL, A_SEP, D_SEP, D_COMB, D_TURN, G_MISS",
         accepted: true,
-        reason: "A_SEP, D_SEP, D_COMB carried ([wheelrail] a_sep_rad, d_sep_mm, d_comb_mm); regions within D_SEP are solved as one patch where CONTACT blends those beyond D_COMB, and D_TURN's turning and G_MISS's near misses are not modelled; DQREL is a transient step",
+        reason: "A_SEP, D_SEP, D_COMB, D_TURN carried ([wheelrail] a_sep_rad, d_sep_mm, d_comb_mm, d_turn_mm): regions between D_COMB and D_SEP apart blended, separate patches up to D_TURN apart turned, as CONTACT does; G_MISS < 0 (no near misses; see the row below); DQREL is a transient step",
         used: |c| {
             let d = c.state.discretisation.as_ref()?;
             Some(format!(
@@ -141,6 +141,16 @@ pub const SCENE_LIMITS: &[SceneLimit] = &[
                 d.d_turn_mm(),
                 d.g_miss_mm
             ))
+        },
+    },
+    SceneLimit {
+        name: "near misses",
+        control: "G_MISS",
+        accepted: false,
+        reason: "supported: G_MISS < 0 (CONTACT's default, near misses ignored); patch bounds shifted towards near misses are not modelled",
+        used: |c| {
+            let d = c.state.discretisation.as_ref()?;
+            (d.g_miss_mm >= 0.0).then(|| format!("G_MISS = {}", d.g_miss_mm))
         },
     },
     SceneLimit {

@@ -44,6 +44,7 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
         ("a_sep_rad", Value::Float(s.a_sep_rad)),
         ("d_sep_mm", Value::Float(s.d_sep_mm)),
         ("d_comb_mm", Value::Float(s.d_comb_mm)),
+        ("d_turn_mm", Value::Float(s.d_turn_mm)),
     ]);
     let mut rail = profile(&s.rail, &s.name)?;
     match s.placement {

@@ -1,0 +1,57 @@
+//! Patch combination against CONTACT's rules and its printed numbers: the blending factor of two
+//! sub-patches and the turning of two separate patches' angles.
+
+use super::*;
+
+const SEP: Separation =
+    Separation { angle_rad: std::f64::consts::FRAC_PI_2, distance_mm: 8.0, combine_mm: 4.0, turn_mm: 12.0 };
+
+/// A region spanning `y_mm` laterally (x from −1 to 1 mm, the rail flat at z = 0).
+fn region(y_mm: [f64; 2], angle_rad: f64, weight: f64) -> Candidate {
+    Candidate {
+        x_mm: [-1.0, 1.0],
+        y_mm,
+        z_mm: [0.0, 0.0],
+        wgt_x_mm: 0.0,
+        wgt_y_mm: 0.5 * (y_mm[0] + y_mm[1]),
+        wgt_angle_rad: angle_rad,
+        total_weight: weight,
+        pen_max_mm: 0.01,
+        parts: Vec::new(),
+    }
+}
+
+/// CONTACT (right case 11 of the Manchester benchmark, its debug output: the regions' y and z
+/// ranges) prints the factor 0.391 for sub-patches 6.763 mm apart at D_SEP = 8, D_COMB = 4.
+#[test]
+fn the_blending_factor_is_contacts() {
+    let mut tread = region([734.630, 738.693], 0.0, 1.0);
+    let mut root = region([725.536, 728.005], 0.0, 1.0);
+    (tread.z_mm, root.z_mm) = ([1.413, 0.865], [3.519, 2.769]);
+    let parts = [tread, root].map(|c| c.extent());
+    let f = sub_patch_factors(&parts, &SEP);
+    assert_eq!((f[0], f[3]), (1.0, 1.0));
+    assert_eq!(f[1], f[2]);
+    assert!((f[1] - 0.391).abs() < 5e-4, "{f:?}");
+    // Beyond D_SEP nothing couples.
+    let far = [region([0.0, 1.0], 0.0, 1.0), region([9.5, 10.0], 0.0, 1.0)].map(|c| c.extent());
+    assert_eq!(sub_patch_factors(&far, &SEP)[1], 0.0);
+}
+
+/// Two regions 6 mm apart are one patch with two sub-patches; 10 mm apart two patches whose
+/// angles move half-way ((12 − 10) / (12 − 8)) to their weighted mean; 13 mm apart untouched.
+#[test]
+fn regions_are_blended_or_turned_by_their_distance() {
+    let blended = combine(vec![region([0.0, 1.0], -0.1, 1.0), region([7.0, 8.0], -0.3, 3.0)], &SEP);
+    assert_eq!(blended.len(), 1);
+    assert_eq!(blended[0].parts.len(), 2);
+    assert!((blended[0].wgt_angle_rad - (-0.3 * 3.0 - 0.1) / 4.0).abs() < 1e-15);
+    let turned = combine(vec![region([0.0, 1.0], -0.1, 1.0), region([11.0, 12.0], -0.3, 3.0)], &SEP);
+    let mean = (-0.1 - 0.9) / 4.0;
+    assert_eq!(turned.len(), 2);
+    // Sorted from the field side (y descending): the region at y = 11 first.
+    assert!((turned[0].wgt_angle_rad - (-0.3 + 0.5 * (mean + 0.3))).abs() < 1e-15, "{turned:?}");
+    assert!((turned[1].wgt_angle_rad - (-0.1 + 0.5 * (mean + 0.1))).abs() < 1e-15, "{turned:?}");
+    let apart = combine(vec![region([0.0, 1.0], -0.1, 1.0), region([14.0, 15.0], -0.3, 3.0)], &SEP);
+    assert_eq!((apart[0].wgt_angle_rad, apart[1].wgt_angle_rad), (-0.3, -0.1));
+}
