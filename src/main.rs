@@ -273,7 +273,8 @@ fn main() {
         }
         Command::Check { suite: s, against, junit, json, summary, tolerances, strict, verbose } => {
             let files = commands::GateFiles { tolerances, junit, json, summary, strict, verbose };
-            commands::check(&s.suite, &s.reference, &s.golden, against.as_deref(), s.shard, !s.quiet, &files)
+            let baseline = commands::Baseline { golden: &s.golden, against: against.as_deref() };
+            commands::check(&s.suite, &s.reference, baseline, commands::Runner::cli(s.shard, !s.quiet), &files)
         }
         Command::Bless { suite: s } => commands::bless(&s.suite, &s.golden, s.shard, !s.quiet),
         Command::Merge { dirs, suite, tolerances, reference, golden, report } => {

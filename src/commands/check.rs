@@ -74,19 +74,6 @@ pub struct Gate {
     pub oscillating: Vec<String>,
 }
 
-/// Run the suite and gate it ([`Gate`]); `check` prints the result.
-pub fn gate(
-    suite_dir: &[PathBuf],
-    reference: &Path,
-    golden: &Path,
-    against: Option<&Path>,
-    shard: Option<Shard>,
-    progress: bool,
-    files: &GateFiles,
-) -> Result<Gate, Error> {
-    gate_with(suite_dir, reference, Baseline { golden, against }, Runner::cli(shard, progress), files)
-}
-
 /// What the gate compares the suites' results with besides the references: golden/, or the
 /// folder of earlier results `against` when given (golden/ is then only protected).
 #[derive(Debug, Clone, Copy)]
@@ -95,9 +82,10 @@ pub struct Baseline<'a> {
     pub against: Option<&'a Path>,
 }
 
-/// [`gate`], `runner` also giving the models run in this process; `against` (a folder of
-/// earlier results) replaces `golden` as the baseline when given.
-pub fn gate_with(
+/// Run the suite and gate it ([`Gate`]; `check` prints it): `runner` gives the shard and the
+/// models run in this process; `against` (a folder of earlier results) replaces `golden` as the
+/// baseline when given.
+pub fn gate(
     suite_dir: &[PathBuf],
     reference: &Path,
     baseline: Baseline,
@@ -155,14 +143,12 @@ pub fn gate_with(
 pub fn check(
     suite_dir: &[PathBuf],
     reference: &Path,
-    golden: &Path,
-    against: Option<&Path>,
-    shard: Option<Shard>,
-    progress: bool,
+    baseline: Baseline,
+    runner: Runner,
     files: &GateFiles,
 ) -> Result<(), Error> {
-    let Gate { findings: all, loosened, suite_of, oscillating } =
-        gate(suite_dir, reference, golden, against, shard, progress, files)?;
+    let Baseline { golden, against } = baseline;
+    let Gate { findings: all, loosened, suite_of, oscillating } = gate(suite_dir, reference, baseline, runner, files)?;
     let verdict = Verdict::of(&all);
     outln!("{verdict}\n");
     out!("{}", console::per_model(&all, &suite_of));

@@ -42,7 +42,7 @@ mod simulate;
 mod suite_run;
 
 pub use bless::bless;
-pub use check::{check, gate, gate_with, Baseline, Gate, GateFiles};
+pub use check::{check, gate, Baseline, Gate, GateFiles};
 pub use contact::{export_contact, import_contact, import_contact_output, ImportOptions};
 pub use expand::expand;
 pub use fit::fit;

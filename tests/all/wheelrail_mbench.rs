@@ -34,13 +34,13 @@ fn worst(fs: &[&Finding]) -> BTreeMap<String, (f64, String)> {
 #[test]
 fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
     let suite = [root().join("scenes/wheelrail")];
+    let golden = root().join("golden");
+    let baseline = commands::Baseline { golden: &golden, against: None };
     let gate = commands::gate(
         &suite,
         &root().join("reference"),
-        &root().join("golden"),
-        None,
-        None,
-        false,
+        baseline,
+        commands::Runner::cli(None, false),
         &GateFiles::default(),
     )
     .unwrap();
