@@ -5,6 +5,7 @@
 
 pub mod bilinear;
 pub mod convolution;
+pub mod coupling;
 pub mod influence;
 pub mod normal;
 
