@@ -144,3 +144,22 @@ fn two_bodies_are_read_combined_and_checked() {
     let err = refused(bodies, "[\"contact\", \"fastsim\"]");
     assert!(err.contains("fastsim") && err.contains("dissimilar bodies only with the exact model"), "{err}");
 }
+
+/// `export contact` gives each body its own POISS, GG and MAXOUT; imported again, the scene has
+/// the same bodies and outer iterations.
+#[test]
+fn dissimilar_bodies_export_and_import_back() {
+    let dir = tempdir("dissimilar_export");
+    import(&dir, "bentall.inp");
+    let text = std::fs::read_to_string(dir.join("scenes/bentall_2.toml")).unwrap();
+    assert!(text.contains("max_outer = 1"), "{text}");
+    creepbench(&dir, &["export", "contact", "scenes/bentall_2.toml", "--out", "back"]);
+    let deck = std::fs::read_to_string(dir.join("back/bentall_2.inp")).unwrap();
+    assert!(deck.contains("  0.31   0.28   23000.0   82000.0    POISS 1,2,  GG 1,2"), "{deck}");
+    assert!(deck.contains("     1   1e-08          MAXGS"), "{deck}");
+    creepbench(&dir, &["import", "contact", "back/bentall_2.inp", "--out", "again"]);
+    let again = std::fs::read_to_string(dir.join("again/bentall_2_1.toml")).unwrap();
+    for line in ["g1_mpa = 23000.0", "poisson1 = 0.31", "g2_mpa = 82000.0", "poisson2 = 0.28", "max_outer = 1"] {
+        assert!(again.contains(line), "{line}: {again}");
+    }
+}
