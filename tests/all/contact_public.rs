@@ -53,7 +53,17 @@ fn the_report_lists_every_case_of_every_deck() {
             let row = format!("| {deck} | {} | ", c.case);
             let line = table.lines().find(|l| l.starts_with(&row)).unwrap_or_else(|| panic!("no row {row}"));
             let status = &line[row.len()..];
-            assert!(status.starts_with("reproduced") || status.starts_with("not supported"), "{line}");
+            // Issue 46: the decks of dissimilar bodies import; their scenes join the suite when
+            // golden/ holds their results (until then: supported, not among these results, or
+            // not printed).
+            let dissimilar = matches!(deck.as_str(), "bentall.inp" | "spence35.inp")
+                || (deck == "testbank.inp" && [3, 4, 5, 9, 25, 26].contains(&c.case));
+            let pending = status.starts_with("supported, not among these results")
+                || status.starts_with("supported; CONTACT printed no totals");
+            assert!(
+                status.starts_with("reproduced") || status.starts_with("not supported") || (dissimilar && pending),
+                "{line}"
+            );
             rows += 1;
         }
     }
@@ -103,7 +113,8 @@ fn the_report_lists_every_case_of_every_deck() {
     let case12 =
         table.lines().find(|l| l.starts_with("| testbank.inp | 12 | not supported: ")).expect("case 12 refused");
     assert!(case12.contains("M = 3: material models other than elastic") && !case12.contains("B = 3"), "{case12}");
-    assert!(table.contains("| spence35.inp | 1 | not supported: K = 4.99995"), "{table}");
+    // Issue 46: dissimilar bodies import (their scenes await golden/ to join the suite).
+    assert!(table.contains("| spence35.inp | 1 | supported, not among these results"), "{table}");
     assert!(rows >= 500, "{rows} rows");
     noise_floor_applies_only_at_contacts_noise_level(&results, &public);
 }
