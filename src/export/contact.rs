@@ -7,7 +7,8 @@
 //! and a shift start (`[init] kind = "shift"`) the first case as T = 1 before the rolling ones
 //! (which read CHI, DQ, VELOC with C = 2). Exact theory, Coulomb friction FSTAT = FKIN = μ (read
 //! again, L = 0, in a case whose μ changed), FN prescribed (N = 1) or the approach (N = 0, PEN), both bodies of the scene's
-//! material, rolling in CONTACT's +x (CHI = 0) with DQ = courant·dx (CONTACT solves a steady case
+//! material (dissimilar bodies, `[material] g1_mpa` … `poisson2`: each its own POISS, GG, and
+//! MAXOUT = `[contact_solver] max_outer`), rolling in CONTACT's +x (CHI = 0) with DQ = courant·dx (CONTACT solves a steady case
 //! with DQ = DX and keeps it: after a steady start at another DQ the first transient case gives DQ
 //! again).
 //!
@@ -321,7 +322,9 @@ fn solver_lines(p: &Problem, falling: bool, first: bool, out: &mut String) {
         " 0{g}{}22{w}1    H-G-I-A-O-W-R   HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW, RETURN",
         if first { 0 } else { 1 }
     );
-    let _ = writeln!(out, "   999   200    30     1   1e-08          MAXGS, MAXIN, MAXNR, MAXOUT, EPS");
+    // Dissimilar bodies: the outer iteration's MAXOUT (1 for K = 0: CONTACT sets it so anyway).
+    let maxout = if p.material.coupled() { p.contact_solver.max_outer } else { 1 };
+    let _ = writeln!(out, "   999   200    30     {maxout}   1e-08          MAXGS, MAXIN, MAXNR, MAXOUT, EPS");
     if falling {
         let _ = writeln!(
             out,
@@ -422,7 +425,12 @@ fn kinematics_and_material(p: &Problem, rolling: Option<(f64, f64, f64)>, out: &
         };
         let _ = writeln!(out, "  {chi}   {dq_mm:?}   {v_mm_s:?}                 CHI, DQ, VELOC");
     }
-    let _ = writeln!(out, "  {:?}   {:?}   {:?}   {:?}    POISS 1,2,  GG 1,2", m.poisson, m.poisson, m.g_mpa, m.g_mpa);
+    // Dissimilar bodies: each body's own constants; else both bodies of the combined material.
+    let (poiss, gg) = match m.bodies {
+        Some(b) => (b.poisson, b.g_mpa),
+        None => ([m.poisson; 2], [m.g_mpa; 2]),
+    };
+    let _ = writeln!(out, "  {:?}   {:?}   {:?}   {:?}    POISS 1,2,  GG 1,2", poiss[0], poiss[1], gg[0], gg[1]);
 }
 
 /// The first case's kinematics, material and geometry lines.

@@ -9,17 +9,49 @@ pub struct Material {
     pub poisson: f64,
     /// Young's modulus E [MPa]; `2 G (1 + ν)` unless given explicitly.
     pub e_mpa: f64,
+    /// Kalker's difference parameter K [-] of two dissimilar bodies ([`combine_bodies`]); 0 for
+    /// quasi-identical bodies (no normal–tangential coupling).
+    #[serde(skip_serializing_if = "is_zero")]
+    pub k: f64,
+    /// The two bodies' own shear moduli [MPa] and Poisson's ratios where the scene gives them
+    /// (`[material] g1_mpa` … `poisson2`); `None`: the combined constants only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bodies: Option<Bodies>,
+}
+
+/// The elastic constants of each body: shear modulus [MPa] and Poisson's ratio of body 1 (the
+/// upper, CONTACT's first) and body 2.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Bodies {
+    pub g_mpa: [f64; 2],
+    pub poisson: [f64; 2],
+}
+
+fn is_zero(v: &f64) -> bool {
+    *v == 0.0
 }
 
 impl Material {
     /// From G and ν; E follows as `2 G (1 + ν)`.
     pub fn from_g(g_mpa: f64, poisson: f64) -> Self {
-        Self { g_mpa, poisson, e_mpa: 2.0 * g_mpa * (1.0 + poisson) }
+        Self { g_mpa, poisson, e_mpa: 2.0 * g_mpa * (1.0 + poisson), k: 0.0, bodies: None }
+    }
+
+    /// From the two bodies' constants, combined as CONTACT combines them ([`combine_bodies`]),
+    /// with their difference parameter K.
+    pub fn from_bodies(bodies: Bodies) -> Self {
+        let m = combine_bodies(bodies.poisson, bodies.g_mpa);
+        Self { k: m.k, bodies: Some(bodies), ..Self::from_g(m.g_mpa, m.poisson) }
+    }
+
+    /// Whether the bodies' normal and tangential problems couple (K ≠ 0).
+    pub fn coupled(&self) -> bool {
+        self.k != 0.0
     }
 
     /// From E and ν; G follows as `E / (2 (1 + ν))`.
     pub fn from_e(e_mpa: f64, poisson: f64) -> Self {
-        Self { g_mpa: e_mpa / (2.0 * (1.0 + poisson)), poisson, e_mpa }
+        Self { g_mpa: e_mpa / (2.0 * (1.0 + poisson)), poisson, e_mpa, k: 0.0, bodies: None }
     }
 
     /// Two-body contact modulus E* [MPa] with `1/E* = 2 (1 − ν²) / E` (two identical bodies).

@@ -136,6 +136,9 @@ fn material_of(scene: &Scene) -> Result<Material, InputError> {
 
 /// A `[material]` table's material from G or E (or both, consistent within [`E_G_TOLERANCE`]) and ν.
 pub fn material_of_spec(m: &crate::scene::MaterialSpec) -> Result<Material, InputError> {
+    if let Some(bodies) = m.bodies {
+        return Ok(Material::from_bodies(bodies));
+    }
     match (m.g_mpa, m.e_mpa) {
         (Some(g), Some(e)) => material_of_g_and_e(g, e, m.poisson),
         (Some(g), None) => Ok(Material::from_g(g, m.poisson)),
@@ -158,7 +161,7 @@ fn material_of_g_and_e(g_mpa: f64, e_mpa: f64, poisson: f64) -> Result<Material,
             ),
         ));
     }
-    Ok(Material { g_mpa, poisson, e_mpa })
+    Ok(Material { e_mpa, ..Material::from_g(g_mpa, poisson) })
 }
 
 /// Kalker's coefficients at the nominal contact `hertz`, from the source the scene names; its

@@ -35,6 +35,10 @@ pub struct ResolvedScene {
     pub g_mpa: f64,
     pub e_mpa: f64,
     pub poisson: f64,
+    /// Kalker's difference parameter K of dissimilar bodies (`[material] g1_mpa` … `poisson2`);
+    /// absent for quasi-identical bodies (K = 0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub kalker_k: Option<f64>,
     pub c11: f64,
     pub c22: f64,
     pub c23: f64,
@@ -141,6 +145,7 @@ impl ResolvedScene {
             g_mpa: p.material.g_mpa,
             e_mpa: p.material.e_mpa,
             poisson: p.material.poisson,
+            kalker_k: p.material.coupled().then_some(p.material.k),
             c11: p.coefficients.c11,
             c22: p.coefficients.c22,
             c23: p.coefficients.c23,

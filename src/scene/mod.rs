@@ -28,6 +28,9 @@ pub struct MaterialSpec {
     pub g_mpa: Option<f64>,
     pub e_mpa: Option<f64>,
     pub poisson: f64,
+    /// The two bodies' own constants (`g1_mpa`, `poisson1`, `g2_mpa`, `poisson2`); then `g_mpa`,
+    /// `e_mpa` and `poisson` are absent and follow from them (`poisson` holds the combined ν).
+    pub bodies: Option<crate::physics::material::Bodies>,
 }
 
 /// The creepage history kinds.
@@ -159,6 +162,21 @@ pub struct ContactSolverOptions {
     /// The influence functions' traction basis (`[contact_solver] influence`, CONTACT's C = 2, 3).
     #[serde(default, skip_serializing_if = "crate::physics::halfspace::influence::Basis::is_default")]
     pub influence: crate::physics::halfspace::influence::Basis,
+    /// Dissimilar bodies (K ≠ 0): the most outer iterations between the normal and tangential
+    /// problems per solve (CONTACT's MAXOUT, its Panagiotopoulos process).
+    #[serde(default = "max_outer", skip_serializing_if = "is_max_outer")]
+    pub max_outer: usize,
+}
+
+/// CONTACT's MAXOUT where the bodies are dissimilar and the input gives none (`contact_addon.f90`).
+pub const MAX_OUTER: usize = 10;
+
+fn max_outer() -> usize {
+    MAX_OUTER
+}
+
+fn is_max_outer(v: &usize) -> bool {
+    *v == MAX_OUTER
 }
 
 /// `[contact_solver] veldep_solves`: the tangential solves of the slip-velocity fixed point.
@@ -261,6 +279,7 @@ impl Default for ContactSolverOptions {
             omgslp: OMGSLP,
             veldep_solves: VeldepSolves::Adaptive,
             influence: crate::physics::halfspace::influence::Basis::Constant,
+            max_outer: MAX_OUTER,
         }
     }
 }

@@ -280,9 +280,14 @@ fn ellipse(c: &mut Section) -> Result<GeometrySpec, InputError> {
     }))
 }
 
-/// `[material]`: g_mpa or e_mpa (or both), and poisson.
+/// `[material]`: g_mpa or e_mpa (or both), and poisson; or the two bodies' g1_mpa, poisson1,
+/// g2_mpa, poisson2 (dissimilar bodies, [`bodies`]).
 pub fn material(top: &mut Section) -> Result<MaterialSpec, InputError> {
     let mut m = top.table("material")?;
+    if let Some(spec) = bodies(&mut m)? {
+        m.finish()?;
+        return Ok(spec);
+    }
     let g_mpa = m.opt_f64("g_mpa", Range::new(0.0, false, 1e7, true))?;
     let e_mpa = m.opt_f64("e_mpa", Range::new(0.0, false, 1e7, true))?;
     let poisson = m.f64("poisson", Range::new(0.0, true, 0.5, false))?;
@@ -294,7 +299,48 @@ pub fn material(top: &mut Section) -> Result<MaterialSpec, InputError> {
         ));
     }
     m.finish()?;
-    Ok(MaterialSpec { g_mpa, e_mpa, poisson })
+    Ok(MaterialSpec { g_mpa, e_mpa, poisson, bodies: None })
+}
+
+/// The keys of the two bodies' constants, in the order they are named.
+const BODY_KEYS: [&str; 4] = ["g1_mpa", "poisson1", "g2_mpa", "poisson2"];
+
+/// `[material]` given per body (CONTACT's GG 1, 2 and POISS 1, 2): all four keys, none of
+/// g_mpa, e_mpa, poisson; the combined constants and Kalker's K follow ([`crate::physics::Material::from_bodies`]).
+fn bodies(m: &mut Section) -> Result<Option<MaterialSpec>, InputError> {
+    // A body may be far stiffer than the pair (CONTACT's "rigid" body of G = 2e7 N/mm²).
+    let modulus = Range::new(0.0, false, 1e12, true);
+    let ratio = Range::new(0.0, true, 0.5, true);
+    let given: Vec<&str> = BODY_KEYS.iter().copied().filter(|k| m.has(k)).collect();
+    if given.is_empty() {
+        return Ok(None);
+    }
+    if let Some(missing) = BODY_KEYS.iter().find(|k| !given.contains(k)) {
+        return Err(InputError::new(
+            m.field(missing),
+            "missing",
+            format!("all four of {} with {}", BODY_KEYS.join(", "), given.join(", ")),
+        ));
+    }
+    if let Some(both) = ["g_mpa", "e_mpa", "poisson"].iter().find(|k| m.has(k)) {
+        return Err(InputError::new(
+            m.field(both),
+            "given with the bodies' g1_mpa .. poisson2",
+            "either the combined g_mpa (or e_mpa) and poisson, or the two bodies' constants",
+        ));
+    }
+    let g = [m.f64("g1_mpa", modulus)?, m.f64("g2_mpa", modulus)?];
+    let nu = [m.f64("poisson1", ratio)?, m.f64("poisson2", ratio)?];
+    let bodies = crate::physics::material::Bodies { g_mpa: g, poisson: nu };
+    let combined = crate::physics::Material::from_bodies(bodies);
+    if combined.poisson >= 0.5 {
+        return Err(InputError::new(
+            m.field("poisson1"),
+            nu[0],
+            "bodies whose combined Poisson's ratio is below 0.5 (both at 0.5 is an incompressible pair: give g_mpa and poisson)",
+        ));
+    }
+    Ok(Some(MaterialSpec { g_mpa: None, e_mpa: None, poisson: combined.poisson, bodies: Some(bodies) }))
 }
 
 /// `[rolling]` (optional): the speed [mm/s] (default 1000), the Courant number (default 1), the
@@ -592,6 +638,9 @@ pub fn contact_solver(top: &mut Section) -> Result<ContactSolverOptions, InputEr
         if let Some(b) = cs.opt_choice("influence", &["constant", "bilinear"])? {
             use crate::physics::halfspace::influence::Basis;
             contact_solver.influence = if b == "bilinear" { Basis::Bilinear } else { Basis::Constant };
+        }
+        if let Some(n) = cs.opt_usize("max_outer", 1, 1000)? {
+            contact_solver.max_outer = n;
         }
         cs.finish()?;
     }

@@ -143,6 +143,13 @@ fn check_external(problem: &Problem) -> Result<(), InputError> {
             "built-in models that solve each row's normal problem (an external model is given FN and the scene's geometry)",
         ));
     }
+    if let Some(name) = external.filter(|_| problem.material.coupled()) {
+        return Err(InputError::new(
+            "solvers",
+            format!("{name:?} (an external model) with dissimilar bodies (K = {})", problem.material.k),
+            format!("dissimilar bodies only with the exact model ({})", contact::NAME),
+        ));
+    }
     if let Some(name) = external.filter(|_| problem.friction_rows.is_some()) {
         return Err(InputError::new(
             "solvers",
@@ -196,6 +203,13 @@ fn check_model(problem: &Problem, m: &ModelDef, shifts: bool) -> Result<(), Inpu
             "creepage.file column courant",
             format!("a rolling distance per row with {:?}", m.name),
             format!("a courant column only with the exact model ({}); [rolling] courant for every model (leave {} out of this scene)", contact::NAME, m.name),
+        ));
+    }
+    if problem.material.coupled() && m.name != contact::NAME {
+        return Err(InputError::new(
+            "material.g1_mpa",
+            format!("dissimilar bodies (K = {}) with {:?}", problem.material.k, m.name),
+            format!("dissimilar bodies only with the exact model ({}), which couples the normal and tangential problems (leave {} out of this scene: it takes G and poisson only)", contact::NAME, m.name),
         ));
     }
     if !problem.normal.is_default() && m.name != contact::NAME {

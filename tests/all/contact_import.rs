@@ -378,8 +378,10 @@ fn testbank_imports_two_cases_and_names_every_other_with_its_reason() {
     // and 11 that continues it with the approach prescribed (N = 0, F = 2: one scene); 17:
     // transient rolling from rest under FX; 8: steady rolling with friction per grid row (V = 3); 2: case 1 with C = 3;
     // 13-16: a shift with B = 2 under FX, rolling under FX (14, 15), then with CKSI and DQ 0.8
-    // on the Hertzian grid given again by A1, AOB (16).
-    assert_eq!(ok, vec![1, 2, 6, 7, 8, 10, 11, 13, 14, 15, 16, 17]);
+    // on the Hertzian grid given again by A1, AOB (16); dissimilar bodies (issue 46): the normal
+    // problems 3 and 5 (T = 0, on which K has no effect), steady rolling under FX (4), 9 and the
+    // shifts 25, 26.
+    assert_eq!(ok, vec![1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 13, 14, 15, 16, 17, 25, 26]);
     assert_eq!(imported.statuses[10].scene.as_deref(), Some("testbank_10"), "{:?}", imported.statuses[10]);
     assert!(
         imported.statuses[10].notes.iter().any(|r| r.starts_with("N = 0: approach prescribed")),
@@ -426,8 +428,11 @@ fn testbank_imports_two_cases_and_names_every_other_with_its_reason() {
     for s in imported.statuses.iter().filter(|s| s.module == 1) {
         assert!(s.scene.is_none() && !s.refused.is_empty() && !s.refused[0].starts_with("MODULE = 1"), "{s:?}");
     }
-    // Case 3: dissimilar materials are refused with Kalker's K.
-    assert!(imported.statuses[2].refused.iter().any(|r| r.starts_with("K = ") && r.contains("dissimilar")));
+    // Case 3 (T = 0): the normal problem of dissimilar bodies, written with the combined
+    // constants; case 4 (steady rolling): the two bodies' own.
+    let scene = |c: usize| &imported.scenes.iter().find(|s| s.cases == [c, c]).expect("imported").files[0].1;
+    assert!(scene(3).contains("[material]\ng_mpa = ") && !scene(3).contains("g1_mpa"), "{}", scene(3));
+    assert!(scene(4).contains("g1_mpa = 200.0") && scene(4).contains("g2_mpa = 1.0"), "{}", scene(4));
     let survey = creepbench::import::contact::survey(&root().join("tests/data/contact_decks/testbank.inp")).unwrap();
     assert_eq!(survey, imported.statuses);
 }
@@ -555,14 +560,19 @@ fn import_as_scenes(reference: &Path, suite: &str, names: &[String]) -> Vec<Stri
 /// CONTACT reads them (`m_subsurf.f90`); the deck is read and every one of its 35 cases is
 /// refused for its real reason, the dissimilar bodies (POISS 0 and 0.5, GG 0.5 and 1e5 MPa).
 #[test]
-fn spence35_is_read_and_its_cases_are_refused_for_dissimilar_materials() {
+fn spence35_is_read_and_its_dissimilar_bodies_imported() {
     let deck = root().join("reference/contact_public/examples/spence35.inp");
     let imported = creepbench::import::contact::import(&deck).unwrap();
     assert_eq!(imported.statuses.len(), 35);
-    assert!(imported.scenes.is_empty());
-    for s in &imported.statuses {
-        assert!(s.refused[0].starts_with("K = 4.99995") && s.refused[0].contains("dissimilar materials"), "{s:?}");
+    assert!(imported.statuses.iter().all(|s| s.refused.is_empty()), "{:?}", imported.statuses);
+    // One history of 35 shifts, the two bodies' constants as given (K = 0.49999 follows).
+    assert_eq!(imported.scenes.len(), 1);
+    assert_eq!(imported.scenes[0].cases, [1, 35]);
+    let scene = &imported.scenes[0].files[0].1;
+    for line in ["g1_mpa = 0.5", "g2_mpa = 100000.0", "poisson1 = 0.0", "poisson2 = 0.0"] {
+        assert!(scene.contains(line), "{scene}");
     }
+    assert!(!scene.contains("max_outer"), "MAXOUT = 10 is the default: {scene}");
 }
 
 /// A falling law's absent term (F < 1e-8) with SABSH = 0: CONTACT takes max(1e-4, SABSH) there

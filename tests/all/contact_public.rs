@@ -55,10 +55,18 @@ fn the_report_lists_every_case_of_every_deck() {
             let status = &line[row.len()..];
             // A wheel–rail case (module 1) has the wheel–rail gate's verdict or the importer's refusal.
             let verdict = status.strip_prefix("wheel–rail (module 1): ").unwrap_or(status);
+            // Issue 46: the decks of dissimilar bodies import; their scenes join the suite when
+            // golden/ holds their results (until then: supported, not among these results, or
+            // not printed).
+            let dissimilar = matches!(deck.as_str(), "bentall.inp" | "spence35.inp")
+                || (deck == "testbank.inp" && [3, 4, 5, 9, 25, 26].contains(&c.case));
+            let pending = status.starts_with("supported, not among these results")
+                || status.starts_with("supported; CONTACT printed no totals");
             assert!(
                 verdict.starts_with("reproduced")
                     || verdict.starts_with("not supported")
-                    || (verdict.starts_with("supported, not among these results") && verdict != status),
+                    || (verdict.starts_with("supported, not among these results") && verdict != status)
+                    || (dissimilar && pending),
                 "{line}"
             );
             rows += 1;
@@ -110,12 +118,13 @@ fn the_report_lists_every_case_of_every_deck() {
     let case12 =
         table.lines().find(|l| l.starts_with("| testbank.inp | 12 | not supported: ")).expect("case 12 refused");
     assert!(case12.contains("M = 3: material models other than elastic") && !case12.contains("B = 3"), "{case12}");
-    assert!(table.contains("| spence35.inp | 1 | not supported: K = 4.99995"), "{table}");
     // Module-1 cases are the wheel–rail gate's (not run here: only scenes/contact_public ran) or
     // refused with their features.
     assert!(table.contains("| iestim_site_b.inp | 1 | wheel–rail (module 1): "), "{table}");
     let t1 = table.lines().find(|l| l.starts_with("| t1_zws.inp | 1 | ")).expect("t1_zws case 1");
     assert!(t1.contains("wheel–rail (module 1): not supported: T = "), "{t1}");
+    // Issue 46: dissimilar bodies import (their scenes await golden/ to join the suite).
+    assert!(table.contains("| spence35.inp | 1 | supported, not among these results"), "{table}");
     assert!(rows >= 500, "{rows} rows");
     noise_floor_applies_only_at_contacts_noise_level(&results, &public);
 }

@@ -14,6 +14,7 @@ mod contact_solver;
 mod contact_to_csv;
 mod contact_wheelrail;
 mod contact_wheelrail_import;
+mod dissimilar;
 mod docs;
 mod envelope;
 mod external_and_gate;

@@ -111,6 +111,17 @@ pub struct State {
     /// INISLP, OMGSLP of the slip-velocity iteration as last read (G = 2, 3, 4); `None`: CONTACT's
     /// defaults 0, 0.5 (`m_hierarch_data.f90` lines 1748-1749).
     pub slip_start: Option<(i64, f64)>,
+    /// MAXOUT as last read (G ≠ 1), the most outer iterations between the normal and tangential
+    /// problems of dissimilar bodies; `None`: none read.
+    pub maxout: Option<i64>,
+}
+
+impl State {
+    /// The outer iterations CONTACT makes for dissimilar bodies (K ≠ 0): MAXOUT as read, at least
+    /// 1; none read: 10 (`m_sinput.f90` warns at MAXOUT ≤ 1 with K ≠ 0 and keeps it).
+    pub fn max_outer(&self) -> usize {
+        self.maxout.map_or(crate::scene::MAX_OUTER, |m| m.max(1) as usize)
+    }
 }
 
 /// A module-3 case: its digits and the state after it.
@@ -320,7 +331,7 @@ impl CaseReader<'_> {
         if d.x == 1 {
             self.lx.group("debug output P-S-F-L-C-I-N", &[Kind::Int], (1, Kind::Int))?;
         }
-        if let Some(start) = self.solver(d.g)? {
+        if let Some(start) = self.solver(d.g, state)? {
             state.slip_start = Some(start);
         }
         self.kinematics(state)?;
@@ -444,13 +455,14 @@ impl CaseReader<'_> {
     }
 
     /// G: the iteration constants; INISLP, OMGSLP where G = 2, 3, 4 gives them.
-    fn solver(&mut self, g: u8) -> Result<Option<(i64, f64)>, DeckError> {
+    fn solver(&mut self, g: u8, state: &mut State) -> Result<Option<(i64, f64)>, DeckError> {
         if g != 1 {
-            self.lx.group(
+            let (v, _) = self.lx.group(
                 "MAXGS, MAXIN, MAXNR, MAXOUT, EPS",
                 &[Kind::Int, Kind::Int, Kind::Int, Kind::Int, Kind::Real],
                 (1, Kind::Int),
             )?;
+            state.maxout = Some(v[3] as i64);
         }
         let start = match g {
             2 | 3 => {

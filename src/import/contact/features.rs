@@ -231,9 +231,9 @@ pub const FEATURES: &[Feature] = &[
     },
     Feature {
         name: "dissimilar materials (normal-tangential coupling)",
-        control: "POISS 1, 2, GG 1, 2",
-        supported: false,
-        reason: "supported: quasi-identical bodies, Kalker's K = 0",
+        control: "POISS 1, 2, GG 1, 2, MAXOUT",
+        supported: true,
+        reason: "imported as [material] g1_mpa, poisson1, g2_mpa, poisson2 (Kalker's K from them) and [contact_solver] max_outer = MAXOUT: the exact solver alternates the normal and tangential problems as CONTACT's Panagiotopoulos process",
         used: |c| {
             let m = combine_bodies(c.state.poiss, c.state.gg_mpa);
             (m.k != 0.0).then(|| format!("K = {:e}", m.k))

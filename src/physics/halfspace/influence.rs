@@ -40,6 +40,22 @@ fn f_xy(x: f64, y: f64) -> f64 {
     -x.hypot(y)
 }
 
+/// Antiderivative of `X/r^2` (d^2/dXdY): `Y ln r + X atan(Y/X)` (CONTACT's `j5`, memo m09002),
+/// continuous through `X = 0` (`X atan(Y/X) -> 0`) and 0 at the origin.
+fn f_xz(x: f64, y: f64) -> f64 {
+    let r2 = x * x + y * y;
+    if r2 == 0.0 {
+        return 0.0;
+    }
+    let turn = if x == 0.0 { 0.0 } else { x * (y / x).atan() };
+    0.5 * y * r2.ln() + turn
+}
+
+/// Antiderivative of `Y/r^2`: `X ln r + Y atan(X/Y)` (CONTACT's `j6`), [`f_xz`] with the axes swapped.
+fn f_yz(x: f64, y: f64) -> f64 {
+    f_xz(y, x)
+}
+
 /// Corner double difference `F(X+hx, Y+hy) - F(X-hx, Y+hy) - F(X+hx, Y-hy) + F(X-hx, Y-hy)`,
 /// i.e. the integral over the rectangle of the mixed derivative of `F`.
 fn double_diff(f: fn(f64, f64) -> f64, x: f64, y: f64, hx: f64, hy: f64) -> f64 {
@@ -119,6 +135,87 @@ impl Basis {
         match self {
             Basis::Constant => rect_integrals(x, y, dx, dy),
             Basis::Bilinear => super::bilinear::hat_integrals(x, y, dx, dy),
+        }
+    }
+}
+
+/// The cross-influence coefficients of two dissimilar bodies (Kalker's difference parameter
+/// `K != 0`, Kalker 1990 eq. 1.44; CONTACT's `cf(:,:,1,3)`, `cf(:,:,2,3)` of `elascf_pcwcns`):
+/// the tangential displacement difference per unit pressure,
+/// `Axz = -K/(pi G) I[X/r^2]` and `Ayz = +K/(pi G) I[Y/r^2]` [mm/MPa] in grid coordinates (CONTACT's
+/// `Axz` is odd in X and keeps its sign under the grid's mirrored x and flipped components, its
+/// `Ayz` is even in X and changes sign), and the normal one per unit tangential traction
+/// `Azx = -Axz`, `Azy = -Ayz` (Betti's reciprocity). Stored as [`Kernel`]: offsets and layout alike.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CrossKernel {
+    pub mx: usize,
+    pub my: usize,
+    /// `Axz` [mm/MPa] at each offset, storage as [`Kernel::index`].
+    pub xz: Vec<f64>,
+    /// `Ayz` [mm/MPa].
+    pub yz: Vec<f64>,
+}
+
+impl CrossKernel {
+    /// The cross coefficients of an `mx x my` grid of `dx x dy` [mm] elements for combined shear
+    /// modulus `g_mpa` [MPa] and difference parameter `k` [-], the field point shifted by
+    /// `offset_mm` [mm] (`[0, 0]`: the ordinary kernel; `dq towards`: the previous position of the
+    /// material, as [`Kernel::rolling`]); uniform tractions over each element (CONTACT's C = 2).
+    pub fn new(
+        (mx, my): (usize, usize),
+        (dx_mm, dy_mm): (f64, f64),
+        (g_mpa, k): (f64, f64),
+        offset_mm: [f64; 2],
+    ) -> Result<CrossKernel, ContactError> {
+        if mx == 0 || my == 0 {
+            return Err(ContactError::EmptyGrid { mx, my });
+        }
+        for (name, value) in
+            [("element size dx [mm]", dx_mm), ("element size dy [mm]", dy_mm), ("shear modulus G [MPa]", g_mpa)]
+        {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(ContactError::OutOfRange { name, value, requirement: "finite and > 0" });
+            }
+        }
+        if !(k.is_finite() && (-0.5..=0.5).contains(&k)) {
+            return Err(ContactError::OutOfRange {
+                name: "difference parameter K",
+                value: k,
+                requirement: "in [-0.5, 0.5]",
+            });
+        }
+        let (nkx, nky) = (2 * mx - 1, 2 * my - 1);
+        let c = k / (std::f64::consts::PI * g_mpa);
+        let (hx, hy) = (0.5 * dx_mm, 0.5 * dy_mm);
+        let (mut xz, mut yz) = (Vec::with_capacity(nkx * nky), Vec::with_capacity(nkx * nky));
+        for kj in 0..nky {
+            let y = (kj as f64 - (my - 1) as f64) * dy_mm - offset_mm[1];
+            for ki in 0..nkx {
+                let x = (ki as f64 - (mx - 1) as f64) * dx_mm - offset_mm[0];
+                xz.push(-c * double_diff(f_xz, x, y, hx, hy));
+                yz.push(c * double_diff(f_yz, x, y, hx, hy));
+            }
+        }
+        if xz.iter().chain(&yz).any(|v| !v.is_finite()) {
+            return Err(ContactError::NonFinite("cross-influence coefficients"));
+        }
+        Ok(CrossKernel { mx, my, xz, yz })
+    }
+
+    /// One component as the `zz` part of a [`Kernel`] of the same grid (the others zero), for a
+    /// [`super::convolution::Convolver`]'s scalar product `u = A p`.
+    pub fn as_scalar(&self, comp: &[f64], (dx_mm, dy_mm): (f64, f64)) -> Kernel {
+        let zero = vec![0.0; comp.len()];
+        Kernel {
+            mx: self.mx,
+            my: self.my,
+            dx_mm,
+            dy_mm,
+            shift_mm: 0.0,
+            zz: comp.to_vec(),
+            xx: zero.clone(),
+            yy: zero.clone(),
+            xy: zero,
         }
     }
 }
@@ -344,6 +441,40 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn cross_coefficients_match_quadrature() {
+        // Axz = -K/(pi G) I[X/r^2], Ayz = K/(pi G) I[Y/r^2] over the source element, against
+        // Gauss-Legendre quadrature off the singular element, and the self term by symmetry.
+        let (dx, dy, g, k) = (0.6, 0.45, 1.0, 0.5);
+        let ck = CrossKernel::new((5, 4), (dx, dy), (g, k), [0.0, 0.0]).unwrap();
+        let kernel = Kernel::new(5, 4, dx, dy, g, 0.0, 0.0).unwrap();
+        let c = k / (std::f64::consts::PI * g);
+        for dj in -3isize..=3 {
+            for di in -4isize..=4 {
+                let (x, y) = (di as f64 * dx, dj as f64 * dy);
+                let idx = kernel.index(di, dj);
+                if di == 0 && dj == 0 {
+                    assert_eq!((ck.xz[idx], ck.yz[idx]), (0.0, 0.0), "odd integrands vanish on the self element");
+                    continue;
+                }
+                let q =
+                    |f: &dyn Fn(f64, f64) -> f64| quad2(f, x - dx / 2.0, x + dx / 2.0, y - dy / 2.0, y + dy / 2.0, 8);
+                let want_xz = -c * q(&|a, b| a / (a * a + b * b));
+                let want_yz = c * q(&|a, b| b / (a * a + b * b));
+                assert!((ck.xz[idx] - want_xz).abs() < 1e-11, "xz at ({di}, {dj}): {} vs {want_xz}", ck.xz[idx]);
+                assert!((ck.yz[idx] - want_yz).abs() < 1e-11, "yz at ({di}, {dj}): {} vs {want_yz}", ck.yz[idx]);
+            }
+        }
+        // Odd in X (xz) and in Y (yz); xz < 0 at X > 0 for K > 0.
+        assert!((ck.xz[kernel.index(2, 1)] + ck.xz[kernel.index(-2, 1)]).abs() < 1e-15);
+        assert!((ck.yz[kernel.index(2, 1)] + ck.yz[kernel.index(2, -1)]).abs() < 1e-15);
+        assert!(ck.xz[kernel.index(1, 0)] < 0.0);
+        // A shift by one element along x is the kernel one column over.
+        let cs = CrossKernel::new((5, 4), (dx, dy), (g, k), [dx, 0.0]).unwrap();
+        assert!((cs.xz[kernel.index(1, 2)] - ck.xz[kernel.index(0, 2)]).abs() < 1e-15);
+        assert!(CrossKernel::new((5, 4), (dx, dy), (g, 0.7), [0.0, 0.0]).is_err());
     }
 
     #[test]

@@ -6,6 +6,7 @@
 pub mod bilinear;
 pub mod blend;
 pub mod convolution;
+pub mod coupling;
 pub mod influence;
 pub mod normal;
 

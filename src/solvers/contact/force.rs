@@ -178,12 +178,86 @@ pub fn solve<R>(
                 jac = differences(&u, &r, &mut |v: &[f64]| at(v, &mut solves).map(|o| o.2))?;
                 remade = true;
             }
+            None if n == 1 => {
+                // One creepage sought and the force does not move with it (full slip, e.g. a
+                // small μ far from the creepage sought): bracket the target by doubling steps
+                // along the linear theory's direction, then regula falsi inside the bracket.
+                let sign = -r[0].signum();
+                let budget = MAX_OUTER.saturating_sub(solves);
+                let mut at1 = |v: f64| at(&[v], &mut solves).map(|(res, f, r)| (res, f, r[0]));
+                if let Some((v, out)) = bracket(u[0], r[0], (sign * mu / slope[dirs[0]], budget), tol, &mut at1)? {
+                    (u, result, f, r) = (vec![v], out.0, out.1, vec![out.2]);
+                }
+                break;
+            }
             None => break,
         }
     }
     let c = creepage(&u);
     memory.last = Some((dirs, u, jac));
     Ok(Found { cx: c[0], cy: c[1], result, reached: f, met: norm(&r) <= tol, solves })
+}
+
+/// The root of a one-creepage residual `at(v)` (its result, forces and residual) from `u0`
+/// (residual `r0`) where the residual is flat: steps `h`, `2h`, `4h` … from `u0` until the
+/// residual changes sign (at most 60 doublings), then the Illinois regula falsi inside the
+/// bracket until |residual| ≤ `tol`, at most `budget` evaluations (solves) in all; `None`: no
+/// bracket found. The best point found is returned even if the tolerance was not met.
+#[allow(clippy::type_complexity)]
+fn bracket<R>(
+    u0: f64,
+    r0: f64,
+    (h, budget): (f64, usize),
+    tol: f64,
+    at: &mut dyn FnMut(f64) -> Result<(R, [f64; 2], f64), ContactError>,
+) -> Result<Option<(f64, (R, [f64; 2], f64))>, ContactError> {
+    if !(h.is_finite() && h != 0.0) {
+        return Ok(None);
+    }
+    let (mut a, mut ra) = (u0, r0);
+    let mut step = h;
+    let mut far = None;
+    let mut evals = 0;
+    for _ in 0..60.min(budget) {
+        evals += 1;
+        let v = u0 + step;
+        let out = at(v)?;
+        if out.2.signum() != r0.signum() || out.2.abs() <= tol {
+            far = Some((v, out));
+            break;
+        }
+        (a, ra) = (v, out.2);
+        step *= 2.0;
+    }
+    let Some((b0, first)) = far else { return Ok(None) };
+    let (mut b, mut rb) = (b0, first.2);
+    let mut best = (b0, first);
+    let mut side = 0;
+    for _ in evals..budget {
+        if best.1 .2.abs() <= tol || rb == ra {
+            break;
+        }
+        let v = (a * rb - b * ra) / (rb - ra);
+        let out = at(v)?;
+        let rv = out.2;
+        if rv.signum() == rb.signum() {
+            (b, rb) = (v, rv);
+            if side == -1 {
+                ra *= 0.5;
+            }
+            side = -1;
+        } else {
+            (a, ra) = (v, rv);
+            if side == 1 {
+                rb *= 0.5;
+            }
+            side = 1;
+        }
+        if rv.abs() < best.1 .2.abs() {
+            best = (v, out);
+        }
+    }
+    Ok(Some(best))
 }
 
 /// Broyden's rank-one update of `jac` (row-major n×n) by the step u → u_new, r → r_new.
@@ -306,6 +380,19 @@ mod tests {
             assert!(found.met, "target {target}: {found:?}");
             assert!((law(found.cx) - target).abs() <= FORCE_TOL * mu, "target {target}: {found:?}");
         }
+    }
+
+    /// Full slip at the start, the force flat in the creepage for 5000 μ/slope (a small μ and a
+    /// free-rolling creepage far from zero, as bentall.inp case 2): bracketed and found.
+    #[test]
+    fn a_flat_start_in_full_slip_is_bracketed() {
+        let (mu, slope, c0) = (1e-4, 3000.0, 5.26e-4);
+        let law = |cx: f64| mu * (slope * (cx - c0) / mu).tanh();
+        let t = Targets { fx: Some(0.0), fy: None };
+        let found =
+            solve(t, [0.0, 0.0], [slope, slope], mu, &mut Memory::default(), |cx, _| Ok(((), [law(cx), 0.0]))).unwrap();
+        assert!(found.met && law(found.cx).abs() <= FORCE_TOL * mu, "{found:?}");
+        assert!((found.cx - c0).abs() < 1e-12 && found.solves <= MAX_OUTER, "{found:?}");
     }
 
     /// F = 1: only cx is sought; cy stays as given.

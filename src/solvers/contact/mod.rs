@@ -22,6 +22,7 @@
 //! when comparing fields).
 
 pub mod anderson;
+pub mod coupled;
 pub mod direction;
 pub mod force;
 pub mod mirror;
@@ -30,6 +31,6 @@ pub mod stepper;
 pub mod tangential;
 pub mod veldep;
 
-pub use crate::physics::halfspace::{convolution, influence, normal, ContactError};
+pub use crate::physics::halfspace::{convolution, coupling, influence, normal, ContactError};
 
 pub use stepper::{ContactRunError, MODEL, NAME};

@@ -2,6 +2,7 @@
 //! once per load, then one tangential solve per sample (steady: [`TangentialSolver::steady`];
 //! transient: [`TangentialSolver::transient_step`] from the last two steps' tractions).
 
+use super::coupled::{self, Couplings, Kind};
 use super::direction;
 use super::force;
 use super::influence::{Basis, Kernel};
@@ -46,6 +47,7 @@ const SECONDS_PER_COST: f64 = 1.3e-7;
 /// A run estimated to take longer than `[limits] max_estimated_s` is refused before it starts.
 fn check(p: &Problem) -> Result<(), InputError> {
     check_kinetic_floor(p)?;
+    check_coupled(p)?;
     if p.friction.is_falling() && p.loading.rows().any(|s| s.courant.is_some()) {
         return Err(InputError::new(
             "creepage.file column courant",
@@ -107,6 +109,41 @@ fn check(p: &Problem) -> Result<(), InputError> {
         p.limits.max_estimated_s,
         format!("a limit above the exact-theory solver's estimated {estimated_s:.0} s for {} rows on {}x{} elements (raise it to run this scene)", p.loading.rows().count(), p.grid.mx, p.grid.my),
     ))
+}
+
+/// Dissimilar bodies (K ≠ 0, [`coupled`]): the outer iteration is written for Coulomb's one μ, a
+/// solved normal problem, uniform tractions, one rolling direction and distance.
+fn check_coupled(p: &Problem) -> Result<(), InputError> {
+    if !p.material.coupled() {
+        return Ok(());
+    }
+    let k = p.material.k;
+    let refuse = |field: &str, what: &str| {
+        Err(InputError::new(
+            field,
+            format!("{what} with dissimilar bodies (K = {k})"),
+            "dissimilar bodies with Coulomb's one mu, a solved normal problem, influence = \"constant\", one rolling direction and distance (the outer iteration between the normal and tangential problems is written for these)",
+        ))
+    };
+    if p.friction.is_falling() {
+        return refuse("friction.law", "a falling friction law");
+    }
+    if p.friction_rows.is_some() {
+        return refuse("friction.mu_rows", "a friction per grid row");
+    }
+    if !p.normal.is_default() {
+        return refuse("normal.pressure", "an imposed pressure");
+    }
+    if p.contact_solver.influence != Basis::Constant {
+        return refuse("contact_solver.influence", "bilinear influence functions");
+    }
+    if p.loading.rows().any(|s| s.courant.is_some()) {
+        return refuse("creepage.file column courant", "a rolling distance per row");
+    }
+    if p.loading.rows().any(|s| s.chi_deg.is_some()) {
+        return refuse("creepage.file column chi_deg", "a rolling direction per row");
+    }
+    Ok(())
 }
 
 /// A falling law needs FKIN > 0 here: the traction bound μ(s)·pn must be positive on the whole
@@ -250,6 +287,8 @@ struct Contact<'a> {
     chi_deg: f64,
     /// The unshifted kernel (a turn builds the shifted one anew).
     k0: Kernel,
+    /// Dissimilar bodies: the normal–tangential coupling ([`coupled`]); `None`: K = 0.
+    coupling: Option<Couplings>,
 }
 
 /// A field in the scene's frame where the solver works in the mirrored one.
@@ -329,8 +368,27 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
         Some(_) => Some(TangentialSolver::for_shifts(&k0, &x, &y).map_err(ContactRunError::Kernel)?),
         None => None,
     };
+    let coupling = match m.coupled() {
+        true => {
+            let steady_dq = if steady_dx.is_some() { g.dx_mm } else { p.rolling.dq_mm };
+            let towards = direction::towards(chi_deg);
+            let setup = coupled::Setup {
+                mx: g.mx,
+                my: g.my,
+                dx_mm: g.dx_mm,
+                dy_mm: g.dy_mm,
+                g_mpa: m.g_mpa,
+                k: m.k,
+                rolling: (p.rolling.motion == Motion::Rolling).then_some((towards, p.rolling.dq_mm, steady_dq)),
+                max_outer: p.contact_solver.max_outer,
+            };
+            Some(Couplings::new(&setup).map_err(ContactRunError::Kernel)?)
+        }
+        false => None,
+    };
     Ok(Box::new(Contact {
         p,
+        coupling,
         normal,
         tangential,
         steady_dx,
@@ -578,6 +636,163 @@ impl Contact<'_> {
     }
 }
 
+/// A solve's tractions and the creepages found under prescribed forces.
+type Solved = (StepResult, Option<[f64; 2]>);
+
+impl Contact<'_> {
+    /// A steady solve (prescribed forces: their creepages sought), warm started from `start`
+    /// (the last outer iteration's tractions), else from the solver's previous steady solution.
+    fn steady_solve(&mut self, at: &Sample, start: Option<&StepResult>) -> Result<Solved, SolveError> {
+        let mut params = self.params(at);
+        let solver = match self.steady_dx.as_mut() {
+            Some(solver) => {
+                params.dq_mm = self.p.grid.dx_mm;
+                solver
+            }
+            None => {
+                // The steady solve rolls dx = [rolling]'s dq whatever a row's own courant says.
+                params.dq_mm = self.p.rolling.dq_mm;
+                &mut self.tangential
+            }
+        };
+        let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.slope, l.pn_sum)).expect("loaded before a solve");
+        let start = start.map(|r| (r.px.as_slice(), r.py.as_slice()));
+        force::solve_sample(at, &params, slope, pn_sum, &mut self.outer, |q| solver.steady(q, start))
+            .map_err(|source| ContactRunError::Step { step: at.step, source }.into())
+    }
+
+    /// The shift from rest of a shift start.
+    fn shift_solve(&mut self, at: &Sample) -> Result<Solved, SolveError> {
+        let params = TangentialParams { dq_mm: 1.0, ..self.params(at) };
+        let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.shift_slope, l.pn_sum)).expect("loaded before a solve");
+        let solver = self.shift_start.as_mut().expect("built for a shift start");
+        let zero = &self.zero;
+        force::solve_sample(at, &params, slope, pn_sum, &mut force::Memory::default(), |q| {
+            solver.transient_step(q, zero, zero, None)
+        })
+        .map_err(|source| ContactRunError::Step { step: at.step, source }.into())
+    }
+
+    /// A transient step (rolling or a shift) after the last step's tractions.
+    fn transient_solve(&mut self, at: &Sample, params: &TangentialParams) -> Result<Solved, SolveError> {
+        let (px, py) = match &self.last {
+            Some(r) => (&r.px, &r.py),
+            None => (&self.zero, &self.zero),
+        };
+        let older = self.older.as_ref().map(|(a, b)| (a.as_slice(), b.as_slice()));
+        let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.slope, l.pn_sum)).expect("loaded before a solve");
+        let tangential = solver_for(&mut self.tangential, &mut self.rolled, params.dq_mm);
+        force::solve_sample(at, params, slope, pn_sum, &mut self.outer, |q| tangential.transient_step(q, px, py, older))
+            .map_err(|source| ContactRunError::Step { step: at.step, source }.into())
+    }
+
+    /// `solve` as it is for K = 0; for dissimilar bodies the outer iteration ([`coupled`]):
+    /// the tangential solve with the pressure's slip, then the normal problem with the traction's
+    /// normal displacement (the traction extrapolated, [`coupled::Extrapolation`]) and the
+    /// tangential solve again (warm started from the last), until the
+    /// change of (pn, px, py) is within the tolerance or `max_outer` solves were made (then the
+    /// step ends at the iteration limit).
+    fn solve_coupled(
+        &mut self,
+        at: &Sample,
+        kind: Kind,
+        mut solve: impl FnMut(&mut Self, Option<&StepResult>) -> Result<Solved, SolveError>,
+    ) -> Result<Solved, SolveError> {
+        let Some(max_outer) = self.coupling.as_ref().map(|c| c.max_outer) else {
+            return solve(self, None);
+        };
+        // The first normal problem takes the last solve's traction (CONTACT's initial estimate,
+        // I = 1): a history's next step starts near its fixed point.
+        if let Some(last) = self.last.take().filter(|_| max_outer > 1) {
+            let done = self.normal_with_traction(at, (&last.px, &last.py));
+            self.last = Some(last);
+            done?;
+        }
+        self.coupled_slip(kind).map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        let mut out = solve(self, None)?;
+        let mut converged = true;
+        let mut traction = coupled::Extrapolation::default();
+        for _ in 1..max_outer {
+            let before = [self.loaded().pn.clone(), out.0.px.clone(), out.0.py.clone()];
+            let (px, py) = traction.next(&out.0.px, &out.0.py);
+            self.normal_with_traction(at, (&px, &py))?;
+            self.coupled_slip(kind).map_err(|source| ContactRunError::Step { step: at.step, source })?;
+            out = solve(self, Some(&out.0))?;
+            let (change, size) =
+                coupled::change([&before[0], &before[1], &before[2]], [&self.loaded().pn, &out.0.px, &out.0.py]);
+            converged = change <= coupled::OUTER_FACTOR * self.p.contact_solver.tolerance * size;
+            if converged {
+                break;
+            }
+        }
+        if !converged && out.0.termination == crate::solvers::Termination::Converged {
+            out.0.termination = crate::solvers::Termination::IterationLimit;
+        }
+        let pn = self.loaded().pn.clone();
+        if let Some(c) = self.coupling.as_mut() {
+            c.previous_pn = pn;
+        }
+        Ok(out)
+    }
+
+    /// The pressure's slip for a solve of `kind`, given to the solver that makes it.
+    fn coupled_slip(&mut self, kind: Kind) -> Result<(), ContactError> {
+        let (Some(c), Some(l)) = (self.coupling.as_mut(), self.loaded.as_ref()) else { return Ok(()) };
+        let (sx, sy) = c.slip(kind, &l.pn)?;
+        let solver = match kind {
+            Kind::Steady => self.steady_dx.as_mut().unwrap_or(&mut self.tangential),
+            Kind::Rolling => &mut self.tangential,
+            Kind::Shift => self
+                .shift_start
+                .as_mut()
+                .filter(|_| self.p.rolling.motion == Motion::Rolling)
+                .unwrap_or(&mut self.tangential),
+        };
+        solver.set_coupled_slip(Some((sx, sy)))
+    }
+
+    /// The normal problem again on the undeformed distance plus the normal displacement of the
+    /// traction `(px, py)` (the solver's frame), at the sample's FN or approach; every solver takes the
+    /// new pressure.
+    fn normal_with_traction(&mut self, at: &Sample, (px, py): (&[f64], &[f64])) -> Result<(), SolveError> {
+        let (p, mx) = (self.p, self.p.grid.mx);
+        let c = self.coupling.as_mut().expect("coupled");
+        let un = c.normal_of(px, py).map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        let un = if self.mirrored { mirror::field(mx, &un) } else { un };
+        let h: Vec<f64> = self.undeformed_mm(at).iter().zip(&un).map(|(h, u)| h + u).collect();
+        let solved = match at.pen_mm {
+            Some(pen_mm) => self
+                .normal
+                .solve_approach(&h, pen_mm, &NormalParams::default())
+                .map_err(|source| ContactRunError::Approach { pen_mm, source })?,
+            None => self
+                .normal
+                .solve(&h, at.fn_n, &NormalParams::default())
+                .map_err(|source| ContactRunError::Normal { fn_n: at.fn_n, source })?,
+        };
+        if !solved.converged {
+            let (iterations, residual) = (solved.iterations, solved.residual);
+            return Err(ContactRunError::NormalNotConverged { fn_n: at.fn_n, iterations, residual }.into());
+        }
+        let pn = if self.mirrored { mirror::field(mx, &solved.pn_mpa) } else { solved.pn_mpa };
+        let pn_sum: f64 = pn.iter().sum();
+        if pn_sum <= 0.0 {
+            return Err(ContactRunError::NoContact { mx, my: p.grid.my, fn_n: at.fn_n }.into());
+        }
+        let solvers =
+            std::iter::once(&mut self.tangential).chain(self.steady_dx.as_mut()).chain(self.shift_start.as_mut());
+        for solver in solvers {
+            solver.set_pressure(&pn).map_err(|source| ContactRunError::Setup { fn_n: at.fn_n, source })?;
+        }
+        let l = self.loaded.as_mut().expect("loaded before a solve");
+        l.pn_max = pn.iter().fold(0.0f64, |a, &b| a.max(b));
+        l.fn_n = pn_sum * p.grid.element_area_mm2();
+        l.pn_sum = pn_sum;
+        l.pn = pn;
+        Ok(())
+    }
+}
+
 impl Stepper for Contact<'_> {
     fn load(&mut self, at: &Sample) -> Result<(), SolveError> {
         let p = self.p;
@@ -641,21 +856,7 @@ impl Stepper for Contact<'_> {
         if self.veldep.is_some() {
             return self.veldep_step(at, true);
         }
-        let mut params = self.params(at);
-        let solver = match self.steady_dx.as_mut() {
-            Some(solver) => {
-                params.dq_mm = self.p.grid.dx_mm;
-                solver
-            }
-            None => {
-                // The steady solve rolls dx = [rolling]'s dq whatever a row's own courant says.
-                params.dq_mm = self.p.rolling.dq_mm;
-                &mut self.tangential
-            }
-        };
-        let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.slope, l.pn_sum)).expect("loaded before a solve");
-        let (r, found) = force::solve_sample(at, &params, slope, pn_sum, &mut self.outer, |q| solver.steady(q, None))
-            .map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        let (r, found) = self.solve_coupled(at, Kind::Steady, |c, start| c.steady_solve(at, start))?;
         self.found = self.unframe(found);
         self.older = None;
         self.after_steady = Some(SteadyStart::of(at));
@@ -665,14 +866,7 @@ impl Stepper for Contact<'_> {
     /// The shift from rest (CONTACT T = 1, P = 2): its traction is the previous traction of the
     /// first rolling step; the prescribed-force iteration then starts afresh.
     fn shift(&mut self, at: &Sample) -> Result<Step, SolveError> {
-        let params = TangentialParams { dq_mm: 1.0, ..self.params(at) };
-        let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.shift_slope, l.pn_sum)).expect("loaded before a solve");
-        let solver = self.shift_start.as_mut().expect("built for a shift start");
-        let zero = &self.zero;
-        let (r, found) = force::solve_sample(at, &params, slope, pn_sum, &mut force::Memory::default(), |q| {
-            solver.transient_step(q, zero, zero, None)
-        })
-        .map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        let (r, found) = self.solve_coupled(at, Kind::Shift, |c, _| c.shift_solve(at))?;
         self.found = found;
         if r.px.iter().chain(&r.py).any(|v| !v.is_finite()) {
             return Err(SolveError::NonFinite { step: at.step });
@@ -691,6 +885,8 @@ impl Stepper for Contact<'_> {
         self.found = None;
         // Prescribed forces: the plain transient step, its creepages sought by the outer iteration.
         let start = self.after_steady.take().filter(|s| s.load_changed(at) && !at.prescribes_force());
+        // Dissimilar bodies: the outer iteration solves every step to its tolerance.
+        let start = start.filter(|_| self.coupling.is_none());
         if let (Some(start), Some(steady), SteadyRestart::Contact) =
             (start, &self.last, self.p.contact_solver.steady_restart)
         {
@@ -706,17 +902,8 @@ impl Stepper for Contact<'_> {
                 return Ok(self.record(r));
             }
         }
-        let (px, py) = match &self.last {
-            Some(r) => (&r.px, &r.py),
-            None => (&self.zero, &self.zero),
-        };
-        let older = self.older.as_ref().map(|(a, b)| (a.as_slice(), b.as_slice()));
-        let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.slope, l.pn_sum)).expect("loaded before a solve");
-        let tangential = solver_for(&mut self.tangential, &mut self.rolled, params.dq_mm);
-        let (r, found) = force::solve_sample(at, &params, slope, pn_sum, &mut self.outer, |q| {
-            tangential.transient_step(q, px, py, older)
-        })
-        .map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        let kind = if self.p.rolling.motion == Motion::Shift { Kind::Shift } else { Kind::Rolling };
+        let (r, found) = self.solve_coupled(at, kind, |c, _| c.transient_solve(at, &params))?;
         self.found = self.unframe(found);
         if r.px.iter().chain(&r.py).any(|v| !v.is_finite()) {
             return Err(SolveError::NonFinite { step: at.step });

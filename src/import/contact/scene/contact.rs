@@ -55,9 +55,29 @@ pub(super) fn write(src: &Source, draft: &mut Draft) -> Result<(), InputError> {
         draft.insert("normal", normal);
     }
     let m = combine_bodies(s.poiss, s.gg_mpa);
-    draft.insert("material", table(vec![("g_mpa", Value::Float(m.g_mpa)), ("poisson", Value::Float(m.poisson))]));
+    let material = match m.k != 0.0 && !normal_only(src) {
+        // Dissimilar bodies: each body's own constants (the combination and K follow from them).
+        // T = 0 solves the normal problem alone, on which K has no effect: the combined constants.
+        true => vec![
+            ("g1_mpa", Value::Float(s.gg_mpa[0])),
+            ("poisson1", Value::Float(s.poiss[0])),
+            ("g2_mpa", Value::Float(s.gg_mpa[1])),
+            ("poisson2", Value::Float(s.poiss[1])),
+        ],
+        false => vec![("g_mpa", Value::Float(m.g_mpa)), ("poisson", Value::Float(m.poisson))],
+    };
+    draft.insert("material", table(material));
     draft.insert("grid", table(grid));
     Ok(())
+}
+
+/// Whether every case of the history solves the normal problem only (T = 0: no tangential
+/// problem, so no traction for K to couple; CONTACT's `panprc` stops after the normal solve).
+fn normal_only(src: &Source) -> bool {
+    src.h
+        .cases
+        .iter()
+        .all(|&k| matches!(&src.cases[k].kind, super::super::deck::CaseKind::Module3(c) if c.digits.t == 0))
 }
 
 /// IPOTCN = −3: the semi-axes AA, BB and the grid's SCALE. With N = 0 CONTACT (`hzcalc3d`) keeps

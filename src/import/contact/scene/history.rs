@@ -65,7 +65,8 @@ pub(super) fn falling(s: &State) -> bool {
 /// FN and a Coulomb friction), named. A falling law and its memory are one for the whole history.
 fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static str> {
     let coulomb = a.friction_law == 0 && b.friction_law == 0;
-    let pairs: [(&'static str, bool); 12] = [
+    let coupled = crate::physics::material::combine_bodies(a.poiss, a.gg_mpa).k != 0.0;
+    let pairs: [(&'static str, bool); 13] = [
         ("FN", load_varies || a.pen_or_fn == b.pen_or_fn),
         // Coulomb: FSTAT alone counts (CONTACT overwrites FKIN with it).
         (
@@ -81,6 +82,7 @@ fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static 
         // or its courant column; not both in one history, `build`).
         ("CHI, DQ", load_varies || (a.chi_rad, a.dq_mm) == (b.chi_rad, b.dq_mm)),
         ("POISS, GG", (a.poiss, a.gg_mpa) == (b.poiss, b.gg_mpa)),
+        ("MAXOUT of dissimilar bodies", !coupled || a.max_outer() == b.max_outer()),
         (
             "the potential contact (IPOTCN and its line)",
             a.potcon == b.potcon

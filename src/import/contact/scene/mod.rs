@@ -251,6 +251,10 @@ fn contact_solver(last: &Case3) -> Option<Value> {
     if last.state.inflcf == 3 {
         pairs.push(("influence", Value::String("bilinear".into())));
     }
+    let coupled = combine_bodies(last.state.poiss, last.state.gg_mpa).k != 0.0;
+    if coupled && last.state.max_outer() != crate::scene::MAX_OUTER {
+        pairs.push(("max_outer", Value::Integer(last.state.max_outer() as i64)));
+    }
     (!pairs.is_empty()).then(|| table(pairs))
 }
 

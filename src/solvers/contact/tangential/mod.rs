@@ -237,6 +237,9 @@ struct Layout {
     spans: Spans,
     /// Elements that enter the contact during a transient step (`dq > dx` only).
     entering: Vec<Entering>,
+    /// Dissimilar bodies: the slip of the pressure's tangential displacements `u'_tz − u_tz` [mm]
+    /// added to the rigid slip of every contact element ([`TangentialSolver::set_coupled_slip`]).
+    coupled: Option<(Vec<f64>, Vec<f64>)>,
 }
 
 impl Layout {
@@ -316,6 +319,12 @@ impl Layout {
             let (wx, wy) = w.at(self.x_mm[k] - ox, self.y_mm[k] - oy);
             bx[k] += dq * wx;
             by[k] += dq * wy;
+        }
+        if let Some((cx, cy)) = &self.coupled {
+            for &k in &self.contact {
+                bx[k] += cx[k];
+                by[k] += cy[k];
+            }
         }
         let Some((ux, uy)) = edge_u else { return };
         for e in &self.entering {
@@ -551,6 +560,7 @@ impl TangentialSolver {
             mask: vec![false; n],
             spans: Spans::new(mx, my, &vec![0.0; n]),
             entering: Vec::new(),
+            coupled: None,
         };
         Ok(TangentialSolver {
             layout,
@@ -593,6 +603,23 @@ impl TangentialSolver {
             });
         }
         lay.pn.copy_from_slice(g_mpa);
+        Ok(())
+    }
+
+    /// Dissimilar bodies (Kalker's K ≠ 0): the slip `(sx, sy)` [mm] the pressures add to every
+    /// contact element's rigid slip, `u'_tz − u_tz` with `u_tz = A_tz pn` now and `u'_tz` at the
+    /// material's previous position (CONTACT's `uvn − usn` of `stang_rhs`); `None`: none (K = 0).
+    /// Kept until set again, through [`TangentialSolver::set_pressure`].
+    pub fn set_coupled_slip(&mut self, slip: Option<(&[f64], &[f64])>) -> Result<(), ContactError> {
+        let n = self.layout.n();
+        self.layout.coupled = match slip {
+            Some((sx, sy)) => {
+                check_grid_array("coupled slip x", sx, n)?;
+                check_grid_array("coupled slip y", sy, n)?;
+                Some((sx.to_vec(), sy.to_vec()))
+            }
+            None => None,
+        };
         Ok(())
     }
 
