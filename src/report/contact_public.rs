@@ -19,28 +19,32 @@ pub const TITLE: &str = "CONTACT's public examples";
 /// One unit of the last printed digit, in half-units: the bound of the gate's rules (k = 2).
 const ONE_PRINTED_UNIT: f64 = 2.0;
 
-/// The model compared case by case: CONTACT's exact theory.
-const SOLVER: &str = "contact";
+/// The models compared case by case: CONTACT's exact theory, and CONTACT's FASTSIM for its M = 3
+/// cases (each imported scene runs the one that computes what its deck asks).
+const SOLVERS: [&str; 2] = ["contact", crate::solvers::fastsim_contact::NAME];
 
 /// Whether any stored scene was imported from a CONTACT deck.
 pub fn applies(scenes: &[StoredScene]) -> bool {
     scenes.iter().any(|s| s.scene.origin.is_some())
 }
 
-/// The worst gated comparison of each (deck, case) over the stored scenes' exact-solver rows (a
-/// quantity that a rule of `tolerances.toml` only reports is left out of the verdict, as the gate
-/// leaves it).
-fn worst_by_case(scenes: &[StoredScene], public: &PublicCases) -> BTreeMap<(String, usize), RowDiff> {
-    let mut out: BTreeMap<(String, usize), RowDiff> = BTreeMap::new();
+/// The worst gated comparison of each (deck, case) over the stored scenes' rows of the
+/// [`SOLVERS`], with the model (a quantity that a rule of `tolerances.toml` only reports is left out
+/// of the verdict, as the gate leaves it).
+fn worst_by_case(scenes: &[StoredScene], public: &PublicCases) -> BTreeMap<(String, usize), (RowDiff, &'static str)> {
+    let mut out: BTreeMap<(String, usize), (RowDiff, &'static str)> = BTreeMap::new();
     for sc in scenes {
-        let (Some(origin), Some(h)) = (&sc.scene.origin, sc.histories.get(SOLVER)) else { continue };
-        for d in public.row_diffs(sc, h).unwrap_or_default() {
-            if !crate::comparison::tolerances::rule(AGAINST, &sc.name, SOLVER, d.quantity).gated {
-                continue;
-            }
-            let key = (origin.file.clone(), d.case);
-            if out.get(&key).is_none_or(|w| d.half_units() > w.half_units()) {
-                out.insert(key, d);
+        let Some(origin) = &sc.scene.origin else { continue };
+        for solver in SOLVERS {
+            let Some(h) = sc.histories.get(solver) else { continue };
+            for d in public.row_diffs(sc, h).unwrap_or_default() {
+                if !crate::comparison::tolerances::rule(AGAINST, &sc.name, solver, d.quantity).gated {
+                    continue;
+                }
+                let key = (origin.file.clone(), d.case);
+                if out.get(&key).is_none_or(|(w, _)| d.half_units() > w.half_units()) {
+                    out.insert(key, (d, solver));
+                }
             }
         }
     }
@@ -48,12 +52,14 @@ fn worst_by_case(scenes: &[StoredScene], public: &PublicCases) -> BTreeMap<(Stri
 }
 
 /// The status of case `case` of `deck`.
-fn status(deck: &str, case: usize, worst: Option<&RowDiff>, survey: Option<&Survey>, printed: bool) -> String {
-    if let Some(d) = worst {
+fn status(deck: &str, case: usize, worst: Option<&(RowDiff, &str)>, survey: Option<&Survey>, printed: bool) -> String {
+    if let Some((d, solver)) = worst {
         let verdict = if d.half_units() <= ONE_PRINTED_UNIT { "reproduced" } else { "**differs**" };
         // A value CONTACT prints at its noise level is measured against the noise floor.
         let unit = if d.quantity.ends_with("_at_noise_floor") { "the noise floor" } else { "the printed rounding" };
-        return format!("{verdict}: worst {:.2} half-units of {unit} ({})", d.half_units(), d.quantity);
+        // The exact solver's rows as before; another model named.
+        let by = if *solver == SOLVERS[0] { String::new() } else { format!(", {solver}") };
+        return format!("{verdict}: worst {:.2} half-units of {unit} ({}{by})", d.half_units(), d.quantity);
     }
     let reasons = match survey {
         Some(Survey::Cases(cases)) => cases.get(&case).map(|r| r.join("; ")),
@@ -90,7 +96,7 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
             refused += usize::from(s.starts_with("not supported") || s.starts_with("not surveyed"));
             if let Some(w) = w {
                 keep.push(table.rows.len());
-                keys.push(w.half_units());
+                keys.push(w.0.half_units());
             }
             table.rows.push(format!("| {deck} | {case} | {s} |"));
         }
@@ -99,8 +105,8 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
     let order = linked_table::largest(&keys, keys.len());
     let keep: Vec<usize> = order.into_iter().map(|i| keep[i]).collect();
     let summary = format!(
-        "Every case of every deck of `reference/contact_public/` (CONTACT's `examples/` and `testbank/`, read from its printed `.ref_out`): reproduced by the exact solver (its worst difference from the printed fx/fn, fy/fn and MZ in half-units of the printed value's last digit; the gate allows {ONE_PRINTED_UNIT}, one printed unit) or not supported, with the feature the importer refuses. {} of {} cases reproduced.",
-        worst.values().filter(|d| d.half_units() <= ONE_PRINTED_UNIT).count(),
+        "Every case of every deck of `reference/contact_public/` (CONTACT's `examples/` and `testbank/`, read from its printed `.ref_out`): reproduced by the exact solver, or for CONTACT's FASTSIM (M = 3) by `fastsim_contact` (its worst difference from the printed fx/fn, fy/fn and MZ in half-units of the printed value's last digit; the gate allows {ONE_PRINTED_UNIT}, one printed unit) or not supported, with the feature the importer refuses. {} of {} cases reproduced.",
+        worst.values().filter(|(d, _)| d.half_units() <= ONE_PRINTED_UNIT).count(),
         table.rows.len()
     );
     let placed = linked_table::place(ID, TITLE, &table, &summary, &keep, "The compared cases, worst first");

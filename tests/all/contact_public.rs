@@ -87,13 +87,21 @@ fn the_report_lists_every_case_of_every_deck() {
             .chain((116..=171).map(|c| ("catt_to_cart.inp", c)))
             // Friction per grid row (V = 3) and the bilinear influence functions (C = 3).
             .chain([("testbank.inp", 8), ("testbank.inp", 2)])
+            // CONTACT's FASTSIM (M = 3, issue 46) by `fastsim_contact`: Hertz's parabolic and
+            // elliptical pressure, rolling along -x (case 8), the original FASTSIM's and the
+            // modified one's (slope reduction, falling friction) traction curves.
+            .chain([2, 3, 5, 6, 8].map(|c| ("fastsim.inp", c)))
+            .chain((61..=120).map(|c| ("tractcurv.inp", c)))
     {
         let row = format!("| {deck} | {case} | reproduced: worst ");
         let line = table.lines().find(|l| l.starts_with(&row)).unwrap_or_else(|| panic!("{row} not reproduced"));
         let worst: f64 = line[row.len()..].split_whitespace().next().unwrap().parse().unwrap();
         assert!(worst <= 2.0, "{line}");
     }
-    assert_eq!(table.lines().filter(|l| l.contains(" | reproduced: ")).count(), 270);
+    assert_eq!(table.lines().filter(|l| l.contains(" | reproduced: ")).count(), 335);
+    // The M = 3 cases are reproduced by CONTACT's FASTSIM, named in their rows.
+    let by_fastsim = table.lines().filter(|l| l.contains(" | reproduced: ") && l.contains(", fastsim_contact)"));
+    assert_eq!(by_fastsim.count(), 65);
     // N = 0: the FN found is compared with the printed FN.
     let fn_checked = |c: usize| format!("| catt_to_cart.inp | {c} | reproduced: ");
     assert!((59..=114).all(|c| table.contains(&fn_checked(c))));

@@ -111,6 +111,9 @@ pub struct State {
     /// INISLP, OMGSLP of the slip-velocity iteration as last read (G = 2, 3, 4); `None`: CONTACT's
     /// defaults 0, 0.5 (`m_hierarch_data.f90` lines 1748-1749).
     pub slip_start: Option<(i64, f64)>,
+    /// K0_MF, ALFAMF, BETAMF of the simplified theories (M = 3, 5) as last read (CONTACT's
+    /// defaults 1, 1, 1 before: no slope reduction).
+    pub slope_mf: Option<[f64; 3]>,
 }
 
 /// A module-3 case: its digits and the state after it.
@@ -505,7 +508,10 @@ impl CaseReader<'_> {
         match d.m {
             1 => drop(self.reals("FG 1, 2, VT 1, 2", 4)?),
             2 => drop(self.reals("FLX, K0_MF, ALFAMF, BETAMF", 4)?),
-            3 | 5 => drop(self.reals("K0_MF, ALFAMF, BETAMF", 3)?),
+            3 | 5 => {
+                let v = self.reals("K0_MF, ALFAMF, BETAMF", 3)?;
+                state.slope_mf = Some([v[0], v[1], v[2]]);
+            }
             4 => drop(self.reals("GG3, LAYTHK, TAU_C0, K_TAU", 4)?),
             _ => {}
         }

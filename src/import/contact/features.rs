@@ -50,7 +50,7 @@ pub const FEATURES: &[Feature] = &[
         name: "traction bound from Hertz's pressure (elliptical or parabolic)",
         control: "B",
         supported: true,
-        reason: "imported as `[normal] pressure = \"elliptical\"` (B = 2) or `\"parabolic\"` (B = 3): Hertz's pressure of the case's ellipse and FN at the element centres, the normal problem not solved (`m_sdis.f90`); `[normal] start_pressure` where only the case that starts a rolling history has it",
+        reason: "imported as `[normal] pressure = \"elliptical\"` (B = 2) or `\"parabolic\"` (B = 3): Hertz's pressure of the case's ellipse and FN at the element centres, the normal problem not solved (`m_sdis.f90`); `[normal] start_pressure` where only the case that starts a rolling history has it; with CONTACT's FASTSIM (M = 3) as `[model] pressure`",
         used: |c| {
             let hertz = matches!(c.state.potcon, Some(Potcon::Hertz { .. }));
             digit("B", c.digits.b, matches!(c.digits.b, 2 | 3) && hertz)
@@ -148,8 +148,15 @@ pub const FEATURES: &[Feature] = &[
         name: "material models other than elastic",
         control: "M",
         supported: false,
-        reason: "supported: M = 0 (elastic half-spaces); viscoelastic (1), CONTACT's simplified theories (2, 3, 5-7) and interface layers (4) are not",
-        used: |c| digit("M", c.digits.m, c.digits.m != 0),
+        reason: "supported: M = 0 (elastic half-spaces) and M = 3 (CONTACT's FASTSIM) in steady rolling (T = 3) with the creepages given (F = 0), one friction coefficient (V = 0) and Hertz's pressure (B = 2, 3); viscoelastic (1), the simplified theory with one flexibility (2), FaStrip (5-7) and interface layers (4) are not",
+        used: |c| digit("M", c.digits.m, c.digits.m != 0 && !contact_fastsim(c)),
+    },
+    Feature {
+        name: "CONTACT's FASTSIM (the simplified theory with three flexibilities)",
+        control: "M",
+        supported: true,
+        reason: "imported as solvers = [\"fastsim_contact\"] (CONTACT's FASTSIM: its coefficient table, blended flexibilities, rigid slip and totals, docs/models.md) with `[model] pressure` Hertz's parabolic (B = 3) or \"ellipsoidal\" (B = 2) pressure and `slope_reduction` = [K0_MF, ALFAMF, BETAMF] where they are not 1, 1, 1",
+        used: |c| contact_fastsim(c).then(|| format!("M = 3, B = {}", c.digits.b)),
     },
     Feature {
         name: "damping",
@@ -283,6 +290,15 @@ pub const FEATURES: &[Feature] = &[
         },
     },
 ];
+
+/// Whether a case is CONTACT's FASTSIM as the import carries it: M = 3 in steady rolling (T = 3)
+/// with the creepages given (F = 0), one friction coefficient (V = 0) and Hertz's pressure imposed
+/// (B = 2, 3) on a Hertzian geometry (IPOTCN < 0).
+pub fn contact_fastsim(c: &Case3) -> bool {
+    let hertz = matches!(c.state.potcon, Some(Potcon::Hertz { .. }));
+    let d = c.digits;
+    d.m == 3 && d.t == 3 && d.f == 0 && d.v == 0 && matches!(d.b, 2 | 3) && hertz
+}
 
 /// The refusals (feature, value) and notes of a case.
 pub fn assess(case: &Case3) -> (Vec<String>, Vec<String>) {

@@ -210,13 +210,18 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     let src = Source::new(file, stem, cases, h);
     let mut draft = Draft { doc: Table::new(), files: Vec::new() };
     draft.insert("name", Value::String(src.name.clone()));
-    draft.insert("solvers", Value::Array(vec![Value::String("contact".into())]));
+    let fastsim = super::features::contact_fastsim(src.first);
+    let solver = if fastsim { crate::solvers::fastsim_contact::NAME } else { "contact" };
+    draft.insert("solvers", Value::Array(vec![Value::String(solver.into())]));
     contact::write(&src, &mut draft)?;
+    if fastsim {
+        draft.insert("model", contact::fastsim_model(&src.first.state, src.first.digits.b));
+    }
     match h.run {
         Run::Sweep => loading::sweep(&src, &mut draft),
         Run::Transient { .. } | Run::Shifts => loading::transient(&src, &mut draft)?,
     }
-    if let Some(solver) = contact_solver(src.last) {
+    if let Some(solver) = contact_solver(src.last).filter(|_| !fastsim) {
         draft.insert("contact_solver", solver);
     }
     if let Some(rolling) = rolling(&src) {
