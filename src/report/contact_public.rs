@@ -4,7 +4,7 @@
 //! supported with the missing feature (the importer's survey, attached by the command).
 
 use crate::comparison::references::contact_output::CaseBody;
-use crate::comparison::references::contact_public::{PublicCases, RowDiff, Survey, AGAINST};
+use crate::comparison::references::contact_public::{PublicCases, RowDiff, Survey, AGAINST, FX, FY};
 use crate::comparison::references::References;
 use crate::report::linked_table::{self, Table};
 use crate::report::section::Section;
@@ -110,6 +110,54 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
         table.rows.len()
     );
     let placed = linked_table::place(ID, TITLE, &table, &summary, &keep, "The compared cases, worst first");
-    let body = format!("{per_deck}\n{}", placed.inline);
+    let body = format!("{per_deck}\n{}{}", placed.inline, fastsim_beside(scenes, public));
     Some(Section { tables: placed.file.into_iter().collect(), ..Section::new(TITLE, body) })
+}
+
+/// The project's FASTSIM beside CONTACT's (issue 46): every scene that runs both, row by row, the
+/// traction coefficient (its larger printed component) as CONTACT printed it and as
+/// `fastsim_contact` and `fastsim` give it, with the exact theory's case at the same creepages
+/// where a scene of the same deck runs it (tractcurv.inp's cases 1-30 beside 61-90 and 91-120).
+fn fastsim_beside(scenes: &[StoredScene], public: &PublicCases) -> String {
+    let mut out = String::new();
+    for sc in scenes {
+        let (Some(origin), Some(theirs), Some(ours)) =
+            (&sc.scene.origin, sc.histories.get(SOLVERS[1]), sc.histories.get("fastsim"))
+        else {
+            continue;
+        };
+        let (Ok(c), Ok(p)) = (public.row_diffs(sc, theirs), public.row_diffs(sc, ours)) else { continue };
+        let largest = |q| c.iter().filter(|d| d.quantity == q).map(|d| d.printed.value.abs()).fold(0.0, f64::max);
+        let q = if largest(FX) >= largest(FY) { FX } else { FY };
+        let creep = |h: &crate::history::History| {
+            h.rows.iter().map(|r| [r.sample.cx, r.sample.cy, r.sample.cs]).collect::<Vec<_>>()
+        };
+        let exact = scenes.iter().find_map(|e| {
+            let h = e.histories.get(SOLVERS[0])?;
+            let same = e.scene.origin.as_ref().is_some_and(|o| o.file == origin.file) && creep(h) == creep(theirs);
+            same.then(|| public.row_diffs(e, h).ok()).flatten()
+        });
+        let pick = |d: &[RowDiff]| d.iter().filter(|d| d.quantity == q).cloned().collect::<Vec<_>>();
+        let (c, p, e) = (pick(&c), pick(&p), exact.as_deref().map(pick).unwrap_or_default());
+        let name = q.trim_end_matches("_in_rounding").replace("_over_", "/");
+        let [first, last] = origin.cases;
+        let cases = if first == last { format!("case {first}") } else { format!("cases {first}-{last}") };
+        let _ = write!(
+            out,
+            "\n### CONTACT's FASTSIM beside the project's: {} {cases} ({name})\n\n| case | cx | cy | cs [1/mm] | exact, CONTACT | contact | FASTSIM, CONTACT | fastsim_contact | fastsim |\n|---|---|---|---|---|---|---|---|---|\n",
+            origin.file
+        );
+        for (k, (dc, dp)) in c.iter().zip(&p).enumerate() {
+            let [cx, cy, cs] = creep(theirs)[k];
+            let (ep, eo) = e.get(k).map_or(("—".into(), "—".into()), |d| {
+                (format!("{:.6} (case {})", d.printed.value, d.case), format!("{:.6}", d.ours))
+            });
+            let _ = writeln!(
+                out,
+                "| {} | {cx} | {cy} | {cs} | {ep} | {eo} | {:.6} | {:.6} | {:.6} |",
+                dc.case, dc.printed.value, dc.ours, dp.ours
+            );
+        }
+    }
+    out
 }

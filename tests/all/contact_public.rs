@@ -102,6 +102,16 @@ fn the_report_lists_every_case_of_every_deck() {
     // The M = 3 cases are reproduced by CONTACT's FASTSIM, named in their rows.
     let by_fastsim = table.lines().filter(|l| l.contains(" | reproduced: ") && l.contains(", fastsim_contact)"));
     assert_eq!(by_fastsim.count(), 65);
+    // CONTACT's FASTSIM beside the project's and the exact theory on tractcurv's traction curve:
+    // case 62 (cx = 0.0004) beside the exact theory's case 2 at the same creepage.
+    assert!(md.contains("### CONTACT's FASTSIM beside the project's: tractcurv.inp cases 61-90 (fx/fn)"), "{md}");
+    let row =
+        md.lines().find(|l| l.starts_with("| 62 | 0.0004 | 0 | 0 | 0.085404 (case 2) | ")).expect("case 62's row");
+    let cells: Vec<f64> = row.split('|').filter_map(|c| c.trim().parse().ok()).collect();
+    // case, cx, cy, cs, contact, FASTSIM printed, fastsim_contact, fastsim (fx/fn = FX/FSTAT/FN · 0.33).
+    let (printed, theirs, ours) = (cells[5], cells[6], cells[7]);
+    assert!((theirs - printed).abs() <= 0.33 * 5e-5, "{row}");
+    assert!((ours - printed).abs() > 0.33 * 1e-4, "the project's FASTSIM departs from CONTACT's: {row}");
     // N = 0: the FN found is compared with the printed FN.
     let fn_checked = |c: usize| format!("| catt_to_cart.inp | {c} | reproduced: ");
     assert!((59..=114).all(|c| table.contains(&fn_checked(c))));

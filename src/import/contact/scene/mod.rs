@@ -211,8 +211,14 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     let mut draft = Draft { doc: Table::new(), files: Vec::new() };
     draft.insert("name", Value::String(src.name.clone()));
     let fastsim = super::features::contact_fastsim(src.first);
-    let solver = if fastsim { crate::solvers::fastsim_contact::NAME } else { "contact" };
-    draft.insert("solvers", Value::Array(vec![Value::String(solver.into())]));
+    // CONTACT's FASTSIM, and the project's beside it where it rolls along +x (reported against the
+    // printed totals, not gated: tolerances.toml); else the exact theory.
+    let solvers: &[&str] = match (fastsim, rows::chi_deg(src.first.state.chi_rad) == 0.0) {
+        (true, true) => &[crate::solvers::fastsim_contact::NAME, crate::solvers::fastsim::MODEL.name],
+        (true, false) => &[crate::solvers::fastsim_contact::NAME],
+        (false, _) => &["contact"],
+    };
+    draft.insert("solvers", Value::Array(solvers.iter().map(|s| Value::String(s.to_string())).collect()));
     contact::write(&src, &mut draft)?;
     if fastsim {
         draft.insert("model", contact::fastsim_model(&src.first.state, src.first.digits.b));
