@@ -19,9 +19,10 @@ pub const TITLE: &str = "CONTACT's public examples";
 /// One unit of the last printed digit, in half-units: the bound of the gate's rules (k = 2).
 const ONE_PRINTED_UNIT: f64 = 2.0;
 
-/// The models compared case by case: CONTACT's exact theory, and CONTACT's FASTSIM for its M = 3
-/// cases (each imported scene runs the one that computes what its deck asks).
-const SOLVERS: [&str; 2] = ["contact", crate::solvers::fastsim_contact::NAME];
+/// The models compared case by case: CONTACT's exact theory, CONTACT's FASTSIM for its M = 3 cases
+/// and its modified FaStrip for M = 5 (each imported scene runs the one that computes what its deck
+/// asks).
+const SOLVERS: [&str; 3] = ["contact", crate::solvers::fastsim_contact::NAME, crate::solvers::fastrip_contact::NAME];
 
 /// Whether any stored scene was imported from a CONTACT deck.
 pub fn applies(scenes: &[StoredScene]) -> bool {
@@ -105,7 +106,7 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
     let order = linked_table::largest(&keys, keys.len());
     let keep: Vec<usize> = order.into_iter().map(|i| keep[i]).collect();
     let summary = format!(
-        "Every case of every deck of `reference/contact_public/` (CONTACT's `examples/` and `testbank/`, read from its printed `.ref_out`): reproduced by the exact solver, or for CONTACT's FASTSIM (M = 3) by `fastsim_contact` (its worst difference from the printed fx/fn, fy/fn and MZ in half-units of the printed value's last digit; the gate allows {ONE_PRINTED_UNIT}, one printed unit) or not supported, with the feature the importer refuses. {} of {} cases reproduced.",
+        "Every case of every deck of `reference/contact_public/` (CONTACT's `examples/` and `testbank/`, read from its printed `.ref_out`): reproduced by the exact solver, or for CONTACT's FASTSIM (M = 3) and modified FaStrip (M = 5) by `fastsim_contact` and `fastrip_contact` (its worst difference from the printed fx/fn, fy/fn and MZ in half-units of the printed value's last digit; the gate allows {ONE_PRINTED_UNIT}, one printed unit) or not supported, with the feature the importer refuses. {} of {} cases reproduced.",
         worst.values().filter(|(d, _)| d.half_units() <= ONE_PRINTED_UNIT).count(),
         table.rows.len()
     );

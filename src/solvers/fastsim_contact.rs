@@ -92,7 +92,7 @@ impl Stepper for FastsimContact<'_> {
         // CONTACT's characteristic creepages take FSTAT (the static coefficient of a falling law).
         let fstat = if self.p.friction.is_falling() { self.p.friction.mu_static() } else { at.mu };
         let flex = blended(self.p, planform, c, fstat, at.fy_target.is_some() || at.fx_target.is_some());
-        let k = self.slope_factor(c, mu);
+        let k = slope_factor(self.p, &self.local.planform, c, mu);
         let rates =
             RigidSlip::new(c.0, c.1, c.2).over_flexibilities(flex.l1_mm3_n / k, flex.l2_mm3_n / k, flex.l3_mm3_n / k);
         let how = (LeadingEdge::Grid, Integration::SpinUpstream);
@@ -132,19 +132,19 @@ impl FastsimContact<'_> {
         }
         self.p.friction.mu_steady(at.speed_mm_s(self.p.rolling.v_mm_s) * at.cx.hypot(at.cy))
     }
+}
 
-    /// The slope reduction's k (`[model] slope_reduction`, 1 without), CONTACT's ε on the
-    /// equivalent ellipse of the loaded elements ([`equivalent_ellipse`]).
-    fn slope_factor(&self, (cx, cy, cs): (f64, f64, f64), mu: f64) -> f64 {
-        let Some([k0, alpha, beta]) = self.p.model.slope_reduction else { return 1.0 };
-        let (a, b) = equivalent_ellipse(&self.p.grid, &self.local.planform);
-        let c11 = Coefficients::from_contact(a, b, self.p.material.poisson).c11;
-        let nu = cy + cs * a;
-        let nu = if nu.abs() < cy.abs() { cy } else { nu };
-        let eps = self.p.material.g_mpa * PI * a * b * k0 * c11 * cx.hypot(nu)
-            / (4.0 * mu * self.local.planform.ellipse.fn_n);
-        k0 * (alpha + (1.0 - alpha) / (1.0 + beta * eps))
-    }
+/// The slope reduction's k at creepages c and friction μ (`[model] slope_reduction`, 1 without),
+/// CONTACT's ε on the equivalent ellipse of the loaded elements ([`equivalent_ellipse`],
+/// `fastsim_params` in m_solvpt.f90).
+pub fn slope_factor(p: &Problem, planform: &Planform, (cx, cy, cs): (f64, f64, f64), mu: f64) -> f64 {
+    let Some([k0, alpha, beta]) = p.model.slope_reduction else { return 1.0 };
+    let (a, b) = equivalent_ellipse(&p.grid, planform);
+    let c11 = Coefficients::from_contact(a, b, p.material.poisson).c11;
+    let nu = cy + cs * a;
+    let nu = if nu.abs() < cy.abs() { cy } else { nu };
+    let eps = p.material.g_mpa * PI * a * b * k0 * c11 * cx.hypot(nu) / (4.0 * mu * planform.ellipse.fn_n);
+    k0 * (alpha + (1.0 - alpha) / (1.0 + beta * eps))
 }
 
 /// Kik and Piotrowski's equivalent ellipse of the loaded elements as CONTACT takes it

@@ -8,6 +8,7 @@
 pub mod brush;
 pub mod contact;
 pub mod fastrip;
+pub mod fastrip_contact;
 pub mod fastsim;
 pub mod fastsim_contact;
 pub mod kpec;
@@ -88,6 +89,7 @@ pub const MODELS: &[&ModelDef] = &[
     &she::MODEL,
     &polach::MODEL,
     &fastrip::MODEL,
+    &fastrip_contact::MODEL,
     &relaxation::MODEL,
     &kpec::KPEC,
     &kpec::ANALYN,

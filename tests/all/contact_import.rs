@@ -226,14 +226,16 @@ fn cattaneo_imports_its_normal_case_and_the_shift_by_force() {
 
 /// fastsim.inp: case 1 the exact theory; cases 2, 3, 5, 6, 8 CONTACT's FASTSIM (M = 3, issue 46) on
 /// Hertz's parabolic (B = 3) or elliptical (B = 2) pressure, case 8 rolling along -x; cases 4 and 7
-/// FaStrip (M = 5), refused.
+/// its modified FaStrip (M = 5).
 #[test]
-fn fastsim_imports_the_exact_theory_and_contacts_fastsim_and_refuses_fastrip() {
+fn fastsim_imports_the_exact_theory_and_contacts_fastsim_and_fastrip() {
     let imported = import_deck("fastsim.inp");
-    assert_eq!(split(&imported), (vec![1, 2, 3, 5, 6, 8], vec![4, 7]));
+    assert_eq!(split(&imported), ((1..=8).collect(), vec![]));
     for k in [3, 6] {
         let s = &imported.statuses[k];
-        assert!(s.refused.iter().any(|r| r.starts_with("M = 5: material models other than elastic")), "{s:?}");
+        assert!(s.notes.iter().any(|r| r.starts_with("M = 5, B = 2: CONTACT's modified FaStrip")), "{s:?}");
+        let p = scene_of(&imported, &format!("fastsim_{}", k + 1));
+        assert_eq!(p.solvers, ["fastrip_contact"]);
     }
     for k in [1, 2, 4, 5, 7] {
         let s = &imported.statuses[k];

@@ -91,6 +91,8 @@ fn the_report_lists_every_case_of_every_deck() {
             // elliptical pressure, rolling along -x (case 8), the original FASTSIM's and the
             // modified one's (slope reduction, falling friction) traction curves.
             .chain([2, 3, 5, 6, 8].map(|c| ("fastsim.inp", c)))
+            // CONTACT's modified FaStrip (M = 5) by `fastrip_contact`.
+            .chain([4, 7].map(|c| ("fastsim.inp", c)))
             .chain((61..=120).map(|c| ("tractcurv.inp", c)))
     {
         let row = format!("| {deck} | {case} | reproduced: worst ");
@@ -98,10 +100,12 @@ fn the_report_lists_every_case_of_every_deck() {
         let worst: f64 = line[row.len()..].split_whitespace().next().unwrap().parse().unwrap();
         assert!(worst <= 2.0, "{line}");
     }
-    assert_eq!(table.lines().filter(|l| l.contains(" | reproduced: ")).count(), 335);
+    assert_eq!(table.lines().filter(|l| l.contains(" | reproduced: ")).count(), 337);
     // The M = 3 cases are reproduced by CONTACT's FASTSIM, named in their rows.
     let by_fastsim = table.lines().filter(|l| l.contains(" | reproduced: ") && l.contains(", fastsim_contact)"));
     assert_eq!(by_fastsim.count(), 65);
+    let by_fastrip = table.lines().filter(|l| l.contains(" | reproduced: ") && l.contains(", fastrip_contact)"));
+    assert_eq!(by_fastrip.count(), 2);
     // CONTACT's FASTSIM beside the project's and the exact theory on tractcurv's traction curve:
     // case 62 (cx = 0.0004) beside the exact theory's case 2 at the same creepage.
     assert!(md.contains("### CONTACT's FASTSIM beside the project's: tractcurv.inp cases 61-90 (fx/fn)"), "{md}");

@@ -51,7 +51,7 @@ pub(super) fn write(src: &Source, draft: &mut Draft) -> Result<(), InputError> {
         contact.push(("pen_mm", Value::Float(src.rows[0][3])));
     }
     draft.insert("contact", table(contact));
-    let fastsim = super::super::features::contact_fastsim(src.first);
+    let fastsim = super::super::features::contact_simplified(src.first).is_some();
     if let Some(normal) = normal_table(src.cases, src.h).filter(|_| !fastsim) {
         draft.insert("normal", normal);
     }
@@ -184,7 +184,7 @@ fn friction_table(s: &State) -> Option<Value> {
     Some(table(pairs))
 }
 
-/// `[model]` of CONTACT's FASTSIM (M = 3): Hertz's pressure of its B (3 parabolic, 2 ellipsoidal)
+/// `[model]` of CONTACT's FASTSIM (M = 3) or FaStrip (M = 5): Hertz's pressure of its B (3 parabolic, 2 ellipsoidal)
 /// and the slope reduction K0_MF, ALFAMF, BETAMF where it is not 1, 1, 1 (none).
 pub(super) fn fastsim_model(s: &State, b: u8) -> Value {
     let shape = if b == 2 { "ellipsoidal" } else { "parabolic" };

@@ -210,13 +210,18 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     let src = Source::new(file, stem, cases, h);
     let mut draft = Draft { doc: Table::new(), files: Vec::new() };
     draft.insert("name", Value::String(src.name.clone()));
-    let fastsim = super::features::contact_fastsim(src.first);
+    let simplified = super::features::contact_simplified(src.first);
+    let fastsim = simplified.is_some();
     // CONTACT's FASTSIM, and the project's beside it where it rolls along +x (reported against the
-    // printed totals, not gated: tolerances.toml); else the exact theory.
-    let solvers: &[&str] = match (fastsim, rows::chi_deg(src.first.state.chi_rad) == 0.0) {
-        (true, true) => &[crate::solvers::fastsim_contact::NAME, crate::solvers::fastsim::MODEL.name],
-        (true, false) => &[crate::solvers::fastsim_contact::NAME],
-        (false, _) => &["contact"],
+    // printed totals, not gated: tolerances.toml); CONTACT's FaStrip; else the exact theory.
+    let along_x = rows::chi_deg(src.first.state.chi_rad) == 0.0;
+    let solvers: &[&str] = match simplified {
+        Some(crate::solvers::fastsim_contact::NAME) if along_x => {
+            &[crate::solvers::fastsim_contact::NAME, crate::solvers::fastsim::MODEL.name]
+        }
+        Some(crate::solvers::fastsim_contact::NAME) => &[crate::solvers::fastsim_contact::NAME],
+        Some(_) => &[crate::solvers::fastrip_contact::NAME],
+        None => &["contact"],
     };
     draft.insert("solvers", Value::Array(solvers.iter().map(|s| Value::String(s.to_string())).collect()));
     contact::write(&src, &mut draft)?;
