@@ -33,7 +33,7 @@ pub const MODEL: ModelDef = ModelDef {
     summary: "CONTACT's FASTSIM (its M = 3, m_solvpt.f90): Kalker's three flexibilities of CONTACT's coefficient table blended towards one at large creepage, the rigid slip at the element centre (spin dx/6 upstream), totals over FN",
     extra_columns: &["n_adhesion", "n_slip", CARRIED_LOAD],
     iterative: false,
-    prescribed_forces: false,
+    prescribed_forces: true,
     shifts: false,
     normal_rows: false,
     check,
@@ -52,6 +52,13 @@ fn check(p: &Problem) -> Result<(), InputError> {
             format!("no [geometry] section when the scene runs {NAME}: its flexibilities are those of Hertz's ellipse (CONTACT's IPOTCN < 0); on a contact given per element run fastsim"),
         ));
     }
+    if p.loading.rows().any(|s| s.fy_target.is_some()) {
+        return Err(InputError::new(
+            "creepage.fy_over_fn",
+            format!("Fy/FN prescribed with {NAME:?}"),
+            "Fx/FN prescribed (CONTACT's F = 1) or the creepages given: CONTACT's FASTSIM finds cx only",
+        ));
+    }
     let turned = p.loading.rows().map(|s| s.chi_deg_or(p.rolling.chi_deg)).find(|&c| c != 0.0 && c != 180.0);
     if let Some(chi) = turned {
         return Err(InputError::new(
@@ -65,13 +72,15 @@ fn check(p: &Problem) -> Result<(), InputError> {
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let local = p.local_contact(p.loading.first().fn_n);
-    Ok(Box::new(FastsimContact { p, local, t: Tractions::zero(p.grid.len()) }))
+    Ok(Box::new(FastsimContact { p, local, t: Tractions::zero(p.grid.len()), solved: None }))
 }
 
 struct FastsimContact<'a> {
     p: &'a Problem,
     local: LocalContact,
     t: Tractions,
+    /// The creepages found under a prescribed Fx/FN.
+    solved: Option<[f64; 2]>,
 }
 
 impl Stepper for FastsimContact<'_> {
@@ -83,33 +92,39 @@ impl Stepper for FastsimContact<'_> {
     }
 
     fn steady(&mut self, at: &Sample) -> Result<Step, SolveError> {
-        let backward = at.chi_deg_or(self.p.rolling.chi_deg) == 180.0;
-        // Rolling along −x is the mirror image in x of rolling along +x with cx and cs reversed.
-        let sign = if backward { -1.0 } else { 1.0 };
-        let c = (sign * at.cx, at.cy, sign * at.cs);
-        let (planform, grid) = (&self.local.planform, &self.p.grid);
-        let mu = self.mu(at);
-        // CONTACT's characteristic creepages take FSTAT (the static coefficient of a falling law).
-        let fstat = if self.p.friction.is_falling() { self.p.friction.mu_static() } else { at.mu };
-        let flex = blended(self.p, planform, c, fstat, at.fy_target.is_some() || at.fx_target.is_some());
-        let k = slope_factor(self.p, &self.local.planform, c, mu);
-        let rates =
-            RigidSlip::new(c.0, c.1, c.2).over_flexibilities(flex.l1_mm3_n / k, flex.l2_mm3_n / k, flex.l3_mm3_n / k);
-        let how = (LeadingEdge::Grid, Integration::SpinUpstream);
-        let n_slip = brush::steady_march(grid, &self.local, mu, &rates, how, &mut self.t);
-        let (sx, sy, m) = self.t.sums(grid);
-        let per = grid.element_area_mm2() / planform.ellipse.fn_n;
-        Ok(Step {
-            fx_over_fn: sign * sx * per,
-            fy_over_fn: sy * per,
-            mz_nmm: sign * m * grid.element_area_mm2(),
-            extra: vec![
-                (planform.loaded - n_slip) as f64,
-                n_slip as f64,
-                planform.pressure_sum_mpa * grid.element_area_mm2(),
-            ],
-            termination: Termination::Direct,
-        })
+        let Some(target) = at.fx_target else {
+            self.solved = None;
+            return Ok(self.solve(at, at.cx));
+        };
+        // Fx/FN prescribed (CONTACT F = 1): cx found by bisection (Fx/FN rises with cx), to the
+        // last bit of cx, without blending (CONTACT's `simpflex` blends only given creepages).
+        let mut half = 1e-4;
+        let (mut lo, mut hi) = (-half, half);
+        while self.solve(at, lo).fx_over_fn > target || self.solve(at, hi).fx_over_fn < target {
+            half *= 2.0;
+            (lo, hi) = (-half, half);
+            if half > 1.0 {
+                return Err(SolveError::NonFinite { step: at.step });
+            }
+        }
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if self.solve(at, mid).fx_over_fn < target {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let cx = 0.5 * (lo + hi);
+        self.solved = Some([cx, at.cy]);
+        Ok(self.solve(at, cx))
+    }
+
+    fn solved_creepage(&self) -> Option<[f64; 2]> {
+        self.solved
     }
 
     /// No memory: the steady response at this step's creepage.
@@ -123,6 +138,37 @@ impl Stepper for FastsimContact<'_> {
 }
 
 impl FastsimContact<'_> {
+    /// The march at longitudinal creepage `cx` (the sample's other creepages).
+    fn solve(&mut self, at: &Sample, cx: f64) -> Step {
+        let backward = at.chi_deg_or(self.p.rolling.chi_deg) == 180.0;
+        // Rolling along −x is the mirror image in x of rolling along +x with cx and cs reversed.
+        let sign = if backward { -1.0 } else { 1.0 };
+        let c = (sign * cx, at.cy, sign * at.cs);
+        let (planform, grid) = (&self.local.planform, &self.p.grid);
+        let mu = self.mu(at);
+        // CONTACT's characteristic creepages take FSTAT (the static coefficient of a falling law).
+        let fstat = if self.p.friction.is_falling() { self.p.friction.mu_static() } else { at.mu };
+        let flex = blended(self.p, planform, c, fstat, at.fy_target.is_some() || at.fx_target.is_some());
+        let k = slope_factor(self.p, &self.local.planform, c, mu);
+        let rates =
+            RigidSlip::new(c.0, c.1, c.2).over_flexibilities(flex.l1_mm3_n / k, flex.l2_mm3_n / k, flex.l3_mm3_n / k);
+        let how = (LeadingEdge::Grid, Integration::SpinUpstream);
+        let n_slip = brush::steady_march(grid, &self.local, mu, &rates, how, &mut self.t);
+        let (sx, sy, m) = self.t.sums(grid);
+        let per = grid.element_area_mm2() / planform.ellipse.fn_n;
+        Step {
+            fx_over_fn: sign * sx * per,
+            fy_over_fn: sy * per,
+            mz_nmm: sign * m * grid.element_area_mm2(),
+            extra: vec![
+                (planform.loaded - n_slip) as f64,
+                n_slip as f64,
+                planform.pressure_sum_mpa * grid.element_area_mm2(),
+            ],
+            termination: Termination::Direct,
+        }
+    }
+
     /// The coefficient of friction: the sample's with Coulomb's law; with a falling law its
     /// value at the rigid slip velocity V √(cx² + cy²), one for the whole contact (CONTACT's
     /// `fastsim_params` after Spiryagin et al. 2013).

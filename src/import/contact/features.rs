@@ -148,7 +148,7 @@ pub const FEATURES: &[Feature] = &[
         name: "material models other than elastic",
         control: "M",
         supported: false,
-        reason: "supported: M = 0 (elastic half-spaces), M = 3 (CONTACT's FASTSIM) and M = 5 (its modified FaStrip, with Coulomb friction rolling along +x) in steady rolling (T = 3) with the creepages given (F = 0), one friction coefficient (V = 0) and Hertz's pressure (B = 2, 3); viscoelastic (1), the simplified theory with one flexibility (2), the original FaStrip (6, 7) and interface layers (4) are not",
+        reason: "supported: M = 0 (elastic half-spaces), M = 3 (CONTACT's FASTSIM, also with FX prescribed, F = 1) and M = 5 (its modified FaStrip, with Coulomb friction rolling along +x) in steady rolling (T = 3) with the creepages given (F = 0), one friction coefficient (V = 0) and Hertz's pressure (B = 2, 3); viscoelastic (1), the simplified theory with one flexibility (2), the original FaStrip (6, 7) and interface layers (4) are not",
         used: |c| digit("M", c.digits.m, c.digits.m != 0 && contact_simplified(c).is_none()),
     },
     Feature {
@@ -299,17 +299,17 @@ pub const FEATURES: &[Feature] = &[
 ];
 
 /// Whether a case is CONTACT's FASTSIM as the import carries it: M = 3 in steady rolling (T = 3)
-/// with the creepages given (F = 0), one friction coefficient (V = 0) and Hertz's pressure imposed
-/// (B = 2, 3) on a Hertzian geometry (IPOTCN < 0).
+/// with the creepages given (F = 0) or FX prescribed (F = 1), one friction coefficient (V = 0) and
+/// Hertz's pressure imposed (B = 2, 3) on a Hertzian geometry (IPOTCN < 0).
 pub fn contact_fastsim(c: &Case3) -> bool {
-    c.digits.m == 3 && simplified_setting(c)
+    c.digits.m == 3 && simplified_setting(c, 1)
 }
 
 /// Whether a case is CONTACT's modified FaStrip as the import carries it: M = 5 in the setting of
 /// [`contact_fastsim`], with Coulomb friction (L = 0) rolling along +x (CHI = 0).
 pub fn contact_fastrip(c: &Case3) -> bool {
     let along_x = super::scene::chi_deg(c.state.chi_rad) == 0.0;
-    c.digits.m == 5 && simplified_setting(c) && c.state.friction_law == 0 && along_x
+    c.digits.m == 5 && simplified_setting(c, 0) && c.state.friction_law == 0 && along_x
 }
 
 /// The model that runs a case of CONTACT's simplified theories, if the import carries it.
@@ -323,12 +323,13 @@ pub fn contact_simplified(c: &Case3) -> Option<&'static str> {
     }
 }
 
-/// Steady rolling (T = 3) with the creepages given (F = 0), one friction coefficient (V = 0) and
-/// Hertz's pressure imposed (B = 2, 3) on a Hertzian geometry (IPOTCN < 0).
-fn simplified_setting(c: &Case3) -> bool {
+/// Steady rolling (T = 3) with the creepages given (F = 0) or FX prescribed (F = 1, where `f_max`
+/// allows it), one friction coefficient (V = 0) and Hertz's pressure imposed (B = 2, 3) on a
+/// Hertzian geometry (IPOTCN < 0).
+fn simplified_setting(c: &Case3, f_max: u8) -> bool {
     let hertz = matches!(c.state.potcon, Some(Potcon::Hertz { .. }));
     let d = c.digits;
-    d.t == 3 && d.f == 0 && d.v == 0 && matches!(d.b, 2 | 3) && hertz
+    d.t == 3 && d.f <= f_max && d.v == 0 && matches!(d.b, 2 | 3) && hertz
 }
 
 /// The refusals (feature, value) and notes of a case.

@@ -212,11 +212,12 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     draft.insert("name", Value::String(src.name.clone()));
     let simplified = super::features::contact_simplified(src.first);
     let fastsim = simplified.is_some();
-    // CONTACT's FASTSIM, and the project's beside it where it rolls along +x (reported against the
-    // printed totals, not gated: tolerances.toml); CONTACT's FaStrip; else the exact theory.
+    // CONTACT's FASTSIM, and the project's beside it where it rolls along +x with the creepages
+    // given (reported against the printed totals, not gated: tolerances.toml); CONTACT's FaStrip;
+    // else the exact theory.
     let along_x = rows::chi_deg(src.first.state.chi_rad) == 0.0;
     let solvers: &[&str] = match simplified {
-        Some(crate::solvers::fastsim_contact::NAME) if along_x => {
+        Some(crate::solvers::fastsim_contact::NAME) if along_x && src.first.digits.f == 0 => {
             &[crate::solvers::fastsim_contact::NAME, crate::solvers::fastsim::MODEL.name]
         }
         Some(crate::solvers::fastsim_contact::NAME) => &[crate::solvers::fastsim_contact::NAME],
