@@ -150,14 +150,23 @@ pub fn evaluate(
 /// Relative margin by which a model's traction coefficient may exceed its bound μ (rounding).
 pub const BOUND_MARGIN: f64 = 1e-6;
 
-/// A model's traction coefficient |(Fx, Fy)|/FN beyond its bound μ (thesis Eq. 2.27) by more than
-/// [`BOUND_MARGIN`], or not finite: a gated finding per scene and model (none when within), so a
-/// model that breaks physics fails the gate whatever its baseline says.
+/// A model's traction coefficient |(Fx, Fy)|/FN beyond its bound μ (thesis Eq. 2.27; μ times the
+/// load its pressure carries over FN where the model reports that load,
+/// [`crate::solvers::fastsim_contact::CARRIED_LOAD`]) by more
+/// than [`BOUND_MARGIN`], or not finite: a gated finding per scene and model (none when within),
+/// so a model that breaks physics fails the gate whatever its baseline says.
 pub fn traction_bound(s: &StoredScene, against: Against) -> Vec<Finding> {
     let mut out = Vec::new();
     for (solver, h) in &s.histories {
+        let carried: Option<BTreeMap<usize, f64>> = h
+            .column(crate::solvers::fastsim_contact::CARRIED_LOAD)
+            .map(|v| h.rows.iter().map(|r| r.sample.step).zip(v).collect());
+        let share = |r: &crate::history::Row| {
+            carried.as_ref().and_then(|c| c.get(&r.sample.step)).map_or(1.0, |n| n / r.sample.fn_n)
+        };
         let beyond = |(coef, r): &(f64, &crate::history::Row)| {
-            let limit = if r.sample.mu.is_nan() { f64::INFINITY } else { r.sample.mu * (1.0 + BOUND_MARGIN) };
+            let limit =
+                if r.sample.mu.is_nan() { f64::INFINITY } else { r.sample.mu * share(r) * (1.0 + BOUND_MARGIN) };
             // NaN counts as beyond.
             coef.partial_cmp(&limit).is_none_or(std::cmp::Ordering::is_gt)
         };

@@ -163,6 +163,33 @@ impl Coefficients {
         Coefficients { c11: v[0], c22: v[1], c23: v[2], c33: v[3] }
     }
 
+    /// CONTACT's own interpolation of the same table (`linrol`, m_hertz.f90; used by its FASTSIM
+    /// and FaStrip): g = min(a/b, b/a), linear in g between the rows of its half of the table,
+    /// quadratic in ν through ν = 0, 0.25, 0.5 on the reciprocals 1/c; for g < 0.101 Kalker's
+    /// slender-ellipse asymptotes (a < b: c11 = π²/(4(1−ν)), c22 = π²/4, c23 = π√g (1 + ν(ln(16/g) − 5))
+    /// /(3(1−ν)); a > b: its closed forms in ln(16/g²)). c33 (which CONTACT's table has not) is
+    /// [`Coefficients::from_table`]'s.
+    pub fn from_contact(a_mm: f64, b_mm: f64, nu: f64) -> Self {
+        let c33 = Self::from_table(a_mm, b_mm, nu).c33;
+        let (g, a_le_b) = if a_mm <= b_mm { (a_mm / b_mm, true) } else { (b_mm / a_mm, false) };
+        let [c11, c22, c23] = if g < 0.101 {
+            slender_asymptotes(g, nu, a_le_b)
+        } else {
+            // CONTACT's row k (1-based) is g = k/10: rows 0..9 of TABLE_A1 for a <= b, 18..9 for a > b.
+            let k = (10.0 * g - 0.005) as usize;
+            let w = 10.0 * g - k as f64;
+            let row = |k: usize| if a_le_b { TABLE_A1[k - 1] } else { TABLE_A1[19 - k] };
+            let (lo, hi) = (row(k), row(k + 1));
+            [0, 1, 2].map(|c| {
+                let at = |n: usize| w * hi[c][n] + (1.0 - w) * lo[c][n];
+                let inv = (nu - 0.25) * (nu - 0.5) * 8.0 / at(0) - (nu - 0.5) * nu * 16.0 / at(1)
+                    + nu * (nu - 0.25) * 8.0 / at(2);
+                1.0 / inv
+            })
+        };
+        Coefficients { c11, c22, c23, c33 }
+    }
+
     /// The polynomial fit Eq. 2.36 (ν = 0.27; stated for 1/25 ≤ b/a ≤ 25); it has no c33, which
     /// comes from Table A1 at ν = 0.27.
     pub fn from_fit(a_mm: f64, b_mm: f64) -> Self {
@@ -205,6 +232,22 @@ impl SlopeReduction {
         let eps = self.eps_scale * cx.hypot(nu) / mu;
         self.k0 * (self.alpha + (1.0 - self.alpha) / (1.0 + self.beta * eps))
     }
+}
+
+/// Kalker's asymptotes of c11, c22, c23 for a slender ellipse, g = min(a/b, b/a) → 0, as CONTACT's
+/// `linrol` takes them below g = 0.101 (`a_le_b`: the ellipse long across the rolling direction).
+fn slender_asymptotes(g: f64, nu: f64, a_le_b: bool) -> [f64; 3] {
+    if a_le_b {
+        let c23 = PI * g.sqrt() / (3.0 * (1.0 - nu)) * (1.0 + nu * ((16.0 / g).ln() - 5.0));
+        return [PI * PI / (4.0 * (1.0 - nu)), PI * PI / 4.0, c23];
+    }
+    let al = (16.0 / (g * g)).ln();
+    let k = 3.0 - 4f64.ln();
+    let c11 = 2.0 * PI / (al - 2.0 * nu) / g * (1.0 + k / (al - 2.0 * nu));
+    let d = (1.0 - nu) * al + 2.0 * nu;
+    let c22 = 2.0 * PI / g * (1.0 + (1.0 - nu) * k / d) / d;
+    let c23 = 2.0 * PI / 3.0 / g.powf(1.5) / ((1.0 - nu) * al - 2.0 + 4.0 * nu);
+    [c11, c22, c23]
 }
 
 impl Flexibilities {
@@ -284,6 +327,29 @@ mod tests {
         assert!((a.c22 - b.c22).abs() < 1e-6, "{a:?} {b:?}");
         let c = at(1.0 / 25.0);
         assert!(c.c11.is_finite() && c.c11 > 11.7 && c.c23 > 14.6, "{c:?}");
+    }
+
+    /// CONTACT's interpolation gives the flexibility it printed: examples/tractcurv.inp case 61
+    /// (a = 6.304, b = 12.61 mm, ν = 0.28, G = 82000 MPa, pure cx, which its blending leaves
+    /// L1 as it is) FLX1 = 0.5491e-4 mm³/N; Table A1's own interpolation differs in the fourth
+    /// digit (c11 3.740 against CONTACT's 3.7335).
+    #[test]
+    fn contact_interpolation_gives_contacts_printed_flexibilities() {
+        let (a, b, g) = (6.304, 12.61, 82000.0);
+        let c = Coefficients::from_contact(a, b, 0.28);
+        let l1 = 8.0 * a / (3.0 * c.c11 * g);
+        assert!((l1 - 0.5491e-4).abs() <= 0.5e-8, "{l1:e}");
+        assert!((Coefficients::from_table(a, b, 0.28).c11 - c.c11).abs() > 5e-3);
+        // Nodes: a = b, ν = 0.25 gives the table's 4.12, 3.67, 1.47; b/a = 0.5 the second half's row.
+        let n = Coefficients::from_contact(1.0, 1.0, 0.25);
+        assert!((n.c11 - 4.12).abs() < 1e-12 && (n.c22 - 3.67).abs() < 1e-12 && (n.c23 - 1.47).abs() < 1e-12);
+        let h = Coefficients::from_contact(2.0, 1.0, 0.5);
+        assert!((h.c11 - 6.11).abs() < 1e-12 && (h.c22 - 5.56).abs() < 1e-12 && (h.c23 - 2.96).abs() < 1e-12);
+        // Below g = 0.101 the asymptotes, finite and positive on both sides.
+        for (a, b) in [(0.05, 1.0), (1.0, 0.05)] {
+            let s = Coefficients::from_contact(a, b, 0.28);
+            assert!([s.c11, s.c22, s.c23].iter().all(|c| c.is_finite() && *c > 0.0), "{s:?}");
+        }
     }
 
     #[test]

@@ -50,6 +50,9 @@ pub enum Integration {
     Centre,
     /// Exact integral over [x − dx, x] (FASTSIM, Eq. 2.34).
     Exact,
+    /// CONTACT's FASTSIM: the rate at the element centre, its spin term taken dx/6 upstream
+    /// (CONTACT's FACPHI = 1/6 of DQ = DX, `set_tang_rhs` in m_sdis.f90), times dx.
+    SpinUpstream,
 }
 
 impl Integration {
@@ -61,6 +64,10 @@ impl Integration {
                 (kx * dx, ky * dx)
             }
             Integration::Exact => rates.between(x - dx, x, y),
+            Integration::SpinUpstream => {
+                let (kx, ky) = rates.at(x - dx / 6.0, y);
+                (kx * dx, ky * dx)
+            }
         }
     }
 }

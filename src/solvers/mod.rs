@@ -8,7 +8,9 @@
 pub mod brush;
 pub mod contact;
 pub mod fastrip;
+pub mod fastrip_contact;
 pub mod fastsim;
+pub mod fastsim_contact;
 pub mod kpec;
 pub mod linear;
 pub mod polach;
@@ -84,11 +86,13 @@ pub type ReadParams = fn(&mut Section<'_>) -> Result<Box<dyn ModelParams>, Input
 pub const MODELS: &[&ModelDef] = &[
     &uba::MODEL,
     &fastsim::MODEL,
+    &fastsim_contact::MODEL,
     &contact::MODEL,
     &linear::MODEL,
     &she::MODEL,
     &polach::MODEL,
     &fastrip::MODEL,
+    &fastrip_contact::MODEL,
     &relaxation::MODEL,
     &kpec::KPEC,
     &kpec::ANALYN,
@@ -257,15 +261,22 @@ const FRICTION_ROWS: [&str; 1] = [contact::NAME];
 
 /// The built-in models that take a rolling direction CHI other than 0 (along -x, or any angle in
 /// transient rolling; CONTACT `m_sdis.f90`).
-const OTHER_DIRECTIONS: [&str; 1] = [contact::NAME];
+const OTHER_DIRECTIONS: [&str; 2] = [contact::NAME, fastsim_contact::NAME];
 
 /// The built-in models that take a falling friction law: the exact solver, FASTSIM and the UBA
 /// (each element's bound μ(s) p, [`brush::Falling`]), the relaxation model (FASTSIM's falling
 /// steady force, lagged) and Polach (its own falling law from the static value, Eq. 8). The
 /// others refuse it: the linear theory and Shen-Hedrick-Elkins have no bound of their own to
-/// make fall, FaStrip's strips take one μ per strip in closed form.
-const FALLING_FRICTION: [&str; 5] =
-    [contact::NAME, fastsim::MODEL.name, uba::MODEL.name, relaxation::MODEL.name, polach::MODEL.name];
+/// make fall, FaStrip's strips take one μ per strip in closed form. CONTACT's FASTSIM takes the
+/// law's μ at the rigid slip velocity, one for the contact.
+const FALLING_FRICTION: [&str; 6] = [
+    contact::NAME,
+    fastsim::MODEL.name,
+    uba::MODEL.name,
+    relaxation::MODEL.name,
+    polach::MODEL.name,
+    fastsim_contact::NAME,
+];
 
 /// Relative cost of running the problem's models, for scheduling only.
 pub fn estimated_cost(problem: &Problem) -> f64 {

@@ -84,8 +84,8 @@ pub struct ModelStyle {
 pub const MUTED: [&str; 9] =
     ["#332288", "#CC6677", "#117733", "#88CCEE", "#882255", "#44AA99", "#999933", "#AA4499", "#DDCC77"];
 
-/// Two of Tol's "light" scheme (orange, light blue), for the models beyond the muted nine's eight.
-pub const LIGHT: [&str; 2] = ["#EE8866", "#77AADD"];
+/// Three of Tol's "light" scheme (orange, light blue, pink), for the models beyond the muted nine.
+pub const LIGHT: [&str; 3] = ["#EE8866", "#77AADD", "#FFAABB"];
 
 /// A style from the muted scheme's colour `k`.
 pub const fn muted(k: usize, dash: Dash, marker: Marker) -> ModelStyle {

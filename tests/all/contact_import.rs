@@ -224,14 +224,22 @@ fn cattaneo_imports_its_normal_case_and_the_shift_by_force() {
     assert!(text.contains("[origin]\ncases = [1, 1]\nfile = \"cattaneo.inp\""), "{text}");
 }
 
+/// fastsim.inp: case 1 the exact theory; cases 2, 3, 5, 6, 8 CONTACT's FASTSIM (M = 3, issue 46) on
+/// Hertz's parabolic (B = 3) or elliptical (B = 2) pressure, case 8 rolling along -x; cases 4 and 7
+/// its modified FaStrip (M = 5).
 #[test]
-fn fastsim_imports_the_exact_theory_case_and_refuses_contacts_simplified_theories() {
+fn fastsim_imports_the_exact_theory_and_contacts_fastsim_and_fastrip() {
     let imported = import_deck("fastsim.inp");
-    assert_eq!(split(&imported), (vec![1], (2..=8).collect()));
-    for s in &imported.statuses[1..] {
-        assert!(s.refused.iter().any(|r| r.contains("material models other than elastic")), "{s:?}");
-        // B = 2, 3 on its Hertzian contact is carried ([normal] pressure): refused for M alone.
-        assert!(!s.refused.iter().any(|r| r.starts_with("B = ")), "{s:?}");
+    assert_eq!(split(&imported), ((1..=8).collect(), vec![]));
+    for k in [3, 6] {
+        let s = &imported.statuses[k];
+        assert!(s.notes.iter().any(|r| r.starts_with("M = 5, B = 2: CONTACT's modified FaStrip")), "{s:?}");
+        let p = scene_of(&imported, &format!("fastsim_{}", k + 1));
+        assert_eq!(p.solvers, ["fastrip_contact"]);
+    }
+    for k in [1, 2, 4, 5, 7] {
+        let s = &imported.statuses[k];
+        assert!(s.notes.iter().any(|r| r.starts_with("M = 3, B = ")), "{s:?}");
     }
     let p = scene_of(&imported, "fastsim_1");
     let r = ResolvedScene::of(&p, &p.solvers);
@@ -239,6 +247,37 @@ fn fastsim_imports_the_exact_theory_case_and_refuses_contacts_simplified_theorie
     assert_eq!((r.v_mm_s, r.dq_mm), (30000.0, 0.4));
     let s = &r.history[0];
     assert_eq!([s.cx, s.cy, s.cs], [0.0, -0.000625, 0.000625]);
+    use creepbench::physics::PressureShape;
+    for (name, shape, mx, chi) in [
+        ("fastsim_2", PressureShape::Parabolic, 44, 0.0),
+        ("fastsim_3", PressureShape::Ellipsoidal, 44, 0.0),
+        ("fastsim_5", PressureShape::Parabolic, 220, 0.0),
+        ("fastsim_6", PressureShape::Ellipsoidal, 220, 0.0),
+        ("fastsim_8", PressureShape::Parabolic, 220, 180.0),
+    ] {
+        let p = scene_of(&imported, name);
+        // The project's FASTSIM beside CONTACT's where it can roll (along +x).
+        let beside: &[&str] = if chi == 0.0 { &["fastsim_contact", "fastsim"] } else { &["fastsim_contact"] };
+        assert_eq!(p.solvers, beside, "{name}");
+        assert_eq!((p.model.pressure, p.grid.mx, p.rolling.chi_deg), (shape, mx, chi), "{name}");
+        assert_eq!(p.model.slope_reduction, None, "{name}: K0_MF = ALFAMF = BETAMF = 1 is no reduction");
+    }
+}
+
+/// tractcurv.inp: the original FASTSIM (61-90) and the modified one with slope reduction and a
+/// falling law (91-120) are two sweeps of CONTACT's FASTSIM, apart from the exact theory's.
+#[test]
+fn tractcurv_imports_contacts_fastsim_sweeps_with_their_slope_reduction() {
+    let deck = root().join("reference/contact_public/examples/tractcurv.inp");
+    let imported = creepbench::import::contact::import(&deck).unwrap();
+    let cases: Vec<_> = imported.scenes.iter().map(|s| (s.name.as_str(), s.cases)).collect();
+    assert!(cases.contains(&("tractcurv_61", [61, 90])) && cases.contains(&("tractcurv_91", [91, 120])), "{cases:?}");
+    let p = scene_of(&imported, "tractcurv_91");
+    assert_eq!(p.solvers, ["fastsim_contact", "fastsim"]);
+    assert_eq!(p.model.slope_reduction, Some([0.54, 0.02, 0.62]));
+    assert!(p.friction.is_falling());
+    let p = scene_of(&imported, "tractcurv_61");
+    assert_eq!((p.model.slope_reduction, p.friction.is_falling()), (None, false));
 }
 
 /// catt_to_cart.inp cases 1-57: a Cattaneo shift under FX (T = 1, P = 2) then 56 steps of
@@ -313,13 +352,14 @@ fn catt_to_cart_maps_the_moving_window_to_its_union_grid() {
 fn tractcurv_imports_the_coulomb_creep_curve_as_one_sweep() {
     let imported = import_deck("tractcurv.inp");
     let (ok, no) = split(&imported);
-    assert_eq!(ok, (1..=30).collect::<Vec<_>>());
-    assert_eq!(no, (31..=120).collect::<Vec<_>>());
+    // 61-120: CONTACT's FASTSIM (M = 3, issue 46), two sweeps of their own.
+    assert_eq!(ok, (1..=30).chain(61..=120).collect::<Vec<_>>());
+    assert_eq!(no, (31..=60).collect::<Vec<_>>());
     // The second series: its falling law (L = 4) is imported (issue 33), its interfacial layer is not.
     let case31 = &imported.statuses[30].refused;
     assert!(case31.iter().any(|r| r.starts_with("M = 4: material models other than elastic")), "{case31:?}");
     assert!(!case31.iter().any(|r| r.starts_with("L (in force)")), "{case31:?}");
-    assert_eq!(imported.scenes.len(), 1);
+    assert_eq!(imported.scenes.len(), 3);
     let p = scene_of(&imported, "tractcurv_1");
     let r = ResolvedScene::of(&p, &p.solvers);
     assert_eq!((r.fn_n, r.mu, r.mx, r.my, r.grid_scale, r.v_mm_s), (106700.0, 0.33, 48, 44, 1.1, 10000.0));
@@ -380,8 +420,8 @@ fn testbank_imports_two_cases_and_names_every_other_with_its_reason() {
     // 13-16: a shift with B = 2 under FX, rolling under FX (14, 15), then with CKSI and DQ 0.8
     // on the Hertzian grid given again by A1, AOB (16); dissimilar bodies (issue 46): the normal
     // problems 3 and 5 (T = 0, on which K has no effect), steady rolling under FX (4), 9 and the
-    // shifts 25, 26.
-    assert_eq!(ok, vec![1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 13, 14, 15, 16, 17, 25, 26]);
+    // shifts 25, 26; 12: CONTACT's FASTSIM (M = 3, B = 3) under FX (F = 1), issue 46.
+    assert_eq!(ok, vec![1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 25, 26]);
     assert_eq!(imported.statuses[10].scene.as_deref(), Some("testbank_10"), "{:?}", imported.statuses[10]);
     assert!(
         imported.statuses[10].notes.iter().any(|r| r.starts_with("N = 0: approach prescribed")),
@@ -405,9 +445,12 @@ fn testbank_imports_two_cases_and_names_every_other_with_its_reason() {
         "{:?}",
         imported.statuses[15]
     );
-    // Case 12: B = 3 with FASTSIM (M = 3) stays refused for M.
-    assert!(imported.statuses[11].refused.iter().any(|r| r.starts_with("M = 3")), "{:?}", imported.statuses[11]);
-    assert!(!imported.statuses[11].refused.iter().any(|r| r.starts_with("B = 3")), "{:?}", imported.statuses[11]);
+    // Case 12: CONTACT's FASTSIM on the parabolic pressure (B = 3) under FX: fastsim_contact alone
+    // (the project's FASTSIM finds no creepage of a prescribed force).
+    assert!(imported.statuses[11].notes.iter().any(|r| r.starts_with("M = 3, B = 3")), "{:?}", imported.statuses[11]);
+    let p = scene_of(&imported, "testbank_12");
+    assert_eq!(p.solvers, ["fastsim_contact"]);
+    assert!(p.loading.rows().all(|s| s.fx_target.is_some_and(|f| (f + 0.6 * 0.3).abs() < 1e-15)));
     let p = scene_of(&imported, "testbank_13");
     assert_eq!(p.normal.pressure, creepbench::physics::NormalPressure::Solved);
     assert_eq!(p.normal.start_pressure, creepbench::physics::NormalPressure::Elliptical);

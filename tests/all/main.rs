@@ -20,6 +20,7 @@ mod envelope;
 mod external_and_gate;
 mod falling;
 mod fastrip_model;
+mod fastsim_contact;
 mod figures;
 mod fit;
 mod friction;

@@ -8,8 +8,20 @@ use creepbench::pipeline::{wheelrail_scene, wheelrail_view};
 use creepbench::scene::wheelrail::WheelRailScene;
 use std::path::{Path, PathBuf};
 
-const MODELS: [&str; 10] =
-    ["contact", "fastsim", "uba", "linear", "she", "polach", "fastrip", "relaxation", "kpec", "analyn"];
+const MODELS: [&str; 12] = [
+    "contact",
+    "fastsim",
+    "uba",
+    "linear",
+    "she",
+    "polach",
+    "fastrip",
+    "relaxation",
+    "kpec",
+    "analyn",
+    "fastsim_contact",
+    "fastrip_contact",
+];
 
 fn examples() -> PathBuf {
     common::root().join("reference/contact_wheelrail/examples")

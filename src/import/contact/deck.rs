@@ -114,6 +114,9 @@ pub struct State {
     /// MAXOUT as last read (G ≠ 1), the most outer iterations between the normal and tangential
     /// problems of dissimilar bodies; `None`: none read.
     pub maxout: Option<i64>,
+    /// K0_MF, ALFAMF, BETAMF of the simplified theories (M = 3, 5) as last read (CONTACT's
+    /// defaults 1, 1, 1 before: no slope reduction).
+    pub slope_mf: Option<[f64; 3]>,
 }
 
 impl State {
@@ -517,7 +520,10 @@ impl CaseReader<'_> {
         match d.m {
             1 => drop(self.reals("FG 1, 2, VT 1, 2", 4)?),
             2 => drop(self.reals("FLX, K0_MF, ALFAMF, BETAMF", 4)?),
-            3 | 5 => drop(self.reals("K0_MF, ALFAMF, BETAMF", 3)?),
+            3 | 5 => {
+                let v = self.reals("K0_MF, ALFAMF, BETAMF", 3)?;
+                state.slope_mf = Some([v[0], v[1], v[2]]);
+            }
             4 => drop(self.reals("GG3, LAYTHK, TAU_C0, K_TAU", 4)?),
             _ => {}
         }

@@ -50,7 +50,7 @@ pub const FEATURES: &[Feature] = &[
         name: "traction bound from Hertz's pressure (elliptical or parabolic)",
         control: "B",
         supported: true,
-        reason: "imported as `[normal] pressure = \"elliptical\"` (B = 2) or `\"parabolic\"` (B = 3): Hertz's pressure of the case's ellipse and FN at the element centres, the normal problem not solved (`m_sdis.f90`); `[normal] start_pressure` where only the case that starts a rolling history has it",
+        reason: "imported as `[normal] pressure = \"elliptical\"` (B = 2) or `\"parabolic\"` (B = 3): Hertz's pressure of the case's ellipse and FN at the element centres, the normal problem not solved (`m_sdis.f90`); `[normal] start_pressure` where only the case that starts a rolling history has it; with CONTACT's FASTSIM (M = 3) as `[model] pressure`",
         used: |c| {
             let hertz = matches!(c.state.potcon, Some(Potcon::Hertz { .. }));
             digit("B", c.digits.b, matches!(c.digits.b, 2 | 3) && hertz)
@@ -148,8 +148,22 @@ pub const FEATURES: &[Feature] = &[
         name: "material models other than elastic",
         control: "M",
         supported: false,
-        reason: "supported: M = 0 (elastic half-spaces); viscoelastic (1), CONTACT's simplified theories (2, 3, 5-7) and interface layers (4) are not",
-        used: |c| digit("M", c.digits.m, c.digits.m != 0),
+        reason: "supported: M = 0 (elastic half-spaces), M = 3 (CONTACT's FASTSIM, also with FX prescribed, F = 1) and M = 5 (its modified FaStrip, with Coulomb friction rolling along +x) in steady rolling (T = 3) with the creepages given (F = 0), one friction coefficient (V = 0) and Hertz's pressure (B = 2, 3); viscoelastic (1), the simplified theory with one flexibility (2), the original FaStrip (6, 7) and interface layers (4) are not",
+        used: |c| digit("M", c.digits.m, c.digits.m != 0 && contact_simplified(c).is_none()),
+    },
+    Feature {
+        name: "CONTACT's modified FaStrip (strip theory with the simplified theory)",
+        control: "M",
+        supported: true,
+        reason: "imported as solvers = [\"fastrip_contact\"] (CONTACT's modified FaStrip: its FASTSIM per row, then Kalker's strip theory's adhesion zone on the equivalent ellipse, docs/models.md) with `[model] pressure` as for M = 3",
+        used: |c| contact_fastrip(c).then(|| format!("M = 5, B = {}", c.digits.b)),
+    },
+    Feature {
+        name: "CONTACT's FASTSIM (the simplified theory with three flexibilities)",
+        control: "M",
+        supported: true,
+        reason: "imported as solvers = [\"fastsim_contact\"] (CONTACT's FASTSIM: its coefficient table, blended flexibilities, rigid slip and totals, docs/models.md) with `[model] pressure` Hertz's parabolic (B = 3) or \"ellipsoidal\" (B = 2) pressure and `slope_reduction` = [K0_MF, ALFAMF, BETAMF] where they are not 1, 1, 1",
+        used: |c| contact_fastsim(c).then(|| format!("M = 3, B = {}", c.digits.b)),
     },
     Feature {
         name: "damping",
@@ -283,6 +297,40 @@ pub const FEATURES: &[Feature] = &[
         },
     },
 ];
+
+/// Whether a case is CONTACT's FASTSIM as the import carries it: M = 3 in steady rolling (T = 3)
+/// with the creepages given (F = 0) or FX prescribed (F = 1), one friction coefficient (V = 0) and
+/// Hertz's pressure imposed (B = 2, 3) on a Hertzian geometry (IPOTCN < 0).
+pub fn contact_fastsim(c: &Case3) -> bool {
+    c.digits.m == 3 && simplified_setting(c, 1)
+}
+
+/// Whether a case is CONTACT's modified FaStrip as the import carries it: M = 5 in the setting of
+/// [`contact_fastsim`], with Coulomb friction (L = 0) rolling along +x (CHI = 0).
+pub fn contact_fastrip(c: &Case3) -> bool {
+    let along_x = super::scene::chi_deg(c.state.chi_rad) == 0.0;
+    c.digits.m == 5 && simplified_setting(c, 0) && c.state.friction_law == 0 && along_x
+}
+
+/// The model that runs a case of CONTACT's simplified theories, if the import carries it.
+pub fn contact_simplified(c: &Case3) -> Option<&'static str> {
+    if contact_fastsim(c) {
+        Some(crate::solvers::fastsim_contact::NAME)
+    } else if contact_fastrip(c) {
+        Some(crate::solvers::fastrip_contact::NAME)
+    } else {
+        None
+    }
+}
+
+/// Steady rolling (T = 3) with the creepages given (F = 0) or FX prescribed (F = 1, where `f_max`
+/// allows it), one friction coefficient (V = 0) and Hertz's pressure imposed (B = 2, 3) on a
+/// Hertzian geometry (IPOTCN < 0).
+fn simplified_setting(c: &Case3, f_max: u8) -> bool {
+    let hertz = matches!(c.state.potcon, Some(Potcon::Hertz { .. }));
+    let d = c.digits;
+    d.t == 3 && d.f <= f_max && d.v == 0 && matches!(d.b, 2 | 3) && hertz
+}
 
 /// The refusals (feature, value) and notes of a case.
 pub fn assess(case: &Case3) -> (Vec<String>, Vec<String>) {

@@ -51,7 +51,8 @@ pub(super) fn write(src: &Source, draft: &mut Draft) -> Result<(), InputError> {
         contact.push(("pen_mm", Value::Float(src.rows[0][3])));
     }
     draft.insert("contact", table(contact));
-    if let Some(normal) = normal_table(src.cases, src.h) {
+    let fastsim = super::super::features::contact_simplified(src.first).is_some();
+    if let Some(normal) = normal_table(src.cases, src.h).filter(|_| !fastsim) {
         draft.insert("normal", normal);
     }
     let m = combine_bodies(s.poiss, s.gg_mpa);
@@ -201,6 +202,17 @@ fn friction_table(s: &State) -> Option<Value> {
         pairs.extend([("memory_mm", Value::Float(s.memory[0])), ("memory_s0_mm_s", Value::Float(s.memory[1]))]);
     }
     Some(table(pairs))
+}
+
+/// `[model]` of CONTACT's FASTSIM (M = 3) or FaStrip (M = 5): Hertz's pressure of its B (3 parabolic, 2 ellipsoidal)
+/// and the slope reduction K0_MF, ALFAMF, BETAMF where it is not 1, 1, 1 (none).
+pub(super) fn fastsim_model(s: &State, b: u8) -> Value {
+    let shape = if b == 2 { "ellipsoidal" } else { "parabolic" };
+    let mut pairs: Pairs = vec![("pressure", Value::String(shape.into()))];
+    if let Some(mf) = s.slope_mf.filter(|mf| *mf != [1.0; 3]) {
+        pairs.push(("slope_reduction", floats(&mf)));
+    }
+    table(pairs)
 }
 
 /// `[normal]` of a history whose B is 2 or 3 (Hertz's elliptical or parabolic pressure) in some

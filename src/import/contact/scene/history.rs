@@ -126,7 +126,7 @@ pub(super) fn group(cases: &[Case], statuses: &mut [CaseStatus]) -> Vec<History>
     hs
 }
 
-/// Whether steady case `k` joins sweep `h`: the same setup, N, B, slip-velocity iteration,
+/// Whether steady case `k` joins sweep `h`: the same setup, N, B, M (and K0_MF, ALFAMF, BETAMF), slip-velocity iteration,
 /// support and prescribed forces, at the sweep's speed or creepages ([`sweep_continues`]).
 fn joins_sweep(cases: &[Case], statuses: &[CaseStatus], h: &History, k: usize) -> bool {
     let (first, c3) = (case3(cases, h.cases[0]), case3(cases, k));
@@ -134,6 +134,8 @@ fn joins_sweep(cases: &[Case], statuses: &[CaseStatus], h: &History, k: usize) -
         && first.digits.n == c3.digits.n
         && (!falling(&c3.state) || slip_iteration(&first.state) == slip_iteration(&c3.state))
         && first.digits.b == c3.digits.b
+        && first.digits.m == c3.digits.m
+        && first.state.slope_mf == c3.state.slope_mf
         && statuses[h.cases[0]].supported() == statuses[k].supported()
         && prescribed(first) == prescribed(c3)
         && sweep_continues(cases, h, c3)

@@ -210,13 +210,30 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
     let src = Source::new(file, stem, cases, h);
     let mut draft = Draft { doc: Table::new(), files: Vec::new() };
     draft.insert("name", Value::String(src.name.clone()));
-    draft.insert("solvers", Value::Array(vec![Value::String("contact".into())]));
+    let simplified = super::features::contact_simplified(src.first);
+    let fastsim = simplified.is_some();
+    // CONTACT's FASTSIM, and the project's beside it where it rolls along +x with the creepages
+    // given (reported against the printed totals, not gated: tolerances.toml); CONTACT's FaStrip;
+    // else the exact theory.
+    let along_x = rows::chi_deg(src.first.state.chi_rad) == 0.0;
+    let solvers: &[&str] = match simplified {
+        Some(crate::solvers::fastsim_contact::NAME) if along_x && src.first.digits.f == 0 => {
+            &[crate::solvers::fastsim_contact::NAME, crate::solvers::fastsim::MODEL.name]
+        }
+        Some(crate::solvers::fastsim_contact::NAME) => &[crate::solvers::fastsim_contact::NAME],
+        Some(_) => &[crate::solvers::fastrip_contact::NAME],
+        None => &["contact"],
+    };
+    draft.insert("solvers", Value::Array(solvers.iter().map(|s| Value::String(s.to_string())).collect()));
     contact::write(&src, &mut draft)?;
+    if fastsim {
+        draft.insert("model", contact::fastsim_model(&src.first.state, src.first.digits.b));
+    }
     match h.run {
         Run::Sweep => loading::sweep(&src, &mut draft),
         Run::Transient { .. } | Run::Shifts => loading::transient(&src, &mut draft)?,
     }
-    if let Some(solver) = contact_solver(src.last) {
+    if let Some(solver) = contact_solver(src.last).filter(|_| !fastsim) {
         draft.insert("contact_solver", solver);
     }
     if let Some(rolling) = rolling(&src) {
