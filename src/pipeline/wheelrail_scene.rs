@@ -13,6 +13,7 @@ use crate::wheelrail::profile::{options::ProfileOptions, read::read_profile, Pro
 use crate::wheelrail::rail::{RailPlacement, Track};
 use crate::wheelrail::side::Side;
 use crate::wheelrail::wheel::{Pose, Velocity, WheelsetGeometry};
+use crate::wheelrail::wheel_mesh::WheelSurface;
 use crate::wheelrail::{Vertical, WheelRailCase};
 use rayon::prelude::*;
 
@@ -137,6 +138,7 @@ pub fn case_of<'a>(
             combine_mm: s.d_comb_mm,
             turn_mm: s.d_turn_mm,
         },
+        wheel_surface: if s.wheel_mesh { WheelSurface::ContactMesh } else { WheelSurface::Exact },
         material,
     }
 }

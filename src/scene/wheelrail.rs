@@ -120,6 +120,9 @@ pub struct WheelRailScene {
     pub d_sep_mm: f64,
     pub d_comb_mm: f64,
     pub d_turn_mm: f64,
+    /// The wheel surface of the undeformed distance (`wheel_surface`): `false` the exact one,
+    /// `true` CONTACT's mesh of it (`"contact_mesh"`).
+    pub wheel_mesh: bool,
     pub vertical: VerticalSpec,
     pub cases: Vec<CaseRow>,
     /// Where the report shows the scene (`[report]`).
@@ -233,6 +236,7 @@ impl WheelRailScene {
             return Err(InputError::new("wheelrail.d_comb_mm", d_comb_mm, format!("at most d_sep_mm = {d_sep_mm}")));
         }
         let d_turn_mm = w.opt_f64("d_turn_mm", Range::new(0.0, true, 1e3, true))?.unwrap_or(2.0 * d_sep_mm - d_comb_mm);
+        let wheel_mesh = w.opt_choice("wheel_surface", &["exact", "contact_mesh"])? == Some("contact_mesh");
         w.finish()?;
         let (rail, placement, cant_rad) = rail(&mut top, dir)?;
         let (wheel, fbd, fbp, radius) = wheel(&mut top, dir)?;
@@ -262,6 +266,7 @@ impl WheelRailScene {
             d_sep_mm,
             d_comb_mm,
             d_turn_mm,
+            wheel_mesh,
             vertical,
             cases,
             report,

@@ -19,6 +19,7 @@ pub mod search;
 pub mod side;
 pub mod vertical;
 pub mod wheel;
+pub mod wheel_mesh;
 
 use crate::physics::halfspace::influence::Kernel;
 use crate::physics::halfspace::normal::{NormalParams, NormalSolver};
@@ -75,6 +76,8 @@ pub struct WheelRailCase<'a> {
     pub ds_mm: f64,
     /// A_SEP, D_SEP, D_COMB: which interpenetration regions make one patch.
     pub separation: patch::Separation,
+    /// The wheel surface the undeformed distance is measured to.
+    pub wheel_surface: wheel_mesh::WheelSurface,
     pub material: Material,
 }
 
@@ -231,7 +234,7 @@ fn geometry_at(
         search::regions(&samples).into_iter().filter_map(|r| patch::candidate(r, rail, radius)).collect();
     let mut out = Vec::new();
     for (k, c) in patch::combine(candidates, &case.separation).iter().enumerate() {
-        let geometry = patch::build(c, wheel, rail, (case.dx_mm, case.ds_mm), &case.separation)?;
+        let geometry = patch::build(c, wheel, rail, (case.dx_mm, case.ds_mm), &case.separation, case.wheel_surface)?;
         if geometry.grid.len() > MAX_ELEMENTS {
             return Err(WheelRailError::GridTooLarge {
                 patch: k + 1,

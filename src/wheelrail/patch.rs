@@ -2,11 +2,13 @@
 //! patches" and "Potential contact area and discretisation"; planar contact, D = 2): its reference
 //! point and contact angle weighted by the interpenetration, its tangent plane, the potential
 //! contact grid (DX × DS, edges on multiples of the element size from the reference point) and
-//! the undeformed distance along the plane's normal between the exact surfaces.
+//! the undeformed distance along the plane's normal between the surfaces (the wheel's exact or
+//! CONTACT's mesh of it).
 
 use super::rail::PlacedRail;
 use super::search::LocusSample;
 use super::wheel::PlacedWheel;
+use super::wheel_mesh::{self, WheelSurface};
 use super::WheelRailError;
 use crate::physics::halfspace::blend::Blend;
 use nalgebra::{Point3, Vector3};
@@ -348,15 +350,26 @@ pub fn grid(c: &Candidate, frame: &PatchFrame, rail: &PlacedRail, dx_mm: f64, ds
 const MISSED_MM: f64 = 10.0;
 
 /// The undeformed distance at every element: along n, from the wheel's surface to the rail's.
-pub fn undeformed_distance(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedWheel, rail: &PlacedRail) -> Vec<f64> {
+/// The wheel's surface is the exact one or CONTACT's mesh of it ([`WheelSurface`]).
+pub fn undeformed_distance(
+    frame: &PatchFrame,
+    grid: &PatchGrid,
+    wheel: &PlacedWheel,
+    rail: &PlacedRail,
+    surface: WheelSurface,
+) -> Vec<f64> {
     let n = frame.n();
+    let meshed = (surface == WheelSurface::ContactMesh).then(|| wheel_mesh::wheel_n_mm(frame, grid, wheel));
     let mut h = Vec::with_capacity(grid.len());
     for j in 0..grid.ms {
         for i in 0..grid.mx {
             let (x, s) = grid.centre(i, j);
             let p = frame.at(x, s);
             let t_r = rail.along([p.y, p.z], [n.y, n.z]);
-            let t_w = wheel.along(&p, &n);
+            let t_w = match &meshed {
+                Some(m) => m[j * grid.mx + i],
+                None => wheel.along(&p, &n),
+            };
             h.push(match (t_r, t_w) {
                 (Some(r), Some(w)) => r - w,
                 _ => MISSED_MM,
@@ -373,10 +386,11 @@ pub fn build(
     rail: &PlacedRail,
     (dx_mm, ds_mm): (f64, f64),
     sep: &Separation,
+    surface: WheelSurface,
 ) -> Result<PatchGeometry, WheelRailError> {
     let frame = frame(c, rail).ok_or(WheelRailError::NoContact)?;
     let grid = grid(c, &frame, rail, dx_mm, ds_mm);
-    let mut h_mm = undeformed_distance(&frame, &grid, wheel, rail);
+    let mut h_mm = undeformed_distance(&frame, &grid, wheel, rail, surface);
     let blend = (c.parts.len() > 1).then(|| {
         let part = sub_patch_of_elements(&c.parts, &frame, &grid, sep);
         // Outside every sub-patch nothing touches (CONTACT's planform, IPLAN = 4).

@@ -34,6 +34,7 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side, pose: Pose) -
             combine_mm: 4.0,
             turn_mm: 12.0,
         },
+        wheel_surface: Default::default(),
         material: Material::from_g(82000.0, 0.28),
     }
 }
@@ -80,5 +81,27 @@ fn a_yawed_cone_touches_where_the_locus_says() {
         let rho = 460.0 - slope * y_w;
         let x = rho * slope * yaw.tan() * yaw.cos() - (750.0 + y_w) * yaw.sin();
         assert!((f.origin.x - x).abs() < 0.02, "{side:?}: x {} expected {x}", f.origin.x);
+    }
+}
+
+/// CONTACT's mesh of a cylinder is exact where its slices meet the element centres (no yaw:
+/// slices DX apart from the reference, the profile straight), and of an arc (radius R) it is
+/// off by at most the chord's sag DS²/(8R) (its nodes DS apart from the reference, as the
+/// element centres are, it is nearly exact on a level patch; the flange root's tilt moves them).
+#[test]
+fn contacts_wheel_mesh_is_the_surface_at_its_nodes_and_within_a_chords_sag_between() {
+    let rail = crown();
+    let flat = Line { z0_mm: 0.0, slope: 0.0, y_range_mm: [-60.0, 60.0] };
+    let hollow = Arc { radius_mm: 320.0, centre_y_mm: 0.0, half_width_mm: 50.0, concave: true };
+    for (wheel, sag_mm) in [(&flat as &dyn Curve, 0.0), (&hollow as &dyn Curve, 0.2f64.powi(2) / (8.0 * 320.0))] {
+        let mut c = case(&rail, wheel, Side::Right, Pose::default());
+        let z = normal_contact(&c, None).unwrap().z_ws_mm;
+        let exact = geometry(&c, z).unwrap();
+        c.wheel_surface = wheel_mesh::WheelSurface::ContactMesh;
+        let meshed = geometry(&c, z).unwrap();
+        let (e, m) = (&exact[0].h_mm, &meshed[0].h_mm);
+        assert_eq!(e.len(), m.len());
+        let worst = e.iter().zip(m).map(|(he, hm)| (hm - he).abs()).fold(0.0, f64::max);
+        assert!(worst <= sag_mm * 1.05 + 1e-9, "worst {worst} sag {sag_mm}");
     }
 }

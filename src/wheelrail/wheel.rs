@@ -97,14 +97,20 @@ impl<'a> PlacedWheel<'a> {
         ((p.y - y_mm).abs() < 1e-9).then_some(p)
     }
 
-    fn to_track(&self, p_ws: Vector3<f64>) -> Point3<f64> {
+    /// A wheelset-frame vector from the centre as a track point.
+    pub(super) fn to_track(&self, p_ws: Vector3<f64>) -> Point3<f64> {
         self.centre + self.rotation * p_ws
+    }
+
+    /// A track point in the wheelset frame (from the centre).
+    pub(super) fn to_wheelset(&self, p: &Point3<f64>) -> Vector3<f64> {
+        self.rotation.inverse() * (p - self.centre)
     }
 
     /// How far a track point lies outside the wheel [mm]: its distance from the axle less the
     /// wheel's radius at its lateral place (negative inside the wheel).
     fn outside_mm(&self, p: &Point3<f64>) -> Option<f64> {
-        let q = self.rotation.inverse() * (p - self.centre);
+        let q = self.to_wheelset(p);
         let radius = self.nominal_radius_mm + self.curve.z_mm(q.y - self.y_offset_mm)?;
         Some((q.x * q.x + q.z * q.z).sqrt() - radius)
     }

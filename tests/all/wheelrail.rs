@@ -38,6 +38,7 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side) -> WheelRailC
             combine_mm: 4.0,
             turn_mm: 12.0,
         },
+        wheel_surface: Default::default(),
         material: Material::from_g(82000.0, 0.28),
     }
 }

@@ -71,9 +71,9 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
     };
     assert!(gap.iter().all(declared), "{gap:?}");
     let fy = gap.iter().find(|f| f.quantity == "fy_tr_n_known_gap").expect("the gap's FY(TR)");
-    // Blended as CONTACT blends it: FY(TR) 130.2 N against 131.6 N (17.1 N off when the two
-    // regions were one fully coupled patch), the rest the flange root's undeformed distance.
-    assert!(fy.gated && fy.diff > 10.0 && fy.diff <= 40.0 && fy.passed(), "{fy:?}");
+    // Blended as CONTACT blends it, on CONTACT's meshed wheel surface: FY(TR) 131.85 N against
+    // 131.6 N (130.2 N on the exact surface, 17.1 N off when the regions were one coupled patch).
+    assert!(fy.gated && fy.diff > 1.5 && fy.diff <= 8.0 && fy.passed(), "{fy:?}");
     assert!(gap.iter().filter(|f| f.quantity != "fy_tr_n_known_gap").all(|f| !f.gated), "{gap:?}");
     // Every rule of the label decides a comparison here (the shipped suites' golden results hold
     // no wheel–rail scene), but "case", which only a missing case meets (the test below).

@@ -46,6 +46,9 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
         ("d_comb_mm", Value::Float(s.d_comb_mm)),
         ("d_turn_mm", Value::Float(s.d_turn_mm)),
     ]);
+    if s.wheel_mesh {
+        wheelrail.push(("wheel_surface", Value::String("contact_mesh".into())));
+    }
     let mut rail = profile(&s.rail, &s.name)?;
     match s.placement {
         PlacementSpec::Gauge { height_mm, width_mm } => {

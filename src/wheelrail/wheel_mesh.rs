@@ -1,0 +1,179 @@
+//! CONTACT's meshed wheel surface (`wr_ud_planar` in m_wr_undefdist, with `trim_wheel_profile`,
+//! `grid_revolve_profile` and `interp_cartz2unif`): the wheel profile sampled every DS of arc
+//! length from the patch's reference point, revolved into slices every DX along the track from
+//! it, placed in the patch's frame and interpolated bilinearly in each quadrilateral's logical
+//! (u, v) at the element centres. Between its nodes the mesh lies inside a concave profile.
+
+use super::curve::Curve;
+use super::patch::{PatchFrame, PatchGrid};
+use super::wheel::PlacedWheel;
+use nalgebra::{Point3, Vector3};
+
+/// Which wheel surface the undeformed distance is measured to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum WheelSurface {
+    /// The exact surface of revolution of the profile.
+    #[default]
+    Exact,
+    /// CONTACT's mesh: profile points DS apart in arc length, slices DX apart, bilinear.
+    ContactMesh,
+}
+
+/// Guard nodes beyond the grid's extent on every side (CONTACT widens by two elements).
+const GUARD: f64 = 3.0;
+/// Upper bound on profile nodes each way from the reference point.
+const MAX_NODES: usize = 20_000;
+
+/// The profile position y_w one arc length `ds` (signed) from y0 (Newton on Simpson's rule), if
+/// the profile reaches it.
+fn step_arc(curve: &dyn Curve, y0: f64, ds: f64) -> Option<f64> {
+    let g = |y: f64| curve.dz_dy(y).map(|d| (1.0 + d * d).sqrt());
+    let length = |h: f64| -> Option<f64> {
+        const N: usize = 16;
+        let dh = h / N as f64;
+        let mut sum = g(y0)? + g(y0 + h)?;
+        for k in 1..N {
+            sum += if k % 2 == 1 { 4.0 } else { 2.0 } * g(y0 + dh * k as f64)?;
+        }
+        Some(sum * dh / 3.0)
+    };
+    let mut h = ds / g(y0)?;
+    for _ in 0..20 {
+        let dh = (length(h)? - ds) / g(y0 + h)?;
+        h -= dh;
+        if dh.abs() < 1e-13 {
+            break;
+        }
+    }
+    let [lo, hi] = curve.y_range_mm();
+    (lo..=hi).contains(&(y0 + h)).then_some(y0 + h)
+}
+
+/// The mesh's nodes in plane coordinates (x, s, n): `slices` fastest, then profile points.
+struct Mesh {
+    slices: usize,
+    nodes: Vec<[f64; 3]>,
+}
+
+fn mesh(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedWheel) -> Mesh {
+    let to_plane = |p: Point3<f64>| {
+        let d = p - frame.origin;
+        [d.x, d.dot(&frame.e_s()), d.dot(&frame.n())]
+    };
+    let q = wheel.to_wheelset(&frame.origin);
+    let y_mid = q.y - wheel.y_offset_mm;
+    let (s_lo, s_hi) = (grid.s0_mm - GUARD * grid.ds_mm, grid.s0_mm + (grid.ms as f64 + GUARD) * grid.ds_mm);
+    let (x_lo, x_hi) = (grid.x0_mm - GUARD * grid.dx_mm, grid.x0_mm + (grid.mx as f64 + GUARD) * grid.dx_mm);
+    let node = |x: f64, y_w: f64| -> Option<[f64; 3]> {
+        let rho = wheel.nominal_radius_mm + wheel.curve.z_mm(y_w)?;
+        let z = (rho * rho - x * x).max(0.0).sqrt();
+        Some(to_plane(wheel.to_track(Vector3::new(x, wheel.y_offset_mm + y_w, z))))
+    };
+    // Profile points each way from the reference until their s leaves the grid's extent.
+    let mut profile = vec![y_mid];
+    for dir in [-1.0, 1.0] {
+        let mut y = y_mid;
+        let mut side = Vec::new();
+        for _ in 0..MAX_NODES {
+            let Some(next) = step_arc(wheel.curve, y, dir * grid.ds_mm) else { break };
+            y = next;
+            side.push(y);
+            match node(q.x, y) {
+                Some([_, s, _]) if (s_lo..=s_hi).contains(&s) => {}
+                _ => break,
+            }
+        }
+        if dir < 0.0 {
+            side.reverse();
+            side.extend(profile);
+            profile = side;
+        } else {
+            profile.extend(side);
+        }
+    }
+    // Slices on the wheel's x (CONTACT's grid's corners in the wheel's frame).
+    let corners = [(x_lo, s_lo), (x_lo, s_hi), (x_hi, s_lo), (x_hi, s_hi)];
+    let wx = corners.map(|(x, s)| wheel.to_wheelset(&frame.at(x, s)).x);
+    let (wx_lo, wx_hi) = (wx.iter().copied().fold(f64::MAX, f64::min), wx.iter().copied().fold(f64::MIN, f64::max));
+    let n_lo = ((q.x - wx_lo) / grid.dx_mm).ceil().max(0.0) as i64;
+    let n_hi = ((wx_hi - q.x) / grid.dx_mm).ceil().max(0.0) as i64;
+    let xs: Vec<f64> = (-n_lo..=n_hi).map(|i| q.x + i as f64 * grid.dx_mm).collect();
+    let mut nodes = Vec::with_capacity(xs.len() * profile.len());
+    for &y_w in &profile {
+        for &x in &xs {
+            nodes.push(node(x, y_w).unwrap_or([f64::NAN; 3]));
+        }
+    }
+    Mesh { slices: xs.len(), nodes }
+}
+
+/// The logical (u, v) of point p in quadrilateral a-b-c-d (Newton on the bilinear map from
+/// (0.5, 0.5), CONTACT's `compute_logical_uv`).
+fn logical_uv(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2], p: [f64; 2]) -> (f64, f64) {
+    let (mut u, mut v) = (0.5, 0.5);
+    for _ in 0..20 {
+        let cross = |k: usize| (c[k] - b[k]) - (d[k] - a[k]);
+        let f = |k: usize| a[k] + (b[k] - a[k]) * u + (d[k] - a[k]) * v + cross(k) * u * v - p[k];
+        let j = |k: usize| [(b[k] - a[k]) + cross(k) * v, (d[k] - a[k]) + cross(k) * u];
+        let (j0, j1) = (j(0), j(1));
+        let det = j0[0] * j1[1] - j1[0] * j0[1];
+        if det.abs() < 1e-300 {
+            break;
+        }
+        let du = -(j1[1] * f(0) - j0[1] * f(1)) / det;
+        let dv = -(-j1[0] * f(0) + j0[0] * f(1)) / det;
+        (u, v) = (u + du, v + dv);
+        if du.abs().max(dv.abs()) < 1e-12 {
+            break;
+        }
+    }
+    (u, v)
+}
+
+/// The wheel's n (distance along the plane's normal from the plane) at every element centre,
+/// interpolated in CONTACT's mesh; `None` where no mesh cell covers the centre. The first cell
+/// (slices fastest) holding a centre on or inside its edges takes it.
+pub fn wheel_n_mm(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedWheel) -> Vec<Option<f64>> {
+    let m = mesh(frame, grid, wheel);
+    let mut out = vec![None; grid.len()];
+    let rows = m.nodes.len() / m.slices.max(1);
+    let xy = |k: usize| [m.nodes[k][0], m.nodes[k][1]];
+    for r in 0..rows.saturating_sub(1) {
+        for i in 0..m.slices.saturating_sub(1) {
+            let k = [r * m.slices + i, r * m.slices + i + 1, (r + 1) * m.slices + i + 1, (r + 1) * m.slices + i];
+            if k.iter().any(|&k| m.nodes[k][2].is_nan()) {
+                continue;
+            }
+            let corners = k.map(xy);
+            let area: f64 =
+                (0..4).map(|e| corners[e][0] * corners[(e + 1) % 4][1] - corners[(e + 1) % 4][0] * corners[e][1]).sum();
+            let sense = area.signum();
+            let inside = |p: [f64; 2]| {
+                (0..4).all(|e| {
+                    let (a, b) = (corners[e], corners[(e + 1) % 4]);
+                    sense * ((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])) >= 0.0
+                })
+            };
+            let lo = |v: f64, v0: f64, d: f64| (((v - v0) / d).floor().max(0.0)) as usize;
+            let (bx, by) = (corners.map(|c| c[0]), corners.map(|c| c[1]));
+            let min = |a: [f64; 4]| a.iter().copied().fold(f64::MAX, f64::min);
+            let max = |a: [f64; 4]| a.iter().copied().fold(f64::MIN, f64::max);
+            let (i0, i1) = (lo(min(bx), grid.x0_mm, grid.dx_mm), lo(max(bx), grid.x0_mm, grid.dx_mm).min(grid.mx - 1));
+            let (j0, j1) = (lo(min(by), grid.s0_mm, grid.ds_mm), lo(max(by), grid.s0_mm, grid.ds_mm).min(grid.ms - 1));
+            for jj in j0..=j1 {
+                for ii in i0..=i1 {
+                    let e = jj * grid.mx + ii;
+                    let (x, s) = grid.centre(ii, jj);
+                    if out[e].is_some() || !inside([x, s]) {
+                        continue;
+                    }
+                    let (u, v) = logical_uv(corners[0], corners[1], corners[2], corners[3], [x, s]);
+                    let n = k.map(|k| m.nodes[k][2]);
+                    out[e] =
+                        Some((1.0 - u) * (1.0 - v) * n[0] + u * (1.0 - v) * n[1] + u * v * n[2] + (1.0 - u) * v * n[3]);
+                }
+            }
+        }
+    }
+    out
+}
