@@ -18,9 +18,13 @@ def test_the_example_draws_every_model_and_gates_a_modified_one(tmp_path):
     curves = pl.read_csv(tmp_path / "traction_curves.csv")
     assert curves.columns == ["cx", *creepbench.model_names()]
     assert curves.height == 101
-    # Every curve starts at 0 and saturates below mu = 0.4.
+    # Every curve starts at 0 and saturates below mu = 0.4; CONTACT's FASTSIM and FaStrip divide
+    # their totals by the prescribed FN, not by the load their discrete pressure carries, so at full
+    # slip they reach mu times that load over FN (1.00043 on this grid), as CONTACT prints.
+    over_prescribed_fn = {"fastsim_contact": 1.001, "fastrip_contact": 1.001}
     for m in creepbench.model_names():
-        assert curves[m][0] == 0.0 and 0.2 < curves[m][-1] <= 0.4 + 1e-9, m
+        bound = 0.4 * over_prescribed_fn.get(m, 1.0) + 1e-9
+        assert curves[m][0] == 0.0 and 0.2 < curves[m][-1] <= bound, m
     assert "unmodified model against its baseline: PASS" in run.stdout
     assert "modified model (k = 0.8) against it: FAIL" in run.stdout
     assert (tmp_path / "baseline" / "steady_fastsim_g22" / "fastsim_k.csv").exists()
