@@ -24,7 +24,7 @@
 
 use super::brush::{self, Integration, RowMarch, Tractions};
 use super::stepper::{FieldView, Step, Stepper};
-use super::{linear_in_elements, ModelDef, SolveError};
+use super::{grid_model, ModelDef, SolveError};
 use crate::error::InputError;
 use crate::physics::bound::scale_factor;
 use crate::physics::lanes::sum4;
@@ -35,20 +35,13 @@ use crate::solvers::style::{muted, Dash, Marker};
 use std::f64::consts::PI;
 
 /// FaStrip.
-pub const MODEL: ModelDef = ModelDef {
-    name: "fastrip",
-    summary: "FaStrip (Sichani, Enblom & Berg, VSD 54(6) 2016): Kalker's strip theory per grid row, creepages scaled by Kalker's coefficients, FASTSIM's direction in the slip area",
-    extra_columns: &["n_adhesion", "n_slip"],
-    iterative: false,
-    prescribed_forces: false,
-    shifts: false,
-    normal_rows: false,
+pub const MODEL: ModelDef = grid_model(
+    "fastrip",
+    "FaStrip (Sichani, Enblom & Berg, VSD 54(6) 2016): Kalker's strip theory per grid row, creepages scaled by Kalker's coefficients, FASTSIM's direction in the slip area",
     check,
-    cost_per_row: linear_in_elements,
-    params: None,
     build,
-    style: muted(6, Dash::LongDash, Marker::Cross),
-};
+    muted(6, Dash::LongDash, Marker::Cross),
+);
 
 /// Hertz's ellipse only (see the module's doc).
 fn check(p: &Problem) -> Result<(), InputError> {

@@ -13,7 +13,7 @@ use super::brush::{self, Integration, Tractions};
 use super::fastsim_contact::{blended, equivalent_ellipse, slope_factor, CARRIED_LOAD};
 use super::stepper::{FieldView, Step, Stepper};
 use super::termination::Termination;
-use super::{linear_in_elements, ModelDef, SolveError};
+use super::{grid_model, ModelDef, SolveError};
 use crate::error::InputError;
 use crate::physics::{Coefficients, Grid, LeadingEdge, RigidSlip};
 use crate::problem::{LocalContact, Problem, Sample};
@@ -25,18 +25,14 @@ pub const NAME: &str = "fastrip_contact";
 
 /// CONTACT's modified FaStrip on the scene's grid.
 pub const MODEL: ModelDef = ModelDef {
-    name: NAME,
-    summary: "CONTACT's modified FaStrip (its M = 5, m_solvpt.f90): CONTACT's FASTSIM per grid row, then Kalker's strip theory's adhesion zone on the equivalent ellipse where its tractions stay within the bound, totals over FN",
     extra_columns: &["n_adhesion", "n_slip", CARRIED_LOAD],
-    iterative: false,
-    prescribed_forces: false,
-    shifts: false,
-    normal_rows: false,
-    check,
-    cost_per_row: linear_in_elements,
-    params: None,
-    build,
-    style: ModelStyle { colour: LIGHT[2], dash: Dash::Dashed, marker: Marker::Square },
+    ..grid_model(
+        NAME,
+        "CONTACT's modified FaStrip (its M = 5, m_solvpt.f90): CONTACT's FASTSIM per grid row, then Kalker's strip theory's adhesion zone on the equivalent ellipse where its tractions stay within the bound, totals over FN",
+        check,
+        build,
+        ModelStyle { colour: LIGHT[2], dash: Dash::Dashed, marker: Marker::Square },
+    )
 };
 
 /// Hertz's ellipse only.

@@ -5,26 +5,18 @@
 
 use super::brush::{self, Falling, Integration, Tractions};
 use super::stepper::{FieldView, Step, Stepper};
-use super::{always, linear_in_elements, ModelDef, SolveError};
+use super::{always, grid_model, ModelDef, SolveError};
 use crate::problem::{LocalContact, Problem, Sample};
 use crate::solvers::style::{muted, Dash, Marker};
 
 /// Kalker's FASTSIM on the scene's grid.
-pub const MODEL: ModelDef = ModelDef {
-    name: "fastsim",
-    summary:
-        "Kalker's simplified theory for steady rolling, FASTSIM (Kalker 1982; thesis 2.3.6), quasi-steady at every step",
-    extra_columns: &["n_adhesion", "n_slip"],
-    iterative: false,
-    prescribed_forces: false,
-    shifts: false,
-    normal_rows: false,
-    check: always,
-    cost_per_row: linear_in_elements,
-    params: None,
+pub const MODEL: ModelDef = grid_model(
+    "fastsim",
+    "Kalker's simplified theory for steady rolling, FASTSIM (Kalker 1982; thesis 2.3.6), quasi-steady at every step",
+    always,
     build,
-    style: muted(2, Dash::Dashed, Marker::TriangleUp),
-};
+    muted(2, Dash::Dashed, Marker::TriangleUp),
+);
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     with_contact(p, |p, fn_n| Ok(p.local_contact(fn_n)))

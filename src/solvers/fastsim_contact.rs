@@ -13,7 +13,7 @@
 use super::brush::{self, Integration, Tractions};
 use super::stepper::{FieldView, Step, Stepper};
 use super::termination::Termination;
-use super::{linear_in_elements, ModelDef, SolveError};
+use super::{grid_model, ModelDef, SolveError};
 use crate::error::InputError;
 use crate::physics::{Coefficients, Flexibilities, Grid, LeadingEdge, Planform, RigidSlip};
 use crate::problem::{LocalContact, Problem, Sample};
@@ -30,18 +30,15 @@ pub const CARRIED_LOAD: &str = "fn_carried_n";
 
 /// CONTACT's FASTSIM on the scene's grid.
 pub const MODEL: ModelDef = ModelDef {
-    name: NAME,
-    summary: "CONTACT's FASTSIM (its M = 3, m_solvpt.f90): Kalker's three flexibilities of CONTACT's coefficient table blended towards one at large creepage, the rigid slip at the element centre (spin dx/6 upstream), totals over FN",
     extra_columns: &["n_adhesion", "n_slip", CARRIED_LOAD],
-    iterative: false,
     prescribed_forces: true,
-    shifts: false,
-    normal_rows: false,
-    check,
-    cost_per_row: linear_in_elements,
-    params: None,
-    build,
-    style: muted(8, Dash::LongDash, Marker::Circle),
+    ..grid_model(
+        NAME,
+        "CONTACT's FASTSIM (its M = 3, m_solvpt.f90): Kalker's three flexibilities of CONTACT's coefficient table blended towards one at large creepage, the rigid slip at the element centre (spin dx/6 upstream), totals over FN",
+        check,
+        build,
+        muted(8, Dash::LongDash, Marker::Circle),
+    )
 };
 
 /// Hertz's ellipse only (CONTACT's equivalent ellipse of a non-Hertzian contact is not taken here),

@@ -6,7 +6,7 @@
 //! length-to-width ratio kept).
 
 use super::fastsim;
-use super::{linear_in_elements, ModelDef, SolveError};
+use super::{grid_model, ModelDef, SolveError};
 use crate::error::InputError;
 use crate::physics::approximate::{self, Method};
 use crate::physics::geometry::element::equivalent_ellipse;
@@ -38,20 +38,13 @@ const KPEC_METHOD: u8 = 0;
 const ANALYN_METHOD: u8 = 1;
 
 /// What the two share.
-const MODEL: ModelDef = ModelDef {
-    name: "",
-    summary: "",
-    extra_columns: &["n_adhesion", "n_slip"],
-    iterative: false,
-    prescribed_forces: false,
-    shifts: false,
-    normal_rows: false,
-    check: check::<KPEC_METHOD>,
-    cost_per_row: linear_in_elements,
-    params: None,
-    build: |p| fastsim::with_contact(p, contact::<KPEC_METHOD>),
-    style: ModelStyle { colour: LIGHT[0], dash: Dash::Dashed, marker: Marker::TriangleLeft },
-};
+const MODEL: ModelDef = grid_model(
+    "",
+    "",
+    check::<KPEC_METHOD>,
+    |p| fastsim::with_contact(p, contact::<KPEC_METHOD>),
+    ModelStyle { colour: LIGHT[0], dash: Dash::Dashed, marker: Marker::TriangleLeft },
+);
 
 fn method<const M: u8>() -> Method {
     if M == KPEC_METHOD {

@@ -313,6 +313,32 @@ pub const fn closed_form(
     }
 }
 
+/// A model on the scene's grid that counts its adhesion and slip elements (`n_adhesion`,
+/// `n_slip`), solves each row in one pass (no termination column), with the creepages given, in
+/// rolling, at a cost linear in the elements; a model that does more says so over this default.
+pub const fn grid_model(
+    name: &'static str,
+    summary: &'static str,
+    check: fn(&Problem) -> Result<(), InputError>,
+    build: for<'a> fn(&'a Problem) -> Result<Box<dyn Stepper + 'a>, SolveError>,
+    style: style::ModelStyle,
+) -> ModelDef {
+    ModelDef {
+        name,
+        summary,
+        extra_columns: &["n_adhesion", "n_slip"],
+        iterative: false,
+        prescribed_forces: false,
+        shifts: false,
+        normal_rows: false,
+        check,
+        cost_per_row: linear_in_elements,
+        params: None,
+        build,
+        style,
+    }
+}
+
 /// Cost of a closed-form law per row (scheduling only).
 fn negligible(_: &Problem) -> f64 {
     1e-3

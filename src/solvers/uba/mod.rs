@@ -20,27 +20,20 @@ mod flat;
 
 use super::brush::{self, Falling, Integration, LeadingEdge, Tractions};
 use super::stepper::{FieldView, Step, Stepper};
-use super::{linear_in_elements, ModelDef, SolveError};
+use super::{grid_model, ModelDef, SolveError};
 use crate::error::InputError;
 use crate::physics::{Grid, Planform, RigidSlip};
 use crate::problem::{LocalContact, Problem, Sample};
 use crate::solvers::style::{muted, Dash, Marker};
 
 /// The Unsteady Brush Algorithm.
-pub const MODEL: ModelDef = ModelDef {
-    name: "uba",
-    summary: "Unsteady Brush Algorithm (Diaz de la Fuente 2012, ch. 3): explicit upwind transport of the tangential tractions with the traction bound",
-    extra_columns: &["n_adhesion", "n_slip"],
-    iterative: false,
-    prescribed_forces: false,
-    shifts: false,
-    normal_rows: false,
+pub const MODEL: ModelDef = grid_model(
+    "uba",
+    "Unsteady Brush Algorithm (Diaz de la Fuente 2012, ch. 3): explicit upwind transport of the tangential tractions with the traction bound",
     check,
-    cost_per_row: linear_in_elements,
-    params: None,
     build,
-    style: muted(1, Dash::Solid, Marker::Square),
-};
+    muted(1, Dash::Solid, Marker::Square),
+);
 
 /// Largest Courant number the UBA accepts: it sub-steps (see [`substeps`]), and a scene asking
 /// for more than this many sub-steps per time step is almost certainly a unit mistake.
