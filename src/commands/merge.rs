@@ -78,9 +78,10 @@ pub fn merge(
 /// verdict for theirs.
 pub(super) fn note_wheelrail_not_merged(suites: &[PathBuf]) -> Result<(), Error> {
     let given: Vec<PathBuf> = suites.iter().filter(|d| d.is_dir()).cloned().collect();
-    let (_, wheelrail) = suite::wheelrail::split(suite::scene_files(&given, None)?)?;
-    if !wheelrail.is_empty() {
-        let names: Vec<&str> = wheelrail.iter().map(|s| s.name.as_str()).collect();
+    let files = suite::scene_files(&given, None)?;
+    let names: Vec<&str> =
+        files.iter().filter(|f| suite::wheelrail::is_wheelrail(f)).map(|f| f.name.as_str()).collect();
+    if !names.is_empty() {
         errln!(
             "note: {} wheel-rail scene(s) are not in a merge (each shard's `check` gates them against CONTACT): {}",
             names.len(),

@@ -81,22 +81,22 @@ fn status(row: &CaseRow) -> String {
         Some(Survey::Unread(why)) => return format!("not supported: the deck is not read: {}", why.replace('|', "/")),
         None => None,
     };
-    match verdict {
-        // The wheel–rail gate's own copy of the deck has its profiles beside it.
-        Some(v) if v.module == 1 && wheelrail.is_some_and(|w| w.inputs.contains_key(deck)) => {
-            let w = wheelrail.expect("checked in the guard");
+    // The wheel–rail gate's own copy of the deck has its profiles beside it.
+    let gate = wheelrail.filter(|w| w.inputs.contains_key(deck));
+    match (verdict, gate) {
+        (Some(v), Some(w)) if v.module == 1 => {
             format!("{MODULE_1} {}", super::contact_wheelrail::status(w, deck, case as u64))
         }
-        Some(v) if v.module == 1 && v.refused.is_empty() => {
+        (Some(v), _) if v.module == 1 && v.refused.is_empty() => {
             format!("{MODULE_1} supported, not in the wheel–rail gate (import {deck} to run it)")
         }
-        Some(v) if !v.refused.is_empty() => {
+        (Some(v), _) if !v.refused.is_empty() => {
             let head = if v.module == 1 { format!("{MODULE_1} not supported") } else { "not supported".into() };
             format!("{head}: {}", v.refused.join("; ").replace('|', "/"))
         }
-        Some(_) if printed => format!("supported, not among these results (import {deck} to compare it)"),
-        Some(_) => "supported; CONTACT printed no totals for it".into(),
-        None => "not surveyed".into(),
+        (Some(_), _) if printed => format!("supported, not among these results (import {deck} to compare it)"),
+        (Some(_), _) => "supported; CONTACT printed no totals for it".into(),
+        (None, _) => "not surveyed".into(),
     }
 }
 

@@ -45,14 +45,7 @@ pub const MODEL: ModelDef = grid_model(
 
 /// Hertz's ellipse only (see the module's doc).
 fn check(p: &Problem) -> Result<(), InputError> {
-    if p.geometry.elliptic() {
-        return Ok(());
-    }
-    Err(InputError::new(
-        "geometry.kind",
-        format!("{:?}", p.geometry.kind()),
-        "no [geometry] section when the scene runs fastrip: its strip solution is Carter's on Hertz's semi-elliptic pressure, so it needs Hertz's ellipse ([contact] a_mm, b_mm or the radii); on a contact given per element run fastsim, uba or contact",
-    ))
+    super::require_ellipse(p, "fastrip", "its strip solution is Carter's on Hertz's semi-elliptic pressure, so it needs Hertz's ellipse ([contact] a_mm, b_mm or the radii); on a contact given per element run fastsim, uba or contact")
 }
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {

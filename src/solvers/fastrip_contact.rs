@@ -37,14 +37,7 @@ pub const MODEL: ModelDef = ModelDef {
 
 /// Hertz's ellipse only.
 fn check(p: &Problem) -> Result<(), InputError> {
-    if p.geometry.elliptic() {
-        return Ok(());
-    }
-    Err(InputError::new(
-        "geometry.kind",
-        format!("{:?}", p.geometry.kind()),
-        format!("no [geometry] section when the scene runs {NAME}: its strips are those of Hertz's ellipse (CONTACT's IPOTCN < 0)"),
-    ))
+    super::require_ellipse(p, NAME, "its strips are those of Hertz's ellipse (CONTACT's IPOTCN < 0)")
 }
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {

@@ -44,13 +44,11 @@ pub const MODEL: ModelDef = ModelDef {
 /// Hertz's ellipse only (CONTACT's equivalent ellipse of a non-Hertzian contact is not taken here),
 /// rolling along +x or −x.
 fn check(p: &Problem) -> Result<(), InputError> {
-    if !p.geometry.elliptic() {
-        return Err(InputError::new(
-            "geometry.kind",
-            format!("{:?}", p.geometry.kind()),
-            format!("no [geometry] section when the scene runs {NAME}: its flexibilities are those of Hertz's ellipse (CONTACT's IPOTCN < 0); on a contact given per element run fastsim"),
-        ));
-    }
+    super::require_ellipse(
+        p,
+        NAME,
+        "its flexibilities are those of Hertz's ellipse (CONTACT's IPOTCN < 0); on a contact given per element run fastsim",
+    )?;
     if p.loading.rows().any(|s| s.fy_target.is_some()) {
         return Err(InputError::new(
             "creepage.fy_over_fn",

@@ -297,20 +297,20 @@ pub const fn closed_form(
     build: for<'a> fn(&'a Problem) -> Result<Box<dyn Stepper + 'a>, SolveError>,
     style: style::ModelStyle,
 ) -> ModelDef {
-    ModelDef {
-        name,
-        summary,
-        extra_columns: &[],
-        iterative: false,
-        prescribed_forces: false,
-        shifts: false,
-        normal_rows: false,
-        check: always,
-        cost_per_row: negligible,
-        params: None,
-        build,
-        style,
+    ModelDef { extra_columns: &[], cost_per_row: negligible, ..grid_model(name, summary, always, build, style) }
+}
+
+/// Refuses a contact other than Hertz's ellipse for the model `name`, whose method needs the
+/// ellipse (`why`: what of it, and what to run instead).
+pub fn require_ellipse(p: &Problem, name: &str, why: &str) -> Result<(), InputError> {
+    if p.geometry.elliptic() {
+        return Ok(());
     }
+    Err(InputError::new(
+        "geometry.kind",
+        format!("{:?}", p.geometry.kind()),
+        format!("no [geometry] section when the scene runs {name}: {why}"),
+    ))
 }
 
 /// A model on the scene's grid that counts its adhesion and slip elements (`n_adhesion`,

@@ -132,11 +132,7 @@ pub fn split(
 ) -> Result<(Vec<crate::suite::SceneSource>, Vec<WheelRailScene>), Error> {
     let (mut plain, mut wheelrail) = (Vec::new(), Vec::new());
     for f in files {
-        // A file that does not parse, or is no wheel–rail scene, is the module-3 reader's.
-        let doc = crate::safety::read::read_text(&f.path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")
-            .ok()
-            .and_then(|t| t.parse::<toml::Table>().ok());
-        if f.study.is_some() || !doc.is_some_and(|d| crate::scene::wheelrail::is_wheelrail(&d)) {
+        if !is_wheelrail(&f) {
             plain.push(f);
             continue;
         }
@@ -146,6 +142,15 @@ pub fn split(
         }
     }
     Ok((plain, wheelrail))
+}
+
+/// Whether a scene file is a wheel–rail scene (a `[wheelrail]` table), without reading its
+/// profiles; a file that does not parse, or a study's scene, is the module-3 reader's.
+pub fn is_wheelrail(f: &crate::suite::SceneSource) -> bool {
+    let doc = crate::safety::read::read_text(&f.path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")
+        .ok()
+        .and_then(|t| t.parse::<toml::Table>().ok());
+    f.study.is_none() && doc.is_some_and(|d| crate::scene::wheelrail::is_wheelrail(&d))
 }
 
 /// Run the wheel–rail scenes one after the other (each runs its cases in parallel).
