@@ -30,8 +30,8 @@ def best_of(calls: int, f) -> float:
 
 def main() -> None:
     n = int(sys.argv[1]) if len(sys.argv) > 1 else 100_000
-    sims = creepbench.simulate("scenes/thesis/study_sine_grid.toml", ["fastsim"])
-    sim = next(s for s in (sims if isinstance(sims, list) else [sims]) if s.name == "sine_f30_mu10")
+    sims = creepbench.simulate_study("scenes/thesis/study_sine_grid.toml", ["fastsim"])
+    sim = next(s for s in sims if s.name == "sine_f30_mu10")
     row = sim.histories["fastsim"].row(3, named=True)
     contact = {"a_mm": sim.scene["a_mm"], "b_mm": sim.scene["b_mm"], "fn_n": row["fn_n"], "mu": row["mu"]}
     grid = {"mx": 22, "my": 22}

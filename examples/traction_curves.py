@@ -32,6 +32,8 @@ CONTACT = {"a_mm": 8.56, "b_mm": 4.08, "fn_n": 100000.0, "mu": 0.4}
 GRID = {"mx": 22, "my": 22}
 MODEL = {"flexibility": "kalker", "coefficients": "table", "pressure": "parabolic"}
 SCENE = pathlib.Path("scenes/thesis/steady_fastsim_g22.toml")
+#: CONTACT's and the thesis's results (the repository's reference/; run from its folder).
+REFERENCE = pathlib.Path("reference")
 
 
 def traction_curves(points: int = 101) -> pl.DataFrame:
@@ -90,8 +92,8 @@ def gate_modified_model(out: pathlib.Path) -> tuple[creepbench.Verdict, creepben
     scene["solvers"] = ["fastsim_k"]
     baseline = out / "baseline"
     creepbench.simulate(scene, models={"fastsim_k": fastsim_reduced(1.0)}).save(baseline)
-    same = creepbench.simulate(scene, models={"fastsim_k": fastsim_reduced(1.0)}).check(against=baseline)
-    modified = creepbench.simulate(scene, models={"fastsim_k": fastsim_reduced(0.8)}).check(against=baseline)
+    same = creepbench.simulate(scene, models={"fastsim_k": fastsim_reduced(1.0)}).check(reference=REFERENCE, against=baseline)
+    modified = creepbench.simulate(scene, models={"fastsim_k": fastsim_reduced(0.8)}).check(reference=REFERENCE, against=baseline)
     return same, modified
 
 
@@ -102,7 +104,7 @@ def report_modified_model(out: pathlib.Path) -> creepbench.RunReport:
     text = SCENE.read_text().replace('solvers = ["uba", "fastsim"]', 'solvers = ["fastsim", "fastsim_k"]')
     (suite / SCENE.name).write_text(text)
     return creepbench.run(
-        suite, results=out / "results", report=out / "report", golden=out / "no_golden",
+        suite, results=out / "results", report=out / "report", reference=REFERENCE, golden=out / "no_golden",
         models={"fastsim_k": fastsim_reduced(0.8)},
     )
 

@@ -8,11 +8,17 @@ in 1/mm; forces come back as fx/fn, fy/fn (dimensionless) and the spin moment mz
 * :func:`simulate` runs a scene (path, TOML text or dict) and returns a :class:`Simulation`:
   the resolved scene, each model's history and the metrics as polars DataFrames, the
   traction fields as numpy arrays; a Python callable runs as a model in-process.
+  :func:`simulate_study` runs every point of a study file: a list of them.
 * :func:`check` runs suites through the gate and returns a :class:`Verdict`; :func:`run`
   runs them as ``creepbench run`` does (result folders and the report) and returns a
   :class:`RunReport`. Python callables run in-process as models in both.
 * :func:`steady` evaluates a built-in model's steady forces for an (N, 3) array of creepages.
 * :class:`Stepper` steps a model with memory (UBA, relaxation, the exact solver) from Python.
+
+Every error the package raises is a :class:`CreepbenchError`: invalid input a
+:class:`SceneError` (also a ``ValueError``), a failure while running a :class:`RunError`.
+Paths are never defaulted: suites, references, golden data and output folders are given by the
+caller (relative paths are relative to the current folder, as on the command line).
 
 See docs/python.md in the repository.
 """
@@ -28,11 +34,12 @@ import numpy as np
 import polars as pl
 
 from . import _creepbench as _cb
-from ._creepbench import CreepbenchError, SceneError
+from .errors import CreepbenchError, RunError, SceneError
 
 __all__ = [
     "CreepbenchError",
     "Finding",
+    "RunError",
     "RunReport",
     "SceneError",
     "Simulation",
@@ -42,11 +49,13 @@ __all__ = [
     "model_names",
     "run",
     "simulate",
+    "simulate_study",
     "steady",
     "STEADY_CHUNK_ROWS",
 ]
 
-Scene = Union[str, "os.PathLike[str]", Mapping[str, Any]]
+Path = Union[str, "os.PathLike[str]"]
+Scene = Union[Path, Mapping[str, Any]]
 Model = Callable[[Dict[str, Any]], Any]
 
 #: Rows per chunk of :func:`steady`: one model per chunk of this many consecutive rows,
@@ -237,18 +246,19 @@ class Simulation:
 
     def check(
         self,
-        reference: Union[str, "os.PathLike[str]"] = "reference",
-        golden: Optional[Union[str, "os.PathLike[str]"]] = None,
-        against: Optional[Union[str, "os.PathLike[str]"]] = None,
-        tolerances: Sequence[Union[str, "os.PathLike[str]"]] = (),
+        *,
+        reference: Path,
+        golden: Optional[Path] = None,
+        against: Optional[Path] = None,
+        tolerances: Sequence[Path] = (),
     ) -> Verdict:
         """Gate this scene's results as ``creepbench check`` does: every model (in-process
-        ones included) against the references in ``reference`` (CONTACT, the thesis) and
-        against a baseline: the ``golden`` folder, or ``against``, a folder of earlier results
-        (e.g. written by :meth:`save`), each history column and metric within the default
-        tolerances (docs/gate.md), with the tolerance files ``tolerances`` applied."""
-        if golden is not None and against is not None:
-            raise ValueError("check: give golden or against, not both")
+        ones included) against the references in the folder ``reference`` (CONTACT, the
+        thesis: the repository's ``reference/``) and, if given, against a baseline: the
+        ``golden`` folder, or ``against``, a folder of earlier results (e.g. written by
+        :meth:`save`), each history column and metric within the default tolerances
+        (docs/gate.md), with the tolerance files ``tolerances`` applied."""
+        _one_baseline(golden, against, required=False)
         baseline = golden if against is None else against
         findings, loosened = self._raw.gate(
             os.fspath(reference),
@@ -262,14 +272,35 @@ class Simulation:
         return f"Simulation({self.name!r}, solvers={self.solvers})"
 
 
+def _one_baseline(golden: Optional[Path], against: Optional[Path], required: bool) -> None:
+    """Refuse both baselines at once (and, when ``required``, neither)."""
+    given = f"golden={golden!r}, against={against!r}"
+    if golden is not None and against is not None:
+        raise SceneError(f"invalid input: `golden, against` = {given}: allowed: one of them", "golden, against", given, "one of them")
+    if required and golden is None and against is None:
+        raise SceneError(
+            f"invalid input: `golden, against` = {given}: allowed: a golden folder or a results folder",
+            "golden, against",
+            given,
+            "a golden folder or a results folder",
+        )
+
+
 def _kind(scene: Any) -> Tuple[str, Any]:
+    """How a scene is given: a path (a string that names an existing file, or any path-like),
+    TOML text (any other string holding ``=`` or a line break), or a dict."""
     if isinstance(scene, Mapping):
         return "table", dict(scene)
     if isinstance(scene, os.PathLike):
         return "path", os.fspath(scene)
     if isinstance(scene, str):
-        return ("toml", scene) if ("=" in scene or "\n" in scene) else ("path", scene)
-    raise TypeError(f"scene: a path, TOML text or a dict, not {type(scene).__name__}")
+        if os.path.exists(scene) or not ("=" in scene or "\n" in scene):
+            return "path", scene
+        return "toml", scene
+    kind = type(scene).__name__
+    raise SceneError(
+        f"invalid input: `scene` = {kind}: allowed: a path, TOML text or a dict", "scene", kind, "a path, TOML text or a dict"
+    )
 
 
 def _columns(out: Any) -> Tuple[List[str], List[np.ndarray]]:
@@ -302,11 +333,13 @@ def simulate(
     models: Optional[Mapping[str, Model]] = None,
     fields: bool = False,
     pandas: bool = False,
-) -> Any:
+) -> Simulation:
     """Run a scene as ``creepbench simulate`` does and return its :class:`Simulation`.
 
-    ``scene``: a path to a scene file (a study file gives a list, one per point), TOML text,
-    or a dict of the same keys (docs/scene-format.md; units mm, N, MPa, s). ``solvers`` narrows
+    ``scene``: a path to a scene file, TOML text, or a dict of the same keys
+    (docs/scene-format.md; units mm, N, MPa, s); a string is a path when it names an existing
+    file or holds neither ``=`` nor a line break, TOML text otherwise. A study file is refused
+    (:func:`simulate_study` runs one). ``solvers`` narrows
     the scene's model list. ``models`` maps names to Python callables run in-process as
     models: each is called with the resolved scene (scene.json as a dict; its ``history`` lists
     the loading of every row) and returns the history as a DataFrame or a dict of columns
@@ -317,12 +350,26 @@ def simulate(
     ``allowed``), a failing model :class:`CreepbenchError`.
     """
     kind, value = _kind(scene)
-    raw = _cb.simulate(kind, value, list(solvers or []), _models(models), fields)
-    sims = [Simulation(r, pandas) for r in raw]
-    return sims[0] if len(sims) == 1 else sims
+    (raw,) = _cb.simulate(kind, value, list(solvers or []), _models(models), fields, False)
+    return Simulation(raw, pandas)
 
 
-Suites = Union[str, "os.PathLike[str]", Sequence[Union[str, "os.PathLike[str]"]]]
+def simulate_study(
+    study: Path,
+    solvers: Optional[Sequence[str]] = None,
+    *,
+    models: Optional[Mapping[str, Model]] = None,
+    fields: bool = False,
+    pandas: bool = False,
+) -> List[Simulation]:
+    """Run every point of a study file (a TOML file with a ``[study]`` table, docs/studies.md)
+    as ``creepbench simulate`` does: one :class:`Simulation` per point, in the study's order.
+    The other arguments as in :func:`simulate`; a scene file is refused."""
+    raw = _cb.simulate("path", os.fspath(study), list(solvers or []), _models(models), fields, True)
+    return [Simulation(r, pandas) for r in raw]
+
+
+Suites = Union[Path, Sequence[Path]]
 
 
 def _suites(suite: Suites) -> List[str]:
@@ -334,26 +381,27 @@ def _models(models: Optional[Mapping[str, Model]]) -> List[Tuple[str, Any]]:
 
 
 def check(
-    suite: Suites = "scenes/thesis",
+    suite: Suites,
     *,
-    reference: Union[str, "os.PathLike[str]"] = "reference",
-    golden: Union[str, "os.PathLike[str]"] = "golden",
-    against: Optional[Union[str, "os.PathLike[str]"]] = None,
-    tolerances: Sequence[Union[str, "os.PathLike[str]"]] = (),
+    reference: Path,
+    golden: Optional[Path] = None,
+    against: Optional[Path] = None,
+    tolerances: Sequence[Path] = (),
     strict: bool = False,
     models: Optional[Mapping[str, Model]] = None,
 ) -> Verdict:
-    """Run suites (folders of scenes) through the gate as ``creepbench check`` does: every
-    result against ``golden`` (or a previous results folder ``against``) and the references,
-    the tolerance files applied (``strict``: refuse any loosening). ``models`` maps names to
+    """Run suites (folders of scenes, e.g. the repository's ``scenes/thesis``) through the gate
+    as ``creepbench check --suite`` does: every result against the references in the folder
+    ``reference`` (the repository's ``reference/``) and a baseline, either ``golden`` (blessed
+    results, the repository's ``golden/``) or ``against`` (a previous results folder), the
+    tolerance files applied (``strict``: refuse any loosening). ``models`` maps names to
     Python callables run in-process as models (as in :func:`simulate`) on every scene whose
-    ``solvers`` lists the name, validated, compared and gated as an external model is. Paths
-    are relative to the current directory (run it from the repository's folder for the
-    defaults)."""
+    ``solvers`` lists the name, validated, compared and gated as an external model is."""
+    _one_baseline(golden, against, required=True)
     findings, loosened = _cb.check(
         _suites(suite),
         os.fspath(reference),
-        os.fspath(golden),
+        os.fspath(golden if golden is not None else against),
         None if against is None else os.fspath(against),
         [os.fspath(t) for t in tolerances],
         strict,
@@ -363,13 +411,13 @@ def check(
 
 
 def run(
-    suite: Suites = "scenes/thesis",
+    suite: Suites,
     *,
-    results: Union[str, "os.PathLike[str]"] = "out/results",
-    report: Union[str, "os.PathLike[str]"] = "out/report",
-    reference: Union[str, "os.PathLike[str]"] = "reference",
-    golden: Union[str, "os.PathLike[str]"] = "golden",
-    fits: Optional[Union[str, "os.PathLike[str]"]] = None,
+    results: Path,
+    report: Path,
+    reference: Path,
+    golden: Path,
+    fits: Optional[Path] = None,
     models: Optional[Mapping[str, Model]] = None,
 ) -> RunReport:
     """Run suites as ``creepbench run --suite ... --results ... --report ...`` does: each

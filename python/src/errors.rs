@@ -1,29 +1,30 @@
-//! The library's errors as Python exceptions: invalid input as `SceneError` (a `ValueError`
-//! carrying `field`, `value` and `allowed`), anything else as `CreepbenchError`, with the
+//! The library's errors as the package's Python exceptions (defined once, in
+//! `creepbench/errors.py`): invalid input as `SceneError` (a `ValueError` carrying `field`,
+//! `value` and `allowed`), anything else as `RunError`, both `CreepbenchError`s, with the
 //! library's message unchanged.
 
 use creepbench::{Error, InputError};
-use pyo3::create_exception;
-use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 
-create_exception!(creepbench, SceneError, PyValueError, "Invalid input: `field`, `value` and `allowed` name it.");
-create_exception!(creepbench, CreepbenchError, PyRuntimeError, "A model, the gate or a file failed.");
+/// An instance of the package's exception class `class` made with `args`.
+fn raise<'py, A: pyo3::call::PyCallArgs<'py>>(py: Python<'py>, class: &str, args: A) -> PyErr {
+    let made = py.import("creepbench.errors").and_then(|m| m.getattr(class)).and_then(|c| c.call1(args));
+    match made {
+        Ok(instance) => PyErr::from_value(instance),
+        Err(importing) => importing,
+    }
+}
 
 /// A `SceneError` for an input error, its message the CLI's.
 pub fn input(e: InputError) -> PyErr {
     let message = Error::Input(e.clone()).to_string();
-    Python::attach(|py| {
-        let err = SceneError::new_err(message);
-        let value = err.value(py);
-        let set = [("field", &e.field), ("value", &e.value), ("allowed", &e.allowed)]
-            .into_iter()
-            .try_for_each(|(k, v)| value.setattr(k, v));
-        match set {
-            Ok(()) => err,
-            Err(setting) => setting,
-        }
-    })
+    Python::attach(|py| raise(py, "SceneError", (message, e.field, e.value, e.allowed)))
+}
+
+/// A `RunError` with this message.
+pub fn failure(message: impl Into<String>) -> PyErr {
+    let message: String = message.into();
+    Python::attach(|py| raise(py, "RunError", (message,)))
 }
 
 /// The Python exception of a library error; an in-process model's own exception is its cause.
@@ -32,14 +33,14 @@ pub fn to_py(e: Error) -> PyErr {
         Error::Input(i) => input(i),
         Error::External { scene, solver, source } => match source.downcast::<PyErr>() {
             Ok(cause) => Python::attach(|py| {
-                let err = CreepbenchError::new_err(format!(
+                let err = failure(format!(
                     "in-process model `{solver}` failed on scene `{scene}`: {cause} (<in-process {solver}>)"
                 ));
                 err.set_cause(py, Some(*cause));
                 err
             }),
-            Err(source) => CreepbenchError::new_err(Error::External { scene, solver, source }.to_string()),
+            Err(source) => failure(Error::External { scene, solver, source }.to_string()),
         },
-        other => CreepbenchError::new_err(other.to_string()),
+        other => failure(other.to_string()),
     }
 }

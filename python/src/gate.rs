@@ -66,7 +66,13 @@ pub fn check(
         .detach(|| {
             model::with_in_process(&models, |in_process| {
                 let runner = Runner { in_process, ..Runner::default() };
-                commands::gate(&suites, &reference, commands::Baseline { golden: &golden, against: against.as_deref() }, runner, &files)
+                commands::gate(
+                    &suites,
+                    &reference,
+                    commands::Baseline { golden: &golden, against: against.as_deref() },
+                    runner,
+                    &files,
+                )
             })
         })
         .map_err(errors::to_py)?;

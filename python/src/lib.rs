@@ -15,9 +15,6 @@ use pyo3::prelude::*;
 /// The compiled half of the `creepbench` package (the Python half wraps it: `creepbench/__init__.py`).
 #[pymodule]
 fn _creepbench(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    let py = m.py();
-    m.add("SceneError", py.get_type::<errors::SceneError>())?;
-    m.add("CreepbenchError", py.get_type::<errors::CreepbenchError>())?;
     m.add_function(wrap_pyfunction!(simulate::simulate, m)?)?;
     m.add_function(wrap_pyfunction!(gate::check, m)?)?;
     m.add_function(wrap_pyfunction!(gate::run, m)?)?;

@@ -13,16 +13,34 @@ use std::path::{Path, PathBuf};
 
 /// The scene's problems (one for a scene, one per point for a study file); `only` narrows their
 /// solvers; `in_process` are the names of models run in this process that the scene may list.
+/// `study` says which the caller asked for: a study file (`simulate_study`) or one scene.
 pub fn problems(
     kind: &str,
     scene: &Bound<'_, PyAny>,
     only: &[String],
     in_process: &[String],
+    study: bool,
 ) -> PyResult<Vec<Problem>> {
+    if study && kind != "path" {
+        return Err(errors::input(InputError::new(
+            "scene",
+            if kind == "toml" { "TOML text" } else { "a dict" },
+            "a study file's path",
+        )));
+    }
     let table = match kind {
         "path" => {
             let path: PathBuf = scene.extract()?;
             let sources = suite::sources_of_file(&path).map_err(errors::to_py)?;
+            let is_study = sources.iter().any(|s| s.study.is_some());
+            if is_study != study {
+                let allowed = if study {
+                    "a study file (a [study] table): a scene file goes to simulate()"
+                } else {
+                    "a scene file, TOML text or a dict: a study file (a [study] table) goes to simulate_study()"
+                };
+                return Err(errors::input(InputError::new("scene", path.display().to_string(), allowed)));
+            }
             return sources
                 .iter()
                 .map(|s| pipeline::load_source_with(s, only, in_process).map_err(errors::to_py))

@@ -34,9 +34,10 @@ pub struct Simulation {
     grid: (Vec<f64>, Vec<f64>),
 }
 
-/// Run a scene (`kind` "path", "toml" or "table"); `models` maps names to in-process models.
+/// Run a scene (`kind` "path", "toml" or "table") or, with `study`, every point of a study file;
+/// `models` maps names to in-process models.
 #[pyfunction]
-#[pyo3(signature = (kind, scene, solvers, models, fields))]
+#[pyo3(signature = (kind, scene, solvers, models, fields, study))]
 pub fn simulate(
     py: Python<'_>,
     kind: &str,
@@ -44,9 +45,10 @@ pub fn simulate(
     solvers: Vec<String>,
     models: Vec<(String, Py<PyAny>)>,
     fields: bool,
+    study: bool,
 ) -> PyResult<Vec<Simulation>> {
     let names: Vec<String> = models.iter().map(|(n, _)| n.clone()).collect();
-    let problems = scene::problems(kind, scene, &solvers, &names)?;
+    let problems = scene::problems(kind, scene, &solvers, &names, study)?;
     py.detach(|| problems.into_iter().map(|p| run_one(p, &models, fields)).collect::<Result<Vec<_>, Error>>())
         .map_err(errors::to_py)
 }
@@ -132,8 +134,8 @@ impl Simulation {
                 ("py_mpa", |f| &f.py_mpa),
             ] {
                 let flat: Vec<f64> = steps.iter().flat_map(|f| get(f).iter().copied()).collect();
-                let array = Array3::from_shape_vec((steps.len(), my, mx), flat)
-                    .map_err(|e| errors::CreepbenchError::new_err(e.to_string()))?;
+                let array =
+                    Array3::from_shape_vec((steps.len(), my, mx), flat).map_err(|e| errors::failure(e.to_string()))?;
                 d.set_item(key, array.into_pyarray(py))?;
             }
             out.set_item(model, d)?;

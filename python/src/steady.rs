@@ -60,8 +60,7 @@ pub fn steady<'py>(
     let rows: Vec<[f64; 3]> = view.rows().into_iter().map(|r| [r[0], r[1], r[2]]).collect();
     let (problem, def) = model_problem(model, table)?;
     let out = py.detach(|| evaluate(&problem, def, &rows)).map_err(|e| solve_error(&problem, model, e))?;
-    let array =
-        Array2::from_shape_vec((rows.len(), 3), out).map_err(|e| errors::CreepbenchError::new_err(e.to_string()))?;
+    let array = Array2::from_shape_vec((rows.len(), 3), out).map_err(|e| errors::failure(e.to_string()))?;
     Ok(array.into_pyarray(py))
 }
 

@@ -80,7 +80,7 @@ impl Stepper {
         let d = PyDict::new(py);
         for (key, values) in [("pn_mpa", v.pressure_mpa), ("px_mpa", v.tx_mpa), ("py_mpa", v.ty_mpa)] {
             let a = Array2::from_shape_vec((v.grid.my, v.grid.mx), values.to_vec())
-                .map_err(|e| errors::CreepbenchError::new_err(e.to_string()))?;
+                .map_err(|e| errors::failure(e.to_string()))?;
             d.set_item(key, a.into_pyarray(py) as Bound<'py, PyArray2<f64>>)?;
         }
         Ok(Some(d))

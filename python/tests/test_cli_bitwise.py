@@ -74,7 +74,7 @@ def test_fields_are_numpy_arrays_of_the_grid():
 
 @pytest.mark.parametrize("suite", ["scenes/nonhertz", "scenes/table"])
 def test_check_is_the_cli_gate(suite):
-    verdict = creepbench.check(suite)
+    verdict = creepbench.check(suite, reference="reference", golden="golden")
     assert verdict.passed and bool(verdict)
     assert verdict.gated > 500 and verdict.failed == 0
     cli = run_cli("check", "--suite", suite)
@@ -95,7 +95,7 @@ def test_check_fails_on_a_drift(tmp_path):
     cells[k] = repr(float(cells[k]) + 1e-6)
     lines[5] = ",".join(cells)
     csv.write_text("\n".join(lines) + "\n")
-    verdict = creepbench.check("scenes/nonhertz", golden=golden)
+    verdict = creepbench.check("scenes/nonhertz", reference="reference", golden=golden)
     assert not verdict.passed and verdict.failed == 1
     (f,) = verdict.failures
     assert (f.scene, f.solver, f.quantity, f.step) == ("nh_flat_sweep_cx", "fastsim", "fx_over_fn", int(cells[0]))

@@ -34,7 +34,7 @@ def test_run_is_the_cli_run(tmp_path):
                   "--golden", none, "--quiet")
     assert cli.returncode == 0, cli.stderr
     # A model given but listed by no scene changes nothing.
-    rep = creepbench.run(suite, results=tmp_path / "res", report=tmp_path / "rep", golden=none,
+    rep = creepbench.run(suite, reference="reference", results=tmp_path / "res", report=tmp_path / "rep", golden=none,
                          models={"mine": fastsim_as_python()})
     assert isinstance(rep, creepbench.RunReport)
     assert rep.report == str(tmp_path / "rep" / "validation.md") and rep.results == str(tmp_path / "res")
@@ -63,7 +63,7 @@ def findings_of(verdict, solver):
 
 def test_an_in_process_model_is_run_compared_and_reported_in_a_suite(tmp_path):
     suite = make_suite(tmp_path / "suite", ["mine"])
-    rep = creepbench.run(suite, results=tmp_path / "res", report=tmp_path / "rep", golden=tmp_path / "no_golden",
+    rep = creepbench.run(suite, reference="reference", results=tmp_path / "res", report=tmp_path / "rep", golden=tmp_path / "no_golden",
                          models={"mine": fastsim_as_python()})
     # Its history is written as an external model's, and equals FASTSIM's it wraps.
     for name in SCENES:
@@ -81,9 +81,9 @@ def test_an_in_process_model_is_run_compared_and_reported_in_a_suite(tmp_path):
     assert "mine" in (tmp_path / "rep" / "validation.md").read_text()
 
     # check() against that run: the same model passes, a modified one fails at its worst point.
-    same = creepbench.check(suite, against=tmp_path / "res", models={"mine": fastsim_as_python()})
+    same = creepbench.check(suite, reference="reference", against=tmp_path / "res", models={"mine": fastsim_as_python()})
     assert same.passed and any(f.solver == "mine" and f.gated for f in same.findings)
-    changed = creepbench.check(suite, against=tmp_path / "res", models={"mine": fastsim_as_python(scale=1.01)})
+    changed = creepbench.check(suite, reference="reference", against=tmp_path / "res", models={"mine": fastsim_as_python(scale=1.01)})
     assert not changed.passed and {f.solver for f in changed.failures} == {"mine"}
     worst = max((f for f in changed.failures if f.quantity == "fx_over_fn"), key=lambda f: f.diff / f.allowed)
     before = pl.read_csv(tmp_path / "res" / worst.scene / "mine.csv")
@@ -94,14 +94,14 @@ def test_an_in_process_model_is_run_compared_and_reported_in_a_suite(tmp_path):
 def test_a_suite_scene_naming_a_model_not_given_is_refused(tmp_path):
     suite = make_suite(tmp_path / "suite", ["mine"])
     with pytest.raises(creepbench.SceneError) as e:
-        creepbench.check(suite, against=tmp_path)
+        creepbench.check(suite, reference="reference", against=tmp_path)
     assert e.value.value == '"mine"' and "solvers[" in e.value.field and "fastsim" in e.value.allowed
 
 
 def test_bad_output_in_a_suite_is_refused_naming_scene_and_model(tmp_path):
     suite = make_suite(tmp_path / "suite", ["mine"])
-    with pytest.raises(creepbench.CreepbenchError) as e:
-        creepbench.run(suite, results=tmp_path / "res", report=tmp_path / "rep", golden=tmp_path / "no_golden",
+    with pytest.raises(creepbench.RunError) as e:
+        creepbench.run(suite, reference="reference", results=tmp_path / "res", report=tmp_path / "rep", golden=tmp_path / "no_golden",
                        models={"mine": fastsim_as_python(drop_rows=3)})
     assert "mine" in str(e.value) and "rows" in str(e.value)
     # Nothing was written: the run stops before its results.
@@ -112,7 +112,7 @@ def test_run_refuses_to_write_into_golden(tmp_path):
     suite = make_suite(tmp_path / "suite")
     golden = tmp_path / "golden"
     golden.mkdir()
-    with pytest.raises(creepbench.CreepbenchError) as e:
-        creepbench.run(suite, results=golden / "res", report=tmp_path / "rep", golden=golden)
+    with pytest.raises(creepbench.RunError) as e:
+        creepbench.run(suite, reference="reference", results=golden / "res", report=tmp_path / "rep", golden=golden)
     assert "refusing to write" in str(e.value) and "only `creepbench bless` writes" in str(e.value)
     assert not (golden / "res").exists() and not (tmp_path / "rep").exists()

@@ -1,7 +1,8 @@
 //! The Python package (issue 34, docs/python.md): a virtual environment under target/pyenv with
 //! python/requirements-test.txt installed from PyPI (made once, kept while that file is
-//! unchanged), the package built as an abi3 wheel by maturin (in target/python, its own cargo
-//! target folder, kept between runs) and installed, then pytest on python/tests (the bindings
+//! unchanged), the package built as an abi3 wheel by maturin (a member of this workspace: its
+//! cargo build shares target/ and reuses what `cargo test` built) and installed, then pytest on
+//! python/tests (the bindings
 //! against the CLI bit for bit — simulate, check and run —, the array API with one thread and
 //! several, the errors, the in-process model on a scene and in suites, pandas frames, the
 //! examples).
@@ -69,7 +70,6 @@ fn the_python_package_builds_and_passes_its_tests() {
     build
         .args(["build", "--release", "--locked", "--quiet", "-m", "python/Cargo.toml", "-o"])
         .arg(&wheels)
-        .env("CARGO_TARGET_DIR", target.join("python"))
         .env("PATH", format!("{}:{}", bin.display(), std::env::var("PATH").unwrap_or_default()));
     step("maturin build --release (the package's wheel)", build, 2400);
     let wheel = std::fs::read_dir(&wheels)
@@ -92,4 +92,36 @@ fn the_python_package_builds_and_passes_its_tests() {
     let out = step("pytest python/tests", pytest, 900);
     let summary = out.lines().last().unwrap_or_default();
     assert!(summary.contains("passed") && !summary.contains("failed"), "pytest: {out}");
+}
+
+/// The Python floor of pyproject.toml's `requires-python`, e.g. (3, 11).
+fn requires_python() -> (u32, u32) {
+    let text = std::fs::read_to_string(root().join("python/pyproject.toml")).unwrap();
+    let line = text.lines().find(|l| l.starts_with("requires-python")).expect("requires-python in pyproject.toml");
+    let floor = line.split(">=").nth(1).expect("requires-python = \">=3.N\"").trim().trim_matches('"');
+    let (major, minor) = floor.split_once('.').unwrap();
+    (major.parse().unwrap(), minor.parse().unwrap())
+}
+
+#[test]
+fn the_supported_pythons_are_the_ones_the_tests_run() {
+    let (major, minor) = requires_python();
+    let cargo = std::fs::read_to_string(root().join("python/Cargo.toml")).unwrap();
+    assert!(
+        cargo.contains(&format!("\"abi3-py{major}{minor}\"")),
+        "python/Cargo.toml's abi3 floor differs from requires-python >= {major}.{minor}"
+    );
+    let python = std::env::var_os("PYTHON").map_or_else(|| PathBuf::from("python3"), PathBuf::from);
+    let mut version = Command::new(python);
+    version.args(["-c", "import sys; print(sys.version_info[0], sys.version_info[1])"]);
+    let out = step("python3 -c sys.version_info", version, 60);
+    let got: Vec<u32> = out.split_whitespace().map(|v| v.parse().unwrap()).collect();
+    // The floor is the version the tests run; later ones are served by the abi3 wheel.
+    assert_eq!(
+        (got[0], got[1]),
+        (major, minor),
+        "the tests run Python {}.{} but the package's floor is {major}.{minor}: the floor would be untested",
+        got[0],
+        got[1]
+    );
 }
