@@ -69,6 +69,13 @@ pub fn number(v: f64) -> String {
     }
 }
 
+/// A difference or a tolerance as every message shows it: four significant digits with an
+/// exponent (`1.000e-3`), so |diff| and allowed read alike in the console, the summary, JUnit and
+/// the drift lines.
+pub fn deviation(v: f64) -> String {
+    format!("{v:.3e}")
+}
+
 /// A data file that does not have the expected form (a history, metrics, a reference table).
 #[derive(Debug, thiserror::Error)]
 pub enum FormatError {

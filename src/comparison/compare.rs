@@ -272,11 +272,11 @@ pub fn drift_line(f: &Finding) -> String {
         return format!("{head}: unmatched: {}", f.note);
     }
     format!(
-        "{head}: ours {} vs {} (|diff| {} > allowed {:e}){}",
+        "{head}: ours {} vs {} (|diff| {} > allowed {}){}",
         number(f.ours),
         number(f.theirs),
-        number(f.diff),
-        f.allowed,
+        crate::error::deviation(f.diff),
+        crate::error::deviation(f.allowed),
         if f.note.is_empty() { String::new() } else { format!(": {}", f.note) }
     )
 }

@@ -123,14 +123,14 @@ pub fn moved(all: &[Finding], verbose: bool) -> (usize, Vec<String>) {
     let moved = worst_first(all.iter().filter(|f| f.against == compare::Against::Previous && f.diff > 0.0));
     let lines = moved.iter().map(|f| {
         format!(
-            "{} {} {} step {}: {} -> {} (|diff| {:.3e}, {} of allowed)",
+            "{} {} {} step {}: {} -> {} (|diff| {}, {} of allowed)",
             f.scene,
             f.solver,
             f.quantity,
             f.step.map_or("-".to_string(), |s| s.to_string()),
             crate::error::number(f.theirs),
             crate::error::number(f.ours),
-            f.diff,
+            crate::error::deviation(f.diff),
             ratio(f)
         )
     });

@@ -4,7 +4,7 @@
 
 use crate::comparison::compare::Finding;
 use crate::comparison::tolerance_file::Loosening;
-use crate::error::number;
+use crate::error::{deviation, number};
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
@@ -34,14 +34,17 @@ fn worst<'a>(fs: &[&'a Finding]) -> &'a Finding {
 /// One line describing a finding's worst point.
 pub fn describe(f: &Finding) -> String {
     let step = f.step.map_or("-".to_string(), |s| s.to_string());
+    if f.diff.is_nan() && f.ours.is_nan() && f.theirs.is_nan() {
+        return format!("{} step {step}: unmatched: {}", f.quantity, f.note);
+    }
     let mut s = format!(
-        "{} step {step}: ours {} vs {} {}, |diff| {:.3e}, allowed {:.3e}",
+        "{} step {step}: ours {} vs {} {}, |diff| {}, allowed {}",
         f.quantity,
         number(f.ours),
         f.against.label(),
         number(f.theirs),
-        f.diff,
-        f.allowed
+        deviation(f.diff),
+        deviation(f.allowed)
     );
     if !f.note.is_empty() {
         let _ = write!(s, " ({})", f.note);

@@ -35,6 +35,7 @@ mod gate_sturdy;
 mod layering;
 mod linear_model;
 mod nonhertz;
+mod oracles;
 mod parser_fuzz;
 mod polach_model;
 mod prescribed_force;
