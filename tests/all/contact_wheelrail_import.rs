@@ -5,7 +5,7 @@
 
 use crate::common::{self, root};
 use creepbench::import::contact::wheelrail_deck::{self, PitchInput, Vertical};
-use creepbench::scene::wheelrail::{PlacementSpec, SideSpec, VerticalSpec, WheelRailScene};
+use creepbench::scene::wheelrail::{PlacementSpec, SideSpec, VerticalSpec, WheelRailScene, PROFILE_DEFAULTS};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -171,7 +171,7 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
     let s18 = scene(18);
     assert_eq!(s18.rail_deviation.position, [0.0, 5.0, 15f64.to_radians()]);
     assert!(s18.frictionless && !scene(22).frictionless);
-    assert_eq!((s18.a_sep_rad, s18.rail.kink_low_rad), (std::f64::consts::PI, 6f64.to_radians()));
+    assert_eq!((s18.a_sep_rad, s18.rail.kink_low_rad), (std::f64::consts::PI, PROFILE_DEFAULTS[2]));
     assert_eq!((scene(22).rail.smooth, scene(22).wheel.smooth, scene(27).rail.smooth), (10.0, 10.0, 0.1));
     assert_eq!((scene(30).rail.mirror_z, scene(30).wheel.mirror_z), (1, 0));
     assert_eq!((scene(28).rail.kink_width_mm, scene(27).rail.kink_width_mm), (0.0, 2.0));
