@@ -1,10 +1,10 @@
 //! A wheel–rail scene as CONTACT module-1 input (issue 44; CONTACT's user guide, "Specification of
 //! the input file", module 1), one CONTACT case per row of its cases table, as
 //! reference/contact_wheelrail/examples/mbench_a22_left.inp forms its cases: the first case gives
-//! everything (C-P-B-T-N-F-S = C203N00, V-L-D-C-M-Z-E = 0022033, H-G-I-A-O-W-R = 0000321: the
+//! everything (C-P-B-T-N-F-S = C20TN00, T = 3 or 0 when frictionless, V-L-D-C-M-Z-E = 0022033, H-G-I-A-O-W-R = 0000321: the
 //! solver's limits, FSTAT = FKIN = mu, POISS and GG of both bodies the scene's, DX, DS with DQREL 1,
-//! the scene's A_SEP, D_SEP, D_COMB, the track, the rail profile with zero deviations, the
-//! wheelset's dimensions, the wheel profile, the position and velocities); each later case keeps all
+//! the scene's A_SEP, D_SEP, D_COMB, the track, the rail profile with its options (PRFOPT = 2) and
+//! the rail's deviations, the wheelset's dimensions, the wheel profile, the position and velocities); each later case keeps all
 //! but its position and velocities (0111002, 0100321). C is the side (0 left, 1 right), N the
 //! vertical problem (1: FZ prescribed, 0: the height Z_WS); S_WS and PITCH are 0. Profile names are
 //! written relative to the deck's folder, where CONTACT looks for them.
@@ -89,8 +89,9 @@ fn profile_name(p: &ProfileSpec, key: &str, deck_dir: &Path) -> Result<String, I
 fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
     let c = u8::from(s.side == SideSpec::Right);
     let n = u8::from(s.vertical == VerticalSpec::Force);
+    let t = if s.frictionless { 0 } else { 3 };
     let (vldcmze, hgiaowr) = if first { ("0022033", "0000321") } else { ("0111002", "0100321") };
-    let _ = writeln!(out, " {c}203{n}00    C-P-B-T-N-F-S   CONFIG, PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS");
+    let _ = writeln!(out, " {c}20{t}{n}00    C-P-B-T-N-F-S   CONFIG, PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS");
     let _ = writeln!(out, " {vldcmze}    V-L-D-C-M-Z-E   VARFRC, FRCLAW, DISCNS, INFLCF, MATER,  ZTRACK, EWHEEL");
     let _ = writeln!(out, " {hgiaowr}    H-G-I-A-O-W-R     HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW,   RETURN");
 }
@@ -115,7 +116,9 @@ fn setup(s: &WheelRailScene, (rail, wheel): (&str, &str), out: &mut String) {
         }
     };
     profile_line(rail, &s.rail, "RFNAME", out);
-    let _ = writeln!(out, "     0.0    0.0   0.0   0.0   0.0   0.0     DY, DZ, ROLL, VY, VZ, VROLL");
+    let ([dy, dz, droll], [vy, vz, vroll]) = (s.rail_deviation.position, s.rail_deviation.velocity);
+    let _ =
+        writeln!(out, "  {dy:?}   {dz:?}   {droll:?}   {vy:?}   {vz:?}   {vroll:?}     DY, DZ, ROLL, VY, VZ, VROLL");
     let _ = writeln!(
         out,
         "  {:?}   {:?}   {:?}                         FBDIST, FBPOS, NOMRAD",
@@ -133,15 +136,27 @@ fn shear_modulus(m: &MaterialSpec) -> f64 {
     }
 }
 
-/// `'NAME' MIRRORY SCALE SMOOTH`.
+/// `'NAME' MIRRORY SCALE SMOOTH MIRRORZ PRFOPT`, PRFOPT = 2 with its lines `ISMOOTH ZIGTHRS
+/// KINKHIGH KINKLOW KINKWID` and `ERRHND MAXOMIT` (ERRHND 0, CONTACT's default: warn and go on).
 fn profile_line(name: &str, p: &ProfileSpec, what: &str, out: &mut String) {
     let _ = writeln!(
         out,
-        "  '{name}'   {}   {:?}   {:?}       {what}, MIRRORY, SCALE, SMOOTH",
+        "  '{name}'   {}   {:?}   {:?}   {}   2       {what}, MIRRORY, SCALE, SMOOTH, MIRRORZ, PRFOPT",
         u8::from(p.mirror_y),
         p.scale,
-        p.smooth
+        p.smooth,
+        p.mirror_z
     );
+    let _ = writeln!(
+        out,
+        "  {}   {:?}   {:?}   {:?}   {:?}       ISMOOTH, ZIGTHRS, KINKHIGH, KINKLOW, KINKWID",
+        u8::from(p.smooth_weighted),
+        p.zig_zag_rad,
+        p.kink_high_rad,
+        p.kink_low_rad,
+        p.kink_width_mm
+    );
+    let _ = writeln!(out, "  0   {:?}       ERRHND, MAXOMIT", p.max_omit);
 }
 
 /// S_WS = 0, Y_WS, FZ or Z_WS, ROLL, YAW, PITCH = 0; then VS, VY, VZ, VROLL, VYAW, VPITCH.

@@ -56,7 +56,7 @@ pub struct CaseResult {
 
 /// Solve `case` with `models` (names of the registry) at Coulomb friction `mu`.
 pub fn solve(case: &WheelRailCase, models: &[String], mu: f64) -> Result<CaseResult, Error> {
-    solve_with(case, models, &Friction { mu, variation: None })
+    solve_with(case, models, &Friction { mu, variation: None, frictionless: false })
 }
 
 /// Solve `case` with `models`, each patch at its Coulomb friction (varying across the rail or
@@ -73,6 +73,12 @@ pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Res
     let mut normal = wheelrail::normal_contact_with(case, None, &mut cache).map_err(geometry)?;
     // The exact theory's forces on the patches of `normal`, where the balance has them.
     let mut exact_now = None;
+    if mu.frictionless {
+        let forces: Vec<PatchForces> = normal.patches.iter().map(frictionless).collect();
+        let totals = totals(&normal, &forces, case);
+        let out = models.iter().map(|m| (m.clone(), forces.clone(), totals)).collect();
+        return Ok(CaseResult { normal, models: out });
+    }
     if let Vertical::Force { fz_n } = case.vertical {
         for _ in 0..VERTICAL_ROUNDS {
             let exact = patch_forces(&normal, EXACT, mu, case)?;
@@ -104,6 +110,13 @@ pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Res
         out.push((model.clone(), forces, totals));
     }
     Ok(CaseResult { normal, models: out })
+}
+
+/// A patch in frictionless compression (CONTACT's T = 0): its normal force only, every element in
+/// contact counted as adhering, as CONTACT prints it.
+fn frictionless(p: &NormalPatch) -> PatchForces {
+    let ncon = p.pn_mpa.iter().filter(|&&pn| pn > 0.0).count();
+    PatchForces { fn_n: p.fn_n, fx_n: 0.0, fs_n: 0.0, mn_nmm: 0.0, n_adhesion: Some(ncon), n_slip: Some(0) }
 }
 
 /// One model's forces on every patch.

@@ -43,9 +43,15 @@ fn models(scene: &WheelRailScene) -> Result<Vec<String>, InputError> {
 fn profile(spec: &ProfileSpec, kind: ProfileKind) -> Result<Profile, Error> {
     let opts = ProfileOptions {
         mirror_y: i32::from(spec.mirror_y),
+        mirror_z: i32::from(spec.mirror_z),
         scale: spec.scale,
         smooth: spec.smooth,
-        ..ProfileOptions::default()
+        ismooth: u8::from(spec.smooth_weighted),
+        zig_thrs_rad: spec.zig_zag_rad,
+        kink_high_rad: spec.kink_high_rad,
+        kink_low_rad: spec.kink_low_rad,
+        kink_wid_mm: spec.kink_width_mm,
+        max_omit: spec.max_omit,
     };
     Ok(read_profile(&spec.path, kind, &opts)?)
 }
@@ -67,7 +73,8 @@ pub fn run_scene(scene: &WheelRailScene) -> Result<SceneRun, Error> {
         .par_iter()
         .map(|row| {
             let case = case_of(scene, row, &rail, &wheel, material);
-            let friction = Friction { mu: scene.mu, variation: scene.mu_variation.as_ref() };
+            let friction =
+                Friction { mu: scene.mu, variation: scene.mu_variation.as_ref(), frictionless: scene.frictionless };
             solve_with(&case, &models, &friction)
                 .map(|r| (row.contact_case, r))
                 .map_err(|e| in_case(&scene.name, row, e))
@@ -96,6 +103,9 @@ pub fn case_of<'a>(
     material: crate::physics::Material,
 ) -> WheelRailCase<'a> {
     let [vs, vy, vz, vroll, vyaw, vpitch] = row.velocity;
+    // The rail's deviations are given in the track's frame, as the wheelset's: mirrored on the left.
+    let m = if s.side == SideSpec::Left { -1.0 } else { 1.0 };
+    let ([dy, dz, droll], [vy_r, vz_r, vroll_r]) = (s.rail_deviation.position, s.rail_deviation.velocity);
     let (vertical, z_mm) = match s.vertical {
         VerticalSpec::Force => (Vertical::Force { fz_n: row.vertical }, 0.0),
         VerticalSpec::Position => (Vertical::Position, row.vertical),
@@ -113,7 +123,8 @@ pub fn case_of<'a>(
                 PlacementSpec::Absolute { y_mm, z_mm } => RailPlacement::Absolute { y_mm, z_mm },
             },
             cant_rad: s.cant_rad,
-            deviation_mm_rad: [0.0; 3],
+            deviation_mm_rad: [m * dy, dz, m * droll],
+            deviation_velocity: [m * vy_r, vz_r, m * vroll_r],
         },
         wheelset: WheelsetGeometry {
             flange_back_distance_mm: s.flange_back_distance_mm,

@@ -16,14 +16,50 @@ pub enum SideSpec {
     Right,
 }
 
-/// A profile file and how to take it (CONTACT's RFNAME/WFNAME, MIRRORY, SCALE, SMOOTH).
+/// A profile file and how to take it (CONTACT's RFNAME/WFNAME, MIRRORY, SCALE, SMOOTH, MIRRORZ
+/// and the options of PRFOPT: ISMOOTH, ZIGTHRS, KINKHIGH, KINKLOW, KINKWID, MAXOMIT).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ProfileSpec {
     /// Resolved against the scene's folder.
     pub path: PathBuf,
     pub mirror_y: bool,
+    /// MIRRORZ: −1 keep z as read, 0 detect (Miniprof files and tables), 1 mirror z.
+    pub mirror_z: i8,
     pub scale: f64,
+    /// SMOOTH: λ of the smoothing spline, or with `smooth_weighted` its filter length [mm].
     pub smooth: f64,
+    /// ISMOOTH = 1: the smoothing spline weighted by the points' spacing, SMOOTH a length [mm].
+    pub smooth_weighted: bool,
+    /// ZIGTHRS, KINKHIGH, KINKLOW [rad], KINKWID [mm]: the cleaning of zig-zags and kinks.
+    pub zig_zag_rad: f64,
+    pub kink_high_rad: f64,
+    pub kink_low_rad: f64,
+    pub kink_width_mm: f64,
+    /// MAXOMIT: the largest fraction of a wheel profile left out where it folds back.
+    pub max_omit: f64,
+}
+
+/// CONTACT's defaults of a profile's cleaning (`m_profile.f90`, `profile_init`): ZIGTHRS 150°,
+/// KINKHIGH 30°, KINKLOW KINKHIGH/5, KINKWID 2 mm, MAXOMIT 0.5.
+pub const PROFILE_DEFAULTS: [f64; 5] = [
+    150.0 * std::f64::consts::PI / 180.0,
+    30.0 * std::f64::consts::PI / 180.0,
+    6.0 * std::f64::consts::PI / 180.0,
+    2.0,
+    0.5,
+];
+
+/// The values of `mirror_z` and CONTACT's MIRRORZ for each.
+pub const MIRROR_Z: [(&str, i8); 3] = [("keep", -1), ("detect", 0), ("mirror", 1)];
+
+/// The rail's deviation from its design position and its velocity (CONTACT's DYRAIL, DZRAIL,
+/// DROLLR, VYRAIL, VZRAIL, VROLLR), in the side's own frame as CONTACT's input gives them.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct RailDeviationSpec {
+    /// DYRAIL, DZRAIL [mm], DROLLR [rad].
+    pub position: [f64; 3],
+    /// VYRAIL, VZRAIL [mm/s], VROLLR [rad/s].
+    pub velocity: [f64; 3],
 }
 
 /// The rail's placement (GAUGHT > 0: gauge point; else absolute).
@@ -103,6 +139,11 @@ pub struct WheelRailScene {
     pub wheel: ProfileSpec,
     pub placement: PlacementSpec,
     pub cant_rad: f64,
+    /// The rail's deviation from its design position and its velocity (`[rail] deviation_*`).
+    pub rail_deviation: RailDeviationSpec,
+    /// CONTACT's T = 0 (`[wheelrail] frictionless`): the normal problem only, no tangential
+    /// forces (every model's FX, FS, MN are 0).
+    pub frictionless: bool,
     pub flange_back_distance_mm: f64,
     pub flange_back_position_mm: f64,
     pub nominal_radius_mm: f64,
@@ -237,8 +278,9 @@ impl WheelRailScene {
         }
         let d_turn_mm = w.opt_f64("d_turn_mm", Range::new(0.0, true, 1e3, true))?.unwrap_or(2.0 * d_sep_mm - d_comb_mm);
         let wheel_mesh = w.opt_choice("wheel_surface", &["exact", "contact_mesh"])? == Some("contact_mesh");
+        let frictionless = w.opt_bool("frictionless")?.unwrap_or(false);
         w.finish()?;
-        let (rail, placement, cant_rad) = rail(&mut top, dir)?;
+        let (rail, placement, cant_rad, rail_deviation) = rail(&mut top, dir)?;
         let (wheel, fbd, fbp, radius) = wheel(&mut top, dir)?;
         let material = super::sections::material(&mut top)?;
         let (vertical, cases) = super::wheelrail_cases::read(&mut top, dir, radius)?;
@@ -254,6 +296,8 @@ impl WheelRailScene {
             wheel,
             placement,
             cant_rad,
+            rail_deviation,
+            frictionless,
             flange_back_distance_mm: fbd,
             flange_back_position_mm: fbp,
             nominal_radius_mm: radius,
@@ -341,21 +385,50 @@ fn check_origin(origin: Option<&Origin>, cases: &[CaseRow]) -> Result<(), InputE
     ))
 }
 
-/// A profile's keys: `profile` (path), `mirror_y`, `scale`, `smooth`.
+/// A profile's keys: `profile` (path), `mirror_y`, `mirror_z`, `scale`, `smooth`,
+/// `smooth_weighted` and the cleaning's `zig_zag_rad`, `kink_high_rad`, `kink_low_rad`,
+/// `kink_width_mm`, `max_omit`.
 fn profile(s: &mut Section, dir: &Path) -> Result<ProfileSpec, InputError> {
     let path = dir.join(
         s.str("profile", "a profile file's path relative to the scene (.prr, .prw, .ban, .whl, or two columns y z)")?,
     );
+    let names: Vec<&str> = MIRROR_Z.iter().map(|(n, _)| *n).collect();
+    let mirror_z =
+        s.opt_choice("mirror_z", &names)?.map_or(0, |n| MIRROR_Z.iter().find(|(m, _)| *m == n).map_or(0, |m| m.1));
+    let [zig, high, low, width, omit] = PROFILE_DEFAULTS;
+    let turn = Range::new(0.0, true, 2.0 * std::f64::consts::PI, true);
     Ok(ProfileSpec {
         path,
         mirror_y: s.opt_bool("mirror_y")?.unwrap_or(false),
+        mirror_z,
         scale: s.opt_f64("scale", Range::new(0.0, false, 1e4, true))?.unwrap_or(1.0),
         smooth: s.opt_f64("smooth", Range::new(0.0, true, 1e10, true))?.unwrap_or(0.0),
+        smooth_weighted: s.opt_bool("smooth_weighted")?.unwrap_or(false),
+        zig_zag_rad: s.opt_f64("zig_zag_rad", turn)?.unwrap_or(zig),
+        kink_high_rad: s.opt_f64("kink_high_rad", turn)?.unwrap_or(high),
+        kink_low_rad: s.opt_f64("kink_low_rad", turn)?.unwrap_or(low),
+        kink_width_mm: s.opt_f64("kink_width_mm", Range::new(0.0, true, 1e3, true))?.unwrap_or(width),
+        max_omit: s.opt_f64("max_omit", Range::new(0.0, true, 1.0, true))?.unwrap_or(omit),
+    })
+}
+
+/// `[rail]`'s `deviation_y_mm`, `deviation_z_mm`, `deviation_roll_rad`, `deviation_vy_mm_s`,
+/// `deviation_vz_mm_s`, `deviation_vroll_rad_s` (each 0 when absent).
+fn rail_deviation(r: &mut Section) -> Result<RailDeviationSpec, InputError> {
+    let speed = Range::new(-1e7, true, 1e7, true);
+    let mut get = |key: &str, range: Range| r.opt_f64(key, range).map(|v| v.unwrap_or(0.0));
+    Ok(RailDeviationSpec {
+        position: [get("deviation_y_mm", LENGTH)?, get("deviation_z_mm", LENGTH)?, get("deviation_roll_rad", ANGLE)?],
+        velocity: [
+            get("deviation_vy_mm_s", speed)?,
+            get("deviation_vz_mm_s", speed)?,
+            get("deviation_vroll_rad_s", speed)?,
+        ],
     })
 }
 
 /// `[rail]`: its profile, its placement (gauge point or absolute) and the cant.
-fn rail(top: &mut Section, dir: &Path) -> Result<(ProfileSpec, PlacementSpec, f64), InputError> {
+fn rail(top: &mut Section, dir: &Path) -> Result<(ProfileSpec, PlacementSpec, f64, RailDeviationSpec), InputError> {
     let mut r = top.table("rail")?;
     let spec = profile(&mut r, dir)?;
     let placement = match r.opt_f64("gauge_height_mm", Range::new(0.0, false, 1e3, true))? {
@@ -368,8 +441,9 @@ fn rail(top: &mut Section, dir: &Path) -> Result<(ProfileSpec, PlacementSpec, f6
         }
     };
     let cant_rad = r.opt_f64("cant_rad", ANGLE)?.unwrap_or(0.0);
+    let deviation = rail_deviation(&mut r)?;
     r.finish()?;
-    Ok((spec, placement, cant_rad))
+    Ok((spec, placement, cant_rad, deviation))
 }
 
 /// `[wheel]`: its profile and the wheelset's FBDIST, FBPOS, NOMRAD.

@@ -3,10 +3,13 @@
 //! wheel's at the wheel's point Q, the approach `pen` below the reference along n, in the patch's
 //! x and s directions over the rolling speed, and the spin: the rail's angular velocity less the
 //! wheel's about n over the speed. The rolling speed is the mean of the wheelset's forward speed
-//! and Q's speed from the pitch rotation alone.
+//! and Q's speed from the pitch rotation alone. A rail moving from its design position (VYRAIL,
+//! VZRAIL, VROLLR: `m_wr_rigslip` `rail_tvel_trk`, `rail_rvel_trk`, rolling about the rail
+//! profile's origin) adds its material's velocity at the reference P and its roll rate.
 
 use super::patch::PatchFrame;
 use super::wheel::{PlacedWheel, Velocity};
+use nalgebra::{Point3, Vector3};
 
 /// CKSI, CETA [-], CPHI [1/mm] and the rolling speed VELOC [mm/s] of one patch.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -17,18 +20,44 @@ pub struct Creepages {
     pub veloc_mm_s: f64,
 }
 
-/// The creepages at the patch's reference with the approach `pen_mm` (the deepest overlap).
-pub fn at_reference(frame: &PatchFrame, wheel: &PlacedWheel, v: &Velocity, pen_mm: f64) -> Creepages {
+/// The rail's motion (right-side frame): its profile origin (y, z) in the track [mm] and the
+/// velocities VYRAIL, VZRAIL [mm/s] and VROLLR [rad/s] of that origin.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RailMotion {
+    pub origin_mm: [f64; 2],
+    pub velocity: [f64; 3],
+}
+
+impl RailMotion {
+    /// The velocity of the rail's material at `p`: v_O + ω × (p − O), ω = (VROLLR, 0, 0).
+    fn at(&self, p: &Point3<f64>) -> Vector3<f64> {
+        let [vy, vz, vroll] = self.velocity;
+        let (ry, rz) = (p.y - self.origin_mm[0], p.z - self.origin_mm[1]);
+        Vector3::new(0.0, vy - vroll * rz, vz + vroll * ry)
+    }
+}
+
+/// The creepages at the patch's reference with the approach `pen_mm` (the deepest overlap):
+/// (v_rail(P) − v_wheel(Q)) / VELOC, the spin (ω_rail − ω_wheel) · n / VELOC.
+pub fn at_reference(
+    frame: &PatchFrame,
+    wheel: &PlacedWheel,
+    v: &Velocity,
+    pen_mm: f64,
+    rail: &RailMotion,
+) -> Creepages {
     let n = frame.n();
     let q = frame.origin + n * pen_mm;
     let v_q = wheel.material_velocity(&q, v);
+    let v_p = rail.at(&frame.origin);
     let pitch_x = wheel.pitch_velocity(&q, v).x;
-    let veloc_mm_s = 0.5 * ((v_q.x - pitch_x).abs() + pitch_x.abs());
-    let slip = -v_q;
+    let veloc_mm_s = 0.5 * ((v_q.x - v_p.x - pitch_x).abs() + pitch_x.abs());
+    let slip = v_p - v_q;
+    let spin = Vector3::new(rail.velocity[2], 0.0, 0.0) - wheel.angular_velocity(v);
     Creepages {
         cksi: slip.x / veloc_mm_s,
         ceta: slip.dot(&frame.e_s()) / veloc_mm_s,
-        cphi_per_mm: -wheel.angular_velocity(v).dot(&n) / veloc_mm_s,
+        cphi_per_mm: spin.dot(&n) / veloc_mm_s,
         veloc_mm_s,
     }
 }

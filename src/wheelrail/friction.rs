@@ -13,6 +13,8 @@ use crate::scene::wheelrail::{MuBy, MuVariation};
 pub struct Friction<'a> {
     pub mu: f64,
     pub variation: Option<&'a MuVariation>,
+    /// CONTACT's T = 0 (frictionless compression): the tangential problem is not solved.
+    pub frictionless: bool,
 }
 
 impl Friction<'_> {

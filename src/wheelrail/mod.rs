@@ -256,12 +256,13 @@ fn patches_at(
 ) -> Result<Vec<NormalPatch>, WheelRailError> {
     let wheel = PlacedWheel::place(case.wheel, &case.wheelset, pose);
     let velocity = case.side.velocity(&case.velocity);
+    let rail_motion = creepage::RailMotion { origin_mm: rail.origin_mm, velocity: case.track.deviation_velocity };
     let mut out = Vec::new();
     for (k, geometry) in geometry_at(case, rail, &wheel)?.into_iter().enumerate() {
         let (fn_n, pn_mpa) = solve_normal(&geometry, &case.material, solvers)
             .map_err(|source| WheelRailError::Normal { patch: k + 1, source })?;
         let pen_mm = -geometry.h_mm.iter().copied().fold(f64::INFINITY, f64::min);
-        let creepages = creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm);
+        let creepages = creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm, &rail_motion);
         out.push(NormalPatch { geometry, fn_n, pn_mpa, pen_mm, creepages });
     }
     Ok(out)

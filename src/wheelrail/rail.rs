@@ -24,6 +24,8 @@ pub struct Track {
     pub cant_rad: f64,
     /// DYRAIL, DZRAIL [mm], DROLLR [rad]: the rail's offsets from its design position.
     pub deviation_mm_rad: [f64; 3],
+    /// VYRAIL, VZRAIL [mm/s], VROLLR [rad/s]: their rates (the creepages, [`super::creepage`]).
+    pub deviation_velocity: [f64; 3],
 }
 
 /// Sampling step of the placement's scans [mm] (top and gauge face).
@@ -179,6 +181,7 @@ mod tests {
             placement: RailPlacement::Gauge { height_mm: 1.0, width_mm: 1435.0 },
             cant_rad: 0.0,
             deviation_mm_rad: [0.0; 3],
+            deviation_velocity: [0.0; 3],
         };
         let r = PlacedRail::place(&c, &track).unwrap();
         // z = 300 − √(300² − u²) = 1 at u = −√(599): the face at y = 717.5.
@@ -196,6 +199,7 @@ mod tests {
             placement: RailPlacement::Absolute { y_mm: 0.0, z_mm: 0.0 },
             cant_rad: cant.atan(),
             deviation_mm_rad: [0.0; 3],
+            deviation_velocity: [0.0; 3],
         };
         let r = PlacedRail::place(&c, &track).unwrap();
         // The crown's top (slope 0 on the profile) turns to slope tan(−cant) at its new place.

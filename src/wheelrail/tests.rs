@@ -21,6 +21,7 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side, pose: Pose) -
             placement: RailPlacement::Absolute { y_mm: 750.0, z_mm: 0.0 },
             cant_rad: 0.0,
             deviation_mm_rad: [0.0; 3],
+            deviation_velocity: [0.0; 3],
         },
         wheelset: WHEELSET,
         pose,

@@ -5,7 +5,7 @@
 
 use crate::common::{self, root};
 use creepbench::import::contact::wheelrail_deck::{self, PitchInput, Vertical};
-use creepbench::scene::wheelrail::{PlacementSpec, SideSpec, VerticalSpec, WheelRailScene};
+use creepbench::scene::wheelrail::{PlacementSpec, SideSpec, VerticalSpec, WheelRailScene, PROFILE_DEFAULTS};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -122,8 +122,10 @@ fn a_refused_case_splits_its_run_and_is_named_with_its_reason() {
     );
 }
 
-/// Each module-1 case of CONTACT's test bank but 33 and 34 is refused naming what the scene lacks;
-/// its module-3 cases import as before.
+/// The module-1 cases of CONTACT's test bank that need a roller rig, a thin layer, the conformal
+/// approach, a massless rail or transient rolling are refused naming what the scene lacks; the
+/// others import (rail deviations, frictionless compression, smoothing, MIRRORZ, PRFOPT); its
+/// module-3 cases import as before.
 #[test]
 fn the_testbank_module1_cases_are_refused_with_their_reasons() {
     let deck = root().join("reference/contact_wheelrail/testbank/testbank.inp");
@@ -135,23 +137,44 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
         let s = m1.iter().find(|s| s.case == case).unwrap();
         assert!(s.scene.is_none() && s.refused.iter().any(|r| r.starts_with(start)), "case {case}: {s:?}");
     };
-    reason(18, "DYRAIL, DZRAIL, DROLLR = 0, 5, ");
-    reason(19, "T = 0: shifts, transient rolling and frictionless compression");
     reason(20, "C = 5: a wheel on a roller rig");
     reason(21, "B = 1: a thin compressible elastic layer");
-    reason(22, "SMOOTH = 10 (rail), 10 (wheel): profile smoothing");
     reason(35, "D (in force) = 4: contact approaches other than the planar one");
     reason(36, "F = 3: a massless rail");
-    reason(38, "T = 1: shifts, transient rolling and frictionless compression");
+    reason(38, "T = 1: shifts and transient rolling");
+    let note = |case: usize, start: &str| {
+        let s = m1.iter().find(|s| s.case == case).unwrap();
+        assert!(s.scene.is_some() && s.notes.iter().any(|r| r.starts_with(start)), "case {case}: {s:?}");
+    };
+    note(18, "DYRAIL, DZRAIL, DROLLR, VYRAIL, VZRAIL, VROLLR = 0, 5, 0.26179");
+    note(19, "T = 0: frictionless compression");
+    note(22, "SMOOTH = 10 (rail), 10 (wheel): profile smoothing");
+    note(28, "PRFOPT = 1: ISMOOTH, ZIGTHRS, KINKHIGH, KINKLOW, KINKWID = 0, 2.61799");
+    note(30, "MIRRORZ = 1 (rail): mirroring of a profile's z given");
     let scenes: Vec<&str> = imported.scenes.iter().map(|s| s.name.as_str()).collect();
-    // Module 1's cases 33 and 34 (friction across the rail, V = 1, planar) import: one scene each;
-    // module 3's 25, 26 (dissimilar bodies, issue 46) are one scene.
+    // Module 1's steady cases import, one scene each; module 3's 25, 26 (dissimilar bodies,
+    // issue 46) are one scene.
     let number = |s: &&str| s.split('_').nth(1).unwrap().parse::<usize>().unwrap();
-    assert!(
-        scenes.contains(&"testbank_1") && scenes.iter().all(|s| number(s) < 18 || [25, 33, 34].contains(&number(s))),
-        "{scenes:?}"
-    );
-    assert!(scenes.contains(&"testbank_33") && scenes.contains(&"testbank_34"), "{scenes:?}");
+    let module1: Vec<usize> = scenes.iter().map(number).filter(|&n| n >= 18 && n != 25).collect();
+    assert_eq!(module1, [18, 19, 22, 23, 27, 28, 29, 30, 31, 32, 33, 34], "{scenes:?}");
+    assert!(scenes.contains(&"testbank_1"), "{scenes:?}");
+    // What the scenes carry: the rail's deviations, T = 0, SMOOTH, MIRRORZ, KINKWID; A_SEP = 90
+    // (radians, `90d0`) as pi.
+    let files_dir = common::tempdir("m1_testbank_scenes");
+    let scene = |n: usize| {
+        let files = &imported.scenes.iter().find(|s| s.name == format!("testbank_{n}")).unwrap().files;
+        for (name, text) in files {
+            std::fs::write(files_dir.join(name), text).unwrap();
+        }
+        WheelRailScene::from_file(&files_dir.join(&files[0].0)).unwrap()
+    };
+    let s18 = scene(18);
+    assert_eq!(s18.rail_deviation.position, [0.0, 5.0, 15f64.to_radians()]);
+    assert!(s18.frictionless && !scene(22).frictionless);
+    assert_eq!((s18.a_sep_rad, s18.rail.kink_low_rad), (std::f64::consts::PI, PROFILE_DEFAULTS[2]));
+    assert_eq!((scene(22).rail.smooth, scene(22).wheel.smooth, scene(27).rail.smooth), (10.0, 10.0, 0.1));
+    assert_eq!((scene(30).rail.mirror_z, scene(30).wheel.mirror_z), (1, 0));
+    assert_eq!((scene(28).rail.kink_width_mm, scene(27).rail.kink_width_mm), (0.0, 2.0));
     // The command lists each with its reason and writes the module-3 scenes.
     let out = common::tempdir("m1_import_testbank").join("scenes");
     let o =
@@ -220,6 +243,48 @@ fn export_then_import_gives_the_same_scene() {
     );
     assert_eq!(original.placement, PlacementSpec::Absolute { y_mm: 750.0, z_mm: -0.5 });
     assert_eq!(values(&back), values(&original));
+    // The rail's deviations, frictionless compression and the profiles' options (issue 44).
+    let text = std::fs::read_to_string(&scene).unwrap();
+    let text = text
+        .replace("cant_rad = 0.0", "cant_rad = 0.0\ndeviation_y_mm = 0.3\ndeviation_z_mm = -0.2\ndeviation_roll_rad = 0.01\ndeviation_vy_mm_s = 40.0\ndeviation_vz_mm_s = 25.0\ndeviation_vroll_rad_s = 0.3")
+        .replace("d_comb_mm = 4.0", "d_comb_mm = 4.0\nfrictionless = true")
+        .replacen("smooth = 0.0", "smooth = 2.5\nsmooth_weighted = true\nmirror_z = \"keep\"\nkink_width_mm = 0.0", 1)
+        .replacen("smooth = 0.0", "smooth = 7.0\nzig_zag_rad = 2.0\nkink_high_rad = 0.6\nkink_low_rad = 0.2\nmax_omit = 0.4", 1)
+        .replace("name = \"mbench_a22_left_1\"", "name = \"options\"");
+    let variant = dir.join("scenes/options.toml");
+    std::fs::write(&variant, text).unwrap();
+    let (original, back) = round_trip(&variant, &dir.join("options"));
+    assert_eq!(original.rail_deviation.velocity, [40.0, 25.0, 0.3]);
+    assert!(original.frictionless && original.rail.smooth_weighted && original.rail.mirror_z == -1);
+    assert_eq!((original.wheel.smooth, original.wheel.kink_low_rad, original.wheel.max_omit), (7.0, 0.2, 0.4));
+    assert_eq!(values(&back), values(&original));
+}
+
+/// Profile options and rail deviations outside their ranges are refused naming the key (exit 2).
+#[test]
+fn bad_profile_options_and_rail_deviations_are_refused() {
+    let dir = common::tempdir("m1_bad_options");
+    let scene = import(&examples().join("mbench_a22_left.inp"), &dir, &[]).remove(0);
+    let text = std::fs::read_to_string(&scene).unwrap();
+    for (from, to, field) in [
+        ("smooth = 0.0", "smooth = -1.0", "rail.smooth"),
+        ("smooth = 0.0", "smooth = nan", "rail.smooth"),
+        ("smooth = 0.0", "smooth = inf", "rail.smooth"),
+        ("smooth = 0.0", "smooth = 0.0\nmirror_z = \"up\"", "rail.mirror_z"),
+        ("smooth = 0.0", "smooth = 0.0\nkink_width_mm = -2.0", "rail.kink_width_mm"),
+        ("smooth = 0.0", "smooth = 0.0\nsmooth_weighted = 1", "rail.smooth_weighted"),
+        ("cant_rad = 0.0", "cant_rad = 0.0\ndeviation_roll_rad = 2.0", "rail.deviation_roll_rad"),
+        ("cant_rad = 0.0", "cant_rad = 0.0\ndeviation_vz_mm_s = nan", "rail.deviation_vz_mm_s"),
+        ("d_comb_mm = 4.0", "d_comb_mm = 4.0\nfrictionless = \"yes\"", "wheelrail.frictionless"),
+    ] {
+        let bad = dir.join("bad.toml");
+        std::fs::write(&bad, text.replacen(from, to, 1)).unwrap();
+        let o = creepbench(&["simulate", bad.to_str().unwrap(), "--out", dir.join("out").to_str().unwrap()]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{to}: {err}");
+        assert!(err.contains(field) && err.contains("bad.toml"), "{to}: {err}");
+        assert!(!dir.join("out").exists(), "{to}: nothing written");
+    }
 }
 
 #[test]

@@ -621,8 +621,8 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         feature: WheelRailFeature::ProfileSmoothing,
         name: "profile smoothing",
         control: "SMOOTH",
-        supported: false,
-        reason: "supported: SMOOTH = 0 (the profiles as given, mirrored and scaled)",
+        supported: true,
+        reason: "carried as [rail] and [wheel] smooth (CONTACT's smoothing spline with lambda = SMOOTH, or with ISMOOTH = 1 smooth_weighted and SMOOTH its filter length in mm)",
         used: |c| {
             let smooth = |p: Option<&ProfileSpec>| p.map_or(0.0, |p| p.smooth);
             let (r, w) = (smooth(c.state.rail_profile.as_ref()), smooth(c.state.wheel_profile.as_ref()));
@@ -633,12 +633,17 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         feature: WheelRailFeature::RailDeviation,
         name: "rail deviations from the design position and their velocities",
         control: "Z, DYRAIL..VROLLR",
-        supported: false,
-        reason: "supported: the rail at its design position (DYRAIL..VROLLR = 0)",
+        supported: true,
+        reason: "carried as [rail] deviation_y_mm, deviation_z_mm, deviation_roll_rad (the rail profile turned about its origin, then shifted) and deviation_vy_mm_s, deviation_vz_mm_s, deviation_vroll_rad_s (the rail's material velocity in the creepages)",
         used: |c| {
             let r = c.state.rail_deviation;
             let any = [r.dy_mm, r.dz_mm, r.droll_rad, r.vy_mm_s, r.vz_mm_s, r.vroll_rad_s].iter().any(|&x| x != 0.0);
-            any.then(|| format!("DYRAIL, DZRAIL, DROLLR = {}, {}, {}", r.dy_mm, r.dz_mm, r.droll_rad))
+            any.then(|| {
+                format!(
+                    "DYRAIL, DZRAIL, DROLLR, VYRAIL, VZRAIL, VROLLR = {}, {}, {}, {}, {}, {}",
+                    r.dy_mm, r.dz_mm, r.droll_rad, r.vy_mm_s, r.vz_mm_s, r.vroll_rad_s
+                )
+            })
         },
     },
     WheelRailRow {

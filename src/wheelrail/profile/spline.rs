@@ -401,6 +401,79 @@ mod tests {
         }
     }
 
+    /// Noisy samples of a smooth curve at uneven spacing, and their arc-length-like parameter.
+    fn noisy() -> (Vec<f64>, Vec<f64>) {
+        let s: Vec<f64> = (0..40).map(|i| i as f64 * 0.5 + 0.1 * (i as f64 * 1.7).sin()).collect();
+        let f: Vec<f64> =
+            s.iter().enumerate().map(|(i, x)| 0.3 * x + (0.4 * x).sin() + 0.05 * (i as f64 * 2.3).cos()).collect();
+        (s, f)
+    }
+
+    #[test]
+    fn smoothing_with_lambda_to_zero_reproduces_the_points() {
+        // The smoothing spline's residual is (2/3) λ σ_i (Q a2)_i (Reinsch): λ → 0 interpolates.
+        let (s, f) = noisy();
+        let n = s.len();
+        let exact = fit(&s, &f, &[0, n - 1], 0.0, &[1.0; 40]);
+        for lambda in [1e-8, 1e-6] {
+            let c = fit(&s, &f, &[0, n - 1], lambda, &weights(&s, &[0, n - 1], false));
+            let worst = (0..n).map(|i| (c.a0[i] - f[i]).abs()).fold(0.0, f64::max);
+            assert!(worst < 10.0 * lambda, "lambda {lambda}: worst residual {worst}");
+            let slope = (0..n).map(|i| (c.a1[i] - exact.a1[i]).abs()).fold(0.0, f64::max);
+            assert!(slope < 1e3 * lambda, "lambda {lambda}: slopes off the interpolating spline's by {slope}");
+        }
+    }
+
+    #[test]
+    fn smoothing_with_lambda_to_infinity_gives_the_weighted_least_squares_line() {
+        // With ∫ f″² penalised without bound the spline is a straight line: the one minimising
+        // Σ w_i (f_i − a − b s_i)², computed here in closed form from the normal equations.
+        let (s, f) = noisy();
+        let n = s.len();
+        for use_spacing in [false, true] {
+            let w = weights(&s, &[0, n - 1], use_spacing);
+            let (sw, sws, swf) = (w.iter().sum::<f64>(), dot(&w, &s), dot(&w, &f));
+            let sws2: f64 = w.iter().zip(&s).map(|(w, x)| w * x * x).sum();
+            let swsf: f64 = w.iter().zip(&s).zip(&f).map(|((w, x), y)| w * x * y).sum();
+            let b = (sw * swsf - sws * swf) / (sw * sws2 - sws * sws);
+            let a = (swf - b * sws) / sw;
+            let c = fit(&s, &f, &[0, n - 1], 1e14, &w);
+            for i in 0..n {
+                let line = a + b * s[i];
+                assert!((c.a0[i] - line).abs() < 1e-6, "spacing {use_spacing}, point {i}: {} vs {line}", c.a0[i]);
+                assert!((c.a1[i] - b).abs() < 1e-6 && c.a2[i].abs() < 1e-8, "spacing {use_spacing}, point {i}");
+            }
+        }
+    }
+
+    #[test]
+    fn moderate_smoothing_lowers_the_roughness_and_keeps_the_mean() {
+        // Between the two limits: less ∫ f″² than the interpolant, and (unit weights, free ends)
+        // the residuals sum to zero (the penalty does not see constants or lines).
+        let (s, f) = noisy();
+        let n = s.len();
+        let w = weights(&s, &[0, n - 1], false);
+        let rough = |c: &Cubic| -> f64 {
+            (0..n - 1)
+                .map(|i| {
+                    let h = s[i + 1] - s[i];
+                    let (p, q) = (c.eval(i, 0.0)[2], c.eval(i, h)[2]);
+                    h * (p * p + p * q + q * q) / 3.0
+                })
+                .sum()
+        };
+        let interp = fit(&s, &f, &[0, n - 1], 0.0, &w);
+        let smooth = fit(&s, &f, &[0, n - 1], 1.0, &w);
+        assert!(rough(&smooth) < 0.2 * rough(&interp), "{} vs {}", rough(&smooth), rough(&interp));
+        let sum: f64 = (0..n).map(|i| f[i] - smooth.a0[i]).sum();
+        let first_moment: f64 = (0..n).map(|i| (f[i] - smooth.a0[i]) * s[i]).sum();
+        assert!(sum.abs() < 1e-9 && first_moment.abs() < 1e-8, "{sum} {first_moment}");
+    }
+
+    fn dot(a: &[f64], b: &[f64]) -> f64 {
+        a.iter().zip(b).map(|(x, y)| x * y).sum()
+    }
+
     #[test]
     fn roots_are_found_on_every_monotone_piece() {
         let c = Cubic { a0: vec![0.0, 0.0], a1: vec![-1.0, 0.0], a2: vec![0.0, 0.0], a3: vec![1.0, 0.0] };

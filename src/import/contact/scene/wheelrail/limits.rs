@@ -38,11 +38,18 @@ const CURATION_DEFAULT: (i64, [f64; 4], f64) = (0, [150.0 * PI / 180.0, 30.0 * P
 /// Every limit of the scene, in the order of the input.
 pub const SCENE_LIMITS: &[SceneLimit] = &[
     SceneLimit {
-        name: "shifts, transient rolling and frictionless compression",
+        name: "shifts and transient rolling",
         control: "T",
         accepted: false,
-        reason: "supported: T = 3 (steady rolling); the wheel-rail scene solves steady rolling at its mu (T = 1, 2 would need the previous case's tractions carried on a wheel-rail grid)",
-        used: |c| (c.digits.t != 3).then(|| format!("T = {}", c.digits.t)),
+        reason: "supported: T = 3 (steady rolling) and T = 0 (frictionless compression); T = 1, 2 would need the previous case's tractions carried on a wheel-rail grid",
+        used: |c| matches!(c.digits.t, 1 | 2).then(|| format!("T = {}", c.digits.t)),
+    },
+    SceneLimit {
+        name: "frictionless compression",
+        control: "T",
+        accepted: true,
+        reason: "carried as [wheelrail] frictionless = true: the normal problem only, no tangential forces",
+        used: |c| (c.digits.t == 0).then(|| "T = 0".to_string()),
     },
     SceneLimit {
         name: "friction laws other than Coulomb's",
@@ -100,16 +107,25 @@ pub const SCENE_LIMITS: &[SceneLimit] = &[
     SceneLimit {
         name: "mirroring of a profile's z given",
         control: "MIRRORZ",
-        accepted: false,
-        reason: "supported: MIRRORZ = 0 (CONTACT's default: detected for Miniprof files and tables, as the project's profile stage does)",
+        accepted: true,
+        reason: "carried as [rail] and [wheel] mirror_z = \"keep\" (-1) or \"mirror\" (1)",
         used: |c| each_profile(c, |p| p.mirror_z != 0, |p| format!("MIRRORZ = {}", p.mirror_z)),
+    },
+    SceneLimit {
+        name: "the weighted smoothing B-spline",
+        control: "ISMOOTH",
+        accepted: false,
+        reason: "supported: ISMOOTH = 0 (the smoothing spline, lambda = SMOOTH) and 1 (weighted by the points' spacing, SMOOTH its filter length); not CONTACT's B-spline with a third-order penalty (2)",
+        used: |c| each_profile(c, |p| p.curation.is_some_and(|k| !matches!(k.ismooth, 0 | 1)), curation_value),
     },
     SceneLimit {
         name: "profile curation other than CONTACT's defaults",
         control: "PRFOPT, ISMOOTH, ZIGTHRS, KINKHIGH, KINKLOW, KINKWID, MAXOMIT",
-        accepted: false,
-        reason: "supported: PRFOPT = 0, or PRFOPT = 1, 2 repeating CONTACT's defaults (ISMOOTH 0, ZIGTHRS 150d, KINKHIGH 30d, KINKLOW 6d, KINKWID 2 mm, MAXOMIT 0.5), which the project's profile stage uses",
-        used: |c| each_profile(c, |p| p.curation.is_some_and(|k| !default_curation(&k)), curation_value),
+        accepted: true,
+        reason: "carried as [rail] and [wheel] smooth_weighted (ISMOOTH = 1), zig_zag_rad, kink_high_rad, kink_low_rad, kink_width_mm, max_omit; ERRHND (messages only) is not carried",
+        used: |c| {
+            each_profile(c, |p| p.curation.is_some_and(|k| matches!(k.ismooth, 0 | 1) && !default_curation(&k)), curation_value)
+        },
     },
     SceneLimit {
         name: "profile curation repeating CONTACT's defaults",
@@ -129,7 +145,7 @@ pub const SCENE_LIMITS: &[SceneLimit] = &[
         name: "the patch search's thresholds",
         control: "DQREL, A_SEP, D_SEP, D_COMB, D_TURN, G_MISS",
         accepted: true,
-        reason: "A_SEP, D_SEP, D_COMB, D_TURN carried ([wheelrail] a_sep_rad, d_sep_mm, d_comb_mm, d_turn_mm): regions between D_COMB and D_SEP apart blended, separate patches up to D_TURN apart turned, as CONTACT does; G_MISS < 0 (no near misses; see the row below); DQREL is a transient step",
+        reason: "A_SEP, D_SEP, D_COMB, D_TURN carried ([wheelrail] a_sep_rad, d_sep_mm, d_comb_mm, d_turn_mm; an A_SEP above pi as pi, which no two contact angles differ by): regions between D_COMB and D_SEP apart blended, separate patches up to D_TURN apart turned, as CONTACT does; G_MISS < 0 (no near misses; see the row below); DQREL is a transient step",
         used: |c| {
             let d = c.state.discretisation.as_ref()?;
             Some(format!(

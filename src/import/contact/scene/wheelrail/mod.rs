@@ -16,13 +16,15 @@ pub use paths::ProfilePaths;
 
 use super::super::deck::{Case, CaseKind};
 use super::super::wheelrail_deck::{
-    Along, Forward, Friction, FrictionVariation, PitchInput, RailPlacement, Side, TrackFourth, Vertical, WheelRailCase,
+    Along, Forward, Friction, FrictionVariation, PitchInput, ProfileCuration, RailPlacement, Side, TrackFourth,
+    Vertical, WheelRailCase,
 };
 use super::super::CaseStatus;
 use super::{scene_name, SceneFiles};
 use crate::physics::material::combine_bodies;
 use crate::scene::wheelrail::{
-    CaseRow, MuBy, MuVariation, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
+    CaseRow, MuBy, MuVariation, PlacementSpec, ProfileSpec, RailDeviationSpec, SideSpec, VerticalSpec, WheelRailScene,
+    PROFILE_DEFAULTS,
 };
 use crate::scene::{MaterialSpec, Origin};
 use std::path::PathBuf;
@@ -150,6 +152,14 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
             TrackFourth::CantRad(r) => r,
             TrackFourth::RollerRadiusMm(_) => return Err("a roller rig (C = 4, 5)".into()),
         },
+        rail_deviation: {
+            let d = s.rail_deviation;
+            RailDeviationSpec {
+                position: [d.dy_mm, d.dz_mm, d.droll_rad],
+                velocity: [d.vy_mm_s, d.vz_mm_s, d.vroll_rad_s],
+            }
+        },
+        frictionless: c.digits.t == 0,
         flange_back_distance_mm: wheelset.fbdist_mm,
         flange_back_position_mm: wheelset.fbpos_mm,
         nominal_radius_mm: wheelset.nomrad_mm,
@@ -158,7 +168,8 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         material: MaterialSpec { g_mpa: Some(m.g_mpa), e_mpa: None, poisson: m.poisson, bodies: None },
         dx_mm: disc.dx_mm,
         ds_mm: disc.ds_mm,
-        a_sep_rad: disc.a_sep_rad,
+        // CONTACT takes any A_SEP; contact angles (in (−π/2, π/2)) never differ by π or more.
+        a_sep_rad: disc.a_sep_rad.min(std::f64::consts::PI),
         d_sep_mm: disc.d_sep_mm,
         d_comb_mm: disc.d_comb_mm,
         d_turn_mm: disc.d_turn_mm(),
@@ -202,14 +213,41 @@ fn mu_of(f: &Friction, s_ws_mm: f64) -> (f64, Option<MuVariation>) {
     (mu, Some(v))
 }
 
-/// A profile as the scene takes it: the path from the scene's folder, MIRRORY = 1 as mirror_y.
+/// A profile as the scene takes it: the path from the scene's folder, MIRRORY = 1 as mirror_y,
+/// MIRRORZ, and the options of PRFOPT ≥ 1 (CONTACT's defaults without them; ISMOOTH = 2 is
+/// refused before, by the scene's limits).
 fn profile(p: &super::super::wheelrail_deck::ProfileSpec, paths: &ProfilePaths) -> Result<ProfileSpec, String> {
+    let [zig, high, low, width, omit] = PROFILE_DEFAULTS;
+    let k = p.curation.map(|k| ProfileCuration {
+        zigthrs_rad: snap(k.zigthrs_rad, zig),
+        kinkhigh_rad: snap(k.kinkhigh_rad, high),
+        kinklow_rad: snap(k.kinklow_rad, low),
+        kinkwid_mm: snap(k.kinkwid_mm, width),
+        ..k
+    });
     Ok(ProfileSpec {
         path: PathBuf::from(paths.of(&p.file)?),
         mirror_y: p.mirror_y == 1,
+        mirror_z: p.mirror_z.clamp(-1, 1) as i8,
         scale: p.scale,
         smooth: p.smooth,
+        smooth_weighted: k.is_some_and(|k| k.ismooth == 1),
+        zig_zag_rad: k.map_or(zig, |k| k.zigthrs_rad),
+        kink_high_rad: k.map_or(high, |k| k.kinkhigh_rad),
+        kink_low_rad: k.map_or(low, |k| k.kinklow_rad),
+        kink_width_mm: k.map_or(width, |k| k.kinkwid_mm),
+        max_omit: k.and_then(|k| k.errors).map_or(omit, |(_, m)| m),
     })
+}
+
+/// `v`, or `default` where `v` is within 1e-12 of it relatively (`6d` parses to 6π/180, not to
+/// CONTACT's default KINKHIGH/5 to the last bit).
+fn snap(v: f64, default: f64) -> f64 {
+    if (v - default).abs() <= 1e-12 * default.abs() {
+        default
+    } else {
+        v
+    }
 }
 
 /// The case's row: its number, position (FZ or Z as N says) and velocities.

@@ -6,7 +6,8 @@
 use super::super::read_back::tempdir_for;
 use crate::error::InputError;
 use crate::scene::wheelrail::{
-    case_columns, CaseRow, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
+    case_columns, CaseRow, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene, MIRROR_Z,
+    PROFILE_DEFAULTS,
 };
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
@@ -49,6 +50,9 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
     if s.wheel_mesh {
         wheelrail.push(("wheel_surface", Value::String("contact_mesh".into())));
     }
+    if s.frictionless {
+        wheelrail.push(("frictionless", Value::Boolean(true)));
+    }
     let mut rail = profile(&s.rail, &s.name)?;
     match s.placement {
         PlacementSpec::Gauge { height_mm, width_mm } => {
@@ -61,6 +65,7 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
         }
     }
     rail.push(("cant_rad", Value::Float(s.cant_rad)));
+    rail.extend(rail_deviation(s));
     let mut wheel = profile(&s.wheel, &s.name)?;
     wheel.push(("flange_back_distance_mm", Value::Float(s.flange_back_distance_mm)));
     wheel.push(("flange_back_position_mm", Value::Float(s.flange_back_position_mm)));
@@ -97,15 +102,45 @@ fn friction(s: &WheelRailScene) -> Pairs {
     out
 }
 
-/// A profile's keys: its path (as the scene holds it), mirror_y, scale, smooth.
+/// The rail's deviation keys where they are not 0.
+fn rail_deviation(s: &WheelRailScene) -> Pairs {
+    const KEYS: [&str; 6] = [
+        "deviation_y_mm",
+        "deviation_z_mm",
+        "deviation_roll_rad",
+        "deviation_vy_mm_s",
+        "deviation_vz_mm_s",
+        "deviation_vroll_rad_s",
+    ];
+    let d = s.rail_deviation;
+    let values = d.position.into_iter().chain(d.velocity);
+    KEYS.into_iter().zip(values).filter(|(_, v)| *v != 0.0).map(|(k, v)| (k, Value::Float(v))).collect()
+}
+
+/// A profile's keys: its path (as the scene holds it), mirror_y, scale, smooth; mirror_z,
+/// smooth_weighted and the cleaning's keys where they are not CONTACT's defaults.
 fn profile(p: &ProfileSpec, scene: &str) -> Result<Pairs, InputError> {
     let path = p.path.to_str().ok_or_else(|| InputError::new(scene, p.path.display(), "a UTF-8 profile path"))?;
-    Ok(vec![
+    let mut out = vec![
         ("profile", Value::String(path.into())),
         ("mirror_y", Value::Boolean(p.mirror_y)),
         ("scale", Value::Float(p.scale)),
         ("smooth", Value::Float(p.smooth)),
-    ])
+    ];
+    if let Some((name, _)) = MIRROR_Z.iter().find(|(_, v)| *v == p.mirror_z && *v != 0) {
+        out.push(("mirror_z", Value::String((*name).into())));
+    }
+    if p.smooth_weighted {
+        out.push(("smooth_weighted", Value::Boolean(true)));
+    }
+    let given = [p.zig_zag_rad, p.kink_high_rad, p.kink_low_rad, p.kink_width_mm, p.max_omit];
+    let keys = ["zig_zag_rad", "kink_high_rad", "kink_low_rad", "kink_width_mm", "max_omit"];
+    for ((key, v), default) in keys.into_iter().zip(given).zip(PROFILE_DEFAULTS) {
+        if v != default {
+            out.push((key, Value::Float(v)));
+        }
+    }
+    Ok(out)
 }
 
 /// `[material]`: the combined G and ν.
