@@ -14,14 +14,38 @@ use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::process::Command;
 
-/// The Manchester benchmark's tolerances (the gate's rules "CONTACT wheel-rail" of
-/// tolerances.toml state the same for mbench_a22_left and _right). Largest deviation allowed per quantity, in half-units of CONTACT's printing (1 = its printed
-/// digits reproduced), set to what is measured: the tread contacts (left, and right cases 1–10)
-/// are at the printed digits but for the reference's y (≤ 0.7 µm, printed to 0.1 µm) and what
-/// follows from it; the flange contacts (right cases 12–21, contact angles to 66°) are a few
-/// digits off in the reference's x and the approach (≤ 5e-4 mm, ≤ 9e-5 mm): the undeformed
-/// distance there is CONTACT's mesh interpolation against this project's exact surfaces.
+/// The gate's tolerances (the rules "CONTACT wheel-rail" of tolerances.toml): largest deviation
+/// allowed per quantity, in half-units of CONTACT's printing (1 = its printed digits reproduced),
+/// set to what is measured on CONTACT's meshed wheel surface: the printed digits but the
+/// reference's x (3: right case 14 on the flange at 66°, 1.4e-4 mm).
 const HALF_UNITS: &[(&str, f64)] = &[
+    ("fn_n", 1.5),
+    ("fs_n", 1.5),
+    ("fy_tr_n", 1.5),
+    ("fy_ws_n", 1.5),
+    ("fz_tr_n", 1.5),
+    ("fz_ws_n", 1.5),
+    ("deltcp_rad", 1.5),
+    ("ceta", 1.5),
+    ("cphi_per_mm", 1.5),
+    ("npot", 0.0),
+    ("nadh", 0.0),
+    ("ncon", 0.0),
+    ("nslip", 0.0),
+    ("zcp_tr_mm", 1.5),
+    ("zcp_r_mm", 1.5),
+    ("xcp_tr_mm", 3.0),
+    ("ycp_tr_mm", 1.5),
+    ("ycp_r_mm", 1.5),
+    ("pen_mm", 1.5),
+    ("cksi", 1.5),
+];
+
+/// The Manchester benchmark's first measured tolerances, on the exact wheel surface (the KPEC
+/// deck's exact cases, whose KPEC and ANALYN cases must share their patches): the flange contacts
+/// a few digits off in the reference's x and the approach, CONTACT's mesh interpolation against
+/// the exact surfaces.
+const EXACT_SURFACE_HALF_UNITS: &[(&str, f64)] = &[
     ("fn_n", 1.5),
     ("fs_n", 1.5),
     ("fy_tr_n", 1.5),
@@ -126,8 +150,8 @@ fn worst(devs: &[Deviation]) -> BTreeMap<&'static str, (f64, u64)> {
     w
 }
 
-/// Whether `d` is within the Manchester benchmark's tolerances (tests/all/wheelrail_mbench.rs:
-/// CONTACT's printed digits but for the reference's y and what follows from it).
+/// Whether `d` is within the gate's tolerances ([`HALF_UNITS`]: CONTACT's printed digits but the
+/// reference's x).
 fn within_mbench(d: &Deviation) -> bool {
     within(d, HALF_UNITS)
 }
@@ -167,7 +191,7 @@ fn friction_varying_across_the_rail_and_along_the_track_against_contact() {
 
 /// The KPEC deck: cases 1–3 KPEC, 4–6 ANALYN (both with FASTSIM), 7–9 the exact theory, each at
 /// y = 0, 0.5, 5 mm. The imported scenes name `kpec`, `analyn` and `contact`; the exact cases 7
-/// and 8 are within the Manchester benchmark's tolerances (9 is the benchmark's right case 11,
+/// and 8 are within the benchmark's first tolerances on the exact surface (9 is the benchmark's right case 11,
 /// two regions blended by CONTACT, see tests/all/wheelrail_mbench.rs). KPEC and ANALYN solve the
 /// exact solver's patch (docs/wheelrail.md, "Models"): the same reference, creepages and FN as
 /// cases 7–9, where CONTACT balances FZ with their own normal forces; their forces against
@@ -185,7 +209,8 @@ fn kpec_and_analyn_against_contact() {
     };
     let exact: Vec<Deviation> = [7, 8].into_iter().flat_map(devs).collect();
     worst(&exact);
-    let failures: Vec<String> = exact.iter().filter(|d| !within_mbench(d)).map(|d| format!("{d:?}")).collect();
+    let failures: Vec<String> =
+        exact.iter().filter(|d| !within(d, EXACT_SURFACE_HALF_UNITS)).map(|d| format!("{d:?}")).collect();
     assert!(failures.is_empty(), "exact cases: {}", failures.join("\n"));
     for k in 0..6 {
         let (ours, exact_case) = (&runs[k].2, &runs[6 + k % 3].2);
