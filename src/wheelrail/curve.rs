@@ -16,6 +16,11 @@ pub trait Curve: Send + Sync + Debug {
     fn z_and_slope(&self, y_mm: f64) -> Option<(f64, f64)> {
         Some((self.z_mm(y_mm)?, self.dz_dy(y_mm)?))
     }
+    /// The profile's points (y, z) [mm] where it is made of points (a profile file), `None` for a
+    /// closed form.
+    fn points_mm(&self) -> Option<Vec<[f64; 2]>> {
+        None
+    }
 }
 
 /// A circular arc `z = z0 ± (R − √(R² − (y − yc)²))` over `|y − yc| ≤ half_width`: convex (a rail
@@ -95,6 +100,9 @@ impl Curve for super::profile::Profile {
     }
     fn z_and_slope(&self, y_mm: f64) -> Option<(f64, f64)> {
         self.point_at_y(y_mm).map(|p| (p.z_mm, p.slope_dz_dy()))
+    }
+    fn points_mm(&self) -> Option<Vec<[f64; 2]>> {
+        Some(self.y_mm().iter().zip(self.z_mm()).map(|(&y, &z)| [y, z]).collect())
     }
 }
 

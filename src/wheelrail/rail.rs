@@ -50,9 +50,10 @@ impl<'a> PlacedRail<'a> {
         let origin = match track.placement {
             RailPlacement::Absolute { y_mm, z_mm } => [y_mm, z_mm],
             RailPlacement::Gauge { height_mm, width_mm } => {
-                let points = design.sampled();
-                let top = points.iter().map(|p| p[1]).fold(f64::INFINITY, f64::min);
+                let (params, points) = design.sampled();
+                let top = design.top_z_mm(&params, &points);
                 let face = gauge_face_y(&points, top + height_mm).ok_or(WheelRailError::NoGaugeFace { height_mm })?;
+                let face = design.refine_face_y(&params, &points, face, top + height_mm);
                 [0.5 * width_mm - face, -top]
             }
         };
@@ -66,16 +67,80 @@ impl<'a> PlacedRail<'a> {
         [self.origin_mm[0] + c * y_r - s * z_r, self.origin_mm[1] + s * y_r + c * z_r]
     }
 
-    /// The profile sampled every [`SCAN_MM`] in track coordinates.
-    fn sampled(&self) -> Vec<[f64; 2]> {
+    /// The profile sampled every [`SCAN_MM`]: each sample's profile y and its point in track
+    /// coordinates.
+    fn sampled(&self) -> (Vec<f64>, Vec<[f64; 2]>) {
         let [lo, hi] = self.curve.y_range_mm();
         let n = ((hi - lo) / SCAN_MM).ceil().max(1.0) as usize;
         (0..=n)
             .filter_map(|k| {
                 let y = (lo + (hi - lo) * k as f64 / n as f64).min(hi);
-                self.curve.z_mm(y).map(|z| self.to_track(y, z))
+                self.curve.z_mm(y).map(|z| (y, self.to_track(y, z)))
             })
-            .collect()
+            .unzip()
+    }
+
+    /// The track point of the profile at profile y `y_r` (on the profile's range).
+    fn track_at(&self, y_r: f64) -> Option<[f64; 2]> {
+        self.curve.z_mm(y_r).map(|z| self.to_track(y_r, z))
+    }
+
+    /// The rail's top: the smallest track z of the curve (CONTACT's `spline_get_xyz_at_minz`),
+    /// the lowest sample refined by golden-section search between its neighbours.
+    fn top_z_mm(&self, params: &[f64], points: &[[f64; 2]]) -> f64 {
+        let Some(k) = (0..points.len()).min_by(|&a, &b| points[a][1].total_cmp(&points[b][1])) else {
+            return f64::INFINITY;
+        };
+        let (mut a, mut b) = (params[k.saturating_sub(1)], params[(k + 1).min(params.len() - 1)]);
+        let z = |y: f64| self.track_at(y).map_or(f64::INFINITY, |p| p[1]);
+        let g = 0.5 * (5f64.sqrt() - 1.0);
+        for _ in 0..80 {
+            let (c, d) = (b - g * (b - a), a + g * (b - a));
+            if z(c) < z(d) {
+                b = d;
+            } else {
+                a = c;
+            }
+        }
+        z(0.5 * (a + b)).min(points[k][1])
+    }
+
+    /// The gauge face's track y at depth `z_mm` on the curve itself (CONTACT interpolates its
+    /// spline, `spline_get_xy_at_z`): where `face` (the samples' linear estimate) lies between two
+    /// consecutive samples that cross `z_mm`, bisection on the profile between them; else `face`.
+    fn refine_face_y(&self, params: &[f64], points: &[[f64; 2]], face: f64, z_mm: f64) -> f64 {
+        let crosses = |k: usize| {
+            let (p, q) = (points[k], points[k + 1]);
+            (p[1] - z_mm) * (q[1] - z_mm) <= 0.0 && (p[0].min(q[0])..=p[0].max(q[0])).contains(&face)
+        };
+        let Some(k) = (0..points.len().saturating_sub(1)).find(|&k| crosses(k)) else {
+            return face;
+        };
+        let above = |y: f64| self.track_at(y).map_or(0.0, |p| p[1] - z_mm);
+        let (mut a, mut b) = (params[k], params[k + 1]);
+        let sa = above(a).signum();
+        for _ in 0..80 {
+            let m = 0.5 * (a + b);
+            if above(m).signum() == sa {
+                a = m;
+            } else {
+                b = m;
+            }
+        }
+        self.track_at(0.5 * (a + b)).map_or(face, |p| p[0])
+    }
+
+    /// The track y range of the gap mesh: the lowest and highest track y of the profile's points
+    /// (CONTACT's `grid_get_yrange` on the rail in track coordinates, so the mesh starts at a
+    /// point, not at an extremum of the spline between points), or of the curve for a closed form.
+    pub fn mesh_y_range_mm(&self) -> [f64; 2] {
+        match self.curve.points_mm() {
+            Some(points) if !points.is_empty() => points
+                .iter()
+                .map(|&[y, z]| self.to_track(y, z)[0])
+                .fold([f64::INFINITY, f64::NEG_INFINITY], |[lo, hi], y| [lo.min(y), hi.max(y)]),
+            _ => self.y_range_mm(),
+        }
     }
 
     /// The profile's y_r whose point lies at track y (Newton on `y(y_r) = y`), if on the profile.
@@ -186,9 +251,10 @@ mod tests {
         let r = PlacedRail::place(&c, &track).unwrap();
         // z = 300 − √(300² − u²) = 1 at u = −√(599): the face at y = 717.5.
         let u = (300.0f64 * 300.0 - 299.0 * 299.0).sqrt();
-        assert!((r.origin_mm[0] - (717.5 + u)).abs() < 1e-4, "{:?}", r.origin_mm);
-        assert!(r.origin_mm[1].abs() < 1e-9);
-        assert!((r.z_mm(717.5).unwrap() - 1.0).abs() < 1e-4);
+        // Found on the curve itself, not between its samples 0.01 mm apart (CONTACT's spline).
+        assert!((r.origin_mm[0] - (717.5 + u)).abs() < 1e-9, "{:?}", r.origin_mm);
+        assert!(r.origin_mm[1].abs() < 1e-12);
+        assert!((r.z_mm(717.5).unwrap() - 1.0).abs() < 1e-9);
     }
 
     #[test]

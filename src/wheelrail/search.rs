@@ -24,10 +24,10 @@ pub struct LocusSample {
     pub rail_angle_rad: f64,
 }
 
-/// The gap function on the uniform mesh `y_k = y_min + k dy` over the rail's lateral range,
-/// where the wheel's locus covers it.
+/// The gap function on the uniform mesh `y_k = y_min + k dy` over the rail points' lateral range
+/// ([`PlacedRail::mesh_y_range_mm`]), where the wheel's locus covers it.
 pub fn scan(wheel: &PlacedWheel, rail: &PlacedRail, ds_mm: f64) -> Vec<LocusSample> {
-    let [lo, hi] = rail.y_range_mm();
+    let [lo, hi] = rail.mesh_y_range_mm();
     let dy = MESH_STEP_OVER_DS * ds_mm;
     let n = ((hi - lo) / dy).ceil() as usize + 1;
     (0..n)

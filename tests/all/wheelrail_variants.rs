@@ -14,14 +14,38 @@ use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::process::Command;
 
-/// The Manchester benchmark's tolerances (the gate's rules "CONTACT wheel-rail" of
-/// tolerances.toml state the same for mbench_a22_left and _right). Largest deviation allowed per quantity, in half-units of CONTACT's printing (1 = its printed
-/// digits reproduced), set to what is measured: the tread contacts (left, and right cases 1–10)
-/// are at the printed digits but for the reference's y (≤ 0.7 µm, printed to 0.1 µm) and what
-/// follows from it; the flange contacts (right cases 12–21, contact angles to 66°) are a few
-/// digits off in the reference's x and the approach (≤ 5e-4 mm, ≤ 9e-5 mm): the undeformed
-/// distance there is CONTACT's mesh interpolation against this project's exact surfaces.
+/// The gate's tolerances (the rules "CONTACT wheel-rail" of tolerances.toml): largest deviation
+/// allowed per quantity, in half-units of CONTACT's printing (1 = its printed digits reproduced),
+/// set to what is measured on CONTACT's meshed wheel surface: the printed digits but the
+/// reference's x (3: right case 14 on the flange at 66°, 1.4e-4 mm).
 const HALF_UNITS: &[(&str, f64)] = &[
+    ("fn_n", 1.5),
+    ("fs_n", 1.5),
+    ("fy_tr_n", 1.5),
+    ("fy_ws_n", 1.5),
+    ("fz_tr_n", 1.5),
+    ("fz_ws_n", 1.5),
+    ("deltcp_rad", 1.5),
+    ("ceta", 1.5),
+    ("cphi_per_mm", 1.5),
+    ("npot", 0.0),
+    ("nadh", 0.0),
+    ("ncon", 0.0),
+    ("nslip", 0.0),
+    ("zcp_tr_mm", 1.5),
+    ("zcp_r_mm", 1.5),
+    ("xcp_tr_mm", 3.0),
+    ("ycp_tr_mm", 1.5),
+    ("ycp_r_mm", 1.5),
+    ("pen_mm", 1.5),
+    ("cksi", 1.5),
+];
+
+/// The Manchester benchmark's first measured tolerances, on the exact wheel surface (the KPEC
+/// deck's exact cases, whose KPEC and ANALYN cases must share their patches): the flange contacts
+/// a few digits off in the reference's x and the approach, CONTACT's mesh interpolation against
+/// the exact surfaces.
+const EXACT_SURFACE_HALF_UNITS: &[(&str, f64)] = &[
     ("fn_n", 1.5),
     ("fs_n", 1.5),
     ("fy_tr_n", 1.5),
@@ -87,7 +111,10 @@ fn runs(deck: &str) -> (Vec<(u64, String, CaseResult)>, String) {
     let (scenes, verdicts) = import(deck);
     let mut out = Vec::new();
     for path in scenes.iter().filter(|p| p.extension().is_some_and(|e| e == "toml")) {
-        let scene = WheelRailScene::from_file(path).unwrap();
+        let mut scene = WheelRailScene::from_file(path).unwrap();
+        // On CONTACT's meshed wheel surface, as the gated scenes of scenes/wheelrail (KPEC and
+        // ANALYN, whose bounds are their own, on the exact surface).
+        scene.wheel_mesh = deck != "mbench_a22_kpec";
         let run = run_scene(&scene).unwrap();
         out.extend(run.cases.into_iter().map(|(c, r)| (c, scene.solvers[0].clone(), r)));
     }
@@ -123,8 +150,8 @@ fn worst(devs: &[Deviation]) -> BTreeMap<&'static str, (f64, u64)> {
     w
 }
 
-/// Whether `d` is within the Manchester benchmark's tolerances (tests/all/wheelrail_mbench.rs:
-/// CONTACT's printed digits but for the reference's y and what follows from it).
+/// Whether `d` is within the gate's tolerances ([`HALF_UNITS`]: CONTACT's printed digits but the
+/// reference's x).
 fn within_mbench(d: &Deviation) -> bool {
     within(d, HALF_UNITS)
 }
@@ -135,30 +162,13 @@ fn within(d: &Deviation, limits: &[(&str, f64)]) -> bool {
     loose(d).unwrap_or_else(|| d.half_units <= limits.iter().find(|(q, _)| *q == d.quantity).map_or(1.0, |(_, l)| *l))
 }
 
-/// The benchmark's tolerances but where case 6 (V = 2: case 1's y = 0 contact at μ = 0.26)
-/// measures more: its height, found with the tangential forces' vertical part at μ = 0.26, moves
-/// CKSI by 6.1 half-units (3e-8) and FY by 1.58 (0.008 N).
-fn varfric_limits() -> Vec<(&'static str, f64)> {
-    let wider = [("cksi", 6.2), ("fy_tr_n", 1.6), ("fy_ws_n", 1.6)];
-    let of = |q: &'static str, l: f64| wider.iter().find(|(w, _)| *w == q).map_or((q, l), |&w| w);
-    HALF_UNITS.iter().map(|&(q, l)| of(q, l)).collect()
-}
-
-/// Case 3 (y = 5 mm, yaw 12 mrad) has two patches 6.9 mm apart (D_SEP = 6, D_TURN = 9 mm) whose
-/// reference angles CONTACT turns towards each other, as this project now does: patch 1 at
-/// −0.24843 rad against CONTACT's −0.2480 (8.5 half-units; −0.1326 unturned), FS −398.6 N
-/// against −396.3 N (−464.7 N unturned, at μ 0.3 where the turned angle gives 0.258). The rest is
-/// the flange root's undeformed distance (CONTACT's meshed wheel surface, docs/wheelrail.md): the
-/// approach 3.6e-5 mm deeper, 10 N of FN moved from patch 2 to patch 1.
-const TURNED: u64 = 3;
-
-/// Case 3's patch 1 against CONTACT, bounds set to what is measured: (quantity, half-units).
-const TURNED_LIMITS: &[(&str, f64)] = &[("deltcp_rad", 9.0), ("fs_n", 46.0), ("fn_n", 21.0), ("cksi", 30.0)];
-
 /// V = 1 (μ at each patch's contact angle on the wheel: ALPHA −20°, −10° with μ 0.2, 0.3) and
-/// V = 2 (μ at S_WS = 60 mm between SVF 0, 100 mm with μ 0.2, 0.3): every imported case but the
-/// turned one within the Manchester benchmark's tolerances; the conformal cases 5 and 7 (D = 4)
-/// refused, named with it.
+/// V = 2 (μ at S_WS = 60 mm between SVF 0, 100 mm with μ 0.2, 0.3), on CONTACT's meshed wheel
+/// surface: every imported case within the Manchester benchmark's tolerances, case 3 too (y = 5 mm,
+/// yaw 12 mrad: two patches 6.9 mm apart whose reference angles CONTACT turns towards each other,
+/// D_SEP = 6, D_TURN = 9 mm; patch 1 at −0.24797 rad against CONTACT's −0.2480, −0.1326
+/// unturned; 8.5 half-units before the rail's gauge point was found on its spline); the conformal
+/// cases 5 and 7 (D = 4) refused, named with it.
 #[test]
 fn friction_varying_across_the_rail_and_along_the_track_against_contact() {
     let (devs, cases, verdicts) = deviations("mbench_a22_varfric");
@@ -167,22 +177,21 @@ fn friction_varying_across_the_rail_and_along_the_track_against_contact() {
         assert!(verdicts.contains(&format!("skipped case {case} ")), "{verdicts}");
     }
     assert_eq!(verdicts.matches("D (in force) = 4: contact approaches other than the planar one").count(), 2);
-    for &(q, limit) in TURNED_LIMITS {
-        let d = devs.iter().find(|d| d.contact_case == TURNED && d.patch == 1 && d.quantity == q).expect(q);
-        println!("case {TURNED} patch 1 {q}: ours {}, CONTACT {} ({:.2} half-units)", d.ours, d.contact, d.half_units);
-        assert!(d.half_units <= limit, "{d:?}");
-    }
-    let kept: Vec<Deviation> = devs.into_iter().filter(|d| d.contact_case != TURNED || d.patch == 0).collect();
-    worst(&kept);
-    let limits = varfric_limits();
-    let failures: Vec<String> =
-        kept.iter().filter(|d| d.contact_case != TURNED && !within(d, &limits)).map(|d| format!("{d:?}")).collect();
+    worst(&devs);
+    // Case 3's totals FY(TR), FY(WS): 646.20 N, 650.25 N against 646.3 N, 650.4 N (1.9 and 2.9
+    // half-units): within what its patches' printed FN allow (patch 2's 8.4 kN printed to 10 N,
+    // 5 N at sin δ = 0.29 is 1.4 N), every patch quantity within its digits.
+    let turned_totals = [("fy_tr_n", 3.0), ("fy_ws_n", 3.0)];
+    let limits: Vec<(&str, f64)> =
+        HALF_UNITS.iter().map(|&(q, l)| turned_totals.iter().find(|(t, _)| *t == q).map_or((q, l), |&t| t)).collect();
+    let ok = |d: &Deviation| if d.contact_case == 3 && d.patch == 0 { within(d, &limits) } else { within_mbench(d) };
+    let failures: Vec<String> = devs.iter().filter(|d| !ok(d)).map(|d| format!("{d:?}")).collect();
     assert!(failures.is_empty(), "{} deviations beyond the tolerances:\n{}", failures.len(), failures.join("\n"));
 }
 
 /// The KPEC deck: cases 1–3 KPEC, 4–6 ANALYN (both with FASTSIM), 7–9 the exact theory, each at
 /// y = 0, 0.5, 5 mm. The imported scenes name `kpec`, `analyn` and `contact`; the exact cases 7
-/// and 8 are within the Manchester benchmark's tolerances (9 is the benchmark's right case 11,
+/// and 8 are within the benchmark's first tolerances on the exact surface (9 is the benchmark's right case 11,
 /// two regions blended by CONTACT, see tests/all/wheelrail_mbench.rs). KPEC and ANALYN solve the
 /// exact solver's patch (docs/wheelrail.md, "Models"): the same reference, creepages and FN as
 /// cases 7–9, where CONTACT balances FZ with their own normal forces; their forces against
@@ -200,7 +209,8 @@ fn kpec_and_analyn_against_contact() {
     };
     let exact: Vec<Deviation> = [7, 8].into_iter().flat_map(devs).collect();
     worst(&exact);
-    let failures: Vec<String> = exact.iter().filter(|d| !within_mbench(d)).map(|d| format!("{d:?}")).collect();
+    let failures: Vec<String> =
+        exact.iter().filter(|d| !within(d, EXACT_SURFACE_HALF_UNITS)).map(|d| format!("{d:?}")).collect();
     assert!(failures.is_empty(), "exact cases: {}", failures.join("\n"));
     for k in 0..6 {
         let (ours, exact_case) = (&runs[k].2, &runs[6 + k % 3].2);
@@ -237,19 +247,18 @@ fn kpec_and_analyn_against_contact() {
 
 /// CONTACT's test of the initial estimate on worn profiles (testbank/examples_trans/iestim_site_b:
 /// the height prescribed from 1.13 to 1.23 mm and back, one to three patches, μ by contact
-/// angle): every case's patches are CONTACT's, their contact angles and creepages its printed
-/// digits (regions 3 to 6 mm apart blended, 6 to 9 mm apart turned; before, case 9 patch 2's
-/// angle was −0.579 rad against CONTACT's −0.368). Not gated: the worn flange root's undeformed
-/// distance (CONTACT's meshed wheel surface) leaves that patch's FN up to 1.8 % off at the same
-/// approach (docs/wheelrail.md).
+/// angle), imported and run on CONTACT's meshed wheel surface: every case's patches are CONTACT's
+/// (regions 3 to 6 mm apart blended, 6 to 9 mm apart turned; before, case 9 patch 2's angle was
+/// −0.579 rad against CONTACT's −0.368) and every quantity within the Manchester benchmark's
+/// tolerances (the shipped scene `scenes/wheelrail/iestim_site_b_1` is gated at CONTACT's digits:
+/// `wheelrail_mbench`). On the exact wheel surface the worn flange root's FN is up to 1.8 % below
+/// CONTACT's at the same approach (docs/wheelrail.md).
 #[test]
-fn site_b_patches_and_their_angles_are_contacts() {
+fn site_b_cases_are_contacts_on_its_meshed_wheel_surface() {
     let (devs, cases, _) = deviations("iestim_site_b");
     assert_eq!(cases, (1..=21).collect::<Vec<u64>>());
-    let angles = ["n_patches", "deltcp_rad", "cksi", "ceta", "cphi_per_mm"];
-    let kept: Vec<Deviation> = devs.into_iter().filter(|d| angles.contains(&d.quantity)).collect();
-    let w = worst(&kept);
-    assert_eq!(w.len(), angles.len(), "{w:?}");
-    let failures: Vec<String> = kept.iter().filter(|d| !within_mbench(d)).map(|d| format!("{d:?}")).collect();
+    let w = worst(&devs);
+    assert!(w.contains_key("n_patches") && w.contains_key("fn_n"), "{w:?}");
+    let failures: Vec<String> = devs.iter().filter(|d| !within_mbench(d)).map(|d| format!("{d:?}")).collect();
     assert!(failures.is_empty(), "{} deviations beyond the tolerances:\n{}", failures.len(), failures.join("\n"));
 }
