@@ -542,6 +542,30 @@ mod tests {
     }
 
     #[test]
+    fn written_contents_land_as_bytes_would() {
+        let tmp = tempfile::tempdir().unwrap();
+        let files: Vec<(&str, Contents)> = vec![
+            ("a.csv", "1\n".into()),
+            ("b.csv", Contents::written(|w| w.write_all(b"2\n").and_then(|()| w.write_all(b"3\n")))),
+        ];
+        let out = write_result_folder(tmp.path(), "scene", files).unwrap();
+        assert_eq!(fs::read_to_string(out.join("b.csv")).unwrap(), "2\n3\n");
+        assert_eq!(Contents::written(|w| w.write_all(b"x")).into_bytes(), b"x");
+    }
+
+    #[test]
+    fn a_writer_under_the_lock_does_not_list_the_folder_for_leftovers() {
+        let tmp = tempfile::tempdir().unwrap();
+        let dead = tmp.path().join(".scene.creepbench-new-999999-1");
+        fs::create_dir(&dead).unwrap();
+        fs::write(dead.join(MARKER), MARKER_TEXT).unwrap();
+        write_result_folder_cleaned(tmp.path(), "scene", [("a.csv", "1")]).unwrap();
+        assert_eq!(listing(tmp.path()), [".scene.creepbench-new-999999-1", "scene"]);
+        write_result_folder(tmp.path(), "scene", [("a.csv", "1")]).unwrap();
+        assert_eq!(listing(tmp.path()), ["scene"]);
+    }
+
+    #[test]
     fn a_result_folder_is_replaced_whole() {
         let tmp = tempfile::tempdir().unwrap();
         write_result_folder(tmp.path(), "scene", [("a.csv", "1\n"), ("b.csv", "2\n")]).unwrap();
