@@ -99,7 +99,7 @@ impl Simulation {
 
     /// The result folder's files as the CLI writes them: `(name, text)`.
     fn files(&self) -> Vec<(String, String)> {
-        self.stored.files(false)
+        self.stored.file_texts(false)
     }
 
     /// One model's history: column names and one float64 array per column (`step` included).

@@ -26,12 +26,18 @@ pub fn simulate(scene: &Path, solvers: &[String], out: &Path, golden: &Path) -> 
         for w in &result.problem.warnings[before..] {
             errln!("warning: {w}");
         }
-        let stored = StoredScene::from_result(&result);
+        let ran: Vec<String> = result
+            .histories
+            .iter()
+            .zip(&result.timing)
+            .map(|(h, t)| format!("{}: {} rows in {:.3} s", h.solver, h.rows.len(), t.wall_s))
+            .collect();
+        let stored = StoredScene::from_owned(result);
         // Writers into one folder take turns (as `run` does), so two simulations both land.
         let _lock = lock::lock_folder(out, lock::DEFAULT_LOCK_WAIT)?;
         dirs.push(results::write_scenes(out, std::slice::from_ref(&stored), false)?.remove(0));
-        for (h, t) in result.histories.iter().zip(&result.timing) {
-            errln!("{}: {} rows in {:.3} s", h.solver, h.rows.len(), t.wall_s);
+        for line in ran {
+            errln!("{line}");
         }
     }
     Ok(dirs)

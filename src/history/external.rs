@@ -133,13 +133,20 @@ fn keep(folder: PathBuf, e: ExternalError, output: &Output) -> ExternalError {
     }
 }
 
+/// The model's scene.json, written into its (buffered) file as it is produced.
+fn write_scene_json(scene: &ResolvedScene, path: &Path) -> std::io::Result<()> {
+    use std::io::Write;
+    let mut out = std::io::BufWriter::new(std::fs::File::create(path)?);
+    scene.write_json(&mut out)?;
+    out.flush()
+}
+
 /// Run the model in the temporary folder `dir` and read its validated output; what it printed
 /// is left in `output`.
 fn run_in(spec: &ExternalSolver, problem: &Problem, dir: &Path, output: &mut Output) -> Result<History, ExternalError> {
     let scene_json = dir.join("scene.json");
     let out_csv = dir.join(format!("{}.csv", spec.name));
-    let json = ResolvedScene::of(problem, &problem.solvers).to_json();
-    std::fs::write(&scene_json, json).map_err(ExternalError::SceneJson)?;
+    write_scene_json(&ResolvedScene::of(problem, &problem.solvers), &scene_json).map_err(ExternalError::SceneJson)?;
     let mut program = std::path::PathBuf::from(&spec.command[0]);
     if program.components().count() > 1 && program.is_relative() {
         program = problem.scene_dir.join(program);

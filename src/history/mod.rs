@@ -24,12 +24,49 @@ pub const TERMINATION: &str = "termination";
 /// models): the references' sign convention, [`crate::physics::moment`].
 pub const MZ: &str = "mz_nmm";
 
+/// The loading a history row keeps: the CSV's columns and the row's speed, a [`Sample`] without
+/// what only the models read (prescribed forces and approach, undeformed distance, CHI, Courant
+/// number), so that a long history holds 72 bytes a row for its loading rather than 208.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RowSample {
+    pub step: usize,
+    pub t_s: f64,
+    pub cx: f64,
+    pub cy: f64,
+    /// Spin creepage [1/mm].
+    pub cs: f64,
+    pub fn_n: f64,
+    pub mu: f64,
+    /// The rolling speed [mm/s] where it differs per row; `None`: `[rolling] v_mm_s`.
+    pub v_mm_s: Option<f64>,
+}
+
+impl RowSample {
+    /// The rolling speed of this row [mm/s]: its own, else `rolling`'s.
+    pub fn speed_mm_s(&self, rolling_v_mm_s: f64) -> f64 {
+        self.v_mm_s.unwrap_or(rolling_v_mm_s)
+    }
+}
+
+impl From<&Sample> for RowSample {
+    fn from(s: &Sample) -> Self {
+        let Sample { step, t_s, cx, cy, cs, fn_n, mu, v_mm_s, .. } = *s;
+        RowSample { step, t_s, cx, cy, cs, fn_n, mu, v_mm_s }
+    }
+}
+
+impl From<Sample> for RowSample {
+    fn from(s: Sample) -> Self {
+        RowSample::from(&s)
+    }
+}
+
 /// One row: the loading and the traction coefficients, plus solver-specific extra values.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {
     /// The loading of this row (step, time, creepages, load, friction); `mu` is NaN where a
     /// source does not give it.
-    pub sample: Sample,
+    pub sample: RowSample,
     /// Tx / FN (thesis Eq. 2.30–2.31, 3.12), positive for positive cx.
     pub fx_over_fn: f64,
     pub fy_over_fn: f64,
@@ -40,7 +77,7 @@ pub struct Row {
 impl Row {
     /// A row for `sample` with traction coefficients (fx, fy) and extra values.
     pub fn new(sample: &Sample, fx_over_fn: f64, fy_over_fn: f64, extra: Vec<f64>) -> Self {
-        Row { sample: *sample, fx_over_fn, fy_over_fn, extra }
+        Row { sample: sample.into(), fx_over_fn, fy_over_fn, extra }
     }
 }
 
@@ -87,34 +124,31 @@ impl History {
     /// CSV text: header, then one line per row. Numbers use Rust's shortest round-trip form,
     /// so the text is bit-identical for bit-identical results.
     pub fn to_csv(&self) -> String {
-        let mut out = COLUMNS.join(",");
-        out.push(',');
-        out.push_str(MU);
+        let mut out = Vec::new();
+        self.write_csv(&mut out).expect("writing into memory does not fail");
+        String::from_utf8(out).expect("the CSV is ASCII")
+    }
+
+    /// The CSV text of [`History::to_csv`], written row by row into `out`.
+    pub fn write_csv(&self, out: &mut dyn std::io::Write) -> std::io::Result<()> {
+        write!(out, "{},{MU}", COLUMNS.join(","))?;
         for c in &self.extra_columns {
-            out.push(',');
-            out.push_str(c);
+            write!(out, ",{c}")?;
         }
-        out.push('\n');
+        out.write_all(b"\n")?;
         for r in &self.rows {
-            out.push_str(&format!(
+            let s = &r.sample;
+            write!(
+                out,
                 "{},{},{},{},{},{},{},{},{}",
-                r.sample.step,
-                r.sample.t_s,
-                r.sample.cx,
-                r.sample.cy,
-                r.sample.cs,
-                r.sample.fn_n,
-                r.fx_over_fn,
-                r.fy_over_fn,
-                r.sample.mu
-            ));
+                s.step, s.t_s, s.cx, s.cy, s.cs, s.fn_n, r.fx_over_fn, r.fy_over_fn, s.mu
+            )?;
             for v in &r.extra {
-                out.push(',');
-                out.push_str(&format!("{v}"));
+                write!(out, ",{v}")?;
             }
-            out.push('\n');
+            out.write_all(b"\n")?;
         }
-        out
+        Ok(())
     }
 
     /// Parse a history CSV (ours, a golden file, or an external model's output).
@@ -149,7 +183,8 @@ impl History {
                     num(4)?,
                     num(5)?,
                     if has_mu { num(COLUMNS.len())? } else { f64::NAN },
-                ),
+                )
+                .into(),
                 fx_over_fn: num(6)?,
                 fy_over_fn: num(7)?,
                 extra,

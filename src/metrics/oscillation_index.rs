@@ -110,7 +110,7 @@ pub fn own_oscillation(h: &History, rolling_v_mm_s: f64) -> Option<OwnOscillatio
     if run < ZIGZAG_FLAG {
         return None;
     }
-    let loading: [fn(&crate::problem::Sample, f64) -> f64; 6] =
+    let loading: [fn(&crate::history::RowSample, f64) -> f64; 6] =
         [|s, _| s.cx, |s, _| s.cy, |s, _| s.cs, |s, _| s.fn_n, |s, _| s.mu, |s, v| s.speed_mm_s(v)];
     let loading_run = loading
         .iter()

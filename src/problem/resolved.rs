@@ -127,6 +127,25 @@ fn one() -> f64 {
 impl ResolvedScene {
     /// The record of `p`, naming the solvers that ran.
     pub fn of(p: &Problem, solvers_ran: &[String]) -> ResolvedScene {
+        let history = p.loading.initial.iter().chain(p.loading.samples.iter()).copied().collect();
+        Self::with_history(p, solvers_ran, history)
+    }
+
+    /// The record of `p`, which it consumes: its loading becomes the record's history in place
+    /// (not copied: a long history is held once).
+    pub fn of_owned(mut p: Problem, solvers_ran: &[String]) -> ResolvedScene {
+        let mut history = std::mem::take(&mut p.loading.samples);
+        let n_steps = history.len();
+        if let Some(s0) = p.loading.initial {
+            history.insert(0, s0);
+        }
+        let mut scene = Self::with_history(&p, solvers_ran, history);
+        scene.n_steps = n_steps;
+        scene
+    }
+
+    /// The record of `p` with `history`, the rows of its loading.
+    fn with_history(p: &Problem, solvers_ran: &[String], history: Vec<Sample>) -> ResolvedScene {
         let h = p.hertz();
         let flex = p.flexibilities();
         ResolvedScene {
@@ -184,13 +203,21 @@ impl ResolvedScene {
             studies: p.studies.clone(),
             origin: p.origin.clone(),
             report_group: p.report_group,
-            history: p.loading.initial.iter().chain(p.loading.samples.iter()).copied().collect(),
+            history,
         }
     }
 
     /// scene.json text (pretty, shortest round-trip numbers, newline-terminated).
     pub fn to_json(&self) -> String {
-        serde_json::to_string_pretty(self).expect("a ResolvedScene always serialises") + "\n"
+        let mut out = Vec::new();
+        self.write_json(&mut out).expect("writing into memory does not fail");
+        String::from_utf8(out).expect("serde_json writes UTF-8")
+    }
+
+    /// The scene.json text of [`ResolvedScene::to_json`], written into `out` as it is produced.
+    pub fn write_json(&self, out: &mut dyn std::io::Write) -> std::io::Result<()> {
+        serde_json::to_writer_pretty(&mut *out, self)?;
+        out.write_all(b"\n")
     }
 
     /// Parse scene.json text (a sweep without `sweep_direction` is the cx sweep it was written as).

@@ -172,7 +172,7 @@ mod tests {
         for k in 0..=n {
             let t = k as f64 * dt;
             let row = Row {
-                sample: Sample::given(k, t, 0.0, 0.0, 0.0, 1.0, 1.0),
+                sample: Sample::given(k, t, 0.0, 0.0, 0.0, 1.0, 1.0).into(),
                 fx_over_fn: f(t),
                 fy_over_fn: 0.0,
                 extra: Vec::new(),

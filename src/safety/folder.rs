@@ -7,9 +7,10 @@
 
 use super::excerpt::excerpt;
 use super::interrupt::{self, Registration};
+use std::borrow::Cow;
 use std::ffi::OsStr;
 use std::fs::{self, File, TryLockError};
-use std::io::{self, Write};
+use std::io::{self, BufWriter, Write};
 use std::path::{Component, Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 
@@ -43,28 +44,118 @@ fn io_error(action: &'static str, path: &Path) -> impl FnOnce(io::Error) -> Fold
     move |source| FolderError::Io { action, path, source }
 }
 
+/// A file's contents: its bytes, or a function that writes them into the (buffered) file as it
+/// produces them, so that a large file (a long history, its scene.json) is never held whole.
+pub enum Contents<'a> {
+    Bytes(Cow<'a, [u8]>),
+    Written(Box<WriteFn<'a>>),
+}
+
+/// What writes a file's contents into it.
+pub type WriteFn<'a> = dyn FnOnce(&mut dyn Write) -> io::Result<()> + 'a;
+
+impl<'a> Contents<'a> {
+    /// Contents written by `write` into the file.
+    pub fn written(write: impl FnOnce(&mut dyn Write) -> io::Result<()> + 'a) -> Contents<'a> {
+        Contents::Written(Box::new(write))
+    }
+
+    /// The whole contents in memory.
+    pub fn into_bytes(self) -> Vec<u8> {
+        match self {
+            Contents::Bytes(b) => b.into_owned(),
+            written => {
+                let mut out = Vec::new();
+                written.write_into(&mut out).expect("writing into memory does not fail");
+                out
+            }
+        }
+    }
+
+    fn write_into(self, out: &mut dyn Write) -> io::Result<()> {
+        match self {
+            Contents::Bytes(b) => out.write_all(&b),
+            Contents::Written(write) => write(out),
+        }
+    }
+}
+
+impl<'a> From<&'a str> for Contents<'a> {
+    fn from(s: &'a str) -> Self {
+        Contents::Bytes(Cow::Borrowed(s.as_bytes()))
+    }
+}
+
+impl From<String> for Contents<'_> {
+    fn from(s: String) -> Self {
+        Contents::Bytes(Cow::Owned(s.into_bytes()))
+    }
+}
+
+impl From<Vec<u8>> for Contents<'_> {
+    fn from(b: Vec<u8>) -> Self {
+        Contents::Bytes(Cow::Owned(b))
+    }
+}
+
 /// Write `files` (plain file name, contents) as the folder `parent/name`, replacing an earlier
 /// result folder of that name atomically. Refused: a `name` or file name that is not a plain,
 /// visible name; an existing directory without the marker; anything else that is not a directory.
-pub fn write_result_folder<N: AsRef<str>, C: AsRef<[u8]>>(
+/// Leftovers of killed runs for `name` are removed first, which lists `parent`.
+pub fn write_result_folder<'a, N: AsRef<str>, C: Into<Contents<'a>>>(
     parent: &Path,
     name: &str,
     files: impl IntoIterator<Item = (N, C)>,
 ) -> Result<PathBuf, FolderError> {
+    write_folder(parent, name, files, Leftovers::Clean)
+}
+
+/// [`write_result_folder`] for a writer that holds `parent`'s lock ([`super::lock::lock_folder`],
+/// whose taking removed every leftover of killed runs in it) or is building `parent` itself (a
+/// staging tree): no leftover can be there, so `parent` is not listed. The time of a write then
+/// does not grow with the folder's size (a listing per write made N folders written into a
+/// folder of M cost N·M).
+pub fn write_result_folder_cleaned<'a, N: AsRef<str>, C: Into<Contents<'a>>>(
+    parent: &Path,
+    name: &str,
+    files: impl IntoIterator<Item = (N, C)>,
+) -> Result<PathBuf, FolderError> {
+    write_folder(parent, name, files, Leftovers::Cleaned)
+}
+
+/// Whether the leftovers of killed runs beside a target are still to be removed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Leftovers {
+    /// Remove them first (lists the parent folder).
+    Clean,
+    /// The caller's lock removed them (or the parent is its own staging tree).
+    Cleaned,
+}
+
+fn write_folder<'a, N: AsRef<str>, C: Into<Contents<'a>>>(
+    parent: &Path,
+    name: &str,
+    files: impl IntoIterator<Item = (N, C)>,
+    leftovers: Leftovers,
+) -> Result<PathBuf, FolderError> {
     check_plain_name(parent, name)?;
     let target = parent.join(name);
-    replace_tree_atomically(&target, |dir| {
+    replace_tree(&target, leftovers, |dir| {
         for (file, contents) in files {
             check_plain_name(&target, file.as_ref())?;
             let path = dir.join(file.as_ref());
-            let mut out =
+            let file =
                 fs::OpenOptions::new().write(true).create_new(true).open(&path).map_err(io_error("creating", &path))?;
-            out.write_all(contents.as_ref()).map_err(io_error("writing", &path))?;
+            let mut out = BufWriter::with_capacity(WRITE_BUFFER_BYTES, file);
+            contents.into().write_into(&mut out).and_then(|()| out.flush()).map_err(io_error("writing", &path))?;
         }
         Ok::<_, FolderError>(())
     })?;
     Ok(target)
 }
+
+/// The buffer between a file's writer and the file.
+const WRITE_BUFFER_BYTES: usize = 1 << 16;
 
 /// Build a complete new tree with `build` (given the empty folder, marker already in it) beside
 /// `target`, then swap it into place with one atomic exchange and remove the old tree. An
@@ -74,9 +165,19 @@ pub fn replace_tree_atomically<T, E: From<FolderError>>(
     target: &Path,
     build: impl FnOnce(&Path) -> Result<T, E>,
 ) -> Result<T, E> {
+    replace_tree(target, Leftovers::Clean, build)
+}
+
+fn replace_tree<T, E: From<FolderError>>(
+    target: &Path,
+    leftovers: Leftovers,
+    build: impl FnOnce(&Path) -> Result<T, E>,
+) -> Result<T, E> {
     let (parent, name) = split(target)?;
     fs::create_dir_all(parent).map_err(io_error("creating", parent))?;
-    clean_stale(parent, name, target);
+    if leftovers == Leftovers::Clean {
+        clean_stale(parent, name, target);
+    }
     check_replaceable(target, target)?;
     let mut staging = Staging::create(parent, name)?;
     let value = build(&staging.path)?;
@@ -437,6 +538,30 @@ mod tests {
         let tmp = tempfile::tempdir().unwrap();
         let out = write_result_folder(tmp.path(), "scene", [("a.csv", "1\n"), ("b.csv", "2\n")]).unwrap();
         assert_eq!(listing(&out), [MARKER, "a.csv", "b.csv"]);
+        assert_eq!(listing(tmp.path()), ["scene"]);
+    }
+
+    #[test]
+    fn written_contents_land_as_bytes_would() {
+        let tmp = tempfile::tempdir().unwrap();
+        let files: Vec<(&str, Contents)> = vec![
+            ("a.csv", "1\n".into()),
+            ("b.csv", Contents::written(|w| w.write_all(b"2\n").and_then(|()| w.write_all(b"3\n")))),
+        ];
+        let out = write_result_folder(tmp.path(), "scene", files).unwrap();
+        assert_eq!(fs::read_to_string(out.join("b.csv")).unwrap(), "2\n3\n");
+        assert_eq!(Contents::written(|w| w.write_all(b"x")).into_bytes(), b"x");
+    }
+
+    #[test]
+    fn a_writer_under_the_lock_does_not_list_the_folder_for_leftovers() {
+        let tmp = tempfile::tempdir().unwrap();
+        let dead = tmp.path().join(".scene.creepbench-new-999999-1");
+        fs::create_dir(&dead).unwrap();
+        fs::write(dead.join(MARKER), MARKER_TEXT).unwrap();
+        write_result_folder_cleaned(tmp.path(), "scene", [("a.csv", "1")]).unwrap();
+        assert_eq!(listing(tmp.path()), [".scene.creepbench-new-999999-1", "scene"]);
+        write_result_folder(tmp.path(), "scene", [("a.csv", "1")]).unwrap();
         assert_eq!(listing(tmp.path()), ["scene"]);
     }
 

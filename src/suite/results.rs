@@ -8,7 +8,7 @@ use crate::history::History;
 use crate::metrics::Metric;
 use crate::pipeline::{SceneResult, Timing};
 use crate::problem::ResolvedScene;
-use crate::safety::folder;
+use crate::safety::folder::{self, Contents};
 use crate::safety::read::{read_text, GOLDEN_LIMIT_BYTES};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -48,6 +48,22 @@ impl StoredScene {
         }
     }
 
+    /// From an in-memory result, which it consumes: the histories and the loading are moved,
+    /// not copied (a long scene is held once).
+    pub fn from_owned(r: SceneResult) -> StoredScene {
+        let ran: Vec<String> = r.histories.iter().map(|h| h.solver.clone()).collect();
+        let timing = r.histories.iter().zip(&r.timing).map(|(h, t)| (h.solver.clone(), *t)).collect();
+        StoredScene {
+            name: r.problem.name.clone(),
+            scene: ResolvedScene::of_owned(r.problem, &ran),
+            histories: r.histories.into_iter().map(|h| (h.solver.clone(), h)).collect(),
+            metrics: r.metrics.into_iter().map(|m| ((m.solver, m.name, m.step), m.value)).collect(),
+            timing,
+            repeats: BTreeMap::new(),
+            logs: r.logs.into_iter().collect(),
+        }
+    }
+
     /// A scalar metric of one solver.
     pub fn metric(&self, solver: &str, name: &str) -> Option<f64> {
         self.metrics.get(&(solver.to_string(), name.to_string(), None)).copied()
@@ -56,10 +72,11 @@ impl StoredScene {
     /// The files of the result folder: scene.json, `<solver>.csv`, metrics.csv, the external
     /// models' `<model>.stdout.txt` / `<model>.stderr.txt` and, with `with_timing`, timing.csv
     /// (and timing_repeats.csv when re-timed).
-    pub fn files(&self, with_timing: bool) -> Vec<(String, String)> {
-        let mut files = vec![("scene.json".to_string(), self.scene.to_json())];
+    /// scene.json and the histories are written into their files as they are produced.
+    pub fn files(&self, with_timing: bool) -> Vec<(String, Contents<'_>)> {
+        let mut files = vec![("scene.json".to_string(), Contents::written(|w| self.scene.write_json(w)))];
         for (solver, h) in &self.histories {
-            files.push((format!("{solver}.csv"), h.to_csv()));
+            files.push((format!("{solver}.csv"), Contents::written(|w| h.write_csv(w))));
         }
         let metrics: Vec<Metric> = self
             .metrics
@@ -71,20 +88,26 @@ impl StoredScene {
                 step: *step,
             })
             .collect();
-        files.push(("metrics.csv".into(), crate::metrics::to_csv(&metrics)));
-        files.extend(self.logs.clone());
+        files.push(("metrics.csv".into(), crate::metrics::to_csv(&metrics).into()));
+        files.extend(self.logs.iter().map(|(f, text)| (f.clone(), Contents::from(text.as_str()))));
         if with_timing {
             let mut t = String::from("solver,wall_s,steps,setup_s\n");
             for (solver, w) in &self.timing {
                 let steps = self.histories.get(solver).map(|h| h.rows.len()).unwrap_or(0);
                 t.push_str(&format!("{solver},{},{steps},{}\n", w.wall_s, w.setup_s));
             }
-            files.push(("timing.csv".into(), t));
+            files.push(("timing.csv".into(), t.into()));
             if !self.repeats.is_empty() {
-                files.push((REPEATS_FILE.into(), self.repeats_csv()));
+                files.push((REPEATS_FILE.into(), self.repeats_csv().into()));
             }
         }
         files
+    }
+
+    /// The files of [`StoredScene::files`] as text, each whole in memory.
+    pub fn file_texts(&self, with_timing: bool) -> Vec<(String, String)> {
+        let text = |c: Contents| String::from_utf8(c.into_bytes()).expect("result files are UTF-8");
+        self.files(with_timing).into_iter().map(|(name, c)| (name, text(c))).collect()
     }
 
     /// timing_repeats.csv: one row per solver and repeat.
@@ -118,9 +141,12 @@ fn parse_repeats(text: &str) -> BTreeMap<String, Vec<Timing>> {
 }
 
 /// Write each scene's results as `dir/<name>/`, each folder atomically and marked as a result
-/// folder (a directory creepbench did not write is never replaced).
+/// folder (a directory creepbench did not write is never replaced). The caller holds `dir`'s
+/// lock (`lock::lock_folder`, which removed the leftovers of killed runs) or is building `dir`
+/// (bless's new tree): `dir` is not listed per scene, each write takes the same time whatever
+/// `dir` holds ([`folder::write_result_folder_cleaned`]).
 pub fn write_scenes(dir: &Path, scenes: &[StoredScene], with_timing: bool) -> Result<Vec<PathBuf>, Error> {
-    scenes.iter().map(|s| Ok(folder::write_result_folder(dir, &s.name, s.files(with_timing))?)).collect()
+    scenes.iter().map(|s| Ok(folder::write_result_folder_cleaned(dir, &s.name, s.files(with_timing))?)).collect()
 }
 
 /// The scenes of a blessed tree that a new bless keeps: those it does not produce again.

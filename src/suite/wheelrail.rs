@@ -119,9 +119,10 @@ pub fn files(run: &SceneRun) -> Vec<(String, Vec<u8>)> {
     out
 }
 
-/// Write the scene's result folder `dir/<name>` (replaced whole, as every result folder).
+/// Write the scene's result folder `dir/<name>` (replaced whole, as every result folder); the
+/// caller holds `dir`'s lock, as for `results::write_scenes`.
 pub fn write(dir: &Path, run: &SceneRun) -> Result<PathBuf, Error> {
-    Ok(folder::write_result_folder(dir, &run.name, files(run))?)
+    Ok(folder::write_result_folder_cleaned(dir, &run.name, files(run))?)
 }
 
 /// The suite's scene files split into module-3 scenes and wheel–rail scenes (a `[wheelrail]`

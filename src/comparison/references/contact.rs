@@ -168,7 +168,7 @@ pub fn read_history(path: &Path, step_offset: usize, extra: &[&str]) -> Result<H
                 opt(mu_col, f64::NAN)?,
             );
             Ok(Row {
-                sample: Sample { v_mm_s: v_col.map(n).transpose()?, ..sample },
+                sample: Sample { v_mm_s: v_col.map(n).transpose()?, ..sample }.into(),
                 fx_over_fn: n(cols[5])?,
                 fy_over_fn: n(cols[6])?,
                 extra: cols[7..].iter().map(|&c| n(c)).collect::<Result<Vec<f64>, FormatError>>()?,

@@ -68,7 +68,7 @@ pub fn load(dir: &Path) -> Result<EnvelopeCases, Error> {
                     let (fx, fy, mz) = parse_case(line).ok_or_else(|| bad(n, line.chars().take(60).collect()))?;
                     // Forces on body 1 over mu FN, moment over mu FN cp: flipped and scaled.
                     h.rows.push(Row {
-                        sample: Sample::given(step, 0.0, f64::NAN, f64::NAN, f64::NAN, FN_N, MU),
+                        sample: Sample::given(step, 0.0, f64::NAN, f64::NAN, f64::NAN, FN_N, MU).into(),
                         fx_over_fn: -MU * fx,
                         fy_over_fn: -MU * fy,
                         extra: vec![-MU * FN_N * cp_mm * mz],
