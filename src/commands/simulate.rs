@@ -159,11 +159,15 @@ pub(super) fn wheelrail_section(
     printed: &[Vec<PrintedCase>],
 ) -> Result<Option<Section>, Error> {
     let mut views = Vec::new();
-    for (scene, run) in runs {
+    let mut contacts = Vec::new();
+    // Only the scenes that declare the section are viewed (their patch maps solved): the others
+    // are gated, not drawn.
+    for ((scene, run), contact) in runs.into_iter().zip(printed).filter(|((s, _), _)| s.report.in_section) {
         views.push(pipeline::wheelrail_view::view(&scene, run)?);
+        contacts.push(contact);
     }
     let wheels: Vec<report::wheelrail::Wheel> =
-        views.iter().zip(printed).map(|(view, contact)| report::wheelrail::Wheel { view, contact }).collect();
+        views.iter().zip(contacts).map(|(view, contact)| report::wheelrail::Wheel { view, contact }).collect();
     Ok(report::wheelrail::section(&wheels))
 }
 

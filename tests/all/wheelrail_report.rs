@@ -159,3 +159,36 @@ fn bad_cases_axes_and_report_requests_exit_2_naming_the_field() {
     assert!(err.contains("--report") && err.contains("group = \"wheelrail\""), "{err}");
     assert!(!dir.join("rep").exists());
 }
+
+/// `run` of the shipped wheel–rail suite: every scene gated, and the section drawn from the
+/// scenes that declare `[report] group = "wheelrail"` alone (the others, whose positions may be
+/// in full slip at creepages no patch map takes, are not viewed).
+#[test]
+fn run_of_the_shipped_suite_draws_only_the_declared_scenes() {
+    let dir = common::tempdir("wheelrail_run_suite");
+    let (res, rep) = (dir.join("res"), dir.join("rep"));
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(common::root())
+        .args(["run", "--quiet", "--suite", "scenes/wheelrail", "--results"])
+        .arg(&res)
+        .arg("--report")
+        .arg(&rep)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    let md = std::fs::read_to_string(rep.join("validation.md")).unwrap();
+    assert!(md.contains("## Wheel–rail contact"), "no section");
+    for drawn in ["mbench_a22_left", "mbench_a22_right"] {
+        assert!(md.contains(drawn), "{drawn} not drawn");
+    }
+    let figures: Vec<String> = std::fs::read_dir(rep.join("figures"))
+        .unwrap()
+        .flatten()
+        .map(|e| e.file_name().to_string_lossy().to_string())
+        .filter(|f| f.starts_with("wheelrail_"))
+        .collect();
+    let declared =
+        |f: &String| f.starts_with("wheelrail_mbench_a22_left_") || f.starts_with("wheelrail_mbench_a22_right_");
+    assert!(!figures.is_empty() && figures.iter().all(declared), "{figures:?}");
+}
