@@ -114,12 +114,7 @@ fn the_console_and_ci_files_of_a_check_that_drifts() {
     assert_eq!(code, 0, "{err}");
     // One value of FASTSIM's baseline moved by 1e-3: a drift of one gated quantity.
     let csv = base.join("step_cx001/fastsim.csv");
-    let text = std::fs::read_to_string(&csv).unwrap();
-    let mut lines: Vec<String> = text.lines().map(String::from).collect();
-    let mut cells: Vec<String> = lines[5].split(',').map(String::from).collect();
-    cells[6] = format!("{}", cells[6].parse::<f64>().unwrap() + 1e-3);
-    lines[5] = cells.join(",");
-    std::fs::write(&csv, lines.join("\n") + "\n").unwrap();
+    crate::common::nudge_csv(&csv, 5, 6, 1e-3);
     let (junit, json, summary) = (tmp.join("j.xml"), tmp.join("c.json"), tmp.join("s.md"));
     let (code, out, err) = creepbench(
         &[
