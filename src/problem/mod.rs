@@ -393,6 +393,15 @@ impl Problem {
         self.local_contact_of(self.geometry.planform(&self.grid, fn_n, self.model.pressure))
     }
 
+    /// `local` made for load `fn_n` if it was made for another load; whether it was remade.
+    pub fn reload_local(&self, local: &mut LocalContact, fn_n: f64) -> bool {
+        let stale = fn_n != local.planform.ellipse.fn_n;
+        if stale {
+            *local = self.local_contact(fn_n);
+        }
+        stale
+    }
+
     /// The simplified models' contact on a planform found otherwise (an approximate normal
     /// problem's, [`crate::physics::approximate`]).
     pub fn local_contact_of(&self, planform: Planform) -> LocalContact {

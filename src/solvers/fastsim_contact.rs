@@ -82,9 +82,7 @@ struct FastsimContact<'a> {
 
 impl Stepper for FastsimContact<'_> {
     fn load(&mut self, at: &Sample) -> Result<(), SolveError> {
-        if at.fn_n != self.local.planform.ellipse.fn_n {
-            self.local = self.p.local_contact(at.fn_n);
-        }
+        self.p.reload_local(&mut self.local, at.fn_n);
         Ok(())
     }
 

@@ -97,9 +97,7 @@ pub fn stiffness(p: &Problem) -> f64 {
     let mut local = p.local_contact(p.loading.first().fn_n);
     let mut kappa = 0.0f64;
     for at in p.loading.rows() {
-        if at.fn_n != local.planform.ellipse.fn_n {
-            local = p.local_contact(at.fn_n);
-        }
+        p.reload_local(&mut local, at.fn_n);
         let p_max = local.planform.pressure_mpa.iter().fold(0.0f64, |m, &v| m.max(v));
         let gain = local.row_gain.iter().copied().filter(|g| *g > 0.0).fold(f64::INFINITY, f64::min);
         let (l1, l2, _) = brush::flexibilities(at, &local);
@@ -146,8 +144,7 @@ impl Uba<'_> {
 
 impl Stepper for Uba<'_> {
     fn load(&mut self, at: &Sample) -> Result<(), SolveError> {
-        if at.fn_n != self.local.planform.ellipse.fn_n {
-            self.local = self.p.local_contact(at.fn_n);
+        if self.p.reload_local(&mut self.local, at.fn_n) {
             // Elements that left the contact carry nothing.
             for (k, p) in self.local.planform.pressure_mpa.iter().enumerate() {
                 if *p <= 0.0 {
