@@ -84,9 +84,11 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         "testbank_32",
         "mbench_rail_velocity_left",
         // Cases written by hand off the benchmark's path (negative shifts, 5-50 kN, braking and
-        // traction, a yaw rate), computed by CONTACT.
+        // traction, a yaw rate) and on the worn site-B profiles, computed by CONTACT.
         "mbench_off_design_left",
         "mbench_off_design_right",
+        "site_b_off_design_left",
+        "site_b_off_design_right",
     ] {
         let of: Vec<_> = ours.iter().filter(|f| f.scene == scene).collect();
         assert!(of.len() >= 20 && of.iter().all(|f| f.gated && f.passed()), "{scene}: {of:?}");
