@@ -1,17 +1,19 @@
 //! A wheel–rail scene as CONTACT module-1 input (issue 44; CONTACT's user guide, "Specification of
 //! the input file", module 1), one CONTACT case per row of its cases table, as
 //! reference/contact_wheelrail/examples/mbench_a22_left.inp forms its cases: the first case gives
-//! everything (C-P-B-T-N-F-S = C20TN00, T = 3 or 0 when frictionless, V-L-D-C-M-Z-E = 0022033, H-G-I-A-O-W-R = 0000321: the
-//! solver's limits, FSTAT = FKIN = mu, POISS and GG of both bodies the scene's, DX, DS with DQREL 1,
+//! everything (C-P-B-T-N-F-S = C20TN00, T = 3 or 0 when frictionless, V-L-D-C-M-Z-E = V022033 (V the
+//! friction's variation: 0, 1 across the rail, 2 along the track), H-G-I-A-O-W-R = 0000321: the
+//! solver's limits, FSTAT = FKIN = mu or NVF control points, POISS and GG of both bodies the scene's, DX, DS with DQREL 1,
 //! the scene's A_SEP, D_SEP, D_COMB, the track, the rail profile with its options (PRFOPT = 2) and
 //! the rail's deviations, the wheelset's dimensions, the wheel profile, the position and velocities); each later case keeps all
-//! but its position and velocities (0111002, 0100321). C is the side (0 left, 1 right), N the
-//! vertical problem (1: FZ prescribed, 0: the height Z_WS); S_WS and PITCH are 0. Profile names are
+//! but its position and velocities (V111002, 0100321). C is the side (0 left, 1 right), N the
+//! vertical problem (1: FZ prescribed, 0: the height Z_WS); S_WS is the scene's track position
+//! where friction varies along the track (else 0), PITCH 0. Profile names are
 //! written relative to the deck's folder, where CONTACT looks for them.
 
 use crate::error::InputError;
 use crate::safety::relative::relative;
-use crate::scene::wheelrail::{CaseRow, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene};
+use crate::scene::wheelrail::{CaseRow, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene};
 use crate::scene::MaterialSpec;
 use crate::wheelrail::profile::options::SCALE_MIN;
 use std::fmt::Write;
@@ -24,21 +26,19 @@ const FKIN_MIN: f64 = 1e-4;
 const NAME_MAX: usize = 200;
 
 /// The scene's values CONTACT's input check would refuse or change (an error names the scene's key):
-/// mu below CONTACT's FKIN range, a profile scale CONTACT replaces by 1; a friction variation,
-/// which the deck is not written with yet.
+/// mu below CONTACT's FKIN range, a profile scale CONTACT replaces by 1.
 pub fn check(s: &WheelRailScene) -> Result<(), InputError> {
-    if let Some(v) = &s.mu_variation {
-        return Err(InputError::new(
-            "wheelrail.mu_by",
-            format!("{:?}", v.by),
-            "one mu for the whole rail (wheelrail.mu): the export writes V = 0 only, not yet CONTACT's friction variation (V = 1, 2)",
-        ));
-    }
-    if s.mu < FKIN_MIN {
-        let allowed = format!(
-            "a coefficient of friction of at least {FKIN_MIN:e} (CONTACT's FSTAT = FKIN, m_friclaw.f90 fric_input)"
-        );
-        return Err(InputError::new("wheelrail.mu", s.mu, allowed));
+    let allowed = format!(
+        "a coefficient of friction of at least {FKIN_MIN:e} (CONTACT's FSTAT = FKIN, m_friclaw.f90 fric_input)"
+    );
+    match &s.mu_variation {
+        Some(v) => {
+            if let Some(mu) = v.values.iter().find(|&&mu| mu < FKIN_MIN) {
+                return Err(InputError::new("wheelrail.mu_values", mu, allowed));
+            }
+        }
+        None if s.mu < FKIN_MIN => return Err(InputError::new("wheelrail.mu", s.mu, allowed)),
+        None => {}
     }
     for (key, p) in [("rail.scale", &s.rail), ("wheel.scale", &s.wheel)] {
         if p.scale <= SCALE_MIN {
@@ -64,7 +64,7 @@ pub fn module1_input(s: &WheelRailScene, deck_dir: &Path) -> Result<String, Inpu
         if n == 0 {
             setup(s, (&rail, &wheel), &mut out);
         }
-        position_and_velocity(s.vertical, row, &mut out);
+        position_and_velocity(s.vertical, track_s_mm(s), row, &mut out);
     }
     out.push_str("\n 0 MODULE\n");
     Ok(out)
@@ -90,9 +90,14 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
     let c = u8::from(s.side == SideSpec::Right);
     let n = u8::from(s.vertical == VerticalSpec::Force);
     let t = if s.frictionless { 0 } else { 3 };
-    let (vldcmze, hgiaowr) = if first { ("0022033", "0000321") } else { ("0111002", "0100321") };
+    let v = match s.mu_variation.as_ref().map(|v| v.by) {
+        None => 0,
+        Some(MuBy::ContactAngle) => 1,
+        Some(MuBy::TrackS { .. }) => 2,
+    };
+    let (ldcmze, hgiaowr) = if first { ("022033", "0000321") } else { ("111002", "0100321") };
     let _ = writeln!(out, " {c}20{t}{n}00    C-P-B-T-N-F-S   CONFIG, PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS");
-    let _ = writeln!(out, " {vldcmze}    V-L-D-C-M-Z-E   VARFRC, FRCLAW, DISCNS, INFLCF, MATER,  ZTRACK, EWHEEL");
+    let _ = writeln!(out, " {v}{ldcmze}    V-L-D-C-M-Z-E   VARFRC, FRCLAW, DISCNS, INFLCF, MATER,  ZTRACK, EWHEEL");
     let _ = writeln!(out, " {hgiaowr}    H-G-I-A-O-W-R     HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW,   RETURN");
 }
 
@@ -100,7 +105,7 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
 fn setup(s: &WheelRailScene, (rail, wheel): (&str, &str), out: &mut String) {
     let (g, nu) = (shear_modulus(&s.material), s.material.poisson);
     let _ = writeln!(out, "    999     100    30    1     1e-5         MAXGS , MAXIN , MAXNR , MAXOUT, EPS");
-    let _ = writeln!(out, "  {:?}   {:?}                                 FSTAT, FKIN", s.mu, s.mu);
+    friction(s, out);
     let _ = writeln!(out, "  {nu:?}   {nu:?}   {g:?}   {g:?}                POISS 1,2,  GG 1,2");
     let _ = writeln!(
         out,
@@ -125,6 +130,28 @@ fn setup(s: &WheelRailScene, (rail, wheel): (&str, &str), out: &mut String) {
         s.flange_back_distance_mm, s.flange_back_position_mm, s.nominal_radius_mm
     );
     profile_line(wheel, &s.wheel, "WFNAME", out);
+}
+
+/// Coulomb's law (L = 0): `FSTAT FKIN` with one μ, or with a variation (V = 1, 2) `NVF` and per
+/// control point `ALPHA (or SVF) FSTAT FKIN` (user guide, module 1, "VARFRC").
+fn friction(s: &WheelRailScene, out: &mut String) {
+    let Some(v) = &s.mu_variation else {
+        let _ = writeln!(out, "  {:?}   {:?}                                 FSTAT, FKIN", s.mu, s.mu);
+        return;
+    };
+    let at = if v.by == MuBy::ContactAngle { "ALPHA" } else { "SVF" };
+    let _ = writeln!(out, "  {}                                            NVF", v.at.len());
+    for (x, mu) in v.at.iter().zip(&v.values) {
+        let _ = writeln!(out, "  {x:?}   {mu:?}   {mu:?}                        {at}, FSTAT, FKIN");
+    }
+}
+
+/// The wheelset's track position S_WS [mm]: where friction varies along the track (V = 2), else 0.
+fn track_s_mm(s: &WheelRailScene) -> f64 {
+    match s.mu_variation.as_ref().map(|v| v.by) {
+        Some(MuBy::TrackS { s_mm }) => s_mm,
+        _ => 0.0,
+    }
 }
 
 /// G as the scene gives it, or from E and ν (the reader requires one of them).
@@ -159,12 +186,12 @@ fn profile_line(name: &str, p: &ProfileSpec, what: &str, out: &mut String) {
     let _ = writeln!(out, "  0   {:?}       ERRHND, MAXOMIT", p.max_omit);
 }
 
-/// S_WS = 0, Y_WS, FZ or Z_WS, ROLL, YAW, PITCH = 0; then VS, VY, VZ, VROLL, VYAW, VPITCH.
-fn position_and_velocity(vertical: VerticalSpec, r: &CaseRow, out: &mut String) {
+/// S_WS, Y_WS, FZ or Z_WS, ROLL, YAW, PITCH = 0; then VS, VY, VZ, VROLL, VYAW, VPITCH.
+fn position_and_velocity(vertical: VerticalSpec, s_mm: f64, r: &CaseRow, out: &mut String) {
     let third = if vertical == VerticalSpec::Force { "FZ" } else { "Z" };
     let _ = writeln!(
         out,
-        "  0.0   {:?}   {:?}   {:?}   {:?}   0.0      S, Y, {third}, ROLL, YAW, PITCH",
+        "  {s_mm:?}   {:?}   {:?}   {:?}   {:?}   0.0      S, Y, {third}, ROLL, YAW, PITCH",
         r.y_mm, r.vertical, r.roll_rad, r.yaw_rad
     );
     let [vs, vy, vz, vroll, vyaw, vpitch] = r.velocity;

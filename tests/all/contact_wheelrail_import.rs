@@ -260,6 +260,37 @@ fn export_then_import_gives_the_same_scene() {
     assert_eq!(values(&back), values(&original));
 }
 
+/// Friction varying across the rail (V = 1) and along the track (V = 2): mbench_a22_varfric's
+/// planar cases 1-4 and 6 imported, exported with `NVF` and their control points (and S_WS for
+/// V = 2), imported again as the same scenes. (Run by CONTACT, the exported decks print the totals
+/// of the deck they came from: FY(TR), FZ(TR) as printed, 2026-11-28.)
+#[test]
+fn a_friction_variation_exports_and_imports_back() {
+    let dir = common::tempdir("m1_varfric_round_trip");
+    let scenes = import(&examples().join("mbench_a22_varfric.inp"), &dir.join("scenes"), &["--supported-only"]);
+    assert_eq!(scenes.len(), 2, "{scenes:?}");
+    for (k, (scene, v, points)) in scenes
+        .iter()
+        .zip([("1", "ALPHA, FSTAT, FKIN"), ("2", "SVF, FSTAT, FKIN")])
+        .map(|(s, (v, p))| (s, v, p))
+        .enumerate()
+    {
+        let (original, back) = round_trip(scene, &dir.join(format!("trip{k}")));
+        assert!(original.mu_variation.is_some(), "{scene:?}");
+        // The exported deck numbers its cases from 1.
+        let renumbered = |s: &WheelRailScene| {
+            let mut v = values(s);
+            v.cases.iter_mut().for_each(|c| c.contact_case = 0);
+            v
+        };
+        assert_eq!(renumbered(&back), renumbered(&original));
+        let deck = std::fs::read_to_string(dir.join(format!("trip{k}/deck/{}.inp", original.name))).unwrap();
+        let control = deck.lines().find(|l| l.contains("V-L-D-C-M-Z-E")).unwrap();
+        assert!(control.trim_start().starts_with(&format!("{v}022033")), "{control}");
+        assert_eq!(deck.lines().filter(|l| l.ends_with(points)).count(), 2, "{deck}");
+    }
+}
+
 /// Profile options and rail deviations outside their ranges are refused naming the key (exit 2).
 #[test]
 fn bad_profile_options_and_rail_deviations_are_refused() {
