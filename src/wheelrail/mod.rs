@@ -231,7 +231,7 @@ fn geometry_at(
     }
     let radius = case.wheelset.nominal_radius_mm;
     let candidates: Vec<_> =
-        search::regions(&samples).into_iter().filter_map(|r| patch::candidate(r, rail, radius)).collect();
+        search::regions(&samples).into_iter().filter_map(|r| patch::candidate(r, radius)).collect();
     let mut out = Vec::new();
     for (k, c) in patch::combine(candidates, &case.separation).iter().enumerate() {
         let geometry = patch::build(c, wheel, rail, (case.dx_mm, case.ds_mm), &case.separation, case.wheel_surface)?;

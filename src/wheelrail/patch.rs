@@ -121,7 +121,7 @@ impl Candidate {
 
 /// The candidate patch of a region (CONTACT's `locate_interpen_1d` with `compute_wgt_center_1d`
 /// and `compute_contact_length_1d`); `None` where nothing interpenetrates.
-pub fn candidate(region: &[LocusSample], rail: &PlacedRail, radius_mm: f64) -> Option<Candidate> {
+pub fn candidate(region: &[LocusSample], radius_mm: f64) -> Option<Candidate> {
     let a = 0.5 / radius_mm;
     let inside = || region.iter().filter(|s| s.pen_mm >= 0.0);
     let total_weight: f64 = inside().map(|s| weight(s.pen_mm, a)).sum();
@@ -136,11 +136,11 @@ pub fn candidate(region: &[LocusSample], rail: &PlacedRail, radius_mm: f64) -> O
         (x_lo, x_hi) = (x_lo.min(p.x_mm - half), x_hi.max(p.x_mm + half));
     }
     let last = region.len() - 1;
-    let y_mm = [crossing(region, 0, 1.min(last)), crossing(region, last, last.saturating_sub(1))];
+    let (start, end) = (crossing(region, 0, 1.min(last)), crossing(region, last, last.saturating_sub(1)));
     Some(Candidate {
         x_mm: [x_lo, x_hi],
-        y_mm,
-        z_mm: [rail.z_mm(y_mm[0])?, rail.z_mm(y_mm[1])?],
+        y_mm: [start[0], end[0]],
+        z_mm: [start[1], end[1]],
         wgt_x_mm: mean(&|s| s.x_mm),
         wgt_y_mm: mean(&|s| s.y_mm),
         wgt_angle_rad: mean(&|s| s.rail_angle_rad),
@@ -302,14 +302,16 @@ pub fn frame(c: &Candidate, rail: &PlacedRail) -> Option<PatchFrame> {
     Some(PatchFrame { origin: Point3::new(c.wgt_x_mm, c.wgt_y_mm, rail.z_mm(c.wgt_y_mm)?), delta_rad: c.wgt_angle_rad })
 }
 
-/// Where the gap crosses zero between mesh points k and k + step (linear), or point k's y.
-fn crossing(region: &[LocusSample], k: usize, next: usize) -> f64 {
+/// Where the gap crosses zero between mesh points k and `next`: y and the rail's z, each linear
+/// between the two points (CONTACT's `locate_interpen_1d`, step 5.i), or point k's.
+fn crossing(region: &[LocusSample], k: usize, next: usize) -> [f64; 2] {
     let (a, b) = (&region[k], &region[next]);
     let d = b.pen_mm - a.pen_mm;
     if a.pen_mm * b.pen_mm <= -1e-12 && d.abs() >= 1e-9 {
-        a.y_mm - a.pen_mm * (b.y_mm - a.y_mm) / d
+        let t = -a.pen_mm / d;
+        [a.y_mm + t * (b.y_mm - a.y_mm), a.z_rail_mm + t * (b.z_rail_mm - a.z_rail_mm)]
     } else {
-        a.y_mm
+        [a.y_mm, a.z_rail_mm]
     }
 }
 

@@ -67,7 +67,7 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
     // No benchmark case is a declared gap (right case 11: the test below); seven of the testbank's
     // cases are, each bounded at its measured gap (tolerances.toml).
     let all_gaps: Vec<&&Finding> = ours.iter().filter(|f| f.quantity.ends_with(wheelrail_cases::GAP_SUFFIX)).collect();
-    let testbank_gaps = [22, 27, 28, 29, 30, 31, 33, 34];
+    let testbank_gaps = [22, 27, 28, 29, 30, 31, 34];
     let in_testbank = |f: &&&Finding| f.scene.starts_with("testbank_") && testbank_gaps.contains(&f.step.unwrap_or(0));
     assert!(all_gaps.iter().all(in_testbank), "{all_gaps:?}");
     for case in testbank_gaps {
@@ -82,6 +82,7 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         "testbank_19",
         "testbank_23",
         "testbank_32",
+        "testbank_33",
         "mbench_rail_velocity_left",
         // Cases written by hand off the benchmark's path (negative shifts, 5-50 kN, braking and
         // traction, a yaw rate) and on the worn site-B profiles, computed by CONTACT.
@@ -90,6 +91,8 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         "site_b_off_design_left",
         "site_b_off_design_right",
         "site_b_varfric_right",
+        "site_b_two_patch_left",
+        "site_b_two_patch_right",
     ] {
         let of: Vec<_> = ours.iter().filter(|f| f.scene == scene).collect();
         assert!(of.len() >= 20 && of.iter().all(|f| f.gated && f.passed()), "{scene}: {of:?}");
