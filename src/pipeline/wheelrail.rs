@@ -10,6 +10,7 @@
 //! track, FS in its tangent plane (lateral), FN along its normal; totals in track and wheelset
 //! coordinates, y to the right on both sides.
 
+use super::wheelrail_exact::{self, ExactCache};
 use super::{resolve, run};
 use crate::error::{Error, InputError};
 use crate::history::sample_loop::{run_with_fields, Field};
@@ -70,6 +71,7 @@ pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Res
         ))
     };
     let mut cache = wheelrail::NormalCache::default();
+    let mut exact_cache = ExactCache::default();
     let mut normal = wheelrail::normal_contact_with(case, None, &mut cache).map_err(geometry)?;
     // The exact theory's forces on the patches of `normal`, where the balance has them.
     let mut exact_now = None;
@@ -81,7 +83,7 @@ pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Res
     }
     if let Vertical::Force { fz_n } = case.vertical {
         for _ in 0..VERTICAL_ROUNDS {
-            let exact = patch_forces(&normal, EXACT, mu, case)?;
+            let exact = exact_forces(&normal, mu, case, &mut exact_cache)?;
             let normal_z = normal.fz_normal_n();
             let tangential_z: f64 = normal
                 .patches
@@ -104,6 +106,7 @@ pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Res
     for model in models {
         let forces = match exact_now.take_if(|_| model == EXACT) {
             Some(exact) => exact,
+            None if model == EXACT => exact_forces(&normal, mu, case, &mut exact_cache)?,
             None => patch_forces(&normal, model, mu, case)?,
         };
         let totals = totals(&normal, &forces, case);
@@ -120,13 +123,33 @@ fn frictionless(p: &NormalPatch) -> PatchForces {
 }
 
 /// One model's forces on every patch.
-fn patch_forces(
+pub(crate) fn patch_forces(
     normal: &NormalContact,
     model: &str,
     mu: &Friction,
     case: &WheelRailCase,
 ) -> Result<Vec<PatchForces>, Error> {
     normal.patches.iter().map(|p| patch_solve(p, model, mu.of_patch(p, case), case)).collect()
+}
+
+/// The exact theory's forces on every patch, solved on the patches directly
+/// ([`wheelrail_exact`]: the patches' pressure, kernels kept per grid size); through each patch's
+/// scene where the bodies are dissimilar (the coupled solver's outer iteration).
+fn exact_forces(
+    normal: &NormalContact,
+    mu: &Friction,
+    case: &WheelRailCase,
+    cache: &mut ExactCache,
+) -> Result<Vec<PatchForces>, Error> {
+    if case.material.coupled() {
+        return patch_forces(normal, EXACT, mu, case);
+    }
+    let failed = |e| Error::Solve { scene: "patch".into(), solver: EXACT.into(), source: Box::new(e) };
+    normal
+        .patches
+        .iter()
+        .map(|p| wheelrail_exact::patch_forces(p, mu.of_patch(p, case), case, cache).map_err(failed))
+        .collect()
 }
 
 /// The module-3 scene text of a patch with `contact` (its geometry's keys) and `grid` tables.
