@@ -17,23 +17,22 @@ use crate::wheelrail::{NormalPatch, WheelRailCase};
 /// Grids kept per case (the oldest dropped first).
 const KEPT: usize = 8;
 
+/// A solver and its last tractions `(px, py)` [MPa] (none before its first solve).
+type Kept = ((usize, usize), TangentialSolver, Option<(Vec<f64>, Vec<f64>)>);
+
 /// The tangential solvers of one case by grid size `(mx, ms)`, with each one's last solution
-/// (the warm start of the next solve on that size).
+/// (the warm start of the next solve on that size: the same patch at a nearby height).
 #[derive(Default)]
 pub struct ExactCache {
-    solvers: Vec<((usize, usize), TangentialSolver)>,
+    solvers: Vec<Kept>,
 }
 
 impl ExactCache {
-    /// The solver of an `mx × my` grid of `(dx, dy)` elements of material `m`, centred at `x`, `y`.
-    fn get(
-        &mut self,
-        grid: &Grid,
-        m: &Material,
-        (x, y): (&[f64], &[f64]),
-    ) -> Result<&mut TangentialSolver, ContactError> {
+    /// The solver of an `mx × my` grid of `(dx, dy)` elements of material `m`, centred at `x`, `y`,
+    /// with its last tractions.
+    fn get(&mut self, grid: &Grid, m: &Material, (x, y): (&[f64], &[f64])) -> Result<&mut Kept, ContactError> {
         let key = (grid.mx, grid.my);
-        let k = match self.solvers.iter().position(|(k, _)| *k == key) {
+        let k = match self.solvers.iter().position(|(k, _, _)| *k == key) {
             Some(k) => {
                 self.solvers[k].1.set_centres(x, y)?;
                 k
@@ -45,11 +44,11 @@ impl ExactCache {
                 if self.solvers.len() == KEPT {
                     self.solvers.remove(0);
                 }
-                self.solvers.push((key, TangentialSolver::new(&k0, &ks, x, y)?));
+                self.solvers.push((key, TangentialSolver::new(&k0, &ks, x, y)?, None));
                 self.solvers.len() - 1
             }
         };
-        Ok(&mut self.solvers[k].1)
+        Ok(&mut self.solvers[k])
     }
 }
 
@@ -61,7 +60,8 @@ fn patch_grid(p: &NormalPatch) -> Grid {
 }
 
 /// The exact theory's forces on patch `p` at Coulomb's `mu` (CONTACT's signs, the side's frame),
-/// as the `contact` model gives them on the patch's scene.
+/// as the `contact` model gives them on the patch's scene (to its tolerance: the solve starts
+/// from the last tractions found on a grid of the patch's size).
 pub fn patch_forces(
     p: &NormalPatch,
     mu: f64,
@@ -71,14 +71,16 @@ pub fn patch_forces(
     let grid = patch_grid(p);
     let pn = field_in_grid_order(&grid, &p.pn_mpa);
     let (x, y) = grid.centres();
-    let solver = cache.get(&grid, &case.material, (&x, &y))?;
+    let (_, solver, last) = cache.get(&grid, &case.material, (&x, &y))?;
     solver.set_pressure(&pn)?;
     let c = &p.creepages;
     let options = ContactSolverOptions::default();
     let mut params = TangentialParams::new(mu, c.cksi, c.ceta, c.cphi_per_mm, grid.dx_mm);
     params.tol = options.tolerance;
     params.max_iter = options.max_iterations;
-    let r: StepResult = solver.steady(&params, None)?;
+    let start = last.as_ref().map(|(px, py)| (px.as_slice(), py.as_slice()));
+    let r: StepResult = solver.steady(&params, start)?;
+    *last = Some((r.px.clone(), r.py.clone()));
     let pn_sum: f64 = pn.iter().sum();
     let (fx_over_fn, fy_over_fn) = (r.px.iter().sum::<f64>() / pn_sum, r.py.iter().sum::<f64>() / pn_sum);
     let mz_nmm = moment_sum(&grid, &r.px, &r.py) * grid.element_area_mm2();
