@@ -122,13 +122,15 @@ impl NormalContact {
 /// The normal contact of `case`; with a prescribed force, the height where the normal forces'
 /// vertical parts sum to `fz_normal_n` (the vertical force less the tangential forces' part).
 pub fn normal_contact(case: &WheelRailCase, fz_normal_n: Option<f64>) -> Result<NormalContact, WheelRailError> {
-    normal_contact_with(case, fz_normal_n, &mut NormalCache::default())
+    normal_contact_with(case, fz_normal_n, vertical::FORCE_TOL, &mut NormalCache::default())
 }
 
-/// [`normal_contact`] with the normal solvers of earlier calls on the same case kept in `solvers`.
+/// [`normal_contact`] with the force found within `tol` (relative) and the normal solvers of
+/// earlier calls on the same case kept in `cache`.
 pub fn normal_contact_with(
     case: &WheelRailCase,
     fz_normal_n: Option<f64>,
+    tol: f64,
     cache: &mut NormalCache,
 ) -> Result<NormalContact, WheelRailError> {
     let rail = PlacedRail::place(case.rail, &case.track)?;
@@ -150,7 +152,7 @@ pub fn normal_contact_with(
             let target = target.unwrap_or(fz_n);
             // The search ends on the height it evaluated last: its patches are the answer.
             let mut last: Option<(f64, Vec<NormalPatch>)> = None;
-            let (z, _, evaluations) = vertical::solve(z_touch_mm, target, *heights, |z| {
+            let (z, _, evaluations) = vertical::solve(z_touch_mm, target, tol, *heights, |z| {
                 let patches = at(z)?;
                 let fz = patches.iter().map(|p| p.fn_n * p.geometry.frame.delta_rad.cos()).sum();
                 last = Some((z, patches));
