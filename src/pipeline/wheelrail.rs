@@ -4,12 +4,15 @@
 //! to the totals on the rail. With FZ prescribed the height is found with the exact theory's
 //! tangential forces included (CONTACT's N = 1 solves the full problem at each height): the
 //! normal forces' vertical parts must carry FZ less the tangential forces' vertical parts, found
-//! by rounds of a height search for the normal share FZ / (1 + Fz_tangential / Fz_normal).
+//! by rounds of a height search for the normal share ([`normal_share`]: a secant on the tangential
+//! forces' vertical part through the last two rounds, FZ / (1 + Fz_tangential / Fz_normal) at
+//! first), the first search loose.
 //!
 //! Signs and frames are CONTACT's module-1 output's: forces on the rail; each patch's FX along the
 //! track, FS in its tangent plane (lateral), FN along its normal; totals in track and wheelset
 //! coordinates, y to the right on both sides.
 
+use super::wheelrail_exact::{self, ExactCache};
 use super::{resolve, run};
 use crate::error::{Error, InputError};
 use crate::history::sample_loop::{run_with_fields, Field};
@@ -18,6 +21,7 @@ use crate::problem::Problem;
 use crate::scene::Scene;
 use crate::solvers;
 use crate::wheelrail::friction::Friction;
+use crate::wheelrail::vertical::FORCE_TOL;
 use crate::wheelrail::{self, NormalContact, NormalPatch, Vertical, WheelRailCase};
 use nalgebra::{Rotation3, Vector3};
 use std::path::Path;
@@ -26,6 +30,12 @@ use std::path::Path;
 pub const EXACT: &str = "contact";
 /// Rounds of the vertical balance with the tangential forces (each a height search).
 const VERTICAL_ROUNDS: usize = 20;
+/// The first height search's relative force tolerance where rounds with the tangential forces
+/// follow (each later search is made to [`FORCE_TOL`]).
+const FIRST_SEARCH_TOL: f64 = 1e-6;
+/// The least change of the normal forces between two rounds, relative to FZ, for a secant of the
+/// tangential ones (below it the tangential solves' tolerance would dominate their difference).
+const SECANT_SPAN: f64 = 1e-6;
 
 /// One model's forces on one patch, CONTACT's signs (on the rail), the side's frame.
 #[derive(Debug, Clone, PartialEq)]
@@ -70,7 +80,12 @@ pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Res
         ))
     };
     let mut cache = wheelrail::NormalCache::default();
-    let mut normal = wheelrail::normal_contact_with(case, None, &mut cache).map_err(geometry)?;
+    let mut exact_cache = ExactCache::default();
+    // With the tangential forces to balance, the first height search need not be tight: the
+    // rounds move its target by their vertical part.
+    let balanced = matches!(case.vertical, Vertical::Force { .. }) && !mu.frictionless;
+    let first_tol = if balanced { FIRST_SEARCH_TOL } else { FORCE_TOL };
+    let mut normal = wheelrail::normal_contact_with(case, None, first_tol, &mut cache).map_err(geometry)?;
     // The exact theory's forces on the patches of `normal`, where the balance has them.
     let mut exact_now = None;
     if mu.frictionless {
@@ -80,8 +95,10 @@ pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Res
         return Ok(CaseResult { normal, models: out });
     }
     if let Vertical::Force { fz_n } = case.vertical {
+        // The last round's normal and tangential vertical forces (the secant's other point).
+        let mut last: Option<(f64, f64)> = None;
         for _ in 0..VERTICAL_ROUNDS {
-            let exact = patch_forces(&normal, EXACT, mu, case)?;
+            let exact = exact_forces(&normal, mu, case, &mut exact_cache)?;
             let normal_z = normal.fz_normal_n();
             let tangential_z: f64 = normal
                 .patches
@@ -89,27 +106,43 @@ pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Res
                 .zip(&exact)
                 .map(|(p, f)| case.side.sign() * f.fs_n * p.geometry.frame.delta_rad.sin())
                 .sum();
-            if (normal_z + tangential_z - fz_n).abs() <= 2.0 * wheelrail::vertical::FORCE_TOL * fz_n || normal_z <= 0.0
-            {
+            if (normal_z + tangential_z - fz_n).abs() <= 2.0 * FORCE_TOL * fz_n || normal_z <= 0.0 {
                 exact_now = Some(exact);
                 break;
             }
-            // The tangential forces grow with the normal ones (in full slip in proportion): the
-            // normal forces' share of FZ is FZ / (1 + tangential / normal).
-            let target = fz_n / (1.0 + tangential_z / normal_z);
-            normal = wheelrail::normal_contact_with(case, Some(target), &mut cache).map_err(geometry)?;
+            let target = normal_share(fz_n, (normal_z, tangential_z), last.take());
+            last = Some((normal_z, tangential_z));
+            normal = wheelrail::normal_contact_with(case, Some(target), FORCE_TOL, &mut cache).map_err(geometry)?;
         }
     }
     let mut out = Vec::new();
     for model in models {
         let forces = match exact_now.take_if(|_| model == EXACT) {
             Some(exact) => exact,
+            None if model == EXACT => exact_forces(&normal, mu, case, &mut exact_cache)?,
             None => patch_forces(&normal, model, mu, case)?,
         };
         let totals = totals(&normal, &forces, case);
         out.push((model.clone(), forces, totals));
     }
     Ok(CaseResult { normal, models: out })
+}
+
+/// The normal forces' vertical share of `fz_n` for the next round from this round's normal and
+/// tangential vertical forces `(n, t)` and the last round's: the tangential forces grow with the
+/// normal ones, so N + T(N) = FZ is solved for N by the secant of T through the two rounds
+/// (exact where T is linear in N), or, from one round or two too close for a secant, with T in
+/// proportion to N (full slip): N = FZ / (1 + T / N).
+fn normal_share(fz_n: f64, (n, t): (f64, f64), last: Option<(f64, f64)>) -> f64 {
+    let proportional = fz_n / (1.0 + t / n);
+    let Some((n0, t0)) = last.filter(|(n0, _)| (n - n0).abs() > SECANT_SPAN * fz_n) else { return proportional };
+    let slope = (t - t0) / (n - n0);
+    let share = (fz_n - t + slope * n) / (1.0 + slope);
+    if share.is_finite() && share > 0.0 && slope > -0.5 {
+        share
+    } else {
+        proportional
+    }
 }
 
 /// A patch in frictionless compression (CONTACT's T = 0): its normal force only, every element in
@@ -120,13 +153,33 @@ fn frictionless(p: &NormalPatch) -> PatchForces {
 }
 
 /// One model's forces on every patch.
-fn patch_forces(
+pub(crate) fn patch_forces(
     normal: &NormalContact,
     model: &str,
     mu: &Friction,
     case: &WheelRailCase,
 ) -> Result<Vec<PatchForces>, Error> {
     normal.patches.iter().map(|p| patch_solve(p, model, mu.of_patch(p, case), case)).collect()
+}
+
+/// The exact theory's forces on every patch, solved on the patches directly
+/// ([`wheelrail_exact`]: the patches' pressure, kernels kept per grid size); through each patch's
+/// scene where the bodies are dissimilar (the coupled solver's outer iteration).
+fn exact_forces(
+    normal: &NormalContact,
+    mu: &Friction,
+    case: &WheelRailCase,
+    cache: &mut ExactCache,
+) -> Result<Vec<PatchForces>, Error> {
+    if case.material.coupled() {
+        return patch_forces(normal, EXACT, mu, case);
+    }
+    let failed = |e| Error::Solve { scene: "patch".into(), solver: EXACT.into(), source: Box::new(e) };
+    normal
+        .patches
+        .iter()
+        .map(|p| wheelrail_exact::patch_forces(p, mu.of_patch(p, case), case, cache).map_err(failed))
+        .collect()
 }
 
 /// The module-3 scene text of a patch with `contact` (its geometry's keys) and `grid` tables.
@@ -240,4 +293,22 @@ fn totals(normal: &NormalContact, forces: &[PatchForces], case: &WheelRailCase) 
     let rotation = Rotation3::from_axis_angle(&Vector3::x_axis(), pose.roll_rad)
         * Rotation3::from_axis_angle(&Vector3::z_axis(), pose.yaw_rad);
     Totals { track_n: side(f), wheelset_n: side(rotation.inverse() * f) }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::normal_share;
+
+    #[test]
+    fn the_normal_share_is_exact_for_tangential_forces_linear_in_the_normal_ones() {
+        // T(N) = −0.004 N − 10: N + T(N) = FZ at N = (FZ + 10) / 0.996.
+        let t = |n: f64| -0.004 * n - 10.0;
+        let fz = 10000.0;
+        let share = normal_share(fz, (10040.0, t(10040.0)), Some((10000.0, t(10000.0))));
+        assert!((share - (fz + 10.0) / 0.996).abs() < 1e-9 * fz, "{share}");
+        // One round, or two too close for a secant: T in proportion to N.
+        let proportional = fz / (1.0 + t(10040.0) / 10040.0);
+        assert_eq!(normal_share(fz, (10040.0, t(10040.0)), None), proportional);
+        assert_eq!(normal_share(fz, (10040.0, t(10040.0)), Some((10040.0 - 1e-4, t(10040.0)))), proportional);
+    }
 }

@@ -122,13 +122,15 @@ impl NormalContact {
 /// The normal contact of `case`; with a prescribed force, the height where the normal forces'
 /// vertical parts sum to `fz_normal_n` (the vertical force less the tangential forces' part).
 pub fn normal_contact(case: &WheelRailCase, fz_normal_n: Option<f64>) -> Result<NormalContact, WheelRailError> {
-    normal_contact_with(case, fz_normal_n, &mut NormalCache::default())
+    normal_contact_with(case, fz_normal_n, vertical::FORCE_TOL, &mut NormalCache::default())
 }
 
-/// [`normal_contact`] with the normal solvers of earlier calls on the same case kept in `solvers`.
+/// [`normal_contact`] with the force found within `tol` (relative) and the normal solvers of
+/// earlier calls on the same case kept in `cache`.
 pub fn normal_contact_with(
     case: &WheelRailCase,
     fz_normal_n: Option<f64>,
+    tol: f64,
     cache: &mut NormalCache,
 ) -> Result<NormalContact, WheelRailError> {
     let rail = PlacedRail::place(case.rail, &case.track)?;
@@ -150,7 +152,7 @@ pub fn normal_contact_with(
             let target = target.unwrap_or(fz_n);
             // The search ends on the height it evaluated last: its patches are the answer.
             let mut last: Option<(f64, Vec<NormalPatch>)> = None;
-            let (z, _, evaluations) = vertical::solve(z_touch_mm, target, *heights, |z| {
+            let (z, _, evaluations) = vertical::solve(z_touch_mm, target, tol, *heights, |z| {
                 let patches = at(z)?;
                 let fz = patches.iter().map(|p| p.fn_n * p.geometry.frame.delta_rad.cos()).sum();
                 last = Some((z, patches));
@@ -183,10 +185,11 @@ pub struct NormalCache {
     heights: Option<vertical::Evaluations>,
 }
 
-/// The normal solvers by grid size.
+/// The normal solvers by grid size, each with the last pressure it found (the start of the next
+/// solve on that size: the same patch at a nearby height).
 #[derive(Default)]
 struct NormalSolvers {
-    solvers: Vec<((usize, usize), NormalSolver)>,
+    solvers: Vec<((usize, usize), NormalSolver, Vec<f64>)>,
 }
 
 /// Grids kept per case (the oldest dropped first).
@@ -194,20 +197,21 @@ const KEPT_SOLVERS: usize = 8;
 
 impl NormalSolvers {
     /// The solver of grid `g` with material `m`.
-    fn get(&mut self, g: &patch::PatchGrid, m: &Material) -> Result<&mut NormalSolver, ContactError> {
+    fn get(&mut self, g: &patch::PatchGrid, m: &Material) -> Result<(&mut NormalSolver, &mut Vec<f64>), ContactError> {
         let key = (g.mx, g.ms);
-        let k = match self.solvers.iter().position(|(k, _)| *k == key) {
+        let k = match self.solvers.iter().position(|(k, _, _)| *k == key) {
             Some(k) => k,
             None => {
                 let kernel = Kernel::new(g.mx, g.ms, g.dx_mm, g.ds_mm, m.g_mpa, m.poisson, 0.0)?;
                 if self.solvers.len() == KEPT_SOLVERS {
                     self.solvers.remove(0);
                 }
-                self.solvers.push((key, NormalSolver::new(&kernel)?));
+                self.solvers.push((key, NormalSolver::new(&kernel)?, Vec::new()));
                 self.solvers.len() - 1
             }
         };
-        Ok(&mut self.solvers[k].1)
+        let (_, solver, last) = &mut self.solvers[k];
+        Ok((solver, last))
     }
 }
 
@@ -270,10 +274,12 @@ fn patches_at(
 
 /// The normal problem of one patch with the geometry's own approach (the interpenetration).
 fn solve_normal(g: &PatchGeometry, m: &Material, solvers: &mut NormalSolvers) -> Result<(f64, Vec<f64>), ContactError> {
-    let solver = solvers.get(&g.grid, m)?;
+    let (solver, last) = solvers.get(&g.grid, m)?;
     solver.set_blend(g.blend.clone())?;
-    let sol = solver.solve_approach(&g.h_mm, 0.0, &NormalParams::default())?;
+    let start = Some(last.as_slice()).filter(|l| !l.is_empty());
+    let sol = solver.solve_approach_from(&g.h_mm, 0.0, &NormalParams::default(), start)?;
     let fn_n = sol.pn_mpa.iter().sum::<f64>() * g.grid.dx_mm * g.grid.ds_mm;
+    last.clone_from(&sol.pn_mpa);
     Ok((fn_n, sol.pn_mpa))
 }
 

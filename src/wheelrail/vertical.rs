@@ -8,16 +8,20 @@ use super::WheelRailError;
 /// Relative force tolerance of the height iteration.
 pub const FORCE_TOL: f64 = 1e-9;
 const MAX_ITER: usize = 40;
+/// The first trial height below first touch [mm]: a small patch (a cheap normal problem) whose
+/// force the secant on FN^(2/3) extrapolates.
+const FIRST_STEP_MM: f64 = 0.01;
 
 /// Two evaluations of the force: `(z [mm], force [N])`, the later second.
 pub type Evaluations = [(f64, f64); 2];
 
-/// The height z where `force(z)` (≥ 0, increasing in z) equals `target_n`, from the height of
-/// first touch `z_touch`, or from two earlier evaluations `start` (a search for a nearby target);
-/// returns the height, the number of evaluations and the last two.
+/// The height z where `force(z)` (≥ 0, increasing in z) equals `target_n` within `tol` (relative),
+/// from the height of first touch `z_touch`, or from two earlier evaluations `start` (a search for
+/// a nearby target); returns the height, the number of evaluations and the last two.
 pub fn solve<F>(
     z_touch_mm: f64,
     target_n: f64,
+    tol: f64,
     start: Option<Evaluations>,
     mut force: F,
 ) -> Result<(f64, usize, Evaluations), WheelRailError>
@@ -29,7 +33,7 @@ where
     let (mut z0, mut g0, mut z1, mut g1, mut f1) = match start {
         Some([(za, fa), (zb, fb)]) if g(fa) != g(fb) => (za, g(fa), zb, g(fb), fb),
         _ => {
-            let z1 = z_touch_mm + 0.05;
+            let z1 = z_touch_mm + FIRST_STEP_MM;
             let f1 = force(z1)?;
             evaluations += 1;
             (z_touch_mm, g(0.0), z1, g(f1), f1)
@@ -41,7 +45,7 @@ where
         let f2 = force(z2)?;
         evaluations += 1;
         (z0, g0, f0, z1, g1, f1) = (z1, g1, f1, z2, g(f2), f2);
-        if (f2 - target_n).abs() <= FORCE_TOL * target_n {
+        if (f2 - target_n).abs() <= tol * target_n {
             return Ok((z1, evaluations, [(z0, f0), (z1, f1)]));
         }
     }
@@ -56,7 +60,7 @@ mod tests {
     fn finds_the_height_of_a_hertzian_law() {
         // F = k (z − z0)^1.5: the secant on F^(2/3) is exact after one step.
         let (k, z_touch) = (2.0e6, 0.18);
-        let (z, _, _) = solve(z_touch, 10000.0, None, |z| Ok(k * (z - z_touch).max(0.0).powf(1.5))).unwrap();
+        let (z, _, _) = solve(z_touch, 10000.0, FORCE_TOL, None, |z| Ok(k * (z - z_touch).max(0.0).powf(1.5))).unwrap();
         assert!((z - (z_touch + (10000.0f64 / k).powf(2.0 / 3.0))).abs() < 1e-12);
     }
 
@@ -64,9 +68,9 @@ mod tests {
     fn a_nearby_target_from_earlier_evaluations_takes_one_step_on_a_hertzian_law() {
         let (k, z_touch) = (2.0e6, 0.18);
         let law = |z: f64| k * (z - z_touch).max(0.0).powf(1.5);
-        let (_, _, last) = solve(z_touch, 10000.0, None, |z| Ok(law(z))).unwrap();
+        let (_, _, last) = solve(z_touch, 10000.0, FORCE_TOL, None, |z| Ok(law(z))).unwrap();
         let mut calls = 0;
-        let (z, n, _) = solve(z_touch, 9990.0, Some(last), |z| {
+        let (z, n, _) = solve(z_touch, 9990.0, FORCE_TOL, Some(last), |z| {
             calls += 1;
             Ok(law(z))
         })

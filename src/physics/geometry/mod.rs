@@ -138,7 +138,7 @@ impl GeometrySpec {
 
 /// A field in CONTACT's element order (ix along CONTACT's x) in this grid's flat order
 /// (i along the grid's x = −x_C: i = mx − ix).
-fn field_in_grid_order(grid: &Grid, h_contact: &[f64]) -> Vec<f64> {
+pub fn field_in_grid_order(grid: &Grid, h_contact: &[f64]) -> Vec<f64> {
     contact_order(grid).into_iter().map(|k| h_contact[k]).collect()
 }
 

@@ -17,6 +17,7 @@
 //! components are CONTACT's flipped ones (the references' sign convention): of the formulas above,
 //! written in CONTACT's frame, only `Axy` is odd in X, so in grid coordinates it changes sign.
 
+use super::table;
 use super::ContactError;
 
 /// Antiderivative of `X^2/r^3` (d^2/dXdY): `Y ln(X + r)`, written as `Y asinh(X/|Y|)`; the dropped
@@ -293,27 +294,24 @@ impl Kernel {
         if let Some(&value) = [shift_mm, offset_mm[0], offset_mm[1]].iter().find(|v| !v.is_finite()) {
             return Err(ContactError::OutOfRange { name: "kernel shift [mm]", value, requirement: "finite" });
         }
-        let nkx = 2 * mx - 1;
-        let nky = 2 * my - 1;
-        let n = nkx * nky;
-        let mut zz = Vec::with_capacity(n);
-        let mut xx = Vec::with_capacity(n);
-        let mut yy = Vec::with_capacity(n);
-        let mut xy = Vec::with_capacity(n);
         let c = 1.0 / (std::f64::consts::PI * g_mpa);
-        for kj in 0..nky {
-            let dj = kj as f64 - (my - 1) as f64;
-            let y = dj * dy_mm - offset_mm[1];
-            for ki in 0..nkx {
-                let di = ki as f64 - (mx - 1) as f64;
-                let x = di * dx_mm - offset_mm[0];
-                let r = basis.integrals(x, y, dx_mm, dy_mm);
-                zz.push(c * (1.0 - nu) * r.one_over_r);
-                xx.push(c * (r.xx + (1.0 - nu) * r.yy));
-                yy.push(c * (r.yy + (1.0 - nu) * r.xx));
-                xy.push(-c * nu * r.xy);
-            }
-        }
+        let at = |di: isize, dj: isize| {
+            let (x, y) = (di as f64 * dx_mm - offset_mm[0], dj as f64 * dy_mm - offset_mm[1]);
+            let r = basis.integrals(x, y, dx_mm, dy_mm);
+            [
+                c * (1.0 - nu) * r.one_over_r,
+                c * (r.xx + (1.0 - nu) * r.yy),
+                c * (r.yy + (1.0 - nu) * r.xx),
+                -c * nu * r.xy,
+            ]
+        };
+        let key = table::Key {
+            size_mm: [dx_mm.to_bits(), dy_mm.to_bits()],
+            material: [g_mpa.to_bits(), nu.to_bits()],
+            offset_mm: [offset_mm[0].to_bits(), offset_mm[1].to_bits()],
+            basis: basis as u8,
+        };
+        let [zz, xx, yy, xy] = table::kernel_parts(mx, my, key, at);
         if zz.iter().chain(xx.iter()).chain(yy.iter()).chain(xy.iter()).any(|v| !v.is_finite()) {
             return Err(ContactError::NonFinite("influence coefficients"));
         }

@@ -145,6 +145,20 @@ impl NormalSolver {
         approach_mm: f64,
         params: &NormalParams,
     ) -> Result<NormalSolution, ContactError> {
+        self.solve_approach_from(h_mm, approach_mm, params, None)
+    }
+
+    /// [`NormalSolver::solve_approach`] started from the pressure `start` [MPa] (a nearby
+    /// problem's solution: the same grid at a nearby approach) where it is given and loads
+    /// somewhere the contact may be, scaled by the best factor along it; the same solution to the
+    /// tolerance, in fewer iterations.
+    pub fn solve_approach_from(
+        &mut self,
+        h_mm: &[f64],
+        approach_mm: f64,
+        params: &NormalParams,
+        start: Option<&[f64]>,
+    ) -> Result<NormalSolution, ContactError> {
         self.check(h_mm, params)?;
         if !approach_mm.is_finite() {
             return Err(ContactError::OutOfRange { name: "approach [mm]", value: approach_mm, requirement: "finite" });
@@ -152,19 +166,32 @@ impl NormalSolver {
         let gap: Vec<f64> = h_mm.iter().map(|h| h - approach_mm).collect();
         let overlap: Vec<f64> =
             gap.iter().enumerate().map(|(k, g)| if self.allows(k) { (-g).max(0.0) } else { 0.0 }).collect();
+        let given = start.filter(|s| s.len() == self.n).map(|s| -> Vec<f64> {
+            (0..self.n).map(|k| if self.allows(k) && s[k].is_finite() { s[k].max(0.0) } else { 0.0 }).collect()
+        });
+        let guess: Vec<f64> = match given {
+            Some(g) if Self::loads(&g, &overlap) => g,
+            _ => overlap,
+        };
         let mut u = vec![0.0; self.n];
-        matvec(&mut self.conv, self.blend.as_ref(), &overlap, &mut u)?;
-        // The factor c minimising ½ pᵀAp + pᵀ(h − approach) along p = c · overlap.
-        let (num, den) = overlap.iter().zip(&u).fold((0.0, 0.0), |(n, d), (o, u)| (n + o * o, d + o * u));
+        matvec(&mut self.conv, self.blend.as_ref(), &guess, &mut u)?;
+        // The factor c minimising ½ pᵀAp + pᵀ(h − approach) along p = c · guess.
+        let num = -guess.iter().zip(&gap).map(|(p, g)| p * g).sum::<f64>();
+        let den = guess.iter().zip(&u).map(|(p, u)| p * u).sum::<f64>();
         if num <= 0.0 || den <= 0.0 {
             return Err(ContactError::NoContact);
         }
-        let start: Vec<f64> = overlap.iter().map(|o| o * num / den).collect();
+        let start: Vec<f64> = guess.iter().map(|o| o * num / den).collect();
         let (p, iterations, residual, converged) = self.iterate(&gap, start, None, params)?;
         if p.iter().any(|v| !v.is_finite()) {
             return Err(ContactError::NonFinite("normal pressure"));
         }
         Ok(NormalSolution { pn_mpa: p, approach_mm, iterations, residual, converged })
+    }
+
+    /// Whether the pressure `p` loads an element of the overlap (a start the CG can go on from).
+    fn loads(p: &[f64], overlap: &[f64]) -> bool {
+        p.iter().zip(overlap).any(|(p, o)| *p > 0.0 && *o > 0.0)
     }
 
     /// The inputs every normal solve checks.
@@ -369,6 +396,29 @@ mod tests {
         let by_force = solver.solve(&h, fn_n, &NormalParams::default()).unwrap();
         let hertz = 4.0 / 3.0 * g / (1.0 - nu) * r_mm.sqrt() * delta_mm.powf(1.5);
         (fn_n, hertz, by_force.approach_mm)
+    }
+
+    #[test]
+    fn a_start_from_a_nearby_approach_gives_the_same_pressure_in_fewer_iterations() {
+        let (g, nu, r_mm, m) = (82000.0, 0.28, 300.0f64, 41);
+        let half_mm = 1.25 * (r_mm * 0.0101).sqrt();
+        let grid = crate::physics::Grid::new(m, m, half_mm, half_mm);
+        let (x, y) = grid.centres();
+        let h: Vec<f64> = x.iter().zip(&y).map(|(x, y)| (x * x + y * y) / (2.0 * r_mm)).collect();
+        let k = Kernel::new(m, m, grid.dx_mm, grid.dy_mm, g, nu, 0.0).unwrap();
+        let mut solver = NormalSolver::new(&k).unwrap();
+        let params = NormalParams::default();
+        let near = solver.solve_approach(&h, 0.01, &params).unwrap();
+        let cold = solver.solve_approach(&h, 0.0101, &params).unwrap();
+        let warm = solver.solve_approach_from(&h, 0.0101, &params, Some(&near.pn_mpa)).unwrap();
+        assert!(cold.converged && warm.converged);
+        let pmax = cold.pn_mpa.iter().fold(0.0f64, |a, &b| a.max(b));
+        let diff = cold.pn_mpa.iter().zip(&warm.pn_mpa).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+        assert!(diff < 1e-8 * pmax, "{diff} MPa of {pmax}");
+        assert!(warm.iterations < cold.iterations, "{} vs {}", warm.iterations, cold.iterations);
+        // A start of the wrong size or loading nowhere is the cold start.
+        let wrong = solver.solve_approach_from(&h, 0.0101, &params, Some(&[1.0; 3])).unwrap();
+        assert_eq!(wrong, cold);
     }
 
     #[test]

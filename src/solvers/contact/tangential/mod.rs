@@ -573,6 +573,17 @@ impl TangentialSolver {
         })
     }
 
+    /// Moves the grid to new element centres `x_mm`, `y_mm` (same size and kernels: a patch of
+    /// the same size elsewhere); the next [`TangentialSolver::set_pressure`] sets its load.
+    pub fn set_centres(&mut self, x_mm: &[f64], y_mm: &[f64]) -> Result<(), ContactError> {
+        let n = self.layout.n();
+        check_grid_array("x", x_mm, n)?;
+        check_grid_array("y", y_mm, n)?;
+        self.layout.x_mm.copy_from_slice(x_mm);
+        self.layout.y_mm.copy_from_slice(y_mm);
+        Ok(())
+    }
+
     /// Sets the load: pressure per element [MPa] (contact = `pn > 0`). Forgets everything of the
     /// previous load (work arrays, steady warm start), so that the next solve is the one a newly
     /// built solver would make.

@@ -1,0 +1,135 @@
+//! The exact theory on a wheel–rail patch without a module-3 scene: the patch's solved pressure
+//! handed to the tangential solver (Kalker's steady rolling, `solvers::contact::tangential`) on
+//! the grid the scene would make (CONTACT's x mirrored, [`field_in_grid_order`]), its kernels and
+//! FFT plans kept per grid size for the case's trial heights and rounds. The same solve as the
+//! `contact` model's on the patch's scene: one steady point, the scene's default controls
+//! (`[contact_solver]`), rolling along +x with dq = dx, Coulomb's μ.
+
+use super::wheelrail::PatchForces;
+use crate::physics::geometry::field_in_grid_order;
+use crate::physics::halfspace::influence::Kernel;
+use crate::physics::{moment_sum, Grid, Material};
+use crate::scene::ContactSolverOptions;
+use crate::solvers::contact::tangential::{StepResult, TangentialParams, TangentialSolver};
+use crate::solvers::contact::ContactError;
+use crate::wheelrail::{NormalPatch, WheelRailCase};
+
+/// Grids kept per case (the oldest dropped first).
+const KEPT: usize = 8;
+
+/// A solver and its last tractions `(px, py)` [MPa] (none before its first solve).
+type Kept = ((usize, usize), TangentialSolver, Option<(Vec<f64>, Vec<f64>)>);
+
+/// The tangential solvers of one case by grid size `(mx, ms)`, with each one's last solution
+/// (the warm start of the next solve on that size: the same patch at a nearby height).
+#[derive(Default)]
+pub struct ExactCache {
+    solvers: Vec<Kept>,
+}
+
+impl ExactCache {
+    /// The solver of an `mx × my` grid of `(dx, dy)` elements of material `m`, centred at `x`, `y`,
+    /// with its last tractions.
+    fn get(&mut self, grid: &Grid, m: &Material, (x, y): (&[f64], &[f64])) -> Result<&mut Kept, ContactError> {
+        let key = (grid.mx, grid.my);
+        let k = match self.solvers.iter().position(|(k, _, _)| *k == key) {
+            Some(k) => {
+                self.solvers[k].1.set_centres(x, y)?;
+                k
+            }
+            None => {
+                let (size, material) = ((grid.dx_mm, grid.dy_mm), (m.g_mpa, m.poisson));
+                let k0 = Kernel::new(grid.mx, grid.my, size.0, size.1, material.0, material.1, 0.0)?;
+                let ks = Kernel::new(grid.mx, grid.my, size.0, size.1, material.0, material.1, grid.dx_mm)?;
+                if self.solvers.len() == KEPT {
+                    self.solvers.remove(0);
+                }
+                self.solvers.push((key, TangentialSolver::new(&k0, &ks, x, y)?, None));
+                self.solvers.len() - 1
+            }
+        };
+        Ok(&mut self.solvers[k])
+    }
+}
+
+/// The grid of the patch's module-3 scene (`[grid]` edges, CONTACT's x mirrored).
+fn patch_grid(p: &NormalPatch) -> Grid {
+    let g = &p.geometry.grid;
+    let (x0, x1) = (g.x0_mm, g.x0_mm + g.dx_mm * g.mx as f64);
+    Grid::from_edges(g.mx, g.ms, [-x1, -x0], [g.s0_mm, g.s0_mm + g.ds_mm * g.ms as f64])
+}
+
+/// The exact theory's forces on patch `p` at Coulomb's `mu` (CONTACT's signs, the side's frame),
+/// as the `contact` model gives them on the patch's scene (to its tolerance: the solve starts
+/// from the last tractions found on a grid of the patch's size).
+pub fn patch_forces(
+    p: &NormalPatch,
+    mu: f64,
+    case: &WheelRailCase,
+    cache: &mut ExactCache,
+) -> Result<PatchForces, ContactError> {
+    let grid = patch_grid(p);
+    let pn = field_in_grid_order(&grid, &p.pn_mpa);
+    let (x, y) = grid.centres();
+    let (_, solver, last) = cache.get(&grid, &case.material, (&x, &y))?;
+    solver.set_pressure(&pn)?;
+    let c = &p.creepages;
+    let options = ContactSolverOptions::default();
+    let mut params = TangentialParams::new(mu, c.cksi, c.ceta, c.cphi_per_mm, grid.dx_mm);
+    params.tol = options.tolerance;
+    params.max_iter = options.max_iterations;
+    let start = last.as_ref().map(|(px, py)| (px.as_slice(), py.as_slice()));
+    let r: StepResult = solver.steady(&params, start)?;
+    *last = Some((r.px.clone(), r.py.clone()));
+    let pn_sum: f64 = pn.iter().sum();
+    let (fx_over_fn, fy_over_fn) = (r.px.iter().sum::<f64>() / pn_sum, r.py.iter().sum::<f64>() / pn_sum);
+    let mz_nmm = moment_sum(&grid, &r.px, &r.py) * grid.element_area_mm2();
+    let m = case.side.sign();
+    Ok(PatchForces {
+        fn_n: p.fn_n,
+        fx_n: -fx_over_fn * p.fn_n,
+        fs_n: -m * fy_over_fn * p.fn_n,
+        mn_nmm: -m * mz_nmm,
+        n_adhesion: Some(r.n_adhesion),
+        n_slip: Some(r.n_slip),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pipeline::wheelrail::{patch_forces as through_scenes, EXACT};
+    use crate::pipeline::wheelrail_scene::{case_of, prepare};
+    use crate::problem::material_of_spec;
+    use crate::scene::wheelrail::WheelRailScene;
+    use crate::wheelrail::friction::Friction;
+    use std::path::Path;
+
+    #[test]
+    fn the_direct_solve_gives_the_contact_models_forces_on_the_patches_scenes() {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/wheelrail/mbench_a22_right.toml");
+        let text = std::fs::read_to_string(&path).unwrap();
+        let scene = WheelRailScene::from_toml(&text, path.parent().unwrap()).unwrap();
+        let (rail, wheel, _) = prepare(&scene).unwrap();
+        let material = material_of_spec(&scene.material).unwrap();
+        let mut cache = ExactCache::default();
+        // Case 11: two patches (tread and flange), grids of two sizes; case 12 reuses them.
+        for number in [11, 12] {
+            let row = scene.cases.iter().find(|r| r.contact_case == number).unwrap();
+            let case = case_of(&scene, row, &rail, &wheel, material);
+            let normal = crate::wheelrail::normal_contact(&case, None).unwrap();
+            let friction = Friction { mu: scene.mu, variation: None, frictionless: false };
+            let scenes = through_scenes(&normal, EXACT, &friction, &case).unwrap();
+            assert!(!normal.patches.is_empty());
+            for (p, want) in normal.patches.iter().zip(&scenes) {
+                let got = patch_forces(p, scene.mu, &case, &mut cache).unwrap();
+                // The scenes' pressure is the normal problem solved again by force (to 1e-10).
+                let close = |a: f64, b: f64, scale: f64| (a - b).abs() <= 1e-7 * scale;
+                assert!(close(got.fx_n, want.fx_n, p.fn_n), "case {number}: FX {} vs {}", got.fx_n, want.fx_n);
+                assert!(close(got.fs_n, want.fs_n, p.fn_n), "case {number}: FS {} vs {}", got.fs_n, want.fs_n);
+                assert!(close(got.mn_nmm, want.mn_nmm, p.fn_n), "case {number}: MN {} vs {}", got.mn_nmm, want.mn_nmm);
+                assert_eq!((got.fn_n, got.n_adhesion, got.n_slip), (want.fn_n, want.n_adhesion, want.n_slip));
+            }
+        }
+    }
+}
