@@ -78,7 +78,8 @@ pub fn compare_case(case: u64, ours: &CaseResult, model: usize, theirs: &WheelRa
     // stopping tolerance.
     if let (Pitch::Found { rad_s, per_fx_rad_s_n }, Some(v), Some(mu)) = (ours.pitch, &theirs.velocity, mu_of(theirs)) {
         let fz = totals.track_n[2];
-        let tolerance = vpitch_tolerance(mu, fz, per_fx_rad_s_n);
+        // No slope (found at the first estimate): no tolerance.
+        let tolerance = vpitch_tolerance(mu, fz, per_fx_rad_s_n).max(0.0);
         out.push(Deviation { tolerance, ..deviation(case, 0, "vpitch_rad_s", rad_s, &v.vpitch_rad_s) });
     }
     let m = ours.normal.side.sign();
