@@ -7,13 +7,16 @@
 //! the scene's A_SEP, D_SEP, D_COMB, the track, the rail profile with its options (PRFOPT = 2) and
 //! the rail's deviations, the wheelset's dimensions, the wheel profile, the position and velocities); each later case keeps all
 //! but its position and velocities (V111002, 0100321). C is the side (0 left, 1 right), N the
-//! vertical problem (1: FZ prescribed, 0: the height Z_WS); S_WS is the scene's track position
-//! where friction varies along the track (else 0), PITCH 0. Profile names are
+//! vertical problem (1: FZ prescribed, 0: the height Z_WS), F the longitudinal one (1: FX_WS in
+//! place of VPITCH, `[cases] longitudinal = "force"`); S_WS is the scene's track position where
+//! friction varies along the track (else 0), PITCH 0. Profile names are
 //! written relative to the deck's folder, where CONTACT looks for them.
 
 use crate::error::InputError;
 use crate::safety::relative::relative;
-use crate::scene::wheelrail::{CaseRow, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene};
+use crate::scene::wheelrail::{
+    CaseRow, LongitudinalSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
+};
 use crate::scene::MaterialSpec;
 use crate::wheelrail::profile::options::SCALE_MIN;
 use std::fmt::Write;
@@ -64,7 +67,7 @@ pub fn module1_input(s: &WheelRailScene, deck_dir: &Path) -> Result<String, Inpu
         if n == 0 {
             setup(s, (&rail, &wheel), &mut out);
         }
-        position_and_velocity(s.vertical, track_s_mm(s), row, &mut out);
+        position_and_velocity(s, row, &mut out);
     }
     out.push_str("\n 0 MODULE\n");
     Ok(out)
@@ -89,6 +92,7 @@ fn profile_name(p: &ProfileSpec, key: &str, deck_dir: &Path) -> Result<String, I
 fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
     let c = u8::from(s.side == SideSpec::Right);
     let n = u8::from(s.vertical == VerticalSpec::Force);
+    let f = u8::from(s.longitudinal == LongitudinalSpec::Force);
     let t = if s.frictionless { 0 } else { 3 };
     let v = match s.mu_variation.as_ref().map(|v| v.by) {
         None => 0,
@@ -96,7 +100,7 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
         Some(MuBy::TrackS { .. }) => 2,
     };
     let (ldcmze, hgiaowr) = if first { ("022033", "0000321") } else { ("111002", "0100321") };
-    let _ = writeln!(out, " {c}20{t}{n}00    C-P-B-T-N-F-S   CONFIG, PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS");
+    let _ = writeln!(out, " {c}20{t}{n}{f}0    C-P-B-T-N-F-S   CONFIG, PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS");
     let _ = writeln!(out, " {v}{ldcmze}    V-L-D-C-M-Z-E   VARFRC, FRCLAW, DISCNS, INFLCF, MATER,  ZTRACK, EWHEEL");
     let _ = writeln!(out, " {hgiaowr}    H-G-I-A-O-W-R     HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW,   RETURN");
 }
@@ -186,17 +190,20 @@ fn profile_line(name: &str, p: &ProfileSpec, what: &str, out: &mut String) {
     let _ = writeln!(out, "  0   {:?}       ERRHND, MAXOMIT", p.max_omit);
 }
 
-/// S_WS, Y_WS, FZ or Z_WS, ROLL, YAW, PITCH = 0; then VS, VY, VZ, VROLL, VYAW, VPITCH.
-fn position_and_velocity(vertical: VerticalSpec, s_mm: f64, r: &CaseRow, out: &mut String) {
+/// S_WS, Y_WS, FZ or Z_WS, ROLL, YAW, PITCH = 0; then VS, VY, VZ, VROLL, VYAW, VPITCH (or FX_WS
+/// with F = 1).
+fn position_and_velocity(s: &WheelRailScene, r: &CaseRow, out: &mut String) {
+    let (vertical, longitudinal, s_mm) = (s.vertical, s.longitudinal, track_s_mm(s));
     let third = if vertical == VerticalSpec::Force { "FZ" } else { "Z" };
     let _ = writeln!(
         out,
         "  {s_mm:?}   {:?}   {:?}   {:?}   {:?}   0.0      S, Y, {third}, ROLL, YAW, PITCH",
         r.y_mm, r.vertical, r.roll_rad, r.yaw_rad
     );
-    let [vs, vy, vz, vroll, vyaw, vpitch] = r.velocity;
+    let [vs, vy, vz, vroll, vyaw, sixth] = r.velocity;
+    let last = if longitudinal == LongitudinalSpec::Force { "FX_WS" } else { "VPITCH" };
     let _ = writeln!(
         out,
-        "  {vs:?}   {vy:?}   {vz:?}   {vroll:?}   {vyaw:?}   {vpitch:?}      VS, VY, VZ, VROLL, VYAW, VPITCH"
+        "  {vs:?}   {vy:?}   {vz:?}   {vroll:?}   {vyaw:?}   {sixth:?}      VS, VY, VZ, VROLL, VYAW, {last}"
     );
 }

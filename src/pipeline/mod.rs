@@ -313,5 +313,6 @@ pub fn run_with(mut problem: Problem, in_process: &[InProcess]) -> Result<SceneR
 
 pub mod wheelrail;
 pub mod wheelrail_exact;
+pub mod wheelrail_fx;
 pub mod wheelrail_scene;
 pub mod wheelrail_view;

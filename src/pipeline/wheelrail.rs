@@ -62,6 +62,28 @@ pub struct CaseResult {
     pub normal: NormalContact,
     /// `(model, forces per patch, totals)` in the order of the models asked for.
     pub models: Vec<(String, Vec<PatchForces>, Totals)>,
+    /// The pitch velocity the case was solved at.
+    pub pitch: Pitch,
+}
+
+/// The wheelset's pitch velocity VPITCH [rad/s]: given (CONTACT's F = 0), or found for a
+/// prescribed FX_WS (F = 1, [`super::wheelrail_fx`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Pitch {
+    Given(f64),
+    /// Found, with how far it moves per newton of FX(WS) [rad/s/N] (the secant's slope there).
+    Found {
+        rad_s: f64,
+        per_fx_rad_s_n: f64,
+    },
+}
+
+impl Pitch {
+    pub fn rad_s(self) -> f64 {
+        match self {
+            Pitch::Given(v) | Pitch::Found { rad_s: v, .. } => v,
+        }
+    }
 }
 
 /// Solve `case` with `models` (names of the registry) at Coulomb friction `mu`.
@@ -92,7 +114,7 @@ pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Res
         let forces: Vec<PatchForces> = normal.patches.iter().map(frictionless).collect();
         let totals = totals(&normal, &forces, case);
         let out = models.iter().map(|m| (m.clone(), forces.clone(), totals)).collect();
-        return Ok(CaseResult { normal, models: out });
+        return Ok(CaseResult { normal, models: out, pitch: Pitch::Given(case.velocity.vpitch_rad_s) });
     }
     if let Vertical::Force { fz_n } = case.vertical {
         // The last round's normal and tangential vertical forces (the secant's other point).
@@ -125,7 +147,19 @@ pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Res
         let totals = totals(&normal, &forces, case);
         out.push((model.clone(), forces, totals));
     }
-    Ok(CaseResult { normal, models: out })
+    Ok(CaseResult { normal, models: out, pitch: Pitch::Given(case.velocity.vpitch_rad_s) })
+}
+
+/// One model on the patches of `normal`: its forces per patch and their totals.
+pub(super) fn model_forces(
+    normal: &NormalContact,
+    model: &str,
+    mu: &Friction,
+    case: &WheelRailCase,
+) -> Result<(Vec<PatchForces>, Totals), Error> {
+    let forces = patch_forces(normal, model, mu, case)?;
+    let totals = totals(normal, &forces, case);
+    Ok((forces, totals))
 }
 
 /// The normal forces' vertical share of `fz_n` for the next round from this round's normal and

@@ -3,9 +3,12 @@
 //! parallel (each alone, so the results do not depend on the thread count).
 
 use super::wheelrail::{solve_with, CaseResult};
+use super::wheelrail_fx::solve_fx;
 use crate::error::{Error, InputError};
 use crate::problem::material_of_spec;
-use crate::scene::wheelrail::{CaseRow, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene};
+use crate::scene::wheelrail::{
+    CaseRow, LongitudinalSpec, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
+};
 use crate::solvers;
 use crate::wheelrail::friction::Friction;
 use crate::wheelrail::patch::Separation;
@@ -75,9 +78,11 @@ pub fn run_scene(scene: &WheelRailScene) -> Result<SceneRun, Error> {
             let case = case_of(scene, row, &rail, &wheel, material);
             let friction =
                 Friction { mu: scene.mu, variation: scene.mu_variation.as_ref(), frictionless: scene.frictionless };
-            solve_with(&case, &models, &friction)
-                .map(|r| (row.contact_case, r))
-                .map_err(|e| in_case(&scene.name, row, e))
+            let solved = match scene.longitudinal {
+                LongitudinalSpec::Velocity => solve_with(&case, &models, &friction),
+                LongitudinalSpec::Force => solve_fx(&case, &models, &friction, row.velocity[5]),
+            };
+            solved.map(|r| (row.contact_case, r)).map_err(|e| in_case(&scene.name, row, e))
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(SceneRun { name: scene.name.clone(), models, cases })
@@ -94,7 +99,8 @@ fn in_case(scene: &str, row: &CaseRow, e: Error) -> Error {
     }
 }
 
-/// The stage's input for one row of the scene.
+/// The stage's input for one row of the scene; with FX_WS given (its last velocity), VPITCH is
+/// the first estimate of its search: −VS / NOMRAD.
 pub fn case_of<'a>(
     s: &WheelRailScene,
     row: &CaseRow,
@@ -102,7 +108,11 @@ pub fn case_of<'a>(
     wheel: &'a Profile,
     material: crate::physics::Material,
 ) -> WheelRailCase<'a> {
-    let [vs, vy, vz, vroll, vyaw, vpitch] = row.velocity;
+    let [vs, vy, vz, vroll, vyaw, sixth] = row.velocity;
+    let vpitch = match s.longitudinal {
+        LongitudinalSpec::Velocity => sixth,
+        LongitudinalSpec::Force => -vs / s.nominal_radius_mm,
+    };
     // The rail's deviations are given in the track's frame, as the wheelset's: mirrored on the left.
     let m = if s.side == SideSpec::Left { -1.0 } else { 1.0 };
     let ([dy, dz, droll], [vy_r, vz_r, vroll_r]) = (s.rail_deviation.position, s.rail_deviation.velocity);

@@ -11,7 +11,7 @@ pub mod source;
 pub mod study;
 pub mod table;
 pub mod wheelrail;
-mod wheelrail_cases;
+pub mod wheelrail_cases;
 
 use crate::error::InputError;
 use crate::physics::geometry::{Extent, GeometrySpec};

@@ -76,6 +76,16 @@ pub enum VerticalSpec {
     Position,
 }
 
+/// How the cases fix the pitch: its velocity, or the longitudinal force it must give (CONTACT's
+/// F = 0, 1: `[cases] longitudinal`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LongitudinalSpec {
+    /// VPITCH given (`vpitch_rad_s`).
+    Velocity,
+    /// FX_WS given (`fx_ws_n`, the total force on the rail along the wheelset's x): VPITCH found.
+    Force,
+}
+
 /// One case: the wheelset's position and velocities (a row of the cases table).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CaseRow {
@@ -86,6 +96,8 @@ pub struct CaseRow {
     pub vertical: f64,
     pub roll_rad: f64,
     pub yaw_rad: f64,
+    /// VS, VY, VZ [mm/s], VROLL, VYAW [rad/s], then VPITCH [rad/s] or FX_WS [N], as
+    /// [`LongitudinalSpec`] says.
     pub velocity: [f64; 6],
 }
 
@@ -165,6 +177,8 @@ pub struct WheelRailScene {
     /// `true` CONTACT's mesh of it (`"contact_mesh"`).
     pub wheel_mesh: bool,
     pub vertical: VerticalSpec,
+    /// VPITCH or FX_WS given (`[cases] longitudinal`).
+    pub longitudinal: LongitudinalSpec,
     pub cases: Vec<CaseRow>,
     /// Where the report shows the scene (`[report]`).
     pub report: WheelRailReport,
@@ -196,10 +210,12 @@ const LEAD: [&str; 2] = ["contact_case", "y_mm"];
 const TAIL: [&str; 8] =
     ["roll_rad", "yaw_rad", "vs_mm_s", "vy_mm_s", "vz_mm_s", "vroll_rad_s", "vyaw_rad_s", "vpitch_rad_s"];
 
-/// The columns of the cases table, in their order: `fz_n` or `z_mm` as `vertical` says.
-pub fn case_columns(vertical: VerticalSpec) -> Vec<&'static str> {
+/// The columns of the cases table, in their order: `fz_n` or `z_mm` as `vertical` says, the last
+/// `vpitch_rad_s` or `fx_ws_n` as `longitudinal` says.
+pub fn case_columns(vertical: VerticalSpec, longitudinal: LongitudinalSpec) -> Vec<&'static str> {
     let middle = if vertical == VerticalSpec::Force { "fz_n" } else { "z_mm" };
-    LEAD.iter().copied().chain([middle]).chain(TAIL).collect()
+    let last = if longitudinal == LongitudinalSpec::Force { "fx_ws_n" } else { "vpitch_rad_s" };
+    LEAD.iter().copied().chain([middle]).chain(TAIL[..7].iter().copied()).chain([last]).collect()
 }
 
 /// Whether a parsed TOML document is a wheel–rail scene (it has a `[wheelrail]` table).
@@ -283,7 +299,13 @@ impl WheelRailScene {
         let (rail, placement, cant_rad, rail_deviation) = rail(&mut top, dir)?;
         let (wheel, fbd, fbp, radius) = wheel(&mut top, dir)?;
         let material = super::sections::material(&mut top)?;
-        let (vertical, cases) = super::wheelrail_cases::read(&mut top, dir, radius)?;
+        let (vertical, longitudinal, cases) = super::wheelrail_cases::read(&mut top, dir, radius)?;
+        super::wheelrail_cases::check_longitudinal(
+            longitudinal,
+            frictionless,
+            mu_variation.as_ref().map_or(mu, |v| v.values.iter().copied().fold(mu, f64::max)),
+            &cases,
+        )?;
         let origin = super::sections::origin(&mut top)?;
         check_origin(origin.as_ref(), &cases)?;
         let report = report(&mut top, dir, &cases)?;
@@ -312,6 +334,7 @@ impl WheelRailScene {
             d_turn_mm,
             wheel_mesh,
             vertical,
+            longitudinal,
             cases,
             report,
             origin,

@@ -16,7 +16,7 @@
 //! ```
 
 use super::reader::{Range, Section};
-use super::wheelrail::{case_columns, CaseRow, VerticalSpec};
+use super::wheelrail::{case_columns, CaseRow, LongitudinalSpec, VerticalSpec};
 use crate::error::InputError;
 use std::path::Path;
 
@@ -34,30 +34,43 @@ fn range(column: &str) -> Range {
         "fz_n" => Range::new(0.0, false, 1e8, true),
         "y_mm" | "z_mm" => LENGTH,
         "roll_rad" | "yaw_rad" => ANGLE,
+        "fx_ws_n" => Range::new(-1e8, true, 1e8, true),
         _ => SPEED,
     }
 }
 
-/// `[cases]`: `vertical`, and the cases of the table `file` followed by those of the axes
-/// (numbered on from the table's largest `contact_case`, from 1 without a table); at least one
-/// of the two. `nominal_radius_mm` gives the default pitch rate of the axes' cases.
+/// `[cases]`: `vertical`, `longitudinal`, and the cases of the table `file` followed by those of
+/// the axes (numbered on from the table's largest `contact_case`, from 1 without a table); at
+/// least one of the two. `nominal_radius_mm` gives the default pitch rate of the axes' cases.
 pub(super) fn read(
     top: &mut Section,
     dir: &Path,
     nominal_radius_mm: f64,
-) -> Result<(VerticalSpec, Vec<CaseRow>), InputError> {
+) -> Result<(VerticalSpec, LongitudinalSpec, Vec<CaseRow>), InputError> {
     let mut c = top.table("cases")?;
     let vertical = match c.opt_choice("vertical", &["force", "position"])?.unwrap_or("force") {
         "force" => VerticalSpec::Force,
         _ => VerticalSpec::Position,
     };
+    let longitudinal = match c.opt_choice("longitudinal", &["velocity", "force"])?.unwrap_or("velocity") {
+        "force" if vertical == VerticalSpec::Position => {
+            return Err(InputError::new(
+                c.field("longitudinal"),
+                "\"force\" with vertical = \"position\"",
+                "\"velocity\", or \"force\" with vertical = \"force\" (CONTACT's F = 1 requires N = 1)",
+            ))
+        }
+        "force" => LongitudinalSpec::Force,
+        _ => LongitudinalSpec::Velocity,
+    };
+    let spec = (vertical, longitudinal);
     let mut cases = match c.has("file") || !c.has("axis") {
-        true => from_file(&mut c, dir, vertical)?,
+        true => from_file(&mut c, dir, spec)?,
         false => Vec::new(),
     };
     if let Some(axes) = c.opt_tables("axis")? {
         let first = cases.iter().map(|r| r.contact_case + 1).max().unwrap_or(1);
-        let swept = sweep(&mut c, axes, vertical, nominal_radius_mm, first)?;
+        let swept = sweep(&mut c, axes, spec, nominal_radius_mm, first)?;
         if cases.len() + swept.len() > MAX_CASES {
             return Err(InputError::new(
                 c.field("axis"),
@@ -68,24 +81,61 @@ pub(super) fn read(
         cases.extend(swept);
     }
     c.finish()?;
-    Ok((vertical, cases))
+    Ok((vertical, longitudinal, cases))
+}
+
+/// With FX_WS prescribed: friction (not `frictionless`) and every case's |FX_WS| below
+/// `mu_max`·FZ, the most Coulomb friction carries (a larger force has no pitch velocity).
+pub fn check_longitudinal(
+    longitudinal: LongitudinalSpec,
+    frictionless: bool,
+    mu_max: f64,
+    cases: &[CaseRow],
+) -> Result<(), InputError> {
+    if longitudinal != LongitudinalSpec::Force {
+        return Ok(());
+    }
+    if frictionless {
+        return Err(InputError::new(
+            "wheelrail.frictionless",
+            true,
+            "false with [cases] longitudinal = \"force\" (FX_WS is carried by friction)",
+        ));
+    }
+    for r in cases {
+        let (fx, fz) = (r.velocity[5], r.vertical);
+        if fx.abs() >= mu_max * fz {
+            return Err(InputError::new(
+                format!("cases, contact_case {}: fx_ws_n", r.contact_case),
+                fx,
+                format!(
+                    "|fx_ws_n| below mu·fz_n = {mu_max} × {fz} = {} N (beyond it no pitch velocity gives the force: the wheel slides)",
+                    mu_max * fz
+                ),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// The cases of the table `file`, one per row.
-fn from_file(c: &mut Section, dir: &Path, vertical: VerticalSpec) -> Result<Vec<CaseRow>, InputError> {
+fn from_file(c: &mut Section, dir: &Path, spec: Spec) -> Result<Vec<CaseRow>, InputError> {
     let field = c.field("file");
     let file = c.str(
         "file",
         "a CSV path relative to the scene file (columns in docs/scene-format.md), or [[cases.axis]] tables",
     )?;
-    let (cols, lines, origin) = super::geometry::read_columns(&dir.join(file), &field, &case_columns(vertical))?;
+    let (cols, lines, origin) = super::geometry::read_columns(&dir.join(file), &field, &case_columns(spec.0, spec.1))?;
     let n = cols[0].len();
     if n == 0 || n > MAX_CASES {
         return Err(InputError::new(&origin, format!("{n} rows"), format!("1 to {MAX_CASES} cases")));
     }
     let values = |r: usize| -> Vec<f64> { cols.iter().map(|col| col[r]).collect() };
-    (0..n).map(|r| row(&values(r), &format!("{origin} line {}", lines[r]), vertical)).collect()
+    (0..n).map(|r| row(&values(r), &format!("{origin} line {}", lines[r]), spec)).collect()
 }
+
+/// The vertical and longitudinal problems, which fix the table's columns.
+pub(super) type Spec = (VerticalSpec, LongitudinalSpec);
 
 /// One axis: its name and its columns (index in [`case_columns`]) with their values.
 struct Axis {
@@ -98,11 +148,11 @@ struct Axis {
 fn sweep(
     c: &mut Section,
     tables: Vec<Section>,
-    vertical: VerticalSpec,
+    spec: Spec,
     nominal_radius_mm: f64,
     first: u64,
 ) -> Result<Vec<CaseRow>, InputError> {
-    let columns = case_columns(vertical);
+    let columns = case_columns(spec.0, spec.1);
     let mut axes: Vec<Axis> = Vec::new();
     for t in tables {
         let a = axis(t, &columns)?;
@@ -142,7 +192,7 @@ fn sweep(
             // Rolling at the nominal radius: −VS / NOMRAD (CONTACT's VPITCH of a free wheel).
             values[last] = -values[5] / nominal_radius_mm;
         }
-        out.push(row(&values, &format!("{} (case {})", c.field("axis"), first as usize + n), vertical)?);
+        out.push(row(&values, &format!("{} (case {})", c.field("axis"), first as usize + n), spec)?);
     }
     Ok(out)
 }
@@ -225,8 +275,8 @@ fn values(t: &mut Section, column: &str, range: Range) -> Result<Vec<f64>, Input
 }
 
 /// The values every case of the axes shares (`[cases]`'s keys named after the columns): given,
-/// or their defaults (0; `vpitch_rad_s` NaN, filled in per case); `fz_n` or `z_mm` and
-/// `vs_mm_s` are required unless on an axis. A column both fixed and on an axis is refused.
+/// or their defaults (0; `vpitch_rad_s` NaN, filled in per case); `fz_n` or `z_mm`, `vs_mm_s`
+/// and `fx_ws_n` are required unless on an axis. A column both fixed and on an axis is refused.
 fn fixed(c: &mut Section, columns: &[&str], axes: &[Axis]) -> Result<Vec<f64>, InputError> {
     let mut out = vec![0.0; columns.len()];
     for (k, column) in columns.iter().enumerate().skip(1) {
@@ -237,7 +287,7 @@ fn fixed(c: &mut Section, columns: &[&str], axes: &[Axis]) -> Result<Vec<f64>, I
         }
         out[k] = match (c.opt_f64(column, range(column))?, *column) {
             (Some(v), _) => v,
-            (None, "fz_n" | "z_mm" | "vs_mm_s") => {
+            (None, "fz_n" | "z_mm" | "vs_mm_s" | "fx_ws_n") => {
                 return Err(InputError::new(
                     c.field(column),
                     "missing",
@@ -252,8 +302,8 @@ fn fixed(c: &mut Section, columns: &[&str], axes: &[Axis]) -> Result<Vec<f64>, I
 }
 
 /// One case from its values in the order of [`case_columns`], checked (`line` names it).
-pub(super) fn row(v: &[f64], line: &str, vertical: VerticalSpec) -> Result<CaseRow, InputError> {
-    let columns = case_columns(vertical);
+pub(super) fn row(v: &[f64], line: &str, spec: Spec) -> Result<CaseRow, InputError> {
+    let columns = case_columns(spec.0, spec.1);
     let check = |c: usize| {
         let r = range(columns[c]);
         if r.contains(v[c]) {
@@ -339,6 +389,45 @@ mod tests {
         assert!(s.cases.iter().all(|c| c.vertical == -0.1 && c.velocity[5] == -2.0));
         assert!(s.report.in_section);
         assert_eq!(s.patch_cases(), [2, 6]);
+    }
+
+    #[test]
+    fn fx_ws_prescribed_takes_the_last_column_and_bad_forces_are_refused() {
+        let axis = "[[cases.axis]]\nname = \"y\"\ny_mm = [0.0, 2.0]\n";
+        let head = "[cases]\nlongitudinal = \"force\"\nfz_n = 10000.0\nvs_mm_s = 2000.0\n";
+        let s = scene(&format!("{head}fx_ws_n = -2000.0\n{axis}")).unwrap();
+        assert_eq!(s.longitudinal, crate::scene::wheelrail::LongitudinalSpec::Force);
+        assert!(s.cases.iter().all(|c| c.velocity[5] == -2000.0), "{:?}", s.cases);
+        let s = scene(&format!("[cases]\nfz_n = 1.0\nvs_mm_s = 1.0\n{axis}")).unwrap();
+        assert_eq!(s.longitudinal, crate::scene::wheelrail::LongitudinalSpec::Velocity);
+        for (body, field, allowed) in [
+            (format!("{head}{axis}"), "cases.fx_ws_n", "required"),
+            (format!("{head}fx_ws_n = 3000.0\n{axis}"), "contact_case 1: fx_ws_n", "below mu·fz_n = 0.3 × 10000"),
+            (format!("{head}vpitch_rad_s = -4.0\nfx_ws_n = 1.0\n{axis}"), "cases.vpitch_rad_s", "vpitch_rad_s"),
+            (
+                format!("[cases]\nvertical = \"position\"\nlongitudinal = \"force\"\nz_mm = 0.1\nvs_mm_s = 1.0\nfx_ws_n = 1.0\n{axis}"),
+                "cases.longitudinal",
+                "CONTACT's F = 1 requires N = 1",
+            ),
+        ] {
+            let err = scene(&body).unwrap_err();
+            assert!(err.contains(field) && err.contains(allowed), "{body:?}: {err}");
+        }
+        // FX_WS is carried by friction: not with a frictionless scene.
+        let err = scene(&format!("{head}fx_ws_n = 1.0\n{axis}[report]\ngroup = \"other\"\n"))
+            .and_then(|_| {
+                let mut doc: toml::Table = toml::from_str(&format!(
+                    "name = \"s\"\n[wheelrail]\nside = \"left\"\nmu = 0.3\ndx_mm = 0.5\nds_mm = 0.5\nfrictionless = true\n\
+                     [rail]\nprofile = \"r.prr\"\ngauge_height_mm = 14.0\ngauge_width_mm = 1435.0\n\
+                     [wheel]\nprofile = \"w.prw\"\nflange_back_distance_mm = 1360.0\nflange_back_position_mm = -70.0\n\
+                     nominal_radius_mm = 460.0\n[material]\ng_mpa = 82000.0\npoisson = 0.28\n{head}fx_ws_n = 1.0\n{axis}"
+                ))
+                .unwrap();
+                doc.remove("report");
+                WheelRailScene::from_table(&doc, Path::new(".")).map_err(|e| e.to_string())
+            })
+            .unwrap_err();
+        assert!(err.contains("wheelrail.frictionless") && err.contains("carried by friction"), "{err}");
     }
 
     #[test]

@@ -13,8 +13,18 @@ use crate::wheelrail::NormalPatch;
 use std::path::{Path, PathBuf};
 
 /// Columns of `<model>.csv`.
-pub const TOTAL_COLUMNS: [&str; 9] =
-    ["contact_case", "n_patches", "z_ws_mm", "fx_tr_n", "fy_tr_n", "fz_tr_n", "fx_ws_n", "fy_ws_n", "fz_ws_n"];
+pub const TOTAL_COLUMNS: [&str; 10] = [
+    "contact_case",
+    "n_patches",
+    "z_ws_mm",
+    "fx_tr_n",
+    "fy_tr_n",
+    "fz_tr_n",
+    "fx_ws_n",
+    "fy_ws_n",
+    "fz_ws_n",
+    "vpitch_rad_s",
+];
 
 /// Columns of `<model>_patches.csv`.
 pub const PATCH_COLUMNS: [&str; 24] = [
@@ -59,6 +69,7 @@ fn total_row(case: u64, r: &CaseResult, model: usize) -> Vec<String> {
     let t = &r.models[model].2;
     let mut row = vec![case.to_string(), r.normal.patches.len().to_string(), r.normal.z_ws_mm.to_string()];
     row.extend(t.track_n.iter().chain(&t.wheelset_n).map(|v| number(*v)));
+    row.push(number(r.pitch.rad_s()));
     row
 }
 

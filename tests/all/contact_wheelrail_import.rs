@@ -78,13 +78,15 @@ fn the_manchester_decks_import_as_one_scene_of_21_cases_each() {
     }
 }
 
-/// mbench_a22_left.inp with its case 11 prescribing FX (F = 1, the sixth velocity then FX_WS).
+/// mbench_a22_left.inp with its case 11 prescribing FX (F = 1, the sixth velocity then FX_WS) of
+/// 5 kN, beyond mu FZ = 3 kN.
 fn with_prescribed_fx(dir: &Path) -> PathBuf {
     let text = std::fs::read_to_string(examples().join("mbench_a22_left.inp")).unwrap();
     let case11 = text.find("% 11:").unwrap();
     let at = case11 + text[case11..].find(" 0203100").unwrap();
     let deck = dir.join("mbench_fx.inp");
-    std::fs::write(&deck, format!("{} 0203110{}", &text[..at], &text[at + 8..])).unwrap();
+    let rest = text[at + 8..].replacen("-4.33536370 VS", "5000.0 VS", 1);
+    std::fs::write(&deck, format!("{} 0203110{rest}", &text[..at])).unwrap();
     for p in ["MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"] {
         std::fs::copy(examples().join(p), dir.join(p)).unwrap();
     }
@@ -99,7 +101,7 @@ fn a_refused_case_splits_its_run_and_is_named_with_its_reason() {
     let o = creepbench(&["import", "contact", deck.to_str().unwrap(), "--out", out.to_str().unwrap()]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(err.contains("refused case 11 (line 111): not supported: F = 1: the longitudinal force"), "{err}");
+    assert!(err.contains("refused case 11 (line 111): not supported: FX_WS = 5000: |fx_ws_n| below mu·fz_n"), "{err}");
     assert!(!out.exists(), "nothing written");
     let written = import(&deck, &out, &["--supported-only"]);
     assert_eq!(written, [out.join("mbench_fx_1.toml"), out.join("mbench_fx_12.toml")]);
@@ -112,7 +114,7 @@ fn a_refused_case_splits_its_run_and_is_named_with_its_reason() {
     let imported = creepbench::import::contact::import(&deck).unwrap();
     let s11 = &imported.statuses[10];
     assert_eq!((s11.case, s11.module, s11.scene.as_deref()), (11, 1, None));
-    assert!(s11.refused[0].starts_with("F = 1: the longitudinal force"), "{s11:?}");
+    assert!(s11.refused[0].starts_with("FX_WS = 5000: |fx_ws_n| below mu·fz_n = 0.3 × 10000"), "{s11:?}");
     assert!(imported.statuses[11].scene.as_deref() == Some("mbench_fx_12"), "{:?}", imported.statuses[11]);
     // The patch search's thresholds are read, not carried: a note.
     assert!(
@@ -120,6 +122,52 @@ fn a_refused_case_splits_its_run_and_is_named_with_its_reason() {
         "{:?}",
         imported.statuses[0]
     );
+}
+
+/// The decks with FX_WS prescribed (F = 1, written here and computed by CONTACT) import as the
+/// scenes of scenes/wheelrail: `longitudinal = "force"`, FX_WS in the last column; the right
+/// deck's case 9 (FX_WS beyond mu FZ) is refused naming the force; export then import gives the
+/// same scene, its deck F = 1 with FX_WS in the place of VPITCH.
+#[test]
+fn the_decks_with_fx_ws_prescribed_import_as_the_gated_scenes() {
+    use creepbench::scene::wheelrail::LongitudinalSpec;
+    for side in ["left", "right"] {
+        let dir = common::tempdir(&format!("m1_import_fx_{side}"));
+        let deck = examples().join(format!("mbench_fx_ws_{side}.inp"));
+        let written = import(&deck, &dir.join("scenes"), &["--supported-only"]);
+        assert_eq!(written, [dir.join(format!("scenes/mbench_fx_ws_{side}_1.toml"))]);
+        let s = WheelRailScene::from_file(&written[0]).unwrap();
+        assert_eq!((s.vertical, s.longitudinal), (VerticalSpec::Force, LongitudinalSpec::Force));
+        let fx: Vec<f64> = s.cases.iter().map(|c| c.velocity[5]).collect();
+        assert_eq!(fx, [-2000.0, 1000.0, -2000.0, 1000.0, -2000.0, 1000.0, -2000.0, 1000.0]);
+        let shipped =
+            WheelRailScene::from_file(&root().join(format!("scenes/wheelrail/mbench_fx_ws_{side}.toml"))).unwrap();
+        let (mut a, mut b) = (values(&s), values(&shipped));
+        // The shipped scene measures to CONTACT's meshed wheel surface and keeps the defaults of
+        // the patch search; the rows and everything else are the deck's.
+        a.wheel_mesh = true;
+        (a.a_sep_rad, a.d_sep_mm, a.d_comb_mm, a.d_turn_mm) = (b.a_sep_rad, b.d_sep_mm, b.d_comb_mm, b.d_turn_mm);
+        for c in a.cases.iter_mut().chain(b.cases.iter_mut()) {
+            c.roll_rad = (c.roll_rad * 1e8).round() / 1e8;
+        }
+        b.solvers = a.solvers.clone();
+        assert_eq!(a, b);
+        let imported = creepbench::import::contact::import(&deck).unwrap();
+        if side == "right" {
+            let s9 = &imported.statuses[8];
+            assert!(
+                s9.scene.is_none() && s9.refused[0].contains("FX_WS = 3100") && s9.refused[0].contains("mu·fz_n"),
+                "{s9:?}"
+            );
+        }
+        let (original, back) = round_trip(&written[0], &dir);
+        assert_eq!(values(&back), values(&original));
+        let text = std::fs::read_to_string(dir.join(format!("deck/mbench_fx_ws_{side}_1.inp"))).unwrap();
+        assert!(
+            text.contains("10    C-P-B-T-N-F-S") && text.contains("-2000.0      VS, VY, VZ, VROLL, VYAW, FX_WS"),
+            "{text}"
+        );
+    }
 }
 
 /// The module-1 cases of CONTACT's test bank that need a roller rig, a thin layer, the conformal

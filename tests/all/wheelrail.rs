@@ -73,6 +73,11 @@ fn hertz_patch_for_every_model_and_mirrored_sides() {
 /// The Manchester scene with its cases table replaced by `rows` (`vertical` its height mode) in a
 /// temporary folder; the `simulate` command's exit status, standard error and the totals' CSV.
 fn simulate_rows(vertical: &str, header: &str, rows: &str) -> (Option<i32>, String, Option<String>) {
+    simulate_rows_mu(vertical, header, rows, "mu = 0.3")
+}
+
+/// [`simulate_rows`] with the scene's `mu = 0.3` replaced by `mu`.
+fn simulate_rows_mu(vertical: &str, header: &str, rows: &str, mu: &str) -> (Option<i32>, String, Option<String>) {
     let root = crate::common::root();
     let dir = tempfile::tempdir().unwrap();
     let text = std::fs::read_to_string(root.join("scenes/wheelrail/mbench_a22_left.toml")).unwrap();
@@ -80,6 +85,7 @@ fn simulate_rows(vertical: &str, header: &str, rows: &str) -> (Option<i32>, Stri
     let text = text
         .replace("../../reference/contact_wheelrail/examples", examples.to_str().unwrap())
         .replace("vertical = \"force\"", &format!("vertical = \"{vertical}\""))
+        .replace("mu = 0.3", mu)
         .replace("mbench_a22_left_cases.csv", "cases.csv")
         .replace("cases = [1, 21]", "cases = [1, 1]")
         .lines()
@@ -113,5 +119,28 @@ fn a_case_without_a_solution_is_an_input_error_and_a_wheel_in_the_air_a_result()
     let header = format!("contact_case,y_mm,z_mm,roll_rad,yaw_rad,{columns}");
     let (code, err, csv) = simulate_rows("position", &header, "1,0.0,-5.0,0,0,2000,0,0,0,0,-4.348");
     assert_eq!(code, Some(0), "{err}");
-    assert_eq!(csv.unwrap().lines().nth(1), Some("1,0,-5,0,0,0,0,0,0"));
+    assert_eq!(csv.unwrap().lines().nth(1), Some("1,0,-5,0,0,0,0,0,0,-4.348"));
+}
+
+/// FX_WS prescribed (CONTACT's F = 1): the pitch velocity found gives the exact theory's FX(WS)
+/// within 1e-8 FZ and is written with the totals; a force beyond what the patch carries (its mu
+/// by contact angle 0.2, though the scene's largest mu is 0.5) stops the run with exit 2 naming
+/// the case and fx_ws_n, nothing written.
+#[test]
+fn fx_ws_prescribed_finds_the_pitch_velocity_and_a_force_the_patch_cannot_carry_is_refused() {
+    let header = "contact_case,y_mm,fz_n,roll_rad,yaw_rad,vs_mm_s,vy_mm_s,vz_mm_s,vroll_rad_s,vyaw_rad_s,fx_ws_n";
+    let force = "force\"\nlongitudinal = \"force";
+    let (code, err, csv) = simulate_rows(force, header, "1,0.0,10000,0,0,2000,0,0,0,0,-2000");
+    assert_eq!(code, Some(0), "{err}");
+    let csv = csv.unwrap();
+    let row: Vec<f64> = csv.lines().nth(1).unwrap().split(',').map(|v| v.parse().unwrap()).collect();
+    assert!((row[6] + 2000.0).abs() <= 1e-8 * 10000.0, "FX(WS) {}", row[6]);
+    // CONTACT's printed VPITCH for this case (mbench_fx_ws_left.ref_out, case 1): -4.3509212.
+    assert!((row[9] + 4.3509212).abs() < 5e-8, "VPITCH {}", row[9]);
+    let mu = "mu_by = \"contact_angle\"\nmu_at = [-1.0, -0.5]\nmu_values = [0.5, 0.2]";
+    let (code, err, csv) = simulate_rows_mu(force, header, "1,0.0,10000,0,0,2000,0,0,0,0,2500", mu);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("scene mbench_a22_left, case 1 (y_mm = 0): fx_ws_n` = 2500"), "{err}");
+    assert!(err.contains("no pitch velocity gives FX(WS) = 2500 N"), "{err}");
+    assert!(csv.is_none(), "written despite the error");
 }

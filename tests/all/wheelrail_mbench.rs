@@ -97,6 +97,13 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         let of: Vec<_> = ours.iter().filter(|f| f.scene == scene).collect();
         assert!(of.len() >= 20 && of.iter().all(|f| f.gated && f.passed()), "{scene}: {of:?}");
     }
+    // FX_WS prescribed (F = 1): every quantity gated, VPITCH found among them (beyond CONTACT's
+    // stopping tolerance).
+    for scene in ["mbench_fx_ws_left", "mbench_fx_ws_right"] {
+        let of: Vec<_> = ours.iter().filter(|f| f.scene == scene).collect();
+        assert!(of.len() >= 25 && of.iter().all(|f| f.gated && f.passed()), "{scene}: {of:?}");
+        assert!(of.iter().any(|f| f.quantity == "vpitch_rad_s"), "{scene}: {of:?}");
+    }
     // The worn-profile decks (iestim_site_b: one to three patches, height prescribed; force_site_b:
     // FZ prescribed) gated on CONTACT's meshed wheel surface (a case printed and not run, or the
     // reverse, fails the gate above).

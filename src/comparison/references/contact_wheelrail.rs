@@ -5,7 +5,16 @@
 
 use super::contact_output::printed::Printed;
 use super::contact_output::wheelrail::{Patch, WheelRailCase};
-use crate::pipeline::wheelrail::CaseResult;
+use crate::pipeline::wheelrail::{CaseResult, Pitch};
+
+/// CONTACT's FSTAT, from the largest patch's printed FX and FX/FSTAT/FN.
+fn mu_of(theirs: &WheelRailCase) -> Option<f64> {
+    use super::contact_output::wheelrail::Ratio;
+    let t =
+        theirs.patches.iter().filter_map(|p| p.totals.as_ref()).max_by(|a, b| a.fn_n.value.total_cmp(&b.fn_n.value))?;
+    let Ratio::OverFstatFn(r) = t.fx_ratio else { return None };
+    (r.value != 0.0).then(|| t.fx_n.value / (r.value * t.fn_n.value))
+}
 
 /// One compared quantity.
 #[derive(Debug, Clone, PartialEq)]
@@ -20,16 +29,40 @@ pub struct Deviation {
     pub half_unit: f64,
     /// |ours − contact| over half a unit of CONTACT's last printed digit.
     pub half_units: f64,
+    /// How far CONTACT's value may lie from its converged one, where its iteration stops short
+    /// of its printed digits (VPITCH found for FX_WS: [`vpitch_tolerance`]); else 0.
+    pub tolerance: f64,
+}
+
+/// CONTACT's solver tolerance EPS in the decks with FX_WS prescribed (`mbench_fx_ws_*`, as
+/// `export contact` writes it).
+pub const CONTACT_EPS: f64 = 1e-5;
+
+/// How far CONTACT's VPITCH may lie from the one that gives FX_WS exactly: its secant stops
+/// when |FX(WS) − FX_WS| < EPS·μ·FZ (`wr_contact_fx_secant`, relative to FZ), which moves VPITCH
+/// by EPS·μ·FZ·|dVPITCH/dFX(WS)|, twice that for FZ's own iteration inside it (stopped at
+/// the same EPS relative to FZ).
+pub fn vpitch_tolerance(mu: f64, fz_n: f64, per_fx_rad_s_n: f64) -> f64 {
+    2.0 * CONTACT_EPS * mu * fz_n * per_fx_rad_s_n
 }
 
 fn deviation(case: u64, patch: usize, quantity: &'static str, ours: f64, p: &Printed) -> Deviation {
     let half_units = (ours - p.value).abs() / p.half_unit.max(f64::MIN_POSITIVE);
-    Deviation { contact_case: case, patch, quantity, ours, contact: p.value, half_unit: p.half_unit, half_units }
+    Deviation {
+        contact_case: case,
+        patch,
+        quantity,
+        ours,
+        contact: p.value,
+        half_unit: p.half_unit,
+        half_units,
+        tolerance: 0.0,
+    }
 }
 
 /// Every compared quantity of one case of the model at index `model` of the run's models: the
 /// number of patches (`n_patches`, a count: any difference is 2 half-units or more), the totals
-/// on the rail and, patch by patch in CONTACT's order, the patches both have.
+/// on the rail, the pitch velocity where the case found it and, patch by patch in CONTACT's order, the patches both have.
 pub fn compare_case(case: u64, ours: &CaseResult, model: usize, theirs: &WheelRailCase) -> Vec<Deviation> {
     let mut out = Vec::new();
     let count = Printed { value: theirs.patches.len() as f64, half_unit: 0.5 };
@@ -40,6 +73,14 @@ pub fn compare_case(case: u64, ours: &CaseResult, model: usize, theirs: &WheelRa
         let printed = [&f.fx_tr_n, &f.fy_tr_n, &f.fz_tr_n, &f.fx_ws_n, &f.fy_ws_n, &f.fz_ws_n];
         let values = totals.track_n.iter().chain(&totals.wheelset_n);
         out.extend(names.iter().zip(printed).zip(values).map(|((n, p), v)| deviation(case, 0, n, *v, p)));
+    }
+    // VPITCH where the case found it (FX_WS prescribed, CONTACT's F = 1), beyond CONTACT's
+    // stopping tolerance.
+    if let (Pitch::Found { rad_s, per_fx_rad_s_n }, Some(v), Some(mu)) = (ours.pitch, &theirs.velocity, mu_of(theirs)) {
+        let fz = totals.track_n[2];
+        // No slope (found at the first estimate): no tolerance.
+        let tolerance = vpitch_tolerance(mu, fz, per_fx_rad_s_n).max(0.0);
+        out.push(Deviation { tolerance, ..deviation(case, 0, "vpitch_rad_s", rad_s, &v.vpitch_rad_s) });
     }
     let m = ours.normal.side.sign();
     for (k, (p, f)) in ours.normal.patches.iter().zip(forces).enumerate() {

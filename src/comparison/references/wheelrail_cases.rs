@@ -267,10 +267,10 @@ pub fn quantity(deck: &str, d: &Deviation) -> String {
 }
 
 /// A deviation in half-units of CONTACT's last printed digit, the half-unit floored for FX and
-/// MN ([`FLOORS`]).
+/// MN ([`FLOORS`]), beyond CONTACT's stopping tolerance where it has one (VPITCH found).
 pub fn measure(d: &Deviation) -> f64 {
     let floor = FLOORS.iter().find(|(q, _)| *q == d.quantity).map_or(0.0, |(_, f)| f / FLOORED_BOUND);
-    (d.ours - d.contact).abs() / d.half_unit.max(floor).max(f64::MIN_POSITIVE)
+    ((d.ours - d.contact).abs() - d.tolerance).max(0.0) / d.half_unit.max(floor).max(f64::MIN_POSITIVE)
 }
 
 /// One finding: the measure in half-units (theirs = 0); the note names the case, the patch, both

@@ -414,6 +414,13 @@ pub fn plain_fastsim(c: &WheelRailCase) -> bool {
         && matches!(model, Some(MaterialModel::SlopeReduction { k0_mf, alfamf, betamf }) if [k0_mf, alfamf, betamf] == [1.0; 3])
 }
 
+/// F = 1 as the wheel–rail scene carries it: with FZ prescribed (N = 1), in steady rolling
+/// (T = 3) with the exact theory (B = 0, M = 0).
+fn longitudinal_force_supported(c: &WheelRailCase) -> bool {
+    let d = c.digits;
+    d.n == 1 && d.t == 3 && d.b == 0 && d.m == 0
+}
+
 fn wr_digit(name: &str, v: u8, used: bool) -> Option<String> {
     used.then(|| format!("{name} = {v}"))
 }
@@ -473,11 +480,30 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
     },
     WheelRailRow {
         feature: WheelRailFeature::PrescribedLongitudinalForce,
-        name: "the longitudinal force (or moment) prescribed instead of the pitch velocity",
+        name: "the longitudinal force prescribed instead of the pitch velocity",
         control: "F, FX_WS",
+        supported: true,
+        reason: "imported as [cases] longitudinal = \"force\" with the column fx_ws_n: the pitch velocity VPITCH found so that the exact theory's FX(WS) is FX_WS, with FZ prescribed (N = 1), as CONTACT's secant iteration does (docs/wheelrail.md)",
+        used: |c| wr_digit("F", c.digits.f, c.digits.f == 1 && longitudinal_force_supported(c)),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::PrescribedLongitudinalForce,
+        name: "the longitudinal force prescribed with the height, frictionless, or with a simplified theory",
+        control: "F, N, T, B, M",
         supported: false,
-        reason: "supported: F = 0 (VPITCH given)",
-        used: |c| wr_digit("F", c.digits.f, matches!(c.digits.f, 1 | 2)),
+        reason: "supported: F = 1 with N = 1 (CONTACT refuses N = 0), steady rolling (T = 3) and the exact theory (B = 0, M = 0): CONTACT finds VPITCH with the case's own model, this project with the exact theory",
+        used: |c| {
+            (c.digits.f == 1 && !longitudinal_force_supported(c))
+                .then(|| format!("F = 1 with N = {}, T = {}, B = {}, M = {}", c.digits.n, c.digits.t, c.digits.b, c.digits.m))
+        },
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::PrescribedLongitudinalForce,
+        name: "the longitudinal moment prescribed instead of the pitch velocity",
+        control: "F, MY_WS",
+        supported: false,
+        reason: "supported: F = 0 (VPITCH given) and F = 1 (FX_WS given)",
+        used: |c| wr_digit("F", c.digits.f, c.digits.f == 2),
     },
     WheelRailRow {
         feature: WheelRailFeature::MasslessRail,

@@ -23,8 +23,8 @@ use super::super::CaseStatus;
 use super::{scene_name, SceneFiles};
 use crate::physics::material::combine_bodies;
 use crate::scene::wheelrail::{
-    CaseRow, MuBy, MuVariation, PlacementSpec, ProfileSpec, RailDeviationSpec, SideSpec, VerticalSpec, WheelRailScene,
-    PROFILE_DEFAULTS,
+    CaseRow, LongitudinalSpec, MuBy, MuVariation, PlacementSpec, ProfileSpec, RailDeviationSpec, SideSpec,
+    VerticalSpec, WheelRailScene, PROFILE_DEFAULTS,
 };
 use crate::scene::{MaterialSpec, Origin};
 use std::path::PathBuf;
@@ -133,7 +133,10 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
     };
     let (mu, mu_variation) = mu_of(friction, s_ws);
     let m = combine_bodies(material.poiss, material.gg_mpa);
-    let (vertical, row) = row(c)?;
+    let (vertical, longitudinal, row) = row(c)?;
+    let mu_max = mu_variation.as_ref().map_or(mu, |v| v.values.iter().copied().fold(mu, f64::max));
+    crate::scene::wheelrail_cases::check_longitudinal(longitudinal, c.digits.t == 0, mu_max, &[row])
+        .map_err(|e| format!("FX_WS = {}: {}", e.value, e.allowed))?;
     Ok(WheelRailScene {
         name: String::new(),
         solvers: vec![model_of(c).into()],
@@ -175,6 +178,7 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         d_turn_mm: disc.d_turn_mm(),
         wheel_mesh: false,
         vertical,
+        longitudinal,
         cases: vec![row],
         report: Default::default(),
         origin: None,
@@ -250,13 +254,18 @@ fn snap(v: f64, default: f64) -> f64 {
     }
 }
 
-/// The case's row: its number, position (FZ or Z as N says) and velocities.
-fn row(c: &WheelRailCase) -> Result<(VerticalSpec, CaseRow), String> {
+/// The case's row: its number, position (FZ or Z as N says) and velocities (the last VPITCH, or
+/// FX_WS with F = 1).
+fn row(c: &WheelRailCase) -> Result<(VerticalSpec, LongitudinalSpec, CaseRow), String> {
     let p = c.state.position.ok_or("the wheelset position never given")?;
     let v = c.state.velocity.ok_or("the wheelset velocity never given")?;
     let Along::SMm(_) = p.along else { return Err("a roller rig (C = 4, 5)".into()) };
     let Forward::VsMmS(vs) = v.forward else { return Err("a roller rig (C = 4, 5)".into()) };
-    let PitchInput::VpitchRadS(vpitch) = v.sixth else { return Err("FX_WS or MY_WS prescribed (F = 1, 2)".into()) };
+    let (longitudinal, sixth) = match v.sixth {
+        PitchInput::VpitchRadS(vpitch) => (LongitudinalSpec::Velocity, vpitch),
+        PitchInput::FxWsN(fx) => (LongitudinalSpec::Force, fx),
+        PitchInput::MyWsNmm(_) => return Err("MY_WS prescribed (F = 2)".into()),
+    };
     let (vertical, value) = match p.vertical {
         Vertical::FzN(fz) => (VerticalSpec::Force, fz),
         Vertical::ZMm(z) => (VerticalSpec::Position, z),
@@ -267,7 +276,7 @@ fn row(c: &WheelRailCase) -> Result<(VerticalSpec, CaseRow), String> {
         vertical: value,
         roll_rad: p.roll_rad,
         yaw_rad: p.yaw_rad,
-        velocity: [vs, v.vy_mm_s, v.vz_mm_s, v.vroll_rad_s, v.vyaw_rad_s, vpitch],
+        velocity: [vs, v.vy_mm_s, v.vz_mm_s, v.vroll_rad_s, v.vyaw_rad_s, sixth],
     };
-    Ok((vertical, row))
+    Ok((vertical, longitudinal, row))
 }

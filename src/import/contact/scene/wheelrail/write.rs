@@ -6,8 +6,8 @@
 use super::super::read_back::tempdir_for;
 use crate::error::InputError;
 use crate::scene::wheelrail::{
-    case_columns, CaseRow, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene, MIRROR_Z,
-    PROFILE_DEFAULTS,
+    case_columns, CaseRow, LongitudinalSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
+    MIRROR_Z, PROFILE_DEFAULTS,
 };
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
@@ -27,7 +27,10 @@ pub(super) fn files(scene: &WheelRailScene, deck: &str) -> Result<Vec<(String, S
             let _ = writeln!(text, "{key} = {value}");
         }
     }
-    Ok(vec![(format!("{}.toml", scene.name), text), (csv_name, cases_csv(scene.vertical, &scene.cases))])
+    Ok(vec![
+        (format!("{}.toml", scene.name), text),
+        (csv_name, cases_csv(scene.vertical, scene.longitudinal, &scene.cases)),
+    ])
 }
 
 /// A section's keys and values in the order they are written.
@@ -71,7 +74,11 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
     wheel.push(("flange_back_position_mm", Value::Float(s.flange_back_position_mm)));
     wheel.push(("nominal_radius_mm", Value::Float(s.nominal_radius_mm)));
     let vertical = if s.vertical == VerticalSpec::Force { "force" } else { "position" };
-    let cases = vec![("vertical", Value::String(vertical.into())), ("file", Value::String(csv_name.into()))];
+    let mut cases = vec![("vertical", Value::String(vertical.into()))];
+    if s.longitudinal == LongitudinalSpec::Force {
+        cases.push(("longitudinal", Value::String("force".into())));
+    }
+    cases.push(("file", Value::String(csv_name.into())));
     let mut out = vec![
         (None, vec![("name", Value::String(s.name.clone())), ("solvers", solvers)]),
         (Some("wheelrail"), wheelrail),
@@ -151,8 +158,8 @@ fn material(s: &WheelRailScene) -> Result<Pairs, InputError> {
 
 /// The cases table: the reader's columns ([`case_columns`]), one row per case, every value in
 /// the shortest form that reads back to the same number.
-fn cases_csv(vertical: VerticalSpec, rows: &[CaseRow]) -> String {
-    let mut out = case_columns(vertical).join(",");
+fn cases_csv(vertical: VerticalSpec, longitudinal: LongitudinalSpec, rows: &[CaseRow]) -> String {
+    let mut out = case_columns(vertical, longitudinal).join(",");
     out.push('\n');
     for r in rows {
         let values = [r.y_mm, r.vertical, r.roll_rad, r.yaw_rad].into_iter().chain(r.velocity);
