@@ -1,5 +1,5 @@
 //! The elastic half-space on the element grid, shared by every solver: influence coefficients of
-//! uniformly loaded rectangles ([`influence`]) or bilinear tractions ([`bilinear`]), u = A p by direct sums or FFT ([`convolution`]),
+//! uniformly loaded rectangles ([`influence`]) or bilinear tractions ([`bilinear`]), an interface layer in series ([`layer`]), u = A p by direct sums or FFT ([`convolution`]),
 //! and the normal contact problem for a prescribed FN or approach on any undeformed distance ([`normal`]),
 //! whose pressure the exact solver uses and the simplified models take on non-Hertzian contacts.
 
@@ -8,6 +8,7 @@ pub mod blend;
 pub mod convolution;
 pub mod coupling;
 pub mod influence;
+pub mod layer;
 pub mod normal;
 
 /// Errors of the contact core; no function of these modules panics on bad numbers.

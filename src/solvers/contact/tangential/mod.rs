@@ -897,3 +897,5 @@ fn fallback(converged: bool) -> Termination {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_layer;
