@@ -357,7 +357,10 @@ fn tractcurv_imports_the_coulomb_creep_curve_as_one_sweep() {
     assert_eq!(ok, (1..=120).collect::<Vec<_>>());
     assert!(no.is_empty(), "{no:?}");
     let case31 = &imported.statuses[30].notes;
-    assert!(case31.iter().any(|r| r.starts_with("M = 4, GG3 = 8200, LAYTHK = 1.25: an elastic interface layer")), "{case31:?}");
+    assert!(
+        case31.iter().any(|r| r.starts_with("M = 4, GG3 = 8200, LAYTHK = 1.25: an elastic interface layer")),
+        "{case31:?}"
+    );
     assert_eq!(imported.scenes.len(), 4);
     let p = scene_of(&imported, "tractcurv_31");
     let layer = creepbench::physics::material::Layer { g_mpa: 8200.0, thickness_mm: 1.25 };
@@ -660,13 +663,14 @@ fn an_elasto_plastic_layer_and_a_layer_in_transient_rolling_are_refused() {
             " 3 MODULE\n  20{tang}100  P-B-T-N-F-S\n  022420  L-D-C-M-Z-E\n 0000341  H-G-I-A-O-W-R\n   80 200 5 1 1e-6  MAXGS\n 106700. 0.001 0.0 0.0  FN, CKSI, CETA, CPHI\n   0.33 0.33  FSTAT, FKIN\n   0.0 0.5 10000.  CHI, DQ, VELOC\n   0.28 0.28 82000. 82000.  POISS, GG\n   {layer}  GG3, LAYTHK, TAU_C0, K_TAU\n   -2  IPOTCN\n   48 44 0.0008 0.5 1.1  MX, MY, A1, AOB, SCALE\n 0 MODULE\n"
         )
     };
-    let import = |tang: &str, layer: &str| {
-        import_text("layer.inp", "layer", &deck(tang, layer)).unwrap()
-    };
+    let import = |tang: &str, layer: &str| import_text("layer.inp", "layer", &deck(tang, layer)).unwrap();
     let plastic = import("3", "8200. 1.25 200. 0.");
     assert!(!plastic.statuses[0].supported());
     let why = &plastic.statuses[0].refused;
-    assert!(why.iter().any(|r| r.starts_with("M = 4, TAU_C0 = 200, K_TAU = 0: an elasto-plastic interface layer")), "{why:?}");
+    assert!(
+        why.iter().any(|r| r.starts_with("M = 4, TAU_C0 = 200, K_TAU = 0: an elasto-plastic interface layer")),
+        "{why:?}"
+    );
     let transient = import("2", "8200. 1.25 0. 0.");
     let why = &transient.statuses[0].refused;
     assert!(why.iter().any(|r| r.starts_with("M = 4, T = 2: an interface layer in transient rolling")), "{why:?}");
