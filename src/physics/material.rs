@@ -25,7 +25,7 @@ pub struct Material {
 
 /// CONTACT's interfacial (third-body) layer (M = 4, user guide "Interfacial layer of
 /// contaminants"): sheared elastically, u = p h3 / G3, in series with the half-spaces.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Layer {
     /// The layer's shear modulus G3 [MPa] (CONTACT's GG3).
     pub g_mpa: f64,
