@@ -18,6 +18,10 @@
 //! per element as IPOTCN = 1 with its grid and IBASE = 9, h per element in CONTACT's order.
 //! Signs: cx, cy, cs are CKSI, CETA, CPHI as they are (this project uses CONTACT's convention).
 //!
+//! An interface layer (`[material] layer_g_mpa`, `layer_thickness_mm`) is CONTACT's M = 4 in every
+//! case, GG3, LAYTHK with TAU_C0 = K_TAU = 0 after the material's POISS, GG; refused in transient
+//! rolling ([`check`]).
+//!
 //! The influence functions of bilinear tractions (`[contact_solver] influence = "bilinear"`) are
 //! CONTACT's C = 3 wherever C is given (C = 2 otherwise).
 //!
@@ -60,12 +64,29 @@ const F_ABSENT: f64 = 1e-8;
 /// `m_friclaw.f90` lines 798-855): Coulomb's μ (FSTAT = FKIN, of every case and grid row) and a
 /// falling law's SABSH1, SABSH2 where their term is present. An error names the scene's key.
 pub fn check(p: &Problem) -> Result<(), InputError> {
+    check_layer(p)?;
     match &p.friction {
         FrictionLaw::Coulomb { .. } => check_coulomb(p),
         FrictionLaw::Linear(t) | FrictionLaw::Rational(t) | FrictionLaw::Exponential(t) => {
             check_sabsh("friction.sabsh1_mm_s", t.sabsh1_mm_s, ("friction.f1", t.f1))?;
             check_sabsh("friction.sabsh2_mm_s", t.sabsh2_mm_s, ("friction.f2", t.f2))
         }
+    }
+}
+
+/// An interface layer (M = 4) in shifts and steady rolling only: in transient rolling CONTACT
+/// takes the layer's previous displacement at the element's own index on the moved grid
+/// (`m_stang.f90`), not with the material as this project does, so the deck would compute another
+/// problem.
+fn check_layer(p: &Problem) -> Result<(), InputError> {
+    let rolls_transient = p.rolling.motion == Motion::Rolling && p.loading.is_transient();
+    match p.material.layer {
+        Some(l) if rolls_transient => Err(InputError::new(
+            "material.layer_g_mpa",
+            format!("an interface layer (layer_g_mpa = {}) in transient rolling", l.g_mpa),
+            "an interface layer in steady rolling or shifts (CONTACT's transient rolling with M = 4 keeps the layer's displacement on the moved grid, not with the material)",
+        )),
+        _ => Ok(()),
     }
 }
 
@@ -301,10 +322,12 @@ fn ldcmze(p: &Problem, case: &Case, out: &mut String) {
     let v = if p.friction_rows.is_some() { "3" } else { "" };
     // C = 2: uniform elements, C = 3: bilinear tractions (`[contact_solver] influence`).
     let c = if p.contact_solver.influence == Basis::Bilinear { 3 } else { 2 };
+    // M = 4: the interface layer, in every case (CONTACT reads M in each; GG3.. with the material).
+    let m = if p.material.layer.is_some() { 4 } else { 0 };
     let ldc = match (case.first, case.dq_again) {
-        (true, _) => format!("{v}{law}2{c}020"),
+        (true, _) => format!("{v}{law}2{c}{m}20"),
         (false, again) => format!(
-            "{v}{}0{}0{}0",
+            "{v}{}0{}{m}{}0",
             if case.read_mu { law } else { 1 },
             if again { c } else { 0 },
             if case.new_h { 2 } else { 0 }
@@ -431,6 +454,10 @@ fn kinematics_and_material(p: &Problem, rolling: Option<(f64, f64, f64)>, out: &
         None => ([m.poisson; 2], [m.g_mpa; 2]),
     };
     let _ = writeln!(out, "  {:?}   {:?}   {:?}   {:?}    POISS 1,2,  GG 1,2", poiss[0], poiss[1], gg[0], gg[1]);
+    // M = 4: the elastic layer (TAU_C0 = 0: no plasticity, K_TAU unused).
+    if let Some(l) = m.layer {
+        let _ = writeln!(out, "  {:?}   {:?}   0.0   0.0    GG3, LAYTHK, TAU_C0, K_TAU", l.g_mpa, l.thickness_mm);
+    }
 }
 
 /// The first case's kinematics, material and geometry lines.

@@ -17,6 +17,27 @@ pub struct Material {
     /// (`[material] g1_mpa` … `poisson2`); `None`: the combined constants only.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bodies: Option<Bodies>,
+    /// An interface layer between the bodies (`[material] layer_g_mpa`, `layer_thickness_mm`;
+    /// CONTACT's M = 4); `None`: the bodies touch.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub layer: Option<Layer>,
+}
+
+/// CONTACT's interfacial (third-body) layer (M = 4, user guide "Interfacial layer of
+/// contaminants"): sheared elastically, u = p h3 / G3, in series with the half-spaces.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Layer {
+    /// The layer's shear modulus G3 [MPa] (CONTACT's GG3).
+    pub g_mpa: f64,
+    /// The layer's thickness h3 [mm] (CONTACT's LAYTHK).
+    pub thickness_mm: f64,
+}
+
+impl Layer {
+    /// The layer's tangential flexibility h3 / G3 [mm/MPa] (CONTACT's FLX of M = 4, `m_sinput.f90`).
+    pub fn flexibility_mm_per_mpa(&self) -> f64 {
+        self.thickness_mm / self.g_mpa
+    }
 }
 
 /// The elastic constants of each body: shear modulus [MPa] and Poisson's ratio of body 1 (the
@@ -34,7 +55,7 @@ fn is_zero(v: &f64) -> bool {
 impl Material {
     /// From G and ν; E follows as `2 G (1 + ν)`.
     pub fn from_g(g_mpa: f64, poisson: f64) -> Self {
-        Self { g_mpa, poisson, e_mpa: 2.0 * g_mpa * (1.0 + poisson), k: 0.0, bodies: None }
+        Self { g_mpa, poisson, e_mpa: 2.0 * g_mpa * (1.0 + poisson), k: 0.0, bodies: None, layer: None }
     }
 
     /// From the two bodies' constants, combined as CONTACT combines them ([`combine_bodies`]),
@@ -44,6 +65,11 @@ impl Material {
         Self { k: m.k, bodies: Some(bodies), ..Self::from_g(m.g_mpa, m.poisson) }
     }
 
+    /// The interface layer's tangential flexibility h3/G3 [mm/MPa], 0 without a layer.
+    pub fn layer_flexibility_mm_per_mpa(&self) -> f64 {
+        self.layer.map_or(0.0, |l| l.flexibility_mm_per_mpa())
+    }
+
     /// Whether the bodies' normal and tangential problems couple (K ≠ 0).
     pub fn coupled(&self) -> bool {
         self.k != 0.0
@@ -51,7 +77,7 @@ impl Material {
 
     /// From E and ν; G follows as `E / (2 (1 + ν))`.
     pub fn from_e(e_mpa: f64, poisson: f64) -> Self {
-        Self { g_mpa: e_mpa / (2.0 * (1.0 + poisson)), poisson, e_mpa, k: 0.0, bodies: None }
+        Self { g_mpa: e_mpa / (2.0 * (1.0 + poisson)), poisson, e_mpa, k: 0.0, bodies: None, layer: None }
     }
 
     /// Two-body contact modulus E* [MPa] with `1/E* = 2 (1 − ν²) / E` (two identical bodies).

@@ -136,15 +136,17 @@ fn material_of(scene: &Scene) -> Result<Material, InputError> {
 
 /// A `[material]` table's material from G or E (or both, consistent within [`E_G_TOLERANCE`]) and ν.
 pub fn material_of_spec(m: &crate::scene::MaterialSpec) -> Result<Material, InputError> {
-    if let Some(bodies) = m.bodies {
-        return Ok(Material::from_bodies(bodies));
-    }
-    match (m.g_mpa, m.e_mpa) {
-        (Some(g), Some(e)) => material_of_g_and_e(g, e, m.poisson),
-        (Some(g), None) => Ok(Material::from_g(g, m.poisson)),
-        (None, Some(e)) => Ok(Material::from_e(e, m.poisson)),
-        (None, None) => Err(InputError::new("material.g_mpa", "missing", "g_mpa or e_mpa")),
-    }
+    let elastic = if let Some(bodies) = m.bodies {
+        Material::from_bodies(bodies)
+    } else {
+        match (m.g_mpa, m.e_mpa) {
+            (Some(g), Some(e)) => material_of_g_and_e(g, e, m.poisson)?,
+            (Some(g), None) => Material::from_g(g, m.poisson),
+            (None, Some(e)) => Material::from_e(e, m.poisson),
+            (None, None) => return Err(InputError::new("material.g_mpa", "missing", "g_mpa or e_mpa")),
+        }
+    };
+    Ok(Material { layer: m.layer, ..elastic })
 }
 
 /// A material given both G and E: they must agree, E = 2G(1 + ν) within [`E_G_TOLERANCE`].

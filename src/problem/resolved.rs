@@ -39,6 +39,10 @@ pub struct ResolvedScene {
     /// absent for quasi-identical bodies (K = 0).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub kalker_k: Option<f64>,
+    /// The interface layer between the bodies (`[material] layer_g_mpa`, `layer_thickness_mm`;
+    /// absent: none).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub layer: Option<crate::physics::material::Layer>,
     pub c11: f64,
     pub c22: f64,
     pub c23: f64,
@@ -165,6 +169,7 @@ impl ResolvedScene {
             e_mpa: p.material.e_mpa,
             poisson: p.material.poisson,
             kalker_k: p.material.coupled().then_some(p.material.k),
+            layer: p.material.layer,
             c11: p.coefficients.c11,
             c22: p.coefficients.c22,
             c23: p.coefficients.c23,

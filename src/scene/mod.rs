@@ -31,6 +31,8 @@ pub struct MaterialSpec {
     /// The two bodies' own constants (`g1_mpa`, `poisson1`, `g2_mpa`, `poisson2`); then `g_mpa`,
     /// `e_mpa` and `poisson` are absent and follow from them (`poisson` holds the combined ν).
     pub bodies: Option<crate::physics::material::Bodies>,
+    /// An interface layer between the bodies (`layer_g_mpa`, `layer_thickness_mm`; CONTACT's M = 4).
+    pub layer: Option<crate::physics::material::Layer>,
 }
 
 /// The creepage history kinds.

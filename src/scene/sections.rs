@@ -284,9 +284,10 @@ fn ellipse(c: &mut Section) -> Result<GeometrySpec, InputError> {
 /// g2_mpa, poisson2 (dissimilar bodies, [`bodies`]).
 pub fn material(top: &mut Section) -> Result<MaterialSpec, InputError> {
     let mut m = top.table("material")?;
+    let layer = layer(&mut m)?;
     if let Some(spec) = bodies(&mut m)? {
         m.finish()?;
-        return Ok(spec);
+        return Ok(MaterialSpec { layer, ..spec });
     }
     let g_mpa = m.opt_f64("g_mpa", Range::new(0.0, false, 1e7, true))?;
     let e_mpa = m.opt_f64("e_mpa", Range::new(0.0, false, 1e7, true))?;
@@ -299,7 +300,29 @@ pub fn material(top: &mut Section) -> Result<MaterialSpec, InputError> {
         ));
     }
     m.finish()?;
-    Ok(MaterialSpec { g_mpa, e_mpa, poisson, bodies: None })
+    Ok(MaterialSpec { g_mpa, e_mpa, poisson, bodies: None, layer })
+}
+
+/// The keys of an interface layer, given together.
+const LAYER_KEYS: [&str; 2] = ["layer_g_mpa", "layer_thickness_mm"];
+
+/// An interface layer (CONTACT's M = 4: GG3, LAYTHK): both keys or neither. A thickness of 0 is
+/// no layer, as CONTACT's (`use_3bl` needs LAYTHK >= 1e-10).
+fn layer(m: &mut Section) -> Result<Option<crate::physics::material::Layer>, InputError> {
+    let given: Vec<&str> = LAYER_KEYS.iter().copied().filter(|k| m.has(k)).collect();
+    if given.is_empty() {
+        return Ok(None);
+    }
+    if let Some(missing) = LAYER_KEYS.iter().find(|k| !given.contains(k)) {
+        return Err(InputError::new(
+            m.field(missing),
+            "missing",
+            format!("both of {} with {}", LAYER_KEYS.join(", "), given.join(", ")),
+        ));
+    }
+    let g_mpa = m.f64("layer_g_mpa", Range::new(0.0, false, 1e12, true))?;
+    let thickness_mm = m.f64("layer_thickness_mm", Range::new(0.0, true, 1e3, true))?;
+    Ok((thickness_mm > 0.0).then_some(crate::physics::material::Layer { g_mpa, thickness_mm }))
 }
 
 /// The keys of the two bodies' constants, in the order they are named.
@@ -340,7 +363,7 @@ fn bodies(m: &mut Section) -> Result<Option<MaterialSpec>, InputError> {
             "bodies whose combined Poisson's ratio is below 0.5 (both at 0.5 is an incompressible pair: give g_mpa and poisson)",
         ));
     }
-    Ok(Some(MaterialSpec { g_mpa: None, e_mpa: None, poisson: combined.poisson, bodies: Some(bodies) }))
+    Ok(Some(MaterialSpec { g_mpa: None, e_mpa: None, poisson: combined.poisson, bodies: Some(bodies), layer: None }))
 }
 
 /// `[rolling]` (optional): the speed [mm/s] (default 1000), the Courant number (default 1), the

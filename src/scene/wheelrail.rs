@@ -299,6 +299,13 @@ impl WheelRailScene {
         let (rail, placement, cant_rad, rail_deviation) = rail(&mut top, dir)?;
         let (wheel, fbd, fbp, radius) = wheel(&mut top, dir)?;
         let material = super::sections::material(&mut top)?;
+        if material.layer.is_some() {
+            return Err(InputError::new(
+                "material.layer_g_mpa",
+                "an interface layer in a wheel–rail scene",
+                "no layer: the wheel–rail scene solves elastic bodies that touch (give the layer in a module-3 scene)",
+            ));
+        }
         let (vertical, longitudinal, cases) = super::wheelrail_cases::read(&mut top, dir, radius)?;
         super::wheelrail_cases::check_longitudinal(
             longitudinal,

@@ -216,6 +216,13 @@ fn check_model(problem: &Problem, m: &ModelDef, shifts: bool) -> Result<(), Inpu
             format!("dissimilar bodies only with the exact model ({}), which couples the normal and tangential problems (leave {} out of this scene: it takes G and poisson only)", contact::NAME, m.name),
         ));
     }
+    if problem.material.layer.is_some() && m.name != contact::NAME {
+        return Err(InputError::new(
+            "material.layer_g_mpa",
+            format!("an interface layer with {:?}", m.name),
+            format!("an interface layer only with the exact model ({}), which adds its flexibility to the half-spaces' influence (leave {} out of this scene)", contact::NAME, m.name),
+        ));
+    }
     if !problem.normal.is_default() && m.name != contact::NAME {
         return Err(InputError::new(
             "normal.pressure",

@@ -352,14 +352,22 @@ fn catt_to_cart_maps_the_moving_window_to_its_union_grid() {
 fn tractcurv_imports_the_coulomb_creep_curve_as_one_sweep() {
     let imported = import_deck("tractcurv.inp");
     let (ok, no) = split(&imported);
-    // 61-120: CONTACT's FASTSIM (M = 3, issue 46), two sweeps of their own.
-    assert_eq!(ok, (1..=30).chain(61..=120).collect::<Vec<_>>());
-    assert_eq!(no, (31..=60).collect::<Vec<_>>());
-    // The second series: its falling law (L = 4) is imported (issue 33), its interfacial layer is not.
-    let case31 = &imported.statuses[30].refused;
-    assert!(case31.iter().any(|r| r.starts_with("M = 4: material models other than elastic")), "{case31:?}");
-    assert!(!case31.iter().any(|r| r.starts_with("L (in force)")), "{case31:?}");
-    assert_eq!(imported.scenes.len(), 3);
+    // 31-60: the interface layer (M = 4, issue 46) with a falling law (L = 4, issue 33); 61-120:
+    // CONTACT's FASTSIM (M = 3, issue 46); each series a sweep of its own.
+    assert_eq!(ok, (1..=120).collect::<Vec<_>>());
+    assert!(no.is_empty(), "{no:?}");
+    let case31 = &imported.statuses[30].notes;
+    assert!(
+        case31.iter().any(|r| r.starts_with("M = 4, GG3 = 8200, LAYTHK = 1.25: an elastic interface layer")),
+        "{case31:?}"
+    );
+    assert_eq!(imported.scenes.len(), 4);
+    let p = scene_of(&imported, "tractcurv_31");
+    let layer = creepbench::physics::material::Layer { g_mpa: 8200.0, thickness_mm: 1.25 };
+    assert_eq!((p.material.layer, p.material.g_mpa), (Some(layer), 82000.0));
+    assert!(p.friction.is_falling());
+    assert_eq!(p.loading.rows().count(), 30);
+    assert_eq!(scene_of(&imported, "tractcurv_1").material.layer, None);
     let p = scene_of(&imported, "tractcurv_1");
     let r = ResolvedScene::of(&p, &p.solvers);
     assert_eq!((r.fn_n, r.mu, r.mx, r.my, r.grid_scale, r.v_mm_s), (106700.0, 0.33, 48, 44, 1.1, 10000.0));
@@ -643,4 +651,32 @@ fn an_absent_falling_term_takes_contacts_smallest_sabsh() {
         assert_eq!([t.fkin, t.f1, t.sabsh1_mm_s, t.f2], law, "{values}");
         assert!(t.f2 == 0.0 || t.sabsh2_mm_s == 1e-4, "{values}: {t:?}");
     }
+}
+
+/// The interface layer's refusals: plasticity in the layer (TAU_C0 > 0) and transient rolling
+/// (T = 2, where CONTACT does not carry the layer's displacement with the material); the elastic
+/// layer in steady rolling imports, a LAYTHK below 1e-10 as no layer (CONTACT's `use_3bl`).
+#[test]
+fn an_elasto_plastic_layer_and_a_layer_in_transient_rolling_are_refused() {
+    let deck = |tang: &str, layer: &str| {
+        format!(
+            " 3 MODULE\n  20{tang}100  P-B-T-N-F-S\n  022420  L-D-C-M-Z-E\n 0000341  H-G-I-A-O-W-R\n   80 200 5 1 1e-6  MAXGS\n 106700. 0.001 0.0 0.0  FN, CKSI, CETA, CPHI\n   0.33 0.33  FSTAT, FKIN\n   0.0 0.5 10000.  CHI, DQ, VELOC\n   0.28 0.28 82000. 82000.  POISS, GG\n   {layer}  GG3, LAYTHK, TAU_C0, K_TAU\n   -2  IPOTCN\n   48 44 0.0008 0.5 1.1  MX, MY, A1, AOB, SCALE\n 0 MODULE\n"
+        )
+    };
+    let import = |tang: &str, layer: &str| import_text("layer.inp", "layer", &deck(tang, layer)).unwrap();
+    let plastic = import("3", "8200. 1.25 200. 0.");
+    assert!(!plastic.statuses[0].supported());
+    let why = &plastic.statuses[0].refused;
+    assert!(
+        why.iter().any(|r| r.starts_with("M = 4, TAU_C0 = 200, K_TAU = 0: an elasto-plastic interface layer")),
+        "{why:?}"
+    );
+    let transient = import("2", "8200. 1.25 0. 0.");
+    let why = &transient.statuses[0].refused;
+    assert!(why.iter().any(|r| r.starts_with("M = 4, T = 2: an interface layer in transient rolling")), "{why:?}");
+    let elastic = import("3", "8200. 1.25 0. 0.");
+    assert!(elastic.statuses[0].supported(), "{:?}", elastic.statuses[0]);
+    assert!(elastic.scenes[0].files[0].1.contains("layer_thickness_mm = 1.25"), "{}", elastic.scenes[0].files[0].1);
+    let none = import("3", "8200. 1e-11 0. 0.");
+    assert!(!none.scenes[0].files[0].1.contains("layer_g_mpa"), "{}", none.scenes[0].files[0].1);
 }

@@ -32,6 +32,7 @@ mod gate_outputs;
 mod gate_promises;
 mod gate_safety;
 mod gate_sturdy;
+mod interface_layer;
 mod layering;
 mod linear_model;
 mod nonhertz;

@@ -117,9 +117,20 @@ pub struct State {
     /// K0_MF, ALFAMF, BETAMF of the simplified theories (M = 3, 5) as last read (CONTACT's
     /// defaults 1, 1, 1 before: no slope reduction).
     pub slope_mf: Option<[f64; 3]>,
+    /// GG3 [N/mm²], LAYTHK [mm], TAU_C0 [N/mm²], K_TAU [N/mm³] of the interface layer (M = 4) as
+    /// last read, TAU_C0 ≥ 1e10 read as 0 (no plasticity) as CONTACT does (`m_sinput.f90`); a case
+    /// with M = 4 takes them.
+    pub layer: Option<[f64; 4]>,
+    /// Whether the case's M is 4 (CONTACT reads M in every case; its layer values persist).
+    pub m4: bool,
 }
 
 impl State {
+    /// GG3, LAYTHK, TAU_C0, K_TAU of the interface layer in force: M = 4 with the values last read.
+    pub fn layer_in_force(&self) -> Option<[f64; 4]> {
+        self.layer.filter(|_| self.m4)
+    }
+
     /// The outer iterations CONTACT makes for dissimilar bodies (K ≠ 0): MAXOUT as read, at least
     /// 1; none read: 10 (`m_sinput.f90` warns at MAXOUT ≤ 1 with K ≠ 0 and keeps it).
     pub fn max_outer(&self) -> usize {
@@ -331,6 +342,7 @@ impl CaseReader<'_> {
     /// The case after its MODULE line; `state` is updated with every value read.
     fn case(&mut self, state: &mut State) -> Result<Digits, DeckError> {
         let d = self.digits()?;
+        state.m4 = d.m == 4;
         if d.x == 1 {
             self.lx.group("debug output P-S-F-L-C-I-N", &[Kind::Int], (1, Kind::Int))?;
         }
@@ -524,7 +536,11 @@ impl CaseReader<'_> {
                 let v = self.reals("K0_MF, ALFAMF, BETAMF", 3)?;
                 state.slope_mf = Some([v[0], v[1], v[2]]);
             }
-            4 => drop(self.reals("GG3, LAYTHK, TAU_C0, K_TAU", 4)?),
+            4 => {
+                let v = self.reals("GG3, LAYTHK, TAU_C0, K_TAU", 4)?;
+                let tau_c0 = if v[2] >= 1e10 { 0.0 } else { v[2] };
+                state.layer = Some([v[0], v[1], tau_c0, v[3]]);
+            }
             _ => {}
         }
         Ok(())

@@ -148,8 +148,35 @@ pub const FEATURES: &[Feature] = &[
         name: "material models other than elastic",
         control: "M",
         supported: false,
-        reason: "supported: M = 0 (elastic half-spaces), M = 3 (CONTACT's FASTSIM, also with FX prescribed, F = 1) and M = 5 (its modified FaStrip, with Coulomb friction rolling along +x) in steady rolling (T = 3) with the creepages given (F = 0), one friction coefficient (V = 0) and Hertz's pressure (B = 2, 3); viscoelastic (1), the simplified theory with one flexibility (2), the original FaStrip (6, 7) and interface layers (4) are not",
-        used: |c| digit("M", c.digits.m, c.digits.m != 0 && contact_simplified(c).is_none()),
+        reason: "supported: M = 0 (elastic half-spaces), M = 4 (an elastic interface layer, its own rows), M = 3 (CONTACT's FASTSIM, also with FX prescribed, F = 1) and M = 5 (its modified FaStrip, with Coulomb friction rolling along +x) in steady rolling (T = 3) with the creepages given (F = 0), one friction coefficient (V = 0) and Hertz's pressure (B = 2, 3); viscoelastic (1), the simplified theory with one flexibility (2) and the original FaStrip (6, 7) are not",
+        used: |c| digit("M", c.digits.m, !matches!(c.digits.m, 0 | 4) && contact_simplified(c).is_none()),
+    },
+    Feature {
+        name: "an elastic interface layer",
+        control: "M, GG3, LAYTHK",
+        supported: true,
+        reason: "imported as [material] layer_g_mpa = GG3, layer_thickness_mm = LAYTHK (none where LAYTHK < 1e-10, as CONTACT): the exact solver adds the layer's flexibility LAYTHK/GG3 to the half-spaces' tangential self-influence, carried with the material (docs/models.md, \"Interface layer\")",
+        used: |c| {
+            let [gg3, laythk, ..] = layer_in_force(c)?;
+            Some(format!("M = 4, GG3 = {gg3}, LAYTHK = {laythk}"))
+        },
+    },
+    Feature {
+        name: "an elasto-plastic interface layer",
+        control: "M, TAU_C0, K_TAU",
+        supported: false,
+        reason: "supported: TAU_C0 = 0 (an elastic layer); the layer's plastic slip where the traction reaches TAU_C0 + K_TAU u_pl is not modelled",
+        used: |c| {
+            let [_, _, tau_c0, k_tau] = layer_in_force(c)?;
+            (tau_c0 > 1e-10).then(|| format!("M = 4, TAU_C0 = {tau_c0}, K_TAU = {k_tau}"))
+        },
+    },
+    Feature {
+        name: "an interface layer in transient rolling",
+        control: "M, T",
+        supported: false,
+        reason: "supported: M = 4 in shifts (T = 1) and steady rolling (T = 3); in transient rolling CONTACT takes the layer's previous displacement at the element's own index on the moved grid (`m_stang.f90`: the shifted influence functions with the layer's FLX on the element itself), where this project carries it with the material",
+        used: |c| layer_in_force(c).filter(|_| c.digits.t == 2).map(|_| "M = 4, T = 2".to_string()),
     },
     Feature {
         name: "CONTACT's modified FaStrip (strip theory with the simplified theory)",
@@ -310,6 +337,11 @@ pub fn contact_fastsim(c: &Case3) -> bool {
 pub fn contact_fastrip(c: &Case3) -> bool {
     let along_x = super::scene::chi_deg(c.state.chi_rad) == 0.0;
     c.digits.m == 5 && simplified_setting(c, 0) && c.state.friction_law == 0 && along_x
+}
+
+/// GG3, LAYTHK, TAU_C0, K_TAU of the case's interface layer: M = 4 with the values last read.
+pub fn layer_in_force(c: &Case3) -> Option<[f64; 4]> {
+    c.state.layer_in_force()
 }
 
 /// The model that runs a case of CONTACT's simplified theories, if the import carries it.

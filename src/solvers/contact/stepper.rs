@@ -182,12 +182,15 @@ fn tangential_at(
     y: &[f64],
 ) -> Result<TangentialSolver, ContactError> {
     let (g, m, basis) = (&p.grid, &p.material, p.contact_solver.influence);
+    let (dq, flx) = (p.rolling.dq_mm, m.layer_flexibility_mm_per_mpa());
     if chi_deg == 0.0 {
-        let ks = Kernel::with_basis(g.mx, g.my, (g.dx_mm, g.dy_mm), (m.g_mpa, m.poisson), p.rolling.dq_mm, basis)?;
+        let ks = Kernel::with_basis(g.mx, g.my, (g.dx_mm, g.dy_mm), (m.g_mpa, m.poisson), dq, basis)?
+            .with_layer(flx, [dq, 0.0])?;
         return TangentialSolver::new(k0, &ks, x, y);
     }
     let towards = direction::towards(chi_deg);
-    let ks = Kernel::rolling(g.mx, g.my, (g.dx_mm, g.dy_mm), (m.g_mpa, m.poisson), (p.rolling.dq_mm, towards), basis)?;
+    let ks = Kernel::rolling(g.mx, g.my, (g.dx_mm, g.dy_mm), (m.g_mpa, m.poisson), (dq, towards), basis)?
+        .with_layer(flx, [dq * towards[0], dq * towards[1]])?;
     TangentialSolver::rolling_towards(k0, &ks, towards, x, y)
 }
 
@@ -327,8 +330,10 @@ fn solver_for<'s>(
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let (g, m) = (&p.grid, &p.material);
     let basis = p.contact_solver.influence;
+    // An interface layer (M = 4) adds its flexibility where the material was ([`Kernel::with_layer`]).
     let kernel = |shift: f64| {
         Kernel::with_basis(g.mx, g.my, (g.dx_mm, g.dy_mm), (m.g_mpa, m.poisson), shift, basis)
+            .and_then(|k| k.with_layer(m.layer_flexibility_mm_per_mpa(), [shift, 0.0]))
             .map_err(ContactRunError::Kernel)
     };
     let k0 = kernel(0.0)?;

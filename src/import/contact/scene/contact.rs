@@ -67,6 +67,11 @@ pub(super) fn write(src: &Source, draft: &mut Draft) -> Result<(), InputError> {
         ],
         false => vec![("g_mpa", Value::Float(m.g_mpa)), ("poisson", Value::Float(m.poisson))],
     };
+    let mut material = material;
+    // M = 4: the elastic interface layer (none where LAYTHK < 1e-10: CONTACT's `use_3bl`).
+    if let Some([gg3, laythk, ..]) = s.layer_in_force().filter(|l| l[1] >= 1e-10) {
+        material.extend([("layer_g_mpa", Value::Float(gg3)), ("layer_thickness_mm", Value::Float(laythk))]);
+    }
     draft.insert("material", table(material));
     draft.insert("grid", table(grid));
     Ok(())

@@ -66,7 +66,7 @@ pub(super) fn falling(s: &State) -> bool {
 fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static str> {
     let coulomb = a.friction_law == 0 && b.friction_law == 0;
     let coupled = crate::physics::material::combine_bodies(a.poiss, a.gg_mpa).k != 0.0;
-    let pairs: [(&'static str, bool); 13] = [
+    let pairs: [(&'static str, bool); 14] = [
         ("FN", load_varies || a.pen_or_fn == b.pen_or_fn),
         // Coulomb: FSTAT alone counts (CONTACT overwrites FKIN with it).
         (
@@ -82,6 +82,7 @@ fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static 
         // or its courant column; not both in one history, `build`).
         ("CHI, DQ", load_varies || (a.chi_rad, a.dq_mm) == (b.chi_rad, b.dq_mm)),
         ("POISS, GG", (a.poiss, a.gg_mpa) == (b.poiss, b.gg_mpa)),
+        ("the interface layer (M = 4: GG3, LAYTHK, TAU_C0, K_TAU)", a.layer_in_force() == b.layer_in_force()),
         ("MAXOUT of dissimilar bodies", !coupled || a.max_outer() == b.max_outer()),
         (
             "the potential contact (IPOTCN and its line)",

@@ -908,3 +908,5 @@ fn fallback(converged: bool) -> Termination {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_layer;

@@ -168,7 +168,7 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         nominal_radius_mm: wheelset.nomrad_mm,
         mu,
         mu_variation,
-        material: MaterialSpec { g_mpa: Some(m.g_mpa), e_mpa: None, poisson: m.poisson, bodies: None },
+        material: MaterialSpec { g_mpa: Some(m.g_mpa), e_mpa: None, poisson: m.poisson, bodies: None, layer: None },
         dx_mm: disc.dx_mm,
         ds_mm: disc.ds_mm,
         // CONTACT takes any A_SEP; contact angles (in (−π/2, π/2)) never differ by π or more.
