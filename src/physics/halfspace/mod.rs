@@ -8,7 +8,10 @@ pub mod blend;
 pub mod convolution;
 pub mod coupling;
 pub mod influence;
+pub mod invariants;
+pub mod jet;
 pub mod normal;
+pub mod stress;
 
 /// Errors of the contact core; no function of these modules panics on bad numbers.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
