@@ -4,9 +4,10 @@
 //! pn = 1 alone, this project's run of the same deck): every printed number of all 6633 points,
 //! in units of its last printed digit.
 
-use crate::common::root;
+use crate::common::{root, tempdir};
 use creepbench::physics::halfspace::invariants::invariants;
 use creepbench::physics::halfspace::stress::{elastic_field, LoadedRectangle};
+use std::process::Command;
 
 /// One printed number and the unit of its last digit.
 #[derive(Clone, Copy)]
@@ -79,11 +80,11 @@ const SURFACE_NOISE: f64 = 1e-5;
 /// below 1e-13 absolute are neither code's digits (e.g. σyz = 3.1276e-10 printed, 3.12769e-10 ours).
 const ROUND_OFF: f64 = 1e-13;
 
-fn compare(path: &str, px: f64) -> Worst {
+fn compare(path: &str, ours: &dyn Fn(usize, [f64; 3]) -> [f64; 11]) -> Worst {
     let mut w = Worst { below_digits: 0.0, surface_digits: 0.0, surface_abs: 0.0, points: 0 };
-    for r in rows(path) {
+    for (n, r) in rows(path).iter().enumerate() {
         let p = [r[0].value, r[1].value, r[2].value];
-        for (k, (c, o)) in r[3..].iter().zip(ours(px, p)).enumerate() {
+        for (k, (c, o)) in r[3..].iter().zip(ours(n, p)).enumerate() {
             let d = (o - c.value).abs();
             let digits = if d <= ROUND_OFF { 0.0 } else { d / c.unit };
             if std::env::var("SUBS_DEBUG").is_ok() && digits > 0.5 && (p[2] > 0.0 || d > SURFACE_NOISE) {
@@ -103,8 +104,8 @@ fn compare(path: &str, px: f64) -> Worst {
     w
 }
 
-fn check(path: &str, px: f64, label: &str) {
-    let w = compare(path, px);
+fn check(path: &str, ours: &dyn Fn(usize, [f64; 3]) -> [f64; 11], label: &str) {
+    let w = compare(path, ours);
     eprintln!(
         "{label}: {} points; below the surface worst {:.3} printed digits; on the surface worst |diff| {:.2e} ({:.3} digits beyond {SURFACE_NOISE:e})",
         w.points, w.below_digits, w.surface_abs, w.surface_digits
@@ -116,10 +117,81 @@ fn check(path: &str, px: f64, label: &str) {
 
 #[test]
 fn stress_matches_contact_subsurf_case_1_pressure() {
-    check("reference/contact_subsurf/subsurf.0001.subs", 0.0, "subsurf case 1");
+    check("reference/contact_subsurf/subsurf.0001.subs", &|_, p| ours(0.0, p), "subsurf case 1");
 }
 
 #[test]
 fn stress_matches_contact_subsurf_case_2_pressure_and_traction() {
-    check("reference/contact_public/examples/subsurf.ref_subs", 0.999, "subsurf case 2");
+    check("reference/contact_public/examples/subsurf.ref_subs", &|_, p| ours(0.999, p), "subsurf case 2");
+}
+
+fn creepbench(dir: &std::path::Path, args: &[&str], threads: &str) {
+    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(dir)
+        .env("RAYON_NUM_THREADS", threads)
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+}
+
+/// The columns of CONTACT's `.subs` (from UX on) out of a row of `<solver>_stress.csv`.
+fn subs_columns(line: &str) -> ([f64; 3], [f64; 11]) {
+    let v: Vec<f64> = line.split(',').map(|s| s.parse().unwrap()).collect();
+    // step, block, x, y, z, ux, uy, uz, sxx, syy, szz, sxy, syz, sxz, shyd, svm, ...
+    let p = [v[2], v[3], v[4]];
+    (p, [v[5], v[6], v[7], v[14], v[15], v[8], v[11], v[13], v[9], v[12], v[10]])
+}
+
+/// `import contact` of subsurf.inp writes `[stress]` (both blocks, the case's step); `simulate`
+/// solves each case with the exact solver and writes `contact_stress.csv`, which matches CONTACT's
+/// `.subs` files as the physics alone does (the solved tractions: pn = 1, px = 0.999 on body 1),
+/// with the same bytes on one thread and two.
+#[test]
+fn stress_import_subsurf_and_simulate_matches_contact() {
+    let dir = tempdir("stress_import_subsurf");
+    let deck = root().join("reference/contact_public/examples/subsurf.inp");
+    creepbench(&dir, &["import", "contact", deck.to_str().unwrap(), "--out", "deck"], "2");
+    let scene2 = std::fs::read_to_string(dir.join("deck/subsurf_2.toml")).unwrap();
+    assert!(scene2.contains("[stress]") && scene2.contains("[[stress.block]]"), "{scene2}");
+    for (case, reference) in
+        [(1, "reference/contact_subsurf/subsurf.0001.subs"), (2, "reference/contact_public/examples/subsurf.ref_subs")]
+    {
+        let scene = format!("deck/subsurf_{case}.toml");
+        creepbench(&dir, &["simulate", &scene, "--out", "one"], "1");
+        creepbench(&dir, &["simulate", &scene, "--out", "two"], "2");
+        let file = format!("subsurf_{case}/contact_stress.csv");
+        let text = std::fs::read_to_string(dir.join("one").join(&file)).unwrap();
+        assert_eq!(
+            text,
+            std::fs::read_to_string(dir.join("two").join(&file)).unwrap(),
+            "thread count changed the bytes"
+        );
+        let rows: Vec<([f64; 3], [f64; 11])> = text.lines().skip(1).map(subs_columns).collect();
+        let ours = |n: usize, p: [f64; 3]| {
+            assert_eq!(rows[n].0, p, "point {n}");
+            rows[n].1
+        };
+        assert_eq!(rows.len(), 15 + 21 * 21 * 15);
+        check(reference, &ours, &format!("simulate subsurf_{case}"));
+    }
+}
+
+/// `export contact` writes the S digit (3 at the stress step, with MATFIL, OUTPUT and each block
+/// as ISUBS = 9) and `import contact` of that deck gives back the same `[stress]`.
+#[test]
+fn stress_export_writes_the_points_back() {
+    let dir = tempdir("stress_export_subsurf");
+    let deck = root().join("reference/contact_public/examples/subsurf.inp");
+    creepbench(&dir, &["import", "contact", deck.to_str().unwrap(), "--out", "deck"], "2");
+    creepbench(&dir, &["export", "contact", "deck/subsurf_2.toml", "--out", "exp"], "2");
+    let inp = std::fs::read_to_string(dir.join("exp/subsurf_2.inp")).unwrap();
+    assert!(inp.lines().any(|l| l.trim_start().starts_with("203113 ")), "{inp}");
+    assert_eq!(inp.matches("ISUBS").count(), 3, "{inp}");
+    creepbench(&dir, &["import", "contact", "exp/subsurf_2.inp", "--out", "again"], "2");
+    let stress = |path: &str| {
+        let text = std::fs::read_to_string(dir.join(path)).unwrap();
+        text[text.find("[stress]").unwrap()..].to_string()
+    };
+    assert_eq!(stress("deck/subsurf_2.toml"), stress("again/subsurf_2_1.toml"));
 }

@@ -126,10 +126,10 @@ impl Potentials {
         for r in rects.iter().filter(|r| r.traction_mpa.iter().any(|&t| t != 0.0)) {
             let d = rectangle_derivs(r, p);
             let [tx, ty, tn] = r.traction_mpa;
-            for k in 0..125 {
-                out.f[k] += tx * d[k];
-                out.g[k] += ty * d[k];
-                out.h[k] += tn * d[k];
+            for (k, dk) in d.iter().enumerate() {
+                out.f[k] += tx * dk;
+                out.g[k] += ty * dk;
+                out.h[k] += tn * dk;
             }
         }
         out
