@@ -1,5 +1,5 @@
 //! The subsurface stresses (src/physics/halfspace/stress.rs) against CONTACT's printed `.subs`
-//! files of its example `subsurf` (reference/contact_public/examples/subsurf.ref_subs: case 2,
+//! files of its example `subsurf` (reference/contact_subsurf/subsurf.ref_subs: case 2,
 //! pn = 1 and px = 0.999 on the unit square; reference/contact_subsurf/subsurf.0001.subs: case 1,
 //! pn = 1 alone, this project's run of the same deck): every printed number of all 6633 points,
 //! in units of its last printed digit.
@@ -122,7 +122,7 @@ fn stress_matches_contact_subsurf_case_1_pressure() {
 
 #[test]
 fn stress_matches_contact_subsurf_case_2_pressure_and_traction() {
-    check("reference/contact_public/examples/subsurf.ref_subs", &|_, p| ours(0.999, p), "subsurf case 2");
+    check("reference/contact_subsurf/subsurf.ref_subs", &|_, p| ours(0.999, p), "subsurf case 2");
 }
 
 fn creepbench(dir: &std::path::Path, args: &[&str], threads: &str) {
@@ -150,12 +150,12 @@ fn subs_columns(line: &str) -> ([f64; 3], [f64; 11]) {
 #[test]
 fn stress_import_subsurf_and_simulate_matches_contact() {
     let dir = tempdir("stress_import_subsurf");
-    let deck = root().join("reference/contact_public/examples/subsurf.inp");
+    let deck = root().join("reference/contact_subsurf/subsurf.inp");
     creepbench(&dir, &["import", "contact", deck.to_str().unwrap(), "--out", "deck"], "2");
     let scene2 = std::fs::read_to_string(dir.join("deck/subsurf_2.toml")).unwrap();
     assert!(scene2.contains("[stress]") && scene2.contains("[[stress.block]]"), "{scene2}");
     for (case, reference) in
-        [(1, "reference/contact_subsurf/subsurf.0001.subs"), (2, "reference/contact_public/examples/subsurf.ref_subs")]
+        [(1, "reference/contact_subsurf/subsurf.0001.subs"), (2, "reference/contact_subsurf/subsurf.ref_subs")]
     {
         let scene = format!("deck/subsurf_{case}.toml");
         creepbench(&dir, &["simulate", &scene, "--out", "one"], "1");
@@ -182,7 +182,7 @@ fn stress_import_subsurf_and_simulate_matches_contact() {
 #[test]
 fn stress_export_writes_the_points_back() {
     let dir = tempdir("stress_export_subsurf");
-    let deck = root().join("reference/contact_public/examples/subsurf.inp");
+    let deck = root().join("reference/contact_subsurf/subsurf.inp");
     creepbench(&dir, &["import", "contact", deck.to_str().unwrap(), "--out", "deck"], "2");
     creepbench(&dir, &["export", "contact", "deck/subsurf_2.toml", "--out", "exp"], "2");
     let inp = std::fs::read_to_string(dir.join("exp/subsurf_2.inp")).unwrap();
