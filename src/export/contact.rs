@@ -135,9 +135,11 @@ pub fn module3_input(p: &Problem) -> String {
         p.name,
         rows.len()
     );
+    let mut points_written = false;
     for (n, s) in rows.iter().enumerate() {
         let case = Case::of(p, &history, &rows, n, &mut last);
-        write_case(p, &history, &case, s, &mut out);
+        let stress = stress_digit(p, s, n + 1 == rows.len(), &mut points_written);
+        write_case(p, &history, &case, s, stress, &mut out);
     }
     out.push_str("\n 0  MODULE\n");
     out
@@ -281,18 +283,53 @@ fn rolling(p: &Problem, s: &Sample, steady_start: bool) -> (f64, f64, f64) {
 
 /// One case of the deck: its MODULE line, control digits, solver settings, loading and the inputs
 /// it reads (again).
-fn write_case(p: &Problem, h: &History, case: &Case, s: &Sample, out: &mut String) {
+fn write_case(p: &Problem, h: &History, case: &Case, s: &Sample, stress: u8, out: &mut String) {
     let _ = writeln!(out, "\n 3  MODULE      % step {}, t={} s", s.step, s.t_s);
-    pbtnfs(p, h, case, s, out);
+    pbtnfs(p, h, case, s, stress, out);
     ldcmze(p, case, out);
     solver_lines(p, h.falling, case.first, out);
     loading_line(p, s, out);
     case_inputs(p, h, case, s, out);
+    if let (3, Some(at)) = (stress, &p.stress) {
+        subsurface_points(at, out);
+    }
+}
+
+/// The S digit of a row: 3 (read the points, then compute) at the first row of `[stress] steps`
+/// (or the last row without `steps`), 1 (compute at the points kept) at the later ones, else 0.
+fn stress_digit(p: &Problem, s: &Sample, last_row: bool, points_written: &mut bool) -> u8 {
+    let Some(at) = &p.stress else { return 0 };
+    if !at.steps.as_ref().map_or(last_row, |steps| steps.contains(&s.step)) {
+        return 0;
+    }
+    if std::mem::replace(points_written, true) {
+        1
+    } else {
+        3
+    }
+}
+
+/// S = 3's input (user guide, "Input for the subsurface stress calculation"): MATFIL = 2 (the
+/// full tensor in `.subs`), OUTPUT = 1, then each block as ISUBS = 9 with its X, Y, Z, and ISUBS = 0.
+fn subsurface_points(at: &crate::scene::stress::StressPoints, out: &mut String) {
+    out.push_str("   2   1        MATFIL, OUTPUT (subsurface)\n");
+    for b in &at.blocks {
+        let _ =
+            writeln!(out, "   9            ISUBS\n {} {} {}   NX, NY, NZ", b.x_mm.len(), b.y_mm.len(), b.z_mm.len());
+        for axis in [&b.x_mm, &b.y_mm, &b.z_mm] {
+            let values: Vec<String> = axis.iter().map(|v| format!("{v:?}")).collect();
+            for line in values.chunks(8) {
+                let _ = writeln!(out, "   {}", line.join("  "));
+            }
+        }
+    }
+    out.push_str("   0            ISUBS\n");
 }
 
 /// The control digits P-B-T-N-F-S: a new sequence (P = 2) or its continuation (0), the row's
-/// pressure B, the kind of case T, the normal problem N and the forces prescribed F.
-fn pbtnfs(p: &Problem, h: &History, case: &Case, s: &Sample, out: &mut String) {
+/// pressure B, the kind of case T, the normal problem N, the forces prescribed F and the
+/// subsurface stresses S ([`stress_digit`]).
+fn pbtnfs(p: &Problem, h: &History, case: &Case, s: &Sample, stress: u8, out: &mut String) {
     let t = match (case.steady, case.shift) {
         (true, _) => 3,
         (_, true) => 1,
@@ -309,8 +346,10 @@ fn pbtnfs(p: &Problem, h: &History, case: &Case, s: &Sample, out: &mut String) {
         NormalPressure::Elliptical => 2,
         NormalPressure::Parabolic => 3,
     };
-    let _ =
-        writeln!(out, "  {pv}{b}{t}{n_digit}{f}0      P-B-T-N-F-S   PVTIME, BOUND , TANG  , NORM  , FORCE , STRESS");
+    let _ = writeln!(
+        out,
+        "  {pv}{b}{t}{n_digit}{f}{stress}      P-B-T-N-F-S   PVTIME, BOUND , TANG  , NORM  , FORCE , STRESS"
+    );
 }
 
 /// The control digits L-D-C-M-Z-E: the friction law read (L) or kept (1), the influence functions

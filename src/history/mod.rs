@@ -5,6 +5,7 @@
 pub mod abscissa;
 pub mod external;
 pub mod sample_loop;
+pub mod stress;
 
 use crate::error::{excerpt, FormatError};
 use crate::problem::Sample;

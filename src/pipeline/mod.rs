@@ -249,7 +249,14 @@ pub fn run_with(mut problem: Problem, in_process: &[InProcess]) -> Result<SceneR
         };
         let (h, t, field) = match solvers::builtin(name) {
             Some(def) => {
-                let r = sample_loop::run(&problem, def, &field_metrics, None).map_err(fail)?;
+                let (r, stress) = run_builtin(&problem, def, &field_metrics).map_err(fail)?;
+                match stress {
+                    Some(text) => logs.push((format!("{name}_stress.csv"), text)),
+                    None if problem.stress.is_some() => problem
+                        .warnings
+                        .push(format!("{name}: no traction field at the steps of [stress] (the model has none, or no row has those steps): no {name}_stress.csv")),
+                    None => {}
+                }
                 (r.history, Timing { wall_s: r.wall_s, setup_s: r.setup_s }, r.field_metrics)
             }
             None if in_process.iter().any(|(n, _)| n == name) => {
@@ -309,6 +316,41 @@ pub fn run_with(mut problem: Problem, in_process: &[InProcess]) -> Result<SceneR
         timing.push(t);
     }
     Ok(SceneResult { problem, histories, timing, metrics: all_metrics, logs })
+}
+
+/// A built-in model's run and, when the scene asks for `[stress]`, its `<solver>_stress.csv`
+/// (`None`: the model gave no field at those steps).
+fn run_builtin(
+    problem: &Problem,
+    def: &solvers::ModelDef,
+    field_metrics: &[FieldIndicator],
+) -> Result<(sample_loop::ModelRun, Option<String>), solvers::SolveError> {
+    let Some(at) = &problem.stress else {
+        return Ok((sample_loop::run(problem, def, field_metrics, None)?, None));
+    };
+    let mut kept: Vec<(usize, crate::physics::Grid, [Vec<f64>; 3])> = Vec::new();
+    let mut observe = |s: &crate::problem::Sample, v: &solvers::FieldView| {
+        let wanted = at.steps.as_ref().is_none_or(|steps| steps.contains(&s.step));
+        if at.steps.is_none() {
+            kept.clear();
+        }
+        if wanted {
+            let copy = [v.pressure_mpa.to_vec(), v.tx_mpa.to_vec(), v.ty_mpa.to_vec()];
+            kept.push((s.step, v.grid.clone(), copy));
+        }
+    };
+    let run = sample_loop::run(problem, def, field_metrics, Some(&mut observe as &mut sample_loop::Observer))?;
+    if kept.is_empty() {
+        return Ok((run, None));
+    }
+    let mut text = history::stress::header();
+    for (step, grid, [pn, tx, ty]) in &kept {
+        let view = solvers::FieldView { grid, pressure_mpa: pn, tx_mpa: tx, ty_mpa: ty, state: None };
+        let rows = history::stress::rows(*step, &view, &problem.material, at)
+            .map_err(|source| solvers::contact::ContactRunError::Step { step: *step, source })?;
+        text.push_str(&rows);
+    }
+    Ok((run, Some(text)))
 }
 
 pub mod wheelrail;

@@ -257,6 +257,8 @@ pub struct Problem {
     pub origin: Option<crate::scene::Origin>,
     /// Where the report shows the scene (the scene's `[report] group`).
     pub report_group: crate::scene::report::ReportGroup,
+    /// The subsurface points and steps of the scene's `[stress]`, if any.
+    pub stress: Option<crate::scene::stress::StressPoints>,
     pub warnings: Vec<String>,
 }
 
@@ -327,6 +329,7 @@ impl Problem {
             studies: scene.studies.clone(),
             origin: scene.origin.clone(),
             report_group: scene.report_group,
+            stress: scene.stress.clone(),
             warnings: physics.warnings,
         }
     }

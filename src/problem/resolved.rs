@@ -107,6 +107,9 @@ pub struct ResolvedScene {
     /// baseline's scene.json is compared without it.
     #[serde(default, skip_serializing_if = "ReportGroup::is_default")]
     pub report_group: ReportGroup,
+    /// The subsurface points of `[stress]` (absent: none asked for).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stress: Option<crate::scene::stress::StressPoints>,
     /// The loading at every row (step 0 = the initial state at t = 0, when the scene has one).
     pub history: Vec<Sample>,
 }
@@ -208,6 +211,7 @@ impl ResolvedScene {
             studies: p.studies.clone(),
             origin: p.origin.clone(),
             report_group: p.report_group,
+            stress: p.stress.clone(),
             history,
         }
     }

@@ -8,6 +8,7 @@ pub mod reader;
 pub mod report;
 mod sections;
 pub mod source;
+pub mod stress;
 pub mod study;
 pub mod table;
 pub mod wheelrail;
@@ -395,6 +396,8 @@ pub struct Scene {
     pub origin: Option<Origin>,
     /// Where the report shows the scene (`[report] group`).
     pub report_group: report::ReportGroup,
+    /// The subsurface points and steps of `[stress]` (CONTACT's S digit), if asked for.
+    pub stress: Option<stress::StressPoints>,
 }
 
 const CREEPAGE_LIMIT: Range = Range::new(-1.0, true, 1.0, true);
@@ -490,6 +493,7 @@ impl Scene {
         let limits = sections::limits(&mut top)?;
         let origin = sections::origin(&mut top)?;
         let report_group = report::read(&mut top)?;
+        let stress = stress::read(&mut top)?;
         top.finish()?;
         let scene = Scene {
             name,
@@ -526,6 +530,7 @@ impl Scene {
             studies: Vec::new(),
             origin,
             report_group,
+            stress,
         };
         scene.check_sweep_points()?;
         scene.check_table_friction()?;

@@ -232,7 +232,7 @@ pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
         restore_speeds(&mut h, &s.scene);
         s.histories.insert(solver.clone(), h);
         // What an external model printed, carried along (by `merge`) when the folder holds it.
-        for log in [format!("{solver}.stdout.txt"), format!("{solver}.stderr.txt")] {
+        for log in [format!("{solver}.stdout.txt"), format!("{solver}.stderr.txt"), format!("{solver}_stress.csv")] {
             if d.join(&log).exists() {
                 s.logs.insert(log.clone(), read(&log)?);
             }

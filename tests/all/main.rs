@@ -56,6 +56,7 @@ mod steady_force;
 mod steady_restart;
 mod strip;
 mod studies;
+mod subsurface_contact;
 mod test_table;
 mod timing;
 mod tolerance_files;

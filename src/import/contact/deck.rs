@@ -73,9 +73,21 @@ pub struct Undeformed {
     pub values: Vec<f64>,
 }
 
+/// One block of subsurface points of an S = 3 (its ISUBS): explicit X, Y, Z (ISUBS = 9), or
+/// element centres of the potential contact (ISUBS = 1, 2, 3, 5, 6, 7).
+#[derive(Debug, Clone, PartialEq)]
+pub enum SubsurfaceBlock {
+    /// X(NX), Y(NY), Z(NZ) as given [mm].
+    Points([Vec<f64>; 3]),
+    /// The ISUBS of a block at element centres.
+    ElementCentres(i64),
+}
+
 /// Everything a case sets; a value not read is kept from the previous case.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct State {
+    /// The blocks of subsurface points read by the last S = 3 (kept for S = 1, 2).
+    pub subsurface: Vec<SubsurfaceBlock>,
     /// PEN (N = 0) or FN (N = 1).
     pub pen_or_fn: f64,
     /// CKSI (F = 0) or FX (F = 1, 2).
@@ -370,8 +382,8 @@ impl CaseReader<'_> {
             self.friction_per_row(&d, state)?;
         }
         self.extra_rhs(&d, state)?;
-        if d.s >= 2 {
-            self.subsurface(d.s)?;
+        if let Some(blocks) = self.subsurface(d.s)? {
+            state.subsurface = blocks;
         }
         Ok(d)
     }
@@ -653,18 +665,23 @@ impl CaseReader<'_> {
         Ok(Undeformed { ibase, iplan, values })
     }
 
-    /// S = 2, 3: the subsurface points (user guide, "Subsurface-stress input").
-    pub(super) fn subsurface(&mut self, s: u8) -> Result<(), DeckError> {
+    /// S = 2, 3: the subsurface points (user guide, "Subsurface-stress input"): the blocks read
+    /// by S = 3 (`None` for S < 3).
+    pub(super) fn subsurface(&mut self, s: u8) -> Result<Option<Vec<SubsurfaceBlock>>, DeckError> {
+        if s < 2 {
+            return Ok(None);
+        }
         self.ints("MATFIL, OUTPUT (subsurface)", 2)?;
         if s < 3 {
-            return Ok(());
+            return Ok(None);
         }
+        let mut blocks = Vec::new();
         loop {
             let (v, _) = self.ints("ISUBS", 1)?;
             let isubs = v[0];
             let count = |x: f64| x.clamp(0.0, 1e7) as usize;
             match isubs {
-                0 => return Ok(()),
+                0 => return Ok(Some(blocks)),
                 2 | 6 => {
                     // Two lines of three, as CONTACT reads them (`m_subsurf.f90`: 'iii' twice).
                     self.ints("IXL, IXINC, IXH", 3)?;
@@ -685,11 +702,16 @@ impl CaseReader<'_> {
                 }
                 9 => {
                     let (n, _) = self.ints("NX, NY, NZ", 3)?;
-                    for k in n {
-                        self.lx.array("X, Y, Z", count(k as f64))?;
+                    let mut axes: [Vec<f64>; 3] = Default::default();
+                    for (axis, k) in axes.iter_mut().zip(n) {
+                        *axis = self.lx.array("X, Y, Z", count(k as f64))?;
                     }
+                    blocks.push(SubsurfaceBlock::Points(axes));
                 }
                 other => return Err(self.digit_error("ISUBS", "ISUBS", other, "0, 1, 2, 3, 5, 6, 7 or 9")),
+            }
+            if isubs != 9 {
+                blocks.push(SubsurfaceBlock::ElementCentres(isubs));
             }
         }
     }

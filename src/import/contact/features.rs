@@ -5,7 +5,7 @@
 //! own table, [`WHEELRAIL_FEATURES`], read by [`assess_wheelrail`]; what the wheel–rail scene
 //! cannot say besides is in `scene::wheelrail::SCENE_LIMITS`, which gives the import's verdict.
 
-use super::deck::{Case3, Potcon};
+use super::deck::{Case3, Potcon, SubsurfaceBlock};
 use super::wheelrail_deck::{FrictionVariation, MaterialModel, ProfileFormat, ProfileSpec, WheelRailCase};
 use crate::physics::material::combine_bodies;
 
@@ -21,6 +21,12 @@ pub struct Feature {
     pub reason: &'static str,
     /// The value the case gives it, when the case uses it.
     pub used: fn(&Case3) -> Option<String>,
+}
+
+/// Whether the case's subsurface points are all explicit (ISUBS = 9) in body 1 (Z ≥ 0), and some.
+fn explicit_points(c: &Case3) -> bool {
+    let b = &c.state.subsurface;
+    !b.is_empty() && b.iter().all(|b| matches!(b, SubsurfaceBlock::Points([_, _, z]) if z.iter().all(|&z| z >= 0.0)))
 }
 
 fn digit(name: &str, v: u8, used: bool) -> Option<String> {
@@ -95,8 +101,28 @@ pub const FEATURES: &[Feature] = &[
         name: "subsurface stresses",
         control: "S",
         supported: true,
-        reason: "S only prints stresses below the surface: the input is read and not computed",
-        used: |c| digit("S", c.digits.s, c.digits.s != 0),
+        reason: "imported as [stress] (its ISUBS = 9 blocks as [[stress.block]], the case's row in its steps): the stresses in body 1 under the solved tractions, <solver>_stress.csv",
+        used: |c| digit("S", c.digits.s, c.digits.s != 0 && explicit_points(c)),
+    },
+    Feature {
+        name: "subsurface stresses at element centres, in body 2 or without points",
+        control: "S, ISUBS",
+        supported: true,
+        reason: "read and not computed (they change no total): [stress] takes blocks of explicit points (ISUBS = 9) with Z >= 0 (body 1)",
+        used: |c| {
+            (c.digits.s != 0 && !explicit_points(c)).then(|| {
+                let isubs: Vec<String> = c
+                    .state
+                    .subsurface
+                    .iter()
+                    .map(|b| match b {
+                        SubsurfaceBlock::Points(_) => "9".to_string(),
+                        SubsurfaceBlock::ElementCentres(i) => i.to_string(),
+                    })
+                    .collect();
+                format!("S = {}, ISUBS = [{}]", c.digits.s, isubs.join(", "))
+            })
+        },
     },
     Feature {
         name: "friction varying per grid row with a law other than Coulomb's",

@@ -669,7 +669,7 @@ impl M1<'_, '_> {
         self.track_and_rail(state)?;
         self.wheelset(state)?;
         if d.s >= 2 {
-            self.r.subsurface(d.s)?;
+            drop(self.r.subsurface(d.s)?);
             state.subsurface_points |= d.s == 3;
         }
         Ok(())

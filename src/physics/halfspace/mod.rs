@@ -9,8 +9,11 @@ pub mod blend;
 pub mod convolution;
 pub mod coupling;
 pub mod influence;
+pub mod invariants;
+pub mod jet;
 pub mod layer;
 pub mod normal;
+pub mod stress;
 mod table;
 
 /// Errors of the contact core; no function of these modules panics on bad numbers.

@@ -13,6 +13,7 @@ mod history;
 mod loading;
 mod read_back;
 mod rows;
+mod stress;
 pub mod wheelrail;
 mod window;
 
@@ -138,7 +139,7 @@ fn status(c: &Case) -> CaseStatus {
     }
 }
 
-fn case3(cases: &[Case], k: usize) -> &Case3 {
+pub(super) fn case3(cases: &[Case], k: usize) -> &Case3 {
     match &cases[k].kind {
         CaseKind::Module3(c) => c,
         CaseKind::Module1(_) => unreachable!("histories hold module-3 cases only"),
@@ -320,6 +321,11 @@ fn finish(src: &Source, mut draft: Draft) -> Result<SceneFiles, InputError> {
     let problem = read_back(dir.path(), &scene_file, &draft.doc, &draft.files)?;
     let numbers: Vec<usize> = src.h.cases.iter().map(|&k| src.cases[k].number).collect();
     check_rows(&problem, &src.rows, src.quads.as_deref(), &numbers)?;
+    if let Some(stress) = stress::section(src, &problem)? {
+        // the subsurface points read back too
+        draft.insert("stress", stress);
+        read_back(dir.path(), &scene_file, &draft.doc, &draft.files)?;
+    }
     let toml = toml::to_string(&draft.doc)
         .map_err(|e| InputError::new(&place, "a scene", format!("a scene TOML can hold: {e}")))?;
     let text = format!(
