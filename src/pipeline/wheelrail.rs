@@ -49,6 +49,22 @@ pub struct PatchForces {
     pub n_slip: Option<usize>,
 }
 
+impl PatchForces {
+    /// A module-3 solution on patch `p` (forces on body 2, the right-side frame: Fx/FN, Fy/FN,
+    /// MZ) turned to CONTACT's module-1 signs (on the rail) and the side's frame.
+    pub fn on_rail(p: &NormalPatch, case: &WheelRailCase, fx_over_fn: f64, fy_over_fn: f64, mz_nmm: f64) -> Self {
+        let m = case.side.sign();
+        PatchForces {
+            fn_n: p.fn_n,
+            fx_n: -fx_over_fn * p.fn_n,
+            fs_n: -m * fy_over_fn * p.fn_n,
+            mn_nmm: -m * mz_nmm,
+            n_adhesion: None,
+            n_slip: None,
+        }
+    }
+}
+
 /// The forces on the rail summed over the patches [N]: track and wheelset coordinates.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Totals {
@@ -288,14 +304,11 @@ fn patch_solve(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> R
     let h = &result.histories[0];
     let row = &h.rows[0];
     let count = |name: &str| h.column(name).map(|c| c[0] as usize);
-    let m = case.side.sign();
+    let mz_nmm = h.column(crate::history::MZ).map_or(f64::NAN, |c| c[0]);
     Ok(PatchForces {
-        fn_n: p.fn_n,
-        fx_n: -row.fx_over_fn * p.fn_n,
-        fs_n: -m * row.fy_over_fn * p.fn_n,
-        mn_nmm: -m * h.column(crate::history::MZ).map_or(f64::NAN, |c| c[0]),
         n_adhesion: count("n_adhesion"),
         n_slip: count("n_slip"),
+        ..PatchForces::on_rail(p, case, row.fx_over_fn, row.fy_over_fn, mz_nmm)
     })
 }
 

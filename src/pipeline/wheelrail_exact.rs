@@ -84,14 +84,10 @@ pub fn patch_forces(
     let pn_sum: f64 = pn.iter().sum();
     let (fx_over_fn, fy_over_fn) = (r.px.iter().sum::<f64>() / pn_sum, r.py.iter().sum::<f64>() / pn_sum);
     let mz_nmm = moment_sum(&grid, &r.px, &r.py) * grid.element_area_mm2();
-    let m = case.side.sign();
     Ok(PatchForces {
-        fn_n: p.fn_n,
-        fx_n: -fx_over_fn * p.fn_n,
-        fs_n: -m * fy_over_fn * p.fn_n,
-        mn_nmm: -m * mz_nmm,
         n_adhesion: Some(r.n_adhesion),
         n_slip: Some(r.n_slip),
+        ..PatchForces::on_rail(p, case, fx_over_fn, fy_over_fn, mz_nmm)
     })
 }
 
