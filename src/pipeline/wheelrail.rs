@@ -75,7 +75,11 @@ pub struct Totals {
 /// A case solved: its patches (normal contact) and per model the patches' forces and totals.
 #[derive(Debug, Clone)]
 pub struct CaseResult {
+    /// The exact theory's patches, which every model without a normal problem of its own shares
+    /// (with none such asked for: the first model's own).
     pub normal: NormalContact,
+    /// The patches of the models that solve their own normal problem ([`solvers::ModelDef::own_normal`]).
+    pub own_normals: Vec<(String, NormalContact)>,
     /// `(model, forces per patch, totals)` in the order of the models asked for.
     pub models: Vec<(String, Vec<PatchForces>, Totals)>,
     /// The pitch velocity the case was solved at.
@@ -94,6 +98,13 @@ pub enum Pitch {
     },
 }
 
+impl CaseResult {
+    /// The patches `model`'s forces are on.
+    pub fn normal_of(&self, model: &str) -> &NormalContact {
+        self.own_normals.iter().find(|(m, _)| m == model).map_or(&self.normal, |(_, n)| n)
+    }
+}
+
 impl Pitch {
     pub fn rad_s(self) -> f64 {
         match self {
@@ -108,8 +119,60 @@ pub fn solve(case: &WheelRailCase, models: &[String], mu: f64) -> Result<CaseRes
 }
 
 /// Solve `case` with `models`, each patch at its Coulomb friction (varying across the rail or
-/// along the track where `mu` says so).
+/// along the track where `mu` says so). The models that solve their own approximate normal problem
+/// (KPEC, ANALYN) take their own patches and height; every other model the exact theory's.
 pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Result<CaseResult, Error> {
+    let own = |m: &str| solvers::builtin(m).and_then(|d| d.own_normal);
+    let mut exact_cache = ExactCache::default();
+    let mut shared = None;
+    if models.iter().any(|m| own(m).is_none()) {
+        let exact = |n: &NormalContact| exact_forces(n, mu, case, &mut exact_cache);
+        shared = Some(balanced(case, mu, &mut wheelrail::NormalCache::default(), exact)?);
+    }
+    let mut out = Vec::new();
+    let mut own_normals = Vec::new();
+    for model in models {
+        let forces = match own(model) {
+            Some(method) => {
+                let theirs = |n: &NormalContact| patch_forces(n, model, mu, case);
+                let (normal, forces) = balanced(case, mu, &mut wheelrail::NormalCache::approximate(method), theirs)?;
+                let forces = match forces {
+                    Some(f) => f,
+                    None => patch_forces(&normal, model, mu, case)?,
+                };
+                own_normals.push((model.clone(), normal));
+                forces
+            }
+            None => {
+                let (normal, found) = shared.as_mut().expect("the shared normal contact is solved for this model");
+                match found.take_if(|_| model == EXACT) {
+                    Some(exact) => exact,
+                    None if model == EXACT => exact_forces(normal, mu, case, &mut exact_cache)?,
+                    None => patch_forces(normal, model, mu, case)?,
+                }
+            }
+        };
+        let normal = own_normals.iter().find(|(m, _)| m == model).map(|(_, n)| n);
+        let totals = totals(normal.unwrap_or_else(|| &shared.as_ref().expect("shared normal").0), &forces, case);
+        out.push((model.clone(), forces, totals));
+    }
+    let normal = match shared {
+        Some((n, _)) => n,
+        None => own_normals[0].1.clone(),
+    };
+    Ok(CaseResult { normal, own_normals, models: out, pitch: Pitch::Given(case.velocity.vpitch_rad_s) })
+}
+
+/// The normal contact of `case` with the normal problem of `cache` (exact or approximate): with FZ
+/// prescribed and friction, the height where the normal forces' and `forces`' vertical parts
+/// carry FZ (rounds of height searches, [`normal_share`]), and the forces found there; frictionless,
+/// every patch's normal force alone.
+fn balanced(
+    case: &WheelRailCase,
+    mu: &Friction,
+    cache: &mut wheelrail::NormalCache,
+    mut forces: impl FnMut(&NormalContact) -> Result<Vec<PatchForces>, Error>,
+) -> Result<(NormalContact, Option<Vec<PatchForces>>), Error> {
     let geometry = |e: wheelrail::WheelRailError| {
         Error::from(InputError::new(
             "contact geometry",
@@ -117,53 +180,35 @@ pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Res
             format!("{e}; a wheel that touches the rail, at a height that carries FZ, with patches within the grid limit (docs/wheelrail.md)"),
         ))
     };
-    let mut cache = wheelrail::NormalCache::default();
-    let mut exact_cache = ExactCache::default();
     // With the tangential forces to balance, the first height search need not be tight: the
     // rounds move its target by their vertical part.
-    let balanced = matches!(case.vertical, Vertical::Force { .. }) && !mu.frictionless;
-    let first_tol = if balanced { FIRST_SEARCH_TOL } else { FORCE_TOL };
-    let mut normal = wheelrail::normal_contact_with(case, None, first_tol, &mut cache).map_err(geometry)?;
-    // The exact theory's forces on the patches of `normal`, where the balance has them.
-    let mut exact_now = None;
+    let rounds = matches!(case.vertical, Vertical::Force { .. }) && !mu.frictionless;
+    let first_tol = if rounds { FIRST_SEARCH_TOL } else { FORCE_TOL };
+    let mut normal = wheelrail::normal_contact_with(case, None, first_tol, cache).map_err(geometry)?;
     if mu.frictionless {
-        let forces: Vec<PatchForces> = normal.patches.iter().map(frictionless).collect();
-        let totals = totals(&normal, &forces, case);
-        let out = models.iter().map(|m| (m.clone(), forces.clone(), totals)).collect();
-        return Ok(CaseResult { normal, models: out, pitch: Pitch::Given(case.velocity.vpitch_rad_s) });
+        let forces = normal.patches.iter().map(frictionless).collect();
+        return Ok((normal, Some(forces)));
     }
-    if let Vertical::Force { fz_n } = case.vertical {
-        // The last round's normal and tangential vertical forces (the secant's other point).
-        let mut last: Option<(f64, f64)> = None;
-        for _ in 0..VERTICAL_ROUNDS {
-            let exact = exact_forces(&normal, mu, case, &mut exact_cache)?;
-            let normal_z = normal.fz_normal_n();
-            let tangential_z: f64 = normal
-                .patches
-                .iter()
-                .zip(&exact)
-                .map(|(p, f)| case.side.sign() * f.fs_n * p.geometry.frame.delta_rad.sin())
-                .sum();
-            if (normal_z + tangential_z - fz_n).abs() <= 2.0 * FORCE_TOL * fz_n || normal_z <= 0.0 {
-                exact_now = Some(exact);
-                break;
-            }
-            let target = normal_share(fz_n, (normal_z, tangential_z), last.take());
-            last = Some((normal_z, tangential_z));
-            normal = wheelrail::normal_contact_with(case, Some(target), FORCE_TOL, &mut cache).map_err(geometry)?;
+    let Vertical::Force { fz_n } = case.vertical else { return Ok((normal, None)) };
+    // The last round's normal and tangential vertical forces (the secant's other point).
+    let mut last: Option<(f64, f64)> = None;
+    for _ in 0..VERTICAL_ROUNDS {
+        let found = forces(&normal)?;
+        let normal_z = normal.fz_normal_n();
+        let tangential_z: f64 = normal
+            .patches
+            .iter()
+            .zip(&found)
+            .map(|(p, f)| case.side.sign() * f.fs_n * p.geometry.frame.delta_rad.sin())
+            .sum();
+        if (normal_z + tangential_z - fz_n).abs() <= 2.0 * FORCE_TOL * fz_n || normal_z <= 0.0 {
+            return Ok((normal, Some(found)));
         }
+        let target = normal_share(fz_n, (normal_z, tangential_z), last.take());
+        last = Some((normal_z, tangential_z));
+        normal = wheelrail::normal_contact_with(case, Some(target), FORCE_TOL, cache).map_err(geometry)?;
     }
-    let mut out = Vec::new();
-    for model in models {
-        let forces = match exact_now.take_if(|_| model == EXACT) {
-            Some(exact) => exact,
-            None if model == EXACT => exact_forces(&normal, mu, case, &mut exact_cache)?,
-            None => patch_forces(&normal, model, mu, case)?,
-        };
-        let totals = totals(&normal, &forces, case);
-        out.push((model.clone(), forces, totals));
-    }
-    Ok(CaseResult { normal, models: out, pitch: Pitch::Given(case.velocity.vpitch_rad_s) })
+    Ok((normal, None))
 }
 
 /// One model on the patches of `normal`: its forces per patch and their totals.

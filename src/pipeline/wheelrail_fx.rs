@@ -8,6 +8,7 @@
 
 use super::wheelrail::{model_forces, solve_with, CaseResult, Pitch, EXACT};
 use crate::error::{Error, InputError};
+use crate::solvers;
 use crate::wheelrail::friction::Friction;
 use crate::wheelrail::{Vertical, WheelRailCase};
 
@@ -102,16 +103,21 @@ fn finish(
 ) -> Result<CaseResult, Error> {
     let mut at = *case;
     at.velocity.vpitch_rad_s = pitch.rad_s();
-    let (normal, mut computed) = (exact.normal, exact.models);
+    let (normal, mut computed, mut own_normals) = (exact.normal, exact.models, exact.own_normals);
     let mut out = Vec::with_capacity(models.len());
     for m in models {
         match computed.iter().position(|(name, _, _)| name == m) {
             Some(k) => out.push(computed.swap_remove(k)),
+            None if solvers::builtin(m).is_some_and(|d| d.own_normal.is_some()) => {
+                let mut theirs = solve_with(&at, std::slice::from_ref(m), mu)?;
+                own_normals.append(&mut theirs.own_normals);
+                out.append(&mut theirs.models);
+            }
             None => {
                 let (forces, totals) = model_forces(&normal, m, mu, &at)?;
                 out.push((m.clone(), forces, totals));
             }
         }
     }
-    Ok(CaseResult { normal, models: out, pitch })
+    Ok(CaseResult { normal, own_normals, models: out, pitch })
 }

@@ -108,7 +108,8 @@ fn value(view: &WheelRailView, case: usize, r: &CaseResult, k: usize, patch: usi
     if column == "ycp_w_mm" {
         return view.ycp_w_mm.get(case)?.get(patch).copied();
     }
-    let (p, f) = (r.normal.patches.get(patch)?, r.models.get(k)?.1.get(patch)?);
+    let (name, forces, _) = r.models.get(k)?;
+    let (p, f) = (r.normal_of(name).patches.get(patch)?, forces.get(patch)?);
     let at = PATCH_COLUMNS[2..].iter().position(|c| *c == column)?;
     Some(patch_numbers(r, p, f)[at])
 }

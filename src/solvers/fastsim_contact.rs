@@ -11,6 +11,7 @@
 //! (CHI = 0, 180°: the mirror image in x of +x). Steady rolling only: quasi-steady on a time history.
 
 use super::brush::{self, Integration, Tractions};
+use super::fastsim::ContactAt;
 use super::stepper::{FieldView, Step, Stepper};
 use super::termination::Termination;
 use super::{grid_model, ModelDef, SolveError};
@@ -69,11 +70,22 @@ fn check(p: &Problem) -> Result<(), InputError> {
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let local = p.local_contact(p.loading.first().fn_n);
-    Ok(Box::new(FastsimContact { p, local, t: Tractions::zero(p.grid.len()), solved: None }))
+    Ok(Box::new(FastsimContact { p, contact: None, local, t: Tractions::zero(p.grid.len()), solved: None }))
+}
+
+/// CONTACT's FASTSIM on the contact `contact` gives at each load (an approximate normal problem's:
+/// KPEC, ANALYN), its flexibilities from the equivalent ellipse of the loaded elements as CONTACT
+/// takes them on a non-Hertzian contact (`panprc` in m_scontc.f90: `equiv_ellipse`, `simpflex`).
+pub fn with_contact(p: &Problem, contact: ContactAt) -> Result<Box<dyn Stepper + '_>, SolveError> {
+    let local = contact(p, p.loading.first().fn_n)?;
+    Ok(Box::new(FastsimContact { p, contact: Some(contact), local, t: Tractions::zero(p.grid.len()), solved: None }))
 }
 
 struct FastsimContact<'a> {
     p: &'a Problem,
+    /// The contact at a load where it is not the problem's own (then the flexibilities are the
+    /// equivalent ellipse's).
+    contact: Option<ContactAt>,
     local: LocalContact,
     t: Tractions,
     /// The creepages found under a prescribed Fx/FN.
@@ -82,7 +94,13 @@ struct FastsimContact<'a> {
 
 impl Stepper for FastsimContact<'_> {
     fn load(&mut self, at: &Sample) -> Result<(), SolveError> {
-        self.p.reload_local(&mut self.local, at.fn_n);
+        match self.contact {
+            Some(contact) if at.fn_n != self.local.planform.ellipse.fn_n => self.local = contact(self.p, at.fn_n)?,
+            Some(_) => {}
+            None => {
+                self.p.reload_local(&mut self.local, at.fn_n);
+            }
+        }
         Ok(())
     }
 
@@ -143,7 +161,15 @@ impl FastsimContact<'_> {
         let mu = self.mu(at);
         // CONTACT's characteristic creepages take FSTAT (the static coefficient of a falling law).
         let fstat = if self.p.friction.is_falling() { self.p.friction.mu_static() } else { at.mu };
-        let flex = blended(self.p, planform, c, fstat, at.fy_target.is_some() || at.fx_target.is_some());
+        let prescribed = at.fy_target.is_some() || at.fx_target.is_some();
+        let flex = if self.contact.is_some() {
+            let (a_mm, b_mm) = equivalent_ellipse(grid, planform);
+            let m = &self.p.material;
+            let contact = Blending { a_mm, b_mm, g_mpa: m.g_mpa, poisson: m.poisson };
+            contact.flexibilities(c, fstat * planform.ellipse.fn_n, prescribed)
+        } else {
+            blended(self.p, planform, c, fstat, prescribed)
+        };
         let k = slope_factor(self.p, &self.local.planform, c, mu);
         let rates =
             RigidSlip::new(c.0, c.1, c.2).over_flexibilities(flex.l1_mm3_n / k, flex.l2_mm3_n / k, flex.l3_mm3_n / k);

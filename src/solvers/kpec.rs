@@ -5,7 +5,7 @@
 //! the equivalent ellipse of the approximate contact (Kik & Piotrowski: its area and
 //! length-to-width ratio kept).
 
-use super::fastsim;
+use super::fastsim_contact;
 use super::{grid_model, ModelDef, SolveError};
 use crate::error::InputError;
 use crate::physics::approximate::{self, Method};
@@ -19,8 +19,10 @@ pub const KPEC: ModelDef = ModelDef {
     name: "kpec",
     summary: "KPEC (Kik–Piotrowski's virtual interpenetration with CONTACT's ellipse correction, B = 5) for the pressure, FASTSIM on it",
     check: check::<KPEC_METHOD>,
-    build: |p| fastsim::with_contact(p, contact::<KPEC_METHOD>),
+    build: |p| fastsim_contact::with_contact(p, contact::<KPEC_METHOD>),
     style: ModelStyle { colour: LIGHT[0], dash: Dash::Dashed, marker: Marker::TriangleLeft },
+    own_normal: Some(Method::Kpec),
+    extra_columns: fastsim_contact::MODEL.extra_columns,
     ..MODEL
 };
 
@@ -29,8 +31,10 @@ pub const ANALYN: ModelDef = ModelDef {
     name: "analyn",
     summary: "ANALYN (Sichani, Enblom & Berg, VSD 52(12) 2014; CONTACT's B = 6) for the pressure, FASTSIM on it",
     check: check::<ANALYN_METHOD>,
-    build: |p| fastsim::with_contact(p, contact::<ANALYN_METHOD>),
+    build: |p| fastsim_contact::with_contact(p, contact::<ANALYN_METHOD>),
     style: ModelStyle { colour: LIGHT[1], dash: Dash::DashDot, marker: Marker::TriangleRight },
+    own_normal: Some(Method::Analyn),
+    extra_columns: fastsim_contact::MODEL.extra_columns,
     ..MODEL
 };
 
@@ -42,7 +46,7 @@ const MODEL: ModelDef = grid_model(
     "",
     "",
     check::<KPEC_METHOD>,
-    |p| fastsim::with_contact(p, contact::<KPEC_METHOD>),
+    |p| fastsim_contact::with_contact(p, contact::<KPEC_METHOD>),
     ModelStyle { colour: LIGHT[0], dash: Dash::Dashed, marker: Marker::TriangleLeft },
 );
 

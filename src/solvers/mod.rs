@@ -66,6 +66,10 @@ pub struct ModelDef {
     /// geometry: the approach (`pen_mm`, CONTACT N = 0) and the undeformed distance (`b1_per_mm`
     /// … `b6_mm`, CONTACT's IBASE = 1 per case); a model that cannot is refused on such a scene.
     pub normal_rows: bool,
+    /// The approximate normal problem the model solves itself (KPEC, ANALYN: CONTACT's B = 5, 6):
+    /// on a wheel–rail case it takes its own patches at its own wheelset height, as CONTACT
+    /// balances FZ with them; `None`: the exact normal solution every other model shares.
+    pub own_normal: Option<crate::physics::approximate::Method>,
     /// Refuses a problem the model cannot run, naming the scene field.
     pub check: fn(&Problem) -> Result<(), InputError>,
     /// Relative cost of one history row, for scheduling a suite (longest first).
@@ -338,6 +342,7 @@ pub const fn grid_model(
         prescribed_forces: false,
         shifts: false,
         normal_rows: false,
+        own_normal: None,
         check,
         cost_per_row: linear_in_elements,
         params: None,

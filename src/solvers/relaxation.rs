@@ -39,6 +39,7 @@ pub const MODEL: ModelDef = ModelDef {
     prescribed_forces: false,
     shifts: false,
     normal_rows: false,
+    own_normal: None,
     check: always,
     cost_per_row: linear_in_elements,
     params: Some(read_params),

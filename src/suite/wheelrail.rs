@@ -66,8 +66,9 @@ fn csv_text(header: &[&str], rows: &[Vec<String>]) -> Vec<u8> {
 
 /// One model's totals row for a case.
 fn total_row(case: u64, r: &CaseResult, model: usize) -> Vec<String> {
-    let t = &r.models[model].2;
-    let mut row = vec![case.to_string(), r.normal.patches.len().to_string(), r.normal.z_ws_mm.to_string()];
+    let (name, _, t) = &r.models[model];
+    let normal = r.normal_of(name);
+    let mut row = vec![case.to_string(), normal.patches.len().to_string(), normal.z_ws_mm.to_string()];
     row.extend(t.track_n.iter().chain(&t.wheelset_n).map(|v| number(*v)));
     row.push(number(r.pitch.rad_s()));
     row
@@ -116,7 +117,7 @@ pub fn files(run: &SceneRun) -> Vec<(String, Vec<u8>)> {
             .cases
             .iter()
             .flat_map(|(c, r)| {
-                r.normal
+                r.normal_of(model)
                     .patches
                     .iter()
                     .zip(&r.models[k].1)

@@ -21,10 +21,11 @@ pub mod vertical;
 pub mod wheel;
 pub mod wheel_mesh;
 
+use crate::physics::approximate::{self, ApproximateError, Method};
 use crate::physics::halfspace::influence::Kernel;
 use crate::physics::halfspace::normal::{NormalParams, NormalSolver};
 use crate::physics::halfspace::ContactError;
-use crate::physics::Material;
+use crate::physics::{Grid, Material};
 use curve::Curve;
 use patch::PatchGeometry;
 use rail::{PlacedRail, Track};
@@ -46,6 +47,8 @@ pub enum WheelRailError {
     GridTooLarge { patch: usize, elements: usize, limit: usize },
     #[error("patch {patch}: normal problem: {source}")]
     Normal { patch: usize, source: ContactError },
+    #[error("patch {patch}: approximate normal problem: {source}")]
+    Approximate { patch: usize, source: ApproximateError },
 }
 
 /// Largest potential contact of one patch [elements].
@@ -185,11 +188,21 @@ pub struct NormalCache {
     heights: Option<vertical::Evaluations>,
 }
 
+impl NormalCache {
+    /// A cache whose patches take the approximate normal problem `method` (CONTACT's B = 5, 6:
+    /// KPEC or ANALYN at the approach the wheelset's height sets) instead of the exact one.
+    pub fn approximate(method: Method) -> Self {
+        NormalCache { solvers: NormalSolvers { approximate: Some(method), ..Default::default() }, ..Default::default() }
+    }
+}
+
 /// The normal solvers by grid size, each with the last pressure it found (the start of the next
 /// solve on that size: the same patch at a nearby height).
 #[derive(Default)]
 struct NormalSolvers {
     solvers: Vec<((usize, usize), NormalSolver, Vec<f64>)>,
+    /// The approximate normal problem the patches take instead, if any.
+    approximate: Option<Method>,
 }
 
 /// Grids kept per case (the oldest dropped first).
@@ -263,8 +276,13 @@ fn patches_at(
     let rail_motion = creepage::RailMotion { origin_mm: rail.origin_mm, velocity: case.track.deviation_velocity };
     let mut out = Vec::new();
     for (k, geometry) in geometry_at(case, rail, &wheel)?.into_iter().enumerate() {
-        let (fn_n, pn_mpa) = solve_normal(&geometry, &case.material, solvers)
-            .map_err(|source| WheelRailError::Normal { patch: k + 1, source })?;
+        let patch = k + 1;
+        let (fn_n, pn_mpa) = match solvers.approximate {
+            Some(method) => solve_approximate(method, &geometry, &case.material)
+                .map_err(|source| WheelRailError::Approximate { patch, source })?,
+            None => solve_normal(&geometry, &case.material, solvers)
+                .map_err(|source| WheelRailError::Normal { patch, source })?,
+        };
         let pen_mm = -geometry.h_mm.iter().copied().fold(f64::INFINITY, f64::min);
         let creepages = creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm, &rail_motion);
         out.push(NormalPatch { geometry, fn_n, pn_mpa, pen_mm, creepages });
@@ -281,6 +299,18 @@ fn solve_normal(g: &PatchGeometry, m: &Material, solvers: &mut NormalSolvers) ->
     let fn_n = sol.pn_mpa.iter().sum::<f64>() * g.grid.dx_mm * g.grid.ds_mm;
     last.clone_from(&sol.pn_mpa);
     Ok((fn_n, sol.pn_mpa))
+}
+
+/// The approximate normal problem `method` of one patch at the geometry's own approach (CONTACT's
+/// `snorm_kpec_wrapper`: module 1 sets the approach, N = 0 per patch), on the patch's grid in
+/// CONTACT's element order.
+fn solve_approximate(method: Method, g: &PatchGeometry, m: &Material) -> Result<(f64, Vec<f64>), ApproximateError> {
+    let p = &g.grid;
+    let x = [p.x0_mm, p.x0_mm + p.dx_mm * p.mx as f64];
+    let grid = Grid::from_edges(p.mx, p.ms, x, [p.s0_mm, p.s0_mm + p.ds_mm * p.ms as f64]);
+    let pn_mpa = approximate::at_approach(method, &grid, &g.h_mm, 0.0, m)?;
+    let fn_n = pn_mpa.iter().sum::<f64>() * p.dx_mm * p.ds_mm;
+    Ok((fn_n, pn_mpa))
 }
 
 #[cfg(test)]

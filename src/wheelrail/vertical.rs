@@ -7,7 +7,9 @@ use super::WheelRailError;
 
 /// Relative force tolerance of the height iteration.
 pub const FORCE_TOL: f64 = 1e-9;
-const MAX_ITER: usize = 40;
+const MAX_ITER: usize = 100;
+/// The height span [mm] within which a force that still misses its target has jumped over it.
+const JUMP_MM: f64 = 1e-12;
 /// The first trial height below first touch [mm]: a small patch (a cheap normal problem) whose
 /// force the secant on FN^(2/3) extrapolates.
 const FIRST_STEP_MM: f64 = 0.01;
@@ -40,8 +42,27 @@ where
         }
     };
     let mut f0: f64;
+    // The heights known below and above the target (the force may jump where an approximate
+    // normal problem's contact gains a row): a secant step outside them is a bisection.
+    let (mut below, mut above) = (f64::NEG_INFINITY, f64::INFINITY);
     for _ in 0..MAX_ITER {
-        let z2 = z1 - g1 * (z1 - z0) / (g1 - g0);
+        for (z, gz) in [(z0, g0), (z1, g1)] {
+            if gz < 0.0 {
+                below = below.max(z);
+            } else {
+                above = above.min(z);
+            }
+        }
+        if above - below <= JUMP_MM {
+            // The force jumps over the target within a height span of rounding: the upper side's.
+            let z = above;
+            let f = force(z)?;
+            return Ok((z, evaluations + 1, [(z1, f1), (z, f)]));
+        }
+        let mut z2 = z1 - g1 * (z1 - z0) / (g1 - g0);
+        if !(z2 > below && z2 < above) && below.is_finite() && above.is_finite() {
+            z2 = 0.5 * (below + above);
+        }
         let f2 = force(z2)?;
         evaluations += 1;
         (z0, g0, f0, z1, g1, f1) = (z1, g1, f1, z2, g(f2), f2);

@@ -112,9 +112,8 @@ fn runs(deck: &str) -> (Vec<(u64, String, CaseResult)>, String) {
     let mut out = Vec::new();
     for path in scenes.iter().filter(|p| p.extension().is_some_and(|e| e == "toml")) {
         let mut scene = WheelRailScene::from_file(path).unwrap();
-        // On CONTACT's meshed wheel surface, as the gated scenes of scenes/wheelrail (KPEC and
-        // ANALYN, whose bounds are their own, on the exact surface).
-        scene.wheel_mesh = deck != "mbench_a22_kpec";
+        // On CONTACT's meshed wheel surface, as the gated scenes of scenes/wheelrail.
+        scene.wheel_mesh = true;
         let run = run_scene(&scene).unwrap();
         out.extend(run.cases.into_iter().map(|(c, r)| (c, scene.solvers[0].clone(), r)));
     }
@@ -189,13 +188,13 @@ fn friction_varying_across_the_rail_and_along_the_track_against_contact() {
     assert!(failures.is_empty(), "{} deviations beyond the tolerances:\n{}", failures.len(), failures.join("\n"));
 }
 
-/// The KPEC deck: cases 1–3 KPEC, 4–6 ANALYN (both with FASTSIM), 7–9 the exact theory, each at
-/// y = 0, 0.5, 5 mm. The imported scenes name `kpec`, `analyn` and `contact`; the exact cases 7
-/// and 8 are within the benchmark's first tolerances on the exact surface (9 is the benchmark's right case 11,
-/// two regions blended by CONTACT, see tests/all/wheelrail_mbench.rs). KPEC and ANALYN solve the
-/// exact solver's patch (docs/wheelrail.md, "Models"): the same reference, creepages and FN as
-/// cases 7–9, where CONTACT balances FZ with their own normal forces; their forces against
-/// CONTACT's are measured and bounded here.
+/// The KPEC deck: cases 1–3 KPEC, 4–6 ANALYN (both with CONTACT's FASTSIM), 7–9 the exact theory,
+/// each at y = 0, 0.5, 5 mm. The imported scenes name `kpec`, `analyn` and `contact`; the exact
+/// cases 7 and 8 are within the benchmark's first tolerances (9 is the benchmark's right case 11,
+/// two regions blended by CONTACT, see tests/all/wheelrail_mbench.rs). KPEC and ANALYN take their
+/// own patches and wheelset height, as CONTACT balances FZ with their own normal forces: ANALYN's
+/// cases are CONTACT's to the printed digits, KPEC's within the bounds of their declared gaps
+/// (docs/wheelrail.md, "KPEC and ANALYN").
 #[test]
 fn kpec_and_analyn_against_contact() {
     let (runs, _) = runs("mbench_a22_kpec");
@@ -212,37 +211,25 @@ fn kpec_and_analyn_against_contact() {
     let failures: Vec<String> =
         exact.iter().filter(|d| !within(d, EXACT_SURFACE_HALF_UNITS)).map(|d| format!("{d:?}")).collect();
     assert!(failures.is_empty(), "exact cases: {}", failures.join("\n"));
+    // Their own patches: the approximations carry FZ at heights of their own.
     for k in 0..6 {
         let (ours, exact_case) = (&runs[k].2, &runs[6 + k % 3].2);
-        assert_eq!(ours.normal, exact_case.normal, "case {}: the exact solver's patch", k + 1);
+        assert_ne!(ours.normal.z_ws_mm, exact_case.normal.z_ws_mm, "case {}: a height of its own", k + 1);
     }
-    let approximate: Vec<Deviation> = (1..=6).flat_map(devs).collect();
-    println!("KPEC and ANALYN against CONTACT's:");
-    for d in approximate
-        .iter()
-        .filter(|d| ["fx_tr_n", "fy_tr_n", "fx_n", "fs_n", "mn_nmm", "nadh", "nslip"].contains(&d.quantity))
-    {
-        println!(
-            "case {} {:>8}: ours {:10.4} contact {:10.4} ({:+.2} %)",
-            d.contact_case,
-            d.quantity,
-            d.ours,
-            d.contact,
-            100.0 * (d.ours / d.contact - 1.0)
-        );
-    }
-    // Measured: FX within 0.97 % of FZ (97 N, case 6 at y = 5 mm in full slip: 0.92 % on the
-    // fully coupled patch before its two regions were blended as CONTACT blends them, the blended
-    // height moving the exact solver's reference and creepages there), FS within 0.46 % (46 N,
-    // case 1 at y = 0, where CONTACT's KPEC creepage CKSI is −8.0e-5 against −5.7e-5 on the
-    // exact solver's patch): far beyond the printed digits (thousands of half-units).
-    let fz = 10_000.0;
-    let gap = |q: &str| {
-        approximate.iter().filter(|d| d.quantity == q).map(|d| (d.ours - d.contact).abs() / fz).fold(0.0, f64::max)
-    };
-    let (fx, fs) = (gap("fx_n"), gap("fs_n"));
-    println!("largest |dFX|/FZ {fx:.4}, |dFS|/FZ {fs:.4}");
-    assert!(fx <= 0.0098 && fs <= 0.0055, "FX {fx}, FS {fs} of FZ");
+    let analyn: Vec<Deviation> = (4..=6).flat_map(devs).collect();
+    println!("ANALYN against CONTACT's:");
+    worst(&analyn);
+    let failures: Vec<String> = analyn.iter().filter(|d| !within_mbench(d)).map(|d| format!("{d:?}")).collect();
+    assert!(failures.is_empty(), "ANALYN: {}", failures.join("\n"));
+    // KPEC at y = 0.5 and 5 mm: within 4.5 half-units (the contact one element off at y = 0.5).
+    let kpec: Vec<Deviation> = (2..=3).flat_map(devs).collect();
+    println!("KPEC (cases 2, 3) against CONTACT's:");
+    worst(&kpec);
+    let beyond: Vec<&Deviation> = kpec.iter().filter(|d| loose(d).unwrap_or(d.half_units <= 4.5) == false).collect();
+    assert!(beyond.is_empty(), "{beyond:?}");
+    // KPEC at y = 0: CONTACT's height iteration stopped at FZ = 9982 N; this project's carries 10000.
+    let fz = devs(1).into_iter().find(|d| d.quantity == "fz_tr_n").unwrap();
+    assert_eq!((fz.contact, (fz.ours - 10_000.0).abs() < 1e-3), (9982.0, true), "{fz:?}");
 }
 
 /// CONTACT's test of the initial estimate on worn profiles (testbank/examples_trans/iestim_site_b:

@@ -66,8 +66,9 @@ fn deviation(case: u64, patch: usize, quantity: &'static str, ours: f64, p: &Pri
 pub fn compare_case(case: u64, ours: &CaseResult, model: usize, theirs: &WheelRailCase) -> Vec<Deviation> {
     let mut out = Vec::new();
     let count = Printed { value: theirs.patches.len() as f64, half_unit: 0.5 };
-    out.push(deviation(case, 0, "n_patches", ours.normal.patches.len() as f64, &count));
-    let (_, forces, totals) = &ours.models[model];
+    let (name, forces, totals) = &ours.models[model];
+    let normal = ours.normal_of(name);
+    out.push(deviation(case, 0, "n_patches", normal.patches.len() as f64, &count));
     if let Some(f) = &theirs.forces {
         let names = ["fx_tr_n", "fy_tr_n", "fz_tr_n", "fx_ws_n", "fy_ws_n", "fz_ws_n"];
         let printed = [&f.fx_tr_n, &f.fy_tr_n, &f.fz_tr_n, &f.fx_ws_n, &f.fy_ws_n, &f.fz_ws_n];
@@ -82,8 +83,8 @@ pub fn compare_case(case: u64, ours: &CaseResult, model: usize, theirs: &WheelRa
         let tolerance = vpitch_tolerance(mu, fz, per_fx_rad_s_n).max(0.0);
         out.push(Deviation { tolerance, ..deviation(case, 0, "vpitch_rad_s", rad_s, &v.vpitch_rad_s) });
     }
-    let m = ours.normal.side.sign();
-    for (k, (p, f)) in ours.normal.patches.iter().zip(forces).enumerate() {
+    let m = normal.side.sign();
+    for (k, (p, f)) in normal.patches.iter().zip(forces).enumerate() {
         let Some(t) = theirs.patches.get(k) else { continue };
         out.extend(patch_deviations(case, k + 1, m, ours, p, f, t));
     }

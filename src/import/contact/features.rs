@@ -472,6 +472,12 @@ pub fn plain_fastsim(c: &WheelRailCase) -> bool {
         && matches!(model, Some(MaterialModel::SlopeReduction { k0_mf, alfamf, betamf }) if [k0_mf, alfamf, betamf] == [1.0; 3])
 }
 
+/// KPEC or ANALYN (B = 5, 6) as the wheel–rail scene carries them: with CONTACT's FASTSIM without
+/// slope reduction, or frictionless (T = 0: no tangential theory at all).
+pub fn approximate_supported(c: &WheelRailCase) -> bool {
+    plain_fastsim(c) || c.digits.t == 0
+}
+
 /// F = 1 as the wheel–rail scene carries it: with FZ prescribed (N = 1), in steady rolling
 /// (T = 3) with the exact theory (B = 0, M = 0).
 fn longitudinal_force_supported(c: &WheelRailCase) -> bool {
@@ -515,17 +521,18 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "approximate normal problems (KPEC, ANALYN) with FASTSIM",
         control: "B, M",
         supported: true,
-        reason: "imported as solvers = [\"kpec\"] (B = 5) or [\"analyn\"] (B = 6) with M = 3 (FASTSIM, no slope reduction): each patch's pressure from the approximation on the exact theory's patch at its FN (docs/wheelrail.md)",
-        used: |c| (matches!(c.digits.b, 5 | 6) && plain_fastsim(c)).then(|| format!("B = {}, M = 3", c.digits.b)),
+        reason: "imported as solvers = [\"kpec\"] (B = 5) or [\"analyn\"] (B = 6) with M = 3 (CONTACT's FASTSIM, no slope reduction) or in frictionless compression (T = 0, any M): each patch's pressure from the approximation at the approach the wheelset's height sets, the height balancing FZ with the approximation's own forces (docs/wheelrail.md)",
+        used: |c| (matches!(c.digits.b, 5 | 6) && approximate_supported(c)).then(|| format!("B = {}, M = {}", c.digits.b, c.digits.m)),
     },
     WheelRailRow {
         feature: WheelRailFeature::ApproximateNormalProblem,
         name: "approximate normal problems (KPEC, ANALYN) without FASTSIM",
         control: "B, M",
         supported: false,
-        reason: "supported: B = 5, 6 with M = 3 (FASTSIM, K0_MF = ALFAMF = BETAMF = 1), B = 0",
+        reason: "supported: B = 5, 6 with M = 3 (FASTSIM, K0_MF = ALFAMF = BETAMF = 1) or T = 0 (frictionless), B = 0",
         used: |c| {
-            (matches!(c.digits.b, 5 | 6) && !plain_fastsim(c)).then(|| format!("B = {}, M = {}", c.digits.b, c.digits.m))
+            (matches!(c.digits.b, 5 | 6) && !approximate_supported(c))
+                .then(|| format!("B = {}, M = {}", c.digits.b, c.digits.m))
         },
     },
     WheelRailRow {

@@ -33,6 +33,7 @@ pub const MODEL: ModelDef = ModelDef {
     prescribed_forces: true,
     shifts: true,
     normal_rows: true,
+    own_normal: None,
     check,
     cost_per_row,
     params: None,

@@ -81,23 +81,31 @@ pub(super) fn scenes(
     out
 }
 
-/// Runs of consecutive cases (case numbers one apart) whose scenes agree but for their rows.
+/// The cases whose scenes agree but for their rows, each group in the deck's order. Steady cases
+/// do not depend on one another, so a deck that alternates the left and the right wheel (CONTACT's
+/// performance decks) makes one scene per wheel; a case joins an earlier group only where every
+/// case between them is supported (a scene's `[origin]` range holds no case refused).
 fn groups(members: Vec<Member>) -> Vec<Vec<Member>> {
     let mut out: Vec<Vec<Member>> = Vec::new();
+    let mut supported = std::collections::BTreeSet::new();
     for m in members {
-        match out.last_mut() {
-            Some(g) if joins(g.last().map(|l| (l.number, &l.scene)), &m) => g.push(m),
-            _ => out.push(vec![m]),
+        let joins = |g: &&mut Vec<Member>| {
+            let last = g[g.len() - 1].number;
+            same_but_rows(&g[0].scene, &m.scene) && (last + 1..m.number).all(|n| supported.contains(&n))
+        };
+        let group = out.iter_mut().rev().find(joins);
+        supported.insert(m.number);
+        match group {
+            Some(g) => g.push(m),
+            None => out.push(vec![m]),
         }
     }
     out
 }
 
-/// Whether `m` continues the group whose last member is `last`.
-fn joins(last: Option<(usize, &WheelRailScene)>, m: &Member) -> bool {
-    last.is_some_and(|(number, scene)| {
-        number + 1 == m.number && WheelRailScene { cases: m.scene.cases.clone(), ..scene.clone() } == m.scene
-    })
+/// Whether two one-row scenes agree but for their rows.
+fn same_but_rows(a: &WheelRailScene, b: &WheelRailScene) -> bool {
+    WheelRailScene { cases: b.cases.clone(), ..a.clone() } == *b
 }
 
 /// The scene of a group: its name, rows and `[origin]`, written and read back; or the group's
@@ -186,13 +194,14 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
     })
 }
 
-/// The model of the case's B and M digits: KPEC (B = 5) or ANALYN (B = 6) with FASTSIM, FASTSIM
-/// on the full normal problem (M = 3), else the exact theory.
+/// The model of the case's B, M and T digits: KPEC (B = 5) or ANALYN (B = 6) with FASTSIM or
+/// frictionless, FASTSIM on the full normal problem (M = 3), else the exact theory.
 fn model_of(c: &WheelRailCase) -> &'static str {
-    match (c.digits.b, super::super::features::plain_fastsim(c)) {
-        (5, true) => "kpec",
-        (6, true) => "analyn",
-        (_, true) => "fastsim",
+    use super::super::features::{approximate_supported, plain_fastsim};
+    match c.digits.b {
+        5 if approximate_supported(c) => "kpec",
+        6 if approximate_supported(c) => "analyn",
+        _ if plain_fastsim(c) => "fastsim",
         _ => "contact",
     }
 }
