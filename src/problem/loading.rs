@@ -170,15 +170,6 @@ impl DeclaredLoading {
             Creepage::Table { rows, .. } => table_history(d, rows, at),
         }
     }
-
-    /// Whether rows carry their own rolling speed (a table's `v_mm_s`, a speed sweep).
-    pub fn row_speeds(&self) -> bool {
-        match &self.creepage {
-            Creepage::Sweep { speed, .. } => *speed,
-            Creepage::Table { rows, .. } => rows.v_mm_s.is_some(),
-            _ => false,
-        }
-    }
 }
 
 /// The sampled loading of a scene.

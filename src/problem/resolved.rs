@@ -139,11 +139,6 @@ fn one() -> f64 {
 }
 
 impl ResolvedScene {
-    /// The record of `p`, naming the solvers that ran.
-    pub fn of(p: &Problem, solvers_ran: &[String]) -> ResolvedScene {
-        Self::with_history(p, solvers_ran, Vec::new())
-    }
-
     /// The record of `p`, which it consumes (its sampled loading is dropped: the record holds
     /// the declaration).
     pub fn of_owned(p: Problem, solvers_ran: &[String]) -> ResolvedScene {
@@ -167,8 +162,8 @@ impl ResolvedScene {
         Ok(declared.sample(at)?.all_rows())
     }
 
-    /// The record of `p`; `history` is empty (only folders written before `loading` list it).
-    fn with_history(p: &Problem, solvers_ran: &[String], history: Vec<Sample>) -> ResolvedScene {
+    /// The record of `p`, naming the solvers that ran.
+    pub fn of(p: &Problem, solvers_ran: &[String]) -> ResolvedScene {
         let h = p.hertz();
         let flex = p.flexibilities();
         ResolvedScene {
@@ -229,7 +224,7 @@ impl ResolvedScene {
             report_group: p.report_group,
             stress: p.stress.clone(),
             loading: Some(p.declared.clone()),
-            legacy_history: history,
+            legacy_history: Vec::new(),
         }
     }
 
