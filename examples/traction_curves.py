@@ -70,7 +70,7 @@ def fastsim_reduced(k: float):
     """FASTSIM with its creepages times k, as a model of the scene (columns of <model>.csv)."""
 
     def model(scene: dict) -> pl.DataFrame:
-        rows = pl.DataFrame(scene["history"])
+        rows = creepbench.loading(scene)
         creepages = rows.select("cx", "cy", "cs").to_numpy() * k
         forces = creepbench.steady(
             "fastsim",

@@ -91,6 +91,9 @@ pub enum FormatError {
     Csv { line: usize, source: csv::Error },
     #[error(transparent)]
     Json(#[from] serde_json::Error),
+    /// scene.json's declared loading that does not sample (`loading`, edited or damaged).
+    #[error("its loading does not sample: {0}")]
+    Loading(#[source] InputError),
 }
 
 /// A failure typed by the stage above this module that owns it (`solvers::SolveError`,

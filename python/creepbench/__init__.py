@@ -46,6 +46,7 @@ __all__ = [
     "Stepper",
     "Verdict",
     "check",
+    "loading",
     "model_names",
     "run",
     "simulate",
@@ -71,6 +72,24 @@ DEFAULT_ROLLING = {"v_mm_s": 1000.0, "courant": 1.0}
 def model_names() -> List[str]:
     """The built-in models' names, in registry order (``uba``, ``fastsim``, ``contact``, ...)."""
     return list(_cb.model_names())
+
+
+def loading(scene: Union[Path, Mapping[str, Any]], *, pandas: bool = False) -> Any:
+    """The loading of every row of a resolved scene (scene.json as a dict, or the path of a
+    scene.json), sampled from its declared ``loading`` as the models' runs sample it: a
+    DataFrame with the columns of an external model's ``loading.csv`` (docs/models.md):
+    step, t_s [s], cx, cy, cs [1/mm], fn_n [N], mu, then those some row gives of v_mm_s, courant,
+    fx_target, fy_target, pen_mm, chi_deg, b1_per_mm ... b6_mm (null where a row leaves one out).
+    The initial state (step 0) comes first when the scene has one."""
+    if isinstance(scene, Mapping):
+        text = json.dumps(scene)
+    else:
+        with open(os.fspath(scene), encoding="utf-8") as f:
+            text = f.read()
+    names, columns = _cb.loading(text)
+    df = pl.DataFrame({n: c for n, c in zip(names, columns)}).fill_nan(None)
+    df = df.with_columns(pl.col("step").cast(pl.Int64))
+    return _to_pandas(df) if pandas else df
 
 
 @dataclass(frozen=True)

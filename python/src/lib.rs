@@ -4,6 +4,7 @@
 
 mod errors;
 mod gate;
+mod loading;
 mod model;
 mod scene;
 mod simulate;
@@ -21,6 +22,7 @@ fn _creepbench(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("STEADY_CHUNK_ROWS", steady::CHUNK_ROWS)?;
     m.add_function(wrap_pyfunction!(steady::steady, m)?)?;
     m.add_function(wrap_pyfunction!(steady::model_names, m)?)?;
+    m.add_function(wrap_pyfunction!(loading::loading, m)?)?;
     m.add_class::<simulate::Simulation>()?;
     m.add_class::<stepper::Stepper>()?;
     Ok(())

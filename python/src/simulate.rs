@@ -19,7 +19,7 @@ use pyo3::types::PyDict;
 use std::path::PathBuf;
 
 /// A history's column names and its columns as NumPy arrays.
-type Columns<'py> = (Vec<String>, Vec<Bound<'py, PyArray1<f64>>>);
+pub(crate) type Columns<'py> = (Vec<String>, Vec<Bound<'py, PyArray1<f64>>>);
 
 /// One scene's results (`creepbench.Simulation` wraps it).
 #[pyclass(frozen, module = "creepbench._creepbench")]

@@ -21,7 +21,7 @@ def fastsim_as_python(scale=1.0, drop_rows=0, nan_at=None):
     """FASTSIM through steady(), its creepages scaled: a 'modified model'."""
 
     def model(s):
-        rows = s["history"][drop_rows:]
+        rows = creepbench.loading(s).to_dicts()[drop_rows:]
         c = np.array([[r["cx"], r["cy"], r["cs"]] for r in rows]) * scale
         f = creepbench.steady(
             "fastsim", c,

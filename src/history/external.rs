@@ -1,5 +1,6 @@
-//! External models: any executable that reads the resolved scene (scene.json) and writes a
-//! history CSV in the `simulate` format. Protocol (README, "Bring your own model"):
+//! External models: any executable that reads the resolved scene (scene.json) and its loading
+//! per row (`loading.csv` beside it) and writes a history CSV in the `simulate` format. Protocol
+//! (docs/models.md, "Bring your own model"):
 //! the command is run in the scene's folder as `COMMAND... SCENE_JSON OUT_CSV`; it must exit 0
 //! and leave OUT_CSV with the header `step,t_s,cx,cy,cs,fn_n,fx_over_fn,fy_over_fn[,...]` and
 //! one row per step of the scene (the step column must match the scene's steps; a row for
@@ -12,12 +13,14 @@
 
 use super::{History, COLUMNS};
 use crate::error::{Error, FormatError};
+use crate::problem::loading::write_loading_csv;
 use crate::problem::{Problem, ResolvedScene, Sample};
 use crate::safety::excerpt::{excerpt, one_line};
 use crate::safety::interrupt;
 use crate::safety::process::{self, Output, ProcessError};
 use crate::safety::read::{read_text, ReadError, MODEL_OUTPUT_LIMIT_BYTES};
 use crate::scene::ExternalSolver;
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Duration;
@@ -33,6 +36,8 @@ pub enum ExternalError {
     NotKept { folder: PathBuf, source: Box<ExternalError>, io: std::io::Error },
     #[error("writing scene.json: {0}")]
     SceneJson(#[source] std::io::Error),
+    #[error("writing {LOADING_CSV}: {0}")]
+    LoadingCsv(#[source] std::io::Error),
     #[error(transparent)]
     Process(#[from] ProcessError),
     #[error("the model wrote no output file {}", .0.display())]
@@ -51,7 +56,7 @@ pub enum ExternalError {
     Rows { out: PathBuf, got: usize, got_steps: StepRange, expected: usize, expected_steps: StepRange },
     #[error("output {} step {step} column {}: {} is not a finite number", .out.display(), excerpt(.column), excerpt(&.value.to_string()))]
     NotFinite { out: PathBuf, step: usize, column: String, value: f64 },
-    #[error("output {} step {step} column {}: {} differs from the scene's {want} (the loading columns must be copied from scene.json)", .out.display(), excerpt(.column), excerpt(&.value.to_string()))]
+    #[error("output {} step {step} column {}: {} differs from the scene's {want} (the loading columns must be copied from {LOADING_CSV})", .out.display(), excerpt(.column), excerpt(&.value.to_string()))]
     Loading { out: PathBuf, step: usize, column: &'static str, value: f64, want: f64 },
 }
 
@@ -133,12 +138,26 @@ fn keep(folder: PathBuf, e: ExternalError, output: &Output) -> ExternalError {
     }
 }
 
+/// The file beside the model's scene.json that holds the loading of every row (the initial
+/// state at step 0 first, when the scene has one), as [`write_loading_csv`] writes it.
+pub const LOADING_CSV: &str = "loading.csv";
+
 /// The model's scene.json, written into its (buffered) file as it is produced.
 fn write_scene_json(scene: &ResolvedScene, path: &Path) -> std::io::Result<()> {
-    use std::io::Write;
+    write_buffered(path, &|out| scene.write_json(out))
+}
+
+/// `write` into the new file `path`, buffered.
+fn write_buffered(path: &Path, write: &dyn Fn(&mut dyn Write) -> std::io::Result<()>) -> std::io::Result<()> {
     let mut out = std::io::BufWriter::new(std::fs::File::create(path)?);
-    scene.write_json(&mut out)?;
+    write(&mut out)?;
     out.flush()
+}
+
+/// The model's loading.csv: the problem's loading, every row it sampled.
+fn write_loading(problem: &Problem, path: &Path) -> std::io::Result<()> {
+    let rows: Vec<Sample> = problem.loading.initial.iter().chain(&problem.loading.samples).copied().collect();
+    write_buffered(path, &|out| write_loading_csv(&rows, out))
 }
 
 /// Run the model in the temporary folder `dir` and read its validated output; what it printed
@@ -147,6 +166,7 @@ fn run_in(spec: &ExternalSolver, problem: &Problem, dir: &Path, output: &mut Out
     let scene_json = dir.join("scene.json");
     let out_csv = dir.join(format!("{}.csv", spec.name));
     write_scene_json(&ResolvedScene::of(problem, &problem.solvers), &scene_json).map_err(ExternalError::SceneJson)?;
+    write_loading(problem, &dir.join(LOADING_CSV)).map_err(ExternalError::LoadingCsv)?;
     let mut program = std::path::PathBuf::from(&spec.command[0]);
     if program.components().count() > 1 && program.is_relative() {
         program = problem.scene_dir.join(program);
@@ -169,7 +189,7 @@ pub fn validate_in_process(h: History, problem: &Problem) -> Result<History, Err
     validate(h, problem, &out).map_err(|e| Error::External { scene: problem.name.clone(), solver, source: Box::new(e) })
 }
 
-/// Models copy the loading from scene.json: it must come back equal to this relative tolerance.
+/// Models copy the loading from loading.csv: it must come back equal to this relative tolerance.
 const LOADING_RTOL: f64 = 1e-9;
 /// Longest message of the CSV parser quoted in an error.
 const PARSE_MESSAGE_CHARS: usize = 300;

@@ -5,6 +5,7 @@ use crate::error::InputError;
 use crate::physics::{ContactGeometry, Grid};
 use crate::scene::table::{CreepageTable, Either, TableX};
 use crate::scene::{compact, Creepage, InitKind, Scene};
+use std::path::{Path, PathBuf};
 
 /// A table covers step k when `k dt <= t_end (1 + TABLE_END_REL)`: its last time may be printed
 /// rounded (10 significant digits are 5e-11 relative) and still cover the step it was written for.
@@ -94,6 +95,83 @@ pub enum LoadingKind {
     Sweep,
 }
 
+/// The loading as the scene declares it (scene.json's `loading`): the creepage's kind and
+/// parameters (a table by its rows) and the constants each row takes where the kind does not set
+/// them. [`DeclaredLoading::sample`] gives its rows: the one sampling of a loading, for the models
+/// and for whoever reads it back from scene.json.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DeclaredLoading {
+    pub creepage: Creepage,
+    /// `[creepage] cy`.
+    pub cy: f64,
+    /// `[creepage] fy_over_fn`: Fy/FN prescribed in place of cy.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fy_over_fn: Option<f64>,
+    /// `[creepage] cs` [1/mm].
+    pub cs_per_mm: f64,
+    /// `[contact] fn_n` [N].
+    pub fn_n: f64,
+    /// `[contact] pen_mm`: the approach prescribed at every row [mm].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pen_mm: Option<f64>,
+    /// `[contact] mu`.
+    pub mu: f64,
+    /// `[limits] max_steps`.
+    pub max_steps: usize,
+}
+
+/// What sampling takes besides the declaration: the start, the time step and speed of
+/// `[rolling]`, the grid's element length along x (a table's Courant column) and the table's
+/// file (named in its errors).
+#[derive(Debug, Clone, Copy)]
+pub struct Stepping<'a> {
+    pub init: InitKind,
+    pub dt_s: f64,
+    pub v_mm_s: f64,
+    pub dx_mm: f64,
+    pub file: &'a Path,
+}
+
+impl DeclaredLoading {
+    /// The declaration of `scene` (a table without its file's path).
+    pub fn of(scene: &Scene) -> DeclaredLoading {
+        let mut creepage = scene.creepage.clone();
+        if let Creepage::Table { file, .. } = &mut creepage {
+            *file = PathBuf::new();
+        }
+        DeclaredLoading {
+            creepage,
+            cy: scene.cy,
+            fy_over_fn: scene.fy_over_fn,
+            cs_per_mm: scene.cs_per_mm,
+            fn_n: scene.fn_n,
+            pen_mm: scene.pen_mm,
+            mu: scene.mu,
+            max_steps: scene.limits.max_steps,
+        }
+    }
+
+    /// The loading sampled at its steps: step, sine and table at t_k = k dt (a table with a
+    /// speed or Courant column at its own steps), a sweep at its points.
+    pub fn sample(&self, at: Stepping) -> Result<Loading, InputError> {
+        let d = self;
+        match &self.creepage {
+            Creepage::Step { c, steps, c_before, fx_prescribed } => {
+                step_history(d, at, *c, *c_before, *steps, *fx_prescribed)
+            }
+            Creepage::Sine { c0, cp, freq_hz, periods } => sine_history(d, at, *c0, *cp, *freq_hz, *periods),
+            Creepage::Sweep { points, direction, fx_prescribed, .. } => {
+                sweep_points(d, at, *points, *direction, *fx_prescribed)
+            }
+            Creepage::Table { rows, .. } if rows.v_mm_s.is_some() || rows.courant.is_some() => {
+                speed_table_history(d, rows, at)
+            }
+            Creepage::Table { rows, .. } => table_history(d, rows, at),
+        }
+    }
+}
+
 /// The sampled loading of a scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Loading {
@@ -120,28 +198,35 @@ impl Loading {
         warnings: &mut Vec<String>,
     ) -> Result<Loading, InputError> {
         check_approach_once(scene)?;
-        let loading = match &scene.creepage {
-            Creepage::Step { c, steps, c_before, fx_prescribed } => {
-                step_history(scene, dt_s, *c, *c_before, *steps, *fx_prescribed)?
-            }
-            Creepage::Sine { c0, cp, freq_hz, periods } => {
-                sine_history(scene, dt_s, *c0, *cp, *freq_hz, *periods, warnings)?
-            }
-            Creepage::Sweep { points, direction, fx_prescribed, .. } => {
-                sweep_points(scene, dt_s, *points, *direction, *fx_prescribed)?
-            }
-            Creepage::Table { rows, .. } if rows.v_mm_s.is_some() || rows.courant.is_some() => {
-                speed_table_history(scene, rows, dt_s, grid)?
-            }
-            Creepage::Table { rows, .. } => table_history(scene, rows, dt_s, geometry, grid, warnings)?,
+        let file = match &scene.creepage {
+            Creepage::Table { file, .. } => file.as_path(),
+            _ => Path::new(""),
         };
+        let at = Stepping { init: scene.init, dt_s, v_mm_s: scene.v_mm_s, dx_mm: grid.dx_mm, file };
+        let loading = DeclaredLoading::of(scene).sample(at)?;
+        match &scene.creepage {
+            Creepage::Sine { freq_hz, .. } => warn_aliased(*freq_hz, dt_s, warnings),
+            Creepage::Table { rows, .. } if rows.v_mm_s.is_none() && rows.courant.is_none() => {
+                warn_beyond_grid(scene, rows, geometry, grid, warnings)
+            }
+            _ => {}
+        }
         loading.check_forces()?;
         Ok(loading)
     }
 
     /// A loading of `kind` with its rows, neither a sine's frequency nor a sweep's direction.
-    fn of_rows(scene: &Scene, kind: LoadingKind, initial: Option<Sample>, samples: Vec<Sample>) -> Loading {
-        Loading { kind, freq_hz: None, sweep_direction: None, initial, samples, init: scene.init }
+    fn of_rows(init: InitKind, kind: LoadingKind, initial: Option<Sample>, samples: Vec<Sample>) -> Loading {
+        Loading { kind, freq_hz: None, sweep_direction: None, initial, samples, init }
+    }
+
+    /// Every row sampled, the initial state (when the loading has one) first.
+    pub fn all_rows(self) -> Vec<Sample> {
+        let mut rows = self.samples;
+        if let Some(s0) = self.initial {
+            rows.insert(0, s0);
+        }
+        rows
     }
 
     /// Whether any row prescribes a total force in place of a creepage (CONTACT F = 1, 2).
@@ -256,37 +341,35 @@ fn check_approach_once(scene: &Scene) -> Result<(), InputError> {
 
 /// A step: cx (or Fx/FN with `fx_prescribed`) = `c_before` at t = 0, then `c` at steps 1..=`steps`.
 fn step_history(
-    scene: &Scene,
-    dt_s: f64,
+    d: &DeclaredLoading,
+    at: Stepping,
     c: f64,
     c_before: f64,
     steps: usize,
     fx_prescribed: bool,
 ) -> Result<Loading, InputError> {
-    let (base, max) = (Sample::nominal(scene), scene.limits.max_steps);
+    let (base, max, dt_s) = (Sample::nominal(d), d.max_steps, at.dt_s);
     if steps > max {
         return Err(too_many(steps as f64, max, dt_s));
     }
-    let at = |k: usize, c: f64| match fx_prescribed {
+    let row = |k: usize, c: f64| match fx_prescribed {
         true => Sample { step: k, t_s: k as f64 * dt_s, fx_target: Some(c), ..base },
         false => Sample { step: k, t_s: k as f64 * dt_s, cx: c, ..base },
     };
-    let s: Vec<Sample> = (1..=steps).map(|k| at(k, c)).collect();
-    Ok(Loading::of_rows(scene, LoadingKind::Step, Some(at(0, c_before)), s))
+    let s: Vec<Sample> = (1..=steps).map(|k| row(k, c)).collect();
+    Ok(Loading::of_rows(at.init, LoadingKind::Step, Some(row(0, c_before)), s))
 }
 
-/// A sine: cx = c0 + cp sin(2π F t_k) over `periods` periods of F = `freq_hz`, c0 at t = 0; a
-/// warning where a period has fewer than 3 steps.
+/// A sine: cx = c0 + cp sin(2π F t_k) over `periods` periods of F = `freq_hz`, c0 at t = 0.
 fn sine_history(
-    scene: &Scene,
-    dt_s: f64,
+    d: &DeclaredLoading,
+    at: Stepping,
     c0: f64,
     cp: f64,
     freq_hz: f64,
     periods: f64,
-    warnings: &mut Vec<String>,
 ) -> Result<Loading, InputError> {
-    let (base, max) = (Sample::nominal(scene), scene.limits.max_steps);
+    let (base, max, dt_s) = (Sample::nominal(d), d.max_steps, at.dt_s);
     let n = (periods / (freq_hz * dt_s)).ceil();
     if n > max as f64 {
         return Err(too_many(n, max, dt_s));
@@ -298,70 +381,66 @@ fn sine_history(
             Sample { step: k, t_s: t, cx: c0 + cp * (w * t).sin(), ..base }
         })
         .collect();
+    let initial = Sample { cx: c0, ..base };
+    Ok(Loading { freq_hz: Some(freq_hz), ..Loading::of_rows(at.init, LoadingKind::Sine, Some(initial), s) })
+}
+
+/// A warning where a sine's period has fewer than 3 steps.
+fn warn_aliased(freq_hz: f64, dt_s: f64, warnings: &mut Vec<String>) {
     if 1.0 / (freq_hz * dt_s) < 3.0 {
         warnings.push(format!(
             "creepage.freq_hz = {freq_hz}: only {:.2} steps per period (dt = {dt_s:e} s); the history is aliased",
             1.0 / (freq_hz * dt_s)
         ));
     }
-    let initial = Sample { cx: c0, ..base };
-    Ok(Loading { freq_hz: Some(freq_hz), ..Loading::of_rows(scene, LoadingKind::Sine, Some(initial), s) })
 }
 
-/// A sweep's `points` steady points along `direction` ([`Scene::sweep_point`], [`Scene::sweep_speed`]),
+/// A sweep's `points` steady points along `direction` ([`Creepage::sweep_point`], [`Creepage::sweep_speed`]),
 /// a force ratio prescribed in place of cx (`fx_prescribed`) or cy (the scene's `fy_over_fn`).
 fn sweep_points(
-    scene: &Scene,
-    dt_s: f64,
+    d: &DeclaredLoading,
+    at: Stepping,
     points: usize,
     direction: [f64; 3],
     fx_prescribed: bool,
 ) -> Result<Loading, InputError> {
-    let (base, max) = (Sample::nominal(scene), scene.limits.max_steps);
+    let (base, max, dt_s) = (Sample::nominal(d), d.max_steps, at.dt_s);
     if points > max {
         return Err(too_many(points as f64, max, dt_s));
     }
     let s = (1..=points)
         .map(|k| {
-            let [x, y, cs] = scene.sweep_point(k).unwrap_or_default();
+            let [x, y, cs] = d.creepage.sweep_point(k, d.fy_over_fn.unwrap_or(d.cy), d.cs_per_mm).unwrap_or_default();
             // A force ratio prescribed in place of a creepage: the creepage starts at 0.
             let (cx, fx_target) = if fx_prescribed { (0.0, Some(x)) } else { (x, None) };
-            let (cy, fy_target) = if scene.fy_over_fn.is_some() { (0.0, Some(y)) } else { (y, None) };
-            let v_mm_s = scene.sweep_speed(k);
+            let (cy, fy_target) = if d.fy_over_fn.is_some() { (0.0, Some(y)) } else { (y, None) };
+            let v_mm_s = d.creepage.sweep_speed(k);
             Sample { step: k, t_s: 0.0, cx, cy, cs, v_mm_s, fx_target, fy_target, ..base }
         })
         .collect();
-    Ok(Loading { sweep_direction: Some(direction), ..Loading::of_rows(scene, LoadingKind::Sweep, None, s) })
+    Ok(Loading { sweep_direction: Some(direction), ..Loading::of_rows(at.init, LoadingKind::Sweep, None, s) })
 }
 
 /// A table with a speed or Courant column: its steps of [`speed_table`], its speed and Courant
 /// number at t = 0 in the initial state.
-fn speed_table_history(scene: &Scene, rows: &CreepageTable, dt_s: f64, grid: &Grid) -> Result<Loading, InputError> {
-    let samples = speed_table(scene, rows, (dt_s * scene.v_mm_s, grid.dx_mm), scene.limits.max_steps)?;
+fn speed_table_history(d: &DeclaredLoading, rows: &CreepageTable, at: Stepping) -> Result<Loading, InputError> {
+    let samples = speed_table(d, rows, at)?;
     let initial = Sample {
         v_mm_s: rows.v_mm_s.as_ref().map(|v| rows.interpolate(v, 0.0)),
         courant: rows.courant.as_ref().map(|c| rows.interpolate(c, 0.0)),
-        ..table_row(scene, rows, 0, 0.0)
+        ..table_row(d, rows, 0, 0.0)
     };
-    Ok(Loading::of_rows(scene, LoadingKind::Table, Some(initial), samples))
+    Ok(Loading::of_rows(at.init, LoadingKind::Table, Some(initial), samples))
 }
 
-/// A table at t_k = k dt up to its last time ([`table_steps`]); a warning where its largest FN
-/// gives a contact beyond the grid ([`warn_beyond_grid`]).
-fn table_history(
-    scene: &Scene,
-    rows: &CreepageTable,
-    dt_s: f64,
-    geometry: &dyn ContactGeometry,
-    grid: &Grid,
-    warnings: &mut Vec<String>,
-) -> Result<Loading, InputError> {
-    let max = scene.limits.max_steps;
+/// A table at t_k = k dt up to its last time ([`table_steps`]).
+fn table_history(d: &DeclaredLoading, rows: &CreepageTable, at: Stepping) -> Result<Loading, InputError> {
+    let (max, dt_s) = (d.max_steps, at.dt_s);
     let n = table_steps(rows.end_s(), dt_s);
     if n > max as f64 {
         return Err(too_many(n, max, dt_s));
     }
-    let at = |k: usize| table_row(scene, rows, k, k as f64 * dt_s);
+    let row = |k: usize| table_row(d, rows, k, k as f64 * dt_s);
     if n < 1.0 {
         return Err(InputError::new(
             "creepage.file",
@@ -369,8 +448,7 @@ fn table_history(
             format!("a table reaching at least one step, t >= dt = {dt_s:e} s (within {TABLE_END_REL:e} relative)"),
         ));
     }
-    warn_beyond_grid(scene, rows, geometry, grid, warnings);
-    Ok(Loading::of_rows(scene, LoadingKind::Table, Some(at(0)), (1..=n as usize).map(at).collect()))
+    Ok(Loading::of_rows(at.init, LoadingKind::Table, Some(row(0)), (1..=n as usize).map(row).collect()))
 }
 
 /// A warning where a table's largest FN gives an ellipse of `geometry` beyond the grid's
@@ -401,7 +479,7 @@ fn warn_beyond_grid(
 }
 
 /// The table's loading at step k, time `t` (columns it lacks: the scene's constants).
-fn table_row(scene: &Scene, rows: &CreepageTable, k: usize, t: f64) -> Sample {
+fn table_row(scene: &DeclaredLoading, rows: &CreepageTable, k: usize, t: f64) -> Sample {
     let get = |s: &Option<Vec<f64>>, d: f64| s.as_ref().map_or(d, |v| rows.interpolate(v, t));
     // Per row one of the creepage and the force: the row's ([`CreepageTable::either_at`]).
     let given_or_force = |c: &[f64], f: &[f64]| match rows.either_at(c, f, t) {
@@ -449,13 +527,9 @@ const SPEED_ITERATIONS: usize = 200;
 /// (CONTACT's VELOC and DQ of the case, reference/contact_friction/README.md "How the histories
 /// are formed"); (v_k, dq_k) is the fixed point of (v, dq) = (V, DQ)(t_(k−1) + dq/v), reached while
 /// they change by less than themselves per step.
-fn speed_table(
-    scene: &Scene,
-    rows: &CreepageTable,
-    (dq_mm, dx_mm): (f64, f64),
-    max: usize,
-) -> Result<Vec<Sample>, InputError> {
-    let speed = |t: f64| rows.v_mm_s.as_ref().map_or(scene.v_mm_s, |v| rows.interpolate(v, t));
+fn speed_table(scene: &DeclaredLoading, rows: &CreepageTable, at: Stepping) -> Result<Vec<Sample>, InputError> {
+    let (dq_mm, dx_mm, max) = (at.dt_s * at.v_mm_s, at.dx_mm, scene.max_steps);
+    let speed = |t: f64| rows.v_mm_s.as_ref().map_or(at.v_mm_s, |v| rows.interpolate(v, t));
     let step = |t: f64| rows.courant.as_ref().map_or(dq_mm, |c| rows.interpolate(c, t) * dx_mm);
     let end = rows.end_s() * (1.0 + TABLE_END_REL);
     let (mut t, mut samples) = (0.0, Vec::new());
@@ -471,7 +545,7 @@ fn speed_table(
             }
         }
         if !settled {
-            return Err(unsettled_step(scene, rows, t, (v, dq)));
+            return Err(unsettled_step(at.file, rows, t, (v, dq)));
         }
         let t_next = t + dq / v;
         if t_next > end {
@@ -504,11 +578,8 @@ fn speed_table(
 /// The step from `t` of a table with a speed or Courant column whose (v, dq) does not settle
 /// ([`speed_table`]; `(v, dq)` the last iterate): names the table's file and those of its columns
 /// it has, and the table's rows around `t` by their times.
-fn unsettled_step(scene: &Scene, rows: &CreepageTable, t: f64, (v, dq): (f64, f64)) -> InputError {
-    let file = match &scene.creepage {
-        Creepage::Table { file, .. } => file.display().to_string(),
-        _ => String::new(),
-    };
+fn unsettled_step(file: &Path, rows: &CreepageTable, t: f64, (v, dq): (f64, f64)) -> InputError {
+    let file = file.display().to_string();
     let columns: Vec<&str> = [("v_mm_s", rows.v_mm_s.is_some()), ("courant", rows.courant.is_some())]
         .into_iter()
         .filter_map(|(name, given)| given.then_some(name))
@@ -536,7 +607,7 @@ fn unsettled_step(scene: &Scene, rows: &CreepageTable, t: f64, (v, dq): (f64, f6
 impl Sample {
     /// The scene's loading at t = 0: contact.fn_n (and the approach `contact.pen_mm` where
     /// prescribed), μ, the constant cy and cs, cx = 0.
-    pub fn nominal(scene: &Scene) -> Sample {
+    pub fn nominal(scene: &DeclaredLoading) -> Sample {
         Sample {
             fy_target: scene.fy_over_fn,
             pen_mm: scene.pen_mm,
@@ -561,5 +632,85 @@ fn table_steps(t_end_s: f64, dt_s: f64) -> f64 {
         n + 1.0
     } else {
         n
+    }
+}
+
+/// A column of the per-step loading as a file or a table gives it (an external model's
+/// `loading.csv`, the Python package's `loading`): its name and a row's value (`None`: empty).
+pub struct LoadingColumn {
+    pub name: &'static str,
+    pub value: fn(&Sample) -> Option<f64>,
+    /// Written only where some row gives it.
+    pub optional: bool,
+}
+
+/// The loading's columns: those of a history (step, t_s, cx, cy, cs, fn_n, mu), then what a row
+/// prescribes or carries of its own (speed, Courant number, forces, approach, CHI, undeformed distance).
+pub const LOADING_COLUMNS: [LoadingColumn; 19] = [
+    LoadingColumn { name: "step", value: |s| Some(s.step as f64), optional: false },
+    LoadingColumn { name: "t_s", value: |s| Some(s.t_s), optional: false },
+    LoadingColumn { name: "cx", value: |s| Some(s.cx), optional: false },
+    LoadingColumn { name: "cy", value: |s| Some(s.cy), optional: false },
+    LoadingColumn { name: "cs", value: |s| Some(s.cs), optional: false },
+    LoadingColumn { name: "fn_n", value: |s| Some(s.fn_n), optional: false },
+    LoadingColumn { name: "mu", value: |s| Some(s.mu), optional: false },
+    LoadingColumn { name: "v_mm_s", value: |s| s.v_mm_s, optional: true },
+    LoadingColumn { name: "courant", value: |s| s.courant, optional: true },
+    LoadingColumn { name: "fx_target", value: |s| s.fx_target, optional: true },
+    LoadingColumn { name: "fy_target", value: |s| s.fy_target, optional: true },
+    LoadingColumn { name: "pen_mm", value: |s| s.pen_mm, optional: true },
+    LoadingColumn { name: "chi_deg", value: |s| s.chi_deg, optional: true },
+    LoadingColumn { name: "b1_per_mm", value: |s| s.h_coefficients.map(|b| b[0]), optional: true },
+    LoadingColumn { name: "b2_per_mm", value: |s| s.h_coefficients.map(|b| b[1]), optional: true },
+    LoadingColumn { name: "b3_per_mm", value: |s| s.h_coefficients.map(|b| b[2]), optional: true },
+    LoadingColumn { name: "b4", value: |s| s.h_coefficients.map(|b| b[3]), optional: true },
+    LoadingColumn { name: "b5", value: |s| s.h_coefficients.map(|b| b[4]), optional: true },
+    LoadingColumn { name: "b6_mm", value: |s| s.h_coefficients.map(|b| b[5]), optional: true },
+];
+
+/// The columns `rows` give: every history column, and each optional one some row has.
+pub fn loading_columns(rows: &[Sample]) -> Vec<&'static LoadingColumn> {
+    LOADING_COLUMNS.iter().filter(|c| !c.optional || rows.iter().any(|s| (c.value)(s).is_some())).collect()
+}
+
+/// `rows` as CSV: the header of [`loading_columns`], one line per row, each number in its shortest
+/// form that reads back to the same value, an empty cell where a row leaves a column out.
+pub fn write_loading_csv(rows: &[Sample], out: &mut dyn std::io::Write) -> std::io::Result<()> {
+    let columns = loading_columns(rows);
+    let names: Vec<&str> = columns.iter().map(|c| c.name).collect();
+    writeln!(out, "{}", names.join(","))?;
+    for s in rows {
+        for (k, c) in columns.iter().enumerate() {
+            if k > 0 {
+                out.write_all(b",")?;
+            }
+            if let Some(v) = (c.value)(s) {
+                write!(out, "{v}")?;
+            }
+        }
+        out.write_all(b"\n")?;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod loading_csv_tests {
+    use super::*;
+
+    /// The history's loading columns always, an optional one where some row gives it (an empty
+    /// cell where a row does not), each number in its shortest round-trip form.
+    #[test]
+    fn loading_csv_has_the_history_columns_and_what_rows_give() {
+        let a = Sample::given(0, 0.0, 0.1, -0.0, 1e-300, 1e5, 0.4);
+        let b = Sample { v_mm_s: Some(2500.5), ..Sample::given(1, 0.004, 0.2, 0.0, 0.0, 1e5, 0.3) };
+        let mut out = Vec::new();
+        write_loading_csv(&[a, b], &mut out).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(lines[0], "step,t_s,cx,cy,cs,fn_n,mu,v_mm_s");
+        assert_eq!(lines[2], "1,0.004,0.2,0,0,100000,0.3,2500.5");
+        let cells: Vec<&str> = lines[1].split(',').collect();
+        assert_eq!((cells[3], cells[7]), ("-0", ""));
+        assert_eq!(cells[4].parse::<f64>().unwrap(), 1e-300);
     }
 }

@@ -7,7 +7,7 @@ pub mod loading;
 pub mod params;
 pub mod resolved;
 
-pub use loading::{Loading, LoadingKind, Sample};
+pub use loading::{DeclaredLoading, Loading, LoadingKind, Sample, Stepping};
 pub use params::{ModelParamSet, ModelParams};
 pub use resolved::ResolvedScene;
 
@@ -241,6 +241,8 @@ pub struct Problem {
     pub friction_rows: Option<crate::physics::RowFriction>,
     /// The scene's nominal loading (contact.fn_n, contact.mu, the constant cy and cs).
     pub nominal: Sample,
+    /// The loading as the scene declared it (scene.json's `loading`), of which `loading` is the sampling.
+    pub declared: DeclaredLoading,
     pub loading: Loading,
     pub model: ModelOptions,
     /// Each model's own parameters, read and validated once ([`params`]).
@@ -302,6 +304,7 @@ impl Problem {
     /// The problem of `scene` from its resolved physics and the scene's settings, copied as given;
     /// no metrics yet.
     fn assemble(scene: &Scene, solvers: Vec<String>, model_params: ModelParamSet, physics: Physics) -> Problem {
+        let declared = DeclaredLoading::of(scene);
         Problem {
             name: scene.name.clone(),
             solvers,
@@ -317,7 +320,8 @@ impl Problem {
             friction: scene.friction,
             memory: scene.memory,
             friction_rows: scene.friction_rows.clone(),
-            nominal: Sample::nominal(scene),
+            nominal: Sample::nominal(&declared),
+            declared,
             loading: physics.loading,
             model: scene.model,
             model_params,

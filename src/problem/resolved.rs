@@ -3,7 +3,8 @@
 //! n_steps and the solvers that ran), read back by the harness and by external models.
 
 use super::params::ParamEntries;
-use super::{LoadingKind, Problem, Sample};
+use super::{DeclaredLoading, LoadingKind, Problem, Sample, Stepping};
+use crate::error::InputError;
 use crate::scene::report::ReportGroup;
 use crate::scene::{ContactSolverOptions, InitKind, ModelOptions, NormalOptions};
 use serde::{Deserialize, Serialize};
@@ -110,8 +111,14 @@ pub struct ResolvedScene {
     /// The subsurface points of `[stress]` (absent: none asked for).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stress: Option<crate::scene::stress::StressPoints>,
-    /// The loading at every row (step 0 = the initial state at t = 0, when the scene has one).
-    pub history: Vec<Sample>,
+    /// The loading as the scene declared it; its rows are [`ResolvedScene::loading_rows`]
+    /// (absent only in result folders written before it, which list `history`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub loading: Option<DeclaredLoading>,
+    /// The loading at every row, as result folders written before `loading` listed it: read,
+    /// never written.
+    #[serde(default, skip_serializing, rename = "history")]
+    pub legacy_history: Vec<Sample>,
 }
 
 /// scene.json's `model`: the shared options, then each model's own parameters in registry order.
@@ -132,27 +139,31 @@ fn one() -> f64 {
 }
 
 impl ResolvedScene {
+    /// The record of `p`, which it consumes (its sampled loading is dropped: the record holds
+    /// the declaration).
+    pub fn of_owned(p: Problem, solvers_ran: &[String]) -> ResolvedScene {
+        Self::of(&p, solvers_ran)
+    }
+
+    /// The loading at every row (step 0 = the initial state at t = 0, when the scene has one):
+    /// the declared loading sampled as the run sampled it ([`DeclaredLoading::sample`]), or a
+    /// folder's `history` written before the declaration was recorded.
+    pub fn loading_rows(&self) -> Result<Vec<Sample>, InputError> {
+        let Some(declared) = &self.loading else {
+            return Ok(self.legacy_history.clone());
+        };
+        let at = Stepping {
+            init: self.init,
+            dt_s: self.dt_s,
+            v_mm_s: self.v_mm_s,
+            dx_mm: self.dx_mm,
+            file: std::path::Path::new("scene.json"),
+        };
+        Ok(declared.sample(at)?.all_rows())
+    }
+
     /// The record of `p`, naming the solvers that ran.
     pub fn of(p: &Problem, solvers_ran: &[String]) -> ResolvedScene {
-        let history = p.loading.initial.iter().chain(p.loading.samples.iter()).copied().collect();
-        Self::with_history(p, solvers_ran, history)
-    }
-
-    /// The record of `p`, which it consumes: its loading becomes the record's history in place
-    /// (not copied: a long history is held once).
-    pub fn of_owned(mut p: Problem, solvers_ran: &[String]) -> ResolvedScene {
-        let mut history = std::mem::take(&mut p.loading.samples);
-        let n_steps = history.len();
-        if let Some(s0) = p.loading.initial {
-            history.insert(0, s0);
-        }
-        let mut scene = Self::with_history(&p, solvers_ran, history);
-        scene.n_steps = n_steps;
-        scene
-    }
-
-    /// The record of `p` with `history`, the rows of its loading.
-    fn with_history(p: &Problem, solvers_ran: &[String], history: Vec<Sample>) -> ResolvedScene {
         let h = p.hertz();
         let flex = p.flexibilities();
         ResolvedScene {
@@ -212,7 +223,8 @@ impl ResolvedScene {
             origin: p.origin.clone(),
             report_group: p.report_group,
             stress: p.stress.clone(),
-            history,
+            loading: Some(p.declared.clone()),
+            legacy_history: Vec::new(),
         }
     }
 
@@ -241,10 +253,5 @@ impl ResolvedScene {
     /// Sine period [s], if the scene is a sine.
     pub fn period_s(&self) -> Option<f64> {
         self.freq_hz.map(|f| 1.0 / f)
-    }
-
-    /// Largest μ over the rows (a table may vary it).
-    pub fn mu_max(&self) -> f64 {
-        self.history.iter().map(|s| s.mu).fold(0.0, f64::max)
     }
 }

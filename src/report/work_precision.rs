@@ -107,7 +107,8 @@ pub fn section(scenes: &[StoredScene], refs: &References) -> Option<Section> {
     let mut curves: BTreeMap<String, Vec<Point>> = Default::default();
     for (name, grid) in GRIDS {
         let Some(sc) = find(name) else { continue };
-        let sim_s = sc.scene.history.last().map(|r| r.t_s).unwrap_or(f64::NAN);
+        let rows = sc.scene.loading_rows().unwrap_or_default();
+        let sim_s = rows.last().map(|r| r.t_s).unwrap_or(f64::NAN);
         for (solver, h) in &sc.histories {
             let err = x.error(h);
             let single = || sc.timing.get(solver).map(|t| t.wall_s).unwrap_or(f64::NAN);

@@ -36,8 +36,10 @@ pub struct MaterialSpec {
     pub layer: Option<crate::physics::material::Layer>,
 }
 
-/// The creepage history kinds.
-#[derive(Debug, Clone, PartialEq)]
+/// The creepage history kinds, as the scene declares them (scene.json's `loading.creepage`,
+/// tagged by `kind`; a table by its rows, without its file's path).
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(tag = "kind", rename_all = "lowercase", deny_unknown_fields)]
 pub enum Creepage {
     /// cx = `c_before` at t = 0, then `c` at every step k ≥ 1; with `fx_prescribed`, `c` is the
     /// Fx/FN prescribed at every step k ≥ 1 (`fx_over_fn`, CONTACT F = 1) and t = 0 carries none.
@@ -57,13 +59,56 @@ pub enum Creepage {
         points: usize,
         direction: [f64; 3],
         cx: f64,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
         at: Option<Vec<f64>>,
         speed: bool,
         fx_prescribed: bool,
     },
     /// A CSV table `t_s,cx[,cy,cs,fn_n,mu,v_mm_s]`, interpolated at t_k = k dt up to its last time
     /// (within `problem::loading::TABLE_END_REL`).
-    Table { file: PathBuf, rows: Box<table::CreepageTable> },
+    Table {
+        #[serde(skip)]
+        file: PathBuf,
+        #[serde(rename = "table")]
+        rows: Box<table::CreepageTable>,
+    },
+}
+
+impl Creepage {
+    /// Sweep point k = 1..=points ([`Scene::sweep_point`]) with `y` the constant of the second
+    /// component (cy, or Fy/FN where prescribed) and `cs` the spin's.
+    pub fn sweep_point(&self, k: usize, y: f64, cs: f64) -> Option<[f64; 3]> {
+        let Creepage::Sweep { from, to, points, direction, cx, at, .. } = self else {
+            return None;
+        };
+        let f = if *points > 1 { (k - 1) as f64 / (*points - 1) as f64 } else { 0.0 };
+        let t = match at {
+            Some(list) => *list.get(k.checked_sub(1)?)?,
+            None => from + (to - from) * f,
+        };
+        let add = |c: f64, d: f64| {
+            if d == 0.0 {
+                c
+            } else if c == 0.0 {
+                d * t
+            } else {
+                c + d * t
+            }
+        };
+        Some([add(*cx, direction[0]), add(y, direction[1]), add(cs, direction[2])])
+    }
+
+    /// Rolling speed [mm/s] of sweep point k of a speed sweep (`over = "v_mm_s"`), else `None`.
+    pub fn sweep_speed(&self, k: usize) -> Option<f64> {
+        let Creepage::Sweep { from, to, points, at, speed: true, .. } = self else {
+            return None;
+        };
+        let f = if *points > 1 { (k - 1) as f64 / (*points - 1) as f64 } else { 0.0 };
+        match at {
+            Some(list) => list.get(k.checked_sub(1)?).copied(),
+            None => Some(from + (to - from) * f),
+        }
+    }
 }
 
 /// The initial tangential state.
@@ -543,37 +588,12 @@ impl Scene {
     /// constant and a zero constant gives d·t, bit for bit: the cx sweep gives exactly the
     /// cx = from + (to − from)·(k − 1)/(points − 1) of scenes written before `over`/`direction`.
     pub fn sweep_point(&self, k: usize) -> Option<[f64; 3]> {
-        let Creepage::Sweep { from, to, points, direction, cx, at, .. } = &self.creepage else {
-            return None;
-        };
-        let f = if *points > 1 { (k - 1) as f64 / (*points - 1) as f64 } else { 0.0 };
-        let t = match at {
-            Some(list) => *list.get(k.checked_sub(1)?)?,
-            None => from + (to - from) * f,
-        };
-        let add = |c: f64, d: f64| {
-            if d == 0.0 {
-                c
-            } else if c == 0.0 {
-                d * t
-            } else {
-                c + d * t
-            }
-        };
-        let y = self.fy_over_fn.unwrap_or(self.cy);
-        Some([add(*cx, direction[0]), add(y, direction[1]), add(self.cs_per_mm, direction[2])])
+        self.creepage.sweep_point(k, self.fy_over_fn.unwrap_or(self.cy), self.cs_per_mm)
     }
 
     /// Rolling speed [mm/s] of sweep point k of a speed sweep (`over = "v_mm_s"`), else `None`.
     pub fn sweep_speed(&self, k: usize) -> Option<f64> {
-        let Creepage::Sweep { from, to, points, at, speed: true, .. } = &self.creepage else {
-            return None;
-        };
-        let f = if *points > 1 { (k - 1) as f64 / (*points - 1) as f64 } else { 0.0 };
-        match at {
-            Some(list) => list.get(k.checked_sub(1)?).copied(),
-            None => Some(from + (to - from) * f),
-        }
+        self.creepage.sweep_speed(k)
     }
 
     /// An undeformed distance per row (columns `b1_per_mm` … `b6_mm`) replaces a geometry given per

@@ -73,8 +73,10 @@ pub enum Either {
     Second(f64),
 }
 
-/// A validated table: strictly increasing times, finite values in range.
-#[derive(Debug, Clone, PartialEq)]
+/// A validated table: strictly increasing times, finite values in range. In scene.json by its
+/// rows ([`TableRows`]), read back through the same checks as its file.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(try_from = "TableRows", into = "TableRows")]
 pub struct CreepageTable {
     pub t_s: Vec<f64>,
     /// One optional series per column after `t_s`: cx, or the prescribed Fx/FN in its place
@@ -212,6 +214,73 @@ impl CreepageTable {
     /// Last time in the table [s].
     pub fn end_s(&self) -> f64 {
         *self.t_s.last().unwrap_or(&0.0)
+    }
+
+    /// The table's columns as its file had them, in [`COLUMNS`]' order (NaN: an empty cell).
+    pub fn columns(&self) -> Vec<(&'static str, &[f64])> {
+        let (cx, fx) = match &self.cx {
+            TableX::Creepage(cx) => (Some(cx), None),
+            TableX::Force(fx) => (None, Some(fx)),
+            TableX::PerRow { cx, fx_over_fn } => (Some(cx), Some(fx_over_fn)),
+        };
+        let h = |i: usize| self.h_coefficients.as_ref().map(|b| &b[i]);
+        let given = [
+            Some(&self.t_s),
+            self.courant.as_ref(),
+            cx,
+            self.cy.as_ref(),
+            self.cs.as_ref(),
+            self.fn_n.as_ref(),
+            self.mu.as_ref(),
+            self.v_mm_s.as_ref(),
+            fx,
+            self.fy_over_fn.as_ref(),
+            self.pen_mm.as_ref(),
+            h(0),
+            h(1),
+            h(2),
+            h(3),
+            h(4),
+            h(5),
+            self.chi_deg.as_ref(),
+        ];
+        COLUMNS.iter().zip(given).filter_map(|(&name, v)| Some((name, v?.as_slice()))).collect()
+    }
+}
+
+/// A creepage table in scene.json: its header's columns and its rows, `null` for an empty cell.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TableRows {
+    pub columns: Vec<String>,
+    pub rows: Vec<Vec<Option<f64>>>,
+}
+
+impl From<CreepageTable> for TableRows {
+    fn from(t: CreepageTable) -> Self {
+        let cols = t.columns();
+        let cell = |v: f64| (!v.is_nan()).then_some(v);
+        TableRows {
+            columns: cols.iter().map(|(name, _)| name.to_string()).collect(),
+            rows: (0..t.t_s.len()).map(|i| cols.iter().map(|(_, v)| cell(v[i])).collect()).collect(),
+        }
+    }
+}
+
+impl TryFrom<TableRows> for CreepageTable {
+    type Error = InputError;
+
+    /// The rows as the CSV they came from (each number in its shortest form, which reads back
+    /// to the same value), read with every check of a table file.
+    fn try_from(t: TableRows) -> Result<Self, InputError> {
+        let mut text = t.columns.join(",");
+        for row in &t.rows {
+            text.push('\n');
+            let cells: Vec<String> = row.iter().map(|c| c.map(|v| v.to_string()).unwrap_or_default()).collect();
+            text.push_str(&cells.join(","));
+        }
+        text.push('\n');
+        CreepageTable::from_csv(&text, "scene.json loading.creepage.table")
     }
 }
 

@@ -226,10 +226,17 @@ pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
             }
         }
     }
+    // The declared loading sampled once: checked, and the rows' own speeds taken from it.
+    let rows = s
+        .scene
+        .loading_rows()
+        .map_err(|e| Error::Format { path: d.join("scene.json"), source: FormatError::Loading(e) })?;
+    let speeds: BTreeMap<usize, f64> = rows.iter().filter_map(|s| Some((s.step, s.v_mm_s?))).collect();
+    drop(rows);
     for solver in &s.scene.solvers {
         let file = d.join(format!("{solver}.csv"));
         let mut h = History::from_csv(solver, &read(&format!("{solver}.csv"))?).map_err(Error::format(&file))?;
-        restore_speeds(&mut h, &s.scene);
+        restore_speeds(&mut h, &speeds);
         s.histories.insert(solver.clone(), h);
         // What an external model printed, carried along (by `merge`) when the folder holds it.
         for log in [format!("{solver}.stdout.txt"), format!("{solver}.stderr.txt"), format!("{solver}_stress.csv")] {
@@ -255,9 +262,8 @@ pub fn read_scene(dir: &Path, name: &str) -> Result<StoredScene, Error> {
 }
 
 /// The rows' own rolling speeds (a table's `v_mm_s`, a speed sweep), which a history CSV does
-/// not hold, from scene.json's loading, matched by step.
-fn restore_speeds(h: &mut History, scene: &ResolvedScene) {
-    let speeds: BTreeMap<usize, f64> = scene.history.iter().filter_map(|s| Some((s.step, s.v_mm_s?))).collect();
+/// not hold, from scene.json's loading (`speeds` by step).
+fn restore_speeds(h: &mut History, speeds: &BTreeMap<usize, f64>) {
     if speeds.is_empty() {
         return;
     }

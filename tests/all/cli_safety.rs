@@ -223,7 +223,7 @@ fn an_external_model_that_never_exits_is_stopped_at_its_scene_timeout() {
     assert!(!w.path().join("out/hang").exists(), "no partial output");
     // The model's folder is kept for inspection and named; the test removes it.
     let (_, files, _, _) = take_kept_folder(&stderr(&o));
-    assert_eq!(files, ["scene.json", "stderr.txt", "stdout.txt"]);
+    assert_eq!(files, ["loading.csv", "scene.json", "stderr.txt", "stdout.txt"]);
     let bad = std::fs::read_to_string(w.path().join("s.toml")).unwrap().replace("timeout_s = 0.5", "timeout_s = -1");
     std::fs::write(w.path().join("s.toml"), bad).unwrap();
     assert_eq!(creepbench(w.path(), &["simulate", "s.toml"]).status.code(), Some(2));

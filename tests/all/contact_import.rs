@@ -95,7 +95,7 @@ fn differences(original: &Problem, imported: &Problem, split: bool) -> Vec<Strin
             || (e_given && key == "e_mpa")
             // The rows are compared on their own (the t = 0 state of a history that starts from
             // zero traction is not solved and not in a deck); a split sweep has one point each.
-            || key == "history"
+            || key == "loading"
             || (split && key == "n_steps");
         if !skip && Some(va) != b.get(key) {
             out.push(key.clone());
@@ -219,7 +219,8 @@ fn cattaneo_imports_its_normal_case_and_the_shift_by_force() {
     let r = ResolvedScene::of(&p, &p.solvers);
     assert_eq!((r.a_mm, r.b_mm, r.fn_n, r.mu), (1.0, 1.0, 9.1954, 0.4));
     assert_eq!((r.mx, r.my, r.grid_scale, r.g_mpa, r.poisson), (19, 19, 1.26667, 200.0, 0.42));
-    assert_eq!(r.history.iter().map(|s| [s.cx, s.cy, s.cs]).collect::<Vec<_>>(), vec![[0.0; 3]]);
+    let rows = r.loading_rows().unwrap();
+    assert_eq!(rows.iter().map(|s| [s.cx, s.cy, s.cs]).collect::<Vec<_>>(), vec![[0.0; 3]]);
     let text = &imported.scenes[0].files[0].1;
     assert!(text.contains("[origin]\ncases = [1, 1]\nfile = \"cattaneo.inp\""), "{text}");
 }
@@ -245,7 +246,7 @@ fn fastsim_imports_the_exact_theory_and_contacts_fastsim_and_fastrip() {
     let r = ResolvedScene::of(&p, &p.solvers);
     assert_eq!((r.a_mm, r.b_mm, r.fn_n, r.mu, r.mx, r.my, r.grid_scale), (8.0, 4.0, 82000.0, 0.3, 44, 44, 1.1));
     assert_eq!((r.v_mm_s, r.dq_mm), (30000.0, 0.4));
-    let s = &r.history[0];
+    let s = &r.loading_rows().unwrap()[0];
     assert_eq!([s.cx, s.cy, s.cs], [0.0, -0.000625, 0.000625]);
     use creepbench::physics::PressureShape;
     for (name, shape, mx, chi) in [
@@ -373,7 +374,7 @@ fn tractcurv_imports_the_coulomb_creep_curve_as_one_sweep() {
     assert_eq!((r.fn_n, r.mu, r.mx, r.my, r.grid_scale, r.v_mm_s), (106700.0, 0.33, 48, 44, 1.1, 10000.0));
     // IPOTCN = -2: A1 = 0.0008 and a/b = 0.5 give Hertz's ellipse of that ratio.
     assert!((r.a_mm / r.b_mm - 0.5).abs() < 1e-12, "a/b = {}", r.a_mm / r.b_mm);
-    let cx: Vec<f64> = r.history.iter().map(|s| s.cx).collect();
+    let cx: Vec<f64> = r.loading_rows().unwrap().iter().map(|s| s.cx).collect();
     assert_eq!(cx.len(), 30);
     assert_eq!((cx[0], cx[1], cx[29]), (0.00001, 0.0004, 0.25));
 }
@@ -386,7 +387,8 @@ fn carter2d_imports_the_strip_as_a_grid_with_its_quadratic_gap() {
     let r = ResolvedScene::of(&p, &p.solvers);
     assert_eq!((r.mx, r.my, r.dx_mm, r.dy_mm, r.mu, r.geometry.as_str()), (55, 1, 0.04, 200.0, 0.3, "field"));
     assert_eq!(r.grid_edges_mm.unwrap()[0][0], -1.07);
-    assert_eq!([r.history[0].cx, r.history[0].fn_n], [-0.00024, 35780.0]);
+    let s0 = r.loading_rows().unwrap()[0];
+    assert_eq!([s0.cx, s0.fn_n], [-0.00024, 35780.0]);
     // IPOTCN = 3 with XC1 = -1.05: element 1 at x = -1.05, h = B1 x² = 0.001 · 1.05².
     let h = r.undeformed_distance_mm.unwrap();
     assert!((h[0] - 0.001 * 1.05 * 1.05).abs() < 1e-18, "{}", h[0]);
@@ -410,7 +412,7 @@ fn veldep_fric_imports_its_circular_gap_and_both_branches() {
     assert_eq!((above.inislp, above.omgslp, above.veldep_tolerance), (InitialSlip::Above, 1.1, 1e-3));
     let p = scene_of(&imported, "veldep_fric_3");
     let r = ResolvedScene::of(&p, &p.solvers);
-    assert_eq!((r.mx, r.my, r.history.len()), (92, 1, 51));
+    assert_eq!((r.mx, r.my, r.loading_rows().unwrap().len()), (92, 1, 51));
     // Element k at x = -4.6 + 0.1 (k - 1), y = 0: h = 0 (both heights) + (x - 0)²/(2 · 460).
     let h = r.undeformed_distance_mm.unwrap();
     for (k, x) in [(0, -4.6), (46, 0.0), (91, 4.5)] {

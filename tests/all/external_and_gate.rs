@@ -179,9 +179,9 @@ fn a_failing_model_leaves_its_folder_with_its_output_and_stderr_named_in_the_mes
         let wrote_csv = body.contains("$2");
         let expected_stderr = if wrote_csv { "model: a warning\n" } else { "model: a warning\nTraceback: boom\n" };
         assert_eq!(stderr, expected_stderr);
-        let mut expected_files = vec!["scene.json", "stderr.txt", "stdout.txt"];
+        let mut expected_files = vec!["loading.csv", "scene.json", "stderr.txt", "stdout.txt"];
         if wrote_csv {
-            expected_files.insert(0, "m.csv");
+            expected_files.insert(1, "m.csv");
             assert!(err.contains(&folder.join("m.csv").display().to_string()), "{err}");
         }
         assert_eq!(files, expected_files);

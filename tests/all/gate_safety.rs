@@ -401,7 +401,7 @@ fn hostile_model_output_is_refused_naming_model_file_step_and_column() {
         // The output file the message names is still there, in the kept folder.
         let (folder, files, _, _) = take_kept_folder(&m);
         assert!(m.contains(&folder.join("m.csv").display().to_string()), "{name}: {m}");
-        assert_eq!(files, ["m.csv", "scene.json", "stderr.txt", "stdout.txt"], "{name}");
+        assert_eq!(files, ["loading.csv", "m.csv", "scene.json", "stderr.txt", "stdout.txt"], "{name}");
     }
     fs::write(tmp.path().join("out.csv"), b"step,t_s\n\xff\n").unwrap();
     let m = run_model(&p).unwrap_err();

@@ -243,6 +243,13 @@ fn merge_exits_with_the_verdict_and_a_result_short_of_its_scene_fails() {
     assert!(stderr(&o).contains("SHORT scene a_one") && stderr(&o).contains("freq_hz"), "{}", stderr(&o));
     let md = std::fs::read_to_string(w.path().join("rep2/validation.md")).unwrap();
     assert!(md.contains("GATES FAIL") && !md.contains("All gates pass"));
+    // scene.json records the loading as declared (issue 48 item 6): an edited step level fails too.
+    let mut scene: serde_json::Value = serde_json::from_str(&original).unwrap();
+    scene["loading"]["creepage"]["c"] = serde_json::json!(0.01);
+    std::fs::write(&json, serde_json::to_string_pretty(&scene).unwrap()).unwrap();
+    let o = merge("rep2b", "none");
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("SHORT scene a_one") && stderr(&o).contains("\"loading\""), "{}", stderr(&o));
     std::fs::write(&json, original).unwrap();
     let csv = w.path().join("res/a_two/uba.csv");
     let text = std::fs::read_to_string(&csv).unwrap();

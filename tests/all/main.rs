@@ -48,6 +48,7 @@ mod report_groups;
 mod report_scope;
 mod rolling_direction;
 mod scene_extensions;
+mod scene_loading;
 mod she_model;
 mod shift;
 mod simplified_models;

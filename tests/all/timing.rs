@@ -79,7 +79,7 @@ fn work_precision_and_cost_carry_the_intervals_as_error_bars() {
     let wp = work_precision::section(&scenes, &references()).expect("the three grids converge");
     // Six repeats: median (3 + 4)/2 = 3.5 ms, interval [x(1), x(6)] = [1, 6] ms, per simulated second.
     let g88 = scenes.iter().find(|s| s.name == "sine_f30_mu10_g88").unwrap();
-    let sim_s = g88.scene.history.last().unwrap().t_s;
+    let sim_s = g88.scene.loading_rows().unwrap().last().unwrap().t_s;
     let cells = format!("| {:.2e} | [{:.2e}, {:.2e}] |", 3.5e-3 / sim_s, 1e-3 / sim_s, 6e-3 / sim_s);
     let row = wp.body.lines().find(|l| l.starts_with("| contact | 88 |")).unwrap();
     assert!(row.contains(&cells), "{row} lacks {cells}");

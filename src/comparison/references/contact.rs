@@ -208,7 +208,9 @@ impl ReferenceSet for ContactCases {
         let contact_delay = period.and_then(|p| delay::of_history(contact, p));
         // Where f reaches μ near the creepage peak the delay is ill-defined (flat top); μ per
         // step from the scene's own loading (a table may vary it).
-        let mu_at: BTreeMap<usize, f64> = ours.scene.history.iter().map(|s| (s.step, s.mu)).collect();
+        // (The loading samples: checked when the folder was read, `suite::results::read_scene`.)
+        let rows = ours.scene.loading_rows().unwrap_or_default();
+        let mu_at: BTreeMap<usize, f64> = rows.iter().map(|s| (s.step, s.mu)).collect();
         let flat = contact
             .rows
             .iter()

@@ -167,9 +167,9 @@ impl PublicCases {
         };
         let mz: Option<BTreeMap<usize, f64>> =
             h.column(MZ).map(|v| h.rows.iter().map(|r| r.sample.step).zip(v).collect());
-        // The steps whose FN the solver found for a prescribed approach (scene.json's history).
-        let by_approach: Vec<usize> =
-            scene.scene.history.iter().filter(|s| s.pen_mm.is_some()).map(|s| s.step).collect();
+        // The steps whose FN the solver found for a prescribed approach (scene.json's loading).
+        let loading = scene.scene.loading_rows().map_err(|e| format!("scene.json's loading: {e}"))?;
+        let by_approach: Vec<usize> = loading.iter().filter(|s| s.pen_mm.is_some()).map(|s| s.step).collect();
         let mut out = Vec::new();
         for (k, (r, t)) in rows.iter().zip(&cases).enumerate() {
             let (step, case) = (r.sample.step, first + k);
