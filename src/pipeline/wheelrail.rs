@@ -22,7 +22,7 @@ use crate::scene::Scene;
 use crate::solvers;
 use crate::wheelrail::friction::Friction;
 use crate::wheelrail::vertical::FORCE_TOL;
-use crate::wheelrail::{self, NormalContact, NormalPatch, Vertical, WheelRailCase};
+use crate::wheelrail::{self, Motion, NormalContact, NormalPatch, Vertical, WheelRailCase};
 use nalgebra::{Rotation3, Vector3};
 use std::path::Path;
 
@@ -117,6 +117,7 @@ pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Res
             format!("{e}; a wheel that touches the rail, at a height that carries FZ, with patches within the grid limit (docs/wheelrail.md)"),
         ))
     };
+    refuse_in_shifts(case, models)?;
     let mut cache = wheelrail::NormalCache::default();
     let mut exact_cache = ExactCache::default();
     // With the tangential forces to balance, the first height search need not be tight: the
@@ -164,6 +165,22 @@ pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Res
         out.push((model.clone(), forces, totals));
     }
     Ok(CaseResult { normal, models: out, pitch: Pitch::Given(case.velocity.vpitch_rad_s) })
+}
+
+/// A shift (CONTACT's T = 1) is solved by the exact theory alone, for bodies of one material.
+fn refuse_in_shifts(case: &WheelRailCase, models: &[String]) -> Result<(), Error> {
+    if !matches!(case.motion, Motion::Shift { .. }) {
+        return Ok(());
+    }
+    if let Some(m) = models.iter().find(|m| m.as_str() != EXACT) {
+        let allowed = "the exact theory alone (solvers = [\"contact\"]) in a shift ([wheelrail] motion = \"shift\")";
+        return Err(InputError::new("solvers", format!("{m:?}"), allowed).into());
+    }
+    if case.material.coupled() {
+        let value = format!("G {} MPa, nu {}", case.material.g_mpa, case.material.poisson);
+        return Err(InputError::new("material", value, "one material for both bodies in a shift").into());
+    }
+    Ok(())
 }
 
 /// One model on the patches of `normal`: its forces per patch and their totals.

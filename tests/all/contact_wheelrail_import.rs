@@ -171,7 +171,7 @@ fn the_decks_with_fx_ws_prescribed_import_as_the_gated_scenes() {
 }
 
 /// The module-1 cases of CONTACT's test bank that need a roller rig, a thin layer, the conformal
-/// approach, a massless rail or transient rolling are refused naming what the scene lacks; the
+/// approach, a massless rail or a shift continuing a sequence are refused naming what the scene lacks; the
 /// others import (rail deviations, frictionless compression, smoothing, MIRRORZ, PRFOPT); its
 /// module-3 cases import as before.
 #[test]
@@ -189,7 +189,7 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
     reason(21, "B = 1: a thin compressible elastic layer");
     reason(35, "D (in force) = 4: contact approaches other than the planar one");
     reason(36, "F = 3: a massless rail");
-    reason(38, "T = 1: shifts and transient rolling");
+    reason(39, "T = 1, P = 0: shifts continuing a sequence");
     let note = |case: usize, start: &str| {
         let s = m1.iter().find(|s| s.case == case).unwrap();
         assert!(s.scene.is_some() && s.notes.iter().any(|r| r.starts_with(start)), "case {case}: {s:?}");
@@ -199,12 +199,13 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
     note(22, "SMOOTH = 10 (rail), 10 (wheel): profile smoothing");
     note(28, "PRFOPT = 1: ISMOOTH, ZIGTHRS, KINKHIGH, KINKLOW, KINKWID = 0, 2.61799");
     note(30, "MIRRORZ = 1 (rail): mirroring of a profile's z given");
+    note(38, "T = 1, P = 2: shifts from rest");
     let scenes: Vec<&str> = imported.scenes.iter().map(|s| s.name.as_str()).collect();
     // Module 1's steady cases import, one scene each; module 3's 25, 26 (dissimilar bodies,
     // issue 46) are one scene.
     let number = |s: &&str| s.split('_').nth(1).unwrap().parse::<usize>().unwrap();
     let module1: Vec<usize> = scenes.iter().map(number).filter(|&n| n >= 18 && n != 25).collect();
-    assert_eq!(module1, [18, 19, 22, 23, 27, 28, 29, 30, 31, 32, 33, 34], "{scenes:?}");
+    assert_eq!(module1, [18, 19, 22, 23, 27, 28, 29, 30, 31, 32, 33, 34, 38], "{scenes:?}");
     assert!(scenes.contains(&"testbank_1"), "{scenes:?}");
     // What the scenes carry: the rail's deviations, T = 0, SMOOTH, MIRRORZ, KINKWID; A_SEP = 90
     // (radians, `90d0`) as pi.
