@@ -5,7 +5,9 @@
 
 use crate::common::{self, root};
 use creepbench::import::contact::wheelrail_deck::{self, PitchInput, Vertical};
-use creepbench::scene::wheelrail::{PlacementSpec, SideSpec, VerticalSpec, WheelRailScene, PROFILE_DEFAULTS};
+use creepbench::scene::wheelrail::{
+    MotionSpec, PlacementSpec, SideSpec, VerticalSpec, WheelRailScene, PROFILE_DEFAULTS,
+};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -307,6 +309,28 @@ fn export_then_import_gives_the_same_scene() {
     assert!(original.frictionless && original.rail.smooth_weighted && original.rail.mirror_z == -1);
     assert_eq!((original.wheel.smooth, original.wheel.kink_low_rad, original.wheel.max_omit), (7.0, 0.2, 0.4));
     assert_eq!(values(&back), values(&original));
+}
+
+/// Shifts from rest (T = 1, P = 2): t1_zws's five cases (S_WS 0 and 0.4 mm, two scenes) export
+/// with T = 1 and S_WS and import back as the same scenes (but the cases' numbers). (Run by CONTACT, the exported deck of
+/// cases 2-5 prints the shipped deck's totals digit for digit, 2026-11-29.)
+#[test]
+fn a_shift_from_rest_exports_and_imports_back() {
+    let dir = common::tempdir("m1_shift_round_trip");
+    let deck = root().join("reference/contact_wheelrail/testbank/examples_trans/t1_zws.inp");
+    let scenes = import(&deck, &dir.join("scenes"), &[]);
+    assert_eq!(scenes.len(), 2, "{scenes:?}");
+    for (k, scene) in scenes.iter().enumerate() {
+        let (original, back) = round_trip(scene, &dir.join(format!("back_{k}")));
+        let s_ws_mm = if k == 0 { 0.0 } else { 0.4 };
+        assert_eq!(original.motion, MotionSpec::Shift { s_ws_mm });
+        // The exported deck numbers its cases from 1 (cases 2-5 come back as 1-4).
+        let mut original = values(&original);
+        for (n, row) in original.cases.iter_mut().enumerate() {
+            row.contact_case = n as u64 + 1;
+        }
+        assert_eq!(values(&back), original);
+    }
 }
 
 /// Friction varying across the rail (V = 1) and along the track (V = 2): mbench_a22_varfric's
