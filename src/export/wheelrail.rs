@@ -1,21 +1,22 @@
 //! A wheel–rail scene as CONTACT module-1 input (issue 44; CONTACT's user guide, "Specification of
 //! the input file", module 1), one CONTACT case per row of its cases table, as
 //! reference/contact_wheelrail/examples/mbench_a22_left.inp forms its cases: the first case gives
-//! everything (C-P-B-T-N-F-S = C20TN00, T = 3 or 0 when frictionless, V-L-D-C-M-Z-E = V022033 (V the
+//! everything (C-P-B-T-N-F-S = C20TN00, T = 3, 0 when frictionless, 1 in a shift from rest (P = 2), V-L-D-C-M-Z-E = V022033 (V the
 //! friction's variation: 0, 1 across the rail, 2 along the track), H-G-I-A-O-W-R = 0000321: the
 //! solver's limits, FSTAT = FKIN = mu or NVF control points, POISS and GG of both bodies the scene's, DX, DS with DQREL 1,
 //! the scene's A_SEP, D_SEP, D_COMB, the track, the rail profile with its options (PRFOPT = 2) and
 //! the rail's deviations, the wheelset's dimensions, the wheel profile, the position and velocities); each later case keeps all
 //! but its position and velocities (V111002, 0100321). C is the side (0 left, 1 right), N the
 //! vertical problem (1: FZ prescribed, 0: the height Z_WS), F the longitudinal one (1: FX_WS in
-//! place of VPITCH, `[cases] longitudinal = "force"`); S_WS is the scene's track position where
-//! friction varies along the track (else 0), PITCH 0. Profile names are
+//! place of VPITCH, `[cases] longitudinal = "force"`); S_WS is the scene's track position in a
+//! shift or where friction varies along the track (else 0), PITCH 0; in a shift the velocity line
+//! is the step's shifts (CONTACT reads the same line as SHFT_S … per step). Profile names are
 //! written relative to the deck's folder, where CONTACT looks for them.
 
 use crate::error::InputError;
 use crate::safety::relative::relative;
 use crate::scene::wheelrail::{
-    CaseRow, LongitudinalSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
+    CaseRow, LongitudinalSpec, MotionSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
 };
 use crate::scene::MaterialSpec;
 use crate::wheelrail::profile::options::SCALE_MIN;
@@ -93,7 +94,11 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
     let c = u8::from(s.side == SideSpec::Right);
     let n = u8::from(s.vertical == VerticalSpec::Force);
     let f = u8::from(s.longitudinal == LongitudinalSpec::Force);
-    let t = if s.frictionless { 0 } else { 3 };
+    let t = match (s.frictionless, s.motion) {
+        (true, _) => 0,
+        (false, MotionSpec::Shift { .. }) => 1,
+        (false, MotionSpec::Rolling) => 3,
+    };
     let v = match s.mu_variation.as_ref().map(|v| v.by) {
         None => 0,
         Some(MuBy::ContactAngle) => 1,
@@ -150,10 +155,12 @@ fn friction(s: &WheelRailScene, out: &mut String) {
     }
 }
 
-/// The wheelset's track position S_WS [mm]: where friction varies along the track (V = 2), else 0.
+/// The wheelset's track position S_WS [mm]: a shift's (the grid's anchor), where friction varies
+/// along the track (V = 2) its position there, else 0.
 fn track_s_mm(s: &WheelRailScene) -> f64 {
-    match s.mu_variation.as_ref().map(|v| v.by) {
-        Some(MuBy::TrackS { s_mm }) => s_mm,
+    match (s.motion, s.mu_variation.as_ref().map(|v| v.by)) {
+        (MotionSpec::Shift { s_ws_mm }, _) => s_ws_mm,
+        (_, Some(MuBy::TrackS { s_mm })) => s_mm,
         _ => 0.0,
     }
 }

@@ -22,7 +22,7 @@ use crate::scene::Scene;
 use crate::solvers;
 use crate::wheelrail::friction::Friction;
 use crate::wheelrail::vertical::FORCE_TOL;
-use crate::wheelrail::{self, NormalContact, NormalPatch, Vertical, WheelRailCase};
+use crate::wheelrail::{self, Motion, NormalContact, NormalPatch, Vertical, WheelRailCase};
 use nalgebra::{Rotation3, Vector3};
 use std::path::Path;
 
@@ -122,6 +122,7 @@ pub fn solve(case: &WheelRailCase, models: &[String], mu: f64) -> Result<CaseRes
 /// along the track where `mu` says so). The models that solve their own approximate normal problem
 /// (KPEC, ANALYN) take their own patches and height; every other model the exact theory's.
 pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Result<CaseResult, Error> {
+    refuse_in_shifts(case, models)?;
     let own = |m: &str| solvers::builtin(m).and_then(|d| d.own_normal);
     let mut exact_cache = ExactCache::default();
     let mut shared = None;
@@ -209,6 +210,22 @@ fn balanced(
         normal = wheelrail::normal_contact_with(case, Some(target), FORCE_TOL, cache).map_err(geometry)?;
     }
     Ok((normal, None))
+}
+
+/// A shift (CONTACT's T = 1) is solved by the exact theory alone, for bodies of one material.
+fn refuse_in_shifts(case: &WheelRailCase, models: &[String]) -> Result<(), Error> {
+    if !matches!(case.motion, Motion::Shift { .. }) {
+        return Ok(());
+    }
+    if let Some(m) = models.iter().find(|m| m.as_str() != EXACT) {
+        let allowed = "the exact theory alone (solvers = [\"contact\"]) in a shift ([wheelrail] motion = \"shift\")";
+        return Err(InputError::new("solvers", format!("{m:?}"), allowed).into());
+    }
+    if case.material.coupled() {
+        let value = format!("G {} MPa, nu {}", case.material.g_mpa, case.material.poisson);
+        return Err(InputError::new("material", value, "one material for both bodies in a shift").into());
+    }
+    Ok(())
 }
 
 /// One model on the patches of `normal`: its forces per patch and their totals.

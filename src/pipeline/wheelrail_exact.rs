@@ -3,7 +3,9 @@
 //! the grid the scene would make (CONTACT's x mirrored, [`field_in_grid_order`]), its kernels and
 //! FFT plans kept per grid size for the case's trial heights and rounds. The same solve as the
 //! `contact` model's on the patch's scene: one steady point, the scene's default controls
-//! (`[contact_solver]`), rolling along +x with dq = dx, Coulomb's μ.
+//! (`[contact_solver]`), rolling along +x with dq = dx, Coulomb's μ. In a shift (CONTACT's T = 1
+//! from rest, P = 2) one transient shift step from zero tractions ([`TangentialSolver::for_shifts`]:
+//! the creepages are the step's shifts, dq = 1).
 
 use super::wheelrail::PatchForces;
 use crate::physics::geometry::field_in_grid_order;
@@ -12,7 +14,7 @@ use crate::physics::{moment_sum, Grid, Material};
 use crate::scene::ContactSolverOptions;
 use crate::solvers::contact::tangential::{StepResult, TangentialParams, TangentialSolver};
 use crate::solvers::contact::ContactError;
-use crate::wheelrail::{NormalPatch, WheelRailCase};
+use crate::wheelrail::{Motion, NormalPatch, WheelRailCase};
 
 /// Grids kept per case (the oldest dropped first).
 const KEPT: usize = 8;
@@ -25,6 +27,8 @@ type Kept = ((usize, usize), TangentialSolver, Option<(Vec<f64>, Vec<f64>)>);
 #[derive(Default)]
 pub struct ExactCache {
     solvers: Vec<Kept>,
+    /// The shift solvers by grid size (no warm start: each shift starts from rest).
+    shifts: Vec<((usize, usize), TangentialSolver)>,
 }
 
 impl ExactCache {
@@ -50,6 +54,31 @@ impl ExactCache {
         };
         Ok(&mut self.solvers[k])
     }
+
+    /// The shift solver of `grid` (as [`ExactCache::get`]: kernels kept per grid size).
+    fn shift_solver(
+        &mut self,
+        grid: &Grid,
+        m: &Material,
+        (x, y): (&[f64], &[f64]),
+    ) -> Result<&mut TangentialSolver, ContactError> {
+        let key = (grid.mx, grid.my);
+        let k = match self.shifts.iter().position(|(k, _)| *k == key) {
+            Some(k) => {
+                self.shifts[k].1.set_centres(x, y)?;
+                k
+            }
+            None => {
+                let k0 = Kernel::new(grid.mx, grid.my, grid.dx_mm, grid.dy_mm, m.g_mpa, m.poisson, 0.0)?;
+                if self.shifts.len() == KEPT {
+                    self.shifts.remove(0);
+                }
+                self.shifts.push((key, TangentialSolver::for_shifts(&k0, x, y)?));
+                self.shifts.len() - 1
+            }
+        };
+        Ok(&mut self.shifts[k].1)
+    }
 }
 
 /// The grid of the patch's module-3 scene (`[grid]` edges, CONTACT's x mirrored).
@@ -68,27 +97,49 @@ pub fn patch_forces(
     case: &WheelRailCase,
     cache: &mut ExactCache,
 ) -> Result<PatchForces, ContactError> {
+    let shift = matches!(case.motion, Motion::Shift { .. });
     let grid = patch_grid(p);
     let pn = field_in_grid_order(&grid, &p.pn_mpa);
     let (x, y) = grid.centres();
-    let (_, solver, last) = cache.get(&grid, &case.material, (&x, &y))?;
-    solver.set_pressure(&pn)?;
     let c = &p.creepages;
     let options = ContactSolverOptions::default();
-    let mut params = TangentialParams::new(mu, c.cksi, c.ceta, c.cphi_per_mm, grid.dx_mm);
+    let dq_mm = if shift { 1.0 } else { grid.dx_mm };
+    let mut params = TangentialParams::new(mu, c.cksi, c.ceta, c.cphi_per_mm, dq_mm);
     params.tol = options.tolerance;
     params.max_iter = options.max_iterations;
-    let start = last.as_ref().map(|(px, py)| (px.as_slice(), py.as_slice()));
-    let r: StepResult = solver.steady(&params, start)?;
-    *last = Some((r.px.clone(), r.py.clone()));
+    let r: StepResult = if shift {
+        let solver = cache.shift_solver(&grid, &case.material, (&x, &y))?;
+        solver.set_pressure(&pn)?;
+        let rest = vec![0.0; grid.mx * grid.my];
+        solver.transient_step(&params, &rest, &rest, None)?
+    } else {
+        let (_, solver, last) = cache.get(&grid, &case.material, (&x, &y))?;
+        solver.set_pressure(&pn)?;
+        let start = last.as_ref().map(|(px, py)| (px.as_slice(), py.as_slice()));
+        let r = solver.steady(&params, start)?;
+        *last = Some((r.px.clone(), r.py.clone()));
+        r
+    };
     let pn_sum: f64 = pn.iter().sum();
     let (fx_over_fn, fy_over_fn) = (r.px.iter().sum::<f64>() / pn_sum, r.py.iter().sum::<f64>() / pn_sum);
     let mz_nmm = moment_sum(&grid, &r.px, &r.py) * grid.element_area_mm2();
-    Ok(PatchForces {
+    let forces = PatchForces {
         n_adhesion: Some(r.n_adhesion),
         n_slip: Some(r.n_slip),
         ..PatchForces::on_rail(p, case, fx_over_fn, fy_over_fn, mz_nmm)
-    })
+    };
+    Ok(if shift { about_anchor(forces, p, case) } else { forces })
+}
+
+/// MN about the grid's anchor instead of the reference: in a shift CONTACT's module-3 problem
+/// has its origin at the super-grid's `mpot` and the reference at (SPINXO, SPINYO) from it
+/// (`m_wr_solvecp`), and prints the patch's MN about that origin: MN + SPINXO FS − SPINYO FX in
+/// the right-side frame (the left side's values mirrored).
+fn about_anchor(f: PatchForces, p: &NormalPatch, case: &WheelRailCase) -> PatchForces {
+    let m = case.side.sign();
+    let [ax, as_] = p.geometry.grid.anchor_mm;
+    let (spinxo, spinyo) = (-ax, -as_);
+    PatchForces { mn_nmm: f.mn_nmm + spinxo * f.fs_n - m * spinyo * f.fx_n, ..f }
 }
 
 #[cfg(test)]

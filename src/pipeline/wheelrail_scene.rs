@@ -7,7 +7,7 @@ use super::wheelrail_fx::solve_fx;
 use crate::error::{Error, InputError};
 use crate::problem::material_of_spec;
 use crate::scene::wheelrail::{
-    CaseRow, LongitudinalSpec, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
+    CaseRow, LongitudinalSpec, MotionSpec, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
 };
 use crate::solvers;
 use crate::wheelrail::friction::Friction;
@@ -17,7 +17,7 @@ use crate::wheelrail::rail::{RailPlacement, Track};
 use crate::wheelrail::side::Side;
 use crate::wheelrail::wheel::{Pose, Velocity, WheelsetGeometry};
 use crate::wheelrail::wheel_mesh::WheelSurface;
-use crate::wheelrail::{Vertical, WheelRailCase};
+use crate::wheelrail::{Motion, Vertical, WheelRailCase};
 use rayon::prelude::*;
 
 /// A scene's results: per case (in the table's order) its number and what it gave.
@@ -161,5 +161,9 @@ pub fn case_of<'a>(
         },
         wheel_surface: if s.wheel_mesh { WheelSurface::ContactMesh } else { WheelSurface::Exact },
         material,
+        motion: match s.motion {
+            MotionSpec::Rolling => Motion::Rolling,
+            MotionSpec::Shift { s_ws_mm } => Motion::Shift { s_ws_mm },
+        },
     }
 }

@@ -141,6 +141,17 @@ impl MuVariation {
     }
 }
 
+/// How the wheel moves in every case (`[wheelrail] motion`).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum MotionSpec {
+    /// Steady rolling (CONTACT's T = 3; `"rolling"`, the default).
+    #[default]
+    Rolling,
+    /// A shift from rest (T = 1, P = 2; `"shift"`): the cases' velocities are one step's shifts
+    /// [mm, rad], the grid is fixed in the rail's material at the wheelset's position `s_mm`.
+    Shift { s_ws_mm: f64 },
+}
+
 /// A validated wheel–rail scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct WheelRailScene {
@@ -176,6 +187,8 @@ pub struct WheelRailScene {
     /// The wheel surface of the undeformed distance (`wheel_surface`): `false` the exact one,
     /// `true` CONTACT's mesh of it (`"contact_mesh"`).
     pub wheel_mesh: bool,
+    /// Steady rolling, or a shift from rest (`motion`, `s_mm`; CONTACT's T = 3 or 1 with P = 2).
+    pub motion: MotionSpec,
     pub vertical: VerticalSpec,
     /// VPITCH or FX_WS given (`[cases] longitudinal`).
     pub longitudinal: LongitudinalSpec,
@@ -281,7 +294,15 @@ impl WheelRailScene {
             "left" => SideSpec::Left,
             _ => SideSpec::Right,
         };
-        let (mu, mu_variation) = friction(&mut w)?;
+        let motion = match w.opt_choice("motion", &["rolling", "shift"])? {
+            Some("shift") => MotionSpec::Shift { s_ws_mm: w.opt_f64("s_mm", LENGTH)?.unwrap_or(0.0) },
+            _ => MotionSpec::Rolling,
+        };
+        let shift_s = match motion {
+            MotionSpec::Shift { s_ws_mm } => Some(s_ws_mm),
+            MotionSpec::Rolling => None,
+        };
+        let (mu, mu_variation) = friction(&mut w, shift_s)?;
         let dx_mm = w.f64("dx_mm", Range::new(1e-3, true, 100.0, true))?;
         let ds_mm = w.f64("ds_mm", Range::new(1e-3, true, 100.0, true))?;
         let a_sep_rad = w
@@ -296,6 +317,13 @@ impl WheelRailScene {
         let wheel_mesh = w.opt_choice("wheel_surface", &["exact", "contact_mesh"])? == Some("contact_mesh");
         let frictionless = w.opt_bool("frictionless")?.unwrap_or(false);
         w.finish()?;
+        if motion != MotionSpec::Rolling && solvers.iter().any(|m| m != "contact") {
+            return Err(InputError::new(
+                "solvers",
+                format!("{solvers:?}"),
+                "[\"contact\"]: a shift ([wheelrail] motion = \"shift\") is solved by the exact theory alone",
+            ));
+        }
         let (rail, placement, cant_rad, rail_deviation) = rail(&mut top, dir)?;
         let (wheel, fbd, fbp, radius) = wheel(&mut top, dir)?;
         let material = super::sections::material(&mut top)?;
@@ -313,6 +341,13 @@ impl WheelRailScene {
             mu_variation.as_ref().map_or(mu, |v| v.values.iter().copied().fold(mu, f64::max)),
             &cases,
         )?;
+        if motion != MotionSpec::Rolling && (longitudinal == LongitudinalSpec::Force || frictionless) {
+            return Err(InputError::new(
+                "wheelrail.motion",
+                "\"shift\"",
+                "a shift with the pitch's shift given ([cases] longitudinal = \"velocity\") and friction (not frictionless)",
+            ));
+        }
         let origin = super::sections::origin(&mut top)?;
         check_origin(origin.as_ref(), &cases)?;
         let report = report(&mut top, dir, &cases)?;
@@ -340,6 +375,7 @@ impl WheelRailScene {
             d_comb_mm,
             d_turn_mm,
             wheel_mesh,
+            motion,
             vertical,
             longitudinal,
             cases,
@@ -353,12 +389,15 @@ impl WheelRailScene {
 /// Coulomb's μ range.
 const MU: Range = Range::new(0.0, false, 10.0, true);
 
-/// `mu`, or `mu_by` with `mu_at`, `mu_values` (and `s_mm` for `mu_by = "track_s"`).
-fn friction(w: &mut Section) -> Result<(f64, Option<MuVariation>), InputError> {
+/// `mu`, or `mu_by` with `mu_at`, `mu_values` (and `s_mm` for `mu_by = "track_s"`); `shift_s`:
+/// the position `s_mm` a shift has read already.
+fn friction(w: &mut Section, shift_s: Option<f64>) -> Result<(f64, Option<MuVariation>), InputError> {
     let Some(by) = w.opt_choice("mu_by", &["contact_angle", "track_s"])? else {
         w.refuse("mu_at", "no mu_at without mu_by")?;
         w.refuse("mu_values", "no mu_values without mu_by")?;
-        w.refuse("s_mm", "no s_mm without mu_by = \"track_s\"")?;
+        if shift_s.is_none() {
+            w.refuse("s_mm", "no s_mm without mu_by = \"track_s\" or motion = \"shift\"")?;
+        }
         return Ok((w.f64("mu", MU)?, None));
     };
     w.refuse("mu", "no mu with mu_by (mu_values give it)")?;
@@ -386,10 +425,12 @@ fn friction(w: &mut Section) -> Result<(f64, Option<MuVariation>), InputError> {
     }
     let by = match by {
         "contact_angle" => {
-            w.refuse("s_mm", "no s_mm with mu_by = \"contact_angle\" (the patch's contact angle selects mu)")?;
+            if shift_s.is_none() {
+                w.refuse("s_mm", "no s_mm with mu_by = \"contact_angle\" (the patch's contact angle selects mu)")?;
+            }
             MuBy::ContactAngle
         }
-        _ => MuBy::TrackS { s_mm: w.opt_f64("s_mm", LENGTH)?.unwrap_or(0.0) },
+        _ => MuBy::TrackS { s_mm: shift_s.map_or_else(|| w.opt_f64("s_mm", LENGTH), |s| Ok(Some(s)))?.unwrap_or(0.0) },
     };
     let v = MuVariation { by, at, values };
     let mu = match by {

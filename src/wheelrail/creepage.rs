@@ -38,20 +38,23 @@ impl RailMotion {
 }
 
 /// The creepages at the patch's reference with the approach `pen_mm` (the deepest overlap):
-/// (v_rail(P) − v_wheel(Q)) / VELOC, the spin (ω_rail − ω_wheel) · n / VELOC.
+/// (v_rail(P) − v_wheel(Q)) / VELOC, the spin (ω_rail − ω_wheel) · n / VELOC. With `shift`
+/// (CONTACT's T = 1: dt = 1, VELOC = 1) the velocities are one step's shifts and so are the
+/// "creepages": CKSI, CETA [mm], CPHI [rad].
 pub fn at_reference(
     frame: &PatchFrame,
     wheel: &PlacedWheel,
     v: &Velocity,
     pen_mm: f64,
     rail: &RailMotion,
+    shift: bool,
 ) -> Creepages {
     let n = frame.n();
     let q = frame.origin + n * pen_mm;
     let v_q = wheel.material_velocity(&q, v);
     let v_p = rail.at(&frame.origin);
     let pitch_x = wheel.pitch_velocity(&q, v).x;
-    let veloc_mm_s = 0.5 * ((v_q.x - v_p.x - pitch_x).abs() + pitch_x.abs());
+    let veloc_mm_s = if shift { 1.0 } else { 0.5 * ((v_q.x - v_p.x - pitch_x).abs() + pitch_x.abs()) };
     let slip = v_p - v_q;
     let spin = Vector3::new(rail.velocity[2], 0.0, 0.0) - wheel.angular_velocity(v);
     Creepages {

@@ -21,6 +21,11 @@ pub trait Curve: Send + Sync + Debug {
     fn points_mm(&self) -> Option<Vec<[f64; 2]>> {
         None
     }
+    /// The spline's parameter s [mm] (CONTACT's arc length along the profile) at y, where the
+    /// curve is a profile's spline; `None` for a closed form.
+    fn s_at_y(&self, _y_mm: f64) -> Option<f64> {
+        None
+    }
 }
 
 /// A circular arc `z = z0 ± (R − √(R² − (y − yc)²))` over `|y − yc| ≤ half_width`: convex (a rail
@@ -103,6 +108,9 @@ impl Curve for super::profile::Profile {
     }
     fn points_mm(&self) -> Option<Vec<[f64; 2]>> {
         Some(self.y_mm().iter().zip(self.z_mm()).map(|(&y, &z)| [y, z]).collect())
+    }
+    fn s_at_y(&self, y_mm: f64) -> Option<f64> {
+        self.point_at_y(y_mm).map(|p| p.s_mm)
     }
 }
 

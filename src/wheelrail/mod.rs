@@ -49,6 +49,8 @@ pub enum WheelRailError {
     Normal { patch: usize, source: ContactError },
     #[error("patch {patch}: approximate normal problem: {source}")]
     Approximate { patch: usize, source: ApproximateError },
+    #[error("a shift's material-fixed grid needs the rail profile's arc length (a profile file, not a closed form)")]
+    NoRailArcLength,
 }
 
 /// Largest potential contact of one patch [elements].
@@ -61,6 +63,21 @@ pub enum Vertical {
     Force { fz_n: f64 },
     /// The height z_ws of the pose prescribed (N = 0).
     Position,
+}
+
+/// How the wheel moves in the case (CONTACT's T digit in module 1, with T = 0 the frictionless
+/// variant of either).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Motion {
+    /// Steady rolling (T = 3): the grid's element centres on multiples of DX and DS from each
+    /// patch's reference, the velocities over the rolling speed are the creepages.
+    #[default]
+    Rolling,
+    /// A shift from rest (T = 1, P = 2; user guide "Tangential quantities in case of a shift"):
+    /// the velocities are the shifts of one step (dt = 1, VELOC = 1: the creepages are shifts
+    /// [mm, rad]) and the grid is CONTACT's material-fixed super-grid (`set_cpatch_reference`,
+    /// T = 1): element centres at track x = −S_WS + i DX and at the rail's arc length j DS.
+    Shift { s_ws_mm: f64 },
 }
 
 /// One side's case: the surfaces, their placement, the wheelset's state and the discretisation.
@@ -82,6 +99,7 @@ pub struct WheelRailCase<'a> {
     /// The wheel surface the undeformed distance is measured to.
     pub wheel_surface: wheel_mesh::WheelSurface,
     pub material: Material,
+    pub motion: Motion,
 }
 
 /// A patch with its normal solution and creepages (right-side frame).
@@ -251,7 +269,14 @@ fn geometry_at(
         search::regions(&samples).into_iter().filter_map(|r| patch::candidate(r, radius)).collect();
     let mut out = Vec::new();
     for (k, c) in patch::combine(candidates, &case.separation).iter().enumerate() {
-        let geometry = patch::build(c, wheel, rail, (case.dx_mm, case.ds_mm), &case.separation, case.wheel_surface)?;
+        let geometry = patch::build(
+            c,
+            wheel,
+            rail,
+            (case.dx_mm, case.ds_mm),
+            &case.separation,
+            (case.wheel_surface, case.motion),
+        )?;
         if geometry.grid.len() > MAX_ELEMENTS {
             return Err(WheelRailError::GridTooLarge {
                 patch: k + 1,
@@ -284,7 +309,8 @@ fn patches_at(
                 .map_err(|source| WheelRailError::Normal { patch, source })?,
         };
         let pen_mm = -geometry.h_mm.iter().copied().fold(f64::INFINITY, f64::min);
-        let creepages = creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm, &rail_motion);
+        let shift = matches!(case.motion, Motion::Shift { .. });
+        let creepages = creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm, &rail_motion, shift);
         out.push(NormalPatch { geometry, fn_n, pn_mpa, pen_mm, creepages });
     }
     Ok(out)

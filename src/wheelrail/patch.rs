@@ -9,7 +9,7 @@ use super::rail::PlacedRail;
 use super::search::LocusSample;
 use super::wheel::PlacedWheel;
 use super::wheel_mesh::{self, WheelSurface};
-use super::WheelRailError;
+use super::{Motion, WheelRailError};
 use crate::physics::halfspace::blend::Blend;
 use nalgebra::{Point3, Vector3};
 
@@ -39,7 +39,8 @@ impl PatchFrame {
 }
 
 /// The potential contact: `mx × ms` elements of `dx × ds` over `[x0, x0 + mx dx] × [s0, s0 + ms ds]`
-/// in plane coordinates, element centres on whole multiples of dx and ds from the reference.
+/// in plane coordinates, element centres on whole multiples of dx and ds from the anchor: the
+/// reference in steady rolling, CONTACT's material-fixed super-grid origin in a shift.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PatchGrid {
     pub mx: usize,
@@ -48,6 +49,12 @@ pub struct PatchGrid {
     pub ds_mm: f64,
     pub x0_mm: f64,
     pub s0_mm: f64,
+    /// The anchor (x, s) in plane coordinates [mm] (CONTACT's `mpot`; (0, 0): the reference).
+    pub anchor_mm: [f64; 2],
+    /// The indices (i, j) of the grid's first element in the anchor's lattice (element centres at
+    /// the anchor plus (i dx, j ds)): in a shift, CONTACT's super-grid indices, the same material
+    /// point from case to case.
+    pub first_index: [i64; 2],
 }
 
 impl PatchGrid {
@@ -331,20 +338,42 @@ fn indices(from: f64, to: f64, d: f64) -> (i64, i64) {
 }
 
 /// The potential contact of a candidate: its x range, and laterally the rail's arc length from the
-/// reference to its y range's ends, rounded out to whole elements plus a guard element.
-pub fn grid(c: &Candidate, frame: &PatchFrame, rail: &PlacedRail, dx_mm: f64, ds_mm: f64) -> PatchGrid {
-    let s_of = |y: f64| arc_length(rail, frame.origin.y, y);
-    let (s_a, s_b) = (s_of(c.y_mm[0]), s_of(c.y_mm[1]));
-    let (ix_l, ix_h) = indices(c.x_mm[0] - frame.origin.x, c.x_mm[1] - frame.origin.x, dx_mm);
-    let (is_l, is_h) = indices(s_a.min(s_b), s_a.max(s_b), ds_mm);
-    PatchGrid {
+/// reference to its y range's ends, rounded out to whole elements plus a guard element. In a
+/// shift the same on CONTACT's super-grid (`set_planar_potcon` with `mpot`): x from track
+/// x = −S_WS, s the rail profile's own arc length (its spline parameter), the reference at
+/// (−S_WS − x_ref, −s_ref) from the anchor.
+pub fn grid(
+    c: &Candidate,
+    frame: &PatchFrame,
+    rail: &PlacedRail,
+    (dx_mm, ds_mm): (f64, f64),
+    motion: Motion,
+) -> Result<PatchGrid, WheelRailError> {
+    let ([xa, xb], [sa, sb], anchor_mm) = match motion {
+        Motion::Rolling => {
+            let s_of = |y: f64| arc_length(rail, frame.origin.y, y);
+            let x = [c.x_mm[0] - frame.origin.x, c.x_mm[1] - frame.origin.x];
+            (x, [s_of(c.y_mm[0]), s_of(c.y_mm[1])], [0.0, 0.0])
+        }
+        Motion::Shift { s_ws_mm } => {
+            let s_of = |y: f64| rail.s_mm(y).ok_or(WheelRailError::NoRailArcLength);
+            let s_ref = s_of(frame.origin.y)?;
+            let x = [c.x_mm[0] + s_ws_mm, c.x_mm[1] + s_ws_mm];
+            (x, [s_of(c.y_mm[0])?, s_of(c.y_mm[1])?], [-s_ws_mm - frame.origin.x, -s_ref])
+        }
+    };
+    let (ix_l, ix_h) = indices(xa, xb, dx_mm);
+    let (is_l, is_h) = indices(sa.min(sb), sa.max(sb), ds_mm);
+    Ok(PatchGrid {
         mx: (ix_h - ix_l + 1) as usize,
         ms: (is_h - is_l + 1) as usize,
         dx_mm,
         ds_mm,
-        x0_mm: (ix_l as f64 - 0.5) * dx_mm,
-        s0_mm: (is_l as f64 - 0.5) * ds_mm,
-    }
+        x0_mm: anchor_mm[0] + (ix_l as f64 - 0.5) * dx_mm,
+        s0_mm: anchor_mm[1] + (is_l as f64 - 0.5) * ds_mm,
+        anchor_mm,
+        first_index: [ix_l, is_l],
+    })
 }
 
 /// Gap [mm] used where a normal line misses one of the surfaces (off the profiles' ends): far
@@ -386,12 +415,12 @@ pub fn build(
     c: &Candidate,
     wheel: &PlacedWheel,
     rail: &PlacedRail,
-    (dx_mm, ds_mm): (f64, f64),
+    size_mm: (f64, f64),
     sep: &Separation,
-    surface: WheelSurface,
+    (surface, motion): (WheelSurface, Motion),
 ) -> Result<PatchGeometry, WheelRailError> {
     let frame = frame(c, rail).ok_or(WheelRailError::NoContact)?;
-    let grid = grid(c, &frame, rail, dx_mm, ds_mm);
+    let grid = grid(c, &frame, rail, size_mm, motion)?;
     let mut h_mm = undeformed_distance(&frame, &grid, wheel, rail, surface);
     let blend = (c.parts.len() > 1).then(|| {
         let part = sub_patch_of_elements(&c.parts, &frame, &grid, sep);

@@ -161,6 +161,13 @@ impl<'a> PlacedRail<'a> {
         None
     }
 
+    /// The rail profile's spline parameter s [mm] (CONTACT's `sr`) at track y, where the rail is
+    /// a profile file.
+    pub fn s_mm(&self, y_mm: f64) -> Option<f64> {
+        let y_r = if self.angle_rad == 0.0 { y_mm - self.origin_mm[0] } else { self.profile_y(y_mm)? };
+        self.curve.s_at_y(y_r)
+    }
+
     /// Height z [mm] of the rail surface at track y [mm].
     pub fn z_mm(&self, y_mm: f64) -> Option<f64> {
         if self.angle_rad == 0.0 {

@@ -60,7 +60,8 @@ fn mesh(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedWheel) -> Mesh {
         let d = p - frame.origin;
         [d.x, d.dot(&frame.e_s()), d.dot(&frame.n())]
     };
-    let q = wheel.to_wheelset(&frame.origin);
+    // CONTACT's mesh starts at the grid's anchor (`mpot`): the reference in steady rolling.
+    let q = wheel.to_wheelset(&frame.at(grid.anchor_mm[0], grid.anchor_mm[1]));
     let y_mid = q.y - wheel.y_offset_mm;
     let (s_lo, s_hi) = (grid.s0_mm - GUARD * grid.ds_mm, grid.s0_mm + (grid.ms as f64 + GUARD) * grid.ds_mm);
     let (x_lo, x_hi) = (grid.x0_mm - GUARD * grid.dx_mm, grid.x0_mm + (grid.mx as f64 + GUARD) * grid.dx_mm);
@@ -69,19 +70,24 @@ fn mesh(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedWheel) -> Mesh {
         let z = (rho * rho - x * x).max(0.0).sqrt();
         Some(to_plane(wheel.to_track(Vector3::new(x, wheel.y_offset_mm + y_w, z))))
     };
-    // Profile points each way from the reference until their s leaves the grid's extent.
+    // Profile points each way from the anchor until their s has left the grid's extent (an
+    // anchor outside it: until they have crossed it).
+    let outside = |s: f64| (s_lo - s).max(s - s_hi).max(0.0);
     let mut profile = vec![y_mid];
     for dir in [-1.0, 1.0] {
         let mut y = y_mid;
         let mut side = Vec::new();
+        let mut last = node(q.x, y).map_or(f64::INFINITY, |[_, s, _]| outside(s));
         for _ in 0..MAX_NODES {
             let Some(next) = step_arc(wheel.curve, y, dir * grid.ds_mm) else { break };
             y = next;
             side.push(y);
-            match node(q.x, y) {
-                Some([_, s, _]) if (s_lo..=s_hi).contains(&s) => {}
-                _ => break,
+            let Some([_, s, _]) = node(q.x, y) else { break };
+            let d = outside(s);
+            if d > 0.0 && d >= last {
+                break;
             }
+            last = d;
         }
         if dir < 0.0 {
             side.reverse();

@@ -5,7 +5,9 @@
 
 use crate::common::{self, root};
 use creepbench::import::contact::wheelrail_deck::{self, PitchInput, Vertical};
-use creepbench::scene::wheelrail::{PlacementSpec, SideSpec, VerticalSpec, WheelRailScene, PROFILE_DEFAULTS};
+use creepbench::scene::wheelrail::{
+    MotionSpec, PlacementSpec, SideSpec, VerticalSpec, WheelRailScene, PROFILE_DEFAULTS,
+};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -171,7 +173,7 @@ fn the_decks_with_fx_ws_prescribed_import_as_the_gated_scenes() {
 }
 
 /// The module-1 cases of CONTACT's test bank that need a roller rig, a thin layer, the conformal
-/// approach, a massless rail or transient rolling are refused naming what the scene lacks; the
+/// approach, a massless rail or a shift continuing a sequence are refused naming what the scene lacks; the
 /// others import (rail deviations, frictionless compression, smoothing, MIRRORZ, PRFOPT); its
 /// module-3 cases import as before.
 #[test]
@@ -189,7 +191,7 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
     reason(21, "B = 1: a thin compressible elastic layer");
     reason(35, "D (in force) = 4: contact approaches other than the planar one");
     reason(36, "F = 3: a massless rail");
-    reason(38, "T = 1: shifts and transient rolling");
+    reason(39, "T = 1, P = 0: shifts continuing a sequence");
     let note = |case: usize, start: &str| {
         let s = m1.iter().find(|s| s.case == case).unwrap();
         assert!(s.scene.is_some() && s.notes.iter().any(|r| r.starts_with(start)), "case {case}: {s:?}");
@@ -199,12 +201,13 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
     note(22, "SMOOTH = 10 (rail), 10 (wheel): profile smoothing");
     note(28, "PRFOPT = 1: ISMOOTH, ZIGTHRS, KINKHIGH, KINKLOW, KINKWID = 0, 2.61799");
     note(30, "MIRRORZ = 1 (rail): mirroring of a profile's z given");
+    note(38, "T = 1, P = 2: shifts from rest");
     let scenes: Vec<&str> = imported.scenes.iter().map(|s| s.name.as_str()).collect();
     // Module 1's steady cases import, one scene each; module 3's 25, 26 (dissimilar bodies,
     // issue 46) are one scene.
     let number = |s: &&str| s.split('_').nth(1).unwrap().parse::<usize>().unwrap();
     let module1: Vec<usize> = scenes.iter().map(number).filter(|&n| n >= 18 && n != 25).collect();
-    assert_eq!(module1, [18, 19, 22, 23, 27, 28, 29, 30, 31, 32, 33, 34], "{scenes:?}");
+    assert_eq!(module1, [18, 19, 22, 23, 27, 28, 29, 30, 31, 32, 33, 34, 38], "{scenes:?}");
     assert!(scenes.contains(&"testbank_1"), "{scenes:?}");
     // What the scenes carry: the rail's deviations, T = 0, SMOOTH, MIRRORZ, KINKWID; A_SEP = 90
     // (radians, `90d0`) as pi.
@@ -306,6 +309,28 @@ fn export_then_import_gives_the_same_scene() {
     assert!(original.frictionless && original.rail.smooth_weighted && original.rail.mirror_z == -1);
     assert_eq!((original.wheel.smooth, original.wheel.kink_low_rad, original.wheel.max_omit), (7.0, 0.2, 0.4));
     assert_eq!(values(&back), values(&original));
+}
+
+/// Shifts from rest (T = 1, P = 2): t1_zws's five cases (S_WS 0 and 0.4 mm, two scenes) export
+/// with T = 1 and S_WS and import back as the same scenes (but the cases' numbers). (Run by CONTACT, the exported deck of
+/// cases 2-5 prints the shipped deck's totals digit for digit, 2026-11-29.)
+#[test]
+fn a_shift_from_rest_exports_and_imports_back() {
+    let dir = common::tempdir("m1_shift_round_trip");
+    let deck = root().join("reference/contact_wheelrail/testbank/examples_trans/t1_zws.inp");
+    let scenes = import(&deck, &dir.join("scenes"), &[]);
+    assert_eq!(scenes.len(), 2, "{scenes:?}");
+    for (k, scene) in scenes.iter().enumerate() {
+        let (original, back) = round_trip(scene, &dir.join(format!("back_{k}")));
+        let s_ws_mm = if k == 0 { 0.0 } else { 0.4 };
+        assert_eq!(original.motion, MotionSpec::Shift { s_ws_mm });
+        // The exported deck numbers its cases from 1 (cases 2-5 come back as 1-4).
+        let mut original = values(&original);
+        for (n, row) in original.cases.iter_mut().enumerate() {
+            row.contact_case = n as u64 + 1;
+        }
+        assert_eq!(values(&back), original);
+    }
 }
 
 /// Friction varying across the rail (V = 1) and along the track (V = 2): mbench_a22_varfric's

@@ -66,4 +66,5 @@ mod wheelrail;
 mod wheelrail_mbench;
 mod wheelrail_profiles;
 mod wheelrail_report;
+mod wheelrail_shift;
 mod wheelrail_variants;

@@ -38,11 +38,32 @@ const CURATION_DEFAULT: (i64, [f64; 4], f64) = (0, [150.0 * PI / 180.0, 30.0 * P
 /// Every limit of the scene, in the order of the input.
 pub const SCENE_LIMITS: &[SceneLimit] = &[
     SceneLimit {
-        name: "shifts and transient rolling",
+        name: "transient rolling",
         control: "T",
         accepted: false,
-        reason: "supported: T = 3 (steady rolling) and T = 0 (frictionless compression); T = 1, 2 would need the previous case's tractions carried on a wheel-rail grid",
-        used: |c| matches!(c.digits.t, 1 | 2).then(|| format!("T = {}", c.digits.t)),
+        reason: "supported: T = 3 (steady rolling), T = 0 (frictionless compression) and T = 1 from rest (P = 2); transient rolling (T = 2) would need the previous case's tractions carried on a wheel-rail grid moving with the contact",
+        used: |c| (c.digits.t == 2).then(|| "T = 2".to_string()),
+    },
+    SceneLimit {
+        name: "shifts from rest",
+        control: "T",
+        accepted: true,
+        reason: "carried as [wheelrail] motion = \"shift\" with s_mm = S_WS: one shift step from zero tractions on CONTACT's material-fixed grid, the velocities the step's shifts",
+        used: |c| (c.digits.t == 1 && c.digits.p == 2).then(|| "T = 1, P = 2".to_string()),
+    },
+    SceneLimit {
+        name: "shifts continuing a sequence",
+        control: "P",
+        accepted: false,
+        reason: "supported: T = 1 from rest (P = 2); a shift after the previous case (P = 0, 1, 3) takes that case's tractions on CONTACT's material-fixed grid, its patches connected by overlap, split, merged or kept while out of contact (`wr_connect_cps`, `wr_update_allcps`), and its grid widened to the contact of the time before (`merge_prev_potcon`): not yet carried",
+        used: |c| (c.digits.t == 1 && c.digits.p != 2).then(|| format!("T = 1, P = {}", c.digits.p)),
+    },
+    SceneLimit {
+        name: "a longitudinal force in a shift",
+        control: "F",
+        accepted: false,
+        reason: "supported: F = 0 in shifts (T = 1): the wheelset's shifts given; FX_WS or MY_WS prescribed is solved for steady rolling only",
+        used: |c| (c.digits.t == 1 && c.digits.f != 0).then(|| format!("T = 1, F = {}", c.digits.f)),
     },
     SceneLimit {
         name: "frictionless compression",

@@ -23,7 +23,7 @@ use super::super::CaseStatus;
 use super::{scene_name, SceneFiles};
 use crate::physics::material::combine_bodies;
 use crate::scene::wheelrail::{
-    CaseRow, LongitudinalSpec, MuBy, MuVariation, PlacementSpec, ProfileSpec, RailDeviationSpec, SideSpec,
+    CaseRow, LongitudinalSpec, MotionSpec, MuBy, MuVariation, PlacementSpec, ProfileSpec, RailDeviationSpec, SideSpec,
     VerticalSpec, WheelRailScene, PROFILE_DEFAULTS,
 };
 use crate::scene::{MaterialSpec, Origin};
@@ -185,6 +185,7 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         d_comb_mm: disc.d_comb_mm,
         d_turn_mm: disc.d_turn_mm(),
         wheel_mesh: false,
+        motion: if c.digits.t == 1 { MotionSpec::Shift { s_ws_mm: s_ws } } else { MotionSpec::Rolling },
         vertical,
         longitudinal,
         cases: vec![row],

@@ -6,8 +6,8 @@
 use super::super::read_back::tempdir_for;
 use crate::error::InputError;
 use crate::scene::wheelrail::{
-    case_columns, CaseRow, LongitudinalSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
-    MIRROR_Z, PROFILE_DEFAULTS,
+    case_columns, CaseRow, LongitudinalSpec, MotionSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec,
+    WheelRailScene, MIRROR_Z, PROFILE_DEFAULTS,
 };
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
@@ -55,6 +55,13 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
     }
     if s.frictionless {
         wheelrail.push(("frictionless", Value::Boolean(true)));
+    }
+    if let MotionSpec::Shift { s_ws_mm } = s.motion {
+        wheelrail.push(("motion", Value::String("shift".into())));
+        // With mu_by = "track_s" the friction's s_mm is the same position, written once.
+        if !matches!(s.mu_variation.as_ref().map(|v| v.by), Some(MuBy::TrackS { .. })) {
+            wheelrail.push(("s_mm", Value::Float(s_ws_mm)));
+        }
     }
     let mut rail = profile(&s.rail, &s.name)?;
     match s.placement {
