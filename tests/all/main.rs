@@ -61,6 +61,7 @@ mod test_table;
 mod timing;
 mod tolerance_files;
 mod traction_bound;
+mod viscoelastic;
 mod wheelrail;
 mod wheelrail_mbench;
 mod wheelrail_profiles;
