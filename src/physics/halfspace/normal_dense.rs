@@ -11,6 +11,10 @@ use super::ContactError;
 
 /// Most changes of the contact set.
 const MAX_SETS: usize = 500;
+/// A kernel whose `A(d)` and `A(−d)` differ by more than this fraction of its largest coefficient
+/// is not symmetric (an elastic kernel's differ by rounding, ~1e-16; a viscoelastic one's by its
+/// memory, 1e-3 and more where the relaxation distance is within a few hundred grid lengths).
+const ASYMMETRY: f64 = 1e-12;
 
 /// The `zz` part of a kernel that is not symmetric, kept for direct solves.
 pub(super) struct Dense {
@@ -20,11 +24,15 @@ pub(super) struct Dense {
 
 impl Dense {
     /// The dense solver of `kernel`'s `zz`, or `None` when it is symmetric (`A(d) = A(−d)` for every
-    /// offset `d`, bit for bit: the conjugate gradients serve).
+    /// offset `d` to [`ASYMMETRY`] of its largest coefficient, the rounding of an elastic kernel's
+    /// evaluation: the conjugate gradients serve).
     pub(super) fn of(kernel: &Kernel) -> Option<Dense> {
         let (hx, hy) = (kernel.mx as isize - 1, kernel.my as isize - 1);
-        let symmetric = (-hy..=hy)
-            .all(|dj| (-hx..=hx).all(|di| kernel.zz[kernel.index(di, dj)] == kernel.zz[kernel.index(-di, -dj)]));
+        let largest = kernel.zz.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let bound = ASYMMETRY * largest;
+        let symmetric = (-hy..=hy).all(|dj| {
+            (-hx..=hx).all(|di| (kernel.zz[kernel.index(di, dj)] - kernel.zz[kernel.index(-di, -dj)]).abs() <= bound)
+        });
         (!symmetric).then(|| Dense { mx: kernel.mx, zz: kernel.clone() })
     }
 
