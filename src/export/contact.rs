@@ -22,6 +22,10 @@
 //! case, GG3, LAYTHK with TAU_C0 = K_TAU = 0 after the material's POISS, GG; refused in transient
 //! rolling ([`check`]).
 //!
+//! Viscoelastic bodies (`[material] visco_ratio`, `visco_time_s`) are CONTACT's M = 1 in every
+//! case, FG 1 = FG 2 and TC 1 = TC 2 after the material's POISS, GG; refused rolling along −x or
+//! with bilinear tractions ([`check`]).
+//!
 //! The influence functions of bilinear tractions (`[contact_solver] influence = "bilinear"`) are
 //! CONTACT's C = 3 wherever C is given (C = 2 otherwise).
 //!
@@ -65,6 +69,7 @@ const F_ABSENT: f64 = 1e-8;
 /// falling law's SABSH1, SABSH2 where their term is present. An error names the scene's key.
 pub fn check(p: &Problem) -> Result<(), InputError> {
     check_layer(p)?;
+    check_visco(p)?;
     match &p.friction {
         FrictionLaw::Coulomb { .. } => check_coulomb(p),
         FrictionLaw::Linear(t) | FrictionLaw::Rational(t) | FrictionLaw::Exponential(t) => {
@@ -88,6 +93,30 @@ fn check_layer(p: &Problem) -> Result<(), InputError> {
         )),
         _ => Ok(()),
     }
+}
+
+/// Viscoelastic bodies (M = 1) rolling along +x with piecewise constant tractions: CONTACT sets
+/// CHI = 0 with M = 1 (`m_sdis.f90`) and adds the memory of piecewise constant tractions to C = 3's
+/// bilinear coefficients (`m_visc.f90`), so either would make the deck another problem.
+fn check_visco(p: &Problem) -> Result<(), InputError> {
+    if p.material.visco.is_none() {
+        return Ok(());
+    }
+    if p.rolling.chi_deg != 0.0 {
+        return Err(InputError::new(
+            "rolling.chi_deg",
+            format!("{} with viscoelastic bodies", p.rolling.chi_deg),
+            "chi_deg = 0 with viscoelastic bodies (CONTACT's M = 1 rolls along +x whatever CHI: m_sdis.f90 sets CHI = 0)",
+        ));
+    }
+    if p.contact_solver.influence == Basis::Bilinear {
+        return Err(InputError::new(
+            "contact_solver.influence",
+            "\"bilinear\" with viscoelastic bodies",
+            "\"constant\" with viscoelastic bodies (CONTACT's M = 1 adds the memory of piecewise constant tractions to C = 3's bilinear coefficients)",
+        ));
+    }
+    Ok(())
 }
 
 /// Coulomb's μ written as FSTAT = FKIN: each grid row's (`mu_rows`, V = 3), else each case's
@@ -362,7 +391,14 @@ fn ldcmze(p: &Problem, case: &Case, out: &mut String) {
     // C = 2: uniform elements, C = 3: bilinear tractions (`[contact_solver] influence`).
     let c = if p.contact_solver.influence == Basis::Bilinear { 3 } else { 2 };
     // M = 4: the interface layer, in every case (CONTACT reads M in each; GG3.. with the material).
-    let m = if p.material.layer.is_some() { 4 } else { 0 };
+    // M = 1: viscoelastic bodies, in every case likewise (FG, TC with the material).
+    let m = if p.material.layer.is_some() {
+        4
+    } else if p.material.visco.is_some() {
+        1
+    } else {
+        0
+    };
     let ldc = match (case.first, case.dq_again) {
         (true, _) => format!("{v}{law}2{c}{m}20"),
         (false, again) => format!(
@@ -496,6 +532,10 @@ fn kinematics_and_material(p: &Problem, rolling: Option<(f64, f64, f64)>, out: &
     // M = 4: the elastic layer (TAU_C0 = 0: no plasticity, K_TAU unused).
     if let Some(l) = m.layer {
         let _ = writeln!(out, "  {:?}   {:?}   0.0   0.0    GG3, LAYTHK, TAU_C0, K_TAU", l.g_mpa, l.thickness_mm);
+    }
+    // M = 1: both bodies the same standard linear solid.
+    if let Some(v) = m.visco {
+        let _ = writeln!(out, "  {:?}   {:?}   {:?}   {:?}    FG 1,2, TC 1,2", v.ratio, v.ratio, v.time_s, v.time_s);
     }
 }
 

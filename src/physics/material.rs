@@ -21,6 +21,22 @@ pub struct Material {
     /// CONTACT's M = 4); `None`: the bodies touch.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub layer: Option<Layer>,
+    /// Both bodies a viscoelastic standard linear solid (`[material] visco_ratio`,
+    /// `visco_time_s`; CONTACT's M = 1 with FG 1 = FG 2, TC 1 = TC 2); `None`: elastic.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub visco: Option<Visco>,
+}
+
+/// A standard linear solid in its Kelvin–Voigt form (CONTACT's M = 1, user guide "Viscoelastic
+/// materials"): creep compliance C(t) = C_g + C_v (1 − e^(−t/τ_c)), the glassy compliance C_g
+/// that of the elastic constants (G is the glassy, instantaneous modulus), the same for both bodies.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Visco {
+    /// C_v/C_g ≥ 0 (CONTACT's FG): the relaxed modulus is G/(1 + FG).
+    pub ratio: f64,
+    /// The creep relaxation time τ_c [s] (CONTACT's TC); rolling at V it is the relaxation
+    /// distance V τ_c (VT).
+    pub time_s: f64,
 }
 
 /// CONTACT's interfacial (third-body) layer (M = 4, user guide "Interfacial layer of
@@ -55,7 +71,7 @@ fn is_zero(v: &f64) -> bool {
 impl Material {
     /// From G and ν; E follows as `2 G (1 + ν)`.
     pub fn from_g(g_mpa: f64, poisson: f64) -> Self {
-        Self { g_mpa, poisson, e_mpa: 2.0 * g_mpa * (1.0 + poisson), k: 0.0, bodies: None, layer: None }
+        Self { g_mpa, poisson, e_mpa: 2.0 * g_mpa * (1.0 + poisson), k: 0.0, bodies: None, layer: None, visco: None }
     }
 
     /// From the two bodies' constants, combined as CONTACT combines them ([`combine_bodies`]),
@@ -77,7 +93,7 @@ impl Material {
 
     /// From E and ν; G follows as `E / (2 (1 + ν))`.
     pub fn from_e(e_mpa: f64, poisson: f64) -> Self {
-        Self { g_mpa: e_mpa / (2.0 * (1.0 + poisson)), poisson, e_mpa, k: 0.0, bodies: None, layer: None }
+        Self { g_mpa: e_mpa / (2.0 * (1.0 + poisson)), poisson, e_mpa, k: 0.0, bodies: None, layer: None, visco: None }
     }
 
     /// Two-body contact modulus E* [MPa] with `1/E* = 2 (1 − ν²) / E` (two identical bodies).

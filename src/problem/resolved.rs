@@ -44,6 +44,9 @@ pub struct ResolvedScene {
     /// absent: none).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub layer: Option<crate::physics::material::Layer>,
+    /// Viscoelastic bodies (`[material] visco_ratio`, `visco_time_s`; absent: elastic).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub visco: Option<crate::physics::material::Visco>,
     pub c11: f64,
     pub c22: f64,
     pub c23: f64,
@@ -184,6 +187,7 @@ impl ResolvedScene {
             poisson: p.material.poisson,
             kalker_k: p.material.coupled().then_some(p.material.k),
             layer: p.material.layer,
+            visco: p.material.visco,
             c11: p.coefficients.c11,
             c22: p.coefficients.c22,
             c23: p.coefficients.c23,

@@ -34,6 +34,8 @@ pub struct MaterialSpec {
     pub bodies: Option<crate::physics::material::Bodies>,
     /// An interface layer between the bodies (`layer_g_mpa`, `layer_thickness_mm`; CONTACT's M = 4).
     pub layer: Option<crate::physics::material::Layer>,
+    /// Viscoelastic bodies (`visco_ratio`, `visco_time_s`; CONTACT's M = 1).
+    pub visco: Option<crate::physics::material::Visco>,
 }
 
 /// The creepage history kinds, as the scene declares them (scene.json's `loading.creepage`,

@@ -285,9 +285,17 @@ fn ellipse(c: &mut Section) -> Result<GeometrySpec, InputError> {
 pub fn material(top: &mut Section) -> Result<MaterialSpec, InputError> {
     let mut m = top.table("material")?;
     let layer = layer(&mut m)?;
+    let visco = visco(&mut m)?;
+    if let (Some(_), Some(_)) = (layer, visco) {
+        return Err(InputError::new(
+            m.field("visco_ratio"),
+            "given with layer_g_mpa",
+            "either an interface layer or viscoelastic bodies (CONTACT's M is one material model: 4 or 1)",
+        ));
+    }
     if let Some(spec) = bodies(&mut m)? {
         m.finish()?;
-        return Ok(MaterialSpec { layer, ..spec });
+        return Ok(MaterialSpec { layer, visco, ..spec });
     }
     let g_mpa = m.opt_f64("g_mpa", Range::new(0.0, false, 1e7, true))?;
     let e_mpa = m.opt_f64("e_mpa", Range::new(0.0, false, 1e7, true))?;
@@ -300,7 +308,29 @@ pub fn material(top: &mut Section) -> Result<MaterialSpec, InputError> {
         ));
     }
     m.finish()?;
-    Ok(MaterialSpec { g_mpa, e_mpa, poisson, bodies: None, layer })
+    Ok(MaterialSpec { g_mpa, e_mpa, poisson, bodies: None, layer, visco })
+}
+
+/// The keys of viscoelastic bodies, given together.
+const VISCO_KEYS: [&str; 2] = ["visco_ratio", "visco_time_s"];
+
+/// Viscoelastic bodies (CONTACT's M = 1 with FG 1 = FG 2, TC 1 = TC 2): both keys or neither. A
+/// ratio of 0 is elastic bodies.
+fn visco(m: &mut Section) -> Result<Option<crate::physics::material::Visco>, InputError> {
+    let given: Vec<&str> = VISCO_KEYS.iter().copied().filter(|k| m.has(k)).collect();
+    if given.is_empty() {
+        return Ok(None);
+    }
+    if let Some(missing) = VISCO_KEYS.iter().find(|k| !given.contains(k)) {
+        return Err(InputError::new(
+            m.field(missing),
+            "missing",
+            format!("both of {} with {}", VISCO_KEYS.join(", "), given.join(", ")),
+        ));
+    }
+    let ratio = m.f64("visco_ratio", Range::new(0.0, true, 1e6, true))?;
+    let time_s = m.f64("visco_time_s", Range::new(0.0, true, 1e20, true))?;
+    Ok((ratio > 0.0).then_some(crate::physics::material::Visco { ratio, time_s }))
 }
 
 /// The keys of an interface layer, given together.
@@ -363,7 +393,14 @@ fn bodies(m: &mut Section) -> Result<Option<MaterialSpec>, InputError> {
             "bodies whose combined Poisson's ratio is below 0.5 (both at 0.5 is an incompressible pair: give g_mpa and poisson)",
         ));
     }
-    Ok(Some(MaterialSpec { g_mpa: None, e_mpa: None, poisson: combined.poisson, bodies: Some(bodies), layer: None }))
+    Ok(Some(MaterialSpec {
+        g_mpa: None,
+        e_mpa: None,
+        poisson: combined.poisson,
+        bodies: Some(bodies),
+        layer: None,
+        visco: None,
+    }))
 }
 
 /// `[rolling]` (optional): the speed [mm/s] (default 1000), the Courant number (default 1), the

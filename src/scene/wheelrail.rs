@@ -327,6 +327,13 @@ impl WheelRailScene {
         let (rail, placement, cant_rad, rail_deviation) = rail(&mut top, dir)?;
         let (wheel, fbd, fbp, radius) = wheel(&mut top, dir)?;
         let material = super::sections::material(&mut top)?;
+        if material.visco.is_some() {
+            return Err(InputError::new(
+                "material.visco_ratio",
+                "viscoelastic bodies in a wheel–rail scene",
+                "elastic bodies: the wheel–rail scene solves elastic bodies (give viscoelastic bodies in a module-3 scene)",
+            ));
+        }
         if material.layer.is_some() {
             return Err(InputError::new(
                 "material.layer_g_mpa",

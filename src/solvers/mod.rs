@@ -227,6 +227,9 @@ fn check_model(problem: &Problem, m: &ModelDef, shifts: bool) -> Result<(), Inpu
             format!("an interface layer only with the exact model ({}), which adds its flexibility to the half-spaces' influence (leave {} out of this scene)", contact::NAME, m.name),
         ));
     }
+    if problem.material.visco.is_some() {
+        check_visco(problem, m)?;
+    }
     if !problem.normal.is_default() && m.name != contact::NAME {
         return Err(InputError::new(
             "normal.pressure",
@@ -359,4 +362,44 @@ fn negligible(_: &Problem) -> f64 {
 /// Cost of a model that touches every grid element a constant number of times per row.
 pub fn linear_in_elements(p: &Problem) -> f64 {
     0.01 * p.grid.len() as f64
+}
+
+/// Viscoelastic bodies (`[material] visco_ratio`, CONTACT's M = 1): the exact model in steady
+/// rolling along ±x at one speed, the bodies' constants combined without coupling (the memory
+/// integral of [`crate::physics::halfspace::visco`] assumes tractions that stand still in the
+/// contact frame, which only steady rolling has).
+fn check_visco(problem: &Problem, m: &ModelDef) -> Result<(), InputError> {
+    let field = "material.visco_ratio";
+    let refuse = |value: String, allowed: &str| Err(InputError::new(field, value, allowed.to_string()));
+    if m.name != contact::NAME {
+        return refuse(
+            format!("viscoelastic bodies with {:?}", m.name),
+            &format!("viscoelastic bodies only with the exact model ({}), whose influence coefficients carry the material's memory (leave {} out of this scene)", contact::NAME, m.name),
+        );
+    }
+    if problem.loading.is_transient() || problem.rolling.motion != Motion::Rolling {
+        return refuse(
+            "viscoelastic bodies in a transient history or shifts".into(),
+            "steady rolling only (creepage.kind = \"sweep\"): the viscoelastic influence coefficients hold where the tractions stand still in the contact frame (CONTACT's M = 1 likewise)",
+        );
+    }
+    if problem.loading.rows().any(|s| s.v_mm_s.is_some() || s.chi_deg.is_some()) {
+        return refuse(
+            "viscoelastic bodies at a speed or direction that changes per row".into(),
+            "one rolling speed and direction for the whole history (the relaxation distance V·visco_time_s is the kernel's)",
+        );
+    }
+    if !matches!(problem.rolling.chi_deg, 0.0 | 180.0) {
+        return refuse(
+            format!("viscoelastic bodies rolling at chi_deg = {}", problem.rolling.chi_deg),
+            "chi_deg = 0 or 180 (CONTACT's M = 1 rolls along x)",
+        );
+    }
+    if problem.material.coupled() || problem.material.layer.is_some() {
+        return refuse(
+            "viscoelastic bodies with dissimilar constants (K != 0) or an interface layer".into(),
+            "quasi-identical bodies (K = 0) without a layer: the viscoelastic normal-tangential coupling is not modelled, and CONTACT's M is one material model",
+        );
+    }
+    Ok(())
 }

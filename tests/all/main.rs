@@ -62,6 +62,7 @@ mod test_table;
 mod timing;
 mod tolerance_files;
 mod traction_bound;
+mod viscoelastic;
 mod wheelrail;
 mod wheelrail_mbench;
 mod wheelrail_profiles;

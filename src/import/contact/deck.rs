@@ -135,12 +135,21 @@ pub struct State {
     pub layer: Option<[f64; 4]>,
     /// Whether the case's M is 4 (CONTACT reads M in every case; its layer values persist).
     pub m4: bool,
+    /// FG 1, FG 2 [-] and TC 1, TC 2 [s] of viscoelastic bodies (M = 1) as last read.
+    pub visco: Option<[f64; 4]>,
+    /// Whether the case's M is 1 (its viscoelastic values persist).
+    pub m1: bool,
 }
 
 impl State {
     /// GG3, LAYTHK, TAU_C0, K_TAU of the interface layer in force: M = 4 with the values last read.
     pub fn layer_in_force(&self) -> Option<[f64; 4]> {
         self.layer.filter(|_| self.m4)
+    }
+
+    /// FG 1, FG 2, TC 1, TC 2 of the viscoelastic bodies in force: M = 1 with the values last read.
+    pub fn visco_in_force(&self) -> Option<[f64; 4]> {
+        self.visco.filter(|_| self.m1)
     }
 
     /// The outer iterations CONTACT makes for dissimilar bodies (K ≠ 0): MAXOUT as read, at least
@@ -355,6 +364,7 @@ impl CaseReader<'_> {
     fn case(&mut self, state: &mut State) -> Result<Digits, DeckError> {
         let d = self.digits()?;
         state.m4 = d.m == 4;
+        state.m1 = d.m == 1;
         if d.x == 1 {
             self.lx.group("debug output P-S-F-L-C-I-N", &[Kind::Int], (1, Kind::Int))?;
         }
@@ -542,7 +552,10 @@ impl CaseReader<'_> {
             self.reals("FLXZ", 1)?;
         }
         match d.m {
-            1 => drop(self.reals("FG 1, 2, VT 1, 2", 4)?),
+            1 => {
+                let v = self.reals("FG 1, 2, TC 1, 2", 4)?;
+                state.visco = Some([v[0], v[1], v[2], v[3]]);
+            }
             2 => drop(self.reals("FLX, K0_MF, ALFAMF, BETAMF", 4)?),
             3 | 5 => {
                 let v = self.reals("K0_MF, ALFAMF, BETAMF", 3)?;

@@ -174,8 +174,42 @@ pub const FEATURES: &[Feature] = &[
         name: "material models other than elastic",
         control: "M",
         supported: false,
-        reason: "supported: M = 0 (elastic half-spaces), M = 4 (an elastic interface layer, its own rows), M = 3 (CONTACT's FASTSIM, also with FX prescribed, F = 1) and M = 5 (its modified FaStrip, with Coulomb friction rolling along +x) in steady rolling (T = 3) with the creepages given (F = 0), one friction coefficient (V = 0) and Hertz's pressure (B = 2, 3); viscoelastic (1), the simplified theory with one flexibility (2) and the original FaStrip (6, 7) are not",
-        used: |c| digit("M", c.digits.m, !matches!(c.digits.m, 0 | 4) && contact_simplified(c).is_none()),
+        reason: "supported: M = 0 (elastic half-spaces), M = 1 (viscoelastic bodies, its own rows), M = 4 (an elastic interface layer, its own rows), M = 3 (CONTACT's FASTSIM, also with FX prescribed, F = 1) and M = 5 (its modified FaStrip, with Coulomb friction rolling along +x) in steady rolling (T = 3) with the creepages given (F = 0), one friction coefficient (V = 0) and Hertz's pressure (B = 2, 3); the simplified theory with one flexibility (2) and the original FaStrip (6, 7) are not",
+        used: |c| digit("M", c.digits.m, !matches!(c.digits.m, 0 | 1 | 4) && contact_simplified(c).is_none()),
+    },
+    Feature {
+        name: "viscoelastic bodies",
+        control: "M, FG, TC",
+        supported: true,
+        reason: "imported as [material] visco_ratio = FG, visco_time_s = TC (both bodies alike; none where FG = 0): the exact solver's influence coefficients carry the standard linear solid's memory over the relaxation distance VELOC·TC (docs/models.md, \"Viscoelastic bodies\")",
+        used: |c| {
+            let [fg, _, tc, _] = c.state.visco_in_force()?;
+            Some(format!("M = 1, FG = {fg}, TC = {tc}"))
+        },
+    },
+    Feature {
+        name: "viscoelastic bodies of different constants",
+        control: "M, FG, TC, POISS, GG",
+        supported: false,
+        reason: "supported: FG 1 = FG 2 and TC 1 = TC 2 with quasi-identical elastic constants (K = 0); where the two differ CONTACT couples the normal and tangential problems through the memory (`m_visc.f90`, one integral per body) or, with TC 1 = TC 2 and K = 0, takes FG 1 for both bodies, neither modelled",
+        used: |c| {
+            let [fg1, fg2, tc1, tc2] = c.state.visco_in_force()?;
+            let k = crate::physics::material::combine_bodies(c.state.poiss, c.state.gg_mpa).k;
+            (fg1 != fg2 || tc1 != tc2 || k != 0.0).then(|| format!("M = 1, FG = {fg1}, {fg2}, TC = {tc1}, {tc2}, K = {k}"))
+        },
+    },
+    Feature {
+        name: "viscoelastic bodies outside steady rolling along +x with piecewise constant tractions",
+        control: "M, T, CHI, C",
+        supported: false,
+        reason: "supported: M = 1 in steady rolling (T = 3) at CHI = 0 with C = 2: CONTACT's memory integral holds for tractions that stand still in the contact frame, it sets CHI = 0 with M = 1 (`m_sdis.f90`), and with C = 3 it adds the memory of piecewise constant tractions to the bilinear elastic coefficients (`m_visc.f90`), none of which a scene says",
+        used: |c| {
+            c.state.visco_in_force()?;
+            let chi_deg = c.state.chi_rad.to_degrees();
+            let inflcf = c.state.inflcf;
+            (c.digits.t != 3 || chi_deg.abs() > 1e-3 || inflcf == 3)
+                .then(|| format!("M = 1, T = {}, CHI = {chi_deg} deg, C3 = {inflcf}", c.digits.t))
+        },
     },
     Feature {
         name: "an elastic interface layer",

@@ -18,6 +18,7 @@
 //! written in CONTACT's frame, only `Axy` is odd in X, so in grid coordinates it changes sign.
 
 use super::table;
+use super::visco::Relaxation;
 use super::ContactError;
 
 /// Antiderivative of `X^2/r^3` (d^2/dXdY): `Y ln(X + r)`, written as `Y asinh(X/|Y|)`; the dropped
@@ -246,7 +247,28 @@ impl Kernel {
         shift_mm: f64,
         basis: Basis,
     ) -> Result<Kernel, ContactError> {
-        Kernel::shifted(mx, my, (dx_mm, dy_mm), (g_mpa, nu), shift_mm, [shift_mm, 0.0], basis)
+        Kernel::shifted(mx, my, (dx_mm, dy_mm), (g_mpa, nu), shift_mm, [shift_mm, 0.0], (basis, None))
+    }
+
+    /// [`Kernel::with_basis`] of two viscoelastic bodies in steady rolling along the grid's +x
+    /// (CONTACT's M = 1, [`Relaxation`]): `g_mpa` and `nu` the glassy (instantaneous) constants.
+    pub fn viscoelastic(
+        mx: usize,
+        my: usize,
+        (dx_mm, dy_mm): (f64, f64),
+        (g_mpa, nu): (f64, f64),
+        shift_mm: f64,
+        (basis, relax): (Basis, Relaxation),
+    ) -> Result<Kernel, ContactError> {
+        for (name, value) in
+            [("viscous compliance ratio FG", relax.ratio), ("relaxation distance V·TC [mm]", relax.distance_mm)]
+        {
+            if !(value.is_finite() && value >= 0.0) {
+                return Err(ContactError::OutOfRange { name, value, requirement: "finite and >= 0" });
+            }
+        }
+        let relax = (!relax.is_elastic()).then_some(relax);
+        Kernel::shifted(mx, my, (dx_mm, dy_mm), (g_mpa, nu), shift_mm, [shift_mm, 0.0], (basis, relax))
     }
 
     /// The kernel of the displacement at the previous position of the material when the bodies
@@ -263,11 +285,11 @@ impl Kernel {
         basis: Basis,
     ) -> Result<Kernel, ContactError> {
         let offset = [dq_mm * towards[0], dq_mm * towards[1]];
-        Kernel::shifted(mx, my, (dx_mm, dy_mm), (g_mpa, nu), dq_mm, offset, basis)
+        Kernel::shifted(mx, my, (dx_mm, dy_mm), (g_mpa, nu), dq_mm, offset, (basis, None))
     }
 
     /// [`Kernel::new`] with the field point shifted by `offset_mm` [mm] in x and y, recorded as
-    /// the shift `shift_mm`.
+    /// the shift `shift_mm`; with a [`Relaxation`], of viscoelastic bodies.
     fn shifted(
         mx: usize,
         my: usize,
@@ -275,7 +297,7 @@ impl Kernel {
         (g_mpa, nu): (f64, f64),
         shift_mm: f64,
         offset_mm: [f64; 2],
-        basis: Basis,
+        (basis, relax): (Basis, Option<Relaxation>),
     ) -> Result<Kernel, ContactError> {
         if mx == 0 || my == 0 {
             return Err(ContactError::EmptyGrid { mx, my });
@@ -295,8 +317,7 @@ impl Kernel {
             return Err(ContactError::OutOfRange { name: "kernel shift [mm]", value, requirement: "finite" });
         }
         let c = 1.0 / (std::f64::consts::PI * g_mpa);
-        let at = |di: isize, dj: isize| {
-            let (x, y) = (di as f64 * dx_mm - offset_mm[0], dj as f64 * dy_mm - offset_mm[1]);
+        let elastic = |x: f64, y: f64| {
             let r = basis.integrals(x, y, dx_mm, dy_mm);
             [
                 c * (1.0 - nu) * r.one_over_r,
@@ -305,11 +326,21 @@ impl Kernel {
                 -c * nu * r.xy,
             ]
         };
+        // The viscoelastic memory to 1e-13 of the self-coefficient (Azz of the element itself).
+        let tol = 1e-13 * elastic(0.0, 0.0)[0];
+        let at = |di: isize, dj: isize| {
+            let (x, y) = (di as f64 * dx_mm - offset_mm[0], dj as f64 * dy_mm - offset_mm[1]);
+            match relax {
+                None => elastic(x, y),
+                Some(r) => r.apply(|x| elastic(x, y), x, dx_mm, tol),
+            }
+        };
         let key = table::Key {
             size_mm: [dx_mm.to_bits(), dy_mm.to_bits()],
             material: [g_mpa.to_bits(), nu.to_bits()],
             offset_mm: [offset_mm[0].to_bits(), offset_mm[1].to_bits()],
             basis: basis as u8,
+            relax: relax.map_or([0, 0], |r| [r.ratio.to_bits(), r.distance_mm.to_bits()]),
         };
         let [zz, xx, yy, xy] = table::kernel_parts(mx, my, key, at);
         if zz.iter().chain(xx.iter()).chain(yy.iter()).chain(xy.iter()).any(|v| !v.is_finite()) {

@@ -1,6 +1,7 @@
 //! The elastic half-space on the element grid, shared by every solver: influence coefficients of
 //! uniformly loaded rectangles ([`influence`], kept per element size and material by offset in
 //! `table.rs`) or bilinear tractions ([`bilinear`]), an interface layer in series ([`layer`]), u = A p by direct sums or FFT ([`convolution`]),
+//! viscoelastic bodies' memory in steady rolling ([`visco`]),
 //! and the normal contact problem for a prescribed FN or approach on any undeformed distance ([`normal`]),
 //! whose pressure the exact solver uses and the simplified models take on non-Hertzian contacts.
 
@@ -13,8 +14,10 @@ pub mod invariants;
 pub mod jet;
 pub mod layer;
 pub mod normal;
+mod normal_dense;
 pub mod stress;
 mod table;
+pub mod visco;
 
 /// Errors of the contact core; no function of these modules panics on bad numbers.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

@@ -2,11 +2,14 @@
 //! find pressures `pn_k >= 0` [MPa] and the approach `delta` [mm] with
 //! `e_k = h_k + (Azz pn)_k - delta >= 0`, `pn_k e_k = 0`, `sum(pn) dx dy = FN` [N].
 //! Solved by the bound-constrained conjugate-gradient method of Polonsky & Keer (Wear 231 (1999)
-//! 206-219, sec. 3; the same scheme as CONTACT's NormCG), with `u = Azz pn` by [`Convolver`].
+//! 206-219, sec. 3; the same scheme as CONTACT's NormCG), with `u = Azz pn` by [`Convolver`];
+//! a kernel that is not symmetric (viscoelastic bodies) by active sets and direct solves
+//! ([`super::normal_dense`]).
 
 use super::blend::Blend;
 use super::convolution::Convolver;
 use super::influence::Kernel;
+use super::normal_dense::Dense;
 use super::ContactError;
 
 /// Iteration controls of [`solve_normal`].
@@ -47,6 +50,9 @@ pub struct NormalSolver {
     area_mm2: f64,
     /// Sub-patches with attenuated cross-influence, where the contact has them.
     blend: Option<Blend>,
+    /// A kernel that is not symmetric (viscoelastic bodies): solved by active sets and direct
+    /// solves instead of the conjugate gradients.
+    dense: Option<Dense>,
 }
 
 /// `u = A p`, through the blend's sub-patches where there is one.
@@ -77,6 +83,7 @@ impl NormalSolver {
             n: kernel.mx * kernel.my,
             area_mm2: kernel.dx_mm * kernel.dy_mm,
             blend: None,
+            dense: Dense::of(kernel),
         })
     }
 
@@ -226,6 +233,16 @@ impl NormalSolver {
         fn_n: Option<f64>,
         params: &NormalParams,
     ) -> Result<(Vec<f64>, usize, f64, bool), ContactError> {
+        if let Some(dense) = &self.dense {
+            if self.blend.is_some() {
+                return Err(ContactError::OutOfRange {
+                    name: "sub-patches (blend) with a kernel that is not symmetric",
+                    value: 1.0,
+                    requirement: "no blend",
+                });
+            }
+            return dense.solve(h_mm, fn_n.map(|f| (f, self.area_mm2)));
+        }
         let (n, area, conv, blend) = (self.n, self.area_mm2, &mut self.conv, self.blend.as_ref());
         let allowed = |k: usize| blend.is_none_or(|b| b.allows(k));
         let mut p_old = vec![0.0; n];

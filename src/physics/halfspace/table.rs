@@ -13,6 +13,8 @@ pub(super) struct Key {
     pub material: [u64; 2],
     pub offset_mm: [u64; 2],
     pub basis: u8,
+    /// A viscoelastic relaxation's ratio and distance (`[0, 0]`: elastic).
+    pub relax: [u64; 2],
 }
 
 /// Coefficients `[zz, xx, yy, xy]` at offsets `|di| ≤ hx`, `|dj| ≤ hy`, index

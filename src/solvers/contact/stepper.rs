@@ -14,6 +14,7 @@ use super::veldep::{step_start, Motion as LawStep, VelDep, VelDepOptions, VelDep
 use super::ContactError;
 use crate::error::InputError;
 use crate::physics::geometry::element::equivalent_ellipse;
+use crate::physics::halfspace::visco::Relaxation;
 use crate::physics::{moment_sum, FrictionLaw, LinearTheory, NormalPressure};
 use crate::problem::{Problem, Sample};
 use crate::scene::Motion;
@@ -185,14 +186,28 @@ fn tangential_at(
     let (g, m, basis) = (&p.grid, &p.material, p.contact_solver.influence);
     let (dq, flx) = (p.rolling.dq_mm, m.layer_flexibility_mm_per_mpa());
     if chi_deg == 0.0 {
-        let ks = Kernel::with_basis(g.mx, g.my, (g.dx_mm, g.dy_mm), (m.g_mpa, m.poisson), dq, basis)?
-            .with_layer(flx, [dq, 0.0])?;
+        let ks = kernel_along_x(p, dq)?.with_layer(flx, [dq, 0.0])?;
         return TangentialSolver::new(k0, &ks, x, y);
     }
     let towards = direction::towards(chi_deg);
     let ks = Kernel::rolling(g.mx, g.my, (g.dx_mm, g.dy_mm), (m.g_mpa, m.poisson), (dq, towards), basis)?
         .with_layer(flx, [dq * towards[0], dq * towards[1]])?;
     TangentialSolver::rolling_towards(k0, &ks, towards, x, y)
+}
+
+/// The kernel of the grid with the field point shifted by `shift_mm` along x: elastic, or of
+/// viscoelastic bodies (`[material] visco_*`, CONTACT's M = 1) with the relaxation distance
+/// V·τ at the scene's speed ([`Kernel::viscoelastic`]).
+fn kernel_along_x(p: &Problem, shift_mm: f64) -> Result<Kernel, ContactError> {
+    let (g, m, basis) = (&p.grid, &p.material, p.contact_solver.influence);
+    let (size, elastic) = ((g.dx_mm, g.dy_mm), (m.g_mpa, m.poisson));
+    match m.visco {
+        None => Kernel::with_basis(g.mx, g.my, size, elastic, shift_mm, basis),
+        Some(v) => {
+            let relax = Relaxation { ratio: v.ratio, distance_mm: v.time_s * p.rolling.v_mm_s };
+            Kernel::viscoelastic(g.mx, g.my, size, elastic, shift_mm, (basis, relax))
+        }
+    }
 }
 
 /// About `N log N` per transient step for `N` elements (FFT products); a steady point about 3 steps.
@@ -330,10 +345,9 @@ fn solver_for<'s>(
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     let (g, m) = (&p.grid, &p.material);
-    let basis = p.contact_solver.influence;
     // An interface layer (M = 4) adds its flexibility where the material was ([`Kernel::with_layer`]).
     let kernel = |shift: f64| {
-        Kernel::with_basis(g.mx, g.my, (g.dx_mm, g.dy_mm), (m.g_mpa, m.poisson), shift, basis)
+        kernel_along_x(p, shift)
             .and_then(|k| k.with_layer(m.layer_flexibility_mm_per_mpa(), [shift, 0.0]))
             .map_err(ContactRunError::Kernel)
     };
@@ -611,7 +625,9 @@ impl Contact<'_> {
             let e = p.geometry.ellipse_at(fn_n);
             return Ok(shape.on_grid(&p.grid, fn_n, e.a_mm, e.b_mm));
         }
-        let geometry_solves = at.h_coefficients.is_none() && p.contact_solver.influence == Basis::Constant;
+        // The geometry solves with elastic coefficients: viscoelastic bodies solve their own.
+        let geometry_solves =
+            at.h_coefficients.is_none() && p.contact_solver.influence == Basis::Constant && p.material.visco.is_none();
         if let Some(pn) = geometry_solves.then(|| p.geometry.normal_pressure_mpa(fn_n)).flatten() {
             return Ok(pn);
         }

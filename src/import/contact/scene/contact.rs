@@ -72,6 +72,10 @@ pub(super) fn write(src: &Source, draft: &mut Draft) -> Result<(), InputError> {
     if let Some([gg3, laythk, ..]) = s.layer_in_force().filter(|l| l[1] >= 1e-10) {
         material.extend([("layer_g_mpa", Value::Float(gg3)), ("layer_thickness_mm", Value::Float(laythk))]);
     }
+    // M = 1: viscoelastic bodies alike (features.rs refuses bodies that differ); FG = 0 is elastic.
+    if let Some([fg, _, tc, _]) = s.visco_in_force().filter(|v| v[0] > 0.0) {
+        material.extend([("visco_ratio", Value::Float(fg)), ("visco_time_s", Value::Float(tc))]);
+    }
     draft.insert("material", table(material));
     draft.insert("grid", table(grid));
     Ok(())

@@ -66,7 +66,7 @@ pub(super) fn falling(s: &State) -> bool {
 fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static str> {
     let coulomb = a.friction_law == 0 && b.friction_law == 0;
     let coupled = crate::physics::material::combine_bodies(a.poiss, a.gg_mpa).k != 0.0;
-    let pairs: [(&'static str, bool); 14] = [
+    let pairs: [(&'static str, bool); 15] = [
         ("FN", load_varies || a.pen_or_fn == b.pen_or_fn),
         // Coulomb: FSTAT alone counts (CONTACT overwrites FKIN with it).
         (
@@ -83,6 +83,11 @@ fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static 
         ("CHI, DQ", load_varies || (a.chi_rad, a.dq_mm) == (b.chi_rad, b.dq_mm)),
         ("POISS, GG", (a.poiss, a.gg_mpa) == (b.poiss, b.gg_mpa)),
         ("the interface layer (M = 4: GG3, LAYTHK, TAU_C0, K_TAU)", a.layer_in_force() == b.layer_in_force()),
+        // M = 1: the relaxation distance VELOC·TC is the kernel's, so VELOC counts too.
+        (
+            "the viscoelastic bodies (M = 1: FG, TC, VELOC)",
+            a.visco_in_force() == b.visco_in_force() && (a.visco_in_force().is_none() || a.veloc_mm_s == b.veloc_mm_s),
+        ),
         ("MAXOUT of dissimilar bodies", !coupled || a.max_outer() == b.max_outer()),
         (
             "the potential contact (IPOTCN and its line)",
