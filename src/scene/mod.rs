@@ -3,7 +3,9 @@
 //! Every field is checked (type, range, NaN/inf, unknown keys); errors name the field, the value
 //! and what is allowed, and become exit status 2.
 
+pub mod contact;
 pub mod geometry;
+pub mod keys;
 pub mod reader;
 pub mod report;
 mod sections;
@@ -11,6 +13,7 @@ pub mod source;
 pub mod stress;
 pub mod study;
 pub mod table;
+pub mod top;
 pub mod wheelrail;
 pub mod wheelrail_cases;
 
@@ -400,6 +403,10 @@ pub struct Scene {
     pub stress: Option<stress::StressPoints>,
 }
 
+/// The declared keys of a contact-patch scene's tables, in the order docs/scene-format.md
+/// shows them ([`keys`]; the models declare their own `[model]` keys, `solvers::MODEL_KEYS`).
+pub const KEY_TABLES: &[&keys::Keys] = &[&top::KEYS, &contact::KEYS];
+
 const CREEPAGE_LIMIT: Range = Range::new(-1.0, true, 1.0, true);
 /// A prescribed force ratio Fx/FN or Fy/FN: below 1 in size (and below μ, checked per sample).
 pub(crate) const FORCE_RATIO: Range = Range::new(-1.0, false, 1.0, false);
@@ -471,17 +478,16 @@ impl Scene {
                 "a contact-patch scene here: a wheel–rail scene runs with `creepbench simulate` (run and check take suites of contact-patch scenes)",
             ));
         }
-        let mut top = Section::new("", doc);
-        let name = sections::name(&mut top)?;
+        let mut top = Section::new("", doc).declare(&top::KEYS);
+        let name = top::name(&mut top)?;
         let external = sections::external(&mut top)?;
-        let solvers = top.given("solvers").cloned();
-        let metrics = top.given("metrics").cloned();
+        let (solvers, metrics) = top::models_and_metrics(&mut top);
         let grid = sections::grid(&mut top)?;
         let element_geometry = match top.opt_table("geometry")? {
             Some(section) => Some(geometry::read(section, dir, (grid.mx, grid.my))?),
             None => None,
         };
-        let contact = sections::contact(&mut top, element_geometry)?;
+        let contact = contact::read(&mut top, element_geometry)?;
         let friction = sections::friction(&mut top, contact.mu, grid.my)?;
         let material = sections::material(&mut top)?;
         let (v_mm_s, courant, motion, chi_deg) = sections::rolling(&mut top)?;

@@ -4,15 +4,15 @@
 
 use super::reader::{Deferred, Range, Section};
 use super::{
-    is_valid_name, table, ContactSolverOptions, Creepage, ExternalSolver, InitKind, InitialSlip, Limits, MaterialSpec,
-    ModelOptions, Motion, NormalOptions, SteadyRestart, CREEPAGE_LIMIT, FINITE, FORCE_RATIO, GRID_SCALE,
-    HARD_MAX_STEPS, MAX_ELEMENTS_PER_AXIS, SPIN_LIMIT,
+    table, ContactSolverOptions, Creepage, ExternalSolver, InitKind, InitialSlip, Limits, MaterialSpec, ModelOptions,
+    Motion, NormalOptions, SteadyRestart, CREEPAGE_LIMIT, FINITE, FORCE_RATIO, GRID_SCALE, HARD_MAX_STEPS,
+    MAX_ELEMENTS_PER_AXIS, SPIN_LIMIT,
 };
 use crate::error::InputError;
 use crate::physics::geometry::{Extent, GeometrySpec};
 use crate::physics::{
     CoefficientSource, FallingTerms, FlexibilityModel, FrictionLaw, LeadingEdge, Memory, NormalPressure,
-    PatchFlexibility, PressureShape, Radii, RowFriction,
+    PatchFlexibility, PressureShape, RowFriction,
 };
 use std::path::Path;
 
@@ -22,16 +22,6 @@ pub struct GridSpec {
     pub my: usize,
     pub scale: f64,
     pub extent: Extent,
-}
-
-/// The contact: its geometry, load and friction (`[contact]`, or `[geometry]` per element).
-pub struct ContactSpec {
-    pub geometry: GeometrySpec,
-    pub fn_n: f64,
-    /// `contact.mu` as given (required with Coulomb's law, optional with a falling one).
-    pub mu: Option<f64>,
-    /// `contact.pen_mm`: the approach prescribed at every step or sweep point (CONTACT N = 0).
-    pub pen_mm: Option<f64>,
 }
 
 /// The friction law (`[friction]`, optional: Coulomb with `contact.mu`) and μ's static value.
@@ -50,15 +40,6 @@ pub struct CreepageSpec {
     /// `fy_over_fn`: Fy/FN prescribed in place of `cy` (CONTACT F = 2).
     pub fy_over_fn: Option<f64>,
     pub cs_per_mm: f64,
-}
-
-/// `name`: 1 to 100 characters of `[a-z0-9_]`.
-pub fn name(top: &mut Section) -> Result<String, InputError> {
-    let name = top.str("name", "a name of [a-z0-9_]+")?;
-    if !is_valid_name(name) {
-        return Err(InputError::new("name", format!("{name:?}"), "1 to 100 characters of [a-z0-9_]"));
-    }
-    Ok(name.to_string())
 }
 
 /// `[external.NAME]`: each external model's command and time limit (the pipeline checks NAME).
@@ -125,26 +106,6 @@ fn grid_extent(g: &mut Section, scale: f64) -> Result<Extent, InputError> {
             ))
         }
     }
-}
-
-/// `[contact]`: load and friction, and the ellipse (semi-axes or radii) unless `element_geometry`
-/// (`[geometry]`, a contact given per element) gives the contact.
-pub fn contact(top: &mut Section, element_geometry: Option<GeometrySpec>) -> Result<ContactSpec, InputError> {
-    let mut c = top.table("contact")?;
-    let geometry = match element_geometry {
-        Some(spec) => {
-            for k in ["a_mm", "b_mm", "r_wx_mm", "r_wy_mm", "r_ry_mm"] {
-                c.refuse(k, "not with a [geometry] given per element (its contact follows from the normal problem)")?;
-            }
-            spec
-        }
-        None => ellipse(&mut c)?,
-    };
-    let fn_n = c.f64("fn_n", Range::new(0.0, false, 1e9, true))?;
-    let mu = c.opt_f64("mu", super::MU_LIMIT)?;
-    let pen_mm = c.opt_f64("pen_mm", Range::new(0.0, false, super::table::PEN_MAX_MM, true))?;
-    c.finish()?;
-    Ok(ContactSpec { geometry, fn_n, mu, pen_mm })
 }
 
 /// Relative difference allowed between a given `contact.mu` and a falling law's FKIN + F1 + F2
@@ -253,31 +214,6 @@ fn coulomb(mu: Option<f64>, memory: Memory) -> Result<FrictionSpec, InputError> 
         InputError::new("contact.mu", "missing", "a coefficient of friction in (0, 1000] (or a falling [friction] law)")
     })?;
     Ok(FrictionSpec { law: FrictionLaw::Coulomb { mu }, memory, mu_static: mu, rows: None })
-}
-
-/// `[contact]` semi-axes `a_mm, b_mm`, or the radii `r_wx_mm, r_wy_mm, r_ry_mm` (not both).
-fn ellipse(c: &mut Section) -> Result<GeometrySpec, InputError> {
-    if c.has("a_mm") || c.has("b_mm") || !c.has("r_wx_mm") {
-        let len = Range::new(0.0, false, 1e4, true);
-        let a_mm = c.f64("a_mm", len)?;
-        let b_mm = c.f64("b_mm", len)?;
-        for k in ["r_wx_mm", "r_wy_mm", "r_ry_mm"] {
-            if c.has(k) {
-                return Err(InputError::new(
-                    c.field(k),
-                    "given",
-                    "either a_mm and b_mm, or the radii r_wx_mm, r_wy_mm, r_ry_mm, not both",
-                ));
-            }
-        }
-        return Ok(GeometrySpec::SemiAxes { a_mm, b_mm });
-    }
-    let radius = Range::new(0.0, false, f64::INFINITY, true);
-    Ok(GeometrySpec::Radii(Radii {
-        r_wx_mm: c.f64("r_wx_mm", Range::new(0.0, false, 1e9, true))?,
-        r_wy_mm: c.f64("r_wy_mm", radius)?,
-        r_ry_mm: c.f64("r_ry_mm", radius)?,
-    }))
 }
 
 /// `[material]`: g_mpa or e_mpa (or both), and poisson; or the two bodies' g1_mpa, poisson1,
