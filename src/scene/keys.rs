@@ -114,7 +114,10 @@ impl Allowed {
             Allowed::Bool => "`true` or `false`".to_string(),
             Allowed::Text(text) => text.to_string(),
             Allowed::Section => "a table".to_string(),
-            _ => self.message(),
+            Allowed::Numbers { range, min_len, max_len, note } => {
+                with_note(Allowed::Numbers { range, min_len, max_len, note: "" }.message(), note)
+            }
+            Allowed::Whole(min, max, note) => with_note(Allowed::Whole(min, max, "").message(), note),
         }
     }
 
@@ -123,8 +126,15 @@ impl Allowed {
         match *self {
             Allowed::Number(range, note) => with_note(range.describe(), &plain_text(note)),
             Allowed::Numbers { range, min_len, max_len, note } => {
-                let count = if min_len == max_len { format!("{min_len}") } else { format!("{min_len} to {max_len}") };
-                with_note(format!("an array of {count} numbers, each {}", range.describe()), &plain_text(note))
+                let count = match min_len == max_len {
+                    true => format!("{min_len}"),
+                    false => format!("{min_len} to {}", bound(max_len as f64)),
+                };
+                let each = match range.interval() {
+                    any if any.starts_with("any") => format!("an array of {count} numbers, each a finite number"),
+                    _ => format!("an array of {count} numbers, each {}", range.describe()),
+                };
+                with_note(each, &plain_text(note))
             }
             Allowed::Whole(min, max, note) => {
                 with_note(format!("a whole number in [{min}, {}]", bound(max as f64)), &plain_text(note))
@@ -143,7 +153,7 @@ impl Absent {
         match *self {
             Absent::Required => "required".to_string(),
             Absent::Num(v) => bound(v),
-            Absent::Whole(n) => bound(n as f64),
+            Absent::Whole(n) => format!("{n}"),
             Absent::Choice(c) => format!("`\"{c}\"`"),
             Absent::Text(text) => text.to_string(),
         }

@@ -92,9 +92,9 @@ pub struct Deferred {
 }
 
 impl Deferred {
-    /// An absent section (no keys to read).
-    pub fn empty(path: impl Into<String>) -> Self {
-        Deferred { path: path.into(), ..Deferred::default() }
+    /// An absent section (no keys to read) whose keys `keys` declares.
+    pub fn empty(path: impl Into<String>, keys: &'static Keys) -> Self {
+        Deferred { path: path.into(), declared: vec![keys], ..Deferred::default() }
     }
 
     /// Read on where [`Section::defer`] stopped.

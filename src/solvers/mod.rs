@@ -48,7 +48,7 @@ pub enum SolveError {
 
 /// The `[model]` keys the models read themselves, declared next to their readers (one line per
 /// model with keys), shown in docs/scene-format.md after the scene's own `[model]` keys.
-pub const MODEL_KEYS: &[&crate::scene::keys::Keys] = &[];
+pub const MODEL_KEYS: &[&crate::scene::keys::Keys] = &[&polach::KEYS, &relaxation::KEYS];
 
 /// A built-in model: everything the tool needs to know of it, in one record.
 pub struct ModelDef {
