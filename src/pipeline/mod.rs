@@ -201,6 +201,9 @@ fn metric_names(scene: &Scene) -> Result<Option<Vec<String>>, InputError> {
 /// registry order; then a `[model]` key neither the scene nor a model reads is refused.
 fn model_params(scene: &Scene) -> Result<ModelParamSet, InputError> {
     let mut md = scene.model_params.resume();
+    for keys in solvers::MODEL_KEYS {
+        md = md.declare(keys);
+    }
     let params = solvers::MODELS
         .iter()
         .filter_map(|m| m.params)

@@ -2,18 +2,50 @@
 //! `h = a1 x² + g(y)` with g linear between the rows of a CSV `y_mm,g_mm`; `kind = "field"`: h per
 //! element from a CSV `ix,iy,h_mm` (1-based, ix along CONTACT's x, every element once).
 
+use super::keys::{key, Absent, Allowed, Keys};
 use super::reader::{Range, Section};
 use crate::error::InputError;
 use crate::physics::geometry::{GeometrySpec, Profile};
 use std::path::Path;
 
+/// `[geometry]`'s keys (`<!-- keys:geometry -->`).
+pub const KEYS: Keys = Keys {
+    id: "geometry",
+    owner: file!(),
+    keys: &[
+        key("kind", "–", Allowed::Choice(&["profile", "field"], ""), Absent::Required, r#"how h is given"#),
+        key(
+            "a1_per_mm",
+            "1/mm",
+            Allowed::Number(Range::new(0.0, true, 1e3, true), ""),
+            Absent::Text("required for `profile`"),
+            r#"the curvature term along x: h = a1·x² + g(y): `a1_per_mm = 0.0008`"#,
+        ),
+        key(
+            "profile",
+            "–",
+            Allowed::Text("a path to a CSV file (columns `y_mm`, `g_mm`), relative to the scene file"),
+            Absent::Text("required for `profile`"),
+            r#"the columns `y_mm,g_mm` (exactly these), at least two rows, y strictly increasing and covering every element centre; g is linear between rows: `profile = "flat_profile.csv"`"#,
+        ),
+        key(
+            "field",
+            "–",
+            Allowed::Text("a path to a CSV file (columns `ix`, `iy`, `h_mm`), relative to the scene file"),
+            Absent::Text("required for `field`"),
+            r#"the columns `ix,iy,h_mm`: 1-based element indices (ix along CONTACT's x from x0) and h [mm], every element of the grid exactly once: `field = "h.csv"`"#,
+        ),
+    ],
+};
+
 /// Read the `[geometry]` table; `(mx, my)` is the grid the field must fill.
-pub fn read(mut g: Section, dir: &Path, (mx, my): (usize, usize)) -> Result<GeometrySpec, InputError> {
-    let spec = match g.choice("kind", &["profile", "field"])? {
+pub fn read(g: Section, dir: &Path, (mx, my): (usize, usize)) -> Result<GeometrySpec, InputError> {
+    let mut g = g.declare(&KEYS);
+    let spec = match g.pick("kind")? {
         "profile" => {
-            let a1_per_mm = g.f64("a1_per_mm", Range::new(0.0, true, 1e3, true))?;
+            let a1_per_mm = g.num("a1_per_mm")?;
             let field = g.field("profile");
-            let file = g.str("profile", "a CSV path (columns y_mm, g_mm) relative to the scene file")?;
+            let file = g.text("profile")?;
             let (cols, lines, origin) = read_columns(&dir.join(file), &field, &["y_mm", "g_mm"])?;
             let (y_mm, g_mm) = (cols[0].clone(), cols[1].clone());
             if y_mm.len() < 2 {
@@ -30,7 +62,7 @@ pub fn read(mut g: Section, dir: &Path, (mx, my): (usize, usize)) -> Result<Geom
         }
         _ => {
             let field = g.field("field");
-            let file = g.str("field", "a CSV path (columns ix, iy, h_mm) relative to the scene file")?;
+            let file = g.text("field")?;
             let (cols, lines, origin) = read_columns(&dir.join(file), &field, &["ix", "iy", "h_mm"])?;
             let mut h_mm = vec![f64::NAN; mx * my];
             for (r, ((&ix, &iy), &h)) in cols[0].iter().zip(&cols[1]).zip(&cols[2]).enumerate() {

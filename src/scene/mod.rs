@@ -3,16 +3,31 @@
 //! Every field is checked (type, range, NaN/inf, unknown keys); errors name the field, the value
 //! and what is allowed, and become exit status 2.
 
+pub mod contact;
+pub mod contact_solver;
+pub mod creepage;
+pub mod external;
+pub mod friction;
 pub mod geometry;
+pub mod grid;
+pub mod init;
+pub mod keys;
+pub mod limits;
+pub mod material;
+pub mod model;
+pub mod normal;
+pub mod origin;
 pub mod reader;
 pub mod report;
-mod sections;
+pub mod rolling;
 pub mod source;
 pub mod stress;
 pub mod study;
 pub mod table;
+pub mod top;
 pub mod wheelrail;
 pub mod wheelrail_cases;
+pub mod wheelrail_section;
 
 use crate::error::InputError;
 use crate::physics::geometry::{Extent, GeometrySpec};
@@ -447,6 +462,32 @@ pub struct Scene {
     pub stress: Option<stress::StressPoints>,
 }
 
+/// The declared keys of a contact-patch scene's tables, in the order docs/scene-format.md
+/// shows them ([`keys`]; the models declare their own `[model]` keys, `solvers::MODEL_KEYS`).
+pub const KEY_TABLES: &[&keys::Keys] = &[
+    &top::KEYS,
+    &contact::KEYS,
+    &geometry::KEYS,
+    &friction::KEYS,
+    &material::KEYS,
+    &material::BODY_KEYS,
+    &material::LAYER_KEYS,
+    &material::VISCO_KEYS,
+    &grid::KEYS,
+    &rolling::KEYS,
+    &creepage::KEYS,
+    &init::KEYS,
+    &model::KEYS,
+    &contact_solver::KEYS,
+    &normal::KEYS,
+    &limits::KEYS,
+    &origin::KEYS,
+    &report::KEYS,
+    &stress::KEYS,
+    &external::KEYS,
+    &wheelrail_section::KEYS,
+];
+
 const CREEPAGE_LIMIT: Range = Range::new(-1.0, true, 1.0, true);
 /// A prescribed force ratio Fx/FN or Fy/FN: below 1 in size (and below μ, checked per sample).
 pub(crate) const FORCE_RATIO: Range = Range::new(-1.0, false, 1.0, false);
@@ -518,27 +559,26 @@ impl Scene {
                 "a contact-patch scene here: a wheel–rail scene runs with `creepbench simulate` (run and check take suites of contact-patch scenes)",
             ));
         }
-        let mut top = Section::new("", doc);
-        let name = sections::name(&mut top)?;
-        let external = sections::external(&mut top)?;
-        let solvers = top.given("solvers").cloned();
-        let metrics = top.given("metrics").cloned();
-        let grid = sections::grid(&mut top)?;
+        let mut top = Section::new("", doc).declare(&top::KEYS);
+        let name = top::name(&mut top)?;
+        let external = external::read(&mut top)?;
+        let (solvers, metrics) = top::models_and_metrics(&mut top);
+        let grid = grid::read(&mut top)?;
         let element_geometry = match top.opt_table("geometry")? {
             Some(section) => Some(geometry::read(section, dir, (grid.mx, grid.my))?),
             None => None,
         };
-        let contact = sections::contact(&mut top, element_geometry)?;
-        let friction = sections::friction(&mut top, contact.mu, grid.my)?;
-        let material = sections::material(&mut top)?;
-        let (v_mm_s, courant, motion, chi_deg) = sections::rolling(&mut top)?;
-        let loading = sections::creepage(&mut top, dir)?;
-        let init = sections::init(&mut top, motion, &loading.creepage)?;
-        let (model, model_params) = sections::model(&mut top)?;
-        let contact_solver = sections::contact_solver(&mut top)?;
-        let normal = sections::normal(&mut top, &contact.geometry, init)?;
-        let limits = sections::limits(&mut top)?;
-        let origin = sections::origin(&mut top)?;
+        let contact = contact::read(&mut top, element_geometry)?;
+        let friction = friction::read(&mut top, contact.mu, grid.my)?;
+        let material = material::read(&mut top)?;
+        let (v_mm_s, courant, motion, chi_deg) = rolling::read(&mut top)?;
+        let loading = creepage::read(&mut top, dir)?;
+        let init = init::read(&mut top, motion, &loading.creepage)?;
+        let (model, model_params) = model::read(&mut top)?;
+        let contact_solver = contact_solver::read(&mut top)?;
+        let normal = normal::read(&mut top, &contact.geometry, init)?;
+        let limits = limits::read(&mut top)?;
+        let origin = origin::read(&mut top)?;
         let report_group = report::read(&mut top)?;
         let stress = stress::read(&mut top)?;
         top.finish()?;

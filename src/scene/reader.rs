@@ -1,7 +1,8 @@
 //! A strict reader over a TOML table: typed getters with range checks, and unknown-key errors.
 //! Every error names the dotted field, the value given and what is allowed.
 
-use crate::error::{number, InputError};
+use super::keys::{bound, Absent, Allowed, KeySpec, Keys};
+use crate::error::InputError;
 use std::collections::BTreeSet;
 use toml::{Table, Value};
 
@@ -74,6 +75,10 @@ pub struct Section<'a> {
     path: String,
     table: &'a Table,
     used: BTreeSet<String>,
+    /// The declarations of this section's keys ([`Section::declare`]; none: keys read freely).
+    declared: Vec<&'static Keys>,
+    /// Keys read that no declaration names (a bug; [`Section::finish`] reports it).
+    undeclared: BTreeSet<String>,
 }
 
 /// A section whose remaining keys a later stage reads (a model's own `[model]` keys): its table
@@ -83,22 +88,29 @@ pub struct Deferred {
     path: String,
     table: Table,
     used: BTreeSet<String>,
+    declared: Vec<&'static Keys>,
 }
 
 impl Deferred {
-    /// An absent section (no keys to read).
-    pub fn empty(path: impl Into<String>) -> Self {
-        Deferred { path: path.into(), ..Deferred::default() }
+    /// An absent section (no keys to read) whose keys `keys` declares.
+    pub fn empty(path: impl Into<String>, keys: &'static Keys) -> Self {
+        Deferred { path: path.into(), declared: vec![keys], ..Deferred::default() }
     }
 
     /// Read on where [`Section::defer`] stopped.
     pub fn resume(&self) -> Section<'_> {
-        Section { path: self.path.clone(), table: &self.table, used: self.used.clone() }
+        Section {
+            path: self.path.clone(),
+            table: &self.table,
+            used: self.used.clone(),
+            declared: self.declared.clone(),
+            undeclared: BTreeSet::new(),
+        }
     }
 }
 
 /// A numeric range with its wording.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Range {
     pub min: f64,
     pub min_inclusive: bool,
@@ -119,10 +131,30 @@ impl Range {
             && (if self.min_inclusive { v >= self.min } else { v > self.min })
             && (if self.max_inclusive { v <= self.max } else { v < self.max })
     }
+    /// The range as an interval (`(0, 1e4]`, `[0, ∞)`), or "any finite number".
+    pub fn interval(&self) -> String {
+        if self.min == f64::NEG_INFINITY && self.max == f64::INFINITY {
+            return "any finite number".to_string();
+        }
+        let lo = if self.min_inclusive && self.min.is_finite() { '[' } else { '(' };
+        let hi = if self.max_inclusive && self.max.is_finite() { ']' } else { ')' };
+        let end = |v: f64| {
+            if v.is_finite() {
+                bound(v)
+            } else if v > 0.0 {
+                "∞".into()
+            } else {
+                "-∞".into()
+            }
+        };
+        format!("{lo}{}, {}{hi}", end(self.min), end(self.max))
+    }
+    /// The range in words, as messages say what is allowed.
     pub fn describe(&self) -> String {
-        let lo = if self.min_inclusive { '[' } else { '(' };
-        let hi = if self.max_inclusive { ']' } else { ')' };
-        format!("a finite number in {lo}{}, {}{hi}", number(self.min), number(self.max))
+        match self.interval() {
+            any if any.starts_with("any") => any,
+            interval => format!("a finite number in {interval}"),
+        }
     }
 }
 
@@ -135,7 +167,15 @@ fn show(v: &Value) -> String {
 
 impl<'a> Section<'a> {
     pub fn new(path: impl Into<String>, table: &'a Table) -> Self {
-        Self { path: path.into(), table, used: BTreeSet::new() }
+        Self { path: path.into(), table, used: BTreeSet::new(), declared: Vec::new(), undeclared: BTreeSet::new() }
+    }
+
+    /// This section's keys are `keys` (and those of any other declaration added): the declared
+    /// getters ([`Section::num`], …) check a value by its declaration, a key read that none
+    /// declares fails [`Section::finish`], and an unknown key's message lists the declared keys.
+    pub fn declare(mut self, keys: &'static Keys) -> Self {
+        self.declared.push(keys);
+        self
     }
 
     /// Dotted name of `key` in this section.
@@ -148,8 +188,24 @@ impl<'a> Section<'a> {
     }
 
     fn get(&mut self, key: &str) -> Option<&'a Value> {
+        if !self.declared.is_empty() && self.declaration(key).is_none() {
+            self.undeclared.insert(key.to_string());
+        }
         self.used.insert(key.to_string());
         self.table.get(key)
+    }
+
+    fn declaration(&self, key: &str) -> Option<&'static KeySpec> {
+        self.declared.iter().find_map(|keys| keys.get(key))
+    }
+
+    /// A key read as a kind its declaration does not give, or not declared: a bug of the reader.
+    fn misdeclared(&self, key: &str) -> InputError {
+        InputError::new(
+            self.field(key),
+            "read as a key of another kind than declared, or not declared",
+            "a key as the reader declares it (a bug in creepbench: please report it)",
+        )
     }
 
     /// The value of `key` as given, if any (read later by another stage, e.g. a list of names
@@ -168,16 +224,21 @@ impl<'a> Section<'a> {
 
     /// An optional number (integer or float) within `range`.
     pub fn opt_f64(&mut self, key: &str, range: Range) -> Result<Option<f64>, InputError> {
+        self.opt_f64_said(key, range, &range.describe())
+    }
+
+    /// [`Section::opt_f64`], an error saying `allowed`.
+    fn opt_f64_said(&mut self, key: &str, range: Range, allowed: &str) -> Result<Option<f64>, InputError> {
         let Some(v) = self.get(key) else {
             return Ok(None);
         };
         let x = match v {
             Value::Float(f) => *f,
             Value::Integer(i) => *i as f64,
-            other => return Err(InputError::new(self.field(key), show(other), range.describe())),
+            other => return Err(InputError::new(self.field(key), show(other), allowed)),
         };
         if !range.contains(x) {
-            return Err(InputError::new(self.field(key), x, range.describe()));
+            return Err(InputError::new(self.field(key), x, allowed));
         }
         Ok(Some(x))
     }
@@ -364,13 +425,18 @@ impl<'a> Section<'a> {
 
     /// Leave the keys not read yet to a later stage ([`Deferred::resume`]); it calls `finish`.
     pub fn defer(self) -> Deferred {
-        Deferred { path: self.path, table: self.table.clone(), used: self.used }
+        Deferred { path: self.path, table: self.table.clone(), used: self.used, declared: self.declared }
     }
 
-    /// Fails on the first key that was never read.
+    /// Fails on the first key that was never read (naming the declared keys, or those read), or
+    /// on a key read that no declaration names.
     pub fn finish(self) -> Result<(), InputError> {
-        let mut known: Vec<&str> = self.used.iter().map(String::as_str).collect();
-        known.sort_unstable();
+        if let Some(key) = self.undeclared.first() {
+            return Err(self.misdeclared(key));
+        }
+        let mut known: BTreeSet<&str> = self.used.iter().map(String::as_str).collect();
+        known.extend(self.declared.iter().flat_map(|k| k.keys).map(|k| k.key));
+        let known: Vec<&str> = known.into_iter().collect();
         for (k, v) in self.table {
             if !self.used.contains(k) {
                 return Err(InputError::new(
@@ -381,5 +447,171 @@ impl<'a> Section<'a> {
             }
         }
         Ok(())
+    }
+}
+
+/// The declared getters: the range, choices, wording and default of a key come from its
+/// declaration ([`Section::declare`]), so a message's "allowed" is the docs' text.
+impl<'a> Section<'a> {
+    fn spec(&self, key: &str) -> Result<&'static KeySpec, InputError> {
+        self.declaration(key).ok_or_else(|| self.misdeclared(key))
+    }
+
+    /// An optional number, as declared ([`Allowed::Number`]).
+    pub fn opt_num(&mut self, key: &str) -> Result<Option<f64>, InputError> {
+        match self.spec(key)?.allowed {
+            spec @ Allowed::Number(range, _) => self.opt_f64_said(key, range, &spec.message()),
+            _ => Err(self.misdeclared(key)),
+        }
+    }
+
+    /// A required number, as declared.
+    pub fn num(&mut self, key: &str) -> Result<f64, InputError> {
+        let allowed = self.spec(key)?.allowed.message();
+        self.opt_num(key)?.ok_or_else(|| self.missing(key, &allowed))
+    }
+
+    /// A number as declared, or its declared default ([`Absent::Num`]).
+    pub fn num_or_default(&mut self, key: &str) -> Result<f64, InputError> {
+        match self.spec(key)?.default {
+            Absent::Num(v) => Ok(self.opt_num(key)?.unwrap_or(v)),
+            _ => Err(self.misdeclared(key)),
+        }
+    }
+
+    /// An optional array of exactly `N` numbers, as declared ([`Allowed::Numbers`]).
+    pub fn opt_nums<const N: usize>(&mut self, key: &str) -> Result<Option<[f64; N]>, InputError> {
+        let Some(v) = self.opt_num_list(key)? else {
+            return Ok(None);
+        };
+        let mut out = [0.0; N];
+        match v.len() == N {
+            true => out.copy_from_slice(&v),
+            false => return Err(self.misdeclared(key)),
+        }
+        Ok(Some(out))
+    }
+
+    /// An optional array of numbers, as declared ([`Allowed::Numbers`]).
+    pub fn opt_num_list(&mut self, key: &str) -> Result<Option<Vec<f64>>, InputError> {
+        match self.spec(key)?.allowed {
+            spec @ Allowed::Numbers { range, min_len, max_len, .. } => {
+                self.numbers(key, range, |n| (min_len..=max_len).contains(&n), &spec.message())
+            }
+            _ => Err(self.misdeclared(key)),
+        }
+    }
+
+    /// An optional whole number, as declared ([`Allowed::Whole`]).
+    pub fn opt_whole(&mut self, key: &str) -> Result<Option<usize>, InputError> {
+        let spec = self.spec(key)?.allowed;
+        let Allowed::Whole(min, max, _) = spec else {
+            return Err(self.misdeclared(key));
+        };
+        match self.get(key) {
+            None => Ok(None),
+            Some(Value::Integer(i)) if *i >= min as i64 && *i <= max as i64 => Ok(Some(*i as usize)),
+            Some(other) => Err(InputError::new(self.field(key), show(other), spec.message())),
+        }
+    }
+
+    /// A required whole number, as declared.
+    pub fn whole(&mut self, key: &str) -> Result<usize, InputError> {
+        let allowed = self.spec(key)?.allowed.message();
+        self.opt_whole(key)?.ok_or_else(|| self.missing(key, &allowed))
+    }
+
+    /// A whole number as declared, or its declared default ([`Absent::Whole`]).
+    pub fn whole_or_default(&mut self, key: &str) -> Result<usize, InputError> {
+        match self.spec(key)?.default {
+            Absent::Whole(n) => Ok(self.opt_whole(key)?.unwrap_or(n)),
+            _ => Err(self.misdeclared(key)),
+        }
+    }
+
+    /// An optional choice among the declared ones ([`Allowed::Choice`]).
+    pub fn opt_pick(&mut self, key: &str) -> Result<Option<&'a str>, InputError> {
+        match self.spec(key)?.allowed {
+            Allowed::Choice(choices, _) => self.opt_choice(key, choices),
+            _ => Err(self.misdeclared(key)),
+        }
+    }
+
+    /// A required choice among the declared ones.
+    pub fn pick(&mut self, key: &str) -> Result<&'a str, InputError> {
+        let allowed = self.spec(key)?.allowed.message();
+        self.opt_pick(key)?.ok_or_else(|| self.missing(key, &allowed))
+    }
+
+    /// A choice, or its declared default ([`Absent::Choice`]).
+    pub fn pick_or_default(&mut self, key: &str) -> Result<&'a str, InputError> {
+        match self.spec(key)?.default {
+            Absent::Choice(c) => Ok(self.opt_pick(key)?.unwrap_or(c)),
+            _ => Err(self.misdeclared(key)),
+        }
+    }
+
+    /// An optional string, its wording declared ([`Allowed::Text`]).
+    pub fn opt_text(&mut self, key: &str) -> Result<Option<&'a str>, InputError> {
+        let allowed = self.spec(key)?.allowed.message();
+        self.opt_str(key, &allowed)
+    }
+
+    /// A required string, its wording declared.
+    pub fn text(&mut self, key: &str) -> Result<&'a str, InputError> {
+        let allowed = self.spec(key)?.allowed.message();
+        self.str(key, &allowed)
+    }
+}
+
+#[cfg(test)]
+mod declared_tests {
+    use super::*;
+    use crate::scene::keys::key;
+
+    const T: Keys = Keys {
+        id: "t",
+        owner: file!(),
+        keys: &[
+            key("a_mm", "mm", Allowed::Number(Range::new(0.0, false, 1e4, true), "below b_mm"), Absent::Num(2.0), ""),
+            key("kind", "–", Allowed::Choice(&["x", "y"], ""), Absent::Choice("y"), ""),
+        ],
+    };
+
+    fn table(text: &str) -> Table {
+        text.parse().unwrap()
+    }
+
+    #[test]
+    fn a_declared_getter_checks_and_words_by_the_declaration() {
+        let t = table("a_mm = 2e4\nkind = \"x\"");
+        let mut s = Section::new("c", &t).declare(&T);
+        let e = s.num("a_mm").unwrap_err().to_string();
+        assert!(e.contains("c.a_mm` = 20000: allowed: a finite number in (0, 1e4]; below b_mm"), "{e}");
+        assert_eq!(s.pick_or_default("kind").unwrap(), "x");
+        let empty = table("");
+        let mut s = Section::new("c", &empty).declare(&T);
+        assert_eq!((s.num_or_default("a_mm").unwrap(), s.pick_or_default("kind").unwrap()), (2.0, "y"));
+    }
+
+    #[test]
+    fn an_unknown_key_names_the_declared_keys() {
+        let t = table("a_mm = 1.0\nzz = 1");
+        let mut s = Section::new("c", &t).declare(&T);
+        s.num("a_mm").unwrap();
+        let e = s.finish().unwrap_err().to_string();
+        assert!(e.contains("c.zz` = 1: allowed: no such key here; known keys: a_mm, kind"), "{e}");
+    }
+
+    #[test]
+    fn a_key_read_but_not_declared_fails() {
+        let t = table("mu = 1.0");
+        let mut s = Section::new("c", &t).declare(&T);
+        assert!(s.num("mu").unwrap_err().to_string().contains("c.mu"));
+        let mut s = Section::new("c", &t).declare(&T);
+        assert_eq!(s.opt_f64("mu", Range::positive_to(2.0)).unwrap(), Some(1.0));
+        assert!(s.finish().unwrap_err().to_string().contains("a bug in creepbench"));
+        let mut s = Section::new("c", &t).declare(&T);
+        assert!(s.num("kind").is_err(), "a choice read as a number");
     }
 }

@@ -2,6 +2,7 @@
 //! study's `[scene]` template, or one of its axes as `"report.group"`) declares its group; the
 //! report's sections and figure groups select scenes by it, never by their names.
 
+use super::keys::{key, Absent, Allowed, Keys};
 use super::reader::Section;
 use crate::error::InputError;
 use serde::{Deserialize, Serialize};
@@ -102,10 +103,23 @@ impl ReportGroup {
     }
 }
 
+/// `[report]`'s keys (`<!-- keys:report -->`).
+pub const KEYS: Keys = Keys {
+    id: "report",
+    owner: file!(),
+    keys: &[key(
+        "group",
+        "–",
+        Allowed::Text("one of the groups below"),
+        Absent::Choice("other"),
+        r#"the scene's report group: `group = "stability"`"#,
+    )],
+};
+
 /// `[report]`: the scene's `group` (the default group without the table or the key); an
 /// unknown group is refused naming the field, the value and every group.
 pub fn read(top: &mut Section) -> Result<ReportGroup, InputError> {
-    let Some(mut t) = top.opt_table("report")? else {
+    let Some(mut t) = top.opt_table("report")?.map(|t| t.declare(&KEYS)) else {
         return Ok(ReportGroup::default());
     };
     let ids = ReportGroup::ALL.map(ReportGroup::id);

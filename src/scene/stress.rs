@@ -1,6 +1,7 @@
 //! The `[stress]` table (optional): the points below the surface where the subsurface stresses
 //! are asked for (CONTACT's S digit, its blocks of X, Y, Z points), and at which steps.
 
+use super::keys::{key, Absent, Allowed, Keys};
 use super::reader::{Range, Section};
 use crate::error::InputError;
 use serde::{Deserialize, Serialize};
@@ -13,6 +14,40 @@ pub const MAX_POINTS: usize = 1_000_000;
 const SURFACE: Range = Range::new(-1e4, true, 1e4, true);
 /// A depth below the surface [mm], into body 1 (the lower body; CONTACT's z ≥ 0).
 const DEPTH: Range = Range::new(0.0, true, 1e4, true);
+
+/// A coordinate axis on the surface.
+const SURFACE_AXIS: Allowed = Allowed::Numbers { range: SURFACE, min_len: 1, max_len: MAX_AXIS, note: "" };
+
+/// `[stress]`'s keys (`<!-- keys:stress -->`).
+pub const KEYS: Keys = Keys {
+    id: "stress",
+    owner: file!(),
+    keys: &[
+        key("x_mm", "mm", SURFACE_AXIS, Absent::Required, r#"the points' x: `x_mm = [-1.0, -0.5, 0.0, 0.5, 1.0]`"#),
+        key("y_mm", "mm", SURFACE_AXIS, Absent::Required, r#"the points' y: `y_mm = [0.0]`"#),
+        key(
+            "z_mm",
+            "mm",
+            Allowed::Numbers { range: DEPTH, min_len: 1, max_len: MAX_AXIS, note: "" },
+            Absent::Required,
+            r#"the depths below the surface: `z_mm = [0.0, 0.1, 0.2, 0.5, 1.0]`"#,
+        ),
+        key(
+            "block",
+            "–",
+            Allowed::Text("an array of tables `[[stress.block]]`, each with `x_mm`, `y_mm`, `z_mm` as here"),
+            Absent::Text("–"),
+            r#"several blocks of points instead of `[stress]`'s own `x_mm`, `y_mm`, `z_mm` (below)"#,
+        ),
+        key(
+            "steps",
+            "–",
+            Allowed::Text("an array of 1 to 1000 whole numbers ≥ 0"),
+            Absent::Text("the last row"),
+            r#"the rows (the history's `step`) whose tractions load the half-space: `steps = [0, 10]`; a step no row has gives no rows"#,
+        ),
+    ],
+};
 
 /// One block of points, the grid x × y × z (CONTACT's ISUBS = 9 block).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -48,28 +83,26 @@ pub struct StressPoints {
 
 /// One block's `x_mm`, `y_mm`, `z_mm` (each 1 to 1000 numbers).
 fn block(t: &mut Section) -> Result<Block, InputError> {
-    let mut axis = |key: &str, range: Range| -> Result<Vec<f64>, InputError> {
-        t.opt_f64_list(key, range, MAX_AXIS)?.ok_or_else(|| {
-            InputError::new(
-                t.field(key),
-                "missing",
-                format!("an array of 1 to {MAX_AXIS} numbers, each {}", range.describe()),
-            )
-        })
+    let missing = |t: &Section, key: &str| {
+        InputError::new(t.field(key), "missing", KEYS.get(key).map(|k| k.allowed.message()).unwrap_or_default())
     };
-    Ok(Block { x_mm: axis("x_mm", SURFACE)?, y_mm: axis("y_mm", SURFACE)?, z_mm: axis("z_mm", DEPTH)? })
+    let x_mm = t.opt_num_list("x_mm")?.ok_or_else(|| missing(t, "x_mm"))?;
+    let y_mm = t.opt_num_list("y_mm")?.ok_or_else(|| missing(t, "y_mm"))?;
+    let z_mm = t.opt_num_list("z_mm")?.ok_or_else(|| missing(t, "z_mm"))?;
+    Ok(Block { x_mm, y_mm, z_mm })
 }
 
 /// `[stress]`: one block (`x_mm`, `y_mm`, `z_mm`) or several (`[[stress.block]]`, each its
 /// own), and `steps` (optional).
 pub fn read(top: &mut Section) -> Result<Option<StressPoints>, InputError> {
-    let Some(mut t) = top.opt_table("stress")? else {
+    let Some(mut t) = top.opt_table("stress")?.map(|t| t.declare(&KEYS)) else {
         return Ok(None);
     };
     let blocks = match t.opt_tables("block")? {
         Some(sections) if !sections.is_empty() => {
             let mut out = Vec::with_capacity(sections.len());
-            for mut b in sections {
+            for b in sections {
+                let mut b = b.declare(&KEYS);
                 out.push(block(&mut b)?);
                 b.finish()?;
             }

@@ -120,9 +120,6 @@ pub struct MuVariation {
     pub values: Vec<f64>,
 }
 
-/// Largest number of friction control points (CONTACT's NVF).
-const MAX_MU_POINTS: usize = 1000;
-
 impl MuVariation {
     /// μ at `x` (rad or mm as [`MuBy`] says): linear between the control points, the end values
     /// beyond them.
@@ -289,34 +286,20 @@ impl WheelRailScene {
             ));
         }
         let solvers = top.opt_str_list("solvers", "model names")?.unwrap_or_else(|| vec!["contact".into()]);
-        let mut w = top.table("wheelrail")?;
-        let side = match w.choice("side", &["left", "right"])? {
-            "left" => SideSpec::Left,
-            _ => SideSpec::Right,
-        };
-        let motion = match w.opt_choice("motion", &["rolling", "shift"])? {
-            Some("shift") => MotionSpec::Shift { s_ws_mm: w.opt_f64("s_mm", LENGTH)?.unwrap_or(0.0) },
-            _ => MotionSpec::Rolling,
-        };
-        let shift_s = match motion {
-            MotionSpec::Shift { s_ws_mm } => Some(s_ws_mm),
-            MotionSpec::Rolling => None,
-        };
-        let (mu, mu_variation) = friction(&mut w, shift_s)?;
-        let dx_mm = w.f64("dx_mm", Range::new(1e-3, true, 100.0, true))?;
-        let ds_mm = w.f64("ds_mm", Range::new(1e-3, true, 100.0, true))?;
-        let a_sep_rad = w
-            .opt_f64("a_sep_rad", Range::new(0.0, true, std::f64::consts::PI, true))?
-            .unwrap_or(std::f64::consts::FRAC_PI_2);
-        let d_sep_mm = w.opt_f64("d_sep_mm", Range::new(0.0, true, 1e3, true))?.unwrap_or(8.0);
-        let d_comb_mm = w.opt_f64("d_comb_mm", Range::new(0.0, true, 1e3, true))?.unwrap_or(4.0);
-        if d_comb_mm > d_sep_mm {
-            return Err(InputError::new("wheelrail.d_comb_mm", d_comb_mm, format!("at most d_sep_mm = {d_sep_mm}")));
-        }
-        let d_turn_mm = w.opt_f64("d_turn_mm", Range::new(0.0, true, 1e3, true))?.unwrap_or(2.0 * d_sep_mm - d_comb_mm);
-        let wheel_mesh = w.opt_choice("wheel_surface", &["exact", "contact_mesh"])? == Some("contact_mesh");
-        let frictionless = w.opt_bool("frictionless")?.unwrap_or(false);
-        w.finish()?;
+        let super::wheelrail_section::WheelRailSection {
+            side,
+            mu,
+            mu_variation,
+            dx_mm,
+            ds_mm,
+            a_sep_rad,
+            d_sep_mm,
+            d_comb_mm,
+            d_turn_mm,
+            wheel_mesh,
+            frictionless,
+            motion,
+        } = super::wheelrail_section::read(top.table("wheelrail")?)?;
         if motion != MotionSpec::Rolling && solvers.iter().any(|m| m != "contact") {
             return Err(InputError::new(
                 "solvers",
@@ -326,7 +309,7 @@ impl WheelRailScene {
         }
         let (rail, placement, cant_rad, rail_deviation) = rail(&mut top, dir)?;
         let (wheel, fbd, fbp, radius) = wheel(&mut top, dir)?;
-        let material = super::sections::material(&mut top)?;
+        let material = super::material::read(&mut top)?;
         if material.visco.is_some() {
             return Err(InputError::new(
                 "material.visco_ratio",
@@ -355,7 +338,7 @@ impl WheelRailScene {
                 "a shift with the pitch's shift given ([cases] longitudinal = \"velocity\") and friction (not frictionless)",
             ));
         }
-        let origin = super::sections::origin(&mut top)?;
+        let origin = super::origin::read(&mut top)?;
         check_origin(origin.as_ref(), &cases)?;
         let report = report(&mut top, dir, &cases)?;
         top.finish()?;
@@ -391,60 +374,6 @@ impl WheelRailScene {
             dir: dir.to_path_buf(),
         })
     }
-}
-
-/// Coulomb's μ range.
-const MU: Range = Range::new(0.0, false, 10.0, true);
-
-/// `mu`, or `mu_by` with `mu_at`, `mu_values` (and `s_mm` for `mu_by = "track_s"`); `shift_s`:
-/// the position `s_mm` a shift has read already.
-fn friction(w: &mut Section, shift_s: Option<f64>) -> Result<(f64, Option<MuVariation>), InputError> {
-    let Some(by) = w.opt_choice("mu_by", &["contact_angle", "track_s"])? else {
-        w.refuse("mu_at", "no mu_at without mu_by")?;
-        w.refuse("mu_values", "no mu_values without mu_by")?;
-        if shift_s.is_none() {
-            w.refuse("s_mm", "no s_mm without mu_by = \"track_s\" or motion = \"shift\"")?;
-        }
-        return Ok((w.f64("mu", MU)?, None));
-    };
-    w.refuse("mu", "no mu with mu_by (mu_values give it)")?;
-    let range = match by {
-        "contact_angle" => Range::new(-std::f64::consts::PI, true, std::f64::consts::PI, true),
-        _ => LENGTH,
-    };
-    let field = w.field("mu_at");
-    let at = w
-        .opt_f64_list("mu_at", range, MAX_MU_POINTS)?
-        .ok_or_else(|| InputError::new(&field, "missing", "the control points of mu_by, increasing (rad or mm)"))?;
-    let values_field = w.field("mu_values");
-    let values = w
-        .opt_f64_list("mu_values", MU, MAX_MU_POINTS)?
-        .ok_or_else(|| InputError::new(&values_field, "missing", "mu at each point of mu_at"))?;
-    if at.is_empty() || at.windows(2).any(|p| p[1] <= p[0]) {
-        return Err(InputError::new(field, format!("{at:?}"), "at least one control point, strictly increasing"));
-    }
-    if values.len() != at.len() {
-        return Err(InputError::new(
-            values_field,
-            format!("{} values", values.len()),
-            format!("one mu per point of mu_at ({})", at.len()),
-        ));
-    }
-    let by = match by {
-        "contact_angle" => {
-            if shift_s.is_none() {
-                w.refuse("s_mm", "no s_mm with mu_by = \"contact_angle\" (the patch's contact angle selects mu)")?;
-            }
-            MuBy::ContactAngle
-        }
-        _ => MuBy::TrackS { s_mm: shift_s.map_or_else(|| w.opt_f64("s_mm", LENGTH), |s| Ok(Some(s)))?.unwrap_or(0.0) },
-    };
-    let v = MuVariation { by, at, values };
-    let mu = match by {
-        MuBy::ContactAngle => v.values[0],
-        MuBy::TrackS { s_mm } => v.at(s_mm),
-    };
-    Ok((mu, Some(v)))
 }
 
 /// `[origin] cases` = [first, last] are the smallest and largest `contact_case` of the table (an

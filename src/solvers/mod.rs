@@ -46,6 +46,10 @@ pub enum SolveError {
     NoShifts { step: usize },
 }
 
+/// The `[model]` keys the models read themselves, declared next to their readers (one line per
+/// model with keys), shown in docs/scene-format.md after the scene's own `[model]` keys.
+pub const MODEL_KEYS: &[&crate::scene::keys::Keys] = &[&polach::KEYS, &relaxation::KEYS];
+
 /// A built-in model: everything the tool needs to know of it, in one record.
 pub struct ModelDef {
     /// The name in scenes (`solvers = [...]`) and of `<name>.csv`.

@@ -16,6 +16,7 @@ use super::{closed_form, ModelDef, SolveError};
 use crate::error::InputError;
 use crate::problem::params::ParamValue;
 use crate::problem::{ModelParams, Problem, Sample};
+use crate::scene::keys::{key, Absent, Allowed, Keys};
 use crate::scene::reader::{Range, Section};
 use crate::solvers::style::{muted, Dash, Marker};
 use std::f64::consts::PI;
@@ -29,6 +30,46 @@ pub const MODEL: ModelDef = ModelDef {
         build,
         muted(5, Dash::DashDot, Marker::Plus),
     )
+};
+
+/// A reduction or ratio in (0, 1].
+const UNIT: Allowed = Allowed::Number(Range::new(0.0, false, 1.0, true), "");
+
+/// Polach's `[model]` keys (`<!-- keys:model -->`, after the scene's), their defaults
+/// [`PolachParams::DEFAULT`].
+pub const KEYS: Keys = Keys {
+    id: "model",
+    owner: file!(),
+    keys: &[
+        key(
+            "polach_k_a",
+            "–",
+            UNIT,
+            Absent::Num(PolachParams::DEFAULT.k_a),
+            r#"Polach's reduction kA of the adhesion part: `polach_k_a = 0.6`"#,
+        ),
+        key(
+            "polach_k_s",
+            "–",
+            UNIT,
+            Absent::Num(PolachParams::DEFAULT.k_s),
+            r#"Polach's reduction kS of the slip part: `polach_k_s = 0.4`"#,
+        ),
+        key(
+            "polach_a",
+            "–",
+            UNIT,
+            Absent::Num(PolachParams::DEFAULT.a),
+            r#"Polach's falling friction, A = μ∞/μ0 in μ = μ0·((1 − A)·e^(−B·w) + A): `polach_a = 0.4`"#,
+        ),
+        key(
+            "polach_b_s_per_m",
+            "s/m",
+            Allowed::Number(Range::new(0.0, true, 1e3, true), ""),
+            Absent::Num(PolachParams::DEFAULT.b_s_per_m),
+            r#"Polach's B, w = s·V the slip velocity: `polach_b_s_per_m = 0.6`"#,
+        ),
+    ],
 };
 
 /// Polach's parameters (`[model] polach_k_a, polach_k_s, polach_a, polach_b_s_per_m`; Wear 258
@@ -50,13 +91,11 @@ impl PolachParams {
 
     /// Read and validate the scene's `[model] polach_*` keys (each optional: its default).
     pub fn read(md: &mut Section<'_>) -> Result<PolachParams, InputError> {
-        let unit = Range::new(0.0, false, 1.0, true);
-        let d = PolachParams::DEFAULT;
         Ok(PolachParams {
-            k_a: md.opt_f64("polach_k_a", unit)?.unwrap_or(d.k_a),
-            k_s: md.opt_f64("polach_k_s", unit)?.unwrap_or(d.k_s),
-            a: md.opt_f64("polach_a", unit)?.unwrap_or(d.a),
-            b_s_per_m: md.opt_f64("polach_b_s_per_m", Range::new(0.0, true, 1e3, true))?.unwrap_or(d.b_s_per_m),
+            k_a: md.num_or_default("polach_k_a")?,
+            k_s: md.num_or_default("polach_k_s")?,
+            a: md.num_or_default("polach_a")?,
+            b_s_per_m: md.num_or_default("polach_b_s_per_m")?,
         })
     }
 }

@@ -27,7 +27,21 @@ use crate::error::InputError;
 use crate::physics::{project_to_bound, LinearTheory};
 use crate::problem::params::ParamValue;
 use crate::problem::{ModelParams, Problem, Sample};
+use crate::scene::keys::{key, Absent, Allowed, Keys};
 use crate::scene::reader::{Range, Section};
+
+/// The relaxation model's `[model]` key (`<!-- keys:model -->`, after the scene's).
+pub const KEYS: Keys = Keys {
+    id: "model",
+    owner: file!(),
+    keys: &[key(
+        "relaxation_length_mm",
+        "mm",
+        Allowed::Number(Range::new(0.0, false, 1e4, true), ""),
+        Absent::Text("the linear theory's"),
+        r#"the relaxation model's length for both components instead of Lx = G·a·b·C11/kx, Ly = G·a·b·C22/ky (Mindlin's tangential stiffness), fixed whatever the load: `relaxation_length_mm = 8.466`"#,
+    )],
+};
 use crate::solvers::style::{muted, Dash, Marker};
 
 /// The relaxation (lag) model.
@@ -57,7 +71,7 @@ pub struct RelaxationParams {
 impl RelaxationParams {
     /// Read and validate `[model] relaxation_length_mm` (optional).
     pub fn read(md: &mut Section<'_>) -> Result<RelaxationParams, InputError> {
-        Ok(RelaxationParams { length_mm: md.opt_f64("relaxation_length_mm", Range::new(0.0, false, 1e4, true))? })
+        Ok(RelaxationParams { length_mm: md.opt_num("relaxation_length_mm")? })
     }
 }
 

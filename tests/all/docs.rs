@@ -7,11 +7,11 @@ use crate::common;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
-fn read(path: &Path) -> String {
+pub(crate) fn read(path: &Path) -> String {
     std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
-fn files_under(dir: &Path, ext: &str, out: &mut Vec<PathBuf>) {
+pub(crate) fn files_under(dir: &Path, ext: &str, out: &mut Vec<PathBuf>) {
     for entry in std::fs::read_dir(dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display())) {
         let path = entry.unwrap().path();
         if path.is_dir() {
@@ -35,8 +35,21 @@ fn documented(doc: &str, key: &str) -> bool {
 }
 
 /// The reader methods of `scene::reader::Section` that take a key as their first argument.
-const KEY_METHODS: [&str; 18] = [
+const KEY_METHODS: [&str; 31] = [
     "given",
+    "num",
+    "opt_num",
+    "num_or_default",
+    "opt_nums",
+    "opt_num_list",
+    "whole",
+    "opt_whole",
+    "whole_or_default",
+    "pick",
+    "opt_pick",
+    "pick_or_default",
+    "text",
+    "opt_text",
     "f64",
     "opt_f64",
     "usize",
@@ -67,7 +80,7 @@ fn key_at(text: &str, at: usize) -> Option<String> {
 /// The keys a source file reads: `.METHOD("key"` of the strict reader (`opt_f64_array::<3>`
 /// included), a helper taking the section first (`pattern(&mut s, "scene")`) and, for the
 /// study reader, which walks its tables by hand, `get("key")` and `text("key")`.
-fn keys_read(text: &str, by_hand: bool) -> BTreeSet<String> {
+pub(crate) fn keys_read(text: &str, by_hand: bool) -> BTreeSet<String> {
     let mut keys = BTreeSet::new();
     for (i, _) in text.match_indices("(\"") {
         let before = &text[..i];

@@ -1,0 +1,195 @@
+//! `[friction]` (optional): the friction law (Coulomb's with `contact.mu`, or falling with the
+//! slip velocity as CONTACT's L = 2, 3, 4), its memory and μ per grid row; its keys declared once
+//! ([`KEYS`]) for the reader and docs/scene-format.md.
+
+use super::keys::{key, Absent, Allowed, Keys};
+use super::reader::{Range, Section};
+use super::MAX_ELEMENTS_PER_AXIS;
+use crate::error::InputError;
+use crate::physics::{FallingTerms, FrictionLaw, Memory, RowFriction};
+
+/// A coefficient of a falling law.
+const COEFFICIENT: Range = Range::new(0.0, true, 1e3, true);
+/// A slip velocity [mm/s].
+const SPEED: Range = Range::new(0.0, true, 1e9, true);
+/// Required by a falling law.
+const FALLING: Absent = Absent::Text("required for a falling law");
+
+/// `[friction]`'s keys (`<!-- keys:friction -->`).
+pub const KEYS: Keys = Keys {
+    id: "friction",
+    owner: file!(),
+    keys: &[
+        key(
+            "law",
+            "–",
+            Allowed::Choice(&["coulomb", "linear", "rational", "exponential"], ""),
+            Absent::Required,
+            r#"`coulomb`: μ = `contact.mu` (no other key); `linear` (L = 2): μ = fkin + f1·max(0, 1 − s/(2·sabsh1)) + f2·max(0, 1 − s/(2·sabsh2)); `rational` (L = 3): fkin + f1/(1 + s/sabsh1) + f2/(1 + (s/sabsh2)²); `exponential` (L = 4): fkin + f1·exp(−ln2·s/sabsh1) + f2·exp(−ln2·s/sabsh2): `law = "exponential"`"#,
+        ),
+        key(
+            "fkin",
+            "–",
+            Allowed::Number(COEFFICIENT, "> 0 when the scene runs `contact`"),
+            FALLING,
+            r#"the kinetic coefficient, μ for large s (the exact solver's bound μ(s)·p must stay positive: with 0 the law falls to μ = 0): `fkin = 0.25`"#,
+        ),
+        key("f1", "–", Allowed::Number(COEFFICIENT, ""), FALLING, r#"the first term's height: `f1 = 0.2`"#),
+        key(
+            "sabsh1_mm_s",
+            "mm/s",
+            Allowed::Number(Range::new(0.0, false, 1e9, true), ""),
+            FALLING,
+            r#"the first term's slip velocity scale: `sabsh1_mm_s = 600.0`"#,
+        ),
+        key("f2", "–", Allowed::Number(COEFFICIENT, ""), Absent::Num(0.0), r#"the second term's height: `f2 = 0.08`"#),
+        key(
+            "sabsh2_mm_s",
+            "mm/s",
+            Allowed::Number(SPEED, "> 0 when f2 > 0"),
+            Absent::Num(0.0),
+            r#"the second term's scale: `sabsh2_mm_s = 2500.0`"#,
+        ),
+        key(
+            "memory_mm",
+            "mm",
+            Allowed::Number(Range::new(0.0, true, 1e4, true), ""),
+            Absent::Text("absent: no memory"),
+            r#"the friction memory's relaxation distance d_c (CONTACT's MEMDST): along the material path μ relaxes to μ(s) as dμ/dt = −(max(s, s0)/d_c)(μ − μ(s)), one backward-Euler step per time step (grid element in steady rolling); 0 (or ≤ 1e-9) is no memory: `memory_mm = 0.01`"#,
+        ),
+        key(
+            "memory_s0_mm_s",
+            "mm/s",
+            Allowed::Number(SPEED, ""),
+            Absent::Num(0.0),
+            r#"the memory's slip velocity floor s0 (CONTACT's MEM_S0), only with `memory_mm`: `memory_s0_mm_s = 10.0`"#,
+        ),
+        key(
+            "mu_rows",
+            "–",
+            Allowed::Numbers {
+                range: super::MU_LIMIT,
+                min_len: 1,
+                max_len: MAX_ELEMENTS_PER_AXIS,
+                note: "one per grid row, `grid.my` values",
+            },
+            Absent::Text("absent: one μ"),
+            r#"only with `law = "coulomb"`: Coulomb's coefficient per grid row, the first at the lowest y (CONTACT's V = 3, FSTAT per row IY); the bound of an element of row j is μ_j·p; `contact.mu` is left out and the scene's nominal μ (`scene.json`'s `mu`) is the largest row value; a creepage table may not carry a `mu` column; only the exact solver (`contact`) takes it, the simplified and external models are refused: `mu_rows = [0.2, 0.3, 0.4]`"#,
+        ),
+    ],
+};
+
+/// The friction law (`[friction]`, optional: Coulomb with `contact.mu`) and μ's static value.
+pub struct FrictionSpec {
+    pub law: FrictionLaw,
+    pub memory: Memory,
+    pub mu_static: f64,
+    /// Coulomb's μ per grid row (`[friction] mu_rows`, CONTACT V = 3); `mu_static` is their largest.
+    pub rows: Option<RowFriction>,
+}
+
+/// Relative difference allowed between a given `contact.mu` and a falling law's FKIN + F1 + F2
+/// (the sum is rounded in the last digit: 0.22 + 0.15 + 0.08 = 0.45000000000000007).
+const MU_STATIC_REL: f64 = 1e-12;
+
+/// `[friction]` (optional): the law and its parameters (CONTACT's names), the memory; `mu` is
+/// `contact.mu` as given (required by Coulomb's law; a falling law's static value FKIN + F1 + F2);
+/// Coulomb's law may give μ per grid row instead (`mu_rows`, `my` values).
+pub fn read(top: &mut Section, mu: Option<f64>, my: usize) -> Result<FrictionSpec, InputError> {
+    let Some(mut f) = top.opt_table("friction")?.map(|f| f.declare(&KEYS)) else {
+        return coulomb(mu, Memory::NONE);
+    };
+    let law = f.pick("law")?;
+    if law == "coulomb" {
+        for key in ["fkin", "f1", "sabsh1_mm_s", "f2", "sabsh2_mm_s", "memory_mm", "memory_s0_mm_s"] {
+            f.refuse(key, "only with a falling law (law = \"linear\", \"rational\" or \"exponential\")")?;
+        }
+        let rows = mu_rows(&mut f, mu, my)?;
+        f.finish()?;
+        return match rows {
+            Some(rows) => {
+                let mu_static = rows.mu_max();
+                Ok(FrictionSpec {
+                    law: FrictionLaw::Coulomb { mu: mu_static },
+                    memory: Memory::NONE,
+                    mu_static,
+                    rows: Some(rows),
+                })
+            }
+            None => coulomb(mu, Memory::NONE),
+        };
+    }
+    f.refuse("mu_rows", "only with law = \"coulomb\" (a falling law is one for the whole contact)")?;
+    let terms = FallingTerms {
+        fkin: f.num("fkin")?,
+        f1: f.num("f1")?,
+        sabsh1_mm_s: f.num("sabsh1_mm_s")?,
+        f2: f.num_or_default("f2")?,
+        sabsh2_mm_s: f.num_or_default("sabsh2_mm_s")?,
+    };
+    if terms.f2 > 0.0 && terms.sabsh2_mm_s <= 0.0 {
+        let given = if f.has("sabsh2_mm_s") { terms.sabsh2_mm_s.to_string() } else { "missing".into() };
+        return Err(InputError::new(f.field("sabsh2_mm_s"), given, "a slip velocity > 0 [mm/s] when f2 > 0"));
+    }
+    let law = match law {
+        "linear" => FrictionLaw::Linear(terms),
+        "rational" => FrictionLaw::Rational(terms),
+        _ => FrictionLaw::Exponential(terms),
+    };
+    let memory = match f.opt_num("memory_mm")? {
+        Some(memory_mm) => Memory { memory_mm, s0_mm_s: f.num_or_default("memory_s0_mm_s")? },
+        None => {
+            f.refuse("memory_s0_mm_s", "only with memory_mm (the memory's relaxation distance)")?;
+            Memory::NONE
+        }
+    };
+    let mu_static = law.mu_static();
+    if !(mu_static > 0.0 && mu_static <= 1e3) {
+        let given = format!("{} (fkin + f1 + f2 = {mu_static})", terms.fkin);
+        return Err(InputError::new(f.field("fkin"), given, "a static value fkin + f1 + f2 in (0, 1000]"));
+    }
+    f.finish()?;
+    if let Some(given) = mu {
+        if (given - mu_static).abs() > MU_STATIC_REL * mu_static {
+            return Err(InputError::new(
+                "contact.mu",
+                given,
+                format!(
+                    "left out with a falling friction law, or equal to its static value fkin + f1 + f2 = {mu_static}"
+                ),
+            ));
+        }
+    }
+    Ok(FrictionSpec { law, memory, mu_static, rows: None })
+}
+
+/// `[friction] mu_rows` (Coulomb only): μ of every grid row, `my` values in (0, 1000], the first
+/// at the lowest y (CONTACT's V = 3, FSTAT per row IY); `contact.mu` is then left out.
+fn mu_rows(f: &mut Section, mu: Option<f64>, my: usize) -> Result<Option<RowFriction>, InputError> {
+    let Some(list) = f.opt_num_list("mu_rows")? else {
+        return Ok(None);
+    };
+    if list.len() != my {
+        return Err(InputError::new(
+            f.field("mu_rows"),
+            format!("{} values", list.len()),
+            format!("one coefficient per grid row: grid.my = {my} values, the first at the lowest y"),
+        ));
+    }
+    if let Some(given) = mu {
+        return Err(InputError::new(
+            "contact.mu",
+            given,
+            "left out with [friction] mu_rows (the rows give the friction; the nominal mu is their largest)",
+        ));
+    }
+    Ok(RowFriction::new(list))
+}
+
+/// Coulomb's law with `contact.mu` (required).
+fn coulomb(mu: Option<f64>, memory: Memory) -> Result<FrictionSpec, InputError> {
+    let mu = mu.ok_or_else(|| {
+        InputError::new("contact.mu", "missing", "a coefficient of friction in (0, 1000] (or a falling [friction] law)")
+    })?;
+    Ok(FrictionSpec { law: FrictionLaw::Coulomb { mu }, memory, mu_static: mu, rows: None })
+}

@@ -1,0 +1,228 @@
+//! `[material]`: the combined elastic constants (G or E, and ν), or the two bodies' constants,
+//! and an interface layer; its keys declared once ([`KEYS`], [`BODY_KEYS`], [`LAYER_KEYS`]) for
+//! the reader and docs/scene-format.md.
+
+use super::keys::{key, Absent, Allowed, Keys};
+use super::reader::{Range, Section};
+use super::MaterialSpec;
+use crate::error::InputError;
+
+/// A combined modulus [MPa].
+const MODULUS: Allowed = Allowed::Number(Range::new(0.0, false, 1e7, true), "");
+/// A body's modulus [MPa]: a body may be far stiffer than the pair (CONTACT's "rigid" body of
+/// G = 2e7 N/mm²).
+const BODY_MODULUS: Allowed = Allowed::Number(Range::new(0.0, false, 1e12, true), "");
+/// A body's Poisson's ratio.
+const BODY_RATIO: Allowed = Allowed::Number(Range::new(0.0, true, 0.5, true), "");
+/// With the other three bodies' keys.
+const WITH_BODIES: Absent = Absent::Text("– (with the other three)");
+
+/// `[material]`'s combined constants (`<!-- keys:material -->`).
+pub const KEYS: Keys = Keys {
+    id: "material",
+    owner: file!(),
+    keys: &[
+        key(
+            "g_mpa",
+            "MPa",
+            MODULUS,
+            Absent::Text("from `e_mpa`"),
+            r#"the combined shear modulus G: `g_mpa = 82000.0`"#,
+        ),
+        key(
+            "e_mpa",
+            "MPa",
+            MODULUS,
+            Absent::Text("from `g_mpa`"),
+            r#"Young's modulus E; alone it gives G = E/(2(1 + ν)): `e_mpa = 210000.0`"#,
+        ),
+        key(
+            "poisson",
+            "–",
+            Allowed::Number(Range::new(0.0, true, 0.5, false), ""),
+            Absent::Required,
+            r#"the combined Poisson's ratio ν: `poisson = 0.28`"#,
+        ),
+    ],
+};
+
+/// `[material]`'s two bodies' constants (`<!-- keys:material_bodies -->`), in the order they are named.
+pub const BODY_KEYS: Keys = Keys {
+    id: "material_bodies",
+    owner: file!(),
+    keys: &[
+        key("g1_mpa", "MPa", BODY_MODULUS, WITH_BODIES, r#"body 1's shear modulus G1: `g1_mpa = 23000.0`"#),
+        key("poisson1", "–", BODY_RATIO, WITH_BODIES, r#"body 1's Poisson's ratio ν1: `poisson1 = 0.31`"#),
+        key("g2_mpa", "MPa", BODY_MODULUS, WITH_BODIES, r#"body 2's shear modulus G2: `g2_mpa = 82000.0`"#),
+        key(
+            "poisson2",
+            "–",
+            BODY_RATIO,
+            WITH_BODIES,
+            r#"body 2's Poisson's ratio ν2 (the combined ν must stay below 0.5): `poisson2 = 0.28`"#,
+        ),
+    ],
+};
+
+/// `[material]`'s interface layer (`<!-- keys:material_layer -->`), given together.
+pub const LAYER_KEYS: Keys = Keys {
+    id: "material_layer",
+    owner: file!(),
+    keys: &[
+        key(
+            "layer_g_mpa",
+            "MPa",
+            Allowed::Number(Range::new(0.0, false, 1e12, true), ""),
+            Absent::Text("– (no layer; with `layer_thickness_mm`)"),
+            r#"the layer's shear modulus G3 (CONTACT's GG3): `layer_g_mpa = 8200.0`"#,
+        ),
+        key(
+            "layer_thickness_mm",
+            "mm",
+            Allowed::Number(Range::new(0.0, true, 1e3, true), ""),
+            Absent::Text("– (no layer; with `layer_g_mpa`)"),
+            r#"the layer's thickness h3 (LAYTHK); only h3/G3 matters: `layer_thickness_mm = 1.25`"#,
+        ),
+    ],
+};
+
+/// `[material]`'s viscoelastic bodies (`<!-- keys:material_visco -->`), given together.
+pub const VISCO_KEYS: Keys = Keys {
+    id: "material_visco",
+    owner: file!(),
+    keys: &[
+        key(
+            "visco_ratio",
+            "–",
+            Allowed::Number(Range::new(0.0, true, 1e6, true), ""),
+            Absent::Text("– (elastic; with `visco_time_s`)"),
+            r#"C_v/C_g, CONTACT's FG: the relaxed shear modulus is G/(1 + FG): `visco_ratio = 1.0`"#,
+        ),
+        key(
+            "visco_time_s",
+            "s",
+            Allowed::Number(Range::new(0.0, true, 1e20, true), "CONTACT's range of TC"),
+            Absent::Text("– (elastic; with `visco_ratio`)"),
+            r#"the creep relaxation time τ, CONTACT's TC (its VT = VELOC·TC): `visco_time_s = 0.009`"#,
+        ),
+    ],
+};
+
+/// The names of a declaration's keys.
+fn names(keys: &Keys) -> Vec<&'static str> {
+    keys.keys.iter().map(|k| k.key).collect()
+}
+
+/// `[material]`: g_mpa or e_mpa (or both), and poisson; or the two bodies' g1_mpa, poisson1,
+/// g2_mpa, poisson2 (dissimilar bodies, [`bodies`]).
+pub fn read(top: &mut Section) -> Result<MaterialSpec, InputError> {
+    let mut m = top.table("material")?.declare(&KEYS).declare(&BODY_KEYS).declare(&LAYER_KEYS).declare(&VISCO_KEYS);
+    let layer = layer(&mut m)?;
+    let visco = visco(&mut m)?;
+    if let (Some(_), Some(_)) = (layer, visco) {
+        return Err(InputError::new(
+            m.field("visco_ratio"),
+            "given with layer_g_mpa",
+            "either an interface layer or viscoelastic bodies (CONTACT's M is one material model: 4 or 1)",
+        ));
+    }
+    if let Some(spec) = bodies(&mut m)? {
+        m.finish()?;
+        return Ok(MaterialSpec { layer, visco, ..spec });
+    }
+    let g_mpa = m.opt_num("g_mpa")?;
+    let e_mpa = m.opt_num("e_mpa")?;
+    let poisson = m.num("poisson")?;
+    if g_mpa.is_none() && e_mpa.is_none() {
+        return Err(InputError::new(
+            "material.g_mpa",
+            "missing",
+            "g_mpa (or e_mpa, from which g_mpa = e/(2(1+poisson)))",
+        ));
+    }
+    m.finish()?;
+    Ok(MaterialSpec { g_mpa, e_mpa, poisson, bodies: None, layer, visco })
+}
+
+/// Viscoelastic bodies (CONTACT's M = 1 with FG 1 = FG 2, TC 1 = TC 2): both keys or neither. A
+/// ratio of 0 is elastic bodies.
+fn visco(m: &mut Section) -> Result<Option<crate::physics::material::Visco>, InputError> {
+    let all = names(&VISCO_KEYS);
+    let given: Vec<&str> = all.iter().copied().filter(|k| m.has(k)).collect();
+    if given.is_empty() {
+        return Ok(None);
+    }
+    if let Some(missing) = all.iter().find(|k| !given.contains(k)) {
+        return Err(InputError::new(
+            m.field(missing),
+            "missing",
+            format!("both of {} with {}", all.join(", "), given.join(", ")),
+        ));
+    }
+    let ratio = m.num("visco_ratio")?;
+    let time_s = m.num("visco_time_s")?;
+    Ok((ratio > 0.0).then_some(crate::physics::material::Visco { ratio, time_s }))
+}
+
+/// An interface layer (CONTACT's M = 4: GG3, LAYTHK): both keys or neither. A thickness of 0 is
+/// no layer, as CONTACT's (`use_3bl` needs LAYTHK >= 1e-10).
+fn layer(m: &mut Section) -> Result<Option<crate::physics::material::Layer>, InputError> {
+    let all = names(&LAYER_KEYS);
+    let given: Vec<&str> = all.iter().copied().filter(|k| m.has(k)).collect();
+    if given.is_empty() {
+        return Ok(None);
+    }
+    if let Some(missing) = all.iter().find(|k| !given.contains(k)) {
+        return Err(InputError::new(
+            m.field(missing),
+            "missing",
+            format!("both of {} with {}", all.join(", "), given.join(", ")),
+        ));
+    }
+    let g_mpa = m.num("layer_g_mpa")?;
+    let thickness_mm = m.num("layer_thickness_mm")?;
+    Ok((thickness_mm > 0.0).then_some(crate::physics::material::Layer { g_mpa, thickness_mm }))
+}
+
+/// `[material]` given per body (CONTACT's GG 1, 2 and POISS 1, 2): all four keys, none of
+/// g_mpa, e_mpa, poisson; the combined constants and Kalker's K follow ([`crate::physics::Material::from_bodies`]).
+fn bodies(m: &mut Section) -> Result<Option<MaterialSpec>, InputError> {
+    let all = names(&BODY_KEYS);
+    let given: Vec<&str> = all.iter().copied().filter(|k| m.has(k)).collect();
+    if given.is_empty() {
+        return Ok(None);
+    }
+    if let Some(missing) = all.iter().find(|k| !given.contains(k)) {
+        return Err(InputError::new(
+            m.field(missing),
+            "missing",
+            format!("all four of {} with {}", all.join(", "), given.join(", ")),
+        ));
+    }
+    if let Some(both) = ["g_mpa", "e_mpa", "poisson"].iter().find(|k| m.has(k)) {
+        return Err(InputError::new(
+            m.field(both),
+            "given with the bodies' g1_mpa .. poisson2",
+            "either the combined g_mpa (or e_mpa) and poisson, or the two bodies' constants",
+        ));
+    }
+    let g = [m.num("g1_mpa")?, m.num("g2_mpa")?];
+    let nu = [m.num("poisson1")?, m.num("poisson2")?];
+    let bodies = crate::physics::material::Bodies { g_mpa: g, poisson: nu };
+    let combined = crate::physics::Material::from_bodies(bodies);
+    if combined.poisson >= 0.5 {
+        return Err(InputError::new(
+            m.field("poisson1"),
+            nu[0],
+            "bodies whose combined Poisson's ratio is below 0.5 (both at 0.5 is an incompressible pair: give g_mpa and poisson)",
+        ));
+    }
+    Ok(Some(MaterialSpec {
+        g_mpa: None,
+        e_mpa: None,
+        poisson: combined.poisson,
+        bodies: Some(bodies),
+        layer: None,
+        visco: None,
+    }))
+}

@@ -1,0 +1,246 @@
+//! `[wheelrail]` of a wheel–rail scene: the side, the friction (one μ or μ varying across the
+//! rail or along the track) and the elements; its keys declared once ([`KEYS`]) for the reader
+//! and docs/scene-format.md.
+
+use super::keys::{key, Absent, Allowed, Keys};
+use super::reader::{Range, Section};
+use super::wheelrail::{MotionSpec, MuBy, MuVariation, SideSpec};
+use super::wheelrail_cases::LENGTH;
+use crate::error::InputError;
+
+/// Coulomb's μ range.
+const MU: Range = Range::new(0.0, false, 10.0, true);
+/// Largest number of friction control points (CONTACT's NVF).
+const MAX_MU_POINTS: usize = 1000;
+/// An element's size [mm].
+const ELEMENT: Allowed = Allowed::Number(Range::new(1e-3, true, 100.0, true), "");
+
+/// `[wheelrail]`'s keys (`<!-- keys:wheelrail -->`).
+pub const KEYS: Keys = Keys {
+    id: "wheelrail",
+    owner: file!(),
+    keys: &[
+        key(
+            "side",
+            "–",
+            Allowed::Choice(&["left", "right"], ""),
+            Absent::Required,
+            r#"the wheel computed (CONTACT's C = 0, 1); a left wheel is solved as the mirror image of a right one and its results mirrored back, as CONTACT does: `side = "right"`"#,
+        ),
+        key(
+            "mu",
+            "–",
+            Allowed::Number(MU, ""),
+            Absent::Text("required unless `mu_by` is given, refused with it"),
+            r#"Coulomb's coefficient of friction on every patch: `mu = 0.3`"#,
+        ),
+        key(
+            "mu_by",
+            "–",
+            Allowed::Choice(&["contact_angle", "track_s"], ""),
+            Absent::Text("absent: `mu` on every patch"),
+            r#"friction varying across the rail (CONTACT's V = 1: each patch takes μ at its contact angle on the wheel, the reference's roll in the wheel's frame) or along the track (V = 2: μ at the wheelset's position `s_mm`); one μ per patch as CONTACT's planar contact: `mu_by = "contact_angle"`"#,
+        ),
+        key(
+            "mu_at",
+            "rad (`contact_angle`) or mm (`track_s`)",
+            Allowed::Text("[-π, π] or [-1e5, 1e5], 1 to 1000 values, strictly increasing"),
+            Absent::Text("required with `mu_by`, refused without"),
+            r#"the control points (CONTACT's ALPHVF, negative on the gauge face, or SVF); μ is linear between them and the end value beyond them: `mu_at = [-0.349, -0.175]`"#,
+        ),
+        key(
+            "mu_values",
+            "–",
+            Allowed::Numbers { range: MU, min_len: 1, max_len: MAX_MU_POINTS, note: "one per `mu_at`" },
+            Absent::Text("required with `mu_by`, refused without"),
+            r#"Coulomb's μ at each control point (FSTAT): `mu_values = [0.2, 0.3]`"#,
+        ),
+        key(
+            "s_mm",
+            "mm",
+            Allowed::Number(LENGTH, ""),
+            Absent::Text("0; only with `mu_by = \"track_s\"` or `motion = \"shift\"`"),
+            r#"the wheelset's position along the track (CONTACT's S_WS), where μ is taken and, in a shift, where the material-fixed grid is anchored (element centres at track x = −`s_mm` + i `dx_mm`): `s_mm = 60.0`"#,
+        ),
+        key(
+            "dx_mm",
+            "mm",
+            ELEMENT,
+            Absent::Required,
+            r#"the elements' size along the track (CONTACT's DX): `dx_mm = 0.2`"#,
+        ),
+        key(
+            "ds_mm",
+            "mm",
+            ELEMENT,
+            Absent::Required,
+            r#"the elements' size along the rail profile's arc length (DS); the contact search's lateral mesh is 0.3 DS: `ds_mm = 0.2`"#,
+        ),
+        key(
+            "a_sep_rad",
+            "rad",
+            Allowed::Number(Range::new(0.0, true, std::f64::consts::PI, true), ""),
+            Absent::Num(std::f64::consts::FRAC_PI_2),
+            r#"two interpenetration regions whose contact angles differ by more are always separate patches (CONTACT's A_SEP): `a_sep_rad = 1.5707963`"#,
+        ),
+        key(
+            "d_sep_mm",
+            "mm",
+            Allowed::Number(Range::new(0.0, true, 1e3, true), ""),
+            Absent::Num(8.0),
+            r#"regions closer than this are one patch (D_SEP), the cross-influence of those beyond D_COMB attenuated (CONTACT's blending approach, docs/wheelrail.md): `d_sep_mm = 8.0`"#,
+        ),
+        key(
+            "d_comb_mm",
+            "mm",
+            Allowed::Number(Range::new(0.0, true, 1e3, true), "at most `d_sep_mm`"),
+            Absent::Num(4.0),
+            r#"regions closer than this are combined fully (D_COMB): `d_comb_mm = 4.0`"#,
+        ),
+        key(
+            "d_turn_mm",
+            "mm",
+            Allowed::Number(Range::new(0.0, true, 1e3, true), ""),
+            Absent::Text("2 `d_sep_mm` − `d_comb_mm`"),
+            r#"separate patches between D_SEP and this apart have their contact angles turned towards their weighted mean (CONTACT's D_TURN; none where it is at most `d_sep_mm`): `d_turn_mm = 12.0`"#,
+        ),
+        key(
+            "frictionless",
+            "–",
+            Allowed::Bool,
+            Absent::Text("`false`"),
+            r#"frictionless compression (CONTACT's T = 0): only the normal problem is solved, at every height the vertical balance tries; every model's FX, FS and MN are 0 and every element in contact counts as adhering (`mu` is still required and not used): `frictionless = true`"#,
+        ),
+        key(
+            "motion",
+            "–",
+            Allowed::Choice(&["rolling", "shift"], ""),
+            Absent::Choice("rolling"),
+            r#"steady rolling (CONTACT's T = 3), or a shift from rest (T = 1 with P = 2, docs/wheelrail.md "Shifts"): each case is one step from zero tractions, its velocity columns the step's shifts (mm and rad, CONTACT's dummy time step of 1 s: `vs_mm_s = 0.4` shifts the wheelset 0.4 mm), the creepages printed as shifts (mm, rad), the grid fixed in the rail's material (x from −`s_mm`, s along the rail profile's own arc length; a profile file, not a closed form); only the exact theory (`solvers = ["contact"]`), one material, `[cases] longitudinal = "velocity"`: `motion = "shift"`"#,
+        ),
+        key(
+            "wheel_surface",
+            "–",
+            Allowed::Choice(&["exact", "contact_mesh"], ""),
+            Absent::Choice("exact"),
+            r#"the wheel surface the undeformed distance is measured to: the profile's exact surface of revolution, or CONTACT's mesh of it (`wr_ud_planar`: profile points `ds_mm` apart in arc length from the patch's reference, revolved into slices `dx_mm` apart, bilinear between them; up to ~DS²/(8R) off the exact surface, inside a convex wheel and outside a concave flange root); every shipped scene of `scenes/wheelrail` takes the mesh (the gate: worst 0.939 of a bound; on the exact surface the worn flange root of `iestim_site_b` carries FN up to 1.8 % less than CONTACT's): `wheel_surface = "contact_mesh"`"#,
+        ),
+    ],
+};
+
+/// The `[wheelrail]` table read.
+pub struct WheelRailSection {
+    pub side: SideSpec,
+    pub mu: f64,
+    pub mu_variation: Option<MuVariation>,
+    pub dx_mm: f64,
+    pub ds_mm: f64,
+    pub a_sep_rad: f64,
+    pub d_sep_mm: f64,
+    pub d_comb_mm: f64,
+    pub d_turn_mm: f64,
+    pub wheel_mesh: bool,
+    pub frictionless: bool,
+    pub motion: MotionSpec,
+}
+
+/// `[wheelrail]` (the table `w`): side, friction, elements, patch separation and the wheel's
+/// surface.
+pub fn read(w: Section) -> Result<WheelRailSection, InputError> {
+    let mut w = w.declare(&KEYS);
+    let side = match w.pick("side")? {
+        "left" => SideSpec::Left,
+        _ => SideSpec::Right,
+    };
+    let motion = match w.pick_or_default("motion")? {
+        "shift" => MotionSpec::Shift { s_ws_mm: w.opt_num("s_mm")?.unwrap_or(0.0) },
+        _ => MotionSpec::Rolling,
+    };
+    let shift_s = match motion {
+        MotionSpec::Shift { s_ws_mm } => Some(s_ws_mm),
+        MotionSpec::Rolling => None,
+    };
+    let (mu, mu_variation) = friction(&mut w, shift_s)?;
+    let dx_mm = w.num("dx_mm")?;
+    let ds_mm = w.num("ds_mm")?;
+    let a_sep_rad = w.num_or_default("a_sep_rad")?;
+    let d_sep_mm = w.num_or_default("d_sep_mm")?;
+    let d_comb_mm = w.num_or_default("d_comb_mm")?;
+    if d_comb_mm > d_sep_mm {
+        return Err(InputError::new("wheelrail.d_comb_mm", d_comb_mm, format!("at most d_sep_mm = {d_sep_mm}")));
+    }
+    let d_turn_mm = w.opt_num("d_turn_mm")?.unwrap_or(2.0 * d_sep_mm - d_comb_mm);
+    let wheel_mesh = w.pick_or_default("wheel_surface")? == "contact_mesh";
+    let frictionless = w.opt_bool("frictionless")?.unwrap_or(false);
+    w.finish()?;
+    Ok(WheelRailSection {
+        side,
+        mu,
+        mu_variation,
+        dx_mm,
+        ds_mm,
+        a_sep_rad,
+        d_sep_mm,
+        d_comb_mm,
+        d_turn_mm,
+        wheel_mesh,
+        frictionless,
+        motion,
+    })
+}
+
+/// `mu`, or `mu_by` with `mu_at`, `mu_values` (and `s_mm` for `mu_by = "track_s"`); `shift_s`:
+/// the position `s_mm` a shift has read already.
+fn friction(w: &mut Section, shift_s: Option<f64>) -> Result<(f64, Option<MuVariation>), InputError> {
+    let Some(by) = w.opt_pick("mu_by")? else {
+        w.refuse("mu_at", "no mu_at without mu_by")?;
+        w.refuse("mu_values", "no mu_values without mu_by")?;
+        if shift_s.is_none() {
+            w.refuse("s_mm", "no s_mm without mu_by = \"track_s\" or motion = \"shift\"")?;
+        }
+        return Ok((w.num("mu")?, None));
+    };
+    w.refuse("mu", "no mu with mu_by (mu_values give it)")?;
+    let range = match by {
+        "contact_angle" => Range::new(-std::f64::consts::PI, true, std::f64::consts::PI, true),
+        _ => LENGTH,
+    };
+    let field = w.field("mu_at");
+    let at = w
+        .opt_f64_list("mu_at", range, MAX_MU_POINTS)?
+        .ok_or_else(|| InputError::new(&field, "missing", "the control points of mu_by, increasing (rad or mm)"))?;
+    let values_field = w.field("mu_values");
+    let values = w
+        .opt_num_list("mu_values")?
+        .ok_or_else(|| InputError::new(&values_field, "missing", "mu at each point of mu_at"))?;
+    if at.is_empty() || at.windows(2).any(|p| p[1] <= p[0]) {
+        return Err(InputError::new(field, format!("{at:?}"), "at least one control point, strictly increasing"));
+    }
+    if values.len() != at.len() {
+        return Err(InputError::new(
+            values_field,
+            format!("{} values", values.len()),
+            format!("one mu per point of mu_at ({})", at.len()),
+        ));
+    }
+    let by = match by {
+        "contact_angle" => {
+            if shift_s.is_none() {
+                w.refuse("s_mm", "no s_mm with mu_by = \"contact_angle\" (the patch's contact angle selects mu)")?;
+            }
+            MuBy::ContactAngle
+        }
+        _ => MuBy::TrackS {
+            s_mm: match shift_s {
+                Some(s) => s,
+                None => w.opt_num("s_mm")?.unwrap_or(0.0),
+            },
+        },
+    };
+    let v = MuVariation { by, at, values };
+    let mu = match by {
+        MuBy::ContactAngle => v.values[0],
+        MuBy::TrackS { s_mm } => v.at(s_mm),
+    };
+    Ok((mu, Some(v)))
+}

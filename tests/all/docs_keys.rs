@@ -1,0 +1,138 @@
+//! The key tables of docs/scene-format.md are generated from the readers' declarations
+//! (`creepbench::scene::keys`): the test fails showing the difference, and
+//! `CREEPBENCH_BLESS_DOCS=1 cargo test --release --test all docs_keys` rewrites them. Every
+//! declared key is read by the file that declares it, and every key that file reads is declared.
+
+use crate::common;
+use crate::docs::{files_under, keys_read, read};
+use creepbench::scene::keys::{markdown, Allowed, Keys};
+use std::collections::{BTreeMap, BTreeSet};
+
+/// Every declaration, in the order the docs show them.
+fn tables() -> Vec<&'static Keys> {
+    let mut all: Vec<&'static Keys> = creepbench::scene::KEY_TABLES.to_vec();
+    all.extend(creepbench::solvers::MODEL_KEYS.iter().copied());
+    all
+}
+
+const OPEN: &str = "<!-- keys:";
+const CLOSE: &str = "<!-- /keys -->";
+
+/// `doc` with the text between each `<!-- keys:ID -->` line and the next `<!-- /keys -->`
+/// replaced by the Markdown of the declarations of ID; the IDs found, in order.
+fn generate(doc: &str, tables: &[&Keys]) -> (String, Vec<String>) {
+    let mut out = String::new();
+    let mut ids = Vec::new();
+    let mut rest = doc;
+    while let Some(at) = rest.find(OPEN) {
+        let line_end = at + rest[at..].find('\n').expect("a marker line ends");
+        let id = rest[at + OPEN.len()..line_end].trim_end_matches("-->").trim().to_string();
+        let close = line_end + rest[line_end..].find(CLOSE).unwrap_or_else(|| panic!("{OPEN}{id} is not closed"));
+        let of_id: Vec<&Keys> = tables.iter().copied().filter(|t| t.id == id).collect();
+        assert!(!of_id.is_empty(), "docs/scene-format.md has {OPEN}{id} --> but no reader declares keys {id:?}");
+        out.push_str(&rest[..=line_end]);
+        out.push_str(&markdown(&of_id));
+        ids.push(id);
+        rest = &rest[close..];
+    }
+    out.push_str(rest);
+    (out, ids)
+}
+
+/// The lines of `want` and `got` that differ, as `-` (in the docs) and `+` (generated).
+fn diff(got: &str, want: &str) -> String {
+    let (g, w): (BTreeSet<&str>, BTreeSet<&str>) = (got.lines().collect(), want.lines().collect());
+    let gone = got.lines().filter(|l| !w.contains(l)).map(|l| format!("- {l}"));
+    let new = want.lines().filter(|l| !g.contains(l)).map(|l| format!("+ {l}"));
+    gone.chain(new).take(60).collect::<Vec<_>>().join("\n")
+}
+
+#[test]
+fn the_docs_key_tables_are_the_declarations() {
+    let path = common::root().join("docs/scene-format.md");
+    let doc = read(&path);
+    let tables = tables();
+    let (want, ids) = generate(&doc, &tables);
+    for t in &tables {
+        assert!(ids.contains(&t.id.to_string()), "no {OPEN}{} --> in docs/scene-format.md", t.id);
+    }
+    if want == doc {
+        return;
+    }
+    if std::env::var("CREEPBENCH_BLESS_DOCS").is_ok_and(|v| v == "1") {
+        std::fs::write(&path, want).unwrap();
+        return;
+    }
+    panic!(
+        "docs/scene-format.md's key tables differ from the declarations (rewrite them with \
+         CREEPBENCH_BLESS_DOCS=1 cargo test --release --test all docs_keys):\n{}",
+        diff(&doc, &want)
+    );
+}
+
+/// What is wrong between the declarations and the sources that read them: a declared key its
+/// owner never reads, a key an owner reads that no declaration names (a table of its own, a
+/// [`Allowed::Section`], may be read in any file of `readers`).
+fn undeclared_or_unread(tables: &[&Keys], sources: &BTreeMap<String, String>) -> Vec<String> {
+    let mut wrong = Vec::new();
+    let read_in = |file: &str| keys_read(sources.get(file).map_or("", String::as_str), false);
+    let anywhere: BTreeSet<String> = sources.values().flat_map(|t| keys_read(t, false)).collect();
+    let sections: BTreeSet<&str> =
+        tables.iter().flat_map(|t| t.keys).filter(|k| k.allowed == Allowed::Section).map(|k| k.key).collect();
+    let owners: BTreeSet<&str> = tables.iter().map(|t| t.owner).collect();
+    for owner in owners {
+        let read = read_in(owner);
+        let declared: BTreeSet<&str> =
+            tables.iter().filter(|t| t.owner == owner).flat_map(|t| t.keys).map(|k| k.key).collect();
+        for t in tables.iter().filter(|t| t.owner == owner) {
+            for k in t.keys {
+                let found = if k.allowed == Allowed::Section { anywhere.contains(k.key) } else { read.contains(k.key) };
+                if !found {
+                    wrong.push(format!("{owner}: [{}] {} is declared but never read", t.id, k.key));
+                }
+            }
+        }
+        for k in &read {
+            if !declared.contains(k.as_str()) && !sections.contains(k.as_str()) {
+                wrong.push(format!("{owner}: {k} is read but not declared"));
+            }
+        }
+    }
+    wrong
+}
+
+/// The sources of `src/`, by their path from the repository's root (as `file!()` gives it).
+fn sources() -> BTreeMap<String, String> {
+    let root = common::root();
+    let mut files = Vec::new();
+    files_under(&root.join("src"), "rs", &mut files);
+    files.iter().map(|f| (f.strip_prefix(&root).unwrap().display().to_string(), read(f))).collect()
+}
+
+#[test]
+fn every_declared_key_is_read_and_every_key_read_is_declared() {
+    let tables = tables();
+    assert!(tables.len() >= 2, "{} tables", tables.len());
+    let wrong = undeclared_or_unread(&tables, &sources());
+    assert!(wrong.is_empty(), "declarations and readers disagree:\n{}", wrong.join("\n"));
+}
+
+/// The check fails on a key declared but not read, and on one read but not declared.
+#[test]
+fn a_key_declared_but_not_read_or_read_but_not_declared_fails() {
+    use creepbench::scene::keys::{key, Absent};
+    const T: Keys = Keys {
+        id: "t",
+        owner: "src/t.rs",
+        keys: &[
+            key("a_mm", "mm", Allowed::Text("x"), Absent::Required, "a"),
+            key("b_mm", "mm", Allowed::Text("x"), Absent::Required, "b"),
+        ],
+    };
+    let src = |text: &str| BTreeMap::from([("src/t.rs".to_string(), text.to_string())]);
+    assert!(undeclared_or_unread(&[&T], &src("s.num(\"a_mm\")?; s.opt_num(\"b_mm\")?;")).is_empty());
+    assert_eq!(
+        undeclared_or_unread(&[&T], &src("s.num(\"a_mm\")?; s.opt_num(\"c_mm\")?;")),
+        ["src/t.rs: [t] b_mm is declared but never read", "src/t.rs: c_mm is read but not declared"]
+    );
+}
