@@ -225,7 +225,7 @@ fn kpec_and_analyn_against_contact() {
     let kpec: Vec<Deviation> = (2..=3).flat_map(devs).collect();
     println!("KPEC (cases 2, 3) against CONTACT's:");
     worst(&kpec);
-    let beyond: Vec<&Deviation> = kpec.iter().filter(|d| loose(d).unwrap_or(d.half_units <= 4.5) == false).collect();
+    let beyond: Vec<&Deviation> = kpec.iter().filter(|d| !loose(d).unwrap_or(d.half_units <= 4.5)).collect();
     assert!(beyond.is_empty(), "{beyond:?}");
     // KPEC at y = 0: CONTACT's height iteration stopped at FZ = 9982 N; this project's carries 10000.
     let fz = devs(1).into_iter().find(|d| d.quantity == "fz_tr_n").unwrap();

@@ -44,10 +44,10 @@ fn same_wheel(printed: &WheelRailCase, run: &SceneRun) -> bool {
     use super::contact_output::wheelrail::WheelSide;
     use crate::wheelrail::side::Side;
     let ours = run.cases.first().map(|(_, r)| r.normal.side);
-    match (printed.side(), ours) {
-        (Some(WheelSide::Left), Some(Side::Right)) | (Some(WheelSide::Right), Some(Side::Left)) => false,
-        _ => true,
-    }
+    !matches!(
+        (printed.side(), ours),
+        (Some(WheelSide::Left), Some(Side::Right)) | (Some(WheelSide::Right), Some(Side::Left))
+    )
 }
 
 /// Outputs printed without a deck by CONTACT's library (`src/test_mbench.f90`): the file, its
