@@ -108,9 +108,22 @@ pub const VISCO_KEYS: Keys = Keys {
     ],
 };
 
-/// The names of a declaration's keys.
-fn names(keys: &Keys) -> Vec<&'static str> {
-    keys.keys.iter().map(|k| k.key).collect()
+/// Whether the keys of `keys` are given, all of them (`true`) or none (`false`); some of them is
+/// an error naming the first missing (`how_many`: "both", "all four").
+fn together(m: &Section, keys: &Keys, how_many: &str) -> Result<bool, InputError> {
+    let all: Vec<&str> = keys.keys.iter().map(|k| k.key).collect();
+    let given: Vec<&str> = all.iter().copied().filter(|k| m.has(k)).collect();
+    if given.is_empty() {
+        return Ok(false);
+    }
+    match all.iter().find(|k| !given.contains(k)) {
+        Some(missing) => Err(InputError::new(
+            m.field(missing),
+            "missing",
+            format!("{how_many} of {} with {}", all.join(", "), given.join(", ")),
+        )),
+        None => Ok(true),
+    }
 }
 
 /// `[material]`: g_mpa or e_mpa (or both), and poisson; or the two bodies' g1_mpa, poisson1,
@@ -147,17 +160,8 @@ pub fn read(top: &mut Section) -> Result<MaterialSpec, InputError> {
 /// Viscoelastic bodies (CONTACT's M = 1 with FG 1 = FG 2, TC 1 = TC 2): both keys or neither. A
 /// ratio of 0 is elastic bodies.
 fn visco(m: &mut Section) -> Result<Option<crate::physics::material::Visco>, InputError> {
-    let all = names(&VISCO_KEYS);
-    let given: Vec<&str> = all.iter().copied().filter(|k| m.has(k)).collect();
-    if given.is_empty() {
+    if !together(m, &VISCO_KEYS, "both")? {
         return Ok(None);
-    }
-    if let Some(missing) = all.iter().find(|k| !given.contains(k)) {
-        return Err(InputError::new(
-            m.field(missing),
-            "missing",
-            format!("both of {} with {}", all.join(", "), given.join(", ")),
-        ));
     }
     let ratio = m.num("visco_ratio")?;
     let time_s = m.num("visco_time_s")?;
@@ -167,17 +171,8 @@ fn visco(m: &mut Section) -> Result<Option<crate::physics::material::Visco>, Inp
 /// An interface layer (CONTACT's M = 4: GG3, LAYTHK): both keys or neither. A thickness of 0 is
 /// no layer, as CONTACT's (`use_3bl` needs LAYTHK >= 1e-10).
 fn layer(m: &mut Section) -> Result<Option<crate::physics::material::Layer>, InputError> {
-    let all = names(&LAYER_KEYS);
-    let given: Vec<&str> = all.iter().copied().filter(|k| m.has(k)).collect();
-    if given.is_empty() {
+    if !together(m, &LAYER_KEYS, "both")? {
         return Ok(None);
-    }
-    if let Some(missing) = all.iter().find(|k| !given.contains(k)) {
-        return Err(InputError::new(
-            m.field(missing),
-            "missing",
-            format!("both of {} with {}", all.join(", "), given.join(", ")),
-        ));
     }
     let g_mpa = m.num("layer_g_mpa")?;
     let thickness_mm = m.num("layer_thickness_mm")?;
@@ -187,17 +182,8 @@ fn layer(m: &mut Section) -> Result<Option<crate::physics::material::Layer>, Inp
 /// `[material]` given per body (CONTACT's GG 1, 2 and POISS 1, 2): all four keys, none of
 /// g_mpa, e_mpa, poisson; the combined constants and Kalker's K follow ([`crate::physics::Material::from_bodies`]).
 fn bodies(m: &mut Section) -> Result<Option<MaterialSpec>, InputError> {
-    let all = names(&BODY_KEYS);
-    let given: Vec<&str> = all.iter().copied().filter(|k| m.has(k)).collect();
-    if given.is_empty() {
+    if !together(m, &BODY_KEYS, "all four")? {
         return Ok(None);
-    }
-    if let Some(missing) = all.iter().find(|k| !given.contains(k)) {
-        return Err(InputError::new(
-            m.field(missing),
-            "missing",
-            format!("all four of {} with {}", all.join(", "), given.join(", ")),
-        ));
     }
     if let Some(both) = ["g_mpa", "e_mpa", "poisson"].iter().find(|k| m.has(k)) {
         return Err(InputError::new(
