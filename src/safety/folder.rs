@@ -219,18 +219,32 @@ fn split(target: &Path) -> Result<(&Path, &str), FolderError> {
 /// `found` (the thing at `target`, or what was swapped out of it) may be replaced: absent, or a
 /// directory with the marker. Returns whether it exists.
 fn check_replaceable(found: &Path, target: &Path) -> Result<bool, FolderError> {
-    match fs::symlink_metadata(found) {
-        Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(false),
-        Err(e) => Err(io_error("inspecting", target)(e)),
-        Ok(m) if !m.is_dir() => Err(FolderError::NotADirectory { path: target.into() }),
-        Ok(_) => match fs::symlink_metadata(found.join(MARKER)) {
-            Ok(m) if m.is_file() => Ok(true),
+    use std::os::unix::fs::MetadataExt;
+    // Another writer may swap the folder between the looks at it and at its marker: a folder
+    // that changed identity meanwhile is looked at again.
+    for _ in 0..SWAP_RETRIES {
+        let m = match fs::symlink_metadata(found) {
+            Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(false),
+            Err(e) => return Err(io_error("inspecting", target)(e)),
+            Ok(m) if !m.is_dir() => return Err(FolderError::NotADirectory { path: target.into() }),
+            Ok(m) => m,
+        };
+        match fs::symlink_metadata(found.join(MARKER)) {
+            Ok(marker) if marker.is_file() => return Ok(true),
             // An empty directory holds nothing to lose (e.g. a golden/ made for a first bless).
-            _ if fs::read_dir(found).is_ok_and(|mut d| d.next().is_none()) => Ok(true),
-            _ => Err(FolderError::NotOurs { path: target.into() }),
-        },
+            _ if fs::read_dir(found).is_ok_and(|mut d| d.next().is_none()) => return Ok(true),
+            _ => {}
+        }
+        let same = fs::symlink_metadata(found).is_ok_and(|now| (now.dev(), now.ino()) == (m.dev(), m.ino()));
+        if same {
+            return Err(FolderError::NotOurs { path: target.into() });
+        }
     }
+    Err(FolderError::NotOurs { path: target.into() })
 }
+
+/// How often a folder swapped by another writer while being inspected is looked at again.
+const SWAP_RETRIES: usize = 100;
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Sibling {
