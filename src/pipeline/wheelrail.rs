@@ -133,7 +133,7 @@ pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Res
     let mut out = Vec::new();
     let mut own_normals = Vec::new();
     for model in models {
-        let forces = match own(model) {
+        let (forces, totals) = match own(model) {
             Some(method) => {
                 let theirs = |n: &NormalContact| patch_forces(n, model, mu, case);
                 let (normal, forces) = balanced(case, mu, &mut wheelrail::NormalCache::approximate(method), theirs)?;
@@ -141,20 +141,21 @@ pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Res
                     Some(f) => f,
                     None => patch_forces(&normal, model, mu, case)?,
                 };
+                let totals = totals(&normal, &forces, case);
                 own_normals.push((model.clone(), normal));
-                forces
+                (forces, totals)
             }
             None => {
                 let (normal, found) = shared.as_mut().expect("the shared normal contact is solved for this model");
-                match found.take_if(|_| model == EXACT) {
+                let forces = match found.take_if(|_| model == EXACT) {
                     Some(exact) => exact,
                     None if model == EXACT => exact_forces(normal, mu, case, &mut exact_cache)?,
                     None => patch_forces(normal, model, mu, case)?,
-                }
+                };
+                let totals = totals(normal, &forces, case);
+                (forces, totals)
             }
         };
-        let normal = own_normals.iter().find(|(m, _)| m == model).map(|(_, n)| n);
-        let totals = totals(normal.unwrap_or_else(|| &shared.as_ref().expect("shared normal").0), &forces, case);
         out.push((model.clone(), forces, totals));
     }
     let normal = match shared {
