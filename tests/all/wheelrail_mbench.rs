@@ -65,13 +65,16 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         assert!(sources.iter().any(|s| s.starts_with(scene)), "{scene}: {sources:?}");
     }
     // No benchmark case is a declared gap (right case 11: the test below); seven of the testbank's
-    // cases are, and the KPEC deck's KPEC cases 1-3, each bounded at its measured gap (tolerances.toml).
+    // cases are, the KPEC deck's KPEC cases 1-3 and the varying-friction deck's turned case 3, each
+    // bounded at its measured gap (tolerances.toml).
     let all_gaps: Vec<&&Finding> = ours.iter().filter(|f| f.quantity.ends_with(wheelrail_cases::GAP_SUFFIX)).collect();
     let testbank_gaps = [22, 27, 28, 29, 30, 31, 34];
     let in_testbank = |f: &&&Finding| f.scene.starts_with("testbank_") && testbank_gaps.contains(&f.step.unwrap_or(0));
     let kpec = |f: &&&Finding| f.scene.starts_with("mbench_a22_kpec_") && (1..=3).contains(&f.step.unwrap_or(0));
-    assert!(all_gaps.iter().all(|f| in_testbank(f) || kpec(f)), "{all_gaps:?}");
+    let varfric = |f: &&&Finding| f.scene == "mbench_a22_varfric_1" && f.step == Some(3);
+    assert!(all_gaps.iter().all(|f| in_testbank(f) || kpec(f) || varfric(f)), "{all_gaps:?}");
     assert!(all_gaps.iter().filter(|f| kpec(f)).all(|f| f.gated && f.passed()), "KPEC's gaps within their bounds");
+    assert!(all_gaps.iter().filter(|f| varfric(f)).all(|f| f.gated && f.passed()), "varfric case 3 within its bound");
     for case in testbank_gaps {
         let scene = format!("testbank_{case}");
         let of_case: Vec<_> = all_gaps.iter().filter(|f| f.scene == scene).collect();
@@ -93,6 +96,7 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         "site_b_off_design_left",
         "site_b_off_design_right",
         "site_b_varfric_right",
+        "mbench_a22_varfric_6",
         "site_b_two_patch_left",
         "site_b_two_patch_right",
     ] {

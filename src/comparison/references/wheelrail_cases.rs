@@ -87,7 +87,7 @@ const WORN_ROOT: &str = "the worn flange root's patch (blended and turned region
 /// "Agreement with CONTACT": each bounded at its measured gap by `tolerances.toml`). The
 /// benchmark's right case 11 (and case 9 of the KPEC deck), a gap until the rail was placed by its
 /// spline's gauge point and the gap mesh started at its lowest point, is reproduced.
-pub const KNOWN_GAPS: [KnownGap; 10] = [
+pub const KNOWN_GAPS: [KnownGap; 11] = [
     KnownGap {
         deck: "mbench_a22_kpec.inp",
         case: 1,
@@ -126,6 +126,11 @@ pub const KNOWN_GAPS: [KnownGap; 10] = [
         feature: "a guard rail against a wheel with measurement noise at the bottom of its flange: the second patch is not CONTACT's (FN 37 kN against 119 kN, YCP 0.33 mm off)",
     },
     KnownGap { deck: "testbank.inp", case: 34, feature: WORN_ROOT },
+    KnownGap {
+        deck: "mbench_a22_varfric.inp",
+        case: 3,
+        feature: "two patches 6.9 mm apart whose reference angles CONTACT turns towards each other (D_TURN = 9 mm), friction by contact angle (V = 1): every patch quantity within its digits, the totals FY(TR) and FY(WS) 0.10 N and 0.15 N off (1.9 and 2.9 half-units; patch 2's 8.4 kN FN is printed to 10 N); cause not found",
+    },
 ];
 
 /// KPEC's contact (B = 5) one element larger or smaller than CONTACT's (ANALYN's cases of the same
