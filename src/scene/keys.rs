@@ -76,9 +76,13 @@ impl Keys {
     }
 }
 
-/// A bound as docs and messages write it: plain, or with an exponent where that is at least two
-/// characters shorter (`1e4`, `1e-14`, but `1000`, `86400`, `0.001`).
+/// A bound as docs and messages write it: a simple multiple of π as such (`π/2`, `5π/6`, `2π`),
+/// else plain, or with an exponent where that is at least two characters shorter (`1e4`,
+/// `1e-14`, but `1000`, `86400`, `0.001`).
 pub fn bound(v: f64) -> String {
+    if let Some(pi) = of_pi(v) {
+        return pi;
+    }
     let plain = format!("{v}");
     let exp = format!("{v:e}");
     if exp.len() + 1 < plain.len() {
@@ -86,6 +90,26 @@ pub fn bound(v: f64) -> String {
     } else {
         plain
     }
+}
+
+/// `v` as a multiple of π with a small denominator (angles in degrees that are whole: 150° =
+/// `5π/6`, 6° = `π/30`), if it is one to 1e-15 relative.
+fn of_pi(v: f64) -> Option<String> {
+    const DENOMINATORS: [u32; 8] = [1, 2, 3, 4, 6, 12, 30, 180];
+    if v == 0.0 || !v.is_finite() {
+        return None;
+    }
+    DENOMINATORS.iter().find_map(|&den| {
+        let num = v * f64::from(den) / std::f64::consts::PI;
+        let whole = num.round();
+        let exact = whole != 0.0 && whole.abs() <= 720.0 && (num - whole).abs() <= 1e-15 * num.abs().max(1.0);
+        exact.then(|| {
+            let sign = if whole < 0.0 { "-" } else { "" };
+            let times = if whole.abs() == 1.0 { String::new() } else { format!("{}", whole.abs()) };
+            let over = if den == 1 { String::new() } else { format!("/{den}") };
+            format!("{sign}{times}π{over}")
+        })
+    })
 }
 
 /// `text` without Markdown's code marks (a message shows `"a"` for `` `"a"` ``).
@@ -190,6 +214,14 @@ mod tests {
         let got: Vec<String> =
             [1e4, 1e-14, 1000.0, 86400.0, 0.5, -1e4, 2e6, 1e-2, 1e-3].iter().map(|&v| bound(v)).collect();
         assert_eq!(got, ["1e4", "1e-14", "1000", "86400", "0.5", "-1e4", "2e6", "0.01", "0.001"]);
+    }
+
+    #[test]
+    fn multiples_of_pi_are_written_as_such() {
+        use std::f64::consts::PI;
+        let got: Vec<String> =
+            [PI, 2.0 * PI, -PI, PI / 2.0, 150.0 * PI / 180.0, 6.0 * PI / 180.0, 1.5, 3.5].map(bound).to_vec();
+        assert_eq!(got, ["π", "2π", "-π", "π/2", "5π/6", "π/30", "1.5", "3.5"]);
     }
 
     #[test]

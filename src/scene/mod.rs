@@ -27,6 +27,7 @@ pub mod table;
 pub mod top;
 pub mod wheelrail;
 pub mod wheelrail_cases;
+pub mod wheelrail_profile;
 pub mod wheelrail_section;
 
 use crate::error::InputError;
@@ -485,7 +486,12 @@ pub const KEY_TABLES: &[&keys::Keys] = &[
     &report::KEYS,
     &stress::KEYS,
     &external::KEYS,
+    &wheelrail::TOP_KEYS,
     &wheelrail_section::KEYS,
+    &wheelrail_profile::PROFILE_KEYS,
+    &wheelrail_profile::RAIL_KEYS,
+    &wheelrail_profile::WHEEL_KEYS,
+    &wheelrail::REPORT_KEYS,
 ];
 
 const CREEPAGE_LIMIT: Range = Range::new(-1.0, true, 1.0, true);

@@ -3,8 +3,8 @@
 //! (CONTACT's module 1). Read and checked here like every scene; the profiles are read by the
 //! wheel–rail stage, from the paths resolved here.
 
+use super::keys::{key, Absent, Allowed, KeySpec, Keys};
 use super::reader::{parse_toml, Range, Section};
-use super::wheelrail_cases::{ANGLE, LENGTH};
 use super::{is_valid_name, MaterialSpec, Origin};
 use crate::error::InputError;
 use std::path::{Path, PathBuf};
@@ -38,19 +38,6 @@ pub struct ProfileSpec {
     /// MAXOMIT: the largest fraction of a wheel profile left out where it folds back.
     pub max_omit: f64,
 }
-
-/// CONTACT's defaults of a profile's cleaning (`m_profile.f90`, `profile_init`): ZIGTHRS 150°,
-/// KINKHIGH 30°, KINKLOW KINKHIGH/5, KINKWID 2 mm, MAXOMIT 0.5.
-pub const PROFILE_DEFAULTS: [f64; 5] = [
-    150.0 * std::f64::consts::PI / 180.0,
-    30.0 * std::f64::consts::PI / 180.0,
-    6.0 * std::f64::consts::PI / 180.0,
-    2.0,
-    0.5,
-];
-
-/// The values of `mirror_z` and CONTACT's MIRRORZ for each.
-pub const MIRROR_Z: [(&str, i8); 3] = [("keep", -1), ("detect", 0), ("mirror", 1)];
 
 /// The rail's deviation from its design position and its velocity (CONTACT's DYRAIL, DZRAIL,
 /// DROLLR, VYRAIL, VZRAIL, VROLLR), in the side's own frame as CONTACT's input gives them.
@@ -210,10 +197,73 @@ pub struct WheelRailReport {
     pub patch_cases: Vec<u64>,
 }
 
-/// The report groups a wheel–rail scene may declare.
-pub const WHEELRAIL_GROUPS: [&str; 2] = ["wheelrail", "other"];
-/// The most cases drawn as patch maps.
-const MAX_PATCH_CASES: usize = 20;
+/// A table of its own (its keys in its own declaration).
+const fn table(name: &'static str) -> KeySpec {
+    key(name, "–", Allowed::Section, Absent::Text("absent"), "")
+}
+
+/// A wheel–rail scene's top level (`<!-- keys:wheelrail_top -->`).
+pub const TOP_KEYS: Keys = Keys {
+    id: "wheelrail_top",
+    owner: file!(),
+    keys: &[
+        key(
+            "name",
+            "–",
+            Allowed::Text("1 to 100 characters of `[a-z0-9_]`"),
+            Absent::Required,
+            r#"the scene's id and its result folder: `name = "mbench_a22_left"`"#,
+        ),
+        key(
+            "solvers",
+            "–",
+            Allowed::Text("a list of names of the built-in models (as a scene's `solvers`; no external models)"),
+            Absent::Text("`[\"contact\"]`"),
+            r#"the models run on every patch ([models.md](models.md)); `kpec` and `analyn` find their own patches and height: `solvers = ["contact", "fastsim", "kpec"]`"#,
+        ),
+        table("wheelrail"),
+        table("rail"),
+        table("wheel"),
+        table("material"),
+        table("cases"),
+        table("origin"),
+        table("report"),
+    ],
+};
+
+/// `[report]` of a wheel–rail scene (`<!-- keys:wheelrail_report -->`).
+pub const REPORT_KEYS: Keys = Keys {
+    id: "wheelrail_report",
+    owner: file!(),
+    keys: &[
+        key(
+            "group",
+            "–",
+            Allowed::Choice(&["wheelrail", "other"], ""),
+            Absent::Choice("other"),
+            r#"`"wheelrail"`: the scene is drawn in the section "Wheel–rail contact": `group = "wheelrail"`"#,
+        ),
+        key(
+            "contact_output",
+            "–",
+            Allowed::Text("a path relative to the scene file: CONTACT's printed module-1 output (`.out`, `.ref_out`)"),
+            Absent::Text("none"),
+            r#"CONTACT's results of the same wheelset, drawn as black markers at their own printed Y_WS: `contact_output = "../../reference/contact_wheelrail/examples/mbench_a22_left.ref_out"`"#,
+        ),
+        key(
+            "patch_cases",
+            "–",
+            Allowed::Numbers {
+                range: Range::new(0.0, true, 1e9, true),
+                min_len: 1,
+                max_len: 20,
+                note: "each a `contact_case` of the scene's cases",
+            },
+            Absent::Text("the first, middle and last case"),
+            r#"the cases drawn on the profiles and as patch maps: `patch_cases = [1, 11, 21]`"#,
+        ),
+    ],
+};
 
 /// The columns of the cases table: the leading ones, then `fz_n` or `z_mm`, then the rest.
 const LEAD: [&str; 2] = ["contact_case", "y_mm"];
@@ -276,8 +326,8 @@ impl WheelRailScene {
     }
 
     pub fn from_table(doc: &toml::Table, dir: &Path) -> Result<WheelRailScene, InputError> {
-        let mut top = Section::new("", doc);
-        let name = top.str("name", "a scene name of a-z, 0-9, _")?.to_string();
+        let mut top = Section::new("", doc).declare(&TOP_KEYS);
+        let name = top.text("name")?.to_string();
         if !is_valid_name(&name) {
             return Err(InputError::new(
                 "name",
@@ -285,7 +335,8 @@ impl WheelRailScene {
                 "a scene name of a-z, 0-9, _ (a folder name, at most 100 characters)",
             ));
         }
-        let solvers = top.opt_str_list("solvers", "model names")?.unwrap_or_else(|| vec!["contact".into()]);
+        let allowed = TOP_KEYS.get("solvers").map(|k| k.allowed.message()).unwrap_or_default();
+        let solvers = top.opt_str_list("solvers", &allowed)?.unwrap_or_else(|| vec!["contact".into()]);
         let super::wheelrail_section::WheelRailSection {
             side,
             mu,
@@ -307,8 +358,9 @@ impl WheelRailScene {
                 "[\"contact\"]: a shift ([wheelrail] motion = \"shift\") is solved by the exact theory alone",
             ));
         }
-        let (rail, placement, cant_rad, rail_deviation) = rail(&mut top, dir)?;
-        let (wheel, fbd, fbp, radius) = wheel(&mut top, dir)?;
+        let rail = super::wheelrail_profile::rail(&mut top, dir)?;
+        let wheel = super::wheelrail_profile::wheel(&mut top, dir)?;
+        let radius = wheel.nominal_radius_mm;
         let material = super::material::read(&mut top)?;
         if material.visco.is_some() {
             return Err(InputError::new(
@@ -346,14 +398,14 @@ impl WheelRailScene {
             name,
             solvers,
             side,
-            rail,
-            wheel,
-            placement,
-            cant_rad,
-            rail_deviation,
+            rail: rail.profile,
+            wheel: wheel.profile,
+            placement: rail.placement,
+            cant_rad: rail.cant_rad,
+            rail_deviation: rail.deviation,
             frictionless,
-            flange_back_distance_mm: fbd,
-            flange_back_position_mm: fbp,
+            flange_back_distance_mm: wheel.flange_back_distance_mm,
+            flange_back_position_mm: wheel.flange_back_position_mm,
             nominal_radius_mm: radius,
             mu,
             mu_variation,
@@ -392,92 +444,19 @@ fn check_origin(origin: Option<&Origin>, cases: &[CaseRow]) -> Result<(), InputE
     ))
 }
 
-/// A profile's keys: `profile` (path), `mirror_y`, `mirror_z`, `scale`, `smooth`,
-/// `smooth_weighted` and the cleaning's `zig_zag_rad`, `kink_high_rad`, `kink_low_rad`,
-/// `kink_width_mm`, `max_omit`.
-fn profile(s: &mut Section, dir: &Path) -> Result<ProfileSpec, InputError> {
-    let path = dir.join(
-        s.str("profile", "a profile file's path relative to the scene (.prr, .prw, .ban, .whl, or two columns y z)")?,
-    );
-    let names: Vec<&str> = MIRROR_Z.iter().map(|(n, _)| *n).collect();
-    let mirror_z =
-        s.opt_choice("mirror_z", &names)?.map_or(0, |n| MIRROR_Z.iter().find(|(m, _)| *m == n).map_or(0, |m| m.1));
-    let [zig, high, low, width, omit] = PROFILE_DEFAULTS;
-    let turn = Range::new(0.0, true, 2.0 * std::f64::consts::PI, true);
-    Ok(ProfileSpec {
-        path,
-        mirror_y: s.opt_bool("mirror_y")?.unwrap_or(false),
-        mirror_z,
-        scale: s.opt_f64("scale", Range::new(0.0, false, 1e4, true))?.unwrap_or(1.0),
-        smooth: s.opt_f64("smooth", Range::new(0.0, true, 1e10, true))?.unwrap_or(0.0),
-        smooth_weighted: s.opt_bool("smooth_weighted")?.unwrap_or(false),
-        zig_zag_rad: s.opt_f64("zig_zag_rad", turn)?.unwrap_or(zig),
-        kink_high_rad: s.opt_f64("kink_high_rad", turn)?.unwrap_or(high),
-        kink_low_rad: s.opt_f64("kink_low_rad", turn)?.unwrap_or(low),
-        kink_width_mm: s.opt_f64("kink_width_mm", Range::new(0.0, true, 1e3, true))?.unwrap_or(width),
-        max_omit: s.opt_f64("max_omit", Range::new(0.0, true, 1.0, true))?.unwrap_or(omit),
-    })
-}
-
-/// `[rail]`'s `deviation_y_mm`, `deviation_z_mm`, `deviation_roll_rad`, `deviation_vy_mm_s`,
-/// `deviation_vz_mm_s`, `deviation_vroll_rad_s` (each 0 when absent).
-fn rail_deviation(r: &mut Section) -> Result<RailDeviationSpec, InputError> {
-    let speed = Range::new(-1e7, true, 1e7, true);
-    let mut get = |key: &str, range: Range| r.opt_f64(key, range).map(|v| v.unwrap_or(0.0));
-    Ok(RailDeviationSpec {
-        position: [get("deviation_y_mm", LENGTH)?, get("deviation_z_mm", LENGTH)?, get("deviation_roll_rad", ANGLE)?],
-        velocity: [
-            get("deviation_vy_mm_s", speed)?,
-            get("deviation_vz_mm_s", speed)?,
-            get("deviation_vroll_rad_s", speed)?,
-        ],
-    })
-}
-
-/// `[rail]`: its profile, its placement (gauge point or absolute) and the cant.
-fn rail(top: &mut Section, dir: &Path) -> Result<(ProfileSpec, PlacementSpec, f64, RailDeviationSpec), InputError> {
-    let mut r = top.table("rail")?;
-    let spec = profile(&mut r, dir)?;
-    let placement = match r.opt_f64("gauge_height_mm", Range::new(0.0, false, 1e3, true))? {
-        Some(height_mm) => {
-            r.refuse("y_mm", "no y_mm with gauge_height_mm (the gauge point places the rail)")?;
-            PlacementSpec::Gauge { height_mm, width_mm: r.f64("gauge_width_mm", Range::new(0.0, false, 1e5, true))? }
-        }
-        None => {
-            PlacementSpec::Absolute { y_mm: r.f64("y_mm", LENGTH)?, z_mm: r.opt_f64("z_mm", LENGTH)?.unwrap_or(0.0) }
-        }
-    };
-    let cant_rad = r.opt_f64("cant_rad", ANGLE)?.unwrap_or(0.0);
-    let deviation = rail_deviation(&mut r)?;
-    r.finish()?;
-    Ok((spec, placement, cant_rad, deviation))
-}
-
-/// `[wheel]`: its profile and the wheelset's FBDIST, FBPOS, NOMRAD.
-fn wheel(top: &mut Section, dir: &Path) -> Result<(ProfileSpec, f64, f64, f64), InputError> {
-    let mut w = top.table("wheel")?;
-    let spec = profile(&mut w, dir)?;
-    let fbd = w.f64("flange_back_distance_mm", Range::new(0.0, false, 1e5, true))?;
-    let fbp = w.f64("flange_back_position_mm", LENGTH)?;
-    let radius = w.f64("nominal_radius_mm", Range::new(1.0, true, 1e5, true))?;
-    w.finish()?;
-    Ok((spec, fbd, fbp, radius))
-}
-
 /// `[report]` of a wheel–rail scene: `group` (`wheelrail` or `other`), `contact_output` (a path
 /// relative to the scene) and `patch_cases` (cases of the scene; default its first, middle and
 /// last).
 fn report(top: &mut Section, dir: &Path, cases: &[CaseRow]) -> Result<WheelRailReport, InputError> {
     let numbers: Vec<u64> = cases.iter().map(|c| c.contact_case).collect();
-    let Some(mut t) = top.opt_table("report")? else {
+    let Some(t) = top.opt_table("report")? else {
         return Ok(WheelRailReport::default());
     };
-    let in_section = t.opt_choice("group", &WHEELRAIL_GROUPS)? == Some("wheelrail");
-    let contact_output = t
-        .opt_str("contact_output", "a path relative to the scene file: CONTACT's printed output (.out, .ref_out)")?
-        .map(|p| dir.join(p));
+    let mut t = t.declare(&REPORT_KEYS);
+    let in_section = t.pick_or_default("group")? == "wheelrail";
+    let contact_output = t.opt_text("contact_output")?.map(|p| dir.join(p));
     let field = t.field("patch_cases");
-    let patch_cases = match t.opt_f64_list("patch_cases", Range::new(0.0, true, 1e9, true), MAX_PATCH_CASES)? {
+    let patch_cases = match t.opt_num_list("patch_cases")? {
         None => Vec::new(),
         Some(list) => list
             .iter()

@@ -5,9 +5,8 @@
 
 use crate::common::{self, root};
 use creepbench::import::contact::wheelrail_deck::{self, PitchInput, Vertical};
-use creepbench::scene::wheelrail::{
-    MotionSpec, PlacementSpec, SideSpec, VerticalSpec, WheelRailScene, PROFILE_DEFAULTS,
-};
+use creepbench::scene::wheelrail::{MotionSpec, PlacementSpec, SideSpec, VerticalSpec, WheelRailScene};
+use creepbench::scene::wheelrail_profile::PROFILE_DEFAULTS;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 

@@ -24,8 +24,9 @@ use super::{scene_name, SceneFiles};
 use crate::physics::material::combine_bodies;
 use crate::scene::wheelrail::{
     CaseRow, LongitudinalSpec, MotionSpec, MuBy, MuVariation, PlacementSpec, ProfileSpec, RailDeviationSpec, SideSpec,
-    VerticalSpec, WheelRailScene, PROFILE_DEFAULTS,
+    VerticalSpec, WheelRailScene,
 };
+use crate::scene::wheelrail_profile::PROFILE_DEFAULTS;
 use crate::scene::{MaterialSpec, Origin};
 use std::path::PathBuf;
 

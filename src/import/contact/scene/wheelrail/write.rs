@@ -7,8 +7,9 @@ use super::super::read_back::tempdir_for;
 use crate::error::InputError;
 use crate::scene::wheelrail::{
     case_columns, CaseRow, LongitudinalSpec, MotionSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec,
-    WheelRailScene, MIRROR_Z, PROFILE_DEFAULTS,
+    WheelRailScene,
 };
+use crate::scene::wheelrail_profile::{MIRROR_Z, PROFILE_DEFAULTS};
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 use toml::Value;
