@@ -26,6 +26,12 @@ pub trait Curve: Send + Sync + Debug {
     fn s_at_y(&self, _y_mm: f64) -> Option<f64> {
         None
     }
+    /// The points CONTACT computes a wheel's contact locus at (its `compute_wr_locus`: the
+    /// profile's uni-valued part, with the spline's slope at each), where the curve is a wheel
+    /// profile's spline; `None` for a closed form (its locus is exact).
+    fn locus_nodes(&self) -> Option<Vec<super::locus::Node>> {
+        None
+    }
 }
 
 /// A circular arc `z = z0 ± (R − √(R² − (y − yc)²))` over `|y − yc| ≤ half_width`: convex (a rail
@@ -111,6 +117,20 @@ impl Curve for super::profile::Profile {
     }
     fn s_at_y(&self, y_mm: f64) -> Option<f64> {
         self.point_at_y(y_mm).map(|p| p.s_mm)
+    }
+    fn locus_nodes(&self) -> Option<Vec<super::locus::Node>> {
+        if self.kind() != super::profile::ProfileKind::Wheel {
+            return None;
+        }
+        let range = self.uni_valued_range().ok()?;
+        let s = self.s_mm();
+        range
+            .map(|i| {
+                let p = self.point_at_s(s[i])?;
+                let dz_dy = p.dz_ds / p.dy_ds.min(-1e-6);
+                Some(super::locus::Node { s_mm: s[i], y_mm: p.y_mm, z_mm: p.z_mm, dz_dy })
+            })
+            .collect()
     }
 }
 

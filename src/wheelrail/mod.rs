@@ -12,6 +12,7 @@
 pub mod creepage;
 pub mod curve;
 pub mod friction;
+pub mod locus;
 pub mod patch;
 pub mod profile;
 pub mod rail;

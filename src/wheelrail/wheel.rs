@@ -5,6 +5,7 @@
 //! position y_w lies at radius `NOMRAD + z_w(y_w)` from the axle.
 
 use super::curve::Curve;
+use super::locus::LocusSpline;
 use nalgebra::{Point3, Rotation3, Vector3};
 
 /// FBDIST, FBPOS, NOMRAD [mm].
@@ -48,13 +49,16 @@ pub struct PlacedWheel<'a> {
     pub rotation: Rotation3<f64>,
     pub roll_rad: f64,
     pub yaw_rad: f64,
+    /// CONTACT's spline through the locus at the profile's points (a profile file; `None`: the
+    /// exact locus of a closed form).
+    pub locus_spline: Option<LocusSpline>,
 }
 
 impl<'a> PlacedWheel<'a> {
     pub fn place(curve: &'a dyn Curve, g: &WheelsetGeometry, pose: &Pose) -> PlacedWheel<'a> {
         let rotation = Rotation3::from_axis_angle(&Vector3::x_axis(), pose.roll_rad)
             * Rotation3::from_axis_angle(&Vector3::z_axis(), pose.yaw_rad);
-        PlacedWheel {
+        let mut wheel = PlacedWheel {
             curve,
             y_offset_mm: 0.5 * g.flange_back_distance_mm - g.flange_back_position_mm,
             nominal_radius_mm: g.nominal_radius_mm,
@@ -62,7 +66,11 @@ impl<'a> PlacedWheel<'a> {
             rotation,
             roll_rad: pose.roll_rad,
             yaw_rad: pose.yaw_rad,
-        }
+            locus_spline: None,
+        };
+        wheel.locus_spline =
+            LocusSpline::build(curve, &rotation, wheel.y_offset_mm, g.nominal_radius_mm, &|v| wheel.to_track(v));
+        wheel
     }
 
     /// The contact locus at profile position y_w: the point of that circle of the wheel whose
@@ -77,9 +85,13 @@ impl<'a> PlacedWheel<'a> {
         Some(self.to_track(Vector3::new(rho * sin_t, self.y_offset_mm + y_w_mm, rho * cos_t)))
     }
 
-    /// The locus point above track y: the profile position y_w whose locus point lies at y
+    /// The locus point above track y: on CONTACT's locus spline where the wheel is a profile
+    /// file ([`LocusSpline`]), else the profile position y_w whose exact locus point lies at y
     /// (secant steps from the unturned wheel's y_w), if the profile reaches it.
     pub fn locus_at_track_y(&self, y_mm: f64) -> Option<Point3<f64>> {
+        if let Some(spline) = &self.locus_spline {
+            return spline.at_y(y_mm);
+        }
         let lateral = |y_w: f64| self.locus(y_w).map(|p| p.y - y_mm);
         let [lo, hi] = self.curve.y_range_mm();
         let start = (y_mm - self.centre.y - self.y_offset_mm).clamp(lo, hi);
