@@ -58,21 +58,11 @@ impl HertzContact {
     /// `B/A = ((a/b)² E(e) − K(e)) / (K(e) − E(e))` fixes the eccentricity, Eq. 2.13 with
     /// `A = M/(π E*)` the size. K and E are the complete elliptic integrals of parameter `m = e²`.
     pub fn from_radii(radii: &Radii, fn_n: f64, material: &Material) -> Result<Self, HertzError> {
-        let curv_x = 0.5 / radii.r_wx_mm; // A (rail straight: 1/R_rx = 0)
-        let curv_y = 0.5 * (1.0 / radii.r_wy_mm + 1.0 / radii.r_ry_mm); // B
-        if !(curv_x > 0.0 && curv_y > 0.0 && fn_n.is_finite() && fn_n > 0.0) {
+        if !(fn_n.is_finite() && fn_n > 0.0) {
+            let (curv_x, curv_y) = HertzShape::curvatures(radii);
             return Err(HertzError::NotConvex { curv_x, curv_y });
         }
-        let e_star = material.e_star_mpa();
-        // Solve with the long axis along the direction of the smaller curvature, then map back.
-        let (small, large) = if curv_y >= curv_x { (curv_x, curv_y) } else { (curv_y, curv_x) };
-        let m = solve_eccentricity(large / small)?;
-        let (k_minus_e_over_m, _) = complete_ke_over_m(m);
-        // Eq. 2.13: A = p0 b (K − E) / (E* e² a²) with p0 = 3FN/(2πab)  ⇒  a³ = 3FN (K−E)/(2π E* e² A).
-        let long = (3.0 * fn_n * k_minus_e_over_m / (2.0 * PI * e_star * small)).cbrt();
-        let short = long * (1.0 - m).sqrt();
-        let (a_mm, b_mm) = if curv_y >= curv_x { (long, short) } else { (short, long) };
-        Ok(HertzContact { a_mm, b_mm, fn_n })
+        HertzShape::of(radii)?.at_load(fn_n, material)
     }
 
     /// Curvatures (A, B) [1/mm] of the undeformed distance `h = A x² + B y²` for which Hertz's
@@ -119,9 +109,69 @@ impl HertzContact {
     /// The ellipse of the radii whose approach is `pen_mm` (CONTACT IPOTCN = −1, −2 with N = 0):
     /// δ ∝ FN^(2/3) at fixed curvatures, so FN = (δ/δ₁)^(3/2) with δ₁ the approach under 1 N.
     pub fn from_radii_and_approach(radii: &Radii, pen_mm: f64, material: &Material) -> Result<Self, HertzError> {
-        let unit = HertzContact::from_radii(radii, 1.0, material)?;
-        let fn_n = (pen_mm / unit.approach_mm(material)).powf(1.5);
-        HertzContact::from_radii(radii, fn_n, material)
+        HertzShape::of(radii)?.at_approach(pen_mm, material)
+    }
+}
+
+/// The shape Hertz's theory gives a pair of curvatures (the eccentricity, thesis Eq. 2.19),
+/// found once and scaled to any load or approach ([`HertzContact::from_radii`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HertzShape {
+    /// Curvatures A, B [1/mm].
+    curv_x: f64,
+    curv_y: f64,
+    /// m = e² and (K − E)/m of it.
+    m: f64,
+    k_minus_e_over_m: f64,
+}
+
+impl HertzShape {
+    /// The shape of `radii`'s curvatures `A = 1/(2 R_wx)`, `B = (1/R_wy + 1/R_ry)/2`.
+    pub fn of(radii: &Radii) -> Result<Self, HertzError> {
+        let (curv_x, curv_y) = Self::curvatures(radii);
+        if !(curv_x > 0.0 && curv_y > 0.0) {
+            return Err(HertzError::NotConvex { curv_x, curv_y });
+        }
+        // Solve with the long axis along the direction of the smaller curvature, then map back.
+        let (small, large) = if curv_y >= curv_x { (curv_x, curv_y) } else { (curv_y, curv_x) };
+        let m = solve_eccentricity(large / small)?;
+        let (k_minus_e_over_m, _) = complete_ke_over_m(m);
+        Ok(HertzShape { curv_x, curv_y, m, k_minus_e_over_m })
+    }
+
+    /// A = 1/(2 R_wx) (the rail straight: 1/R_rx = 0), B = (1/R_wy + 1/R_ry)/2 [1/mm].
+    fn curvatures(radii: &Radii) -> (f64, f64) {
+        (0.5 / radii.r_wx_mm, 0.5 * (1.0 / radii.r_wy_mm + 1.0 / radii.r_ry_mm))
+    }
+
+    /// The ellipse under load `fn_n` [N] (thesis Eq. 2.13).
+    pub fn at_load(&self, fn_n: f64, material: &Material) -> Result<HertzContact, HertzError> {
+        let (curv_x, curv_y) = (self.curv_x, self.curv_y);
+        if !(fn_n.is_finite() && fn_n > 0.0) {
+            return Err(HertzError::NotConvex { curv_x, curv_y });
+        }
+        let e_star = material.e_star_mpa();
+        let small = if curv_y >= curv_x { curv_x } else { curv_y };
+        // Eq. 2.13: A = p0 b (K − E) / (E* e² a²) with p0 = 3FN/(2πab)  ⇒  a³ = 3FN (K−E)/(2π E* e² A).
+        let long = (3.0 * fn_n * self.k_minus_e_over_m / (2.0 * PI * e_star * small)).cbrt();
+        let short = long * (1.0 - self.m).sqrt();
+        let (a_mm, b_mm) = if curv_y >= curv_x { (long, short) } else { (short, long) };
+        Ok(HertzContact { a_mm, b_mm, fn_n })
+    }
+
+    /// The approach under 1 N [mm]: δ ∝ FN^(2/3) at fixed curvatures ([`HertzContact::approach_mm`]).
+    pub fn unit_approach_mm(&self, material: &Material) -> Result<f64, HertzError> {
+        Ok(self.at_load(1.0, material)?.approach_mm(material))
+    }
+
+    /// The ellipse whose approach is `pen_mm`: FN = (δ/δ₁)^(3/2) with δ₁ the approach under 1 N.
+    pub fn at_approach(&self, pen_mm: f64, material: &Material) -> Result<HertzContact, HertzError> {
+        self.at_unit_approach(pen_mm, self.unit_approach_mm(material)?, material)
+    }
+
+    /// [`Self::at_approach`] with δ₁ given ([`Self::unit_approach_mm`], found once per shape).
+    pub fn at_unit_approach(&self, pen_mm: f64, unit_mm: f64, material: &Material) -> Result<HertzContact, HertzError> {
+        self.at_load((pen_mm / unit_mm).powf(1.5), material)
     }
 }
 
@@ -153,12 +203,15 @@ fn solve_eccentricity(ratio: f64) -> Result<f64, HertzError> {
     }
     for _ in 0..200 {
         let mid = 0.5 * (lo + hi);
+        let last = (lo, hi);
         if f(mid) > 0.0 {
             hi = mid;
         } else {
             lo = mid;
         }
-        if hi - lo < 1e-16 {
+        // Where lo and hi are neighbouring doubles (m > 1/2) mid is one of them: a step that
+        // changes neither would repeat unchanged to the last one.
+        if hi - lo < 1e-16 || (lo, hi) == last {
             break;
         }
     }

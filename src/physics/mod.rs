@@ -23,7 +23,7 @@ pub use bound::project_to_bound;
 pub use friction::{FallingTerms, FrictionLaw, Memory, RowFriction};
 pub use geometry::{ContactGeometry, HertzEllipse, Planform};
 pub use grid::{Grid, LeadingEdge};
-pub use hertz::{HertzContact, Radii};
+pub use hertz::{HertzContact, HertzShape, Radii};
 pub use kalker::{
     CoefficientSource, Coefficients, Flexibilities, FlexibilityModel, LinearTheory, PatchFlexibility, SlopeReduction,
 };

@@ -316,12 +316,15 @@ fn scene_text(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase, conta
 }
 
 /// The patch as a module-3 scene on its own grid: its undeformed distance per element (CONTACT's
-/// element order), FN, creepages and rolling speed, one steady sweep point.
-fn field_scene(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> Result<Scene, InputError> {
+/// element order), FN, creepages and rolling speed, one steady sweep point; with `exact`, the
+/// patch's pressure the exact normal problem's (its geometry then takes it instead of solving
+/// the normal problem again at FN: the same pressure to the normal solver's tolerance).
+fn field_scene(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase, exact: bool) -> Result<Scene, InputError> {
     let g = &p.geometry.grid;
     let text = scene_text(p, model, mu, case, "a_mm = 1.0\nb_mm = 1.0", &format!("mx = {}\nmy = {}", g.mx, g.ms));
     let mut scene = Scene::from_toml(&text, Path::new("."))?;
-    scene.geometry = GeometrySpec::Field { h_mm: p.geometry.h_mm.clone(), blend: p.geometry.blend.clone() };
+    let (h_mm, blend) = (p.geometry.h_mm.clone(), p.geometry.blend.clone());
+    scene.geometry = GeometrySpec::Field { h_mm, blend, pn_mpa: exact.then(|| p.pn_mpa.clone()) };
     scene.extent = Extent::Edges {
         x_mm: [g.x0_mm, g.x0_mm + g.dx_mm * g.mx as f64],
         y_mm: [g.s0_mm, g.s0_mm + g.ds_mm * g.ms as f64],
@@ -350,11 +353,13 @@ fn ellipse_scene(
 /// The problem a model solves on a patch: the patch's own grid and undeformed distance where the
 /// model takes a contact given per element, else the equivalent ellipse.
 fn patch_problem(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> Result<Problem, Error> {
-    let refused = match resolve(&field_scene(p, model, mu, case)?) {
+    // The patches of a model with its own normal problem carry that problem's pressure.
+    let exact = solvers::builtin(model).is_none_or(|d| d.own_normal.is_none());
+    let refused = match resolve(&field_scene(p, model, mu, case, exact)?) {
         Ok(problem) => return Ok(problem),
         Err(e) => e,
     };
-    let exact = resolve(&field_scene(p, EXACT, mu, case)?)?;
+    let exact = resolve(&field_scene(p, EXACT, mu, case, exact)?)?;
     match solvers::builtin(model).map(|def| (def.check)(&exact)) {
         Some(Err(_)) => Ok(resolve(&ellipse_scene(&exact, p, model, mu, case)?)?),
         _ => Err(refused.into()),

@@ -170,7 +170,7 @@ mod tests {
             assert!(!normal.patches.is_empty());
             for (p, want) in normal.patches.iter().zip(&scenes) {
                 let got = patch_forces(p, scene.mu, &case, &mut cache).unwrap();
-                // The scenes' pressure is the normal problem solved again by force (to 1e-10).
+                // The scenes take the patch's pressure; the tangential solve here starts warm.
                 let close = |a: f64, b: f64, scale: f64| (a - b).abs() <= 1e-7 * scale;
                 assert!(close(got.fx_n, want.fx_n, p.fn_n), "case {number}: FX {} vs {}", got.fx_n, want.fx_n);
                 assert!(close(got.fs_n, want.fs_n, p.fn_n), "case {number}: FS {} vs {}", got.fs_n, want.fs_n);

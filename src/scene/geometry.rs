@@ -91,7 +91,7 @@ pub fn read(g: Section, dir: &Path, (mx, my): (usize, usize)) -> Result<Geometry
                     ),
                 ));
             }
-            GeometrySpec::Field { h_mm, blend: None }
+            GeometrySpec::Field { h_mm, blend: None, pn_mpa: None }
         }
     };
     g.finish()?;

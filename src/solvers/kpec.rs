@@ -8,11 +8,12 @@
 use super::fastsim_contact;
 use super::{grid_model, ModelDef, SolveError};
 use crate::error::InputError;
-use crate::physics::approximate::{self, Method};
+use crate::physics::approximate::{self, ApproximateContact, ApproximateError, Method};
 use crate::physics::geometry::element::equivalent_ellipse;
-use crate::physics::{HertzContact, Planform};
+use crate::physics::{Grid, HertzContact, Material, Planform};
 use crate::problem::{LocalContact, Problem};
 use crate::solvers::style::{Dash, Marker, ModelStyle, LIGHT};
+use std::cell::RefCell;
 
 /// KPEC with FASTSIM.
 pub const KPEC: ModelDef = ModelDef {
@@ -61,7 +62,7 @@ fn method<const M: u8>() -> Method {
 /// The approximate contact at `fn_n` as FASTSIM's contact.
 fn contact<const M: u8>(p: &Problem, fn_n: f64) -> Result<LocalContact, SolveError> {
     let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
-    let c = approximate::at_load(method::<M>(), &p.grid, &h, fn_n, &p.material)?;
+    let c = at_load(method::<M>(), p, &h, fn_n)?;
     let ellipse = equivalent_ellipse(&p.grid, &c.pn_mpa, fn_n).unwrap_or(HertzContact { fn_n, ..p.hertz() });
     Ok(p.local_contact_of(Planform::of_pressure(&p.grid, ellipse, c.pn_mpa)))
 }
@@ -74,7 +75,7 @@ fn check<const M: u8>(p: &Problem) -> Result<(), InputError> {
     loads.dedup();
     for fn_n in loads {
         let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
-        approximate::at_load(method::<M>(), &p.grid, &h, fn_n, &p.material).map_err(|e| {
+        at_load(method::<M>(), p, &h, fn_n).map_err(|e| {
             InputError::new(
                 "contact.fn_n",
                 fn_n,
@@ -83,4 +84,36 @@ fn check<const M: u8>(p: &Problem) -> Result<(), InputError> {
         })?;
     }
     Ok(())
+}
+
+/// What [`approximate::at_load`] found last on this thread, with its inputs.
+struct Found {
+    method: Method,
+    grid: Grid,
+    material: Material,
+    h_mm: Vec<u64>,
+    fn_n: u64,
+    contact: ApproximateContact,
+}
+
+thread_local! {
+    static LAST: RefCell<Option<Found>> = const { RefCell::new(None) };
+}
+
+/// [`approximate::at_load`] on `p`'s grid and material, the last answer kept: the check and the
+/// model's contact ask for the same load of one scene in turn (the inputs compared bit for bit,
+/// so the answer is the one computed afresh).
+fn at_load(method: Method, p: &Problem, h_mm: &[f64], fn_n: f64) -> Result<ApproximateContact, ApproximateError> {
+    let bits: Vec<u64> = h_mm.iter().map(|h| h.to_bits()).collect();
+    let same = |f: &Found| {
+        f.method == method && f.fn_n == fn_n.to_bits() && f.h_mm == bits && f.grid == p.grid && f.material == p.material
+    };
+    if let Some(c) = LAST.with_borrow(|last| last.as_ref().filter(|f| same(f)).map(|f| f.contact.clone())) {
+        return Ok(c);
+    }
+    let contact = approximate::at_load(method, &p.grid, h_mm, fn_n, &p.material)?;
+    let found = Found { method, grid: p.grid.clone(), material: p.material, h_mm: bits, fn_n: fn_n.to_bits(), contact };
+    let c = found.contact.clone();
+    LAST.set(Some(found));
+    Ok(c)
 }

@@ -7,7 +7,7 @@
 //! point), its half-length `√(δ_loc/(α A))` and Hertz's peak of the local ellipse, a
 //! semi-elliptic pressure along x.
 
-use super::{first_min, hertz_of_curvatures, ApproximateError};
+use super::{first_min, shape_of_curvatures, ApproximateError};
 use crate::physics::{Grid, Material};
 use std::f64::consts::PI;
 
@@ -42,7 +42,8 @@ pub fn pressure(grid: &Grid, gap: &[f64], material: &Material) -> Result<Vec<f64
             (j - 1, j, j + 1)
         };
         let b1 = (0.5 * (at(i_min, jp) - 2.0 * at(i_min, jc) + at(i_min, jm)) / grid.dy_mm.powi(2)).max(MIN_CURVATURE);
-        let Some(whole) = hertz_of_curvatures(a1, b1, pentot, material) else { continue };
+        let Some((shape, unit_mm)) = shape_of_curvatures(a1, b1, material) else { continue };
+        let Ok(whole) = shape.at_unit_approach(pentot, unit_mm, material) else { continue };
         let alpha1 = pentot / (a1 * whole.a_mm * whole.a_mm);
         let beta1 = pentot / (b1 * whole.b_mm * whole.b_mm);
         let pen_loc = pentot - beta1 * g_y;
@@ -50,7 +51,7 @@ pub fn pressure(grid: &Grid, gap: &[f64], material: &Material) -> Result<Vec<f64
             continue;
         }
         let half = (pen_loc / (alpha1 * a1)).sqrt();
-        let Some(local) = hertz_of_curvatures(a1, b1, pen_loc, material) else { continue };
+        let Ok(local) = shape.at_unit_approach(pen_loc, unit_mm, material) else { continue };
         let p_max = 1.5 * local.fn_n / (PI * local.a_mm * local.b_mm);
         let x_lc = grid.x_mm[i_min];
         for i in 0..mx {

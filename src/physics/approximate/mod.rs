@@ -7,7 +7,7 @@
 pub mod analyn;
 pub mod kpec;
 
-use super::{Grid, HertzContact, Material, Radii};
+use super::{Grid, HertzContact, HertzShape, Material, Radii};
 
 /// Which approximation.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -42,8 +42,19 @@ pub struct ApproximateContact {
 /// Hertz's semi-axes (a, b) [mm] and load [N] of curvatures `a1`, `b1` [1/mm] at approach
 /// `pen_mm` (CONTACT's `hzcalc3d` with IPOTCN = −1, N = 0): radii 1/(2A), 1/(2B).
 pub fn hertz_of_curvatures(a1: f64, b1: f64, pen_mm: f64, material: &Material) -> Option<HertzContact> {
-    let radii = Radii { r_wx_mm: 0.5 / a1, r_wy_mm: 0.5 / b1, r_ry_mm: f64::INFINITY };
-    HertzContact::from_radii_and_approach(&radii, pen_mm, material).ok()
+    HertzContact::from_radii_and_approach(&radii_of_curvatures(a1, b1), pen_mm, material).ok()
+}
+
+/// Hertz's shape of curvatures `a1`, `b1` [1/mm] and its approach under 1 N [mm]
+/// ([`hertz_of_curvatures`] at any approach from them: the eccentricity found once).
+pub fn shape_of_curvatures(a1: f64, b1: f64, material: &Material) -> Option<(HertzShape, f64)> {
+    let shape = HertzShape::of(&radii_of_curvatures(a1, b1)).ok()?;
+    Some((shape, shape.unit_approach_mm(material).ok()?))
+}
+
+/// Radii 1/(2A), 1/(2B), the rail straight across.
+fn radii_of_curvatures(a1: f64, b1: f64) -> Radii {
+    Radii { r_wx_mm: 0.5 / a1, r_wy_mm: 0.5 / b1, r_ry_mm: f64::INFINITY }
 }
 
 /// The pressure of `method` at approach `pen_mm` on the undeformed distance `h_mm` (grid order).

@@ -35,7 +35,11 @@ pub struct ElementGeometry {
     h_mm: Vec<f64>,
     grid: Grid,
     nominal: NormalContact,
-    solver: Mutex<NormalSolver>,
+    /// The normal solver, made at the first load solved here (none while the nominal load's
+    /// pressure was handed in solved).
+    solver: Mutex<Option<NormalSolver>>,
+    material: Material,
+    blend: Option<Blend>,
     /// Normal contacts solved so far (a history revisits its loads), by load.
     cache: Mutex<Vec<Arc<NormalContact>>>,
 }
@@ -58,12 +62,33 @@ impl ElementGeometry {
         fn_n: f64,
         blend: Option<Blend>,
     ) -> Result<ElementGeometry, ContactError> {
-        let kernel = Kernel::new(grid.mx, grid.my, grid.dx_mm, grid.dy_mm, material.g_mpa, material.poisson, 0.0)?;
-        let mut solver = NormalSolver::new(&kernel)?;
-        solver.set_blend(blend)?;
-        let nominal = solve(&mut solver, &grid, &h_mm, fn_n)?;
+        Self::with_pressure(kind, h_mm, grid, material, fn_n, blend, None)
+    }
+
+    /// [`Self::new`], with `solved` the normal pressure at `fn_n` already solved elsewhere (grid
+    /// order: a wheel–rail patch's) taken instead of solving it again.
+    pub fn with_pressure(
+        kind: &'static str,
+        h_mm: Vec<f64>,
+        grid: Grid,
+        material: &Material,
+        fn_n: f64,
+        blend: Option<Blend>,
+        solved: Option<Vec<f64>>,
+    ) -> Result<ElementGeometry, ContactError> {
+        let mut solver = None;
+        let nominal = match solved {
+            Some(pn_mpa) => contact_of(&grid, fn_n, pn_mpa)?,
+            None => {
+                let mut s = normal_solver(&grid, material, blend.clone())?;
+                let nominal = solve(&mut s, &grid, &h_mm, fn_n)?;
+                solver = Some(s);
+                nominal
+            }
+        };
         let cache = Mutex::new(vec![Arc::new(nominal.clone())]);
-        Ok(ElementGeometry { kind, h_mm, grid, nominal, solver: Mutex::new(solver), cache })
+        let (solver, material) = (Mutex::new(solver), *material);
+        Ok(ElementGeometry { kind, h_mm, grid, nominal, solver, material, blend, cache })
     }
 
     /// The normal contact at load `fn_n` [N] (solved once per load).
@@ -73,7 +98,11 @@ impl ElementGeometry {
             return Ok(Arc::clone(c));
         }
         let mut solver = self.solver.lock().unwrap_or_else(|e| e.into_inner());
-        let c = Arc::new(solve(&mut solver, &self.grid, &self.h_mm, fn_n)?);
+        if solver.is_none() {
+            *solver = Some(normal_solver(&self.grid, &self.material, self.blend.clone())?);
+        }
+        let solver = solver.as_mut().expect("made above");
+        let c = Arc::new(solve(solver, &self.grid, &self.h_mm, fn_n)?);
         cache.push(Arc::clone(&c));
         Ok(c)
     }
@@ -97,16 +126,30 @@ impl ElementGeometry {
     }
 }
 
+/// The normal solver of `grid`'s elements of `material`, with `blend`.
+fn normal_solver(grid: &Grid, material: &Material, blend: Option<Blend>) -> Result<NormalSolver, ContactError> {
+    let kernel = Kernel::new(grid.mx, grid.my, grid.dx_mm, grid.dy_mm, material.g_mpa, material.poisson, 0.0)?;
+    let mut solver = NormalSolver::new(&kernel)?;
+    solver.set_blend(blend)?;
+    Ok(solver)
+}
+
 /// The normal problem at `fn_n`, converged, with its equivalent ellipse.
 fn solve(solver: &mut NormalSolver, grid: &Grid, h_mm: &[f64], fn_n: f64) -> Result<NormalContact, ContactError> {
     let s = solver.solve(h_mm, fn_n, &NormalParams::default())?;
     if !s.converged {
         return Err(ContactError::NonFinite("normal problem (not converged)"));
     }
-    let total: f64 = s.pn_mpa.iter().sum();
-    let edge: f64 = s.pn_mpa.iter().enumerate().filter(|(k, _)| grid.on_edge(*k)).map(|(_, p)| p).sum();
-    let ellipse = equivalent_ellipse(grid, &s.pn_mpa, fn_n).ok_or(ContactError::NoContact)?;
-    Ok(NormalContact { fn_n, pn_mpa: s.pn_mpa, ellipse, edge_load_share: edge / total })
+    contact_of(grid, fn_n, s.pn_mpa)
+}
+
+/// The normal contact of pressure `pn_mpa` (grid order) at `fn_n`: its equivalent ellipse and
+/// the share of the load on the grid's edge.
+fn contact_of(grid: &Grid, fn_n: f64, pn_mpa: Vec<f64>) -> Result<NormalContact, ContactError> {
+    let total: f64 = pn_mpa.iter().sum();
+    let edge: f64 = pn_mpa.iter().enumerate().filter(|(k, _)| grid.on_edge(*k)).map(|(_, p)| p).sum();
+    let ellipse = equivalent_ellipse(grid, &pn_mpa, fn_n).ok_or(ContactError::NoContact)?;
+    Ok(NormalContact { fn_n, pn_mpa, ellipse, edge_load_share: edge / total })
 }
 
 /// Kik & Piotrowski's equivalent ellipse of the loaded elements: the contact's area A and the

@@ -31,8 +31,10 @@ pub enum GeometrySpec {
     Profile { a1_per_mm: f64, profile: Profile },
     /// h per element (`[geometry] kind = "field"`), in CONTACT's element order: index
     /// `(iy − 1) mx + (ix − 1)`, ix along CONTACT's x; with the sub-patches of CONTACT's blending
-    /// approach (same order) where a wheel–rail patch has them (never from a scene's keys).
-    Field { h_mm: Vec<f64>, blend: Option<Blend> },
+    /// approach (same order) where a wheel–rail patch has them (never from a scene's keys); with
+    /// the normal pressure [MPa] at the scene's FN (same order) where a wheel–rail patch has
+    /// solved it (never from a scene's keys: the geometry takes it instead of solving again).
+    Field { h_mm: Vec<f64>, blend: Option<Blend>, pn_mpa: Option<Vec<f64>> },
 }
 
 /// The potential contact as a scene gives it (`[grid]`).
@@ -76,7 +78,7 @@ impl GeometrySpec {
             }
             (_, Extent::Edges { x_mm: [x0, x1], y_mm }) if self.is_elementwise() => {
                 let grid = Grid::from_edges(mx, my, [-x1, -x0], y_mm);
-                let mut blend_in_grid = None;
+                let (mut blend_in_grid, mut solved) = (None, None);
                 let (kind, h_mm) = match self {
                     GeometrySpec::Profile { a1_per_mm, profile } => {
                         if !profile.covers(&grid) {
@@ -93,20 +95,22 @@ impl GeometrySpec {
                         }
                         ("profile", profile.undeformed_distance_mm(&grid, *a1_per_mm))
                     }
-                    GeometrySpec::Field { h_mm, blend } => {
+                    GeometrySpec::Field { h_mm, blend, pn_mpa } => {
                         blend_in_grid = blend.as_ref().map(|b| b.reordered(&contact_order(&grid)));
+                        solved = pn_mpa.as_ref().map(|p| field_in_grid_order(&grid, p));
                         ("field", field_in_grid_order(&grid, h_mm))
                     }
                     _ => unreachable!("is_elementwise"),
                 };
                 let geometry =
-                    ElementGeometry::new(kind, h_mm, grid.clone(), material, fn_n, blend_in_grid).map_err(|e| {
-                        InputError::new(
-                            "contact.fn_n",
-                            fn_n,
-                            format!("a load the {kind} geometry's normal problem can carry on this grid ({e})"),
-                        )
-                    })?;
+                    ElementGeometry::with_pressure(kind, h_mm, grid.clone(), material, fn_n, blend_in_grid, solved)
+                        .map_err(|e| {
+                            InputError::new(
+                                "contact.fn_n",
+                                fn_n,
+                                format!("a load the {kind} geometry's normal problem can carry on this grid ({e})"),
+                            )
+                        })?;
                 return Ok((Arc::new(geometry), grid));
             }
             (GeometrySpec::SemiAxes { .. } | GeometrySpec::Radii(_), Extent::Edges { x_mm: [x0, x1], y_mm }) => {

@@ -321,7 +321,8 @@ impl Profile {
     fn point_on(&self, i: usize, s_mm: f64) -> ProfilePoint {
         let ([y, y1, y2], [z, z1, z2]) = self.0.spline.eval_on(i, s_mm);
         let numer = y1 * z2 - z1 * y2;
-        let denom = (y1 * y1 + z1 * z1).powf(1.5);
+        let speed2 = y1 * y1 + z1 * z1;
+        let denom = speed2 * speed2.sqrt();
         let curvature_per_mm = if denom.abs() < 1e-6 { 1e6_f64.copysign(numer) } else { numer / denom };
         ProfilePoint { s_mm, y_mm: y, z_mm: z, dy_ds: y1, dz_ds: z1, curvature_per_mm }
     }
