@@ -6,7 +6,7 @@ use super::reader::Section;
 use crate::error::InputError;
 
 /// A table of its own (its keys in its own declaration).
-const fn table(name: &'static str) -> super::keys::KeySpec {
+pub(super) const fn table(name: &'static str) -> super::keys::KeySpec {
     key(name, "–", Allowed::Section, Absent::Text("absent"), "")
 }
 

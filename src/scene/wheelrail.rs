@@ -3,7 +3,8 @@
 //! (CONTACT's module 1). Read and checked here like every scene; the profiles are read by the
 //! wheel–rail stage, from the paths resolved here.
 
-use super::keys::{key, Absent, Allowed, KeySpec, Keys};
+use super::keys::{key, Absent, Allowed, Keys};
+use super::top::table;
 use super::reader::{parse_toml, Range, Section};
 use super::{is_valid_name, MaterialSpec, Origin};
 use crate::error::InputError;
@@ -195,11 +196,6 @@ pub struct WheelRailReport {
     /// The cases (`contact_case`) whose patches are drawn as maps and on the profiles, as given
     /// (none: [`WheelRailScene::patch_cases`]'s default).
     pub patch_cases: Vec<u64>,
-}
-
-/// A table of its own (its keys in its own declaration).
-const fn table(name: &'static str) -> KeySpec {
-    key(name, "–", Allowed::Section, Absent::Text("absent"), "")
 }
 
 /// A wheel–rail scene's top level (`<!-- keys:wheelrail_top -->`).
