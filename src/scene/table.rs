@@ -444,7 +444,7 @@ fn in_range(name: &str, v: f64) -> bool {
         "v_mm_s" => super::SPEED_LIMIT.contains(v),
         "mu" => super::MU_LIMIT.contains(v),
         "courant" => COURANT_LIMIT.contains(v),
-        "pen_mm" => v.is_finite() && v >= 0.0 && v <= PEN_MAX_MM,
+        "pen_mm" => (0.0..=PEN_MAX_MM).contains(&v),
         "chi_deg" => (0.0..360.0).contains(&v),
         c if H_COLUMNS.contains(&c) => v.is_finite(),
         _ => v.is_finite() && v > 0.0, // fn_n
