@@ -47,9 +47,21 @@ pub struct Layer {
     pub g_mpa: f64,
     /// The layer's thickness h3 [mm] (CONTACT's LAYTHK).
     pub thickness_mm: f64,
+    /// The layer's yield limit τ_c0 [MPa] where it flows, elastic-perfectly plastic (CONTACT's
+    /// TAU_C0 with K_TAU = 0); `None`: elastic.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub yield_mpa: Option<f64>,
 }
 
 impl Layer {
+    /// The traction bound's pressure with the layer's yield limit: min(p, τ_c0/μ) per element, so
+    /// that μ times it is CONTACT's bound min(μ pn, τ_c0) (`tangcg`, `gdsteady`: K_TAU = 0); `None`
+    /// without a yield limit. Elements below the limit keep p bit for bit.
+    pub fn capped_pressure(&self, mu: f64, pn_mpa: &[f64]) -> Option<Vec<f64>> {
+        let cap = self.yield_mpa? / mu;
+        Some(pn_mpa.iter().map(|&p| if p > cap { cap } else { p }).collect())
+    }
+
     /// The layer's tangential flexibility h3 / G3 [mm/MPa] (CONTACT's FLX of M = 4, `m_sinput.f90`).
     pub fn flexibility_mm_per_mpa(&self) -> f64 {
         self.thickness_mm / self.g_mpa

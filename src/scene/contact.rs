@@ -56,7 +56,7 @@ pub const KEYS: Keys = Keys {
         key(
             "pen_mm",
             "mm",
-            Allowed::Number(Range::new(0.0, false, super::table::PEN_MAX_MM, true), ""),
+            Allowed::Number(Range::new(0.0, true, super::table::PEN_MAX_MM, true), ""),
             Absent::Text("–"),
             r#"the **approach prescribed** at every step or sweep point in place of the load (CONTACT's N = 0, PEN), as a table's `pen_mm` column (below): FN is an outcome, `fn_n` then only sizes the grid and sets the nominal ellipse; not with a table that has its own `fn_n` or `pen_mm` column; only the exact model takes it: `pen_mm = 0.05`"#,
         ),

@@ -86,6 +86,19 @@ pub const LAYER_KEYS: Keys = Keys {
     ],
 };
 
+/// `[material]`'s interface layer's plasticity (`<!-- keys:material_plastic -->`), with the layer.
+pub const PLASTIC_KEYS: Keys = Keys {
+    id: "material_plastic",
+    owner: file!(),
+    keys: &[key(
+        "layer_yield_mpa",
+        "MPa",
+        Allowed::Number(Range::new(0.0, false, 1e10, false), ""),
+        Absent::Text("– (an elastic layer)"),
+        r#"the layer's yield limit τ_c0 (CONTACT's TAU_C0 with K_TAU = 0: elastic-perfectly plastic), with `layer_g_mpa` and `layer_thickness_mm` > 0: the traction bound is min(μ pn, τ_c0); exact model only, not with falling friction or dissimilar bodies: `layer_yield_mpa = 560.0`"#,
+    )],
+};
+
 /// `[material]`'s viscoelastic bodies (`<!-- keys:material_visco -->`), given together.
 pub const VISCO_KEYS: Keys = Keys {
     id: "material_visco",
@@ -129,7 +142,13 @@ fn together(m: &Section, keys: &Keys, how_many: &str) -> Result<bool, InputError
 /// `[material]`: g_mpa or e_mpa (or both), and poisson; or the two bodies' g1_mpa, poisson1,
 /// g2_mpa, poisson2 (dissimilar bodies, [`bodies`]).
 pub fn read(top: &mut Section) -> Result<MaterialSpec, InputError> {
-    let mut m = top.table("material")?.declare(&KEYS).declare(&BODY_KEYS).declare(&LAYER_KEYS).declare(&VISCO_KEYS);
+    let mut m = top
+        .table("material")?
+        .declare(&KEYS)
+        .declare(&BODY_KEYS)
+        .declare(&LAYER_KEYS)
+        .declare(&PLASTIC_KEYS)
+        .declare(&VISCO_KEYS);
     let layer = layer(&mut m)?;
     let visco = visco(&mut m)?;
     if let (Some(_), Some(_)) = (layer, visco) {
@@ -169,14 +188,30 @@ fn visco(m: &mut Section) -> Result<Option<crate::physics::material::Visco>, Inp
 }
 
 /// An interface layer (CONTACT's M = 4: GG3, LAYTHK): both keys or neither. A thickness of 0 is
-/// no layer, as CONTACT's (`use_3bl` needs LAYTHK >= 1e-10).
+/// no layer, as CONTACT's (`use_3bl` needs LAYTHK >= 1e-10); its yield limit (TAU_C0) only with
+/// a layer.
 fn layer(m: &mut Section) -> Result<Option<crate::physics::material::Layer>, InputError> {
+    let yield_mpa = m.opt_num("layer_yield_mpa")?;
     if !together(m, &LAYER_KEYS, "both")? {
-        return Ok(None);
+        return match yield_mpa {
+            Some(v) => Err(InputError::new(
+                m.field("layer_yield_mpa"),
+                v,
+                "a yield limit with its layer: layer_g_mpa and layer_thickness_mm > 0",
+            )),
+            None => Ok(None),
+        };
     }
     let g_mpa = m.num("layer_g_mpa")?;
     let thickness_mm = m.num("layer_thickness_mm")?;
-    Ok((thickness_mm > 0.0).then_some(crate::physics::material::Layer { g_mpa, thickness_mm }))
+    if let (Some(v), true) = (yield_mpa, thickness_mm <= 0.0) {
+        return Err(InputError::new(
+            m.field("layer_yield_mpa"),
+            v,
+            "a yield limit with a layer of thickness > 0 (the plasticity of a body's surface without a layer, CONTACT's LAYTHK = 0, is not carried)",
+        ));
+    }
+    Ok((thickness_mm > 0.0).then_some(crate::physics::material::Layer { g_mpa, thickness_mm, yield_mpa }))
 }
 
 /// `[material]` given per body (CONTACT's GG 1, 2 and POISS 1, 2): all four keys, none of

@@ -473,6 +473,7 @@ pub const KEY_TABLES: &[&keys::Keys] = &[
     &material::KEYS,
     &material::BODY_KEYS,
     &material::LAYER_KEYS,
+    &material::PLASTIC_KEYS,
     &material::VISCO_KEYS,
     &grid::KEYS,
     &rolling::KEYS,

@@ -444,7 +444,7 @@ fn in_range(name: &str, v: f64) -> bool {
         "v_mm_s" => super::SPEED_LIMIT.contains(v),
         "mu" => super::MU_LIMIT.contains(v),
         "courant" => COURANT_LIMIT.contains(v),
-        "pen_mm" => v.is_finite() && v > 0.0 && v <= PEN_MAX_MM,
+        "pen_mm" => (0.0..=PEN_MAX_MM).contains(&v),
         "chi_deg" => (0.0..360.0).contains(&v),
         c if H_COLUMNS.contains(&c) => v.is_finite(),
         _ => v.is_finite() && v > 0.0, // fn_n
@@ -461,7 +461,9 @@ fn allowed(name: &str) -> &'static str {
         "v_mm_s" => "a rolling speed in (0, 1e6] mm/s",
         "mu" => "a coefficient of friction in (0, 1000] (as [contact] mu)",
         "courant" => "a Courant number in (0, 100] (the step's rolling distance dq = courant dx)",
-        "pen_mm" => "a finite approach in (0, 10] mm",
+        "pen_mm" => {
+            "a finite approach in [0, 10] mm (0: where the undeformed distance given per element is negative somewhere)"
+        }
         "chi_deg" => "a rolling direction in [0, 360) degrees",
         c if H_COLUMNS.contains(&c) => "a finite coefficient",
         _ => "a finite number > 0",

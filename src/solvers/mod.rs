@@ -231,6 +231,15 @@ fn check_model(problem: &Problem, m: &ModelDef, shifts: bool) -> Result<(), Inpu
             format!("an interface layer only with the exact model ({}), which adds its flexibility to the half-spaces' influence (leave {} out of this scene)", contact::NAME, m.name),
         ));
     }
+    if let Some(v) = problem.material.layer.and_then(|l| l.yield_mpa) {
+        if problem.material.coupled() || problem.friction.is_falling() {
+            return Err(InputError::new(
+                "material.layer_yield_mpa",
+                format!("a yield limit {v} MPa with dissimilar bodies or falling friction"),
+                "a layer's yield limit with quasi-identical bodies (K = 0) and one friction coefficient: the bound min(mu pn, tau_c0) is set with the pressure, which the outer iteration of dissimilar bodies and the falling law's fixed point set anew",
+            ));
+        }
+    }
     if problem.material.visco.is_some() {
         check_visco(problem, m)?;
     }

@@ -98,7 +98,7 @@ fn an_approach_with_a_force_column_or_a_model_without_it_is_refused() {
     assert!(e.contains("columns fn_n, pen_mm") && e.contains("both given") && e.contains("exactly one"), "{e}");
     let negative = run_table("approach_negative", "t_s,cx,pen_mm\n0.002,0.001,-0.1\n", "[\"contact\"]");
     let e = negative.unwrap_err();
-    assert!(e.contains("column pen_mm") && e.contains("(0, 10] mm"), "{e}");
+    assert!(e.contains("column pen_mm") && e.contains("[0, 10] mm"), "{e}");
     let uba = run_table("approach_uba", "t_s,cx,pen_mm\n0.002,0.001,0.1\n", "[\"contact\", \"uba\"]");
     let e = uba.unwrap_err();
     assert!(e.contains("\"uba\" with the approach prescribed") && e.contains("contact"), "{e}");

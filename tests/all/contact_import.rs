@@ -364,7 +364,7 @@ fn tractcurv_imports_the_coulomb_creep_curve_as_one_sweep() {
     );
     assert_eq!(imported.scenes.len(), 4);
     let p = scene_of(&imported, "tractcurv_31");
-    let layer = creepbench::physics::material::Layer { g_mpa: 8200.0, thickness_mm: 1.25 };
+    let layer = creepbench::physics::material::Layer { g_mpa: 8200.0, thickness_mm: 1.25, yield_mpa: None };
     assert_eq!((p.material.layer, p.material.g_mpa), (Some(layer), 82000.0));
     assert!(p.friction.is_falling());
     assert_eq!(p.loading.rows().count(), 30);
@@ -655,7 +655,7 @@ fn an_absent_falling_term_takes_contacts_smallest_sabsh() {
     }
 }
 
-/// The interface layer's refusals: plasticity in the layer (TAU_C0 > 0) and transient rolling
+/// The interface layer's refusals: a layer that hardens or softens (TAU_C0 > 0, K_TAU != 0) and transient rolling
 /// (T = 2, where CONTACT does not carry the layer's displacement with the material); the elastic
 /// layer in steady rolling imports, a LAYTHK below 1e-10 as no layer (CONTACT's `use_3bl`).
 #[test]
@@ -666,11 +666,18 @@ fn an_elasto_plastic_layer_and_a_layer_in_transient_rolling_are_refused() {
         )
     };
     let import = |tang: &str, layer: &str| import_text("layer.inp", "layer", &deck(tang, layer)).unwrap();
+    // Elastic-perfectly plastic (K_TAU = 0) imports as the layer's yield limit; a layer that
+    // hardens (K_TAU != 0) is refused.
     let plastic = import("3", "8200. 1.25 200. 0.");
-    assert!(!plastic.statuses[0].supported());
-    let why = &plastic.statuses[0].refused;
+    assert!(plastic.statuses[0].supported(), "{:?}", plastic.statuses[0]);
+    assert!(plastic.scenes[0].files[0].1.contains("layer_yield_mpa = 200.0"), "{}", plastic.scenes[0].files[0].1);
+    let hardening = import("3", "8200. 1.25 200. 435.");
+    assert!(!hardening.statuses[0].supported());
+    let why = &hardening.statuses[0].refused;
     assert!(
-        why.iter().any(|r| r.starts_with("M = 4, TAU_C0 = 200, K_TAU = 0: an elasto-plastic interface layer")),
+        why.iter().any(|r| r.starts_with(
+            "M = 4, TAU_C0 = 200, K_TAU = 435, LAYTHK = 1.25, L = 0: an elasto-plastic interface layer that hardens"
+        )),
         "{why:?}"
     );
     let transient = import("2", "8200. 1.25 0. 0.");

@@ -109,6 +109,30 @@ fn bentall_johnson_rolling_reproduces_contact_and_the_free_rolling_creepage() {
     }
 }
 
+/// bentall.inp case 1 (CKSI = 0.00052 prescribed, O = 1) printed no totals, only an input
+/// warning; case 2 solves the same problem for FX = 0 starting from it (I = 1), and its Newton
+/// iteration's first line prints the FX/FSTAT/FN of case 1's CKSI (`0, NR_Fx, Cksi, Fxk:
+/// 5.200E-04 6.018E-02`, after two Gauss–Seidel sweeps from case 1's tractions): the imported
+/// case 1 gives it within one unit of the last digit.
+#[test]
+fn bentall_case_1_gives_the_force_case_2_starts_from() {
+    let dir = tempdir("dissimilar_bentall_1");
+    import(&dir, "bentall.inp");
+    let (h, rows) = run(&dir, "bentall_1");
+    assert_eq!(rows.len(), 1);
+    assert_eq!(rows[0][col(&h, "cx")], 0.00052);
+    let out = std::fs::read_to_string(root().join("reference/contact_public/examples/bentall.ref_out")).unwrap();
+    let case2 = &out[out.find(" Case     2").unwrap()..];
+    let line = case2.lines().find(|l| l.trim_start().starts_with("0, NR_Fx,")).unwrap();
+    let nums: Vec<f64> = line.split_whitespace().filter_map(|w| w.parse().ok()).collect();
+    let (cksi, fxk) = (nums[0], nums[1]);
+    assert_eq!((cksi, fxk), (5.2e-4, 6.018e-2), "{line}");
+    // This project's sign is CONTACT's negated (tractions on body 2; the rows of bentall_2..4 and
+    // spence35 compare so): FX/(FSTAT FN) = -fx/fn / mu.
+    let ours = -rows[0][col(&h, "fx_over_fn")] / rows[0][col(&h, "mu")];
+    assert!((ours - fxk).abs() <= 1e-5, "FX/FSTAT/FN {ours} against case 2's first iterate {fxk}");
+}
+
 /// `[material]` per body: the combined constants and K as CONTACT combines them; the four keys
 /// together or not at all, never with the combined ones; the simplified models refused.
 #[test]

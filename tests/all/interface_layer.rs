@@ -75,3 +75,94 @@ fn the_layer_exports_as_m4_and_imports_back_and_transient_rolling_is_refused() {
     assert!(err.contains("material.layer_g_mpa") && err.contains("transient rolling"), "{err}");
     assert!(!dir.join("back").exists());
 }
+
+/// The layer's yield limit (CONTACT's TAU_C0 with K_TAU = 0, issue 46): read with the layer only,
+/// refused with falling friction, and exported as TAU_C0 and imported back.
+#[test]
+fn the_yield_limit_is_read_with_its_layer_and_exports_as_tau_c0() {
+    let steady = "kind = \"sweep\"\nover = \"cx\"\nat = [0.001, 0.002]";
+    let plastic = format!("{LAYER}\nlayer_yield_mpa = 560.0");
+    let p = crate::common::problem(&text(&plastic, "[\"contact\"]", steady));
+    assert_eq!(p.material.layer.and_then(|l| l.yield_mpa), Some(560.0));
+    let simulate = ["simulate", "s.toml", "--out", "out"];
+    let alone = "g_mpa = 82000.0\npoisson = 0.28\nlayer_yield_mpa = 560.0";
+    let (code, err, dir) = run("yield_alone", &text(alone, "[\"contact\"]", steady), &simulate);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("material.layer_yield_mpa") && err.contains("with its layer"), "{err}");
+    assert!(!dir.join("out").exists());
+    let thin = plastic.replace("1.25", "0.0");
+    let (code, err, _) = run("yield_thin", &text(&thin, "[\"contact\"]", steady), &simulate);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("material.layer_yield_mpa") && err.contains("thickness > 0"), "{err}");
+    let (code, err, _) =
+        run("yield_range", &text(&plastic.replace("560.0", "-1.0"), "[\"contact\"]", steady), &simulate);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("material.layer_yield_mpa"), "{err}");
+    let (code, err, dir) = run(
+        "yield_export",
+        &text(&plastic, "[\"contact\"]", steady),
+        &["export", "contact", "s.toml", "--out", "back"],
+    );
+    assert_eq!(code, Some(0), "{err}");
+    let deck = std::fs::read_to_string(dir.join("back/layer.inp")).unwrap();
+    assert!(deck.contains("  8200.0   1.25   560.0   0.0    GG3, LAYTHK, TAU_C0, K_TAU"), "{deck}");
+    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(&dir)
+        .args(["import", "contact", "back/layer.inp", "--out", "again"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let again = std::fs::read_to_string(dir.join("again/layer_1.toml")).unwrap();
+    assert!(again.contains("layer_yield_mpa = 560.0"), "{again}");
+}
+
+/// plastic_3bl.inp's magnetite series (cases 2-14, one element of 1 mm² under FN = 900 N, shifted
+/// by -0.035, -0.035, -0.030 then -0.050 mm; GG3 = 176.63, LAYTHK = 0.020, TAU_C0 = 560, K_TAU = 0)
+/// against the closed form of one element: the shifts taken up in series by the half-spaces
+/// (their flexibility L from case 1: 0.001 mm at the printed FX = 84.97 N) and the layer
+/// (h3/G3), |FX| = min(Σ shift / (L + h3/G3), τ_c0 · 1 mm²); and against CONTACT's printed FX.
+#[test]
+fn plastic_3bl_magnetite_yields_at_tau_c0() {
+    let dir = tempdir("plastic_3bl");
+    let deck = crate::common::root().join("reference/contact_public/examples/plastic_3bl.inp");
+    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(&dir)
+        .args(["import", "contact", deck.to_str().unwrap(), "--out", "scenes", "--supported-only"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let fx_n = |name: &str| -> Vec<f64> {
+        let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
+            .current_dir(&dir)
+            .args(["simulate", &format!("scenes/{name}.toml"), "--out", "out"])
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let text = std::fs::read_to_string(dir.join("out").join(name).join("contact.csv")).unwrap();
+        let mut lines = text.lines();
+        let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+        let (fx, fn_) =
+            (head.iter().position(|h| *h == "fx_over_fn").unwrap(), head.iter().position(|h| *h == "fn_n").unwrap());
+        lines
+            .map(|l| l.split(',').map(|v| v.parse::<f64>().unwrap()).collect::<Vec<f64>>())
+            .map(|r| -r[fx] * r[fn_])
+            .collect()
+    };
+    let case1 = fx_n("plastic_3bl_1");
+    // Case 1 (no layer): CONTACT prints FX = 84.97 N at 0.001 mm.
+    assert!((case1[0] - 84.97).abs() <= 0.005, "{case1:?}");
+    let l_mm_per_n = 0.001 / case1[0] + 0.020 / 176.63;
+    let ours = fx_n("plastic_3bl_2");
+    assert_eq!(ours.len(), 13);
+    let shifts = [-0.035, -0.035, -0.030].into_iter().chain([-0.050; 10]);
+    let (mut total, mut plastic) = (0.0, 0.0);
+    for (k, (shift, fx)) in shifts.zip(&ours).enumerate() {
+        total += -shift;
+        // Elastic while the layer holds; past τ_c0 the excess flows plastically and stays.
+        let closed = ((total - plastic) / l_mm_per_n).min(560.0);
+        plastic = total - closed * l_mm_per_n;
+        assert!((fx - closed).abs() <= 1e-9 * 560.0, "step {}: FX {fx} against {closed}", k + 1);
+    }
+    // CONTACT (plastic_3bl.ref_out): FX = 280.0 (case 2), then 560.0 (cases 3-14).
+    assert!((ours[0] - 280.0).abs() <= 0.05 && ours[1..].iter().all(|f| (f - 560.0).abs() <= 0.05), "{ours:?}");
+}

@@ -8,7 +8,9 @@
 //! the former; with the approach prescribed (N = 0) the FN found with the printed FN
 //! (`fn_in_rounding`). A creepage or shift solved for that CONTACT prints at its noise level (zero
 //! by symmetry) is measured against the noise floor instead (`cx_at_noise_floor`,
-//! `cy_at_noise_floor`, [`natural_scale`]). Each difference is measured in
+//! `cy_at_noise_floor`, [`natural_scale`]), and a net force printed with digits finer than CONTACT's
+//! iteration tolerance near zero against that floor (`fx_over_fn_at_noise_floor`, [`FX_NOISE`]). Each
+//! difference is measured in
 //! half-units of the printed value's last digit (its rounding bound, [`Printed::half_unit`]), so
 //! that one rule per quantity holds for every case: `tolerances.toml` states k per quantity.
 
@@ -48,6 +50,17 @@ pub const CY_NOISE: &str = "cy_at_noise_floor";
 /// The noise floor of a solved creepage or shift as a fraction of its natural scale (the rule
 /// in `tolerances.toml` says why this number).
 pub const NOISE_FRACTION: f64 = 1e-6;
+/// A net force that CONTACT prints near zero with digits finer than its own iteration tolerance
+/// (its EPS of the tangential tractions, 1e-6 in the public decks: a net force is known to about
+/// EPS μ FN; CONTACT itself prints |F| < 0.5 EPS μ FN as 0, `filt_sml`): fx/fn and fy/fn printed
+/// other than 0, below [`NEAR_ZERO`] floors, are measured in half-units of the floor
+/// [`NOISE_FRACTION`] × μ (a net traction of a grid's asymmetry, examples/spence35.inp cases 2-11:
+/// FX/FSTAT/FN = −9.713E-05 to −7.827E-07).
+pub const FX_NOISE: &str = "fx_over_fn_at_noise_floor";
+pub const FY_NOISE: &str = "fy_over_fn_at_noise_floor";
+/// How many floors from zero a printed net force counts as near zero (1e-4 μ FN: a hundred
+/// times CONTACT's tolerance, where its four printed digits are at least 20 times finer).
+pub const NEAR_ZERO: f64 = 100.0;
 
 /// The natural scale of a creepage or shift solved for: μ FN/(G ā) [mm] for a shift (Mindlin's
 /// shift at full slip is 3 μ FN (2 − ν)/(16 G a), Johnson 1985 §7.1) and μ FN/(G ā²) for a
@@ -73,6 +86,23 @@ fn at_noise_floor(
 ) -> (&'static str, Printed) {
     let floor = NOISE_FRACTION * scale;
     if printed.value.abs() < floor && printed.half_unit < 0.5 * floor {
+        (noise, Printed { value: printed.value, half_unit: 0.5 * floor })
+    } else {
+        (quantity, printed)
+    }
+}
+
+/// A printed fx/fn or fy/fn as the gate compares it: at the floor where it is near zero (within
+/// [`NEAR_ZERO`] floors, not 0) and printed with digits finer than the floor (then `noise` names
+/// the quantity), else as printed.
+fn force_at_floor(
+    printed: Printed,
+    floor: f64,
+    quantity: &'static str,
+    noise: &'static str,
+) -> (&'static str, Printed) {
+    let near_zero = printed.value != 0.0 && printed.value.abs() < NEAR_ZERO * floor;
+    if floor.is_finite() && near_zero && printed.half_unit < 0.5 * floor {
         (noise, Printed { value: printed.value, half_unit: 0.5 * floor })
     } else {
         (quantity, printed)
@@ -173,11 +203,13 @@ impl PublicCases {
         let mut out = Vec::new();
         for (k, (r, t)) in rows.iter().zip(&cases).enumerate() {
             let (step, case) = (r.sample.step, first + k);
-            let d = |quantity, ours, printed| RowDiff { step, case, quantity, ours, printed };
-            out.push(d(FX, r.fx_over_fn, printed_ratio(t, t.x, t.fx_n, r.sample.mu)));
-            out.push(d(FY, r.fy_over_fn, printed_ratio(t, t.y, t.fy_n, r.sample.mu)));
+            let d = |(quantity, printed), ours| RowDiff { step, case, quantity, ours, printed };
+            let (sc, mu) = (&scene.scene, r.sample.mu);
+            let floor = NOISE_FRACTION * mu;
+            out.push(d(force_at_floor(printed_ratio(t, t.x, t.fx_n, mu), floor, FX, FX_NOISE), r.fx_over_fn));
+            out.push(d(force_at_floor(printed_ratio(t, t.y, t.fy_n, mu), floor, FY, FY_NOISE), r.fy_over_fn));
             if by_approach.contains(&step) {
-                out.push(d(FN_Q, r.sample.fn_n, t.fn_n));
+                out.push(d((FN_Q, t.fn_n), r.sample.fn_n));
             }
             for (quantity, noise, ours, printed) in [(CX, CX_NOISE, r.sample.cx, t.x), (CY, CY_NOISE, r.sample.cy, t.y)]
             {
@@ -186,13 +218,11 @@ impl PublicCases {
                     Tangential::SolvedShiftMm(c) => (c, true),
                     _ => continue,
                 };
-                let sc = &scene.scene;
-                let scale = natural_scale(sc.a_mm, sc.b_mm, sc.g_mpa, r.sample.mu, r.sample.fn_n, shift);
-                let (quantity, c) = at_noise_floor(c, scale, quantity, noise);
-                out.push(d(quantity, ours, c));
+                let scale = natural_scale(sc.a_mm, sc.b_mm, sc.g_mpa, mu, r.sample.fn_n, shift);
+                out.push(d(at_noise_floor(c, scale, quantity, noise), ours));
             }
             if let Some(m) = mz.as_ref().and_then(|m| m.get(&step)) {
-                out.push(d(MZ_Q, *m, t.mz_nmm));
+                out.push(d((MZ_Q, t.mz_nmm), *m));
             }
         }
         Ok(out)
@@ -238,7 +268,14 @@ fn printed_ratio(t: &Totals, tangential: Tangential, force: Printed, mu: f64) ->
 /// in the note.
 fn finding(ctx: &Ctx, d: &RowDiff) -> Finding {
     let (p, case) = (d.printed, d.case);
-    let note = if [CX_NOISE, CY_NOISE].contains(&d.quantity) {
+    let note = if [FX_NOISE, FY_NOISE].contains(&d.quantity) {
+        format!(
+            "case {case}: ours {:.9e}, printed {:e} finer than CONTACT's iteration tolerance: compared within the floor {:e} ({NOISE_FRACTION:e} of its scale)",
+            d.ours,
+            p.value,
+            2.0 * p.half_unit
+        )
+    } else if [CX_NOISE, CY_NOISE].contains(&d.quantity) {
         format!(
             "case {case}: ours {:.9e}, printed {:e} at CONTACT's noise level: compared within the noise floor {:e} ({NOISE_FRACTION:e} of its natural scale)",
             d.ours,
@@ -262,7 +299,7 @@ impl ReferenceSet for PublicCases {
             let ctx = Ctx { scene: &ours.name, solver, against: AGAINST, rules };
             match self.row_diffs(ours, h) {
                 Ok(diffs) => {
-                    for q in [FX, FY, MZ_Q, CX, CY, CX_NOISE, CY_NOISE, FN_Q] {
+                    for q in [FX, FY, MZ_Q, FX_NOISE, FY_NOISE, CX, CY, CX_NOISE, CY_NOISE, FN_Q] {
                         let fs = diffs.iter().filter(|d| d.quantity == q).map(|d| finding(&ctx, d));
                         out.extend(fs.max_by(|a, b| a.severity().total_cmp(&b.severity())));
                     }

@@ -253,8 +253,11 @@ struct Loaded {
     fn_n: f64,
     pn: Vec<f64>,
     /// With μ per grid row, the tangential solvers' bound pressure p μ_j/μ_max
-    /// ([`crate::physics::RowFriction::bound_pressure`]); `None`: `pn` itself.
+    /// ([`crate::physics::RowFriction::bound_pressure`]), with a layer's yield limit capped at
+    /// τ_c0/μ ([`crate::physics::material::Layer::capped_pressure`]); `None`: `pn` itself.
     bound_pn: Option<Vec<f64>>,
+    /// The μ a layer's yield limit was divided by (a new μ loads again); `None` without one.
+    yield_mu: Option<f64>,
     /// FN over the element area: the sum of a solved pressure; of an imposed one (CONTACT B = 2,
     /// 3) the prescribed FN's, as CONTACT's force ratios take FNTRUE (`m_solvpt.f90` line 586),
     /// not the sum of the pressure sampled at the element centres.
@@ -820,7 +823,8 @@ impl Stepper for Contact<'_> {
         let p = self.p;
         let pressure = p.normal.of_row(at.step == 0 && p.loading.start().is_some());
         let key = (at.fn_n, at.pen_mm, at.h_coefficients, pressure);
-        if self.loaded.as_ref().is_some_and(|l| l.key == key) {
+        let yield_mu = p.material.layer.and_then(|l| l.yield_mpa).map(|_| at.mu);
+        if self.loaded.as_ref().is_some_and(|l| l.key == key && l.yield_mu == yield_mu) {
             return Ok(());
         }
         let (pn_mpa, fn_n) = match at.pen_mm {
@@ -843,6 +847,9 @@ impl Stepper for Contact<'_> {
         // μ per grid row: every solve takes μ_max on the pressure scaled per row (rows keep their
         // place under the mirror of CHI = 180°, which flips x only).
         let bound_pn = p.friction_rows.as_ref().map(|rows| rows.bound_pressure(p.grid.mx, &pn_mpa));
+        // A layer's yield limit: the bound min(μ pn, τ_c0) (CONTACT's TAU_C0 with K_TAU = 0).
+        let capped = p.material.layer.and_then(|l| l.capped_pressure(at.mu, bound_pn.as_deref().unwrap_or(&pn_mpa)));
+        let bound_pn = capped.or(bound_pn);
         let solvers =
             std::iter::once(&mut self.tangential).chain(self.steady_dx.as_mut()).chain(self.shift_start.as_mut());
         let solvers = solvers.chain(self.rolled.iter_mut().map(|(_, solver)| solver));
@@ -867,7 +874,7 @@ impl Stepper for Contact<'_> {
         if self.loaded.is_some() && p.rolling.motion == Motion::Shift {
             self.outer.from_rest();
         }
-        self.loaded = Some(Loaded { key, fn_n, pn: pn_mpa, bound_pn, pn_sum, pn_max, slope, shift_slope });
+        self.loaded = Some(Loaded { key, fn_n, pn: pn_mpa, bound_pn, yield_mu, pn_sum, pn_max, slope, shift_slope });
         self.older = None;
         Ok(())
     }
