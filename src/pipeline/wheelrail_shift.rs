@@ -50,13 +50,17 @@ fn left_for_next(result: &CaseResult, previous: Option<&Previous>) -> Previous {
             let (px_mpa, py_mpa) = exact
                 .and_then(|f| f[k].shift_tractions_mpa.clone())
                 .unwrap_or_else(|| (vec![0.0; g.len()], vec![0.0; g.len()]));
+            // CONTACT's igv, the contact the next case widens its grid to: the contact of the old
+            // patch this one continued, on this one's grid (copied with the previous tractions
+            // after this case's widening); none where it started from rest.
+            let inherited = shift::inherited(&links[k], previous);
             OldPatch {
                 extent: p.geometry.extent,
                 grid: IndexBox::of_grid(g),
                 px_mpa,
                 py_mpa,
-                contact: shift::contact_box(g, &p.pn_mpa),
-                contact_before: shift::inherited(&links[k], previous).and_then(|o| o.contact),
+                contact: shift::contact_of(&p.pn_mpa),
+                contact_before: inherited.map(|o| shift::contact_on_grid(&o, g)),
             }
         })
         .collect();

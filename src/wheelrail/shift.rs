@@ -30,6 +30,15 @@ impl IndexBox {
         }
     }
 
+    /// The elements both hold, if any.
+    pub fn intersect(self, o: IndexBox) -> Option<IndexBox> {
+        let b = IndexBox {
+            x: [self.x[0].max(o.x[0]), self.x[1].min(o.x[1])],
+            s: [self.s[0].max(o.s[0]), self.s[1].min(o.s[1])],
+        };
+        (b.x[0] <= b.x[1] && b.s[0] <= b.s[1]).then_some(b)
+    }
+
     /// The box's first element alone.
     fn first(self) -> IndexBox {
         IndexBox { x: [self.x[0]; 2], s: [self.s[0]; 2] }
@@ -63,11 +72,12 @@ pub struct OldPatch {
     /// Tractions per element of `grid` [MPa], CONTACT's element order, the exact solver's frame.
     pub px_mpa: Vec<f64>,
     pub py_mpa: Vec<f64>,
-    /// The box of the elements in contact at its last step (CONTACT's `igs`); `None`: none.
-    pub contact: Option<IndexBox>,
-    /// The box of the contact at the step before its last (CONTACT's `igv` when the next step
-    /// widens its grid); `None` after a step from rest.
-    pub contact_before: Option<IndexBox>,
+    /// The elements of `grid` in contact at its last step (CONTACT's `igs`; CONTACT's order).
+    pub contact: Vec<bool>,
+    /// Those in contact at the step before its last, where `grid` holds them (CONTACT's `igv`
+    /// when the next step widens its grid: a field on the patch's grid, cut with it); `None`
+    /// after a step from rest.
+    pub contact_before: Option<Vec<bool>>,
 }
 
 impl OldPatch {
@@ -78,6 +88,11 @@ impl OldPatch {
         }
         let k = self.grid.index(i, j);
         (self.px_mpa[k], self.py_mpa[k])
+    }
+
+    /// Its contact on the elements of `b` (none off its grid).
+    pub fn contact_on(&self, b: IndexBox) -> Vec<bool> {
+        mask_on(self.grid, &self.contact, b)
     }
 
     /// The tractions on the elements of `b` (zero off this patch's grid).
@@ -93,6 +108,28 @@ impl OldPatch {
         }
         (px, py)
     }
+}
+
+/// A mask on the elements of `from` on those of `to` (false where `from` does not reach).
+fn mask_on(from: IndexBox, mask: &[bool], to: IndexBox) -> Vec<bool> {
+    let mut out = Vec::with_capacity(to.mx() * to.ms());
+    for j in to.s[0]..=to.s[1] {
+        for i in to.x[0]..=to.x[1] {
+            out.push(from.contains(i, j) && mask[from.index(i, j)]);
+        }
+    }
+    out
+}
+
+/// The box of the elements of `b` a mask holds, if any.
+fn mask_box(b: IndexBox, mask: &[bool]) -> Option<IndexBox> {
+    let mut out: Option<IndexBox> = None;
+    for (k, _) in mask.iter().enumerate().filter(|(_, &m)| m) {
+        let (i, j) = (b.x[0] + (k % b.mx()) as i64, b.s[0] + (k / b.mx()) as i64);
+        let e = IndexBox { x: [i; 2], s: [j; 2] };
+        out = Some(out.map_or(e, |o| o.union(e)));
+    }
+    out
 }
 
 /// The patches of the case before (their order: the case's patches, then those kept for later).
@@ -134,8 +171,10 @@ pub fn inherited(links: &[usize], previous: &Previous) -> Option<OldPatch> {
         for (p, a) in px.iter_mut().zip(&ax).chain(py.iter_mut().zip(&ay)) {
             *p += a;
         }
-        let unite = |a: Option<IndexBox>, b: Option<IndexBox>| match (a, b) {
-            (Some(a), Some(b)) => Some(a.union(b)),
+        let or = |a: Vec<bool>, b: Vec<bool>| a.iter().zip(&b).map(|(x, y)| *x || *y).collect::<Vec<bool>>();
+        let before = |o: &OldPatch| o.contact_before.as_ref().map(|m| mask_on(o.grid, m, grid));
+        let contact_before = match (before(&tot), before(add)) {
+            (Some(a), Some(b)) => Some(or(a, b)),
             (a, b) => a.or(b),
         };
         tot = OldPatch {
@@ -143,8 +182,8 @@ pub fn inherited(links: &[usize], previous: &Previous) -> Option<OldPatch> {
             grid,
             px_mpa: px,
             py_mpa: py,
-            contact: unite(tot.contact, add.contact),
-            contact_before: unite(tot.contact_before, add.contact_before),
+            contact: or(tot.contact_on(grid), add.contact_on(grid)),
+            contact_before,
         };
     }
     Some(tot)
@@ -155,8 +194,8 @@ pub fn inherited(links: &[usize], previous: &Previous) -> Option<OldPatch> {
 /// height given; at trial heights after the first, `iterated`, its last contact), or of `old`'s
 /// grid's first element where that is empty (after a step from rest).
 pub fn widened(grid: &PatchGrid, old: &OldPatch, iterated: bool) -> PatchGrid {
-    let igv = if iterated { old.contact } else { old.contact_before };
-    let tight = igv.unwrap_or_else(|| old.grid.first());
+    let igv = if iterated { Some(&old.contact) } else { old.contact_before.as_ref() };
+    let tight = igv.and_then(|m| mask_box(old.grid, m)).unwrap_or_else(|| old.grid.first());
     let b = IndexBox::of_grid(grid).union(tight);
     let [ax, as_] = grid.anchor_mm;
     PatchGrid {
@@ -175,16 +214,15 @@ pub fn on_grid(old: &OldPatch, grid: &PatchGrid) -> (Vec<f64>, Vec<f64>) {
     old.on_box(IndexBox::of_grid(grid))
 }
 
-/// The box of the elements where `pn_mpa` (CONTACT's order on `grid`) is positive.
-pub fn contact_box(grid: &PatchGrid, pn_mpa: &[f64]) -> Option<IndexBox> {
-    let [i0, j0] = grid.first_index;
-    let mut b: Option<IndexBox> = None;
-    for (k, _) in pn_mpa.iter().enumerate().filter(|(_, &p)| p > 0.0) {
-        let (i, j) = (i0 + (k % grid.mx) as i64, j0 + (k / grid.mx) as i64);
-        let e = IndexBox { x: [i; 2], s: [j; 2] };
-        b = Some(b.map_or(e, |b| b.union(e)));
-    }
-    b
+/// The elements in contact (`pn_mpa` positive, CONTACT's order on the patch's grid).
+pub fn contact_of(pn_mpa: &[f64]) -> Vec<bool> {
+    pn_mpa.iter().map(|&p| p > 0.0).collect()
+}
+
+/// `old`'s contact on the elements of `grid` (none where `old`'s grid does not reach): the
+/// contact the patch that continues it keeps as CONTACT's `igv`.
+pub fn contact_on_grid(old: &OldPatch, grid: &PatchGrid) -> Vec<bool> {
+    old.contact_on(IndexBox::of_grid(grid))
 }
 
 /// The patches the next case connects to: `new` (this case's), then the old patches no new one
@@ -220,7 +258,7 @@ mod tests {
             grid: IndexBox::of_grid(&g),
             px_mpa: vec![value; mx * ms],
             py_mpa: vec![-value; mx * ms],
-            contact: Some(IndexBox::of_grid(&g)),
+            contact: vec![true; mx * ms],
             contact_before: None,
         }
     }
