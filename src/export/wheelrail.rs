@@ -1,7 +1,7 @@
 //! A wheel–rail scene as CONTACT module-1 input (issue 44; CONTACT's user guide, "Specification of
 //! the input file", module 1), one CONTACT case per row of its cases table, as
 //! reference/contact_wheelrail/examples/mbench_a22_left.inp forms its cases: the first case gives
-//! everything (C-P-B-T-N-F-S = C20TN00, T = 3, 0 when frictionless, 1 in a shift from rest (P = 2), V-L-D-C-M-Z-E = V022033 (V the
+//! everything (C-P-B-T-N-F-S = C20TN00, T = 3, 0 when frictionless, 1 in a shift from rest (P = 2; in a sequence of shifts P = 0 after the first case, each case's S_WS the position its shifts reached), V-L-D-C-M-Z-E = V022033 (V the
 //! friction's variation: 0, 1 across the rail, 2 along the track), H-G-I-A-O-W-R = 0000321: the
 //! solver's limits, FSTAT = FKIN = mu or NVF control points, POISS and GG of both bodies the scene's, DX, DS with DQREL 1,
 //! the scene's A_SEP, D_SEP, D_COMB, the track, the rail profile with its options (PRFOPT = 2) and
@@ -62,13 +62,15 @@ pub fn module1_input(s: &WheelRailScene, deck_dir: &Path) -> Result<String, Inpu
         s.name,
         s.cases.len()
     );
+    let shifts = s.shift_positions_mm();
     for (n, row) in s.cases.iter().enumerate() {
         let _ = writeln!(out, "\n  1 MODULE      % row {}, contact_case {}", n + 1, row.contact_case);
         control_words(s, n == 0, &mut out);
         if n == 0 {
             setup(s, (&rail, &wheel), &mut out);
         }
-        position_and_velocity(s, row, &mut out);
+        let s_mm = shifts.as_ref().map_or_else(|| track_s_mm(s), |p| p[n]);
+        position_and_velocity(s, row, s_mm, &mut out);
     }
     out.push_str("\n 0 MODULE\n");
     Ok(out)
@@ -99,13 +101,19 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
         (false, MotionSpec::Shift { .. }) => 1,
         (false, MotionSpec::Rolling) => 3,
     };
+    // A sequence of shifts continues from the case before (P = 0) after its first case.
+    let p = match s.motion {
+        MotionSpec::Shift { sequence: true, .. } if !first => 0,
+        _ => 2,
+    };
     let v = match s.mu_variation.as_ref().map(|v| v.by) {
         None => 0,
         Some(MuBy::ContactAngle) => 1,
         Some(MuBy::TrackS { .. }) => 2,
     };
     let (ldcmze, hgiaowr) = if first { ("022033", "0000321") } else { ("111002", "0100321") };
-    let _ = writeln!(out, " {c}20{t}{n}{f}0    C-P-B-T-N-F-S   CONFIG, PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS");
+    let _ =
+        writeln!(out, " {c}{p}0{t}{n}{f}0    C-P-B-T-N-F-S   CONFIG, PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS");
     let _ = writeln!(out, " {v}{ldcmze}    V-L-D-C-M-Z-E   VARFRC, FRCLAW, DISCNS, INFLCF, MATER,  ZTRACK, EWHEEL");
     let _ = writeln!(out, " {hgiaowr}    H-G-I-A-O-W-R     HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW,   RETURN");
 }
@@ -159,7 +167,7 @@ fn friction(s: &WheelRailScene, out: &mut String) {
 /// along the track (V = 2) its position there, else 0.
 fn track_s_mm(s: &WheelRailScene) -> f64 {
     match (s.motion, s.mu_variation.as_ref().map(|v| v.by)) {
-        (MotionSpec::Shift { s_ws_mm }, _) => s_ws_mm,
+        (MotionSpec::Shift { s_ws_mm, .. }, _) => s_ws_mm,
         (_, Some(MuBy::TrackS { s_mm })) => s_mm,
         _ => 0.0,
     }
@@ -199,8 +207,8 @@ fn profile_line(name: &str, p: &ProfileSpec, what: &str, out: &mut String) {
 
 /// S_WS, Y_WS, FZ or Z_WS, ROLL, YAW, PITCH = 0; then VS, VY, VZ, VROLL, VYAW, VPITCH (or FX_WS
 /// with F = 1).
-fn position_and_velocity(s: &WheelRailScene, r: &CaseRow, out: &mut String) {
-    let (vertical, longitudinal, s_mm) = (s.vertical, s.longitudinal, track_s_mm(s));
+fn position_and_velocity(s: &WheelRailScene, r: &CaseRow, s_mm: f64, out: &mut String) {
+    let (vertical, longitudinal) = (s.vertical, s.longitudinal);
     let third = if vertical == VerticalSpec::Force { "FZ" } else { "Z" };
     let _ = writeln!(
         out,

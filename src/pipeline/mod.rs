@@ -360,4 +360,5 @@ pub mod wheelrail;
 pub mod wheelrail_exact;
 pub mod wheelrail_fx;
 pub mod wheelrail_scene;
+pub mod wheelrail_shift;
 pub mod wheelrail_view;

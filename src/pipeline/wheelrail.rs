@@ -47,6 +47,9 @@ pub struct PatchForces {
     /// Elements in adhesion and in slip, where the model tells them apart.
     pub n_adhesion: Option<usize>,
     pub n_slip: Option<usize>,
+    /// In a shift, the exact theory's tractions `(px, py)` per element [MPa] (CONTACT's element
+    /// order, the solver's frame): what the next case of a sequence of shifts continues from.
+    pub shift_tractions_mpa: Option<(Vec<f64>, Vec<f64>)>,
 }
 
 impl PatchForces {
@@ -61,6 +64,7 @@ impl PatchForces {
             mn_nmm: -m * mz_nmm,
             n_adhesion: None,
             n_slip: None,
+            shift_tractions_mpa: None,
         }
     }
 }
@@ -262,7 +266,15 @@ fn normal_share(fz_n: f64, (n, t): (f64, f64), last: Option<(f64, f64)>) -> f64 
 /// contact counted as adhering, as CONTACT prints it.
 fn frictionless(p: &NormalPatch) -> PatchForces {
     let ncon = p.pn_mpa.iter().filter(|&&pn| pn > 0.0).count();
-    PatchForces { fn_n: p.fn_n, fx_n: 0.0, fs_n: 0.0, mn_nmm: 0.0, n_adhesion: Some(ncon), n_slip: Some(0) }
+    PatchForces {
+        fn_n: p.fn_n,
+        fx_n: 0.0,
+        fs_n: 0.0,
+        mn_nmm: 0.0,
+        n_adhesion: Some(ncon),
+        n_slip: Some(0),
+        shift_tractions_mpa: None,
+    }
 }
 
 /// One model's forces on every patch.

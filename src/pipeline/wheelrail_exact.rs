@@ -3,9 +3,10 @@
 //! the grid the scene would make (CONTACT's x mirrored, [`field_in_grid_order`]), its kernels and
 //! FFT plans kept per grid size for the case's trial heights and rounds. The same solve as the
 //! `contact` model's on the patch's scene: one steady point, the scene's default controls
-//! (`[contact_solver]`), rolling along +x with dq = dx, Coulomb's μ. In a shift (CONTACT's T = 1
-//! from rest, P = 2) one transient shift step from zero tractions ([`TangentialSolver::for_shifts`]:
-//! the creepages are the step's shifts, dq = 1).
+//! (`[contact_solver]`), rolling along +x with dq = dx, Coulomb's μ. In a shift (CONTACT's T = 1)
+//! one transient shift step ([`TangentialSolver::for_shifts`]: the creepages are the step's shifts,
+//! dq = 1) from zero tractions (P = 2) or from those the case before left on the patch's grid
+//! (P = 0, [`crate::wheelrail::shift`]).
 
 use super::wheelrail::PatchForces;
 use crate::physics::geometry::field_in_grid_order;
@@ -14,7 +15,7 @@ use crate::physics::{moment_sum, Grid, Material};
 use crate::scene::ContactSolverOptions;
 use crate::solvers::contact::tangential::{StepResult, TangentialParams, TangentialSolver};
 use crate::solvers::contact::ContactError;
-use crate::wheelrail::{Motion, NormalPatch, WheelRailCase};
+use crate::wheelrail::{shift, Motion, NormalPatch, WheelRailCase};
 
 /// Grids kept per case (the oldest dropped first).
 const KEPT: usize = 8;
@@ -110,8 +111,9 @@ pub fn patch_forces(
     let r: StepResult = if shift {
         let solver = cache.shift_solver(&grid, &case.material, (&x, &y))?;
         solver.set_pressure(&pn)?;
-        let rest = vec![0.0; grid.mx * grid.my];
-        solver.transient_step(&params, &rest, &rest, None)?
+        let (px0, py0) = previous_tractions(p, case);
+        let (px0, py0) = (field_in_grid_order(&grid, &px0), field_in_grid_order(&grid, &py0));
+        solver.transient_step(&params, &px0, &py0, None)?
     } else {
         let (_, solver, last) = cache.get(&grid, &case.material, (&x, &y))?;
         solver.set_pressure(&pn)?;
@@ -123,12 +125,38 @@ pub fn patch_forces(
     let pn_sum: f64 = pn.iter().sum();
     let (fx_over_fn, fy_over_fn) = (r.px.iter().sum::<f64>() / pn_sum, r.py.iter().sum::<f64>() / pn_sum);
     let mz_nmm = moment_sum(&grid, &r.px, &r.py) * grid.element_area_mm2();
+    let shift_tractions_mpa = shift.then(|| (in_contact_order(&grid, &r.px), in_contact_order(&grid, &r.py)));
     let forces = PatchForces {
         n_adhesion: Some(r.n_adhesion),
         n_slip: Some(r.n_slip),
+        shift_tractions_mpa,
         ..PatchForces::on_rail(p, case, fx_over_fn, fy_over_fn, mz_nmm)
     };
     Ok(if shift { about_anchor(forces, p, case) } else { forces })
+}
+
+/// The tractions a shift starts from on patch `p` (CONTACT's element order): zero from rest; in a
+/// sequence those of the old patches it connects to, on its grid ([`shift`]).
+fn previous_tractions(p: &NormalPatch, case: &WheelRailCase) -> (Vec<f64>, Vec<f64>) {
+    let g = &p.geometry.grid;
+    let inherited =
+        case.previous.and_then(|prev| shift::inherited(&shift::connections(&[p.geometry.extent], prev)[0], prev));
+    match inherited {
+        Some(old) => shift::on_grid(&old, g),
+        None => (vec![0.0; g.len()], vec![0.0; g.len()]),
+    }
+}
+
+/// A field in the grid's flat order back in CONTACT's element order (the inverse of
+/// [`field_in_grid_order`]: x mirrored).
+fn in_contact_order(grid: &Grid, field: &[f64]) -> Vec<f64> {
+    let mut out = vec![0.0; field.len()];
+    for j in 0..grid.my {
+        for i in 0..grid.mx {
+            out[j * grid.mx + (grid.mx - 1 - i)] = field[grid.index(i, j)];
+        }
+    }
+    out
 }
 
 /// MN about the grid's anchor instead of the reference: in a shift CONTACT's module-3 problem

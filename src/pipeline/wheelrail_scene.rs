@@ -4,6 +4,7 @@
 
 use super::wheelrail::{solve_with, CaseResult};
 use super::wheelrail_fx::solve_fx;
+use super::wheelrail_shift::solve_sequence;
 use crate::error::{Error, InputError};
 use crate::problem::material_of_spec;
 use crate::scene::wheelrail::{
@@ -67,10 +68,19 @@ pub fn prepare(scene: &WheelRailScene) -> Result<(Profile, Profile, Vec<String>)
     Ok((rail, wheel, models(scene)?))
 }
 
-/// Solve every case of the scene.
+/// Solve every case of the scene (a sequence of shifts in order, each continuing the one before).
 pub fn run_scene(scene: &WheelRailScene) -> Result<SceneRun, Error> {
     let (rail, wheel, models) = prepare(scene)?;
     let material = material_of_spec(&scene.material)?;
+    if let MotionSpec::Shift { sequence: true, .. } = scene.motion {
+        let positions = scene.shift_positions_mm().unwrap_or_default();
+        let friction =
+            Friction { mu: scene.mu, variation: scene.mu_variation.as_ref(), frictionless: scene.frictionless };
+        let cases = scene.cases.iter().zip(positions).map(|(row, s)| (case_of(scene, row, &rail, &wheel, material), s));
+        let results = solve_sequence(cases, &models, &friction, |k, e| in_case(&scene.name, &scene.cases[k], e))?;
+        let cases = scene.cases.iter().map(|r| r.contact_case).zip(results).collect();
+        return Ok(SceneRun { name: scene.name.clone(), models, cases });
+    }
     let cases = scene
         .cases
         .par_iter()
@@ -163,7 +173,8 @@ pub fn case_of<'a>(
         material,
         motion: match s.motion {
             MotionSpec::Rolling => Motion::Rolling,
-            MotionSpec::Shift { s_ws_mm } => Motion::Shift { s_ws_mm },
+            MotionSpec::Shift { s_ws_mm, .. } => Motion::Shift { s_ws_mm },
         },
+        previous: None,
     }
 }

@@ -134,7 +134,10 @@ pub enum MotionSpec {
     Rolling,
     /// A shift from rest (T = 1, P = 2; `"shift"`): the cases' velocities are one step's shifts
     /// [mm, rad], the grid is fixed in the rail's material at the wheelset's position `s_mm`.
-    Shift { s_ws_mm: f64 },
+    /// With `sequence` (`"shift_sequence"`, P = 0 after the first case) each case continues the
+    /// one before it, at the position the shifts before it reached
+    /// ([`WheelRailScene::shift_positions_mm`]).
+    Shift { s_ws_mm: f64, sequence: bool },
 }
 
 /// A validated wheel–rail scene.
@@ -293,6 +296,22 @@ pub fn read_if_wheelrail(path: &Path) -> Result<Option<WheelRailScene>, InputErr
 }
 
 impl WheelRailScene {
+    /// Each case's wheelset position along the track [mm] in a shift: `s_mm`, or in a sequence of
+    /// shifts the position before plus the case before's shift VS × 1 s (CONTACT's dummy time
+    /// step); `None` in rolling.
+    pub fn shift_positions_mm(&self) -> Option<Vec<f64>> {
+        let MotionSpec::Shift { s_ws_mm, sequence } = self.motion else { return None };
+        let mut s = s_ws_mm;
+        let mut out = Vec::with_capacity(self.cases.len());
+        for row in &self.cases {
+            out.push(s);
+            if sequence {
+                s += row.velocity[0];
+            }
+        }
+        Some(out)
+    }
+
     /// The cases drawn as patch maps and on the profiles: `[report] patch_cases`, or the first,
     /// middle and last case.
     pub fn patch_cases(&self) -> Vec<u64> {

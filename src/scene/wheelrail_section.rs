@@ -114,9 +114,9 @@ pub const KEYS: Keys = Keys {
         key(
             "motion",
             "–",
-            Allowed::Choice(&["rolling", "shift"], ""),
+            Allowed::Choice(&["rolling", "shift", "shift_sequence"], ""),
             Absent::Choice("rolling"),
-            r#"steady rolling (CONTACT's T = 3), or a shift from rest (T = 1 with P = 2, docs/wheelrail.md "Shifts"): each case is one step from zero tractions, its velocity columns the step's shifts (mm and rad, CONTACT's dummy time step of 1 s: `vs_mm_s = 0.4` shifts the wheelset 0.4 mm), the creepages printed as shifts (mm, rad), the grid fixed in the rail's material (x from −`s_mm`, s along the rail profile's own arc length; a profile file, not a closed form); only the exact theory (`solvers = ["contact"]`), one material, `[cases] longitudinal = "velocity"`: `motion = "shift"`"#,
+            r#"steady rolling (CONTACT's T = 3), a sequence of shifts (`"shift_sequence"`: the first case from rest, each later case continuing the one before it, CONTACT's T = 1 with P = 0: it takes the tractions the case before left on the material-fixed grid, patches connected by overlap, split and merged as CONTACT's, docs/wheelrail.md "Shifts that continue"; the wheelset's position of each later case is the one before plus its shift `vs_mm_s` × 1 s, from `s_mm` at the first), or a shift from rest (T = 1 with P = 2, docs/wheelrail.md "Shifts"): each case is one step from zero tractions, its velocity columns the step's shifts (mm and rad, CONTACT's dummy time step of 1 s: `vs_mm_s = 0.4` shifts the wheelset 0.4 mm), the creepages printed as shifts (mm, rad), the grid fixed in the rail's material (x from −`s_mm`, s along the rail profile's own arc length; a profile file, not a closed form); only the exact theory (`solvers = ["contact"]`), one material, `[cases] longitudinal = "velocity"`: `motion = "shift"`"#,
         ),
         key(
             "wheel_surface",
@@ -153,11 +153,13 @@ pub fn read(w: Section) -> Result<WheelRailSection, InputError> {
         _ => SideSpec::Right,
     };
     let motion = match w.pick_or_default("motion")? {
-        "shift" => MotionSpec::Shift { s_ws_mm: w.opt_num("s_mm")?.unwrap_or(0.0) },
+        m @ ("shift" | "shift_sequence") => {
+            MotionSpec::Shift { s_ws_mm: w.opt_num("s_mm")?.unwrap_or(0.0), sequence: m == "shift_sequence" }
+        }
         _ => MotionSpec::Rolling,
     };
     let shift_s = match motion {
-        MotionSpec::Shift { s_ws_mm } => Some(s_ws_mm),
+        MotionSpec::Shift { s_ws_mm, .. } => Some(s_ws_mm),
         MotionSpec::Rolling => None,
     };
     let (mu, mu_variation) = friction(&mut w, shift_s)?;

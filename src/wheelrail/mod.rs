@@ -17,6 +17,7 @@ pub mod patch;
 pub mod profile;
 pub mod rail;
 pub mod search;
+pub mod shift;
 pub mod side;
 pub mod vertical;
 pub mod wheel;
@@ -101,6 +102,9 @@ pub struct WheelRailCase<'a> {
     pub wheel_surface: wheel_mesh::WheelSurface,
     pub material: Material,
     pub motion: Motion,
+    /// In a shift that continues a sequence (CONTACT's T = 1, P = 0): the patches the case before
+    /// left, with their tractions; `None` from rest and in rolling.
+    pub previous: Option<&'a shift::Previous>,
 }
 
 /// A patch with its normal solution and creepages (right-side frame).
@@ -276,7 +280,7 @@ fn geometry_at(
             rail,
             (case.dx_mm, case.ds_mm),
             &case.separation,
-            (case.wheel_surface, case.motion),
+            (case.wheel_surface, case.motion, case.previous),
         )?;
         if geometry.grid.len() > MAX_ELEMENTS {
             return Err(WheelRailError::GridTooLarge {

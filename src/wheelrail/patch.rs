@@ -9,7 +9,7 @@ use super::rail::PlacedRail;
 use super::search::LocusSample;
 use super::wheel::PlacedWheel;
 use super::wheel_mesh::{self, WheelSurface};
-use super::{Motion, WheelRailError};
+use super::{shift, Motion, WheelRailError};
 use crate::physics::halfspace::blend::Blend;
 use nalgebra::{Point3, Vector3};
 
@@ -82,6 +82,8 @@ pub struct PatchGeometry {
     /// The sub-patches of regions combined between D_COMB and D_SEP, their cross-influence
     /// attenuated in the normal problem (CONTACT's blending approach); `None` for one region.
     pub blend: Option<Blend>,
+    /// The interpenetration's extent in track coordinates (what a continued shift connects by).
+    pub extent: Extent,
 }
 
 /// The weight of a mesh point: `∫ (pen − a x²)² dx` over the chord where the wheel, a circle
@@ -410,18 +412,48 @@ pub fn undeformed_distance(
     h
 }
 
-/// The patch of one candidate.
+/// Where a widened grid reaches beyond the patch's own extent, no wheel surface: CONTACT meshes the
+/// wheel over the region's x and y ranges and two elements beyond (`wr_ud_planar`: `xmin` …
+/// `ymax`, the wheel's z −999 off the mesh), so an element whose point in the tangent plane lies
+/// further out does not touch (another patch's interpenetration there is that patch's).
+fn beyond_the_wheel_surface(c: &Candidate, frame: &PatchFrame, grid: &PatchGrid, h_mm: &mut [f64]) {
+    let (mx, my) = (2.0 * grid.dx_mm, 2.0 * grid.ds_mm);
+    for j in 0..grid.ms {
+        for i in 0..grid.mx {
+            let (x, s) = grid.centre(i, j);
+            let p = frame.at(x, s);
+            let off = p.x < c.x_mm[0] - mx || p.x > c.x_mm[1] + mx || p.y < c.y_mm[0] - my || p.y > c.y_mm[1] + my;
+            if off {
+                h_mm[j * grid.mx + i] = MISSED_MM;
+            }
+        }
+    }
+}
+
+/// The patch of one candidate; in a shift that continues a sequence its grid widened to the
+/// contact of the time before of the old patches it connects to ([`shift::widened`]).
 pub fn build(
     c: &Candidate,
     wheel: &PlacedWheel,
     rail: &PlacedRail,
     size_mm: (f64, f64),
     sep: &Separation,
-    (surface, motion): (WheelSurface, Motion),
+    (surface, motion, previous): (WheelSurface, Motion, Option<&shift::Previous>),
 ) -> Result<PatchGeometry, WheelRailError> {
     let frame = frame(c, rail).ok_or(WheelRailError::NoContact)?;
-    let grid = grid(c, &frame, rail, size_mm, motion)?;
+    let mut grid = grid(c, &frame, rail, size_mm, motion)?;
+    let mut widened = false;
+    if let (Motion::Shift { .. }, Some(previous)) = (motion, previous) {
+        let links = shift::connections(&[c.extent()], previous);
+        if let Some(old) = shift::inherited(&links[0], previous) {
+            widened = true;
+            grid = shift::widened(&grid, &old, previous.iterated);
+        }
+    }
     let mut h_mm = undeformed_distance(&frame, &grid, wheel, rail, surface);
+    if widened {
+        beyond_the_wheel_surface(c, &frame, &grid, &mut h_mm);
+    }
     let blend = (c.parts.len() > 1).then(|| {
         let part = sub_patch_of_elements(&c.parts, &frame, &grid, sep);
         // Outside every sub-patch nothing touches (CONTACT's planform, IPLAN = 4).
@@ -432,7 +464,7 @@ pub fn build(
         }
         Blend { part, factor: sub_patch_factors(&c.parts, sep), n: c.parts.len() }
     });
-    Ok(PatchGeometry { frame, grid, h_mm, pen_max_mm: c.pen_max_mm, blend })
+    Ok(PatchGeometry { frame, grid, h_mm, pen_max_mm: c.pen_max_mm, blend, extent: c.extent() })
 }
 
 #[cfg(test)]

@@ -38,6 +38,7 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side, pose: Pose) -
         wheel_surface: Default::default(),
         material: Material::from_g(82000.0, 0.28),
         motion: Default::default(),
+        previous: None,
     }
 }
 

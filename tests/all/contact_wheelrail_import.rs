@@ -172,9 +172,9 @@ fn the_decks_with_fx_ws_prescribed_import_as_the_gated_scenes() {
 }
 
 /// The module-1 cases of CONTACT's test bank that need a roller rig, a thin layer, the conformal
-/// approach, a massless rail or a shift continuing a sequence are refused naming what the scene lacks; the
-/// others import (rail deviations, frictionless compression, smoothing, MIRRORZ, PRFOPT); its
-/// module-3 cases import as before.
+/// approach or a massless rail are refused naming what the scene lacks; the others import (rail
+/// deviations, frictionless compression, smoothing, MIRRORZ, PRFOPT; case 39, a shift continuing
+/// case 38, in case 38's scene as a sequence of shifts); its module-3 cases import as before.
 #[test]
 fn the_testbank_module1_cases_are_refused_with_their_reasons() {
     let deck = root().join("reference/contact_wheelrail/testbank/testbank.inp");
@@ -190,7 +190,6 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
     reason(21, "B = 1: a thin compressible elastic layer");
     reason(35, "D (in force) = 4: contact approaches other than the planar one");
     reason(36, "F = 3: a massless rail");
-    reason(39, "T = 1, P = 0: shifts continuing a sequence");
     let note = |case: usize, start: &str| {
         let s = m1.iter().find(|s| s.case == case).unwrap();
         assert!(s.scene.is_some() && s.notes.iter().any(|r| r.starts_with(start)), "case {case}: {s:?}");
@@ -201,6 +200,9 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
     note(28, "PRFOPT = 1: ISMOOTH, ZIGTHRS, KINKHIGH, KINKLOW, KINKWID = 0, 2.61799");
     note(30, "MIRRORZ = 1 (rail): mirroring of a profile's z given");
     note(38, "T = 1, P = 2: shifts from rest");
+    note(39, "T = 1, P = 0: shifts continuing a sequence");
+    let s39 = m1.iter().find(|s| s.case == 39).unwrap();
+    assert_eq!(s39.scene.as_deref(), Some("testbank_38"));
     let scenes: Vec<&str> = imported.scenes.iter().map(|s| s.name.as_str()).collect();
     // Module 1's steady cases import, one scene each; module 3's 25, 26 (dissimilar bodies,
     // issue 46) are one scene.
@@ -322,13 +324,49 @@ fn a_shift_from_rest_exports_and_imports_back() {
     for (k, scene) in scenes.iter().enumerate() {
         let (original, back) = round_trip(scene, &dir.join(format!("back_{k}")));
         let s_ws_mm = if k == 0 { 0.0 } else { 0.4 };
-        assert_eq!(original.motion, MotionSpec::Shift { s_ws_mm });
+        assert_eq!(original.motion, MotionSpec::Shift { s_ws_mm, sequence: false });
         // The exported deck numbers its cases from 1 (cases 2-5 come back as 1-4).
         let mut original = values(&original);
         for (n, row) in original.cases.iter_mut().enumerate() {
             row.contact_case = n as u64 + 1;
         }
         assert_eq!(values(&back), original);
+    }
+}
+
+/// A sequence of shifts (T = 1, P = 2 then P = 0): t1_split_cp's two cases import as one scene
+/// with `motion = "shift_sequence"`, export with P = 0 and each case's S_WS, and import back as
+/// the same scene. A continued shift that does not follow a shift, or whose S_WS is not where the
+/// shifts before it took the wheelset, is refused naming why.
+#[test]
+fn a_sequence_of_shifts_exports_and_imports_back_and_a_misfit_is_refused() {
+    let dir = common::tempdir("m1_shift_sequence");
+    let deck = root().join("reference/contact_wheelrail/testbank/examples_trans/t1_split_cp.inp");
+    let scenes = import(&deck, &dir.join("scenes"), &[]);
+    assert_eq!(scenes.len(), 1, "{scenes:?}");
+    let (original, back) = round_trip(&scenes[0], &dir.join("back"));
+    assert_eq!(original.motion, MotionSpec::Shift { s_ws_mm: 0.0, sequence: true });
+    assert_eq!(original.cases.len(), 2);
+    assert_eq!(values(&back), values(&original));
+    let exported = std::fs::read_to_string(dir.join("back/deck/t1_split_cp_1.inp")).unwrap();
+    assert!(exported.contains(" 1001000    C-P-B-T") && exported.contains("  0.4   14.74   1.211"), "{exported}");
+    // Case 2 at S_WS = 0.5 where case 1's shift of 0.4 mm took the wheelset to 0.4; case 1 rolling.
+    let text = std::fs::read_to_string(&deck).unwrap();
+    let profiles = deck.parent().unwrap().join("../profiles");
+    let text = text.replace("'../profiles/", &format!("'{}/", profiles.display()));
+    for (what, changed, why) in [
+        (
+            "s",
+            text.replace("  0.400   14.74   1.211", "  0.500   14.74   1.211"),
+            "S_WS = 0.5 where the shifts before it reached 0.4",
+        ),
+        ("rolling", text.replacen(" 1201000 ", " 1203000 ", 1), "case 1 before it is not a shift (T = 1)"),
+    ] {
+        let misfit = dir.join(format!("misfit_{what}.inp"));
+        std::fs::write(&misfit, changed).unwrap();
+        let imported = creepbench::import::contact::import(&misfit).unwrap();
+        let s2 = imported.statuses.iter().find(|s| s.case == 2).unwrap();
+        assert!(s2.scene.is_none() && s2.refused.iter().any(|r| r.contains(why)), "{what}: {s2:?}");
     }
 }
 

@@ -42,6 +42,7 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side) -> WheelRailC
         wheel_surface: Default::default(),
         material: Material::from_g(82000.0, 0.28),
         motion: Default::default(),
+        previous: None,
     }
 }
 

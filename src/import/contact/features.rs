@@ -574,9 +574,17 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         feature: WheelRailFeature::TransientContact,
         name: "a shift continuing a sequence",
         control: "T, P",
+        supported: true,
+        reason: "imported as [wheelrail] motion = \"shift_sequence\" with the shift before it: the previous case's tractions carried on CONTACT's material-fixed grid, its patches connected by overlap, split, merged or kept out of contact (docs/wheelrail.md)",
+        used: |c| (c.digits.t == 1 && c.digits.p == 0).then(|| "T = 1, P = 0".to_string()),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::TransientContact,
+        name: "a shift after a case of another run",
+        control: "T, P",
         supported: false,
-        reason: "supported: T = 1 from rest (P = 2); after the previous case (P = 0, 1, 3) its tractions are carried on CONTACT's material-fixed grid, its patches connected by overlap, split, merged or kept out of contact: not yet",
-        used: |c| (c.digits.t == 1 && c.digits.p != 2).then(|| format!("T = 1, P = {}", c.digits.p)),
+        reason: "supported: T = 1 from rest (P = 2) or continuing the case before (P = 0); P = 1 (a new sequence keeping the state) and P = 3 (the steady state as the previous one) are not carried",
+        used: |c| (c.digits.t == 1 && matches!(c.digits.p, 1 | 3)).then(|| format!("T = 1, P = {}", c.digits.p)),
     },
     WheelRailRow {
         feature: WheelRailFeature::CompressibleLayer,
@@ -831,10 +839,13 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "flexible wheelset deviations",
         control: "E, DXWHL..VPITCHW",
         supported: false,
-        reason: "supported: E = 0-3 (a rigid wheelset)",
+        reason: "supported: E = 0-3 (a rigid wheelset); the wheel's own position and rotation relative to the wheelset (E = 4, 5: DXWHL .. DPITCHW about the wheel's own reference, and their rates) are not carried",
         used: |c| {
             let w = c.state.wheel_deviation?;
-            w.position.iter().chain(&w.velocity).any(|&x| x != 0.0).then(|| format!("E = {}", c.digits.e))
+            let given = w.position.iter().chain(&w.velocity).any(|&x| x != 0.0);
+            given.then(|| {
+                format!("E = {} (in force: DXWHL .. DPITCHW = {:?}, VXWHL .. VPITCHW = {:?})", c.digits.e, w.position, w.velocity)
+            })
         },
     },
     WheelRailRow {

@@ -54,9 +54,16 @@ pub const SCENE_LIMITS: &[SceneLimit] = &[
     SceneLimit {
         name: "shifts continuing a sequence",
         control: "P",
+        accepted: true,
+        reason: "carried as [wheelrail] motion = \"shift_sequence\" in the scene of the shift before it (the case must follow it, its S_WS the one before plus the shift SHFT_S): the previous case's tractions on CONTACT's material-fixed grid, its patches connected by overlap, split, merged or kept while out of contact (`wr_connect_cps`, `wr_update_allcps`), its grid widened to the contact of the time before (`merge_prev_potcon`)",
+        used: |c| (c.digits.t == 1 && c.digits.p == 0).then(|| "T = 1, P = 0".to_string()),
+    },
+    SceneLimit {
+        name: "shifts after another run",
+        control: "P",
         accepted: false,
-        reason: "supported: T = 1 from rest (P = 2); a shift after the previous case (P = 0, 1, 3) takes that case's tractions on CONTACT's material-fixed grid, its patches connected by overlap, split, merged or kept while out of contact (`wr_connect_cps`, `wr_update_allcps`), and its grid widened to the contact of the time before (`merge_prev_potcon`): not yet carried",
-        used: |c| (c.digits.t == 1 && c.digits.p != 2).then(|| format!("T = 1, P = {}", c.digits.p)),
+        reason: "supported: T = 1 from rest (P = 2) or continuing the case before (P = 0); P = 1 (a new sequence keeping the state) and P = 3 (the steady state as the previous one) are not carried",
+        used: |c| (c.digits.t == 1 && matches!(c.digits.p, 1 | 3)).then(|| format!("T = 1, P = {}", c.digits.p)),
     },
     SceneLimit {
         name: "a longitudinal force in a shift",

@@ -62,8 +62,12 @@ pub(super) fn scenes(
             Err(why) => statuses[k].refused.push(why),
         }
     }
+    let (grouped, refused) = groups(members);
+    for (k, why) in refused {
+        statuses[k].refused.push(why);
+    }
     let mut out = Vec::new();
-    for group in groups(members) {
+    for group in grouped {
         let ks: Vec<usize> = group.iter().map(|m| m.k).collect();
         match build(file, stem, group) {
             Ok(s) => {
@@ -85,23 +89,82 @@ pub(super) fn scenes(
 /// The cases whose scenes agree but for their rows, each group in the deck's order. Steady cases
 /// do not depend on one another, so a deck that alternates the left and the right wheel (CONTACT's
 /// performance decks) makes one scene per wheel; a case joins an earlier group only where every
-/// case between them is supported (a scene's `[origin]` range holds no case refused).
-fn groups(members: Vec<Member>) -> Vec<Vec<Member>> {
+/// case between them is supported (a scene's `[origin]` range holds no case refused). A shift that
+/// continues the case before (T = 1, P = 0) joins that case's group, which becomes a sequence of
+/// shifts starting from it ([`continues`]); one it cannot join is refused, `(index, why)`.
+fn groups(members: Vec<Member>) -> (Vec<Vec<Member>>, Vec<(usize, String)>) {
+    let continued: std::collections::BTreeSet<usize> =
+        members.iter().filter(|m| is_continued(&m.scene)).map(|m| m.number - 1).collect();
     let mut out: Vec<Vec<Member>> = Vec::new();
+    let mut refused = Vec::new();
     let mut supported = std::collections::BTreeSet::new();
     for m in members {
+        if is_continued(&m.scene) {
+            match out.last_mut().map(|g| continues(g, &m)) {
+                Some(Ok(())) => {
+                    let g = out.last_mut().expect("the group continued");
+                    if let MotionSpec::Shift { sequence, .. } = &mut g[0].scene.motion {
+                        *sequence = true;
+                    }
+                    supported.insert(m.number);
+                    g.push(m);
+                }
+                Some(Err(why)) => refused.push((m.k, why)),
+                None => refused.push((m.k, "T = 1, P = 0 without a shift before it in the deck".to_string())),
+            }
+            continue;
+        }
         let joins = |g: &&mut Vec<Member>| {
             let last = g[g.len() - 1].number;
             same_but_rows(&g[0].scene, &m.scene) && (last + 1..m.number).all(|n| supported.contains(&n))
         };
-        let group = out.iter_mut().rev().find(joins);
+        // A shift the next case continues starts its own scene (a sequence of its own).
+        let group = if continued.contains(&m.number) { None } else { out.iter_mut().rev().find(joins) };
         supported.insert(m.number);
         match group {
             Some(g) => g.push(m),
             None => out.push(vec![m]),
         }
     }
-    out
+    (out, refused)
+}
+
+/// Whether a one-row scene is a shift continuing the case before (T = 1, P = 0).
+fn is_continued(s: &WheelRailScene) -> bool {
+    matches!(s.motion, MotionSpec::Shift { sequence: true, .. })
+}
+
+/// Whether the shift `m` (P = 0) continues group `g`: `g` ends with the case just before it, starts
+/// with a shift from rest followed by shifts continuing it only, agrees with `m` but for the rows,
+/// and `m`'s S_WS is where `g`'s shifts took the wheelset (S_WS of its first case plus every
+/// SHFT_S × 1 s), as the scene derives it.
+fn continues(g: &[Member], m: &Member) -> Result<(), String> {
+    let last = &g[g.len() - 1];
+    let refuse = |why: &str| Err(format!("T = 1, P = 0: a shift continuing the case before it: {why}"));
+    if last.number + 1 != m.number {
+        return refuse(&format!("case {} before it is not imported", m.number - 1));
+    }
+    let MotionSpec::Shift { s_ws_mm: s0, .. } = g[0].scene.motion else {
+        return refuse(&format!("case {} before it is not a shift (T = 1)", last.number));
+    };
+    // A group's first case is a shift from rest (a continuing case only ever joins a group);
+    // several cases with the first not yet a sequence are shifts from rest each.
+    if g.len() > 1 && !is_continued(&g[0].scene) {
+        return refuse(&format!("the scene of case {} holds shifts from rest", last.number));
+    }
+    let MotionSpec::Shift { s_ws_mm: s, .. } = m.scene.motion else { return refuse("not a shift") };
+    let reached = s0 + g.iter().flat_map(|x| x.scene.cases.iter()).map(|r| r.velocity[0]).sum::<f64>();
+    if (s - reached).abs() > 1e-9 * (1.0 + s.abs()) {
+        return refuse(&format!(
+            "S_WS = {s} where the shifts before it reached {reached} (S_WS of case {} plus SHFT_S): the scene derives each position from the shifts",
+            g[0].number
+        ));
+    }
+    let as_first = WheelRailScene { cases: m.scene.cases.clone(), motion: m.scene.motion, ..g[0].scene.clone() };
+    if as_first != m.scene {
+        return refuse(&format!("it changes more than the position and the shifts of case {}", last.number));
+    }
+    Ok(())
 }
 
 /// Whether two one-row scenes agree but for their rows.
@@ -193,7 +256,11 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         d_comb_mm: disc.d_comb_mm,
         d_turn_mm: disc.d_turn_mm(),
         wheel_mesh: false,
-        motion: if c.digits.t == 1 { MotionSpec::Shift { s_ws_mm: s_ws } } else { MotionSpec::Rolling },
+        motion: if c.digits.t == 1 {
+            MotionSpec::Shift { s_ws_mm: s_ws, sequence: c.digits.p == 0 }
+        } else {
+            MotionSpec::Rolling
+        },
         vertical,
         longitudinal,
         cases: vec![row],
