@@ -227,9 +227,11 @@ fn kpec_and_analyn_against_contact() {
     worst(&kpec);
     let beyond: Vec<&Deviation> = kpec.iter().filter(|d| !loose(d).unwrap_or(d.half_units <= 4.5)).collect();
     assert!(beyond.is_empty(), "{beyond:?}");
-    // KPEC at y = 0: CONTACT's height iteration stopped at FZ = 9982 N; this project's carries 10000.
+    // KPEC at y = 0: CONTACT's height iteration stopped at FZ = 9982 N; this project's carries 10000
+    // (10000.021 N: since KPEC's ellipse is CONTACT's, its force jumps over FZ at this height and
+    // the upper height is taken, docs/wheelrail.md "Models"; before, it met FZ within 1e-3 N).
     let fz = devs(1).into_iter().find(|d| d.quantity == "fz_tr_n").unwrap();
-    assert_eq!((fz.contact, (fz.ours - 10_000.0).abs() < 1e-3), (9982.0, true), "{fz:?}");
+    assert_eq!((fz.contact, (fz.ours - 10_000.0).abs() < 0.05), (9982.0, true), "{fz:?}");
 }
 
 /// CONTACT's test of the initial estimate on worn profiles (testbank/examples_trans/iestim_site_b:

@@ -5,7 +5,7 @@
 //! semi-elliptic pressure along x over the row's contact, all rows scaled by one peak chosen so
 //! that the elastic displacement at the deepest point equals its interpenetration.
 
-use super::{first_min, hertz_of_curvatures, ApproximateError, Method};
+use super::{first_min, hertz_of_curvatures_coarse, ApproximateError, Method};
 use crate::physics::halfspace::influence::rect_integrals;
 use crate::physics::{Grid, Material};
 use std::f64::consts::PI;
@@ -30,7 +30,7 @@ struct Equivalent {
 pub fn pressure(grid: &Grid, gap: &[f64], material: &Material) -> Result<Vec<f64>, ApproximateError> {
     let deepest = first_min(gap);
     let pentot = -gap[deepest];
-    let e = equivalent(grid, gap, deepest, material)?;
+    let e = equivalent(grid, gap, deepest)?;
     let (mx, my) = (grid.mx, grid.my);
     // Each row's threshold: ε(y) = (A a² − (A a² − B b²) ((y − y_mid)/b)²) / pen.
     let eps = |j: usize| {
@@ -92,8 +92,9 @@ fn displacement_at(grid: &Grid, p: &[f64], at: usize, material: &Material) -> f6
 
 /// The equivalent ellipse of the KP region (gap ≤ (1 − 0.5) × deepest): A from a parabola
 /// through the deepest row, B from the region's lateral extent, Hertz's (a, b) at the deepest
-/// interpenetration (CONTACT's `kpec_equiv_ellipse`).
-fn equivalent(grid: &Grid, gap: &[f64], deepest: usize, material: &Material) -> Result<Equivalent, ApproximateError> {
+/// interpenetration as CONTACT's `hzcalc3d` finds them (k to 1e-6: [`hertz_of_curvatures_coarse`];
+/// CONTACT's `kpec_equiv_ellipse`).
+fn equivalent(grid: &Grid, gap: &[f64], deepest: usize) -> Result<Equivalent, ApproximateError> {
     let (mx, my) = (grid.mx, grid.my);
     let (i_min, j_min) = (deepest % mx, deepest / mx);
     if i_min == 0 || i_min + 1 >= mx || my < 3 {
@@ -122,14 +123,13 @@ fn equivalent(grid: &Grid, gap: &[f64], deepest: usize, material: &Material) -> 
     let y_end = grid.y_mm[j1] + (thr - at(j1, i_end)) * dy / (at(j1 + 1, i_end) - at(j1, i_end));
     let y_mid = 0.5 * (y_start + y_end);
     let b1 = ((thr - h_min) / (y_end - y_mid).powi(2)).max(MIN_CURVATURE);
-    let e = hertz_of_curvatures(a1, b1, -h_min, material).ok_or(ApproximateError::NotConvex {
+    let (aa, mut bb) = hertz_of_curvatures_coarse(a1, b1, -h_min).ok_or(ApproximateError::NotConvex {
         method: Method::Kpec,
         a_per_mm: a1,
         b_per_mm: b1,
     })?;
-    let mut bb = e.b_mm;
     if single {
         bb = bb.max(1.1 * (grid.y_mm[j_min] - y_mid).abs());
     }
-    Ok(Equivalent { a1, b1, aa: e.a_mm, bb, y_mid })
+    Ok(Equivalent { a1, b1, aa, bb, y_mid })
 }

@@ -45,6 +45,43 @@ pub fn hertz_of_curvatures(a1: f64, b1: f64, pen_mm: f64, material: &Material) -
     HertzContact::from_radii_and_approach(&radii_of_curvatures(a1, b1), pen_mm, material).ok()
 }
 
+/// Bisection tolerance on the elliptic modulus k in CONTACT's equivalent ellipses (`EPSHZ`).
+const EPS_MODULUS: f64 = 1e-6;
+
+/// Hertz's semi-axes (a, b) [mm] of curvatures `a1`, `b1` [1/mm] at approach `pen_mm` as
+/// CONTACT's `hzcalc3d` gives them with EPSHZ = 1e-6 (IPOTCN = −1, N = 0; user guide §Hertz):
+/// the modulus k found by bisection on [0, 1] until the bracket is within 1e-6, its last
+/// midpoint taken (on slender ellipses b/a is then up to a few 1e-4 off Hertz's), then
+/// `c = √(δ ρ E/(2 K g))`, ρ = 2/(A + B), g = √(1 − k²), the axes `c √g` and `c/√g`.
+pub fn hertz_of_curvatures_coarse(a1: f64, b1: f64, pen_mm: f64) -> Option<(f64, f64)> {
+    if !(a1 > 0.0 && b1 > 0.0 && pen_mm >= 0.0) {
+        return None;
+    }
+    let ratio = a1.min(b1) / a1.max(b1);
+    // min/max curvature of modulus k: (K − E)/(E/(1 − m) − K), m = k².
+    let curvature_ratio = |k: f64| {
+        let m = k * k;
+        let (k_int, e_int) = ellip::ellipke(m).ok()?;
+        Some((k_int - e_int) / (e_int / (1.0 - m) - k_int))
+    };
+    let (mut lo, mut hi, mut k) = (0.0_f64, 1.0_f64, 0.5_f64);
+    while hi - lo > EPS_MODULUS {
+        k = 0.5 * (lo + hi);
+        if curvature_ratio(k)? >= ratio {
+            lo = k;
+        } else {
+            hi = k;
+        }
+    }
+    let m = k * k;
+    let (k_int, e_int) = ellip::ellipke(m).ok()?;
+    let g = (1.0 - m).max(1e-40).sqrt();
+    let rho = 2.0 / (a1 + b1);
+    let c = (pen_mm * rho * e_int / (2.0 * k_int * g)).sqrt();
+    let (short, long) = (c * g.sqrt(), c / g.sqrt());
+    Some(if b1 <= a1 { (short, long) } else { (long, short) })
+}
+
 /// Hertz's shape of curvatures `a1`, `b1` [1/mm] and its approach under 1 N [mm]
 /// ([`hertz_of_curvatures`] at any approach from them: the eccentricity found once).
 pub fn shape_of_curvatures(a1: f64, b1: f64, material: &Material) -> Option<(HertzShape, f64)> {

@@ -48,3 +48,15 @@ fn kpec_gives_hertz_on_hertz_geometry() {
 fn analyn_gives_hertz_on_hertz_geometry() {
     check(Method::Analyn, 1e-3, 2e-4, 3e-4);
 }
+
+/// KPEC's equivalent ellipse of `perfc_test/mbench_20kn_dx02_fz` case 128 (right wheel, on the
+/// flange) as CONTACT's debug print gives it (PSFLCIN N = 3, its last height): A = 0.00035971,
+/// B = 0.03879058 /mm, approach 0.05059746 mm → a = 10.40512318, b = 0.54757621 mm,
+/// a/b = 19.00214611 (Hertz's exact ratio is 19.0084: the modulus is bisected to 1e-6).
+#[test]
+fn kpec_ellipse_is_contacts_hzcalc3d() {
+    let (aa, bb) = super::hertz_of_curvatures_coarse(0.00035971, 0.03879058, 0.05059746).unwrap();
+    assert!((aa / bb - 19.00214611).abs() < 5e-9, "a/b {}", aa / bb);
+    assert!((aa - 10.40512318).abs() < 5e-6, "a {aa}");
+    assert!((bb - 0.54757621).abs() < 5e-8, "b {bb}");
+}
