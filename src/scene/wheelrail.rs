@@ -4,8 +4,8 @@
 //! wheel–rail stage, from the paths resolved here.
 
 use super::keys::{key, Absent, Allowed, Keys};
-use super::top::table;
 use super::reader::{parse_toml, Range, Section};
+use super::top::table;
 use super::{is_valid_name, MaterialSpec, Origin};
 use crate::error::InputError;
 use std::path::{Path, PathBuf};

@@ -57,13 +57,7 @@ fn the_layer_exports_as_m4_and_imports_back_and_transient_rolling_is_refused() {
     assert!(deck.contains("  8200.0   1.25   0.0   0.0    GG3, LAYTHK, TAU_C0, K_TAU"), "{deck}");
     // M = 4 in both cases: the first reads the material (C = 2), the second keeps it (C = 0).
     assert!(deck.contains("  022420      L-D-C-M-Z-E") && deck.contains("  100400      L-D-C-M-Z-E"), "{deck}");
-    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
-        .current_dir(&dir)
-        .args(["import", "contact", "back/layer.inp", "--out", "again"])
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let again = std::fs::read_to_string(dir.join("again/layer_1.toml")).unwrap();
+    let again = imported_again(&dir);
     assert!(again.contains("layer_g_mpa = 8200.0") && again.contains("layer_thickness_mm = 1.25"), "{again}");
     let transient = "kind = \"step\"\nc = 0.001\nsteps = 2";
     let (code, err, dir) = run(
@@ -106,13 +100,7 @@ fn the_yield_limit_is_read_with_its_layer_and_exports_as_tau_c0() {
     assert_eq!(code, Some(0), "{err}");
     let deck = std::fs::read_to_string(dir.join("back/layer.inp")).unwrap();
     assert!(deck.contains("  8200.0   1.25   560.0   0.0    GG3, LAYTHK, TAU_C0, K_TAU"), "{deck}");
-    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
-        .current_dir(&dir)
-        .args(["import", "contact", "back/layer.inp", "--out", "again"])
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let again = std::fs::read_to_string(dir.join("again/layer_1.toml")).unwrap();
+    let again = imported_again(&dir);
     assert!(again.contains("layer_yield_mpa = 560.0"), "{again}");
 }
 
@@ -165,4 +153,15 @@ fn plastic_3bl_magnetite_yields_at_tau_c0() {
     }
     // CONTACT (plastic_3bl.ref_out): FX = 280.0 (case 2), then 560.0 (cases 3-14).
     assert!((ours[0] - 280.0).abs() <= 0.05 && ours[1..].iter().all(|f| (f - 560.0).abs() <= 0.05), "{ours:?}");
+}
+
+/// `back/layer.inp` of `dir` imported again (`import contact ... --out again`): its first scene file.
+fn imported_again(dir: &std::path::Path) -> String {
+    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(dir)
+        .args(["import", "contact", "back/layer.inp", "--out", "again"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    std::fs::read_to_string(dir.join("again/layer_1.toml")).unwrap()
 }
