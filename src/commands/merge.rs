@@ -23,7 +23,7 @@ pub fn merge(
             }
         }
     }
-    let refs = load_references(reference)?;
+    let mut refs = load_references(reference)?;
     let scenes = read_results(dirs)?;
     for d in dirs {
         if guard::same_place(d, report_dir)? {
@@ -60,6 +60,7 @@ pub fn merge(
     extra.extend(owed_by_scenes(&scenes, &merged_suites)?);
     note_wheelrail_not_merged(suites_given)?;
     let fits = read_fit_records(dirs)?;
+    survey_decks(&mut refs);
     let judging = Judging { golden: Some(golden), rules: &rules, extra, suites: &suite_of(&scenes, &[]) };
     let (md, findings, _) =
         report_with_findings(&scenes, &refs, report_dir, judging, Drawn { fits: &fits, wheelrail: None })?;

@@ -57,10 +57,16 @@ use reporting::{report_with_findings, Drawn, Judging};
 use simulate::{read_printed, wheelrail_section};
 use suite_run::{attach_wheelrail, run_suite, wheelrail_findings, SuiteFiles, SuiteRun};
 
-/// The reference sets, with the importer's verdict on every case of CONTACT's public decks
-/// attached to the set `contact_public` (its report section lists them; the import stage sits
-/// above comparison and report, so the survey is made here and passed down).
+/// The reference sets as their files hold them (what the gate compares with).
 fn load_references(reference: &Path) -> Result<References, Error> {
+    Ok(References::load(reference)?)
+}
+
+/// The importer's verdict on every case of CONTACT's public decks, attached to the sets
+/// `contact_public` and `contact_wheelrail` for the report's lists of them (the import stage sits
+/// above comparison and report, so the survey is made here and passed down). Only a command that
+/// writes a report asks for it: it imports every deck.
+fn survey_decks(refs: &mut References) {
     use crate::comparison::references::contact_public::{CaseSurvey, PublicCases, Survey, AGAINST};
     let survey = |inp: &Path, modules: &[u8]| match crate::import::contact::survey(inp) {
         Ok(cases) => Survey::Cases(
@@ -72,7 +78,6 @@ fn load_references(reference: &Path) -> Result<References, Error> {
         ),
         Err(e) => Survey::Unread(e.to_string()),
     };
-    let mut refs = References::load(reference)?;
     if let Some(public) = refs.get_mut::<PublicCases>(AGAINST) {
         public.attach_survey(|inp| survey(inp, &[1, 3]));
     }
@@ -80,7 +85,6 @@ fn load_references(reference: &Path) -> Result<References, Error> {
     if let Some(wr) = refs.get_mut::<WheelRailCases>(wheelrail_cases::AGAINST) {
         wr.attach_survey(|inp| survey(inp, &[1]));
     }
-    Ok(refs)
 }
 
 /// How a command runs a suite's scenes: one shard (none: all), with a progress bar or not, and

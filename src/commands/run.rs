@@ -103,6 +103,7 @@ pub fn run_with(
     if shard.is_some() {
         return Ok(outcome);
     }
+    survey_decks(&mut refs);
     let fitted = match fit_specs {
         Some(specs) => {
             run_fits(&specs, &refs, results_dir, (&scenes, &suite::scene_files(suite_dir, None)?))?;

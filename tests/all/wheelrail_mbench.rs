@@ -5,7 +5,6 @@
 //! `contact_mbench.ref_out`), by the rules "CONTACT wheel-rail" of `tolerances.toml`; a perturbed
 //! result fails it, naming scene, case, patch, quantity and both values.
 
-use creepbench::commands::{self, GateFiles};
 use creepbench::comparison::compare::{failures, Finding};
 use creepbench::comparison::references::wheelrail_cases::{self, WheelRailCases, AGAINST};
 use creepbench::comparison::references::References;
@@ -33,17 +32,8 @@ fn worst(fs: &[&Finding]) -> BTreeMap<String, (f64, String)> {
 
 #[test]
 fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
-    let suite = [root().join("scenes/wheelrail")];
-    let golden = root().join("golden");
-    let baseline = commands::Baseline { golden: &golden, against: None };
-    let gate = commands::gate(
-        &suite,
-        &root().join("reference"),
-        baseline,
-        commands::Runner::cli(None, false),
-        &GateFiles::default(),
-    )
-    .unwrap();
+    // `run --suite scenes/wheelrail`: its verdict is `check`'s (the same rules and findings).
+    let gate = &crate::common::wheelrail_suite_run().outcome;
     let ours: Vec<&Finding> = gate.findings.iter().filter(|f| f.against == AGAINST).collect();
     for (q, (h, at)) in worst(&ours) {
         println!("{q:>22}: {h:10.2} half-units ({at})");

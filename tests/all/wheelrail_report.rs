@@ -165,18 +165,9 @@ fn bad_cases_axes_and_report_requests_exit_2_naming_the_field() {
 /// in full slip at creepages no patch map takes, are not viewed).
 #[test]
 fn run_of_the_shipped_suite_draws_only_the_declared_scenes() {
-    let dir = common::tempdir("wheelrail_run_suite");
-    let (res, rep) = (dir.join("res"), dir.join("rep"));
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_creepbench"))
-        .current_dir(common::root())
-        .args(["run", "--quiet", "--suite", "scenes/wheelrail", "--results"])
-        .arg(&res)
-        .arg("--report")
-        .arg(&rep)
-        .output()
-        .unwrap();
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(out.status.success(), "{err}");
+    let run = common::wheelrail_suite_run();
+    let rep = run.report_dir();
+    assert_eq!(run.outcome.report.as_deref(), Some(rep.join("validation.md").as_path()));
     let md = std::fs::read_to_string(rep.join("validation.md")).unwrap();
     assert!(md.contains("## Wheel–rail contact"), "no section");
     for drawn in ["mbench_a22_left", "mbench_a22_right"] {

@@ -6,6 +6,7 @@ use creepbench::problem::Problem;
 use creepbench::scene::Scene;
 use creepbench::solvers;
 use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
 
 /// Repository root.
 pub fn root() -> PathBuf {
@@ -181,4 +182,38 @@ pub fn nudge_csv(csv: &Path, line: usize, column: usize, by: f64) {
     cells[column] = format!("{}", cells[column].parse::<f64>().unwrap() + by);
     lines[line] = cells.join(",");
     std::fs::write(csv, lines.join("\n") + "\n").unwrap();
+}
+
+/// One run of the shipped wheel–rail suite, as `creepbench run --suite scenes/wheelrail` makes it
+/// (results and report in `dir`), shared by the tests that gate it and that read its report: it
+/// is the suite the tests would otherwise run twice.
+pub struct WheelRailRun {
+    pub dir: tempfile::TempDir,
+    pub outcome: creepbench::commands::RunOutcome,
+}
+
+impl WheelRailRun {
+    pub fn report_dir(&self) -> PathBuf {
+        self.dir.path().join("rep")
+    }
+}
+
+/// The shipped wheel–rail suite's run, made by the first test that asks for it.
+pub fn wheelrail_suite_run() -> &'static WheelRailRun {
+    static RUN: OnceLock<WheelRailRun> = OnceLock::new();
+    RUN.get_or_init(|| {
+        let dir = tempfile::tempdir().unwrap();
+        let (results_dir, report_dir) = (dir.path().join("res"), dir.path().join("rep"));
+        let outputs =
+            creepbench::commands::RunOutputs { results_dir: &results_dir, report_dir: &report_dir, fits: None };
+        let outcome = creepbench::commands::run_with(
+            &[root().join("scenes/wheelrail")],
+            &root().join("reference"),
+            outputs,
+            creepbench::commands::Runner::cli(None, false),
+            &root().join("golden"),
+        )
+        .unwrap();
+        WheelRailRun { dir, outcome }
+    })
 }
