@@ -10,7 +10,9 @@
 //! when max|τc_new − τc| ≤ tol · max τc over the contact. The next τc is a Newton step on the
 //! element's own equation, its slip falling by the self-flexibility C per MPa the limit rises
 //! (exact for one element): τc ← (τc_new + K_TAU C τc)/(1 + K_TAU C), kept where the slip can
-//! take it ([`Layer::reachable_mpa`]). The τc of the last solve is kept for the next step.
+//! take it ([`Layer::reachable_mpa`]). The limits the last solve's slip gives, τc' + K_TAU |Δu_pl|,
+//! are kept for the next step (as CONTACT's `taucs`), so that a change per step below the
+//! tolerance still accumulates.
 
 use super::tangential::{ElementState, StepResult};
 use super::ContactError;
@@ -39,7 +41,7 @@ pub struct Hardening {
     tolerance: f64,
 }
 
-/// The step's tractions, the yield limits its bound took, how the fixed point ended.
+/// The step's tractions, the yield limits its slip gives, how the fixed point ended.
 pub type HardeningStep = (StepResult, Vec<f64>, HardeningOutcome);
 
 impl Hardening {
@@ -61,8 +63,8 @@ impl Hardening {
 
     /// One step on the friction bound's pressure `pn` [MPa] at μ `mu`: `solve(bound, start)`
     /// solves the step with the bound's pressure `bound` [MPa], warm started from the last
-    /// iterate's tractions `start` when given. Returns the last solve, the limits it took (to
-    /// [`Hardening::keep`] once the step is final) and the outcome; nothing is kept here.
+    /// iterate's tractions `start` when given. Returns the last solve, the limits its slip gives
+    /// (to [`Hardening::keep`] once the step is final) and the outcome; nothing is kept here.
     pub fn step(
         &self,
         pn: &[f64],
@@ -85,12 +87,14 @@ impl Hardening {
             let r = solve(&bound, start)?;
             inner += r.iterations;
             let mut next = tau.clone();
+            let mut implied = previous.clone();
             let (mut change, mut size) = (0.0f64, 0.0f64);
             for k in (0..n).filter(|&k| pn[k] > 0.0) {
                 let friction = mu * pn[k];
                 let slip = if r.state[k] == ElementState::Slip { r.sx[k].hypot(r.sy[k]) } else { 0.0 };
                 let plastic = self.layer.plastic_slip_mm(previous[k], friction, slip);
                 let plain = self.layer.hardened_mpa(previous[k], plastic);
+                implied[k] = plain;
                 // All of the slip plastic: the element's own Newton step.
                 let newton = plastic > 0.0 && plastic == slip && 1.0 + kc > 0.0;
                 next[k] = match newton {
@@ -102,7 +106,7 @@ impl Hardening {
             }
             let converged = change <= self.tolerance * size;
             if converged || it == MAX_ITERATIONS {
-                return Ok((r, tau, HardeningOutcome { iterations: it, converged, inner_iterations: inner }));
+                return Ok((r, implied, HardeningOutcome { iterations: it, converged, inner_iterations: inner }));
             }
             tau = next;
             last = Some(r);
@@ -167,5 +171,87 @@ mod tests {
         let h = Hardening::new(layer(200.0, 435.0), 1, c, 1e-12).unwrap();
         let (_, tau, o) = h.step(&[900.0], 0.7, |b, _| one_element(c, 150.0, b)).unwrap();
         assert_eq!((tau[0], o.iterations), (200.0, 1));
+    }
+
+    /// Many elements of a layer alone (half-spaces of G = 1e12 MPa, ~1e-9 of the layer's
+    /// flexibility) under a pressure that varies per element, sheared by three shifts: each
+    /// element is the one-element problem of flexibility h3/G3, elastic within min(μ pn, τc),
+    /// slipping at μ pn where μ pn ≤ τc', else flowing to τc = (τc' + K C t)/(1 + K C) (at most
+    /// μ pn) for the trial traction t. The solver's tractions and limits give it within 1e-6.
+    #[test]
+    fn a_layer_alone_hardens_and_softens_element_by_element() {
+        use super::super::influence::Kernel;
+        use super::super::tangential::{TangentialParams, TangentialSolver};
+        let (mx, my, mu, flx) = (6, 5, 0.5, 1.25 / 8200.0);
+        let grid = crate::physics::Grid::new(mx, my, 3.0, 2.5);
+        let (x, y) = grid.centres();
+        let k0 =
+            Kernel::new(mx, my, grid.dx_mm, grid.dy_mm, 1e12, 0.28, 0.0).unwrap().with_layer(flx, [0.0; 2]).unwrap();
+        let pn: Vec<f64> = (0..mx * my).map(|k| 100.0 + 20.0 * k as f64).collect();
+        for k_tau in [435.0, -195.0] {
+            let mut solver = TangentialSolver::for_shifts(&k0, &x, &y).unwrap();
+            solver.set_pressure(&pn).unwrap();
+            let own = k0.xx[k0.index(0, 0)];
+            let mut h = Hardening::new(layer(150.0, k_tau), mx * my, own, 1e-12).unwrap();
+            let (mut px, mut py) = (vec![0.0; mx * my], vec![0.0; mx * my]);
+            let (mut p_closed, mut tau_closed) = (vec![0.0; mx * my], vec![150.0; mx * my]);
+            for shift_mm in [0.02, 0.02, 0.03] {
+                let mut params = TangentialParams::new(mu, shift_mm, 0.0, 0.0, 1.0);
+                params.tol = 1e-13;
+                let (r, tau, o) = h
+                    .step(&pn, mu, |bound, start| {
+                        solver.set_bound(bound)?;
+                        match start {
+                            Some(start) => solver.transient_resolve_from(&params, start),
+                            None => solver.transient_step(&params, &px, &py, None),
+                        }
+                    })
+                    .unwrap();
+                assert!(o.converged, "{o:?}");
+                for k in 0..mx * my {
+                    let (friction, trial) = (mu * pn[k], p_closed[k] + shift_mm / flx);
+                    let t0 = tau_closed[k];
+                    p_closed[k] = if trial <= friction.min(t0) {
+                        trial
+                    } else if friction <= t0 {
+                        friction
+                    } else {
+                        let flowed = ((t0 + k_tau * flx * trial) / (1.0 + k_tau * flx)).max(15.0).min(friction);
+                        tau_closed[k] = flowed;
+                        flowed
+                    };
+                    assert!(
+                        (r.px[k] - p_closed[k]).abs() <= 1e-6 * friction,
+                        "K {k_tau}, {k}: {} against {}",
+                        r.px[k],
+                        p_closed[k]
+                    );
+                    assert!(
+                        (tau[k] - tau_closed[k]).abs() <= 1e-6 * friction,
+                        "K {k_tau}, {k}: τc {} against {}",
+                        tau[k],
+                        tau_closed[k]
+                    );
+                }
+                h.keep(tau);
+                (px, py) = (r.px, r.py);
+            }
+            // Both kinds happened: elements that flowed, and elements that slipped by friction.
+            assert!(tau_closed.iter().any(|&t| t != 150.0) && pn.iter().any(|&p| mu * p < 150.0));
+        }
+    }
+
+    /// A change of the limit below the fixed point's tolerance is kept all the same: the limit the
+    /// step's slip gives, τc' + K (trial − τc') C, so that slow hardening accumulates step by step.
+    #[test]
+    fn a_change_below_the_tolerance_accumulates() {
+        let (c, k, trial) = (2.0e-4, 1e-3, 400.0);
+        let mut h = Hardening::new(layer(200.0, k), 1, c, 1e-6).unwrap();
+        let (_, tau, o) = h.step(&[900.0], 0.7, |b, _| one_element(c, trial, b)).unwrap();
+        assert_eq!(o.iterations, 1, "{o:?}");
+        assert_eq!(tau[0], 200.0 + k * (trial - 200.0) * c);
+        h.keep(tau);
+        let (_, tau, _) = h.step(&[900.0], 0.7, |b, _| one_element(c, trial, b)).unwrap();
+        assert!(tau[0] > h.tau_mpa()[0] && h.tau_mpa()[0] > 200.0, "{tau:?}");
     }
 }
