@@ -19,7 +19,7 @@
 //! Signs: cx, cy, cs are CKSI, CETA, CPHI as they are (this project uses CONTACT's convention).
 //!
 //! An interface layer (`[material] layer_g_mpa`, `layer_thickness_mm`) is CONTACT's M = 4 in every
-//! case, GG3, LAYTHK, TAU_C0 (the yield limit, 0 for none) and K_TAU = 0 after the material's POISS, GG; refused in transient
+//! case, GG3, LAYTHK, TAU_C0 (the yield limit, 0 for none) and K_TAU (the rate it moves at) after the material's POISS, GG; refused in transient
 //! rolling ([`check`]).
 //!
 //! Viscoelastic bodies (`[material] visco_ratio`, `visco_time_s`) are CONTACT's M = 1 in every
@@ -529,11 +529,15 @@ fn kinematics_and_material(p: &Problem, rolling: Option<(f64, f64, f64)>, out: &
         None => ([m.poisson; 2], [m.g_mpa; 2]),
     };
     let _ = writeln!(out, "  {:?}   {:?}   {:?}   {:?}    POISS 1,2,  GG 1,2", poiss[0], poiss[1], gg[0], gg[1]);
-    // M = 4: the layer, elastic (TAU_C0 = 0) or elastic-perfectly plastic (K_TAU = 0).
+    // M = 4: the layer, elastic (TAU_C0 = 0) or elasto-plastic (its yield limit and K_TAU).
     if let Some(l) = m.layer {
         let tau_c0 = l.yield_mpa.unwrap_or(0.0);
-        let _ =
-            writeln!(out, "  {:?}   {:?}   {tau_c0:?}   0.0    GG3, LAYTHK, TAU_C0, K_TAU", l.g_mpa, l.thickness_mm);
+        let k_tau = l.hardening_mpa_per_mm;
+        let _ = writeln!(
+            out,
+            "  {:?}   {:?}   {tau_c0:?}   {k_tau:?}    GG3, LAYTHK, TAU_C0, K_TAU",
+            l.g_mpa, l.thickness_mm
+        );
     }
     // M = 1: both bodies the same standard linear solid.
     if let Some(v) = m.visco {

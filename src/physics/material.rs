@@ -51,6 +51,11 @@ pub struct Layer {
     /// TAU_C0 with K_TAU = 0); `None`: elastic.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub yield_mpa: Option<f64>,
+    /// The rate K_TAU [MPa/mm] at which the yield limit moves with the element's accumulated
+    /// plastic slip, τc = τ_c0 + K_TAU Σ|Δu_pl| (CONTACT's K_TAU; > 0 hardens, < 0 softens); 0:
+    /// elastic-perfectly plastic.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub hardening_mpa_per_mm: f64,
 }
 
 impl Layer {
@@ -60,6 +65,46 @@ impl Layer {
     pub fn capped_pressure(&self, mu: f64, pn_mpa: &[f64]) -> Option<Vec<f64>> {
         let cap = self.yield_mpa? / mu;
         Some(pn_mpa.iter().map(|&p| if p > cap { cap } else { p }).collect())
+    }
+
+    /// Whether the yield limit moves with the plastic slip (a yield limit and K_TAU ≠ 0).
+    pub fn hardens(&self) -> bool {
+        self.yield_mpa.is_some() && self.hardening_mpa_per_mm != 0.0
+    }
+
+    /// The part of an element's slip `slip_mm` [mm] in a step that is the layer's plastic flow,
+    /// from the yield limit `tau_prev_mpa` [MPa] with the friction bound `friction_mpa` = μ pn
+    /// (CONTACT's `plstrc`): none where μ pn ≤ τc' (the bodies slip), all of it in a softening or
+    /// perfectly plastic layer, and in a hardening one no more than raises τc to μ pn.
+    pub fn plastic_slip_mm(&self, tau_prev_mpa: f64, friction_mpa: f64, slip_mm: f64) -> f64 {
+        let k = self.hardening_mpa_per_mm;
+        if friction_mpa <= tau_prev_mpa {
+            0.0
+        } else if k > 0.0 {
+            slip_mm.min((friction_mpa - tau_prev_mpa) / k)
+        } else {
+            slip_mm
+        }
+    }
+
+    /// The yield limit [MPa] after the plastic slip `plastic_mm` [mm] from `tau_prev_mpa`:
+    /// τc = τc' + K_TAU |Δu_pl|, not below 0.1 τ_c0 (CONTACT's `plstrc`: `taucs = taucv + k_tau
+    /// dupl_abs`, `max(0.1 tau_c0, taucs)`); τ_c0 without a yield limit.
+    pub fn hardened_mpa(&self, tau_prev_mpa: f64, plastic_mm: f64) -> f64 {
+        let tau_c0 = self.yield_mpa.unwrap_or(f64::INFINITY);
+        (tau_prev_mpa + self.hardening_mpa_per_mm * plastic_mm).max(0.1 * tau_c0)
+    }
+
+    /// The yield limit `tau_mpa` kept where the plastic slip can take it from `tau_prev_mpa`
+    /// with the friction bound `friction_mpa`: up to μ pn in a hardening layer, down to
+    /// 0.1 τ_c0 in a softening one ([`Layer::plastic_slip_mm`], [`Layer::hardened_mpa`]).
+    pub fn reachable_mpa(&self, tau_prev_mpa: f64, friction_mpa: f64, tau_mpa: f64) -> f64 {
+        let floor = 0.1 * self.yield_mpa.unwrap_or(0.0);
+        if self.hardening_mpa_per_mm > 0.0 {
+            tau_mpa.clamp(tau_prev_mpa, friction_mpa.max(tau_prev_mpa))
+        } else {
+            tau_mpa.clamp(floor.min(tau_prev_mpa), tau_prev_mpa)
+        }
     }
 
     /// The layer's tangential flexibility h3 / G3 [mm/MPa] (CONTACT's FLX of M = 4, `m_sinput.f90`).

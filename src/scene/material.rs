@@ -90,13 +90,22 @@ pub const LAYER_KEYS: Keys = Keys {
 pub const PLASTIC_KEYS: Keys = Keys {
     id: "material_plastic",
     owner: file!(),
-    keys: &[key(
-        "layer_yield_mpa",
-        "MPa",
-        Allowed::Number(Range::new(0.0, false, 1e10, false), ""),
-        Absent::Text("– (an elastic layer)"),
-        r#"the layer's yield limit τ_c0 (CONTACT's TAU_C0 with K_TAU = 0: elastic-perfectly plastic), with `layer_g_mpa` and `layer_thickness_mm` > 0: the traction bound is min(μ pn, τ_c0); exact model only, not with falling friction or dissimilar bodies: `layer_yield_mpa = 560.0`"#,
-    )],
+    keys: &[
+        key(
+            "layer_yield_mpa",
+            "MPa",
+            Allowed::Number(Range::new(0.0, false, 1e10, false), ""),
+            Absent::Text("– (an elastic layer)"),
+            r#"the layer's yield limit τ_c0 (CONTACT's TAU_C0), with `layer_g_mpa` and `layer_thickness_mm` > 0: the traction bound is min(μ pn, τc), τc = τ_c0 unless the layer hardens; exact model only, not with falling friction or dissimilar bodies: `layer_yield_mpa = 560.0`"#,
+        ),
+        key(
+            "layer_hardening_mpa_per_mm",
+            "MPa/mm",
+            Allowed::Number(Range::new(-1e10, false, 1e10, false), ""),
+            Absent::Num(0.0),
+            r#"the rate K_TAU (CONTACT's K_TAU, N/mm³) at which each element's yield limit moves with its accumulated plastic slip, τc = τ_c0 + K_TAU Σ|Δu_pl|, not below 0.1 τ_c0 nor (hardening) above μ pn; > 0 hardens, < 0 softens, 0 elastic-perfectly plastic; with `layer_yield_mpa`, shifts only (`[rolling] motion = "shift"`): `layer_hardening_mpa_per_mm = 435.0`"#,
+        ),
+    ],
 };
 
 /// `[material]`'s viscoelastic bodies (`<!-- keys:material_visco -->`), given together.
@@ -192,6 +201,15 @@ fn visco(m: &mut Section) -> Result<Option<crate::physics::material::Visco>, Inp
 /// a layer.
 fn layer(m: &mut Section) -> Result<Option<crate::physics::material::Layer>, InputError> {
     let yield_mpa = m.opt_num("layer_yield_mpa")?;
+    let hardening_mpa_per_mm = m.opt_num("layer_hardening_mpa_per_mm")?;
+    if let (Some(k), None) = (hardening_mpa_per_mm, yield_mpa) {
+        return Err(InputError::new(
+            m.field("layer_hardening_mpa_per_mm"),
+            k,
+            "a rate of the yield limit with its yield limit: layer_yield_mpa (and the layer)",
+        ));
+    }
+    let hardening_mpa_per_mm = hardening_mpa_per_mm.unwrap_or(0.0);
     if !together(m, &LAYER_KEYS, "both")? {
         return match yield_mpa {
             Some(v) => Err(InputError::new(
@@ -211,7 +229,12 @@ fn layer(m: &mut Section) -> Result<Option<crate::physics::material::Layer>, Inp
             "a yield limit with a layer of thickness > 0 (the plasticity of a body's surface without a layer, CONTACT's LAYTHK = 0, is not carried)",
         ));
     }
-    Ok((thickness_mm > 0.0).then_some(crate::physics::material::Layer { g_mpa, thickness_mm, yield_mpa }))
+    Ok((thickness_mm > 0.0).then_some(crate::physics::material::Layer {
+        g_mpa,
+        thickness_mm,
+        yield_mpa,
+        hardening_mpa_per_mm,
+    }))
 }
 
 /// `[material]` given per body (CONTACT's GG 1, 2 and POISS 1, 2): all four keys, none of

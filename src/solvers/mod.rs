@@ -240,6 +240,15 @@ fn check_model(problem: &Problem, m: &ModelDef, shifts: bool) -> Result<(), Inpu
             ));
         }
     }
+    if let Some(k) = problem.material.layer.filter(|l| l.hardens()).map(|l| l.hardening_mpa_per_mm) {
+        if problem.rolling.motion != Motion::Shift {
+            return Err(InputError::new(
+                "material.layer_hardening_mpa_per_mm",
+                format!("a yield limit moving at {k} MPa/mm with rolling"),
+                "a layer that hardens or softens with shifts only ([rolling] motion = \"shift\", CONTACT's T = 1): CONTACT refuses it in steady rolling (gdsteady: K_TAU != 0), and in transient rolling the limits would move with the material",
+            ));
+        }
+    }
     if problem.material.visco.is_some() {
         check_visco(problem, m)?;
     }

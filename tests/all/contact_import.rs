@@ -364,7 +364,12 @@ fn tractcurv_imports_the_coulomb_creep_curve_as_one_sweep() {
     );
     assert_eq!(imported.scenes.len(), 4);
     let p = scene_of(&imported, "tractcurv_31");
-    let layer = creepbench::physics::material::Layer { g_mpa: 8200.0, thickness_mm: 1.25, yield_mpa: None };
+    let layer = creepbench::physics::material::Layer {
+        g_mpa: 8200.0,
+        thickness_mm: 1.25,
+        yield_mpa: None,
+        hardening_mpa_per_mm: 0.0,
+    };
     assert_eq!((p.material.layer, p.material.g_mpa), (Some(layer), 82000.0));
     assert!(p.friction.is_falling());
     assert_eq!(p.loading.rows().count(), 30);
@@ -676,7 +681,7 @@ fn an_elasto_plastic_layer_and_a_layer_in_transient_rolling_are_refused() {
     let why = &hardening.statuses[0].refused;
     assert!(
         why.iter().any(|r| r.starts_with(
-            "M = 4, TAU_C0 = 200, K_TAU = 435, LAYTHK = 1.25, L = 0: an elasto-plastic interface layer that hardens"
+            "M = 4, TAU_C0 = 200, K_TAU = 435, LAYTHK = 1.25, T = 3, L = 0: an elasto-plastic interface layer that hardens or softens in rolling"
         )),
         "{why:?}"
     );

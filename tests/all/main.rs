@@ -34,6 +34,7 @@ mod gate_promises;
 mod gate_safety;
 mod gate_sturdy;
 mod interface_layer;
+mod layer_hardening;
 mod layering;
 mod linear_model;
 mod nonhertz;

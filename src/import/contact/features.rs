@@ -222,23 +222,23 @@ pub const FEATURES: &[Feature] = &[
         },
     },
     Feature {
-        name: "an elastic-perfectly plastic interface layer",
+        name: "an elasto-plastic interface layer",
         control: "M, TAU_C0, K_TAU",
         supported: true,
-        reason: "imported as [material] layer_yield_mpa = TAU_C0 (K_TAU = 0): the traction bound min(mu pn, TAU_C0) per element, as CONTACT's `tangcg` and `gdsteady` set it (docs/models.md, \"Interface layer\")",
-        used: |c| plastic_layer(c).map(|[_, _, tau_c0, _]| format!("M = 4, TAU_C0 = {tau_c0}, K_TAU = 0")),
+        reason: "imported as [material] layer_yield_mpa = TAU_C0 and layer_hardening_mpa_per_mm = K_TAU (where not 0, in shifts): the traction bound min(mu pn, tau_c) per element, as CONTACT's `tangcg` and `gdsteady` set it, tau_c = TAU_C0 + K_TAU times the element's accumulated plastic slip, as its `plstrc` moves it (docs/models.md, \"Interface layer\")",
+        used: |c| plastic_layer(c).map(|[_, _, tau_c0, k_tau]| format!("M = 4, TAU_C0 = {tau_c0}, K_TAU = {k_tau}")),
     },
     Feature {
-        name: "an elasto-plastic interface layer that hardens or softens, or without a layer, or with falling friction or dissimilar bodies",
-        control: "M, TAU_C0, K_TAU, LAYTHK, L, GG 1, 2",
+        name: "an elasto-plastic interface layer that hardens or softens in rolling, or without a layer, or with falling friction or dissimilar bodies",
+        control: "M, TAU_C0, K_TAU, LAYTHK, T, L, GG 1, 2",
         supported: false,
-        reason: "supported: TAU_C0 = 0 (an elastic layer), or TAU_C0 > 0 with K_TAU = 0 on a layer (LAYTHK > 0), Coulomb friction (L = 0) and quasi-identical bodies; a yield limit TAU_C0 + K_TAU u_pl that moves with each element's accumulated plastic slip, the plasticity of a body's surface without a layer and its combinations with falling friction or K != 0 are not modelled",
+        reason: "supported: TAU_C0 = 0 (an elastic layer), or TAU_C0 > 0 on a layer (LAYTHK > 0) with Coulomb friction (L = 0) and quasi-identical bodies, K_TAU != 0 in shifts (T = 1); a yield limit that moves in rolling (CONTACT refuses K_TAU != 0 in steady rolling, `gdsteady`), the plasticity of a body's surface without a layer and its combinations with falling friction or K != 0 are not modelled",
         used: |c| {
             let [_, laythk, tau_c0, k_tau] = layer_in_force(c)?;
-            let coupled = combine_bodies(c.state.poiss, c.state.gg_mpa).k != 0.0;
-            let other = k_tau != 0.0 || laythk < 1e-10 || c.state.friction_law != 0 || coupled;
+            let other = plastic_layer(c).is_none();
             (tau_c0 > 1e-10 && other).then(|| {
-                format!("M = 4, TAU_C0 = {tau_c0}, K_TAU = {k_tau}, LAYTHK = {laythk}, L = {}", c.state.friction_law)
+                let (t, l) = (c.digits.t, c.state.friction_law);
+                format!("M = 4, TAU_C0 = {tau_c0}, K_TAU = {k_tau}, LAYTHK = {laythk}, T = {t}, L = {l}")
             })
         },
     },
@@ -410,12 +410,13 @@ pub fn contact_fastrip(c: &Case3) -> bool {
     c.digits.m == 5 && simplified_setting(c, 0) && c.state.friction_law == 0 && along_x
 }
 
-/// GG3, LAYTHK, TAU_C0, K_TAU of an elastic-perfectly plastic layer the import carries: TAU_C0 > 0,
-/// K_TAU = 0, LAYTHK > 0, Coulomb friction, K = 0.
+/// GG3, LAYTHK, TAU_C0, K_TAU of an elasto-plastic layer the import carries: TAU_C0 > 0,
+/// LAYTHK > 0, K_TAU = 0 or shifts (T = 1), Coulomb friction, K = 0.
 pub fn plastic_layer(c: &Case3) -> Option<[f64; 4]> {
     let l = layer_in_force(c)?;
     let coupled = combine_bodies(c.state.poiss, c.state.gg_mpa).k != 0.0;
-    let carried = l[2] > 1e-10 && l[3] == 0.0 && l[1] >= 1e-10 && c.state.friction_law == 0 && !coupled;
+    let moving = l[3] != 0.0 && c.digits.t != 1;
+    let carried = l[2] > 1e-10 && !moving && l[1] >= 1e-10 && c.state.friction_law == 0 && !coupled;
     carried.then_some(l)
 }
 

@@ -13,7 +13,8 @@
 //!   step starts from the last two steps' tractions extrapolated in time.
 //!
 //! [`veldep`]: friction falling with the slip velocity, CONTACT's fixed point on the slip
-//! velocity around the tangential solve, with the friction memory.
+//! velocity around the tangential solve, with the friction memory. [`hardening`]: an interface
+//! layer that hardens or softens, the fixed point per step on each element's yield limit.
 //!
 //! [`stepper`] maps a resolved problem onto them, one sample at a time; [`restart`] is CONTACT's
 //! first transient step after a steady start where μ or FN changed. The undeformed distance
@@ -25,6 +26,7 @@ pub mod anderson;
 pub mod coupled;
 pub mod direction;
 pub mod force;
+pub mod hardening;
 pub mod mirror;
 pub mod restart;
 pub mod stepper;

@@ -5,6 +5,7 @@
 use super::coupled::{self, Couplings, Kind};
 use super::direction;
 use super::force;
+use super::hardening::{Hardening, HardeningOutcome};
 use super::influence::{Basis, Kernel};
 use super::mirror;
 use super::normal::{NormalParams, NormalSolver};
@@ -311,6 +312,10 @@ struct Contact<'a> {
     k0: Kernel,
     /// Dissimilar bodies: the normal–tangential coupling ([`coupled`]); `None`: K = 0.
     coupling: Option<Couplings>,
+    /// A layer that hardens or softens: each element's yield limit ([`super::hardening`]).
+    hardening: Option<Hardening>,
+    /// How the last step's fixed point on the yield limits ended.
+    hardened: Option<HardeningOutcome>,
 }
 
 /// A field in the scene's frame where the solver works in the mirrored one.
@@ -323,6 +328,10 @@ struct Shown {
 
 /// The history's columns of a run with falling friction.
 const VELDEP_COLUMNS: [&str; 4] = ["veldep_iterations", "veldep_converged", "mu_min", "mu_max"];
+
+/// The history's columns of a run with a layer that hardens or softens: the fixed point's
+/// iterations, whether it converged, and the yield limits over the contact [MPa].
+const HARDENING_COLUMNS: [&str; 4] = ["hardening_iterations", "hardening_converged", "tau_c_min_mpa", "tau_c_max_mpa"];
 
 /// Iteration limit of the slip-velocity fixed point (CONTACT: max(1, MAXIN − 10) = 190).
 const VELDEP_MAX_ITERATIONS: usize = 190;
@@ -439,6 +448,12 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
         shown: None,
         mirrored,
         chi_deg,
+        // A layer that hardens or softens: its self-flexibility C is the kernel's own element's.
+        hardening: m.layer.and_then(|l| {
+            let own = k0.index(0, 0);
+            Hardening::new(l, g.len(), 0.5 * (k0.xx[own] + k0.yy[own]), p.contact_solver.tolerance)
+        }),
+        hardened: None,
         k0,
     }))
 }
@@ -511,6 +526,7 @@ impl Contact<'_> {
             state: mirror::field(mx, &r.state),
         });
         let (px, py) = self.shown.as_ref().map_or((&r.px, &r.py), |s| (&s.px, &s.py));
+        let hardened = self.hardened.take();
         let l = self.loaded();
         let mut step = Step {
             fx_over_fn: px.iter().sum::<f64>() / l.pn_sum,
@@ -519,6 +535,15 @@ impl Contact<'_> {
             extra: vec![r.n_adhesion as f64, r.n_slip as f64, r.iterations as f64, r.residual, l.pn_max],
             termination: r.termination,
         };
+        if let (Some(o), Some(h)) = (hardened, self.hardening.as_ref()) {
+            let on = l.pn.iter().zip(h.tau_mpa()).filter(|(&p, _)| p > 0.0).map(|(_, &t)| t);
+            let (lo, hi) = on.fold((f64::INFINITY, 0.0f64), |(lo, hi), t| (lo.min(t), hi.max(t)));
+            step.extra.extend([o.iterations as f64, f64::from(u8::from(o.converged)), lo, hi]);
+            step.extra[2] = o.inner_iterations as f64;
+            if !o.converged {
+                step.termination = crate::solvers::Termination::IterationLimit;
+            }
+        }
         if let (Some(o), Some(v)) = (veldep, self.veldep.as_ref()) {
             let on = l.pn.iter().zip(v.mu()).filter(|(&p, _)| p > 0.0).map(|(_, &m)| m);
             let (lo, hi) = on.fold((f64::INFINITY, 0.0f64), |(lo, hi), m| (lo.min(m), hi.max(m)));
@@ -698,17 +723,41 @@ impl Contact<'_> {
         .map_err(|source| ContactRunError::Step { step: at.step, source }.into())
     }
 
-    /// A transient step (rolling or a shift) after the last step's tractions.
+    /// A transient step (rolling or a shift) after the last step's tractions; with a layer that
+    /// hardens or softens, the fixed point on its yield limits around each solve, the limits of
+    /// the step's final solve kept ([`Hardening`]).
     fn transient_solve(&mut self, at: &Sample, params: &TangentialParams) -> Result<Solved, SolveError> {
         let (px, py) = match &self.last {
             Some(r) => (&r.px, &r.py),
             None => (&self.zero, &self.zero),
         };
         let older = self.older.as_ref().map(|(a, b)| (a.as_slice(), b.as_slice()));
-        let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.slope, l.pn_sum)).expect("loaded before a solve");
+        let l = self.loaded.as_ref().expect("loaded before a solve");
+        let (slope, pn_sum) = (l.slope, l.pn_sum);
+        let friction_pn = l.bound_pn.as_deref().unwrap_or(&l.pn);
         let tangential = solver_for(&mut self.tangential, &mut self.rolled, params.dq_mm);
-        force::solve_sample(at, params, slope, pn_sum, &mut self.outer, |q| tangential.transient_step(q, px, py, older))
-            .map_err(|source| ContactRunError::Step { step: at.step, source }.into())
+        let hardening = self.hardening.as_ref();
+        let mut kept: Option<(Vec<f64>, HardeningOutcome)> = None;
+        let solved = force::solve_sample(at, params, slope, pn_sum, &mut self.outer, |q| match hardening {
+            None => tangential.transient_step(q, px, py, older),
+            Some(h) => {
+                let (r, tau, outcome) = h.step(friction_pn, q.mu, |bound, start| {
+                    tangential.set_bound(bound)?;
+                    match start {
+                        Some(start) => tangential.transient_resolve_from(q, start),
+                        None => tangential.transient_step(q, px, py, older),
+                    }
+                })?;
+                kept = Some((tau, outcome));
+                Ok(r)
+            }
+        })
+        .map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        if let (Some(h), Some((tau, outcome))) = (self.hardening.as_mut(), kept) {
+            h.keep(tau);
+            self.hardened = Some(outcome);
+        }
+        Ok(solved)
     }
 
     /// `solve` as it is for K = 0; for dissimilar bodies the outer iteration ([`coupled`]):
@@ -847,8 +896,10 @@ impl Stepper for Contact<'_> {
         // μ per grid row: every solve takes μ_max on the pressure scaled per row (rows keep their
         // place under the mirror of CHI = 180°, which flips x only).
         let bound_pn = p.friction_rows.as_ref().map(|rows| rows.bound_pressure(p.grid.mx, &pn_mpa));
-        // A layer's yield limit: the bound min(μ pn, τ_c0) (CONTACT's TAU_C0 with K_TAU = 0).
-        let capped = p.material.layer.and_then(|l| l.capped_pressure(at.mu, bound_pn.as_deref().unwrap_or(&pn_mpa)));
+        // A layer's yield limit: the bound min(μ pn, τ_c0) (CONTACT's TAU_C0 with K_TAU = 0); one
+        // that hardens or softens sets it per step ([`super::hardening`]).
+        let fixed = p.material.layer.filter(|l| !l.hardens());
+        let capped = fixed.and_then(|l| l.capped_pressure(at.mu, bound_pn.as_deref().unwrap_or(&pn_mpa)));
         let bound_pn = capped.or(bound_pn);
         let solvers =
             std::iter::once(&mut self.tangential).chain(self.steady_dx.as_mut()).chain(self.shift_start.as_mut());
@@ -945,7 +996,9 @@ impl Stepper for Contact<'_> {
     }
 
     fn more_columns(&self) -> &'static [&'static str] {
-        if self.veldep.is_some() {
+        if self.hardening.is_some() {
+            &HARDENING_COLUMNS
+        } else if self.veldep.is_some() {
             &VELDEP_COLUMNS
         } else {
             &[]

@@ -69,11 +69,15 @@ pub(super) fn write(src: &Source, draft: &mut Draft) -> Result<(), InputError> {
     };
     let mut material = material;
     // M = 4: the elastic interface layer (none where LAYTHK < 1e-10: CONTACT's `use_3bl`).
-    if let Some([gg3, laythk, tau_c0, _]) = s.layer_in_force().filter(|l| l[1] >= 1e-10) {
+    if let Some([gg3, laythk, tau_c0, k_tau]) = s.layer_in_force().filter(|l| l[1] >= 1e-10) {
         material.extend([("layer_g_mpa", Value::Float(gg3)), ("layer_thickness_mm", Value::Float(laythk))]);
-        // Its yield limit (TAU_C0 > 0; features.rs refuses K_TAU != 0).
+        // Its yield limit (TAU_C0 > 0) and the rate it moves at (K_TAU; features.rs takes it in
+        // shifts only).
         if tau_c0 > 1e-10 {
             material.push(("layer_yield_mpa", Value::Float(tau_c0)));
+            if k_tau != 0.0 {
+                material.push(("layer_hardening_mpa_per_mm", Value::Float(k_tau)));
+            }
         }
     }
     // M = 1: viscoelastic bodies alike (features.rs refuses bodies that differ); FG = 0 is elastic.
