@@ -109,6 +109,42 @@ fn cross_sections_are_contacts_own() {
     }
 }
 
+/// The surface's height at (u, y) against CONTACT's `varprof_get_z_at_xy` (the driver's
+/// `*_z.txt`: 999 where CONTACT finds no surface, beside the rail at u; u held to the first and
+/// last slice's): the same points without a surface, and every height within 1e-9 mm plus
+/// 1e-8 |dz/dy| (CONTACT's Newton solve for the lateral parameter stops at 1e-8 mm in y).
+#[test]
+fn surface_heights_are_contacts_own() {
+    for f in FILES.iter().filter(|f| f.name != "S1002_flat.slcw") {
+        let s = read(f);
+        let stem = f.name.rsplit_once('.').unwrap().0;
+        let text = std::fs::read_to_string(root().join(format!("tests/data/slices/{stem}_z.txt"))).unwrap();
+        let (mut worst, mut count, mut outside) = (0.0f64, 0, 0);
+        for line in text.lines().filter(|l| !l.starts_with('%')) {
+            let v: Vec<f64> = line.split_whitespace().map(|x| x.parse().unwrap()).collect();
+            let (u, y, zc) = (v[0], v[1], v[2]);
+            let ours = s.surface_z_at(u, y);
+            if zc == 999.0 {
+                assert_eq!(ours, None, "{} at u = {u}, y = {y}: CONTACT finds no surface", f.name);
+                outside += 1;
+                continue;
+            }
+            let z = ours.unwrap_or_else(|| panic!("{} at u = {u}, y = {y}: no surface, CONTACT's z = {zc}", f.name));
+            // CONTACT's Newton solve for v stops at |y(v) − y| < 1e-8 mm (`solve_cubic_newton`,
+            // tol_f), which moves its z by up to 1e-8 |dz/dy|.
+            let dz_dy = match (s.surface_z_at(u, y + 1e-3), s.surface_z_at(u, y - 1e-3)) {
+                (Some(a), Some(b)) => (a - b) / 2e-3,
+                _ => 0.0,
+            };
+            let scaled = (z - zc).abs() / (1e-9 + 1e-8 * dz_dy.abs());
+            assert!(scaled <= 1.0, "{} at u = {u}, y = {y}: z {z} vs CONTACT {zc} (dz/dy {dz_dy})", f.name);
+            worst = worst.max(scaled);
+            count += 1;
+        }
+        eprintln!("{}: {count} heights, worst {worst:.2} of the bound; {outside} points without surface", f.name);
+    }
+}
+
 /// Each patch's printed (S_WS, XCP(TR), YCP(R), ZCP(R)) with the printed texts of XCP, YCP, ZCP.
 fn printed_references(deck: &str) -> Vec<(usize, f64, [f64; 3], [String; 3])> {
     let path = root().join("reference/contact_wheelrail/testbank/examples_s+c").join(deck);

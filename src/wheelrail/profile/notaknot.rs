@@ -75,6 +75,29 @@ impl NotAKnot {
         w
     }
 
+    /// The spline through data `f` at the sites: its second derivatives M_i (T M = R f by
+    /// Thomas's algorithm, the ends from the not-a-knot conditions).
+    pub fn curve(&self, f: &[f64]) -> Curve {
+        let (u, n) = (&self.u, self.u.len());
+        let (mut sup, mut rhs) = (vec![0.0; n], vec![0.0; n]);
+        for r in 1..n - 1 {
+            let (h0, h1) = (u[r] - u[r - 1], u[r + 1] - u[r]);
+            let d = 6.0 * ((f[r + 1] - f[r]) / h1 - (f[r] - f[r - 1]) / h0);
+            let sub = if r > 1 { self.lower[r] } else { 0.0 };
+            let den = self.diag[r] - sub * sup[r - 1];
+            sup[r] = if r < n - 2 { self.upper[r] / den } else { 0.0 };
+            rhs[r] = (d - sub * rhs[r - 1]) / den;
+        }
+        let mut m = vec![0.0; n];
+        for r in (1..n - 1).rev() {
+            m[r] = rhs[r] - sup[r] * m[r + 1];
+        }
+        let [al, be, ga, de] = self.ends;
+        m[0] = al * m[1] + be * m[2];
+        m[n - 1] = ga * m[n - 2] + de * m[n - 3];
+        Curve { u: u.clone(), f: f.to_vec(), m }
+    }
+
     /// y with Tᵀ y = c on rows 1 ..= n − 2 (Thomas's algorithm: Tᵀ is tridiagonal, its
     /// sub-diagonal T's super-diagonal shifted, and column diagonally dominant).
     fn solve_transposed(&self, c: &[f64]) -> Vec<f64> {
@@ -92,6 +115,35 @@ impl NotAKnot {
             y[r] = rhs[r] - sup[r] * y[r + 1];
         }
         y
+    }
+}
+
+/// A not-a-knot spline through given data: the sites, the data and the second derivatives.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Curve {
+    u: Vec<f64>,
+    f: Vec<f64>,
+    m: Vec<f64>,
+}
+
+impl Curve {
+    /// The number of segments.
+    pub fn segments(&self) -> usize {
+        self.u.len() - 1
+    }
+
+    /// Segment `k`'s cubic in t = x − u_k: [c0, c1, c2, c3] and its length.
+    pub fn cubic(&self, k: usize) -> ([f64; 4], f64) {
+        let h = self.u[k + 1] - self.u[k];
+        let (mk, mk1) = (self.m[k], self.m[k + 1]);
+        let c1 = (self.f[k + 1] - self.f[k]) / h - h * (2.0 * mk + mk1) / 6.0;
+        ([self.f[k], c1, mk / 2.0, (mk1 - mk) / (6.0 * h)], h)
+    }
+
+    /// The value on segment `k` at t = x − u_k.
+    pub fn value_on(&self, k: usize, t: f64) -> f64 {
+        let ([c0, c1, c2, c3], _) = self.cubic(k);
+        ((c3 * t + c2) * t + c1) * t + c0
     }
 }
 

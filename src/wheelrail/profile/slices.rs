@@ -47,6 +47,8 @@ pub struct Slices {
     y_mm: Vec<Vec<f64>>,
     z_mm: Vec<Vec<f64>>,
     spline: Along,
+    /// The not-a-knot spline across, over the samples' indices (CONTACT's v: 1, 2, …).
+    across: NotAKnot,
     lambda: f64,
 }
 
@@ -134,8 +136,12 @@ pub fn read_slices(path: &Path, kind: ProfileKind, opts: &ProfileOptions) -> Res
     let spline = spline.ok_or_else(|| {
         ProfileError::profile(&file, "the slices' positions", format!("{u:?}"), "at least 4 increasing positions")
     })?;
+    let sites: Vec<f64> = (0..y_mm[0].len()).map(|j| j as f64).collect();
+    let across = NotAKnot::new(&sites).ok_or_else(|| {
+        ProfileError::profile(&file, "the samples per slice", sites.len(), "at least 4 (CONTACT's error 404)")
+    })?;
     // CONTACT fits the cross-section with λ = SMOOTH as given, unweighted, whatever ISMOOTH.
-    Ok(Slices { file, kind, u, profiles, y_mm, z_mm, spline, lambda: opts.smooth })
+    Ok(Slices { file, kind, u, profiles, y_mm, z_mm, spline, across, lambda: opts.smooth })
 }
 
 impl Slices {
@@ -191,6 +197,66 @@ impl Slices {
             ProfileError::profile(&self.file, "the interpolated cross-section", u, "distinct finite points")
         })
     }
+}
+
+impl Slices {
+    /// The height of the surface at (u, y) (CONTACT's `varprof_get_z_at_xy`,
+    /// `bspline_get_z_at_xy`): across the track the surface at u is the not-a-knot spline through
+    /// the interpolated samples over their indices (the tensor spline's v), the first segment
+    /// that reaches y (lowest v) taken; u held to the first and last slice's. `None` where the
+    /// surface does not reach y at u (CONTACT's value there is its marker 999).
+    pub fn surface_z_at(&self, u: f64, y: f64) -> Option<f64> {
+        if !y.is_finite() || u.is_nan() {
+            return None;
+        }
+        let (ys, zs) = self.samples_at(u);
+        let (cy, cz) = (self.across.curve(&ys), self.across.curve(&zs));
+        (0..cy.segments()).find_map(|k| first_root(cy.cubic(k), y).map(|t| cz.value_on(k, t)))
+    }
+}
+
+/// The smallest t in [0, h] where c0 + c1 t + c2 t² + c3 t³ = y (each monotone piece between
+/// the cubic's turning points bisected to the last bit).
+fn first_root(([c0, c1, c2, c3], h): ([f64; 4], f64), y: f64) -> Option<f64> {
+    let g = |t: f64| ((c3 * t + c2) * t + c1) * t + c0 - y;
+    // Turning points: 3 c3 t² + 2 c2 t + c1 = 0.
+    let mut cuts = vec![0.0];
+    let (a, b, c) = (3.0 * c3, 2.0 * c2, c1);
+    if a.abs() > 1e-300 {
+        let disc = b * b - 4.0 * a * c;
+        if disc > 0.0 {
+            let r = disc.sqrt();
+            let mut ts = [(-b - r) / (2.0 * a), (-b + r) / (2.0 * a)];
+            ts.sort_by(f64::total_cmp);
+            cuts.extend(ts.into_iter().filter(|&t| t > 0.0 && t < h));
+        }
+    } else if b.abs() > 1e-300 && -c / b > 0.0 && -c / b < h {
+        cuts.push(-c / b);
+    }
+    cuts.push(h);
+    for w in cuts.windows(2) {
+        let (mut lo, mut hi) = (w[0], w[1]);
+        let (glo, ghi) = (g(lo), g(hi));
+        if glo == 0.0 {
+            return Some(lo);
+        }
+        if glo.signum() == ghi.signum() && ghi != 0.0 {
+            continue;
+        }
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if g(mid).signum() == glo.signum() {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        return Some(0.5 * (lo + hi));
+    }
+    None
 }
 
 /// The lines of a slices file read in order.
