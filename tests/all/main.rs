@@ -70,4 +70,5 @@ mod wheelrail_mbench;
 mod wheelrail_profiles;
 mod wheelrail_report;
 mod wheelrail_shift;
+mod wheelrail_slices;
 mod wheelrail_variants;

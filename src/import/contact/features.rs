@@ -776,7 +776,7 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "a variable rail profile (slices file, switches and crossings)",
         control: "RFNAME",
         supported: false,
-        reason: "supported: one rail profile for the whole track (SIMPACK .prr, Miniprof .ban or a y-z table)",
+        reason: "supported: one rail profile for the whole track (SIMPACK .prr, Miniprof .ban or a y-z table); a slices file is read and interpolated (wheelrail::profile::slices) but the contact on a rail that varies along the track (CONTACT's locus on its 3-D surface) is not solved yet",
         used: |c| slices(c.state.rail_profile.as_ref()),
     },
     WheelRailRow {

@@ -43,6 +43,24 @@ impl ProfileError {
         }
     }
 
+    /// The error of slice `index` (1-based) of the slices file `slices`: its file named with them.
+    pub(crate) fn in_slice(self, slices: &str, index: usize) -> Self {
+        let name = |f: String| format!("{slices}, slice {index}: {f}");
+        match self {
+            ProfileError::Unreadable { file, reason } => ProfileError::Unreadable { file: name(file), reason },
+            ProfileError::Value { file, line, column, what, value, allowed } => {
+                ProfileError::Value { file: name(file), line, column, what, value, allowed }
+            }
+            ProfileError::Structure { file, line, what, allowed } => {
+                ProfileError::Structure { file: name(file), line, what, allowed }
+            }
+            ProfileError::Profile { file, what, value, allowed } => {
+                ProfileError::Profile { file: name(file), what, value, allowed }
+            }
+            e @ ProfileError::Option { .. } => e,
+        }
+    }
+
     /// An option error.
     pub(crate) fn option(field: &str, value: impl ToString, allowed: impl Into<String>) -> Self {
         ProfileError::Option { field: field.into(), value: value.to_string(), allowed: allowed.into() }

@@ -7,6 +7,7 @@
 //!
 //! Units are in the names: `_mm` for lengths, `_rad` for angles, `_per_mm` for curvatures.
 
+mod approx;
 pub mod canonical;
 pub mod clean;
 pub mod error;
@@ -14,9 +15,11 @@ mod foldback;
 mod index;
 pub mod lines;
 pub mod miniprof;
+mod notaknot;
 pub mod options;
 pub mod read;
 pub mod simpack;
+pub mod slices;
 pub mod spline;
 
 pub use error::ProfileError;
@@ -224,6 +227,40 @@ impl Profile {
         };
         let breaks = clean::find_kinks(&pts, &kinks);
         let (lambda, use_spacing) = opts.lambda();
+        Ok(Profile::fitted(file, kind, &pts, s_mm, breaks, (lambda, use_spacing), cleaning, opts.max_omit))
+    }
+
+    /// A profile through points as they are, without cleaning or kinks: one spline section,
+    /// smoothing with λ = `lambda` unweighted (CONTACT's `grid_make_arclength` and
+    /// `grid_make_ppspline` on a slices file's interpolated cross-section, `varprof_intpol_xunif`).
+    /// `None` with fewer than four points or points that coincide.
+    pub(crate) fn section(file: &str, kind: ProfileKind, y_mm: &[f64], z_mm: &[f64], lambda: f64) -> Option<Profile> {
+        let pts: Vec<Pt> = y_mm.iter().zip(z_mm).map(|(&y, &z)| Pt::new(y, z, 0)).collect();
+        let finite = pts.iter().all(|p| p.y.is_finite() && p.z.is_finite());
+        if pts.len() < 4 || !finite {
+            return None;
+        }
+        let s_mm = arc_length(&pts);
+        if s_mm.windows(2).any(|w| w[1] <= w[0]) {
+            return None;
+        }
+        let breaks = vec![0, pts.len() - 1];
+        let cleaning = Cleaning { read: pts.len(), ..Default::default() };
+        Some(Profile::fitted(file, kind, &pts, s_mm, breaks, (lambda, false), cleaning, 0.5))
+    }
+
+    /// The spline through `pts` at arc lengths `s_mm`, section by section between `breaks`.
+    #[allow(clippy::too_many_arguments)]
+    fn fitted(
+        file: &str,
+        kind: ProfileKind,
+        pts: &[Pt],
+        s_mm: Vec<f64>,
+        breaks: Vec<usize>,
+        (lambda, use_spacing): (f64, bool),
+        cleaning: Cleaning,
+        max_omit: f64,
+    ) -> Profile {
         let wgt = spline::weights(&s_mm, &breaks, use_spacing);
         let ys: Vec<f64> = pts.iter().map(|p| p.y).collect();
         let zs: Vec<f64> = pts.iter().map(|p| p.z).collect();
@@ -234,7 +271,7 @@ impl Profile {
         let y_range =
             segment_y.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(a, b)| (lo.min(a), hi.max(b)));
         let index = index::SegmentIndex::new(&segment_y);
-        Ok(Profile(Arc::new(Data {
+        Profile(Arc::new(Data {
             file: file.to_string(),
             kind,
             y_mm: spline.y.a0.clone(),
@@ -243,11 +280,11 @@ impl Profile {
             spline,
             breaks,
             cleaning,
-            max_omit: opts.max_omit,
+            max_omit,
             segment_y,
             index,
             y_range,
-        })))
+        }))
     }
 
     /// The file the profile was read from (`<values>` for [`Self::from_points`]).

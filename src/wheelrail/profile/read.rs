@@ -1,6 +1,7 @@
 //! Reading a profile file (CONTACT's `profile_read_file`, `profile_get_filetype`,
 //! `profile_read_slice` in `m_varprof.f90`): the format from the extension (`prr`, `prw`:
-//! SIMPACK; `ban`, `whl`: Miniprof; `slcs`, `slcw`: CONTACT's variable profiles, not supported;
+//! SIMPACK; `ban`, `whl`: Miniprof; `slcs`, `slcw`: CONTACT's variable profiles, read by
+//! [`super::slices`], not as one profile;
 //! anything else: a plain table), the file read with the project's bounded reader (a directory, a
 //! FIFO or a device is refused without blocking), then the format's reader and CONTACT's
 //! finishing ([`super::Profile`]).
@@ -30,7 +31,7 @@ pub fn format_of(name: &str) -> Result<(Format, Option<ProfileKind>), ProfileErr
             name,
             "the file extension",
             ext,
-            "prr, prw (SIMPACK), ban, whl (Miniprof) or a plain y z table: CONTACT's variable profiles (slcs, slcw) are not supported",
+            "prr, prw (SIMPACK), ban, whl (Miniprof) or a plain y z table: a slices file (slcs, slcw: CONTACT's variable profiles) is read by `profile::slices` and the contact on it is not supported yet",
         ));
     }
     Ok(if starts("prr") {

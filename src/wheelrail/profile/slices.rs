@@ -1,0 +1,484 @@
+//! CONTACT's variable profiles: a slices file (`.slcs`, a rail whose profile changes along the
+//! track, switches and crossings; `.slcw`, a wheel whose profile changes around its
+//! circumference) read as CONTACT reads it (`m_varprof.f90`: `varprof_read_file`,
+//! `varprof_make_vj`, `varprof_make_2dspline`, `varprof_intpol_xunif`; user guide, "Rail
+//! slices-file", "Wheel slices-file" and its specification of the file): the header, each slice's
+//! position and profile file (read relative to the slices file, with the deck's options, as any
+//! profile), the features that divide each slice into parts, then each slice resampled at the
+//! same number of points per part (the parts' longest length over the slices in steps of at most
+//! 0.5 mm, each slice's part stretched over them) and every lateral path of samples interpolated
+//! along the track by CONTACT's cubic not-a-knot spline (`U_INTPOL = 1`) or its approximating
+//! cubic B-spline with the samples as control points (`U_INTPOL = 2`). A cross-section at a
+//! position ([`Slices::section_at`]) is the interpolated samples with CONTACT's profile spline
+//! through them (no kinks, the deck's SMOOTH unweighted).
+//!
+//! Not supported (refused naming the value): surface perturbations (`PERTURB`), and interruptions (a slice whose first or last features are
+//! negative: parts that are missing on some slices).
+
+use super::approx::Approximating;
+use super::error::ProfileError;
+use super::lines::{self, At, Line};
+use super::notaknot::NotAKnot;
+use super::{read_profile, Profile, ProfileKind, ProfileOptions};
+use std::f64::consts::PI;
+use std::path::Path;
+
+/// The comment characters of a slices file (CONTACT's `readline`).
+const COMMENT: &str = "!%\"";
+
+/// CONTACT's largest number of slices (`MAX_NUM_SLCS`).
+pub const MAX_SLICES: usize = 4999;
+
+/// The largest step between resampled points along a part [mm] (`ds_max2d`).
+pub const RESAMPLE_STEP_MM: f64 = 0.5;
+
+/// The smallest distance between successive slices [mm or rad] (`tiny_ds`).
+const TINY_DS: f64 = 1e-3;
+
+/// A slices file read and resampled.
+#[derive(Debug, Clone)]
+pub struct Slices {
+    file: String,
+    kind: ProfileKind,
+    /// Each slice's position: u along the track [mm] for a rail, θ around the wheel [rad].
+    u: Vec<f64>,
+    profiles: Vec<Profile>,
+    /// The resampled points, slice by slice (each slice the same number, part by part).
+    y_mm: Vec<Vec<f64>>,
+    z_mm: Vec<Vec<f64>>,
+    spline: Along,
+    /// The not-a-knot spline across, over the samples' indices (CONTACT's v: 1, 2, …).
+    across: NotAKnot,
+    lambda: f64,
+}
+
+/// The spline along the track (or around the wheel) through the slices' samples.
+#[derive(Debug, Clone)]
+enum Along {
+    /// U_INTPOL = 1: interpolating, not-a-knot ends.
+    Interpolating(NotAKnot),
+    /// U_INTPOL = 2: approximating, the samples as control points.
+    Approximating(Approximating),
+}
+
+impl Along {
+    fn weights(&self, u: f64) -> Vec<f64> {
+        match self {
+            Along::Interpolating(s) => s.weights(u),
+            Along::Approximating(s) => s.weights(u),
+        }
+    }
+}
+
+/// The header of a slices file.
+struct Header {
+    offset: f64,
+    scale: f64,
+    nslc: usize,
+    nfeat: usize,
+    nkink: usize,
+    naccel: usize,
+    approximating: bool,
+}
+
+/// Read the slices file at `path` for a `kind` profile, each slice with `opts` (the deck's
+/// MIRRORY, MIRRORZ, SCALE, SMOOTH, …).
+pub fn read_slices(path: &Path, kind: ProfileKind, opts: &ProfileOptions) -> Result<Slices, ProfileError> {
+    let opts = opts.checked()?;
+    let file = path.display().to_string();
+    let ext = file.rsplit_once('.').map(|(_, e)| e.to_lowercase()).unwrap_or_default();
+    let wanted = match kind {
+        ProfileKind::Rail => "slcs",
+        ProfileKind::Wheel => "slcw",
+    };
+    if ext != wanted {
+        let allowed = format!("a {} slices file ends in .{wanted}", kind.name());
+        return Err(ProfileError::profile(&file, "the file extension", ext, allowed));
+    }
+    let text = crate::safety::read::read_text(path, super::read::PROFILE_LIMIT_BYTES, "slices file")
+        .map_err(|e| ProfileError::Unreadable { file: file.clone(), reason: e.to_string() })?;
+    let lines = lines::non_empty_lines(&text, COMMENT);
+    let mut cursor = Cursor { file: &file, lines: &lines, next: 0 };
+    let header = read_header(&mut cursor, kind)?;
+    let mut u = Vec::with_capacity(header.nslc);
+    let mut names = Vec::with_capacity(header.nslc);
+    for i in 0..header.nslc {
+        let (at, code) = cursor.line(&format!("slice {}: its position and profile file", i + 1))?;
+        let (pos, name) = slice_line(code, at)?;
+        u.push(header.scale * (header.offset + pos));
+        names.push(name);
+    }
+    check_positions(&u, kind, &file, &lines, &cursor)?;
+    for what in [("NKINK", header.nkink), ("NACCEL", header.naccel)] {
+        let values = cursor.values(what.1, &format!("{}: a part number", what.0))?;
+        if let Some((v, at)) = values.iter().find(|(v, _)| !(1.0..=(header.nfeat as f64 - 2.0)).contains(v)) {
+            let allowed = format!("a part number 1 ..= NFEAT − 2 = {} (CONTACT's error 154)", header.nfeat - 2);
+            return Err(at.value(1, what.0, &v.to_string(), &allowed));
+        }
+    }
+    let features = read_features(&mut cursor, &header, &u)?;
+    if let Some(l) = lines.get(cursor.next) {
+        let at = At { file: &file, line: l.number };
+        return Err(at.structure("a line after the slices' features", "nothing (perturbations are not supported)"));
+    }
+    let dir = path.parent().unwrap_or(Path::new(""));
+    let mut profiles = Vec::with_capacity(u.len());
+    for (i, name) in names.iter().enumerate() {
+        let p = read_profile(&dir.join(name), kind, &opts).map_err(|e| e.in_slice(&file, i + 1))?;
+        profiles.push(p);
+    }
+    let (y_mm, z_mm) = resample(&profiles, &features, &file)?;
+    let spline = if header.approximating {
+        Approximating::new(&u).map(Along::Approximating)
+    } else {
+        NotAKnot::new(&u).map(Along::Interpolating)
+    };
+    let spline = spline.ok_or_else(|| {
+        ProfileError::profile(&file, "the slices' positions", format!("{u:?}"), "at least 4 increasing positions")
+    })?;
+    let sites: Vec<f64> = (0..y_mm[0].len()).map(|j| j as f64).collect();
+    let across = NotAKnot::new(&sites).ok_or_else(|| {
+        ProfileError::profile(&file, "the samples per slice", sites.len(), "at least 4 (CONTACT's error 404)")
+    })?;
+    // CONTACT fits the cross-section with λ = SMOOTH as given, unweighted, whatever ISMOOTH.
+    Ok(Slices { file, kind, u, profiles, y_mm, z_mm, spline, across, lambda: opts.smooth })
+}
+
+impl Slices {
+    /// The slices file.
+    pub fn file(&self) -> &str {
+        &self.file
+    }
+
+    pub fn kind(&self) -> ProfileKind {
+        self.kind
+    }
+
+    /// Each slice's position: u [mm] along the track (rail) or θ [rad] around the wheel.
+    pub fn positions(&self) -> &[f64] {
+        &self.u
+    }
+
+    /// Slice `i`'s profile as read (0-based).
+    pub fn slice(&self, i: usize) -> &Profile {
+        &self.profiles[i]
+    }
+
+    /// The number of resampled points per slice.
+    pub fn samples(&self) -> usize {
+        self.y_mm[0].len()
+    }
+
+    /// The resampled points of every slice interpolated to position `u` (held to the first and
+    /// last slice's: CONTACT's constant extrapolation), (y, z) [mm].
+    pub fn samples_at(&self, u: f64) -> (Vec<f64>, Vec<f64>) {
+        let w = self.spline.weights(u);
+        let m = self.samples();
+        let (mut y, mut z) = (vec![0.0; m], vec![0.0; m]);
+        for (i, &wi) in w.iter().enumerate() {
+            if wi == 0.0 {
+                continue;
+            }
+            for j in 0..m {
+                y[j] += wi * self.y_mm[i][j];
+                z[j] += wi * self.z_mm[i][j];
+            }
+        }
+        (y, z)
+    }
+
+    /// The cross-section at position `u`: the interpolated samples with CONTACT's profile spline
+    /// through them (`varprof_intpol_xunif` with one position: no kinks, λ = SMOOTH unweighted;
+    /// with SMOOTH > 0 its points are the smoothed samples, as CONTACT replaces them).
+    pub fn section_at(&self, u: f64) -> Result<Profile, ProfileError> {
+        let (y, z) = self.samples_at(u);
+        let name = format!("{} at {u}", self.file);
+        Profile::section(&name, self.kind, &y, &z, self.lambda).ok_or_else(|| {
+            ProfileError::profile(&self.file, "the interpolated cross-section", u, "distinct finite points")
+        })
+    }
+}
+
+impl Slices {
+    /// The height of the surface at (u, y) (CONTACT's `varprof_get_z_at_xy`,
+    /// `bspline_get_z_at_xy`): across the track the surface at u is the not-a-knot spline through
+    /// the interpolated samples over their indices (the tensor spline's v), the first segment
+    /// that reaches y (lowest v) taken; u held to the first and last slice's. `None` where the
+    /// surface does not reach y at u (CONTACT's value there is its marker 999).
+    pub fn surface_z_at(&self, u: f64, y: f64) -> Option<f64> {
+        if !y.is_finite() || u.is_nan() {
+            return None;
+        }
+        let (ys, zs) = self.samples_at(u);
+        let (cy, cz) = (self.across.curve(&ys), self.across.curve(&zs));
+        (0..cy.segments()).find_map(|k| first_root(cy.cubic(k), y).map(|t| cz.value_on(k, t)))
+    }
+}
+
+/// The smallest t in [0, h] where c0 + c1 t + c2 t² + c3 t³ = y (each monotone piece between
+/// the cubic's turning points bisected to the last bit).
+fn first_root(([c0, c1, c2, c3], h): ([f64; 4], f64), y: f64) -> Option<f64> {
+    let g = |t: f64| ((c3 * t + c2) * t + c1) * t + c0 - y;
+    // Turning points: 3 c3 t² + 2 c2 t + c1 = 0.
+    let mut cuts = vec![0.0];
+    let (a, b, c) = (3.0 * c3, 2.0 * c2, c1);
+    if a.abs() > 1e-300 {
+        let disc = b * b - 4.0 * a * c;
+        if disc > 0.0 {
+            let r = disc.sqrt();
+            let mut ts = [(-b - r) / (2.0 * a), (-b + r) / (2.0 * a)];
+            ts.sort_by(f64::total_cmp);
+            cuts.extend(ts.into_iter().filter(|&t| t > 0.0 && t < h));
+        }
+    } else if b.abs() > 1e-300 && -c / b > 0.0 && -c / b < h {
+        cuts.push(-c / b);
+    }
+    cuts.push(h);
+    for w in cuts.windows(2) {
+        let (mut lo, mut hi) = (w[0], w[1]);
+        let (glo, ghi) = (g(lo), g(hi));
+        if glo == 0.0 {
+            return Some(lo);
+        }
+        if glo.signum() == ghi.signum() && ghi != 0.0 {
+            continue;
+        }
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if g(mid).signum() == glo.signum() {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        return Some(0.5 * (lo + hi));
+    }
+    None
+}
+
+/// The lines of a slices file read in order.
+struct Cursor<'a> {
+    file: &'a str,
+    lines: &'a [Line<'a>],
+    next: usize,
+}
+
+impl<'a> Cursor<'a> {
+    /// The next line (comment cut), or an error naming what was expected.
+    fn line(&mut self, what: &str) -> Result<(At<'a>, &'a str), ProfileError> {
+        let Some(l) = self.lines.get(self.next) else {
+            let last = self.lines.last().map_or(0, |l| l.number);
+            let at = At { file: self.file, line: last };
+            return Err(at.structure(format!("the end of the file before {what}"), "the slices file's lines in order"));
+        };
+        self.next += 1;
+        Ok((At { file: self.file, line: l.number }, lines::cut_comment_outside_quotes(l.text, COMMENT)))
+    }
+
+    /// `count` numbers from the next lines (a group of values may continue on the next line; a
+    /// line never holds more than the group needs).
+    fn values(&mut self, count: usize, what: &str) -> Result<Vec<(f64, At<'a>)>, ProfileError> {
+        let mut out = Vec::with_capacity(count);
+        while out.len() < count {
+            let (at, code) = self.line(what)?;
+            let v = lines::numbers(code, at, what, 1)?;
+            if out.len() + v.len() > count {
+                let allowed = format!("{count} numbers in the group, {} still to come", count - out.len());
+                return Err(at.value(1, what, code.trim(), &allowed));
+            }
+            out.extend(v.into_iter().map(|x| (x, at)));
+        }
+        Ok(out)
+    }
+}
+
+/// A whole number in `lo ..= hi` at a line's column 1.
+fn whole(v: f64, at: At<'_>, what: &str, lo: usize, hi: usize, allowed: &str) -> Result<usize, ProfileError> {
+    if v.fract() == 0.0 && v >= lo as f64 && v <= hi as f64 {
+        Ok(v as usize)
+    } else {
+        Err(at.value(1, what, &v.to_string(), allowed))
+    }
+}
+
+/// The four header lines: offset and scale, NSLC, NFEAT NKINK NACCEL, U_INTPOL {PERTURB}.
+fn read_header(c: &mut Cursor<'_>, kind: ProfileKind) -> Result<Header, ProfileError> {
+    let (pos, unit) = match kind {
+        ProfileKind::Rail => ("U", "mm"),
+        ProfileKind::Wheel => ("TH", "rad"),
+    };
+    let what = format!("{pos}_OFFSET, {pos}_SCALE");
+    let (at, code) = c.line(&what)?;
+    let v = lines::numbers(code, at, &what, 2)?;
+    let scale_allowed = format!("a positive factor to {unit}");
+    if v[1] <= 0.0 {
+        return Err(at.value(1, &format!("{pos}_SCALE"), &v[1].to_string(), &scale_allowed));
+    }
+    let (offset, scale) = (v[0], v[1]);
+    let (at, code) = c.line("NSLC")?;
+    let n = lines::numbers(code, at, "NSLC", 1)?[0];
+    let nslc = whole(
+        n,
+        at,
+        "NSLC",
+        4,
+        MAX_SLICES,
+        &format!("4 ..= {MAX_SLICES} slices (CONTACT's errors 151, 404: its surface needs at least 4)"),
+    )?;
+    let (at, code) = c.line("NFEAT, NKINK, NACCEL")?;
+    let v = lines::numbers(code, at, "NFEAT, NKINK, NACCEL", 3)?;
+    let nfeat = whole(v[0], at, "NFEAT", 0, 999, "0 ..= 999 features (CONTACT's error 151)")?;
+    let (nkink, naccel) = if nfeat <= 1 {
+        (0, 0)
+    } else {
+        let allowed = format!("0 ..= NFEAT − 2 = {} (CONTACT's error 151)", nfeat - 2);
+        (whole(v[1], at, "NKINK", 0, nfeat - 2, &allowed)?, whole(v[2], at, "NACCEL", 0, nfeat - 2, &allowed)?)
+    };
+    let what = format!("{pos}_INTPOL");
+    let (at, code) = c.line(&what)?;
+    let v = lines::numbers(code, at, &what, 1)?;
+    let intpol = whole(v[0], at, &what, 1, 2, "1 (interpolating spline) or 2 (approximating spline)")?;
+    if let Some(&p) = v.get(1) {
+        whole(p, at, "PERTURB", 0, 0, "0: no perturbation (CONTACT's perturbations 1 and 2 are not supported)")?;
+    }
+    Ok(Header { offset, scale, nslc, nfeat, nkink, naccel, approximating: intpol == 2 })
+}
+
+/// A slice's line: its position and its profile's file name (quoted or one word).
+fn slice_line(code: &str, at: At<'_>) -> Result<(f64, String), ProfileError> {
+    let pos = lines::numbers(code, at, "the slice's position", 1)?[0];
+    let rest = code.trim_start();
+    let rest = rest[rest.find(|c: char| c.is_whitespace() || c == ',').unwrap_or(rest.len())..]
+        .trim_start_matches(|c: char| c.is_whitespace() || c == ',');
+    let column = code.len() - rest.len() + 1;
+    let name = match rest.chars().next() {
+        Some(q @ ('\'' | '"')) => rest[1..].split_once(q).map(|(n, _)| n.to_string()),
+        Some(_) => rest.split_whitespace().next().map(str::to_string),
+        None => None,
+    };
+    match name {
+        Some(n) if !n.trim().is_empty() => Ok((pos, n.trim().to_string())),
+        _ => Err(at.value(column, "the slice's profile file", rest, "a file name after the position ('name' or name)")),
+    }
+}
+
+/// Positions strictly increasing by more than 0.001 (error 152); a wheel's within [−1.5π, 1.5π]
+/// and covering [−π, π) or inside it (error 153).
+fn check_positions(
+    u: &[f64],
+    kind: ProfileKind,
+    file: &str,
+    lines: &[Line<'_>],
+    c: &Cursor<'_>,
+) -> Result<(), ProfileError> {
+    let first = c.next - u.len();
+    for (k, w) in u.windows(2).enumerate() {
+        if w[1] - w[0] <= TINY_DS {
+            let at = At { file, line: lines[first + k + 1].number };
+            let allowed =
+                format!("a position more than 0.001 beyond the previous slice's {} (CONTACT's error 152)", w[0]);
+            return Err(at.value(1, "the slice's position (scaled)", &w[1].to_string(), &allowed));
+        }
+    }
+    if kind == ProfileKind::Wheel {
+        let (t0, t1) = (u[0], u[u.len() - 1]);
+        let inside = t0 >= -1.5 * PI && t1 <= 1.5 * PI;
+        let covers = (t0 <= -PI + 1e-4 && t1 >= PI - 1e-4) || (t0 >= -PI - 1e-4 && t1 <= PI + 1e-4);
+        if !(inside && covers) {
+            let allowed = "positions within [−1.5π, 1.5π] that cover [−π, π] or lie within it (CONTACT's error 153)";
+            return Err(ProfileError::profile(
+                file,
+                "the wheel slices' θ range [rad]",
+                format!("[{t0}, {t1}]"),
+                allowed,
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The features S_F of each slice (NFEAT > 1), or the whole profile ([0, 1e6] mm).
+fn read_features(c: &mut Cursor<'_>, h: &Header, u: &[f64]) -> Result<Vec<Vec<f64>>, ProfileError> {
+    if h.nfeat <= 1 {
+        return Ok(vec![vec![0.0, 1e6]; u.len()]);
+    }
+    let mut out = Vec::with_capacity(u.len());
+    for (i, &ui) in u.iter().enumerate() {
+        let what = format!("slice {}: its position and {} features S_F", i + 1, h.nfeat);
+        let v = c.values(h.nfeat + 1, &what)?;
+        let pos = h.scale * (h.offset + v[0].0);
+        if (pos - ui).abs() >= TINY_DS {
+            let allowed = format!("the slice's position {ui} (CONTACT's error 155)");
+            return Err(v[0].1.value(1, "the feature line's position (scaled)", &pos.to_string(), &allowed));
+        }
+        let f: Vec<f64> = v[1..].iter().map(|x| x.0).collect();
+        let active = |x: &f64| *x >= -1e-6;
+        if !active(&f[0]) || !active(&f[h.nfeat - 1]) {
+            let allowed =
+                "features at or beyond 0 at the slice's start and end (interruptions, negative S_F, are not supported)";
+            return Err(v[1].1.value(1, "S_F", &format!("{f:?}"), allowed));
+        }
+        out.push(f);
+    }
+    Ok(out)
+}
+
+/// Each slice resampled part by part at the same number of points (`varprof_make_vj`,
+/// `varprof_make_2dspline`): the features shifted to the profile's arc length (the last held to
+/// its end), each part's segments 1 + ⌊(longest length + 1e-6) / 0.5 mm⌋.
+#[allow(clippy::type_complexity)]
+fn resample(
+    profiles: &[Profile],
+    features: &[Vec<f64>],
+    file: &str,
+) -> Result<(Vec<Vec<f64>>, Vec<Vec<f64>>), ProfileError> {
+    let nfeat = features[0].len();
+    let mut shifted = Vec::with_capacity(profiles.len());
+    let mut longest = vec![-1.0f64; nfeat - 1];
+    for (i, (p, f)) in profiles.iter().zip(features).enumerate() {
+        let (s0, s1) = p.s_range();
+        let mut s: Vec<f64> = f.iter().map(|x| x + s0).collect();
+        s[nfeat - 1] = s[nfeat - 1].min(s1);
+        if let Some(k) = (1..nfeat).find(|&k| s[k] - s[k - 1] <= 1e-6) {
+            let allowed = "strictly increasing features within the profile (CONTACT's error 162)";
+            return Err(ProfileError::profile(
+                file,
+                format!("slice {}: S_F {} and {} (mm along the profile)", i + 1, k, k + 1),
+                format!("{}, {}", s[k - 1], s[k]),
+                allowed,
+            ));
+        }
+        for k in 0..nfeat - 1 {
+            longest[k] = longest[k].max(s[k + 1] - s[k]);
+        }
+        shifted.push(s);
+    }
+    let mut first = vec![0usize; nfeat];
+    for k in 0..nfeat - 1 {
+        first[k + 1] = first[k] + 1 + ((longest[k] + 1e-6) / RESAMPLE_STEP_MM) as usize;
+    }
+    let m = first[nfeat - 1] + 1;
+    let (mut ys, mut zs) = (Vec::with_capacity(profiles.len()), Vec::with_capacity(profiles.len()));
+    for (p, s) in profiles.iter().zip(&shifted) {
+        let mut sj = vec![0.0; m];
+        for k in 0..nfeat - 1 {
+            let (i0, i1) = (first[k], first[k + 1]);
+            let len = s[k + 1] - s[k];
+            for (j, v) in sj.iter_mut().enumerate().take(i1 + 1).skip(i0) {
+                *v = s[k] + len * (j - i0) as f64 / (i1 - i0) as f64;
+            }
+        }
+        let (lo, hi) = p.s_range();
+        let pts: Vec<_> = sj.iter().filter_map(|&x| p.point_at_s(x.clamp(lo, hi))).collect();
+        ys.push(pts.iter().map(|q| q.y_mm).collect());
+        zs.push(pts.iter().map(|q| q.z_mm).collect());
+    }
+    Ok((ys, zs))
+}
+
+#[cfg(test)]
+#[path = "slices_tests.rs"]
+mod tests;
