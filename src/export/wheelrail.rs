@@ -99,11 +99,13 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
     let t = match (s.frictionless, s.motion) {
         (true, _) => 0,
         (false, MotionSpec::Shift { .. }) => 1,
-        (false, MotionSpec::Rolling) => 3,
+        (false, MotionSpec::RollingSequence { .. }) if !first => 2,
+        (false, MotionSpec::Rolling | MotionSpec::RollingSequence { .. }) => 3,
     };
-    // A sequence of shifts continues from the case before (P = 0) after its first case.
+    // A sequence of shifts or of transient rolling steps continues from the case before (P = 0)
+    // after its first case.
     let p = match s.motion {
-        MotionSpec::Shift { sequence: true, .. } if !first => 0,
+        MotionSpec::Shift { sequence: true, .. } | MotionSpec::RollingSequence { .. } if !first => 0,
         _ => 2,
     };
     let v = match s.mu_variation.as_ref().map(|v| v.by) {
@@ -126,8 +128,17 @@ fn setup(s: &WheelRailScene, (rail, wheel): (&str, &str), out: &mut String) {
     let _ = writeln!(out, "  {nu:?}   {nu:?}   {g:?}   {g:?}                POISS 1,2,  GG 1,2");
     let _ = writeln!(
         out,
-        "  {:?}   {:?}   1.0   {:?}   {:?}   {:?}   {:?}       DX, DS, DQREL, A_SEP, D_SEP, D_COMB, D_TURN",
-        s.dx_mm, s.ds_mm, s.a_sep_rad, s.d_sep_mm, s.d_comb_mm, s.d_turn_mm
+        "  {:?}   {:?}   {:?}   {:?}   {:?}   {:?}   {:?}       DX, DS, DQREL, A_SEP, D_SEP, D_COMB, D_TURN",
+        s.dx_mm,
+        s.ds_mm,
+        match s.motion {
+            MotionSpec::RollingSequence { dq_rel } => dq_rel,
+            _ => 1.0,
+        },
+        s.a_sep_rad,
+        s.d_sep_mm,
+        s.d_comb_mm,
+        s.d_turn_mm
     );
     let _ = match s.placement {
         PlacementSpec::Gauge { height_mm, width_mm } => {
