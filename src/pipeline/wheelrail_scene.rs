@@ -81,13 +81,13 @@ pub fn run_scene(scene: &WheelRailScene) -> Result<SceneRun, Error> {
         let cases = scene.cases.iter().map(|r| r.contact_case).zip(results).collect();
         return Ok(SceneRun { name: scene.name.clone(), models, cases });
     }
-    if let MotionSpec::RollingSequence { dq_rel } = scene.motion {
+    if let MotionSpec::RollingSequence { dq_rel, from_rest } = scene.motion {
         let friction =
             Friction { mu: scene.mu, variation: scene.mu_variation.as_ref(), frictionless: scene.frictionless };
         let cases = scene.cases.iter().map(|row| case_of(scene, row, &rail, &wheel, material));
         let dq_mm = dq_rel * scene.dx_mm;
         let on_error = |k: usize, e| in_case(&scene.name, &scene.cases[k], e);
-        let results = solve_rolling_sequence(cases, dq_mm, &models, &friction, on_error)?;
+        let results = solve_rolling_sequence(cases, (dq_mm, from_rest), &models, &friction, on_error)?;
         let cases = scene.cases.iter().map(|r| r.contact_case).zip(results).collect();
         return Ok(SceneRun { name: scene.name.clone(), models, cases });
     }

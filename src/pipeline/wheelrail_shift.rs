@@ -24,17 +24,17 @@ pub fn solve_sequence<'a>(
 
 /// Transient rolling (`[wheelrail] motion = "rolling_sequence"`; CONTACT's T = 3 then T = 2 with
 /// P = 0): the first case steady rolling, its tractions put on the super-grid at its reference's
-/// nearest element (`shift_grid_super`), each later case one transient rolling step of `dq_mm`
-/// continuing the one before.
+/// nearest element (`shift_grid_super`), or `from_rest` one transient step from zero tractions
+/// (T = 2, P = 2); each later case one transient rolling step of `dq_mm` continuing the one before.
 pub fn solve_rolling_sequence<'a>(
     cases: impl IntoIterator<Item = WheelRailCase<'a>>,
-    dq_mm: f64,
+    (dq_mm, from_rest): (f64, bool),
     models: &[String],
     friction: &Friction,
     on_error: impl FnMut(usize, Error) -> Error,
 ) -> Result<Vec<CaseResult>, Error> {
     let cases = cases.into_iter().enumerate().map(|(k, case)| {
-        let motion = if k == 0 { Motion::Rolling } else { Motion::Transient { dq_mm } };
+        let motion = if k == 0 && !from_rest { Motion::Rolling } else { Motion::Transient { dq_mm } };
         WheelRailCase { motion, ..case }
     });
     solve_in_order(cases, models, friction, on_error)

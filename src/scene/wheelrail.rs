@@ -138,10 +138,11 @@ pub enum MotionSpec {
     /// one before it, at the position the shifts before it reached
     /// ([`WheelRailScene::shift_positions_mm`]).
     Shift { s_ws_mm: f64, sequence: bool },
-    /// Transient rolling (`"rolling_sequence"`): the first case steady rolling (T = 3), each later
-    /// case one transient rolling step of DQ = `dq_rel` DX continuing the one before (T = 2,
+    /// Transient rolling (`"rolling_sequence"`): the first case steady rolling (T = 3) or, with
+    /// `from_rest` (`start = "rest"`), one transient step from zero tractions (T = 2, P = 2); each
+    /// later case one transient rolling step of DQ = `dq_rel` DX continuing the one before (T = 2,
     /// P = 0).
-    RollingSequence { dq_rel: f64 },
+    RollingSequence { dq_rel: f64, from_rest: bool },
 }
 
 /// A validated wheel–rail scene.

@@ -126,6 +126,13 @@ pub const KEYS: Keys = Keys {
             r#"the rolling distance of a transient step over `dx_mm` (CONTACT's DQREL: DQ = `dq_rel` × `dx_mm`): `dq_rel = 1.0`"#,
         ),
         key(
+            "start",
+            "–",
+            Allowed::Choice(&["steady", "rest"], ""),
+            Absent::Choice("steady"),
+            r#"with `motion = "rolling_sequence"` only, how transient rolling starts: the first case steady rolling (`"steady"`, CONTACT's T = 3 before T = 2) or one transient step from zero tractions (`"rest"`, T = 2 with P = 2): `start = "rest"`"#,
+        ),
+        key(
             "wheel_surface",
             "–",
             Allowed::Choice(&["exact", "contact_mesh"], ""),
@@ -163,11 +170,15 @@ pub fn read(w: Section) -> Result<WheelRailSection, InputError> {
         m @ ("shift" | "shift_sequence") => {
             MotionSpec::Shift { s_ws_mm: w.opt_num("s_mm")?.unwrap_or(0.0), sequence: m == "shift_sequence" }
         }
-        "rolling_sequence" => MotionSpec::RollingSequence { dq_rel: w.opt_num("dq_rel")?.unwrap_or(1.0) },
+        "rolling_sequence" => MotionSpec::RollingSequence {
+            dq_rel: w.opt_num("dq_rel")?.unwrap_or(1.0),
+            from_rest: w.pick_or_default("start")? == "rest",
+        },
         _ => MotionSpec::Rolling,
     };
     if !matches!(motion, MotionSpec::RollingSequence { .. }) {
         w.refuse("dq_rel", "no dq_rel without motion = \"rolling_sequence\"")?;
+        w.refuse("start", "no start without motion = \"rolling_sequence\"")?;
     }
     let shift_s = match motion {
         MotionSpec::Shift { s_ws_mm, .. } => Some(s_ws_mm),

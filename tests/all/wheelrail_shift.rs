@@ -121,4 +121,9 @@ fn transient_rolling_refuses_what_it_does_not_solve() {
     assert!(e.field.contains("dq_rel") && e.allowed.contains("rolling_sequence"), "{e:?}");
     let e = read(&text.replace("dq_rel = 1.0", "dq_rel = 0.0")).unwrap_err();
     assert!(e.field.contains("dq_rel"), "{e:?}");
+    let e = read(&text.replace("dq_rel = 1.0", "dq_rel = 1.0\nstart = \"now\"")).unwrap_err();
+    assert!(e.field.contains("start") && e.allowed.contains("rest"), "{e:?}");
+    let shift = std::fs::read_to_string(dir.join("t1_zws_1.toml")).unwrap();
+    let e = read(&shift.replace("motion = \"shift\"", "motion = \"shift\"\nstart = \"rest\"")).unwrap_err();
+    assert!(e.field.contains("start") && e.allowed.contains("rolling_sequence"), "{e:?}");
 }

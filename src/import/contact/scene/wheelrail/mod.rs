@@ -105,6 +105,7 @@ fn groups(members: Vec<Member>) -> (Vec<Vec<Member>>, Vec<(usize, String)>) {
                     let g = out.last_mut().expect("the group continued");
                     match (&mut g[0].scene.motion, m.scene.motion) {
                         (MotionSpec::Shift { sequence, .. }, _) => *sequence = true,
+                        (MotionSpec::RollingSequence { from_rest: true, .. }, _) => {}
                         (first, rolling @ MotionSpec::RollingSequence { .. }) => *first = rolling,
                         _ => {}
                     }
@@ -134,7 +135,7 @@ fn groups(members: Vec<Member>) -> (Vec<Vec<Member>>, Vec<(usize, String)>) {
 /// Whether a one-row scene continues the case before: a shift (T = 1, P = 0) or a transient
 /// rolling step (T = 2, P = 0; the import refuses T = 2 otherwise).
 fn is_continued(s: &WheelRailScene) -> bool {
-    matches!(s.motion, MotionSpec::Shift { sequence: true, .. } | MotionSpec::RollingSequence { .. })
+    matches!(s.motion, MotionSpec::Shift { sequence: true, .. } | MotionSpec::RollingSequence { from_rest: false, .. })
 }
 
 /// Whether the shift `m` (P = 0) continues group `g`: `g` ends with the case just before it, starts
@@ -174,8 +175,8 @@ fn continues(g: &[Member], m: &Member) -> Result<(), String> {
 }
 
 /// Whether the transient rolling step `m` (T = 2, P = 0) continues group `g`: `g` ends with the
-/// case just before it and starts with a steady case (T = 3) followed by transient steps only, and
-/// agrees with `m` but for the rows and the motion.
+/// case just before it and starts with a steady case (T = 3) or a transient step from rest (T = 2,
+/// P = 2) followed by transient steps only, and agrees with `m` but for the rows and the motion.
 fn continues_rolling(g: &[Member], m: &Member) -> Result<(), String> {
     let last = &g[g.len() - 1];
     let refuse = |why: &str| Err(format!("T = 2, P = 0: transient rolling continuing the case before it: {why}"));
@@ -186,10 +187,9 @@ fn continues_rolling(g: &[Member], m: &Member) -> Result<(), String> {
         MotionSpec::Rolling if g.len() == 1 => {}
         MotionSpec::RollingSequence { .. } => {}
         _ => {
-            return refuse(&format!(
-                "the scene of case {} is not steady rolling (T = 3) followed by T = 2",
-                last.number
-            ))
+            let why =
+                format!("the scene of case {} is not steady rolling (T = 3) or T = 2 followed by T = 2", last.number);
+            return refuse(&why);
         }
     }
     let as_first = WheelRailScene { cases: m.scene.cases.clone(), motion: m.scene.motion, ..g[0].scene.clone() };
@@ -290,7 +290,7 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         wheel_mesh: false,
         motion: match c.digits.t {
             1 => MotionSpec::Shift { s_ws_mm: s_ws, sequence: c.digits.p == 0 },
-            2 => MotionSpec::RollingSequence { dq_rel: disc.dqrel },
+            2 => MotionSpec::RollingSequence { dq_rel: disc.dqrel, from_rest: c.digits.p == 2 },
             _ => MotionSpec::Rolling,
         },
         vertical,
