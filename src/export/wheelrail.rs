@@ -99,11 +99,13 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
     let t = match (s.frictionless, s.motion) {
         (true, _) => 0,
         (false, MotionSpec::Shift { .. }) => 1,
-        (false, MotionSpec::Rolling) => 3,
+        (false, MotionSpec::RollingSequence { from_rest, .. }) if !first || from_rest => 2,
+        (false, MotionSpec::Rolling | MotionSpec::RollingSequence { .. }) => 3,
     };
-    // A sequence of shifts continues from the case before (P = 0) after its first case.
+    // A sequence of shifts or of transient rolling steps continues from the case before (P = 0)
+    // after its first case.
     let p = match s.motion {
-        MotionSpec::Shift { sequence: true, .. } if !first => 0,
+        MotionSpec::Shift { sequence: true, .. } | MotionSpec::RollingSequence { .. } if !first => 0,
         _ => 2,
     };
     let v = match s.mu_variation.as_ref().map(|v| v.by) {
@@ -111,7 +113,15 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
         Some(MuBy::ContactAngle) => 1,
         Some(MuBy::TrackS { .. }) => 2,
     };
-    let (ldcmze, hgiaowr) = if first { ("022033", "0000321") } else { ("111002", "0100321") };
+    // A transient rolling step takes the initial estimate (I = 1), as CONTACT's `t3_t2_force` does:
+    // with I = 0 and FZ prescribed CONTACT's step departs from its own I = 1 result (measured:
+    // `t3_t2_force_1` exported, case 2 NPOT 5031 against 3526, FX(TR) 2 % off; docs/wheelrail.md).
+    let rolling_step = matches!(s.motion, MotionSpec::RollingSequence { .. }) && !first;
+    let (ldcmze, hgiaowr) = match (first, rolling_step) {
+        (true, _) => ("022033", "0000321"),
+        (false, true) => ("111002", "0110321"),
+        (false, false) => ("111002", "0100321"),
+    };
     let _ =
         writeln!(out, " {c}{p}0{t}{n}{f}0    C-P-B-T-N-F-S   CONFIG, PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS");
     let _ = writeln!(out, " {v}{ldcmze}    V-L-D-C-M-Z-E   VARFRC, FRCLAW, DISCNS, INFLCF, MATER,  ZTRACK, EWHEEL");
@@ -126,8 +136,17 @@ fn setup(s: &WheelRailScene, (rail, wheel): (&str, &str), out: &mut String) {
     let _ = writeln!(out, "  {nu:?}   {nu:?}   {g:?}   {g:?}                POISS 1,2,  GG 1,2");
     let _ = writeln!(
         out,
-        "  {:?}   {:?}   1.0   {:?}   {:?}   {:?}   {:?}       DX, DS, DQREL, A_SEP, D_SEP, D_COMB, D_TURN",
-        s.dx_mm, s.ds_mm, s.a_sep_rad, s.d_sep_mm, s.d_comb_mm, s.d_turn_mm
+        "  {:?}   {:?}   {:?}   {:?}   {:?}   {:?}   {:?}       DX, DS, DQREL, A_SEP, D_SEP, D_COMB, D_TURN",
+        s.dx_mm,
+        s.ds_mm,
+        match s.motion {
+            MotionSpec::RollingSequence { dq_rel, .. } => dq_rel,
+            _ => 1.0,
+        },
+        s.a_sep_rad,
+        s.d_sep_mm,
+        s.d_comb_mm,
+        s.d_turn_mm
     );
     let _ = match s.placement {
         PlacementSpec::Gauge { height_mm, width_mm } => {

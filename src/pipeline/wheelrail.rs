@@ -217,18 +217,22 @@ fn balanced(
     Ok((normal, None))
 }
 
-/// A shift (CONTACT's T = 1) is solved by the exact theory alone, for bodies of one material.
+/// A shift (CONTACT's T = 1) or a transient rolling step (T = 2) is solved by the exact theory
+/// alone, for bodies of one material.
 fn refuse_in_shifts(case: &WheelRailCase, models: &[String]) -> Result<(), Error> {
-    if !matches!(case.motion, Motion::Shift { .. }) {
+    if case.motion == Motion::Rolling {
         return Ok(());
     }
     if let Some(m) = models.iter().find(|m| m.as_str() != EXACT) {
-        let allowed = "the exact theory alone (solvers = [\"contact\"]) in a shift ([wheelrail] motion = \"shift\")";
+        let allowed =
+            "the exact theory alone (solvers = [\"contact\"]) in a shift or transient rolling ([wheelrail] motion)";
         return Err(InputError::new("solvers", format!("{m:?}"), allowed).into());
     }
     if case.material.coupled() {
         let value = format!("G {} MPa, nu {}", case.material.g_mpa, case.material.poisson);
-        return Err(InputError::new("material", value, "one material for both bodies in a shift").into());
+        return Err(
+            InputError::new("material", value, "one material for both bodies in a shift or transient rolling").into()
+        );
     }
     Ok(())
 }

@@ -30,6 +30,8 @@ pub struct ExactCache {
     solvers: Vec<Kept>,
     /// The shift solvers by grid size (no warm start: each shift starts from rest).
     shifts: Vec<((usize, usize), TangentialSolver)>,
+    /// The transient rolling solvers by grid size (their kernels shifted by the step's dq).
+    transients: Vec<((usize, usize), TangentialSolver)>,
 }
 
 impl ExactCache {
@@ -56,29 +58,39 @@ impl ExactCache {
         Ok(&mut self.solvers[k])
     }
 
-    /// The shift solver of `grid` (as [`ExactCache::get`]: kernels kept per grid size).
-    fn shift_solver(
+    /// The shift solver of `grid` (as [`ExactCache::get`]: kernels kept per grid size); with
+    /// `rolling_dq_mm` the transient rolling solver whose material moves by that step.
+    fn step_solver(
         &mut self,
         grid: &Grid,
         m: &Material,
         (x, y): (&[f64], &[f64]),
+        rolling_dq_mm: Option<f64>,
     ) -> Result<&mut TangentialSolver, ContactError> {
         let key = (grid.mx, grid.my);
-        let k = match self.shifts.iter().position(|(k, _)| *k == key) {
+        let kept = if rolling_dq_mm.is_some() { &mut self.transients } else { &mut self.shifts };
+        let k = match kept.iter().position(|(k, _)| *k == key) {
             Some(k) => {
-                self.shifts[k].1.set_centres(x, y)?;
+                kept[k].1.set_centres(x, y)?;
                 k
             }
             None => {
                 let k0 = Kernel::new(grid.mx, grid.my, grid.dx_mm, grid.dy_mm, m.g_mpa, m.poisson, 0.0)?;
-                if self.shifts.len() == KEPT {
-                    self.shifts.remove(0);
+                let solver = match rolling_dq_mm {
+                    Some(dq) => {
+                        let ks = Kernel::new(grid.mx, grid.my, grid.dx_mm, grid.dy_mm, m.g_mpa, m.poisson, dq)?;
+                        TangentialSolver::new(&k0, &ks, x, y)?
+                    }
+                    None => TangentialSolver::for_shifts(&k0, x, y)?,
+                };
+                if kept.len() == KEPT {
+                    kept.remove(0);
                 }
-                self.shifts.push((key, TangentialSolver::for_shifts(&k0, x, y)?));
-                self.shifts.len() - 1
+                kept.push((key, solver));
+                kept.len() - 1
             }
         };
-        Ok(&mut self.shifts[k].1)
+        Ok(&mut kept[k].1)
     }
 }
 
@@ -99,17 +111,21 @@ pub fn patch_forces(
     cache: &mut ExactCache,
 ) -> Result<PatchForces, ContactError> {
     let shift = matches!(case.motion, Motion::Shift { .. });
+    let rolling_dq_mm = match case.motion {
+        Motion::Transient { dq_mm } => Some(dq_mm),
+        _ => None,
+    };
     let grid = patch_grid(p);
     let pn = field_in_grid_order(&grid, &p.pn_mpa);
     let (x, y) = grid.centres();
     let c = &p.creepages;
     let options = ContactSolverOptions::default();
-    let dq_mm = if shift { 1.0 } else { grid.dx_mm };
+    let dq_mm = if shift { 1.0 } else { rolling_dq_mm.unwrap_or(grid.dx_mm) };
     let mut params = TangentialParams::new(mu, c.cksi, c.ceta, c.cphi_per_mm, dq_mm);
     params.tol = options.tolerance;
     params.max_iter = options.max_iterations;
-    let r: StepResult = if shift {
-        let solver = cache.shift_solver(&grid, &case.material, (&x, &y))?;
+    let r: StepResult = if shift || rolling_dq_mm.is_some() {
+        let solver = cache.step_solver(&grid, &case.material, (&x, &y), rolling_dq_mm)?;
         solver.set_pressure(&pn)?;
         let (px0, py0) = previous_tractions(p, case);
         let (px0, py0) = (field_in_grid_order(&grid, &px0), field_in_grid_order(&grid, &py0));
@@ -125,14 +141,17 @@ pub fn patch_forces(
     let pn_sum: f64 = pn.iter().sum();
     let (fx_over_fn, fy_over_fn) = (r.px.iter().sum::<f64>() / pn_sum, r.py.iter().sum::<f64>() / pn_sum);
     let mz_nmm = moment_sum(&grid, &r.px, &r.py) * grid.element_area_mm2();
-    let shift_tractions_mpa = shift.then(|| (in_contact_order(&grid, &r.px), in_contact_order(&grid, &r.py)));
+    // Kept for the case that continues this one: in a shift, a transient step, or the steady case
+    // that starts a sequence (its `previous` empty).
+    let kept = shift || rolling_dq_mm.is_some() || case.previous.is_some();
+    let shift_tractions_mpa = kept.then(|| (in_contact_order(&grid, &r.px), in_contact_order(&grid, &r.py)));
     let forces = PatchForces {
         n_adhesion: Some(r.n_adhesion),
         n_slip: Some(r.n_slip),
         shift_tractions_mpa,
         ..PatchForces::on_rail(p, case, fx_over_fn, fy_over_fn, mz_nmm)
     };
-    Ok(if shift { about_anchor(forces, p, case) } else { forces })
+    Ok(if case.motion.super_grid_s_mm().is_some() { about_anchor(forces, p, case) } else { forces })
 }
 
 /// The tractions a shift starts from on patch `p` (CONTACT's element order): zero from rest; in a

@@ -4,7 +4,7 @@
 
 use super::wheelrail::{solve_with, CaseResult};
 use super::wheelrail_fx::solve_fx;
-use super::wheelrail_shift::solve_sequence;
+use super::wheelrail_shift::{solve_rolling_sequence, solve_sequence};
 use crate::error::{Error, InputError};
 use crate::problem::material_of_spec;
 use crate::scene::wheelrail::{
@@ -78,6 +78,16 @@ pub fn run_scene(scene: &WheelRailScene) -> Result<SceneRun, Error> {
             Friction { mu: scene.mu, variation: scene.mu_variation.as_ref(), frictionless: scene.frictionless };
         let cases = scene.cases.iter().zip(positions).map(|(row, s)| (case_of(scene, row, &rail, &wheel, material), s));
         let results = solve_sequence(cases, &models, &friction, |k, e| in_case(&scene.name, &scene.cases[k], e))?;
+        let cases = scene.cases.iter().map(|r| r.contact_case).zip(results).collect();
+        return Ok(SceneRun { name: scene.name.clone(), models, cases });
+    }
+    if let MotionSpec::RollingSequence { dq_rel, from_rest } = scene.motion {
+        let friction =
+            Friction { mu: scene.mu, variation: scene.mu_variation.as_ref(), frictionless: scene.frictionless };
+        let cases = scene.cases.iter().map(|row| case_of(scene, row, &rail, &wheel, material));
+        let dq_mm = dq_rel * scene.dx_mm;
+        let on_error = |k: usize, e| in_case(&scene.name, &scene.cases[k], e);
+        let results = solve_rolling_sequence(cases, (dq_mm, from_rest), &models, &friction, on_error)?;
         let cases = scene.cases.iter().map(|r| r.contact_case).zip(results).collect();
         return Ok(SceneRun { name: scene.name.clone(), models, cases });
     }
@@ -172,7 +182,7 @@ pub fn case_of<'a>(
         wheel_surface: if s.wheel_mesh { WheelSurface::ContactMesh } else { WheelSurface::Exact },
         material,
         motion: match s.motion {
-            MotionSpec::Rolling => Motion::Rolling,
+            MotionSpec::Rolling | MotionSpec::RollingSequence { .. } => Motion::Rolling,
             MotionSpec::Shift { s_ws_mm, .. } => Motion::Shift { s_ws_mm },
         },
         previous: None,

@@ -1,6 +1,7 @@
 //! A sequence of shifts (`[wheelrail] motion = "shift_sequence"`; CONTACT's T = 1, the first case
-//! from rest, P = 0 after it): the cases run in order, each taking the patches the one before
-//! left ([`crate::wheelrail::shift`]: connected by overlap, merged, copied or kept, the grid widened
+//! from rest, P = 0 after it) or of transient rolling steps after a steady case
+//! (`"rolling_sequence"`, T = 3 then T = 2): the cases run in order, each taking the patches the one
+//! before left ([`crate::wheelrail::shift`]: connected by overlap, merged, copied or kept, the grid widened
 //! to the contact of the time before) and the exact theory's tractions on them.
 
 use super::wheelrail::{solve_with, CaseResult, EXACT};
@@ -15,20 +16,73 @@ pub fn solve_sequence<'a>(
     cases: impl IntoIterator<Item = (WheelRailCase<'a>, f64)>,
     models: &[String],
     friction: &Friction,
+    on_error: impl FnMut(usize, Error) -> Error,
+) -> Result<Vec<CaseResult>, Error> {
+    let cases = cases.into_iter().map(|(case, s_ws_mm)| WheelRailCase { motion: Motion::Shift { s_ws_mm }, ..case });
+    solve_in_order(cases, models, friction, on_error)
+}
+
+/// Transient rolling (`[wheelrail] motion = "rolling_sequence"`; CONTACT's T = 3 then T = 2 with
+/// P = 0): the first case steady rolling, its tractions put on the super-grid at its reference's
+/// nearest element (`shift_grid_super`), or `from_rest` one transient step from zero tractions
+/// (T = 2, P = 2); each later case one transient rolling step of `dq_mm` continuing the one before.
+pub fn solve_rolling_sequence<'a>(
+    cases: impl IntoIterator<Item = WheelRailCase<'a>>,
+    (dq_mm, from_rest): (f64, bool),
+    models: &[String],
+    friction: &Friction,
+    on_error: impl FnMut(usize, Error) -> Error,
+) -> Result<Vec<CaseResult>, Error> {
+    let cases = cases.into_iter().enumerate().map(|(k, case)| {
+        let motion = if k == 0 && !from_rest { Motion::Rolling } else { Motion::Transient { dq_mm } };
+        WheelRailCase { motion, ..case }
+    });
+    solve_in_order(cases, models, friction, on_error)
+}
+
+/// Solve `cases` in order, each given the patches the one before left (a steady case given an
+/// empty set, so that it keeps its tractions for the next).
+fn solve_in_order<'a>(
+    cases: impl IntoIterator<Item = WheelRailCase<'a>>,
+    models: &[String],
+    friction: &Friction,
     mut on_error: impl FnMut(usize, Error) -> Error,
 ) -> Result<Vec<CaseResult>, Error> {
     let mut previous: Option<Previous> = None;
     let mut out = Vec::new();
-    for (k, (case, s_ws_mm)) in cases.into_iter().enumerate() {
+    for (k, case) in cases.into_iter().enumerate() {
+        let steady = case.motion == Motion::Rolling;
+        if steady {
+            previous = Some(Previous::default());
+        }
         if let Some(p) = previous.as_mut() {
             p.iterated = matches!(case.vertical, Vertical::Force { .. });
         }
-        let case = WheelRailCase { motion: Motion::Shift { s_ws_mm }, previous: previous.as_ref(), ..case };
+        let case = WheelRailCase { previous: previous.as_ref(), ..case };
         let result = solve_with(&case, models, friction).map_err(|e| on_error(k, e))?;
-        previous = Some(left_for_next(&result, previous.as_ref()));
+        let mut left = left_for_next(&result, previous.as_ref());
+        if steady {
+            on_super_grid(&mut left, &result);
+        }
+        previous = Some(left);
         out.push(result);
     }
     Ok(out)
+}
+
+/// A steady case's patches put on the super-grid of transient rolling that follows it: its grid
+/// lies on multiples of DX, DS from its reference, which CONTACT snaps to the super-grid's nearest
+/// element (`shift_grid_super`: the reference's track x and rail arc length over DX, DS, rounded);
+/// its contact is the contact of the time before (`igv` of steady rolling).
+fn on_super_grid(left: &mut Previous, result: &CaseResult) {
+    for (old, p) in left.patches.iter_mut().zip(&result.normal.patches) {
+        let g = &p.geometry.grid;
+        let di = (p.geometry.frame.origin.x / g.dx_mm).round() as i64;
+        let dj = (p.geometry.rail_s_mm.unwrap_or(0.0) / g.ds_mm).round() as i64;
+        old.grid =
+            IndexBox { x: [old.grid.x[0] + di, old.grid.x[1] + di], s: [old.grid.s[0] + dj, old.grid.s[1] + dj] };
+        old.contact_before = Some(old.contact.clone());
+    }
 }
 
 /// The patches a solved case leaves for the next: each of its patches with the exact theory's

@@ -138,6 +138,11 @@ pub enum MotionSpec {
     /// one before it, at the position the shifts before it reached
     /// ([`WheelRailScene::shift_positions_mm`]).
     Shift { s_ws_mm: f64, sequence: bool },
+    /// Transient rolling (`"rolling_sequence"`): the first case steady rolling (T = 3) or, with
+    /// `from_rest` (`start = "rest"`), one transient step from zero tractions (T = 2, P = 2); each
+    /// later case one transient rolling step of DQ = `dq_rel` DX continuing the one before (T = 2,
+    /// P = 0).
+    RollingSequence { dq_rel: f64, from_rest: bool },
 }
 
 /// A validated wheel–rail scene.
@@ -370,7 +375,7 @@ impl WheelRailScene {
             return Err(InputError::new(
                 "solvers",
                 format!("{solvers:?}"),
-                "[\"contact\"]: a shift ([wheelrail] motion = \"shift\") is solved by the exact theory alone",
+                "[\"contact\"]: a shift or transient rolling ([wheelrail] motion other than \"rolling\") is solved by the exact theory alone",
             ));
         }
         let rail = super::wheelrail_profile::rail(&mut top, dir)?;
@@ -401,8 +406,8 @@ impl WheelRailScene {
         if motion != MotionSpec::Rolling && (longitudinal == LongitudinalSpec::Force || frictionless) {
             return Err(InputError::new(
                 "wheelrail.motion",
-                "\"shift\"",
-                "a shift with the pitch's shift given ([cases] longitudinal = \"velocity\") and friction (not frictionless)",
+                format!("{motion:?}"),
+                "a shift or transient rolling with the pitch's shift or velocity given ([cases] longitudinal = \"velocity\") and friction (not frictionless)",
             ));
         }
         let origin = super::origin::read(&mut top)?;

@@ -212,9 +212,9 @@ pub const WHEEL_KEYS: Keys = Keys {
         key(
             "flange_back_distance_mm",
             "mm",
-            Allowed::Number(Range::new(0.0, false, 1e5, true), ""),
+            Allowed::Number(Range::new(0.0, true, 1e5, true), ""),
             Absent::Required,
-            r#"the distance between the wheels' flange backs (CONTACT's FBDIST): `flange_back_distance_mm = 1360.0`"#,
+            r#"the distance between the wheels' flange backs (CONTACT's FBDIST; 0 puts the profile's flange back at the wheelset's centre, as CONTACT's decks of one wheel on a rail placed absolutely): `flange_back_distance_mm = 1360.0`"#,
         ),
         key(
             "flange_back_position_mm",

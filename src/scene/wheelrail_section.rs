@@ -114,9 +114,23 @@ pub const KEYS: Keys = Keys {
         key(
             "motion",
             "–",
-            Allowed::Choice(&["rolling", "shift", "shift_sequence"], ""),
+            Allowed::Choice(&["rolling", "shift", "shift_sequence", "rolling_sequence"], ""),
             Absent::Choice("rolling"),
-            r#"steady rolling (CONTACT's T = 3), a sequence of shifts (`"shift_sequence"`: the first case from rest, each later case continuing the one before it, CONTACT's T = 1 with P = 0: it takes the tractions the case before left on the material-fixed grid, patches connected by overlap, split and merged as CONTACT's, docs/wheelrail.md "Shifts that continue"; the wheelset's position of each later case is the one before plus its shift `vs_mm_s` × 1 s, from `s_mm` at the first), or a shift from rest (T = 1 with P = 2, docs/wheelrail.md "Shifts"): each case is one step from zero tractions, its velocity columns the step's shifts (mm and rad, CONTACT's dummy time step of 1 s: `vs_mm_s = 0.4` shifts the wheelset 0.4 mm), the creepages printed as shifts (mm, rad), the grid fixed in the rail's material (x from −`s_mm`, s along the rail profile's own arc length; a profile file, not a closed form); only the exact theory (`solvers = ["contact"]`), one material, `[cases] longitudinal = "velocity"`: `motion = "shift"`"#,
+            r#"steady rolling (CONTACT's T = 3), transient rolling (`"rolling_sequence"`: the first case steady rolling, each later case one transient rolling step of `dq_rel` × `dx_mm` continuing it, CONTACT's T = 3 then T = 2 with P = 0: the grid fixed laterally in the rail's material and moving with the wheelset along the track, the tractions the case before left carried over and rolled by the step, docs/wheelrail.md "Transient rolling"; only the exact theory, one material, the pitch velocity given, with friction), a sequence of shifts (`"shift_sequence"`: the first case from rest, each later case continuing the one before it, CONTACT's T = 1 with P = 0: it takes the tractions the case before left on the material-fixed grid, patches connected by overlap, split and merged as CONTACT's, docs/wheelrail.md "Shifts that continue"; the wheelset's position of each later case is the one before plus its shift `vs_mm_s` × 1 s, from `s_mm` at the first), or a shift from rest (T = 1 with P = 2, docs/wheelrail.md "Shifts"): each case is one step from zero tractions, its velocity columns the step's shifts (mm and rad, CONTACT's dummy time step of 1 s: `vs_mm_s = 0.4` shifts the wheelset 0.4 mm), the creepages printed as shifts (mm, rad), the grid fixed in the rail's material (x from −`s_mm`, s along the rail profile's own arc length; a profile file, not a closed form); only the exact theory (`solvers = ["contact"]`), one material, `[cases] longitudinal = "velocity"`: `motion = "shift"`"#,
+        ),
+        key(
+            "dq_rel",
+            "–",
+            Allowed::Number(Range::new(0.0, false, 10.0, true), ""),
+            Absent::Text("1; only with `motion = \"rolling_sequence\"`"),
+            r#"the rolling distance of a transient step over `dx_mm` (CONTACT's DQREL: DQ = `dq_rel` × `dx_mm`): `dq_rel = 1.0`"#,
+        ),
+        key(
+            "start",
+            "–",
+            Allowed::Choice(&["steady", "rest"], ""),
+            Absent::Choice("steady"),
+            r#"with `motion = "rolling_sequence"` only, how transient rolling starts: the first case steady rolling (`"steady"`, CONTACT's T = 3 before T = 2) or one transient step from zero tractions (`"rest"`, T = 2 with P = 2): `start = "rest"`"#,
         ),
         key(
             "wheel_surface",
@@ -156,11 +170,19 @@ pub fn read(w: Section) -> Result<WheelRailSection, InputError> {
         m @ ("shift" | "shift_sequence") => {
             MotionSpec::Shift { s_ws_mm: w.opt_num("s_mm")?.unwrap_or(0.0), sequence: m == "shift_sequence" }
         }
+        "rolling_sequence" => MotionSpec::RollingSequence {
+            dq_rel: w.opt_num("dq_rel")?.unwrap_or(1.0),
+            from_rest: w.pick_or_default("start")? == "rest",
+        },
         _ => MotionSpec::Rolling,
     };
+    if !matches!(motion, MotionSpec::RollingSequence { .. }) {
+        w.refuse("dq_rel", "no dq_rel without motion = \"rolling_sequence\"")?;
+        w.refuse("start", "no start without motion = \"rolling_sequence\"")?;
+    }
     let shift_s = match motion {
         MotionSpec::Shift { s_ws_mm, .. } => Some(s_ws_mm),
-        MotionSpec::Rolling => None,
+        MotionSpec::Rolling | MotionSpec::RollingSequence { .. } => None,
     };
     let (mu, mu_variation) = friction(&mut w, shift_s)?;
     let dx_mm = w.num("dx_mm")?;

@@ -80,6 +80,23 @@ pub enum Motion {
     /// [mm, rad]) and the grid is CONTACT's material-fixed super-grid (`set_cpatch_reference`,
     /// T = 1): element centres at track x = −S_WS + i DX and at the rail's arc length j DS.
     Shift { s_ws_mm: f64 },
+    /// One transient rolling step of `dq_mm` continuing the case before (T = 2, P = 0; user guide
+    /// "Module 1", `set_cpatch_reference` with T = 2): the creepages are rolling's, the grid is
+    /// CONTACT's super-grid fixed laterally in the rail's material and moving with the wheelset
+    /// along the track (element centres at track x = i DX from the wheelset, at the rail's arc
+    /// length j DS), the tractions before it carried over and rolled by `dq_mm`.
+    Transient { dq_mm: f64 },
+}
+
+impl Motion {
+    /// Whether the grid is CONTACT's super-grid (T = 1, 2): its anchor's track position along x.
+    pub fn super_grid_s_mm(self) -> Option<f64> {
+        match self {
+            Motion::Rolling => None,
+            Motion::Shift { s_ws_mm } => Some(s_ws_mm),
+            Motion::Transient { .. } => Some(0.0),
+        }
+    }
 }
 
 /// One side's case: the surfaces, their placement, the wheelset's state and the discretisation.
@@ -102,8 +119,9 @@ pub struct WheelRailCase<'a> {
     pub wheel_surface: wheel_mesh::WheelSurface,
     pub material: Material,
     pub motion: Motion,
-    /// In a shift that continues a sequence (CONTACT's T = 1, P = 0): the patches the case before
-    /// left, with their tractions; `None` from rest and in rolling.
+    /// In a case that continues a sequence (CONTACT's P = 0, T = 1 or 2): the patches the case
+    /// before left, with their tractions; `None` from rest and in steady rolling, `Some` (empty)
+    /// in the steady case that starts transient rolling (its tractions are kept for the next).
     pub previous: Option<&'a shift::Previous>,
 }
 

@@ -84,6 +84,9 @@ pub struct PatchGeometry {
     pub blend: Option<Blend>,
     /// The interpenetration's extent in track coordinates (what a continued shift connects by).
     pub extent: Extent,
+    /// The rail profile's arc length at the reference (CONTACT's `sr_ref`; `None` for a closed-form
+    /// rail): where a steady grid lies on the super-grid when transient rolling follows it.
+    pub rail_s_mm: Option<f64>,
 }
 
 /// The weight of a mesh point: `∫ (pen − a x²)² dx` over the chord where the wheel, a circle
@@ -357,7 +360,8 @@ pub fn grid(
             let x = [c.x_mm[0] - frame.origin.x, c.x_mm[1] - frame.origin.x];
             (x, [s_of(c.y_mm[0]), s_of(c.y_mm[1])], [0.0, 0.0])
         }
-        Motion::Shift { s_ws_mm } => {
+        Motion::Shift { .. } | Motion::Transient { .. } => {
+            let s_ws_mm = motion.super_grid_s_mm().unwrap_or(0.0);
             let s_of = |y: f64| rail.s_mm(y).ok_or(WheelRailError::NoRailArcLength);
             let s_ref = s_of(frame.origin.y)?;
             let x = [c.x_mm[0] + s_ws_mm, c.x_mm[1] + s_ws_mm];
@@ -443,7 +447,7 @@ pub fn build(
     let frame = frame(c, rail).ok_or(WheelRailError::NoContact)?;
     let mut grid = grid(c, &frame, rail, size_mm, motion)?;
     let mut widened = false;
-    if let (Motion::Shift { .. }, Some(previous)) = (motion, previous) {
+    if let (Some(_), Some(previous)) = (motion.super_grid_s_mm(), previous) {
         let links = shift::connections(&[c.extent()], previous);
         if let Some(old) = shift::inherited(&links[0], previous) {
             widened = true;
@@ -464,7 +468,8 @@ pub fn build(
         }
         Blend { part, factor: sub_patch_factors(&c.parts, sep), n: c.parts.len() }
     });
-    Ok(PatchGeometry { frame, grid, h_mm, pen_max_mm: c.pen_max_mm, blend, extent: c.extent() })
+    let rail_s_mm = rail.s_mm(frame.origin.y);
+    Ok(PatchGeometry { frame, grid, h_mm, pen_max_mm: c.pen_max_mm, blend, extent: c.extent(), rail_s_mm })
 }
 
 #[cfg(test)]

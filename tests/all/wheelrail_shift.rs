@@ -75,3 +75,55 @@ fn a_shift_refuses_what_it_does_not_solve() {
     let e = read(&text.replace("motion = \"shift\"", "motion = \"slide\"")).unwrap_err();
     assert!(e.field.contains("motion"), "{e:?}");
 }
+
+/// Transient rolling after a steady case (CONTACT's T = 3 then T = 2, P = 0; `t3_t2_force`): the
+/// steady case's grid lies on its reference, each transient step's on CONTACT's super-grid (x from
+/// the wheelset, s the rail profile's arc length), whose anchor CONTACT prints as (SPINXO, SPINYO);
+/// the step carries the previous tractions (the forces move off the steady ones by many printed
+/// digits, as CONTACT's: the gate compares them, `scenes/wheelrail/t3_t2_force_1`).
+#[test]
+fn transient_rolling_is_anchored_where_contact_anchors_it() {
+    let printed = printed_spin_centres("t3_t2_force.ref_out");
+    let run = run_scene(&scene("t3_t2_force_1")).unwrap();
+    assert_eq!(run.cases.len(), 6);
+    let mut checked = 0;
+    for (case, result) in &run.cases {
+        let theirs = &printed[*case as usize - 1];
+        for (k, p) in result.normal.patches.iter().enumerate() {
+            let [ax, as_] = p.geometry.grid.anchor_mm;
+            if *case == 1 {
+                assert!(theirs.is_empty() && [ax, as_] == [0.0, 0.0], "steady: the grid on the reference");
+                continue;
+            }
+            let [sx, sy] = theirs[k];
+            assert!((-ax - sx).abs() <= half_unit(sx), "case {case}: SPINXO {} vs {sx}", -ax);
+            assert!((-as_ - sy).abs() <= half_unit(sy), "case {case}: SPINYO {} vs {sy}", -as_);
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 15);
+    // Patch 1's FX: steady −40455 N (CONTACT −4.045e4), after one step −40070 N (−4.007e4).
+    let fx = |case: usize| run.cases[case].1.models[0].1[0].fx_n;
+    assert!((fx(0) - fx(1)).abs() > 300.0, "{} vs {}", fx(0), fx(1));
+}
+
+#[test]
+fn transient_rolling_refuses_what_it_does_not_solve() {
+    let dir = root().join("scenes/wheelrail");
+    let text = std::fs::read_to_string(dir.join("t3_t2_force_1.toml")).unwrap();
+    let read = |t: &str| WheelRailScene::from_toml(t, &dir);
+    assert!(read(&text).is_ok());
+    let e = read(&text.replace("solvers = [\"contact\"]", "solvers = [\"contact\", \"fastsim\"]")).unwrap_err();
+    assert!(e.field == "solvers" && e.allowed.contains("exact theory alone"), "{e:?}");
+    let e = read(&text.replace("dq_rel = 1.0", "dq_rel = 1.0\nfrictionless = true")).unwrap_err();
+    assert!(e.field.contains("motion") && e.allowed.contains("not frictionless"), "{e:?}");
+    let e = read(&text.replace("motion = \"rolling_sequence\"", "motion = \"rolling\"")).unwrap_err();
+    assert!(e.field.contains("dq_rel") && e.allowed.contains("rolling_sequence"), "{e:?}");
+    let e = read(&text.replace("dq_rel = 1.0", "dq_rel = 0.0")).unwrap_err();
+    assert!(e.field.contains("dq_rel"), "{e:?}");
+    let e = read(&text.replace("dq_rel = 1.0", "dq_rel = 1.0\nstart = \"now\"")).unwrap_err();
+    assert!(e.field.contains("start") && e.allowed.contains("rest"), "{e:?}");
+    let shift = std::fs::read_to_string(dir.join("t1_zws_1.toml")).unwrap();
+    let e = read(&shift.replace("motion = \"shift\"", "motion = \"shift\"\nstart = \"rest\"")).unwrap_err();
+    assert!(e.field.contains("start") && e.allowed.contains("rolling_sequence"), "{e:?}");
+}

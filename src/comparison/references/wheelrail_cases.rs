@@ -61,9 +61,20 @@ pub const LIBRARY: [(&str, u32, &str); 2] =
 /// floored at the value given over 1.5, so that 1.5 half-units (the bound of `tolerances.toml`) is
 /// their printed digits or this much: FX 1 N (1e-4 of FZ = 10 kN), MN 12 N·mm (1.2e-3 FZ times a
 /// millimetre), CKSI and CETA 1e-10 (a rolling radius 4.4e-8 mm off at 444 mm; CONTACT prints
-/// the contact point to 1e-4 mm).
-pub const FLOORS: [(&str, f64); 6] =
-    [("fx_tr_n", 1.0), ("fx_ws_n", 1.0), ("fx_n", 1.0), ("mn_nmm", 12.0), ("cksi", 1e-10), ("ceta", 1e-10)];
+/// the contact point to 1e-4 mm). FY and CPHI are printed at CONTACT's rounding noise where they
+/// are zero by symmetry (`m1_trans_dqrel`: FY(TR) −1.6e-10 N, CPHI −7.1e-15 rad/mm): FY 1e-6 N
+/// (the exact solver's tolerance, 1e-9 of FN, on a 1 kN contact), CPHI 1e-10 rad/mm as CKSI.
+pub const FLOORS: [(&str, f64); 9] = [
+    ("fx_tr_n", 1.0),
+    ("fx_ws_n", 1.0),
+    ("fx_n", 1.0),
+    ("mn_nmm", 12.0),
+    ("cksi", 1e-10),
+    ("ceta", 1e-10),
+    ("fy_tr_n", 1e-6),
+    ("fy_ws_n", 1e-6),
+    ("cphi_per_mm", 1e-10),
+];
 
 /// The bound of `tolerances.toml` on the floored quantities, in half-units.
 pub const FLOORED_BOUND: f64 = 1.5;

@@ -560,8 +560,16 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "transient rolling",
         control: "T",
         supported: false,
-        reason: "supported: T = 3 (steady rolling), T = 0 (frictionless compression) and T = 1 from rest (P = 2); T = 2 needs the tractions of the previous case carried on a wheel-rail grid moving with the contact",
-        used: |c| wr_digit("T", c.digits.t, c.digits.t == 2),
+        reason: "supported: T = 2 from rest (P = 2) or continuing a steady case (P = 0 after T = 3) or a transient one; after another run (P = 1, 3) it needs the state of a run before, not carried",
+        used: |c| (c.digits.t == 2 && matches!(c.digits.p, 1 | 3)).then(|| format!("T = 2, P = {}", c.digits.p)),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::TransientContact,
+        name: "transient rolling continuing a sequence",
+        control: "T, P",
+        supported: true,
+        reason: "imported as [wheelrail] motion = \"rolling_sequence\", dq_rel = DQREL with the steady case (T = 3) or the step from rest (P = 2, start = \"rest\") that starts it: each step the previous tractions on CONTACT's super-grid (fixed laterally in the rail's material, moving with the wheelset along the track), rolled by DQ, the exact theory (docs/wheelrail.md)",
+        used: |c| (c.digits.t == 2 && matches!(c.digits.p, 0 | 2)).then(|| format!("T = 2, P = {}", c.digits.p)),
     },
     WheelRailRow {
         feature: WheelRailFeature::TransientContact,

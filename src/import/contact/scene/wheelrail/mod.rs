@@ -103,8 +103,11 @@ fn groups(members: Vec<Member>) -> (Vec<Vec<Member>>, Vec<(usize, String)>) {
             match out.last_mut().map(|g| continues(g, &m)) {
                 Some(Ok(())) => {
                     let g = out.last_mut().expect("the group continued");
-                    if let MotionSpec::Shift { sequence, .. } = &mut g[0].scene.motion {
-                        *sequence = true;
+                    match (&mut g[0].scene.motion, m.scene.motion) {
+                        (MotionSpec::Shift { sequence, .. }, _) => *sequence = true,
+                        (MotionSpec::RollingSequence { from_rest: true, .. }, _) => {}
+                        (first, rolling @ MotionSpec::RollingSequence { .. }) => *first = rolling,
+                        _ => {}
                     }
                     supported.insert(m.number);
                     g.push(m);
@@ -129,9 +132,10 @@ fn groups(members: Vec<Member>) -> (Vec<Vec<Member>>, Vec<(usize, String)>) {
     (out, refused)
 }
 
-/// Whether a one-row scene is a shift continuing the case before (T = 1, P = 0).
+/// Whether a one-row scene continues the case before: a shift (T = 1, P = 0) or a transient
+/// rolling step (T = 2, P = 0; the import refuses T = 2 otherwise).
 fn is_continued(s: &WheelRailScene) -> bool {
-    matches!(s.motion, MotionSpec::Shift { sequence: true, .. })
+    matches!(s.motion, MotionSpec::Shift { sequence: true, .. } | MotionSpec::RollingSequence { from_rest: false, .. })
 }
 
 /// Whether the shift `m` (P = 0) continues group `g`: `g` ends with the case just before it, starts
@@ -143,6 +147,9 @@ fn continues(g: &[Member], m: &Member) -> Result<(), String> {
     let refuse = |why: &str| Err(format!("T = 1, P = 0: a shift continuing the case before it: {why}"));
     if last.number + 1 != m.number {
         return refuse(&format!("case {} before it is not imported", m.number - 1));
+    }
+    if let MotionSpec::RollingSequence { .. } = m.scene.motion {
+        return continues_rolling(g, m);
     }
     let MotionSpec::Shift { s_ws_mm: s0, .. } = g[0].scene.motion else {
         return refuse(&format!("case {} before it is not a shift (T = 1)", last.number));
@@ -163,6 +170,31 @@ fn continues(g: &[Member], m: &Member) -> Result<(), String> {
     let as_first = WheelRailScene { cases: m.scene.cases.clone(), motion: m.scene.motion, ..g[0].scene.clone() };
     if as_first != m.scene {
         return refuse(&format!("it changes more than the position and the shifts of case {}", last.number));
+    }
+    Ok(())
+}
+
+/// Whether the transient rolling step `m` (T = 2, P = 0) continues group `g`: `g` ends with the
+/// case just before it and starts with a steady case (T = 3) or a transient step from rest (T = 2,
+/// P = 2) followed by transient steps only, and agrees with `m` but for the rows and the motion.
+fn continues_rolling(g: &[Member], m: &Member) -> Result<(), String> {
+    let last = &g[g.len() - 1];
+    let refuse = |why: &str| Err(format!("T = 2, P = 0: transient rolling continuing the case before it: {why}"));
+    if last.number + 1 != m.number {
+        return refuse(&format!("case {} before it is not imported", m.number - 1));
+    }
+    match g[0].scene.motion {
+        MotionSpec::Rolling if g.len() == 1 => {}
+        MotionSpec::RollingSequence { .. } => {}
+        _ => {
+            let why =
+                format!("the scene of case {} is not steady rolling (T = 3) or T = 2 followed by T = 2", last.number);
+            return refuse(&why);
+        }
+    }
+    let as_first = WheelRailScene { cases: m.scene.cases.clone(), motion: m.scene.motion, ..g[0].scene.clone() };
+    if as_first != m.scene {
+        return refuse(&format!("it changes more than the wheelset's position and velocity of case {}", last.number));
     }
     Ok(())
 }
@@ -256,10 +288,10 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         d_comb_mm: disc.d_comb_mm,
         d_turn_mm: disc.d_turn_mm(),
         wheel_mesh: false,
-        motion: if c.digits.t == 1 {
-            MotionSpec::Shift { s_ws_mm: s_ws, sequence: c.digits.p == 0 }
-        } else {
-            MotionSpec::Rolling
+        motion: match c.digits.t {
+            1 => MotionSpec::Shift { s_ws_mm: s_ws, sequence: c.digits.p == 0 },
+            2 => MotionSpec::RollingSequence { dq_rel: disc.dqrel, from_rest: c.digits.p == 2 },
+            _ => MotionSpec::Rolling,
         },
         vertical,
         longitudinal,

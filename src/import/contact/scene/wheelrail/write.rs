@@ -65,6 +65,13 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
             wheelrail.push(("s_mm", Value::Float(s_ws_mm)));
         }
     }
+    if let MotionSpec::RollingSequence { dq_rel, from_rest } = s.motion {
+        wheelrail.push(("motion", Value::String("rolling_sequence".into())));
+        wheelrail.push(("dq_rel", Value::Float(dq_rel)));
+        if from_rest {
+            wheelrail.push(("start", Value::String("rest".into())));
+        }
+    }
     let mut rail = profile(&s.rail, &s.name)?;
     match s.placement {
         PlacementSpec::Gauge { height_mm, width_mm } => {
