@@ -4,21 +4,13 @@
 //! against closed forms: `solvers/contact/tangential/tests_layer.rs`; against CONTACT's printed
 //! tractcurv.inp 31-60: the suite contact_public (tests/all/contact_public.rs).
 
-use crate::common::{scene_text, tempdir};
+use crate::common::{run_scene, scene_text, tempdir};
 use std::process::Command;
 
 const LAYER: &str = "g_mpa = 82000.0\npoisson = 0.28\nlayer_g_mpa = 8200.0\nlayer_thickness_mm = 1.25";
 
 fn text(material: &str, solvers: &str, creepage: &str) -> String {
     scene_text("layer", solvers, 0.3, 8, creepage, "").replace("g_mpa = 82000.0\npoisson = 0.28", material)
-}
-
-/// `creepbench ARGS` in `dir` with `s.toml` holding `scene`: (exit code, stderr).
-fn run(dir_name: &str, scene: &str, args: &[&str]) -> (Option<i32>, String, std::path::PathBuf) {
-    let dir = tempdir(dir_name);
-    std::fs::write(dir.join("s.toml"), scene).unwrap();
-    let o = Command::new(env!("CARGO_BIN_EXE_creepbench")).current_dir(&dir).args(args).output().unwrap();
-    (o.status.code(), String::from_utf8_lossy(&o.stderr).to_string(), dir)
 }
 
 #[test]
@@ -33,15 +25,15 @@ fn the_layer_is_read_with_both_keys_and_the_exact_model_only() {
     assert_eq!(none.material.layer, None);
     let simulate = ["simulate", "s.toml", "--out", "out"];
     let half = "g_mpa = 82000.0\npoisson = 0.28\nlayer_g_mpa = 8200.0";
-    let (code, err, dir) = run("layer_half", &text(half, "[\"contact\"]", steady), &simulate);
+    let (code, err, dir) = run_scene("layer_half", &text(half, "[\"contact\"]", steady), &simulate);
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("material.layer_thickness_mm") && err.contains("missing"), "{err}");
     assert!(!dir.join("out").exists());
     let (code, err, _) =
-        run("layer_range", &text(&LAYER.replace("8200.0", "-1.0"), "[\"contact\"]", steady), &simulate);
+        run_scene("layer_range", &text(&LAYER.replace("8200.0", "-1.0"), "[\"contact\"]", steady), &simulate);
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("material.layer_g_mpa"), "{err}");
-    let (code, err, dir) = run("layer_fastsim", &text(LAYER, "[\"contact\", \"fastsim\"]", steady), &simulate);
+    let (code, err, dir) = run_scene("layer_fastsim", &text(LAYER, "[\"contact\", \"fastsim\"]", steady), &simulate);
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("an interface layer only with the exact model"), "{err}");
     assert!(!dir.join("out").exists());
@@ -50,8 +42,11 @@ fn the_layer_is_read_with_both_keys_and_the_exact_model_only() {
 #[test]
 fn the_layer_exports_as_m4_and_imports_back_and_transient_rolling_is_refused() {
     let steady = "kind = \"sweep\"\nover = \"cx\"\nat = [0.001, 0.002]";
-    let (code, err, dir) =
-        run("layer_export", &text(LAYER, "[\"contact\"]", steady), &["export", "contact", "s.toml", "--out", "back"]);
+    let (code, err, dir) = run_scene(
+        "layer_export",
+        &text(LAYER, "[\"contact\"]", steady),
+        &["export", "contact", "s.toml", "--out", "back"],
+    );
     assert_eq!(code, Some(0), "{err}");
     let deck = std::fs::read_to_string(dir.join("back/layer.inp")).unwrap();
     assert!(deck.contains("  8200.0   1.25   0.0   0.0    GG3, LAYTHK, TAU_C0, K_TAU"), "{deck}");
@@ -60,7 +55,7 @@ fn the_layer_exports_as_m4_and_imports_back_and_transient_rolling_is_refused() {
     let again = imported_again(&dir);
     assert!(again.contains("layer_g_mpa = 8200.0") && again.contains("layer_thickness_mm = 1.25"), "{again}");
     let transient = "kind = \"step\"\nc = 0.001\nsteps = 2";
-    let (code, err, dir) = run(
+    let (code, err, dir) = run_scene(
         "layer_transient",
         &text(LAYER, "[\"contact\"]", transient),
         &["export", "contact", "s.toml", "--out", "back"],
@@ -80,19 +75,19 @@ fn the_yield_limit_is_read_with_its_layer_and_exports_as_tau_c0() {
     assert_eq!(p.material.layer.and_then(|l| l.yield_mpa), Some(560.0));
     let simulate = ["simulate", "s.toml", "--out", "out"];
     let alone = "g_mpa = 82000.0\npoisson = 0.28\nlayer_yield_mpa = 560.0";
-    let (code, err, dir) = run("yield_alone", &text(alone, "[\"contact\"]", steady), &simulate);
+    let (code, err, dir) = run_scene("yield_alone", &text(alone, "[\"contact\"]", steady), &simulate);
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("material.layer_yield_mpa") && err.contains("with its layer"), "{err}");
     assert!(!dir.join("out").exists());
     let thin = plastic.replace("1.25", "0.0");
-    let (code, err, _) = run("yield_thin", &text(&thin, "[\"contact\"]", steady), &simulate);
+    let (code, err, _) = run_scene("yield_thin", &text(&thin, "[\"contact\"]", steady), &simulate);
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("material.layer_yield_mpa") && err.contains("thickness > 0"), "{err}");
     let (code, err, _) =
-        run("yield_range", &text(&plastic.replace("560.0", "-1.0"), "[\"contact\"]", steady), &simulate);
+        run_scene("yield_range", &text(&plastic.replace("560.0", "-1.0"), "[\"contact\"]", steady), &simulate);
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("material.layer_yield_mpa"), "{err}");
-    let (code, err, dir) = run(
+    let (code, err, dir) = run_scene(
         "yield_export",
         &text(&plastic, "[\"contact\"]", steady),
         &["export", "contact", "s.toml", "--out", "back"],
@@ -112,29 +107,9 @@ fn the_yield_limit_is_read_with_its_layer_and_exports_as_tau_c0() {
 #[test]
 fn plastic_3bl_magnetite_yields_at_tau_c0() {
     let dir = tempdir("plastic_3bl");
-    let deck = crate::common::root().join("reference/contact_public/examples/plastic_3bl.inp");
-    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
-        .current_dir(&dir)
-        .args(["import", "contact", deck.to_str().unwrap(), "--out", "scenes", "--supported-only"])
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    crate::layer_hardening::simulate_plastic_3bl(&dir, &["plastic_3bl_1", "plastic_3bl_2"]);
     let fx_n = |name: &str| -> Vec<f64> {
-        let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
-            .current_dir(&dir)
-            .args(["simulate", &format!("scenes/{name}.toml"), "--out", "out"])
-            .output()
-            .unwrap();
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-        let text = std::fs::read_to_string(dir.join("out").join(name).join("contact.csv")).unwrap();
-        let mut lines = text.lines();
-        let head: Vec<&str> = lines.next().unwrap().split(',').collect();
-        let (fx, fn_) =
-            (head.iter().position(|h| *h == "fx_over_fn").unwrap(), head.iter().position(|h| *h == "fn_n").unwrap());
-        lines
-            .map(|l| l.split(',').map(|v| v.parse::<f64>().unwrap()).collect::<Vec<f64>>())
-            .map(|r| -r[fx] * r[fn_])
-            .collect()
+        crate::layer_hardening::column(&dir, name, "fx_over_fn").into_iter().map(|f| -f).collect()
     };
     let case1 = fx_n("plastic_3bl_1");
     // Case 1 (no layer): CONTACT prints FX = 84.97 N at 0.001 mm.

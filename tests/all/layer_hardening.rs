@@ -4,7 +4,7 @@
 //! 435), sand (−195) and MoS2 (20.4) series against the closed form of one element and against
 //! CONTACT's printed FX. The fixed point per step: `solvers/contact/hardening.rs` (its own tests).
 
-use crate::common::{root, scene_text, tempdir};
+use crate::common::{root, run_scene, scene_text, tempdir};
 use creepbench::comparison::references::contact_output::{self, CaseBody};
 use std::path::Path;
 use std::process::Command;
@@ -27,14 +27,6 @@ fn scene(material: &str, rolling: bool) -> String {
     }
 }
 
-/// `creepbench ARGS` in a new folder `name` holding `s.toml` = `scene`: (exit code, stderr, folder).
-fn run(name: &str, scene: &str, args: &[&str]) -> (Option<i32>, String, std::path::PathBuf) {
-    let dir = tempdir(name);
-    std::fs::write(dir.join("s.toml"), scene).unwrap();
-    let o = Command::new(env!("CARGO_BIN_EXE_creepbench")).current_dir(&dir).args(args).output().unwrap();
-    (o.status.code(), String::from_utf8_lossy(&o.stderr).to_string(), dir)
-}
-
 #[test]
 fn the_rate_is_read_with_its_yield_limit_in_shifts_and_exports_as_k_tau() {
     let p = crate::common::problem(&scene(HARDENING, false));
@@ -43,21 +35,21 @@ fn the_rate_is_read_with_its_yield_limit_in_shifts_and_exports_as_k_tau() {
     let simulate = ["simulate", "s.toml", "--out", "out"];
     // Without its yield limit: refused naming the key.
     let alone = HARDENING.replace("layer_yield_mpa = 200.0\n", "");
-    let (code, err, dir) = run("hardening_alone", &scene(&alone, false), &simulate);
+    let (code, err, dir) = run_scene("hardening_alone", &scene(&alone, false), &simulate);
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("material.layer_hardening_mpa_per_mm") && err.contains("with its yield limit"), "{err}");
     assert!(!dir.join("out").exists());
     // In rolling: refused (CONTACT refuses K_TAU != 0 in steady rolling).
-    let (code, err, dir) = run("hardening_rolling", &scene(HARDENING, true), &simulate);
+    let (code, err, dir) = run_scene("hardening_rolling", &scene(HARDENING, true), &simulate);
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("material.layer_hardening_mpa_per_mm") && err.contains("shifts only"), "{err}");
     assert!(!dir.join("out").exists());
-    let (code, err, _) = run("hardening_range", &scene(&HARDENING.replace("435.0", "1e11"), false), &simulate);
+    let (code, err, _) = run_scene("hardening_range", &scene(&HARDENING.replace("435.0", "1e11"), false), &simulate);
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("material.layer_hardening_mpa_per_mm"), "{err}");
     // Exported as K_TAU, imported back as the same key.
     let (code, err, dir) =
-        run("hardening_export", &scene(HARDENING, false), &["export", "contact", "s.toml", "--out", "back"]);
+        run_scene("hardening_export", &scene(HARDENING, false), &["export", "contact", "s.toml", "--out", "back"]);
     assert_eq!(code, Some(0), "{err}");
     let deck = std::fs::read_to_string(dir.join("back/layer.inp")).unwrap();
     assert!(deck.contains("  106.25   0.02   200.0   435.0    GG3, LAYTHK, TAU_C0, K_TAU"), "{deck}");
@@ -107,8 +99,28 @@ fn one_element(s: &Series, l_mm_per_n: f64) -> Vec<(f64, f64)> {
     out
 }
 
-/// A column of `contact.csv` of scene `name` simulated in `dir`.
-fn column(dir: &Path, name: &str, key: &str) -> Vec<f64> {
+/// plastic_3bl.inp imported into `dir/scenes` (its supported cases) and the scenes `names`
+/// simulated into `dir/out`.
+pub(crate) fn simulate_plastic_3bl(dir: &Path, names: &[&str]) {
+    let deck = root().join("reference/contact_public/examples/plastic_3bl.inp");
+    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(dir)
+        .args(["import", "contact", deck.to_str().unwrap(), "--out", "scenes", "--supported-only"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for name in names {
+        let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
+            .current_dir(dir)
+            .args(["simulate", &format!("scenes/{name}.toml"), "--out", "out"])
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{name}: {}", String::from_utf8_lossy(&o.stderr));
+    }
+}
+
+/// A column of `contact.csv` of scene `name` simulated in `dir` (`fx_over_fn`: FX in N).
+pub(crate) fn column(dir: &Path, name: &str, key: &str) -> Vec<f64> {
     let text = std::fs::read_to_string(dir.join("out").join(name).join("contact.csv")).unwrap();
     let mut lines = text.lines();
     let head: Vec<&str> = lines.next().unwrap().split(',').collect();
@@ -128,25 +140,11 @@ fn column(dir: &Path, name: &str, key: &str) -> Vec<f64> {
 #[test]
 fn plastic_3bl_clay_sand_and_mos2_harden_and_soften_as_one_element() {
     let dir = tempdir("plastic_3bl_hardening");
-    let deck = root().join("reference/contact_public/examples/plastic_3bl.inp");
-    let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
-        .current_dir(&dir)
-        .args(["import", "contact", deck.to_str().unwrap(), "--out", "scenes", "--supported-only"])
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let names = ["plastic_3bl_1", "plastic_3bl_15", "plastic_3bl_32", "plastic_3bl_45"];
-    for name in names {
-        let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
-            .current_dir(&dir)
-            .args(["simulate", &format!("scenes/{name}.toml"), "--out", "out"])
-            .output()
-            .unwrap();
-        assert!(o.status.success(), "{name}: {}", String::from_utf8_lossy(&o.stderr));
-    }
+    simulate_plastic_3bl(&dir, &names);
     // Case 1 (no layer): the half-spaces' flexibility, FX = 84.97 N printed at 0.001 mm.
     let l_mm_per_n = 0.001 / -column(&dir, "plastic_3bl_1", "fx_over_fn")[0];
-    let printed = contact_output::read(&deck.with_extension("ref_out")).unwrap();
+    let printed = contact_output::read(&root().join("reference/contact_public/examples/plastic_3bl.ref_out")).unwrap();
     let fx_printed = |case: u32| match &printed.iter().find(|c| c.case == case).expect("printed").body {
         CaseBody::Totals(t) => t.fx_n,
         other => panic!("case {case}: {other:?}"),

@@ -172,6 +172,14 @@ pub fn run_in(dir: &Path, args: &[&str], what: &str) -> (Option<i32>, String) {
     (o.status.code(), err)
 }
 
+/// `creepbench ARGS` in a new folder `name` holding `s.toml` = `scene`: (exit code, stderr, folder).
+pub fn run_scene(name: &str, scene: &str, args: &[&str]) -> (Option<i32>, String, PathBuf) {
+    let dir = tempdir(name);
+    std::fs::write(dir.join("s.toml"), scene).unwrap();
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_creepbench")).current_dir(&dir).args(args).output().unwrap();
+    (o.status.code(), String::from_utf8_lossy(&o.stderr).to_string(), dir)
+}
+
 /// Add `by` to the value at `line` (0 = the header) and `column` of a CSV file (a drift made by
 /// hand for the gate's tests).
 #[allow(dead_code)]
