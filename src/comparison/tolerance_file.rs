@@ -32,9 +32,67 @@ use crate::comparison::against::Against;
 use crate::comparison::finding::Finding;
 pub use crate::comparison::rule::{glob, Rule};
 use crate::error::InputError;
+use crate::scene::keys::{key, Absent, Allowed, Keys};
 use crate::scene::reader::{Range, Section};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
+
+/// A tolerance, absolute or relative.
+const TOLERANCE: Range = Range::new(0.0, true, f64::INFINITY, true);
+
+/// `[[rule]]`'s keys (`<!-- keys:tolerance -->`); `against`'s labels are those of
+/// [`crate::comparison::tolerances::labels`] (a test checks the list).
+pub const KEYS: Keys = Keys {
+    id: "tolerance",
+    owner: file!(),
+    keys: &[
+        key(
+            "against",
+            "–",
+            Allowed::Text("`golden`, `previous`, `CONTACT`, `CONTACT FASTSIM`, `CONTACT envelope`, `CONTACT non-Hertzian`, `CONTACT test table`, `thesis`, `CONTACT friction`, `CONTACT friction tight`, `CONTACT friction, not gated`, `CONTACT friction variants`, `CONTACT friction variants tight`, `CONTACT friction variants, not gated`, `CONTACT public`, `CONTACT wheel-rail`"),
+            Absent::Required,
+            r#"the comparison the rule decides: `against = "CONTACT"`"#,
+        ),
+        key("scene", "–", Allowed::Text("a scene name or a pattern with `*`"), Absent::Choice("*"), r#"the scenes it covers: `scene = "sine_*"`"#),
+        key("solver", "–", Allowed::Text("a model name or a pattern"), Absent::Choice("*"), r#"the models it covers: `solver = "uba"`"#),
+        key(
+            "quantity",
+            "–",
+            Allowed::Text("a history column or a metric name, or a pattern"),
+            Absent::Choice("*"),
+            r#"the compared quantity: `quantity = "delay_ratio"`"#,
+        ),
+        key(
+            "abs",
+            "the quantity's",
+            Allowed::Number(TOLERANCE, ""),
+            Absent::Text("required for a gated rule"),
+            r#"passes when \|ours − theirs\| ≤ abs + rel·\|theirs\|; a reported rule may omit it (no tolerance): `abs = 1e-9`"#,
+        ),
+        key("rel", "–", Allowed::Number(TOLERANCE, ""), Absent::Num(0.0), r#"the relative part: `rel = 1e-7`"#),
+        key(
+            "gated",
+            "–",
+            Allowed::Bool,
+            Absent::Text("`true`"),
+            r#"a miss of a gated rule fails the gate; a reported one is shown, never judged: `gated = false`"#,
+        ),
+        key(
+            "disable",
+            "–",
+            Allowed::Bool,
+            Absent::Text("`false`"),
+            r#"said explicitly with its `why`: this rule may switch a gate off (a tolerance at or beyond 1e9, `gated = false` on a comparison the defaults gate, a bare `*` over everything); without it such a rule is refused (exit 2), and `check --strict` refuses every loosening: `disable = true`"#,
+        ),
+        key(
+            "why",
+            "–",
+            Allowed::Text("a string: the reason for this tolerance"),
+            Absent::Required,
+            r#"the reason, reviewed with the number: `why = "floating-point noise"`"#,
+        ),
+    ],
+};
 
 /// Read a rule file; `labels` are the comparisons a rule may name.
 pub fn load(path: &Path, labels: &[Against]) -> Result<Vec<Rule>, InputError> {
@@ -122,19 +180,18 @@ pub fn parse(text: &str, name: &str, labels: &[Against]) -> Result<Vec<Rule>, In
         let toml::Value::Table(t) = item else {
             return Err(InputError::new(&origin, "not a table", "a [[rule]] table"));
         };
-        let mut s = Section::new(origin.clone(), t);
+        let mut s = Section::new(origin.clone(), t).declare(&KEYS);
         let label = s.str("against", &allowed_against)?;
         let Some(&against) = labels.iter().find(|l| l.label() == label) else {
             return Err(InputError::new(s.field("against"), format!("{label:?}"), allowed_against));
         };
         let pattern = |s: &mut Section, key: &str| -> Result<String, InputError> {
-            Ok(s.opt_str(key, "a name or a pattern with *")?.unwrap_or("*").to_string())
+            Ok(s.opt_text(key)?.unwrap_or("*").to_string())
         };
         let (scene, solver, quantity) =
             (pattern(&mut s, "scene")?, pattern(&mut s, "solver")?, pattern(&mut s, "quantity")?);
         let gated = s.opt_bool("gated")?.unwrap_or(true);
-        let tol = Range::new(0.0, true, f64::INFINITY, true);
-        let abs = match s.opt_f64("abs", tol)? {
+        let abs = match s.opt_num("abs")? {
             Some(abs) => abs,
             None if !gated => f64::INFINITY,
             None => {
@@ -143,14 +200,14 @@ pub fn parse(text: &str, name: &str, labels: &[Against]) -> Result<Vec<Rule>, In
                     "missing",
                     format!(
                         "required for a gated rule: {} (a reported rule, gated = false, may omit it)",
-                        tol.describe()
+                        TOLERANCE.describe()
                     ),
                 ))
             }
         };
-        let rel = s.opt_f64("rel", tol)?.unwrap_or(0.0);
+        let rel = s.num_or_default("rel")?;
         let disable = s.opt_bool("disable")?.unwrap_or(false);
-        let why = s.str("why", "the reason for this tolerance (reviewed with it)")?.to_string();
+        let why = s.text("why")?.to_string();
         s.finish()?;
         out.push(Rule { origin, against, scene, solver, quantity, abs, rel, gated, disable, why, suite: None });
     }
@@ -280,5 +337,15 @@ mod tests {
         assert!(glob("*", "anything") && glob("sine_*", "sine_f10") && !glob("sine_*", "step_sine"));
         assert!(glob("*_f10*", "sine_f10_mu04") && glob("a*b*c", "aXbYc") && !glob("a*b*c", "aXcYb"));
         assert!(glob("exact", "exact") && !glob("exact", "exactly") && glob("a*a", "aa") && !glob("a*a", "a"));
+    }
+
+    /// The declared `against` lists exactly the labels a run's rule may name, in their order.
+    #[test]
+    fn the_declared_labels_are_the_comparisons() {
+        let Some(super::Allowed::Text(text)) = super::KEYS.get("against").map(|k| k.allowed) else {
+            panic!("against is declared as a text")
+        };
+        let want: Vec<String> = labels().iter().map(|l| format!("`{}`", l.label())).collect();
+        assert_eq!(text, want.join(", "));
     }
 }

@@ -70,9 +70,19 @@ pub struct Keys {
 }
 
 impl Keys {
-    /// The declaration of `key`, if any.
+    /// The declaration of `key`, if any (a family row never matches a key given).
     pub fn get(&self, key: &str) -> Option<&'static KeySpec> {
-        self.keys.iter().find(|k| k.key == key)
+        self.keys.iter().find(|k| k.key == key && !k.is_family())
+    }
+}
+
+impl KeySpec {
+    /// Whether this row stands for a family of keys described in words (`a column's name`, a
+    /// study axis's `` `"table.key"` ``), not one key: its name is not a key's (`a-z`, `0-9`,
+    /// `_`); docs show it as written, and the reader reads its keys by another declaration or
+    /// by hand.
+    pub fn is_family(&self) -> bool {
+        !self.key.bytes().all(|b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'_')
     }
 }
 
@@ -112,9 +122,10 @@ fn of_pi(v: f64) -> Option<String> {
     })
 }
 
-/// `text` without Markdown's code marks (a message shows `"a"` for `` `"a"` ``).
+/// `text` without Markdown's code marks and escapes (a message shows `"a"` for `` `"a"` ``,
+/// `|x|` for `\\|x\\|`).
 fn plain_text(text: &str) -> String {
-    text.replace('`', "")
+    text.replace('`', "").replace("\\|", "|")
 }
 
 /// ` ; note` when there is a note.
@@ -184,6 +195,27 @@ impl Absent {
     }
 }
 
+impl KeySpec {
+    /// The docs' "key" cell: `` `key` ``, or a family's words as written.
+    pub fn cell(&self) -> String {
+        match self.is_family() {
+            true => self.key.to_string(),
+            false => format!("`{}`", self.key),
+        }
+    }
+}
+
+/// The Markdown table of the columns of a table file (`tables`' keys as columns: column, unit,
+/// allowed, meaning), as docs/scene-format.md shows it between `<!-- columns:ID -->` and
+/// `<!-- /keys -->`.
+pub fn columns_markdown(tables: &[&Keys]) -> String {
+    let mut out = String::from("| column | unit | allowed | meaning |\n|---|---|---|---|\n");
+    for k in tables.iter().flat_map(|t| t.keys) {
+        out.push_str(&format!("| {} | {} | {} | {} |\n", k.cell(), k.unit, k.allowed.cell(), k.meaning));
+    }
+    out
+}
+
 /// The Markdown table of `tables`' keys (one header; sub-tables documented under their own
 /// heading are left out), as docs/scene-format.md shows it between `<!-- keys:ID -->` and
 /// `<!-- /keys -->`.
@@ -194,8 +226,8 @@ pub fn markdown(tables: &[&Keys]) -> String {
             continue;
         }
         out.push_str(&format!(
-            "| `{}` | {} | {} | {} | {} |\n",
-            k.key,
+            "| {} | {} | {} | {} | {} |\n",
+            k.cell(),
             k.unit,
             k.allowed.cell(),
             k.default.cell(),

@@ -492,8 +492,16 @@ pub const KEY_TABLES: &[&keys::Keys] = &[
     &wheelrail_profile::PROFILE_KEYS,
     &wheelrail_profile::RAIL_KEYS,
     &wheelrail_profile::WHEEL_KEYS,
+    &wheelrail_cases::KEYS,
+    &wheelrail_cases::AXIS_KEYS,
+    &wheelrail_cases::STEP_KEYS,
     &wheelrail::REPORT_KEYS,
 ];
+
+/// The declarations of the columns of table files (column, unit, allowed, meaning): the reader
+/// checks each value by its column's, and docs/scene-format.md's columns tables are generated
+/// from them (`<!-- columns:ID -->`).
+pub const COLUMN_TABLES: &[&keys::Keys] = &[&wheelrail_cases::COLUMNS];
 
 const CREEPAGE_LIMIT: Range = Range::new(-1.0, true, 1.0, true);
 /// A prescribed force ratio Fx/FN or Fy/FN: below 1 in size (and below μ, checked per sample).

@@ -435,7 +435,7 @@ impl<'a> Section<'a> {
             return Err(self.misdeclared(key));
         }
         let mut known: BTreeSet<&str> = self.used.iter().map(String::as_str).collect();
-        known.extend(self.declared.iter().flat_map(|k| k.keys).map(|k| k.key));
+        known.extend(self.declared.iter().flat_map(|k| k.keys).filter(|k| !k.is_family()).map(|k| k.key));
         let known: Vec<&str> = known.into_iter().collect();
         for (k, v) in self.table {
             if !self.used.contains(k) {

@@ -21,9 +21,111 @@
 //! # ...
 //! ```
 
+use super::keys::{key, Absent, Allowed, Keys};
 use crate::error::InputError;
 use serde::{Deserialize, Serialize};
 use toml::{Table, Value};
+
+/// A study file's tables, each documented under its own heading (`<!-- keys:study -->`).
+pub const FILE_KEYS: Keys = Keys {
+    id: "study",
+    owner: file!(),
+    keys: &[
+        key("study", "–", Allowed::Section, Absent::Required, "the study: its keys below"),
+        key("scene", "–", Allowed::Section, Absent::Required, "the template: a whole scene without `name`"),
+    ],
+};
+
+/// `[study]`'s keys (`<!-- keys:study -->`).
+pub const KEYS: Keys = Keys {
+    id: "study",
+    owner: file!(),
+    keys: &[
+        key(
+            "name",
+            "–",
+            Allowed::Text("a string"),
+            Absent::Required,
+            r#"the study's id (report, scene.json `studies`): `name = "sine_freq"`"#,
+        ),
+        key(
+            "title",
+            "–",
+            Allowed::Text("a string"),
+            Absent::Text("the name"),
+            r#"the study's title in the report: `title = "Frequency at mu = 1"`"#,
+        ),
+        key(
+            "scene_name",
+            "–",
+            Allowed::Text("a pattern naming every axis as `{axis}`"),
+            Absent::Text("`<name>_<axis><label>_…`"),
+            r#"the points' scene names; labels must make every name distinct: `scene_name = "sine_f{freq}_mu{mu}"`"#,
+        ),
+        key(
+            "x",
+            "–",
+            Allowed::Text("one of the axes' names"),
+            Absent::Text("the first axis"),
+            r#"the axis on the report's x; its values must be numbers (or it has `x_values`): `x = "freq"`"#,
+        ),
+        key(
+            "metrics",
+            "–",
+            Allowed::Text("metric names (as the scene's `metrics`)"),
+            Absent::Text("every scalar metric"),
+            r#"the curves the report draws against x: `metrics = ["delay_ratio"]`"#,
+        ),
+        key(
+            "axis",
+            "–",
+            Allowed::Text("one or more `[[study.axis]]` tables"),
+            Absent::Required,
+            "the axes, crossed, the first outermost",
+        ),
+    ],
+};
+
+/// `[[study.axis]]`'s keys (`<!-- keys:study_axis -->`); the dotted scene keys are a family.
+pub const AXIS_KEYS: Keys = Keys {
+    id: "study_axis",
+    owner: file!(),
+    keys: &[
+        key(
+            "name",
+            "–",
+            Allowed::Text("a name of `a-z`, `0-9`, `_`, distinct among the axes"),
+            Absent::Required,
+            r#"the axis's name: `name = "mu"`"#,
+        ),
+        key(
+            "`\"table.key\"`",
+            "the key's",
+            Allowed::Text("a non-empty array of values valid for that scene key"),
+            Absent::Text("at least one"),
+            r#"a dotted scene key (quoted) and its values; every key of one axis has as many values, and they vary together (a load with its semi-axes): `"contact.mu" = [1.0, 0.6]`"#,
+        ),
+        key(
+            "labels",
+            "–",
+            Allowed::Text("one string per value"),
+            Absent::Text("the values, `.` → `p`, `-` → `m`"),
+            r#"the parts of the scene names: `labels = ["10", "06"]`"#,
+        ),
+        key(
+            "x_values",
+            "–",
+            Allowed::Text("one number per value"),
+            Absent::Text("–"),
+            r#"the axis's numbers on the report's x where its values are not numbers: `x_values = [-90.0, 0.0, 90.0]`"#,
+        ),
+    ],
+};
+
+/// What `keys` declares `k` allows, as a message says it.
+fn allowed(keys: &Keys, k: &str) -> String {
+    keys.get(k).map_or_else(String::new, |spec| spec.allowed.message())
+}
 
 /// Where a scene sits in a study (scene.json `studies`, read by the report).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -107,18 +209,15 @@ fn axis_name(t: &Table, field: &str) -> Result<String, InputError> {
         {
             Ok(s.clone())
         }
-        Some(v) => Err(err(format!("{field}.name"), v, "a name of [a-z0-9_]+")),
-        None => Err(err(format!("{field}.name"), "missing", "a name of [a-z0-9_]+")),
+        Some(v) => Err(err(format!("{field}.name"), v, allowed(&AXIS_KEYS, "name"))),
+        None => Err(err(format!("{field}.name"), "missing", format!("required: {}", allowed(&AXIS_KEYS, "name")))),
     }
 }
 
-/// The axis's varied keys, in the table's order: every entry but `name`, `labels` and
-/// `x_values`, each as [`axis_key`] reads it.
+/// The axis's varied keys, in the table's order: every entry but those [`AXIS_KEYS`] declares
+/// (`name`, `labels`, `x_values`), each as [`axis_key`] reads it.
 fn axis_keys(t: &Table, field: &str) -> Result<Vec<(String, Vec<Value>)>, InputError> {
-    t.iter()
-        .filter(|(k, _)| !["name", "labels", "x_values"].contains(&k.as_str()))
-        .map(|(k, v)| axis_key(k, v, field))
-        .collect()
+    t.iter().filter(|(k, _)| AXIS_KEYS.get(k).is_none()).map(|(k, v)| axis_key(k, v, field)).collect()
 }
 
 /// One varied key `k` and its values `v`: a non-empty array, a dotted scene key, finite numbers.
@@ -251,7 +350,8 @@ fn study_and_template(doc: &Table) -> Result<(&Table, &Table), InputError> {
 /// metrics and scene-name pattern.
 fn read_study(study: &Table, metric_names: &[&str]) -> Result<Study, InputError> {
     check_study_keys(study)?;
-    let name = text("name", study)?.ok_or_else(|| err("study.name", "missing", "a name of [a-z0-9_]+"))?;
+    let name = text("name", study)?
+        .ok_or_else(|| err("study.name", "missing", format!("required: {}", allowed(&KEYS, "name"))))?;
     let title = text("title", study)?.unwrap_or_else(|| name.clone());
     let axes = read_axes(study)?;
     let x_axis = read_x_axis(study, &axes)?;
@@ -260,11 +360,11 @@ fn read_study(study: &Table, metric_names: &[&str]) -> Result<Study, InputError>
     Ok(Study { name, title, axes, x_axis, metrics, pattern })
 }
 
-/// Refuse a `[study]` key the format (module doc) does not have.
+/// Refuse a `[study]` key [`KEYS`] does not declare.
 fn check_study_keys(study: &Table) -> Result<(), InputError> {
-    let allowed = ["name", "title", "scene_name", "x", "metrics", "axis"];
-    if let Some(k) = study.keys().find(|k| !allowed.contains(&k.as_str())) {
-        return Err(err(format!("study.{k}"), "given", format!("one of {}", allowed.join(", "))));
+    if let Some(k) = study.keys().find(|k| KEYS.get(k).is_none()) {
+        let known: Vec<&str> = KEYS.keys.iter().map(|k| k.key).collect();
+        return Err(err(format!("study.{k}"), "given", format!("one of {}", known.join(", "))));
     }
     Ok(())
 }
@@ -274,7 +374,7 @@ fn text(k: &str, study: &Table) -> Result<Option<String>, InputError> {
     match study.get(k) {
         None => Ok(None),
         Some(Value::String(s)) => Ok(Some(s.clone())),
-        Some(v) => Err(err(format!("study.{k}"), v, "a string")),
+        Some(v) => Err(err(format!("study.{k}"), v, allowed(&KEYS, k))),
     }
 }
 

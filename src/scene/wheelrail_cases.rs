@@ -15,27 +15,192 @@
 //! yaw_rad = { from = 0.0, to = 0.024, step = 0.0012 }
 //! ```
 
+use super::keys::{bound, key, Absent, Allowed, Keys};
 use super::reader::{Range, Section};
 use super::wheelrail::{case_columns, CaseRow, LongitudinalSpec, VerticalSpec};
 use crate::error::InputError;
 use std::path::Path;
 
+/// A length of the cases [mm] (shared with the profiles' and `[wheelrail]`'s positions).
 pub(super) const LENGTH: Range = Range::new(-1e5, true, 1e5, true);
+/// An angle of the cases [rad].
 pub(super) const ANGLE: Range = Range::new(-1.5, true, 1.5, true);
 const SPEED: Range = Range::new(-1e7, true, 1e7, true);
-const CASE_NUMBER: Range = Range::new(0.0, true, 1e9, true);
+const FORCE: Range = Range::new(-1e8, true, 1e8, true);
 /// The most cases of a scene (its table and its axes together).
 pub const MAX_CASES: usize = 100_000;
 
-/// The allowed values of a column of the cases table.
-fn range(column: &str) -> Range {
-    match column {
-        "contact_case" => CASE_NUMBER,
-        "fz_n" => Range::new(0.0, false, 1e8, true),
-        "y_mm" | "z_mm" => LENGTH,
-        "roll_rad" | "yaw_rad" => ANGLE,
-        "fx_ws_n" => Range::new(-1e8, true, 1e8, true),
-        _ => SPEED,
+/// The row of [`KEYS`] and [`AXIS_KEYS`] that stands for the columns' keys (a name with a space:
+/// a family of keys, each declared in [`COLUMNS`]).
+const A_COLUMN: &str = "a column's name";
+
+/// `[cases]`'s keys (`<!-- keys:cases -->`).
+pub const KEYS: Keys = Keys {
+    id: "cases",
+    owner: file!(),
+    keys: &[
+        key(
+            "vertical",
+            "–",
+            Allowed::Choice(&["force", "position"], ""),
+            Absent::Choice("force"),
+            r#"what fixes the wheelset's height: the vertical force on the rail, column `fz_n` (CONTACT's N = 1; the height is found), or the height itself, column `z_mm` (N = 0): `vertical = "position"`"#,
+        ),
+        key(
+            "longitudinal",
+            "–",
+            Allowed::Choice(&["velocity", "force"], "`\"force\"` only with `vertical = \"force\"`"),
+            Absent::Choice("velocity"),
+            r#"what fixes the wheelset's pitch: its velocity, column `vpitch_rad_s` (CONTACT's F = 0), or the total longitudinal force on the rail in wheelset coordinates, column `fx_ws_n` in its place (F = 1: VPITCH is found so that the exact theory's FX(WS) is `fx_ws_n`, with FZ prescribed; [wheelrail.md](wheelrail.md#the-longitudinal-force-prescribed)): `longitudinal = "force"`"#,
+        ),
+        key(
+            "file",
+            "–",
+            Allowed::Text("a CSV path relative to the scene file (its columns below), or `[[cases.axis]]` tables"),
+            Absent::Text("required without `axis`"),
+            r#"the cases, one per row (1 to 1e5 rows): `file = "cases.csv"`"#,
+        ),
+        key(
+            "axis",
+            "–",
+            Allowed::Text("one or more `[[cases.axis]]` tables"),
+            Absent::Text("none"),
+            r#"the axes of a study of cases, crossed, the first outermost (as a study's `[[study.axis]]`); at most 1e5 cases with the table's"#,
+        ),
+        key(
+            A_COLUMN,
+            "the column's",
+            Allowed::Text("the column's (below); `fz_n`, `z_mm`, `roll_rad`, `yaw_rad`, `vs_mm_s`, `vy_mm_s`, `vz_mm_s`, `vroll_rad_s`, `vyaw_rad_s`, `vpitch_rad_s` or `fx_ws_n`, as the table has it"),
+            Absent::Text("`fz_n` (or `z_mm`), `vs_mm_s` and `fx_ws_n` required; `vpitch_rad_s` −`vs_mm_s` / `nominal_radius_mm` (rolling at the nominal radius); the others 0"),
+            r#"only with `axis`: the value every case of the study shares, for a column no axis varies (one an axis varies is refused here): `fz_n = 10000.0`"#,
+        ),
+    ],
+};
+
+/// `[[cases.axis]]`'s keys (`<!-- keys:cases_axis -->`, with [`STEP_KEYS`]).
+pub const AXIS_KEYS: Keys = Keys {
+    id: "cases_axis",
+    owner: file!(),
+    keys: &[
+        key(
+            "name",
+            "–",
+            Allowed::Text("a name of `a-z`, `0-9`, `_`, distinct among the axes"),
+            Absent::Required,
+            r#"the axis's name (in messages): `name = "shift"`"#,
+        ),
+        key(
+            "a column's name (not `contact_case`)",
+            "the column's",
+            Allowed::Text("a non-empty list of the column's values, or `{ from, to, step }`"),
+            Absent::Text("at least one"),
+            r#"the column's values on this axis; every column of one axis has as many values, and they vary together; a column is on one axis at most: `y_mm = [0.0, 5.0, 10.0]`"#,
+        ),
+    ],
+};
+
+/// The keys of a column's `{ from, to, step }` on an axis (shown with [`AXIS_KEYS`]).
+pub const STEP_KEYS: Keys = Keys {
+    id: "cases_axis",
+    owner: file!(),
+    keys: &[
+        key(
+            "from",
+            "the column's",
+            Allowed::Text("the column's range"),
+            Absent::Required,
+            r#"the first value of a `{ from, to, step }`: `y_mm = { from = 0.0, to = 10.0, step = 0.5 }`"#,
+        ),
+        key(
+            "to",
+            "the column's",
+            Allowed::Text("the column's range, ≥ `from`"),
+            Absent::Required,
+            r#"the last value: from, from + step, … up to `to` (within a millionth of a step; `to` itself when (to − from)/step is whole)"#,
+        ),
+        key(
+            "step",
+            "the column's",
+            Allowed::Number(Range::new(0.0, false, 2e7, true), ""),
+            Absent::Required,
+            r#"the step between values"#,
+        ),
+    ],
+};
+
+/// The columns of the cases table (`<!-- columns:cases_columns -->`: column, unit, allowed,
+/// meaning), exactly those of [`case_columns`] in its order: a table's values, and the values
+/// `[cases]` and its axes give, are checked by these declarations.
+pub const COLUMNS: Keys = Keys {
+    id: "cases_columns",
+    owner: file!(),
+    keys: &[
+        key(
+            "contact_case",
+            "–",
+            Allowed::Whole(0, 1_000_000_000, ""),
+            Absent::Required,
+            "the case's number (CONTACT's case number for an imported deck)",
+        ),
+        key("y_mm", "mm", Allowed::Number(LENGTH, ""), Absent::Required, "the wheelset's lateral displacement Y_WS"),
+        key(
+            "fz_n",
+            "N",
+            Allowed::Number(Range::new(0.0, false, 1e8, true), ""),
+            Absent::Required,
+            r#"with `vertical = "force"`: the vertical force FZ on the rail"#,
+        ),
+        key(
+            "z_mm",
+            "mm",
+            Allowed::Number(LENGTH, ""),
+            Absent::Required,
+            r#"with `vertical = "position"`: the wheelset's height Z_WS (z downwards)"#,
+        ),
+        key("roll_rad", "rad", Allowed::Number(ANGLE, ""), Absent::Required, "the wheelset's roll angle ROLL"),
+        key("yaw_rad", "rad", Allowed::Number(ANGLE, ""), Absent::Required, "the wheelset's yaw angle YAW"),
+        key(
+            "vs_mm_s",
+            "mm/s",
+            Allowed::Number(SPEED, "not 0"),
+            Absent::Required,
+            r#"the forward speed VS_WS (the creepages are over it); in a shift (`motion = "shift"` or `"shift_sequence"`) this and the other velocity columns are the step's shifts in mm and rad; in a sequence of shifts each case's position along the track is the one before plus this shift (× 1 s)"#,
+        ),
+        key("vy_mm_s", "mm/s", Allowed::Number(SPEED, ""), Absent::Required, "the lateral velocity VY_WS"),
+        key("vz_mm_s", "mm/s", Allowed::Number(SPEED, ""), Absent::Required, "the vertical velocity VZ_WS"),
+        key("vroll_rad_s", "rad/s", Allowed::Number(SPEED, ""), Absent::Required, "the roll rate VROLL"),
+        key("vyaw_rad_s", "rad/s", Allowed::Number(SPEED, ""), Absent::Required, "the yaw rate VYAW"),
+        key(
+            "vpitch_rad_s",
+            "rad/s",
+            Allowed::Number(SPEED, ""),
+            Absent::Required,
+            r#"with `longitudinal = "velocity"`: the pitch rate VPITCH (about −VS/NOMRAD in rolling)"#,
+        ),
+        key(
+            "fx_ws_n",
+            "N",
+            Allowed::Number(
+                FORCE,
+                "\\|`fx_ws_n`\\| below μ·`fz_n` (μ the largest of `mu_values` with `mu_by`); not with `frictionless`",
+            ),
+            Absent::Required,
+            r#"with `longitudinal = "force"`, in place of `vpitch_rad_s`: FX_WS, the total force on the rail along the wheelset's x (CONTACT's sign: negative when braking the wheel moving along +x); VPITCH is found (its search starts at −VS/NOMRAD) and written in `<model>.csv`; a force the contact cannot carry at the case's position (the wheel slides) stops the run with exit 2"#,
+        ),
+    ],
+};
+
+/// A column's declaration ([`COLUMNS`]; every column of [`case_columns`] has one, a test checks).
+fn declared(name: &str) -> Allowed {
+    COLUMNS.get(name).map_or(Allowed::Text("a column of the cases table"), |k| k.allowed)
+}
+
+/// The values a column allows: its declared range (a whole number's as a range of numbers).
+fn range(name: &str) -> Range {
+    match declared(name) {
+        Allowed::Number(range, _) => range,
+        Allowed::Whole(min, max, _) => Range::new(min as f64, true, max as f64, true),
+        _ => Range::new(0.0, false, 0.0, false),
     }
 }
 
@@ -47,17 +212,20 @@ pub(super) fn read(
     dir: &Path,
     nominal_radius_mm: f64,
 ) -> Result<(VerticalSpec, LongitudinalSpec, Vec<CaseRow>), InputError> {
-    let mut c = top.table("cases")?;
-    let vertical = match c.opt_choice("vertical", &["force", "position"])?.unwrap_or("force") {
+    let mut c = top.table("cases")?.declare(&KEYS).declare(&COLUMNS);
+    let vertical = match c.pick_or_default("vertical")? {
         "force" => VerticalSpec::Force,
         _ => VerticalSpec::Position,
     };
-    let longitudinal = match c.opt_choice("longitudinal", &["velocity", "force"])?.unwrap_or("velocity") {
+    let longitudinal = match c.pick_or_default("longitudinal")? {
         "force" if vertical == VerticalSpec::Position => {
             return Err(InputError::new(
                 c.field("longitudinal"),
                 "\"force\" with vertical = \"position\"",
-                "\"velocity\", or \"force\" with vertical = \"force\" (CONTACT's F = 1 requires N = 1)",
+                format!(
+                    "{} (CONTACT's F = 1 requires N = 1)",
+                    KEYS.get("longitudinal").map_or(String::new(), |k| k.allowed.message())
+                ),
             ))
         }
         "force" => LongitudinalSpec::Force,
@@ -68,20 +236,42 @@ pub(super) fn read(
         true => from_file(&mut c, dir, spec)?,
         false => Vec::new(),
     };
-    if let Some(axes) = c.opt_tables("axis")? {
+    let axes = c.opt_tables("axis")?;
+    refuse_other_columns(&mut c, spec, axes.is_some())?;
+    if let Some(axes) = axes {
         let first = cases.iter().map(|r| r.contact_case + 1).max().unwrap_or(1);
         let swept = sweep(&mut c, axes, spec, nominal_radius_mm, first)?;
         if cases.len() + swept.len() > MAX_CASES {
             return Err(InputError::new(
                 c.field("axis"),
                 format!("{} cases with the table's", cases.len() + swept.len()),
-                format!("at most {MAX_CASES} cases"),
+                format!("at most {} cases", bound(MAX_CASES as f64)),
             ));
         }
         cases.extend(swept);
     }
     c.finish()?;
     Ok((vertical, longitudinal, cases))
+}
+
+/// Refuses in `[cases]` a column's key that gives no value there: `contact_case` (the cases are
+/// numbered), any column without axes (there is no study of cases to share it), and a column
+/// the table does not have (`z_mm` with `vertical = "force"`, …).
+fn refuse_other_columns(c: &mut Section, spec: Spec, axes: bool) -> Result<(), InputError> {
+    let columns = case_columns(spec.0, spec.1);
+    c.refuse(
+        "contact_case",
+        "no value in [cases]: the cases are numbered (the table's, then the axes' on from its largest)",
+    )?;
+    for k in COLUMNS.keys.iter().skip(1) {
+        if !axes {
+            c.refuse(k.key, "no value without [[cases.axis]] (a value every case of a study of cases shares)")?;
+        } else if !columns.contains(&k.key) {
+            let why = format!("a column of the cases table as [cases] sets it: {}", columns[1..].join(", "));
+            c.refuse(k.key, &why)?;
+        }
+    }
+    Ok(())
 }
 
 /// With FX_WS prescribed: friction (not `frictionless`) and every case's |FX_WS| below
@@ -121,14 +311,11 @@ pub fn check_longitudinal(
 /// The cases of the table `file`, one per row.
 fn from_file(c: &mut Section, dir: &Path, spec: Spec) -> Result<Vec<CaseRow>, InputError> {
     let field = c.field("file");
-    let file = c.str(
-        "file",
-        "a CSV path relative to the scene file (columns in docs/scene-format.md), or [[cases.axis]] tables",
-    )?;
+    let file = c.text("file")?;
     let (cols, lines, origin) = super::geometry::read_columns(&dir.join(file), &field, &case_columns(spec.0, spec.1))?;
     let n = cols[0].len();
     if n == 0 || n > MAX_CASES {
-        return Err(InputError::new(&origin, format!("{n} rows"), format!("1 to {MAX_CASES} cases")));
+        return Err(InputError::new(&origin, format!("{n} rows"), format!("1 to {} cases", bound(MAX_CASES as f64))));
     }
     let values = |r: usize| -> Vec<f64> { cols.iter().map(|col| col[r]).collect() };
     (0..n).map(|r| row(&values(r), &format!("{origin} line {}", lines[r]), spec)).collect()
@@ -173,7 +360,11 @@ fn sweep(
     let fixed = fixed(c, &columns, &axes)?;
     let total = axes.iter().try_fold(1usize, |n, a| n.checked_mul(a.columns[0].1.len())).unwrap_or(usize::MAX);
     if total > MAX_CASES {
-        return Err(InputError::new(c.field("axis"), format!("{total} cases"), format!("at most {MAX_CASES} cases")));
+        return Err(InputError::new(
+            c.field("axis"),
+            format!("{total} cases"),
+            format!("at most {} cases", bound(MAX_CASES as f64)),
+        ));
     }
     let mut out = Vec::with_capacity(total);
     for n in 0..total {
@@ -199,10 +390,12 @@ fn sweep(
 
 /// One `[[cases.axis]]`: `name` and one or more columns, each a list of values or
 /// `{ from, to, step }`, all of one length.
-fn axis(mut t: Section, columns: &[&str]) -> Result<Axis, InputError> {
-    let name = t.str("name", "an axis name of a-z, 0-9, _")?.to_string();
+fn axis(t: Section, columns: &[&str]) -> Result<Axis, InputError> {
+    let mut t = t.declare(&AXIS_KEYS).declare(&COLUMNS);
+    let name = t.text("name")?.to_string();
     if name.is_empty() || !name.bytes().all(|b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'_') {
-        return Err(InputError::new(t.field("name"), format!("{name:?}"), "an axis name of a-z, 0-9, _"));
+        let allowed = AXIS_KEYS.get("name").map_or(String::new(), |k| k.allowed.message());
+        return Err(InputError::new(t.field("name"), format!("{name:?}"), allowed));
     }
     let varied: Vec<&str> = columns[1..].to_vec();
     if let Some(k) = t.keys().into_iter().find(|k| k != "name" && !varied.contains(&k.as_str())) {
@@ -255,20 +448,20 @@ fn values(t: &mut Section, column: &str, range: Range) -> Result<Vec<f64>, Input
             ));
         }
     }
-    let mut s = t.table(column)?;
+    let mut s = t.table(column)?.declare(&STEP_KEYS);
     let from = s.f64("from", range)?;
     let to = s.f64("to", range)?;
-    let step = s.f64("step", Range::new(0.0, false, 2e7, true))?;
+    let step = s.num("step")?;
     s.finish()?;
     if to < from {
-        return Err(InputError::new(t.field(column) + ".to", to, format!("at least from = {from}")));
+        return Err(InputError::new(t.field(column) + ".to", to, format!("at least from = {}", bound(from))));
     }
     let count = ((to - from) / step + 1e-6).floor() + 1.0;
     if count > MAX_CASES as f64 {
         return Err(InputError::new(
             t.field(column) + ".step",
             step,
-            format!("a step giving at most {MAX_CASES} values from {from} to {to}"),
+            format!("a step giving at most {} values from {} to {}", bound(MAX_CASES as f64), bound(from), bound(to)),
         ));
     }
     Ok((0..count as usize).map(|k| from + k as f64 * step).collect())
@@ -285,13 +478,13 @@ fn fixed(c: &mut Section, columns: &[&str], axes: &[Axis]) -> Result<Vec<f64>, I
             out[k] = f64::NAN;
             continue;
         }
-        out[k] = match (c.opt_f64(column, range(column))?, *column) {
+        out[k] = match (c.opt_num(column)?, *column) {
             (Some(v), _) => v,
             (None, "fz_n" | "z_mm" | "vs_mm_s" | "fx_ws_n") => {
                 return Err(InputError::new(
                     c.field(column),
                     "missing",
-                    format!("required with [[cases.axis]] unless an axis varies it: {}", range(column).describe()),
+                    format!("required with [[cases.axis]] unless an axis varies it: {}", declared(column).message()),
                 ))
             }
             (None, "vpitch_rad_s") => f64::NAN,
@@ -304,13 +497,9 @@ fn fixed(c: &mut Section, columns: &[&str], axes: &[Axis]) -> Result<Vec<f64>, I
 /// One case from its values in the order of [`case_columns`], checked (`line` names it).
 pub(super) fn row(v: &[f64], line: &str, spec: Spec) -> Result<CaseRow, InputError> {
     let columns = case_columns(spec.0, spec.1);
-    let check = |c: usize| {
-        let r = range(columns[c]);
-        if r.contains(v[c]) {
-            Ok(v[c])
-        } else {
-            Err(InputError::new(format!("{line} column {}", columns[c]), v[c], r.describe()))
-        }
+    let check = |c: usize| match range(columns[c]).contains(v[c]) {
+        true => Ok(v[c]),
+        false => Err(InputError::new(format!("{line} column {}", columns[c]), v[c], declared(columns[c]).message())),
     };
     let case = check(0)?;
     if case.fract() != 0.0 {
@@ -457,5 +646,23 @@ mod tests {
         assert!(err.contains("report.patch_cases[0]") && err.contains("a contact_case of the scene's cases"), "{err}");
         let err = scene(&format!("{head}y_mm = [0.0]\n[report]\ngroup = \"steady\"\n")).unwrap_err();
         assert!(err.contains("report.group") && err.contains("wheelrail"), "{err}");
+    }
+
+    /// The declared columns are exactly those of the four tables [`case_columns`] gives (the
+    /// reader checks each column by its declaration; the docs' columns table is generated from it).
+    #[test]
+    fn the_declared_columns_are_the_tables_columns_in_their_order() {
+        use crate::scene::wheelrail::{case_columns, LongitudinalSpec as L, VerticalSpec as V};
+        let declared: Vec<&str> = super::COLUMNS.keys.iter().map(|k| k.key).collect();
+        let mut seen = std::collections::BTreeSet::new();
+        for (v, l) in
+            [(V::Force, L::Velocity), (V::Force, L::Force), (V::Position, L::Velocity), (V::Position, L::Force)]
+        {
+            let cols = case_columns(v, l);
+            let at: Vec<usize> = cols.iter().map(|c| declared.iter().position(|d| d == c).expect("declared")).collect();
+            assert!(at.windows(2).all(|w| w[0] < w[1]), "{cols:?} in the declared order");
+            seen.extend(cols);
+        }
+        assert_eq!(seen.len(), declared.len(), "every declared column is one of a table: {seen:?}");
     }
 }

@@ -23,9 +23,124 @@
 //! ```
 
 use crate::error::InputError;
+use crate::scene::keys::{bound, key, Absent, Allowed, Keys};
 use crate::scene::reader::{Range, Section};
 use std::path::{Path, PathBuf};
 use toml::{Table, Value};
+
+/// A fit file's tables, each documented under its own heading (`<!-- keys:fit -->`).
+pub const FILE_KEYS: Keys = Keys {
+    id: "fit",
+    owner: file!(),
+    keys: &[
+        key("fit", "–", Allowed::Section, Absent::Required, "the fit: its keys below"),
+        key("set", "–", Allowed::Section, Absent::Required, "the scene keys the parameters set"),
+    ],
+};
+
+/// `[fit]`'s keys (`<!-- keys:fit -->`).
+pub const KEYS: Keys = Keys {
+    id: "fit",
+    owner: file!(),
+    keys: &[
+        key(
+            "name",
+            "–",
+            Allowed::Text("1 to 100 characters of `a-z`, `0-9`, `_`"),
+            Absent::Required,
+            r#"the fit's id and its output file: `name = "uba_sine"`"#,
+        ),
+        key(
+            "model",
+            "–",
+            Allowed::Text("a built-in model or an `[external.NAME]` of the scenes"),
+            Absent::Required,
+            r#"the model whose parameters are fitted: `model = "uba"`"#,
+        ),
+        key(
+            "against",
+            "–",
+            Allowed::Text("`\"solver:NAME\"` (a model of the scenes) or `\"reference\"`"),
+            Absent::Required,
+            r#"the target: a model run on the scenes as written (the fitted model too), or the reference data (CONTACT's results): `against = "solver:contact"`"#,
+        ),
+        key(
+            "norm",
+            "–",
+            Allowed::Choice(&["rms_df", "max_df", "delay_ratio", "loop_area"], ""),
+            Absent::Required,
+            r#"what is minimised: RMS or largest \|Δf\| over every row, RMS of the delay-ratio difference, or RMS of the relative loop-area difference: `norm = "rms_df"`"#,
+        ),
+        key(
+            "suites",
+            "–",
+            Allowed::Text("a non-empty list of folders of scenes, relative to the fit file"),
+            Absent::Required,
+            r#"where the scenes are: `suites = ["../scenes/thesis"]`"#,
+        ),
+        key(
+            "fit",
+            "–",
+            Allowed::Text("a non-empty list of scene names or patterns (`*`, `?`)"),
+            Absent::Required,
+            r#"the scenes fitted on: `fit = ["sine_f10_mu10"]`"#,
+        ),
+        key(
+            "holdout",
+            "–",
+            Allowed::Text("scene names or patterns (`*`, `?`)"),
+            Absent::Text("none"),
+            r#"judged with the fitted values, never fitted on (a scene both name is fitted): `holdout = ["sine_f*_mu06"]`"#,
+        ),
+        key(
+            "max_iterations",
+            "–",
+            Allowed::Whole(1, 100_000, ""),
+            Absent::Whole(200),
+            r#"Nelder–Mead iterations: `max_iterations = 400`"#,
+        ),
+        key("param", "–", Allowed::Text("one or more `[[fit.param]]` tables"), Absent::Required, "the free parameters"),
+    ],
+};
+
+/// `[[fit.param]]`'s keys (`<!-- keys:fit_param -->`).
+pub const PARAM_KEYS: Keys = Keys {
+    id: "fit_param",
+    owner: file!(),
+    keys: &[
+        key(
+            "name",
+            "–",
+            Allowed::Text("1 to 100 characters of `a-z`, `0-9`, `_` no other parameter has"),
+            Absent::Required,
+            r#"the parameter's name, written `"{name}"` in `[set]`: `name = "length_mm"`"#,
+        ),
+        key(
+            "bounds",
+            "the parameter's",
+            Allowed::Numbers {
+                range: Range::new(f64::NEG_INFINITY, false, f64::INFINITY, false),
+                min_len: 2,
+                max_len: 2,
+                note: "`[min, max]`, min < max",
+            },
+            Absent::Required,
+            r#"the values the fit may take: `bounds = [1.0, 100.0]`"#,
+        ),
+        key(
+            "start",
+            "the parameter's",
+            Allowed::Text("a number in `[min, max]`"),
+            Absent::Required,
+            r#"where the search starts: `start = 13.44`"#,
+        ),
+    ],
+};
+
+/// The declared text of what `keys` allows for `k`, as a message says it.
+fn allowed(keys: &Keys, k: &str) -> String {
+    keys.get(k).map_or_else(String::new, |spec| spec.allowed.message())
+}
 
 /// What a fit minimises over its scenes (each a number ≥ 0, 0 when the model equals the target).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -162,16 +277,16 @@ impl FitSpec {
 
     /// The fit file's tables in order: [fit] with its [[fit.param]], then [set].
     fn read(doc: &Table, file: &Path) -> Result<FitSpec, InputError> {
-        let mut top = Section::new("", doc);
-        let mut f = top.table("fit")?;
+        let mut top = Section::new("", doc).declare(&FILE_KEYS);
+        let mut f = top.table("fit")?.declare(&KEYS);
         let name = Self::name(&mut f)?;
-        let model = f.str("model", "a built-in model or an [external.NAME] of the scenes")?.to_string();
+        let model = f.text("model")?.to_string();
         let target = Self::target(&mut f)?;
         let norm = Self::norm(&mut f)?;
         let suites = Self::suites(&mut f, file)?;
         let fit = Self::fitted(&mut f)?;
         let holdout = Self::patterns(&mut f, "holdout")?;
-        let max_iterations = f.opt_usize("max_iterations", 1, 100_000)?.unwrap_or(200) as u64;
+        let max_iterations = f.whole_or_default("max_iterations")? as u64;
         let params = Self::params(&mut f)?;
         f.finish()?;
         let set = Self::set(&mut top, &params)?;
@@ -193,40 +308,35 @@ impl FitSpec {
 
     /// `fit.name`: 1 to 100 characters of [a-z0-9_].
     fn name(f: &mut Section) -> Result<String, InputError> {
-        let name = f.str("name", "a name of [a-z0-9_]+")?.to_string();
+        let name = f.text("name")?.to_string();
         if !is_name(&name) {
-            return Err(InputError::new(f.field("name"), format!("{name:?}"), "1 to 100 characters of [a-z0-9_]"));
+            return Err(InputError::new(f.field("name"), format!("{name:?}"), allowed(&KEYS, "name")));
         }
         Ok(name)
     }
 
     /// `fit.against`: "solver:NAME" or "reference".
     fn target(f: &mut Section) -> Result<Target, InputError> {
-        let against = f.str("against", "\"solver:NAME\" or \"reference\"")?;
+        let against = f.text("against")?;
         match against.strip_prefix("solver:") {
             // The same model is allowed: the target runs the scene as written, the fit with [set].
             Some(s) if !s.is_empty() => Ok(Target::Solver(s.to_string())),
             None if against == "reference" => Ok(Target::Reference),
-            _ => Err(InputError::new(
-                f.field("against"),
-                format!("{against:?}"),
-                "\"solver:NAME\" (a model of the scenes) or \"reference\"",
-            )),
+            _ => Err(InputError::new(f.field("against"), format!("{against:?}"), allowed(&KEYS, "against"))),
         }
     }
 
     /// `fit.norm`: one of [`Norm::ALL`] by name.
     fn norm(f: &mut Section) -> Result<Norm, InputError> {
-        let norm_names: Vec<&str> = Norm::ALL.iter().map(|n| n.name()).collect();
-        f.choice("norm", &norm_names).map(|n| Norm::parse(n).unwrap_or(Norm::RmsDf))
+        f.pick("norm").map(|n| Norm::parse(n).unwrap_or(Norm::RmsDf))
     }
 
     /// `fit.suites`: a non-empty list of folders, joined to the fit file's folder.
     fn suites(f: &mut Section, file: &Path) -> Result<Vec<PathBuf>, InputError> {
         let dir = file.parent().map(Path::to_path_buf).unwrap_or_default();
-        Ok(f.opt_str_list("suites", "folders of scenes, relative to the fit file")?
+        Ok(f.opt_str_list("suites", &allowed(&KEYS, "suites"))?
             .filter(|s| !s.is_empty())
-            .ok_or_else(|| InputError::new(f.field("suites"), "missing", "a non-empty list of folders of scenes"))?
+            .ok_or_else(|| InputError::new(f.field("suites"), "missing", allowed(&KEYS, "suites")))?
             .iter()
             .map(|s| dir.join(s))
             .collect())
@@ -236,14 +346,14 @@ impl FitSpec {
     fn fitted(f: &mut Section) -> Result<Vec<String>, InputError> {
         let fit = Self::patterns(f, "fit")?;
         if fit.is_empty() {
-            return Err(InputError::new(f.field("fit"), "missing or empty", "scene names or patterns (* and ?)"));
+            return Err(InputError::new(f.field("fit"), "missing or empty", allowed(&KEYS, "fit")));
         }
         Ok(fit)
     }
 
     /// An optional list of scene names or patterns (* and ?), empty when absent.
     fn patterns(f: &mut Section, key: &str) -> Result<Vec<String>, InputError> {
-        Ok(f.opt_str_list(key, "scene names or patterns (* and ?)")?.unwrap_or_default())
+        Ok(f.opt_str_list(key, &allowed(&KEYS, "holdout"))?.unwrap_or_default())
     }
 
     /// The [set] table: each dotted scene key with its value, every parameter used by some value.
@@ -304,28 +414,20 @@ impl FitSpec {
         let field = f.field("param");
         let list = f.opt_tables("param")?.unwrap_or_default();
         if list.is_empty() {
-            return Err(InputError::new(field, "missing", "one or more [[fit.param]] tables: name, start, bounds"));
+            return Err(InputError::new(field, "missing", allowed(&KEYS, "param")));
         }
         let mut params: Vec<Param> = Vec::new();
-        for mut p in list {
-            let name = p.str("name", "a name of [a-z0-9_]+")?.to_string();
+        for p in list {
+            let mut p = p.declare(&PARAM_KEYS);
+            let name = p.text("name")?.to_string();
             if !is_name(&name) || params.iter().any(|q| q.name == name) {
-                return Err(InputError::new(
-                    p.field("name"),
-                    format!("{name:?}"),
-                    "a name of [a-z0-9_]+ no other parameter has",
-                ));
+                return Err(InputError::new(p.field("name"), format!("{name:?}"), allowed(&PARAM_KEYS, "name")));
             }
-            let any = Range::new(f64::NEG_INFINITY, false, f64::INFINITY, false);
-            let [min, max] = p
-                .opt_f64_array::<2>("bounds", any)?
-                .ok_or_else(|| InputError::new(p.field("bounds"), "missing", "[min, max], finite, min < max"))?;
+            let bounds = allowed(&PARAM_KEYS, "bounds");
+            let [min, max] =
+                p.opt_nums::<2>("bounds")?.ok_or_else(|| InputError::new(p.field("bounds"), "missing", &bounds))?;
             if min >= max {
-                return Err(InputError::new(
-                    p.field("bounds"),
-                    format!("[{min}, {max}]"),
-                    "[min, max], finite, min < max",
-                ));
+                return Err(InputError::new(p.field("bounds"), format!("[{}, {}]", bound(min), bound(max)), bounds));
             }
             let start = p.f64("start", Range::new(min, true, max, true))?;
             p.finish()?;
@@ -403,4 +505,19 @@ pub fn wildcard(pattern: &str, name: &str) -> bool {
         }
     }
     p[i..].iter().all(|&c| c == '*')
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Allowed, Norm, KEYS};
+
+    /// The declared norms are [`Norm::ALL`]'s names, in its order.
+    #[test]
+    fn the_declared_norms_are_the_norms() {
+        let names: Vec<&str> = Norm::ALL.iter().map(|n| n.name()).collect();
+        let Some(Allowed::Choice(declared, _)) = KEYS.get("norm").map(|k| k.allowed) else {
+            panic!("norm is a choice")
+        };
+        assert_eq!(declared, names.as_slice());
+    }
 }
