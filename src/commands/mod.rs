@@ -57,11 +57,6 @@ use reporting::{report_with_findings, Drawn, Judging};
 use simulate::{read_printed, wheelrail_section};
 use suite_run::{attach_wheelrail, run_suite, wheelrail_findings, SuiteFiles, SuiteRun};
 
-/// The reference sets as their files hold them (what the gate compares with).
-fn load_references(reference: &Path) -> Result<References, Error> {
-    References::load(reference)
-}
-
 /// The importer's verdict on every case of CONTACT's public decks, attached to the sets
 /// `contact_public` and `contact_wheelrail` for the report's lists of them (the import stage sits
 /// above comparison and report, so the survey is made here and passed down). Only a command that
