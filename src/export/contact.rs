@@ -29,6 +29,9 @@
 //! The influence functions of bilinear tractions (`[contact_solver] influence = "bilinear"`) are
 //! CONTACT's C = 3 wherever C is given (C = 2 otherwise).
 //!
+//! An extra rigid slip per element (`[creepage] extra_slip`) is CONTACT's E = 9 in the first case
+//! (EXRHS, pairs in CONTACT's element order after the geometry) and E = 1 (kept) afterwards.
+//!
 //! Friction per grid row (`[friction] mu_rows`) is CONTACT's V = 3: FSTAT = FKIN = μ_j of every
 //! row after the first case's geometry, V = 3 with L = 1 after it, prescribed forces over FN.
 //!
@@ -399,10 +402,16 @@ fn ldcmze(p: &Problem, case: &Case, out: &mut String) {
     } else {
         0
     };
+    // E: 9 gives the extra rigid slip with the first case, 1 keeps it.
+    let e = match (&p.extra_slip, case.first) {
+        (None, _) => 0,
+        (Some(_), true) => 9,
+        (Some(_), false) => 1,
+    };
     let ldc = match (case.first, case.dq_again) {
-        (true, _) => format!("{v}{law}2{c}{m}20"),
+        (true, _) => format!("{v}{law}2{c}{m}2{e}"),
         (false, again) => format!(
-            "{v}{}0{}{m}{}0",
+            "{v}{}0{}{m}{}{e}",
             if case.read_mu { law } else { 1 },
             if again { c } else { 0 },
             if case.new_h { 2 } else { 0 }
@@ -456,6 +465,7 @@ fn case_inputs(p: &Problem, h: &History, case: &Case, s: &Sample, out: &mut Stri
     if case.first {
         geometry(p, (!case.shift).then_some(case.rolling()), h.load_varies, s.h_coefficients, out);
         row_friction_lines(p, out);
+        extra_slip_lines(p, out);
     } else if case.dq_again {
         kinematics_and_material(p, Some(case.rolling()), out);
     }
@@ -586,6 +596,16 @@ fn geometry(p: &Problem, rolling: Option<(f64, f64, f64)>, load_varies: bool, b:
     for chunk in contact_order.chunks(PER_LINE) {
         let line: Vec<String> = chunk.iter().map(|v| format!("{v:?}")).collect();
         let _ = writeln!(out, "  {}", line.join("  "));
+    }
+}
+
+/// E = 9: the extra rigid slip EXRHS, one pair (wx, wy) a line in CONTACT's element order
+/// (x_C = −x: the grid's rows read from its last column).
+fn extra_slip_lines(p: &Problem, out: &mut String) {
+    let (Some((wx, wy)), g) = (&p.extra_slip, &p.grid) else { return };
+    for e in 0..g.len() {
+        let k = g.index(g.mx - 1 - e % g.mx, e / g.mx);
+        let _ = writeln!(out, "  {:?}  {:?}", wx[k], wy[k]);
     }
 }
 

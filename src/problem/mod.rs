@@ -239,6 +239,9 @@ pub struct Problem {
     pub memory: Memory,
     /// Coulomb's μ per grid row (`[friction] mu_rows`, CONTACT V = 3); `None`: one μ.
     pub friction_rows: Option<crate::physics::RowFriction>,
+    /// The extra rigid slip `(wx, wy)` per element in the grid's order (`[creepage] extra_slip`,
+    /// CONTACT's EXRHS); `None`: none.
+    pub extra_slip: Option<(Vec<f64>, Vec<f64>)>,
     /// The scene's nominal loading (contact.fn_n, contact.mu, the constant cy and cs).
     pub nominal: Sample,
     /// The loading as the scene declared it (scene.json's `loading`), of which `loading` is the sampling.
@@ -305,6 +308,8 @@ impl Problem {
     /// no metrics yet.
     fn assemble(scene: &Scene, solvers: Vec<String>, model_params: ModelParamSet, physics: Physics) -> Problem {
         let declared = DeclaredLoading::of(scene);
+        let order = |w: &[f64]| crate::physics::geometry::field_in_grid_order(&physics.grid, w);
+        let extra_slip = scene.extra_slip.as_ref().map(|[wx, wy]| (order(wx), order(wy)));
         Problem {
             name: scene.name.clone(),
             solvers,
@@ -320,6 +325,7 @@ impl Problem {
             friction: scene.friction,
             memory: scene.memory,
             friction_rows: scene.friction_rows.clone(),
+            extra_slip,
             nominal: Sample::nominal(&declared),
             declared,
             loading: physics.loading,

@@ -158,6 +158,13 @@ pub const KEYS: Keys = Keys {
             Absent::Text("required for `table`"),
             r#"table: the history as a CSV (below): `file = "mu_ramp_table.csv"`"#,
         ),
+        key(
+            "extra_slip",
+            "–",
+            Allowed::Text("a path to a CSV file (columns `ix`, `iy`, `wx`, `wy`), relative to the scene file"),
+            Absent::Text("absent: none"),
+            r#"an extra rigid slip per element (CONTACT's EXRHS, E = 9) added to cx (`wx`) and cy (`wy`) of that element at every step, scaled by the rolling step as they are: 1-based element indices (ix along CONTACT's x from x0, as `[geometry] field`), every element of the grid exactly once; only the exact solver (`contact`), rolling along x (`chi_deg = 0`): `extra_slip = "w.csv"`"#,
+        ),
     ],
 };
 
@@ -168,10 +175,12 @@ pub struct CreepageSpec {
     /// `fy_over_fn`: Fy/FN prescribed in place of `cy` (CONTACT F = 2).
     pub fy_over_fn: Option<f64>,
     pub cs_per_mm: f64,
+    /// `extra_slip`: the extra rigid slip `[wx, wy]` per element in CONTACT's element order.
+    pub extra_slip: Option<[Vec<f64>; 2]>,
 }
 
 /// `[creepage]`: the kind's history, and the constant cy and cs.
-pub fn read(top: &mut Section, dir: &Path) -> Result<CreepageSpec, InputError> {
+pub fn read(top: &mut Section, dir: &Path, grid: (usize, usize)) -> Result<CreepageSpec, InputError> {
     let mut cr = top.table("creepage")?.declare(&KEYS);
     let kind = cr.pick("kind")?;
     let creepage = match kind {
@@ -226,8 +235,20 @@ pub fn read(top: &mut Section, dir: &Path) -> Result<CreepageSpec, InputError> {
     }
     let cy = cr.num_or_default("cy")?;
     let cs_per_mm = cr.num_or_default("cs")?;
+    let extra_slip = extra_slip(&mut cr, dir, grid)?;
     cr.finish()?;
-    Ok(CreepageSpec { creepage, cy, fy_over_fn, cs_per_mm })
+    Ok(CreepageSpec { creepage, cy, fy_over_fn, cs_per_mm, extra_slip })
+}
+
+/// `extra_slip`: the CSV `ix,iy,wx,wy` over every element of the `mx` x `my` grid.
+fn extra_slip(cr: &mut Section, dir: &Path, grid: (usize, usize)) -> Result<Option<[Vec<f64>; 2]>, InputError> {
+    let Some(file) = cr.opt_text("extra_slip")? else { return Ok(None) };
+    let field = cr.field("extra_slip");
+    let (cols, lines, origin) = super::geometry::read_columns(&dir.join(file), &field, &["ix", "iy", "wx", "wy"])?;
+    let mut w = super::geometry::per_element(&cols, &lines, &origin, grid)?;
+    let wy = w.pop().expect("two value columns");
+    let wx = w.pop().expect("two value columns");
+    Ok(Some([wx, wy]))
 }
 
 /// What a sweep's `over` may name: a creepage, a prescribed force ratio or the speed.

@@ -64,38 +64,49 @@ pub fn read(g: Section, dir: &Path, (mx, my): (usize, usize)) -> Result<Geometry
             let field = g.field("field");
             let file = g.text("field")?;
             let (cols, lines, origin) = read_columns(&dir.join(file), &field, &["ix", "iy", "h_mm"])?;
-            let mut h_mm = vec![f64::NAN; mx * my];
-            for (r, ((&ix, &iy), &h)) in cols[0].iter().zip(&cols[1]).zip(&cols[2]).enumerate() {
-                let line = format!("{origin} line {}", lines[r]);
-                let index = |v: f64, n: usize| (v.fract() == 0.0 && v >= 1.0 && v <= n as f64).then(|| v as usize - 1);
-                let (Some(i), Some(j)) = (index(ix, mx), index(iy, my)) else {
-                    return Err(InputError::new(
-                        line,
-                        format!("ix = {ix}, iy = {iy}"),
-                        format!("whole numbers 1 ≤ ix ≤ {mx}, 1 ≤ iy ≤ {my} (the grid's elements)"),
-                    ));
-                };
-                if !h_mm[j * mx + i].is_nan() {
-                    return Err(InputError::new(line, format!("ix = {ix}, iy = {iy}"), "every element once"));
-                }
-                h_mm[j * mx + i] = h;
-            }
-            if let Some(k) = h_mm.iter().position(|v| v.is_nan()) {
-                return Err(InputError::new(
-                    &origin,
-                    format!("{} of {} elements", cols[0].len(), mx * my),
-                    format!(
-                        "every element of the {mx} x {my} grid (ix = {}, iy = {} is missing)",
-                        k % mx + 1,
-                        k / mx + 1
-                    ),
-                ));
-            }
+            let h_mm = per_element(&cols, &lines, &origin, (mx, my))?.remove(0);
             GeometrySpec::Field { h_mm, blend: None, pn_mpa: None }
         }
     };
     g.finish()?;
     Ok(spec)
+}
+
+/// The value columns (after `ix, iy`) of a per-element CSV placed in CONTACT's element order
+/// (`iy`-major, 1-based, ix along CONTACT's x), every element of the `mx` x `my` grid exactly once.
+pub(crate) fn per_element(
+    cols: &[Vec<f64>],
+    lines: &[usize],
+    origin: &str,
+    (mx, my): (usize, usize),
+) -> Result<Vec<Vec<f64>>, InputError> {
+    let mut out = vec![vec![f64::NAN; mx * my]; cols.len() - 2];
+    let mut seen = vec![false; mx * my];
+    for (r, (&ix, &iy)) in cols[0].iter().zip(&cols[1]).enumerate() {
+        let line = format!("{origin} line {}", lines[r]);
+        let index = |v: f64, n: usize| (v.fract() == 0.0 && v >= 1.0 && v <= n as f64).then(|| v as usize - 1);
+        let (Some(i), Some(j)) = (index(ix, mx), index(iy, my)) else {
+            return Err(InputError::new(
+                line,
+                format!("ix = {ix}, iy = {iy}"),
+                format!("whole numbers 1 ≤ ix ≤ {mx}, 1 ≤ iy ≤ {my} (the grid's elements)"),
+            ));
+        };
+        if std::mem::replace(&mut seen[j * mx + i], true) {
+            return Err(InputError::new(line, format!("ix = {ix}, iy = {iy}"), "every element once"));
+        }
+        for (o, c) in out.iter_mut().zip(&cols[2..]) {
+            o[j * mx + i] = c[r];
+        }
+    }
+    if let Some(k) = seen.iter().position(|v| !v) {
+        return Err(InputError::new(
+            origin,
+            format!("{} of {} elements", cols[0].len(), mx * my),
+            format!("every element of the {mx} x {my} grid (ix = {}, iy = {} is missing)", k % mx + 1, k / mx + 1),
+        ));
+    }
+    Ok(out)
 }
 
 /// The columns `names` (exactly these, in this order) of a CSV of finite numbers, the line of

@@ -441,6 +441,9 @@ pub struct Scene {
     /// Fy/FN prescribed in place of `cy` (`[creepage] fy_over_fn`, CONTACT F = 2).
     pub fy_over_fn: Option<f64>,
     pub cs_per_mm: f64,
+    /// The extra rigid slip `[wx, wy]` per element in CONTACT's element order (`[creepage]
+    /// extra_slip`, CONTACT's EXRHS); `None`: none.
+    pub extra_slip: Option<[Vec<f64>; 2]>,
     pub init: InitKind,
     pub model: ModelOptions,
     /// The `[model]` keys the models read themselves (their parameters; the pipeline has each
@@ -587,7 +590,7 @@ impl Scene {
         let friction = friction::read(&mut top, contact.mu, grid.my)?;
         let material = material::read(&mut top)?;
         let (v_mm_s, courant, motion, chi_deg) = rolling::read(&mut top)?;
-        let loading = creepage::read(&mut top, dir)?;
+        let loading = creepage::read(&mut top, dir, (grid.mx, grid.my))?;
         let init = init::read(&mut top, motion, &loading.creepage)?;
         let (model, model_params) = model::read(&mut top)?;
         let contact_solver = contact_solver::read(&mut top)?;
@@ -621,6 +624,7 @@ impl Scene {
             cy: loading.cy,
             fy_over_fn: loading.fy_over_fn,
             cs_per_mm: loading.cs_per_mm,
+            extra_slip: loading.extra_slip,
             init,
             model,
             model_params,

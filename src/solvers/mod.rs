@@ -172,6 +172,13 @@ fn check_external(problem: &Problem) -> Result<(), InputError> {
             ),
         ));
     }
+    if let Some(name) = external.filter(|_| problem.extra_slip.is_some()) {
+        return Err(InputError::new(
+            "solvers",
+            format!("{name:?} (an external model) with [creepage] extra_slip"),
+            format!("an extra rigid slip per element only with the exact model ({})", contact::NAME),
+        ));
+    }
     Ok(())
 }
 
@@ -185,6 +192,13 @@ fn check_model(problem: &Problem, m: &ModelDef, shifts: bool) -> Result<(), Inpu
             "solvers",
             format!("{:?} with [friction] mu_rows", m.name),
             format!("models that take a friction per grid row: {} (leave {} out of this scene: it takes one mu for the whole contact)", FRICTION_ROWS.join(", "), m.name),
+        ));
+    }
+    if problem.extra_slip.is_some() && m.name != contact::NAME {
+        return Err(InputError::new(
+            "solvers",
+            format!("{:?} with [creepage] extra_slip", m.name),
+            format!("an extra rigid slip per element only with the exact model ({}; leave {} out of this scene: it takes the creepages only)", contact::NAME, m.name),
         ));
     }
     if problem.friction.is_falling() && !FALLING_FRICTION.contains(&m.name) {

@@ -132,7 +132,7 @@ fn export_then_import_gives_back_every_shipped_scene() {
     let sources = creepbench::suite::scene_files(&suites, None).unwrap();
     assert!(sources.len() > 100, "{} scenes", sources.len());
     let dir = common::tempdir("contact_import_round_trip");
-    let (mut failures, mut split) = (Vec::new(), 0);
+    let (mut failures, mut split, mut extra_slips) = (Vec::new(), 0, 0);
     for source in &sources {
         let original = creepbench::pipeline::load_source(source, &[]).unwrap();
         let deck = module3_input(&original);
@@ -169,6 +169,11 @@ fn export_then_import_gives_back_every_shipped_scene() {
             continue;
         }
         for back in &backs {
+            // The extra rigid slip per element (E = 9: EXRHS) comes back bit for bit, in place.
+            extra_slips += usize::from(original.extra_slip.is_some());
+            if back.extra_slip != original.extra_slip {
+                failures.push(format!("{} ({}): extra_slip", original.name, back.name));
+            }
             let diff = differences(&original, back, backs.len() > 1);
             if !diff.is_empty() {
                 failures.push(format!("{} ({}): {}", original.name, back.name, diff.join(", ")));
@@ -179,6 +184,8 @@ fn export_then_import_gives_back_every_shipped_scene() {
     // Of the test table's 80 sweeps at ±30° and ±60° (two creepages move), 40 are not given back
     // bit for bit by any line through their points and split; every other scene comes back as one.
     assert_eq!(split, 40, "sweeps split into one scene per point");
+    // conformal_4 and testbank_24 (CONTACT's conformal.inp case 4, testbank.inp case 24) carry one.
+    assert_eq!(extra_slips, 2, "scenes with an extra rigid slip");
 }
 
 /// The import of a deck of tests/data/contact_decks.
@@ -435,8 +442,9 @@ fn testbank_imports_two_cases_and_names_every_other_with_its_reason() {
     // 13-16: a shift with B = 2 under FX, rolling under FX (14, 15), then with CKSI and DQ 0.8
     // on the Hertzian grid given again by A1, AOB (16); dissimilar bodies (issue 46): the normal
     // problems 3 and 5 (T = 0, on which K has no effect), steady rolling under FX (4), 9 and the
-    // shifts 25, 26; 12: CONTACT's FASTSIM (M = 3, B = 3) under FX (F = 1), issue 46.
-    assert_eq!(ok, vec![1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 25, 26]);
+    // shifts 25, 26; 12: CONTACT's FASTSIM (M = 3, B = 3) under FX (F = 1), issue 46; 24: steady
+    // rolling of dissimilar bodies with an extra rigid slip per element (E = 9, all zero).
+    assert_eq!(ok, vec![1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 24, 25, 26]);
     assert_eq!(imported.statuses[10].scene.as_deref(), Some("testbank_10"), "{:?}", imported.statuses[10]);
     assert!(
         imported.statuses[10].notes.iter().any(|r| r.starts_with("N = 0: approach prescribed")),

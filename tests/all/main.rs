@@ -19,6 +19,7 @@ mod docs;
 mod docs_keys;
 mod envelope;
 mod external_and_gate;
+mod extra_slip;
 mod falling;
 mod fastrip_model;
 mod fastsim_contact;

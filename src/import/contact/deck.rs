@@ -117,6 +117,9 @@ pub struct State {
     pub undeformed: Option<Undeformed>,
     /// Whether an extra rigid-slip term is in force (E = 2, 3, 9, or kept by E = 1).
     pub extra_rhs: bool,
+    /// The extra rigid slip EXRHS, pairs (wx, wy) per element in CONTACT's element order, given
+    /// with E = 9 (kept by E = 1; `None` for E = 0, 2, 3).
+    pub exrhs: Option<Vec<f64>>,
     /// The influence functions in force: the last C of 2, 3, 4, 9 (0 before any: CONTACT's first
     /// case must give one).
     pub inflcf: u8,
@@ -484,9 +487,13 @@ impl CaseReader<'_> {
             1 => state.extra_rhs,
             _ => true,
         };
-        if d.e == 9 {
-            let npot = state.potcon.as_ref().map_or(0, |p| p.mx_my().0 * p.mx_my().1);
-            self.lx.array("EXRHS", 2 * npot)?;
+        match d.e {
+            9 => {
+                let npot = state.potcon.as_ref().map_or(0, |p| p.mx_my().0 * p.mx_my().1);
+                state.exrhs = Some(self.lx.array("EXRHS", 2 * npot)?);
+            }
+            1 => {}
+            _ => state.exrhs = None,
         }
         Ok(())
     }

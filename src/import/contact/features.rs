@@ -274,8 +274,8 @@ pub const FEATURES: &[Feature] = &[
         name: "an extra term of the rigid slip",
         control: "E",
         supported: false,
-        reason: "supported: E = 0 (no extra term)",
-        used: |c| c.state.extra_rhs.then(|| format!("E = {}", c.digits.e)),
+        reason: "supported: E = 0 (no extra term) and E = 9 (an extra rigid slip per element, `[creepage] extra_slip`)",
+        used: |c| (c.state.extra_rhs && c.state.exrhs.is_none()).then(|| format!("E = {}", c.digits.e)),
     },
     Feature {
         name: "surface temperatures",

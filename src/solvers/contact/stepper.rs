@@ -82,6 +82,13 @@ fn check(p: &Problem) -> Result<(), InputError> {
             "0 with rolling.motion = \"shift\" or a falling [friction] law (the exact solver rolls along another direction than +x with Coulomb friction only)",
         ));
     }
+    if p.extra_slip.is_some() && (p.rolling.motion == Motion::Shift || turned.is_some()) {
+        return Err(InputError::new(
+            "creepage.extra_slip",
+            "an extra rigid slip per element with shifts or a rolling direction other than +x",
+            "an extra slip in rolling along +x only (rolling.motion = \"rolling\", chi_deg 0 in every row)",
+        ));
+    }
     let steady: Vec<&Sample> = match p.loading.steady_start() {
         Some(start) => vec![start],
         None if !p.loading.is_transient() => p.loading.rows().collect(),
@@ -375,13 +382,13 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
         Some(s) => s.chi_deg_or(p.rolling.chi_deg),
         None => p.rolling.chi_deg,
     };
-    let tangential = match p.rolling.motion {
+    let mut tangential = match p.rolling.motion {
         Motion::Rolling => tangential_at(p, &k0, chi_deg, &x, &y),
         Motion::Shift => TangentialSolver::for_shifts(&k0, &x, &y),
     }
     .map_err(ContactRunError::Kernel)?;
     let solves_steady = !p.loading.is_transient() || p.loading.steady_start().is_some();
-    let steady_dx = if solves_steady && p.rolling.dq_mm != g.dx_mm {
+    let mut steady_dx = if solves_steady && p.rolling.dq_mm != g.dx_mm {
         Some(TangentialSolver::new(&k0, &kernel(g.dx_mm)?, &x, &y).map_err(ContactRunError::Kernel)?)
     } else {
         None
@@ -396,7 +403,7 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
             }
         }
     }
-    let shift_start = match p.loading.shift_start() {
+    let mut shift_start = match p.loading.shift_start() {
         Some(_) => Some(TangentialSolver::for_shifts(&k0, &x, &y).map_err(ContactRunError::Kernel)?),
         None => None,
     };
@@ -418,6 +425,12 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
         }
         false => None,
     };
+    if let Some((wx, wy)) = &p.extra_slip {
+        let solvers = std::iter::once(&mut tangential).chain(steady_dx.as_mut()).chain(shift_start.as_mut());
+        for solver in solvers.chain(rolled.iter_mut().map(|(_, s)| s)) {
+            solver.set_extra_slip(Some((wx, wy))).map_err(ContactRunError::Kernel)?;
+        }
+    }
     Ok(Box::new(Contact {
         p,
         coupling,

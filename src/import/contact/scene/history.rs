@@ -66,7 +66,7 @@ pub(super) fn falling(s: &State) -> bool {
 fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static str> {
     let coulomb = a.friction_law == 0 && b.friction_law == 0;
     let coupled = crate::physics::material::combine_bodies(a.poiss, a.gg_mpa).k != 0.0;
-    let pairs: [(&'static str, bool); 15] = [
+    let pairs: [(&'static str, bool); 16] = [
         ("FN", load_varies || a.pen_or_fn == b.pen_or_fn),
         // Coulomb: FSTAT alone counts (CONTACT overwrites FKIN with it).
         (
@@ -97,6 +97,7 @@ fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static 
         ),
         ("the undeformed distance (IBASE)", a.undeformed == b.undeformed || (load_varies && quadratics(a, b))),
         ("the friction law", a.friction_law == b.friction_law),
+        ("the extra rigid slip (E = 9: EXRHS)", a.exrhs == b.exrhs),
         ("SPINXO, SPINYO", a.spin_centre_mm == b.spin_centre_mm),
         ("the rolling step (CHI, DQ, VELOC read)", a.rolling_read == b.rolling_read),
     ];

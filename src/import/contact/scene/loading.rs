@@ -44,7 +44,22 @@ pub(super) fn sweep(src: &Source, draft: &mut Draft) {
             }
         }
     }
+    extra_slip(src, draft, &mut cr);
     draft.insert("creepage", table(cr));
+}
+
+/// E = 9: the extra rigid slip EXRHS as `[creepage] extra_slip` with its file `<name>_w.csv`
+/// (columns ix, iy, wx, wy in CONTACT's element order, as `<name>_h.csv`).
+fn extra_slip(src: &Source, draft: &mut Draft, cr: &mut Vec<(&str, Value)>) {
+    let (Some(w), Some(potcon)) = (&src.first.state.exrhs, &src.first.state.potcon) else { return };
+    let mx = potcon.mx_my().0;
+    let mut csv = String::from("ix,iy,wx,wy\n");
+    for (e, pair) in w.chunks_exact(2).enumerate() {
+        let _ = writeln!(csv, "{},{},{:?},{:?}", e % mx + 1, e / mx + 1, pair[0], pair[1]);
+    }
+    let file_name = format!("{}_w.csv", src.name);
+    cr.push(("extra_slip", Value::String(file_name.clone())));
+    draft.files.push((file_name, csv));
 }
 
 /// `[creepage] kind = "table"` with its file, and `[init]` after a steady or shift start, of a
@@ -95,6 +110,7 @@ pub(super) fn transient(src: &Source, draft: &mut Draft) -> Result<(), InputErro
             cr.push((key, Value::Float(src.rows[0][j])));
         }
     }
+    extra_slip(src, draft, &mut cr);
     draft.insert("creepage", table(cr));
     let init = match src.h.run {
         Run::Transient { start: Start::Steady } => Some("steady"),

@@ -240,6 +240,9 @@ struct Layout {
     /// Dissimilar bodies: the slip of the pressure's tangential displacements `u'_tz − u_tz` [mm]
     /// added to the rigid slip of every contact element ([`TangentialSolver::set_coupled_slip`]).
     coupled: Option<(Vec<f64>, Vec<f64>)>,
+    /// An extra rigid slip per element [-] added to the creepages (CONTACT's EXRHS, E = 9,
+    /// `m_sdis.f90` `set_tang_rhs`; [`TangentialSolver::set_extra_slip`]).
+    extra: Option<(Vec<f64>, Vec<f64>)>,
 }
 
 impl Layout {
@@ -315,8 +318,12 @@ impl Layout {
         // Shifts: the rotation about the origin, no offset (CONTACT's FACPHI = 0 for T = 1).
         let (ox, oy) =
             if self.rolls { (FACPHI * dq * self.towards[0], FACPHI * dq * self.towards[1]) } else { (0.0, 0.0) };
-        for &k in &self.contact {
+        let at = |k: usize| {
             let (wx, wy) = w.at(self.x_mm[k] - ox, self.y_mm[k] - oy);
+            self.extra.as_ref().map_or((wx, wy), |(ex, ey)| (wx + ex[k], wy + ey[k]))
+        };
+        for &k in &self.contact {
+            let (wx, wy) = at(k);
             bx[k] += dq * wx;
             by[k] += dq * wy;
         }
@@ -328,7 +335,7 @@ impl Layout {
         }
         let Some((ux, uy)) = edge_u else { return };
         for e in &self.entering {
-            let (wx, wy) = w.at(self.x_mm[e.k] - ox, self.y_mm[e.k] - oy);
+            let (wx, wy) = at(e.k);
             let (ex, ey) = e.edge.map_or((0.0, 0.0), |m| (ux[m], uy[m]));
             bx[e.k] = e.facdt * dq * wx + ex;
             by[e.k] = e.facdt * dq * wy + ey;
@@ -561,6 +568,7 @@ impl TangentialSolver {
             spans: Spans::new(mx, my, &vec![0.0; n]),
             entering: Vec::new(),
             coupled: None,
+            extra: None,
         };
         Ok(TangentialSolver {
             layout,
@@ -628,6 +636,22 @@ impl TangentialSolver {
                 check_grid_array("coupled slip x", sx, n)?;
                 check_grid_array("coupled slip y", sy, n)?;
                 Some((sx.to_vec(), sy.to_vec()))
+            }
+            None => None,
+        };
+        Ok(())
+    }
+
+    /// An extra rigid slip per element `(wx, wy)` [-] (grid order) added to the creepages of every
+    /// solve, scaled by dq as they are (CONTACT's EXRHS, E = 9, `m_sdis.f90` `set_tang_rhs`);
+    /// `None`: none.
+    pub fn set_extra_slip(&mut self, slip: Option<(&[f64], &[f64])>) -> Result<(), ContactError> {
+        let n = self.layout.n();
+        self.layout.extra = match slip {
+            Some((wx, wy)) => {
+                check_grid_array("extra slip x", wx, n)?;
+                check_grid_array("extra slip y", wy, n)?;
+                Some((wx.to_vec(), wy.to_vec()))
             }
             None => None,
         };
