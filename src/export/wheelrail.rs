@@ -98,6 +98,7 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
     let f = u8::from(s.longitudinal == LongitudinalSpec::Force);
     let t = match (s.frictionless, s.motion) {
         (true, _) => 0,
+        (false, MotionSpec::Shift { steady_start: true, .. }) if first => 3,
         (false, MotionSpec::Shift { .. }) => 1,
         (false, MotionSpec::RollingSequence { from_rest, .. }) if !first || from_rest => 2,
         (false, MotionSpec::Rolling | MotionSpec::RollingSequence { .. }) => 3,

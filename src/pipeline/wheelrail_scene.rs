@@ -72,12 +72,13 @@ pub fn prepare(scene: &WheelRailScene) -> Result<(Profile, Profile, Vec<String>)
 pub fn run_scene(scene: &WheelRailScene) -> Result<SceneRun, Error> {
     let (rail, wheel, models) = prepare(scene)?;
     let material = material_of_spec(&scene.material)?;
-    if let MotionSpec::Shift { sequence: true, .. } = scene.motion {
+    if let MotionSpec::Shift { sequence: true, steady_start, .. } = scene.motion {
         let positions = scene.shift_positions_mm().unwrap_or_default();
         let friction =
             Friction { mu: scene.mu, variation: scene.mu_variation.as_ref(), frictionless: scene.frictionless };
         let cases = scene.cases.iter().zip(positions).map(|(row, s)| (case_of(scene, row, &rail, &wheel, material), s));
-        let results = solve_sequence(cases, &models, &friction, |k, e| in_case(&scene.name, &scene.cases[k], e))?;
+        let on_error = |k: usize, e| in_case(&scene.name, &scene.cases[k], e);
+        let results = solve_sequence(cases, steady_start, &models, &friction, on_error)?;
         let cases = scene.cases.iter().map(|r| r.contact_case).zip(results).collect();
         return Ok(SceneRun { name: scene.name.clone(), models, cases });
     }

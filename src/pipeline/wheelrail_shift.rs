@@ -11,15 +11,26 @@ use crate::wheelrail::shift::{self, IndexBox, OldPatch, Previous};
 use crate::wheelrail::{Motion, Vertical, WheelRailCase};
 
 /// Solve `cases` (each with its track position `s_ws_mm`) in order, each continuing the one
-/// before; the first from rest.
+/// before; the first from rest, or with `steady_start` steady rolling (CONTACT's T = 3 before
+/// T = 1 with P = 0), its tractions put on the material-fixed super-grid at its reference's
+/// nearest element (`shift_grid_super`: S_WS plus the reference's track x, over DX).
 pub fn solve_sequence<'a>(
     cases: impl IntoIterator<Item = (WheelRailCase<'a>, f64)>,
+    steady_start: bool,
     models: &[String],
     friction: &Friction,
     on_error: impl FnMut(usize, Error) -> Error,
 ) -> Result<Vec<CaseResult>, Error> {
-    let cases = cases.into_iter().map(|(case, s_ws_mm)| WheelRailCase { motion: Motion::Shift { s_ws_mm }, ..case });
-    solve_in_order(cases, models, friction, on_error)
+    let mut s_start_mm = 0.0;
+    let cases = cases.into_iter().enumerate().map(|(k, (case, s_ws_mm))| {
+        let motion = if k == 0 && steady_start { Motion::Rolling } else { Motion::Shift { s_ws_mm } };
+        if k == 0 {
+            s_start_mm = s_ws_mm;
+        }
+        WheelRailCase { motion, ..case }
+    });
+    let cases: Vec<_> = cases.collect();
+    solve_in_order(cases, s_start_mm, models, friction, on_error)
 }
 
 /// Transient rolling (`[wheelrail] motion = "rolling_sequence"`; CONTACT's T = 3 then T = 2 with
@@ -37,13 +48,15 @@ pub fn solve_rolling_sequence<'a>(
         let motion = if k == 0 && !from_rest { Motion::Rolling } else { Motion::Transient { dq_mm } };
         WheelRailCase { motion, ..case }
     });
-    solve_in_order(cases, models, friction, on_error)
+    solve_in_order(cases, 0.0, models, friction, on_error)
 }
 
 /// Solve `cases` in order, each given the patches the one before left (a steady case given an
-/// empty set, so that it keeps its tractions for the next).
+/// empty set, so that it keeps its tractions for the next, on the super-grid whose anchor is
+/// `s_super_mm` along the track: S_WS before shifts, 0 before transient rolling).
 fn solve_in_order<'a>(
     cases: impl IntoIterator<Item = WheelRailCase<'a>>,
+    s_super_mm: f64,
     models: &[String],
     friction: &Friction,
     mut on_error: impl FnMut(usize, Error) -> Error,
@@ -62,7 +75,7 @@ fn solve_in_order<'a>(
         let result = solve_with(&case, models, friction).map_err(|e| on_error(k, e))?;
         let mut left = left_for_next(&result, previous.as_ref());
         if steady {
-            on_super_grid(&mut left, &result);
+            on_super_grid(&mut left, &result, s_super_mm);
         }
         previous = Some(left);
         out.push(result);
@@ -73,11 +86,12 @@ fn solve_in_order<'a>(
 /// A steady case's patches put on the super-grid of transient rolling that follows it: its grid
 /// lies on multiples of DX, DS from its reference, which CONTACT snaps to the super-grid's nearest
 /// element (`shift_grid_super`: the reference's track x and rail arc length over DX, DS, rounded);
-/// its contact is the contact of the time before (`igv` of steady rolling).
-fn on_super_grid(left: &mut Previous, result: &CaseResult) {
+/// its contact is the contact of the time before (`igv` of steady rolling). Before shifts the
+/// super-grid is fixed in the material: the reference's x counts from −S_WS (`s_super_mm`).
+fn on_super_grid(left: &mut Previous, result: &CaseResult, s_super_mm: f64) {
     for (old, p) in left.patches.iter_mut().zip(&result.normal.patches) {
         let g = &p.geometry.grid;
-        let di = (p.geometry.frame.origin.x / g.dx_mm).round() as i64;
+        let di = ((s_super_mm + p.geometry.frame.origin.x) / g.dx_mm).round() as i64;
         let dj = (p.geometry.rail_s_mm.unwrap_or(0.0) / g.ds_mm).round() as i64;
         old.grid =
             IndexBox { x: [old.grid.x[0] + di, old.grid.x[1] + di], s: [old.grid.s[0] + dj, old.grid.s[1] + dj] };

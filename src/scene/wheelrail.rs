@@ -136,8 +136,9 @@ pub enum MotionSpec {
     /// [mm, rad], the grid is fixed in the rail's material at the wheelset's position `s_mm`.
     /// With `sequence` (`"shift_sequence"`, P = 0 after the first case) each case continues the
     /// one before it, at the position the shifts before it reached
-    /// ([`WheelRailScene::shift_positions_mm`]).
-    Shift { s_ws_mm: f64, sequence: bool },
+    /// ([`WheelRailScene::shift_positions_mm`]). With `steady_start` (`start = "steady"`) the
+    /// sequence's first case is steady rolling (T = 3) and the shifts continue it (T = 1, P = 0).
+    Shift { s_ws_mm: f64, sequence: bool, steady_start: bool },
     /// Transient rolling (`"rolling_sequence"`): the first case steady rolling (T = 3) or, with
     /// `from_rest` (`start = "rest"`), one transient step from zero tractions (T = 2, P = 2); each
     /// later case one transient rolling step of DQ = `dq_rel` DX continuing the one before (T = 2,
@@ -303,14 +304,19 @@ pub fn read_if_wheelrail(path: &Path) -> Result<Option<WheelRailScene>, InputErr
 impl WheelRailScene {
     /// Each case's wheelset position along the track [mm] in a shift: `s_mm`, or in a sequence of
     /// shifts the position before plus the case before's shift VS × 1 s (CONTACT's dummy time
-    /// step); `None` in rolling.
+    /// step); after a steady start (`start = "steady"`) the steady case at `s_mm` and each shift
+    /// at the position before plus its own shift (the wheelset moved from the steady state);
+    /// `None` in rolling.
     pub fn shift_positions_mm(&self) -> Option<Vec<f64>> {
-        let MotionSpec::Shift { s_ws_mm, sequence } = self.motion else { return None };
+        let MotionSpec::Shift { s_ws_mm, sequence, steady_start } = self.motion else { return None };
         let mut s = s_ws_mm;
         let mut out = Vec::with_capacity(self.cases.len());
-        for row in &self.cases {
+        for (k, row) in self.cases.iter().enumerate() {
+            if steady_start && k > 0 {
+                s += row.velocity[0];
+            }
             out.push(s);
-            if sequence {
+            if sequence && !steady_start {
                 s += row.velocity[0];
             }
         }

@@ -129,8 +129,8 @@ pub const KEYS: Keys = Keys {
             "start",
             "–",
             Allowed::Choice(&["steady", "rest"], ""),
-            Absent::Choice("steady"),
-            r#"with `motion = "rolling_sequence"` only, how transient rolling starts: the first case steady rolling (`"steady"`, CONTACT's T = 3 before T = 2) or one transient step from zero tractions (`"rest"`, T = 2 with P = 2): `start = "rest"`"#,
+            Absent::Text("`\"steady\"` with `motion = \"rolling_sequence\"`, `\"rest\"` with `\"shift_sequence\"`"),
+            r#"with `motion = "rolling_sequence"` or `"shift_sequence"` only, how the sequence starts: the first case steady rolling (`"steady"`, CONTACT's T = 3 before T = 2 or T = 1 with P = 0; its tractions put on the super-grid at its reference's nearest element, `shift_grid_super`; in a shift sequence the steady case at `s_mm` and each shift at the position before plus its own shift `vs_mm_s` × 1 s, as `examples_trans/t3_t1_force.inp`) or from zero tractions (`"rest"`: a transient step, T = 2 with P = 2, or a shift, T = 1 with P = 2): `start = "rest"`"#,
         ),
         key(
             "wheel_surface",
@@ -167,18 +167,22 @@ pub fn read(w: Section) -> Result<WheelRailSection, InputError> {
         _ => SideSpec::Right,
     };
     let motion = match w.pick_or_default("motion")? {
-        m @ ("shift" | "shift_sequence") => {
-            MotionSpec::Shift { s_ws_mm: w.opt_num("s_mm")?.unwrap_or(0.0), sequence: m == "shift_sequence" }
-        }
+        m @ ("shift" | "shift_sequence") => MotionSpec::Shift {
+            s_ws_mm: w.opt_num("s_mm")?.unwrap_or(0.0),
+            sequence: m == "shift_sequence",
+            steady_start: m == "shift_sequence" && w.opt_pick("start")?.unwrap_or("rest") == "steady",
+        },
         "rolling_sequence" => MotionSpec::RollingSequence {
             dq_rel: w.opt_num("dq_rel")?.unwrap_or(1.0),
-            from_rest: w.pick_or_default("start")? == "rest",
+            from_rest: w.opt_pick("start")?.unwrap_or("steady") == "rest",
         },
         _ => MotionSpec::Rolling,
     };
     if !matches!(motion, MotionSpec::RollingSequence { .. }) {
         w.refuse("dq_rel", "no dq_rel without motion = \"rolling_sequence\"")?;
-        w.refuse("start", "no start without motion = \"rolling_sequence\"")?;
+    }
+    if !matches!(motion, MotionSpec::RollingSequence { .. } | MotionSpec::Shift { sequence: true, .. }) {
+        w.refuse("start", "no start without motion = \"rolling_sequence\" or \"shift_sequence\"")?;
     }
     let shift_s = match motion {
         MotionSpec::Shift { s_ws_mm, .. } => Some(s_ws_mm),

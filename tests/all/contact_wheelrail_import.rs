@@ -324,7 +324,7 @@ fn a_shift_from_rest_exports_and_imports_back() {
     for (k, scene) in scenes.iter().enumerate() {
         let (original, back) = round_trip(scene, &dir.join(format!("back_{k}")));
         let s_ws_mm = if k == 0 { 0.0 } else { 0.4 };
-        assert_eq!(original.motion, MotionSpec::Shift { s_ws_mm, sequence: false });
+        assert_eq!(original.motion, MotionSpec::Shift { s_ws_mm, sequence: false, steady_start: false });
         // The exported deck numbers its cases from 1 (cases 2-5 come back as 1-4).
         let mut original = values(&original);
         for (n, row) in original.cases.iter_mut().enumerate() {
@@ -345,12 +345,13 @@ fn a_sequence_of_shifts_exports_and_imports_back_and_a_misfit_is_refused() {
     let scenes = import(&deck, &dir.join("scenes"), &[]);
     assert_eq!(scenes.len(), 1, "{scenes:?}");
     let (original, back) = round_trip(&scenes[0], &dir.join("back"));
-    assert_eq!(original.motion, MotionSpec::Shift { s_ws_mm: 0.0, sequence: true });
+    assert_eq!(original.motion, MotionSpec::Shift { s_ws_mm: 0.0, sequence: true, steady_start: false });
     assert_eq!(original.cases.len(), 2);
     assert_eq!(values(&back), values(&original));
     let exported = std::fs::read_to_string(dir.join("back/deck/t1_split_cp_1.inp")).unwrap();
     assert!(exported.contains(" 1001000    C-P-B-T") && exported.contains("  0.4   14.74   1.211"), "{exported}");
-    // Case 2 at S_WS = 0.5 where case 1's shift of 0.4 mm took the wheelset to 0.4; case 1 rolling.
+    // Case 2 at S_WS = 0.5 where case 1's shift of 0.4 mm took the wheelset to 0.4; case 1 rolling
+    // (a steady start, whose shift must then sit at case 1's S_WS plus case 2's own shift).
     let text = std::fs::read_to_string(&deck).unwrap();
     let profiles = deck.parent().unwrap().join("../profiles");
     let text = text.replace("'../profiles/", &format!("'{}/", profiles.display()));
@@ -360,7 +361,7 @@ fn a_sequence_of_shifts_exports_and_imports_back_and_a_misfit_is_refused() {
             text.replace("  0.400   14.74   1.211", "  0.500   14.74   1.211"),
             "S_WS = 0.5 where the shifts before it reached 0.4",
         ),
-        ("rolling", text.replacen(" 1201000 ", " 1203000 ", 1), "case 1 before it is not a shift (T = 1)"),
+        ("rolling", text.replacen(" 1201000 ", " 1203000 ", 1), "the steady case 1's S_WS plus the shift SHFT_S"),
     ] {
         let misfit = dir.join(format!("misfit_{what}.inp"));
         std::fs::write(&misfit, changed).unwrap();

@@ -127,3 +127,34 @@ fn transient_rolling_refuses_what_it_does_not_solve() {
     let e = read(&shift.replace("motion = \"shift\"", "motion = \"shift\"\nstart = \"rest\"")).unwrap_err();
     assert!(e.field.contains("start") && e.allowed.contains("rolling_sequence"), "{e:?}");
 }
+
+/// A shift continuing a steady case (CONTACT's T = 3 then T = 1, P = 0; `t3_t1_force`): the
+/// shift's grid on CONTACT's material-fixed super-grid (its anchor CONTACT's SPINXO, SPINYO), and
+/// its forces those of the steady tractions carried over and shifted (the gate compares them with
+/// CONTACT's digits, `scenes/wheelrail/t3_t1_force_1`): the same shift from rest is far off.
+#[test]
+fn a_shift_continues_the_steady_case_before_it() {
+    let printed = printed_spin_centres("t3_t1_force.ref_out");
+    let continued = scene("t3_t1_force_1");
+    let run = run_scene(&continued).unwrap();
+    assert_eq!(run.cases.len(), 2);
+    let (case, result) = &run.cases[1];
+    let theirs = &printed[*case as usize - 1];
+    assert_eq!(theirs.len(), result.normal.patches.len());
+    for (p, [sx, sy]) in result.normal.patches.iter().zip(theirs) {
+        let [ax, as_] = p.geometry.grid.anchor_mm;
+        assert!((-ax - sx).abs() <= half_unit(*sx), "SPINXO {} vs {sx}", -ax);
+        assert!((-as_ - sy).abs() <= half_unit(*sy), "SPINYO {} vs {sy}", -as_);
+    }
+    // The shift alone, from rest at the same position (T = 1, P = 2).
+    let text = std::fs::read_to_string(root().join("scenes/wheelrail/t3_t1_force_1.toml")).unwrap();
+    let alone =
+        text.replace("motion = \"shift_sequence\"\nstart = \"steady\"\ns_mm = 0.0", "motion = \"shift\"\ns_mm = 0.4");
+    let mut alone = WheelRailScene::from_toml(&alone, &root().join("scenes/wheelrail")).unwrap();
+    alone.cases.remove(0);
+    let from_rest = run_scene(&alone).unwrap();
+    let fx = |r: &creepbench::pipeline::wheelrail::CaseResult| r.models[0].1[0].fx_n;
+    // Patch 1's FX: continued −4.0e4 N (CONTACT's case 2), from rest a fraction of it.
+    let (continued_n, rest_n) = (fx(result), fx(&from_rest.cases[0].1));
+    assert!((continued_n - rest_n).abs() > 0.1 * continued_n.abs(), "{continued_n} vs {rest_n}");
+}

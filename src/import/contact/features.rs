@@ -584,7 +584,7 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "a shift continuing a sequence",
         control: "T, P",
         supported: true,
-        reason: "imported as [wheelrail] motion = \"shift_sequence\" with the shift before it: the previous case's tractions carried on CONTACT's material-fixed grid, its patches connected by overlap, split, merged or kept out of contact (docs/wheelrail.md)",
+        reason: "imported as [wheelrail] motion = \"shift_sequence\" with the shift before it (or the steady case before it: start = \"steady\"): the previous case's tractions carried on CONTACT's material-fixed grid, its patches connected by overlap, split, merged or kept out of contact (docs/wheelrail.md)",
         used: |c| (c.digits.t == 1 && c.digits.p == 0).then(|| "T = 1, P = 0".to_string()),
     },
     WheelRailRow {

@@ -69,7 +69,7 @@ pub const SCENE_LIMITS: &[SceneLimit] = &[
         name: "shifts continuing a sequence",
         control: "P",
         accepted: true,
-        reason: "carried as [wheelrail] motion = \"shift_sequence\" in the scene of the shift before it (the case must follow it, its S_WS the one before plus the shift SHFT_S): the previous case's tractions on CONTACT's material-fixed grid, its patches connected by overlap, split, merged or kept while out of contact (`wr_connect_cps`, `wr_update_allcps`), its grid widened to the contact of the time before (`merge_prev_potcon`)",
+        reason: "carried as [wheelrail] motion = \"shift_sequence\" in the scene of the shift before it (the case must follow it, its S_WS the one before plus the shift SHFT_S) or of the steady case (T = 3) before it (start = \"steady\": its S_WS the steady case's plus its own SHFT_S; the steady grid snapped to the super-grid, `shift_grid_super`): the previous case's tractions on CONTACT's material-fixed grid, its patches connected by overlap, split, merged or kept while out of contact (`wr_connect_cps`, `wr_update_allcps`), its grid widened to the contact of the time before (`merge_prev_potcon`)",
         used: |c| (c.digits.t == 1 && c.digits.p == 0).then(|| "T = 1, P = 0".to_string()),
     },
     SceneLimit {

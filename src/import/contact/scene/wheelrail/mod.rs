@@ -17,7 +17,7 @@ pub use paths::ProfilePaths;
 use super::super::deck::{Case, CaseKind};
 use super::super::wheelrail_deck::{
     Along, Forward, Friction, FrictionVariation, PitchInput, ProfileCuration, RailPlacement, Side, TrackFourth,
-    Vertical, WheelRailCase,
+    Vertical, WheelRailCase, WheelRailState,
 };
 use super::super::CaseStatus;
 use super::{scene_name, SceneFiles};
@@ -40,6 +40,8 @@ struct Member {
     k: usize,
     number: usize,
     scene: WheelRailScene,
+    /// The case's S_WS [mm] (0 when never given).
+    s_ws_mm: f64,
 }
 
 /// The wheel–rail scenes of the deck's supported module-1 cases; a case whose scene cannot be
@@ -58,7 +60,7 @@ pub(super) fn scenes(
             continue;
         }
         match case_scene(wr, paths) {
-            Ok(scene) => members.push(Member { k, number: c.number, scene }),
+            Ok(scene) => members.push(Member { k, number: c.number, scene, s_ws_mm: s_ws_of(&wr.state) }),
             Err(why) => statuses[k].refused.push(why),
         }
     }
@@ -103,8 +105,12 @@ fn groups(members: Vec<Member>) -> (Vec<Vec<Member>>, Vec<(usize, String)>) {
             match out.last_mut().map(|g| continues(g, &m)) {
                 Some(Ok(())) => {
                     let g = out.last_mut().expect("the group continued");
+                    let s0_mm = g[0].s_ws_mm;
                     match (&mut g[0].scene.motion, m.scene.motion) {
                         (MotionSpec::Shift { sequence, .. }, _) => *sequence = true,
+                        (first @ MotionSpec::Rolling, MotionSpec::Shift { .. }) => {
+                            *first = MotionSpec::Shift { s_ws_mm: s0_mm, sequence: true, steady_start: true }
+                        }
                         (MotionSpec::RollingSequence { from_rest: true, .. }, _) => {}
                         (first, rolling @ MotionSpec::RollingSequence { .. }) => *first = rolling,
                         _ => {}
@@ -151,8 +157,11 @@ fn continues(g: &[Member], m: &Member) -> Result<(), String> {
     if let MotionSpec::RollingSequence { .. } = m.scene.motion {
         return continues_rolling(g, m);
     }
-    let MotionSpec::Shift { s_ws_mm: s0, .. } = g[0].scene.motion else {
-        return refuse(&format!("case {} before it is not a shift (T = 1)", last.number));
+    if let (MotionSpec::Rolling, 1) = (g[0].scene.motion, g.len()) {
+        return continues_steady(g, m);
+    }
+    let MotionSpec::Shift { s_ws_mm: s0, steady_start, .. } = g[0].scene.motion else {
+        return refuse(&format!("case {} before it is not a shift (T = 1) or steady rolling (T = 3)", last.number));
     };
     // A group's first case is a shift from rest (a continuing case only ever joins a group);
     // several cases with the first not yet a sequence are shifts from rest each.
@@ -160,7 +169,12 @@ fn continues(g: &[Member], m: &Member) -> Result<(), String> {
         return refuse(&format!("the scene of case {} holds shifts from rest", last.number));
     }
     let MotionSpec::Shift { s_ws_mm: s, .. } = m.scene.motion else { return refuse("not a shift") };
-    let reached = s0 + g.iter().flat_map(|x| x.scene.cases.iter()).map(|r| r.velocity[0]).sum::<f64>();
+    let rows = g.iter().flat_map(|x| x.scene.cases.iter());
+    // After a steady start each shift is at the position before plus its own shift.
+    let reached = match steady_start {
+        false => s0 + rows.map(|r| r.velocity[0]).sum::<f64>(),
+        true => s0 + rows.skip(1).chain(&m.scene.cases).map(|r| r.velocity[0]).sum::<f64>(),
+    };
     if (s - reached).abs() > 1e-9 * (1.0 + s.abs()) {
         return refuse(&format!(
             "S_WS = {s} where the shifts before it reached {reached} (S_WS of case {} plus SHFT_S): the scene derives each position from the shifts",
@@ -170,6 +184,28 @@ fn continues(g: &[Member], m: &Member) -> Result<(), String> {
     let as_first = WheelRailScene { cases: m.scene.cases.clone(), motion: m.scene.motion, ..g[0].scene.clone() };
     if as_first != m.scene {
         return refuse(&format!("it changes more than the position and the shifts of case {}", last.number));
+    }
+    Ok(())
+}
+
+/// Whether the shift `m` (T = 1, P = 0) continues the steady case (T = 3) that is group `g`: the
+/// case just before it, agreeing with `m` but for the row and the motion, and `m`'s S_WS that
+/// case's plus `m`'s own shift SHFT_S × 1 s (as `examples_trans/t3_t1_force.inp`; the scene's
+/// `start = "steady"` derives it so).
+fn continues_steady(g: &[Member], m: &Member) -> Result<(), String> {
+    let first = &g[0];
+    let refuse = |why: &str| Err(format!("T = 1, P = 0: a shift continuing the steady case before it: {why}"));
+    let MotionSpec::Shift { s_ws_mm: s, .. } = m.scene.motion else { return refuse("not a shift") };
+    let reached = first.s_ws_mm + m.scene.cases[0].velocity[0];
+    if (s - reached).abs() > 1e-9 * (1.0 + s.abs()) {
+        return refuse(&format!(
+            "S_WS = {s} where the steady case {}'s S_WS plus the shift SHFT_S is {reached}: the scene derives each position from the shifts",
+            first.number
+        ));
+    }
+    let as_first = WheelRailScene { cases: m.scene.cases.clone(), motion: m.scene.motion, ..first.scene.clone() };
+    if as_first != m.scene {
+        return refuse(&format!("it changes more than the wheelset's position and velocity of case {}", first.number));
     }
     Ok(())
 }
@@ -219,6 +255,14 @@ fn build(file: &str, stem: &str, group: Vec<Member>) -> Result<SceneFiles, (Stri
     Ok(SceneFiles { name: scene.name, cases: numbers, files })
 }
 
+/// The case's S_WS [mm], 0 when never given.
+fn s_ws_of(s: &WheelRailState) -> f64 {
+    match s.position.map(|p| p.along) {
+        Some(Along::SMm(s)) => s,
+        _ => 0.0,
+    }
+}
+
 /// A supported case as a scene of one row (no name, no folder; profile paths as `paths` gives
 /// them), or why it has none.
 fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene, String> {
@@ -231,10 +275,7 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
     let material = s.material.as_ref().ok_or(never("POISS, GG"))?;
     let disc = s.discretisation.as_ref().ok_or(never("DX, DS"))?;
     let friction = s.friction.as_ref().filter(|f| !f.sets.is_empty()).ok_or(never("the friction"))?;
-    let s_ws = match s.position.map(|p| p.along) {
-        Some(Along::SMm(s)) => s,
-        _ => 0.0,
-    };
+    let s_ws = s_ws_of(s);
     let (mu, mu_variation) = mu_of(friction, s_ws);
     let m = combine_bodies(material.poiss, material.gg_mpa);
     let (vertical, longitudinal, row) = row(c)?;
@@ -289,7 +330,7 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         d_turn_mm: disc.d_turn_mm(),
         wheel_mesh: false,
         motion: match c.digits.t {
-            1 => MotionSpec::Shift { s_ws_mm: s_ws, sequence: c.digits.p == 0 },
+            1 => MotionSpec::Shift { s_ws_mm: s_ws, sequence: c.digits.p == 0, steady_start: false },
             2 => MotionSpec::RollingSequence { dq_rel: disc.dqrel, from_rest: c.digits.p == 2 },
             _ => MotionSpec::Rolling,
         },

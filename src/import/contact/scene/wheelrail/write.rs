@@ -57,9 +57,12 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
     if s.frictionless {
         wheelrail.push(("frictionless", Value::Boolean(true)));
     }
-    if let MotionSpec::Shift { s_ws_mm, sequence } = s.motion {
+    if let MotionSpec::Shift { s_ws_mm, sequence, steady_start } = s.motion {
         let motion = if sequence { "shift_sequence" } else { "shift" };
         wheelrail.push(("motion", Value::String(motion.into())));
+        if steady_start {
+            wheelrail.push(("start", Value::String("steady".into())));
+        }
         // With mu_by = "track_s" the friction's s_mm is the same position, written once.
         if !matches!(s.mu_variation.as_ref().map(|v| v.by), Some(MuBy::TrackS { .. })) {
             wheelrail.push(("s_mm", Value::Float(s_ws_mm)));
