@@ -3,7 +3,7 @@
 //! already holds M scene folders, under the folder's lock as `run` and `simulate` write. The time
 //! per scene must not grow with M (each write once listed the whole folder for leftovers of killed
 //! runs: N folders into M cost N·M). docs/performance.md has the measured numbers.
-//! Run: `cargo bench --bench results`.
+//! Run: `cargo bench -p creepbench-benches --bench results`.
 
 use creepbench::safety::{folder, lock};
 use creepbench::suite::results::{self, StoredScene};
@@ -18,7 +18,7 @@ const SIZES: [usize; 3] = [0, 2_000, 10_000];
 
 /// N copies of a blessed scene under the names `w_<k>`.
 fn scenes() -> Vec<StoredScene> {
-    let golden = Path::new(env!("CARGO_MANIFEST_DIR")).join("golden");
+    let golden = Path::new(creepbench_benches::ROOT).join("golden");
     let stored = results::read_scene(&golden, "step_mu04").unwrap();
     (0..N).map(|k| StoredScene { name: format!("w_{k}"), ..stored.clone() }).collect()
 }

@@ -5,7 +5,7 @@
 //! non-Hertzian and a Hertzian contact on the same 30 × 28 grid (issue 13: no slower per element);
 //! rustfft's 2-D batch at the FFT lengths of the exact solver's 22, 44 and 88 grids, the former
 //! choice (radix 11) beside the current one (2^a 3^b), `fft_length`.
-//! Run: `cargo bench --bench solvers` (criterion prints time per iteration; divide the UBA time
+//! Run: `cargo bench -p creepbench-benches --bench solvers` (criterion prints time per iteration; divide the UBA time
 //! by mx·my for ns per element-step — scripts/bench_table.sh does it).
 
 use creepbench::history::sample_loop;
@@ -19,7 +19,7 @@ use std::path::Path;
 
 /// A thesis scene (a scene file or a study's point) as TOML text.
 fn thesis_text(name: &str) -> String {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/thesis");
+    let dir = Path::new(creepbench_benches::ROOT).join("scenes/thesis");
     creepbench::suite::find(&[dir], name).unwrap().text().unwrap()
 }
 
@@ -106,7 +106,7 @@ fn bench_contact(c: &mut Criterion) {
 /// patches; `scenes/nonhertz/nh_two_sweep_cy_cs` geometry) against the Hertzian thesis contact on
 /// the same 30 × 28 grid, both at step 10 of sine_f30_mu10's loading and μ 0.35.
 fn bench_contact_shape(c: &mut Criterion) {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = Path::new(creepbench_benches::ROOT);
     let hertz = thesis_text("sine_f30_mu10").replace("mx = 22", "mx = 30").replace("my = 22", "my = 28");
     // The non-Hertzian scene with the thesis scene's loading, start and model options.
     let thesis: toml::Table = thesis_text("sine_f30_mu10").parse().unwrap();
@@ -261,7 +261,7 @@ fn bench_fft_length(c: &mut Criterion) {
 /// at a time with every lane slipping, the sums) measured 5.30 against 4.96 µs (not kept): the
 /// listed elements' bounds alone took 3.2 µs.
 fn bench_falling(c: &mut Criterion) {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = Path::new(creepbench_benches::ROOT);
     let falling = std::fs::read_to_string(root.join("scenes/stability/stab_fr_step_mem.toml")).unwrap();
     let start = falling.find("[friction]").unwrap();
     let end = falling.find("[material]").unwrap();
@@ -299,7 +299,7 @@ fn bench_falling(c: &mut Criterion) {
 /// The elements that slip in the UBA's step of [`bench_falling`] once its state repeats (the
 /// step benched as `uba_step_falling`, repeated until the tractions stop changing).
 fn slipping_at_rest(text: &str) -> usize {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = Path::new(creepbench_benches::ROOT);
     let p = creepbench::pipeline::resolve(&Scene::from_toml(text, root).unwrap()).unwrap();
     let sample = p.loading.samples[3];
     let mut model = (uba::MODEL.build)(&p).unwrap();
@@ -322,7 +322,7 @@ fn slipping_at_rest(text: &str) -> usize {
 /// `fastsim_falling` to set against `uba_step_coulomb` (issue 33 item 6).
 fn law_floor(g: &mut criterion::BenchmarkGroup<criterion::measurement::WallTime>, text: &str, n_slip: usize) {
     use creepbench::physics::law_kernel::LawKernel;
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = Path::new(creepbench_benches::ROOT);
     let p = creepbench::pipeline::resolve(&Scene::from_toml(text, root).unwrap()).unwrap();
     let kernel = LawKernel::new(&p.friction, &p.memory, p.rolling.dq_mm / p.rolling.v_mm_s);
     let n = n_slip.div_ceil(4) * 4;
@@ -373,7 +373,7 @@ criterion_group!(benches, bench_uba, bench_fastsim, bench_fast_models, bench_uba
 /// bound) and not from the last iterate of the moved start (1 tangential iteration instead of 8):
 /// transient 24.9 ms against 9.70 ms, 2.56× (met); steady 53.8 against 20.5 ms, 2.62× (met).
 fn bench_falling_friction(c: &mut Criterion) {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = Path::new(creepbench_benches::ROOT);
     let mut g = c.benchmark_group("contact_falling_friction");
     for case in ["fr_exp_step_cx_mem", "fr_exp_sweep_cx"] {
         let falling = std::fs::read_to_string(root.join(format!("scenes/friction/{case}.toml"))).unwrap();
@@ -419,7 +419,7 @@ fn bench_prescribed_force(c: &mut Criterion) {
     let force = resolve(&creepage.replace("c = 0.001\n", &format!("fx_over_fn = {fx_over_fn:?}\n")));
     // Steady rolling (CONTACT T = 3, F = 1): the envelope's cx sweep (22×22, 8 points, cy held)
     // and the sweep over the forces it gives.
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/envelope");
+    let dir = Path::new(creepbench_benches::ROOT).join("scenes/envelope");
     let sweep = creepbench::suite::find(&[dir], "steady_cx_courant_two").unwrap().text().unwrap().replace(
         "solvers = [\"uba\", \"fastsim\", \"contact\", \"linear\", \"she\", \"polach\", \"fastrip\", \"relaxation\"]",
         "solvers = [\"contact\"]",

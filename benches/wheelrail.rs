@@ -6,7 +6,7 @@
 //! grids and the undeformed distance alone at that case's height, per wheel (target ≤ 1 ms);
 //! `all_models_21_positions` — the 21 cases of both wheels with every model of the scenes
 //! (target: seconds). docs/wheelrail.md "Speed" has the measured numbers.
-//! Run: `cargo bench --bench wheelrail`.
+//! Run: `cargo bench -p creepbench-benches --bench wheelrail`.
 
 use creepbench::pipeline::wheelrail::solve;
 use creepbench::pipeline::wheelrail_scene::{case_of, prepare, run_scene};
@@ -22,7 +22,7 @@ use std::time::Duration;
 const CASE: u64 = 11;
 
 fn scene(side: &str) -> WheelRailScene {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/wheelrail/mbench_a22_{side}.toml"));
+    let path = Path::new(creepbench_benches::ROOT).join(format!("scenes/wheelrail/mbench_a22_{side}.toml"));
     let text = std::fs::read_to_string(&path).unwrap();
     WheelRailScene::from_toml(&text, path.parent().unwrap()).unwrap()
 }

@@ -3,7 +3,7 @@
     python examples/steady_speed.py [N]          # default N = 100000; run from the repository
 
 Prints the time per creepage for N copies of the creepage the Rust benchmark uses
-(`cargo bench --bench solvers -- fastsim_creepage/22`: sine_f30_mu10's sample 3) and for N random
+(`cargo bench -p creepbench-benches --bench solvers -- fastsim_creepage/22`: sine_f30_mu10's sample 3) and for N random
 creepages, and a call's fixed overhead (N = 1). RAYON_NUM_THREADS=1 compares with the one-thread
 benchmark.
 """
