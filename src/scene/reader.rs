@@ -562,6 +562,22 @@ impl<'a> Section<'a> {
         let allowed = self.spec(key)?.allowed.message();
         self.str(key, &allowed)
     }
+
+    /// An optional array of strings, its wording declared ([`Allowed::Text`]).
+    pub fn opt_text_list(&mut self, key: &str) -> Result<Option<Vec<String>>, InputError> {
+        let allowed = self.spec(key)?.allowed.message();
+        self.opt_str_list(key, &allowed)
+    }
+
+    /// The entries no declared key names, marked read, in the table's order: the keys of a
+    /// family (a study axis's dotted scene keys), each checked by the caller.
+    pub fn family(&mut self) -> Vec<(&'a str, &'a Value)> {
+        let table = self.table;
+        let out: Vec<(&'a str, &'a Value)> =
+            table.iter().filter(|(k, _)| self.declaration(k).is_none()).map(|(k, v)| (k.as_str(), v)).collect();
+        self.used.extend(out.iter().map(|(k, _)| k.to_string()));
+        out
+    }
 }
 
 #[cfg(test)]

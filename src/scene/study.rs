@@ -22,6 +22,7 @@
 //! ```
 
 use super::keys::{key, Absent, Allowed, Keys};
+use super::reader::{Range, Section};
 use crate::error::InputError;
 use serde::{Deserialize, Serialize};
 use toml::{Table, Value};
@@ -115,7 +116,12 @@ pub const AXIS_KEYS: Keys = Keys {
         key(
             "x_values",
             "–",
-            Allowed::Text("one number per value"),
+            Allowed::Numbers {
+                range: Range::new(f64::NEG_INFINITY, false, f64::INFINITY, false),
+                min_len: 1,
+                max_len: MAX_STUDY_POINTS,
+                note: "one per value",
+            },
             Absent::Text("–"),
             r#"the axis's numbers on the report's x where its values are not numbers: `x_values = [-90.0, 0.0, 90.0]`"#,
         ),
@@ -188,36 +194,42 @@ fn as_f64(v: &Value) -> Option<f64> {
     }
 }
 
-/// The `n`th `[[study.axis]]` table, checked in this order: its name, varied keys, their common
-/// length, labels and x values.
-fn read_axis(n: usize, t: &Value) -> Result<Axis, InputError> {
-    let field = format!("study.axis[{n}]");
-    let t = t.as_table().ok_or_else(|| err(&field, t, "a table: name, dotted scene keys with value lists, labels"))?;
-    let name = axis_name(t, &field)?;
-    let keys = axis_keys(t, &field)?;
-    let len = axis_len(&keys, &field)?;
-    let labels = axis_labels(t, &field, &keys[0].1, len)?;
-    let x_values = axis_x_values(t, &field, len)?;
+/// The `n`th `[[study.axis]]` table (`a`), checked in this order: its name, varied keys, their
+/// common length, labels and x values.
+fn read_axis(mut a: Section) -> Result<Axis, InputError> {
+    let a_field = a.field("");
+    let field = a_field.trim_end_matches('.');
+    let name = axis_name(&mut a)?;
+    let keys = a.family().into_iter().map(|(k, v)| axis_key(k, v, field)).collect::<Result<Vec<_>, _>>()?;
+    let len = axis_len(&keys, field)?;
+    let labels = match a.opt_text_list("labels")? {
+        None => keys[0].1.iter().map(label_of).collect(),
+        Some(l) if l.len() == len => l,
+        Some(l) => {
+            return Err(err(a.field("labels"), format!("{} strings", l.len()), format!("{len} strings, one per value")))
+        }
+    };
+    let x_values = match a.opt_num_list("x_values")? {
+        Some(x) if x.len() != len => {
+            return Err(err(
+                a.field("x_values"),
+                format!("{} numbers", x.len()),
+                format!("{len} numbers, one per value"),
+            ))
+        }
+        x => x,
+    };
+    a.finish()?;
     Ok(Axis { name, keys, labels, x_values })
 }
 
 /// The axis's `name`: a name of [a-z0-9_]+.
-fn axis_name(t: &Table, field: &str) -> Result<String, InputError> {
-    match t.get("name") {
-        Some(Value::String(s))
-            if !s.is_empty() && s.bytes().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'_') =>
-        {
-            Ok(s.clone())
-        }
-        Some(v) => Err(err(format!("{field}.name"), v, allowed(&AXIS_KEYS, "name"))),
-        None => Err(err(format!("{field}.name"), "missing", format!("required: {}", allowed(&AXIS_KEYS, "name")))),
+fn axis_name(a: &mut Section) -> Result<String, InputError> {
+    let name = a.text("name")?;
+    match !name.is_empty() && name.bytes().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'_') {
+        true => Ok(name.to_string()),
+        false => Err(err(a.field("name"), format!("{name:?}"), allowed(&AXIS_KEYS, "name"))),
     }
-}
-
-/// The axis's varied keys, in the table's order: every entry but those [`AXIS_KEYS`] declares
-/// (`name`, `labels`, `x_values`), each as [`axis_key`] reads it.
-fn axis_keys(t: &Table, field: &str) -> Result<Vec<(String, Vec<Value>)>, InputError> {
-    t.iter().filter(|(k, _)| AXIS_KEYS.get(k).is_none()).map(|(k, v)| axis_key(k, v, field)).collect()
 }
 
 /// One varied key `k` and its values `v`: a non-empty array, a dotted scene key, finite numbers.
@@ -226,7 +238,7 @@ fn axis_key(k: &str, v: &Value, field: &str) -> Result<(String, Vec<Value>), Inp
         .as_array()
         .filter(|a| !a.is_empty())
         .ok_or_else(|| err(format!("{field}.\"{k}\""), v, "a non-empty array of values"))?;
-    if k.split('.').any(str::is_empty) || k == "name" {
+    if k.split('.').any(str::is_empty) {
         return Err(err(field, format!("{k:?}"), "dotted scene keys such as \"contact.mu\""));
     }
     if let Some(v) = values.iter().find(|v| v.as_float().is_some_and(|f| !f.is_finite())) {
@@ -252,28 +264,6 @@ fn axis_len(keys: &[(String, Vec<Value>)], field: &str) -> Result<usize, InputEr
         ));
     }
     Ok(len)
-}
-
-/// The axis's `labels`: `len` strings, or by default the `first` key's values, compact ([`label_of`]).
-fn axis_labels(t: &Table, field: &str, first: &[Value], len: usize) -> Result<Vec<String>, InputError> {
-    match t.get("labels") {
-        None => Ok(first.iter().map(label_of).collect()),
-        Some(Value::Array(a)) if a.len() == len && a.iter().all(Value::is_str) => {
-            Ok(a.iter().filter_map(|v| v.as_str().map(String::from)).collect())
-        }
-        Some(v) => Err(err(format!("{field}.labels"), v, format!("{len} strings, one per value"))),
-    }
-}
-
-/// The axis's `x_values` if given: `len` finite numbers, the axis's numbers on the curves' x.
-fn axis_x_values(t: &Table, field: &str, len: usize) -> Result<Option<Vec<f64>>, InputError> {
-    match t.get("x_values") {
-        None => Ok(None),
-        Some(Value::Array(a)) if a.len() == len && a.iter().all(|v| as_f64(v).is_some_and(f64::is_finite)) => {
-            Ok(Some(a.iter().filter_map(as_f64).collect()))
-        }
-        Some(v) => Err(err(format!("{field}.x_values"), v, format!("{len} numbers, one per value (finite)"))),
-    }
 }
 
 /// Set the dotted key `path` of `doc` to `value`, creating tables on the way.
@@ -327,15 +317,10 @@ struct Study {
 
 /// The file's `[study]` and `[scene]` tables (nothing else), the template without `name`.
 fn study_and_template(doc: &Table) -> Result<(&Table, &Table), InputError> {
-    if let Some(k) = doc.keys().find(|k| *k != "study" && *k != "scene") {
-        return Err(err(k.as_str(), "given", "a study file holds only [study] and [scene]"));
-    }
-    let study =
-        doc.get("study").and_then(Value::as_table).ok_or_else(|| err("study", "not a table", "a [study] table"))?;
-    let template = doc
-        .get("scene")
-        .and_then(Value::as_table)
-        .ok_or_else(|| err("scene", "missing", "a [scene] table: the template scene without `name`"))?;
+    let mut file = Section::new("", doc).declare(&FILE_KEYS);
+    let study = file.table("study")?.raw();
+    let template = file.table("scene")?.raw();
+    file.finish()?;
     if template.contains_key("name") {
         return Err(err(
             "scene.name",
@@ -346,49 +331,27 @@ fn study_and_template(doc: &Table) -> Result<(&Table, &Table), InputError> {
     Ok((study, template))
 }
 
-/// Read the `[study]` table, checked in this order: its keys, name and title, axes, x axis,
-/// metrics and scene-name pattern.
+/// Read the `[study]` table, checked in this order: its name and title, axes, x axis, metrics,
+/// scene-name pattern and then its keys (none undeclared).
 fn read_study(study: &Table, metric_names: &[&str]) -> Result<Study, InputError> {
-    check_study_keys(study)?;
-    let name = text("name", study)?
-        .ok_or_else(|| err("study.name", "missing", format!("required: {}", allowed(&KEYS, "name"))))?;
-    let title = text("title", study)?.unwrap_or_else(|| name.clone());
-    let axes = read_axes(study)?;
-    let x_axis = read_x_axis(study, &axes)?;
-    let metrics = read_metrics(study, metric_names)?;
-    let pattern = read_pattern(study, &name, &axes)?;
+    let mut s = Section::new("study", study).declare(&KEYS);
+    let name = s.text("name")?.to_string();
+    let title = s.opt_text("title")?.map_or_else(|| name.clone(), String::from);
+    let axes = read_axes(&mut s)?;
+    let x_axis = read_x_axis(s.opt_text("x")?, &axes)?;
+    let metrics = read_metrics(&mut s, metric_names)?;
+    let pattern = read_pattern(s.opt_text("scene_name")?, &name, &axes)?;
+    s.finish()?;
     Ok(Study { name, title, axes, x_axis, metrics, pattern })
 }
 
-/// Refuse a `[study]` key [`KEYS`] does not declare.
-fn check_study_keys(study: &Table) -> Result<(), InputError> {
-    if let Some(k) = study.keys().find(|k| KEYS.get(k).is_none()) {
-        let known: Vec<&str> = KEYS.keys.iter().map(|k| k.key).collect();
-        return Err(err(format!("study.{k}"), "given", format!("one of {}", known.join(", "))));
-    }
-    Ok(())
-}
-
-/// The string `study.<k>` if given (`k` first, a literal: tests/all/docs.rs reads the keys from these calls).
-fn text(k: &str, study: &Table) -> Result<Option<String>, InputError> {
-    match study.get(k) {
-        None => Ok(None),
-        Some(Value::String(s)) => Ok(Some(s.clone())),
-        Some(v) => Err(err(format!("study.{k}"), v, allowed(&KEYS, k))),
-    }
-}
-
 /// The `[[study.axis]]` tables, each as [`read_axis`] reads it, their names distinct.
-fn read_axes(study: &Table) -> Result<Vec<Axis>, InputError> {
-    let axes: Vec<Axis> = match study.get("axis") {
-        Some(Value::Array(a)) if !a.is_empty() => {
-            a.iter().enumerate().map(|(n, t)| read_axis(n, t)).collect::<Result<_, _>>()?
-        }
-        other => {
-            let v = other.map(|v| v.to_string()).unwrap_or_else(|| "missing".into());
-            return Err(err("study.axis", v, "one or more [[study.axis]] tables"));
-        }
+fn read_axes(s: &mut Section) -> Result<Vec<Axis>, InputError> {
+    let tables = match s.opt_tables("axis")? {
+        Some(t) if !t.is_empty() => t,
+        _ => return Err(err(s.field("axis"), "missing", allowed(&KEYS, "axis"))),
     };
+    let axes: Vec<Axis> = tables.into_iter().map(|a| read_axis(a.declare(&AXIS_KEYS))).collect::<Result<_, _>>()?;
     for (i, a) in axes.iter().enumerate() {
         if axes[..i].iter().any(|b| b.name == a.name) {
             return Err(err(format!("study.axis[{i}].name"), format!("{:?}", a.name), "distinct axis names"));
@@ -397,10 +360,10 @@ fn read_axes(study: &Table) -> Result<Vec<Axis>, InputError> {
     Ok(axes)
 }
 
-/// The index of the axis on the curves' x (`study.x`, default the first): its values numbers,
-/// or its `x_values` given.
-fn read_x_axis(study: &Table, axes: &[Axis]) -> Result<usize, InputError> {
-    let x_axis = match text("x", study)? {
+/// The index of the axis on the curves' x (`x`: `study.x`, default the first): its values
+/// numbers, or its `x_values` given.
+fn read_x_axis(x: Option<&str>, axes: &[Axis]) -> Result<usize, InputError> {
+    let x_axis = match x {
         None => 0,
         Some(x) => axes.iter().position(|a| a.name == x).ok_or_else(|| {
             let names: Vec<&str> = axes.iter().map(|a| a.name.as_str()).collect();
@@ -418,24 +381,18 @@ fn read_x_axis(study: &Table, axes: &[Axis]) -> Result<usize, InputError> {
 }
 
 /// `study.metrics`: names from `metric_names` (none given: every scalar metric is drawn).
-fn read_metrics(study: &Table, metric_names: &[&str]) -> Result<Vec<String>, InputError> {
-    match study.get("metrics") {
-        None => Ok(Vec::new()),
-        Some(Value::Array(a)) => a
-            .iter()
-            .map(|m| match m.as_str() {
-                Some(s) if metric_names.contains(&s) => Ok(s.to_string()),
-                _ => Err(err("study.metrics", m, format!("names from {}", metric_names.join(", ")))),
-            })
-            .collect(),
-        Some(v) => Err(err("study.metrics", v, "an array of metric names")),
+fn read_metrics(s: &mut Section, metric_names: &[&str]) -> Result<Vec<String>, InputError> {
+    let metrics = s.opt_text_list("metrics")?.unwrap_or_default();
+    match metrics.iter().find(|m| !metric_names.contains(&m.as_str())) {
+        Some(m) => Err(err(s.field("metrics"), format!("{m:?}"), format!("names from {}", metric_names.join(", ")))),
+        None => Ok(metrics),
     }
 }
 
 /// `study.scene_name` (default `name_axis{axis}_…`): a pattern naming every axis.
-fn read_pattern(study: &Table, name: &str, axes: &[Axis]) -> Result<String, InputError> {
-    let pattern = match text("scene_name", study)? {
-        Some(p) => p,
+fn read_pattern(scene_name: Option<&str>, name: &str, axes: &[Axis]) -> Result<String, InputError> {
+    let pattern = match scene_name {
+        Some(p) => p.to_string(),
         None => std::iter::once(name.to_string())
             .chain(axes.iter().map(|a| format!("{}{{{}}}", a.name, a.name)))
             .collect::<Vec<_>>()

@@ -35,7 +35,7 @@ fn documented(doc: &str, key: &str) -> bool {
 }
 
 /// The reader methods of `scene::reader::Section` that take a key as their first argument.
-const KEY_METHODS: [&str; 31] = [
+const KEY_METHODS: [&str; 32] = [
     "given",
     "num",
     "opt_num",
@@ -62,6 +62,7 @@ const KEY_METHODS: [&str; 31] = [
     "opt_f64_array",
     "opt_f64_list",
     "opt_str_list",
+    "opt_text_list",
     "refuse",
     "table",
     "opt_table",
@@ -78,9 +79,8 @@ fn key_at(text: &str, at: usize) -> Option<String> {
 }
 
 /// The keys a source file reads: `.METHOD("key"` of the strict reader (`opt_f64_array::<3>`
-/// included), a helper taking the section first (`pattern(&mut s, "scene")`) and, for the
-/// study reader, which walks its tables by hand, `get("key")` and `text("key")`.
-pub(crate) fn keys_read(text: &str, by_hand: bool) -> BTreeSet<String> {
+/// included) and a helper taking the section first (`pattern(&mut s, "scene")`).
+pub(crate) fn keys_read(text: &str) -> BTreeSet<String> {
     let mut keys = BTreeSet::new();
     for (i, _) in text.match_indices("(\"") {
         let before = &text[..i];
@@ -88,8 +88,7 @@ pub(crate) fn keys_read(text: &str, by_hand: bool) -> BTreeSet<String> {
             before.rfind(|c: char| !(c.is_ascii_alphanumeric() || "_:<>".contains(c))).map_or(0, |p| p + 1);
         let method = before[name_start..].split("::").next().unwrap_or("");
         let is_method = before[..name_start].ends_with('.') && KEY_METHODS.contains(&method);
-        let is_hand = by_hand && ["get", "text"].contains(&method);
-        if is_method || is_hand {
+        if is_method {
             keys.extend(key_at(text, i + 2));
         }
     }
@@ -109,7 +108,7 @@ fn keys_of_the_readers() -> BTreeSet<String> {
     files_under(&common::root().join("src"), "rs", &mut files);
     let mut keys = BTreeSet::new();
     for f in &files {
-        keys.extend(keys_read(&read(f), f.ends_with("scene/study.rs")));
+        keys.extend(keys_read(&read(f)));
     }
     keys
 }
@@ -229,10 +228,8 @@ fn an_undocumented_key_is_found() {
     let doc = scene_format();
     assert!(documented(&doc, "relaxation_length_mm") && documented(&doc, "external"));
     assert!(!documented(&doc, "relaxation_len") && !documented(&doc, "no_such_key"));
-    let keys = keys_read(
-        "let x = t.opt_f64(\"alpha_mm\", r)?; s.opt_f64_array::<3>(\"beta\", r); f(&mut s, \"gamma\")",
-        false,
-    );
+    let keys =
+        keys_read("let x = t.opt_f64(\"alpha_mm\", r)?; s.opt_f64_array::<3>(\"beta\", r); f(&mut s, \"gamma\")");
     assert_eq!(keys.into_iter().collect::<Vec<_>>(), ["alpha_mm", "beta", "gamma"]);
 }
 
