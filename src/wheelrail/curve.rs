@@ -110,7 +110,7 @@ impl Curve for super::profile::Profile {
         [lo, hi]
     }
     fn z_and_slope(&self, y_mm: f64) -> Option<(f64, f64)> {
-        self.point_at_y(y_mm).map(|p| (p.z_mm, p.slope_dz_dy()))
+        self.z_and_slope_at(y_mm)
     }
     fn points_mm(&self) -> Option<Vec<[f64; 2]>> {
         Some(self.y_mm().iter().zip(self.z_mm()).map(|(&y, &z)| [y, z]).collect())

@@ -277,12 +277,23 @@ impl ParamSpline {
     }
 
     /// [`Self::s_at_y_on`] without allocating: `found` is called with each s, ascending.
-    pub fn each_s_at_y_on(&self, i: usize, y: f64, mut found: impl FnMut(f64)) {
+    pub fn each_s_at_y_on(&self, i: usize, y: f64, found: impl FnMut(f64)) {
+        self.each_s_at_y_in(i, &self.monotone_pieces(i), y, found)
+    }
+
+    /// The local coordinates bounding the pieces of segment `i` where y(s) is monotone: 0, the
+    /// zeros of y′ inside, the segment's length (the first `n + 2` of the array, with `n`).
+    pub fn monotone_pieces(&self, i: usize) -> ([f64; 4], usize) {
         let h = self.s[i + 1] - self.s[i];
         let (roots, n) = critical_points(&self.y, i, h);
         let mut cuts = [0.0; 4];
         cuts[1..=n].copy_from_slice(&roots[..n]);
         cuts[n + 1] = h;
+        (cuts, n)
+    }
+
+    /// [`Self::each_s_at_y_on`] with the segment's monotone pieces given ([`Self::monotone_pieces`]).
+    pub fn each_s_at_y_in(&self, i: usize, (cuts, n): &([f64; 4], usize), y: f64, mut found: impl FnMut(f64)) {
         let g = |t: f64| {
             let [f, df, _] = self.y.eval(i, t);
             (f - y, df)
