@@ -119,18 +119,20 @@ impl Curve for super::profile::Profile {
         self.point_at_y(y_mm).map(|p| p.s_mm)
     }
     fn locus_nodes(&self) -> Option<Vec<super::locus::Node>> {
-        if self.kind() != super::profile::ProfileKind::Wheel {
-            return None;
-        }
-        let range = self.uni_valued_range().ok()?;
-        let s = self.s_mm();
-        range
-            .map(|i| {
-                let p = self.point_at_s(s[i])?;
-                let dz_dy = p.dz_ds / p.dy_ds.min(-1e-6);
-                Some(super::locus::Node { s_mm: s[i], y_mm: p.y_mm, z_mm: p.z_mm, dz_dy })
-            })
-            .collect()
+        self.kept_locus_nodes(|| {
+            if self.kind() != super::profile::ProfileKind::Wheel {
+                return None;
+            }
+            let range = self.uni_valued_range().ok()?;
+            let s = self.s_mm();
+            range
+                .map(|i| {
+                    let p = self.point_at_s(s[i])?;
+                    let dz_dy = p.dz_ds / p.dy_ds.min(-1e-6);
+                    Some(super::locus::Node { s_mm: s[i], y_mm: p.y_mm, z_mm: p.z_mm, dz_dy })
+                })
+                .collect()
+        })
     }
 }
 

@@ -28,7 +28,7 @@ pub use read::read_profile;
 
 use canonical::Pt;
 use spline::ParamSpline;
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 /// Which body a profile belongs to (CONTACT's `is_wheel` 0 or 1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -124,6 +124,8 @@ struct Data {
     segment_y: Vec<(f64, f64)>,
     /// Each segment's pieces where y(s) is monotone ([`ParamSpline::monotone_pieces`]).
     pieces: Vec<([f64; 4], usize)>,
+    /// The contact locus's profile nodes, made at the first call (the profile's alone).
+    locus_nodes: OnceLock<Option<Vec<super::locus::Node>>>,
     /// The segments by y, and the whole y-range (`segment_y`'s hull).
     index: index::SegmentIndex,
     y_range: (f64, f64),
@@ -291,6 +293,7 @@ impl Profile {
             max_omit,
             segment_y,
             pieces,
+            locus_nodes: OnceLock::new(),
             index,
             y_range,
         }))
@@ -405,6 +408,15 @@ impl Profile {
             });
         }
         best
+    }
+
+    /// The contact locus's nodes ([`crate::wheelrail::curve::Curve::locus_nodes`]): `make`'s at
+    /// the first call, kept with the profile.
+    pub fn kept_locus_nodes(
+        &self,
+        make: impl FnOnce() -> Option<Vec<super::locus::Node>>,
+    ) -> Option<Vec<super::locus::Node>> {
+        self.0.locus_nodes.get_or_init(make).clone()
     }
 
     /// z [mm] and the slope dz/dy at `y_mm` ([`Self::point_at_y`]'s, without its curvature).
