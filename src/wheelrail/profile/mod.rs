@@ -123,7 +123,7 @@ struct Data {
     /// Each segment's y-range (interior extrema included), for the search by y.
     segment_y: Vec<(f64, f64)>,
     /// Each segment's pieces where y(s) is monotone ([`ParamSpline::monotone_pieces`]).
-    pieces: Vec<([f64; 4], usize)>,
+    pieces: Vec<spline::Pieces>,
     /// The contact locus's profile nodes, made at the first call (the profile's alone).
     locus_nodes: OnceLock<Option<Vec<super::locus::Node>>>,
     /// The segments by y, and the whole y-range (`segment_y`'s hull).
