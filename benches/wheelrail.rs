@@ -3,7 +3,9 @@
 //! `exact_case` — the exact solver on the left wheel's case 11 (lateral shift 5 mm, yaw 12 mrad),
 //! the height search with the tangential forces' vertical part included (target: 1/25 of a
 //! gfortran build of CONTACT on the same case); `geometry` — the contact search, the patches'
-//! grids and the undeformed distance alone at that case's height, per wheel (target ≤ 1 ms);
+//! grids and the undeformed distance alone at that case's height, per wheel (target ≤ 1 ms), on
+//! the rail placed beforehand; `rail_setup` — placing the rail by its gauge point and its gap
+//! mesh, which depend on the track alone (once per case, not per position);
 //! `all_models_21_positions` — the 21 cases of both wheels with every model of the scenes
 //! (target: seconds). docs/wheelrail.md "Speed" has the measured numbers.
 //! Run: `cargo bench -p creepbench-benches --bench wheelrail`.
@@ -12,7 +14,7 @@ use creepbench::pipeline::wheelrail::solve;
 use creepbench::pipeline::wheelrail_scene::{case_of, prepare, run_scene};
 use creepbench::problem::material_of_spec;
 use creepbench::scene::wheelrail::WheelRailScene;
-use creepbench::wheelrail::geometry;
+use creepbench::wheelrail::{geometry_with, RailSetup};
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
 use std::path::Path;
@@ -41,7 +43,11 @@ fn bench_case(c: &mut Criterion) {
         if side == "left" {
             g.bench_function("exact_case/left_11", |b| b.iter(|| solve(black_box(&case), &exact, s.mu).unwrap()));
         }
-        g.bench_function(format!("geometry/{side}_11"), |b| b.iter(|| geometry(black_box(&case), z_ws_mm).unwrap()));
+        let setup = RailSetup::new(&case).unwrap();
+        g.bench_function(format!("geometry/{side}_11"), |b| {
+            b.iter(|| geometry_with(black_box(&case), &setup, z_ws_mm).unwrap())
+        });
+        g.bench_function(format!("rail_setup/{side}"), |b| b.iter(|| RailSetup::new(black_box(&case)).unwrap()));
     }
     g.finish();
 }

@@ -110,7 +110,7 @@ impl Curve for super::profile::Profile {
         [lo, hi]
     }
     fn z_and_slope(&self, y_mm: f64) -> Option<(f64, f64)> {
-        self.point_at_y(y_mm).map(|p| (p.z_mm, p.slope_dz_dy()))
+        self.z_and_slope_at(y_mm)
     }
     fn points_mm(&self) -> Option<Vec<[f64; 2]>> {
         Some(self.y_mm().iter().zip(self.z_mm()).map(|(&y, &z)| [y, z]).collect())
@@ -119,18 +119,20 @@ impl Curve for super::profile::Profile {
         self.point_at_y(y_mm).map(|p| p.s_mm)
     }
     fn locus_nodes(&self) -> Option<Vec<super::locus::Node>> {
-        if self.kind() != super::profile::ProfileKind::Wheel {
-            return None;
-        }
-        let range = self.uni_valued_range().ok()?;
-        let s = self.s_mm();
-        range
-            .map(|i| {
-                let p = self.point_at_s(s[i])?;
-                let dz_dy = p.dz_ds / p.dy_ds.min(-1e-6);
-                Some(super::locus::Node { s_mm: s[i], y_mm: p.y_mm, z_mm: p.z_mm, dz_dy })
-            })
-            .collect()
+        self.kept_locus_nodes(|| {
+            if self.kind() != super::profile::ProfileKind::Wheel {
+                return None;
+            }
+            let range = self.uni_valued_range().ok()?;
+            let s = self.s_mm();
+            range
+                .map(|i| {
+                    let p = self.point_at_s(s[i])?;
+                    let dz_dy = p.dz_ds / p.dy_ds.min(-1e-6);
+                    Some(super::locus::Node { s_mm: s[i], y_mm: p.y_mm, z_mm: p.z_mm, dz_dy })
+                })
+                .collect()
+        })
     }
 }
 

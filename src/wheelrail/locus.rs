@@ -191,7 +191,7 @@ mod tests {
         };
         let pose = Pose { y_mm: 6.2, z_mm: -0.2617, roll_rad: -0.00071622, yaw_rad: 0.0149 };
         let mut wheel = PlacedWheel::place(&wheel, &g, &pose);
-        let samples = search::scan(&wheel, &rail, 0.5);
+        let samples = search::scan(&wheel, &search::RailMesh::new(&rail, 0.5));
         for [x, y, zw, zr] in CONTACT_GAP {
             let s = samples.iter().find(|s| (s.y_mm - y).abs() < 1e-6).expect("mesh point");
             for (ours, theirs) in [(s.x_mm, x), (s.z_mm, zw), (s.z_rail_mm, zr)] {

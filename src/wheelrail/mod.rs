@@ -177,10 +177,14 @@ pub fn normal_contact_with(
     tol: f64,
     cache: &mut NormalCache,
 ) -> Result<NormalContact, WheelRailError> {
-    let rail = PlacedRail::place(case.rail, &case.track)?;
+    let NormalCache { solvers, touch_mm, heights, rail: kept } = cache;
+    let setup: &RailSetup = match kept {
+        Some(r) => r,
+        None => kept.insert(RailSetup::new(case)?),
+    };
+    let rail = setup.placed(case.rail);
     let pose = case.side.pose(&case.pose);
-    let NormalCache { solvers, touch_mm, heights } = cache;
-    let mut at = |z_mm: f64| patches_at(case, &rail, &Pose { z_mm, ..pose }, solvers);
+    let mut at = |z_mm: f64| patches_at(case, (&rail, &setup.mesh), &Pose { z_mm, ..pose }, solvers);
     let (z_ws_mm, patches) = match (case.vertical, fz_normal_n) {
         (Vertical::Position, _) => (pose.z_mm, at(pose.z_mm)?),
         (Vertical::Force { fz_n }, target) => {
@@ -188,8 +192,8 @@ pub fn normal_contact_with(
                 Some(z) => z,
                 None => {
                     let wheel = PlacedWheel::place(case.wheel, &case.wheelset, &Pose { z_mm: 0.0, ..pose });
-                    let deepest = search::deepest_mm(&search::scan(&wheel, &rail, case.ds_mm))
-                        .ok_or(WheelRailError::NoOverlap)?;
+                    let deepest =
+                        search::deepest_mm(&search::scan(&wheel, &setup.mesh)).ok_or(WheelRailError::NoOverlap)?;
                     *touch_mm.insert(-deepest)
                 }
             };
@@ -221,12 +225,37 @@ pub fn normal_contact_with(
 /// What the searches of one case keep for the next (a prescribed force's rounds): the normal
 /// solvers (influence kernel and FFT plan) of the grids met, by grid size (every trial height has
 /// the same element size and material, most the same number of elements); the height of first
-/// touch; the last search's last two evaluations, from which the next search starts.
+/// touch; the last search's last two evaluations, from which the next search starts; the rail
+/// placed and its gap mesh (the track's alone).
 #[derive(Default)]
 pub struct NormalCache {
     solvers: NormalSolvers,
     touch_mm: Option<f64>,
     heights: Option<vertical::Evaluations>,
+    rail: Option<RailSetup>,
+}
+
+/// The rail placed in the track and the rail under the gap mesh: what depends on the track and
+/// the grid's DS alone, made once per case and used at every trial height of the wheelset.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RailSetup {
+    origin_mm: [f64; 2],
+    angle_rad: f64,
+    mesh: search::RailMesh,
+}
+
+impl RailSetup {
+    /// The rail of `case` placed ([`PlacedRail::place`]) and its gap mesh.
+    pub fn new(case: &WheelRailCase) -> Result<RailSetup, WheelRailError> {
+        let rail = PlacedRail::place(case.rail, &case.track)?;
+        let mesh = search::RailMesh::new(&rail, case.ds_mm);
+        Ok(RailSetup { origin_mm: rail.origin_mm, angle_rad: rail.angle_rad, mesh })
+    }
+
+    /// The placed rail of profile `curve` (the case's).
+    fn placed<'a>(&self, curve: &'a dyn Curve) -> PlacedRail<'a> {
+        PlacedRail { curve, origin_mm: self.origin_mm, angle_rad: self.angle_rad }
+    }
 }
 
 impl NormalCache {
@@ -272,18 +301,27 @@ impl NormalSolvers {
 /// The patches' geometry with the wheelset at height `z_ws_mm` (the case's pose otherwise): the
 /// contact search, each patch's frame, grid and undeformed distance, no normal problem solved.
 pub fn geometry(case: &WheelRailCase, z_ws_mm: f64) -> Result<Vec<PatchGeometry>, WheelRailError> {
-    let rail = PlacedRail::place(case.rail, &case.track)?;
+    geometry_with(case, &RailSetup::new(case)?, z_ws_mm)
+}
+
+/// [`geometry`] on the rail `setup` of the case made beforehand ([`RailSetup::new`]).
+pub fn geometry_with(
+    case: &WheelRailCase,
+    setup: &RailSetup,
+    z_ws_mm: f64,
+) -> Result<Vec<PatchGeometry>, WheelRailError> {
     let pose = Pose { z_mm: z_ws_mm, ..case.side.pose(&case.pose) };
-    geometry_at(case, &rail, &PlacedWheel::place(case.wheel, &case.wheelset, &pose))
+    let rail = setup.placed(case.rail);
+    geometry_at(case, (&rail, &setup.mesh), &PlacedWheel::place(case.wheel, &case.wheelset, &pose))
 }
 
 /// The patches' geometry with the wheel placed as `wheel`.
 fn geometry_at(
     case: &WheelRailCase,
-    rail: &PlacedRail,
+    (rail, mesh): (&PlacedRail, &search::RailMesh),
     wheel: &PlacedWheel,
 ) -> Result<Vec<PatchGeometry>, WheelRailError> {
-    let samples = search::scan(wheel, rail, case.ds_mm);
+    let samples = search::scan(wheel, mesh);
     if samples.is_empty() {
         return Err(WheelRailError::NoOverlap);
     }
@@ -315,7 +353,7 @@ fn geometry_at(
 /// The patches and their normal solutions with the wheelset at `pose` (right-side frame).
 fn patches_at(
     case: &WheelRailCase,
-    rail: &PlacedRail,
+    (rail, mesh): (&PlacedRail, &search::RailMesh),
     pose: &Pose,
     solvers: &mut NormalSolvers,
 ) -> Result<Vec<NormalPatch>, WheelRailError> {
@@ -323,7 +361,7 @@ fn patches_at(
     let velocity = case.side.velocity(&case.velocity);
     let rail_motion = creepage::RailMotion { origin_mm: rail.origin_mm, velocity: case.track.deviation_velocity };
     let mut out = Vec::new();
-    for (k, geometry) in geometry_at(case, rail, &wheel)?.into_iter().enumerate() {
+    for (k, geometry) in geometry_at(case, (rail, mesh), &wheel)?.into_iter().enumerate() {
         let patch = k + 1;
         let (fn_n, pn_mpa) = match solvers.approximate {
             Some(method) => solve_approximate(method, &geometry, &case.material)

@@ -399,13 +399,18 @@ pub fn undeformed_distance(
     let meshed = (surface == WheelSurface::ContactMesh).then(|| wheel_mesh::wheel_n_mm(frame, grid, wheel));
     let mut h = Vec::with_capacity(grid.len());
     for j in 0..grid.ms {
+        // The plane's point (x, s) lies at the same track (y, z) for every x: the rail (a prism
+        // along x) is met at the same distance along n by the whole row.
+        let (x0, s0) = grid.centre(0, j);
+        let row = frame.at(x0, s0);
+        let t_r = rail.along([row.y, row.z], [n.y, n.z]);
         for i in 0..grid.mx {
-            let (x, s) = grid.centre(i, j);
-            let p = frame.at(x, s);
-            let t_r = rail.along([p.y, p.z], [n.y, n.z]);
             let t_w = match &meshed {
                 Some(m) => m[j * grid.mx + i],
-                None => wheel.along(&p, &n),
+                None => {
+                    let (x, s) = grid.centre(i, j);
+                    wheel.along(&frame.at(x, s), &n)
+                }
             };
             h.push(match (t_r, t_w) {
                 (Some(r), Some(w)) => r - w,

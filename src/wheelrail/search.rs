@@ -24,25 +24,38 @@ pub struct LocusSample {
     pub rail_angle_rad: f64,
 }
 
-/// The gap function on the uniform mesh `y_k = y_min + k dy` over the rail points' lateral range
-/// ([`PlacedRail::mesh_y_range_mm`]), where the wheel's locus covers it.
-pub fn scan(wheel: &PlacedWheel, rail: &PlacedRail, ds_mm: f64) -> Vec<LocusSample> {
-    let [lo, hi] = rail.mesh_y_range_mm();
-    let dy = MESH_STEP_OVER_DS * ds_mm;
-    let n = ((hi - lo) / dy).ceil() as usize + 1;
-    (0..n)
-        .filter_map(|k| {
-            let y = lo + dy * k as f64;
-            let p = wheel.locus_at_track_y(y)?;
-            let z_rail_mm = rail.z_mm(y)?;
-            Some(LocusSample {
-                x_mm: p.x,
-                y_mm: y,
-                z_mm: p.z,
-                z_rail_mm,
-                pen_mm: p.z - z_rail_mm,
-                rail_angle_rad: rail.dz_dy(y)?.atan(),
+/// The rail under the gap mesh `y_k = y_min + k dy` over the rail points' lateral range
+/// ([`PlacedRail::mesh_y_range_mm`]): its height and inclination at each mesh point where it has
+/// one. It depends on the track alone: made once per case, read at every trial height.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct RailMesh {
+    /// (track y, rail z [mm], rail inclination [rad]) per mesh point, ascending in y.
+    points: Vec<(f64, f64, f64)>,
+}
+
+impl RailMesh {
+    /// The mesh of step [`MESH_STEP_OVER_DS`] × `ds_mm` under `rail`.
+    pub fn new(rail: &PlacedRail, ds_mm: f64) -> RailMesh {
+        let [lo, hi] = rail.mesh_y_range_mm();
+        let dy = MESH_STEP_OVER_DS * ds_mm;
+        let n = ((hi - lo) / dy).ceil() as usize + 1;
+        let points = (0..n)
+            .filter_map(|k| {
+                let y = lo + dy * k as f64;
+                Some((y, rail.z_mm(y)?, rail.dz_dy(y)?.atan()))
             })
+            .collect();
+        RailMesh { points }
+    }
+}
+
+/// The gap function on the rail's mesh ([`RailMesh`]), where the wheel's locus covers it.
+pub fn scan(wheel: &PlacedWheel, rail: &RailMesh) -> Vec<LocusSample> {
+    rail.points
+        .iter()
+        .filter_map(|&(y, z_rail_mm, rail_angle_rad)| {
+            let p = wheel.locus_at_track_y(y)?;
+            Some(LocusSample { x_mm: p.x, y_mm: y, z_mm: p.z, z_rail_mm, pen_mm: p.z - z_rail_mm, rail_angle_rad })
         })
         .collect()
 }

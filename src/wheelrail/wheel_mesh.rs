@@ -28,18 +28,22 @@ const MAX_NODES: usize = 20_000;
 /// the profile reaches it.
 fn step_arc(curve: &dyn Curve, y0: f64, ds: f64) -> Option<f64> {
     let g = |y: f64| curve.dz_dy(y).map(|d| (1.0 + d * d).sqrt());
-    let length = |h: f64| -> Option<f64> {
+    let g0 = g(y0)?;
+    // The arc length to y0 + h, and the integrand at its end.
+    let length = |h: f64| -> Option<(f64, f64)> {
         const N: usize = 16;
         let dh = h / N as f64;
-        let mut sum = g(y0)? + g(y0 + h)?;
+        let gh = g(y0 + h)?;
+        let mut sum = g0 + gh;
         for k in 1..N {
             sum += if k % 2 == 1 { 4.0 } else { 2.0 } * g(y0 + dh * k as f64)?;
         }
-        Some(sum * dh / 3.0)
+        Some((sum * dh / 3.0, gh))
     };
-    let mut h = ds / g(y0)?;
+    let mut h = ds / g0;
     for _ in 0..20 {
-        let dh = (length(h)? - ds) / g(y0 + h)?;
+        let (l, gh) = length(h)?;
+        let dh = (l - ds) / gh;
         h -= dh;
         if dh.abs() < 1e-13 {
             break;
@@ -56,33 +60,37 @@ struct Mesh {
 }
 
 fn mesh(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedWheel) -> Mesh {
+    let (e_s, n) = (frame.e_s(), frame.n());
     let to_plane = |p: Point3<f64>| {
         let d = p - frame.origin;
-        [d.x, d.dot(&frame.e_s()), d.dot(&frame.n())]
+        [d.x, d.dot(&e_s), d.dot(&n)]
     };
     // CONTACT's mesh starts at the grid's anchor (`mpot`): the reference in steady rolling.
     let q = wheel.to_wheelset(&frame.at(grid.anchor_mm[0], grid.anchor_mm[1]));
     let y_mid = q.y - wheel.y_offset_mm;
     let (s_lo, s_hi) = (grid.s0_mm - GUARD * grid.ds_mm, grid.s0_mm + (grid.ms as f64 + GUARD) * grid.ds_mm);
     let (x_lo, x_hi) = (grid.x0_mm - GUARD * grid.dx_mm, grid.x0_mm + (grid.mx as f64 + GUARD) * grid.dx_mm);
-    let node = |x: f64, y_w: f64| -> Option<[f64; 3]> {
-        let rho = wheel.nominal_radius_mm + wheel.curve.z_mm(y_w)?;
+    // The wheel's radius at profile position y_w, once per profile point (every slice shares it).
+    let radius = |y_w: f64| wheel.curve.z_mm(y_w).map(|z| wheel.nominal_radius_mm + z);
+    let node = |x: f64, y_w: f64, rho: f64| -> [f64; 3] {
         let z = (rho * rho - x * x).max(0.0).sqrt();
-        Some(to_plane(wheel.to_track(Vector3::new(x, wheel.y_offset_mm + y_w, z))))
+        to_plane(wheel.to_track(Vector3::new(x, wheel.y_offset_mm + y_w, z)))
     };
     // Profile points each way from the anchor until their s has left the grid's extent (an
-    // anchor outside it: until they have crossed it).
+    // anchor outside it: until they have crossed it), each with its radius.
     let outside = |s: f64| (s_lo - s).max(s - s_hi).max(0.0);
-    let mut profile = vec![y_mid];
+    let mid = (y_mid, radius(y_mid));
+    let mut profile = vec![mid];
     for dir in [-1.0, 1.0] {
         let mut y = y_mid;
         let mut side = Vec::new();
-        let mut last = node(q.x, y).map_or(f64::INFINITY, |[_, s, _]| outside(s));
+        let mut last = mid.1.map_or(f64::INFINITY, |rho| outside(node(q.x, y, rho)[1]));
         for _ in 0..MAX_NODES {
             let Some(next) = step_arc(wheel.curve, y, dir * grid.ds_mm) else { break };
             y = next;
-            side.push(y);
-            let Some([_, s, _]) = node(q.x, y) else { break };
+            let rho = radius(y);
+            side.push((y, rho));
+            let Some([_, s, _]) = rho.map(|rho| node(q.x, y, rho)) else { break };
             let d = outside(s);
             if d > 0.0 && d >= last {
                 break;
@@ -105,9 +113,9 @@ fn mesh(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedWheel) -> Mesh {
     let n_hi = ((wx_hi - q.x) / grid.dx_mm).ceil().max(0.0) as i64;
     let xs: Vec<f64> = (-n_lo..=n_hi).map(|i| q.x + i as f64 * grid.dx_mm).collect();
     let mut nodes = Vec::with_capacity(xs.len() * profile.len());
-    for &y_w in &profile {
+    for &(y_w, rho) in &profile {
         for &x in &xs {
-            nodes.push(node(x, y_w).unwrap_or([f64::NAN; 3]));
+            nodes.push(rho.map_or([f64::NAN; 3], |rho| node(x, y_w, rho)));
         }
     }
     Mesh { slices: xs.len(), nodes }

@@ -86,6 +86,7 @@ impl Real for f32 {
 }
 
 /// FFT plans, kernel spectra and work buffers of the FFT path.
+#[derive(Clone)]
 struct FftData<T: Real> {
     nx: usize,
     ny: usize,
@@ -121,6 +122,13 @@ impl FftData<f64> {
         d.syy = d.kernel_spectrum(kernel, &kernel.yy, scale);
         d.sxy = d.kernel_spectrum(kernel, &kernel.xy, scale);
         d.pack_pair();
+        d
+    }
+
+    /// [`FftData::new`] with the normal kernel's spectrum alone (the tangential ones empty).
+    fn new_normal(kernel: &Kernel, nx: usize, ny: usize) -> FftData<f64> {
+        let mut d = FftData::<f64>::empty(nx, ny);
+        d.szz = d.kernel_spectrum(kernel, &kernel.zz, 1.0 / (nx * ny) as f64);
         d
     }
 
@@ -315,6 +323,7 @@ fn transpose<T: Real>(src: &[Complex<T>], dst: &mut [Complex<T>], nx: usize, ny:
 /// Evaluates `u = A p` on an `mx x my` grid for one kernel, by direct summation or FFT. Holds
 /// every buffer it needs, so that [`Convolver::normal`] and [`Convolver::tangential`] do not
 /// allocate.
+#[derive(Clone)]
 pub struct Convolver {
     mx: usize,
     my: usize,
@@ -374,9 +383,28 @@ impl Convolver {
         Ok(c)
     }
 
+    /// [`Convolver::single_precision`] of this convolver's kernel (made by [`Convolver::auto`]),
+    /// its transforms copied, not made again.
+    pub fn to_single_precision(&self) -> Convolver {
+        let mut c = self.clone();
+        c.fft32 = c.fft.as_ref().map(FftData::to_f32);
+        c
+    }
+
     /// Convolver with the path chosen by grid size ([`auto_path`]).
     pub fn auto(kernel: &Kernel) -> Result<Convolver, ContactError> {
         Convolver::new(kernel, auto_path(kernel.mx, kernel.my))
+    }
+
+    /// [`Convolver::auto`] for [`Convolver::normal`] alone: on the FFT path only the normal
+    /// kernel is transformed ([`Convolver::tangential`] is refused).
+    pub fn normal_only(kernel: &Kernel) -> Result<Convolver, ContactError> {
+        let mut c = Convolver::new(kernel, ConvPath::Direct)?;
+        if auto_path(kernel.mx, kernel.my) == ConvPath::Fft {
+            c.path = ConvPath::Fft;
+            c.fft = Some(FftData::new_normal(kernel, fft_len(2 * kernel.mx - 1), fft_len(2 * kernel.my - 1)));
+        }
+        Ok(c)
     }
 
     /// The path in use.
@@ -492,7 +520,7 @@ impl Convolver {
             }
             ConvPath::Fft => {
                 let (mx, my) = (self.mx, self.my);
-                let f = self.fft.as_mut().ok_or(ContactError::MissingFft)?;
+                let f = self.fft.as_mut().filter(|f| !f.salpha.is_empty()).ok_or(ContactError::MissingFft)?;
                 let io = PairIo { mx, my, px, py, mask, ux, uy };
                 match self.fft32.as_mut() {
                     Some(f32data) => tangential_dispatch(f32data, io),

@@ -79,7 +79,7 @@ impl NormalSolver {
     /// The solver for the grid of the unshifted kernel `kernel`.
     pub fn new(kernel: &Kernel) -> Result<NormalSolver, ContactError> {
         Ok(NormalSolver {
-            conv: Convolver::auto(kernel)?,
+            conv: Convolver::normal_only(kernel)?,
             n: kernel.mx * kernel.my,
             area_mm2: kernel.dx_mm * kernel.dy_mm,
             blend: None,

@@ -33,12 +33,21 @@ const LARGEST: usize = 1 << 17;
 static TABLES: Mutex<Vec<Arc<Table>>> = Mutex::new(Vec::new());
 
 impl Table {
-    fn new(key: Key, hx: usize, hy: usize, at: &impl Fn(isize, isize) -> [f64; 4]) -> Table {
+    /// The table at offsets `|di| ≤ hx`, `|dj| ≤ hy`: the offsets `kept` (of the same key) holds
+    /// copied from it, the others computed by `at`.
+    fn new(key: Key, hx: usize, hy: usize, kept: Option<&Table>, at: &impl Fn(isize, isize) -> [f64; 4]) -> Table {
         let n = (2 * hx + 1) * (2 * hy + 1);
         let mut parts: [Vec<f64>; 4] = std::array::from_fn(|_| Vec::with_capacity(n));
         for dj in -(hy as isize)..=hy as isize {
             for di in -(hx as isize)..=hx as isize {
-                for (part, v) in parts.iter_mut().zip(at(di, dj)) {
+                let v = match kept.filter(|t| di.unsigned_abs() <= t.hx && dj.unsigned_abs() <= t.hy) {
+                    Some(t) => {
+                        let k = (dj + t.hy as isize) as usize * (2 * t.hx + 1) + (di + t.hx as isize) as usize;
+                        std::array::from_fn(|c| t.parts[c][k])
+                    }
+                    None => at(di, dj),
+                };
+                for (part, v) in parts.iter_mut().zip(v) {
                     part.push(v);
                 }
             }
@@ -74,9 +83,9 @@ pub(super) fn kernel_parts(mx: usize, my: usize, key: Key, at: impl Fn(isize, is
     }
     let (hx, hy) = kept.as_ref().map_or((hx, hy), |t| (t.hx.max(hx), t.hy.max(hy)));
     if (2 * hx + 1) * (2 * hy + 1) > LARGEST {
-        return Table::new(key, mx - 1, my - 1, &at).parts;
+        return Table::new(key, mx - 1, my - 1, kept.as_deref(), &at).parts;
     }
-    let table = Arc::new(Table::new(key, hx, hy, &at));
+    let table = Arc::new(Table::new(key, hx, hy, kept.as_deref(), &at));
     let parts = table.cut(mx, my);
     let mut tables = TABLES.lock().unwrap_or_else(|e| e.into_inner());
     tables.retain(|t| t.key != key);

@@ -28,7 +28,7 @@ pub use read::read_profile;
 
 use canonical::Pt;
 use spline::ParamSpline;
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 /// Which body a profile belongs to (CONTACT's `is_wheel` 0 or 1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -92,11 +92,16 @@ impl ProfilePoint {
     /// The slope dz/dy; CONTACT's ±1e6 (the sign of dz/ds) where |dy/ds| < 1e-6 (a vertical
     /// flank).
     pub fn slope_dz_dy(&self) -> f64 {
-        if self.dy_ds.abs() < 1e-6 {
-            1e6_f64.copysign(self.dz_ds)
-        } else {
-            self.dz_ds / self.dy_ds
-        }
+        slope_dz_dy(self.dy_ds, self.dz_ds)
+    }
+}
+
+/// dz/dy from the derivatives along the arc ([`ProfilePoint::slope_dz_dy`]).
+fn slope_dz_dy(dy_ds: f64, dz_ds: f64) -> f64 {
+    if dy_ds.abs() < 1e-6 {
+        1e6_f64.copysign(dz_ds)
+    } else {
+        dz_ds / dy_ds
     }
 }
 
@@ -117,6 +122,10 @@ struct Data {
     max_omit: f64,
     /// Each segment's y-range (interior extrema included), for the search by y.
     segment_y: Vec<(f64, f64)>,
+    /// Each segment's pieces where y(s) is monotone ([`ParamSpline::monotone_pieces`]).
+    pieces: Vec<spline::Pieces>,
+    /// The contact locus's profile nodes, made at the first call (the profile's alone).
+    locus_nodes: OnceLock<Option<Vec<super::locus::Node>>>,
     /// The segments by y, and the whole y-range (`segment_y`'s hull).
     index: index::SegmentIndex,
     y_range: (f64, f64),
@@ -271,6 +280,7 @@ impl Profile {
         let y_range =
             segment_y.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(a, b)| (lo.min(a), hi.max(b)));
         let index = index::SegmentIndex::new(&segment_y);
+        let pieces = (0..s_mm.len() - 1).map(|i| spline.monotone_pieces(i)).collect();
         Profile(Arc::new(Data {
             file: file.to_string(),
             kind,
@@ -282,6 +292,8 @@ impl Profile {
             cleaning,
             max_omit,
             segment_y,
+            pieces,
+            locus_nodes: OnceLock::new(),
             index,
             y_range,
         }))
@@ -369,38 +381,57 @@ impl Profile {
     /// or from below a wheel (largest z), as CONTACT's top view; the only one where y is
     /// monotone, as its `spline_get_xz_at_y`. `None` outside [`Self::y_range`].
     pub fn point_at_y(&self, y_mm: f64) -> Option<ProfilePoint> {
+        self.visible_at_y(y_mm).map(|(i, s, _, _)| self.point_on(i, s))
+    }
+
+    /// [`Self::point_at_y`]'s segment, s, (y, y′, y″) and (z, z′, z″), without the curvature.
+    fn visible_at_y(&self, y_mm: f64) -> Option<(usize, f64, [f64; 3], [f64; 3])> {
         if !y_mm.is_finite() {
             return None;
         }
-        let mut best: Option<ProfilePoint> = None;
+        let mut best: Option<(usize, f64, [f64; 3], [f64; 3])> = None;
         for &i in self.0.index.candidates(y_mm) {
             let (lo, hi) = self.0.segment_y[i];
             if y_mm < lo || y_mm > hi {
                 continue;
             }
-            self.0.spline.each_s_at_y_on(i, y_mm, |s| {
-                let p = self.point_on(i, s);
+            self.0.spline.each_s_at_y_in(i, &self.0.pieces[i], y_mm, |s| {
+                let (y, z) = self.0.spline.eval_on(i, s);
                 let better = match (best, self.0.kind) {
                     (None, _) => true,
-                    (Some(b), ProfileKind::Rail) => p.z_mm < b.z_mm,
-                    (Some(b), ProfileKind::Wheel) => p.z_mm > b.z_mm,
+                    (Some(b), ProfileKind::Rail) => z[0] < b.3[0],
+                    (Some(b), ProfileKind::Wheel) => z[0] > b.3[0],
                 };
                 if better {
-                    best = Some(p);
+                    best = Some((i, s, y, z));
                 }
             });
         }
         best
     }
 
+    /// The contact locus's nodes ([`crate::wheelrail::curve::Curve::locus_nodes`]): `make`'s at
+    /// the first call, kept with the profile.
+    pub fn kept_locus_nodes(
+        &self,
+        make: impl FnOnce() -> Option<Vec<super::locus::Node>>,
+    ) -> Option<Vec<super::locus::Node>> {
+        self.0.locus_nodes.get_or_init(make).clone()
+    }
+
+    /// z [mm] and the slope dz/dy at `y_mm` ([`Self::point_at_y`]'s, without its curvature).
+    pub fn z_and_slope_at(&self, y_mm: f64) -> Option<(f64, f64)> {
+        self.visible_at_y(y_mm).map(|(_, _, [_, y1, _], [z, z1, _])| (z, slope_dz_dy(y1, z1)))
+    }
+
     /// z [mm] at `y_mm` ([`Self::point_at_y`]).
     pub fn z_at(&self, y_mm: f64) -> Option<f64> {
-        self.point_at_y(y_mm).map(|p| p.z_mm)
+        self.visible_at_y(y_mm).map(|(_, _, _, z)| z[0])
     }
 
     /// The slope dz/dy at `y_mm` ([`ProfilePoint::slope_dz_dy`]).
     pub fn slope_at(&self, y_mm: f64) -> Option<f64> {
-        self.point_at_y(y_mm).map(|p| p.slope_dz_dy())
+        self.z_and_slope_at(y_mm).map(|(_, d)| d)
     }
 
     /// The signed curvature [1/mm] at `y_mm` ([`ProfilePoint::curvature_per_mm`]).

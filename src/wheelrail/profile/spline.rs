@@ -277,22 +277,42 @@ impl ParamSpline {
     }
 
     /// [`Self::s_at_y_on`] without allocating: `found` is called with each s, ascending.
-    pub fn each_s_at_y_on(&self, i: usize, y: f64, mut found: impl FnMut(f64)) {
+    pub fn each_s_at_y_on(&self, i: usize, y: f64, found: impl FnMut(f64)) {
+        self.each_s_at_y_in(i, &self.monotone_pieces(i), y, found)
+    }
+
+    /// The pieces of segment `i` where y(s) is monotone.
+    pub fn monotone_pieces(&self, i: usize) -> Pieces {
         let h = self.s[i + 1] - self.s[i];
         let (roots, n) = critical_points(&self.y, i, h);
         let mut cuts = [0.0; 4];
         cuts[1..=n].copy_from_slice(&roots[..n]);
         cuts[n + 1] = h;
+        Pieces { cuts, n, y: cuts.map(|t| self.y.eval(i, t)[0]) }
+    }
+
+    /// [`Self::each_s_at_y_on`] with the segment's monotone pieces given ([`Self::monotone_pieces`]).
+    pub fn each_s_at_y_in(&self, i: usize, pieces: &Pieces, y: f64, mut found: impl FnMut(f64)) {
         let g = |t: f64| {
             let [f, df, _] = self.y.eval(i, t);
             (f - y, df)
         };
-        for w in cuts[..n + 2].windows(2) {
-            if let Some(t) = bracketed_root(&g, w[0], w[1]) {
+        let Pieces { cuts, n, y: at } = pieces;
+        for k in 0..n + 1 {
+            if let Some(t) = bracketed_root(&g, (cuts[k], at[k] - y), (cuts[k + 1], at[k + 1] - y)) {
                 found(self.s[i] + t);
             }
         }
     }
+}
+
+/// The pieces of a segment where y(s) is monotone: local coordinates 0, the zeros of y′ inside,
+/// the segment's length (the first `n + 2` of `cuts`), and y at each.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pieces {
+    cuts: [f64; 4],
+    n: usize,
+    y: [f64; 4],
 }
 
 /// The zeros of f′ on segment `i` strictly inside (0, h), ascending: the first `n` of the array.
@@ -334,9 +354,8 @@ fn critical_points(c: &Cubic, i: usize, h: f64) -> ([f64; 2], usize) {
 /// A zero of the monotone `g` on [lo, hi] if it changes sign there (ends included): Newton's
 /// steps from the chord's zero, kept inside the bracket of the sign change (bisection where a step
 /// would leave it), to a step of a few units in the last place of the segment's length.
-/// `g` returns the value and the derivative.
-fn bracketed_root(g: &impl Fn(f64) -> (f64, f64), lo: f64, hi: f64) -> Option<f64> {
-    let (glo, ghi) = (g(lo).0, g(hi).0);
+/// `g` returns the value and the derivative; its values at the ends are given with them.
+fn bracketed_root(g: &impl Fn(f64) -> (f64, f64), (lo, glo): (f64, f64), (hi, ghi): (f64, f64)) -> Option<f64> {
     if glo == 0.0 {
         return Some(lo);
     }

@@ -135,9 +135,10 @@ impl Plans {
                 });
             }
         }
+        let conv0 = Convolver::auto(k0)?;
         Ok(Plans {
-            conv0: Convolver::auto(k0)?,
-            conv0_f32: Convolver::single_precision(k0)?,
+            conv0_f32: conv0.to_single_precision(),
+            conv0,
             prec: Convolver::inverse_of(k0)?,
             convs: Convolver::auto(ks)?,
             convd: Convolver::auto(&kd)?,
