@@ -5,7 +5,8 @@
 //! friction's variation: 0, 1 across the rail, 2 along the track), H-G-I-A-O-W-R = 0000321: the
 //! solver's limits, FSTAT = FKIN = mu or NVF control points, POISS and GG of both bodies the scene's, DX, DS with DQREL 1,
 //! the scene's A_SEP, D_SEP, D_COMB, the track, the rail profile with its options (PRFOPT = 2) and
-//! the rail's deviations, the wheelset's dimensions, the wheel profile, the position and velocities); each later case keeps all
+//! the rail's deviations, the wheelset's dimensions, the wheel profile, the position and velocities,
+//! with E = 5 the wheel's deviations DXWHL … VPITCHW where the scene has any); each later case keeps all
 //! but its position and velocities (V111002, 0100321). C is the side (0 left, 1 right), N the
 //! vertical problem (1: FZ prescribed, 0: the height Z_WS), F the longitudinal one (1: FX_WS in
 //! place of VPITCH, `[cases] longitudinal = "force"`); S_WS is the scene's track position in a
@@ -16,7 +17,8 @@
 use crate::error::InputError;
 use crate::safety::relative::relative;
 use crate::scene::wheelrail::{
-    CaseRow, LongitudinalSpec, MotionSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
+    CaseRow, LongitudinalSpec, MotionSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec,
+    WheelDeviationSpec, WheelRailScene,
 };
 use crate::scene::MaterialSpec;
 use crate::wheelrail::profile::options::SCALE_MIN;
@@ -71,6 +73,9 @@ pub fn module1_input(s: &WheelRailScene, deck_dir: &Path) -> Result<String, Inpu
         }
         let s_mm = shifts.as_ref().map_or_else(|| track_s_mm(s), |p| p[n]);
         position_and_velocity(s, row, s_mm, &mut out);
+        if n == 0 && flexible(s) {
+            wheel_deviation(s, &mut out);
+        }
     }
     out.push_str("\n 0 MODULE\n");
     Ok(out)
@@ -119,6 +124,7 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
     // `t3_t2_force_1` exported, case 2 NPOT 5031 against 3526, FX(TR) 2 % off; docs/wheelrail.md).
     let rolling_step = matches!(s.motion, MotionSpec::RollingSequence { .. }) && !first;
     let (ldcmze, hgiaowr) = match (first, rolling_step) {
+        (true, _) if flexible(s) => ("022035", "0000321"),
         (true, _) => ("022033", "0000321"),
         (false, true) => ("111002", "0110321"),
         (false, false) => ("111002", "0100321"),
@@ -127,6 +133,24 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
         writeln!(out, " {c}{p}0{t}{n}{f}0    C-P-B-T-N-F-S   CONFIG, PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS");
     let _ = writeln!(out, " {v}{ldcmze}    V-L-D-C-M-Z-E   VARFRC, FRCLAW, DISCNS, INFLCF, MATER,  ZTRACK, EWHEEL");
     let _ = writeln!(out, " {hgiaowr}    H-G-I-A-O-W-R     HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW,   RETURN");
+}
+
+/// Whether the wheel deviates from its design place or moves on the wheelset (E = 5 in the first
+/// case; the later cases' E = 2 keeps the deviations).
+fn flexible(s: &WheelRailScene) -> bool {
+    s.wheel_deviation != WheelDeviationSpec::default()
+}
+
+/// `DXWHL … DPITCHW` and `VXWHL … VPITCHW` (E = 4, 5; wheelset coordinates, rad and rad/s).
+fn wheel_deviation(s: &WheelRailScene, out: &mut String) {
+    let d = s.wheel_deviation;
+    for (values, names) in [
+        (d.position, "DXWHL, DYWHL, DZWHL, DROLLW, DYAWW, DPITCHW"),
+        (d.velocity, "VXWHL, VYWHL, VZWHL, VROLLW, VYAWW, VPITCHW"),
+    ] {
+        let line: Vec<String> = values.iter().map(|v| format!("{v:?}")).collect();
+        let _ = writeln!(out, "  {}      {names}", line.join("   "));
+    }
 }
 
 /// The first case's groups: solver, friction, material, discretisation, track, rail, wheelset.

@@ -16,7 +16,7 @@ use crate::wheelrail::patch::Separation;
 use crate::wheelrail::profile::{options::ProfileOptions, read::read_profile, Profile, ProfileKind};
 use crate::wheelrail::rail::{RailPlacement, Track};
 use crate::wheelrail::side::Side;
-use crate::wheelrail::wheel::{Pose, Velocity, WheelsetGeometry};
+use crate::wheelrail::wheel::{Pose, Velocity, WheelDeviation, WheelsetGeometry};
 use crate::wheelrail::wheel_mesh::WheelSurface;
 use crate::wheelrail::{Motion, Vertical, WheelRailCase};
 use rayon::prelude::*;
@@ -161,6 +161,7 @@ pub fn case_of<'a>(
             flange_back_distance_mm: s.flange_back_distance_mm,
             flange_back_position_mm: s.flange_back_position_mm,
             nominal_radius_mm: s.nominal_radius_mm,
+            deviation: WheelDeviation { position: s.wheel_deviation.position, velocity: s.wheel_deviation.velocity },
         },
         pose: Pose { y_mm: row.y_mm, z_mm, roll_rad: row.roll_rad, yaw_rad: row.yaw_rad },
         velocity: Velocity {

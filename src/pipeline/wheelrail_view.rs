@@ -64,7 +64,7 @@ pub fn view(scene: &WheelRailScene, run: SceneRun) -> Result<WheelRailView, Erro
         let case = case_of(scene, row, &rail, &wheel, material);
         let m = case.side.sign();
         let pose = Pose { z_mm: result.normal.z_ws_mm, ..case.side.pose(&case.pose) };
-        let placed = PlacedWheel::place(case.wheel, &case.wheelset, &pose);
+        let placed = PlacedWheel::place(case.wheel, &case.side.wheelset(&case.wheelset), &pose);
         ycp_w_mm.push(result.normal.patches.iter().map(|p| m * wheel_y_mm(&placed, p)).collect());
         if !patch_cases.contains(number) {
             continue;

@@ -50,6 +50,17 @@ pub struct RailDeviationSpec {
     pub velocity: [f64; 3],
 }
 
+/// The wheel's deviation from its design place on the wheelset and its rate (CONTACT's flexible
+/// wheelset deviations DXWHL … DPITCHW, VXWHL … VPITCHW, E = 4, 5), in wheelset coordinates of
+/// the side's own wheelset as CONTACT's input gives them.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct WheelDeviationSpec {
+    /// DXWHL, DYWHL, DZWHL [mm], DROLLW, DYAWW, DPITCHW [rad].
+    pub position: [f64; 6],
+    /// VXWHL, VYWHL, VZWHL [mm/s], VROLLW, VYAWW, VPITCHW [rad/s].
+    pub velocity: [f64; 6],
+}
+
 /// The rail's placement (GAUGHT > 0: gauge point; else absolute).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum PlacementSpec {
@@ -164,6 +175,8 @@ pub struct WheelRailScene {
     pub flange_back_distance_mm: f64,
     pub flange_back_position_mm: f64,
     pub nominal_radius_mm: f64,
+    /// The wheel's deviation from its design place and its rate (`[wheel] deviation_*`).
+    pub wheel_deviation: WheelDeviationSpec,
     /// Coulomb's μ of every patch (`mu`); with a variation by track position its value at the
     /// case's position; by contact angle its first value (each patch then takes its own).
     pub mu: f64,
@@ -433,6 +446,7 @@ impl WheelRailScene {
             flange_back_distance_mm: wheel.flange_back_distance_mm,
             flange_back_position_mm: wheel.flange_back_position_mm,
             nominal_radius_mm: radius,
+            wheel_deviation: wheel.deviation,
             mu,
             mu_variation,
             material,

@@ -5,7 +5,7 @@
 
 use super::keys::{key, Absent, Allowed, KeySpec, Keys};
 use super::reader::{Range, Section};
-use super::wheelrail::{PlacementSpec, ProfileSpec, RailDeviationSpec};
+use super::wheelrail::{PlacementSpec, ProfileSpec, RailDeviationSpec, WheelDeviationSpec};
 use super::wheelrail_cases::{ANGLE, LENGTH};
 use crate::error::InputError;
 use std::f64::consts::PI;
@@ -13,7 +13,7 @@ use std::path::Path;
 
 /// A turning angle of the profile's cleaning [rad].
 const TURN: Range = Range::new(0.0, true, 2.0 * PI, true);
-/// A velocity of the rail's deviation [mm/s or rad/s].
+/// A velocity of the rail's or the wheel's deviation [mm/s or rad/s].
 const RAIL_SPEED: Range = Range::new(-1e7, true, 1e7, true);
 
 /// The values of `mirror_z` and CONTACT's MIRRORZ for each.
@@ -230,6 +230,68 @@ pub const WHEEL_KEYS: Keys = Keys {
             Absent::Required,
             r#"the wheel's nominal rolling radius, at the profile's origin (NOMRAD): `nominal_radius_mm = 460.0`"#,
         ),
+        deviation(
+            "deviation_x_mm",
+            "mm",
+            LENGTH,
+            r#"the wheel profile origin's shift along the wheelset's x from its design place (CONTACT's DXWHL, E = 4, 5: a flexible wheelset; wheelset coordinates): `deviation_x_mm = 0.5`"#,
+        ),
+        deviation(
+            "deviation_y_mm",
+            "mm",
+            LENGTH,
+            r#"its lateral shift along the wheelset's y (DYWHL; as CONTACT, towards the wheelset's centre on the left wheel and to the field side on the right): `deviation_y_mm = 1.0`"#,
+        ),
+        deviation("deviation_z_mm", "mm", LENGTH, r#"its vertical shift (DZWHL, z downwards): `deviation_z_mm = 0.1`"#),
+        deviation(
+            "deviation_roll_rad",
+            "rad",
+            ANGLE,
+            r#"the wheel's roll about the profile origin (DROLLW, right-hand about the wheelset's x, before the yaw): its own axle then NOMRAD above the origin, turned: `deviation_roll_rad = 0.0873`"#,
+        ),
+        deviation(
+            "deviation_yaw_rad",
+            "rad",
+            ANGLE,
+            r#"the wheel's yaw about the profile origin (DYAWW, after the roll): `deviation_yaw_rad = 0.002`"#,
+        ),
+        deviation(
+            "deviation_pitch_rad",
+            "rad",
+            ANGLE,
+            r#"the wheel's pitch (DPITCHW): carried and exported; it does not move a round wheel's surface (CONTACT leaves it out of the placement): `deviation_pitch_rad = 0.0`"#,
+        ),
+        deviation(
+            "deviation_vx_mm_s",
+            "mm/s",
+            RAIL_SPEED,
+            r#"the velocity of the wheel profile's origin relative to the wheelset along its x (VXWHL): the wheel's material velocity enters the creepages (`m_wr_rigslip`): `deviation_vx_mm_s = 20.0`"#,
+        ),
+        deviation(
+            "deviation_vy_mm_s",
+            "mm/s",
+            RAIL_SPEED,
+            r#"along its y (VYWHL, as `deviation_y_mm`): `deviation_vy_mm_s = 10.0`"#,
+        ),
+        deviation("deviation_vz_mm_s", "mm/s", RAIL_SPEED, r#"along its z (VZWHL): `deviation_vz_mm_s = 5.0`"#),
+        deviation(
+            "deviation_vroll_rad_s",
+            "rad/s",
+            RAIL_SPEED,
+            r#"the wheel's roll rate on the wheelset about the profile origin (VROLLW, about the wheelset's x): moves the wheel's material and adds to the spin creepage: `deviation_vroll_rad_s = 0.1`"#,
+        ),
+        deviation(
+            "deviation_vyaw_rad_s",
+            "rad/s",
+            RAIL_SPEED,
+            r#"its yaw rate (VYAWW, about the wheelset's z): `deviation_vyaw_rad_s = 0.05`"#,
+        ),
+        deviation(
+            "deviation_vpitch_rad_s",
+            "rad/s",
+            RAIL_SPEED,
+            r#"its pitch rate (VPITCHW, about the wheelset's y, added to VPITCH about the profile origin; the rolling speed VELOC takes the wheelset's VPITCH alone, as CONTACT's): `deviation_vpitch_rad_s = -0.01`"#,
+        ),
     ],
 };
 
@@ -294,21 +356,46 @@ pub fn rail(top: &mut Section, dir: &Path) -> Result<RailSection, InputError> {
     Ok(RailSection { profile, placement, cant_rad, deviation })
 }
 
-/// The wheel read from `[wheel]`: its profile and the wheelset's FBDIST, FBPOS, NOMRAD.
+/// The wheel read from `[wheel]`: its profile, the wheelset's FBDIST, FBPOS, NOMRAD and the
+/// wheel's deviation.
 pub struct WheelSection {
     pub profile: ProfileSpec,
     pub flange_back_distance_mm: f64,
     pub flange_back_position_mm: f64,
     pub nominal_radius_mm: f64,
+    pub deviation: WheelDeviationSpec,
 }
 
-/// `[wheel]`: its profile and the wheelset's dimensions.
+/// `[wheel]`'s deviation from its design place and its rate (each 0 when absent).
+fn wheel_deviation(w: &mut Section) -> Result<WheelDeviationSpec, InputError> {
+    Ok(WheelDeviationSpec {
+        position: [
+            w.num_or_default("deviation_x_mm")?,
+            w.num_or_default("deviation_y_mm")?,
+            w.num_or_default("deviation_z_mm")?,
+            w.num_or_default("deviation_roll_rad")?,
+            w.num_or_default("deviation_yaw_rad")?,
+            w.num_or_default("deviation_pitch_rad")?,
+        ],
+        velocity: [
+            w.num_or_default("deviation_vx_mm_s")?,
+            w.num_or_default("deviation_vy_mm_s")?,
+            w.num_or_default("deviation_vz_mm_s")?,
+            w.num_or_default("deviation_vroll_rad_s")?,
+            w.num_or_default("deviation_vyaw_rad_s")?,
+            w.num_or_default("deviation_vpitch_rad_s")?,
+        ],
+    })
+}
+
+/// `[wheel]`: its profile, the wheelset's dimensions and the wheel's deviation.
 pub fn wheel(top: &mut Section, dir: &Path) -> Result<WheelSection, InputError> {
     let mut w = top.table("wheel")?.declare(&WHEEL_KEYS).declare(&PROFILE_KEYS);
     let profile = profile(&mut w, dir)?;
     let flange_back_distance_mm = w.num("flange_back_distance_mm")?;
     let flange_back_position_mm = w.num("flange_back_position_mm")?;
     let nominal_radius_mm = w.num("nominal_radius_mm")?;
+    let deviation = wheel_deviation(&mut w)?;
     w.finish()?;
-    Ok(WheelSection { profile, flange_back_distance_mm, flange_back_position_mm, nominal_radius_mm })
+    Ok(WheelSection { profile, flange_back_distance_mm, flange_back_position_mm, nominal_radius_mm, deviation })
 }

@@ -1,7 +1,7 @@
 //! Coulomb's μ of a patch (CONTACT's V digit in module 1, `m_wr_solvecp`): one μ for the whole
 //! rail (V = 0), μ at the wheelset's position along the track (V = 2: one value for the case), or
 //! μ at the patch's contact angle on the wheel (V = 1: the roll of the contact reference in the
-//! wheel's frame, the angle of the right-side frame less the wheelset's roll), each interpolated
+//! wheel's frame, the angle of the right-side frame less the wheelset's roll and the wheel's DROLLW), each interpolated
 //! linearly between the control points and constant beyond them (`fric_interp`). Planar contact
 //! only: with the conformal approach (D = 4) CONTACT varies μ per grid row.
 
@@ -22,7 +22,9 @@ impl Friction<'_> {
     pub fn of_patch(&self, p: &NormalPatch, case: &WheelRailCase) -> f64 {
         match self.variation {
             Some(v @ MuVariation { by: MuBy::ContactAngle, .. }) => {
-                v.at(p.geometry.frame.delta_rad - case.side.pose(&case.pose).roll_rad)
+                // The contact angle on the wheel: less the wheelset's roll and the wheel's own.
+                let droll = case.side.wheelset(&case.wheelset).deviation.position[3];
+                v.at(p.geometry.frame.delta_rad - case.side.pose(&case.pose).roll_rad - droll)
             }
             Some(v @ MuVariation { by: MuBy::TrackS { s_mm }, .. }) => v.at(*s_mm),
             None => self.mu,

@@ -155,7 +155,7 @@ mod tests {
     use super::super::profile::{read_profile, ProfileKind, ProfileOptions};
     use super::super::rail::{PlacedRail, RailPlacement, Track};
     use super::super::search;
-    use super::super::wheel::{PlacedWheel, Pose, WheelsetGeometry};
+    use super::super::wheel::{PlacedWheel, Pose, WheelDeviation, WheelsetGeometry};
     use std::path::Path;
 
     /// CONTACT's gap function (its `dump_gap1d.m`, debug level L = 5 of module 1) for the right
@@ -188,6 +188,7 @@ mod tests {
             flange_back_distance_mm: 1360.0,
             flange_back_position_mm: -70.0,
             nominal_radius_mm: 460.0,
+            deviation: WheelDeviation::NONE,
         };
         let pose = Pose { y_mm: 6.2, z_mm: -0.2617, roll_rad: -0.00071622, yaw_rad: 0.0149 };
         let mut wheel = PlacedWheel::place(&wheel, &g, &pose);

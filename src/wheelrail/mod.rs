@@ -191,7 +191,11 @@ pub fn normal_contact_with(
             let z_touch_mm = match *touch_mm {
                 Some(z) => z,
                 None => {
-                    let wheel = PlacedWheel::place(case.wheel, &case.wheelset, &Pose { z_mm: 0.0, ..pose });
+                    let wheel = PlacedWheel::place(
+                        case.wheel,
+                        &case.side.wheelset(&case.wheelset),
+                        &Pose { z_mm: 0.0, ..pose },
+                    );
                     let deepest =
                         search::deepest_mm(&search::scan(&wheel, &setup.mesh)).ok_or(WheelRailError::NoOverlap)?;
                     *touch_mm.insert(-deepest)
@@ -312,7 +316,7 @@ pub fn geometry_with(
 ) -> Result<Vec<PatchGeometry>, WheelRailError> {
     let pose = Pose { z_mm: z_ws_mm, ..case.side.pose(&case.pose) };
     let rail = setup.placed(case.rail);
-    geometry_at(case, (&rail, &setup.mesh), &PlacedWheel::place(case.wheel, &case.wheelset, &pose))
+    geometry_at(case, (&rail, &setup.mesh), &PlacedWheel::place(case.wheel, &case.side.wheelset(&case.wheelset), &pose))
 }
 
 /// The patches' geometry with the wheel placed as `wheel`.
@@ -357,7 +361,7 @@ fn patches_at(
     pose: &Pose,
     solvers: &mut NormalSolvers,
 ) -> Result<Vec<NormalPatch>, WheelRailError> {
-    let wheel = PlacedWheel::place(case.wheel, &case.wheelset, pose);
+    let wheel = PlacedWheel::place(case.wheel, &case.side.wheelset(&case.wheelset), pose);
     let velocity = case.side.velocity(&case.velocity);
     let rail_motion = creepage::RailMotion { origin_mm: rail.origin_mm, velocity: case.track.deviation_velocity };
     let mut out = Vec::new();

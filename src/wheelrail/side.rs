@@ -2,7 +2,7 @@
 //! as the mirror image of a right one (y → −y) and mirrors the results back. The profiles are the
 //! right side's; the wheelset's lateral position, roll and yaw and their rates change sign.
 
-use super::wheel::{Pose, Velocity};
+use super::wheel::{Pose, Velocity, WheelsetGeometry};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
@@ -24,6 +24,12 @@ impl Side {
     pub fn pose(self, p: &Pose) -> Pose {
         let m = self.sign();
         Pose { y_mm: m * p.y_mm, z_mm: p.z_mm, roll_rad: m * p.roll_rad, yaw_rad: m * p.yaw_rad }
+    }
+
+    /// The wheelset's dimensions and the wheel's deviation (wheelset coordinates) seen from the
+    /// right side's frame.
+    pub fn wheelset(self, g: &WheelsetGeometry) -> WheelsetGeometry {
+        WheelsetGeometry { deviation: g.deviation.mirrored(self.sign()), ..*g }
     }
 
     /// The wheelset's velocities seen from the right side's frame.

@@ -4,13 +4,17 @@
 use super::curve::{Arc, Line};
 use super::rail::{RailPlacement, Track};
 use super::side::Side;
-use super::wheel::{Pose, Velocity, WheelsetGeometry};
+use super::wheel::{Pose, Velocity, WheelDeviation, WheelsetGeometry};
 use super::*;
 use crate::physics::hertz::Radii;
 use crate::physics::HertzContact;
 
-const WHEELSET: WheelsetGeometry =
-    WheelsetGeometry { flange_back_distance_mm: 1360.0, flange_back_position_mm: -70.0, nominal_radius_mm: 460.0 };
+const WHEELSET: WheelsetGeometry = WheelsetGeometry {
+    flange_back_distance_mm: 1360.0,
+    flange_back_position_mm: -70.0,
+    nominal_radius_mm: 460.0,
+    deviation: WheelDeviation::NONE,
+};
 
 fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side, pose: Pose) -> WheelRailCase<'a> {
     WheelRailCase {
@@ -106,5 +110,39 @@ fn contacts_wheel_mesh_is_the_surface_at_its_nodes_and_within_a_chords_sag_betwe
         assert_eq!(e.len(), m.len());
         let worst = e.iter().zip(m).map(|(he, hm)| (hm - he).abs()).fold(0.0, f64::max);
         assert!(worst <= sag_mm * 1.05 + 1e-9, "worst {worst} sag {sag_mm}");
+    }
+}
+
+/// A wheel turned on its wheelset by DROLLW, DYAWW and shifted so that its own centre is the
+/// wheelset's is the same surface as the wheelset turned by that roll and yaw: the same height,
+/// patch and contact (CONTACT's `wr_set_wheel_marker` places the wheel so; the two rotate about
+/// different points, the profile origin and the wheelset's centre).
+#[test]
+fn a_wheel_turned_on_its_wheelset_is_a_turned_wheelset() {
+    let slope = 1.0 / 40.0;
+    let (rail, wheel) = (crown(), Line { z0_mm: 0.0, slope: -slope, y_range_mm: [-60.0, 60.0] });
+    let (roll, yaw) = (0.001f64, 0.005f64);
+    for side in [Side::Right, Side::Left] {
+        let m = side.sign();
+        let turned = case(&rail, &wheel, side, Pose { roll_rad: m * roll, yaw_rad: m * yaw, ..Pose::default() });
+        let design = nalgebra::Vector3::new(0.0, 750.0, 460.0);
+        let turn = nalgebra::Rotation3::from_axis_angle(&nalgebra::Vector3::x_axis(), roll)
+            * nalgebra::Rotation3::from_axis_angle(&nalgebra::Vector3::z_axis(), yaw);
+        let d = turn * design - design;
+        let deviation = WheelDeviation { position: [d.x, m * d.y, d.z, m * roll, m * yaw, 0.0], velocity: [0.0; 6] };
+        let mut flexible = case(&rail, &wheel, side, Pose::default());
+        flexible.wheelset.deviation = deviation;
+        let (a, b) = (normal_contact(&turned, None).unwrap(), normal_contact(&flexible, None).unwrap());
+        assert!((a.z_ws_mm - b.z_ws_mm).abs() < 1e-9, "{side:?}: z_ws {} {}", a.z_ws_mm, b.z_ws_mm);
+        assert_eq!(a.patches.len(), b.patches.len());
+        for (p, q) in a.patches.iter().zip(&b.patches) {
+            let (f, g) = (&p.geometry.frame, &q.geometry.frame);
+            assert!((f.origin - g.origin).norm() < 1e-9, "{side:?}: {:?} {:?}", f.origin, g.origin);
+            assert!((f.delta_rad - g.delta_rad).abs() < 1e-12, "{side:?}: {} {}", f.delta_rad, g.delta_rad);
+            assert!((p.fn_n - q.fn_n).abs() < 1e-6 * p.fn_n, "{side:?}: {} {}", p.fn_n, q.fn_n);
+        }
+        // Without the deviation the wheel stands elsewhere: the comparison can fail.
+        let rigid = normal_contact(&case(&rail, &wheel, side, Pose::default()), None).unwrap();
+        assert!((rigid.z_ws_mm - a.z_ws_mm).abs() > 0.1, "{side:?}: {} {}", rigid.z_ws_mm, a.z_ws_mm);
     }
 }

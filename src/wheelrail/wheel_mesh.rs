@@ -66,7 +66,7 @@ fn mesh(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedWheel) -> Mesh {
         [d.x, d.dot(&e_s), d.dot(&n)]
     };
     // CONTACT's mesh starts at the grid's anchor (`mpot`): the reference in steady rolling.
-    let q = wheel.to_wheelset(&frame.at(grid.anchor_mm[0], grid.anchor_mm[1]));
+    let q = wheel.to_wheel(&frame.at(grid.anchor_mm[0], grid.anchor_mm[1]));
     let y_mid = q.y - wheel.y_offset_mm;
     let (s_lo, s_hi) = (grid.s0_mm - GUARD * grid.ds_mm, grid.s0_mm + (grid.ms as f64 + GUARD) * grid.ds_mm);
     let (x_lo, x_hi) = (grid.x0_mm - GUARD * grid.dx_mm, grid.x0_mm + (grid.mx as f64 + GUARD) * grid.dx_mm);
@@ -107,7 +107,7 @@ fn mesh(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedWheel) -> Mesh {
     }
     // Slices on the wheel's x (CONTACT's grid's corners in the wheel's frame).
     let corners = [(x_lo, s_lo), (x_lo, s_hi), (x_hi, s_lo), (x_hi, s_hi)];
-    let wx = corners.map(|(x, s)| wheel.to_wheelset(&frame.at(x, s)).x);
+    let wx = corners.map(|(x, s)| wheel.to_wheel(&frame.at(x, s)).x);
     let (wx_lo, wx_hi) = (wx.iter().copied().fold(f64::MAX, f64::min), wx.iter().copied().fold(f64::MIN, f64::max));
     let n_lo = ((q.x - wx_lo) / grid.dx_mm).ceil().max(0.0) as i64;
     let n_hi = ((wx_hi - q.x) / grid.dx_mm).ceil().max(0.0) as i64;

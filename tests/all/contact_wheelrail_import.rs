@@ -312,6 +312,31 @@ fn export_then_import_gives_the_same_scene() {
     assert_eq!(values(&back), values(&original));
 }
 
+/// The wheel's flexible deviations (E = 4, 5): `m1_steady_roll` (E = 5, DROLLW = 5 deg) imports
+/// with `[wheel] deviation_roll_rad` and no other deviation key; the gated scene
+/// `mbench_wheel_deviation_left` (every deviation and rate) exports with E = 5 and its two lines
+/// and imports back as the same scene.
+#[test]
+fn the_wheels_deviations_import_and_export_back() {
+    let dir = common::tempdir("m1_wheel_deviation");
+    let deck = root().join("reference/contact_wheelrail/testbank/examples_trans/m1_steady_roll.inp");
+    let scene = import(&deck, &dir.join("scenes"), &[]).remove(0);
+    let s = WheelRailScene::from_file(&scene).unwrap();
+    assert_eq!(s.wheel_deviation.position, [0.0, 0.0, 0.0, 5f64.to_radians(), 0.0, 0.0]);
+    assert_eq!(s.wheel_deviation.velocity, [0.0; 6]);
+    let text = std::fs::read_to_string(&scene).unwrap();
+    assert_eq!(text.matches("deviation_").count(), 1, "{text}");
+    let gated = root().join("scenes/wheelrail/mbench_wheel_deviation_left.toml");
+    let (original, back) = round_trip(&gated, &dir.join("back"));
+    assert_eq!(original.wheel_deviation.position, [0.5, 0.8, 0.2, 0.002, 0.003, 0.01]);
+    assert_eq!(original.wheel_deviation.velocity, [4.0, 6.0, 5.0, 0.02, 0.01, 0.005]);
+    // CONTACT's deck has no choice of the wheel surface (the scene takes CONTACT's mesh).
+    assert_eq!(values(&back), WheelRailScene { wheel_mesh: false, ..values(&original) });
+    let deck = std::fs::read_to_string(dir.join("back/deck/mbench_wheel_deviation_left.inp")).unwrap();
+    assert_eq!(deck.matches("0022035    V-L-D-C-M-Z-E").count(), 1, "{deck}");
+    assert!(deck.contains("  4.0   6.0   5.0   0.02   0.01   0.005      VXWHL"), "{deck}");
+}
+
 /// Shifts from rest (T = 1, P = 2): t1_zws's five cases (S_WS 0 and 0.4 mm, two scenes) export
 /// with T = 1 and S_WS and import back as the same scenes (but the cases' numbers). (Run by CONTACT, the exported deck of
 /// cases 2-5 prints the shipped deck's totals digit for digit, 2026-11-29.)

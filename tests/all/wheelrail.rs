@@ -6,7 +6,7 @@ use creepbench::pipeline::wheelrail::{solve, CaseResult};
 use creepbench::wheelrail::curve::{Arc, Curve, Line};
 use creepbench::wheelrail::rail::{RailPlacement, Track};
 use creepbench::wheelrail::side::Side;
-use creepbench::wheelrail::wheel::{Pose, Velocity, WheelsetGeometry};
+use creepbench::wheelrail::wheel::{Pose, Velocity, WheelDeviation, WheelsetGeometry};
 use creepbench::wheelrail::{Vertical, WheelRailCase};
 
 const MODELS: [&str; 8] = ["contact", "fastsim", "uba", "linear", "she", "polach", "fastrip", "relaxation"];
@@ -27,6 +27,7 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side) -> WheelRailC
             flange_back_distance_mm: 1360.0,
             flange_back_position_mm: -70.0,
             nominal_radius_mm: 460.0,
+            deviation: WheelDeviation::NONE,
         },
         pose: Pose { yaw_rad: m * 0.0005, ..Pose::default() },
         velocity: Velocity { vs_mm_s: 2000.0, vpitch_rad_s: -2000.0 / 459.9, ..Velocity::default() },

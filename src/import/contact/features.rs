@@ -847,8 +847,8 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         feature: WheelRailFeature::WheelDeviation,
         name: "flexible wheelset deviations",
         control: "E, DXWHL..VPITCHW",
-        supported: false,
-        reason: "supported: E = 0-3 (a rigid wheelset); the wheel's own position and rotation relative to the wheelset (E = 4, 5: DXWHL .. DPITCHW about the wheel's own reference, and their rates) are not carried",
+        supported: true,
+        reason: "carried as `[wheel] deviation_*`: the wheel's profile origin shifted and the wheel turned by DROLLW, DYAWW on the wheelset (DPITCHW kept, not moving a round wheel, as CONTACT), their rates in the wheel's material velocity and spin",
         used: |c| {
             let w = c.state.wheel_deviation?;
             let given = w.position.iter().chain(&w.velocity).any(|&x| x != 0.0);

@@ -24,7 +24,7 @@ use super::{scene_name, SceneFiles};
 use crate::physics::material::combine_bodies;
 use crate::scene::wheelrail::{
     CaseRow, LongitudinalSpec, MotionSpec, MuBy, MuVariation, PlacementSpec, ProfileSpec, RailDeviationSpec, SideSpec,
-    VerticalSpec, WheelRailScene,
+    VerticalSpec, WheelDeviationSpec, WheelRailScene,
 };
 use crate::scene::wheelrail_profile::PROFILE_DEFAULTS;
 use crate::scene::{MaterialSpec, Origin};
@@ -311,6 +311,10 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         flange_back_distance_mm: wheelset.fbdist_mm,
         flange_back_position_mm: wheelset.fbpos_mm,
         nominal_radius_mm: wheelset.nomrad_mm,
+        wheel_deviation: s
+            .wheel_deviation
+            .map(|w| WheelDeviationSpec { position: w.position, velocity: w.velocity })
+            .unwrap_or_default(),
         mu,
         mu_variation,
         material: MaterialSpec {

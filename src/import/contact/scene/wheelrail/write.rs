@@ -92,6 +92,7 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
     wheel.push(("flange_back_distance_mm", Value::Float(s.flange_back_distance_mm)));
     wheel.push(("flange_back_position_mm", Value::Float(s.flange_back_position_mm)));
     wheel.push(("nominal_radius_mm", Value::Float(s.nominal_radius_mm)));
+    wheel.extend(wheel_deviation(s));
     let vertical = if s.vertical == VerticalSpec::Force { "force" } else { "position" };
     let mut cases = vec![("vertical", Value::String(vertical.into()))];
     if s.longitudinal == LongitudinalSpec::Force {
@@ -139,6 +140,27 @@ fn rail_deviation(s: &WheelRailScene) -> Pairs {
         "deviation_vroll_rad_s",
     ];
     let d = s.rail_deviation;
+    let values = d.position.into_iter().chain(d.velocity);
+    KEYS.into_iter().zip(values).filter(|(_, v)| *v != 0.0).map(|(k, v)| (k, Value::Float(v))).collect()
+}
+
+/// The wheel's deviation keys where they are not 0.
+fn wheel_deviation(s: &WheelRailScene) -> Pairs {
+    const KEYS: [&str; 12] = [
+        "deviation_x_mm",
+        "deviation_y_mm",
+        "deviation_z_mm",
+        "deviation_roll_rad",
+        "deviation_yaw_rad",
+        "deviation_pitch_rad",
+        "deviation_vx_mm_s",
+        "deviation_vy_mm_s",
+        "deviation_vz_mm_s",
+        "deviation_vroll_rad_s",
+        "deviation_vyaw_rad_s",
+        "deviation_vpitch_rad_s",
+    ];
+    let d = s.wheel_deviation;
     let values = d.position.into_iter().chain(d.velocity);
     KEYS.into_iter().zip(values).filter(|(_, v)| *v != 0.0).map(|(k, v)| (k, Value::Float(v))).collect()
 }
