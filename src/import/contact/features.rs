@@ -149,7 +149,7 @@ pub const FEATURES: &[Feature] = &[
         name: "friction laws other than Coulomb's and the falling laws",
         control: "L",
         supported: false,
-        reason: "supported: L = 0 (Coulomb), 2, 3, 4 (friction falling with the slip velocity, with its memory MEMDST, MEM_S0) or L = 1 keeping it",
+        reason: "supported: L = 0 (Coulomb), 2, 3, 4 (friction falling with the slip velocity, with its memory MEMDST, MEM_S0) or L = 1 keeping it; not L = 6, friction falling with the surface temperature (FREF, TREF, DFHEAT, DTHEAT: the temperatures are computed, H = 3, but not fed back into the friction)",
         used: |c| digit("L (in force)", c.state.friction_law, !matches!(c.state.friction_law, 0 | 2..=4)),
     },
     Feature {
