@@ -22,6 +22,9 @@
 //! case, GG3, LAYTHK, TAU_C0 (the yield limit, 0 for none) and K_TAU (the rate it moves at) after the material's POISS, GG; refused in transient
 //! rolling ([`check`]).
 //!
+//! Surface temperatures (`[material] bulk1_c` … `density2_kg_per_mm3`) are CONTACT's H = 3 in the
+//! first case, its BKTEMP, HEATCP, LAMBDA, DENS lines after the material, and H = 1 after.
+//!
 //! Viscoelastic bodies (`[material] visco_ratio`, `visco_time_s`) are CONTACT's M = 1 in every
 //! case, FG 1 = FG 2 and TC 1 = TC 2 after the material's POISS, GG; refused rolling along −x or
 //! with bilinear tractions ([`check`]).
@@ -424,9 +427,15 @@ fn ldcmze(p: &Problem, case: &Case, out: &mut String) {
 /// slip-velocity iteration's start (G = 4: INISLP, OMGSLP) and its progress printed (W = 2).
 fn solver_lines(p: &Problem, falling: bool, first: bool, out: &mut String) {
     let (g, w) = if falling { (4, 2) } else { (0, 1) };
+    // H = 3: surface temperatures with the first case's data (after the material), then H = 1.
+    let heat = match (p.material.heat.is_some(), first) {
+        (false, _) => 0,
+        (true, true) => 3,
+        (true, false) => 1,
+    };
     let _ = writeln!(
         out,
-        " 0{g}{}22{w}1    H-G-I-A-O-W-R   HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW, RETURN",
+        " {heat}{g}{}22{w}1    H-G-I-A-O-W-R   HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW, RETURN",
         if first { 0 } else { 1 }
     );
     // Dissimilar bodies: the outer iteration's MAXOUT (1 for K = 0: CONTACT sets it so anyway).
@@ -559,6 +568,12 @@ fn kinematics_and_material(p: &Problem, rolling: Option<(f64, f64, f64)>, out: &
 fn geometry(p: &Problem, rolling: Option<(f64, f64, f64)>, load_varies: bool, b: Option<[f64; 6]>, out: &mut String) {
     let (m, g) = (&p.material, &p.grid);
     kinematics_and_material(p, rolling, out);
+    // H = 3: both bodies' BKTEMP, HEATCP, LAMBDA, DENS after the material.
+    for (a, t) in m.heat.iter().flatten().enumerate() {
+        let (c, l, d) = (t.heat_capacity_j_per_kg_c, t.conductivity_w_per_mm_c, t.density_kg_per_mm3);
+        let n = a + 1;
+        let _ = writeln!(out, "  {:?}   {c:?}   {l:?}   {d:?}    BKTEMP{n}, HEATCP{n}, LAMBDA{n}, DENS{n}", t.bulk_c);
+    }
     if p.geometry.elliptic() && !load_varies && p.grid_edges.is_none() {
         let e = p.hertz();
         let _ = writeln!(out, "  -3                                          IPOTCN");

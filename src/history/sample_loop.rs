@@ -123,6 +123,8 @@ pub struct Field {
     pub px_mpa: Vec<f64>,
     pub py_mpa: Vec<f64>,
     pub state: Vec<ElementState>,
+    /// Both bodies' surface temperatures [°C] where the model computed them.
+    pub temperature_c: Option<[Vec<f64>; 2]>,
 }
 
 /// Run `def` over the problem's samples, keeping the fields of the steps `keep` selects.
@@ -140,6 +142,7 @@ pub fn run_with_fields(
                 px_mpa: v.tx_mpa.to_vec(),
                 py_mpa: v.ty_mpa.to_vec(),
                 state: v.state.map(<[ElementState]>::to_vec).unwrap_or_default(),
+                temperature_c: v.temperature_c.map(|t| t.map(<[f64]>::to_vec)),
             });
         }
     };

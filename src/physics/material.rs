@@ -25,6 +25,10 @@ pub struct Material {
     /// `visco_time_s`; CONTACT's M = 1 with FG 1 = FG 2, TC 1 = TC 2); `None`: elastic.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub visco: Option<Visco>,
+    /// Both bodies' thermal constants where the scene asks for surface temperatures
+    /// (`[material] bulk1_c` …; CONTACT's H = 3, [`super::temperature`]); `None`: none computed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub heat: Option<[super::temperature::Thermal; 2]>,
 }
 
 /// A standard linear solid in its Kelvin–Voigt form (CONTACT's M = 1, user guide "Viscoelastic
@@ -128,7 +132,16 @@ fn is_zero(v: &f64) -> bool {
 impl Material {
     /// From G and ν; E follows as `2 G (1 + ν)`.
     pub fn from_g(g_mpa: f64, poisson: f64) -> Self {
-        Self { g_mpa, poisson, e_mpa: 2.0 * g_mpa * (1.0 + poisson), k: 0.0, bodies: None, layer: None, visco: None }
+        Self {
+            g_mpa,
+            poisson,
+            e_mpa: 2.0 * g_mpa * (1.0 + poisson),
+            k: 0.0,
+            bodies: None,
+            layer: None,
+            visco: None,
+            heat: None,
+        }
     }
 
     /// From the two bodies' constants, combined as CONTACT combines them ([`combine_bodies`]),
@@ -150,7 +163,16 @@ impl Material {
 
     /// From E and ν; G follows as `E / (2 (1 + ν))`.
     pub fn from_e(e_mpa: f64, poisson: f64) -> Self {
-        Self { g_mpa: e_mpa / (2.0 * (1.0 + poisson)), poisson, e_mpa, k: 0.0, bodies: None, layer: None, visco: None }
+        Self {
+            g_mpa: e_mpa / (2.0 * (1.0 + poisson)),
+            poisson,
+            e_mpa,
+            k: 0.0,
+            bodies: None,
+            layer: None,
+            visco: None,
+            heat: None,
+        }
     }
 
     /// Two-body contact modulus E* [MPa] with `1/E* = 2 (1 − ν²) / E` (two identical bodies).

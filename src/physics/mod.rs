@@ -18,6 +18,7 @@ pub mod material;
 pub mod moment;
 pub mod pressure;
 pub mod slip;
+pub mod temperature;
 
 pub use bound::project_to_bound;
 pub use friction::{FallingTerms, FrictionLaw, Memory, RowFriction};

@@ -348,7 +348,8 @@ fn run_builtin(
     }
     let mut text = history::stress::header();
     for (step, grid, [pn, tx, ty]) in &kept {
-        let view = solvers::FieldView { grid, pressure_mpa: pn, tx_mpa: tx, ty_mpa: ty, state: None };
+        let view =
+            solvers::FieldView { grid, pressure_mpa: pn, tx_mpa: tx, ty_mpa: ty, state: None, temperature_c: None };
         let rows = history::stress::rows(*step, &view, &problem.material, at)
             .map_err(|source| solvers::contact::ContactRunError::Step { step: *step, source })?;
         text.push_str(&rows);

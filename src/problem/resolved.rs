@@ -47,6 +47,9 @@ pub struct ResolvedScene {
     /// Viscoelastic bodies (`[material] visco_ratio`, `visco_time_s`; absent: elastic).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub visco: Option<crate::physics::material::Visco>,
+    /// Both bodies' thermal constants (`[material] bulk1_c` …; absent: no surface temperatures).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub heat: Option<[crate::physics::temperature::Thermal; 2]>,
     pub c11: f64,
     pub c22: f64,
     pub c23: f64,
@@ -188,6 +191,7 @@ impl ResolvedScene {
             kalker_k: p.material.coupled().then_some(p.material.k),
             layer: p.material.layer,
             visco: p.material.visco,
+            heat: p.material.heat,
             c11: p.coefficients.c11,
             c22: p.coefficients.c22,
             c23: p.coefficients.c23,

@@ -6,6 +6,7 @@ use super::keys::{key, Absent, Allowed, Keys};
 use super::reader::{Range, Section};
 use super::MaterialSpec;
 use crate::error::InputError;
+use crate::physics::temperature::Thermal;
 
 /// A combined modulus [MPa].
 const MODULUS: Allowed = Allowed::Number(Range::new(0.0, false, 1e7, true), "");
@@ -130,6 +131,98 @@ pub const VISCO_KEYS: Keys = Keys {
     ],
 };
 
+/// A body's bulk temperature [°C] (above absolute zero).
+const BULK: Allowed = Allowed::Number(Range::new(-273.15, false, 1e4, true), "");
+/// A positive thermal constant.
+const THERMAL: Allowed = Allowed::Number(Range::new(0.0, false, 1e10, true), "");
+/// With the other seven heat keys.
+const WITH_HEAT: Absent = Absent::Text("– (no surface temperatures; with the other seven)");
+
+/// `[material]`'s thermal constants of both bodies for their surface temperatures
+/// (`<!-- keys:material_heat -->`, CONTACT's H = 3; physics/temperature.rs), all eight or none.
+pub const HEAT_KEYS: Keys = Keys {
+    id: "material_heat",
+    owner: file!(),
+    keys: &[
+        key(
+            "bulk1_c",
+            "°C",
+            BULK,
+            WITH_HEAT,
+            r#"body 1's bulk (initial) temperature T0 (CONTACT's BKTEMP1): `bulk1_c = 0.0`"#,
+        ),
+        key(
+            "heat_capacity1_j_per_kg_c",
+            "J/(kg °C)",
+            THERMAL,
+            WITH_HEAT,
+            r#"body 1's specific heat capacity c_p (HEATCP1): `heat_capacity1_j_per_kg_c = 450.0`"#,
+        ),
+        key(
+            "conductivity1_w_per_mm_c",
+            "W/(mm °C)",
+            THERMAL,
+            WITH_HEAT,
+            r#"body 1's thermal conductivity λ (LAMBDA1): `conductivity1_w_per_mm_c = 0.05`"#,
+        ),
+        key(
+            "density1_kg_per_mm3",
+            "kg/mm³",
+            THERMAL,
+            WITH_HEAT,
+            r#"body 1's density ρ (DENS1): `density1_kg_per_mm3 = 7.85e-6`"#,
+        ),
+        key(
+            "bulk2_c",
+            "°C",
+            BULK,
+            WITH_HEAT,
+            r#"body 2's bulk temperature (BKTEMP2); with all eight keys the exact model (steady rolling only) adds the columns temp1_max_c, temp2_max_c, the bodies' largest surface temperature on the contact: `bulk2_c = 150.0`"#,
+        ),
+        key(
+            "heat_capacity2_j_per_kg_c",
+            "J/(kg °C)",
+            THERMAL,
+            WITH_HEAT,
+            r#"body 2's c_p (HEATCP2): `heat_capacity2_j_per_kg_c = 450.0`"#,
+        ),
+        key(
+            "conductivity2_w_per_mm_c",
+            "W/(mm °C)",
+            THERMAL,
+            WITH_HEAT,
+            r#"body 2's λ (LAMBDA2): `conductivity2_w_per_mm_c = 0.05`"#,
+        ),
+        key(
+            "density2_kg_per_mm3",
+            "kg/mm³",
+            THERMAL,
+            WITH_HEAT,
+            r#"body 2's ρ (DENS2): `density2_kg_per_mm3 = 7.85e-6`"#,
+        ),
+    ],
+};
+
+/// Both bodies' thermal constants: all eight keys of [`HEAT_KEYS`] or none.
+fn heat(m: &mut Section) -> Result<Option<[Thermal; 2]>, InputError> {
+    if !together(m, &HEAT_KEYS, "all eight")? {
+        return Ok(None);
+    }
+    let one = Thermal {
+        bulk_c: m.num("bulk1_c")?,
+        heat_capacity_j_per_kg_c: m.num("heat_capacity1_j_per_kg_c")?,
+        conductivity_w_per_mm_c: m.num("conductivity1_w_per_mm_c")?,
+        density_kg_per_mm3: m.num("density1_kg_per_mm3")?,
+    };
+    let two = Thermal {
+        bulk_c: m.num("bulk2_c")?,
+        heat_capacity_j_per_kg_c: m.num("heat_capacity2_j_per_kg_c")?,
+        conductivity_w_per_mm_c: m.num("conductivity2_w_per_mm_c")?,
+        density_kg_per_mm3: m.num("density2_kg_per_mm3")?,
+    };
+    Ok(Some([one, two]))
+}
+
 /// Whether the keys of `keys` are given, all of them (`true`) or none (`false`); some of them is
 /// an error naming the first missing (`how_many`: "both", "all four").
 fn together(m: &Section, keys: &Keys, how_many: &str) -> Result<bool, InputError> {
@@ -157,7 +250,9 @@ pub fn read(top: &mut Section) -> Result<MaterialSpec, InputError> {
         .declare(&BODY_KEYS)
         .declare(&LAYER_KEYS)
         .declare(&PLASTIC_KEYS)
-        .declare(&VISCO_KEYS);
+        .declare(&VISCO_KEYS)
+        .declare(&HEAT_KEYS);
+    let heat = heat(&mut m)?;
     let layer = layer(&mut m)?;
     let visco = visco(&mut m)?;
     if let (Some(_), Some(_)) = (layer, visco) {
@@ -169,7 +264,7 @@ pub fn read(top: &mut Section) -> Result<MaterialSpec, InputError> {
     }
     if let Some(spec) = bodies(&mut m)? {
         m.finish()?;
-        return Ok(MaterialSpec { layer, visco, ..spec });
+        return Ok(MaterialSpec { layer, visco, heat, ..spec });
     }
     let g_mpa = m.opt_num("g_mpa")?;
     let e_mpa = m.opt_num("e_mpa")?;
@@ -182,7 +277,7 @@ pub fn read(top: &mut Section) -> Result<MaterialSpec, InputError> {
         ));
     }
     m.finish()?;
-    Ok(MaterialSpec { g_mpa, e_mpa, poisson, bodies: None, layer, visco })
+    Ok(MaterialSpec { g_mpa, e_mpa, poisson, bodies: None, layer, visco, heat })
 }
 
 /// Viscoelastic bodies (CONTACT's M = 1 with FG 1 = FG 2, TC 1 = TC 2): both keys or neither. A
@@ -268,5 +363,6 @@ fn bodies(m: &mut Section) -> Result<Option<MaterialSpec>, InputError> {
         bodies: Some(bodies),
         layer: None,
         visco: None,
+        heat: None,
     }))
 }

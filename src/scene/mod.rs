@@ -52,6 +52,8 @@ pub struct MaterialSpec {
     pub layer: Option<crate::physics::material::Layer>,
     /// Viscoelastic bodies (`visco_ratio`, `visco_time_s`; CONTACT's M = 1).
     pub visco: Option<crate::physics::material::Visco>,
+    /// Both bodies' thermal constants (`bulk1_c` … `density2_kg_per_mm3`; CONTACT's H = 3).
+    pub heat: Option<[crate::physics::temperature::Thermal; 2]>,
 }
 
 /// The creepage history kinds, as the scene declares them (scene.json's `loading.creepage`,
@@ -478,6 +480,7 @@ pub const KEY_TABLES: &[&keys::Keys] = &[
     &material::LAYER_KEYS,
     &material::PLASTIC_KEYS,
     &material::VISCO_KEYS,
+    &material::HEAT_KEYS,
     &grid::KEYS,
     &rolling::KEYS,
     &creepage::KEYS,

@@ -99,7 +99,14 @@ impl Tractions {
 
     /// The field view of these tractions on the planform's pressure.
     pub fn view<'a>(&'a self, grid: &'a Grid, planform: &'a Planform) -> FieldView<'a> {
-        FieldView { grid, pressure_mpa: &planform.pressure_mpa, tx_mpa: &self.tx, ty_mpa: &self.ty, state: None }
+        FieldView {
+            grid,
+            pressure_mpa: &planform.pressure_mpa,
+            tx_mpa: &self.tx,
+            ty_mpa: &self.ty,
+            state: None,
+            temperature_c: None,
+        }
     }
 
     /// Σ τx, Σ τy (one running sum each, flat order) and the moment sum [`moment_sum`].

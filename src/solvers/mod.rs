@@ -172,6 +172,13 @@ fn check_external(problem: &Problem) -> Result<(), InputError> {
             ),
         ));
     }
+    if let Some(name) = external.filter(|_| problem.material.heat.is_some()) {
+        return Err(InputError::new(
+            "solvers",
+            format!("{name:?} (an external model) with [material]'s heat keys (bulk1_c ..)"),
+            format!("surface temperatures only with the exact model ({})", contact::NAME),
+        ));
+    }
     if let Some(name) = external.filter(|_| problem.extra_slip.is_some()) {
         return Err(InputError::new(
             "solvers",
@@ -192,6 +199,17 @@ fn check_model(problem: &Problem, m: &ModelDef, shifts: bool) -> Result<(), Inpu
             "solvers",
             format!("{:?} with [friction] mu_rows", m.name),
             format!("models that take a friction per grid row: {} (leave {} out of this scene: it takes one mu for the whole contact)", FRICTION_ROWS.join(", "), m.name),
+        ));
+    }
+    if problem.material.heat.is_some() && m.name != contact::NAME {
+        return Err(InputError::new(
+            "solvers",
+            format!("{:?} with [material]'s heat keys (bulk1_c ..)", m.name),
+            format!(
+                "surface temperatures only with the exact model ({}; leave {} out of this scene, or the heat keys)",
+                contact::NAME,
+                m.name
+            ),
         ));
     }
     if problem.extra_slip.is_some() && m.name != contact::NAME {

@@ -35,6 +35,9 @@ pub struct FieldView<'a> {
     pub ty_mpa: &'a [f64],
     /// Adhesion / slip / exterior per element, where the model tells them apart.
     pub state: Option<&'a [ElementState]>,
+    /// Both bodies' surface temperatures per element [°C] where the model computes them
+    /// (`[material]`'s heat keys, [`crate::physics::temperature`]).
+    pub temperature_c: Option<[&'a [f64]; 2]>,
 }
 
 /// A creep-force model that solves one sample at a time.

@@ -45,7 +45,7 @@ fn the_report_lists_every_case_of_every_deck() {
     assert!(md.contains("## CONTACT's public examples"), "{md}");
     let table = std::fs::read_to_string(report.join("tables/contact_public.md")).unwrap();
     let public = PublicCases::load(&root().join("reference")).unwrap();
-    assert_eq!(public.decks.len(), 26);
+    assert_eq!(public.decks.len(), 30);
     let mut rows = 0;
     for (deck, cases) in &public.decks {
         assert!(md.contains(&format!("| {deck} | {} |", cases.len())), "{deck} not summarised");
@@ -58,11 +58,14 @@ fn the_report_lists_every_case_of_every_deck() {
             // Issue 46: bentall.inp case 1 printed no totals (O = 1: only an input warning; its FX
             // appears as case 2's first Newton iterate, tests/all/dissimilar.rs).
             let unprinted = deck == "bentall.inp" && c.case == 1;
+            // euro_tractcurv.inp case 1: CONTACT's MAX(T1,T2) printed at its loose EPS (below).
+            let loose = deck == "euro_tractcurv.inp" && c.case == 1;
             assert!(
                 verdict.starts_with("reproduced")
                     || verdict.starts_with("not supported")
                     || (verdict.starts_with("supported, not among these results") && verdict != status)
-                    || (unprinted && status.starts_with("supported; CONTACT printed no totals for it")),
+                    || (unprinted && status.starts_with("supported; CONTACT printed no totals for it"))
+                    || (loose && status.starts_with("**differs**: worst 5.4")),
                 "{line}"
             );
             rows += 1;
@@ -129,6 +132,13 @@ fn the_report_lists_every_case_of_every_deck() {
             // An extra rigid slip per element (E = 9, EXRHS): with no creepages, and all zero
             // beside dissimilar bodies.
             .chain([("conformal.inp", 4), ("testbank.inp", 24)])
+            // Surface temperatures (H = 3, then H = 1): full sliding, equal and unequal bulk
+            // temperatures, partial slip; their MAX(T1,T2) compared too.
+            .chain((1..=4).map(|c| ("ertz_temperature.inp", c)))
+            // testbank/examples_temp: the Coulomb traction curve with temperatures (cases 2-30;
+            // case 1 below) and m3_tempdep's first case.
+            .chain((2..=30).map(|c| ("euro_tractcurv.inp", c)))
+            .chain([("m3_tempdep.inp", 1)])
     {
         let row = format!("| {deck} | {case} | reproduced: worst ");
         let line = table.lines().find(|l| l.starts_with(&row)).unwrap_or_else(|| panic!("{row} not reproduced"));
@@ -142,17 +152,31 @@ fn the_report_lists_every_case_of_every_deck() {
     // (spence35.inp 1-35, testbank.inp 25-26), 13 of the elastic-perfectly plastic layer
     // (plastic_3bl.inp 2-14), conformal.inp 2 (PEN = 0), 43 of the layer that hardens or softens
     // (plastic_3bl.inp 15-57), conformal.inp 4 and testbank.inp 24 (E = 9: an extra rigid slip
-    // per element).
-    assert_eq!(table.lines().filter(|l| l.contains(" | reproduced: ")).count(), 481);
-    // The module-3 examples' other cases are refused naming what is missing.
+    // per element), ertz_temperature.inp 1-4 (surface temperatures, H = 3 and 1),
+    // euro_tractcurv.inp 2-30 and m3_tempdep.inp 1 (testbank/examples_temp, Coulomb with H = 3, 1).
+    assert_eq!(table.lines().filter(|l| l.contains(" | reproduced: ")).count(), 515);
+    // euro_tractcurv.inp case 1 (cx = 1e-5, two slip elements) differs: its MAX(T1,T2) 7.824e-5 is
+    // CONTACT's at EPS = 1e-6; CONTACT run to EPS = 1e-12 prints 7.827e-5, ours 7.82674e-5
+    // (tolerances.toml allows this case 6 half-units; the report shows it as it is).
+    let row = "| euro_tractcurv.inp | 1 | **differs**: worst ";
+    let line = table.lines().find(|l| l.starts_with(row)).expect("euro_tractcurv case 1's row");
+    let worst: f64 = line[row.len()..].split_whitespace().next().unwrap().parse().unwrap();
+    assert!(worst <= 6.0 && line.contains("temperature_max_in_rounding"), "{line}");
+    // Temperature-dependent friction (L = 6) and module 1's temperatures are refused naming them;
+    // conv_temp.inp gives INISLP as 1.0, which this importer's whole-number rule does not read.
     for (deck, case, missing) in [
-        ("conformal.inp", 3, "C = 9: influence functions other than the half-space's"),
-        ("ertz_temperature.inp", 1, "H = 3: surface temperatures"),
-        ("ertz_temperature.inp", 4, "H = 1: surface temperatures"),
+        ("m3_tempdep.inp", 2, "L (in force) = 6"),
+        ("euro_tractcurv.inp", 31, "L (in force) = 6"),
+        ("m1_tempdep.inp", 1, "H = 3: surface temperatures"),
+        ("conv_temp.inp", 1, "the deck is not read"),
     ] {
         let row = table.lines().find(|l| l.starts_with(&format!("| {deck} | {case} | "))).expect("row");
-        assert!(row.contains(&format!("not supported: {missing}")), "{row}");
+        assert!(row.contains(missing), "{row}");
     }
+    // The module-3 examples' other cases are refused naming what is missing.
+    let (deck, case, missing) = ("conformal.inp", 3, "C = 9: influence functions other than the half-space's");
+    let row = table.lines().find(|l| l.starts_with(&format!("| {deck} | {case} | "))).expect("row");
+    assert!(row.contains(&format!("not supported: {missing}")), "{row}");
     assert!(!table.contains("M = 4: material models other than elastic"), "{table}");
     for (deck, case) in [("bentall.inp", 2), ("bentall.inp", 6), ("testbank.inp", 4), ("testbank.inp", 9)] {
         assert!(table.contains(&format!("| {deck} | {case} | reproduced: worst ")), "{deck} {case}");

@@ -61,6 +61,7 @@ mod steady_restart;
 mod strip;
 mod studies;
 mod subsurface_contact;
+mod temperature;
 mod test_table;
 mod timing;
 mod tolerance_files;

@@ -121,8 +121,14 @@ fn sawtooth_indicator_catches_the_downwind_scheme() {
         }
     }
     let bound_ok = (0..g.len()).all(|k| t.tx[k].abs() <= 0.4 * local.planform.pressure_mpa[k] * (1.0 + 1e-12));
-    let field =
-        FieldView { grid: g, pressure_mpa: &local.planform.pressure_mpa, tx_mpa: &t.tx, ty_mpa: &t.ty, state: None };
+    let field = FieldView {
+        grid: g,
+        pressure_mpa: &local.planform.pressure_mpa,
+        tx_mpa: &t.tx,
+        ty_mpa: &t.ty,
+        state: None,
+        temperature_c: None,
+    };
     let saw = sawtooth_index(&field);
     assert!(bound_ok, "the bound holds even for the unstable scheme");
     assert!(saw > 0.5, "downwind sawtooth index {saw}");

@@ -39,6 +39,12 @@ pub const MZ_Q: &str = "mz_in_rounding";
 /// (SHIFT X) and Y.
 pub const CX: &str = "cx_in_rounding";
 pub const CY: &str = "cy_in_rounding";
+/// The largest surface temperature of both bodies on the contact [°C] (H = 1, 3), against
+/// CONTACT's MAX(T1,T2): the larger of the history's [`TEMP1`] and [`TEMP2`].
+pub const TEMP_Q: &str = "temperature_max_in_rounding";
+/// The exact solver's columns of each body's largest surface temperature on the contact.
+pub const TEMP1: &str = "temp1_max_c";
+pub const TEMP2: &str = "temp2_max_c";
 /// FN where the approach is prescribed (N = 0: the solver finds FN), against CONTACT's FN.
 pub const FN_Q: &str = "fn_in_rounding";
 /// The creepage or shift solved for where CONTACT prints it at its noise level (a value zero by
@@ -197,6 +203,10 @@ impl PublicCases {
         };
         let mz: Option<BTreeMap<usize, f64>> =
             h.column(MZ).map(|v| h.rows.iter().map(|r| r.sample.step).zip(v).collect());
+        let temperature: Option<BTreeMap<usize, f64>> = h.column(TEMP1).zip(h.column(TEMP2)).map(|(one, two)| {
+            let max = one.iter().zip(&two).map(|(a, b)| a.max(*b));
+            h.rows.iter().map(|r| r.sample.step).zip(max).collect()
+        });
         // The steps whose FN the solver found for a prescribed approach (scene.json's loading).
         let loading = scene.scene.loading_rows().map_err(|e| format!("scene.json's loading: {e}"))?;
         let by_approach: Vec<usize> = loading.iter().filter(|s| s.pen_mm.is_some()).map(|s| s.step).collect();
@@ -223,6 +233,10 @@ impl PublicCases {
             }
             if let Some(m) = mz.as_ref().and_then(|m| m.get(&step)) {
                 out.push(d((MZ_Q, t.mz_nmm), *m));
+            }
+            if let (Some(ours), Some(printed)) = (temperature.as_ref().and_then(|m| m.get(&step)), t.temperature_max_c)
+            {
+                out.push(d((TEMP_Q, printed), *ours));
             }
         }
         Ok(out)
@@ -299,7 +313,7 @@ impl ReferenceSet for PublicCases {
             let ctx = Ctx { scene: &ours.name, solver, against: AGAINST, rules };
             match self.row_diffs(ours, h) {
                 Ok(diffs) => {
-                    for q in [FX, FY, MZ_Q, FX_NOISE, FY_NOISE, CX, CY, CX_NOISE, CY_NOISE, FN_Q] {
+                    for q in [FX, FY, MZ_Q, FX_NOISE, FY_NOISE, CX, CY, CX_NOISE, CY_NOISE, FN_Q, TEMP_Q] {
                         let fs = diffs.iter().filter(|d| d.quantity == q).map(|d| finding(&ctx, d));
                         out.extend(fs.max_by(|a, b| a.severity().total_cmp(&b.severity())));
                     }

@@ -142,12 +142,21 @@ pub struct State {
     pub visco: Option<[f64; 4]>,
     /// Whether the case's M is 1 (its viscoelastic values persist).
     pub m1: bool,
+    /// BKTEMP, HEATCP, LAMBDA, DENS of body 1 then body 2 as last read (H = 3).
+    pub heat: Option<[f64; 8]>,
+    /// Whether the case computes surface temperatures (H = 1 or 3; the values persist).
+    pub heated: bool,
 }
 
 impl State {
     /// GG3, LAYTHK, TAU_C0, K_TAU of the interface layer in force: M = 4 with the values last read.
     pub fn layer_in_force(&self) -> Option<[f64; 4]> {
         self.layer.filter(|_| self.m4)
+    }
+
+    /// BKTEMP, HEATCP, LAMBDA, DENS of both bodies in force: H ≥ 1 with the values last read.
+    pub fn heat_in_force(&self) -> Option<[f64; 8]> {
+        self.heat.filter(|_| self.heated)
     }
 
     /// FG 1, FG 2, TC 1, TC 2 of the viscoelastic bodies in force: M = 1 with the values last read.
@@ -379,7 +388,8 @@ impl CaseReader<'_> {
         if matches!(d.c, 2..=4 | 9) {
             self.rolling_and_material(&d, state)?;
         }
-        self.damping_and_heat(&d)?;
+        state.heated = d.h >= 1;
+        self.damping_and_heat(&d, state)?;
         if d.d == 2 {
             state.potcon = Some(self.potcon()?);
         }
@@ -449,14 +459,15 @@ impl CaseReader<'_> {
     }
 
     /// M = 2: the damping line; H = 3: both bodies' temperature lines (and BETAPL with M = 4).
-    /// Read past: the project models neither.
-    fn damping_and_heat(&mut self, d: &Digits) -> Result<(), DeckError> {
+    /// The damping is read past (not modelled); the temperature data are kept.
+    fn damping_and_heat(&mut self, d: &Digits, state: &mut State) -> Result<(), DeckError> {
         if d.m2 == 2 {
             self.reals("CDAMPN, CDAMPT, DFNMAX, DFTMAX", 4)?;
         }
         if d.h == 3 {
-            self.reals("BKTEMP1, HEATCP1, LAMBDA1, DENS1", 4)?;
-            self.reals("BKTEMP2, HEATCP2, LAMBDA2, DENS2", 4)?;
+            let one = self.reals("BKTEMP1, HEATCP1, LAMBDA1, DENS1", 4)?;
+            let two = self.reals("BKTEMP2, HEATCP2, LAMBDA2, DENS2", 4)?;
+            state.heat = Some([one[0], one[1], one[2], one[3], two[0], two[1], two[2], two[3]]);
             if d.m == 4 {
                 self.reals("BETAPL", 1)?;
             }

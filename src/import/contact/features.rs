@@ -23,6 +23,13 @@ pub struct Feature {
     pub used: fn(&Case3) -> Option<String>,
 }
 
+/// Surface temperatures the import carries: H ≥ 1 with the data of an H = 3, in steady rolling,
+/// without a plastic layer.
+fn heat_carried(c: &Case3) -> bool {
+    let plastic = layer_in_force(c).is_some_and(|l| l[2] > 1e-10);
+    c.state.heat_in_force().is_some() && c.digits.t == 3 && !plastic
+}
+
 /// Whether the case's subsurface points are all explicit (ISUBS = 9) in body 1 (Z ≥ 0), and some.
 fn explicit_points(c: &Case3) -> bool {
     let b = &c.state.subsurface;
@@ -142,7 +149,7 @@ pub const FEATURES: &[Feature] = &[
         name: "friction laws other than Coulomb's and the falling laws",
         control: "L",
         supported: false,
-        reason: "supported: L = 0 (Coulomb), 2, 3, 4 (friction falling with the slip velocity, with its memory MEMDST, MEM_S0) or L = 1 keeping it",
+        reason: "supported: L = 0 (Coulomb), 2, 3, 4 (friction falling with the slip velocity, with its memory MEMDST, MEM_S0) or L = 1 keeping it; not L = 6, friction falling with the surface temperature (FREF, TREF, DFHEAT, DTHEAT: the temperatures are computed, H = 3, but not fed back into the friction)",
         used: |c| digit("L (in force)", c.state.friction_law, !matches!(c.state.friction_law, 0 | 2..=4)),
     },
     Feature {
@@ -279,10 +286,20 @@ pub const FEATURES: &[Feature] = &[
     },
     Feature {
         name: "surface temperatures",
-        control: "H",
+        control: "H, BKTEMP, HEATCP, LAMBDA, DENS",
+        supported: true,
+        reason: "imported as [material] bulk1_c, heat_capacity1_j_per_kg_c, conductivity1_w_per_mm_c, density1_kg_per_mm3 and body 2's: the exact model computes both bodies' surface temperatures after the tractions, their largest over the contact in the columns temp1_max_c, temp2_max_c (docs/models.md, \"Surface temperatures\")",
+        used: |c| heat_carried(c).then(|| format!("H = {}", c.digits.h)),
+    },
+    Feature {
+        name: "surface temperatures outside steady rolling, with a plastic layer, or without their data",
+        control: "H, T, M, TAU_C0",
         supported: false,
-        reason: "supported: H = 0",
-        used: |c| digit("H", c.digits.h, c.digits.h != 0),
+        reason: "supported: H = 1, 3 in steady rolling (T = 3, as CONTACT's `calc_temp`) on elastic bodies or an elastic layer, after H = 3 gave the data; the heat of a plastic layer's work (BETAPL) is not carried",
+        used: |c| {
+            let refused = c.digits.h != 0 && !heat_carried(c);
+            refused.then(|| format!("H = {}, T = {}, M = {}", c.digits.h, c.digits.t, c.digits.m))
+        },
     },
     Feature {
         name: "preprocessing only (the case is not solved)",

@@ -27,6 +27,7 @@ pub mod coupled;
 pub mod direction;
 pub mod force;
 pub mod hardening;
+pub mod heat;
 pub mod mirror;
 pub mod restart;
 pub mod stepper;

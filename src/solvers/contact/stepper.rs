@@ -6,6 +6,7 @@ use super::coupled::{self, Couplings, Kind};
 use super::direction;
 use super::force;
 use super::hardening::{Hardening, HardeningOutcome};
+use super::heat;
 use super::influence::{Basis, Kernel};
 use super::mirror;
 use super::normal::{NormalParams, NormalSolver};
@@ -50,6 +51,7 @@ const SECONDS_PER_COST: f64 = 1.3e-7;
 /// A run estimated to take longer than `[limits] max_estimated_s` is refused before it starts.
 fn check(p: &Problem) -> Result<(), InputError> {
     check_kinetic_floor(p)?;
+    check_heat(p)?;
     check_coupled(p)?;
     if p.friction.is_falling() && p.loading.rows().any(|s| s.courant.is_some()) {
         return Err(InputError::new(
@@ -119,6 +121,23 @@ fn check(p: &Problem) -> Result<(), InputError> {
         p.limits.max_estimated_s,
         format!("a limit above the exact-theory solver's estimated {estimated_s:.0} s for {} rows on {}x{} elements (raise it to run this scene)", p.loading.rows().count(), p.grid.mx, p.grid.my),
     ))
+}
+
+/// Surface temperatures ([`heat`]) are computed in steady rolling (CONTACT's `calc_temp` stops
+/// at T ≠ 3) on elastic bodies or an elastic layer (a plastic layer's heat, BETAPL, is not carried).
+fn check_heat(p: &Problem) -> Result<(), InputError> {
+    if p.material.heat.is_none() {
+        return Ok(());
+    }
+    let allowed = "surface temperatures in steady rolling (kind = \"sweep\", rolling.motion = \"rolling\") on elastic bodies or an elastic layer (CONTACT's H = 3 with T = 3; the heat of a plastic layer, BETAPL, is not carried)";
+    if p.loading.is_transient() || p.rolling.motion == Motion::Shift {
+        let what = if p.rolling.motion == Motion::Shift { "shifts" } else { "transient rolling" };
+        return Err(InputError::new("material.bulk1_c", format!("surface temperatures with {what}"), allowed));
+    }
+    if p.material.layer.is_some_and(|l| l.yield_mpa.is_some()) {
+        return Err(InputError::new("material.bulk1_c", "surface temperatures with a plastic layer", allowed));
+    }
+    Ok(())
 }
 
 /// Dissimilar bodies (K ≠ 0, [`coupled`]): the outer iteration is written for Coulomb's one μ, a
@@ -323,6 +342,9 @@ struct Contact<'a> {
     hardening: Option<Hardening>,
     /// How the last step's fixed point on the yield limits ended.
     hardened: Option<HardeningOutcome>,
+    /// Both bodies' surface temperatures of the last steady solve, the scene's frame
+    /// (`[material]`'s heat keys, [`heat`]).
+    heated: Option<crate::physics::temperature::Temperatures>,
 }
 
 /// A field in the scene's frame where the solver works in the mirrored one.
@@ -335,6 +357,10 @@ struct Shown {
 
 /// The history's columns of a run with falling friction.
 const VELDEP_COLUMNS: [&str; 4] = ["veldep_iterations", "veldep_converged", "mu_min", "mu_max"];
+
+/// The history's columns of a run with falling friction and surface temperatures.
+const VELDEP_HEAT_COLUMNS: [&str; 6] =
+    ["veldep_iterations", "veldep_converged", "mu_min", "mu_max", heat::COLUMNS[0], heat::COLUMNS[1]];
 
 /// The history's columns of a run with a layer that hardens or softens: the fixed point's
 /// iterations, whether it converged, and the yield limits over the contact [MPa].
@@ -467,6 +493,7 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
             Hardening::new(l, g.len(), 0.5 * (k0.xx[own] + k0.yy[own]), p.contact_solver.tolerance)
         }),
         hardened: None,
+        heated: None,
         k0,
     }))
 }
@@ -638,6 +665,20 @@ impl Contact<'_> {
 }
 
 impl Contact<'_> {
+    /// A steady row with surface temperatures (`[material]`'s heat keys): both bodies' fields
+    /// from the last solve (CONTACT's `calc_temp` after the tangential problem), their largest
+    /// over the contact as the row's [`heat::COLUMNS`].
+    fn with_temperatures(&mut self, at: &Sample, mut step: Step) -> Step {
+        let (Some(bodies), Some(r)) = (self.p.material.heat.as_ref(), self.last.as_ref()) else { return step };
+        let pn = &self.loaded().pn;
+        let v_mm_s = at.speed_mm_s(self.p.rolling.v_mm_s);
+        let t = heat::temperatures(&self.p.grid, bodies, pn, r, v_mm_s, self.mirrored);
+        let shown_pn = self.shown.as_ref().map_or(pn, |s| &s.pn);
+        step.extra.extend(heat::maxima(&t, shown_pn));
+        self.heated = Some(t);
+        step
+    }
+
     /// The sample's undeformed distance: its own (CONTACT's IBASE = 1 per case, in CONTACT's
     /// coordinates x_C = −x), else the geometry's at its load.
     fn undeformed_mm(&self, at: &Sample) -> Vec<f64> {
@@ -947,13 +988,15 @@ impl Stepper for Contact<'_> {
         self.turn(at)?;
         let at = &self.frame(at);
         if self.veldep.is_some() {
-            return self.veldep_step(at, true);
+            let step = self.veldep_step(at, true)?;
+            return Ok(self.with_temperatures(at, step));
         }
         let (r, found) = self.solve_coupled(at, Kind::Steady, |c, start| c.steady_solve(at, start))?;
         self.found = self.unframe(found);
         self.older = None;
         self.after_steady = Some(SteadyStart::of(at));
-        Ok(self.record(r))
+        let step = self.record(r);
+        Ok(self.with_temperatures(at, step))
     }
 
     /// The shift from rest (CONTACT T = 1, P = 2): its traction is the previous traction of the
@@ -1009,12 +1052,13 @@ impl Stepper for Contact<'_> {
     }
 
     fn more_columns(&self) -> &'static [&'static str] {
-        if self.hardening.is_some() {
-            &HARDENING_COLUMNS
-        } else if self.veldep.is_some() {
-            &VELDEP_COLUMNS
-        } else {
-            &[]
+        let heat = self.p.material.heat.is_some();
+        match (self.hardening.is_some(), self.veldep.is_some(), heat) {
+            (true, _, _) => &HARDENING_COLUMNS,
+            (_, true, true) => &VELDEP_HEAT_COLUMNS,
+            (_, true, false) => &VELDEP_COLUMNS,
+            (_, false, true) => &heat::COLUMNS,
+            _ => &[],
         }
     }
 
@@ -1028,6 +1072,7 @@ impl Stepper for Contact<'_> {
 
     fn field(&self) -> Option<FieldView<'_>> {
         let (l, r) = (self.loaded.as_ref()?, self.last.as_ref()?);
+        let temperature_c = self.heated.as_ref().map(|t| [t.body[0].as_slice(), t.body[1].as_slice()]);
         if let Some(s) = &self.shown {
             return Some(FieldView {
                 grid: &self.p.grid,
@@ -1035,8 +1080,16 @@ impl Stepper for Contact<'_> {
                 tx_mpa: &s.px,
                 ty_mpa: &s.py,
                 state: Some(&s.state),
+                temperature_c,
             });
         }
-        Some(FieldView { grid: &self.p.grid, pressure_mpa: &l.pn, tx_mpa: &r.px, ty_mpa: &r.py, state: Some(&r.state) })
+        Some(FieldView {
+            grid: &self.p.grid,
+            pressure_mpa: &l.pn,
+            tx_mpa: &r.px,
+            ty_mpa: &r.py,
+            state: Some(&r.state),
+            temperature_c,
+        })
     }
 }

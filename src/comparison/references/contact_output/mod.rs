@@ -78,6 +78,9 @@ pub struct Totals {
     /// APPROACH [mm] and PMAX [N/mm²].
     pub approach_mm: Printed,
     pub pn_max_mpa: Printed,
+    /// The largest surface temperature of both bodies on the contact [°C] (H ≥ 1: `MAX(T1,T2)`
+    /// beside PMAX, or the larger of `MAX(T1)`, `MAX(T2)`); `None`: not printed.
+    pub temperature_max_c: Option<Printed>,
     /// The KINEMATIC CONSTANTS block, printed with OUTPUT ≥ 2.
     pub kinematics: Option<Kinematics>,
     /// The FRICTION LAW PARAMETERS block.
@@ -268,9 +271,19 @@ fn totals(c: &ScannedCase, t: &Block) -> Result<Totals, ContactOutputError> {
         y: tangential(["FY/FSTAT/FN", "FY/FN", "CREEP Y", "SHIFT Y"])?,
         approach_mm: get(r, "APPROACH")?,
         pn_max_mpa: get(r, "PMAX")?,
+        temperature_max_c: temperature_max(r),
         kinematics: c.block(BlockKind::Kinematics).map(|k| kinematics(case, k)).transpose()?,
         friction: friction(c.block(BlockKind::Friction)),
         statistics: c.block(BlockKind::Statistics).map(|s| statistics(case, s)).transpose()?,
+    })
+}
+
+/// The largest surface temperature the second line prints (`m_soutpt.f90`: MAX(T1,T2) with PMAX,
+/// else MAX(T1) and MAX(T2)).
+fn temperature_max(r: &Block) -> Option<Printed> {
+    r.get("MAX(T1,T2)").or_else(|| {
+        let (one, two) = (r.get("MAX(T1)")?, r.get("MAX(T2)")?);
+        Some(if two.value > one.value { two } else { one })
     })
 }
 

@@ -84,6 +84,11 @@ pub(super) fn write(src: &Source, draft: &mut Draft) -> Result<(), InputError> {
     if let Some([fg, _, tc, _]) = s.visco_in_force().filter(|v| v[0] > 0.0) {
         material.extend([("visco_ratio", Value::Float(fg)), ("visco_time_s", Value::Float(tc))]);
     }
+    // H = 1, 3: both bodies' thermal constants (features.rs takes them in steady rolling).
+    if let Some(h) = s.heat_in_force() {
+        let keys = crate::scene::material::HEAT_KEYS.keys.iter().map(|k| k.key);
+        material.extend(keys.zip(h).map(|(k, v)| (k, Value::Float(v))));
+    }
     draft.insert("material", table(material));
     draft.insert("grid", table(grid));
     Ok(())

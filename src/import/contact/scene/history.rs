@@ -66,7 +66,7 @@ pub(super) fn falling(s: &State) -> bool {
 fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static str> {
     let coulomb = a.friction_law == 0 && b.friction_law == 0;
     let coupled = crate::physics::material::combine_bodies(a.poiss, a.gg_mpa).k != 0.0;
-    let pairs: [(&'static str, bool); 16] = [
+    let pairs: [(&'static str, bool); 17] = [
         ("FN", load_varies || a.pen_or_fn == b.pen_or_fn),
         // Coulomb: FSTAT alone counts (CONTACT overwrites FKIN with it).
         (
@@ -88,6 +88,7 @@ fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static 
             "the viscoelastic bodies (M = 1: FG, TC, VELOC)",
             a.visco_in_force() == b.visco_in_force() && (a.visco_in_force().is_none() || a.veloc_mm_s == b.veloc_mm_s),
         ),
+        ("the surface temperatures (H: BKTEMP, HEATCP, LAMBDA, DENS)", a.heat_in_force() == b.heat_in_force()),
         ("MAXOUT of dissimilar bodies", !coupled || a.max_outer() == b.max_outer()),
         (
             "the potential contact (IPOTCN and its line)",
