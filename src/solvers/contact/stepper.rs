@@ -1073,22 +1073,16 @@ impl Stepper for Contact<'_> {
     fn field(&self) -> Option<FieldView<'_>> {
         let (l, r) = (self.loaded.as_ref()?, self.last.as_ref()?);
         let temperature_c = self.heated.as_ref().map(|t| [t.body[0].as_slice(), t.body[1].as_slice()]);
-        if let Some(s) = &self.shown {
-            return Some(FieldView {
-                grid: &self.p.grid,
-                pressure_mpa: &s.pn,
-                tx_mpa: &s.px,
-                ty_mpa: &s.py,
-                state: Some(&s.state),
-                temperature_c,
-            });
-        }
+        let (pn, px, py, state) = match &self.shown {
+            Some(s) => (&s.pn, &s.px, &s.py, &s.state),
+            None => (&l.pn, &r.px, &r.py, &r.state),
+        };
         Some(FieldView {
             grid: &self.p.grid,
-            pressure_mpa: &l.pn,
-            tx_mpa: &r.px,
-            ty_mpa: &r.py,
-            state: Some(&r.state),
+            pressure_mpa: pn,
+            tx_mpa: px,
+            ty_mpa: py,
+            state: Some(state),
             temperature_c,
         })
     }

@@ -140,8 +140,7 @@ fn rail_deviation(s: &WheelRailScene) -> Pairs {
         "deviation_vroll_rad_s",
     ];
     let d = s.rail_deviation;
-    let values = d.position.into_iter().chain(d.velocity);
-    KEYS.into_iter().zip(values).filter(|(_, v)| *v != 0.0).map(|(k, v)| (k, Value::Float(v))).collect()
+    nonzero(&KEYS, d.position.into_iter().chain(d.velocity))
 }
 
 /// The wheel's deviation keys where they are not 0.
@@ -161,8 +160,12 @@ fn wheel_deviation(s: &WheelRailScene) -> Pairs {
         "deviation_vpitch_rad_s",
     ];
     let d = s.wheel_deviation;
-    let values = d.position.into_iter().chain(d.velocity);
-    KEYS.into_iter().zip(values).filter(|(_, v)| *v != 0.0).map(|(k, v)| (k, Value::Float(v))).collect()
+    nonzero(&KEYS, d.position.into_iter().chain(d.velocity))
+}
+
+/// The keys `keys` with their `values`, those that are not 0.
+fn nonzero(keys: &[&'static str], values: impl Iterator<Item = f64>) -> Pairs {
+    keys.iter().zip(values).filter(|(_, v)| *v != 0.0).map(|(k, v)| (*k, Value::Float(v))).collect()
 }
 
 /// A profile's keys: its path (as the scene holds it), mirror_y, scale, smooth; mirror_z,
