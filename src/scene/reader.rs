@@ -178,6 +178,11 @@ impl<'a> Section<'a> {
         self
     }
 
+    /// This section's dotted name (`study.axis[0]`).
+    pub fn path(&self) -> &str {
+        &self.path
+    }
+
     /// Dotted name of `key` in this section.
     pub fn field(&self, key: &str) -> String {
         if self.path.is_empty() {

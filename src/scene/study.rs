@@ -194,14 +194,13 @@ fn as_f64(v: &Value) -> Option<f64> {
     }
 }
 
-/// The `n`th `[[study.axis]]` table (`a`), checked in this order: its name, varied keys, their
+/// One `[[study.axis]]` table (`a`), checked in this order: its name, varied keys, their
 /// common length, labels and x values.
 fn read_axis(mut a: Section) -> Result<Axis, InputError> {
-    let a_field = a.field("");
-    let field = a_field.trim_end_matches('.');
+    let field = a.path().to_string();
     let name = axis_name(&mut a)?;
-    let keys = a.family().into_iter().map(|(k, v)| axis_key(k, v, field)).collect::<Result<Vec<_>, _>>()?;
-    let len = axis_len(&keys, field)?;
+    let keys = a.family().into_iter().map(|(k, v)| axis_key(k, v, &field)).collect::<Result<Vec<_>, _>>()?;
+    let len = axis_len(&keys, &field)?;
     let labels = match a.opt_text_list("labels")? {
         None => keys[0].1.iter().map(label_of).collect(),
         Some(l) if l.len() == len => l,
