@@ -255,10 +255,15 @@ impl NormalSolver {
         let mut residual = f64::INFINITY;
         let mut iterations = 0;
         let mut converged = false;
+        // u = A p holds for the current p (kept by the step below when no element left or
+        // re-entered the contact set: then A p_new = scale (u − τ A t), one convolution saved).
+        let mut u_holds = false;
 
         while iterations < params.max_iter {
             iterations += 1;
-            matvec(conv, blend, &p, &mut u)?;
+            if !u_holds {
+                matvec(conv, blend, &p, &mut u)?;
+            }
             let mut nc = 0usize;
             let mut gsum = 0.0;
             for k in 0..n {
@@ -304,9 +309,12 @@ impl NormalSolver {
                 return Err(ContactError::NonFinite("normal CG step length"));
             }
             p_old.copy_from_slice(&p);
+            let mut n_left = 0usize;
             for k in 0..n {
                 if p[k] > 0.0 {
-                    p[k] = (p[k] - tau * t[k]).max(0.0);
+                    let step = p[k] - tau * t[k];
+                    n_left += usize::from(step <= 0.0);
+                    p[k] = step.max(0.0);
                 }
             }
             // Overlapping elements outside the contact set re-enter (Polonsky & Keer, step 9).
@@ -333,6 +341,12 @@ impl NormalSolver {
                 psum += p[k];
             }
             residual = dsum / psum;
+            u_holds = n_left == 0 && n_overlap == 0;
+            if u_holds {
+                for k in 0..n {
+                    u[k] = scale * (u[k] - tau * r[k]);
+                }
+            }
             if residual < params.tol {
                 converged = true;
                 break;
