@@ -276,8 +276,10 @@ fn run_is_identical_with_one_or_two_threads() {
                 suite.to_str().unwrap(),
                 "--reference",
                 root().join("reference").to_str().unwrap(),
+                "--fits",
+                root().join("fits").to_str().unwrap(),
             ])
-            // The scenes' CSVs are compared: no fits, no re-timing (wall times are not results).
+            // The scenes' CSVs and the fits' outcomes are compared, not the wall times: no re-timing.
             .args([
                 "--results",
                 res.to_str().unwrap(),
