@@ -198,7 +198,8 @@ fn grid_geometry(
     Ok(fn_n)
 }
 
-/// `[friction]` of a falling law (L = 2, 3, 4) with its memory; `None`: Coulomb (`contact.mu`).
+/// `[friction]` of a falling law (L = 2, 3, 4) with its memory, or of the temperature law (L = 6:
+/// FREF, TREF, DFHEAT, DTHEAT; its memory is refused, features.rs); `None`: Coulomb (`contact.mu`).
 /// An absent second term (F2 = 0) and an absent memory (MEMDST = 0) are left out: they change no μ.
 /// Each term's SABSH is the one CONTACT uses, max(1e-4, SABSH) where its F < 1e-8 (`fric_input`,
 /// `m_friclaw.f90` lines 833-846: [`FallingTerms::scale`]), so that a deck CONTACT accepts with
@@ -208,6 +209,7 @@ fn friction_table(s: &State) -> Option<Value> {
         2 => "linear",
         3 => "rational",
         4 => "exponential",
+        6 => return Some(temperature_table(&s.friction)),
         _ => return None,
     };
     let f = &s.friction;
@@ -224,6 +226,12 @@ fn friction_table(s: &State) -> Option<Value> {
         pairs.extend([("memory_mm", Value::Float(s.memory[0])), ("memory_s0_mm_s", Value::Float(s.memory[1]))]);
     }
     Some(table(pairs))
+}
+
+/// `[friction]` of the temperature law (L = 6) of FREF, TREF, DFHEAT, DTHEAT `f`.
+fn temperature_table(f: &[f64]) -> Value {
+    let names = ["fref", "tref_c", "dfheat", "dtheat_c"];
+    table(vec![("law", Value::String("temperature".into()))].into_iter().chain(names.into_iter().zip(f.iter().map(|&v| Value::Float(v)))).collect())
 }
 
 /// `[model]` of CONTACT's FASTSIM (M = 3) or FaStrip (M = 5): Hertz's pressure of its B (3 parabolic, 2 ellipsoidal)
