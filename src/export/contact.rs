@@ -46,8 +46,9 @@
 //! its histories.
 //!
 //! The temperature law (`[friction] law = "temperature"`) is CONTACT's L = 6 in the first case
-//! (FREF, TREF, DFHEAT, DTHEAT and MEMDST = 0: no memory) and kept (L = 1) afterwards, with the
-//! damping of its iteration (G = 4: INISLP = 0, OMGSLP) and its progress printed (W = 2).
+//! (FREF, TREF, DFHEAT, DTHEAT and MEMDST, MEM_S0) and kept (L = 1) afterwards, with its
+//! iteration's start (G = 4: INISLP = 1 from s = 0, −1 from s = V: the memory's rate) and damping
+//! (OMGSLP), its progress printed (W = 2).
 
 use crate::error::InputError;
 use crate::physics::halfspace::influence::Basis;
@@ -455,7 +456,13 @@ fn solver_lines(p: &Problem, iterates: bool, first: bool, out: &mut String) {
         let _ = writeln!(
             out,
             "   {}   {:?}                                INISLP, OMGSLP",
-            inislp(p.contact_solver.inislp),
+            match p.friction.temperature() {
+                // L = 6 keeps its start as the memory's rate: s = 0 is INISLP = 1 (INISLP = 0
+                // would start from the previous case's slip), s = V is -1.
+                Some(_) if p.contact_solver.inislp == InitialSlip::Above => -1,
+                Some(_) => 1,
+                None => inislp(p.contact_solver.inislp),
+            },
             p.contact_solver.omgslp
         );
     }
@@ -529,7 +536,8 @@ fn friction_lines(p: &Problem, mu: f64, out: &mut String) {
                 "  {:?}   {:?}   {:?}   {:?}        FREF, TREF, DFHEAT, DTHEAT",
                 t.fref, t.tref_c, t.dfheat, t.dtheat_c
             );
-            let _ = writeln!(out, "  0.0   0.0                           MEMDST, MEM_S0");
+            let m = &p.memory;
+            let _ = writeln!(out, "  {:?}   {:?}                           MEMDST, MEM_S0", m.memory_mm, m.s0_mm_s);
             return;
         }
         FrictionLaw::Linear(t) | FrictionLaw::Rational(t) | FrictionLaw::Exponential(t) => t,

@@ -92,7 +92,7 @@ pub const KEYS: Keys = Keys {
             "mm",
             Allowed::Number(Range::new(0.0, true, 1e4, true), ""),
             Absent::Text("absent: no memory"),
-            r#"the friction memory's relaxation distance d_c (CONTACT's MEMDST): along the material path μ relaxes to μ(s) as dμ/dt = −(max(s, s0)/d_c)(μ − μ(s)), one backward-Euler step per time step (grid element in steady rolling); 0 (or ≤ 1e-9) is no memory: `memory_mm = 0.01`"#,
+            r#"the friction memory's relaxation distance d_c (CONTACT's MEMDST): along the material path μ relaxes to μ(s) as dμ/dt = −(max(s, s0)/d_c)(μ − μ(s)), one backward-Euler step per time step (grid element in steady rolling); 0 (or ≤ 1e-9) is no memory. With `law = "temperature"` μ relaxes to μ(T) at the constant rate max(s_i, s0)/d_c, s_i the slip velocity the fixed point starts from (`[contact_solver] inislp`: 0, or V with "above"), as CONTACT's L = 6: `memory_mm = 0.01`"#,
         ),
         key(
             "memory_s0_mm_s",
@@ -181,13 +181,7 @@ pub fn read(top: &mut Section, mu: Option<f64>, my: usize) -> Result<FrictionSpe
         "rational" => FrictionLaw::Rational(terms),
         _ => FrictionLaw::Exponential(terms),
     };
-    let memory = match f.opt_num("memory_mm")? {
-        Some(memory_mm) => Memory { memory_mm, s0_mm_s: f.num_or_default("memory_s0_mm_s")? },
-        None => {
-            f.refuse("memory_s0_mm_s", "only with memory_mm (the memory's relaxation distance)")?;
-            Memory::NONE
-        }
-    };
+    let memory = memory(&mut f)?;
     let mu_static = law.mu_static();
     if !(mu_static > 0.0 && mu_static <= 1e3) {
         let given = format!("{} (fkin + f1 + f2 = {mu_static})", terms.fkin);
@@ -208,12 +202,24 @@ pub fn read(top: &mut Section, mu: Option<f64>, my: usize) -> Result<FrictionSpe
     Ok(FrictionSpec { law, memory, mu_static, rows: None })
 }
 
+/// `memory_mm`, `memory_s0_mm_s` (CONTACT's MEMDST, MEM_S0): none without `memory_mm`.
+fn memory(f: &mut Section) -> Result<Memory, InputError> {
+    match f.opt_num("memory_mm")? {
+        Some(memory_mm) => Ok(Memory { memory_mm, s0_mm_s: f.num_or_default("memory_s0_mm_s")? }),
+        None => {
+            f.refuse("memory_s0_mm_s", "only with memory_mm (the memory's relaxation distance)")?;
+            Ok(Memory::NONE)
+        }
+    }
+}
+
 /// `law = "temperature"` (CONTACT's L = 6): FREF, TREF, DFHEAT, DTHEAT with FREF + DFHEAT > 0
-/// (`m_friclaw.f90` lines 819-824); no memory (CONTACT's memory with L = 6 relaxes at the rate of
-/// the slip velocity its iteration starts from, not the solution's); μ's static value is FREF.
+/// (`m_friclaw.f90` lines 819-824), and the memory (with L = 6 CONTACT relaxes μ at the rate of
+/// the slip velocity its iteration starts from, `solvers/contact/tempdep.rs`); μ's static value
+/// is FREF.
 fn temperature(mut f: Section, mu: Option<f64>) -> Result<FrictionSpec, InputError> {
-    for key in FALLING_KEYS.into_iter().chain(["memory_mm", "memory_s0_mm_s"]) {
-        f.refuse(key, "only with a falling law (law = \"linear\", \"rational\" or \"exponential\"); law = \"temperature\" takes fref, tref_c, dfheat, dtheat_c and no memory")?;
+    for key in FALLING_KEYS {
+        f.refuse(key, "only with a falling law (law = \"linear\", \"rational\" or \"exponential\"); law = \"temperature\" takes fref, tref_c, dfheat, dtheat_c")?;
     }
     f.refuse("mu_rows", "only with law = \"coulomb\" (the temperature law is one for the whole contact)")?;
     let t = TemperatureLaw {
@@ -224,8 +230,13 @@ fn temperature(mut f: Section, mu: Option<f64>) -> Result<FrictionSpec, InputErr
     };
     if t.fref + t.dfheat <= 0.0 {
         let given = format!("{} (fref + dfheat = {})", t.dfheat, t.fref + t.dfheat);
-        return Err(InputError::new(f.field("dfheat"), given, "fref + dfheat > 0 (μ at high temperatures stays positive)"));
+        return Err(InputError::new(
+            f.field("dfheat"),
+            given,
+            "fref + dfheat > 0 (μ at high temperatures stays positive)",
+        ));
     }
+    let memory = memory(&mut f)?;
     f.finish()?;
     if let Some(given) = mu.filter(|&m| m != t.fref) {
         return Err(InputError::new(
@@ -234,7 +245,7 @@ fn temperature(mut f: Section, mu: Option<f64>) -> Result<FrictionSpec, InputErr
             format!("left out with law = \"temperature\", or equal to its fref = {}", t.fref),
         ));
     }
-    Ok(FrictionSpec { law: FrictionLaw::Temperature(t), memory: Memory::NONE, mu_static: t.fref, rows: None })
+    Ok(FrictionSpec { law: FrictionLaw::Temperature(t), memory, mu_static: t.fref, rows: None })
 }
 
 /// `[friction] mu_rows` (Coulomb only): μ of every grid row, `my` values in (0, 1000], the first

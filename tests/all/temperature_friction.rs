@@ -4,7 +4,8 @@
 //! = 0: μ = FREF everywhere; every temperature above TREF + DTHEAT: μ = FREF + DFHEAT), and the
 //! fixed point's own property (each slip element's traction at μ(T) of the temperatures its
 //! tractions make). CONTACT's printed totals: tests/all/contact_public.rs (euro_tractcurv.inp
-//! cases 32-60, 62-90, 92-120, m3_tempdep.inp 2-3). Refusals and the `export contact` round trip.
+//! cases 32-60, 62-90, 92-120, m3_tempdep.inp 2-3, conv_temp.inp 1-5). Refusals and the
+//! `export contact` round trip.
 
 use crate::common::{problem, run, run_scene, scene_text};
 use creepbench::comparison::references::contact_public::{TEMP1, TEMP2};
@@ -46,7 +47,9 @@ fn assert_close(what: &str, ours: &[f64], theirs: &[f64], rel: f64) {
 
 #[test]
 fn the_temperature_law_at_its_limits_is_coulombs() {
-    let coulomb = |mu: f64| scene("[\"contact\"]", mu, "").replace("[creepage]", "[contact_solver]\ntolerance = 1e-11\n[creepage]");
+    let coulomb = |mu: f64| {
+        scene("[\"contact\"]", mu, "").replace("[creepage]", "[contact_solver]\ntolerance = 1e-11\n[creepage]")
+    };
     // DFHEAT = 0: μ = FREF whatever the temperature.
     let (fx, t, slip) = columns(&scene("[\"contact\"]", 0.3, &law(0.3, 0.0, 0.0, 100.0)));
     let (fx_c, t_c, slip_c) = columns(&coulomb(0.3));
@@ -81,18 +84,18 @@ fn falling_with_the_temperature_lowers_the_force_of_full_sliding() {
 }
 
 #[test]
-fn the_law_is_refused_without_heat_with_a_memory_or_beside_other_models() {
+fn the_law_is_refused_without_heat_or_beside_other_models() {
     let simulate = ["simulate", "s.toml", "--out", "out"];
     let cases = [
         ("no_heat", scene("[\"contact\"]", 0.3, &law(0.3, 0.0, -0.1, 400.0)).replace(HEAT, ""), "friction.law"),
-        (
-            "memory",
-            scene("[\"contact\"]", 0.3, &law(0.3, 0.0, -0.1, 400.0)).replace("dtheat_c = 400.0", "dtheat_c = 400.0\nmemory_mm = 0.01"),
-            "friction.memory_mm",
-        ),
         ("negative", scene("[\"contact\"]", 0.3, &law(0.3, 0.0, -0.3, 400.0)), "friction.dfheat"),
         ("fastsim", scene("[\"contact\", \"fastsim\"]", 0.3, &law(0.3, 0.0, -0.1, 400.0)), "fastsim"),
-        ("mu", scene("[\"contact\"]", 0.3, &law(0.3, 0.0, -0.1, 400.0)).replace("fn_n = 100000.0", "fn_n = 100000.0\nmu = 0.25"), "contact.mu"),
+        (
+            "mu",
+            scene("[\"contact\"]", 0.3, &law(0.3, 0.0, -0.1, 400.0))
+                .replace("fn_n = 100000.0", "fn_n = 100000.0\nmu = 0.25"),
+            "contact.mu",
+        ),
     ];
     for (name, text, field) in cases {
         let (code, err, dir) = run_scene(&format!("tempfric_{name}"), &text, &simulate);

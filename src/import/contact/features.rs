@@ -30,10 +30,11 @@ fn heat_carried(c: &Case3) -> bool {
     c.state.heat_in_force().is_some() && c.digits.t == 3 && !plastic
 }
 
-/// Whether the case's friction is the temperature law (L = 6) as the import carries it: no
-/// memory, its surface temperatures computed.
+/// Whether the case's friction is the temperature law (L = 6) as the import carries it: its
+/// surface temperatures computed, a memory only with INISLP != 0.
 fn temperature_law(c: &Case3) -> bool {
-    c.state.friction_law == 6 && c.state.memory[0] <= 1e-9 && heat_carried(c)
+    let from_previous = c.state.memory[0] > 1e-9 && c.state.slip_start.is_none_or(|(i, _)| i == 0);
+    c.state.friction_law == 6 && !from_previous && heat_carried(c)
 }
 
 /// Whether the case's subsurface points are all explicit (ISUBS = 9) in body 1 (Z ≥ 0), and some.
@@ -162,18 +163,21 @@ pub const FEATURES: &[Feature] = &[
         name: "friction of the surface temperature",
         control: "L, FREF, TREF, DFHEAT, DTHEAT",
         supported: true,
-        reason: "imported as [friction] law = \"temperature\", fref, tref_c, dfheat, dtheat_c: the exact model's fixed point between the tractions and the surface temperatures of their frictional heat (docs/models.md, \"Temperature-dependent friction\"), stopped at CONTACT's fixed 1e-4 ([contact_solver] tempdep_tolerance) or after CONTACT's max(1, MAXIN - 10) + 1 iterations (tempdep_max_iterations), damped by OMGSLP",
+        reason: "imported as [friction] law = \"temperature\", fref, tref_c, dfheat, dtheat_c (MEMDST, MEM_S0 as memory_mm, memory_s0_mm_s, relaxing at the rate of the start INISLP gives, [contact_solver] inislp): the exact model's fixed point between the tractions and the surface temperatures of their frictional heat (docs/models.md, \"Temperature-dependent friction\"), stopped at CONTACT's fixed 1e-4 ([contact_solver] tempdep_tolerance) or after CONTACT's max(1, MAXIN - 10) + 1 iterations (tempdep_max_iterations), damped by OMGSLP",
         used: |c| temperature_law(c).then(|| format!("L (in force) = 6: FREF, TREF, DFHEAT, DTHEAT = {:?}", c.state.friction)),
     },
     Feature {
-        name: "friction of the surface temperature with a memory or without surface temperatures",
-        control: "L, MEMDST, H",
+        name: "friction of the surface temperature with a memory started from the previous case, or without surface temperatures",
+        control: "L, MEMDST, INISLP, H",
         supported: false,
-        reason: "supported: L = 6 with MEMDST = 0 and surface temperatures computed (H = 1, 3 in steady rolling): CONTACT's memory with L = 6 relaxes at the rate of the slip velocity its iteration starts from (INISLP), not the solution's, and without H the temperatures are never computed",
+        reason: "supported: L = 6 with surface temperatures computed (H = 1, 3 in steady rolling) and MEMDST = 0, or a memory with INISLP != 0: CONTACT's memory with L = 6 relaxes at the rate of the slip velocity its iteration starts from, 0 (INISLP > 0) or VELOC (< 0); INISLP = 0 starts from the previous case's slip, which a steady case does not leave; without H the temperatures are never computed",
         used: |c| {
             let six = c.state.friction_law == 6;
-            let memory = c.state.memory[0] > 1e-9;
-            (six && (memory || !heat_carried(c))).then(|| format!("L = 6 with MEMDST = {}, H = {}", c.state.memory[0], c.digits.h))
+            let from_previous = c.state.memory[0] > 1e-9 && c.state.slip_start.is_none_or(|(i, _)| i == 0);
+            (six && (from_previous || !heat_carried(c))).then(|| {
+                let inislp = c.state.slip_start.map_or(0, |(i, _)| i);
+                format!("L = 6 with MEMDST = {}, INISLP = {inislp}, H = {}", c.state.memory[0], c.digits.h)
+            })
         },
     },
     Feature {
@@ -343,7 +347,7 @@ pub const FEATURES: &[Feature] = &[
         name: "the slip-velocity iteration of a falling law, the temperature iteration of L = 6",
         control: "INISLP, OMGSLP",
         supported: true,
-        reason: "carried as [contact_solver] inislp (0: previous, > 0: below, < 0: above) and omgslp, stopped at CONTACT's fixed 1e-3 (veldep_tolerance); with L = 6 OMGSLP alone (INISLP sets only a memory's rate, and the memory is refused), stopped at CONTACT's 1e-4 (tempdep_tolerance) or its MAXIN's iterations (tempdep_max_iterations); with L = 2, 3, 4 MAXIN is not carried (190 iterations at most)",
+        reason: "carried as [contact_solver] inislp (0: previous, > 0: below, < 0: above) and omgslp, stopped at CONTACT's fixed 1e-3 (veldep_tolerance); with L = 6 OMGSLP, and INISLP where a memory takes its rate from it, stopped at CONTACT's 1e-4 (tempdep_tolerance) or its MAXIN's iterations (tempdep_max_iterations); with L = 2, 3, 4 MAXIN is not carried (190 iterations at most)",
         used: |c| {
             let (inislp, omgslp) = c.state.slip_start.unwrap_or((0, crate::scene::OMGSLP));
             matches!(c.state.friction_law, 2..=4 | 6).then(|| format!("INISLP = {inislp}, OMGSLP = {omgslp}"))

@@ -377,7 +377,6 @@ const HARDENING_COLUMNS: [&str; 4] = ["hardening_iterations", "hardening_converg
 /// Iteration limit of the slip-velocity fixed point (CONTACT: max(1, MAXIN − 10) = 190).
 const VELDEP_MAX_ITERATIONS: usize = 190;
 
-
 /// The rolling distance of a row's step [mm]: its own Courant number's (a table's `courant`) or
 /// `[rolling]`'s.
 fn row_dq_mm(p: &Problem, s: &Sample) -> f64 {
@@ -634,12 +633,16 @@ impl Contact<'_> {
             None => &mut self.tangential,
         };
         let unheated = heat::unheated(grid, bodies, pn, v_mm_s);
+        // The memory's rate at the slip velocity the iteration starts from (CONTACT's L = 6 keeps
+        // its start, INISLP: V from above, else 0 in steady rolling).
+        let start_mm_s = if self.p.contact_solver.inislp == crate::scene::InitialSlip::Above { v_mm_s } else { 0.0 };
+        let theta = self.p.memory.theta(grid.dx_mm / v_mm_s, start_mm_s);
         let heated = |r: &StepResult| {
             let [one, _] = heat::temperatures(grid, bodies, pn, r, v_mm_s, false).body;
             one
         };
         let (r, outcome) = tempdep
-            .step(pn, unheated, heated, |g, start, tol| {
+            .step(pn, theta, unheated, heated, |g, start, tol| {
                 solver.set_bound(g)?;
                 solver.steady(&TangentialParams { tol, ..params }, start)
             })

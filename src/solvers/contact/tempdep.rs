@@ -68,13 +68,16 @@ impl TempDep {
         &self.temperature_c
     }
 
-    /// Solve one steady point on pressure `pn`: `unheated_c` the temperature of every element
+    /// Solve one steady point on pressure `pn`, `theta` the memory's weight of the upstream μ
+    /// (0: none; [`crate::physics::Memory::theta`] at the slip velocity the iteration starts
+    /// from, which CONTACT's L = 6 keeps, `m_stang.f90`): `unheated_c` the temperature of every element
     /// without frictional heat (the start), `heat(r)` the temperature of body 1 under solution
     /// `r` (the solver's frame), `solve(bound, start, tol)` the tangential problem with the bound
     /// μ_k pn_k [MPa] to the tolerance `tol`, warm started from `start` when given.
     pub fn step(
         &mut self,
         pn: &[f64],
+        theta: f64,
         unheated_c: Vec<f64>,
         mut heat: impl FnMut(&StepResult) -> Vec<f64>,
         mut solve: impl FnMut(&[f64], Option<(&[f64], &[f64])>, f64) -> Result<StepResult, ContactError>,
@@ -86,7 +89,7 @@ impl TempDep {
         let mut last: Option<StepResult> = None;
         let (mut inner, mut last_change) = (0, None);
         for it in 1..=self.options.max_iterations {
-            self.friction_field(&t, &mut mu, &mut mu_prev);
+            self.friction_field(&t, theta, &mut mu, &mut mu_prev);
             for k in 0..n {
                 bound[k] = mu[k] * pn[k];
             }
@@ -126,15 +129,17 @@ impl TempDep {
         unreachable!("the loop returns at its last iteration (max_iterations >= 1)")
     }
 
-    /// μ per element from T, and each element's μ_prev: the upstream element's μ in its row,
-    /// FREF (FSTAT) at the leading edge (`m_stang.f90`, the loop over the row with `is_ssrol`).
-    fn friction_field(&self, t: &[f64], mu: &mut [f64], mu_prev: &mut [f64]) {
+    /// μ per element from T, θ μ_prev + (1 − θ) μ(T), and each element's μ_prev: the upstream
+    /// element's μ in its row, FREF (FSTAT) at the leading edge (`m_stang.f90`, the loop over the
+    /// row with `is_ssrol`).
+    fn friction_field(&self, t: &[f64], theta: f64, mu: &mut [f64], mu_prev: &mut [f64]) {
         let mx = self.mx;
         for (row, (mu_row, prev_row)) in mu.chunks_mut(mx).zip(mu_prev.chunks_mut(mx)).enumerate() {
             let mut upstream = self.law.fref;
             for i in 0..mx {
                 prev_row[i] = upstream;
-                mu_row[i] = self.law.mu_at(t[row * mx + i]);
+                let mu_t = self.law.mu_at(t[row * mx + i]);
+                mu_row[i] = if theta == 0.0 { mu_t } else { theta * upstream + (1.0 - theta) * mu_t };
                 upstream = mu_row[i];
             }
         }

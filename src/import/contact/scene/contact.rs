@@ -209,7 +209,7 @@ fn friction_table(s: &State) -> Option<Value> {
         2 => "linear",
         3 => "rational",
         4 => "exponential",
-        6 => return Some(temperature_table(&s.friction)),
+        6 => return Some(temperature_table(&s.friction, s.memory)),
         _ => return None,
     };
     let f = &s.friction;
@@ -228,10 +228,16 @@ fn friction_table(s: &State) -> Option<Value> {
     Some(table(pairs))
 }
 
-/// `[friction]` of the temperature law (L = 6) of FREF, TREF, DFHEAT, DTHEAT `f`.
-fn temperature_table(f: &[f64]) -> Value {
+/// `[friction]` of the temperature law (L = 6) of FREF, TREF, DFHEAT, DTHEAT `f` and the memory
+/// MEMDST, MEM_S0 where there is one.
+fn temperature_table(f: &[f64], memory: [f64; 2]) -> Value {
     let names = ["fref", "tref_c", "dfheat", "dtheat_c"];
-    table(vec![("law", Value::String("temperature".into()))].into_iter().chain(names.into_iter().zip(f.iter().map(|&v| Value::Float(v)))).collect())
+    let mut pairs: Pairs = vec![("law", Value::String("temperature".into()))];
+    pairs.extend(names.into_iter().zip(f.iter().map(|&v| Value::Float(v))));
+    if memory[0] != 0.0 {
+        pairs.extend([("memory_mm", Value::Float(memory[0])), ("memory_s0_mm_s", Value::Float(memory[1]))]);
+    }
+    table(pairs)
 }
 
 /// `[model]` of CONTACT's FASTSIM (M = 3) or FaStrip (M = 5): Hertz's pressure of its B (3 parabolic, 2 ellipsoidal)

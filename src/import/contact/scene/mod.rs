@@ -271,8 +271,11 @@ fn contact_solver(last: &Case3) -> Option<Value> {
             pairs.push(("omgslp", Value::Float(omgslp)));
         }
     } else if outer_iteration(&last.state) {
-        // L = 6: the damping alone (no memory: INISLP would set only the memory's rate).
-        let (_, omgslp) = slip_iteration(&last.state);
+        // L = 6: the damping, and the start where a memory takes its rate from it.
+        let (start, omgslp) = slip_iteration(&last.state);
+        if last.state.memory[0] > 1e-9 && start != "previous" {
+            pairs.push(("inislp", Value::String(start.into())));
+        }
         pairs.push(("tempdep_tolerance", Value::Float(CONTACT_TEMPDEP_TOLERANCE)));
         let most = last.state.temperature_iterations();
         if most != crate::scene::TEMPDEP_MAX_ITERATIONS {
