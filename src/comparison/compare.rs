@@ -157,6 +157,9 @@ pub const BOUND_MARGIN: f64 = 1e-6;
 /// so a model that breaks physics fails the gate whatever its baseline says.
 pub fn traction_bound(s: &StoredScene, against: Against) -> Vec<Finding> {
     let mut out = Vec::new();
+    // The law's largest μ over the row's (FSTAT): above 1 only for friction rising with the
+    // temperature (L = 6, DFHEAT > 0).
+    let rise = s.scene.friction.as_ref().map_or(1.0, |law| law.mu_max() / law.mu_static());
     for (solver, h) in &s.histories {
         let carried: Option<BTreeMap<usize, f64>> = h
             .column(crate::solvers::fastsim_contact::CARRIED_LOAD)
@@ -166,7 +169,7 @@ pub fn traction_bound(s: &StoredScene, against: Against) -> Vec<Finding> {
         };
         let beyond = |(coef, r): &(f64, &crate::history::Row)| {
             let limit =
-                if r.sample.mu.is_nan() { f64::INFINITY } else { r.sample.mu * share(r) * (1.0 + BOUND_MARGIN) };
+                if r.sample.mu.is_nan() { f64::INFINITY } else { r.sample.mu * rise * share(r) * (1.0 + BOUND_MARGIN) };
             // NaN counts as beyond.
             coef.partial_cmp(&limit).is_none_or(std::cmp::Ordering::is_gt)
         };
@@ -184,9 +187,9 @@ pub fn traction_bound(s: &StoredScene, against: Against) -> Vec<Finding> {
                 quantity: "traction_bound".into(),
                 step: Some(r.sample.step),
                 ours: coef,
-                theirs: r.sample.mu,
-                diff: if coef.is_finite() { coef - r.sample.mu } else { f64::NAN },
-                allowed: BOUND_MARGIN * r.sample.mu.abs(),
+                theirs: r.sample.mu * rise,
+                diff: if coef.is_finite() { coef - r.sample.mu * rise } else { f64::NAN },
+                allowed: BOUND_MARGIN * (r.sample.mu * rise).abs(),
                 gated: true,
                 note: format!("|(Fx, Fy)|/FN beyond mu by more than {BOUND_MARGIN:e} relative"),
             });

@@ -44,6 +44,11 @@
 //! changes from one row to the next is given in the row where it first applies (C = 2: CHI, DQ,
 //! VELOC and the material again), as reference/contact_friction/README.contact_friction.md forms
 //! its histories.
+//!
+//! The temperature law (`[friction] law = "temperature"`) is CONTACT's L = 6 in the first case
+//! (FREF, TREF, DFHEAT, DTHEAT and MEMDST, MEM_S0) and kept (L = 1) afterwards, with its
+//! iteration's start (G = 4: INISLP = 1 from s = 0, −1 from s = V: the memory's rate) and damping
+//! (OMGSLP), its progress printed (W = 2).
 
 use crate::error::InputError;
 use crate::physics::halfspace::influence::Basis;
@@ -82,6 +87,8 @@ pub fn check(p: &Problem) -> Result<(), InputError> {
             check_sabsh("friction.sabsh1_mm_s", t.sabsh1_mm_s, ("friction.f1", t.f1))?;
             check_sabsh("friction.sabsh2_mm_s", t.sabsh2_mm_s, ("friction.f2", t.f2))
         }
+        // FREF > 0, FREF + DFHEAT > 0 (the scene's reader): CONTACT's ranges (`fric_input`).
+        FrictionLaw::Temperature(_) => Ok(()),
     }
 }
 
@@ -195,6 +202,8 @@ struct History {
     load_varies: bool,
     /// A friction law falling with the slip velocity (L = 2, 3, 4).
     falling: bool,
+    /// A law with an outer iteration around the tangential solve: falling or of the temperature (L = 6).
+    iterates: bool,
 }
 
 impl History {
@@ -209,6 +218,7 @@ impl History {
             // grid (−1) from PEN (`hzcalc3d`): the fixed grid and curvatures keep this project's.
             load_varies: rows.iter().any(|s| s.fn_n != rows[0].fn_n || s.pen_mm.is_some()),
             falling: p.friction.is_falling(),
+            iterates: p.friction.is_falling() || p.friction.temperature().is_some(),
         }
     }
 }
@@ -322,7 +332,7 @@ fn write_case(p: &Problem, h: &History, case: &Case, s: &Sample, stress: u8, out
     let _ = writeln!(out, "\n 3  MODULE      % step {}, t={} s", s.step, s.t_s);
     pbtnfs(p, h, case, s, stress, out);
     ldcmze(p, case, out);
-    solver_lines(p, h.falling, case.first, out);
+    solver_lines(p, h.iterates, case.first, out);
     loading_line(p, s, out);
     case_inputs(p, h, case, s, out);
     if let (3, Some(at)) = (stress, &p.stress) {
@@ -423,10 +433,11 @@ fn ldcmze(p: &Problem, case: &Case, out: &mut String) {
     let _ = writeln!(out, "  {ldc}      L-D-C-M-Z-E   FRCLAW, DISCNS, INFLCF, MATER , RZNORM, EXRHS");
 }
 
-/// The control digits H-G-I-A-O-W-R and the solver's iteration limits, with a falling law the
-/// slip-velocity iteration's start (G = 4: INISLP, OMGSLP) and its progress printed (W = 2).
-fn solver_lines(p: &Problem, falling: bool, first: bool, out: &mut String) {
-    let (g, w) = if falling { (4, 2) } else { (0, 1) };
+/// The control digits H-G-I-A-O-W-R and the solver's iteration limits, with a falling or the
+/// temperature law (`iterates`) the outer iteration's start and damping (G = 4: INISLP, OMGSLP)
+/// and its progress printed (W = 2).
+fn solver_lines(p: &Problem, iterates: bool, first: bool, out: &mut String) {
+    let (g, w) = if iterates { (4, 2) } else { (0, 1) };
     // H = 3: surface temperatures with the first case's data (after the material), then H = 1.
     let heat = match (p.material.heat.is_some(), first) {
         (false, _) => 0,
@@ -441,11 +452,17 @@ fn solver_lines(p: &Problem, falling: bool, first: bool, out: &mut String) {
     // Dissimilar bodies: the outer iteration's MAXOUT (1 for K = 0: CONTACT sets it so anyway).
     let maxout = if p.material.coupled() { p.contact_solver.max_outer } else { 1 };
     let _ = writeln!(out, "   999   200    30     {maxout}   1e-08          MAXGS, MAXIN, MAXNR, MAXOUT, EPS");
-    if falling {
+    if iterates {
         let _ = writeln!(
             out,
             "   {}   {:?}                                INISLP, OMGSLP",
-            inislp(p.contact_solver.inislp),
+            match p.friction.temperature() {
+                // L = 6 keeps its start as the memory's rate: s = 0 is INISLP = 1 (INISLP = 0
+                // would start from the previous case's slip), s = V is -1.
+                Some(_) if p.contact_solver.inislp == InitialSlip::Above => -1,
+                Some(_) => 1,
+                None => inislp(p.contact_solver.inislp),
+            },
             p.contact_solver.omgslp
         );
     }
@@ -490,6 +507,7 @@ fn law_digit(law: &FrictionLaw) -> u8 {
         FrictionLaw::Linear(_) => 2,
         FrictionLaw::Rational(_) => 3,
         FrictionLaw::Exponential(_) => 4,
+        FrictionLaw::Temperature(_) => 6,
     }
 }
 
@@ -503,12 +521,23 @@ fn inislp(start: InitialSlip) -> i8 {
     }
 }
 
-/// The friction lines of a case that reads its law: FSTAT, FKIN = μ (Coulomb), or the falling
-/// law's FKIN, F1, SABSH1, F2, SABSH2 and the memory MEMDST, MEM_S0.
+/// The friction lines of a case that reads its law: FSTAT, FKIN = μ (Coulomb), the falling
+/// law's FKIN, F1, SABSH1, F2, SABSH2 and the memory MEMDST, MEM_S0, or the temperature law's
+/// FREF, TREF, DFHEAT, DTHEAT and no memory (MEMDST = 0).
 fn friction_lines(p: &Problem, mu: f64, out: &mut String) {
     let t = match &p.friction {
         FrictionLaw::Coulomb { .. } => {
             let _ = writeln!(out, "  {mu:?}   {mu:?}                            FSTAT, FKIN");
+            return;
+        }
+        FrictionLaw::Temperature(t) => {
+            let _ = writeln!(
+                out,
+                "  {:?}   {:?}   {:?}   {:?}        FREF, TREF, DFHEAT, DTHEAT",
+                t.fref, t.tref_c, t.dfheat, t.dtheat_c
+            );
+            let m = &p.memory;
+            let _ = writeln!(out, "  {:?}   {:?}                           MEMDST, MEM_S0", m.memory_mm, m.s0_mm_s);
             return;
         }
         FrictionLaw::Linear(t) | FrictionLaw::Rational(t) | FrictionLaw::Exponential(t) => t,

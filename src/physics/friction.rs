@@ -1,6 +1,7 @@
-//! The friction law every model takes its traction bound from: Coulomb's constant μ, or CONTACT's
+//! The friction law every model takes its traction bound from: Coulomb's constant μ, CONTACT's
 //! friction falling with the local slip velocity s [mm/s] (laws L = 2, 3, 4 of `m_friclaw.f90`),
-//! with an optional friction memory (`m_stang.f90` lines 310-335; reference/contact_friction/README.md).
+//! with an optional friction memory (`m_stang.f90` lines 310-335; reference/contact_friction/README.md),
+//! or its friction varying with the surface temperature (L = 6, [`TemperatureLaw`]).
 
 use serde::{Deserialize, Serialize};
 
@@ -19,6 +20,33 @@ pub enum FrictionLaw {
     Rational(FallingTerms),
     /// L = 4: FKIN + F1 exp(−ln2 s/S1) + F2 exp(−ln2 s/S2).
     Exponential(FallingTerms),
+    /// L = 6: μ of the surface temperature ([`TemperatureLaw`]); in the slip velocity it is
+    /// constant, FREF (`fric_veldep_mu_steady`, `m_friclaw.f90` line 442).
+    Temperature(TemperatureLaw),
+}
+
+/// CONTACT's friction of the surface temperature T [°C] (L = 6, user guide sec. "Temperature
+/// dependent friction", eq. mu_T): FREF up to TREF, linear by DFHEAT over DTHEAT, FREF + DFHEAT above.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct TemperatureLaw {
+    /// μ at low temperatures, μ_ref (FREF).
+    pub fref: f64,
+    /// The temperature where μ starts changing, T_ref [°C] (TREF).
+    pub tref_c: f64,
+    /// The change of μ from T_ref to T_ref + ΔT_heat, Δμ_heat (DFHEAT; < 0: friction falling).
+    pub dfheat: f64,
+    /// The temperature span of the change, ΔT_heat > 0 [°C] (DTHEAT).
+    pub dtheat_c: f64,
+}
+
+impl TemperatureLaw {
+    /// μ(T) = FREF + DFHEAT · clamp(T − TREF, 0, DTHEAT)/DTHEAT (`fric_tempdep_mu_temp`,
+    /// `m_friclaw.f90` lines 475-478).
+    #[inline]
+    pub fn mu_at(&self, t_c: f64) -> f64 {
+        let dt = (t_c - self.tref_c).min(self.dtheat_c).max(0.0);
+        self.fref + dt * self.dfheat / self.dtheat_c
+    }
 }
 
 /// CONTACT's parameters of a falling law: FKIN, and two terms (F, SABSH [mm/s]).
@@ -48,12 +76,32 @@ impl FrictionLaw {
         match self {
             FrictionLaw::Coulomb { mu } => *mu,
             FrictionLaw::Linear(t) | FrictionLaw::Rational(t) | FrictionLaw::Exponential(t) => t.fkin + t.f1 + t.f2,
+            // FSTAT := FREF (`fric_update`, m_friclaw.f90 line 307)
+            FrictionLaw::Temperature(t) => t.fref,
         }
     }
 
-    /// Whether μ depends on the slip velocity (every law but Coulomb).
+    /// The largest μ the law gives, the bound of |(Fx, Fy)|/FN: FSTAT for Coulomb's law and the
+    /// falling ones (μ_s falls from μ_s(0); the memory keeps μ between μ_prev and μ_s), and
+    /// max(FREF, FREF + DFHEAT) for the temperature law.
+    pub fn mu_max(&self) -> f64 {
+        match self {
+            FrictionLaw::Temperature(t) => t.fref.max(t.fref + t.dfheat),
+            _ => self.mu_static(),
+        }
+    }
+
+    /// Whether μ depends on the slip velocity (L = 2, 3, 4; not Coulomb's nor the temperature law).
     pub fn is_falling(&self) -> bool {
-        !matches!(self, FrictionLaw::Coulomb { .. })
+        matches!(self, FrictionLaw::Linear(_) | FrictionLaw::Rational(_) | FrictionLaw::Exponential(_))
+    }
+
+    /// The temperature law (L = 6), where μ follows the surface temperature.
+    pub fn temperature(&self) -> Option<&TemperatureLaw> {
+        match self {
+            FrictionLaw::Temperature(t) => Some(t),
+            _ => None,
+        }
     }
 
     /// μ_s(s), the steady-sliding coefficient at slip velocity `s_mm_s` ≥ 0
@@ -62,6 +110,7 @@ impl FrictionLaw {
     pub fn mu_steady(&self, s_mm_s: f64) -> f64 {
         match self {
             FrictionLaw::Coulomb { mu } => *mu,
+            FrictionLaw::Temperature(t) => t.fref,
             // m_friclaw.f90 lines 422-426
             FrictionLaw::Linear(t) => {
                 let term = |f: f64, sh: f64| f * (1.0 - s_mm_s / (2.0 * FallingTerms::scale(f, sh))).max(0.0);
@@ -97,6 +146,7 @@ impl FrictionLaw {
         let sc = FallingTerms::scale;
         match self {
             FrictionLaw::Coulomb { mu } => (*mu, 0.0),
+            FrictionLaw::Temperature(t) => (t.fref, 0.0),
             FrictionLaw::Linear(t) => {
                 let term = |f: f64, sh: f64| {
                     let h = sc(f, sh);
@@ -138,7 +188,7 @@ impl FrictionLaw {
     pub fn steepest_fall_per_mm_s(&self) -> f64 {
         let s = FallingTerms::scale;
         match self {
-            FrictionLaw::Coulomb { .. } => 0.0,
+            FrictionLaw::Coulomb { .. } | FrictionLaw::Temperature(_) => 0.0,
             FrictionLaw::Linear(t) => t.f1 / (2.0 * s(t.f1, t.sabsh1_mm_s)) + t.f2 / (2.0 * s(t.f2, t.sabsh2_mm_s)),
             FrictionLaw::Rational(t) => {
                 t.f1 / s(t.f1, t.sabsh1_mm_s) + t.f2 * 9.0 / 8.0 / (3f64.sqrt() * s(t.f2, t.sabsh2_mm_s))
@@ -280,6 +330,23 @@ mod tests {
         let same = RowFriction::new(vec![0.3; 2]).expect("positive");
         let pn = [0.1234567, 2.0 / 3.0, 0.0, 1e-300];
         assert_eq!(same.bound_pressure(2, &pn), pn.to_vec());
+    }
+
+    #[test]
+    fn the_temperature_law_is_linear_between_its_two_plateaus() {
+        // User guide eq. mu_T: FREF up to TREF, FREF + DFHEAT beyond TREF + DTHEAT, linear between.
+        let t = TemperatureLaw { fref: 0.33, tref_c: 100.0, dfheat: -0.19, dtheat_c: 400.0 };
+        assert_eq!(t.mu_at(-50.0), 0.33);
+        assert_eq!(t.mu_at(100.0), 0.33);
+        assert!((t.mu_at(300.0) - (0.33 - 0.095)).abs() < 1e-15);
+        assert!((t.mu_at(500.0) - 0.14).abs() < 1e-15);
+        assert!((t.mu_at(5000.0) - 0.14).abs() < 1e-15);
+        let law = FrictionLaw::Temperature(t);
+        // FSTAT = FREF (`fric_update`); constant in the slip velocity; its largest μ is FREF.
+        assert_eq!((law.mu_static(), law.mu_steady(800.0), law.mu_max()), (0.33, 0.33, 0.33));
+        assert!(!law.is_falling() && law.temperature().is_some());
+        let rising = FrictionLaw::Temperature(TemperatureLaw { dfheat: 0.19, ..t });
+        assert!((rising.mu_max() - 0.52).abs() < 1e-15);
     }
 
     #[test]

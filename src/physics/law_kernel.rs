@@ -84,6 +84,7 @@ impl LawKernel {
         let scale = FallingTerms::scale;
         let (fkin, f, shape) = match law {
             FrictionLaw::Coulomb { mu } => (*mu, [0.0; 2], Shape::Constant(*mu)),
+            FrictionLaw::Temperature(t) => (t.fref, [0.0; 2], Shape::Constant(t.fref)),
             FrictionLaw::Linear(t) => {
                 let term = |f: f64, sh: f64| {
                     let w = 2.0 * scale(f, sh);

@@ -21,7 +21,7 @@ pub mod slip;
 pub mod temperature;
 
 pub use bound::project_to_bound;
-pub use friction::{FallingTerms, FrictionLaw, Memory, RowFriction};
+pub use friction::{FallingTerms, FrictionLaw, Memory, RowFriction, TemperatureLaw};
 pub use geometry::{ContactGeometry, HertzEllipse, Planform};
 pub use grid::{Grid, LeadingEdge};
 pub use hertz::{HertzContact, HertzShape, Radii};

@@ -295,10 +295,18 @@ pub fn run_with(mut problem: Problem, in_process: &[InProcess]) -> Result<SceneR
                 problem.contact_solver.veldep_tolerance
             ));
         }
+        let tempdep_stuck = h.column("tempdep_converged").map_or(0, |c| c.iter().filter(|&&v| v == 0.0).count());
+        if tempdep_stuck > 0 {
+            problem.warnings.push(format!(
+                "{name}: {tempdep_stuck} of {} solves: the surface-temperature fixed point of the temperature friction law did not converge (tempdep_converged = 0; contact_solver.tempdep_tolerance = {:e}); those rows are not converged",
+                h.rows.len(),
+                problem.contact_solver.tempdep_tolerance
+            ));
+        }
         let stuck = h
             .column(history::TERMINATION)
             .map_or(0, |t| t.iter().filter(|&&c| c == limit).count())
-            .saturating_sub(veldep_stuck);
+            .saturating_sub(veldep_stuck + tempdep_stuck);
         if stuck > 0 {
             problem.warnings.push(format!(
                 "{name}: {stuck} of {} solves reached the iteration limit (contact_solver.max_iterations = {}); those rows are not converged",

@@ -20,7 +20,7 @@ pub struct ResolvedScene {
     pub fn_n: f64,
     /// The scene's nominal μ (`contact.mu`); a table may vary μ per step (`history`).
     pub mu: f64,
-    /// A falling friction law (`[friction]`; absent: Coulomb with `mu`).
+    /// A falling or temperature friction law (`[friction]`; absent: Coulomb with `mu`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub friction: Option<crate::physics::FrictionLaw>,
     /// The friction memory (absent: none).
@@ -180,7 +180,7 @@ impl ResolvedScene {
             b_mm: h.b_mm,
             fn_n: h.fn_n,
             mu: p.nominal.mu,
-            friction: p.friction.is_falling().then_some(p.friction),
+            friction: (!matches!(p.friction, crate::physics::FrictionLaw::Coulomb { .. })).then_some(p.friction),
             memory: p.memory.is_active().then_some(p.memory),
             mu_rows: p.friction_rows.as_ref().map(|r| r.rows().to_vec()),
             p0_mpa: h.p0_mpa(),

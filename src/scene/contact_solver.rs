@@ -34,6 +34,20 @@ pub const KEYS: Keys = Keys {
             r#"with a falling `[friction]` law: stop the fixed point on the slip velocity s when rms(s_new − s) ≤ this·rms(s_new) over the contact, or when no element slips (CONTACT stops at a fixed 1e-3, which leaves up to 7e-5 in f/FN; 1e-6 leaves at most 1.4e-7 against CONTACT run to 1e-7 on the reference cases); it ends only on a tangential solve stopped at the smaller of `tolerance` and a tenth of this, the earlier ones at 1e-2 × the fixed point's last relative change (at most 1e-2, the first at 1e-2; never tighter than the last; a solve that reached the final tolerance anyway counts as final), each warm started from the previous iterate (its slip elements moved onto the new bound); at most 190 iterations, each a tangential solve with the bound μ(s)·pn, damped as CONTACT (by `omgslp` in slip elements whose μ rises, × 0.8 every 20 iterations while the element division changes): `veldep_tolerance = 1e-8`; `creepbench import contact` writes CONTACT's own 1e-3"#,
         ),
         key(
+            "tempdep_tolerance",
+            "–",
+            Allowed::Number(Range::new(1e-14, true, 1e-2, true), ""),
+            Absent::Num(super::TEMPDEP_TOLERANCE),
+            r#"with `[friction] law = "temperature"`: stop the fixed point on the surface temperature T [°C] when rms(T_new − T) ≤ this·rms(T_new) over the contact, or when no element slips (CONTACT stops at a fixed 1e-4 of the temperatures in °C); it ends only on a tangential solve stopped at the smaller of `tolerance` and a tenth of this, the earlier ones loosened as with `veldep_solves = "adaptive"`; at most `tempdep_max_iterations`, each a tangential solve with the bound μ(T)·pn, damped as CONTACT (by `omgslp` in slip elements whose μ exceeds the upstream element's, × 0.8 every 15 iterations while the element division changes): `tempdep_tolerance = 1e-4`; `creepbench import contact` writes CONTACT's own 1e-4"#,
+        ),
+        key(
+            "tempdep_max_iterations",
+            "–",
+            Allowed::Whole(1, 100_000, ""),
+            Absent::Whole(super::TEMPDEP_MAX_ITERATIONS),
+            r#"with `[friction] law = "temperature"`: the most iterations of the fixed point on the surface temperature (CONTACT's max(1, MAXIN − 10) + 1: its loop runs while its count is at most max(1, MAXIN − 10)); stopping there unconverged is `tempdep_converged = 0`, `termination = 2` and a warning, and the row is that last iterate, as CONTACT prints it: `tempdep_max_iterations = 91`; `creepbench import contact` writes the deck's (MAXIN = 100: 91)"#,
+        ),
+        key(
             "inislp",
             "–",
             Allowed::Choice(&["previous", "below", "above", "extrapolated"], ""),
@@ -45,14 +59,14 @@ pub const KEYS: Keys = Keys {
             "–",
             Allowed::Number(Range::new(0.0, false, 2.0, true), ""),
             Absent::Num(super::OMGSLP),
-            r#"with a falling law, the damping of the slip-velocity update: s := omgslp·s_new + (1 − omgslp)·s in slip elements whose μ rises (CONTACT's OMGSLP, default 0.5; `examples/veldep_fric` uses 1.1). It changes the path of the fixed point, not the point it converges to: `omgslp = 1.1`"#,
+            r#"with a falling law, the damping of the slip-velocity update: s := omgslp·s_new + (1 − omgslp)·s in slip elements whose μ rises (CONTACT's OMGSLP, default 0.5; `examples/veldep_fric` uses 1.1); with `law = "temperature"` the same of the temperature update, T := T + omgslp·(T_new − T) in slip elements whose μ exceeds the upstream element's. It changes the path of the fixed point, not the point it converges to: `omgslp = 1.1`"#,
         ),
         key(
             "veldep_solves",
             "–",
             Allowed::Choice(&["adaptive", "tight"], ""),
             Absent::Choice("adaptive"),
-            r#"with a falling law, how the fixed point's tangential solves are made: `adaptive` solves the early iterates at 1e-2 × the last relative change (at most 1e-2) and ends on a solve at the final tolerance, starts each solve with the slip elements of the last one (or of the last step) on the new bound: the same fixed point to the tolerance, from the same start, with less work; `tight` solves every iterate at the final tolerance from CONTACT's starts, as CONTACT does, so that with CONTACT's own loose stop (`veldep_tolerance = 1e-3`) the iteration stops at CONTACT's iterate; `creepbench import contact` writes `tight`: `veldep_solves = "tight"`"#,
+            r#"with a falling law (or `law = "temperature"`), how the fixed point's tangential solves are made: `adaptive` solves the early iterates at 1e-2 × the last relative change (at most 1e-2) and ends on a solve at the final tolerance, starts each solve with the slip elements of the last one (or of the last step) on the new bound: the same fixed point to the tolerance, from the same start, with less work; `tight` solves every iterate at the final tolerance from CONTACT's starts, as CONTACT does, so that with CONTACT's own loose stop (`veldep_tolerance = 1e-3`) the iteration stops at CONTACT's iterate; `creepbench import contact` writes `tight`: `veldep_solves = "tight"`"#,
         ),
         key(
             "influence",
@@ -95,6 +109,12 @@ pub fn read(top: &mut Section) -> Result<ContactSolverOptions, InputError> {
         if let Some(t) = cs.opt_num("veldep_tolerance")? {
             contact_solver.veldep_tolerance = t;
         }
+        if let Some(t) = cs.opt_num("tempdep_tolerance")? {
+            contact_solver.tempdep_tolerance = t;
+        }
+        if let Some(n) = cs.opt_whole("tempdep_max_iterations")? {
+            contact_solver.tempdep_max_iterations = n;
+        }
         if let Some(start) = cs.opt_pick("inislp")? {
             contact_solver.inislp = match start {
                 "below" => InitialSlip::Below,
@@ -134,6 +154,8 @@ mod tests {
         assert_eq!(of("tolerance"), Absent::Num(d.tolerance));
         assert_eq!(of("max_iterations"), Absent::Whole(d.max_iterations));
         assert_eq!(of("veldep_tolerance"), Absent::Num(d.veldep_tolerance));
+        assert_eq!(of("tempdep_tolerance"), Absent::Num(d.tempdep_tolerance));
+        assert_eq!(of("tempdep_max_iterations"), Absent::Whole(d.tempdep_max_iterations));
         assert_eq!(of("omgslp"), Absent::Num(d.omgslp));
         assert_eq!(of("max_outer"), Absent::Whole(d.max_outer));
     }

@@ -1,12 +1,13 @@
-//! `[friction]` (optional): the friction law (Coulomb's with `contact.mu`, or falling with the
-//! slip velocity as CONTACT's L = 2, 3, 4), its memory and μ per grid row; its keys declared once
-//! ([`KEYS`]) for the reader and docs/scene-format.md.
+//! `[friction]` (optional): the friction law (Coulomb's with `contact.mu`, falling with the
+//! slip velocity as CONTACT's L = 2, 3, 4, or varying with the surface temperature as its L = 6),
+//! its memory and μ per grid row; its keys declared once ([`KEYS`]) for the reader and
+//! docs/scene-format.md.
 
 use super::keys::{key, Absent, Allowed, Keys};
 use super::reader::{Range, Section};
 use super::MAX_ELEMENTS_PER_AXIS;
 use crate::error::InputError;
-use crate::physics::{FallingTerms, FrictionLaw, Memory, RowFriction};
+use crate::physics::{FallingTerms, FrictionLaw, Memory, RowFriction, TemperatureLaw};
 
 /// A coefficient of a falling law.
 const COEFFICIENT: Range = Range::new(0.0, true, 1e3, true);
@@ -14,6 +15,14 @@ const COEFFICIENT: Range = Range::new(0.0, true, 1e3, true);
 const SPEED: Range = Range::new(0.0, true, 1e9, true);
 /// Required by a falling law.
 const FALLING: Absent = Absent::Text("required for a falling law");
+/// Required by the temperature law.
+const TEMPERATURE: Absent = Absent::Text("required for law = \"temperature\"");
+/// A temperature [°C].
+const CELSIUS: Range = Range::new(-273.15, true, 1e5, true);
+/// The keys of the falling laws (L = 2, 3, 4).
+const FALLING_KEYS: [&str; 5] = ["fkin", "f1", "sabsh1_mm_s", "f2", "sabsh2_mm_s"];
+/// The keys of the temperature law (L = 6).
+const TEMPERATURE_KEYS: [&str; 4] = ["fref", "tref_c", "dfheat", "dtheat_c"];
 
 /// `[friction]`'s keys (`<!-- keys:friction -->`).
 pub const KEYS: Keys = Keys {
@@ -23,9 +32,9 @@ pub const KEYS: Keys = Keys {
         key(
             "law",
             "–",
-            Allowed::Choice(&["coulomb", "linear", "rational", "exponential"], ""),
+            Allowed::Choice(&["coulomb", "linear", "rational", "exponential", "temperature"], ""),
             Absent::Required,
-            r#"`coulomb`: μ = `contact.mu` (no other key); `linear` (L = 2): μ = fkin + f1·max(0, 1 − s/(2·sabsh1)) + f2·max(0, 1 − s/(2·sabsh2)); `rational` (L = 3): fkin + f1/(1 + s/sabsh1) + f2/(1 + (s/sabsh2)²); `exponential` (L = 4): fkin + f1·exp(−ln2·s/sabsh1) + f2·exp(−ln2·s/sabsh2): `law = "exponential"`"#,
+            r#"`coulomb`: μ = `contact.mu` (no other key); `linear` (L = 2): μ = fkin + f1·max(0, 1 − s/(2·sabsh1)) + f2·max(0, 1 − s/(2·sabsh2)); `rational` (L = 3): fkin + f1/(1 + s/sabsh1) + f2/(1 + (s/sabsh2)²); `exponential` (L = 4): fkin + f1·exp(−ln2·s/sabsh1) + f2·exp(−ln2·s/sabsh2); `temperature` (L = 6): μ = fref + dfheat·clamp(T − tref_c, 0, dtheat_c)/dtheat_c of the surface temperature T (`[material]`'s heat keys required; the exact model only, in steady rolling: a fixed point between the tractions and the temperatures, docs/models.md "Temperature-dependent friction"): `law = "exponential"`"#,
         ),
         key(
             "fkin",
@@ -51,11 +60,39 @@ pub const KEYS: Keys = Keys {
             r#"the second term's scale: `sabsh2_mm_s = 2500.0`"#,
         ),
         key(
+            "fref",
+            "–",
+            Allowed::Number(Range::new(0.0, false, 1e3, true), ""),
+            TEMPERATURE,
+            r#"with `law = "temperature"`: μ at low surface temperatures, up to `tref_c` (CONTACT's FREF; also μ's static value, FSTAT): `fref = 0.33`"#,
+        ),
+        key(
+            "tref_c",
+            "°C",
+            Allowed::Number(CELSIUS, ""),
+            TEMPERATURE,
+            r#"with `law = "temperature"`: the surface temperature where μ starts changing (CONTACT's TREF): `tref_c = 0.0`"#,
+        ),
+        key(
+            "dfheat",
+            "–",
+            Allowed::Number(Range::new(-1e3, true, 1e3, true), "fref + dfheat > 0"),
+            TEMPERATURE,
+            r#"with `law = "temperature"`: the change of μ from `tref_c` to `tref_c + dtheat_c`, beyond which μ stays fref + dfheat (CONTACT's DFHEAT; negative: friction falling with the temperature): `dfheat = -0.19`"#,
+        ),
+        key(
+            "dtheat_c",
+            "°C",
+            Allowed::Number(Range::new(0.0, false, 1e5, true), ""),
+            TEMPERATURE,
+            r#"with `law = "temperature"`: the temperature span over which μ changes linearly (CONTACT's DTHEAT): `dtheat_c = 1200.0`"#,
+        ),
+        key(
             "memory_mm",
             "mm",
             Allowed::Number(Range::new(0.0, true, 1e4, true), ""),
             Absent::Text("absent: no memory"),
-            r#"the friction memory's relaxation distance d_c (CONTACT's MEMDST): along the material path μ relaxes to μ(s) as dμ/dt = −(max(s, s0)/d_c)(μ − μ(s)), one backward-Euler step per time step (grid element in steady rolling); 0 (or ≤ 1e-9) is no memory: `memory_mm = 0.01`"#,
+            r#"the friction memory's relaxation distance d_c (CONTACT's MEMDST): along the material path μ relaxes to μ(s) as dμ/dt = −(max(s, s0)/d_c)(μ − μ(s)), one backward-Euler step per time step (grid element in steady rolling); 0 (or ≤ 1e-9) is no memory. With `law = "temperature"` μ relaxes to μ(T) at the constant rate max(s_i, s0)/d_c, s_i the slip velocity the fixed point starts from (`[contact_solver] inislp`: 0, or V with "above"), as CONTACT's L = 6: `memory_mm = 0.01`"#,
         ),
         key(
             "memory_s0_mm_s",
@@ -100,8 +137,16 @@ pub fn read(top: &mut Section, mu: Option<f64>, my: usize) -> Result<FrictionSpe
         return coulomb(mu, Memory::NONE);
     };
     let law = f.pick("law")?;
+    if law != "temperature" {
+        for key in TEMPERATURE_KEYS {
+            f.refuse(key, "only with law = \"temperature\"")?;
+        }
+    }
+    if law == "temperature" {
+        return temperature(f, mu);
+    }
     if law == "coulomb" {
-        for key in ["fkin", "f1", "sabsh1_mm_s", "f2", "sabsh2_mm_s", "memory_mm", "memory_s0_mm_s"] {
+        for key in FALLING_KEYS.into_iter().chain(["memory_mm", "memory_s0_mm_s"]) {
             f.refuse(key, "only with a falling law (law = \"linear\", \"rational\" or \"exponential\")")?;
         }
         let rows = mu_rows(&mut f, mu, my)?;
@@ -136,13 +181,7 @@ pub fn read(top: &mut Section, mu: Option<f64>, my: usize) -> Result<FrictionSpe
         "rational" => FrictionLaw::Rational(terms),
         _ => FrictionLaw::Exponential(terms),
     };
-    let memory = match f.opt_num("memory_mm")? {
-        Some(memory_mm) => Memory { memory_mm, s0_mm_s: f.num_or_default("memory_s0_mm_s")? },
-        None => {
-            f.refuse("memory_s0_mm_s", "only with memory_mm (the memory's relaxation distance)")?;
-            Memory::NONE
-        }
-    };
+    let memory = memory(&mut f)?;
     let mu_static = law.mu_static();
     if !(mu_static > 0.0 && mu_static <= 1e3) {
         let given = format!("{} (fkin + f1 + f2 = {mu_static})", terms.fkin);
@@ -161,6 +200,52 @@ pub fn read(top: &mut Section, mu: Option<f64>, my: usize) -> Result<FrictionSpe
         }
     }
     Ok(FrictionSpec { law, memory, mu_static, rows: None })
+}
+
+/// `memory_mm`, `memory_s0_mm_s` (CONTACT's MEMDST, MEM_S0): none without `memory_mm`.
+fn memory(f: &mut Section) -> Result<Memory, InputError> {
+    match f.opt_num("memory_mm")? {
+        Some(memory_mm) => Ok(Memory { memory_mm, s0_mm_s: f.num_or_default("memory_s0_mm_s")? }),
+        None => {
+            f.refuse("memory_s0_mm_s", "only with memory_mm (the memory's relaxation distance)")?;
+            Ok(Memory::NONE)
+        }
+    }
+}
+
+/// `law = "temperature"` (CONTACT's L = 6): FREF, TREF, DFHEAT, DTHEAT with FREF + DFHEAT > 0
+/// (`m_friclaw.f90` lines 819-824), and the memory (with L = 6 CONTACT relaxes μ at the rate of
+/// the slip velocity its iteration starts from, `solvers/contact/tempdep.rs`); μ's static value
+/// is FREF.
+fn temperature(mut f: Section, mu: Option<f64>) -> Result<FrictionSpec, InputError> {
+    for key in FALLING_KEYS {
+        f.refuse(key, "only with a falling law (law = \"linear\", \"rational\" or \"exponential\"); law = \"temperature\" takes fref, tref_c, dfheat, dtheat_c")?;
+    }
+    f.refuse("mu_rows", "only with law = \"coulomb\" (the temperature law is one for the whole contact)")?;
+    let t = TemperatureLaw {
+        fref: f.num("fref")?,
+        tref_c: f.num("tref_c")?,
+        dfheat: f.num("dfheat")?,
+        dtheat_c: f.num("dtheat_c")?,
+    };
+    if t.fref + t.dfheat <= 0.0 {
+        let given = format!("{} (fref + dfheat = {})", t.dfheat, t.fref + t.dfheat);
+        return Err(InputError::new(
+            f.field("dfheat"),
+            given,
+            "fref + dfheat > 0 (μ at high temperatures stays positive)",
+        ));
+    }
+    let memory = memory(&mut f)?;
+    f.finish()?;
+    if let Some(given) = mu.filter(|&m| m != t.fref) {
+        return Err(InputError::new(
+            "contact.mu",
+            given,
+            format!("left out with law = \"temperature\", or equal to its fref = {}", t.fref),
+        ));
+    }
+    Ok(FrictionSpec { law: FrictionLaw::Temperature(t), memory, mu_static: t.fref, rows: None })
 }
 
 /// `[friction] mu_rows` (Coulomb only): μ of every grid row, `my` values in (0, 1000], the first

@@ -218,6 +218,12 @@ pub struct ContactSolverOptions {
     /// Falling friction: stop the slip-velocity fixed point when rms(s_new − s) ≤ this · rms(s_new).
     #[serde(default = "veldep_tolerance", skip_serializing_if = "is_veldep_tolerance")]
     pub veldep_tolerance: f64,
+    /// The temperature law: stop the temperature fixed point when rms(T_new − T) ≤ this · rms(T_new).
+    #[serde(default = "tempdep_tolerance", skip_serializing_if = "is_tempdep_tolerance")]
+    pub tempdep_tolerance: f64,
+    /// The temperature law: the most iterations of its fixed point (CONTACT's max(1, MAXIN − 10) + 1).
+    #[serde(default = "tempdep_max_iterations", skip_serializing_if = "is_tempdep_max_iterations")]
+    pub tempdep_max_iterations: usize,
     /// Falling friction: where the slip-velocity fixed point starts (CONTACT's INISLP).
     #[serde(default, skip_serializing_if = "InitialSlip::is_default")]
     pub inislp: InitialSlip,
@@ -275,6 +281,28 @@ fn veldep_tolerance() -> f64 {
 
 fn is_veldep_tolerance(v: &f64) -> bool {
     *v == VELDEP_TOLERANCE
+}
+
+/// Default `[contact_solver] tempdep_tolerance`.
+pub const TEMPDEP_TOLERANCE: f64 = 1e-6;
+
+fn tempdep_tolerance() -> f64 {
+    TEMPDEP_TOLERANCE
+}
+
+fn is_tempdep_tolerance(v: &f64) -> bool {
+    *v == TEMPDEP_TOLERANCE
+}
+
+/// Default `[contact_solver] tempdep_max_iterations`: CONTACT's max(1, MAXIN − 10) + 1 at MAXIN = 200.
+pub const TEMPDEP_MAX_ITERATIONS: usize = 191;
+
+fn tempdep_max_iterations() -> usize {
+    TEMPDEP_MAX_ITERATIONS
+}
+
+fn is_tempdep_max_iterations(v: &usize) -> bool {
+    *v == TEMPDEP_MAX_ITERATIONS
 }
 
 /// Default `[contact_solver] omgslp`: CONTACT's default OMGSLP (`m_hierarch_data.f90` line 1749).
@@ -343,6 +371,8 @@ impl Default for ContactSolverOptions {
             max_iterations: 1000,
             steady_restart: SteadyRestart::Contact,
             veldep_tolerance: VELDEP_TOLERANCE,
+            tempdep_tolerance: TEMPDEP_TOLERANCE,
+            tempdep_max_iterations: TEMPDEP_MAX_ITERATIONS,
             inislp: InitialSlip::Previous,
             omgslp: OMGSLP,
             veldep_solves: VeldepSolves::Adaptive,
@@ -643,6 +673,7 @@ impl Scene {
         };
         scene.check_sweep_points()?;
         scene.check_table_friction()?;
+        scene.check_temperature_law()?;
         scene.check_table_geometry()?;
         Ok(scene)
     }
@@ -669,6 +700,31 @@ impl Scene {
                     format!("creepage.file ({})", file.display()),
                     "columns b1_per_mm to b6_mm with a Hertzian contact",
                     "an undeformed distance per row only with a [geometry] given per element on an explicit grid ([grid] x_mm, y_mm)",
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// The temperature law (`[friction] law = "temperature"`) takes μ from the surface
+    /// temperatures: `[material]`'s heat keys give them, and a table may not vary μ.
+    fn check_temperature_law(&self) -> Result<(), InputError> {
+        if self.friction.temperature().is_none() {
+            return Ok(());
+        }
+        if self.material.heat.is_none() {
+            return Err(InputError::new(
+                "friction.law",
+                "\"temperature\" without [material]'s heat keys",
+                "the temperature law with the surface temperatures' data: [material] bulk1_c, heat_capacity1_j_per_kg_c, conductivity1_w_per_mm_c, density1_kg_per_mm3 and body 2's",
+            ));
+        }
+        if let Creepage::Table { file, rows } = &self.creepage {
+            if rows.mu.is_some() {
+                return Err(InputError::new(
+                    format!("creepage.file ({})", file.display()),
+                    "a column mu",
+                    "no mu column with law = \"temperature\" (the law gives mu)",
                 ));
             }
         }

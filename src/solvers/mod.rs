@@ -141,6 +141,13 @@ fn check_falling_combinations(problem: &Problem, shifts: bool) -> Result<(), Inp
             "prescribed forces with Coulomb friction, or creepages with a falling law (the two iterations are not combined)",
         ));
     }
+    if problem.friction.temperature().is_some() && problem.loading.prescribes_force() {
+        return Err(InputError::new(
+            "creepage.fx_over_fn",
+            "prescribed forces with law = \"temperature\"",
+            "prescribed forces with Coulomb friction, or creepages with the temperature law (the two iterations are not combined)",
+        ));
+    }
     Ok(())
 }
 
@@ -264,7 +271,7 @@ fn check_model(problem: &Problem, m: &ModelDef, shifts: bool) -> Result<(), Inpu
         ));
     }
     if let Some(v) = problem.material.layer.and_then(|l| l.yield_mpa) {
-        if problem.material.coupled() || problem.friction.is_falling() {
+        if problem.material.coupled() || problem.friction.is_falling() || problem.friction.temperature().is_some() {
             return Err(InputError::new(
                 "material.layer_yield_mpa",
                 format!("a yield limit {v} MPa with dissimilar bodies or falling friction"),

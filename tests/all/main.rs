@@ -62,6 +62,7 @@ mod strip;
 mod studies;
 mod subsurface_contact;
 mod temperature;
+mod temperature_friction;
 mod test_table;
 mod timing;
 mod tolerance_files;

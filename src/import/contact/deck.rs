@@ -129,6 +129,9 @@ pub struct State {
     /// MAXOUT as last read (G ≠ 1), the most outer iterations between the normal and tangential
     /// problems of dissimilar bodies; `None`: none read.
     pub maxout: Option<i64>,
+    /// MAXIN as last read (G ≠ 1): with L = 6 it bounds the temperature iteration; `None`: none
+    /// read (CONTACT's default 20, `m_hierarch_data.f90`).
+    pub maxin: Option<i64>,
     /// K0_MF, ALFAMF, BETAMF of the simplified theories (M = 3, 5) as last read (CONTACT's
     /// defaults 1, 1, 1 before: no slope reduction).
     pub slope_mf: Option<[f64; 3]>,
@@ -169,7 +172,16 @@ impl State {
     pub fn max_outer(&self) -> usize {
         self.maxout.map_or(crate::scene::MAX_OUTER, |m| m.max(1) as usize)
     }
+
+    /// The most iterations of the temperature iteration (L = 6): CONTACT's loop runs while its
+    /// count is at most max(1, MAXIN − 10) (`m_stang.f90`), max(1, MAXIN − 10) + 1 iterations.
+    pub fn temperature_iterations(&self) -> usize {
+        (self.maxin.unwrap_or(CONTACT_MAXIN) - 10).max(1) as usize + 1
+    }
 }
+
+/// CONTACT's MAXIN before any is read (`m_hierarch_data.f90`).
+const CONTACT_MAXIN: i64 = 20;
 
 /// A module-3 case: its digits and the state after it.
 #[derive(Debug, Clone, PartialEq)]
@@ -518,6 +530,7 @@ impl CaseReader<'_> {
                 (1, Kind::Int),
             )?;
             state.maxout = Some(v[3] as i64);
+            state.maxin = Some(v[1] as i64);
         }
         let start = match g {
             2 | 3 => {

@@ -30,6 +30,13 @@ fn heat_carried(c: &Case3) -> bool {
     c.state.heat_in_force().is_some() && c.digits.t == 3 && !plastic
 }
 
+/// Whether the case's friction is the temperature law (L = 6) as the import carries it: its
+/// surface temperatures computed, a memory only with INISLP != 0.
+fn temperature_law(c: &Case3) -> bool {
+    let from_previous = c.state.memory[0] > 1e-9 && c.state.slip_start.is_none_or(|(i, _)| i == 0);
+    c.state.friction_law == 6 && !from_previous && heat_carried(c)
+}
+
 /// Whether the case's subsurface points are all explicit (ISUBS = 9) in body 1 (Z ≥ 0), and some.
 fn explicit_points(c: &Case3) -> bool {
     let b = &c.state.subsurface;
@@ -146,11 +153,32 @@ pub const FEATURES: &[Feature] = &[
         used: |c| digit("V", c.digits.v, c.digits.v == 3 && c.state.friction_law == 0),
     },
     Feature {
-        name: "friction laws other than Coulomb's and the falling laws",
+        name: "friction laws other than Coulomb's, the falling laws and the temperature law",
         control: "L",
         supported: false,
-        reason: "supported: L = 0 (Coulomb), 2, 3, 4 (friction falling with the slip velocity, with its memory MEMDST, MEM_S0) or L = 1 keeping it; not L = 6, friction falling with the surface temperature (FREF, TREF, DFHEAT, DTHEAT: the temperatures are computed, H = 3, but not fed back into the friction)",
-        used: |c| digit("L (in force)", c.state.friction_law, !matches!(c.state.friction_law, 0 | 2..=4)),
+        reason: "supported: L = 0 (Coulomb), 2, 3, 4 (friction falling with the slip velocity, with its memory MEMDST, MEM_S0), 6 (friction of the surface temperature) or L = 1 keeping it",
+        used: |c| digit("L (in force)", c.state.friction_law, !matches!(c.state.friction_law, 0 | 2..=4 | 6)),
+    },
+    Feature {
+        name: "friction of the surface temperature",
+        control: "L, FREF, TREF, DFHEAT, DTHEAT",
+        supported: true,
+        reason: "imported as [friction] law = \"temperature\", fref, tref_c, dfheat, dtheat_c (MEMDST, MEM_S0 as memory_mm, memory_s0_mm_s, relaxing at the rate of the start INISLP gives, [contact_solver] inislp): the exact model's fixed point between the tractions and the surface temperatures of their frictional heat (docs/models.md, \"Temperature-dependent friction\"), stopped at CONTACT's fixed 1e-4 ([contact_solver] tempdep_tolerance) or after CONTACT's max(1, MAXIN - 10) + 1 iterations (tempdep_max_iterations), damped by OMGSLP",
+        used: |c| temperature_law(c).then(|| format!("L (in force) = 6: FREF, TREF, DFHEAT, DTHEAT = {:?}", c.state.friction)),
+    },
+    Feature {
+        name: "friction of the surface temperature with a memory started from the previous case, or without surface temperatures",
+        control: "L, MEMDST, INISLP, H",
+        supported: false,
+        reason: "supported: L = 6 with surface temperatures computed (H = 1, 3 in steady rolling) and MEMDST = 0, or a memory with INISLP != 0: CONTACT's memory with L = 6 relaxes at the rate of the slip velocity its iteration starts from, 0 (INISLP > 0) or VELOC (< 0); INISLP = 0 starts from the previous case's slip, which a steady case does not leave; without H the temperatures are never computed",
+        used: |c| {
+            let six = c.state.friction_law == 6;
+            let from_previous = c.state.memory[0] > 1e-9 && c.state.slip_start.is_none_or(|(i, _)| i == 0);
+            (six && (from_previous || !heat_carried(c))).then(|| {
+                let inislp = c.state.slip_start.map_or(0, |(i, _)| i);
+                format!("L = 6 with MEMDST = {}, INISLP = {inislp}, H = {}", c.state.memory[0], c.digits.h)
+            })
+        },
     },
     Feature {
         name: "static friction other than kinetic friction",
@@ -316,13 +344,13 @@ pub const FEATURES: &[Feature] = &[
         used: |c| digit("G", c.digits.g, c.digits.g != 1),
     },
     Feature {
-        name: "the slip-velocity iteration of a falling law",
+        name: "the slip-velocity iteration of a falling law, the temperature iteration of L = 6",
         control: "INISLP, OMGSLP",
         supported: true,
-        reason: "carried as [contact_solver] inislp (0: previous, > 0: below, < 0: above) and omgslp, stopped at CONTACT's fixed 1e-3 (veldep_tolerance); MAXIN is not carried (190 iterations at most)",
+        reason: "carried as [contact_solver] inislp (0: previous, > 0: below, < 0: above) and omgslp, stopped at CONTACT's fixed 1e-3 (veldep_tolerance); with L = 6 OMGSLP, and INISLP where a memory takes its rate from it, stopped at CONTACT's 1e-4 (tempdep_tolerance) or its MAXIN's iterations (tempdep_max_iterations); with L = 2, 3, 4 MAXIN is not carried (190 iterations at most)",
         used: |c| {
             let (inislp, omgslp) = c.state.slip_start.unwrap_or((0, crate::scene::OMGSLP));
-            matches!(c.state.friction_law, 2..=4).then(|| format!("INISLP = {inislp}, OMGSLP = {omgslp}"))
+            matches!(c.state.friction_law, 2..=4 | 6).then(|| format!("INISLP = {inislp}, OMGSLP = {omgslp}"))
         },
     },
     Feature {
@@ -334,7 +362,8 @@ pub const FEATURES: &[Feature] = &[
             let chi = c.state.chi_rad;
             let zero = super::scene::chi_deg(chi) == 0.0;
             let steady_oblique = c.digits.t == 3 && !super::scene::along_x(chi);
-            let falling_turned = !zero && c.state.friction_law != 0;
+            // The temperature law (L = 6) is steady, where -x is the mirrored solve.
+            let falling_turned = !zero && c.state.friction_law != 0 && c.state.friction_law != 6;
             (c.digits.t >= 2 && (steady_oblique || falling_turned)).then(|| format!("CHI = {chi} rad"))
         },
     },

@@ -8,7 +8,9 @@ use super::DeckError;
 /// What a value must be.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Kind {
-    /// A whole number (`22`, not `22.0`).
+    /// A whole number (`22`; `22.0` or `22.` too, as the Intel build of CONTACT that printed
+    /// the reference outputs reads it: `testbank/examples_temp/conv_temp.inp` gives INISLP as
+    /// `1.0`; gfortran's list-directed read refuses it; `22.5` is refused).
     Int,
     /// A real number (`0.35`, `3.5E-1`, `82000.`, Fortran's `1d-6`).
     Real,
@@ -19,7 +21,7 @@ pub enum Kind {
 impl Kind {
     fn describe(self) -> &'static str {
         match self {
-            Kind::Int => "a whole number",
+            Kind::Int => "a whole number (22 or 22.0)",
             Kind::Real => "a real number",
             Kind::Angle => "an angle (a real number, optionally with the suffix d or r)",
         }
@@ -107,6 +109,14 @@ fn real(text: &str) -> Option<f64> {
     t.parse::<f64>().ok().filter(|v| plain && v.is_finite())
 }
 
+/// A real number that is a whole number (`1.0`, `-3.`, `2e1`) exactly, within ±2^53: CONTACT's
+/// `readline` reads an integer by Fortran's list-directed read (`m_readline.f90`), which the Intel
+/// build of the reference outputs gives the value of `1.0` (conv_temp.inp's INISLP, whose OMGSLP
+/// on the same line took effect in its printed iterations).
+fn whole_real(text: &str) -> Option<f64> {
+    real(text).filter(|v| v.fract() == 0.0 && v.abs() <= 9_007_199_254_740_992.0)
+}
+
 /// An angle in radians: `180d`, `3.1416r` or `0.5` (radians).
 fn angle(text: &str) -> Option<f64> {
     if let Some(deg) = text.strip_suffix(['d', 'D']).and_then(real) {
@@ -117,7 +127,7 @@ fn angle(text: &str) -> Option<f64> {
 
 fn value(kind: Kind, text: &str) -> Option<f64> {
     match kind {
-        Kind::Int => text.parse::<i64>().ok().map(|v| v as f64),
+        Kind::Int => text.parse::<i64>().ok().map(|v| v as f64).or_else(|| whole_real(text)),
         Kind::Real => real(text),
         Kind::Angle => angle(text),
     }
@@ -303,9 +313,13 @@ mod tests {
     fn a_word_where_a_number_belongs_names_line_and_column() {
         let mut lx = Lexer::new("t.inp", "\n  22  x2\n");
         let e = lx.group("MX, MY", &[Kind::Int, Kind::Int], (0, Kind::Real)).unwrap_err();
-        assert_eq!(e.to_string(), "t.inp:2:7: MX, MY: \"x2\" is not allowed: a whole number");
-        let mut lx = Lexer::new("t.inp", " 3.0\n");
+        assert_eq!(e.to_string(), "t.inp:2:7: MX, MY: \"x2\" is not allowed: a whole number (22 or 22.0)");
+        let mut lx = Lexer::new("t.inp", " 3.5\n");
         assert!(lx.group("MODULE", &[Kind::Int], (0, Kind::Real)).is_err());
+        // A real that is a whole number reads as it (CONTACT's Intel build: conv_temp.inp's INISLP 1.0).
+        let mut lx = Lexer::new("t.inp", " 1.0   0.5   INISLP, OMGSLP\n -1.  2e1\n");
+        assert_eq!(lx.group("INISLP, OMGSLP", &[Kind::Int, Kind::Real], (0, Kind::Real)).unwrap().0, vec![1.0, 0.5]);
+        assert_eq!(lx.group("two", &[Kind::Int, Kind::Int], (0, Kind::Real)).unwrap().0, vec![-1.0, 20.0]);
     }
 
     #[test]

@@ -42,6 +42,16 @@ pub fn temperatures(
     }
 }
 
+/// Body 1's surface temperature in the solver's frame without frictional heat (the bodies meet
+/// at their effusivity mean in the contact, [`surface_temperatures`] with q = 0): the start of
+/// the temperature law's fixed point ([`super::tempdep`]).
+pub fn unheated(grid: &Grid, bodies: &[Thermal; 2], pn: &[f64], v_mm_s: f64) -> Vec<f64> {
+    let contact: Vec<bool> = pn.iter().map(|&p| p > 0.0).collect();
+    let q = vec![0.0; pn.len()];
+    let [one, _] = surface_temperatures(&Heating { grid, contact: &contact, power_density: &q, v_mm_s }, bodies).body;
+    one
+}
+
 /// The largest temperature of each body over the contact of pressure `pn` (the scene's frame).
 pub fn maxima(t: &Temperatures, pn: &[f64]) -> [f64; 2] {
     let contact: Vec<bool> = pn.iter().map(|&p| p > 0.0).collect();

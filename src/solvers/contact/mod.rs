@@ -13,7 +13,8 @@
 //!   step starts from the last two steps' tractions extrapolated in time.
 //!
 //! [`veldep`]: friction falling with the slip velocity, CONTACT's fixed point on the slip
-//! velocity around the tangential solve, with the friction memory. [`hardening`]: an interface
+//! velocity around the tangential solve, with the friction memory; [`tempdep`]: friction of the
+//! surface temperature, the same fixed point on the temperature. [`hardening`]: an interface
 //! layer that hardens or softens, the fixed point per step on each element's yield limit.
 //!
 //! [`stepper`] maps a resolved problem onto them, one sample at a time; [`restart`] is CONTACT's
@@ -32,6 +33,7 @@ pub mod mirror;
 pub mod restart;
 pub mod stepper;
 pub mod tangential;
+pub mod tempdep;
 pub mod veldep;
 
 pub use crate::physics::halfspace::{convolution, coupling, influence, normal, ContactError};

@@ -12,6 +12,7 @@ use super::mirror;
 use super::normal::{NormalParams, NormalSolver};
 use super::restart::{contact_restart, SteadyRestart, SteadyStart};
 use super::tangential::{StepResult, TangentialParams, TangentialSolver};
+use super::tempdep::{TempDep, TempDepOptions};
 use super::veldep::{step_start, Motion as LawStep, VelDep, VelDepOptions, VelDepOutcome};
 use super::ContactError;
 use crate::error::InputError;
@@ -154,8 +155,8 @@ fn check_coupled(p: &Problem) -> Result<(), InputError> {
             "dissimilar bodies with Coulomb's one mu, a solved normal problem, influence = \"constant\", one rolling direction and distance (the outer iteration between the normal and tangential problems is written for these)",
         ))
     };
-    if p.friction.is_falling() {
-        return refuse("friction.law", "a falling friction law");
+    if p.friction.is_falling() || p.friction.temperature().is_some() {
+        return refuse("friction.law", "a falling or temperature friction law");
     }
     if p.friction_rows.is_some() {
         return refuse("friction.mu_rows", "a friction per grid row");
@@ -182,7 +183,8 @@ fn check_coupled(p: &Problem) -> Result<(), InputError> {
 /// rational laws where their terms underflow.
 fn check_kinetic_floor(p: &Problem) -> Result<(), InputError> {
     let fkin = match &p.friction {
-        FrictionLaw::Coulomb { .. } => return Ok(()),
+        // FREF > 0 and FREF + DFHEAT > 0 (the scene's reader): μ(T) lies between them.
+        FrictionLaw::Coulomb { .. } | FrictionLaw::Temperature(_) => return Ok(()),
         FrictionLaw::Linear(t) | FrictionLaw::Rational(t) | FrictionLaw::Exponential(t) => t.fkin,
     };
     if fkin > 0.0 {
@@ -323,6 +325,8 @@ struct Contact<'a> {
     after_steady: Option<SteadyStart>,
     /// A falling friction law's fixed point on the slip velocity ([`super::veldep`]).
     veldep: Option<VelDep>,
+    /// The temperature law's fixed point on the surface temperature ([`super::tempdep`]).
+    tempdep: Option<TempDep>,
     /// The creepages of the last solve where the sample prescribed forces ([`super::force`]).
     found: Option<[f64; 2]>,
     /// The prescribed-force iteration's last creepages and Jacobian (the next sample's start).
@@ -361,6 +365,10 @@ const VELDEP_COLUMNS: [&str; 4] = ["veldep_iterations", "veldep_converged", "mu_
 /// The history's columns of a run with falling friction and surface temperatures.
 const VELDEP_HEAT_COLUMNS: [&str; 6] =
     ["veldep_iterations", "veldep_converged", "mu_min", "mu_max", heat::COLUMNS[0], heat::COLUMNS[1]];
+
+/// The history's columns of a run with the temperature law (its surface temperatures included).
+const TEMPDEP_COLUMNS: [&str; 6] =
+    ["tempdep_iterations", "tempdep_converged", "mu_min", "mu_max", heat::COLUMNS[0], heat::COLUMNS[1]];
 
 /// The history's columns of a run with a layer that hardens or softens: the fixed point's
 /// iterations, whether it converged, and the yield limits over the contact [MPa].
@@ -482,6 +490,16 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
             };
             VelDep::new(p.friction, p.memory, options, g.mx, g.len())
         }),
+        tempdep: p.friction.temperature().map(|&law| {
+            let options = TempDepOptions {
+                tolerance: p.contact_solver.tempdep_tolerance,
+                max_iterations: p.contact_solver.tempdep_max_iterations,
+                omgslp: p.contact_solver.omgslp,
+                solve_tolerance: p.contact_solver.tolerance.min(0.1 * p.contact_solver.tempdep_tolerance),
+                adaptive_solves: p.contact_solver.veldep_solves == crate::scene::VeldepSolves::Adaptive,
+            };
+            TempDep::new(law, options, g.mx, g.len())
+        }),
         found: None,
         outer: force::Memory::default(),
         shown: None,
@@ -505,8 +523,8 @@ impl Contact<'_> {
             Motion::Rolling => row_dq_mm(self.p, s),
             Motion::Shift => 1.0,
         };
-        // With falling friction the bound μ_k pn_k is set per element (`set_bound`), μ = 1.
-        let mu = if self.veldep.is_some() { 1.0 } else { s.mu };
+        // With falling or temperature friction the bound μ_k pn_k is set per element (`set_bound`), μ = 1.
+        let mu = if self.veldep.is_some() || self.tempdep.is_some() { 1.0 } else { s.mu };
         let mut t = TangentialParams::new(mu, s.cx, s.cy, s.cs, dq_mm);
         // With falling friction each solve's tolerance is the fixed point's (`veldep::inner_tolerance`).
         t.tol = self.p.contact_solver.tolerance;
@@ -584,8 +602,9 @@ impl Contact<'_> {
                 step.termination = crate::solvers::Termination::IterationLimit;
             }
         }
-        if let (Some(o), Some(v)) = (veldep, self.veldep.as_ref()) {
-            let on = l.pn.iter().zip(v.mu()).filter(|(&p, _)| p > 0.0).map(|(_, &m)| m);
+        let mu_field = self.veldep.as_ref().map(VelDep::mu).or(self.tempdep.as_ref().map(TempDep::mu));
+        if let (Some(o), Some(mu)) = (veldep, mu_field) {
+            let on = l.pn.iter().zip(mu).filter(|(&p, _)| p > 0.0).map(|(_, &m)| m);
             let (lo, hi) = on.fold((f64::INFINITY, 0.0f64), |(lo, hi), m| (lo.min(m), hi.max(m)));
             step.extra.extend([o.iterations as f64, f64::from(u8::from(o.converged)), lo, hi]);
             step.extra[2] = o.inner_iterations as f64;
@@ -595,6 +614,44 @@ impl Contact<'_> {
         }
         self.last = Some(r);
         step
+    }
+
+    /// Steady rolling with the temperature law: the fixed point on the surface temperature
+    /// ([`super::tempdep`]) around the steady solve (`steady_dx` where dq ≠ dx), the
+    /// temperatures in the solver's frame.
+    fn tempdep_step(&mut self, at: &Sample) -> Result<Step, SolveError> {
+        let mut params = self.params(at);
+        let v_mm_s = at.speed_mm_s(self.p.rolling.v_mm_s);
+        let (grid, bodies) = (&self.p.grid, self.p.material.heat.as_ref().expect("the scene checks heat keys"));
+        let pn = &self.loaded.as_ref().expect("the sample loop loads before it solves").pn;
+        let tempdep = self.tempdep.as_mut().expect("tempdep_step runs with the temperature law");
+        let solver = match self.steady_dx.as_mut() {
+            Some(solver) => {
+                params.dq_mm = grid.dx_mm;
+                solver
+            }
+            None => &mut self.tangential,
+        };
+        let unheated = heat::unheated(grid, bodies, pn, v_mm_s);
+        // The memory's rate at the slip velocity the iteration starts from (CONTACT's L = 6 keeps
+        // its start, INISLP: V from above, else 0 in steady rolling).
+        let start_mm_s = if self.p.contact_solver.inislp == crate::scene::InitialSlip::Above { v_mm_s } else { 0.0 };
+        let theta = self.p.memory.theta(grid.dx_mm / v_mm_s, start_mm_s);
+        let heated = |r: &StepResult| {
+            let [one, _] = heat::temperatures(grid, bodies, pn, r, v_mm_s, false).body;
+            one
+        };
+        let (r, outcome) = tempdep
+            .step(pn, theta, unheated, heated, |g, start, tol| {
+                solver.set_bound(g)?;
+                solver.steady(&TangentialParams { tol, ..params }, start)
+            })
+            .map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        if r.px.iter().chain(&r.py).any(|v| !v.is_finite()) {
+            return Err(SolveError::NonFinite { step: at.step });
+        }
+        self.older = None;
+        Ok(self.record_with(r, Some(outcome)))
     }
 
     /// Steady rolling or a transient step with falling friction: the slip-velocity fixed point
@@ -666,13 +723,19 @@ impl Contact<'_> {
 
 impl Contact<'_> {
     /// A steady row with surface temperatures (`[material]`'s heat keys): both bodies' fields
-    /// from the last solve (CONTACT's `calc_temp` after the tangential problem), their largest
-    /// over the contact as the row's [`heat::COLUMNS`].
+    /// from the last solve (CONTACT's `calc_temp` after the tangential problem; with the
+    /// temperature law body 1's is its fixed point's last iterate, [`TempDep::temperature_c`]),
+    /// their largest over the contact as the row's [`heat::COLUMNS`].
     fn with_temperatures(&mut self, at: &Sample, mut step: Step) -> Step {
         let (Some(bodies), Some(r)) = (self.p.material.heat.as_ref(), self.last.as_ref()) else { return step };
         let pn = &self.loaded().pn;
         let v_mm_s = at.speed_mm_s(self.p.rolling.v_mm_s);
-        let t = heat::temperatures(&self.p.grid, bodies, pn, r, v_mm_s, self.mirrored);
+        let mut t = heat::temperatures(&self.p.grid, bodies, pn, r, v_mm_s, self.mirrored);
+        // The temperature law: body 1's is its fixed point's last iterate (CONTACT's `temp1`).
+        if let Some(iterate) = self.tempdep.as_ref().map(TempDep::temperature_c) {
+            let mx = self.p.grid.mx;
+            t.body[0] = if self.mirrored { mirror::field(mx, iterate) } else { iterate.to_vec() };
+        }
         let shown_pn = self.shown.as_ref().map_or(pn, |s| &s.pn);
         step.extra.extend(heat::maxima(&t, shown_pn));
         self.heated = Some(t);
@@ -991,6 +1054,10 @@ impl Stepper for Contact<'_> {
             let step = self.veldep_step(at, true)?;
             return Ok(self.with_temperatures(at, step));
         }
+        if self.tempdep.is_some() {
+            let step = self.tempdep_step(at)?;
+            return Ok(self.with_temperatures(at, step));
+        }
         let (r, found) = self.solve_coupled(at, Kind::Steady, |c, start| c.steady_solve(at, start))?;
         self.found = self.unframe(found);
         self.older = None;
@@ -1054,6 +1121,7 @@ impl Stepper for Contact<'_> {
     fn more_columns(&self) -> &'static [&'static str] {
         let heat = self.p.material.heat.is_some();
         match (self.hardening.is_some(), self.veldep.is_some(), heat) {
+            _ if self.tempdep.is_some() => &TEMPDEP_COLUMNS,
             (true, _, _) => &HARDENING_COLUMNS,
             (_, true, true) => &VELDEP_HEAT_COLUMNS,
             (_, true, false) => &VELDEP_COLUMNS,

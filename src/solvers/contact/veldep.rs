@@ -50,7 +50,7 @@ const INNER_LOOSEST: f64 = 1e-2;
 
 /// The tangential tolerance of the next solve after a relative change `change` (None: the
 /// first): `INNER_PER_CHANGE · change` within [`solve`, `INNER_LOOSEST`], `solve` the final one's.
-fn inner_tolerance(solve: f64, change: Option<f64>) -> f64 {
+pub(super) fn inner_tolerance(solve: f64, change: Option<f64>) -> f64 {
     let loose = change.map_or(INNER_LOOSEST, |c| (INNER_PER_CHANGE * c).min(INNER_LOOSEST));
     loose.max(solve)
 }
@@ -313,7 +313,7 @@ pub fn step_start(
 }
 
 /// rms over the contact elements (pn > 0) of `a − b` and of `a` (CONTACT's gf3_rms over AllInt).
-fn rms_pair(pn: &[f64], a: &[f64], b: &[f64]) -> (f64, f64) {
+pub(super) fn rms_pair(pn: &[f64], a: &[f64], b: &[f64]) -> (f64, f64) {
     let (mut d2, mut a2, mut n) = (0.0, 0.0, 0usize);
     for k in 0..pn.len() {
         if pn[k] > 0.0 {

@@ -198,7 +198,8 @@ fn grid_geometry(
     Ok(fn_n)
 }
 
-/// `[friction]` of a falling law (L = 2, 3, 4) with its memory; `None`: Coulomb (`contact.mu`).
+/// `[friction]` of a falling law (L = 2, 3, 4) with its memory, or of the temperature law (L = 6:
+/// FREF, TREF, DFHEAT, DTHEAT; its memory is refused, features.rs); `None`: Coulomb (`contact.mu`).
 /// An absent second term (F2 = 0) and an absent memory (MEMDST = 0) are left out: they change no μ.
 /// Each term's SABSH is the one CONTACT uses, max(1e-4, SABSH) where its F < 1e-8 (`fric_input`,
 /// `m_friclaw.f90` lines 833-846: [`FallingTerms::scale`]), so that a deck CONTACT accepts with
@@ -208,6 +209,7 @@ fn friction_table(s: &State) -> Option<Value> {
         2 => "linear",
         3 => "rational",
         4 => "exponential",
+        6 => return Some(temperature_table(&s.friction, s.memory)),
         _ => return None,
     };
     let f = &s.friction;
@@ -224,6 +226,18 @@ fn friction_table(s: &State) -> Option<Value> {
         pairs.extend([("memory_mm", Value::Float(s.memory[0])), ("memory_s0_mm_s", Value::Float(s.memory[1]))]);
     }
     Some(table(pairs))
+}
+
+/// `[friction]` of the temperature law (L = 6) of FREF, TREF, DFHEAT, DTHEAT `f` and the memory
+/// MEMDST, MEM_S0 where there is one.
+fn temperature_table(f: &[f64], memory: [f64; 2]) -> Value {
+    let names = ["fref", "tref_c", "dfheat", "dtheat_c"];
+    let mut pairs: Pairs = vec![("law", Value::String("temperature".into()))];
+    pairs.extend(names.into_iter().zip(f.iter().map(|&v| Value::Float(v))));
+    if memory[0] != 0.0 {
+        pairs.extend([("memory_mm", Value::Float(memory[0])), ("memory_s0_mm_s", Value::Float(memory[1]))]);
+    }
+    table(pairs)
 }
 
 /// `[model]` of CONTACT's FASTSIM (M = 3) or FaStrip (M = 5): Hertz's pressure of its B (3 parabolic, 2 ellipsoidal)

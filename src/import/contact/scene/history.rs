@@ -61,6 +61,12 @@ pub(super) fn falling(s: &State) -> bool {
     matches!(s.friction_law, 2..=4)
 }
 
+/// Whether a case's friction law iterates around the tangential solve, damped by OMGSLP: falling
+/// with the slip velocity (L = 2, 3, 4) or of the surface temperature (L = 6, `m_stang.f90`).
+pub(super) fn outer_iteration(s: &State) -> bool {
+    falling(s) || s.friction_law == 6
+}
+
 /// What differs between two cases' setups (all but the creepages, VELOC and, where `load_varies`,
 /// FN and a Coulomb friction), named. A falling law and its memory are one for the whole history.
 fn setup_difference(a: &State, b: &State, load_varies: bool) -> Option<&'static str> {
@@ -140,7 +146,8 @@ fn joins_sweep(cases: &[Case], statuses: &[CaseStatus], h: &History, k: usize) -
     let (first, c3) = (case3(cases, h.cases[0]), case3(cases, k));
     setup_difference(&first.state, &c3.state, false).is_none()
         && first.digits.n == c3.digits.n
-        && (!falling(&c3.state) || slip_iteration(&first.state) == slip_iteration(&c3.state))
+        && (!outer_iteration(&c3.state) || slip_iteration(&first.state) == slip_iteration(&c3.state))
+        && (c3.state.friction_law != 6 || first.state.temperature_iterations() == c3.state.temperature_iterations())
         && first.digits.b == c3.digits.b
         && first.digits.m == c3.digits.m
         && first.state.slope_mf == c3.state.slope_mf

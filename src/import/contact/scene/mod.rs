@@ -23,7 +23,7 @@ use super::deck::{self, Case, Case3, CaseKind};
 use super::{features, CaseStatus};
 use crate::error::InputError;
 use crate::physics::material::combine_bodies;
-use history::{falling, group, slip_iteration, History, Run, Start};
+use history::{falling, group, outer_iteration, slip_iteration, History, Run, Start};
 use read_back::{check_rows, probe, read_back, tempdir_for};
 use rows::{courant_for, row, speeds, sweep_of};
 use toml::{Table, Value};
@@ -249,9 +249,14 @@ fn build(file: &str, stem: &str, cases: &[Case], h: &History) -> Result<SceneFil
 /// (`m_stang.f90` line 579), `[contact_solver] veldep_tolerance` of an imported falling law.
 const CONTACT_VELDEP_TOLERANCE: f64 = 1e-3;
 
+/// CONTACT's fixed stop of the temperature iteration (L = 6): rms(T_k − T_(k−1)) ≤
+/// 0.0001·rms(T_k) (`m_stang.f90`, the L = 6 branch), `[contact_solver] tempdep_tolerance`.
+const CONTACT_TEMPDEP_TOLERANCE: f64 = 1e-4;
+
 /// `[contact_solver]` of the history's last case, if it needs one: CONTACT's slip-velocity
 /// iteration of a falling law as the deck sets it (a steady start is solved with its transient
-/// cases'), stopped where CONTACT stops it, and the bilinear influence functions (C = 3).
+/// cases'), or its temperature iteration of L = 6 (OMGSLP), stopped where CONTACT stops it, and
+/// the bilinear influence functions (C = 3).
 fn contact_solver(last: &Case3) -> Option<Value> {
     let mut pairs = Vec::new();
     if falling(&last.state) {
@@ -262,6 +267,21 @@ fn contact_solver(last: &Case3) -> Option<Value> {
         if start != "previous" {
             pairs.push(("inislp", Value::String(start.into())));
         }
+        if omgslp != crate::scene::OMGSLP {
+            pairs.push(("omgslp", Value::Float(omgslp)));
+        }
+    } else if outer_iteration(&last.state) {
+        // L = 6: the damping, and the start where a memory takes its rate from it.
+        let (start, omgslp) = slip_iteration(&last.state);
+        if last.state.memory[0] > 1e-9 && start != "previous" {
+            pairs.push(("inislp", Value::String(start.into())));
+        }
+        pairs.push(("tempdep_tolerance", Value::Float(CONTACT_TEMPDEP_TOLERANCE)));
+        let most = last.state.temperature_iterations();
+        if most != crate::scene::TEMPDEP_MAX_ITERATIONS {
+            pairs.push(("tempdep_max_iterations", Value::Integer(most as i64)));
+        }
+        pairs.push(("veldep_solves", Value::String("tight".into())));
         if omgslp != crate::scene::OMGSLP {
             pairs.push(("omgslp", Value::Float(omgslp)));
         }
