@@ -185,7 +185,7 @@ pub fn case_of<'a>(
         material,
         motion: match s.motion {
             MotionSpec::Rolling | MotionSpec::RollingSequence { .. } => Motion::Rolling,
-            MotionSpec::Shift { s_ws_mm, .. } => Motion::Shift { s_ws_mm },
+            MotionSpec::Shift { s_ws_mm, .. } => Motion::Shift { s_ws_mm: row.s_mm.unwrap_or(s_ws_mm) },
         },
         previous: None,
     }

@@ -1,12 +1,13 @@
 //! The section "Wheel–rail contact" (issue 44 item 8): the wheel–rail scenes that declare the
 //! group `wheelrail`, drawn as the Manchester benchmark's users draw it — per wheel and patch the
 //! contact position on the rail and on the wheel, the contact angle, FN, the creepages, FX, FS
-//! and MN against the lateral shift, every model beside CONTACT's printed points; the profiles
+//! and MN against the lateral shift (a shift's cases against the wheelset's position along the
+//! track), every model beside CONTACT's printed points; the profiles
 //! with the contact points and areas at the scene's `patch_cases`; the models' patch maps there;
 //! and each model's error against the exact theory per patch and in the totals.
 
 use crate::comparison::references::contact_output::printed::Printed;
-use crate::comparison::references::contact_output::wheelrail::{Patch, WheelRailCase as Printed1};
+use crate::comparison::references::contact_output::wheelrail::{Along, Patch, WheelRailCase as Printed1};
 use crate::pipeline::wheelrail::CaseResult;
 use crate::pipeline::wheelrail_view::{Outline, WheelRailView};
 use crate::report::plot::{line_chart, patch_map, Axis, Series};
@@ -102,6 +103,28 @@ const QUANTITIES: [Quantity; 10] = [
 
 /// The lateral shift's axis.
 const SHIFT: &str = "lateral shift y_ws [mm]";
+/// A sequence of shifts' axis (CONTACT's S_WS of each case).
+const ALONG: &str = "wheelset position along the track s_ws [mm]";
+
+/// What a scene's figures are drawn against: a shift's cases against the wheelset's position
+/// along the track (the Cattaneo → Carter transition of `m1_catt_shift`), every other scene's
+/// against the lateral shift; the axis title and each case's value.
+fn abscissa(view: &WheelRailView) -> (&'static str, Vec<f64>) {
+    match view.scene.shift_positions_mm() {
+        Some(s) => (ALONG, s),
+        None => (SHIFT, view.scene.cases.iter().map(|c| c.y_mm).collect()),
+    }
+}
+
+/// A printed case's value on the scene's [`abscissa`]: its S_WS in a shift, else its Y_WS.
+fn printed_abscissa(view: &WheelRailView, c: &Printed1) -> Option<f64> {
+    let pos = c.position.as_ref()?;
+    match (view.scene.shift_positions_mm(), pos.along) {
+        (None, _) => Some(pos.y_mm.value),
+        (Some(_), Along::TrackSMm(s)) => Some(s.value),
+        (Some(_), Along::RollerXMm(_)) => None,
+    }
+}
 
 /// A patch's value of `column` for model `k` of a case (`ycp_w_mm`: the view's).
 fn value(view: &WheelRailView, case: usize, r: &CaseResult, k: usize, patch: usize, column: &str) -> Option<f64> {
@@ -114,11 +137,11 @@ fn value(view: &WheelRailView, case: usize, r: &CaseResult, k: usize, patch: usi
     Some(patch_numbers(r, p, f)[at])
 }
 
-/// The curves' group of a case: its yaw where the scene's cases repeat a lateral shift (a crossed
-/// study of shift and yaw), else none.
+/// The curves' group of a case: its yaw where the scene's cases repeat a value of the
+/// [`abscissa`] (a crossed study of shift and yaw), else none.
 fn grouping(view: &WheelRailView) -> impl Fn(f64) -> String {
-    let ys: Vec<f64> = view.scene.cases.iter().map(|c| c.y_mm).collect();
-    let repeats = ys.iter().enumerate().any(|(i, y)| ys[..i].contains(y));
+    let xs = abscissa(view).1;
+    let repeats = xs.iter().enumerate().any(|(i, x)| xs[..i].contains(x));
     move |yaw_rad: f64| if repeats { format!("yaw {:.4} rad", yaw_rad) } else { String::new() }
 }
 
@@ -127,6 +150,7 @@ fn grouping(view: &WheelRailView) -> impl Fn(f64) -> String {
 fn series(w: &Wheel, q: &Quantity, patch: usize) -> Vec<Series> {
     let view = w.view;
     let group = grouping(view);
+    let xs = abscissa(view).1;
     let mut out: Vec<Series> = Vec::new();
     for (k, model) in view.run.models.iter().enumerate() {
         if !q.per_model && model != EXACT && view.run.models.iter().any(|m| m == EXACT) {
@@ -137,8 +161,8 @@ fn series(w: &Wheel, q: &Quantity, patch: usize) -> Vec<Series> {
             let Some(v) = value(view, i, r, k, patch, q.column) else { continue };
             let g = group(row.yaw_rad);
             match by_group.iter_mut().find(|(name, _)| *name == g) {
-                Some((_, points)) => points.push((row.y_mm, v)),
-                None => by_group.push((g, vec![(row.y_mm, v)])),
+                Some((_, points)) => points.push((xs[i], v)),
+                None => by_group.push((g, vec![(xs[i], v)])),
             }
         }
         out.extend(by_group.into_iter().map(|(g, points)| Series::model(model, points).in_group(g)));
@@ -146,40 +170,35 @@ fn series(w: &Wheel, q: &Quantity, patch: usize) -> Vec<Series> {
     let mut theirs: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
     for c in w.contact {
         let (Some(pos), Some(p)) = (c.position.as_ref(), c.patches.get(patch)) else { continue };
-        let Some(v) = (q.printed)(p) else { continue };
+        let (Some(v), Some(x)) = ((q.printed)(p), printed_abscissa(view, c)) else { continue };
         let g = group(pos.yaw_rad.value);
         match theirs.iter_mut().find(|(name, _)| *name == g) {
-            Some((_, points)) => points.push((pos.y_mm.value, v.value)),
-            None => theirs.push((g, vec![(pos.y_mm.value, v.value)])),
+            Some((_, points)) => points.push((x, v.value)),
+            None => theirs.push((g, vec![(x, v.value)])),
         }
     }
     out.extend(theirs.into_iter().map(|(g, points)| Series::reference("CONTACT", points).in_group(g)));
     out
 }
 
-/// The totals on the rail against the shift: FX(TR) and FY(TR) per model with CONTACT's.
+/// The totals on the rail against the [`abscissa`]: FX(TR) and FY(TR) per model with CONTACT's.
 fn totals_figures(w: &Wheel, name: &str, sec: &mut Section) {
     for (t, column, title) in
         [(0, "fx_tr", "total force on the rail FX(TR) [N]"), (1, "fy_tr", "total force on the rail FY(TR) [N]")]
     {
+        let (along, xs) = abscissa(w.view);
         let mut series: Vec<Series> = Vec::new();
         for (k, model) in w.view.run.models.iter().enumerate() {
-            let points = w
-                .view
-                .run
-                .cases
-                .iter()
-                .zip(&w.view.scene.cases)
-                .map(|((_, r), row)| (row.y_mm, r.models[k].2.track_n[t]));
+            let points = w.view.run.cases.iter().zip(&xs).map(|((_, r), &x)| (x, r.models[k].2.track_n[t]));
             series.push(Series::model(model, points.collect()));
         }
         let theirs = w.contact.iter().filter_map(|c| {
             let f = c.forces.as_ref()?;
-            Some((c.position.as_ref()?.y_mm.value, if t == 0 { f.fx_tr_n.value } else { f.fy_tr_n.value }))
+            Some((printed_abscissa(w.view, c)?, if t == 0 { f.fx_tr_n.value } else { f.fy_tr_n.value }))
         });
         series.push(Series::reference("CONTACT", theirs.collect()));
         let file = format!("wheelrail_{name}_{column}.svg");
-        let svg = line_chart(&format!("{name}: {title}"), &Axis::linear(SHIFT), &Axis::linear(title), &series);
+        let svg = line_chart(&format!("{name}: {title}"), &Axis::linear(along), &Axis::linear(title), &series);
         figure(sec, file, svg, &format!("{name} {column}"));
     }
 }
@@ -259,7 +278,8 @@ fn wheel(w: &Wheel, sec: &mut Section) {
             let series = series(w, q, patch);
             let title = format!("{name}, patch {}: {}", patch + 1, q.title);
             let file = format!("wheelrail_{name}_p{}_{}.svg", patch + 1, q.column);
-            figure(sec, file, line_chart(&title, &Axis::linear(SHIFT), &Axis::linear(q.title), &series), &title);
+            let along = Axis::linear(abscissa(view).0);
+            figure(sec, file, line_chart(&title, &along, &Axis::linear(q.title), &series), &title);
         }
         sec.body.push('\n');
     }
@@ -286,7 +306,7 @@ pub fn section(wheels: &[Wheel]) -> Option<Section> {
     }
     let mut sec = Section::new(
         TITLE,
-        "Each wheel–rail scene of group `wheelrail` (docs/wheelrail.md), drawn as the Manchester benchmark (Shackleton & Iwnicki 2008) draws its results: against the wheelset's lateral shift, per contact patch. Every model solves the same patches, so the contact positions, angle, FN and creepages are the exact normal solution's (drawn once, as `contact`); FX, FS and MN are each model's. CONTACT's printed results are the black markers. Signs and frames are CONTACT's module-1 output's (forces on the rail, y to the right on both sides).\n\n".to_string(),
+        "Each wheel–rail scene of group `wheelrail` (docs/wheelrail.md), drawn as the Manchester benchmark (Shackleton & Iwnicki 2008) draws its results: against the wheelset's lateral shift (a sequence of shifts against the wheelset's position along the track), per contact patch. Every model solves the same patches, so the contact positions, angle, FN and creepages are the exact normal solution's (drawn once, as `contact`); FX, FS and MN are each model's. CONTACT's printed results are the black markers. Signs and frames are CONTACT's module-1 output's (forces on the rail, y to the right on both sides).\n\n".to_string(),
     );
     for w in drawn {
         wheel(w, &mut sec);

@@ -116,6 +116,11 @@ pub(crate) type Columns = (Vec<Vec<f64>>, Vec<usize>, String);
 
 /// [`Columns`] of the CSV at `path`, given as the scene's `field`.
 pub(crate) fn read_columns(path: &Path, field: &str, names: &[&str]) -> Result<Columns, InputError> {
+    read_columns_of(path, field, &[names.to_vec()]).map(|(c, _)| c)
+}
+
+/// [`Columns`] of the CSV at `path` whose header is one of `choices` (which one: its index).
+pub(crate) fn read_columns_of(path: &Path, field: &str, choices: &[Vec<&str>]) -> Result<(Columns, usize), InputError> {
     let text = crate::safety::read::read_text(path, crate::safety::read::TABLE_LIMIT_BYTES, "geometry file")
         .map_err(|e| InputError::new(field, path.display(), format!("an existing, readable CSV file ({e})")))?;
     let origin = format!("{field} ({})", path.display());
@@ -126,13 +131,15 @@ pub(crate) fn read_columns(path: &Path, field: &str, names: &[&str]) -> Result<C
         .iter()
         .map(str::to_string)
         .collect();
-    if header != names {
+    let Some(choice) = choices.iter().position(|names| header == *names) else {
+        let each: Vec<String> = choices.iter().map(|names| names.join(",")).collect();
         return Err(InputError::new(
             format!("{origin} header"),
             crate::error::name_excerpt(&header.join(",")),
-            format!("the columns {}", names.join(",")),
+            format!("the columns {}", each.join(" or ")),
         ));
-    }
+    };
+    let names = &choices[choice];
     let mut cols = vec![Vec::new(); names.len()];
     let mut lines = Vec::new();
     for (r, rec) in rdr.records().enumerate() {
@@ -159,5 +166,5 @@ pub(crate) fn read_columns(path: &Path, field: &str, names: &[&str]) -> Result<C
     if cols[0].is_empty() {
         return Err(InputError::new(&origin, "no rows", "at least one row of numbers"));
     }
-    Ok((cols, lines, origin))
+    Ok(((cols, lines, origin), choice))
 }

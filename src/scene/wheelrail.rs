@@ -98,6 +98,9 @@ pub struct CaseRow {
     /// VS, VY, VZ [mm/s], VROLL, VYAW [rad/s], then VPITCH [rad/s] or FX_WS [N], as
     /// [`LongitudinalSpec`] says.
     pub velocity: [f64; 6],
+    /// The wheelset's position along the track S_WS [mm] where the table gives it (column
+    /// `s_mm`, a shift's only: CONTACT reads S_WS per case, the anchor of the material-fixed grid).
+    pub s_mm: Option<f64>,
 }
 
 /// What the friction coefficient varies with (CONTACT's V digit in module 1).
@@ -296,6 +299,16 @@ pub fn case_columns(vertical: VerticalSpec, longitudinal: LongitudinalSpec) -> V
     LEAD.iter().copied().chain([middle]).chain(TAIL[..7].iter().copied()).chain([last]).collect()
 }
 
+/// The optional column of a shift's positions, second after `contact_case` where a table has it.
+pub const POSITION_COLUMN: &str = "s_mm";
+
+/// [`case_columns`] with the shift's positions [`POSITION_COLUMN`] after `contact_case`.
+pub fn case_columns_with_positions(vertical: VerticalSpec, longitudinal: LongitudinalSpec) -> Vec<&'static str> {
+    let mut out = case_columns(vertical, longitudinal);
+    out.insert(1, POSITION_COLUMN);
+    out
+}
+
 /// Whether a parsed TOML document is a wheel–rail scene (it has a `[wheelrail]` table).
 pub fn is_wheelrail(doc: &toml::Table) -> bool {
     doc.contains_key("wheelrail")
@@ -315,13 +328,17 @@ pub fn read_if_wheelrail(path: &Path) -> Result<Option<WheelRailScene>, InputErr
 }
 
 impl WheelRailScene {
-    /// Each case's wheelset position along the track [mm] in a shift: `s_mm`, or in a sequence of
+    /// Each case's wheelset position along the track [mm] in a shift: the table's column `s_mm`
+    /// where it has one (CONTACT's S_WS of each case), else `s_mm`, or in a sequence of
     /// shifts the position before plus the case before's shift VS × 1 s (CONTACT's dummy time
     /// step); after a steady start (`start = "steady"`) the steady case at `s_mm` and each shift
     /// at the position before plus its own shift (the wheelset moved from the steady state);
     /// `None` in rolling.
     pub fn shift_positions_mm(&self) -> Option<Vec<f64>> {
         let MotionSpec::Shift { s_ws_mm, sequence, steady_start } = self.motion else { return None };
+        if let Some(given) = self.cases.iter().map(|r| r.s_mm).collect::<Option<Vec<f64>>>() {
+            return Some(given);
+        }
         let mut s = s_ws_mm;
         let mut out = Vec::with_capacity(self.cases.len());
         for (k, row) in self.cases.iter().enumerate() {
@@ -429,6 +446,8 @@ impl WheelRailScene {
                 "a shift or transient rolling with the pitch's shift or velocity given ([cases] longitudinal = \"velocity\") and friction (not frictionless)",
             ));
         }
+        let given_s = doc.get("wheelrail").and_then(|w| w.get("s_mm")).is_some();
+        super::wheelrail_cases::check_positions(&cases, motion, given_s, mu_variation.as_ref())?;
         let origin = super::origin::read(&mut top)?;
         check_origin(origin.as_ref(), &cases)?;
         let report = report(&mut top, dir, &cases)?;

@@ -17,7 +17,9 @@
 
 use super::keys::{bound, key, Absent, Allowed, Keys};
 use super::reader::{Range, Section};
-use super::wheelrail::{case_columns, CaseRow, LongitudinalSpec, VerticalSpec};
+use super::wheelrail::{
+    case_columns, case_columns_with_positions, CaseRow, LongitudinalSpec, MotionSpec, MuBy, MuVariation, VerticalSpec,
+};
 use crate::error::InputError;
 use std::path::Path;
 
@@ -142,6 +144,13 @@ pub const COLUMNS: Keys = Keys {
             Absent::Required,
             "the case's number (CONTACT's case number for an imported deck)",
         ),
+        key(
+            "s_mm",
+            "mm",
+            Allowed::Number(LENGTH, r#"only with `motion = "shift"` or `"shift_sequence"`, not with `[wheelrail] s_mm` or `mu_by = "track_s"`"#),
+            Absent::Text("an optional column: without it each position is `[wheelrail] s_mm` or follows from the shifts (`vs_mm_s`)"),
+            r#"in a shift, the wheelset's position along the track S_WS of each case, as CONTACT reads it per case: the anchor of the material-fixed grid (element centres at track x = −`s_mm` + i `dx_mm`), independent of the shift; a table that has it gives it second, after `contact_case` (`testbank/examples_trans/m1_catt_shift`: a shift of 4 mm from rest at 0, then shifts of 0.2 mm at 0.2, 0.4, …)"#,
+        ),
         key("y_mm", "mm", Allowed::Number(LENGTH, ""), Absent::Required, "the wheelset's lateral displacement Y_WS"),
         key(
             "fz_n",
@@ -164,7 +173,7 @@ pub const COLUMNS: Keys = Keys {
             "mm/s",
             Allowed::Number(SPEED, "not 0"),
             Absent::Required,
-            r#"the forward speed VS_WS (the creepages are over it); in a shift (`motion = "shift"` or `"shift_sequence"`) this and the other velocity columns are the step's shifts in mm and rad; in a sequence of shifts each case's position along the track is the one before plus this shift (× 1 s)"#,
+            r#"the forward speed VS_WS (the creepages are over it); in a shift (`motion = "shift"` or `"shift_sequence"`) this and the other velocity columns are the step's shifts in mm and rad; in a sequence of shifts each case's position along the track is the one before plus this shift (× 1 s), unless the table has the column `s_mm`"#,
         ),
         key("vy_mm_s", "mm/s", Allowed::Number(SPEED, ""), Absent::Required, "the lateral velocity VY_WS"),
         key("vz_mm_s", "mm/s", Allowed::Number(SPEED, ""), Absent::Required, "the vertical velocity VZ_WS"),
@@ -308,17 +317,56 @@ pub fn check_longitudinal(
     Ok(())
 }
 
-/// The cases of the table `file`, one per row.
+/// The table's column `s_mm` (a shift's position per case) only in a shift (`motion = "shift"` or
+/// `"shift_sequence"`), without `[wheelrail] s_mm` (`given_s`; one place gives the position) and
+/// without μ along the track (whose position is `[wheelrail] s_mm`).
+pub fn check_positions(
+    cases: &[CaseRow],
+    motion: MotionSpec,
+    given_s: bool,
+    mu_variation: Option<&MuVariation>,
+) -> Result<(), InputError> {
+    if cases.iter().all(|r| r.s_mm.is_none()) {
+        return Ok(());
+    }
+    let why = if !matches!(motion, MotionSpec::Shift { .. }) {
+        "motion = \"shift\" or \"shift_sequence\" (the position anchors a shift's material-fixed grid)"
+    } else if given_s {
+        "no [wheelrail] s_mm beside it (one place gives the positions)"
+    } else if mu_variation.is_some_and(|v| matches!(v.by, MuBy::TrackS { .. })) {
+        "no mu_by = \"track_s\" beside it (μ is taken at [wheelrail] s_mm)"
+    } else {
+        return Ok(());
+    };
+    Err(InputError::new("cases.file column s_mm", "given", format!("the column s_mm only with {why}")))
+}
+
+/// The cases of the table `file`, one per row; its columns [`case_columns`], or with the shift's
+/// positions `s_mm` second ([`case_columns_with_positions`]).
 fn from_file(c: &mut Section, dir: &Path, spec: Spec) -> Result<Vec<CaseRow>, InputError> {
     let field = c.field("file");
     let file = c.text("file")?;
-    let (cols, lines, origin) = super::geometry::read_columns(&dir.join(file), &field, &case_columns(spec.0, spec.1))?;
+    let choices = [case_columns(spec.0, spec.1), case_columns_with_positions(spec.0, spec.1)];
+    let ((mut cols, lines, origin), choice) = super::geometry::read_columns_of(&dir.join(file), &field, &choices)?;
     let n = cols[0].len();
     if n == 0 || n > MAX_CASES {
         return Err(InputError::new(&origin, format!("{n} rows"), format!("1 to {} cases", bound(MAX_CASES as f64))));
     }
+    let positions = (choice == 1).then(|| cols.remove(1));
     let values = |r: usize| -> Vec<f64> { cols.iter().map(|col| col[r]).collect() };
-    (0..n).map(|r| row(&values(r), &format!("{origin} line {}", lines[r]), spec)).collect()
+    let position = |r: usize, line: &str| -> Result<Option<f64>, InputError> {
+        let Some(p) = &positions else { return Ok(None) };
+        match LENGTH.contains(p[r]) {
+            true => Ok(Some(p[r])),
+            false => Err(InputError::new(format!("{line} column s_mm"), p[r], declared("s_mm").message())),
+        }
+    };
+    (0..n)
+        .map(|r| {
+            let line = format!("{origin} line {}", lines[r]);
+            Ok(CaseRow { s_mm: position(r, &line)?, ..row(&values(r), &line, spec)? })
+        })
+        .collect()
 }
 
 /// The vertical and longitudinal problems, which fix the table's columns.
@@ -523,6 +571,7 @@ pub(super) fn row(v: &[f64], line: &str, spec: Spec) -> Result<CaseRow, InputErr
         roll_rad: check(3)?,
         yaw_rad: check(4)?,
         velocity,
+        s_mm: None,
     })
 }
 
@@ -648,20 +697,60 @@ mod tests {
         assert!(err.contains("report.group") && err.contains("wheelrail"), "{err}");
     }
 
-    /// The declared columns are exactly those of the four tables [`case_columns`] gives (the
-    /// reader checks each column by its declaration; the docs' columns table is generated from it).
+    /// The shift's positions per case (column `s_mm`, second): read into each row and taken as
+    /// the shift's positions; refused outside a shift, beside `[wheelrail] s_mm`, out of range.
+    #[test]
+    fn a_shifts_positions_column_gives_each_cases_position_and_is_refused_elsewhere() {
+        let dir = tempfile::tempdir().unwrap();
+        let head = "contact_case,s_mm,y_mm,z_mm,roll_rad,yaw_rad,vs_mm_s,vy_mm_s,vz_mm_s,vroll_rad_s,vyaw_rad_s,vpitch_rad_s\n";
+        let rows =
+            "1,0.0,0.0,-0.2,0.0,0.0,4.0,0.0,0.0,0.0,0.0,-0.04\n2,0.2,0.0,-0.2,0.0,0.0,0.2,0.0,0.0,0.0,0.0,-0.002\n";
+        std::fs::write(dir.path().join("c.csv"), format!("{head}{rows}")).unwrap();
+        std::fs::write(dir.path().join("bad.csv"), format!("{head}1,2e5,0.0,-0.2,0.0,0.0,4.0,0.0,0.0,0.0,0.0,-0.04\n"))
+            .unwrap();
+        let scene = |wheelrail: &str, file: &str| {
+            let text = format!(
+                "name = \"s\"\nsolvers = [\"contact\"]\n[wheelrail]\nside = \"right\"\nmu = 0.4\ndx_mm = 0.2\nds_mm = 0.2\n{wheelrail}\
+                 [rail]\nprofile = \"r.prr\"\ny_mm = 0.0\nz_mm = 0.0\n\
+                 [wheel]\nprofile = \"w.prw\"\nflange_back_distance_mm = 0.0\nflange_back_position_mm = 0.0\n\
+                 nominal_radius_mm = 100.0\n[material]\ng_mpa = 200.0\npoisson = 0.28\n\
+                 [cases]\nvertical = \"position\"\nfile = \"{file}\"\n"
+            );
+            WheelRailScene::from_toml(&text, dir.path()).map_err(|e| e.to_string())
+        };
+        let s = scene("motion = \"shift_sequence\"\n", "c.csv").unwrap();
+        assert_eq!(s.cases.iter().map(|r| r.s_mm).collect::<Vec<_>>(), [Some(0.0), Some(0.2)]);
+        assert_eq!(s.cases[1].velocity, [0.2, 0.0, 0.0, 0.0, 0.0, -0.002]);
+        assert_eq!(s.shift_positions_mm(), Some(vec![0.0, 0.2]), "not 0 then 4 (the first shift's)");
+        for (wheelrail, file, field, allowed) in [
+            ("", "c.csv", "cases.file column s_mm", "motion = \"shift\" or \"shift_sequence\""),
+            ("motion = \"shift\"\ns_mm = 1.0\n", "c.csv", "cases.file column s_mm", "no [wheelrail] s_mm"),
+            ("motion = \"shift\"\n", "bad.csv", "line 2 column s_mm", "[-1e5, 1e5]"),
+        ] {
+            let err = scene(wheelrail, file).unwrap_err();
+            assert!(err.contains(field) && err.contains(allowed), "{wheelrail:?} {file}: {err}");
+        }
+    }
+
+    /// The declared columns are exactly those of the eight tables [`case_columns`] and
+    /// [`case_columns_with_positions`] give (the reader checks each column by its declaration; the
+    /// docs' columns table is generated from it).
     #[test]
     fn the_declared_columns_are_the_tables_columns_in_their_order() {
-        use crate::scene::wheelrail::{case_columns, LongitudinalSpec as L, VerticalSpec as V};
+        use crate::scene::wheelrail::{
+            case_columns, case_columns_with_positions, LongitudinalSpec as L, VerticalSpec as V,
+        };
         let declared: Vec<&str> = super::COLUMNS.keys.iter().map(|k| k.key).collect();
         let mut seen = std::collections::BTreeSet::new();
         for (v, l) in
             [(V::Force, L::Velocity), (V::Force, L::Force), (V::Position, L::Velocity), (V::Position, L::Force)]
         {
-            let cols = case_columns(v, l);
-            let at: Vec<usize> = cols.iter().map(|c| declared.iter().position(|d| d == c).expect("declared")).collect();
-            assert!(at.windows(2).all(|w| w[0] < w[1]), "{cols:?} in the declared order");
-            seen.extend(cols);
+            for cols in [case_columns(v, l), case_columns_with_positions(v, l)] {
+                let at: Vec<usize> =
+                    cols.iter().map(|c| declared.iter().position(|d| d == c).expect("declared")).collect();
+                assert!(at.windows(2).all(|w| w[0] < w[1]), "{cols:?} in the declared order");
+                seen.extend(cols);
+            }
         }
         assert_eq!(seen.len(), declared.len(), "every declared column is one of a table: {seen:?}");
     }

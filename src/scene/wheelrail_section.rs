@@ -59,7 +59,9 @@ pub const KEYS: Keys = Keys {
             "s_mm",
             "mm",
             Allowed::Number(LENGTH, ""),
-            Absent::Text("0; only with `mu_by = \"track_s\"` or `motion = \"shift\"`"),
+            Absent::Text(
+                "0; only with `mu_by = \"track_s\"` or `motion = \"shift\"`, not with the cases table's column `s_mm`",
+            ),
             r#"the wheelset's position along the track (CONTACT's S_WS), where μ is taken and, in a shift, where the material-fixed grid is anchored (element centres at track x = −`s_mm` + i `dx_mm`): `s_mm = 60.0`"#,
         ),
         key(
@@ -116,7 +118,7 @@ pub const KEYS: Keys = Keys {
             "–",
             Allowed::Choice(&["rolling", "shift", "shift_sequence", "rolling_sequence"], ""),
             Absent::Choice("rolling"),
-            r#"steady rolling (CONTACT's T = 3), transient rolling (`"rolling_sequence"`: the first case steady rolling, each later case one transient rolling step of `dq_rel` × `dx_mm` continuing it, CONTACT's T = 3 then T = 2 with P = 0: the grid fixed laterally in the rail's material and moving with the wheelset along the track, the tractions the case before left carried over and rolled by the step, docs/wheelrail.md "Transient rolling"; only the exact theory, one material, the pitch velocity given, with friction), a sequence of shifts (`"shift_sequence"`: the first case from rest, each later case continuing the one before it, CONTACT's T = 1 with P = 0: it takes the tractions the case before left on the material-fixed grid, patches connected by overlap, split and merged as CONTACT's, docs/wheelrail.md "Shifts that continue"; the wheelset's position of each later case is the one before plus its shift `vs_mm_s` × 1 s, from `s_mm` at the first), or a shift from rest (T = 1 with P = 2, docs/wheelrail.md "Shifts"): each case is one step from zero tractions, its velocity columns the step's shifts (mm and rad, CONTACT's dummy time step of 1 s: `vs_mm_s = 0.4` shifts the wheelset 0.4 mm), the creepages printed as shifts (mm, rad), the grid fixed in the rail's material (x from −`s_mm`, s along the rail profile's own arc length; a profile file, not a closed form); only the exact theory (`solvers = ["contact"]`), one material, `[cases] longitudinal = "velocity"`: `motion = "shift"`"#,
+            r#"steady rolling (CONTACT's T = 3), transient rolling (`"rolling_sequence"`: the first case steady rolling, each later case one transient rolling step of `dq_rel` × `dx_mm` continuing it, CONTACT's T = 3 then T = 2 with P = 0: the grid fixed laterally in the rail's material and moving with the wheelset along the track, the tractions the case before left carried over and rolled by the step, docs/wheelrail.md "Transient rolling"; only the exact theory, one material, the pitch velocity given, with friction), a sequence of shifts (`"shift_sequence"`: the first case from rest, each later case continuing the one before it, CONTACT's T = 1 with P = 0: it takes the tractions the case before left on the material-fixed grid, patches connected by overlap, split and merged as CONTACT's, docs/wheelrail.md "Shifts that continue"; the wheelset's position of each later case is the one before plus its shift `vs_mm_s` × 1 s, from `s_mm` at the first, or each case's own where the cases table has the column `s_mm`), or a shift from rest (T = 1 with P = 2, docs/wheelrail.md "Shifts"): each case is one step from zero tractions, its velocity columns the step's shifts (mm and rad, CONTACT's dummy time step of 1 s: `vs_mm_s = 0.4` shifts the wheelset 0.4 mm), the creepages printed as shifts (mm, rad), the grid fixed in the rail's material (x from −`s_mm`, s along the rail profile's own arc length; a profile file, not a closed form); only the exact theory (`solvers = ["contact"]`), one material, `[cases] longitudinal = "velocity"`: `motion = "shift"`"#,
         ),
         key(
             "dq_rel",
@@ -130,7 +132,7 @@ pub const KEYS: Keys = Keys {
             "–",
             Allowed::Choice(&["steady", "rest"], ""),
             Absent::Text("`\"steady\"` with `motion = \"rolling_sequence\"`, `\"rest\"` with `\"shift_sequence\"`"),
-            r#"with `motion = "rolling_sequence"` or `"shift_sequence"` only, how the sequence starts: the first case steady rolling (`"steady"`, CONTACT's T = 3 before T = 2 or T = 1 with P = 0; its tractions put on the super-grid at its reference's nearest element, `shift_grid_super`; in a shift sequence the steady case at `s_mm` and each shift at the position before plus its own shift `vs_mm_s` × 1 s, as `examples_trans/t3_t1_force.inp`) or from zero tractions (`"rest"`: a transient step, T = 2 with P = 2, or a shift, T = 1 with P = 2): `start = "rest"`"#,
+            r#"with `motion = "rolling_sequence"` or `"shift_sequence"` only, how the sequence starts: the first case steady rolling (`"steady"`, CONTACT's T = 3 before T = 2 or T = 1 with P = 0; its tractions put on the super-grid at its reference's nearest element, `shift_grid_super`; in a shift sequence the steady case at `s_mm` and each shift at the position before plus its own shift `vs_mm_s` × 1 s, as `examples_trans/t3_t1_force.inp`, or the cases table's `s_mm`) or from zero tractions (`"rest"`: a transient step, T = 2 with P = 2, or a shift, T = 1 with P = 2): `start = "rest"`"#,
         ),
         key(
             "wheel_surface",

@@ -361,10 +361,12 @@ fn a_shift_from_rest_exports_and_imports_back() {
 
 /// A sequence of shifts (T = 1, P = 2 then P = 0): t1_split_cp's two cases import as one scene
 /// with `motion = "shift_sequence"`, export with P = 0 and each case's S_WS, and import back as
-/// the same scene. A continued shift that does not follow a shift, or whose S_WS is not where the
-/// shifts before it took the wheelset, is refused naming why.
+/// the same scene. A continued shift whose S_WS is not where the shifts before it took the
+/// wheelset (CONTACT reads S_WS per case: `m1_catt_shift`) imports with each case's position, the
+/// cases table's column `s_mm`, and exports and imports back the same; so does a shift continuing
+/// a steady case at a position of its own.
 #[test]
-fn a_sequence_of_shifts_exports_and_imports_back_and_a_misfit_is_refused() {
+fn a_sequence_of_shifts_exports_and_imports_back_with_its_positions_where_the_shifts_do_not_give_them() {
     let dir = common::tempdir("m1_shift_sequence");
     let deck = root().join("reference/contact_wheelrail/testbank/examples_trans/t1_split_cp.inp");
     let scenes = import(&deck, &dir.join("scenes"), &[]);
@@ -372,28 +374,52 @@ fn a_sequence_of_shifts_exports_and_imports_back_and_a_misfit_is_refused() {
     let (original, back) = round_trip(&scenes[0], &dir.join("back"));
     assert_eq!(original.motion, MotionSpec::Shift { s_ws_mm: 0.0, sequence: true, steady_start: false });
     assert_eq!(original.cases.len(), 2);
+    assert!(original.cases.iter().all(|r| r.s_mm.is_none()), "the shifts give the positions: {original:?}");
     assert_eq!(values(&back), values(&original));
     let exported = std::fs::read_to_string(dir.join("back/deck/t1_split_cp_1.inp")).unwrap();
     assert!(exported.contains(" 1001000    C-P-B-T") && exported.contains("  0.4   14.74   1.211"), "{exported}");
     // Case 2 at S_WS = 0.5 where case 1's shift of 0.4 mm took the wheelset to 0.4; case 1 rolling
-    // (a steady start, whose shift must then sit at case 1's S_WS plus case 2's own shift).
+    // (a steady start, the shift's own 0.004 mm from case 1's S_WS = 0 not reaching 0.4).
     let text = std::fs::read_to_string(&deck).unwrap();
     let profiles = deck.parent().unwrap().join("../profiles");
     let text = text.replace("'../profiles/", &format!("'{}/", profiles.display()));
-    for (what, changed, why) in [
-        (
-            "s",
-            text.replace("  0.400   14.74   1.211", "  0.500   14.74   1.211"),
-            "S_WS = 0.5 where the shifts before it reached 0.4",
-        ),
-        ("rolling", text.replacen(" 1201000 ", " 1203000 ", 1), "the steady case 1's S_WS plus the shift SHFT_S"),
+    for (what, changed, positions, steady_start) in [
+        ("s", text.replace("  0.400   14.74   1.211", "  0.500   14.74   1.211"), [0.0, 0.5], false),
+        ("rolling", text.replacen(" 1201000 ", " 1203000 ", 1), [0.0, 0.4], true),
     ] {
         let misfit = dir.join(format!("misfit_{what}.inp"));
         std::fs::write(&misfit, changed).unwrap();
-        let imported = creepbench::import::contact::import(&misfit).unwrap();
-        let s2 = imported.statuses.iter().find(|s| s.case == 2).unwrap();
-        assert!(s2.scene.is_none() && s2.refused.iter().any(|r| r.contains(why)), "{what}: {s2:?}");
+        let scenes = import(&misfit, &dir.join(format!("scenes_{what}")), &[]);
+        assert_eq!(scenes.len(), 1, "{what}: {scenes:?}");
+        let (original, back) = round_trip(&scenes[0], &dir.join(format!("back_{what}")));
+        let got: Vec<Option<f64>> = original.cases.iter().map(|r| r.s_mm).collect();
+        assert_eq!(got, positions.map(Some), "{what}");
+        assert_eq!(original.shift_positions_mm(), Some(positions.to_vec()), "{what}");
+        assert_eq!(original.motion, MotionSpec::Shift { s_ws_mm: 0.0, sequence: true, steady_start }, "{what}");
+        assert_eq!(values(&back), values(&original), "{what}");
+        let table = std::fs::read_to_string(scenes[0].with_file_name(format!("{}_cases.csv", original.name))).unwrap();
+        assert!(table.starts_with("contact_case,s_mm,y_mm,z_mm,"), "{what}: {table}");
+        let toml = std::fs::read_to_string(&scenes[0]).unwrap();
+        assert!(!toml.lines().any(|l| l.starts_with("s_mm")), "{what}: the table gives the positions: {toml}");
     }
+}
+
+/// `m1_catt_shift`'s 81 cases (a shift of 4 mm from rest at S_WS = 0, then 80 shifts of 0.2 mm at
+/// S_WS = 0.2, 0.4, … 16.0: the Cattaneo → Carter transition) import as one sequence of shifts with
+/// each case's position; the shipped scene is that import (with CONTACT's meshed wheel surface).
+#[test]
+fn the_cattaneo_to_carter_shifts_import_as_one_sequence_with_their_positions() {
+    let dir = common::tempdir("m1_catt_shift");
+    let deck = root().join("reference/contact_wheelrail/testbank/examples_trans/m1_catt_shift.inp");
+    let scenes = import(&deck, &dir, &[]);
+    assert_eq!(scenes.len(), 1, "{scenes:?}");
+    let s = WheelRailScene::from_file(&scenes[0]).unwrap();
+    assert_eq!(s.cases.len(), 81);
+    let positions = s.shift_positions_mm().unwrap();
+    assert_eq!((positions[0], positions[1], positions[80]), (0.0, 0.2, 16.0));
+    assert_eq!((s.cases[0].velocity[0], s.cases[1].velocity[0]), (4.0, 0.2));
+    let shipped = WheelRailScene::from_file(&root().join("scenes/wheelrail/m1_catt_shift_1.toml")).unwrap();
+    assert_eq!(values(&WheelRailScene { wheel_mesh: true, ..s }), values(&shipped));
 }
 
 /// Friction varying across the rail (V = 1) and along the track (V = 2): mbench_a22_varfric's

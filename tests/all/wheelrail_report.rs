@@ -161,7 +161,8 @@ fn bad_cases_axes_and_report_requests_exit_2_naming_the_field() {
 }
 
 /// `run` of the shipped wheel–rail suite: every scene gated, and the section drawn from the
-/// scenes that declare `[report] group = "wheelrail"` alone (the others, whose positions may be
+/// scenes that declare `[report] group = "wheelrail"` alone (the Manchester wheels against the
+/// lateral shift, `m1_catt_shift_1` against the position along the track) (the others, whose positions may be
 /// in full slip at creepages no patch map takes, are not viewed).
 #[test]
 fn run_of_the_shipped_suite_draws_only_the_declared_scenes() {
@@ -170,8 +171,9 @@ fn run_of_the_shipped_suite_draws_only_the_declared_scenes() {
     assert_eq!(run.outcome.report.as_deref(), Some(rep.join("validation.md").as_path()));
     let md = std::fs::read_to_string(rep.join("validation.md")).unwrap();
     assert!(md.contains("## Wheel–rail contact"), "no section");
-    for drawn in ["mbench_a22_left", "mbench_a22_right"] {
-        assert!(md.contains(drawn), "{drawn} not drawn");
+    let drawn = ["mbench_a22_left", "mbench_a22_right", "m1_catt_shift_1"];
+    for name in drawn {
+        assert!(md.contains(name), "{name} not drawn");
     }
     let figures: Vec<String> = std::fs::read_dir(rep.join("figures"))
         .unwrap()
@@ -179,7 +181,10 @@ fn run_of_the_shipped_suite_draws_only_the_declared_scenes() {
         .map(|e| e.file_name().to_string_lossy().to_string())
         .filter(|f| f.starts_with("wheelrail_"))
         .collect();
-    let declared =
-        |f: &String| f.starts_with("wheelrail_mbench_a22_left_") || f.starts_with("wheelrail_mbench_a22_right_");
+    let declared = |f: &String| drawn.iter().any(|name| f.starts_with(&format!("wheelrail_{name}_")));
     assert!(!figures.is_empty() && figures.iter().all(declared), "{figures:?}");
+    // The Cattaneo → Carter transition (a shift of 4 mm from rest, then 80 shifts of 0.2 mm):
+    // FX against the wheelset's position along the track, the exact solver beside CONTACT's 81.
+    let fx = std::fs::read_to_string(rep.join("figures/wheelrail_m1_catt_shift_1_p1_fx_n.svg")).unwrap();
+    assert!(fx.contains("wheelset position along the track s_ws [mm]") && fx.contains(">CONTACT<"), "{fx}");
 }

@@ -6,8 +6,8 @@
 use super::super::read_back::tempdir_for;
 use crate::error::InputError;
 use crate::scene::wheelrail::{
-    case_columns, CaseRow, LongitudinalSpec, MotionSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec,
-    WheelRailScene,
+    case_columns, case_columns_with_positions, CaseRow, LongitudinalSpec, MotionSpec, MuBy, PlacementSpec, ProfileSpec,
+    SideSpec, VerticalSpec, WheelRailScene,
 };
 use crate::scene::wheelrail_profile::{MIRROR_Z, PROFILE_DEFAULTS};
 use std::fmt::Write;
@@ -63,8 +63,10 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
         if steady_start {
             wheelrail.push(("start", Value::String("steady".into())));
         }
-        // With mu_by = "track_s" the friction's s_mm is the same position, written once.
-        if !matches!(s.mu_variation.as_ref().map(|v| v.by), Some(MuBy::TrackS { .. })) {
+        // With mu_by = "track_s" the friction's s_mm is the same position, written once; with
+        // the cases' positions, the table's column gives it.
+        let by_track = matches!(s.mu_variation.as_ref().map(|v| v.by), Some(MuBy::TrackS { .. }));
+        if !by_track && s.cases.iter().all(|r| r.s_mm.is_none()) {
             wheelrail.push(("s_mm", Value::Float(s_ws_mm)));
         }
     }
@@ -203,10 +205,16 @@ fn material(s: &WheelRailScene) -> Result<Pairs, InputError> {
 /// The cases table: the reader's columns ([`case_columns`]), one row per case, every value in
 /// the shortest form that reads back to the same number.
 fn cases_csv(vertical: VerticalSpec, longitudinal: LongitudinalSpec, rows: &[CaseRow]) -> String {
-    let mut out = case_columns(vertical, longitudinal).join(",");
+    let positions = rows.iter().all(|r| r.s_mm.is_some());
+    let columns = match positions {
+        true => case_columns_with_positions(vertical, longitudinal),
+        false => case_columns(vertical, longitudinal),
+    };
+    let mut out = columns.join(",");
     out.push('\n');
     for r in rows {
-        let values = [r.y_mm, r.vertical, r.roll_rad, r.yaw_rad].into_iter().chain(r.velocity);
+        let s = r.s_mm.filter(|_| positions);
+        let values = s.into_iter().chain([r.y_mm, r.vertical, r.roll_rad, r.yaw_rad]).chain(r.velocity);
         let _ = write!(out, "{}", r.contact_case);
         for v in values {
             let _ = write!(out, ",{v:?}");
