@@ -13,9 +13,11 @@ use crate::scene::wheelrail::{
 use crate::solvers;
 use crate::wheelrail::friction::Friction;
 use crate::wheelrail::patch::Separation;
+use crate::wheelrail::profile::slices::{read_slices, Slices};
 use crate::wheelrail::profile::{options::ProfileOptions, read::read_profile, Profile, ProfileKind};
 use crate::wheelrail::rail::{RailPlacement, Track};
 use crate::wheelrail::side::Side;
+use crate::wheelrail::varrail::RailSlices;
 use crate::wheelrail::wheel::{Pose, Velocity, WheelDeviation, WheelsetGeometry};
 use crate::wheelrail::wheel_mesh::WheelSurface;
 use crate::wheelrail::{Motion, Vertical, WheelRailCase};
@@ -43,9 +45,36 @@ fn models(scene: &WheelRailScene) -> Result<Vec<String>, InputError> {
     Ok(scene.solvers.clone())
 }
 
-/// A profile file read as the scene says.
-fn profile(spec: &ProfileSpec, kind: ProfileKind) -> Result<Profile, Error> {
-    let opts = ProfileOptions {
+/// The scene's rail: its profile and, where it varies along the track (a slices file), the
+/// slices with `profile` their cross-section at the wheelset's S_WS (where CONTACT places the rail
+/// and makes the gap mesh: `m_wr_solvecp`, `varprof_intpol_xunif`).
+#[derive(Debug)]
+pub struct RailProfile {
+    pub profile: Profile,
+    pub slices: Option<Slices>,
+}
+
+impl std::ops::Deref for RailProfile {
+    type Target = Profile;
+    fn deref(&self) -> &Profile {
+        &self.profile
+    }
+}
+
+/// The rail read as the scene says: a profile, or a slices file (`.slcs`) and its cross-section
+/// at `s_ws_mm`.
+fn rail_profile(spec: &ProfileSpec, s_ws_mm: f64) -> Result<RailProfile, Error> {
+    if !spec.path.to_string_lossy().to_lowercase().ends_with(".slcs") {
+        return Ok(RailProfile { profile: profile(spec, ProfileKind::Rail)?, slices: None });
+    }
+    let slices = read_slices(&spec.path, ProfileKind::Rail, &options(spec))?;
+    let profile = slices.section_at(s_ws_mm)?;
+    Ok(RailProfile { profile, slices: Some(slices) })
+}
+
+/// CONTACT's profile options as the scene gives them.
+fn options(spec: &ProfileSpec) -> ProfileOptions {
+    ProfileOptions {
         mirror_y: i32::from(spec.mirror_y),
         mirror_z: i32::from(spec.mirror_z),
         scale: spec.scale,
@@ -56,14 +85,18 @@ fn profile(spec: &ProfileSpec, kind: ProfileKind) -> Result<Profile, Error> {
         kink_low_rad: spec.kink_low_rad,
         kink_wid_mm: spec.kink_width_mm,
         max_omit: spec.max_omit,
-    };
-    Ok(read_profile(&spec.path, kind, &opts)?)
+    }
+}
+
+/// A profile file read as the scene says.
+fn profile(spec: &ProfileSpec, kind: ProfileKind) -> Result<Profile, Error> {
+    Ok(read_profile(&spec.path, kind, &options(spec))?)
 }
 
 /// Read the scene's profiles and check its models: everything that can fail on input, before
 /// any case runs.
-pub fn prepare(scene: &WheelRailScene) -> Result<(Profile, Profile, Vec<String>), Error> {
-    let rail = profile(&scene.rail, ProfileKind::Rail)?;
+pub fn prepare(scene: &WheelRailScene) -> Result<(RailProfile, Profile, Vec<String>), Error> {
+    let rail = rail_profile(&scene.rail, scene.s_ws_mm)?;
     let wheel = profile(&scene.wheel, ProfileKind::Wheel)?;
     Ok((rail, wheel, models(scene)?))
 }
@@ -125,7 +158,7 @@ fn in_case(scene: &str, row: &CaseRow, e: Error) -> Error {
 pub fn case_of<'a>(
     s: &WheelRailScene,
     row: &CaseRow,
-    rail: &'a Profile,
+    rail: &'a RailProfile,
     wheel: &'a Profile,
     material: crate::physics::Material,
 ) -> WheelRailCase<'a> {
@@ -146,7 +179,7 @@ pub fn case_of<'a>(
             SideSpec::Left => Side::Left,
             SideSpec::Right => Side::Right,
         },
-        rail,
+        rail: &rail.profile,
         wheel,
         track: Track {
             placement: match s.placement {
@@ -188,5 +221,6 @@ pub fn case_of<'a>(
             MotionSpec::Shift { s_ws_mm, .. } => Motion::Shift { s_ws_mm: row.s_mm.unwrap_or(s_ws_mm) },
         },
         previous: None,
+        rail_slices: rail.slices.as_ref().map(|slices| RailSlices { slices, s_ws_mm: s.s_ws_mm }),
     }
 }

@@ -199,6 +199,9 @@ pub struct WheelRailScene {
     pub wheel_mesh: bool,
     /// Steady rolling, or a shift from rest (`motion`, `s_mm`; CONTACT's T = 3 or 1 with P = 2).
     pub motion: MotionSpec,
+    /// S_WS [mm] (`[wheelrail] s_mm`, 0 if absent): where the wheelset stands along the track (on a
+    /// rail slices file, the track's x = 0 at u = S_WS).
+    pub s_ws_mm: f64,
     pub vertical: VerticalSpec,
     /// VPITCH or FX_WS given (`[cases] longitudinal`).
     pub longitudinal: LongitudinalSpec,
@@ -406,7 +409,8 @@ impl WheelRailScene {
             wheel_mesh,
             frictionless,
             motion,
-        } = super::wheelrail_section::read(top.table("wheelrail")?)?;
+            s_ws_mm,
+        } = super::wheelrail_section::read(top.table("wheelrail")?, rail_is_slices(doc))?;
         if motion != MotionSpec::Rolling && solvers.iter().any(|m| m != "contact") {
             return Err(InputError::new(
                 "solvers",
@@ -477,6 +481,7 @@ impl WheelRailScene {
             d_turn_mm,
             wheel_mesh,
             motion,
+            s_ws_mm,
             vertical,
             longitudinal,
             cases,
@@ -489,6 +494,15 @@ impl WheelRailScene {
 
 /// `[origin] cases` = [first, last] are the smallest and largest `contact_case` of the table (an
 /// imported scene's rows are the deck's cases it names).
+/// Whether `[rail] profile` names a slices file (`.slcs`: a rail whose profile varies along the
+/// track, read by `wheelrail::profile::slices`).
+pub fn rail_is_slices(doc: &toml::Table) -> bool {
+    doc.get("rail")
+        .and_then(|r| r.get("profile"))
+        .and_then(|p| p.as_str())
+        .is_some_and(|p| p.to_lowercase().ends_with(".slcs"))
+}
+
 fn check_origin(origin: Option<&Origin>, cases: &[CaseRow]) -> Result<(), InputError> {
     let Some(o) = origin else { return Ok(()) };
     let first = cases.iter().map(|c| c.contact_case).min().unwrap_or(0);

@@ -116,10 +116,10 @@ pub const RAIL_KEYS: Keys = Keys {
             "profile",
             "–",
             Allowed::Text(
-                "a path relative to the scene file: SIMPACK (`.prr`), Miniprof (`.ban`) or a table of two columns y, z",
+                "a path relative to the scene file: SIMPACK (`.prr`), Miniprof (`.ban`), a table of two columns y, z, or CONTACT's slices file (`.slcs`: a rail whose profile varies along the track)",
             ),
             Absent::Required,
-            r#"the rail profile (CONTACT's RFNAME), given as a right rail (the track centre at −y), as CONTACT takes it for either side: `profile = "profiles/uic60.prr"`"#,
+            r#"the rail profile (CONTACT's RFNAME), given as a right rail (the track centre at −y), as CONTACT takes it for either side; a slices file (switches and crossings) is read with its slices (each with this table's options) and interpolated along the track, the wheelset standing at `[wheelrail] s_mm` on it (docs/wheelrail.md, "Rails that vary along the track"): `profile = "profiles/uic60.prr"`"#,
         ),
         key(
             "gauge_height_mm",

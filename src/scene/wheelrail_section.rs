@@ -60,9 +60,9 @@ pub const KEYS: Keys = Keys {
             "mm",
             Allowed::Number(LENGTH, ""),
             Absent::Text(
-                "0; only with `mu_by = \"track_s\"` or `motion = \"shift\"`, not with the cases table's column `s_mm`",
+                "0; only with `mu_by = \"track_s\"`, `motion = \"shift\"` or a rail slices file (`.slcs`), not with the cases table's column `s_mm`",
             ),
-            r#"the wheelset's position along the track (CONTACT's S_WS), where μ is taken and, in a shift, where the material-fixed grid is anchored (element centres at track x = −`s_mm` + i `dx_mm`): `s_mm = 60.0`"#,
+            r#"the wheelset's position along the track (CONTACT's S_WS), where μ is taken, in a shift where the material-fixed grid is anchored (element centres at track x = −`s_mm` + i `dx_mm`), and on a rail whose profile varies along the track (`[rail] profile` a `.slcs` slices file) where the track's x = 0 lies on the slices (u = S_WS + x): `s_mm = 60.0`"#,
         ),
         key(
             "dx_mm",
@@ -158,11 +158,13 @@ pub struct WheelRailSection {
     pub wheel_mesh: bool,
     pub frictionless: bool,
     pub motion: MotionSpec,
+    /// S_WS (`s_mm`, 0 if absent): the wheelset's position along the track.
+    pub s_ws_mm: f64,
 }
 
 /// `[wheelrail]` (the table `w`): side, friction, elements, patch separation and the wheel's
-/// surface.
-pub fn read(w: Section) -> Result<WheelRailSection, InputError> {
+/// surface; `varying_rail`: the rail is a slices file (`s_mm` places the wheelset on it).
+pub fn read(w: Section, varying_rail: bool) -> Result<WheelRailSection, InputError> {
     let mut w = w.declare(&KEYS);
     let side = match w.pick("side")? {
         "left" => SideSpec::Left,
@@ -190,7 +192,8 @@ pub fn read(w: Section) -> Result<WheelRailSection, InputError> {
         MotionSpec::Shift { s_ws_mm, .. } => Some(s_ws_mm),
         MotionSpec::Rolling | MotionSpec::RollingSequence { .. } => None,
     };
-    let (mu, mu_variation) = friction(&mut w, shift_s)?;
+    let s_ws_mm = w.opt_num("s_mm")?.unwrap_or(0.0);
+    let (mu, mu_variation) = friction(&mut w, shift_s.or(varying_rail.then_some(s_ws_mm)))?;
     let dx_mm = w.num("dx_mm")?;
     let ds_mm = w.num("ds_mm")?;
     let a_sep_rad = w.num_or_default("a_sep_rad")?;
@@ -216,11 +219,12 @@ pub fn read(w: Section) -> Result<WheelRailSection, InputError> {
         wheel_mesh,
         frictionless,
         motion,
+        s_ws_mm,
     })
 }
 
 /// `mu`, or `mu_by` with `mu_at`, `mu_values` (and `s_mm` for `mu_by = "track_s"`); `shift_s`:
-/// the position `s_mm` a shift has read already.
+/// the position `s_mm` a shift or a rail slices file has read already.
 fn friction(w: &mut Section, shift_s: Option<f64>) -> Result<(f64, Option<MuVariation>), InputError> {
     let Some(by) = w.opt_pick("mu_by")? else {
         w.refuse("mu_at", "no mu_at without mu_by")?;

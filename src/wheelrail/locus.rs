@@ -68,17 +68,24 @@ impl LocusSpline {
             let depth = if rho * rho > x * x { (rho * rho - x * x).sqrt() } else { radius_mm - 999.0 };
             pts.push(to_track(Vector3::new(x, y_offset_mm + n.y_mm, depth)));
         }
+        let s: Vec<f64> = nodes.iter().map(|n| n.s_mm).collect();
+        Some(LocusSpline::through(s, &pts))
+    }
+
+    /// The interpolating spline x(s), y(s), z(s) through track points `pts` at parameters `s`, in
+    /// sections between the kinks of their top view (y, 0.1 x) (`compute_wr_locus`:
+    /// `profile_find_kinks`, `grid_make_ppspline`).
+    pub fn through(s: Vec<f64>, pts: &[Point3<f64>]) -> LocusSpline {
         let top: Vec<Pt> = pts.iter().map(|p| Pt { y: p.y, z: X_SCALE * p.x, line: 0 }).collect();
         let breaks = find_kinks(&top, &KINKS);
-        let s: Vec<f64> = nodes.iter().map(|n| n.s_mm).collect();
         let ones = vec![1.0; s.len()];
         let column = |f: &dyn Fn(&Point3<f64>) -> f64| -> Vec<f64> { pts.iter().map(f).collect() };
-        Some(LocusSpline {
+        LocusSpline {
             x: fit(&s, &column(&|p| p.x), &breaks, 0.0, &ones),
             y: fit(&s, &column(&|p| p.y), &breaks, 0.0, &ones),
             z: fit(&s, &column(&|p| p.z), &breaks, 0.0, &ones),
             s,
-        })
+        }
     }
 
     /// The locus point at track y: the segment whose nodes hold y (bisection on the nodes' y, as

@@ -19,6 +19,7 @@ pub mod rail;
 pub mod search;
 pub mod shift;
 pub mod side;
+pub mod varrail;
 pub mod vertical;
 pub mod wheel;
 pub mod wheel_mesh;
@@ -123,6 +124,9 @@ pub struct WheelRailCase<'a> {
     /// before left, with their tractions; `None` from rest and in steady rolling, `Some` (empty)
     /// in the steady case that starts transient rolling (its tractions are kept for the next).
     pub previous: Option<&'a shift::Previous>,
+    /// A rail whose profile varies along the track (a slices file at the wheelset's S_WS); `rail`
+    /// is then its cross-section at S_WS, where the rail is placed and the gap mesh made.
+    pub rail_slices: Option<varrail::RailSlices<'a>>,
 }
 
 /// A patch with its normal solution and creepages (right-side frame).
@@ -191,13 +195,13 @@ pub fn normal_contact_with(
             let z_touch_mm = match *touch_mm {
                 Some(z) => z,
                 None => {
-                    let wheel = PlacedWheel::place(
+                    let mut wheel = PlacedWheel::place(
                         case.wheel,
                         &case.side.wheelset(&case.wheelset),
                         &Pose { z_mm: 0.0, ..pose },
                     );
-                    let deepest =
-                        search::deepest_mm(&search::scan(&wheel, &setup.mesh)).ok_or(WheelRailError::NoOverlap)?;
+                    let deepest = search::deepest_mm(&samples(case, &rail, &setup.mesh, &mut wheel))
+                        .ok_or(WheelRailError::NoOverlap)?;
                     *touch_mm.insert(-deepest)
                 }
             };
@@ -316,16 +320,37 @@ pub fn geometry_with(
 ) -> Result<Vec<PatchGeometry>, WheelRailError> {
     let pose = Pose { z_mm: z_ws_mm, ..case.side.pose(&case.pose) };
     let rail = setup.placed(case.rail);
-    geometry_at(case, (&rail, &setup.mesh), &PlacedWheel::place(case.wheel, &case.side.wheelset(&case.wheelset), &pose))
+    let mut wheel = PlacedWheel::place(case.wheel, &case.side.wheelset(&case.wheelset), &pose);
+    geometry_at(case, (&rail, &setup.mesh), &mut wheel)
+}
+
+/// The gap function on the mesh: the wheel's locus over the prismatic rail, or over a variable
+/// rail the loci iterated on its surface (the wheel's locus spline replaced by that one).
+fn samples(
+    case: &WheelRailCase,
+    rail: &PlacedRail,
+    mesh: &search::RailMesh,
+    wheel: &mut PlacedWheel,
+) -> Vec<search::LocusSample> {
+    let Some(slices) = &case.rail_slices else { return search::scan(wheel, mesh) };
+    let frame = varrail::RailFrame { origin_mm: rail.origin_mm, angle_rad: rail.angle_rad };
+    match varrail::loci(slices, frame, wheel) {
+        Some(loci) => {
+            let out = search::scan_varying(&loci, mesh);
+            wheel.locus_spline = Some(loci.wheel);
+            out
+        }
+        None => Vec::new(),
+    }
 }
 
 /// The patches' geometry with the wheel placed as `wheel`.
 fn geometry_at(
     case: &WheelRailCase,
     (rail, mesh): (&PlacedRail, &search::RailMesh),
-    wheel: &PlacedWheel,
+    wheel: &mut PlacedWheel,
 ) -> Result<Vec<PatchGeometry>, WheelRailError> {
-    let samples = search::scan(wheel, mesh);
+    let samples = samples(case, rail, mesh, wheel);
     if samples.is_empty() {
         return Err(WheelRailError::NoOverlap);
     }
@@ -341,6 +366,7 @@ fn geometry_at(
             (case.dx_mm, case.ds_mm),
             &case.separation,
             (case.wheel_surface, case.motion, case.previous),
+            case.rail_slices.as_ref(),
         )?;
         if geometry.grid.len() > MAX_ELEMENTS {
             return Err(WheelRailError::GridTooLarge {
@@ -361,11 +387,11 @@ fn patches_at(
     pose: &Pose,
     solvers: &mut NormalSolvers,
 ) -> Result<Vec<NormalPatch>, WheelRailError> {
-    let wheel = PlacedWheel::place(case.wheel, &case.side.wheelset(&case.wheelset), pose);
+    let mut wheel = PlacedWheel::place(case.wheel, &case.side.wheelset(&case.wheelset), pose);
     let velocity = case.side.velocity(&case.velocity);
     let rail_motion = creepage::RailMotion { origin_mm: rail.origin_mm, velocity: case.track.deviation_velocity };
     let mut out = Vec::new();
-    for (k, geometry) in geometry_at(case, (rail, mesh), &wheel)?.into_iter().enumerate() {
+    for (k, geometry) in geometry_at(case, (rail, mesh), &mut wheel)?.into_iter().enumerate() {
         let patch = k + 1;
         let (fn_n, pn_mpa) = match solvers.approximate {
             Some(method) => solve_approximate(method, &geometry, &case.material)

@@ -5,8 +5,10 @@
 //! the undeformed distance along the plane's normal between the surfaces (the wheel's exact or
 //! CONTACT's mesh of it).
 
+use super::profile::Profile;
 use super::rail::PlacedRail;
 use super::search::LocusSample;
+use super::varrail::RailSlices;
 use super::wheel::PlacedWheel;
 use super::wheel_mesh::{self, WheelSurface};
 use super::{shift, Motion, WheelRailError};
@@ -421,6 +423,44 @@ pub fn undeformed_distance(
     h
 }
 
+/// Each grid column's cross-section of a variable rail, at track x = x_ref + x_i
+/// (`varprof_get_loc_z_at_xy`: u = S_WS + x, held to the first and last slice).
+fn column_sections(v: &RailSlices, frame: &PatchFrame, grid: &PatchGrid) -> Result<Vec<Profile>, WheelRailError> {
+    (0..grid.mx)
+        .map(|i| v.section_at_x(frame.origin.x + grid.centre(i, 0).0).ok_or(WheelRailError::NoContact))
+        .collect()
+}
+
+/// [`undeformed_distance`] on a variable rail: the rail met along n in each column's own
+/// cross-section (`columns[i]`, placed).
+fn undeformed_distance_varying(
+    frame: &PatchFrame,
+    grid: &PatchGrid,
+    wheel: &PlacedWheel,
+    columns: &[PlacedRail],
+    surface: WheelSurface,
+) -> Vec<f64> {
+    let n = frame.n();
+    let meshed = (surface == WheelSurface::ContactMesh).then(|| wheel_mesh::wheel_n_mm(frame, grid, wheel));
+    let mut h = Vec::with_capacity(grid.len());
+    for j in 0..grid.ms {
+        for (i, rail) in columns.iter().enumerate() {
+            let (x, s) = grid.centre(i, j);
+            let p = frame.at(x, s);
+            let t_r = rail.along([p.y, p.z], [n.y, n.z]);
+            let t_w = match &meshed {
+                Some(m) => m[j * grid.mx + i],
+                None => wheel.along(&p, &n),
+            };
+            h.push(match (t_r, t_w) {
+                (Some(r), Some(w)) => r - w,
+                _ => MISSED_MM,
+            });
+        }
+    }
+    h
+}
+
 /// Where a widened grid reaches beyond the patch's own extent, no wheel surface: CONTACT meshes the
 /// wheel over the region's x and y ranges and two elements beyond (`wr_ud_planar`: `xmin` …
 /// `ymax`, the wheel's z −999 off the mesh), so an element whose point in the tangent plane lies
@@ -448,7 +488,15 @@ pub fn build(
     size_mm: (f64, f64),
     sep: &Separation,
     (surface, motion, previous): (WheelSurface, Motion, Option<&shift::Previous>),
+    slices: Option<&RailSlices>,
 ) -> Result<PatchGeometry, WheelRailError> {
+    // A variable rail: the cross-section at the reference's x (CONTACT's `complete_patches`).
+    let section = match slices {
+        Some(v) => Some(v.section_at_x(c.wgt_x_mm).ok_or(WheelRailError::NoContact)?),
+        None => None,
+    };
+    let here = section.as_ref().map(|p| PlacedRail { curve: p, origin_mm: rail.origin_mm, angle_rad: rail.angle_rad });
+    let rail = here.as_ref().unwrap_or(rail);
     let frame = frame(c, rail).ok_or(WheelRailError::NoContact)?;
     let mut grid = grid(c, &frame, rail, size_mm, motion)?;
     let mut widened = false;
@@ -459,7 +507,17 @@ pub fn build(
             grid = shift::widened(&grid, &old, previous.iterated);
         }
     }
-    let mut h_mm = undeformed_distance(&frame, &grid, wheel, rail, surface);
+    let mut h_mm = match slices {
+        Some(v) => {
+            let columns = column_sections(v, &frame, &grid)?;
+            let placed: Vec<PlacedRail> = columns
+                .iter()
+                .map(|p| PlacedRail { curve: p, origin_mm: rail.origin_mm, angle_rad: rail.angle_rad })
+                .collect();
+            undeformed_distance_varying(&frame, &grid, wheel, &placed, surface)
+        }
+        None => undeformed_distance(&frame, &grid, wheel, rail, surface),
+    };
     if widened {
         beyond_the_wheel_surface(c, &frame, &grid, &mut h_mm);
     }

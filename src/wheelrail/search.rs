@@ -60,6 +60,21 @@ pub fn scan(wheel: &PlacedWheel, rail: &RailMesh) -> Vec<LocusSample> {
         .collect()
 }
 
+/// The gap function on a rail whose profile varies along the track (CONTACT's `compute_wr_locus`
+/// on a variable profile): the mesh's y and the rail's inclination from the rail at the wheelset
+/// ([`RailMesh`] of the cross-section at S_WS: `prr_rgn`, `make_surfc_inclination`), the wheel's
+/// locus and the rail's height from the loci iterated on the surface ([`super::varrail::loci`]).
+pub fn scan_varying(loci: &super::varrail::Loci, rail: &RailMesh) -> Vec<LocusSample> {
+    rail.points
+        .iter()
+        .filter_map(|&(y, _, rail_angle_rad)| {
+            let p = loci.wheel.at_y(y)?;
+            let z_rail_mm = loci.rail.at_y(y)?.z;
+            Some(LocusSample { x_mm: p.x, y_mm: y, z_mm: p.z, z_rail_mm, pen_mm: p.z - z_rail_mm, rail_angle_rad })
+        })
+        .collect()
+}
+
 /// The deepest reach of the wheel below the rail [mm] (negative: the smallest gap).
 pub fn deepest_mm(samples: &[LocusSample]) -> Option<f64> {
     samples.iter().map(|s| s.pen_mm).reduce(f64::max)

@@ -43,6 +43,7 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side, pose: Pose) -
         material: Material::from_g(82000.0, 0.28),
         motion: Default::default(),
         previous: None,
+        rail_slices: None,
     }
 }
 

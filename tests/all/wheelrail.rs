@@ -44,6 +44,7 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side) -> WheelRailC
         material: Material::from_g(82000.0, 0.28),
         motion: Default::default(),
         previous: None,
+        rail_slices: None,
     }
 }
 

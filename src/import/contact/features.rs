@@ -829,8 +829,8 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         feature: WheelRailFeature::VariableRailProfile,
         name: "a variable rail profile (slices file, switches and crossings)",
         control: "RFNAME",
-        supported: false,
-        reason: "supported: one rail profile for the whole track (SIMPACK .prr, Miniprof .ban or a y-z table); a slices file is read and interpolated (wheelrail::profile::slices) but the contact on a rail that varies along the track (CONTACT's locus on its 3-D surface) is not solved yet",
+        supported: true,
+        reason: "carried as [rail] profile (the .slcs file) with [wheelrail] s_mm (S_WS): the contact locus iterated on the rail's 3-D surface, each patch on the cross-section at its reference and each grid column on its own (wheelrail::varrail); not with interruptions (slices whose parts are missing: refused when the scene reads the file)",
         used: |c| slices(c.state.rail_profile.as_ref()),
     },
     WheelRailRow {

@@ -140,6 +140,11 @@ impl Curve {
         ([self.f[k], c1, mk / 2.0, (mk1 - mk) / (6.0 * h)], h)
     }
 
+    /// The second derivatives at the sites.
+    pub fn second_derivatives(&self) -> &[f64] {
+        &self.m
+    }
+
     /// The value on segment `k` at t = x − u_k.
     pub fn value_on(&self, k: usize, t: f64) -> f64 {
         let ([c0, c1, c2, c3], _) = self.cubic(k);

@@ -18,10 +18,11 @@
 use super::approx::Approximating;
 use super::error::ProfileError;
 use super::lines::{self, At, Line};
-use super::notaknot::NotAKnot;
+use super::notaknot::{Curve, NotAKnot};
 use super::{read_profile, Profile, ProfileKind, ProfileOptions};
 use std::f64::consts::PI;
 use std::path::Path;
+use std::sync::OnceLock;
 
 /// The comment characters of a slices file (CONTACT's `readline`).
 const COMMENT: &str = "!%\"";
@@ -47,6 +48,13 @@ pub struct Slices {
     y_mm: Vec<Vec<f64>>,
     z_mm: Vec<Vec<f64>>,
     spline: Along,
+    /// With the interpolating spline: each lateral path's spline along the track (y paths, then z
+    /// paths), so that a cross-section costs one cubic per sample (the same spline as the weights
+    /// of [`Along`], evaluated directly).
+    paths: Option<(Vec<Curve>, Vec<Curve>)>,
+    /// With the interpolating spline: per interval between slices, the lateral splines' data and
+    /// second derivatives as cubics in the position (made when first needed).
+    bands: Vec<OnceLock<Band>>,
     /// The not-a-knot spline across, over the samples' indices (CONTACT's v: 1, 2, …).
     across: NotAKnot,
     lambda: f64,
@@ -85,6 +93,58 @@ struct Header {
 /// MIRRORY, MIRRORZ, SCALE, SMOOTH, …).
 pub fn read_slices(path: &Path, kind: ProfileKind, opts: &ProfileOptions) -> Result<Slices, ProfileError> {
     let opts = opts.checked()?;
+    let Layout { file, u, names, features, approximating } = read_layout(path, kind)?;
+    let dir = path.parent().unwrap_or(Path::new(""));
+    let mut profiles = Vec::with_capacity(u.len());
+    for (i, name) in names.iter().enumerate() {
+        let p = read_profile(&dir.join(name), kind, &opts).map_err(|e| e.in_slice(&file, i + 1))?;
+        profiles.push(p);
+    }
+    let (y_mm, z_mm) = resample(&profiles, &features, &file)?;
+    let spline = if approximating {
+        Approximating::new(&u).map(Along::Approximating)
+    } else {
+        NotAKnot::new(&u).map(Along::Interpolating)
+    };
+    let spline = spline.ok_or_else(|| {
+        ProfileError::profile(&file, "the slices' positions", format!("{u:?}"), "at least 4 increasing positions")
+    })?;
+    let sites: Vec<f64> = (0..y_mm[0].len()).map(|j| j as f64).collect();
+    let across = NotAKnot::new(&sites).ok_or_else(|| {
+        ProfileError::profile(&file, "the samples per slice", sites.len(), "at least 4 (CONTACT's error 404)")
+    })?;
+    let paths = match &spline {
+        Along::Interpolating(s) => Some((lateral_paths(s, &y_mm), lateral_paths(s, &z_mm))),
+        Along::Approximating(_) => None,
+    };
+    // CONTACT fits the cross-section with λ = SMOOTH as given, unweighted, whatever ISMOOTH.
+    let bands = if paths.is_some() { (1..u.len()).map(|_| OnceLock::new()).collect() } else { Vec::new() };
+    Ok(Slices { file, kind, u, profiles, y_mm, z_mm, spline, paths, bands, across, lambda: opts.smooth })
+}
+
+/// The spline along the track of each lateral path j of the samples `v[slice][j]`.
+fn lateral_paths(s: &NotAKnot, v: &[Vec<f64>]) -> Vec<Curve> {
+    (0..v[0].len()).map(|j| s.curve(&v.iter().map(|row| row[j]).collect::<Vec<_>>())).collect()
+}
+
+/// A slices file's own content: its positions, the slices' file names and features (what the
+/// file says, before any slice is read).
+struct Layout {
+    file: String,
+    u: Vec<f64>,
+    names: Vec<String>,
+    features: Vec<Vec<f64>>,
+    approximating: bool,
+}
+
+/// Check the slices file at `path` as [`read_slices`] does, without reading its slices'
+/// profiles (what an importer can refuse early: interruptions, perturbations, bad positions).
+pub fn check_slices_file(path: &Path, kind: ProfileKind) -> Result<(), ProfileError> {
+    read_layout(path, kind).map(|_| ())
+}
+
+/// The slices file's header, positions, kinks, accelerations and features, each checked.
+fn read_layout(path: &Path, kind: ProfileKind) -> Result<Layout, ProfileError> {
     let file = path.display().to_string();
     let ext = file.rsplit_once('.').map(|(_, e)| e.to_lowercase()).unwrap_or_default();
     let wanted = match kind {
@@ -121,27 +181,7 @@ pub fn read_slices(path: &Path, kind: ProfileKind, opts: &ProfileOptions) -> Res
         let at = At { file: &file, line: l.number };
         return Err(at.structure("a line after the slices' features", "nothing (perturbations are not supported)"));
     }
-    let dir = path.parent().unwrap_or(Path::new(""));
-    let mut profiles = Vec::with_capacity(u.len());
-    for (i, name) in names.iter().enumerate() {
-        let p = read_profile(&dir.join(name), kind, &opts).map_err(|e| e.in_slice(&file, i + 1))?;
-        profiles.push(p);
-    }
-    let (y_mm, z_mm) = resample(&profiles, &features, &file)?;
-    let spline = if header.approximating {
-        Approximating::new(&u).map(Along::Approximating)
-    } else {
-        NotAKnot::new(&u).map(Along::Interpolating)
-    };
-    let spline = spline.ok_or_else(|| {
-        ProfileError::profile(&file, "the slices' positions", format!("{u:?}"), "at least 4 increasing positions")
-    })?;
-    let sites: Vec<f64> = (0..y_mm[0].len()).map(|j| j as f64).collect();
-    let across = NotAKnot::new(&sites).ok_or_else(|| {
-        ProfileError::profile(&file, "the samples per slice", sites.len(), "at least 4 (CONTACT's error 404)")
-    })?;
-    // CONTACT fits the cross-section with λ = SMOOTH as given, unweighted, whatever ISMOOTH.
-    Ok(Slices { file, kind, u, profiles, y_mm, z_mm, spline, across, lambda: opts.smooth })
+    Ok(Layout { file, u, names, features, approximating: header.approximating })
 }
 
 impl Slices {
@@ -172,6 +212,14 @@ impl Slices {
     /// The resampled points of every slice interpolated to position `u` (held to the first and
     /// last slice's: CONTACT's constant extrapolation), (y, z) [mm].
     pub fn samples_at(&self, u: f64) -> (Vec<f64>, Vec<f64>) {
+        if let Some((ys, zs)) = &self.paths {
+            let n = self.u.len();
+            let x = u.clamp(self.u[0], self.u[n - 1]);
+            let k = self.u.partition_point(|&v| v <= x).saturating_sub(1).min(n - 2);
+            let t = x - self.u[k];
+            let at = |c: &Vec<Curve>| c.iter().map(|c| c.value_on(k, t)).collect();
+            return (at(ys), at(zs));
+        }
         let w = self.spline.weights(u);
         let m = self.samples();
         let (mut y, mut z) = (vec![0.0; m], vec![0.0; m]);
@@ -209,9 +257,93 @@ impl Slices {
         if !y.is_finite() || u.is_nan() {
             return None;
         }
+        if let Some((k, t)) = self.band_at(u) {
+            return self.band(k).z_at(t, y);
+        }
         let (ys, zs) = self.samples_at(u);
         let (cy, cz) = (self.across.curve(&ys), self.across.curve(&zs));
         (0..cy.segments()).find_map(|k| first_root(cy.cubic(k), y).map(|t| cz.value_on(k, t)))
+    }
+}
+
+impl Slices {
+    /// The interval of the slices' positions holding u (held to the first and last) and u's
+    /// offset in it, where the interpolating spline's bands are kept.
+    fn band_at(&self, u: f64) -> Option<(usize, f64)> {
+        if self.bands.is_empty() {
+            return None;
+        }
+        let n = self.u.len();
+        let x = u.clamp(self.u[0], self.u[n - 1]);
+        let k = self.u.partition_point(|&v| v <= x).saturating_sub(1).min(n - 2);
+        Some((k, x - self.u[k]))
+    }
+
+    /// Band `k`, made on first use.
+    fn band(&self, k: usize) -> &Band {
+        self.bands[k].get_or_init(|| {
+            let (ys, zs) = self.paths.as_ref().expect("bands only with paths");
+            let (f_y, m_y) = band_of(&self.across, ys, k);
+            let (f_z, m_z) = band_of(&self.across, zs, k);
+            Band { f_y, m_y, f_z, m_z }
+        })
+    }
+}
+
+/// Between two slices the samples are cubics in t = u − u_k, and the lateral spline's second
+/// derivatives (linear in the samples) cubics too: `f[j]`, `m[j]` their coefficients.
+#[derive(Debug, Clone)]
+struct Band {
+    f_y: Vec<[f64; 4]>,
+    m_y: Vec<[f64; 4]>,
+    f_z: Vec<[f64; 4]>,
+    m_z: Vec<[f64; 4]>,
+}
+
+/// The cubics in t of interval `k` of the paths, and of the lateral not-a-knot spline's second
+/// derivatives through them.
+fn band_of(across: &NotAKnot, paths: &[Curve], k: usize) -> (Vec<[f64; 4]>, Vec<[f64; 4]>) {
+    let f: Vec<[f64; 4]> = paths.iter().map(|c| c.cubic(k).0).collect();
+    let mut m = vec![[0.0; 4]; f.len()];
+    for p in 0..4 {
+        let column: Vec<f64> = f.iter().map(|c| c[p]).collect();
+        for (mj, v) in m.iter_mut().zip(across.curve(&column).second_derivatives()) {
+            mj[p] = *v;
+        }
+    }
+    (f, m)
+}
+
+/// c0 + c1 t + c2 t² + c3 t³.
+fn poly([c0, c1, c2, c3]: [f64; 4], t: f64) -> f64 {
+    ((c3 * t + c2) * t + c1) * t + c0
+}
+
+impl Band {
+    /// The lateral spline's segment j (sites j, j + 1: length 1) at t, as a cubic in its local
+    /// parameter (`notaknot::Curve::cubic`) from the values and second derivatives at its ends.
+    fn segment(f: &[[f64; 4]], m: &[[f64; 4]], j: usize, t: f64) -> [f64; 4] {
+        let (f0, f1, m0, m1) = (poly(f[j], t), poly(f[j + 1], t), poly(m[j], t), poly(m[j + 1], t));
+        [f0, (f1 - f0) - (2.0 * m0 + m1) / 6.0, m0 / 2.0, (m1 - m0) / 6.0]
+    }
+
+    /// [`Slices::surface_z_at`] at t in this band: the first lateral segment that reaches y. A
+    /// segment whose cubic cannot reach y (it lies within |M₀| + |M₁| times 0.0642 of its chord,
+    /// s(1 − s)(2 − s)/6 ≤ 0.0642 on [0, 1]) is passed over without solving.
+    fn z_at(&self, t: f64, y: f64) -> Option<f64> {
+        for j in 0..self.f_y.len() - 1 {
+            let (f0, f1) = (poly(self.f_y[j], t), poly(self.f_y[j + 1], t));
+            let (m0, m1) = (poly(self.m_y[j], t), poly(self.m_y[j + 1], t));
+            let bow = 0.065 * (m0.abs() + m1.abs()) + 1e-9 * (1.0 + y.abs());
+            if y < f0.min(f1) - bow || y > f0.max(f1) + bow {
+                continue;
+            }
+            let cy = Band::segment(&self.f_y, &self.m_y, j, t);
+            if let Some(s) = first_root((cy, 1.0), y) {
+                return Some(poly(Band::segment(&self.f_z, &self.m_z, j, t), s));
+            }
+        }
+        None
     }
 }
 

@@ -16,8 +16,8 @@ pub use paths::ProfilePaths;
 
 use super::super::deck::{Case, CaseKind};
 use super::super::wheelrail_deck::{
-    Along, Forward, Friction, FrictionVariation, PitchInput, ProfileCuration, RailPlacement, Side, TrackFourth,
-    Vertical, WheelRailCase, WheelRailState,
+    Along, Forward, Friction, FrictionVariation, PitchInput, ProfileCuration, ProfileFormat, RailPlacement, Side,
+    TrackFourth, Vertical, WheelRailCase, WheelRailState,
 };
 use super::super::CaseStatus;
 use super::{scene_name, SceneFiles};
@@ -28,6 +28,8 @@ use crate::scene::wheelrail::{
 };
 use crate::scene::wheelrail_profile::PROFILE_DEFAULTS;
 use crate::scene::{MaterialSpec, Origin};
+use crate::wheelrail::profile::slices::check_slices_file;
+use crate::wheelrail::profile::ProfileKind;
 use std::path::PathBuf;
 
 /// A module-1 case's refusals and notes ([`limits::assess`]).
@@ -170,7 +172,12 @@ fn continues(g: &[Member], m: &Member) -> Result<(), String> {
     if !matches!(m.scene.motion, MotionSpec::Shift { .. }) {
         return refuse("not a shift");
     }
-    let as_first = WheelRailScene { cases: m.scene.cases.clone(), motion: m.scene.motion, ..g[0].scene.clone() };
+    let as_first = WheelRailScene {
+        cases: m.scene.cases.clone(),
+        motion: m.scene.motion,
+        s_ws_mm: m.scene.s_ws_mm,
+        ..g[0].scene.clone()
+    };
     if as_first != m.scene {
         return refuse(&format!("it changes more than the position and the shifts of case {}", last.number));
     }
@@ -186,7 +193,12 @@ fn continues_steady(g: &[Member], m: &Member) -> Result<(), String> {
     if !matches!(m.scene.motion, MotionSpec::Shift { .. }) {
         return refuse("not a shift");
     }
-    let as_first = WheelRailScene { cases: m.scene.cases.clone(), motion: m.scene.motion, ..first.scene.clone() };
+    let as_first = WheelRailScene {
+        cases: m.scene.cases.clone(),
+        motion: m.scene.motion,
+        s_ws_mm: m.scene.s_ws_mm,
+        ..first.scene.clone()
+    };
     if as_first != m.scene {
         return refuse(&format!("it changes more than the wheelset's position and velocity of case {}", first.number));
     }
@@ -211,7 +223,12 @@ fn continues_rolling(g: &[Member], m: &Member) -> Result<(), String> {
             return refuse(&why);
         }
     }
-    let as_first = WheelRailScene { cases: m.scene.cases.clone(), motion: m.scene.motion, ..g[0].scene.clone() };
+    let as_first = WheelRailScene {
+        cases: m.scene.cases.clone(),
+        motion: m.scene.motion,
+        s_ws_mm: m.scene.s_ws_mm,
+        ..g[0].scene.clone()
+    };
     if as_first != m.scene {
         return refuse(&format!("it changes more than the wheelset's position and velocity of case {}", last.number));
     }
@@ -272,6 +289,10 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
     let never = |what: &str| format!("{what} never given");
     let (rail, wheel) =
         (s.rail_profile.as_ref().ok_or(never("RFNAME"))?, s.wheel_profile.as_ref().ok_or(never("WFNAME"))?);
+    if let Some(file) = paths.deck_file(&rail.file).filter(|_| rail.format() == ProfileFormat::Slices) {
+        // What the slices file itself says (interruptions, perturbations) is refused here.
+        check_slices_file(&file, ProfileKind::Rail).map_err(|e| format!("the rail slices file: {e}"))?;
+    }
     let track = s.track.ok_or(never("the track"))?;
     let wheelset = s.wheelset.ok_or(never("FBDIST, FBPOS, NOMRAD"))?;
     let material = s.material.as_ref().ok_or(never("POISS, GG"))?;
@@ -340,6 +361,15 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
             1 => MotionSpec::Shift { s_ws_mm: s_ws, sequence: c.digits.p == 0, steady_start: false },
             2 => MotionSpec::RollingSequence { dq_rel: disc.dqrel, from_rest: c.digits.p == 2 },
             _ => MotionSpec::Rolling,
+        },
+        // S_WS where the scene says it: a shift, μ along the track, a rail slices file.
+        s_ws_mm: if c.digits.t == 1
+            || matches!(friction.variation, FrictionVariation::AlongTrack)
+            || rail.format() == ProfileFormat::Slices
+        {
+            s_ws
+        } else {
+            0.0
         },
         vertical,
         longitudinal,

@@ -18,6 +18,14 @@ pub enum ProfilePaths {
 }
 
 impl ProfilePaths {
+    /// The file the deck names `name`, where the deck's folder is known.
+    pub fn deck_file(&self, name: &str) -> Option<PathBuf> {
+        match self {
+            ProfilePaths::AsNamed => None,
+            ProfilePaths::Relative { deck, .. } => Some(deck.join(name.replace('\\', "/"))),
+        }
+    }
+
     /// The path the scene writes for the profile the deck names `name`, or why there is none.
     pub fn of(&self, name: &str) -> Result<String, String> {
         let named = name.replace('\\', "/");

@@ -70,6 +70,12 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
             wheelrail.push(("s_mm", Value::Float(s_ws_mm)));
         }
     }
+    let s_written = matches!(s.motion, MotionSpec::Shift { .. })
+        || matches!(s.mu_variation.as_ref().map(|v| v.by), Some(MuBy::TrackS { .. }));
+    if !s_written && s.s_ws_mm != 0.0 {
+        // A rail slices file: where the wheelset stands on it.
+        wheelrail.push(("s_mm", Value::Float(s.s_ws_mm)));
+    }
     if let MotionSpec::RollingSequence { dq_rel, from_rest } = s.motion {
         wheelrail.push(("motion", Value::String("rolling_sequence".into())));
         wheelrail.push(("dq_rel", Value::Float(dq_rel)));
