@@ -172,13 +172,7 @@ fn continues(g: &[Member], m: &Member) -> Result<(), String> {
     if !matches!(m.scene.motion, MotionSpec::Shift { .. }) {
         return refuse("not a shift");
     }
-    let as_first = WheelRailScene {
-        cases: m.scene.cases.clone(),
-        motion: m.scene.motion,
-        s_ws_mm: m.scene.s_ws_mm,
-        ..g[0].scene.clone()
-    };
-    if as_first != m.scene {
+    if !same_but_motion(&g[0].scene, &m.scene) {
         return refuse(&format!("it changes more than the position and the shifts of case {}", last.number));
     }
     Ok(())
@@ -193,13 +187,7 @@ fn continues_steady(g: &[Member], m: &Member) -> Result<(), String> {
     if !matches!(m.scene.motion, MotionSpec::Shift { .. }) {
         return refuse("not a shift");
     }
-    let as_first = WheelRailScene {
-        cases: m.scene.cases.clone(),
-        motion: m.scene.motion,
-        s_ws_mm: m.scene.s_ws_mm,
-        ..first.scene.clone()
-    };
-    if as_first != m.scene {
+    if !same_but_motion(&first.scene, &m.scene) {
         return refuse(&format!("it changes more than the wheelset's position and velocity of case {}", first.number));
     }
     Ok(())
@@ -223,16 +211,16 @@ fn continues_rolling(g: &[Member], m: &Member) -> Result<(), String> {
             return refuse(&why);
         }
     }
-    let as_first = WheelRailScene {
-        cases: m.scene.cases.clone(),
-        motion: m.scene.motion,
-        s_ws_mm: m.scene.s_ws_mm,
-        ..g[0].scene.clone()
-    };
-    if as_first != m.scene {
+    if !same_but_motion(&g[0].scene, &m.scene) {
         return refuse(&format!("it changes more than the wheelset's position and velocity of case {}", last.number));
     }
     Ok(())
+}
+
+/// Whether a continuing case's scene `b` agrees with its group's first `a` but for its rows, its
+/// motion and the wheelset's position along the track (S_WS, each case's own).
+fn same_but_motion(a: &WheelRailScene, b: &WheelRailScene) -> bool {
+    WheelRailScene { cases: b.cases.clone(), motion: b.motion, s_ws_mm: b.s_ws_mm, ..a.clone() } == *b
 }
 
 /// Whether two one-row scenes agree but for their rows.
