@@ -30,7 +30,8 @@ fn the_report_lists_every_case_of_every_deck() {
     assert!(ok, "{out}");
     // The gates' verdict: every comparison of the suite, CONTACT's printed totals among them, passed.
     let verdict = out.lines().find(|l| l.starts_with("gates: ")).unwrap_or_else(|| panic!("{out}"));
-    let gated: usize = verdict.strip_prefix("gates: PASS: ").and_then(|v| v.split(' ').next()).map_or(0, |n| n.parse().unwrap());
+    let gated: usize =
+        verdict.strip_prefix("gates: PASS: ").and_then(|v| v.split(' ').next()).map_or(0, |n| n.parse().unwrap());
     assert!(gated >= 24 && verdict.ends_with(", 0 failed"), "{verdict}");
     let md = std::fs::read_to_string(report.join("validation.md")).unwrap();
     assert!(md.contains("## CONTACT's public examples"), "{md}");
