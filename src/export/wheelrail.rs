@@ -12,7 +12,10 @@
 //! place of VPITCH, `[cases] longitudinal = "force"`); S_WS is the scene's track position in a
 //! shift or where friction varies along the track (else 0), PITCH 0; in a shift the velocity line
 //! is the step's shifts (CONTACT reads the same line as SHFT_S … per step). Profile names are
-//! written relative to the deck's folder, where CONTACT looks for them.
+//! written relative to the deck's folder, where CONTACT looks for them. With the surface
+//! temperatures H = 3 and both bodies' BKTEMP, HEATCP, LAMBDA, DENS in the first case, H = 1 in
+//! the later ones; with friction of the temperature L = 6 (FREF … DTHEAT, MEMDST = 0) and MAXIN
+//! of its iterations.
 
 use crate::error::InputError;
 use crate::safety::relative::relative;
@@ -20,7 +23,7 @@ use crate::scene::wheelrail::{
     CaseRow, LongitudinalSpec, MotionSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec,
     WheelDeviationSpec, WheelRailScene,
 };
-use crate::scene::MaterialSpec;
+use crate::scene::{ContactSolverOptions, MaterialSpec, VeldepSolves};
 use crate::wheelrail::profile::options::SCALE_MIN;
 use std::fmt::Write;
 use std::path::Path;
@@ -46,6 +49,7 @@ pub fn check(s: &WheelRailScene) -> Result<(), InputError> {
         None if s.mu < FKIN_MIN => return Err(InputError::new("wheelrail.mu", s.mu, allowed)),
         None => {}
     }
+    check_tangential(s)?;
     for (key, p) in [("rail.scale", &s.rail), ("wheel.scale", &s.wheel)] {
         if p.scale <= SCALE_MIN {
             let allowed = format!("a scale above {SCALE_MIN} (CONTACT replaces a smaller SCALE by 1, m_profile.f90)");
@@ -53,6 +57,38 @@ pub fn check(s: &WheelRailScene) -> Result<(), InputError> {
         }
     }
     Ok(())
+}
+
+/// CONTACT's fixed stop of its temperature iteration (L = 6, `m_stang.f90`): rms(T_k − T_(k−1))
+/// ≤ 1e-4 rms(T_k), each tangential solve to its EPS.
+const CONTACT_TEMPDEP_TOLERANCE: f64 = 1e-4;
+/// MAXIN written without the temperature law.
+const MAXIN: usize = 100;
+
+/// `[contact_solver]` as module 1's input says it: with the temperature law CONTACT's own stop
+/// (`tempdep_tolerance = 1e-4`, `veldep_solves = "tight"`, OMGSLP its default) and its iterations
+/// max(1, MAXIN − 10) + 1 written as MAXIN; without it, none.
+fn check_tangential(s: &WheelRailScene) -> Result<(), InputError> {
+    let (o, d) = (s.tangential.contact_solver, ContactSolverOptions::default());
+    let contact = ContactSolverOptions {
+        tempdep_tolerance: CONTACT_TEMPDEP_TOLERANCE,
+        tempdep_max_iterations: o.tempdep_max_iterations,
+        veldep_solves: VeldepSolves::Tight,
+        ..d
+    };
+    match s.tangential.temperature_law {
+        None if o != d => Err(InputError::new(
+            "contact_solver",
+            format!("{o:?}"),
+            "left out: module 1's input carries the exact solver's options only for [friction] law = \"temperature\"",
+        )),
+        Some(_) if o != contact || o.tempdep_max_iterations < 2 => Err(InputError::new(
+            "contact_solver",
+            format!("{o:?}"),
+            "CONTACT's own stop of the temperature iteration: tempdep_tolerance = 1e-4, veldep_solves = \"tight\", tempdep_max_iterations of at least 2 (MAXIN = it + 9), no other key",
+        )),
+        _ => Ok(()),
+    }
 }
 
 /// The module-1 deck of the scene, to be written into the folder `deck_dir` (existing or not).
@@ -129,6 +165,16 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
         (false, true) => ("111002", "0110321"),
         (false, false) => ("111002", "0100321"),
     };
+    // Friction of the temperature (L = 6) read by the first case, kept after it (L = 1); the
+    // surface temperatures read (H = 3) by the first case, computed again (H = 1) by the later ones.
+    let law = if first && s.tangential.temperature_law.is_some() { "6" } else { &ldcmze[..1] };
+    let ldcmze = format!("{law}{}", &ldcmze[1..]);
+    let heat = match (s.material.heat.is_some(), first) {
+        (true, true) => "3",
+        (true, false) => "1",
+        (false, _) => &hgiaowr[..1],
+    };
+    let hgiaowr = format!("{heat}{}", &hgiaowr[1..]);
     let _ =
         writeln!(out, " {c}{p}0{t}{n}{f}0    C-P-B-T-N-F-S   CONFIG, PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS");
     let _ = writeln!(out, " {v}{ldcmze}    V-L-D-C-M-Z-E   VARFRC, FRCLAW, DISCNS, INFLCF, MATER,  ZTRACK, EWHEEL");
@@ -156,9 +202,15 @@ fn wheel_deviation(s: &WheelRailScene, out: &mut String) {
 /// The first case's groups: solver, friction, material, discretisation, track, rail, wheelset.
 fn setup(s: &WheelRailScene, (rail, wheel): (&str, &str), out: &mut String) {
     let (g, nu) = (shear_modulus(&s.material), s.material.poisson);
-    let _ = writeln!(out, "    999     100    30    1     1e-5         MAXGS , MAXIN , MAXNR , MAXOUT, EPS");
+    let maxin = s.tangential.temperature_law.map_or(MAXIN, |_| s.tangential.contact_solver.tempdep_max_iterations + 9);
+    let _ = writeln!(out, "    999     {maxin}    30    1     1e-5         MAXGS , MAXIN , MAXNR , MAXOUT, EPS");
     friction(s, out);
     let _ = writeln!(out, "  {nu:?}   {nu:?}   {g:?}   {g:?}                POISS 1,2,  GG 1,2");
+    for t in s.material.heat.iter().flatten() {
+        let (t0, cp, lambda, rho) =
+            (t.bulk_c, t.heat_capacity_j_per_kg_c, t.conductivity_w_per_mm_c, t.density_kg_per_mm3);
+        let _ = writeln!(out, "  {t0:?}   {cp:?}   {lambda:?}   {rho:?}          BKTEMP, HEATCP, LAMBDA, DENS");
+    }
     let _ = writeln!(
         out,
         "  {:?}   {:?}   {:?}   {:?}   {:?}   {:?}   {:?}       DX, DS, DQREL, A_SEP, D_SEP, D_COMB, D_TURN",
@@ -193,9 +245,16 @@ fn setup(s: &WheelRailScene, (rail, wheel): (&str, &str), out: &mut String) {
     profile_line(wheel, &s.wheel, "WFNAME", out);
 }
 
-/// Coulomb's law (L = 0): `FSTAT FKIN` with one μ, or with a variation (V = 1, 2) `NVF` and per
+/// Friction of the temperature (L = 6): `FREF TREF DFHEAT DTHEAT` and `MEMDST MEM_S0`; Coulomb's law (L = 0): `FSTAT FKIN` with one μ, or with a variation (V = 1, 2) `NVF` and per
 /// control point `ALPHA (or SVF) FSTAT FKIN` (user guide, module 1, "VARFRC").
 fn friction(s: &WheelRailScene, out: &mut String) {
+    if let Some(t) = s.tangential.temperature_law {
+        // L = 6 (one set, V = 0), without a memory.
+        let (fref, tref, dfheat, dtheat) = (t.fref, t.tref_c, t.dfheat, t.dtheat_c);
+        let _ = writeln!(out, "  {fref:?}   {tref:?}   {dfheat:?}   {dtheat:?}          FREF, TREF, DFHEAT, DTHEAT");
+        let _ = writeln!(out, "  0.0   1.0                                 MEMDST, MEM_S0");
+        return;
+    }
     let Some(v) = &s.mu_variation else {
         let _ = writeln!(out, "  {:?}   {:?}                                 FSTAT, FKIN", s.mu, s.mu);
         return;

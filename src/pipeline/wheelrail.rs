@@ -50,6 +50,9 @@ pub struct PatchForces {
     /// In a shift, the exact theory's tractions `(px, py)` per element [MPa] (CONTACT's element
     /// order, the solver's frame): what the next case of a sequence of shifts continues from.
     pub shift_tractions_mpa: Option<(Vec<f64>, Vec<f64>)>,
+    /// The largest surface temperature of both bodies on the patch [°C] (CONTACT's MAX(T1,T2)),
+    /// where the scene computes them (`[material]`'s heat keys).
+    pub temp_max_c: Option<f64>,
 }
 
 impl PatchForces {
@@ -65,6 +68,7 @@ impl PatchForces {
             n_adhesion: None,
             n_slip: None,
             shift_tractions_mpa: None,
+            temp_max_c: None,
         }
     }
 }
@@ -278,6 +282,7 @@ fn frictionless(p: &NormalPatch) -> PatchForces {
         n_adhesion: Some(ncon),
         n_slip: Some(0),
         shift_tractions_mpa: None,
+        temp_max_c: None,
     }
 }
 
@@ -293,14 +298,15 @@ pub(crate) fn patch_forces(
 
 /// The exact theory's forces on every patch, solved on the patches directly
 /// ([`wheelrail_exact`]: the patches' pressure, kernels kept per grid size); through each patch's
-/// scene where the bodies are dissimilar (the coupled solver's outer iteration).
+/// scene where the bodies are dissimilar (the coupled solver's outer iteration), the surface
+/// temperatures are computed, friction is the temperature's or the solver's options are given.
 fn exact_forces(
     normal: &NormalContact,
     mu: &Friction,
     case: &WheelRailCase,
     cache: &mut ExactCache,
 ) -> Result<Vec<PatchForces>, Error> {
-    if case.material.coupled() {
+    if case.material.coupled() || case.heat.is_some() || case.tangential != Default::default() {
         return patch_forces(normal, EXACT, mu, case);
     }
     let failed = |e| Error::Solve { scene: "patch".into(), solver: EXACT.into(), source: Box::new(e) };
@@ -339,6 +345,12 @@ fn field_scene(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase, exac
     let g = &p.geometry.grid;
     let text = scene_text(p, model, mu, case, "a_mm = 1.0\nb_mm = 1.0", &format!("mx = {}\nmy = {}", g.mx, g.ms));
     let mut scene = Scene::from_toml(&text, Path::new("."))?;
+    // The wheel–rail scene's heat, temperature law and solver options, as module 3 holds them.
+    scene.material.heat = case.heat;
+    if let Some(law) = case.tangential.temperature_law {
+        scene.friction = crate::physics::FrictionLaw::Temperature(law);
+    }
+    scene.contact_solver = case.tangential.contact_solver;
     let (h_mm, blend) = (p.geometry.h_mm.clone(), p.geometry.blend.clone());
     scene.geometry = GeometrySpec::Field { h_mm, blend, pn_mpa: exact.then(|| p.pn_mpa.clone()) };
     scene.extent = Extent::Edges {
@@ -389,9 +401,12 @@ fn patch_solve(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> R
     let row = &h.rows[0];
     let count = |name: &str| h.column(name).map(|c| c[0] as usize);
     let mz_nmm = h.column(crate::history::MZ).map_or(f64::NAN, |c| c[0]);
+    let temperatures: Vec<f64> =
+        solvers::contact::heat::COLUMNS.iter().filter_map(|n| h.column(n).map(|c| c[0])).collect();
     Ok(PatchForces {
         n_adhesion: count("n_adhesion"),
         n_slip: count("n_slip"),
+        temp_max_c: (!temperatures.is_empty()).then(|| temperatures.iter().copied().fold(f64::MIN, f64::max)),
         ..PatchForces::on_rail(p, case, row.fx_over_fn, row.fy_over_fn, mz_nmm)
     })
 }

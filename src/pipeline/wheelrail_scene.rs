@@ -216,6 +216,8 @@ pub fn case_of<'a>(
         },
         wheel_surface: if s.wheel_mesh { WheelSurface::ContactMesh } else { WheelSurface::Exact },
         material,
+        heat: s.material.heat,
+        tangential: s.tangential,
         motion: match s.motion {
             MotionSpec::Rolling | MotionSpec::RollingSequence { .. } => Motion::Rolling,
             MotionSpec::Shift { s_ws_mm, .. } => Motion::Shift { s_ws_mm: row.s_mm.unwrap_or(s_ws_mm) },

@@ -29,6 +29,7 @@ pub mod wheelrail;
 pub mod wheelrail_cases;
 pub mod wheelrail_profile;
 pub mod wheelrail_section;
+pub mod wheelrail_tangential;
 
 use crate::error::InputError;
 use crate::physics::geometry::{Extent, GeometrySpec};

@@ -186,6 +186,9 @@ pub struct WheelRailScene {
     /// μ varying across the rail or along the track (CONTACT's V = 1, 2), if it does.
     pub mu_variation: Option<MuVariation>,
     pub material: MaterialSpec,
+    /// Friction of the surface temperature and the exact solver's options (`[friction]`,
+    /// `[contact_solver]`; CONTACT's L = 6 with H = 3).
+    pub tangential: super::wheelrail_tangential::Tangential,
     pub dx_mm: f64,
     pub ds_mm: f64,
     /// A_SEP [rad], D_SEP [mm], D_COMB [mm]: which interpenetration regions make one patch;
@@ -249,6 +252,8 @@ pub const TOP_KEYS: Keys = Keys {
         table("rail"),
         table("wheel"),
         table("material"),
+        table("friction"),
+        table("contact_solver"),
         table("cases"),
         table("origin"),
         table("report"),
@@ -436,6 +441,15 @@ impl WheelRailScene {
                 "no layer: the wheel–rail scene solves elastic bodies that touch (give the layer in a module-3 scene)",
             ));
         }
+        let context = super::wheelrail_tangential::Context {
+            mu,
+            mu_varies: mu_variation.is_some(),
+            heat: material.heat.is_some(),
+            solvers: &solvers,
+            motion,
+            frictionless,
+        };
+        let tangential = super::wheelrail_tangential::read(&mut top, &context)?;
         let (vertical, longitudinal, cases) = super::wheelrail_cases::read(&mut top, dir, radius)?;
         super::wheelrail_cases::check_longitudinal(
             longitudinal,
@@ -473,6 +487,7 @@ impl WheelRailScene {
             mu,
             mu_variation,
             material,
+            tangential,
             dx_mm,
             ds_mm,
             a_sep_rad,

@@ -119,6 +119,11 @@ pub struct WheelRailCase<'a> {
     /// The wheel surface the undeformed distance is measured to.
     pub wheel_surface: wheel_mesh::WheelSurface,
     pub material: Material,
+    /// Both bodies' thermal constants where the surface temperatures are computed (CONTACT's H = 3).
+    pub heat: Option<[crate::physics::temperature::Thermal; 2]>,
+    /// Friction of the surface temperature and the exact solver's options (`[friction]`,
+    /// `[contact_solver]`).
+    pub tangential: crate::scene::wheelrail_tangential::Tangential,
     pub motion: Motion,
     /// In a case that continues a sequence (CONTACT's P = 0, T = 1 or 2): the patches the case
     /// before left, with their tractions; `None` from rest and in steady rolling, `Some` (empty)

@@ -74,4 +74,5 @@ mod wheelrail_profiles;
 mod wheelrail_report;
 mod wheelrail_shift;
 mod wheelrail_slices;
+mod wheelrail_temperature;
 mod wheelrail_variants;

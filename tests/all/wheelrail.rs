@@ -42,6 +42,8 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side) -> WheelRailC
         },
         wheel_surface: Default::default(),
         material: Material::from_g(82000.0, 0.28),
+        heat: None,
+        tangential: Default::default(),
         motion: Default::default(),
         previous: None,
         rail_slices: None,

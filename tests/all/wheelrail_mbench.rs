@@ -107,9 +107,16 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         // Every deviation and rate on the benchmark's wheels, computed by CONTACT.
         "mbench_wheel_deviation_left",
         "mbench_wheel_deviation_right",
+        // Frictional heating (H = 3) and friction of the surface temperature (L = 6) on a
+        // circular wheel: each patch's MAX(T1,T2) among the gated quantities.
+        "m1_tempdep_1",
+        "m1_tempdep_2",
     ] {
         let of: Vec<_> = ours.iter().filter(|f| f.scene == scene).collect();
         assert!(of.len() >= 20 && of.iter().all(|f| f.gated && f.passed()), "{scene}: {of:?}");
+    }
+    for scene in ["m1_tempdep_1", "m1_tempdep_2"] {
+        assert!(ours.iter().any(|f| f.scene == scene && f.quantity == "temp_max_c" && f.gated), "{scene}");
     }
     // FX_WS prescribed (F = 1): every quantity gated, VPITCH found among them (beyond CONTACT's
     // stopping tolerance).

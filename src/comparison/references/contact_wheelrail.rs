@@ -123,6 +123,13 @@ fn patch_deviations(
         add("fs_n", f.fs_n, &tt.fs_n);
         add("mn_nmm", f.mn_nmm, &tt.mn_nmm);
         add("pen_mm", p.pen_mm, &tt.approach_mm);
+        // MAX(T1,T2), or each body's where CONTACT prints them apart: against our largest of both.
+        use super::contact_output::wheelrail::MaxTemperature;
+        match (f.temp_max_c, &tt.max_temperature) {
+            (Some(t), Some(MaxTemperature::Both(pr))) => add("temp_max_c", t, pr),
+            (Some(t), Some(MaxTemperature::Each(a, b))) => add("temp_max_c", t, if a.value >= b.value { a } else { b }),
+            _ => {}
+        }
     }
     if let Some(s) = &t.statistics {
         let count = |n: u32| Printed { value: n as f64, half_unit: 0.5 };

@@ -586,6 +586,22 @@ fn longitudinal_force_supported(c: &WheelRailCase) -> bool {
     d.n == 1 && d.t == 3 && d.b == 0 && d.m == 0
 }
 
+/// Whether a module-1 case's surface temperatures are carried: H = 1, 3 with their data, in
+/// steady rolling (T = 3).
+pub fn wr_heat_carried(c: &WheelRailCase) -> bool {
+    matches!(c.digits.h, 1 | 3) && c.digits.t == 3 && c.state.heat.is_some()
+}
+
+/// Whether a module-1 case's friction of the temperature is carried: L = 6 with one set (V = 0),
+/// no memory, its surface temperatures carried.
+pub fn wr_temperature_law_carried(c: &WheelRailCase) -> bool {
+    let Some(f) = c.state.friction.as_ref().filter(|f| f.law == 6) else { return false };
+    f.variation == FrictionVariation::Uniform
+        && f.sets.len() == 1
+        && f.memory.is_none_or(|m| m[0] == 0.0)
+        && wr_heat_carried(c)
+}
+
 fn wr_digit(name: &str, v: u8, used: bool) -> Option<String> {
     used.then(|| format!("{name} = {v}"))
 }
@@ -796,10 +812,18 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
     WheelRailRow {
         feature: WheelRailFeature::Temperatures,
         name: "surface temperatures",
-        control: "H",
+        control: "H, BKTEMP, HEATCP, LAMBDA, DENS",
+        supported: true,
+        reason: "imported as [material] bulk1_c … density2_kg_per_mm3: the exact theory computes both bodies' surface temperatures on each patch (its module-3 problem), their largest MAX(T1,T2) compared with CONTACT's",
+        used: |c| wr_digit("H", c.digits.h, wr_heat_carried(c)),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::Temperatures,
+        name: "surface temperatures outside steady rolling, without friction or without their data",
+        control: "H, T",
         supported: false,
-        reason: "supported: H = 0",
-        used: |c| wr_digit("H", c.digits.h, c.digits.h != 0),
+        reason: "supported: H = 1, 3 in steady rolling (T = 3, as CONTACT's `calc_temp`) after H = 3 gave the data",
+        used: |c| (c.digits.h != 0 && !wr_heat_carried(c)).then(|| format!("H = {}, T = {}", c.digits.h, c.digits.t)),
     },
     WheelRailRow {
         feature: WheelRailFeature::Subsurface,

@@ -94,11 +94,21 @@ pub const SCENE_LIMITS: &[SceneLimit] = &[
         used: |c| (c.digits.t == 0).then(|| "T = 0".to_string()),
     },
     SceneLimit {
+        name: "friction of the surface temperature",
+        control: "L, FREF, TREF, DFHEAT, DTHEAT",
+        accepted: true,
+        reason: "carried as [friction] law = \"temperature\", fref, tref_c, dfheat, dtheat_c with [contact_solver] tempdep_tolerance (CONTACT's fixed 1e-4), tempdep_max_iterations (max(1, MAXIN - 10) + 1) and omgslp: each patch's exact solve iterates tractions and surface temperatures as module 3's (docs/models.md, \"Temperature-dependent friction\")",
+        used: |c| features::wr_temperature_law_carried(c).then(|| "L (in force) = 6".to_string()),
+    },
+    SceneLimit {
         name: "friction laws other than Coulomb's",
-        control: "L",
+        control: "L, V, MEMDST, H",
         accepted: false,
-        reason: "supported: L = 0 (Coulomb) or L = 1 keeping it; the wheel-rail scene carries one Coulomb coefficient (wheelrail.mu), not the falling laws (2, 3, 4) nor temperature-dependent friction (6)",
-        used: |c| c.state.friction.as_ref().filter(|f| f.law != 0).map(|f| format!("L (in force) = {}", f.law)),
+        reason: "supported: L = 0 (Coulomb) or L = 1 keeping it, and L = 6 with one set (V = 0), no memory (MEMDST = 0) and the surface temperatures (H = 1, 3 in steady rolling); not the falling laws (2, 3, 4), nor L = 6 varying across the rail or along the track",
+        used: |c| {
+            let f = c.state.friction.as_ref().filter(|f| f.law != 0 && !features::wr_temperature_law_carried(c))?;
+            Some(format!("L (in force) = {}, V = {}", f.law, c.digits.v))
+        },
     },
     SceneLimit {
         name: "influence functions other than the half-space's with piecewise constant tractions",

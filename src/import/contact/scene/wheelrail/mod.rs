@@ -7,6 +7,7 @@
 //! (`<deck>_<first case>`, its rows in `<name>_cases.csv`, `[origin]` the deck and its first and
 //! last case), written ([`write`]) and read back before anything is written.
 
+mod heat;
 mod limits;
 mod paths;
 mod write;
@@ -335,8 +336,9 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
             bodies: None,
             layer: None,
             visco: None,
-            heat: None,
+            heat: heat::thermal(c),
         },
+        tangential: heat::tangential(c),
         dx_mm: disc.dx_mm,
         ds_mm: disc.ds_mm,
         // CONTACT takes any A_SEP; contact angles (in (−π/2, π/2)) never differ by π or more.

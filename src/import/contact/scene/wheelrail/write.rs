@@ -113,8 +113,10 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
         (Some("rail"), rail),
         (Some("wheel"), wheel),
         (Some("material"), material(s)?),
-        (Some("cases"), cases),
     ];
+    out.extend(super::heat::friction_pairs(s).map(|p| (Some("friction"), p)));
+    out.extend(super::heat::contact_solver_pairs(s).map(|p| (Some("contact_solver"), p)));
+    out.push((Some("cases"), cases));
     if let Some(o) = &s.origin {
         let numbers = Value::Array(o.cases.iter().map(|&n| Value::Integer(n as i64)).collect());
         out.push((Some("origin"), vec![("file", Value::String(o.file.clone())), ("cases", numbers)]));
@@ -202,10 +204,12 @@ fn profile(p: &ProfileSpec, scene: &str) -> Result<Pairs, InputError> {
     Ok(out)
 }
 
-/// `[material]`: the combined G and ν.
+/// `[material]`: the combined G and ν, the bodies' thermal constants where the scene has them.
 fn material(s: &WheelRailScene) -> Result<Pairs, InputError> {
     let g = s.material.g_mpa.ok_or_else(|| InputError::new(&s.name, "no g_mpa", "the combined shear modulus"))?;
-    Ok(vec![("g_mpa", Value::Float(g)), ("poisson", Value::Float(s.material.poisson))])
+    let mut out = vec![("g_mpa", Value::Float(g)), ("poisson", Value::Float(s.material.poisson))];
+    out.extend(super::heat::material_pairs(s));
+    Ok(out)
 }
 
 /// The cases table: the reader's columns ([`case_columns`]), one row per case, every value in
