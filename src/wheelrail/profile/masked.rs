@@ -127,11 +127,15 @@ impl Masked {
         let (s, b) = self.rows_at(u);
         let (mut cy, mut cz, mut set) = (vec![0.0; w], vec![0.0; w], vec![true; w]);
         for (q, &bq) in b.iter().enumerate() {
-            let row = (s + q) * w;
-            for k in 0..w {
-                cy[k] += bq * self.cy[row + k];
-                cz[k] += bq * self.cz[row + k];
-                set[k] &= self.set[row + k];
+            let row = (s + q) * w..(s + q + 1) * w;
+            for (c, v) in cy.iter_mut().zip(&self.cy[row.clone()]) {
+                *c += bq * v;
+            }
+            for (c, v) in cz.iter_mut().zip(&self.cz[row.clone()]) {
+                *c += bq * v;
+            }
+            for (f, v) in set.iter_mut().zip(&self.set[row]) {
+                *f &= v;
             }
         }
         (cy, cz, set)

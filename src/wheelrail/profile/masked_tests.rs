@@ -21,9 +21,8 @@ fn a_full_mask_is_the_tensor_not_a_knot_spline() {
     for x in [-1.0, 0.0, 0.3, 2.5, 2.7, 5.0, 7.0, 9.0] {
         let w = along.weights(x);
         let at = |d: &[Vec<f64>], j: usize| w.iter().zip(d).map(|(w, r)| w * r[j]).sum::<f64>();
-        let samples = s.samples_at(x);
-        for j in 0..m {
-            let (yy, zz) = samples[j].unwrap();
+        for (j, sample) in s.samples_at(x).into_iter().enumerate() {
+            let (yy, zz) = sample.unwrap();
             assert!((yy - at(&y, j)).abs() < 1e-12 && (zz - at(&z, j)).abs() < 1e-12, "u {x}, j {j}");
         }
         let ys: Vec<f64> = (0..m).map(|j| at(&y, j)).collect();
@@ -66,9 +65,8 @@ fn an_interruption_starts_at_its_first_slice() {
     let active: Vec<(usize, usize)> = (0..12).map(|i| if i < 5 { (6, m - 1) } else { (0, m - 1) }).collect();
     let s = Masked::new(&u, &y, &z, &active).unwrap();
     for (i, &x) in u.iter().enumerate() {
-        let samples = s.samples_at(x);
-        for j in 0..m {
-            match samples[j] {
+        for (j, sample) in s.samples_at(x).into_iter().enumerate() {
+            match sample {
                 Some((yy, zz)) => {
                     assert!(j >= active[i].0, "u {x}: sample {j} should be missing");
                     assert!((yy - y[i][j]).abs() < 1e-9 && (zz - z[i][j]).abs() < 1e-9, "u {x}, j {j}");

@@ -678,9 +678,9 @@ fn resample(
         }
         let (lo, hi) = p.s_range();
         let (mut y, mut z) = (vec![0.0; m], vec![0.0; m]);
-        for j in j0..=j1 {
-            if let Some(q) = p.point_at_s(sj[j].clamp(lo, hi)) {
-                (y[j], z[j]) = (q.y_mm, q.z_mm);
+        for ((yj, zj), &s) in y.iter_mut().zip(z.iter_mut()).zip(&sj).take(j1 + 1).skip(j0) {
+            if let Some(q) = p.point_at_s(s.clamp(lo, hi)) {
+                (*yj, *zj) = (q.y_mm, q.z_mm);
             }
         }
         ys.push(y);
