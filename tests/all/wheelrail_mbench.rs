@@ -68,7 +68,10 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         all_gaps.iter().all(|f| in_testbank(f) || kpec(f) || varfric(f) || totforce(f) || intrup(f)),
         "{all_gaps:?}"
     );
-    assert!(all_gaps.iter().filter(|f| intrup(f)).all(|f| f.gated && f.passed()), "mbench_intrup 24, 28 within their bound");
+    assert!(
+        all_gaps.iter().filter(|f| intrup(f)).all(|f| f.gated && f.passed()),
+        "mbench_intrup 24, 28 within their bound"
+    );
     assert!(
         all_gaps.iter().filter(|f| totforce(f)).all(|f| f.gated && f.passed()),
         "m1_totforce cases 66-80 within their bound"

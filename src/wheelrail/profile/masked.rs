@@ -81,13 +81,20 @@ impl Masked {
                 dst[a..a + c.len()].copy_from_slice(&c);
             }
         }
-        let mut out =
-            Masked { u: u.to_vec(), tu, m, cy: vec![UNSET; (n + 2) * (m + 2)], cz: vec![UNSET; (n + 2) * (m + 2)], set: vec![false; (n + 2) * (m + 2)] };
+        let mut out = Masked {
+            u: u.to_vec(),
+            tu,
+            m,
+            cy: vec![UNSET; (n + 2) * (m + 2)],
+            cz: vec![UNSET; (n + 2) * (m + 2)],
+            set: vec![false; (n + 2) * (m + 2)],
+        };
         // Phase 2: along the track, per group of alike columns and run of active slices.
         for (a0, a1) in groups(&mask) {
             for (i0, i1) in runs(&mask, a0) {
                 let (k0, k1) = guard_columns(&mask, (a0, a1), (i0, i1));
-                let s = NotAKnot::new(&u[i0..=i1]).ok_or_else(|| too_few(&format!("sample {}", a0 + 1), i1 + 1 - i0))?;
+                let s =
+                    NotAKnot::new(&u[i0..=i1]).ok_or_else(|| too_few(&format!("sample {}", a0 + 1), i1 + 1 - i0))?;
                 for k in k0..=k1.min(m + 1) {
                     for (dst, src) in [(&mut out.cy, &ci.0), (&mut out.cz, &ci.1)] {
                         let path: Vec<f64> = (i0..=i1).map(|i| src[i][k]).collect();
@@ -184,7 +191,12 @@ fn lateral(cy: &[f64], cz: &[f64], set: &[bool], v: f64, m: usize) -> Option<(f6
 /// The four uniform cubic B-splines on a segment at t ∈ [0, 1].
 fn uniform_basis(t: f64) -> [f64; 4] {
     let s = 1.0 - t;
-    [s * s * s / 6.0, (3.0 * t * t * t - 6.0 * t * t + 4.0) / 6.0, (-3.0 * t * t * t + 3.0 * t * t + 3.0 * t + 1.0) / 6.0, t * t * t / 6.0]
+    [
+        s * s * s / 6.0,
+        (3.0 * t * t * t - 6.0 * t * t + 4.0) / 6.0,
+        (-3.0 * t * t * t + 3.0 * t * t + 3.0 * t + 1.0) / 6.0,
+        t * t * t / 6.0,
+    ]
 }
 
 /// The segment's cubic a₀ + a₁t + a₂t² + a₃t³ from its four uniform B-spline coefficients.

@@ -2,7 +2,10 @@ use super::*;
 
 /// A smooth test surface's samples: slice i at u_i, sample j.
 fn data(u: &[f64], m: usize) -> (Vec<Vec<f64>>, Vec<Vec<f64>>) {
-    let y = u.iter().map(|&x| (0..m).map(|j| j as f64 * (1.0 + 0.01 * x) + 0.1 * (0.3 * j as f64).sin()).collect()).collect();
+    let y = u
+        .iter()
+        .map(|&x| (0..m).map(|j| j as f64 * (1.0 + 0.01 * x) + 0.1 * (0.3 * j as f64).sin()).collect())
+        .collect();
     let z = u.iter().map(|&x| (0..m).map(|j| (0.2 * j as f64 + 0.05 * x).cos() + 0.001 * x * x).collect()).collect();
     (y, z)
 }
@@ -31,7 +34,7 @@ fn a_full_mask_is_the_tensor_not_a_knot_spline() {
         let v = 3.4;
         let k = 3;
         let (yv, zv) = (cy.value_on(k, v - 3.0), cz.value_on(k, v - 3.0));
-        let found = s.z_at(x, yv, |c, y| first_root_test(c, y)).unwrap();
+        let found = s.z_at(x, yv, first_root_test).unwrap();
         assert!((found - zv).abs() < 1e-9, "u {x}: z {found} vs {zv}");
     }
 }
@@ -87,7 +90,8 @@ fn masks_contact_refuses_are_refused() {
     let one_short: Vec<(usize, usize)> = (0..8).map(|i| if i < 3 { (1, m - 1) } else { (0, m - 1) }).collect();
     let e = Masked::new(&u, &y, &z, &one_short).unwrap_err();
     assert!(e.what.contains("slice 1") && e.allowed.contains("171"), "{e:?}");
-    let three_slices: Vec<(usize, usize)> = (0..8).map(|i| if (2..5).contains(&i) { (0, m - 1) } else { (4, m - 1) }).collect();
+    let three_slices: Vec<(usize, usize)> =
+        (0..8).map(|i| if (2..5).contains(&i) { (0, m - 1) } else { (4, m - 1) }).collect();
     let e = Masked::new(&u, &y, &z, &three_slices).unwrap_err();
     assert!(e.what.contains("path of sample 1") && e.allowed.contains("172"), "{e:?}");
 }
