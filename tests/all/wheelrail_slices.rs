@@ -16,11 +16,6 @@
 use crate::common::root;
 use creepbench::wheelrail::profile::slices::{read_slices, Slices};
 use creepbench::wheelrail::profile::{ProfileKind, ProfileOptions};
-use std::path::PathBuf;
-
-fn profiles() -> PathBuf {
-    root().join("reference/contact_wheelrail/testbank/profiles")
-}
 
 /// A slices file of CONTACT's decks: its name, its folder, rail or wheel, the decks' SCALE and
 /// SMOOTH (MIRRORZ = −1 in every deck).
@@ -36,11 +31,13 @@ const RAIL: ProfileKind = ProfileKind::Rail;
 const WHEEL: ProfileKind = ProfileKind::Wheel;
 const TESTBANK: &str = "reference/contact_wheelrail/testbank/profiles";
 
-const FILES: [File; 6] = [
+const FILES: [File; 8] = [
     File { name: "uk_crossing.slcs", dir: TESTBANK, kind: RAIL, scale: 1000.0, smooth: 0.0 },
     File { name: "wing_rail.slcs", dir: TESTBANK, kind: RAIL, scale: 1.0, smooth: 0.0 },
     File { name: "cross_nose.slcs", dir: TESTBANK, kind: RAIL, scale: 1.0, smooth: 0.0 },
     File { name: "cross+wing.slcs", dir: TESTBANK, kind: RAIL, scale: 1.0, smooth: 0.0 },
+    File { name: "uk_interrupt_v2.slcs", dir: TESTBANK, kind: RAIL, scale: 1000.0, smooth: 0.0 },
+    File { name: "cross+wing_extd.slcs", dir: TESTBANK, kind: RAIL, scale: 1.0, smooth: 0.0 },
     File { name: "flat_d09.slcw", dir: TESTBANK, kind: WHEEL, scale: 1.0, smooth: 0.0 },
     File { name: "S1002_flat.slcw", dir: "reference/contact_wheelrail/examples", kind: WHEEL, scale: 1.0, smooth: 5.0 },
 ];
@@ -177,7 +174,7 @@ fn half_unit(printed: &str) -> f64 {
 /// The worst |ZCP(R) − CONTACT's| over each deck's patches in units of its bound.
 #[test]
 fn the_patches_reference_heights_are_contacts_printed_ones() {
-    let decks: [(&str, &str, f64); 7] = [
+    let decks: [(&str, &str, f64); 9] = [
         ("mbench_locus.ref_out", "uk_crossing.slcs", 1000.0),
         ("mbench_brute.ref_out", "uk_crossing.slcs", 1000.0),
         ("wing_locus.ref_out", "wing_rail.slcs", 1.0),
@@ -185,6 +182,8 @@ fn the_patches_reference_heights_are_contacts_printed_ones() {
         ("cross_locus.ref_out", "cross_nose.slcs", 1.0),
         ("cross_brute.ref_out", "cross_nose.slcs", 1.0),
         ("cross+wing.ref_out", "cross+wing.slcs", 1.0),
+        ("mbench_intrup.ref_out", "uk_interrupt_v2.slcs", 1000.0),
+        ("cw_interrupt.ref_out", "cross+wing_extd.slcs", 1.0),
     ];
     for (deck, file, scale) in decks {
         let s = slices(file, scale);
@@ -212,13 +211,16 @@ fn the_patches_reference_heights_are_contacts_printed_ones() {
     }
 }
 
-/// Interruptions (slices whose parts are missing: a negative S_F at a slice's start or end) are
-/// refused naming the file, the line and the value.
+/// Interruptions (slices whose parts are missing: a negative S_F at a slice's start or end):
+/// the cross-sections hold only the points the surface has (255 of 558 on the UK crossing's
+/// slices before the nose, 198 of 595 on the extended crossing before u = 0), as CONTACT's.
 #[test]
-fn interrupted_slices_are_refused() {
-    for (name, scale) in [("uk_interrupt_v2.slcs", 1000.0), ("cross+wing_extd.slcs", 1.0)] {
-        let opts = ProfileOptions { scale, mirror_z: -1, ..Default::default() };
-        let e = read_slices(&profiles().join(name), ProfileKind::Rail, &opts).unwrap_err().to_string();
-        assert!(e.contains(name) && e.contains("interruptions") && e.contains("not supported"), "{e}");
+fn interrupted_slices_hold_the_parts_present() {
+    for (name, scale, before, after, n0, n1) in
+        [("uk_interrupt_v2.slcs", 1000.0, 118.9, 118.94, 255, 558), ("cross+wing_extd.slcs", 1.0, -1.0, 0.0, 198, 595)]
+    {
+        let s = slices(name, scale);
+        assert_eq!(s.section_at(before).unwrap().y_mm().len(), n0, "{name} at {before}");
+        assert_eq!(s.section_at(after).unwrap().y_mm().len(), n1, "{name} at {after}");
     }
 }

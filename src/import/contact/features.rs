@@ -854,7 +854,7 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "a variable rail profile (slices file, switches and crossings)",
         control: "RFNAME",
         supported: true,
-        reason: "carried as [rail] profile (the .slcs file) with [wheelrail] s_mm (S_WS): the contact locus iterated on the rail's 3-D surface, each patch on the cross-section at its reference and each grid column on its own (wheelrail::varrail); not with interruptions (slices whose parts are missing: refused when the scene reads the file)",
+        reason: "carried as [rail] profile (the .slcs file) with [wheelrail] s_mm (S_WS): the contact locus iterated on the rail's 3-D surface, each patch on the cross-section at its reference and each grid column on its own (wheelrail::varrail); slices whose parts are missing (interruptions) make CONTACT's masked surface (wheelrail::profile::masked); what CONTACT refuses in the file is refused when the scene reads it",
         used: |c| slices(c.state.rail_profile.as_ref()),
     },
     WheelRailRow {

@@ -57,7 +57,7 @@ impl Approximating {
 }
 
 /// The four cubic B-splines nonzero on [t_m, t_{m+1}) at x: B_{m−3} … B_m (de Boor's BSPLVB).
-fn basis(t: &[f64], m: usize, x: f64) -> [f64; 4] {
+pub(super) fn basis(t: &[f64], m: usize, x: f64) -> [f64; 4] {
     let mut b = [1.0, 0.0, 0.0, 0.0];
     let (mut left, mut right) = ([0.0; 4], [0.0; 4]);
     for j in 1..4 {

@@ -14,6 +14,7 @@ pub mod error;
 mod foldback;
 mod index;
 pub mod lines;
+mod masked;
 pub mod miniprof;
 mod notaknot;
 pub mod options;

@@ -12,12 +12,17 @@
 //! position ([`Slices::section_at`]) is the interpolated samples with CONTACT's profile spline
 //! through them (no kinks, the deck's SMOOTH unweighted).
 //!
-//! Not supported (refused naming the value): surface perturbations (`PERTURB`), and interruptions (a slice whose first or last features are
-//! negative: parts that are missing on some slices).
+//! Interruptions (a slice whose first or last features are negative: parts missing on that slice)
+//! resample only the slice's present parts and make CONTACT's masked surface
+//! ([`super::masked`]): a cross-section then holds the points the surface has at its position.
+//!
+//! Not supported (refused naming the value): surface perturbations (`PERTURB`), and interruptions
+//! with the approximating spline (`U_INTPOL = 2`, the wheel-flat files).
 
 use super::approx::Approximating;
 use super::error::ProfileError;
 use super::lines::{self, At, Line};
+use super::masked::Masked;
 use super::notaknot::{Curve, NotAKnot};
 use super::{read_profile, Profile, ProfileKind, ProfileOptions};
 use std::f64::consts::PI;
@@ -58,6 +63,8 @@ pub struct Slices {
     /// The not-a-knot spline across, over the samples' indices (CONTACT's v: 1, 2, …).
     across: NotAKnot,
     lambda: f64,
+    /// With interruptions: CONTACT's masked surface, which then serves every evaluation.
+    masked: Option<Masked>,
 }
 
 /// The spline along the track (or around the wheel) through the slices' samples.
@@ -100,7 +107,8 @@ pub fn read_slices(path: &Path, kind: ProfileKind, opts: &ProfileOptions) -> Res
         let p = read_profile(&dir.join(name), kind, &opts).map_err(|e| e.in_slice(&file, i + 1))?;
         profiles.push(p);
     }
-    let (y_mm, z_mm) = resample(&profiles, &features, &file)?;
+    let (y_mm, z_mm, active) = resample(&profiles, &features, &file)?;
+    let masked = masked_surface(&u, &y_mm, &z_mm, &active, approximating, &file)?;
     let spline = if approximating {
         Approximating::new(&u).map(Along::Approximating)
     } else {
@@ -114,12 +122,32 @@ pub fn read_slices(path: &Path, kind: ProfileKind, opts: &ProfileOptions) -> Res
         ProfileError::profile(&file, "the samples per slice", sites.len(), "at least 4 (CONTACT's error 404)")
     })?;
     let paths = match &spline {
-        Along::Interpolating(s) => Some((lateral_paths(s, &y_mm), lateral_paths(s, &z_mm))),
-        Along::Approximating(_) => None,
+        Along::Interpolating(s) if masked.is_none() => Some((lateral_paths(s, &y_mm), lateral_paths(s, &z_mm))),
+        _ => None,
     };
     // CONTACT fits the cross-section with λ = SMOOTH as given, unweighted, whatever ISMOOTH.
     let bands = if paths.is_some() { (1..u.len()).map(|_| OnceLock::new()).collect() } else { Vec::new() };
-    Ok(Slices { file, kind, u, profiles, y_mm, z_mm, spline, paths, bands, across, lambda: opts.smooth })
+    Ok(Slices { file, kind, u, profiles, y_mm, z_mm, spline, paths, bands, across, lambda: opts.smooth, masked })
+}
+
+/// With interruptions (a slice whose samples do not all exist), CONTACT's masked surface;
+/// refused with the approximating spline and where CONTACT refuses the mask.
+fn masked_surface(
+    u: &[f64],
+    y: &[Vec<f64>],
+    z: &[Vec<f64>],
+    active: &[(usize, usize)],
+    approximating: bool,
+    file: &str,
+) -> Result<Option<Masked>, ProfileError> {
+    let m = y[0].len();
+    let Some(i) = active.iter().position(|&(a, b)| a > 0 || b + 1 < m) else { return Ok(None) };
+    if approximating {
+        let what = format!("slice {}: its features (interruptions)", i + 1);
+        let allowed = "interruptions with U_INTPOL = 1 (the interpolating spline; not with the approximating one)";
+        return Err(ProfileError::profile(file, what, "U_INTPOL = 2", allowed));
+    }
+    Masked::new(u, y, z, active).map(Some).map_err(|e| ProfileError::profile(file, e.what, e.value, e.allowed))
 }
 
 /// The spline along the track of each lateral path j of the samples `v[slice][j]`.
@@ -210,8 +238,13 @@ impl Slices {
     }
 
     /// The resampled points of every slice interpolated to position `u` (held to the first and
-    /// last slice's: CONTACT's constant extrapolation), (y, z) [mm].
+    /// last slice's: CONTACT's constant extrapolation), (y, z) [mm]. With interruptions, those
+    /// from the first to the last point the surface has at u.
     pub fn samples_at(&self, u: f64) -> (Vec<f64>, Vec<f64>) {
+        if let Some(masked) = &self.masked {
+            let (y, z, _) = present_samples(masked, u);
+            return (y, z);
+        }
         if let Some((ys, zs)) = &self.paths {
             let n = self.u.len();
             let x = u.clamp(self.u[0], self.u[n - 1]);
@@ -239,7 +272,17 @@ impl Slices {
     /// through them (`varprof_intpol_xunif` with one position: no kinks, λ = SMOOTH unweighted;
     /// with SMOOTH > 0 its points are the smoothed samples, as CONTACT replaces them).
     pub fn section_at(&self, u: f64) -> Result<Profile, ProfileError> {
-        let (y, z) = self.samples_at(u);
+        let (y, z) = match &self.masked {
+            Some(masked) => match present_samples(masked, u) {
+                (y, z, None) => (y, z),
+                (_, _, Some(j)) => {
+                    let what = format!("the cross-section at u = {u}: its sample {}", j + 1);
+                    let allowed = "a cross-section without missing points between its first and last";
+                    return Err(ProfileError::profile(&self.file, what, "missing", allowed));
+                }
+            },
+            None => self.samples_at(u),
+        };
         let name = format!("{} at {u}", self.file);
         Profile::section(&name, self.kind, &y, &z, self.lambda).ok_or_else(|| {
             ProfileError::profile(&self.file, "the interpolated cross-section", u, "distinct finite points")
@@ -256,6 +299,9 @@ impl Slices {
     pub fn surface_z_at(&self, u: f64, y: f64) -> Option<f64> {
         if !y.is_finite() || u.is_nan() {
             return None;
+        }
+        if let Some(masked) = &self.masked {
+            return masked.z_at(u, y, |c, y| first_root((c, 1.0), y));
         }
         if let Some((k, t)) = self.band_at(u) {
             return self.band(k).z_at(t, y);
@@ -288,6 +334,18 @@ impl Slices {
             Band { f_y, m_y, f_z, m_z }
         })
     }
+}
+
+/// The samples the masked surface has at u, from its first to its last (CONTACT's
+/// `varprof_intpol_xunif` trims the 999 it gives the others), and the first one missing between
+/// them, if any.
+fn present_samples(masked: &Masked, u: f64) -> (Vec<f64>, Vec<f64>, Option<usize>) {
+    let s = masked.samples_at(u);
+    let first = s.iter().position(Option::is_some).unwrap_or(0);
+    let last = s.iter().rposition(Option::is_some).unwrap_or(0);
+    let hole = (first..=last).find(|&j| s[j].is_none());
+    let (y, z) = s[first..=last].iter().map(|p| p.unwrap_or((f64::NAN, f64::NAN))).unzip();
+    (y, z, hole)
 }
 
 /// Between two slices the samples are cubics in t = u − u_k, and the lateral spline's second
@@ -547,10 +605,9 @@ fn read_features(c: &mut Cursor<'_>, h: &Header, u: &[f64]) -> Result<Vec<Vec<f6
             return Err(v[0].1.value(1, "the feature line's position (scaled)", &pos.to_string(), &allowed));
         }
         let f: Vec<f64> = v[1..].iter().map(|x| x.0).collect();
-        let active = |x: &f64| *x >= -1e-6;
-        if !active(&f[0]) || !active(&f[h.nfeat - 1]) {
-            let allowed =
-                "features at or beyond 0 at the slice's start and end (interruptions, negative S_F, are not supported)";
+        let (ib0, ib1) = present_features(&f);
+        if ib1 <= ib0 {
+            let allowed = "at least two features at or beyond 0 (CONTACT's error 161)";
             return Err(v[1].1.value(1, "S_F", &format!("{f:?}"), allowed));
         }
         out.push(f);
@@ -558,23 +615,36 @@ fn read_features(c: &mut Cursor<'_>, h: &Header, u: &[f64]) -> Result<Vec<Vec<f6
     Ok(out)
 }
 
+/// The first and last feature present on a slice (`varprof_make_vj`: those from the start and
+/// the end whose S_F is negative are missing).
+fn present_features(f: &[f64]) -> (usize, usize) {
+    let n = f.len();
+    let missing = |x: &f64| *x < -1e-6;
+    let ib0 = f.iter().take(n - 1).take_while(|x| missing(x)).count();
+    let ib1 = n - 1 - f.iter().rev().take(n - 1).take_while(|x| missing(x)).count();
+    (ib0, ib1)
+}
+
 /// Each slice resampled part by part at the same number of points (`varprof_make_vj`,
-/// `varprof_make_2dspline`): the features shifted to the profile's arc length (the last held to
-/// its end), each part's segments 1 + ⌊(longest length + 1e-6) / 0.5 mm⌋.
+/// `varprof_make_2dspline`): the slice's present features shifted to the profile's arc length
+/// (the last held to its end), each part's segments 1 + ⌊(longest length over the slices that
+/// have it + 1e-6) / 0.5 mm⌋; a slice's missing parts' samples left at 0. Also each slice's
+/// present samples (first, last).
 #[allow(clippy::type_complexity)]
 fn resample(
     profiles: &[Profile],
     features: &[Vec<f64>],
     file: &str,
-) -> Result<(Vec<Vec<f64>>, Vec<Vec<f64>>), ProfileError> {
+) -> Result<(Vec<Vec<f64>>, Vec<Vec<f64>>, Vec<(usize, usize)>), ProfileError> {
     let nfeat = features[0].len();
     let mut shifted = Vec::with_capacity(profiles.len());
     let mut longest = vec![-1.0f64; nfeat - 1];
     for (i, (p, f)) in profiles.iter().zip(features).enumerate() {
         let (s0, s1) = p.s_range();
+        let (ib0, ib1) = present_features(f);
         let mut s: Vec<f64> = f.iter().map(|x| x + s0).collect();
-        s[nfeat - 1] = s[nfeat - 1].min(s1);
-        if let Some(k) = (1..nfeat).find(|&k| s[k] - s[k - 1] <= 1e-6) {
+        s[ib1] = s[ib1].min(s1);
+        if let Some(k) = (ib0 + 1..=ib1).find(|&k| s[k] - s[k - 1] <= 1e-6) {
             let allowed = "strictly increasing features within the profile (CONTACT's error 162)";
             return Err(ProfileError::profile(
                 file,
@@ -583,20 +653,23 @@ fn resample(
                 allowed,
             ));
         }
-        for k in 0..nfeat - 1 {
+        for k in ib0..ib1 {
             longest[k] = longest[k].max(s[k + 1] - s[k]);
         }
-        shifted.push(s);
+        shifted.push((s, ib0, ib1));
     }
     let mut first = vec![0usize; nfeat];
     for k in 0..nfeat - 1 {
-        first[k + 1] = first[k] + 1 + ((longest[k] + 1e-6) / RESAMPLE_STEP_MM) as usize;
+        // Fortran's int() truncates towards zero: a part no slice has gets no segment.
+        let segments = 1 + ((longest[k] + 1e-6) / RESAMPLE_STEP_MM).trunc() as i64;
+        first[k + 1] = first[k] + segments.max(0) as usize;
     }
     let m = first[nfeat - 1] + 1;
-    let (mut ys, mut zs) = (Vec::with_capacity(profiles.len()), Vec::with_capacity(profiles.len()));
-    for (p, s) in profiles.iter().zip(&shifted) {
+    let (mut ys, mut zs, mut active) = (Vec::new(), Vec::new(), Vec::new());
+    for (p, (s, ib0, ib1)) in profiles.iter().zip(&shifted) {
+        let (j0, j1) = (first[*ib0], first[*ib1]);
         let mut sj = vec![0.0; m];
-        for k in 0..nfeat - 1 {
+        for k in *ib0..*ib1 {
             let (i0, i1) = (first[k], first[k + 1]);
             let len = s[k + 1] - s[k];
             for (j, v) in sj.iter_mut().enumerate().take(i1 + 1).skip(i0) {
@@ -604,11 +677,17 @@ fn resample(
             }
         }
         let (lo, hi) = p.s_range();
-        let pts: Vec<_> = sj.iter().filter_map(|&x| p.point_at_s(x.clamp(lo, hi))).collect();
-        ys.push(pts.iter().map(|q| q.y_mm).collect());
-        zs.push(pts.iter().map(|q| q.z_mm).collect());
+        let (mut y, mut z) = (vec![0.0; m], vec![0.0; m]);
+        for ((yj, zj), &s) in y.iter_mut().zip(z.iter_mut()).zip(&sj).take(j1 + 1).skip(j0) {
+            if let Some(q) = p.point_at_s(s.clamp(lo, hi)) {
+                (*yj, *zj) = (q.y_mm, q.z_mm);
+            }
+        }
+        ys.push(y);
+        zs.push(z);
+        active.push((j0, j1));
     }
-    Ok((ys, zs))
+    Ok((ys, zs, active))
 }
 
 #[cfg(test)]

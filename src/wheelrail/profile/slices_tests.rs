@@ -95,8 +95,14 @@ fn bad_slices_files_are_refused_naming_line_and_value() {
     let e = refusal("0.0 1.0\n 6\n 3 0 0\n 1\n", &bad);
     assert!(e.contains("rail.slcs:15:1") && e.contains("155"), "{e}");
     let gap = feats.replacen("0 0.0 10", "0 -1 10", 1);
+    // One slice lacking a part: the part's path is inactive over one slice at its start.
     let e = refusal("0.0 1.0\n 6\n 3 0 0\n 1\n", &gap);
-    assert!(e.contains("interruptions") && e.contains("not supported"), "{e}");
+    assert!(e.contains("path of sample 1") && e.contains("171"), "{e}");
+    let e = refusal("0.0 1.0\n 6\n 3 0 0\n 2\n", &gap);
+    assert!(e.contains("interruptions") && e.contains("U_INTPOL = 2"), "{e}");
+    let none = feats.replacen("0 0.0 10 999", "0 -1 -1 999", 1);
+    let e = refusal("0.0 1.0\n 6\n 3 0 0\n 1\n", &none);
+    assert!(e.contains("161"), "{e}");
     let down = feats.replacen("0 0.0 10", "0 12 10", 1);
     let e = refusal("0.0 1.0\n 6\n 3 0 0\n 1\n", &down);
     assert!(e.contains("slice 1: S_F 1 and 2") && e.contains("162"), "{e}");

@@ -279,7 +279,7 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
     let (rail, wheel) =
         (s.rail_profile.as_ref().ok_or(never("RFNAME"))?, s.wheel_profile.as_ref().ok_or(never("WFNAME"))?);
     if let Some(file) = paths.deck_file(&rail.file).filter(|_| rail.format() == ProfileFormat::Slices) {
-        // What the slices file itself says (interruptions, perturbations) is refused here.
+        // What the slices file itself says (perturbations, CONTACT's errors) is refused here.
         check_slices_file(&file, ProfileKind::Rail).map_err(|e| format!("the rail slices file: {e}"))?;
     }
     let track = s.track.ok_or(never("the track"))?;
