@@ -12,12 +12,12 @@ use crate::scene::wheelrail::{
 };
 use crate::solvers;
 use crate::wheelrail::friction::Friction;
+use crate::wheelrail::oorwheel::WheelSlices;
 use crate::wheelrail::patch::Separation;
 use crate::wheelrail::profile::slices::{read_slices, Slices};
 use crate::wheelrail::profile::{options::ProfileOptions, read::read_profile, Profile, ProfileKind};
 use crate::wheelrail::rail::{RailPlacement, Track};
 use crate::wheelrail::side::Side;
-use crate::wheelrail::oorwheel::WheelSlices;
 use crate::wheelrail::varrail::RailSlices;
 use crate::wheelrail::wheel::{Pose, Velocity, WheelDeviation, WheelsetGeometry};
 use crate::wheelrail::wheel_mesh::WheelSurface;

@@ -18,7 +18,8 @@
 use super::keys::{bound, key, Absent, Allowed, Keys};
 use super::reader::{Range, Section};
 use super::wheelrail::{
-    case_columns, case_columns_with_pitch, case_columns_with_positions, CaseRow, LongitudinalSpec, MotionSpec, MuBy, MuVariation, VerticalSpec,
+    case_columns, case_columns_with_pitch, case_columns_with_positions, CaseRow, LongitudinalSpec, MotionSpec, MuBy,
+    MuVariation, VerticalSpec,
 };
 use crate::error::InputError;
 use std::path::Path;
@@ -355,8 +356,11 @@ pub fn check_positions(
 fn from_file(c: &mut Section, dir: &Path, spec: Spec) -> Result<Vec<CaseRow>, InputError> {
     let field = c.field("file");
     let file = c.text("file")?;
-    let choices =
-        [case_columns(spec.0, spec.1), case_columns_with_positions(spec.0, spec.1), case_columns_with_pitch(spec.0, spec.1)];
+    let choices = [
+        case_columns(spec.0, spec.1),
+        case_columns_with_positions(spec.0, spec.1),
+        case_columns_with_pitch(spec.0, spec.1),
+    ];
     let ((mut cols, lines, origin), choice) = super::geometry::read_columns_of(&dir.join(file), &field, &choices)?;
     let n = cols[0].len();
     if n == 0 || n > MAX_CASES {

@@ -6,11 +6,11 @@
 //! region of interpenetration grown to its bounding box plus one guard line
 //! (`find_bounding_box_2d`) and its centre weighted by the squared gap (`compute_wgt_center_2d`).
 
+use super::mesh_interp::{interpolate, Mesh, Scheme, Uniform};
 use super::oorwheel::{self, WheelSlices};
 use super::patch::Candidate;
 use super::rail::PlacedRail;
 use super::wheel::PlacedWheel;
-use super::mesh_interp::{interpolate, Mesh, Scheme, Uniform};
 
 /// The gap mesh's lateral step over DS (`fac_dyds` 0.5 times 1.5).
 const STEP_OVER_DS: f64 = 0.75;

@@ -9,8 +9,8 @@
 //! prescribed vertical force, [`creepage`] the kinematic creepages. Everything is computed on the
 //! right side; [`side`] mirrors a left wheel.
 
-pub mod creepage;
 pub mod brute;
+pub mod creepage;
 pub mod curve;
 pub mod friction;
 pub mod locus;

@@ -95,14 +95,20 @@ pub fn mesh(oor: &WheelSlices, wheel: &PlacedWheel, dx_mm: f64) -> OorMesh {
 /// widened by 2 DX along x; angles θ from −PITCH + atan(x / r_min) at both ends in slices about
 /// DX apart (round((θ₁ − θ₀) R / DX) + 2, odd), the lateral parameter v uniform over the
 /// samples' sites; `None` off the mesh.
-pub fn wheel_n_mm(oor: &WheelSlices, wheel: &PlacedWheel, frame: &PatchFrame, grid: &PatchGrid, y_mm: [f64; 2]) -> Vec<Option<f64>> {
+pub fn wheel_n_mm(
+    oor: &WheelSlices,
+    wheel: &PlacedWheel,
+    frame: &PatchFrame,
+    grid: &PatchGrid,
+    y_mm: [f64; 2],
+) -> Vec<Option<f64>> {
     let radius = wheel.nominal_radius_mm;
     let (sin_d, _) = frame.delta_rad.sin_cos();
     let x_edges = [grid.x0_mm, grid.x0_mm + grid.mx as f64 * grid.dx_mm].map(|x| frame.origin.x + x);
     let s_edges = [grid.s0_mm, grid.s0_mm + grid.ms as f64 * grid.ds_mm];
     let z_at = s_edges.map(|s| frame.origin.z + s * sin_d);
-    let corners = [(0, 0), (0, 1), (1, 0), (1, 1)]
-        .map(|(i, j)| wheel.to_wheel(&Point3::new(x_edges[i], y_mm[j], z_at[j])));
+    let corners =
+        [(0, 0), (0, 1), (1, 0), (1, 1)].map(|(i, j)| wheel.to_wheel(&Point3::new(x_edges[i], y_mm[j], z_at[j])));
     let x_min = corners.iter().map(|q| q.x).fold(f64::MAX, f64::min) - 2.0 * grid.dx_mm;
     let x_max = corners.iter().map(|q| q.x).fold(f64::MIN, f64::max) + 2.0 * grid.dx_mm;
     // q.z from the centre is NOMRAD plus the profile's z: r_min = NOMRAD + z_min.

@@ -5,11 +5,11 @@
 //! the undeformed distance along the plane's normal between the surfaces (the wheel's exact or
 //! CONTACT's mesh of it).
 
+use super::oorwheel;
 use super::profile::Profile;
 use super::rail::PlacedRail;
 use super::search::LocusSample;
 use super::varrail::RailSlices;
-use super::oorwheel;
 use super::wheel::PlacedWheel;
 use super::wheel_mesh::{self, WheelSurface};
 use super::{shift, Motion, WheelRailError};

@@ -6,8 +6,8 @@
 use super::super::read_back::tempdir_for;
 use crate::error::InputError;
 use crate::scene::wheelrail::{
-    case_columns, case_columns_with_pitch, case_columns_with_positions, CaseRow, LongitudinalSpec, MotionSpec, MuBy, PlacementSpec, ProfileSpec,
-    SideSpec, VerticalSpec, WheelRailScene,
+    case_columns, case_columns_with_pitch, case_columns_with_positions, CaseRow, LongitudinalSpec, MotionSpec, MuBy,
+    PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
 };
 use crate::scene::wheelrail_profile::{MIRROR_Z, PROFILE_DEFAULTS};
 use std::fmt::Write;
@@ -224,8 +224,7 @@ fn cases_csv(vertical: VerticalSpec, longitudinal: LongitudinalSpec, rows: &[Cas
     for r in rows {
         let s = r.s_mm.filter(|_| positions);
         let pitch = Some(r.pitch_rad).filter(|_| pitches);
-        let values =
-            s.into_iter().chain([r.y_mm, r.vertical, r.roll_rad, r.yaw_rad]).chain(r.velocity).chain(pitch);
+        let values = s.into_iter().chain([r.y_mm, r.vertical, r.roll_rad, r.yaw_rad]).chain(r.velocity).chain(pitch);
         let _ = write!(out, "{}", r.contact_case);
         for v in values {
             let _ = write!(out, ",{v:?}");
