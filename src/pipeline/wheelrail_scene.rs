@@ -12,6 +12,7 @@ use crate::scene::wheelrail::{
 };
 use crate::solvers;
 use crate::wheelrail::friction::Friction;
+use crate::wheelrail::oorwheel::WheelSlices;
 use crate::wheelrail::patch::Separation;
 use crate::wheelrail::profile::slices::{read_slices, Slices};
 use crate::wheelrail::profile::{options::ProfileOptions, read::read_profile, Profile, ProfileKind};
@@ -72,6 +73,31 @@ fn rail_profile(spec: &ProfileSpec, s_ws_mm: f64) -> Result<RailProfile, Error> 
     Ok(RailProfile { profile, slices: Some(slices) })
 }
 
+/// The scene's wheel: its profile and, where it is out of round (a wheel slices file, `.slcw`),
+/// the slices with `profile` their first (the surface is the slices': `wheelrail::oorwheel`).
+#[derive(Debug)]
+pub struct WheelProfile {
+    pub profile: Profile,
+    pub slices: Option<Slices>,
+}
+
+impl std::ops::Deref for WheelProfile {
+    type Target = Profile;
+    fn deref(&self) -> &Profile {
+        &self.profile
+    }
+}
+
+/// The wheel read as the scene says: a profile, or a wheel slices file (`.slcw`).
+fn wheel_profile(spec: &ProfileSpec) -> Result<WheelProfile, Error> {
+    if !spec.path.to_string_lossy().to_lowercase().ends_with(".slcw") {
+        return Ok(WheelProfile { profile: profile(spec, ProfileKind::Wheel)?, slices: None });
+    }
+    let slices = read_slices(&spec.path, ProfileKind::Wheel, &options(spec))?;
+    let profile = slices.slice(0).clone();
+    Ok(WheelProfile { profile, slices: Some(slices) })
+}
+
 /// CONTACT's profile options as the scene gives them.
 fn options(spec: &ProfileSpec) -> ProfileOptions {
     ProfileOptions {
@@ -95,9 +121,9 @@ fn profile(spec: &ProfileSpec, kind: ProfileKind) -> Result<Profile, Error> {
 
 /// Read the scene's profiles and check its models: everything that can fail on input, before
 /// any case runs.
-pub fn prepare(scene: &WheelRailScene) -> Result<(RailProfile, Profile, Vec<String>), Error> {
+pub fn prepare(scene: &WheelRailScene) -> Result<(RailProfile, WheelProfile, Vec<String>), Error> {
     let rail = rail_profile(&scene.rail, scene.s_ws_mm)?;
-    let wheel = profile(&scene.wheel, ProfileKind::Wheel)?;
+    let wheel = wheel_profile(&scene.wheel)?;
     Ok((rail, wheel, models(scene)?))
 }
 
@@ -159,7 +185,7 @@ pub fn case_of<'a>(
     s: &WheelRailScene,
     row: &CaseRow,
     rail: &'a RailProfile,
-    wheel: &'a Profile,
+    wheel: &'a WheelProfile,
     material: crate::physics::Material,
 ) -> WheelRailCase<'a> {
     let [vs, vy, vz, vroll, vyaw, sixth] = row.velocity;
@@ -180,7 +206,7 @@ pub fn case_of<'a>(
             SideSpec::Right => Side::Right,
         },
         rail: &rail.profile,
-        wheel,
+        wheel: &wheel.profile,
         track: Track {
             placement: match s.placement {
                 PlacementSpec::Gauge { height_mm, width_mm } => RailPlacement::Gauge { height_mm, width_mm },
@@ -224,5 +250,6 @@ pub fn case_of<'a>(
         },
         previous: None,
         rail_slices: rail.slices.as_ref().map(|slices| RailSlices { slices, s_ws_mm: s.s_ws_mm }),
+        wheel_slices: wheel.slices.as_ref().map(|slices| WheelSlices { slices, pitch_rad: row.pitch_rad }),
     }
 }

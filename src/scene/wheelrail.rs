@@ -101,6 +101,10 @@ pub struct CaseRow {
     /// The wheelset's position along the track S_WS [mm] where the table gives it (column
     /// `s_mm`, a shift's only: CONTACT reads S_WS per case, the anchor of the material-fixed grid).
     pub s_mm: Option<f64>,
+    /// The wheelset's pitch angle PITCH [rad] (column `pitch_rad`, 0 if absent): which part of an
+    /// out-of-round wheel (a wheel slices file) lies at its lowest point; a round wheel is the same
+    /// at every pitch.
+    pub pitch_rad: f64,
 }
 
 /// What the friction coefficient varies with (CONTACT's V digit in module 1).
@@ -314,6 +318,16 @@ pub const POSITION_COLUMN: &str = "s_mm";
 pub fn case_columns_with_positions(vertical: VerticalSpec, longitudinal: LongitudinalSpec) -> Vec<&'static str> {
     let mut out = case_columns(vertical, longitudinal);
     out.insert(1, POSITION_COLUMN);
+    out
+}
+
+/// The optional last column of the cases table: the pitch angle per case.
+pub const PITCH_COLUMN: &str = "pitch_rad";
+
+/// The columns of the cases table with the pitch angle `pitch_rad` last (an out-of-round wheel).
+pub fn case_columns_with_pitch(vertical: VerticalSpec, longitudinal: LongitudinalSpec) -> Vec<&'static str> {
+    let mut out = case_columns(vertical, longitudinal);
+    out.push(PITCH_COLUMN);
     out
 }
 

@@ -18,7 +18,8 @@
 use super::keys::{bound, key, Absent, Allowed, Keys};
 use super::reader::{Range, Section};
 use super::wheelrail::{
-    case_columns, case_columns_with_positions, CaseRow, LongitudinalSpec, MotionSpec, MuBy, MuVariation, VerticalSpec,
+    case_columns, case_columns_with_pitch, case_columns_with_positions, CaseRow, LongitudinalSpec, MotionSpec, MuBy,
+    MuVariation, VerticalSpec,
 };
 use crate::error::InputError;
 use std::path::Path;
@@ -27,6 +28,8 @@ use std::path::Path;
 pub(super) const LENGTH: Range = Range::new(-1e5, true, 1e5, true);
 /// An angle of the cases [rad].
 pub(super) const ANGLE: Range = Range::new(-1.5, true, 1.5, true);
+/// The pitch angle [rad] (CONTACT allows the wheel's θ in [−1.5π, 1.5π]).
+const PITCH: Range = Range::new(-4.8, true, 4.8, true);
 const SPEED: Range = Range::new(-1e7, true, 1e7, true);
 const FORCE: Range = Range::new(-1e8, true, 1e8, true);
 /// The most cases of a scene (its table and its axes together).
@@ -196,6 +199,13 @@ pub const COLUMNS: Keys = Keys {
             Absent::Required,
             r#"with `longitudinal = "force"`, in place of `vpitch_rad_s`: FX_WS, the total force on the rail along the wheelset's x (CONTACT's sign: negative when braking the wheel moving along +x); VPITCH is found (its search starts at −VS/NOMRAD) and written in `<model>.csv`; a force the contact cannot carry at the case's position (the wheel slides) stops the run with exit 2"#,
         ),
+        key(
+            "pitch_rad",
+            "rad",
+            Allowed::Number(PITCH, ""),
+            Absent::Text("an optional column: without it every case's pitch is 0"),
+            r#"the wheelset's pitch angle PITCH: the material angle θ = −`pitch_rad` of an out-of-round wheel (`[wheel] profile` a `.slcw` wheel slices file) lies at its lowest point; a round wheel is the same at every pitch; a table that has it gives it last (`examples/wheelflat`: −25° to −50° turn the flat under the contact)"#,
+        ),
     ],
 };
 
@@ -346,13 +356,25 @@ pub fn check_positions(
 fn from_file(c: &mut Section, dir: &Path, spec: Spec) -> Result<Vec<CaseRow>, InputError> {
     let field = c.field("file");
     let file = c.text("file")?;
-    let choices = [case_columns(spec.0, spec.1), case_columns_with_positions(spec.0, spec.1)];
+    let choices = [
+        case_columns(spec.0, spec.1),
+        case_columns_with_positions(spec.0, spec.1),
+        case_columns_with_pitch(spec.0, spec.1),
+    ];
     let ((mut cols, lines, origin), choice) = super::geometry::read_columns_of(&dir.join(file), &field, &choices)?;
     let n = cols[0].len();
     if n == 0 || n > MAX_CASES {
         return Err(InputError::new(&origin, format!("{n} rows"), format!("1 to {} cases", bound(MAX_CASES as f64))));
     }
     let positions = (choice == 1).then(|| cols.remove(1));
+    let pitches = (choice == 2).then(|| cols.pop().unwrap_or_default());
+    let pitch = |r: usize, line: &str| -> Result<f64, InputError> {
+        let Some(p) = &pitches else { return Ok(0.0) };
+        match PITCH.contains(p[r]) {
+            true => Ok(p[r]),
+            false => Err(InputError::new(format!("{line} column pitch_rad"), p[r], declared("pitch_rad").message())),
+        }
+    };
     let values = |r: usize| -> Vec<f64> { cols.iter().map(|col| col[r]).collect() };
     let position = |r: usize, line: &str| -> Result<Option<f64>, InputError> {
         let Some(p) = &positions else { return Ok(None) };
@@ -364,7 +386,7 @@ fn from_file(c: &mut Section, dir: &Path, spec: Spec) -> Result<Vec<CaseRow>, In
     (0..n)
         .map(|r| {
             let line = format!("{origin} line {}", lines[r]);
-            Ok(CaseRow { s_mm: position(r, &line)?, ..row(&values(r), &line, spec)? })
+            Ok(CaseRow { s_mm: position(r, &line)?, pitch_rad: pitch(r, &line)?, ..row(&values(r), &line, spec)? })
         })
         .collect()
 }
@@ -572,6 +594,7 @@ pub(super) fn row(v: &[f64], line: &str, spec: Spec) -> Result<CaseRow, InputErr
         yaw_rad: check(4)?,
         velocity,
         s_mm: None,
+        pitch_rad: 0.0,
     })
 }
 
@@ -738,14 +761,15 @@ mod tests {
     #[test]
     fn the_declared_columns_are_the_tables_columns_in_their_order() {
         use crate::scene::wheelrail::{
-            case_columns, case_columns_with_positions, LongitudinalSpec as L, VerticalSpec as V,
+            case_columns, case_columns_with_pitch, case_columns_with_positions, LongitudinalSpec as L,
+            VerticalSpec as V,
         };
         let declared: Vec<&str> = super::COLUMNS.keys.iter().map(|k| k.key).collect();
         let mut seen = std::collections::BTreeSet::new();
         for (v, l) in
             [(V::Force, L::Velocity), (V::Force, L::Force), (V::Position, L::Velocity), (V::Position, L::Force)]
         {
-            for cols in [case_columns(v, l), case_columns_with_positions(v, l)] {
+            for cols in [case_columns(v, l), case_columns_with_positions(v, l), case_columns_with_pitch(v, l)] {
                 let at: Vec<usize> =
                     cols.iter().map(|c| declared.iter().position(|d| d == c).expect("declared")).collect();
                 assert!(at.windows(2).all(|w| w[0] < w[1]), "{cols:?} in the declared order");

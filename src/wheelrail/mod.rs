@@ -9,10 +9,13 @@
 //! prescribed vertical force, [`creepage`] the kinematic creepages. Everything is computed on the
 //! right side; [`side`] mirrors a left wheel.
 
+pub mod brute;
 pub mod creepage;
 pub mod curve;
 pub mod friction;
 pub mod locus;
+pub mod mesh_interp;
+pub mod oorwheel;
 pub mod patch;
 pub mod profile;
 pub mod rail;
@@ -132,6 +135,9 @@ pub struct WheelRailCase<'a> {
     /// A rail whose profile varies along the track (a slices file at the wheelset's S_WS); `rail`
     /// is then its cross-section at S_WS, where the rail is placed and the gap mesh made.
     pub rail_slices: Option<varrail::RailSlices<'a>>,
+    /// An out-of-round wheel (a wheel slices file with the wheelset's pitch); `wheel` is then its
+    /// first slice (its surface is the slices'). Searched on CONTACT's gap mesh ([`brute`]).
+    pub wheel_slices: Option<oorwheel::WheelSlices<'a>>,
 }
 
 /// A patch with its normal solution and creepages (right-side frame).
@@ -200,13 +206,13 @@ pub fn normal_contact_with(
             let z_touch_mm = match *touch_mm {
                 Some(z) => z,
                 None => {
-                    let mut wheel = PlacedWheel::place(
-                        case.wheel,
-                        &case.side.wheelset(&case.wheelset),
-                        &Pose { z_mm: 0.0, ..pose },
-                    );
-                    let deepest = search::deepest_mm(&samples(case, &rail, &setup.mesh, &mut wheel))
-                        .ok_or(WheelRailError::NoOverlap)?;
+                    let mut wheel = placed_wheel(case, &Pose { z_mm: 0.0, ..pose });
+                    let deepest = match &wheel.oor {
+                        Some(oor) => Some(-brute::gap_mesh(oor, &wheel, &rail, (case.dx_mm, case.ds_mm)).gap_min_mm())
+                            .filter(|d| *d > -500.0),
+                        None => search::deepest_mm(&samples(case, &rail, &setup.mesh, &mut wheel)),
+                    }
+                    .ok_or(WheelRailError::NoOverlap)?;
                     *touch_mm.insert(-deepest)
                 }
             };
@@ -325,8 +331,15 @@ pub fn geometry_with(
 ) -> Result<Vec<PatchGeometry>, WheelRailError> {
     let pose = Pose { z_mm: z_ws_mm, ..case.side.pose(&case.pose) };
     let rail = setup.placed(case.rail);
-    let mut wheel = PlacedWheel::place(case.wheel, &case.side.wheelset(&case.wheelset), &pose);
+    let mut wheel = placed_wheel(case, &pose);
     geometry_at(case, (&rail, &setup.mesh), &mut wheel)
+}
+
+/// The case's wheel at `pose` (in the side's frame), out of round where the case has slices.
+fn placed_wheel<'a>(case: &WheelRailCase<'a>, pose: &Pose) -> PlacedWheel<'a> {
+    let mut wheel = PlacedWheel::place(case.wheel, &case.side.wheelset(&case.wheelset), pose);
+    wheel.oor = case.wheel_slices;
+    wheel
 }
 
 /// The gap function on the mesh: the wheel's locus over the prismatic rail, or over a variable
@@ -355,13 +368,17 @@ fn geometry_at(
     (rail, mesh): (&PlacedRail, &search::RailMesh),
     wheel: &mut PlacedWheel,
 ) -> Result<Vec<PatchGeometry>, WheelRailError> {
-    let samples = samples(case, rail, mesh, wheel);
-    if samples.is_empty() {
-        return Err(WheelRailError::NoOverlap);
-    }
-    let radius = case.wheelset.nominal_radius_mm;
-    let candidates: Vec<_> =
-        search::regions(&samples).into_iter().filter_map(|r| patch::candidate(r, radius)).collect();
+    let candidates: Vec<_> = match &wheel.oor {
+        Some(oor) => brute::candidates(&brute::gap_mesh(oor, wheel, rail, (case.dx_mm, case.ds_mm))),
+        None => {
+            let samples = samples(case, rail, mesh, wheel);
+            if samples.is_empty() {
+                return Err(WheelRailError::NoOverlap);
+            }
+            let radius = case.wheelset.nominal_radius_mm;
+            search::regions(&samples).into_iter().filter_map(|r| patch::candidate(r, radius)).collect()
+        }
+    };
     let mut out = Vec::new();
     for (k, c) in patch::combine(candidates, &case.separation).iter().enumerate() {
         let geometry = patch::build(
@@ -392,7 +409,7 @@ fn patches_at(
     pose: &Pose,
     solvers: &mut NormalSolvers,
 ) -> Result<Vec<NormalPatch>, WheelRailError> {
-    let mut wheel = PlacedWheel::place(case.wheel, &case.side.wheelset(&case.wheelset), pose);
+    let mut wheel = placed_wheel(case, pose);
     let velocity = case.side.velocity(&case.velocity);
     let rail_motion = creepage::RailMotion { origin_mm: rail.origin_mm, velocity: case.track.deviation_velocity };
     let mut out = Vec::new();

@@ -5,6 +5,7 @@
 //! the undeformed distance along the plane's normal between the surfaces (the wheel's exact or
 //! CONTACT's mesh of it).
 
+use super::oorwheel;
 use super::profile::Profile;
 use super::rail::PlacedRail;
 use super::search::LocusSample;
@@ -388,17 +389,31 @@ pub fn grid(
 /// outside any contact.
 const MISSED_MM: f64 = 10.0;
 
+/// The wheel's n at every element where it is CONTACT's mesh: of an out-of-round wheel always
+/// (around the region's lateral ends `y_mm`), of a round one with [`WheelSurface::ContactMesh`].
+fn meshed_wheel(
+    frame: &PatchFrame,
+    grid: &PatchGrid,
+    wheel: &PlacedWheel,
+    surface: WheelSurface,
+    y_mm: [f64; 2],
+) -> Option<Vec<Option<f64>>> {
+    match &wheel.oor {
+        Some(oor) => Some(oorwheel::wheel_n_mm(oor, wheel, frame, grid, y_mm)),
+        None => (surface == WheelSurface::ContactMesh).then(|| wheel_mesh::wheel_n_mm(frame, grid, wheel)),
+    }
+}
+
 /// The undeformed distance at every element: along n, from the wheel's surface to the rail's.
-/// The wheel's surface is the exact one or CONTACT's mesh of it ([`WheelSurface`]).
+/// The wheel's surface is the exact one or CONTACT's mesh of it (`meshed`, [`meshed_wheel`]).
 pub fn undeformed_distance(
     frame: &PatchFrame,
     grid: &PatchGrid,
     wheel: &PlacedWheel,
     rail: &PlacedRail,
-    surface: WheelSurface,
+    meshed: Option<Vec<Option<f64>>>,
 ) -> Vec<f64> {
     let n = frame.n();
-    let meshed = (surface == WheelSurface::ContactMesh).then(|| wheel_mesh::wheel_n_mm(frame, grid, wheel));
     let mut h = Vec::with_capacity(grid.len());
     for j in 0..grid.ms {
         // The plane's point (x, s) lies at the same track (y, z) for every x: the rail (a prism
@@ -438,10 +453,9 @@ fn undeformed_distance_varying(
     grid: &PatchGrid,
     wheel: &PlacedWheel,
     columns: &[PlacedRail],
-    surface: WheelSurface,
+    meshed: Option<Vec<Option<f64>>>,
 ) -> Vec<f64> {
     let n = frame.n();
-    let meshed = (surface == WheelSurface::ContactMesh).then(|| wheel_mesh::wheel_n_mm(frame, grid, wheel));
     let mut h = Vec::with_capacity(grid.len());
     for j in 0..grid.ms {
         for (i, rail) in columns.iter().enumerate() {
@@ -507,6 +521,7 @@ pub fn build(
             grid = shift::widened(&grid, &old, previous.iterated);
         }
     }
+    let meshed = meshed_wheel(&frame, &grid, wheel, surface, c.y_mm);
     let mut h_mm = match slices {
         Some(v) => {
             let columns = column_sections(v, &frame, &grid)?;
@@ -514,9 +529,9 @@ pub fn build(
                 .iter()
                 .map(|p| PlacedRail { curve: p, origin_mm: rail.origin_mm, angle_rad: rail.angle_rad })
                 .collect();
-            undeformed_distance_varying(&frame, &grid, wheel, &placed, surface)
+            undeformed_distance_varying(&frame, &grid, wheel, &placed, meshed)
         }
-        None => undeformed_distance(&frame, &grid, wheel, rail, surface),
+        None => undeformed_distance(&frame, &grid, wheel, rail, meshed),
     };
     if widened {
         beyond_the_wheel_surface(c, &frame, &grid, &mut h_mm);

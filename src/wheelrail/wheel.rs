@@ -10,6 +10,7 @@
 
 use super::curve::Curve;
 use super::locus::LocusSpline;
+use super::oorwheel::WheelSlices;
 use nalgebra::{Point3, Rotation3, Vector3};
 
 /// FBDIST, FBPOS, NOMRAD [mm] and the wheel's deviation from its design place.
@@ -96,6 +97,9 @@ pub struct PlacedWheel<'a> {
     /// CONTACT's spline through the locus at the profile's points (a profile file; `None`: the
     /// exact locus of a closed form).
     pub locus_spline: Option<LocusSpline>,
+    /// An out-of-round wheel: its surface varies with the material angle (a wheel slices file;
+    /// `curve` is then its first slice, not its surface).
+    pub oor: Option<WheelSlices<'a>>,
 }
 
 impl<'a> PlacedWheel<'a> {
@@ -127,6 +131,7 @@ impl<'a> PlacedWheel<'a> {
             roll_rad: pose.roll_rad,
             yaw_rad: pose.yaw_rad,
             locus_spline: None,
+            oor: None,
         };
         wheel.locus_spline =
             LocusSpline::build(curve, &rotation, wheel.y_offset_mm, g.nominal_radius_mm, &|v| wheel.to_track(v));
@@ -188,10 +193,15 @@ impl<'a> PlacedWheel<'a> {
     }
 
     /// How far a track point lies outside the wheel [mm]: its distance from the axle less the
-    /// wheel's radius at its lateral place (negative inside the wheel).
+    /// wheel's radius at its lateral place and, out of round, its angle (negative inside).
     fn outside_mm(&self, p: &Point3<f64>) -> Option<f64> {
         let q = self.to_wheel(p);
-        let radius = self.nominal_radius_mm + self.curve.z_mm(q.y - self.y_offset_mm)?;
+        let y_w = q.y - self.y_offset_mm;
+        let z = match &self.oor {
+            Some(oor) => oor.z_mm(q.x.atan2(q.z), y_w)?,
+            None => self.curve.z_mm(y_w)?,
+        };
+        let radius = self.nominal_radius_mm + z;
         Some((q.x * q.x + q.z * q.z).sqrt() - radius)
     }
 

@@ -123,7 +123,7 @@ fn mesh(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedWheel) -> Mesh {
 
 /// The logical (u, v) of point p in quadrilateral a-b-c-d (Newton on the bilinear map from
 /// (0.5, 0.5), CONTACT's `compute_logical_uv`).
-fn logical_uv(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2], p: [f64; 2]) -> (f64, f64) {
+pub(super) fn logical_uv(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2], p: [f64; 2]) -> (f64, f64) {
     let (mut u, mut v) = (0.5, 0.5);
     for _ in 0..20 {
         let cross = |k: usize| (c[k] - b[k]) - (d[k] - a[k]);

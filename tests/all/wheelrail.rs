@@ -47,6 +47,7 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side) -> WheelRailC
         motion: Default::default(),
         previous: None,
         rail_slices: None,
+        wheel_slices: None,
     }
 }
 

@@ -861,8 +861,8 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         feature: WheelRailFeature::OutOfRoundWheel,
         name: "an out-of-round wheel (slices file)",
         control: "WFNAME",
-        supported: false,
-        reason: "supported: one wheel profile around the circumference (SIMPACK .prw, Miniprof .whl or a y-z table)",
+        supported: true,
+        reason: "carried as [wheel] profile (the .slcw file) with the cases' column pitch_rad (PITCH): CONTACT's grid-based search on its gap mesh (wheelrail::brute) and the undeformed distance to the wheel's surface at each element's angle (wheelrail::oorwheel)",
         used: |c| slices(c.state.wheel_profile.as_ref()),
     },
     WheelRailRow {

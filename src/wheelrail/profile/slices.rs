@@ -313,6 +313,24 @@ impl Slices {
 }
 
 impl Slices {
+    /// The surface's (y, z) at position u and lateral parameters v (the samples' indices 0 … m − 1,
+    /// CONTACT's v less one; `bspline_eval2d_prod` at (u, v)): the not-a-knot spline across
+    /// through the interpolated samples, its first or last segment beyond them.
+    pub fn surface_at(&self, u: f64, v: &[f64]) -> Vec<(f64, f64)> {
+        let (ys, zs) = self.samples_at(u);
+        let (cy, cz) = (self.across.curve(&ys), self.across.curve(&zs));
+        let last = cy.segments() - 1;
+        v.iter()
+            .map(|&v| {
+                let k = (v.floor().max(0.0) as usize).min(last);
+                let t = v - k as f64;
+                (cy.value_on(k, t), cz.value_on(k, t))
+            })
+            .collect()
+    }
+}
+
+impl Slices {
     /// The interval of the slices' positions holding u (held to the first and last) and u's
     /// offset in it, where the interpolating spline's bands are kept.
     fn band_at(&self, u: f64) -> Option<(usize, f64)> {

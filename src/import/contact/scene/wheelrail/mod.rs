@@ -282,6 +282,9 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         // What the slices file itself says (perturbations, CONTACT's errors) is refused here.
         check_slices_file(&file, ProfileKind::Rail).map_err(|e| format!("the rail slices file: {e}"))?;
     }
+    if let Some(file) = paths.deck_file(&wheel.file).filter(|_| wheel.format() == ProfileFormat::Slices) {
+        check_slices_file(&file, ProfileKind::Wheel).map_err(|e| format!("the wheel slices file: {e}"))?;
+    }
     let track = s.track.ok_or(never("the track"))?;
     let wheelset = s.wheelset.ok_or(never("FBDIST, FBPOS, NOMRAD"))?;
     let material = s.material.as_ref().ok_or(never("POISS, GG"))?;
@@ -290,7 +293,11 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
     let s_ws = s_ws_of(s);
     let (mu, mu_variation) = mu_of(friction, s_ws);
     let m = combine_bodies(material.poiss, material.gg_mpa);
-    let (vertical, longitudinal, row) = row(c)?;
+    let (vertical, longitudinal, mut row) = row(c)?;
+    // PITCH where it matters: an out-of-round wheel (a round wheel is the same at every pitch).
+    if wheel.format() == ProfileFormat::Slices {
+        row.pitch_rad = s.position.map_or(0.0, |p| p.pitch_rad);
+    }
     let mu_max = mu_variation.as_ref().map_or(mu, |v| v.values.iter().copied().fold(mu, f64::max));
     crate::scene::wheelrail_cases::check_longitudinal(longitudinal, c.digits.t == 0, mu_max, &[row])
         .map_err(|e| format!("FX_WS = {}: {}", e.value, e.allowed))?;
@@ -463,6 +470,7 @@ fn row(c: &WheelRailCase) -> Result<(VerticalSpec, LongitudinalSpec, CaseRow), S
         yaw_rad: p.yaw_rad,
         velocity: [vs, v.vy_mm_s, v.vz_mm_s, v.vroll_rad_s, v.vyaw_rad_s, sixth],
         s_mm: None,
+        pitch_rad: 0.0,
     };
     Ok((vertical, longitudinal, row))
 }

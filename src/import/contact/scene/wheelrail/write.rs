@@ -6,8 +6,8 @@
 use super::super::read_back::tempdir_for;
 use crate::error::InputError;
 use crate::scene::wheelrail::{
-    case_columns, case_columns_with_positions, CaseRow, LongitudinalSpec, MotionSpec, MuBy, PlacementSpec, ProfileSpec,
-    SideSpec, VerticalSpec, WheelRailScene,
+    case_columns, case_columns_with_pitch, case_columns_with_positions, CaseRow, LongitudinalSpec, MotionSpec, MuBy,
+    PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
 };
 use crate::scene::wheelrail_profile::{MIRROR_Z, PROFILE_DEFAULTS};
 use std::fmt::Write;
@@ -216,15 +216,19 @@ fn material(s: &WheelRailScene) -> Result<Pairs, InputError> {
 /// the shortest form that reads back to the same number.
 fn cases_csv(vertical: VerticalSpec, longitudinal: LongitudinalSpec, rows: &[CaseRow]) -> String {
     let positions = rows.iter().all(|r| r.s_mm.is_some());
-    let columns = match positions {
-        true => case_columns_with_positions(vertical, longitudinal),
-        false => case_columns(vertical, longitudinal),
+    // The pitch where a case has one (an out-of-round wheel), last.
+    let pitches = !positions && rows.iter().any(|r| r.pitch_rad != 0.0);
+    let columns = match (positions, pitches) {
+        (true, _) => case_columns_with_positions(vertical, longitudinal),
+        (false, true) => case_columns_with_pitch(vertical, longitudinal),
+        (false, false) => case_columns(vertical, longitudinal),
     };
     let mut out = columns.join(",");
     out.push('\n');
     for r in rows {
         let s = r.s_mm.filter(|_| positions);
-        let values = s.into_iter().chain([r.y_mm, r.vertical, r.roll_rad, r.yaw_rad]).chain(r.velocity);
+        let pitch = Some(r.pitch_rad).filter(|_| pitches);
+        let values = s.into_iter().chain([r.y_mm, r.vertical, r.roll_rad, r.yaw_rad]).chain(r.velocity).chain(pitch);
         let _ = write!(out, "{}", r.contact_case);
         for v in values {
             let _ = write!(out, ",{v:?}");
