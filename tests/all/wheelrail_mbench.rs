@@ -56,7 +56,8 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
     }
     // No benchmark case is a declared gap (right case 11: the test below); six of the testbank's
     // cases are, the KPEC deck's KPEC cases 1-3, the varying-friction deck's turned case 3 and the
-    // interrupted crossing's cases 24, 28 (CETA), each bounded at its measured gap (tolerances.toml).
+    // interrupted crossing's cases 24, 28 (CETA) and the rounded wheel flat's total FY (CONTACT's
+    // residue of a symmetric contact), each bounded at its measured gap (tolerances.toml).
     let all_gaps: Vec<&&Finding> = ours.iter().filter(|f| f.quantity.ends_with(wheelrail_cases::GAP_SUFFIX)).collect();
     let testbank_gaps = [22, 27, 28, 29, 31, 34];
     let in_testbank = |f: &&&Finding| f.scene.starts_with("testbank_") && testbank_gaps.contains(&f.step.unwrap_or(0));
@@ -64,8 +65,9 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
     let varfric = |f: &&&Finding| f.scene == "mbench_a22_varfric_1" && f.step == Some(3);
     let totforce = |f: &&&Finding| f.scene == "m1_totforce_1" && [66, 70, 72, 73, 80].contains(&f.step.unwrap_or(0));
     let intrup = |f: &&&Finding| ["mbench_intrup_24", "mbench_intrup_28"].contains(&f.scene.as_str());
+    let rounded_flat = |f: &&&Finding| f.scene == "rounded_flat_d09_1";
     assert!(
-        all_gaps.iter().all(|f| in_testbank(f) || kpec(f) || varfric(f) || totforce(f) || intrup(f)),
+        all_gaps.iter().all(|f| in_testbank(f) || kpec(f) || varfric(f) || totforce(f) || intrup(f) || rounded_flat(f)),
         "{all_gaps:?}"
     );
     assert!(
@@ -77,6 +79,10 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         "m1_totforce cases 66-80 within their bound"
     );
     assert!(all_gaps.iter().filter(|f| kpec(f)).all(|f| f.gated && f.passed()), "KPEC's gaps within their bounds");
+    assert!(
+        all_gaps.iter().filter(|f| rounded_flat(f)).all(|f| f.gated && f.passed()),
+        "rounded_flat_d09's FY within its bound"
+    );
     assert!(all_gaps.iter().filter(|f| varfric(f)).all(|f| f.gated && f.passed()), "varfric case 3 within its bound");
     for case in testbank_gaps {
         let scene = format!("testbank_{case}");
@@ -119,6 +125,12 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         // circular wheel: each patch's MAX(T1,T2) among the gated quantities.
         "m1_tempdep_1",
         "m1_tempdep_2",
+        // Out-of-round wheels (a measured wheel flat, wheel slices; CONTACT's grid search) and
+        // rails with parts missing (interruptions: the nose absent on the first slices).
+        "wheelflat_1",
+        "chalmers_flat_fz125_1",
+        "mbench_intrup_1",
+        "cw_interrupt_1",
     ] {
         let of: Vec<_> = ours.iter().filter(|f| f.scene == scene).collect();
         assert!(of.len() >= 20 && of.iter().all(|f| f.gated && f.passed()), "{scene}: {of:?}");
