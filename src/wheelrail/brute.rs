@@ -195,8 +195,7 @@ pub fn candidates(g: &GapMesh) -> Vec<Candidate> {
     let mut minima: Vec<Option<(usize, usize)>> = local_minima(g).into_iter().map(Some).collect();
     let gap = |&(i, j): &(usize, usize)| g.gap_mm[j * g.nx + i];
     let mut out = Vec::new();
-    loop {
-        let Some(m) = minima.iter().flatten().copied().min_by(|a, b| gap(a).total_cmp(&gap(b))) else { break };
+    while let Some(m) = minima.iter().flatten().copied().min_by(|a, b| gap(a).total_cmp(&gap(b))) {
         if gap(&m) >= 0.0 {
             break;
         }

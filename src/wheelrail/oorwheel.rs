@@ -64,7 +64,7 @@ pub fn mesh(oor: &WheelSlices, wheel: &PlacedWheel, dx_mm: f64) -> OorMesh {
     let radius = wheel.nominal_radius_mm;
     let span = 2.0 * MESH_HALF_ANGLE_RAD;
     let mut n = (span * radius / (MESH_STEP_OVER_DX * dx_mm) + 2.0).round() as usize;
-    if n % 2 == 0 {
+    if n.is_multiple_of(2) {
         n += 1;
     }
     let d_theta = span / (n as f64 - 1.0).max(1.0);
@@ -115,7 +115,7 @@ pub fn wheel_n_mm(
     let r_min = corners.iter().map(|q| q.z).fold(f64::MAX, f64::min) - grid.ds_mm * sin_d.abs();
     let (th0, th1) = (-oor.pitch_rad + (x_min / r_min).atan(), -oor.pitch_rad + (x_max / r_min).atan());
     let mut n_u = ((th1 - th0) * radius / grid.dx_mm).round() as usize + 2;
-    if n_u % 2 == 0 {
+    if n_u.is_multiple_of(2) {
         n_u += 1;
     }
     let d_th = (th1 - th0) / (n_u as f64 - 1.0).max(1.0);
