@@ -199,9 +199,12 @@ pub fn normal_contact_with(
     };
     let rail = setup.placed(case.rail);
     let pose = case.side.pose(&case.pose);
-    let mut at = |z_mm: f64| patches_at(case, (&rail, &setup.mesh), &Pose { z_mm, ..pose }, solvers);
+    let full = NormalParams::default().tol;
+    let at = |z_mm: f64, normal_tol: f64, solvers: &mut NormalSolvers| {
+        patches_at(case, (&rail, &setup.mesh), &Pose { z_mm, ..pose }, solvers, normal_tol)
+    };
     let (z_ws_mm, patches) = match (case.vertical, fz_normal_n) {
-        (Vertical::Position, _) => (pose.z_mm, at(pose.z_mm)?),
+        (Vertical::Position, _) => (pose.z_mm, at(pose.z_mm, full, solvers)?),
         (Vertical::Force { fz_n }, target) => {
             let z_touch_mm = match *touch_mm {
                 Some(z) => z,
@@ -219,8 +222,15 @@ pub fn normal_contact_with(
             let target = target.unwrap_or(fz_n);
             // The search ends on the height it evaluated last: its patches are the answer.
             let mut last: Option<(f64, Vec<NormalPatch>)> = None;
-            let (z, _, evaluations) = vertical::solve(z_touch_mm, target, tol, *heights, |z| {
-                let patches = at(z)?;
+            let (z, _, evaluations) = vertical::solve(z_touch_mm, target, tol, *heights, |z, normal_tol| {
+                // The height evaluated last again (to a tighter tolerance): its patches re-solved.
+                let patches = match last.take() {
+                    Some((z_last, mut patches)) if z_last == z => {
+                        resolve_normal(&mut patches, &case.material, solvers, normal_tol)?;
+                        patches
+                    }
+                    _ => at(z, normal_tol, solvers)?,
+                };
                 let fz = patches.iter().map(|p| p.fn_n * p.geometry.frame.delta_rad.cos()).sum();
                 last = Some((z, patches));
                 Ok(fz)
@@ -228,7 +238,7 @@ pub fn normal_contact_with(
             *heights = Some(evaluations);
             match last {
                 Some((z_last, patches)) if z_last == z => (z, patches),
-                _ => (z, at(z)?),
+                _ => (z, at(z, full, solvers)?),
             }
         }
     };
@@ -402,12 +412,14 @@ fn geometry_at(
     Ok(out)
 }
 
-/// The patches and their normal solutions with the wheelset at `pose` (right-side frame).
+/// The patches and their normal solutions (to `normal_tol`) with the wheelset at `pose`
+/// (right-side frame).
 fn patches_at(
     case: &WheelRailCase,
     (rail, mesh): (&PlacedRail, &search::RailMesh),
     pose: &Pose,
     solvers: &mut NormalSolvers,
+    normal_tol: f64,
 ) -> Result<Vec<NormalPatch>, WheelRailError> {
     let mut wheel = placed_wheel(case, pose);
     let velocity = case.side.velocity(&case.velocity);
@@ -418,7 +430,7 @@ fn patches_at(
         let (fn_n, pn_mpa) = match solvers.approximate {
             Some(method) => solve_approximate(method, &geometry, &case.material)
                 .map_err(|source| WheelRailError::Approximate { patch, source })?,
-            None => solve_normal(&geometry, &case.material, solvers)
+            None => solve_normal(&geometry, &case.material, solvers, normal_tol)
                 .map_err(|source| WheelRailError::Normal { patch, source })?,
         };
         let pen_mm = -geometry.h_mm.iter().copied().fold(f64::INFINITY, f64::min);
@@ -429,12 +441,36 @@ fn patches_at(
     Ok(out)
 }
 
-/// The normal problem of one patch with the geometry's own approach (the interpenetration).
-fn solve_normal(g: &PatchGeometry, m: &Material, solvers: &mut NormalSolvers) -> Result<(f64, Vec<f64>), ContactError> {
+/// The normal problems of `patches` solved again to `tol` (their geometry kept); an approximate
+/// normal problem's solution has no tolerance and is kept.
+fn resolve_normal(
+    patches: &mut [NormalPatch],
+    m: &Material,
+    solvers: &mut NormalSolvers,
+    tol: f64,
+) -> Result<(), WheelRailError> {
+    if solvers.approximate.is_some() {
+        return Ok(());
+    }
+    for (k, p) in patches.iter_mut().enumerate() {
+        (p.fn_n, p.pn_mpa) = solve_normal(&p.geometry, m, solvers, tol)
+            .map_err(|source| WheelRailError::Normal { patch: k + 1, source })?;
+    }
+    Ok(())
+}
+
+/// The normal problem of one patch with the geometry's own approach (the interpenetration),
+/// solved to `tol`.
+fn solve_normal(
+    g: &PatchGeometry,
+    m: &Material,
+    solvers: &mut NormalSolvers,
+    tol: f64,
+) -> Result<(f64, Vec<f64>), ContactError> {
     let (solver, last) = solvers.get(&g.grid, m)?;
     solver.set_blend(g.blend.clone())?;
     let start = Some(last.as_slice()).filter(|l| !l.is_empty());
-    let sol = solver.solve_approach_from(&g.h_mm, 0.0, &NormalParams::default(), start)?;
+    let sol = solver.solve_approach_from(&g.h_mm, 0.0, &NormalParams { tol, ..NormalParams::default() }, start)?;
     let fn_n = sol.pn_mpa.iter().sum::<f64>() * g.grid.dx_mm * g.grid.ds_mm;
     last.clone_from(&sol.pn_mpa);
     Ok((fn_n, sol.pn_mpa))

@@ -172,6 +172,11 @@ pub fn wheel_n_mm(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedWheel) -> 
             let (bx, by) = (corners.map(|c| c[0]), corners.map(|c| c[1]));
             let min = |a: [f64; 4]| a.iter().copied().fold(f64::MAX, f64::min);
             let max = |a: [f64; 4]| a.iter().copied().fold(f64::MIN, f64::max);
+            // A cell beside the grid holds none of its centres.
+            let (x_end, s_end) = (grid.x0_mm + grid.dx_mm * grid.mx as f64, grid.s0_mm + grid.ds_mm * grid.ms as f64);
+            if max(bx) < grid.x0_mm || min(bx) > x_end || max(by) < grid.s0_mm || min(by) > s_end {
+                continue;
+            }
             let (i0, i1) = (lo(min(bx), grid.x0_mm, grid.dx_mm), lo(max(bx), grid.x0_mm, grid.dx_mm).min(grid.mx - 1));
             let (j0, j1) = (lo(min(by), grid.s0_mm, grid.ds_mm), lo(max(by), grid.s0_mm, grid.ds_mm).min(grid.ms - 1));
             for jj in j0..=j1 {

@@ -9,6 +9,7 @@
 //! The tangential pair is transformed as one complex field `px + i py` (two real FFTs for one).
 
 use super::influence::Kernel;
+use super::real_fft::RealFft2;
 use super::ContactError;
 use crate::simd::with_avx2;
 use rustfft::num_complex::Complex;
@@ -124,6 +125,38 @@ impl FftData<f64> {
         d.syy = d.kernel_spectrum(kernel, &kernel.yy, scale);
         d.sxy = d.kernel_spectrum(kernel, &kernel.xy, scale);
         d.pack_pair();
+        d
+    }
+
+    /// [`FftData::new`] with the tangential kernels' spectra alone (the normal one empty).
+    fn new_tangential(kernel: &Kernel, nx: usize, ny: usize) -> FftData<f64> {
+        let mut d = FftData::<f64>::empty(nx, ny);
+        let scale = 1.0 / (nx * ny) as f64;
+        d.sxx = d.kernel_spectrum(kernel, &kernel.xx, scale);
+        d.syy = d.kernel_spectrum(kernel, &kernel.yy, scale);
+        d.sxy = d.kernel_spectrum(kernel, &kernel.xy, scale);
+        d.pack_pair();
+        d
+    }
+
+    /// The spectra of the difference of this transform's kernel and `other`'s (the same lengths):
+    /// the transform is linear, so they are the spectra's differences.
+    fn minus(&self, other: &FftData<f64>) -> FftData<f64> {
+        let sub = |a: &[Complex<f64>], b: &[Complex<f64>]| -> Vec<Complex<f64>> {
+            if b.is_empty() {
+                a.to_vec()
+            } else {
+                a.iter().zip(b).map(|(a, b)| a - b).collect()
+            }
+        };
+        let mut d = self.clone();
+        d.szz = sub(&self.szz, &other.szz);
+        d.sxx = sub(&self.sxx, &other.sxx);
+        d.syy = sub(&self.syy, &other.syy);
+        d.sxy = sub(&self.sxy, &other.sxy);
+        d.salpha = sub(&self.salpha, &other.salpha);
+        d.sbeta = sub(&self.sbeta, &other.sbeta);
+        d.szz_inv = Vec::new();
         d
     }
 
@@ -250,25 +283,23 @@ fn check_kernel(kernel: &Kernel) -> Result<(), ContactError> {
     }
 }
 
-/// The kernel of the inverse of `A` periodised at `2mx x 2my` elements, at the grid's offsets: per
-/// frequency of that period `1/Azz` and the inverse of the 2x2 tangential symbol (symbols clamped
-/// to at least 1e-3 of their largest value, the coupling to 0.99 of the geometric mean of the
-/// diagonal, so that `M` stays positive definite), transformed back to real space. At the period
+/// The kernel of the inverse of the tangential `A` periodised at `2mx x 2my` elements, at the
+/// grid's offsets (its normal part zero): per frequency of that period the inverse of the 2x2
+/// tangential symbol (symbols clamped to at least 1e-3 of their largest value, the coupling to
+/// 0.99 of the geometric mean of the diagonal, so that `M` stays positive definite), transformed
+/// back to real space. At the period
 /// `2m` the periodised `A` holds every offset of the grid once (a circulant embedding of `A`);
 /// between grid elements `M` is that circulant's inverse, whatever FFT length applies it.
 fn periodic_inverse(kernel: &Kernel) -> Result<Kernel, ContactError> {
     let (mx, my) = (kernel.mx, kernel.my);
     check_kernel(kernel)?;
     let (px, py) = (2 * mx, 2 * my);
-    let mut f = FftData::new(kernel, px, py);
+    let mut f = FftData::new_tangential(kernel, px, py);
     // Spectra are stored scaled by 1/(px py); the inverse's must carry the same scale.
     let scale = 1.0 / (px * py) as f64;
     let amax = f.sxx.iter().chain(&f.syy).fold(0.0f64, |m, v| m.max(v.re));
-    let zmax = f.szz.iter().fold(0.0f64, |m, v| m.max(v.re));
     let floor = 1e-3;
-    for idx in 0..f.szz.len() {
-        let z = f.szz[idx].re.max(floor * zmax);
-        f.szz[idx] = Complex::new(scale * scale / z, 0.0);
+    for idx in 0..f.sxx.len() {
         let a = f.sxx[idx].re.max(floor * amax);
         let d = f.syy[idx].re.max(floor * amax);
         let lim = 0.99 * (a * d).sqrt();
@@ -278,8 +309,7 @@ fn periodic_inverse(kernel: &Kernel) -> Result<Kernel, ContactError> {
         f.syy[idx] = Complex::new(scale * scale * a / det, 0.0);
         f.sxy[idx] = Complex::new(-scale * scale * b / det, 0.0);
     }
-    let (szz, sxx, syy, sxy) = (
-        std::mem::take(&mut f.szz),
+    let (sxx, syy, sxy) = (
         std::mem::take(&mut f.sxx),
         std::mem::take(&mut f.syy),
         std::mem::take(&mut f.sxy),
@@ -301,7 +331,7 @@ fn periodic_inverse(kernel: &Kernel) -> Result<Kernel, ContactError> {
         dx_mm: kernel.dx_mm,
         dy_mm: kernel.dy_mm,
         shift_mm: kernel.shift_mm,
-        zz: at_offsets(szz),
+        zz: vec![0.0; (2 * mx - 1) * (2 * my - 1)],
         xx: at_offsets(sxx),
         yy: at_offsets(syy),
         xy: at_offsets(sxy),
@@ -348,6 +378,8 @@ pub struct Convolver {
     fft: Option<FftData<f64>>,
     /// Single-precision copy used instead of `fft` by [`Convolver::tangential`] (preconditioner).
     fft32: Option<FftData<f32>>,
+    /// The real-input transforms of the normal products on the FFT path (made at the first).
+    real: Option<RealFft2>,
 }
 
 impl Convolver {
@@ -371,15 +403,20 @@ impl Convolver {
             active: Vec::with_capacity(mx * my),
             fft,
             fft32: None,
+            real: None,
         })
     }
 
-    /// FFT-path operator `M`, an approximate inverse of `A` used as preconditioner: the inverse of
-    /// `A` periodised at twice the grid ([`periodic_inverse`]), applied like `A` itself, so that
-    /// the FFT length does not change the operator. Its [`Convolver::tangential`] runs in single
-    /// precision: a preconditioner changes only the path to the solution, not the solution.
+    /// FFT-path operator `M`, an approximate inverse of the tangential `A` used as preconditioner:
+    /// the inverse of `A` periodised at twice the grid ([`periodic_inverse`]), applied like `A`
+    /// itself, so that the FFT length does not change the operator. Its
+    /// [`Convolver::tangential`] runs in single precision: a preconditioner changes only the path
+    /// to the solution, not the solution; [`Convolver::normal`] is refused.
     pub fn inverse_of(kernel: &Kernel) -> Result<Convolver, ContactError> {
-        let mut c = Convolver::new(&periodic_inverse(kernel)?, ConvPath::Fft)?;
+        let inverse = periodic_inverse(kernel)?;
+        let mut c = Convolver::new(&inverse, ConvPath::Direct)?;
+        c.path = ConvPath::Fft;
+        c.fft = Some(FftData::new_tangential(&inverse, fft_len(2 * kernel.mx - 1), fft_len(2 * kernel.my - 1)));
         c.fft32 = c.fft.as_ref().map(FftData::to_f32);
         Ok(c)
     }
@@ -414,6 +451,31 @@ impl Convolver {
         if auto_path(kernel.mx, kernel.my) == ConvPath::Fft {
             c.path = ConvPath::Fft;
             c.fft = Some(FftData::new_normal(kernel, fft_len(2 * kernel.mx - 1), fft_len(2 * kernel.my - 1)));
+        }
+        Ok(c)
+    }
+
+    /// [`Convolver::auto`] for [`Convolver::tangential`] alone: on the FFT path only the
+    /// tangential kernels are transformed ([`Convolver::normal`] is refused).
+    pub fn tangential_only(kernel: &Kernel) -> Result<Convolver, ContactError> {
+        let mut c = Convolver::new(kernel, ConvPath::Direct)?;
+        if auto_path(kernel.mx, kernel.my) == ConvPath::Fft {
+            c.path = ConvPath::Fft;
+            c.fft = Some(FftData::new_tangential(kernel, fft_len(2 * kernel.mx - 1), fft_len(2 * kernel.my - 1)));
+        }
+        Ok(c)
+    }
+
+    /// The convolver of `difference`, the kernel of this convolver less `other`'s (both of the
+    /// same grid): on the FFT path its spectra are the differences of theirs, no transform made.
+    pub fn minus(&self, other: &Convolver, difference: &Kernel) -> Result<Convolver, ContactError> {
+        let mut c = Convolver::new(difference, ConvPath::Direct)?;
+        if let (Some(a), Some(b)) = (&self.fft, &other.fft) {
+            if (a.nx, a.ny) != (b.nx, b.ny) || (c.mx, c.my) != (self.mx, self.my) {
+                return Err(ContactError::GridMismatch { expected: (self.mx, self.my), got: (c.mx, c.my) });
+            }
+            c.path = ConvPath::Fft;
+            c.fft = Some(a.minus(b));
         }
         Ok(c)
     }
@@ -492,30 +554,13 @@ impl Convolver {
         inverse: bool,
     ) -> Result<(), ContactError> {
         let (mx, my) = (self.mx, self.my);
-        let f = self.fft.as_mut().ok_or(ContactError::MissingFft)?;
+        let f = self.fft.as_mut().filter(|f| !f.szz.is_empty()).ok_or(ContactError::MissingFft)?;
         if inverse && f.szz_inv.is_empty() {
             f.szz_inv = inverse_spectrum(&f.szz, f.nx * f.ny);
         }
-        let nx = f.nx;
-        let zero = Complex::new(0.0, 0.0);
-        for j in 0..my {
-            let row = &mut f.buf[j * nx..(j + 1) * nx];
-            for (i, c) in row.iter_mut().enumerate() {
-                *c = if i < mx && mask.is_none_or(|m| m[j * mx + i]) { Complex::new(p[j * mx + i], 0.0) } else { zero };
-            }
-        }
-        f.forward(my);
+        let real = self.real.get_or_insert_with(|| RealFft2::new(f.nx, f.ny));
         let spectrum = if inverse { &f.szz_inv } else { &f.szz };
-        for (c, s) in f.buft.iter_mut().zip(spectrum) {
-            *c *= s;
-        }
-        f.inverse(my);
-        for j in 0..my {
-            for i in 0..mx {
-                u[j * mx + i] = f.buf[j * nx + i].re;
-            }
-        }
-        Ok(())
+        real.convolve((mx, my), p, |k| mask.is_none_or(|m| m[k]), &spectrum[..real.half_len()], u)
     }
 
     /// Tangential displacements `ux = Axx px + Axy py`, `uy = Axy px + Ayy py` [mm] for tractions

@@ -15,6 +15,7 @@ pub mod jet;
 pub mod layer;
 pub mod normal;
 mod normal_dense;
+mod real_fft;
 pub mod stress;
 mod table;
 pub mod visco;

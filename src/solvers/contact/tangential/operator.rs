@@ -135,13 +135,14 @@ impl Plans {
                 });
             }
         }
-        let conv0 = Convolver::auto(k0)?;
+        let conv0 = Convolver::tangential_only(k0)?;
+        let convs = Convolver::tangential_only(ks)?;
         Ok(Plans {
             conv0_f32: conv0.to_single_precision(),
+            convd: conv0.minus(&convs, &kd)?,
             conv0,
             prec: Convolver::inverse_of(k0)?,
-            convs: Convolver::auto(ks)?,
-            convd: Convolver::auto(&kd)?,
+            convs,
             transient,
             steady,
         })
