@@ -71,6 +71,7 @@ mod viscoelastic;
 mod wheelrail;
 mod wheelrail_mbench;
 mod wheelrail_profiles;
+mod wheelrail_focus;
 mod wheelrail_report;
 mod wheelrail_shift;
 mod wheelrail_slices;
