@@ -299,7 +299,10 @@ pub const REPORT_KEYS: Keys = Keys {
         key(
             "group",
             "–",
-            Allowed::Choice(&["wheelrail", "wheel_flat", "crossing", "other"], "`\"wheel_flat\"` only on a wheel slices file (`[wheel] profile` a `.slcw` file)"),
+            Allowed::Choice(
+                &["wheelrail", "wheel_flat", "crossing", "other"],
+                "`\"wheel_flat\"` only on a wheel slices file (`[wheel] profile` a `.slcw` file)",
+            ),
             Absent::Choice("other"),
             r#"the figures of the section "Wheel–rail contact" that draw the scene, every model beside CONTACT's points: `"wheelrail"` every patch quantity against the lateral shift (or S_WS), the profiles, the patch maps and the models' errors; `"wheel_flat"` per patch FN, the approach, FX and FS against the distance rolled −PITCH·NOMRAD [mm] (an out-of-round wheel turned by its cases' `pitch_rad`); `"crossing"` per patch the contact position on the rail YCP(R) and FN against each case's S_WS [mm] where the cases give theirs (the column `s_mm`), else against the lateral shift Y_WS [mm] (the contact moving from the wing rail to the nose and the load passing between them); `"other"` not drawn: `group = "crossing"`"#,
         ),

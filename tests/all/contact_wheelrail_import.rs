@@ -573,7 +573,10 @@ fn the_interrupted_crossing_imports_as_one_scene_with_each_cases_position() {
     let s = WheelRailScene::from_file(&scenes[0]).unwrap();
     assert_eq!((s.cases.len(), s.motion, s.s_ws_mm), (43, MotionSpec::Rolling, 0.0));
     let positions = s.case_positions_mm().unwrap();
-    assert_eq!((positions[0], positions[6], positions[23], positions[27], positions[42]), (110.0, 115.5, 119.2, 119.6, 130.0));
+    assert_eq!(
+        (positions[0], positions[6], positions[23], positions[27], positions[42]),
+        (110.0, 115.5, 119.2, 119.6, 130.0)
+    );
     let shipped = WheelRailScene::from_file(&root().join("scenes/wheelrail/mbench_intrup_1.toml")).unwrap();
     assert_eq!(values(&WheelRailScene { wheel_mesh: true, ..s }), values(&shipped));
     let toml = std::fs::read_to_string(&scenes[0]).unwrap();

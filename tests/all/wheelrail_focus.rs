@@ -22,7 +22,8 @@ fn cut(dir: &Path, name: &str, cases: &[u64]) -> PathBuf {
     }
     std::fs::write(dir.join(format!("{name}_cases.csv")), csv).unwrap();
     let (first, last) = (cases[0], cases[cases.len() - 1]);
-    let text = text.lines().map(|l| if l.starts_with("cases = [") { format!("cases = [{first}, {last}]") } else { l.into() });
+    let text =
+        text.lines().map(|l| if l.starts_with("cases = [") { format!("cases = [{first}, {last}]") } else { l.into() });
     let path = dir.join(format!("{name}.toml"));
     std::fs::write(&path, text.collect::<Vec<_>>().join("\n")).unwrap();
     path
@@ -30,7 +31,8 @@ fn cut(dir: &Path, name: &str, cases: &[u64]) -> PathBuf {
 
 /// The models drawn in a figure (its `data-model`s) and its axes' titles.
 fn drawn(svg: &str) -> Vec<String> {
-    let mut out: Vec<String> = svg.split("data-model=\"").skip(1).map(|s| s[..s.find('"').unwrap()].to_string()).collect();
+    let mut out: Vec<String> =
+        svg.split("data-model=\"").skip(1).map(|s| s[..s.find('"').unwrap()].to_string()).collect();
     out.sort();
     out.dedup();
     out
@@ -57,12 +59,22 @@ fn the_wheel_flat_and_crossing_figures_draw_every_model_beside_contact() {
     cut(&dir, "wheelflat_1", &[1, 11, 26]);
     cut(&dir, "mbench_intrup_1", &[1, 24, 43]);
     cut(&dir, "mbench_locus_1", &[1, 20, 35]);
-    let args =
-        ["simulate", "wheelflat_1.toml", "mbench_intrup_1.toml", "mbench_locus_1.toml", "--out", "res", "--report", "rep"];
+    let args = [
+        "simulate",
+        "wheelflat_1.toml",
+        "mbench_intrup_1.toml",
+        "mbench_locus_1.toml",
+        "--out",
+        "res",
+        "--report",
+        "rep",
+    ];
     let (code, err) = common::run_in(&dir, &args, "focus");
     assert_eq!(code, Some(0), "{err}");
     let md = std::fs::read_to_string(dir.join("rep/validation.md")).unwrap();
-    for heading in ["### wheelflat_1 (right wheel)", "### mbench_intrup_1 (right wheel)", "### mbench_locus_1 (right wheel)"] {
+    for heading in
+        ["### wheelflat_1 (right wheel)", "### mbench_intrup_1 (right wheel)", "### mbench_locus_1 (right wheel)"]
+    {
         assert!(md.contains(heading), "{heading}: {md}");
     }
     let figure = |file: &str| std::fs::read_to_string(dir.join("rep/figures").join(file)).unwrap();
