@@ -106,7 +106,7 @@ enum Command {
         #[arg(long, default_value = "golden")]
         golden: PathBuf,
         /// Wheel–rail scenes only: also write DIR/validation.md with the section "Wheel–rail
-        /// contact" of the scenes that declare [report] group = "wheelrail".
+        /// contact" of the scenes that declare [report] group = "wheelrail", "wheel_flat" or "crossing".
         #[arg(long, value_name = "DIR")]
         report: Option<PathBuf>,
     },

@@ -87,11 +87,11 @@ pub fn simulate_report(
         read.push(scene);
     }
     let printed = read_printed(&read)?;
-    if !read.iter().any(|s| s.report.in_section) {
+    if !read.iter().any(|s| s.report.in_section()) {
         return Err(InputError::new(
             "--report",
             scenes.iter().map(|p| p.display().to_string()).collect::<Vec<_>>().join(", "),
-            "at least one scene with [report] group = \"wheelrail\" (the section draws the scenes that declare it)",
+            "at least one scene with [report] group = \"wheelrail\", \"wheel_flat\" or \"crossing\" (the section draws the scenes that declare one)",
         )
         .into());
     }
@@ -162,7 +162,7 @@ pub(super) fn wheelrail_section(
     let mut contacts = Vec::new();
     // Only the scenes that declare the section are viewed (their patch maps solved): the others
     // are gated, not drawn.
-    for ((scene, run), contact) in runs.into_iter().zip(printed).filter(|((s, _), _)| s.report.in_section) {
+    for ((scene, run), contact) in runs.into_iter().zip(printed).filter(|((s, _), _)| s.report.in_section()) {
         views.push(pipeline::wheelrail_view::view(&scene, run)?);
         contacts.push(contact);
     }

@@ -9,8 +9,10 @@
 //! with E = 5 the wheel's deviations DXWHL … VPITCHW where the scene has any); each later case keeps all
 //! but its position and velocities (V111002, 0100321). C is the side (0 left, 1 right), N the
 //! vertical problem (1: FZ prescribed, 0: the height Z_WS), F the longitudinal one (1: FX_WS in
-//! place of VPITCH, `[cases] longitudinal = "force"`); S_WS is the scene's track position in a
-//! shift or where friction varies along the track (else 0), PITCH 0; in a shift the velocity line
+//! place of VPITCH, `[cases] longitudinal = "force"`); S_WS is the case's own (the cases' column
+//! `s_mm`), else the scene's track position (`[wheelrail] s_mm`: a shift's, where friction varies
+//! along the track or on a rail slices file; else 0), PITCH the case's `pitch_rad` (0 without the
+//! column); in a shift the velocity line
 //! is the step's shifts (CONTACT reads the same line as SHFT_S … per step). Profile names are
 //! written relative to the deck's folder, where CONTACT looks for them. With the surface
 //! temperatures H = 3 and both bodies' BKTEMP, HEATCP, LAMBDA, DENS in the first case, H = 1 in
@@ -107,7 +109,7 @@ pub fn module1_input(s: &WheelRailScene, deck_dir: &Path) -> Result<String, Inpu
         if n == 0 {
             setup(s, (&rail, &wheel), &mut out);
         }
-        let s_mm = shifts.as_ref().map_or_else(|| track_s_mm(s), |p| p[n]);
+        let s_mm = shifts.as_ref().map_or_else(|| row.s_mm.unwrap_or_else(|| track_s_mm(s)), |p| p[n]);
         position_and_velocity(s, row, s_mm, &mut out);
         if n == 0 && flexible(s) {
             wheel_deviation(s, &mut out);
@@ -266,13 +268,14 @@ fn friction(s: &WheelRailScene, out: &mut String) {
     }
 }
 
-/// The wheelset's track position S_WS [mm]: a shift's (the grid's anchor), where friction varies
-/// along the track (V = 2) its position there, else 0.
+/// The wheelset's track position S_WS [mm] of a case without its own (the cases' column `s_mm`):
+/// a shift's (the grid's anchor), where friction varies along the track (V = 2) its position
+/// there, else `[wheelrail] s_mm` (on a rail slices file where the wheelset stands; 0 if absent).
 fn track_s_mm(s: &WheelRailScene) -> f64 {
     match (s.motion, s.mu_variation.as_ref().map(|v| v.by)) {
         (MotionSpec::Shift { s_ws_mm, .. }, _) => s_ws_mm,
         (_, Some(MuBy::TrackS { s_mm })) => s_mm,
-        _ => 0.0,
+        _ => s.s_ws_mm,
     }
 }
 
@@ -308,15 +311,15 @@ fn profile_line(name: &str, p: &ProfileSpec, what: &str, out: &mut String) {
     let _ = writeln!(out, "  0   {:?}       ERRHND, MAXOMIT", p.max_omit);
 }
 
-/// S_WS, Y_WS, FZ or Z_WS, ROLL, YAW, PITCH = 0; then VS, VY, VZ, VROLL, VYAW, VPITCH (or FX_WS
-/// with F = 1).
+/// S_WS, Y_WS, FZ or Z_WS, ROLL, YAW, PITCH (the cases' `pitch_rad`, 0 without it); then VS, VY,
+/// VZ, VROLL, VYAW, VPITCH (or FX_WS with F = 1).
 fn position_and_velocity(s: &WheelRailScene, r: &CaseRow, s_mm: f64, out: &mut String) {
     let (vertical, longitudinal) = (s.vertical, s.longitudinal);
     let third = if vertical == VerticalSpec::Force { "FZ" } else { "Z" };
     let _ = writeln!(
         out,
-        "  {s_mm:?}   {:?}   {:?}   {:?}   {:?}   0.0      S, Y, {third}, ROLL, YAW, PITCH",
-        r.y_mm, r.vertical, r.roll_rad, r.yaw_rad
+        "  {s_mm:?}   {:?}   {:?}   {:?}   {:?}   {:?}      S, Y, {third}, ROLL, YAW, PITCH",
+        r.y_mm, r.vertical, r.roll_rad, r.yaw_rad, r.pitch_rad
     );
     let [vs, vy, vz, vroll, vyaw, sixth] = r.velocity;
     let last = if longitudinal == LongitudinalSpec::Force { "FX_WS" } else { "VPITCH" };

@@ -23,6 +23,8 @@ use crate::wheelrail::wheel::{Pose, Velocity, WheelDeviation, WheelsetGeometry};
 use crate::wheelrail::wheel_mesh::WheelSurface;
 use crate::wheelrail::{Motion, Vertical, WheelRailCase};
 use rayon::prelude::*;
+use std::borrow::Cow;
+use std::sync::Arc;
 
 /// A scene's results: per case (in the table's order) its number and what it gave.
 #[derive(Debug, Clone)]
@@ -47,12 +49,29 @@ fn models(scene: &WheelRailScene) -> Result<Vec<String>, InputError> {
 }
 
 /// The scene's rail: its profile and, where it varies along the track (a slices file), the
-/// slices with `profile` their cross-section at the wheelset's S_WS (where CONTACT places the rail
-/// and makes the gap mesh: `m_wr_solvecp`, `varprof_intpol_xunif`).
-#[derive(Debug)]
+/// slices with `profile` their cross-section at the wheelset's S_WS `s_ws_mm` (where CONTACT
+/// places the rail and makes the gap mesh: `m_wr_solvecp`, `varprof_intpol_xunif`).
+#[derive(Debug, Clone)]
 pub struct RailProfile {
     pub profile: Profile,
-    pub slices: Option<Slices>,
+    pub slices: Option<Arc<Slices>>,
+    /// The S_WS [mm] of `profile` on the slices (the scene's `[wheelrail] s_mm`, or a case's own).
+    pub s_ws_mm: f64,
+}
+
+impl RailProfile {
+    /// The rail of a case whose row gives its own S_WS (the cases' column `s_mm`) on a rail slices
+    /// file: the cross-section there (CONTACT reads S_WS per case); else the scene's rail.
+    pub fn of_case(&self, row: &CaseRow) -> Result<Cow<'_, RailProfile>, Error> {
+        match (&self.slices, row.s_mm) {
+            (Some(slices), Some(s_ws_mm)) if s_ws_mm != self.s_ws_mm => Ok(Cow::Owned(RailProfile {
+                profile: slices.section_at(s_ws_mm)?,
+                slices: Some(Arc::clone(slices)),
+                s_ws_mm,
+            })),
+            _ => Ok(Cow::Borrowed(self)),
+        }
+    }
 }
 
 impl std::ops::Deref for RailProfile {
@@ -66,11 +85,11 @@ impl std::ops::Deref for RailProfile {
 /// at `s_ws_mm`.
 fn rail_profile(spec: &ProfileSpec, s_ws_mm: f64) -> Result<RailProfile, Error> {
     if !spec.path.to_string_lossy().to_lowercase().ends_with(".slcs") {
-        return Ok(RailProfile { profile: profile(spec, ProfileKind::Rail)?, slices: None });
+        return Ok(RailProfile { profile: profile(spec, ProfileKind::Rail)?, slices: None, s_ws_mm });
     }
     let slices = read_slices(&spec.path, ProfileKind::Rail, &options(spec))?;
     let profile = slices.section_at(s_ws_mm)?;
-    Ok(RailProfile { profile, slices: Some(slices) })
+    Ok(RailProfile { profile, slices: Some(Arc::new(slices)), s_ws_mm })
 }
 
 /// The scene's wheel: its profile and, where it is out of round (a wheel slices file, `.slcw`),
@@ -135,7 +154,9 @@ pub fn run_scene(scene: &WheelRailScene) -> Result<SceneRun, Error> {
         let positions = scene.shift_positions_mm().unwrap_or_default();
         let friction =
             Friction { mu: scene.mu, variation: scene.mu_variation.as_ref(), frictionless: scene.frictionless };
-        let cases = scene.cases.iter().zip(positions).map(|(row, s)| (case_of(scene, row, &rail, &wheel, material), s));
+        let rails = rails_of_cases(scene, &rail)?;
+        let cases = scene.cases.iter().zip(&rails).zip(positions);
+        let cases = cases.map(|((row, rail), s)| (case_of(scene, row, rail, &wheel, material), s));
         let on_error = |k: usize, e| in_case(&scene.name, &scene.cases[k], e);
         let results = solve_sequence(cases, steady_start, &models, &friction, on_error)?;
         let cases = scene.cases.iter().map(|r| r.contact_case).zip(results).collect();
@@ -144,7 +165,8 @@ pub fn run_scene(scene: &WheelRailScene) -> Result<SceneRun, Error> {
     if let MotionSpec::RollingSequence { dq_rel, from_rest } = scene.motion {
         let friction =
             Friction { mu: scene.mu, variation: scene.mu_variation.as_ref(), frictionless: scene.frictionless };
-        let cases = scene.cases.iter().map(|row| case_of(scene, row, &rail, &wheel, material));
+        let rails = rails_of_cases(scene, &rail)?;
+        let cases = scene.cases.iter().zip(&rails).map(|(row, rail)| case_of(scene, row, rail, &wheel, material));
         let dq_mm = dq_rel * scene.dx_mm;
         let on_error = |k: usize, e| in_case(&scene.name, &scene.cases[k], e);
         let results = solve_rolling_sequence(cases, (dq_mm, from_rest), &models, &friction, on_error)?;
@@ -155,6 +177,7 @@ pub fn run_scene(scene: &WheelRailScene) -> Result<SceneRun, Error> {
         .cases
         .par_iter()
         .map(|row| {
+            let rail = rail.of_case(row).map_err(|e| in_case(&scene.name, row, e))?;
             let case = case_of(scene, row, &rail, &wheel, material);
             let friction =
                 Friction { mu: scene.mu, variation: scene.mu_variation.as_ref(), frictionless: scene.frictionless };
@@ -166,6 +189,11 @@ pub fn run_scene(scene: &WheelRailScene) -> Result<SceneRun, Error> {
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(SceneRun { name: scene.name.clone(), models, cases })
+}
+
+/// Each case's rail ([`RailProfile::of_case`]), in the table's order.
+fn rails_of_cases<'a>(scene: &WheelRailScene, rail: &'a RailProfile) -> Result<Vec<Cow<'a, RailProfile>>, Error> {
+    scene.cases.iter().map(|row| rail.of_case(row).map_err(|e| in_case(&scene.name, row, e))).collect()
 }
 
 /// An error of one case, naming it.
@@ -249,7 +277,7 @@ pub fn case_of<'a>(
             MotionSpec::Shift { s_ws_mm, .. } => Motion::Shift { s_ws_mm: row.s_mm.unwrap_or(s_ws_mm) },
         },
         previous: None,
-        rail_slices: rail.slices.as_ref().map(|slices| RailSlices { slices, s_ws_mm: s.s_ws_mm }),
+        rail_slices: rail.slices.as_deref().map(|slices| RailSlices { slices, s_ws_mm: rail.s_ws_mm }),
         wheel_slices: wheel.slices.as_ref().map(|slices| WheelSlices { slices, pitch_rad: row.pitch_rad }),
     }
 }

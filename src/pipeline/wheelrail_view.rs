@@ -61,6 +61,7 @@ pub fn view(scene: &WheelRailScene, run: SceneRun) -> Result<WheelRailView, Erro
     let (mut ycp_w_mm, mut outlines, mut maps) = (Vec::new(), Vec::new(), Vec::new());
     let patch_cases = scene.patch_cases();
     for (row, (number, result)) in scene.cases.iter().zip(&run.cases) {
+        let rail = rail.of_case(row)?;
         let case = case_of(scene, row, &rail, &wheel, material);
         let m = case.side.sign();
         let pose = Pose { z_mm: result.normal.z_ws_mm, ..case.side.pose(&case.pose) };

@@ -21,6 +21,7 @@ pub mod studies;
 pub mod table;
 pub mod timed;
 pub mod wheelrail;
+mod wheelrail_focus;
 pub mod work_precision;
 
 use crate::comparison::compare::Finding;

@@ -12,7 +12,7 @@ use crate::pipeline::wheelrail::CaseResult;
 use crate::pipeline::wheelrail_view::{Outline, WheelRailView};
 use crate::report::plot::{line_chart, patch_map, Axis, Series};
 use crate::report::section::Section;
-use crate::scene::wheelrail::SideSpec;
+use crate::scene::wheelrail::{SideSpec, WheelRailFigures};
 use crate::suite::wheelrail::{patch_numbers, PATCH_COLUMNS};
 use std::fmt::Write;
 
@@ -31,14 +31,14 @@ pub struct Wheel<'a> {
 
 /// A quantity of a patch drawn against the lateral shift: its column of `<model>_patches.csv`,
 /// its axis title, whether the models differ in it, and CONTACT's printed value.
-struct Quantity {
-    column: &'static str,
-    title: &'static str,
-    per_model: bool,
-    printed: fn(&Patch) -> Option<Printed>,
+pub(super) struct Quantity {
+    pub(super) column: &'static str,
+    pub(super) title: &'static str,
+    pub(super) per_model: bool,
+    pub(super) printed: fn(&Patch) -> Option<Printed>,
 }
 
-const QUANTITIES: [Quantity; 10] = [
+pub(super) const QUANTITIES: [Quantity; 10] = [
     Quantity {
         column: "ycp_r_mm",
         title: "contact position on the rail y_r [mm]",
@@ -103,23 +103,36 @@ const QUANTITIES: [Quantity; 10] = [
 
 /// The lateral shift's axis.
 const SHIFT: &str = "lateral shift y_ws [mm]";
-/// A sequence of shifts' axis (CONTACT's S_WS of each case).
-const ALONG: &str = "wheelset position along the track s_ws [mm]";
+/// A sequence of shifts' axis, or the cases' own positions (CONTACT's S_WS of each case).
+const ALONG: &str = "wheelset position along the track S_WS [mm]";
+/// An out-of-round wheel's axis: the distance the wheel rolled from PITCH = 0, −PITCH·NOMRAD.
+const ROLLED: &str = "distance rolled s = −PITCH · NOMRAD [mm]";
 
-/// What a scene's figures are drawn against: a shift's cases against the wheelset's position
-/// along the track (the Cattaneo → Carter transition of `m1_catt_shift`), every other scene's
-/// against the lateral shift; the axis title and each case's value.
-fn abscissa(view: &WheelRailView) -> (&'static str, Vec<f64>) {
-    match view.scene.shift_positions_mm() {
-        Some(s) => (ALONG, s),
-        None => (SHIFT, view.scene.cases.iter().map(|c| c.y_mm).collect()),
+/// What a scene's figures are drawn against: a wheel flat's (`[report] group = "wheel_flat"`)
+/// against the distance the wheel rolled, −PITCH·NOMRAD (CONTACT's material angle θ = −PITCH at
+/// the lowest point, user guide "Wheel-rail contact: out-of-round wheels"); cases that give their
+/// own S_WS (a sequence of shifts, the Cattaneo → Carter transition of `m1_catt_shift`; the
+/// crossing's cases of `mbench_intrup`) against S_WS; every other scene's against the lateral
+/// shift; the axis title and each case's value.
+pub(super) fn abscissa(view: &WheelRailView) -> (&'static str, Vec<f64>) {
+    let s = &view.scene;
+    if s.report.figures == WheelRailFigures::WheelFlat {
+        return (ROLLED, s.cases.iter().map(|c| -c.pitch_rad * s.nominal_radius_mm).collect());
+    }
+    match s.case_positions_mm() {
+        Some(positions) => (ALONG, positions),
+        None => (SHIFT, s.cases.iter().map(|c| c.y_mm).collect()),
     }
 }
 
-/// A printed case's value on the scene's [`abscissa`]: its S_WS in a shift, else its Y_WS.
+/// A printed case's value on the scene's [`abscissa`]: −PITCH·NOMRAD of a wheel flat, its S_WS
+/// where the cases give theirs, else its Y_WS.
 fn printed_abscissa(view: &WheelRailView, c: &Printed1) -> Option<f64> {
     let pos = c.position.as_ref()?;
-    match (view.scene.shift_positions_mm(), pos.along) {
+    if view.scene.report.figures == WheelRailFigures::WheelFlat {
+        return Some(-pos.pitch_rad.value * view.scene.nominal_radius_mm);
+    }
+    match (view.scene.case_positions_mm(), pos.along) {
         (None, _) => Some(pos.y_mm.value),
         (Some(_), Along::TrackSMm(s)) => Some(s.value),
         (Some(_), Along::RollerXMm(_)) => None,
@@ -147,7 +160,7 @@ fn grouping(view: &WheelRailView) -> impl Fn(f64) -> String {
 
 /// The series of one quantity of patch `patch`: one per model (or the exact theory's alone
 /// where every model has the same), and CONTACT's printed points.
-fn series(w: &Wheel, q: &Quantity, patch: usize) -> Vec<Series> {
+pub(super) fn series(w: &Wheel, q: &Quantity, patch: usize) -> Vec<Series> {
     let view = w.view;
     let group = grouping(view);
     let xs = abscissa(view).1;
@@ -203,7 +216,7 @@ fn totals_figures(w: &Wheel, name: &str, sec: &mut Section) {
     }
 }
 
-fn figure(sec: &mut Section, file: String, svg: String, alt: &str) {
+pub(super) fn figure(sec: &mut Section, file: String, svg: String, alt: &str) {
     let _ = writeln!(sec.body, "![{alt}](figures/{file})");
     sec.figures.push((file, svg));
 }
@@ -226,7 +239,7 @@ fn profiles_figure(name: &str, o: &Outline) -> String {
 
 /// Per model and patch (and the totals), the largest difference from the exact theory over the
 /// cases both solved.
-fn ladder(view: &WheelRailView, mu: f64) -> String {
+pub(super) fn ladder(view: &WheelRailView, mu: f64) -> String {
     let Some(e) = view.run.models.iter().position(|m| m == EXACT) else {
         return format!("No `{EXACT}` among the models: no errors against the exact theory.\n");
     };
@@ -260,8 +273,8 @@ fn ladder(view: &WheelRailView, mu: f64) -> String {
     out
 }
 
-/// One wheel: its text, figures, profiles, maps and ladder table.
-fn wheel(w: &Wheel, sec: &mut Section) {
+/// A wheel's heading: its name and side, its cases, models and CONTACT's printed cases.
+pub(super) fn heading(w: &Wheel, sec: &mut Section) {
     let (view, name) = (w.view, w.view.scene.name.as_str());
     let side = if view.scene.side == SideSpec::Left { "left" } else { "right" };
     let _ = writeln!(
@@ -271,7 +284,18 @@ fn wheel(w: &Wheel, sec: &mut Section) {
         view.run.models.iter().map(|m| format!("`{m}`")).collect::<Vec<_>>().join(", "),
         if w.contact.is_empty() { "none declared".to_string() } else { format!("{} cases", w.contact.len()) }
     );
-    let patches = view.run.cases.iter().map(|(_, r)| r.normal.patches.len()).max().unwrap_or(0);
+}
+
+/// The most patches of a case of the wheel.
+pub(super) fn patches(view: &WheelRailView) -> usize {
+    view.run.cases.iter().map(|(_, r)| r.normal.patches.len()).max().unwrap_or(0)
+}
+
+/// One wheel: its text, figures, profiles, maps and ladder table.
+fn wheel(w: &Wheel, sec: &mut Section) {
+    let (view, name) = (w.view, w.view.scene.name.as_str());
+    heading(w, sec);
+    let patches = patches(view);
     for patch in 0..patches {
         let _ = writeln!(sec.body, "**Patch {}** (CONTACT's numbering: from the field side)\n", patch + 1);
         for q in &QUANTITIES {
@@ -300,16 +324,20 @@ fn wheel(w: &Wheel, sec: &mut Section) {
 
 /// The section, if any wheel–rail scene declares the group `wheelrail`.
 pub fn section(wheels: &[Wheel]) -> Option<Section> {
-    let drawn: Vec<&Wheel> = wheels.iter().filter(|w| w.view.scene.report.in_section).collect();
+    let drawn: Vec<&Wheel> = wheels.iter().filter(|w| w.view.scene.report.in_section()).collect();
     if drawn.is_empty() {
         return None;
     }
     let mut sec = Section::new(
         TITLE,
-        "Each wheel–rail scene of group `wheelrail` (docs/wheelrail.md), drawn as the Manchester benchmark (Shackleton & Iwnicki 2008) draws its results: against the wheelset's lateral shift (a sequence of shifts against the wheelset's position along the track), per contact patch. Every model solves the same patches, so the contact positions, angle, FN and creepages are the exact normal solution's (drawn once, as `contact`); FX, FS and MN are each model's. CONTACT's printed results are the black markers. Signs and frames are CONTACT's module-1 output's (forces on the rail, y to the right on both sides).\n\n".to_string(),
+        "Each wheel–rail scene of group `wheelrail` (docs/wheelrail.md), drawn as the Manchester benchmark (Shackleton & Iwnicki 2008) draws its results: against the wheelset's lateral shift (a sequence of shifts against the wheelset's position along the track), per contact patch. Every model solves the same patches, so the contact positions, angle, FN and creepages are the exact normal solution's (drawn once, as `contact`); FX, FS and MN are each model's. CONTACT's printed results are the black markers. Signs and frames are CONTACT's module-1 output's (forces on the rail, y to the right on both sides). A scene of group `wheel_flat` (an out-of-round wheel) draws FN, the approach, FX and FS per patch against the distance the wheel rolled; one of group `crossing` the contact position on the rail and FN per patch against S_WS (docs/report.md).\n\n".to_string(),
     );
     for w in drawn {
-        wheel(w, &mut sec);
+        match w.view.scene.report.figures {
+            WheelRailFigures::WheelFlat => super::wheelrail_focus::wheel_flat(w, &mut sec),
+            WheelRailFigures::Crossing => super::wheelrail_focus::crossing(w, &mut sec),
+            _ => wheel(w, &mut sec),
+        }
     }
     Some(sec)
 }

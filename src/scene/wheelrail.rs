@@ -221,11 +221,38 @@ pub struct WheelRailScene {
     pub dir: PathBuf,
 }
 
+/// The figures of the section "Wheel–rail contact" a scene declares (`[report] group`;
+/// report::wheelrail).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum WheelRailFigures {
+    /// Not drawn (`"other"`).
+    #[default]
+    None,
+    /// Every patch quantity against the lateral shift or S_WS, the profiles, the patch maps and the
+    /// models' errors (`"wheelrail"`).
+    Full,
+    /// The wheel-flat figure: per patch FN, the approach, FX and FS against the distance rolled
+    /// −PITCH·NOMRAD (`"wheel_flat"`; an out-of-round wheel, its cases' column `pitch_rad`).
+    WheelFlat,
+    /// The crossing figure: per patch the contact position on the rail YCP(R) and FN against each
+    /// case's S_WS where the cases give theirs (the column `s_mm`), else against Y_WS (`"crossing"`).
+    Crossing,
+}
+
+/// The choices of `[report] group` and the figures each declares.
+const GROUPS: [(&str, WheelRailFigures); 4] = [
+    ("wheelrail", WheelRailFigures::Full),
+    ("wheel_flat", WheelRailFigures::WheelFlat),
+    ("crossing", WheelRailFigures::Crossing),
+    ("other", WheelRailFigures::None),
+];
+
 /// Where the report shows a wheel–rail scene (`[report]`; report::wheelrail).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct WheelRailReport {
-    /// The scene declares the group `wheelrail`: it is drawn in the section "Wheel–rail contact".
-    pub in_section: bool,
+    /// The figures the scene declares (`group`); any but `None` draws it in the section
+    /// "Wheel–rail contact".
+    pub figures: WheelRailFigures,
     /// CONTACT's printed output of the same cases, drawn beside the models (resolved path).
     pub contact_output: Option<PathBuf>,
     /// The cases (`contact_case`) whose patches are drawn as maps and on the profiles, as given
@@ -272,16 +299,19 @@ pub const REPORT_KEYS: Keys = Keys {
         key(
             "group",
             "–",
-            Allowed::Choice(&["wheelrail", "other"], ""),
+            Allowed::Choice(
+                &["wheelrail", "wheel_flat", "crossing", "other"],
+                "`\"wheel_flat\"` only on a wheel slices file (`[wheel] profile` a `.slcw` file)",
+            ),
             Absent::Choice("other"),
-            r#"`"wheelrail"`: the scene is drawn in the section "Wheel–rail contact": `group = "wheelrail"`"#,
+            r#"the figures of the section "Wheel–rail contact" that draw the scene, every model beside CONTACT's points: `"wheelrail"` every patch quantity against the lateral shift (or S_WS), the profiles, the patch maps and the models' errors; `"wheel_flat"` per patch FN, the approach, FX and FS against the distance rolled −PITCH·NOMRAD [mm] (an out-of-round wheel turned by its cases' `pitch_rad`); `"crossing"` per patch the contact position on the rail YCP(R) and FN against each case's S_WS [mm] where the cases give theirs (the column `s_mm`), else against the lateral shift Y_WS [mm] (the contact moving from the wing rail to the nose and the load passing between them); `"other"` not drawn: `group = "crossing"`"#,
         ),
         key(
             "contact_output",
             "–",
             Allowed::Text("a path relative to the scene file: CONTACT's printed module-1 output (`.out`, `.ref_out`)"),
             Absent::Text("none"),
-            r#"CONTACT's results of the same wheelset, drawn as black markers at their own printed Y_WS: `contact_output = "../../reference/contact_wheelrail/examples/mbench_a22_left.ref_out"`"#,
+            r#"CONTACT's results of the same wheelset, drawn as black markers at their own printed Y_WS (S_WS where the cases give theirs, −PITCH·NOMRAD in a wheel flat's figure): `contact_output = "../../reference/contact_wheelrail/examples/mbench_a22_left.ref_out"`"#,
         ),
         key(
             "patch_cases",
@@ -349,7 +379,21 @@ pub fn read_if_wheelrail(path: &Path) -> Result<Option<WheelRailScene>, InputErr
     WheelRailScene::from_table(&doc, &dir).map(Some).map_err(in_file)
 }
 
+impl WheelRailReport {
+    /// Whether the scene is drawn in the section "Wheel–rail contact".
+    pub fn in_section(&self) -> bool {
+        self.figures != WheelRailFigures::None
+    }
+}
+
 impl WheelRailScene {
+    /// Each case's S_WS [mm] where the cases give their own: a shift's positions
+    /// ([`Self::shift_positions_mm`]), or every row's column `s_mm` (steady rolling on a rail
+    /// slices file); `None` where every case stands at `[wheelrail] s_mm`.
+    pub fn case_positions_mm(&self) -> Option<Vec<f64>> {
+        self.shift_positions_mm().or_else(|| self.cases.iter().map(|r| r.s_mm).collect())
+    }
+
     /// Each case's wheelset position along the track [mm] in a shift: the table's column `s_mm`
     /// where it has one (CONTACT's S_WS of each case), else `s_mm`, or in a sequence of
     /// shifts the position before plus the case before's shift VS × 1 s (CONTACT's dummy time
@@ -479,12 +523,12 @@ impl WheelRailScene {
             ));
         }
         let given_s = doc.get("wheelrail").and_then(|w| w.get("s_mm")).is_some();
-        super::wheelrail_cases::check_positions(&cases, motion, given_s, mu_variation.as_ref())?;
+        super::wheelrail_cases::check_positions(&cases, motion, (given_s, rail_is_slices(doc)), mu_variation.as_ref())?;
         let origin = super::origin::read(&mut top)?;
         check_origin(origin.as_ref(), &cases)?;
         let report = report(&mut top, dir, &cases)?;
         top.finish()?;
-        Ok(WheelRailScene {
+        let scene = WheelRailScene {
             name,
             solvers,
             side,
@@ -517,7 +561,9 @@ impl WheelRailScene {
             report,
             origin,
             dir: dir.to_path_buf(),
-        })
+        };
+        check_figures(&scene)?;
+        Ok(scene)
     }
 }
 
@@ -555,7 +601,8 @@ fn report(top: &mut Section, dir: &Path, cases: &[CaseRow]) -> Result<WheelRailR
         return Ok(WheelRailReport::default());
     };
     let mut t = t.declare(&REPORT_KEYS);
-    let in_section = t.pick_or_default("group")? == "wheelrail";
+    let group = t.pick_or_default("group")?;
+    let figures = GROUPS.iter().find(|(id, _)| *id == group).map_or(WheelRailFigures::None, |g| g.1);
     let contact_output = t.opt_text("contact_output")?.map(|p| dir.join(p));
     let field = t.field("patch_cases");
     let patch_cases = match t.opt_num_list("patch_cases")? {
@@ -574,5 +621,18 @@ fn report(top: &mut Section, dir: &Path, cases: &[CaseRow]) -> Result<WheelRailR
             .collect::<Result<_, _>>()?,
     };
     t.finish()?;
-    Ok(WheelRailReport { in_section, contact_output, patch_cases })
+    Ok(WheelRailReport { figures, contact_output, patch_cases })
+}
+
+/// The wheel-flat figure needs what it is drawn against: an out-of-round wheel (a `.slcw` wheel
+/// slices file, turned by the cases' `pitch_rad`).
+fn check_figures(s: &WheelRailScene) -> Result<(), InputError> {
+    let why = match s.report.figures {
+        WheelRailFigures::WheelFlat if !s.wheel.path.to_string_lossy().to_lowercase().ends_with(".slcw") => {
+            "\"wheel_flat\" only on a wheel slices file ([wheel] profile a .slcw file): its figure is drawn against the distance the wheel rolled, −pitch_rad × nominal_radius_mm"
+        }
+        _ => return Ok(()),
+    };
+    let id = GROUPS.iter().find(|g| g.1 == s.report.figures).map_or("", |g| g.0);
+    Err(InputError::new("report.group", format!("{id:?}"), why))
 }

@@ -150,9 +150,9 @@ pub const COLUMNS: Keys = Keys {
         key(
             "s_mm",
             "mm",
-            Allowed::Number(LENGTH, r#"only with `motion = "shift"` or `"shift_sequence"`, not with `[wheelrail] s_mm` or `mu_by = "track_s"`"#),
+            Allowed::Number(LENGTH, r#"only with `motion = "shift"` or `"shift_sequence"`, or in steady rolling (`motion = "rolling"`) on a rail slices file (`[rail] profile` a `.slcs` file); not with `[wheelrail] s_mm` or `mu_by = "track_s"`"#),
             Absent::Text("an optional column: without it each position is `[wheelrail] s_mm` or follows from the shifts (`vs_mm_s`)"),
-            r#"in a shift, the wheelset's position along the track S_WS of each case, as CONTACT reads it per case: the anchor of the material-fixed grid (element centres at track x = −`s_mm` + i `dx_mm`), independent of the shift; a table that has it gives it second, after `contact_case` (`testbank/examples_trans/m1_catt_shift`: a shift of 4 mm from rest at 0, then shifts of 0.2 mm at 0.2, 0.4, …)"#,
+            r#"the wheelset's position along the track S_WS of each case, as CONTACT reads it per case; in a shift the anchor of the material-fixed grid (element centres at track x = −`s_mm` + i `dx_mm`), independent of the shift (`testbank/examples_trans/m1_catt_shift`: a shift of 4 mm from rest at 0, then shifts of 0.2 mm at 0.2, 0.4, …); in steady rolling on a rail slices file where the wheelset stands on the rail: the rail's cross-section at `s_mm` and its surface around it (`testbank/examples_s+c/mbench_intrup`: the UK crossing at S_WS = 110 … 130 mm); a table that has it gives it second, after `contact_case`"#,
         ),
         key("y_mm", "mm", Allowed::Number(LENGTH, ""), Absent::Required, "the wheelset's lateral displacement Y_WS"),
         key(
@@ -327,20 +327,21 @@ pub fn check_longitudinal(
     Ok(())
 }
 
-/// The table's column `s_mm` (a shift's position per case) only in a shift (`motion = "shift"` or
-/// `"shift_sequence"`), without `[wheelrail] s_mm` (`given_s`; one place gives the position) and
-/// without μ along the track (whose position is `[wheelrail] s_mm`).
+/// The table's column `s_mm` (each case's S_WS) only in a shift (`motion = "shift"` or
+/// `"shift_sequence"`) or in steady rolling on a rail slices file (`varying_rail`: S_WS places
+/// the wheelset on the rail), without `[wheelrail] s_mm` (`given_s`; one place gives the
+/// position) and without μ along the track (whose position is `[wheelrail] s_mm`).
 pub fn check_positions(
     cases: &[CaseRow],
     motion: MotionSpec,
-    given_s: bool,
+    (given_s, varying_rail): (bool, bool),
     mu_variation: Option<&MuVariation>,
 ) -> Result<(), InputError> {
     if cases.iter().all(|r| r.s_mm.is_none()) {
         return Ok(());
     }
-    let why = if !matches!(motion, MotionSpec::Shift { .. }) {
-        "motion = \"shift\" or \"shift_sequence\" (the position anchors a shift's material-fixed grid)"
+    let why = if !(matches!(motion, MotionSpec::Shift { .. }) || (motion == MotionSpec::Rolling && varying_rail)) {
+        "motion = \"shift\" or \"shift_sequence\" (the position anchors a shift's material-fixed grid), or steady rolling (motion = \"rolling\") on a rail slices file ([rail] profile a .slcs file: the position places the wheelset on the rail)"
     } else if given_s {
         "no [wheelrail] s_mm beside it (one place gives the positions)"
     } else if mu_variation.is_some_and(|v| matches!(v.by, MuBy::TrackS { .. })) {
@@ -633,7 +634,7 @@ mod tests {
         // The patch maps default to the first, middle and last case.
         assert!(s.report.patch_cases.is_empty());
         assert_eq!(s.patch_cases(), [1, 11, 21]);
-        assert!(!s.report.in_section);
+        assert!(!s.report.in_section());
     }
 
     #[test]
@@ -648,7 +649,7 @@ mod tests {
         let want = [(1, 0.0, 0.0), (2, 0.0, 0.01), (3, 0.0, 0.02), (4, 5.0, 0.0), (5, 5.0, 0.01), (6, 5.0, 0.02)];
         assert_eq!(got, want);
         assert!(s.cases.iter().all(|c| c.vertical == -0.1 && c.velocity[5] == -2.0));
-        assert!(s.report.in_section);
+        assert!(s.report.in_section());
         assert_eq!(s.patch_cases(), [2, 6]);
     }
 
@@ -720,8 +721,9 @@ mod tests {
         assert!(err.contains("report.group") && err.contains("wheelrail"), "{err}");
     }
 
-    /// The shift's positions per case (column `s_mm`, second): read into each row and taken as
-    /// the shift's positions; refused outside a shift, beside `[wheelrail] s_mm`, out of range.
+    /// The positions per case (column `s_mm`, second): read into each row and taken as a shift's
+    /// positions, or in steady rolling on a rail slices file as each case's S_WS; refused in
+    /// steady rolling on a profile, beside `[wheelrail] s_mm`, out of range.
     #[test]
     fn a_shifts_positions_column_gives_each_cases_position_and_is_refused_elsewhere() {
         let dir = tempfile::tempdir().unwrap();
@@ -731,28 +733,41 @@ mod tests {
         std::fs::write(dir.path().join("c.csv"), format!("{head}{rows}")).unwrap();
         std::fs::write(dir.path().join("bad.csv"), format!("{head}1,2e5,0.0,-0.2,0.0,0.0,4.0,0.0,0.0,0.0,0.0,-0.04\n"))
             .unwrap();
-        let scene = |wheelrail: &str, file: &str| {
+        let scene_on = |wheelrail: &str, file: &str, rail: &str| {
             let text = format!(
                 "name = \"s\"\nsolvers = [\"contact\"]\n[wheelrail]\nside = \"right\"\nmu = 0.4\ndx_mm = 0.2\nds_mm = 0.2\n{wheelrail}\
-                 [rail]\nprofile = \"r.prr\"\ny_mm = 0.0\nz_mm = 0.0\n\
+                 [rail]\nprofile = \"{rail}\"\ny_mm = 0.0\nz_mm = 0.0\n\
                  [wheel]\nprofile = \"w.prw\"\nflange_back_distance_mm = 0.0\nflange_back_position_mm = 0.0\n\
                  nominal_radius_mm = 100.0\n[material]\ng_mpa = 200.0\npoisson = 0.28\n\
                  [cases]\nvertical = \"position\"\nfile = \"{file}\"\n"
             );
             WheelRailScene::from_toml(&text, dir.path()).map_err(|e| e.to_string())
         };
+        let scene = |wheelrail: &str, file: &str| scene_on(wheelrail, file, "r.prr");
         let s = scene("motion = \"shift_sequence\"\n", "c.csv").unwrap();
         assert_eq!(s.cases.iter().map(|r| r.s_mm).collect::<Vec<_>>(), [Some(0.0), Some(0.2)]);
         assert_eq!(s.cases[1].velocity, [0.2, 0.0, 0.0, 0.0, 0.0, -0.002]);
         assert_eq!(s.shift_positions_mm(), Some(vec![0.0, 0.2]), "not 0 then 4 (the first shift's)");
+        // Steady rolling on a rail slices file: each case's S_WS, where the wheelset stands on the
+        // rail (`mbench_intrup`), drawn against it in a crossing's figure.
+        let s = scene_on("[report]\ngroup = \"crossing\"\n", "c.csv", "x.slcs").unwrap();
+        assert_eq!((s.motion, s.shift_positions_mm()), (crate::scene::wheelrail::MotionSpec::Rolling, None));
+        assert_eq!(s.case_positions_mm(), Some(vec![0.0, 0.2]));
+        assert_eq!(s.report.figures, crate::scene::wheelrail::WheelRailFigures::Crossing);
         for (wheelrail, file, field, allowed) in [
             ("", "c.csv", "cases.file column s_mm", "motion = \"shift\" or \"shift_sequence\""),
+            ("", "c.csv", "cases.file column s_mm", "or steady rolling (motion = \"rolling\") on a rail slices file"),
             ("motion = \"shift\"\ns_mm = 1.0\n", "c.csv", "cases.file column s_mm", "no [wheelrail] s_mm"),
             ("motion = \"shift\"\n", "bad.csv", "line 2 column s_mm", "[-1e5, 1e5]"),
         ] {
             let err = scene(wheelrail, file).unwrap_err();
             assert!(err.contains(field) && err.contains(allowed), "{wheelrail:?} {file}: {err}");
         }
+        let err = scene_on("s_mm = 1.0\n", "c.csv", "x.slcs").unwrap_err();
+        assert!(err.contains("cases.file column s_mm") && err.contains("no [wheelrail] s_mm"), "{err}");
+        // A wheel flat's figure is drawn against the distance an out-of-round wheel rolled.
+        let err = scene_on("[report]\ngroup = \"wheel_flat\"\n", "c.csv", "x.slcs").unwrap_err();
+        assert!(err.contains("report.group") && err.contains("only on a wheel slices file"), "{err}");
     }
 
     /// The declared columns are exactly those of the eight tables [`case_columns`] and

@@ -559,3 +559,47 @@ fn run_original(
     assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stdout));
     creepbench::comparison::references::contact_output::wheelrail::read(&dir.join(format!("{name}.out"))).unwrap()
 }
+
+/// `mbench_intrup`'s 43 steady cases on the UK crossing's slices (S_WS = 110 … 130 mm, each
+/// case's own) import as one scene whose cases table gives each case's S_WS (the column `s_mm`,
+/// `[wheelrail] s_mm` left out); the shipped scene is that import (with CONTACT's meshed wheel
+/// surface and its report group). It exports with each case's S_WS and imports back the same.
+#[test]
+fn the_interrupted_crossing_imports_as_one_scene_with_each_cases_position() {
+    let dir = common::tempdir("m1_intrup");
+    let deck = root().join("reference/contact_wheelrail/testbank/examples_s+c/mbench_intrup.inp");
+    let scenes = import(&deck, &dir.join("scenes"), &[]);
+    assert_eq!(scenes.len(), 1, "{scenes:?}");
+    let s = WheelRailScene::from_file(&scenes[0]).unwrap();
+    assert_eq!((s.cases.len(), s.motion, s.s_ws_mm), (43, MotionSpec::Rolling, 0.0));
+    let positions = s.case_positions_mm().unwrap();
+    assert_eq!(
+        (positions[0], positions[6], positions[23], positions[27], positions[42]),
+        (110.0, 115.5, 119.2, 119.6, 130.0)
+    );
+    let shipped = WheelRailScene::from_file(&root().join("scenes/wheelrail/mbench_intrup_1.toml")).unwrap();
+    assert_eq!(values(&WheelRailScene { wheel_mesh: true, ..s }), values(&shipped));
+    let toml = std::fs::read_to_string(&scenes[0]).unwrap();
+    assert!(!toml.lines().any(|l| l.starts_with("s_mm")), "the table gives the positions: {toml}");
+    // Exported: one CONTACT case per row at its own S_WS; imported back, the same scene.
+    let (original, back) = round_trip(&root().join("scenes/wheelrail/mbench_intrup_1.toml"), &dir);
+    assert_eq!(values(&back), values(&WheelRailScene { wheel_mesh: false, ..original.clone() }));
+    let deck = std::fs::read_to_string(dir.join("deck/mbench_intrup_1.inp")).unwrap();
+    let written: Vec<f64> = deck
+        .lines()
+        .filter(|l| l.ends_with("S, Y, Z, ROLL, YAW, PITCH"))
+        .map(|l| l.split_whitespace().next().unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(written, positions);
+}
+
+/// A wheel flat's cases export with their PITCH (the cases' `pitch_rad`: the flat turned under the
+/// contact) and import back as the same scene.
+#[test]
+fn a_wheel_flat_exports_its_pitch_and_imports_back() {
+    let dir = common::tempdir("m1_wheelflat_round_trip");
+    let (original, back) = round_trip(&root().join("scenes/wheelrail/wheelflat_1.toml"), &dir);
+    let solvers = original.solvers.clone();
+    assert_eq!(values(&WheelRailScene { solvers, ..back }), values(&original));
+    assert_eq!(original.cases[25].pitch_rad, -50f64.to_radians());
+}

@@ -64,7 +64,7 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
     let kpec = |f: &&&Finding| f.scene.starts_with("mbench_a22_kpec_") && (1..=3).contains(&f.step.unwrap_or(0));
     let varfric = |f: &&&Finding| f.scene == "mbench_a22_varfric_1" && f.step == Some(3);
     let totforce = |f: &&&Finding| f.scene == "m1_totforce_1" && [66, 70, 72, 73, 80].contains(&f.step.unwrap_or(0));
-    let intrup = |f: &&&Finding| ["mbench_intrup_24", "mbench_intrup_28"].contains(&f.scene.as_str());
+    let intrup = |f: &&&Finding| f.scene == "mbench_intrup_1" && [24, 28].contains(&f.step.unwrap_or(0));
     let rounded_flat = |f: &&&Finding| f.scene == "rounded_flat_d09_1";
     assert!(
         all_gaps.iter().all(|f| in_testbank(f) || kpec(f) || varfric(f) || totforce(f) || intrup(f) || rounded_flat(f)),

@@ -171,7 +171,15 @@ fn run_of_the_shipped_suite_draws_only_the_declared_scenes() {
     assert_eq!(run.outcome.report.as_deref(), Some(rep.join("validation.md").as_path()));
     let md = std::fs::read_to_string(rep.join("validation.md")).unwrap();
     assert!(md.contains("## Wheel–rail contact"), "no section");
-    let drawn = ["mbench_a22_left", "mbench_a22_right", "m1_catt_shift_1"];
+    let drawn = [
+        "mbench_a22_left",
+        "mbench_a22_right",
+        "m1_catt_shift_1",
+        "wheelflat_1",
+        "chalmers_flat_fz125_1",
+        "mbench_intrup_1",
+        "mbench_locus_1",
+    ];
     for name in drawn {
         assert!(md.contains(name), "{name} not drawn");
     }
@@ -186,5 +194,5 @@ fn run_of_the_shipped_suite_draws_only_the_declared_scenes() {
     // The Cattaneo → Carter transition (a shift of 4 mm from rest, then 80 shifts of 0.2 mm):
     // FX against the wheelset's position along the track, the exact solver beside CONTACT's 81.
     let fx = std::fs::read_to_string(rep.join("figures/wheelrail_m1_catt_shift_1_p1_fx_n.svg")).unwrap();
-    assert!(fx.contains("wheelset position along the track s_ws [mm]") && fx.contains(">CONTACT<"), "{fx}");
+    assert!(fx.contains("wheelset position along the track S_WS [mm]") && fx.contains(">CONTACT<"), "{fx}");
 }

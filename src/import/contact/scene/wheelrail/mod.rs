@@ -3,7 +3,8 @@
 //! supported ones become a one-row scene each ([`case_scene`]): the side (C), the profiles and
 //! their options, the track, the wheelset's dimensions, the material (POISS, GG combined as module 3
 //! combines them), Coulomb's mu = FSTAT, DX, DS and the vertical problem (N), the row its position
-//! and velocities. Consecutive cases whose one-row scenes agree but for the row are one scene
+//! and velocities. Consecutive cases whose one-row scenes agree but for the row (steady cases on a
+//! rail slices file: and for S_WS, then each row's column `s_mm`) are one scene
 //! (`<deck>_<first case>`, its rows in `<name>_cases.csv`, `[origin]` the deck and its first and
 //! last case), written ([`write`]) and read back before anything is written.
 
@@ -128,7 +129,8 @@ fn groups(members: Vec<Member>) -> (Vec<Vec<Member>>, Vec<(usize, String)>) {
         }
         let joins = |g: &&mut Vec<Member>| {
             let last = g[g.len() - 1].number;
-            same_but_rows(&g[0].scene, &m.scene) && (last + 1..m.number).all(|n| supported.contains(&n))
+            let agrees = same_but_rows(&g[0].scene, &m.scene) || same_but_position(&g[0].scene, &m.scene);
+            agrees && (last + 1..m.number).all(|n| supported.contains(&n))
         };
         // A shift the next case continues starts its own scene (a sequence of its own).
         let group = if continued.contains(&m.number) { None } else { out.iter_mut().rev().find(joins) };
@@ -224,6 +226,16 @@ fn same_but_motion(a: &WheelRailScene, b: &WheelRailScene) -> bool {
     WheelRailScene { cases: b.cases.clone(), motion: b.motion, s_ws_mm: b.s_ws_mm, ..a.clone() } == *b
 }
 
+/// Whether two steady one-row scenes on a rail slices file agree but for their rows and the
+/// wheelset's position along the track (S_WS, each case's own: the cases' column `s_mm`, which
+/// `[wheelrail] s_mm` and μ along the track exclude; `testbank/examples_s+c/mbench_intrup`).
+fn same_but_position(a: &WheelRailScene, b: &WheelRailScene) -> bool {
+    let on_slices = |s: &WheelRailScene| s.rail.path.to_string_lossy().to_lowercase().ends_with(".slcs");
+    let track_mu = |s: &WheelRailScene| s.mu_variation.as_ref().is_some_and(|v| matches!(v.by, MuBy::TrackS { .. }));
+    let steady = |s: &WheelRailScene| s.motion == MotionSpec::Rolling && on_slices(s) && !track_mu(s);
+    steady(a) && steady(b) && same_but_rows(&WheelRailScene { s_ws_mm: b.s_ws_mm, ..a.clone() }, b)
+}
+
 /// Whether two one-row scenes agree but for their rows.
 fn same_but_rows(a: &WheelRailScene, b: &WheelRailScene) -> bool {
     WheelRailScene { cases: b.cases.clone(), ..a.clone() } == *b
@@ -238,6 +250,7 @@ fn build(file: &str, stem: &str, group: Vec<Member>) -> Result<SceneFiles, (Stri
     scene.name = scene_name(stem, numbers[0]);
     scene.cases = group.iter().flat_map(|m| m.scene.cases.iter().copied()).collect();
     given_positions(&mut scene, &group);
+    steady_positions(&mut scene, &group);
     scene.origin = Some(Origin { file: file.to_string(), cases: numbers });
     let place = format!("{file}, {span}");
     let files = write::files(&scene, file).map_err(|e| (span.clone(), e))?;
@@ -261,6 +274,18 @@ fn given_positions(scene: &mut WheelRailScene, group: &[Member]) {
     if let MotionSpec::Shift { s_ws_mm, .. } = &mut scene.motion {
         *s_ws_mm = 0.0;
     }
+}
+
+/// Steady rows with each case's S_WS (the table's column `s_mm`, `[wheelrail] s_mm` then left
+/// out) where the group's cases stand at different positions ([`same_but_position`]).
+fn steady_positions(scene: &mut WheelRailScene, group: &[Member]) {
+    if scene.motion != MotionSpec::Rolling || group.iter().all(|m| m.s_ws_mm == group[0].s_ws_mm) {
+        return;
+    }
+    for (row, m) in scene.cases.iter_mut().zip(group) {
+        row.s_mm = Some(m.s_ws_mm);
+    }
+    scene.s_ws_mm = 0.0;
 }
 
 /// The case's S_WS [mm], 0 when never given.
