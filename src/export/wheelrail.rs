@@ -1,7 +1,7 @@
 //! A wheel–rail scene as CONTACT module-1 input (issue 44; CONTACT's user guide, "Specification of
 //! the input file", module 1), one CONTACT case per row of its cases table, as
 //! reference/contact_wheelrail/examples/mbench_a22_left.inp forms its cases: the first case gives
-//! everything (C-P-B-T-N-F-S = C20TN00, T = 3, 0 when frictionless, 1 in a shift from rest (P = 2; in a sequence of shifts P = 0 after the first case, each case's S_WS the position its shifts reached), V-L-D-C-M-Z-E = V022033 (V the
+//! everything (C-P-B-T-N-F-S = C20TN00, T = 3, 0 when frictionless, 1 in a shift from rest (P = 2; in a sequence of shifts P = 0 after the first case, each case's S_WS the position its shifts reached), V-L-D-C-M-Z-E = V022033 (D = 5 with `contact_search = "grid"`; V the
 //! friction's variation: 0, 1 across the rail, 2 along the track), H-G-I-A-O-W-R = 0000321: the
 //! solver's limits, FSTAT = FKIN = mu or NVF control points, POISS and GG of both bodies the scene's, DX, DS with DQREL 1,
 //! the scene's A_SEP, D_SEP, D_COMB, the track, the rail profile with its options (PRFOPT = 2) and
@@ -170,7 +170,9 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
     // Friction of the temperature (L = 6) read by the first case, kept after it (L = 1); the
     // surface temperatures read (H = 3) by the first case, computed again (H = 1) by the later ones.
     let law = if first && s.tangential.temperature_law.is_some() { "6" } else { &ldcmze[..1] };
-    let ldcmze = format!("{law}{}", &ldcmze[1..]);
+    // The grid search (`contact_search = "grid"`) is D = 5, read by the first case, kept after it.
+    let d = if first && s.grid_search { "5" } else { &ldcmze[1..2] };
+    let ldcmze = format!("{law}{d}{}", &ldcmze[2..]);
     let heat = match (s.material.heat.is_some(), first) {
         (true, true) => "3",
         (true, false) => "1",

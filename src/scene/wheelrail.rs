@@ -204,6 +204,9 @@ pub struct WheelRailScene {
     /// The wheel surface of the undeformed distance (`wheel_surface`): `false` the exact one,
     /// `true` CONTACT's mesh of it (`"contact_mesh"`).
     pub wheel_mesh: bool,
+    /// The brute-force grid search instead of the contact locus (`contact_search = "grid"`,
+    /// CONTACT's D = 5).
+    pub grid_search: bool,
     /// Steady rolling, or a shift from rest (`motion`, `s_mm`; CONTACT's T = 3 or 1 with P = 2).
     pub motion: MotionSpec,
     /// S_WS [mm] (`[wheelrail] s_mm`, 0 if absent): where the wheelset stands along the track (on a
@@ -470,6 +473,7 @@ impl WheelRailScene {
             d_comb_mm,
             d_turn_mm,
             wheel_mesh,
+            grid_search,
             frictionless,
             motion,
             s_ws_mm,
@@ -553,6 +557,7 @@ impl WheelRailScene {
             d_comb_mm,
             d_turn_mm,
             wheel_mesh,
+            grid_search,
             motion,
             s_ws_mm,
             vertical,

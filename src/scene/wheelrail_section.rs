@@ -141,6 +141,13 @@ pub const KEYS: Keys = Keys {
             Absent::Choice("exact"),
             r#"the wheel surface the undeformed distance is measured to: the profile's exact surface of revolution, or CONTACT's mesh of it (`wr_ud_planar`: profile points `ds_mm` apart in arc length from the patch's reference, revolved into slices `dx_mm` apart, bilinear between them; up to ~DS²/(8R) off the exact surface, inside a convex wheel and outside a concave flange root); every shipped scene of `scenes/wheelrail` takes the mesh (the gate: worst 0.939 of a bound; on the exact surface the worn flange root of `iestim_site_b` carries FN up to 1.8 % less than CONTACT's): `wheel_surface = "contact_mesh"`"#,
         ),
+        key(
+            "contact_search",
+            "–",
+            Allowed::Choice(&["locus", "grid"], ""),
+            Absent::Choice("locus"),
+            r#"how the interpenetration regions are found: on the contact locus (CONTACT's D = 2: the gap along the wheel's locus over a lateral mesh of step 0.3 `ds_mm`) or by CONTACT's brute-force grid search (D = 5, `m_wr_locatecp`: `compute_round_whl`, `compute_wr_surfc`, `locate_interpen_2d`; the wheel revolved over x in ±R/8 in slices about 1.5 `dx_mm` apart, a gap mesh of step 0.75 `ds_mm` across, the local minima of the gap grown to their bounding boxes; what an out-of-round wheel always takes): `contact_search = "grid"`"#,
+        ),
     ],
 };
 
@@ -156,6 +163,8 @@ pub struct WheelRailSection {
     pub d_comb_mm: f64,
     pub d_turn_mm: f64,
     pub wheel_mesh: bool,
+    /// The brute-force grid search (`contact_search = "grid"`, CONTACT's D = 5).
+    pub grid_search: bool,
     pub frictionless: bool,
     pub motion: MotionSpec,
     /// S_WS (`s_mm`, 0 if absent): the wheelset's position along the track.
@@ -204,6 +213,7 @@ pub fn read(w: Section, varying_rail: bool) -> Result<WheelRailSection, InputErr
     }
     let d_turn_mm = w.opt_num("d_turn_mm")?.unwrap_or(2.0 * d_sep_mm - d_comb_mm);
     let wheel_mesh = w.pick_or_default("wheel_surface")? == "contact_mesh";
+    let grid_search = w.pick_or_default("contact_search")? == "grid";
     let frictionless = w.opt_bool("frictionless")?.unwrap_or(false);
     w.finish()?;
     Ok(WheelRailSection {
@@ -217,6 +227,7 @@ pub fn read(w: Section, varying_rail: bool) -> Result<WheelRailSection, InputErr
         d_comb_mm,
         d_turn_mm,
         wheel_mesh,
+        grid_search,
         frictionless,
         motion,
         s_ws_mm,

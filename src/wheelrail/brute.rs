@@ -1,21 +1,28 @@
-//! The grid-based contact search CONTACT uses for an out-of-round wheel (`use_brute`: a wheel
-//! slices file; m_wr_locatecp, `compute_wr_surfc` and `locate_interpen_2d`): a uniform gap mesh
-//! over the wheel's mesh in x and the rail's lateral range in y (step 0.75 DS), the rail's height
-//! from its profile and the wheel's interpolated from its mesh (bilinear in each cell's logical
+//! The grid-based contact search CONTACT uses for an out-of-round wheel and with D = 5 (`use_brute`;
+//! m_wr_locatecp, `compute_wr_surfc` and `locate_interpen_2d`): a uniform gap mesh over the
+//! wheel's mesh in x (`compute_oor_whl` or `compute_round_whl`) and the rail's lateral range in y
+//! (step 0.75 DS), the rail's height from its profile (a variable rail: each mesh column's
+//! cross-section) and the wheel's interpolated from its mesh (bilinear in each cell's logical
 //! (u, v), `interp_cartz2unif`), the local minima of the gap (`find_gap_locmin`), each minimum's
 //! region of interpenetration grown to its bounding box plus one guard line
 //! (`find_bounding_box_2d`) and its centre weighted by the squared gap (`compute_wgt_center_2d`).
 
 use super::mesh_interp::{interpolate, Mesh, Scheme, Uniform};
-use super::oorwheel::{self, WheelSlices};
+use super::oorwheel;
 use super::patch::Candidate;
 use super::rail::PlacedRail;
+use super::varrail::RailSlices;
 use super::wheel::PlacedWheel;
+use nalgebra::{Point3, Vector3};
 
 /// The gap mesh's lateral step over DS (`fac_dyds` 0.5 times 1.5).
 const STEP_OVER_DS: f64 = 0.75;
 /// The gap where the rail or the wheel has no surface (CONTACT's 999).
 const NO_GAP_MM: f64 = 999.0;
+/// A round wheel's mesh spans x = ±R/8 (`compute_round_whl`: an arc of ±7°).
+const ROUND_HALF_SPAN_OVER_R: f64 = 0.125;
+/// A round wheel's mesh has slices about 1.5 DX apart (`compute_round_whl`).
+const ROUND_STEP_OVER_DX: f64 = 1.5;
 /// Neighbours whose gaps differ by less than this make a plateau (`find_gap_locmin`).
 const PLATEAU_MM: f64 = 1e-6;
 
@@ -48,9 +55,119 @@ impl GapMesh {
     }
 }
 
-/// The gap mesh of `oor` on `wheel` over `rail` (`compute_wr_surfc`).
-pub fn gap_mesh(oor: &WheelSlices, wheel: &PlacedWheel, rail: &PlacedRail, (dx_mm, ds_mm): (f64, f64)) -> GapMesh {
-    let mesh = oorwheel::mesh(oor, wheel, dx_mm);
+/// The wheel's surface the gap mesh is made over: CONTACT's mesh of it in track coordinates,
+/// `slices` nodes along x (fastest), then the profile's points or lateral samples.
+#[derive(Debug, Clone)]
+pub struct WheelMesh {
+    pub slices: usize,
+    pub nodes: Vec<Point3<f64>>,
+}
+
+/// The wheel's mesh the search takes: an out-of-round wheel's ([`oorwheel::mesh`]) or a round
+/// wheel's ([`round_mesh`]).
+pub fn wheel_mesh(wheel: &PlacedWheel, dx_mm: f64) -> WheelMesh {
+    match &wheel.oor {
+        Some(oor) => oorwheel::mesh(oor, wheel, dx_mm),
+        None => round_mesh(wheel, dx_mm),
+    }
+}
+
+/// A round wheel's mesh (`compute_round_whl`, `grid_revolve_profile`): the profile's points
+/// revolved to x = −R/8 … R/8 in the wheel's frame (sin 7°, R the nominal radius) in
+/// round(R / (4 · 1.5 DX) + 2) slices (odd), the point at x on the circle of radius
+/// ρ = R + z_w through the profile point; none where x ≥ ρ.
+pub fn round_mesh(wheel: &PlacedWheel, dx_mm: f64) -> WheelMesh {
+    let radius = wheel.nominal_radius_mm;
+    let half = radius * ROUND_HALF_SPAN_OVER_R;
+    let mut n = (2.0 * half / (ROUND_STEP_OVER_DX * dx_mm) + 2.0).round() as usize;
+    if n.is_multiple_of(2) {
+        n += 1;
+    }
+    let dx = 2.0 * half / (n as f64 - 1.0);
+    let points = wheel.curve.points_mm().unwrap_or_default();
+    let mut nodes = Vec::with_capacity(n * points.len());
+    for &[y, z] in &points {
+        let rho = radius + z;
+        for i in 0..n {
+            let x = -half + i as f64 * dx;
+            // CONTACT's −999 off the circle: far above any rail.
+            let below = if rho * rho > x * x { (rho * rho - x * x).sqrt() } else { -999.0 - radius };
+            nodes.push(wheel.to_track(Vector3::new(x, wheel.y_offset_mm + y, below)));
+        }
+    }
+    WheelMesh { slices: n, nodes }
+}
+
+/// The rail's height on the gap mesh: the placed profile's at every mesh y, the same in every
+/// column; on a variable rail each column's own cross-section at u = S_WS + x_i, placed as the
+/// rail at S_WS (`varprof_intpol_grid_old`). 999 mm where the rail does not reach y.
+fn rail_heights(
+    rail: &PlacedRail,
+    slices: Option<&RailSlices>,
+    (nx, x0, dx): (usize, f64, f64),
+    ys: &[f64],
+) -> Vec<f64> {
+    let ny = ys.len();
+    let mut z = vec![NO_GAP_MM; nx * ny];
+    let mut fill = |i_cols: std::ops::Range<usize>, placed: &PlacedRail| {
+        for (j, &y) in ys.iter().enumerate() {
+            let zj = placed.z_mm(y).unwrap_or(NO_GAP_MM);
+            for i in i_cols.clone() {
+                z[j * nx + i] = zj;
+            }
+        }
+    };
+    match slices {
+        None => fill(0..nx, rail),
+        Some(v) => {
+            for i in 0..nx {
+                if let Some(section) = v.section_at_x(x0 + i as f64 * dx) {
+                    fill(
+                        i..i + 1,
+                        &PlacedRail { curve: &section, origin_mm: rail.origin_mm, angle_rad: rail.angle_rad },
+                    );
+                }
+            }
+        }
+    }
+    z
+}
+
+/// The rail's heights on a gap mesh, kept for the next trial height of the same case (they depend
+/// on the mesh alone): the mesh's (nx, x0, dx, ny, y0) bit for bit, and the heights.
+#[derive(Debug, Clone, Default)]
+pub struct RailHeights {
+    key: Option<[u64; 5]>,
+    z_mm: Vec<f64>,
+}
+
+/// The gap mesh of `wheel` (its mesh: [`wheel_mesh`]) over `rail` (`compute_wr_surfc`): x over
+/// the wheel mesh's range in as many steps as it has slices, y over the rail's lateral range
+/// (step 0.75 DS, centred); the rail's inclination that of `rail` (the rail at the wheelset); the
+/// rail's heights taken from `kept` where its mesh is this one (else made and kept there).
+pub fn gap_mesh(
+    wheel: &PlacedWheel,
+    rail: &PlacedRail,
+    slices: Option<&RailSlices>,
+    (dx_mm, ds_mm): (f64, f64),
+    kept: &mut RailHeights,
+) -> GapMesh {
+    let mesh = wheel_mesh(wheel, dx_mm);
+    if mesh.nodes.is_empty() {
+        // A closed-form wheel has no points to revolve: no mesh, nothing found.
+        let empty = Vec::new();
+        return GapMesh {
+            nx: 0,
+            ny: 0,
+            x0_mm: 0.0,
+            dx_mm: 0.0,
+            y0_mm: 0.0,
+            dy_mm: 0.0,
+            z_rail_mm: empty.clone(),
+            angle_rad: empty.clone(),
+            gap_mm: empty,
+        };
+    }
     let nx = mesh.slices;
     let (x_lo, x_hi) = mesh.nodes.iter().fold((f64::MAX, f64::MIN), |(lo, hi), p| (lo.min(p.x), hi.max(p.x)));
     let dx = (x_hi - x_lo) / (nx as f64 - 1.0);
@@ -58,18 +175,16 @@ pub fn gap_mesh(oor: &WheelSlices, wheel: &PlacedWheel, rail: &PlacedRail, (dx_m
     let dy = STEP_OVER_DS * ds_mm;
     let ny = ((y_hi - y_lo) / dy).floor() as usize + 1;
     let y0 = 0.5 * (y_lo + y_hi) - (ny as f64 - 1.0) * dy / 2.0;
-    let mut z_rail_mm = vec![NO_GAP_MM; nx * ny];
+    let ys: Vec<f64> = (0..ny).map(|j| y0 + j as f64 * dy).collect();
+    let key = [nx as u64, x_lo.to_bits(), dx.to_bits(), ny as u64, y0.to_bits()];
+    if kept.key != Some(key) {
+        *kept = RailHeights { key: Some(key), z_mm: rail_heights(rail, slices, (nx, x_lo, dx), &ys) };
+    }
+    let z_rail_mm = kept.z_mm.clone();
     let mut angle_rad = vec![0.0; nx * ny];
-    for j in 0..ny {
-        let y = y0 + j as f64 * dy;
-        let (z, a) = match (rail.z_mm(y), rail.dz_dy(y)) {
-            (Some(z), Some(d)) => (z, d.atan()),
-            _ => (NO_GAP_MM, 0.0),
-        };
-        for i in 0..nx {
-            z_rail_mm[j * nx + i] = z;
-            angle_rad[j * nx + i] = a;
-        }
+    for (j, &y) in ys.iter().enumerate() {
+        let a = rail.dz_dy(y).map_or(0.0, f64::atan);
+        angle_rad[j * nx..(j + 1) * nx].fill(a);
     }
     let nodes: Vec<[f64; 3]> = mesh.nodes.iter().map(|p| [p.x, p.y, p.z]).collect();
     let uniform = Uniform { x0: x_lo, dx, nx, y0, dy, ny };
@@ -208,4 +323,59 @@ pub fn candidates(g: &GapMesh) -> Vec<Candidate> {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::curve::Curve;
+    use super::super::profile::{read_profile, ProfileKind, ProfileOptions};
+    use super::super::rail::{PlacedRail, RailPlacement, Track};
+    use super::super::search;
+    use super::super::wheel::{PlacedWheel, Pose, WheelDeviation, WheelsetGeometry};
+    use super::*;
+    use std::path::Path;
+
+    /// The Manchester profiles with the right wheel on its flange, yawed (y = 6.2 mm, 14.9 mrad):
+    /// the round wheel's mesh lies on the wheel's surface of revolution, and the grid search's
+    /// deepest interpenetration on the plain rail is the contact locus's within the mesh's steps.
+    #[test]
+    fn the_grid_search_on_a_plain_rail_meets_the_locus() {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/contact_wheelrail/examples");
+        let read = |f: &str, kind| read_profile(&dir.join(f), kind, &ProfileOptions::default()).unwrap();
+        let (wheel, rail) =
+            (read("MBench_S1002_v3.prw", ProfileKind::Wheel), read("MBench_UIC60_v3.prr", ProfileKind::Rail));
+        let track = Track {
+            placement: RailPlacement::Gauge { height_mm: 14.0, width_mm: 1435.0 },
+            cant_rad: 0.0,
+            deviation_mm_rad: [0.0; 3],
+            deviation_velocity: [0.0; 3],
+        };
+        let rail = PlacedRail::place(&rail, &track).unwrap();
+        let g = WheelsetGeometry {
+            flange_back_distance_mm: 1360.0,
+            flange_back_position_mm: -70.0,
+            nominal_radius_mm: 460.0,
+            deviation: WheelDeviation::NONE,
+        };
+        let pose = Pose { y_mm: 6.2, z_mm: -0.30, roll_rad: -0.00071622, yaw_rad: 0.0149 };
+        let placed = PlacedWheel::place(&wheel, &g, &pose);
+        // Every node at its profile point's radius R + z_w from the axle, x within ±R/8.
+        let mesh = round_mesh(&placed, 0.2);
+        assert_eq!(mesh.slices % 2, 1);
+        let points = wheel.points_mm().unwrap();
+        for (k, p) in mesh.nodes.iter().enumerate().step_by(97) {
+            let [_, z_w] = points[k / mesh.slices];
+            let q = placed.to_wheel(p);
+            assert!((q.x.hypot(q.z) - (460.0 + z_w)).abs() < 1e-9, "{q:?}");
+            assert!(q.x.abs() <= 460.0 / 8.0 + 1e-9, "{q:?}");
+        }
+        let grid = gap_mesh(&placed, &rail, None, (0.2, 0.2), &mut RailHeights::default());
+        let locus = search::deepest_mm(&search::scan(&placed, &search::RailMesh::new(&rail, 0.2))).unwrap();
+        let (ours, locus_gap) = (grid.gap_min_mm(), -locus);
+        // Measured 1.6e-4 mm apart (-0.028972 against -0.028809): the bilinear wheel between slices
+        // 0.29 mm and profile points apart on the flange's 60 deg slope, the mesh's 0.15 mm across.
+        assert!(locus_gap < 0.0 && (ours - locus_gap).abs() < 3e-4, "grid {ours}, locus {locus_gap}");
+        let found = candidates(&grid);
+        assert!(!found.is_empty(), "{found:?}");
+    }
 }

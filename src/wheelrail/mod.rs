@@ -121,6 +121,9 @@ pub struct WheelRailCase<'a> {
     pub separation: patch::Separation,
     /// The wheel surface the undeformed distance is measured to.
     pub wheel_surface: wheel_mesh::WheelSurface,
+    /// The brute-force grid search ([`brute`], CONTACT's D = 5) instead of the contact locus; an
+    /// out-of-round wheel takes it always.
+    pub grid_search: bool,
     pub material: Material,
     /// Both bodies' thermal constants where the surface temperatures are computed (CONTACT's H = 3).
     pub heat: Option<[crate::physics::temperature::Thermal; 2]>,
@@ -201,7 +204,7 @@ pub fn normal_contact_with(
     let pose = case.side.pose(&case.pose);
     let full = NormalParams::default().tol;
     let at = |z_mm: f64, normal_tol: f64, solvers: &mut NormalSolvers| {
-        patches_at(case, (&rail, &setup.mesh), &Pose { z_mm, ..pose }, solvers, normal_tol)
+        patches_at(case, (&rail, setup), &Pose { z_mm, ..pose }, solvers, normal_tol)
     };
     let (z_ws_mm, patches) = match (case.vertical, fz_normal_n) {
         (Vertical::Position, _) => (pose.z_mm, at(pose.z_mm, full, solvers)?),
@@ -210,10 +213,10 @@ pub fn normal_contact_with(
                 Some(z) => z,
                 None => {
                     let mut wheel = placed_wheel(case, &Pose { z_mm: 0.0, ..pose });
-                    let deepest = match &wheel.oor {
-                        Some(oor) => Some(-brute::gap_mesh(oor, &wheel, &rail, (case.dx_mm, case.ds_mm)).gap_min_mm())
-                            .filter(|d| *d > -500.0),
-                        None => search::deepest_mm(&samples(case, &rail, &setup.mesh, &mut wheel)),
+                    let deepest = if uses_grid(case) {
+                        Some(-grid(case, &wheel, &rail, setup).gap_min_mm()).filter(|d| *d > -500.0)
+                    } else {
+                        search::deepest_mm(&samples(case, &rail, &setup.mesh, &mut wheel))
                     }
                     .ok_or(WheelRailError::NoOverlap)?;
                     *touch_mm.insert(-deepest)
@@ -266,11 +269,13 @@ pub struct NormalCache {
 
 /// The rail placed in the track and the rail under the gap mesh: what depends on the track and
 /// the grid's DS alone, made once per case and used at every trial height of the wheelset.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug)]
 pub struct RailSetup {
     origin_mm: [f64; 2],
     angle_rad: f64,
     mesh: search::RailMesh,
+    /// The rail's heights on the grid search's last gap mesh ([`brute::RailHeights`]).
+    grid_heights: std::sync::Mutex<brute::RailHeights>,
 }
 
 impl RailSetup {
@@ -278,7 +283,7 @@ impl RailSetup {
     pub fn new(case: &WheelRailCase) -> Result<RailSetup, WheelRailError> {
         let rail = PlacedRail::place(case.rail, &case.track)?;
         let mesh = search::RailMesh::new(&rail, case.ds_mm);
-        Ok(RailSetup { origin_mm: rail.origin_mm, angle_rad: rail.angle_rad, mesh })
+        Ok(RailSetup { origin_mm: rail.origin_mm, angle_rad: rail.angle_rad, mesh, grid_heights: Default::default() })
     }
 
     /// The placed rail of profile `curve` (the case's).
@@ -342,7 +347,7 @@ pub fn geometry_with(
     let pose = Pose { z_mm: z_ws_mm, ..case.side.pose(&case.pose) };
     let rail = setup.placed(case.rail);
     let mut wheel = placed_wheel(case, &pose);
-    geometry_at(case, (&rail, &setup.mesh), &mut wheel)
+    geometry_at(case, (&rail, setup), &mut wheel)
 }
 
 /// The case's wheel at `pose` (in the side's frame), out of round where the case has slices.
@@ -372,16 +377,28 @@ fn samples(
     }
 }
 
+/// Whether the case's search is the grid search (D = 5, or an out-of-round wheel).
+fn uses_grid(case: &WheelRailCase) -> bool {
+    case.grid_search || case.wheel_slices.is_some()
+}
+
+/// The grid search's gap mesh of the case with the wheel placed as `wheel` ([`brute::gap_mesh`]).
+fn grid(case: &WheelRailCase, wheel: &PlacedWheel, rail: &PlacedRail, setup: &RailSetup) -> brute::GapMesh {
+    // A poisoned lock held heights of a mesh made whole before the panic: still good.
+    let mut kept = setup.grid_heights.lock().unwrap_or_else(|e| e.into_inner());
+    brute::gap_mesh(wheel, rail, case.rail_slices.as_ref(), (case.dx_mm, case.ds_mm), &mut kept)
+}
+
 /// The patches' geometry with the wheel placed as `wheel`.
 fn geometry_at(
     case: &WheelRailCase,
-    (rail, mesh): (&PlacedRail, &search::RailMesh),
+    (rail, setup): (&PlacedRail, &RailSetup),
     wheel: &mut PlacedWheel,
 ) -> Result<Vec<PatchGeometry>, WheelRailError> {
-    let candidates: Vec<_> = match &wheel.oor {
-        Some(oor) => brute::candidates(&brute::gap_mesh(oor, wheel, rail, (case.dx_mm, case.ds_mm))),
-        None => {
-            let samples = samples(case, rail, mesh, wheel);
+    let candidates: Vec<_> = match uses_grid(case) {
+        true => brute::candidates(&grid(case, wheel, rail, setup)),
+        false => {
+            let samples = samples(case, rail, &setup.mesh, wheel);
             if samples.is_empty() {
                 return Err(WheelRailError::NoOverlap);
             }
@@ -416,7 +433,7 @@ fn geometry_at(
 /// (right-side frame).
 fn patches_at(
     case: &WheelRailCase,
-    (rail, mesh): (&PlacedRail, &search::RailMesh),
+    (rail, setup): (&PlacedRail, &RailSetup),
     pose: &Pose,
     solvers: &mut NormalSolvers,
     normal_tol: f64,
@@ -425,7 +442,7 @@ fn patches_at(
     let velocity = case.side.velocity(&case.velocity);
     let rail_motion = creepage::RailMotion { origin_mm: rail.origin_mm, velocity: case.track.deviation_velocity };
     let mut out = Vec::new();
-    for (k, geometry) in geometry_at(case, (rail, mesh), &mut wheel)?.into_iter().enumerate() {
+    for (k, geometry) in geometry_at(case, (rail, setup), &mut wheel)?.into_iter().enumerate() {
         let patch = k + 1;
         let (fn_n, pn_mpa) = match solvers.approximate {
             Some(method) => solve_approximate(method, &geometry, &case.material)

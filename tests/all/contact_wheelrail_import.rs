@@ -603,3 +603,20 @@ fn a_wheel_flat_exports_its_pitch_and_imports_back() {
     assert_eq!(values(&WheelRailScene { solvers, ..back }), values(&original));
     assert_eq!(original.cases[25].pitch_rad, -50f64.to_radians());
 }
+
+/// The brute-force grid search (D = 5): `cross_brute` imports with `contact_search = "grid"`, and
+/// the gated scene `two_patches_1` (rail slices with interruptions, FZ prescribed) exports with
+/// D = 5 on its first case and imports back as the same scene.
+#[test]
+fn the_grid_search_imports_and_exports_back() {
+    let dir = common::tempdir("m1_grid_search");
+    let deck = root().join("reference/contact_wheelrail/testbank/examples_s+c/cross_brute.inp");
+    let scene = import(&deck, &dir.join("scenes"), &[]).remove(0);
+    assert!(WheelRailScene::from_file(&scene).unwrap().grid_search);
+    let gated = root().join("scenes/wheelrail/two_patches_1.toml");
+    let (original, back) = round_trip(&gated, &dir.join("back"));
+    assert!(original.grid_search);
+    assert_eq!(values(&back), WheelRailScene { wheel_mesh: false, ..values(&original) });
+    let deck = std::fs::read_to_string(dir.join("back/deck/two_patches_1.inp")).unwrap();
+    assert_eq!(deck.matches("0052033    V-L-D-C-M-Z-E").count(), 1, "{deck}");
+}

@@ -55,9 +55,10 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         assert!(sources.iter().any(|s| s.starts_with(scene)), "{scene}: {sources:?}");
     }
     // No benchmark case is a declared gap (right case 11: the test below); six of the testbank's
-    // cases are, the KPEC deck's KPEC cases 1-3, the varying-friction deck's turned case 3 and the
-    // interrupted crossing's cases 24, 28 (CETA) and the rounded wheel flat's total FY (CONTACT's
-    // residue of a symmetric contact), each bounded at its measured gap (tolerances.toml).
+    // cases are, the KPEC deck's KPEC cases 1-3, the varying-friction deck's turned case 3, the
+    // interrupted crossing's cases 24, 28 (CETA), the rounded wheel flat's total FY (CONTACT's
+    // residue of a symmetric contact) and mbench_brute's case 30 (FN of a two-element patch,
+    // CONTACT's stopping tolerance), each bounded at its measured gap (tolerances.toml).
     let all_gaps: Vec<&&Finding> = ours.iter().filter(|f| f.quantity.ends_with(wheelrail_cases::GAP_SUFFIX)).collect();
     let testbank_gaps = [22, 27, 28, 29, 31, 34];
     let in_testbank = |f: &&&Finding| f.scene.starts_with("testbank_") && testbank_gaps.contains(&f.step.unwrap_or(0));
@@ -66,10 +67,18 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
     let totforce = |f: &&&Finding| f.scene == "m1_totforce_1" && [66, 70, 72, 73, 80].contains(&f.step.unwrap_or(0));
     let intrup = |f: &&&Finding| f.scene == "mbench_intrup_1" && [24, 28].contains(&f.step.unwrap_or(0));
     let rounded_flat = |f: &&&Finding| f.scene == "rounded_flat_d09_1";
+    let brute = |f: &&&Finding| f.scene == "mbench_brute_1" && f.step == Some(30);
     assert!(
-        all_gaps.iter().all(|f| in_testbank(f) || kpec(f) || varfric(f) || totforce(f) || intrup(f) || rounded_flat(f)),
+        all_gaps.iter().all(|f| in_testbank(f)
+            || kpec(f)
+            || varfric(f)
+            || totforce(f)
+            || intrup(f)
+            || rounded_flat(f)
+            || brute(f)),
         "{all_gaps:?}"
     );
+    assert!(all_gaps.iter().filter(|f| brute(f)).all(|f| f.gated && f.passed()), "mbench_brute 30 within its bound");
     assert!(
         all_gaps.iter().filter(|f| intrup(f)).all(|f| f.gated && f.passed()),
         "mbench_intrup 24, 28 within their bound"
@@ -131,6 +140,12 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         "chalmers_flat_fz125_1",
         "mbench_intrup_1",
         "cw_interrupt_1",
+        // CONTACT's brute-force grid search (D = 5) on rail slices, with and without interruptions.
+        "mbench_brute_1",
+        "wing_brute_1",
+        "cross_brute_1",
+        "two_patches_1",
+        "cw_interrupt_2",
     ] {
         let of: Vec<_> = ours.iter().filter(|f| f.scene == scene).collect();
         assert!(of.len() >= 20 && of.iter().all(|f| f.gated && f.passed()), "{scene}: {of:?}");

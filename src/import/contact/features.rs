@@ -751,10 +751,21 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "contact approaches other than the planar one with the contact locus",
         control: "D",
         supported: false,
-        reason: "supported: D = 2 (planar contact, contact locus, weighted reference) or D = 0, 1 keeping it; not 3 (rigid slip on the actual surfaces), 4 (conformal), 5-9 (brute-force and other contact searches)",
+        reason: "supported: D = 2 (planar contact, contact locus, weighted reference), D = 5 (the same with the brute-force grid search, [wheelrail] contact_search = \"grid\") or D = 0, 1 keeping them; not 3 (rigid slip on the actual surfaces), 4 (conformal), 6 (the grid search's larger grid for steep slopes), 7-9 (the initial contact point, oblique views)",
         used: |c| {
             let m = c.state.discretisation.as_ref()?.method;
-            (m != 2).then(|| format!("D (in force) = {m}"))
+            (m != 2 && m != 5).then(|| format!("D (in force) = {m}"))
+        },
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::ContactApproach,
+        name: "the brute-force grid search for the contact patches",
+        control: "D",
+        supported: true,
+        reason: "carried as [wheelrail] contact_search = \"grid\" (D = 5): the round wheel revolved over x in +-R/8 (compute_round_whl), the gap on CONTACT's uniform mesh over it and the rail (a rail slices file: each mesh column's own cross-section), its local minima grown to their bounding boxes (wheelrail::brute, the search of out-of-round wheels); the patches then as with D = 2",
+        used: |c| {
+            let m = c.state.discretisation.as_ref()?.method;
+            (m == 5).then(|| format!("D (in force) = {m}"))
         },
     },
     WheelRailRow {

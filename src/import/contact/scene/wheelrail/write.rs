@@ -54,6 +54,9 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
     if s.wheel_mesh {
         wheelrail.push(("wheel_surface", Value::String("contact_mesh".into())));
     }
+    if s.grid_search {
+        wheelrail.push(("contact_search", Value::String("grid".into())));
+    }
     if s.frictionless {
         wheelrail.push(("frictionless", Value::Boolean(true)));
     }
