@@ -115,7 +115,8 @@ mod tests {
     fn finds_the_height_of_a_hertzian_law() {
         // F = k (z − z0)^1.5: the secant on F^(2/3) is exact after one step.
         let (k, z_touch) = (2.0e6, 0.18);
-        let (z, _, _) = solve(z_touch, 10000.0, FORCE_TOL, None, |z, _| Ok(k * (z - z_touch).max(0.0).powf(1.5))).unwrap();
+        let (z, _, _) =
+            solve(z_touch, 10000.0, FORCE_TOL, None, |z, _| Ok(k * (z - z_touch).max(0.0).powf(1.5))).unwrap();
         assert!((z - (z_touch + (10000.0f64 / k).powf(2.0 / 3.0))).abs() < 1e-12);
     }
 

@@ -309,11 +309,7 @@ fn periodic_inverse(kernel: &Kernel) -> Result<Kernel, ContactError> {
         f.syy[idx] = Complex::new(scale * scale * a / det, 0.0);
         f.sxy[idx] = Complex::new(-scale * scale * b / det, 0.0);
     }
-    let (sxx, syy, sxy) = (
-        std::mem::take(&mut f.sxx),
-        std::mem::take(&mut f.syy),
-        std::mem::take(&mut f.sxy),
-    );
+    let (sxx, syy, sxy) = (std::mem::take(&mut f.sxx), std::mem::take(&mut f.syy), std::mem::take(&mut f.sxy));
     let mut at_offsets = |spectrum: Vec<Complex<f64>>| {
         let periodic = f.real_space(&spectrum);
         let mut out = vec![0.0; (2 * mx - 1) * (2 * my - 1)];

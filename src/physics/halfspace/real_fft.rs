@@ -34,10 +34,15 @@ impl RealFft2 {
         let (r2c, c2r) = (real.plan_fft_forward(nx), real.plan_fft_inverse(nx));
         let mut complex = FftPlanner::<f64>::new();
         let (fwd_y, inv_y) = (complex.plan_fft_forward(ny), complex.plan_fft_inverse(ny));
-        let scratch_len = [r2c.get_scratch_len(), c2r.get_scratch_len(), fwd_y.get_inplace_scratch_len(), inv_y.get_inplace_scratch_len()]
-            .into_iter()
-            .max()
-            .unwrap_or(0);
+        let scratch_len = [
+            r2c.get_scratch_len(),
+            c2r.get_scratch_len(),
+            fwd_y.get_inplace_scratch_len(),
+            inv_y.get_inplace_scratch_len(),
+        ]
+        .into_iter()
+        .max()
+        .unwrap_or(0);
         let zero = Complex::new(0.0, 0.0);
         let nh = nx / 2 + 1;
         RealFft2 {
@@ -110,7 +115,9 @@ fn fft_error(e: FftError) -> ContactError {
     match e {
         FftError::InputBuffer(expected, len) => ContactError::SizeMismatch { name: "real FFT input", len, expected },
         FftError::OutputBuffer(expected, len) => ContactError::SizeMismatch { name: "real FFT output", len, expected },
-        FftError::ScratchBuffer(expected, len) => ContactError::SizeMismatch { name: "real FFT scratch", len, expected },
+        FftError::ScratchBuffer(expected, len) => {
+            ContactError::SizeMismatch { name: "real FFT scratch", len, expected }
+        }
         FftError::InputValues(..) => ContactError::NonFinite("real FFT input's imaginary part"),
     }
 }
