@@ -409,10 +409,7 @@ impl Convolver {
     /// [`Convolver::tangential`] runs in single precision: a preconditioner changes only the path
     /// to the solution, not the solution; [`Convolver::normal`] is refused.
     pub fn inverse_of(kernel: &Kernel) -> Result<Convolver, ContactError> {
-        let inverse = periodic_inverse(kernel)?;
-        let mut c = Convolver::new(&inverse, ConvPath::Direct)?;
-        c.path = ConvPath::Fft;
-        c.fft = Some(FftData::new_tangential(&inverse, fft_len(2 * kernel.mx - 1), fft_len(2 * kernel.my - 1)));
+        let mut c = Convolver::with_spectra(&periodic_inverse(kernel)?, ConvPath::Fft, FftData::new_tangential)?;
         c.fft32 = c.fft.as_ref().map(FftData::to_f32);
         Ok(c)
     }
@@ -443,21 +440,25 @@ impl Convolver {
     /// [`Convolver::auto`] for [`Convolver::normal`] alone: on the FFT path only the normal
     /// kernel is transformed ([`Convolver::tangential`] is refused).
     pub fn normal_only(kernel: &Kernel) -> Result<Convolver, ContactError> {
-        let mut c = Convolver::new(kernel, ConvPath::Direct)?;
-        if auto_path(kernel.mx, kernel.my) == ConvPath::Fft {
-            c.path = ConvPath::Fft;
-            c.fft = Some(FftData::new_normal(kernel, fft_len(2 * kernel.mx - 1), fft_len(2 * kernel.my - 1)));
-        }
-        Ok(c)
+        Convolver::with_spectra(kernel, auto_path(kernel.mx, kernel.my), FftData::new_normal)
     }
 
     /// [`Convolver::auto`] for [`Convolver::tangential`] alone: on the FFT path only the
     /// tangential kernels are transformed ([`Convolver::normal`] is refused).
     pub fn tangential_only(kernel: &Kernel) -> Result<Convolver, ContactError> {
+        Convolver::with_spectra(kernel, auto_path(kernel.mx, kernel.my), FftData::new_tangential)
+    }
+
+    /// Convolver for `kernel` on `path` whose FFT path holds the spectra `spectra` makes alone.
+    fn with_spectra(
+        kernel: &Kernel,
+        path: ConvPath,
+        spectra: fn(&Kernel, usize, usize) -> FftData<f64>,
+    ) -> Result<Convolver, ContactError> {
         let mut c = Convolver::new(kernel, ConvPath::Direct)?;
-        if auto_path(kernel.mx, kernel.my) == ConvPath::Fft {
+        if path == ConvPath::Fft {
             c.path = ConvPath::Fft;
-            c.fft = Some(FftData::new_tangential(kernel, fft_len(2 * kernel.mx - 1), fft_len(2 * kernel.my - 1)));
+            c.fft = Some(spectra(kernel, fft_len(2 * kernel.mx - 1), fft_len(2 * kernel.my - 1)));
         }
         Ok(c)
     }
