@@ -118,13 +118,8 @@ struct FftData<T: Real> {
 
 impl FftData<f64> {
     fn new(kernel: &Kernel, nx: usize, ny: usize) -> FftData<f64> {
-        let mut d = FftData::<f64>::empty(nx, ny);
-        let scale = 1.0 / (nx * ny) as f64;
-        d.szz = d.kernel_spectrum(kernel, &kernel.zz, scale);
-        d.sxx = d.kernel_spectrum(kernel, &kernel.xx, scale);
-        d.syy = d.kernel_spectrum(kernel, &kernel.yy, scale);
-        d.sxy = d.kernel_spectrum(kernel, &kernel.xy, scale);
-        d.pack_pair();
+        let mut d = FftData::new_tangential(kernel, nx, ny);
+        d.szz = d.kernel_spectrum(kernel, &kernel.zz, 1.0 / (nx * ny) as f64);
         d
     }
 
