@@ -236,7 +236,25 @@ fn say(line: impl std::fmt::Display) {
     creepbench::safety::stdout::print(format_args!("{line}\n"));
 }
 
+/// glibc gives freed memory back to the kernel beyond its trim threshold and serves large blocks
+/// by mmap, so the solvers' per-trial buffers (grids of MBs, made and dropped at every trial height
+/// of every case) would be faulted in page by page again at each use. Kept instead: freed memory
+/// stays with the process for the next allocation (`mallopt(3)`: M_TRIM_THRESHOLD, M_MMAP_THRESHOLD).
+#[cfg(all(target_os = "linux", target_env = "gnu"))]
+fn keep_freed_memory() {
+    const KEEP_BYTES: libc::c_int = 1 << 30;
+    // SAFETY: mallopt only sets two of the allocator's parameters; called before any thread starts.
+    unsafe {
+        libc::mallopt(libc::M_TRIM_THRESHOLD, KEEP_BYTES);
+        libc::mallopt(libc::M_MMAP_THRESHOLD, 32 << 20);
+    }
+}
+
+#[cfg(not(all(target_os = "linux", target_env = "gnu")))]
+fn keep_freed_memory() {}
+
 fn main() {
+    keep_freed_memory();
     let cli = Cli::parse();
     // An interrupted run kills the external models it started and removes their folders.
     if let Err(e) = creepbench::safety::interrupt::install() {

@@ -7,7 +7,7 @@
 //! region of interpenetration grown to its bounding box plus one guard line
 //! (`find_bounding_box_2d`) and its centre weighted by the squared gap (`compute_wgt_center_2d`).
 
-use super::mesh_interp::{interpolate, Mesh, Scheme, Uniform};
+use super::mesh_interp::{apply, locate, Located, Mesh, Scheme, Uniform};
 use super::oorwheel;
 use super::patch::Candidate;
 use super::rail::PlacedRail;
@@ -63,20 +63,35 @@ pub struct WheelMesh {
     pub nodes: Vec<Point3<f64>>,
 }
 
-/// The wheel's mesh the search takes: an out-of-round wheel's ([`oorwheel::mesh`]) or a round
-/// wheel's ([`round_mesh`]).
+/// The wheel's mesh the search takes: an out-of-round wheel's ([`oorwheel::mesh_local`]) or a
+/// round wheel's ([`round_local`]), placed in the track.
 pub fn wheel_mesh(wheel: &PlacedWheel, dx_mm: f64) -> WheelMesh {
+    placed(wheel, &local_mesh(wheel, dx_mm))
+}
+
+/// The wheel's mesh in its own frame (from its centre): the number of slices and the nodes.
+fn local_mesh(wheel: &PlacedWheel, dx_mm: f64) -> (usize, Vec<Vector3<f64>>) {
     match &wheel.oor {
-        Some(oor) => oorwheel::mesh(oor, wheel, dx_mm),
-        None => round_mesh(wheel, dx_mm),
+        Some(oor) => oorwheel::mesh_local(oor, wheel, dx_mm),
+        None => round_local(wheel, dx_mm),
     }
 }
 
-/// A round wheel's mesh (`compute_round_whl`, `grid_revolve_profile`): the profile's points
-/// revolved to x = −R/8 … R/8 in the wheel's frame (sin 7°, R the nominal radius) in
+/// A mesh in the wheel's frame placed in the track.
+fn placed(wheel: &PlacedWheel, (slices, local): &(usize, Vec<Vector3<f64>>)) -> WheelMesh {
+    WheelMesh { slices: *slices, nodes: local.iter().map(|&p| wheel.to_track(p)).collect() }
+}
+
+/// A round wheel's mesh ([`round_local`]) placed in the track.
+pub fn round_mesh(wheel: &PlacedWheel, dx_mm: f64) -> WheelMesh {
+    placed(wheel, &round_local(wheel, dx_mm))
+}
+
+/// A round wheel's mesh in its frame (`compute_round_whl`, `grid_revolve_profile`): the profile's
+/// points revolved to x = −R/8 … R/8 (sin 7°, R the nominal radius) in
 /// round(R / (4 · 1.5 DX) + 2) slices (odd), the point at x on the circle of radius
 /// ρ = R + z_w through the profile point; none where x ≥ ρ.
-pub fn round_mesh(wheel: &PlacedWheel, dx_mm: f64) -> WheelMesh {
+fn round_local(wheel: &PlacedWheel, dx_mm: f64) -> (usize, Vec<Vector3<f64>>) {
     let radius = wheel.nominal_radius_mm;
     let half = radius * ROUND_HALF_SPAN_OVER_R;
     let mut n = (2.0 * half / (ROUND_STEP_OVER_DX * dx_mm) + 2.0).round() as usize;
@@ -92,10 +107,10 @@ pub fn round_mesh(wheel: &PlacedWheel, dx_mm: f64) -> WheelMesh {
             let x = -half + i as f64 * dx;
             // CONTACT's −999 off the circle: far above any rail.
             let below = if rho * rho > x * x { (rho * rho - x * x).sqrt() } else { -999.0 - radius };
-            nodes.push(wheel.to_track(Vector3::new(x, wheel.y_offset_mm + y, below)));
+            nodes.push(Vector3::new(x, wheel.y_offset_mm + y, below));
         }
     }
-    WheelMesh { slices: n, nodes }
+    (n, nodes)
 }
 
 /// The rail's height on the gap mesh: the placed profile's at every mesh y, the same in every
@@ -133,12 +148,19 @@ fn rail_heights(
     z
 }
 
-/// The rail's heights on a gap mesh, kept for the next trial height of the same case (they depend
-/// on the mesh alone): the mesh's (nx, x0, dx, ny, y0) bit for bit, and the heights.
+/// What a gap mesh keeps for the next trial height of the same case: the wheel's mesh in its own
+/// frame (it depends on DX, the radius, the lateral offset and the pitch alone), the rail's
+/// heights (they depend on the mesh alone: its (nx, x0, dx, ny, y0) bit for bit) and where the
+/// mesh's points lie in the wheel's mesh (they depend on its nodes' x and y alone, which a
+/// vertical shift of the wheelset leaves bit for bit).
 #[derive(Debug, Clone, Default)]
-pub struct RailHeights {
+pub struct GapMeshKept {
+    local_key: Option<[u64; 4]>,
+    local: (usize, Vec<Vector3<f64>>),
     key: Option<[u64; 5]>,
     z_mm: Vec<f64>,
+    wheel_xy: Vec<[u64; 2]>,
+    wheel_cells: Located,
 }
 
 /// The gap mesh of `wheel` (its mesh: [`wheel_mesh`]) over `rail` (`compute_wr_surfc`): x over
@@ -150,9 +172,16 @@ pub fn gap_mesh(
     rail: &PlacedRail,
     slices: Option<&RailSlices>,
     (dx_mm, ds_mm): (f64, f64),
-    kept: &mut RailHeights,
+    kept: &mut GapMeshKept,
 ) -> GapMesh {
-    let mesh = wheel_mesh(wheel, dx_mm);
+    let local_key =
+        [dx_mm, wheel.nominal_radius_mm, wheel.y_offset_mm, wheel.oor.as_ref().map_or(0.0, |o| o.pitch_rad)]
+            .map(f64::to_bits);
+    if kept.local_key != Some(local_key) {
+        kept.local = local_mesh(wheel, dx_mm);
+        kept.local_key = Some(local_key);
+    }
+    let mesh = placed(wheel, &kept.local);
     if mesh.nodes.is_empty() {
         // A closed-form wheel has no points to revolve: no mesh, nothing found.
         let empty = Vec::new();
@@ -178,7 +207,8 @@ pub fn gap_mesh(
     let ys: Vec<f64> = (0..ny).map(|j| y0 + j as f64 * dy).collect();
     let key = [nx as u64, x_lo.to_bits(), dx.to_bits(), ny as u64, y0.to_bits()];
     if kept.key != Some(key) {
-        *kept = RailHeights { key: Some(key), z_mm: rail_heights(rail, slices, (nx, x_lo, dx), &ys) };
+        let z_mm = rail_heights(rail, slices, (nx, x_lo, dx), &ys);
+        (kept.key, kept.z_mm, kept.wheel_xy, kept.wheel_cells) = (Some(key), z_mm, Vec::new(), Located::default());
     }
     let z_rail_mm = kept.z_mm.clone();
     let mut angle_rad = vec![0.0; nx * ny];
@@ -188,7 +218,13 @@ pub fn gap_mesh(
     }
     let nodes: Vec<[f64; 3]> = mesh.nodes.iter().map(|p| [p.x, p.y, p.z]).collect();
     let uniform = Uniform { x0: x_lo, dx, nx, y0, dy, ny };
-    let z_wheel = interpolate(Mesh { nodes: &nodes, n_u: nx }, &uniform, Scheme::Bilinear);
+    let mesh = Mesh { nodes: &nodes, n_u: nx };
+    let wheel_xy: Vec<[u64; 2]> = nodes.iter().map(|p| [p[0].to_bits(), p[1].to_bits()]).collect();
+    if kept.wheel_xy != wheel_xy {
+        kept.wheel_cells = locate(mesh, &uniform);
+        kept.wheel_xy = wheel_xy;
+    }
+    let z_wheel = apply(mesh, &kept.wheel_cells, Scheme::Bilinear);
     let gap_mm = z_rail_mm
         .iter()
         .zip(&z_wheel)
@@ -205,19 +241,25 @@ pub fn gap_mesh(
 /// on a plateau within 1e-6 mm extending the plateau instead; (i, j) in the order found (x outer).
 fn local_minima(g: &GapMesh) -> Vec<(usize, usize)> {
     let (nx, ny) = (g.nx, g.ny);
-    let gap = &g.gap_mm;
+    // The gap column by column (the scan's order), so that the scan reads it in sequence.
+    let mut gap = vec![0.0; nx * ny];
+    for (j, row) in g.gap_mm.chunks(nx.max(1)).enumerate() {
+        for (i, &v) in row.iter().enumerate() {
+            gap[i * ny + j] = v;
+        }
+    }
     let mut mask = vec![false; nx * ny];
     let mut out = Vec::new();
     for i in 0..nx {
         for j in 0..ny {
-            let k = j * nx + i;
+            let k = i * ny + j;
             let mut is_min = gap[k] < 777.0;
-            // (neighbour, whether an equal gap there rules k out)
+            // (neighbour, whether an equal gap there rules k out): south, north, west, east.
             let neighbours = [
-                (j > 0).then(|| (k - nx, true)),
-                (j + 1 < ny).then(|| (k + nx, false)),
-                (i > 0).then(|| (k - 1, true)),
-                (i + 1 < nx).then(|| (k + 1, false)),
+                (j > 0).then(|| (k - 1, true)),
+                (j + 1 < ny).then(|| (k + 1, false)),
+                (i > 0).then(|| (k - ny, true)),
+                (i + 1 < nx).then(|| (k + ny, false)),
             ];
             for (n, equal_out) in neighbours.into_iter().flatten() {
                 if !is_min {
@@ -307,19 +349,20 @@ fn candidate(g: &GapMesh, (i, j): (usize, usize), [i0, i1, j0, j1]: [usize; 4]) 
 /// The candidate patches of the gap mesh (`locate_interpen_2d` without near misses): from the
 /// deepest local minimum on, each with its bounding box, the minima inside it taken with it.
 pub fn candidates(g: &GapMesh) -> Vec<Candidate> {
-    let mut minima: Vec<Option<(usize, usize)>> = local_minima(g).into_iter().map(Some).collect();
     let gap = |&(i, j): &(usize, usize)| g.gap_mm[j * g.nx + i];
+    // The interpenetrating minima, deepest first (equal gaps in the order found: a stable sort).
+    let mut minima: Vec<(usize, usize)> = local_minima(g).into_iter().filter(|m| gap(m) < 0.0).collect();
+    minima.sort_by(|a, b| gap(a).total_cmp(&gap(b)));
+    let mut taken = vec![false; minima.len()];
     let mut out = Vec::new();
-    while let Some(m) = minima.iter().flatten().copied().min_by(|a, b| gap(a).total_cmp(&gap(b))) {
-        if gap(&m) >= 0.0 {
-            break;
+    for (n, &m) in minima.iter().enumerate() {
+        if taken[n] {
+            continue;
         }
         let bx = bounding_box(g, m);
         out.push(candidate(g, m, bx));
-        for slot in minima.iter_mut() {
-            if slot.is_some_and(|(i, j)| (bx[0]..=bx[1]).contains(&i) && (bx[2]..=bx[3]).contains(&j)) {
-                *slot = None;
-            }
+        for (t, &(i, j)) in taken.iter_mut().zip(&minima) {
+            *t |= (bx[0]..=bx[1]).contains(&i) && (bx[2]..=bx[3]).contains(&j);
         }
     }
     out
@@ -369,7 +412,7 @@ mod tests {
             assert!((q.x.hypot(q.z) - (460.0 + z_w)).abs() < 1e-9, "{q:?}");
             assert!(q.x.abs() <= 460.0 / 8.0 + 1e-9, "{q:?}");
         }
-        let grid = gap_mesh(&placed, &rail, None, (0.2, 0.2), &mut RailHeights::default());
+        let grid = gap_mesh(&placed, &rail, None, (0.2, 0.2), &mut GapMeshKept::default());
         let locus = search::deepest_mm(&search::scan(&placed, &search::RailMesh::new(&rail, 0.2))).unwrap();
         let (ours, locus_gap) = (grid.gap_min_mm(), -locus);
         // Measured 1.6e-4 mm apart (-0.028972 against -0.028809): the bilinear wheel between slices

@@ -74,10 +74,43 @@ impl Mesh<'_> {
     }
 }
 
+/// Where each point of a uniform grid lies in a mesh (`interp_wgt_surf2unif`): the cell (index
+/// along u, row) and the point's logical (u, v) in it; `None` off the mesh.
+#[derive(Debug, Clone, Default)]
+pub struct Located {
+    cells: Vec<Option<(usize, usize, f64, f64)>>,
+}
+
 /// The mesh's f at every point of `out`, from the first cell (u fastest, then rows) that holds
 /// it on or inside its edges; `None` off the mesh.
 pub fn interpolate(m: Mesh, out: &Uniform, scheme: Scheme) -> Vec<Option<f64>> {
-    let mut values = vec![None; out.nx * out.ny];
+    apply(m, &locate(m, out), scheme)
+}
+
+/// The mesh's f at the located points: bilinear or bicubic in each one's cell
+/// (`interp_aply_surf2unif_1d`, `_bicubic`). The mesh's x and y must be those it was located on.
+pub fn apply(m: Mesh, located: &Located, scheme: Scheme) -> Vec<Option<f64>> {
+    let n_u = m.n_u;
+    located
+        .cells
+        .iter()
+        .map(|cell| {
+            cell.map(|(i, r, u, v)| match scheme {
+                Scheme::Bilinear => {
+                    let k = [r * n_u + i, r * n_u + i + 1, (r + 1) * n_u + i + 1, (r + 1) * n_u + i];
+                    let f = k.map(|k| m.nodes[k][2]);
+                    (1.0 - u) * (1.0 - v) * f[0] + u * (1.0 - v) * f[1] + u * v * f[2] + (1.0 - u) * v * f[3]
+                }
+                Scheme::Bicubic => m.bicubic(i, r, u, v),
+            })
+        })
+        .collect()
+}
+
+/// Each point of `out` located in the first cell (u fastest, then rows) that holds it on or
+/// inside its edges (cells with a non-finite node or no area skipped).
+pub fn locate(m: Mesh, out: &Uniform) -> Located {
+    let mut cells = vec![None; out.nx * out.ny];
     let n_v = m.n_v();
     let xy = |k: usize| [m.nodes[k][0], m.nodes[k][1]];
     for r in 0..n_v.saturating_sub(1) {
@@ -106,20 +139,14 @@ pub fn interpolate(m: Mesh, out: &Uniform, scheme: Scheme) -> Vec<Option<f64>> {
                 for ii in first(min(bx), out.x0, out.dx)..=last(max(bx), out.x0, out.dx, out.nx) {
                     let e = jj as usize * out.nx + ii as usize;
                     let p = [out.x0 + ii as f64 * out.dx, out.y0 + jj as f64 * out.dy];
-                    if values[e].is_some() || !inside(p) {
+                    if cells[e].is_some() || !inside(p) {
                         continue;
                     }
                     let (u, v) = logical_uv(c[0], c[1], c[2], c[3], p);
-                    values[e] = Some(match scheme {
-                        Scheme::Bilinear => {
-                            let f = k.map(|k| m.nodes[k][2]);
-                            (1.0 - u) * (1.0 - v) * f[0] + u * (1.0 - v) * f[1] + u * v * f[2] + (1.0 - u) * v * f[3]
-                        }
-                        Scheme::Bicubic => m.bicubic(i, r, u, v),
-                    });
+                    cells[e] = Some((i, r, u, v));
                 }
             }
         }
     }
-    values
+    Located { cells }
 }

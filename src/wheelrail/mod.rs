@@ -274,8 +274,8 @@ pub struct RailSetup {
     origin_mm: [f64; 2],
     angle_rad: f64,
     mesh: search::RailMesh,
-    /// The rail's heights on the grid search's last gap mesh ([`brute::RailHeights`]).
-    grid_heights: std::sync::Mutex<brute::RailHeights>,
+    /// What the grid search's last gap mesh keeps for the next trial height ([`brute::GapMeshKept`]).
+    grid_heights: std::sync::Mutex<brute::GapMeshKept>,
 }
 
 impl RailSetup {

@@ -5,7 +5,6 @@
 //! z = r cos θ, then `cartgrid_pitch`), and CONTACT's mesh of it around the contact
 //! (`compute_oor_whl`: θ = −PITCH ± 0.2 rad in slices about 4 DX apart).
 
-use super::brute::WheelMesh;
 use super::mesh_interp::{interpolate, Mesh, Scheme, Uniform};
 use super::patch::{PatchFrame, PatchGrid};
 use super::profile::slices::Slices;
@@ -51,10 +50,10 @@ fn lateral_parameters(slices: &Slices) -> Vec<f64> {
     (0..slices.samples()).map(|k| k as f64).collect()
 }
 
-/// CONTACT's mesh of the out-of-round wheel (`compute_oor_whl`) placed in the track for elements
-/// of `dx_mm`: angles θ = −PITCH − 0.2 + k dθ (fastest; nslc = round(0.4 R / (4 DX) + 2), odd),
-/// then the lateral parameters.
-pub fn mesh(oor: &WheelSlices, wheel: &PlacedWheel, dx_mm: f64) -> WheelMesh {
+/// CONTACT's mesh of the out-of-round wheel (`compute_oor_whl`) for elements of `dx_mm`, in the
+/// wheel's frame from its centre: angles θ = −PITCH − 0.2 + k dθ (fastest; nslc =
+/// round(0.4 R / (4 DX) + 2), odd), then the lateral parameters; the number of angles and the nodes.
+pub fn mesh_local(oor: &WheelSlices, wheel: &PlacedWheel, dx_mm: f64) -> (usize, Vec<Vector3<f64>>) {
     let radius = wheel.nominal_radius_mm;
     let span = 2.0 * MESH_HALF_ANGLE_RAD;
     let mut n = (span * radius / (MESH_STEP_OVER_DX * dx_mm) + 2.0).round() as usize;
@@ -76,10 +75,10 @@ pub fn mesh(oor: &WheelSlices, wheel: &PlacedWheel, dx_mm: f64) -> WheelMesh {
             let (y, z) = points[j];
             let rho = radius + z;
             let (s, c) = phi.sin_cos();
-            nodes.push(wheel.to_track(Vector3::new(rho * s, wheel.y_offset_mm + y, rho * c)));
+            nodes.push(Vector3::new(rho * s, wheel.y_offset_mm + y, rho * c));
         }
     }
-    WheelMesh { slices: n, nodes }
+    (n, nodes)
 }
 
 /// The wheel's n (distance along the plane's normal from the plane) at every element centre of

@@ -389,6 +389,10 @@ pub fn grid(
 /// outside any contact.
 const MISSED_MM: f64 = 10.0;
 
+/// How far beyond the grid's lateral range a column's cross-section is kept [mm]
+/// ([`grid_rail_y_range`]).
+const COLUMN_MARGIN_MM: f64 = 5.0;
+
 /// The wheel's n at every element where it is CONTACT's mesh: of an out-of-round wheel always
 /// (around the region's lateral ends `y_mm`), of a round one with [`WheelSurface::ContactMesh`].
 fn meshed_wheel(
@@ -439,11 +443,33 @@ pub fn undeformed_distance(
 }
 
 /// Each grid column's cross-section of a variable rail, at track x = x_ref + x_i
-/// (`varprof_get_loc_z_at_xy`: u = S_WS + x, held to the first and last slice).
-fn column_sections(v: &RailSlices, frame: &PatchFrame, grid: &PatchGrid) -> Result<Vec<Profile>, WheelRailError> {
+/// (`varprof_get_loc_z_at_xy`: u = S_WS + x, held to the first and last slice), cut to the
+/// samples near the grid's lateral range ([`RailSlices::section_near_x`]).
+fn column_sections(
+    v: &RailSlices,
+    frame: &PatchFrame,
+    grid: &PatchGrid,
+    rail: &PlacedRail,
+) -> Result<Vec<Profile>, WheelRailError> {
+    let y_r = grid_rail_y_range(frame, grid, rail);
     (0..grid.mx)
-        .map(|i| v.section_at_x(frame.origin.x + grid.centre(i, 0).0).ok_or(WheelRailError::NoContact))
+        .map(|i| v.section_near_x(frame.origin.x + grid.centre(i, 0).0, y_r).ok_or(WheelRailError::NoContact))
         .collect()
+}
+
+/// The rail profile's lateral range [mm] under the grid's corners, widened by
+/// [`COLUMN_MARGIN_MM`] for the lines along n that meet the rail beside them.
+fn grid_rail_y_range(frame: &PatchFrame, grid: &PatchGrid, rail: &PlacedRail) -> [f64; 2] {
+    let (s, c) = rail.angle_rad.sin_cos();
+    let [oy, oz] = rail.origin_mm;
+    let corners = [(0, 0), (grid.mx - 1, 0), (0, grid.ms - 1), (grid.mx - 1, grid.ms - 1)];
+    let (lo, hi) = corners.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(i, j)| {
+        let (x, s_mm) = grid.centre(i, j);
+        let p = frame.at(x, s_mm);
+        let y_r = c * (p.y - oy) + s * (p.z - oz);
+        (lo.min(y_r), hi.max(y_r))
+    });
+    [lo - COLUMN_MARGIN_MM, hi + COLUMN_MARGIN_MM]
 }
 
 /// [`undeformed_distance`] on a variable rail: the rail met along n in each column's own
@@ -524,7 +550,7 @@ pub fn build(
     let meshed = meshed_wheel(&frame, &grid, wheel, surface, c.y_mm);
     let mut h_mm = match slices {
         Some(v) => {
-            let columns = column_sections(v, &frame, &grid)?;
+            let columns = column_sections(v, &frame, &grid, rail)?;
             let placed: Vec<PlacedRail> = columns
                 .iter()
                 .map(|p| PlacedRail { curve: p, origin_mm: rail.origin_mm, angle_rad: rail.angle_rad })

@@ -62,6 +62,12 @@ impl RailSlices<'_> {
         self.slices.section_at(self.s_ws_mm + x_mm).ok()
     }
 
+    /// [`Self::section_at_x`] cut to the samples near the lateral range `y_r_mm` (rail profile y)
+    /// ([`Slices::section_near`]).
+    pub fn section_near_x(&self, x_mm: f64, y_r_mm: [f64; 2]) -> Option<Profile> {
+        self.slices.section_near(self.s_ws_mm + x_mm, y_r_mm).ok()
+    }
+
     /// The surface's height and dz/dx at rail point (x, y_r) (`varprof_get_z_at_xy`: a forward
     /// difference of 0.01 mm; 987 mm off the surface).
     fn z_and_dz_dx(&self, x_mm: f64, y_r_mm: f64) -> (f64, f64) {

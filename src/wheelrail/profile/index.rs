@@ -19,17 +19,25 @@ impl SegmentIndex {
         let buckets = segment_y.len().max(1);
         let width_mm = if hi > lo { (hi - lo) / buckets as f64 } else { 1.0 };
         let mut index = SegmentIndex { y0_mm: lo, width_mm, starts: vec![0; buckets + 1], items: Vec::new() };
-        let mut lists = vec![Vec::new(); buckets];
-        for (i, &(a, b)) in segment_y.iter().enumerate() {
-            // One bucket more on each side than the ends' own: a margin against rounding.
-            let (first, last) = (index.bucket(a).saturating_sub(1), (index.bucket(b) + 1).min(buckets - 1));
-            for list in &mut lists[first..=last] {
-                list.push(i);
+        // One bucket more on each side than the ends' own: a margin against rounding.
+        let span = |&(a, b): &(f64, f64)| (index.bucket(a).saturating_sub(1), (index.bucket(b) + 1).min(buckets - 1));
+        let spans: Vec<(usize, usize)> = segment_y.iter().map(span).collect();
+        // Counted first, then filled in segment order: each bucket's list ascending.
+        for &(first, last) in &spans {
+            for k in first..=last {
+                index.starts[k + 1] += 1;
             }
         }
-        for (k, list) in lists.iter().enumerate() {
-            index.items.extend(list);
-            index.starts[k + 1] = index.items.len();
+        for k in 0..buckets {
+            index.starts[k + 1] += index.starts[k];
+        }
+        let mut next = index.starts[..buckets].to_vec();
+        index.items = vec![0; index.starts[buckets]];
+        for (i, &(first, last)) in spans.iter().enumerate() {
+            for slot in &mut next[first..=last] {
+                index.items[*slot] = i;
+                *slot += 1;
+            }
         }
         index
     }

@@ -8,6 +8,7 @@
 //! Units are in the names: `_mm` for lengths, `_rad` for angles, `_per_mm` for curvatures.
 
 mod approx;
+mod band;
 pub mod canonical;
 pub mod clean;
 pub mod error;
@@ -277,11 +278,11 @@ impl Profile {
         let y = spline::fit(&s_mm, &ys, &breaks, lambda, &wgt);
         let z = spline::fit(&s_mm, &zs, &breaks, lambda, &wgt);
         let spline = ParamSpline { s: s_mm.clone(), y, z };
-        let segment_y: Vec<(f64, f64)> = (0..s_mm.len() - 1).map(|i| spline.y_bounds(i)).collect();
+        let pieces: Vec<spline::Pieces> = (0..s_mm.len() - 1).map(|i| spline.monotone_pieces(i)).collect();
+        let segment_y: Vec<(f64, f64)> = pieces.iter().map(spline::Pieces::y_bounds).collect();
         let y_range =
             segment_y.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(a, b)| (lo.min(a), hi.max(b)));
         let index = index::SegmentIndex::new(&segment_y);
-        let pieces = (0..s_mm.len() - 1).map(|i| spline.monotone_pieces(i)).collect();
         Profile(Arc::new(Data {
             file: file.to_string(),
             kind,

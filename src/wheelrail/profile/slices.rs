@@ -20,6 +20,7 @@
 //! with the approximating spline (`U_INTPOL = 2`, the wheel-flat files).
 
 use super::approx::Approximating;
+use super::band::{first_root, Band};
 use super::error::ProfileError;
 use super::lines::{self, At, Line};
 use super::masked::Masked;
@@ -37,6 +38,9 @@ pub const MAX_SLICES: usize = 4999;
 
 /// The largest step between resampled points along a part [mm] (`ds_max2d`).
 pub const RESAMPLE_STEP_MM: f64 = 0.5;
+
+/// The samples kept on each side of a lateral range by [`Slices::section_near`]: (2 − √3)^40 ≈ 1e-23.
+pub const WINDOW_PAD_SAMPLES: usize = 40;
 
 /// The smallest distance between successive slices [mm or rad] (`tiny_ds`).
 const TINY_DS: f64 = 1e-3;
@@ -272,19 +276,47 @@ impl Slices {
     /// through them (`varprof_intpol_xunif` with one position: no kinks, λ = SMOOTH unweighted;
     /// with SMOOTH > 0 its points are the smoothed samples, as CONTACT replaces them).
     pub fn section_at(&self, u: f64) -> Result<Profile, ProfileError> {
-        let (y, z) = match &self.masked {
+        let (y, z) = self.section_samples(u)?;
+        self.section_through(u, &y, &z)
+    }
+
+    /// [`Self::section_at`] cut to the samples near the lateral range `[lo, hi]` (profile y, mm):
+    /// from the first to the last sample inside it, [`WINDOW_PAD_SAMPLES`] more on each side.
+    /// The interpolating spline (λ = 0) feels a sample's change less by 2 − √3 per node, so the
+    /// cut spline equals the whole one to the last bits inside the range; with λ > 0, the whole.
+    pub fn section_near(&self, u: f64, [lo, hi]: [f64; 2]) -> Result<Profile, ProfileError> {
+        let (y, z) = self.section_samples(u)?;
+        let first = y.iter().position(|&v| v >= lo && v <= hi);
+        let last = y.iter().rposition(|&v| v >= lo && v <= hi);
+        match (first, last) {
+            (Some(a), Some(b)) if self.lambda.abs() <= 1e-10 => {
+                let a = a.saturating_sub(WINDOW_PAD_SAMPLES);
+                let b = (b + WINDOW_PAD_SAMPLES + 1).min(y.len());
+                self.section_through(u, &y[a..b], &z[a..b])
+            }
+            _ => self.section_through(u, &y, &z),
+        }
+    }
+
+    /// The samples of the cross-section at `u` (with interruptions, those the surface has).
+    fn section_samples(&self, u: f64) -> Result<(Vec<f64>, Vec<f64>), ProfileError> {
+        match &self.masked {
             Some(masked) => match present_samples(masked, u) {
-                (y, z, None) => (y, z),
+                (y, z, None) => Ok((y, z)),
                 (_, _, Some(j)) => {
                     let what = format!("the cross-section at u = {u}: its sample {}", j + 1);
                     let allowed = "a cross-section without missing points between its first and last";
-                    return Err(ProfileError::profile(&self.file, what, "missing", allowed));
+                    Err(ProfileError::profile(&self.file, what, "missing", allowed))
                 }
             },
-            None => self.samples_at(u),
-        };
+            None => Ok(self.samples_at(u)),
+        }
+    }
+
+    /// The profile spline through samples of the cross-section at `u`.
+    fn section_through(&self, u: f64, y: &[f64], z: &[f64]) -> Result<Profile, ProfileError> {
         let name = format!("{} at {u}", self.file);
-        Profile::section(&name, self.kind, &y, &z, self.lambda).ok_or_else(|| {
+        Profile::section(&name, self.kind, y, z, self.lambda).ok_or_else(|| {
             ProfileError::profile(&self.file, "the interpolated cross-section", u, "distinct finite points")
         })
     }
@@ -347,9 +379,7 @@ impl Slices {
     fn band(&self, k: usize) -> &Band {
         self.bands[k].get_or_init(|| {
             let (ys, zs) = self.paths.as_ref().expect("bands only with paths");
-            let (f_y, m_y) = band_of(&self.across, ys, k);
-            let (f_z, m_z) = band_of(&self.across, zs, k);
-            Band { f_y, m_y, f_z, m_z }
+            Band::new(&self.across, (ys, zs), k, self.u[k + 1] - self.u[k])
         })
     }
 }
@@ -364,107 +394,6 @@ fn present_samples(masked: &Masked, u: f64) -> (Vec<f64>, Vec<f64>, Option<usize
     let hole = (first..=last).find(|&j| s[j].is_none());
     let (y, z) = s[first..=last].iter().map(|p| p.unwrap_or((f64::NAN, f64::NAN))).unzip();
     (y, z, hole)
-}
-
-/// Between two slices the samples are cubics in t = u − u_k, and the lateral spline's second
-/// derivatives (linear in the samples) cubics too: `f[j]`, `m[j]` their coefficients.
-#[derive(Debug, Clone)]
-struct Band {
-    f_y: Vec<[f64; 4]>,
-    m_y: Vec<[f64; 4]>,
-    f_z: Vec<[f64; 4]>,
-    m_z: Vec<[f64; 4]>,
-}
-
-/// The cubics in t of interval `k` of the paths, and of the lateral not-a-knot spline's second
-/// derivatives through them.
-fn band_of(across: &NotAKnot, paths: &[Curve], k: usize) -> (Vec<[f64; 4]>, Vec<[f64; 4]>) {
-    let f: Vec<[f64; 4]> = paths.iter().map(|c| c.cubic(k).0).collect();
-    let mut m = vec![[0.0; 4]; f.len()];
-    for p in 0..4 {
-        let column: Vec<f64> = f.iter().map(|c| c[p]).collect();
-        for (mj, v) in m.iter_mut().zip(across.curve(&column).second_derivatives()) {
-            mj[p] = *v;
-        }
-    }
-    (f, m)
-}
-
-/// c0 + c1 t + c2 t² + c3 t³.
-fn poly([c0, c1, c2, c3]: [f64; 4], t: f64) -> f64 {
-    ((c3 * t + c2) * t + c1) * t + c0
-}
-
-impl Band {
-    /// The lateral spline's segment j (sites j, j + 1: length 1) at t, as a cubic in its local
-    /// parameter (`notaknot::Curve::cubic`) from the values and second derivatives at its ends.
-    fn segment(f: &[[f64; 4]], m: &[[f64; 4]], j: usize, t: f64) -> [f64; 4] {
-        let (f0, f1, m0, m1) = (poly(f[j], t), poly(f[j + 1], t), poly(m[j], t), poly(m[j + 1], t));
-        [f0, (f1 - f0) - (2.0 * m0 + m1) / 6.0, m0 / 2.0, (m1 - m0) / 6.0]
-    }
-
-    /// [`Slices::surface_z_at`] at t in this band: the first lateral segment that reaches y. A
-    /// segment whose cubic cannot reach y (it lies within |M₀| + |M₁| times 0.0642 of its chord,
-    /// s(1 − s)(2 − s)/6 ≤ 0.0642 on [0, 1]) is passed over without solving.
-    fn z_at(&self, t: f64, y: f64) -> Option<f64> {
-        for j in 0..self.f_y.len() - 1 {
-            let (f0, f1) = (poly(self.f_y[j], t), poly(self.f_y[j + 1], t));
-            let (m0, m1) = (poly(self.m_y[j], t), poly(self.m_y[j + 1], t));
-            let bow = 0.065 * (m0.abs() + m1.abs()) + 1e-9 * (1.0 + y.abs());
-            if y < f0.min(f1) - bow || y > f0.max(f1) + bow {
-                continue;
-            }
-            let cy = Band::segment(&self.f_y, &self.m_y, j, t);
-            if let Some(s) = first_root((cy, 1.0), y) {
-                return Some(poly(Band::segment(&self.f_z, &self.m_z, j, t), s));
-            }
-        }
-        None
-    }
-}
-
-/// The smallest t in [0, h] where c0 + c1 t + c2 t² + c3 t³ = y (each monotone piece between
-/// the cubic's turning points bisected to the last bit).
-fn first_root(([c0, c1, c2, c3], h): ([f64; 4], f64), y: f64) -> Option<f64> {
-    let g = |t: f64| ((c3 * t + c2) * t + c1) * t + c0 - y;
-    // Turning points: 3 c3 t² + 2 c2 t + c1 = 0.
-    let mut cuts = vec![0.0];
-    let (a, b, c) = (3.0 * c3, 2.0 * c2, c1);
-    if a.abs() > 1e-300 {
-        let disc = b * b - 4.0 * a * c;
-        if disc > 0.0 {
-            let r = disc.sqrt();
-            let mut ts = [(-b - r) / (2.0 * a), (-b + r) / (2.0 * a)];
-            ts.sort_by(f64::total_cmp);
-            cuts.extend(ts.into_iter().filter(|&t| t > 0.0 && t < h));
-        }
-    } else if b.abs() > 1e-300 && -c / b > 0.0 && -c / b < h {
-        cuts.push(-c / b);
-    }
-    cuts.push(h);
-    for w in cuts.windows(2) {
-        let (mut lo, mut hi) = (w[0], w[1]);
-        let (glo, ghi) = (g(lo), g(hi));
-        if glo == 0.0 {
-            return Some(lo);
-        }
-        if glo.signum() == ghi.signum() && ghi != 0.0 {
-            continue;
-        }
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi {
-                break;
-            }
-            if g(mid).signum() == glo.signum() {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        return Some(0.5 * (lo + hi));
-    }
-    None
 }
 
 /// The lines of a slices file read in order.

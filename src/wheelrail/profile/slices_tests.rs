@@ -135,3 +135,30 @@ fn a_wheels_slices_cover_its_circumference_as_contact_requires() {
     let e = read_slices(&path, ProfileKind::Wheel, &opts()).unwrap_err().to_string();
     assert!(e.contains("153") && e.contains("[-3, 3.5]"), "{e}");
 }
+
+/// The surface's height at (u, y) (the bands with their reach) is the closed form's, and a
+/// cross-section cut to a lateral range ([`Slices::section_near`]) is the whole one inside it.
+#[test]
+fn the_surface_and_a_cut_cross_section_are_the_closed_forms() {
+    let dir = tempfile::tempdir().unwrap();
+    let dz = |u: f64| 0.5 + 0.01 * u - 2e-4 * u * u + 1e-6 * u * u * u;
+    let path = write(dir.path(), &U, dz, HEADER, "");
+    let s = read_slices(&path, ProfileKind::Rail, &opts()).unwrap();
+    for u in [-40.0, -33.3, -10.0, 2.5, 17.0, 99.0, 100.0] {
+        // Inside the ends, where each slice's profile spline (in arc length) holds the parabola.
+        for k in 0..=100 {
+            let y = -25.0 + 0.5 * k as f64;
+            let want = 0.002 * y * y + dz(u);
+            let got = s.surface_z_at(u, y).unwrap();
+            assert!((got - want).abs() < 1e-5, "u {u} y {y}: {got} vs {want}");
+        }
+        assert_eq!(s.surface_z_at(u, 31.0), None, "beyond the profile at u {u}");
+        let whole = s.section_at(u).unwrap();
+        let cut = s.section_near(u, [-2.0, 4.0]).unwrap();
+        assert!(cut.y_mm().len() < whole.y_mm().len(), "{} of {}", cut.y_mm().len(), whole.y_mm().len());
+        for y in [-2.0, -0.7, 0.0, 1.3, 4.0] {
+            let (a, b) = (whole.z_at(y).unwrap(), cut.z_at(y).unwrap());
+            assert!((a - b).abs() <= 1e-12 * (1.0 + a.abs()), "u {u} y {y}: {a} vs {b}");
+        }
+    }
+}

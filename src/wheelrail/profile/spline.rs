@@ -255,20 +255,6 @@ impl ParamSpline {
         (self.y.eval(i, t), self.z.eval(i, t))
     }
 
-    /// The y-range of segment `i` (its interior extrema included).
-    pub fn y_bounds(&self, i: usize) -> (f64, f64) {
-        let h = self.s[i + 1] - self.s[i];
-        let mut lo = self.y.a0[i].min(self.y.eval(i, h)[0]);
-        let mut hi = self.y.a0[i].max(self.y.eval(i, h)[0]);
-        let (roots, n) = critical_points(&self.y, i, h);
-        for &t in &roots[..n] {
-            let v = self.y.eval(i, t)[0];
-            lo = lo.min(v);
-            hi = hi.max(v);
-        }
-        (lo, hi)
-    }
-
     /// Every s on segment `i` where y(s) = `y` (each monotone piece of the cubic searched).
     pub fn s_at_y_on(&self, i: usize, y: f64) -> Vec<f64> {
         let mut out = Vec::new();
@@ -315,6 +301,15 @@ pub struct Pieces {
     y: [f64; 4],
 }
 
+impl Pieces {
+    /// The segment's y-range, its interior extrema included: y at its ends and turning points.
+    pub fn y_bounds(&self) -> (f64, f64) {
+        let (first, last) = (self.y[0], self.y[self.n + 1]);
+        let inside = &self.y[1..=self.n];
+        inside.iter().fold((first.min(last), first.max(last)), |(lo, hi), &v| (lo.min(v), hi.max(v)))
+    }
+}
+
 /// The zeros of f′ on segment `i` strictly inside (0, h), ascending: the first `n` of the array.
 fn critical_points(c: &Cubic, i: usize, h: f64) -> ([f64; 2], usize) {
     let (a1, a2, a3) = (c.a1[i], c.a2[i], c.a3[i]);
@@ -355,7 +350,11 @@ fn critical_points(c: &Cubic, i: usize, h: f64) -> ([f64; 2], usize) {
 /// steps from the chord's zero, kept inside the bracket of the sign change (bisection where a step
 /// would leave it), to a step of a few units in the last place of the segment's length.
 /// `g` returns the value and the derivative; its values at the ends are given with them.
-fn bracketed_root(g: &impl Fn(f64) -> (f64, f64), (lo, glo): (f64, f64), (hi, ghi): (f64, f64)) -> Option<f64> {
+pub(super) fn bracketed_root(
+    g: &impl Fn(f64) -> (f64, f64),
+    (lo, glo): (f64, f64),
+    (hi, ghi): (f64, f64),
+) -> Option<f64> {
     if glo == 0.0 {
         return Some(lo);
     }
@@ -501,7 +500,7 @@ mod tests {
         let r = sp.s_at_y_on(0, 0.0);
         assert_eq!(r.len(), 2);
         assert!(r[0].abs() < 1e-15 && (r[1] - 1.0).abs() < 1e-14, "{r:?}");
-        let (lo, hi) = sp.y_bounds(0);
+        let (lo, hi) = sp.monotone_pieces(0).y_bounds();
         assert!((lo + 2.0 / (3.0 * 3f64.sqrt())).abs() < 1e-14 && (hi - 6.0).abs() < 1e-14);
     }
 }
