@@ -7,7 +7,11 @@
 //! the rail placed beforehand; `rail_setup` — placing the rail by its gauge point and its gap
 //! mesh, which depend on the track alone (once per case, not per position);
 //! `all_models_21_positions` — the 21 cases of both wheels with every model of the scenes
-//! (target: seconds). docs/wheelrail.md "Speed" has the measured numbers.
+//! (target: seconds). Issue 45 item 5, each scene with the exact solver alone (target: at most
+//! 1/10 of CONTACT's time for the same deck): `crossing_35_positions/locus` (mbench_locus_1, the
+//! S1002 wheel over the UK crossing's slices), `crossing_35_positions/grid` (mbench_brute_1, the
+//! same with the grid search) and `wheel_flat_26_positions` (wheelflat_1, the Chalmers wheel
+//! flat). docs/wheelrail.md "Speed" has the measured numbers.
 //! Run: `cargo bench -p creepbench-benches --bench wheelrail`.
 
 use creepbench::pipeline::wheelrail::solve;
@@ -24,7 +28,12 @@ use std::time::Duration;
 const CASE: u64 = 11;
 
 fn scene(side: &str) -> WheelRailScene {
-    let path = Path::new(creepbench_benches::ROOT).join(format!("scenes/wheelrail/mbench_a22_{side}.toml"));
+    shipped(&format!("mbench_a22_{side}"))
+}
+
+/// The shipped wheel–rail scene `name`.
+fn shipped(name: &str) -> WheelRailScene {
+    let path = Path::new(creepbench_benches::ROOT).join(format!("scenes/wheelrail/{name}.toml"));
     let text = std::fs::read_to_string(&path).unwrap();
     WheelRailScene::from_toml(&text, path.parent().unwrap()).unwrap()
 }
@@ -62,5 +71,21 @@ fn bench_scenes(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench_case, bench_scenes);
+/// The crossing and the wheel flat, the exact solver alone on every position.
+fn bench_in_shape(c: &mut Criterion) {
+    let mut g = c.benchmark_group("wheelrail");
+    g.sample_size(10).measurement_time(Duration::from_secs(60));
+    for (label, name) in [
+        ("crossing_35_positions/locus", "mbench_locus_1"),
+        ("crossing_35_positions/grid", "mbench_brute_1"),
+        ("wheel_flat_26_positions", "wheelflat_1"),
+    ] {
+        let mut s = shipped(name);
+        s.solvers = vec!["contact".to_string()];
+        g.bench_function(label, |b| b.iter(|| run_scene(black_box(&s)).unwrap().cases.len()));
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench_case, bench_scenes, bench_in_shape);
 criterion_main!(benches);
