@@ -26,14 +26,23 @@ fn write(dir: &Path, u: &[f64], dz: impl Fn(f64) -> f64, header: &str, tail: &st
 const HEADER: &str = "0.0 1.0  U_OFFSET, U_SCALE\n 6   NSLC\n 0 0 0  NFEAT\n 1  U_INTPOL\n";
 const U: [f64; 6] = [-40.0, -10.0, 0.0, 5.0, 30.0, 100.0];
 
+/// The height shift along the track of [`cubic_rail`]: a cubic in u.
+fn dz(u: f64) -> f64 {
+    0.5 + 0.01 * u - 2e-4 * u * u + 1e-6 * u * u * u
+}
+
+/// The slices at [`U`] of the plain table shifted by [`dz`] (read, then their files removed).
+fn cubic_rail() -> Slices {
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(dir.path(), &U, dz, HEADER, "");
+    read_slices(&path, ProfileKind::Rail, &opts()).unwrap()
+}
+
 /// A rail whose height changes as a cubic along the track is interpolated exactly between its
 /// slices (not-a-knot ends reproduce cubics), and held beyond the first and last slice.
 #[test]
 fn a_height_cubic_along_the_track_is_interpolated_exactly() {
-    let dir = tempfile::tempdir().unwrap();
-    let dz = |u: f64| 0.5 + 0.01 * u - 2e-4 * u * u + 1e-6 * u * u * u;
-    let path = write(dir.path(), &U, dz, HEADER, "");
-    let s = read_slices(&path, ProfileKind::Rail, &opts()).unwrap();
+    let s = cubic_rail();
     assert_eq!(s.positions(), &U);
     // One part of 60 mm: 1 + 120 segments.
     assert_eq!(s.samples(), 122);
@@ -140,10 +149,7 @@ fn a_wheels_slices_cover_its_circumference_as_contact_requires() {
 /// cross-section cut to a lateral range ([`Slices::section_near`]) is the whole one inside it.
 #[test]
 fn the_surface_and_a_cut_cross_section_are_the_closed_forms() {
-    let dir = tempfile::tempdir().unwrap();
-    let dz = |u: f64| 0.5 + 0.01 * u - 2e-4 * u * u + 1e-6 * u * u * u;
-    let path = write(dir.path(), &U, dz, HEADER, "");
-    let s = read_slices(&path, ProfileKind::Rail, &opts()).unwrap();
+    let s = cubic_rail();
     for u in [-40.0, -33.3, -10.0, 2.5, 17.0, 99.0, 100.0] {
         // Inside the ends, where each slice's profile spline (in arc length) holds the parabola.
         for k in 0..=100 {
