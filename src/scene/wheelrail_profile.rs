@@ -315,47 +315,20 @@ fn profile(s: &mut Section, dir: &Path) -> Result<ProfileSpec, InputError> {
     })
 }
 
-/// `[rail]`'s deviation keys: its position (y, z, roll), then its velocity
-/// ([`RailDeviationSpec`]'s order; the import writes them by these names).
-pub const RAIL_DEVIATION_KEYS: [&str; 6] = [
-    "deviation_y_mm",
-    "deviation_z_mm",
-    "deviation_roll_rad",
-    "deviation_vy_mm_s",
-    "deviation_vz_mm_s",
-    "deviation_vroll_rad_s",
-];
-
-/// `[wheel]`'s deviation keys: its position (x, y, z, roll, yaw, pitch), then its velocity
-/// ([`WheelDeviationSpec`]'s order; the import writes them by these names).
-pub const WHEEL_DEVIATION_KEYS: [&str; 12] = [
-    "deviation_x_mm",
-    "deviation_y_mm",
-    "deviation_z_mm",
-    "deviation_roll_rad",
-    "deviation_yaw_rad",
-    "deviation_pitch_rad",
-    "deviation_vx_mm_s",
-    "deviation_vy_mm_s",
-    "deviation_vz_mm_s",
-    "deviation_vroll_rad_s",
-    "deviation_vyaw_rad_s",
-    "deviation_vpitch_rad_s",
-];
-
-/// The numbers of `keys` in `s` (each its default when absent).
-fn numbers<const N: usize>(s: &mut Section, keys: &[&str; N]) -> Result<[f64; N], InputError> {
-    let mut out = [0.0; N];
-    for (v, key) in out.iter_mut().zip(keys) {
-        *v = s.num_or_default(key)?;
-    }
-    Ok(out)
-}
-
 /// `[rail]`'s deviation from its design position and its velocity (each 0 when absent).
 fn rail_deviation(r: &mut Section) -> Result<RailDeviationSpec, InputError> {
-    let [y, z, roll, vy, vz, vroll] = numbers(r, &RAIL_DEVIATION_KEYS)?;
-    Ok(RailDeviationSpec { position: [y, z, roll], velocity: [vy, vz, vroll] })
+    Ok(RailDeviationSpec {
+        position: [
+            r.num_or_default("deviation_y_mm")?,
+            r.num_or_default("deviation_z_mm")?,
+            r.num_or_default("deviation_roll_rad")?,
+        ],
+        velocity: [
+            r.num_or_default("deviation_vy_mm_s")?,
+            r.num_or_default("deviation_vz_mm_s")?,
+            r.num_or_default("deviation_vroll_rad_s")?,
+        ],
+    })
 }
 
 /// The rail read from `[rail]`: its profile, placement, cant and deviation.
@@ -395,8 +368,24 @@ pub struct WheelSection {
 
 /// `[wheel]`'s deviation from its design place and its rate (each 0 when absent).
 fn wheel_deviation(w: &mut Section) -> Result<WheelDeviationSpec, InputError> {
-    let [x, y, z, roll, yaw, pitch, vx, vy, vz, vroll, vyaw, vpitch] = numbers(w, &WHEEL_DEVIATION_KEYS)?;
-    Ok(WheelDeviationSpec { position: [x, y, z, roll, yaw, pitch], velocity: [vx, vy, vz, vroll, vyaw, vpitch] })
+    Ok(WheelDeviationSpec {
+        position: [
+            w.num_or_default("deviation_x_mm")?,
+            w.num_or_default("deviation_y_mm")?,
+            w.num_or_default("deviation_z_mm")?,
+            w.num_or_default("deviation_roll_rad")?,
+            w.num_or_default("deviation_yaw_rad")?,
+            w.num_or_default("deviation_pitch_rad")?,
+        ],
+        velocity: [
+            w.num_or_default("deviation_vx_mm_s")?,
+            w.num_or_default("deviation_vy_mm_s")?,
+            w.num_or_default("deviation_vz_mm_s")?,
+            w.num_or_default("deviation_vroll_rad_s")?,
+            w.num_or_default("deviation_vyaw_rad_s")?,
+            w.num_or_default("deviation_vpitch_rad_s")?,
+        ],
+    })
 }
 
 /// `[wheel]`: its profile, the wheelset's dimensions and the wheel's deviation.

@@ -9,7 +9,7 @@ use crate::scene::wheelrail::{
     case_columns, case_columns_with_pitch, case_columns_with_positions, CaseRow, LongitudinalSpec, MotionSpec, MuBy,
     PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
 };
-use crate::scene::wheelrail_profile::{MIRROR_Z, PROFILE_DEFAULTS, RAIL_DEVIATION_KEYS, WHEEL_DEVIATION_KEYS};
+use crate::scene::wheelrail_profile::{MIRROR_Z, PROFILE_DEFAULTS};
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 use toml::Value;
@@ -144,14 +144,36 @@ fn friction(s: &WheelRailScene) -> Pairs {
 
 /// The rail's deviation keys where they are not 0.
 fn rail_deviation(s: &WheelRailScene) -> Pairs {
+    const KEYS: [&str; 6] = [
+        "deviation_y_mm",
+        "deviation_z_mm",
+        "deviation_roll_rad",
+        "deviation_vy_mm_s",
+        "deviation_vz_mm_s",
+        "deviation_vroll_rad_s",
+    ];
     let d = s.rail_deviation;
-    nonzero(&RAIL_DEVIATION_KEYS, d.position.into_iter().chain(d.velocity))
+    nonzero(&KEYS, d.position.into_iter().chain(d.velocity))
 }
 
 /// The wheel's deviation keys where they are not 0.
 fn wheel_deviation(s: &WheelRailScene) -> Pairs {
+    const KEYS: [&str; 12] = [
+        "deviation_x_mm",
+        "deviation_y_mm",
+        "deviation_z_mm",
+        "deviation_roll_rad",
+        "deviation_yaw_rad",
+        "deviation_pitch_rad",
+        "deviation_vx_mm_s",
+        "deviation_vy_mm_s",
+        "deviation_vz_mm_s",
+        "deviation_vroll_rad_s",
+        "deviation_vyaw_rad_s",
+        "deviation_vpitch_rad_s",
+    ];
     let d = s.wheel_deviation;
-    nonzero(&WHEEL_DEVIATION_KEYS, d.position.into_iter().chain(d.velocity))
+    nonzero(&KEYS, d.position.into_iter().chain(d.velocity))
 }
 
 /// The keys `keys` with their `values`, those that are not 0.
