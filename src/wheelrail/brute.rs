@@ -219,10 +219,11 @@ pub fn gap_mesh(
     let nodes: Vec<[f64; 3]> = mesh.nodes.iter().map(|p| [p.x, p.y, p.z]).collect();
     let uniform = Uniform { x0: x_lo, dx, nx, y0, dy, ny };
     let mesh = Mesh { nodes: &nodes, n_u: nx };
-    let wheel_xy: Vec<[u64; 2]> = nodes.iter().map(|p| [p[0].to_bits(), p[1].to_bits()]).collect();
-    if kept.wheel_xy != wheel_xy {
+    let xy = |p: &[f64; 3]| [p[0].to_bits(), p[1].to_bits()];
+    let same_xy = kept.wheel_xy.len() == nodes.len() && kept.wheel_xy.iter().zip(&nodes).all(|(k, p)| *k == xy(p));
+    if !same_xy {
         kept.wheel_cells = locate(mesh, &uniform);
-        kept.wheel_xy = wheel_xy;
+        kept.wheel_xy = nodes.iter().map(xy).collect();
     }
     let z_wheel = apply(mesh, &kept.wheel_cells, Scheme::Bilinear);
     let gap_mm = z_rail_mm
@@ -371,35 +372,20 @@ pub fn candidates(g: &GapMesh) -> Vec<Candidate> {
 #[cfg(test)]
 mod tests {
     use super::super::curve::Curve;
-    use super::super::profile::{read_profile, ProfileKind, ProfileOptions};
-    use super::super::rail::{PlacedRail, RailPlacement, Track};
+    use super::super::rail::PlacedRail;
     use super::super::search;
-    use super::super::wheel::{PlacedWheel, Pose, WheelDeviation, WheelsetGeometry};
+    use super::super::test_fixtures as fixtures;
+    use super::super::wheel::{PlacedWheel, Pose};
     use super::*;
-    use std::path::Path;
 
     /// The Manchester profiles with the right wheel on its flange, yawed (y = 6.2 mm, 14.9 mrad):
     /// the round wheel's mesh lies on the wheel's surface of revolution, and the grid search's
     /// deepest interpenetration on the plain rail is the contact locus's within the mesh's steps.
     #[test]
     fn the_grid_search_on_a_plain_rail_meets_the_locus() {
-        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/contact_wheelrail/examples");
-        let read = |f: &str, kind| read_profile(&dir.join(f), kind, &ProfileOptions::default()).unwrap();
-        let (wheel, rail) =
-            (read("MBench_S1002_v3.prw", ProfileKind::Wheel), read("MBench_UIC60_v3.prr", ProfileKind::Rail));
-        let track = Track {
-            placement: RailPlacement::Gauge { height_mm: 14.0, width_mm: 1435.0 },
-            cant_rad: 0.0,
-            deviation_mm_rad: [0.0; 3],
-            deviation_velocity: [0.0; 3],
-        };
-        let rail = PlacedRail::place(&rail, &track).unwrap();
-        let g = WheelsetGeometry {
-            flange_back_distance_mm: 1360.0,
-            flange_back_position_mm: -70.0,
-            nominal_radius_mm: 460.0,
-            deviation: WheelDeviation::NONE,
-        };
+        let (wheel, rail) = fixtures::profiles("MBench_S1002_v3.prw", "MBench_UIC60_v3.prr");
+        let rail = PlacedRail::place(&rail, &fixtures::track()).unwrap();
+        let g = fixtures::wheelset();
         let pose = Pose { y_mm: 6.2, z_mm: -0.30, roll_rad: -0.00071622, yaw_rad: 0.0149 };
         let placed = PlacedWheel::place(&wheel, &g, &pose);
         // Every node at its profile point's radius R + z_w from the axle, x within ±R/8.

@@ -159,11 +159,10 @@ fn root_on(c: &Cubic, i: usize, h: f64, v: f64) -> Option<f64> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::profile::{read_profile, ProfileKind, ProfileOptions};
-    use super::super::rail::{PlacedRail, RailPlacement, Track};
+    use super::super::rail::PlacedRail;
     use super::super::search;
-    use super::super::wheel::{PlacedWheel, Pose, WheelDeviation, WheelsetGeometry};
-    use std::path::Path;
+    use super::super::test_fixtures as fixtures;
+    use super::super::wheel::{PlacedWheel, Pose};
 
     /// CONTACT's gap function (its `dump_gap1d.m`, debug level L = 5 of module 1) for the right
     /// wheel of `perfc_test/mbench_20kn_coarseprf` case 126 (y = 6.2 mm, yaw 14.9 mrad, on the
@@ -180,23 +179,9 @@ mod tests {
 
     #[test]
     fn the_gap_mesh_on_a_yawed_flange_is_contacts() {
-        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/contact_wheelrail/examples");
-        let read = |f: &str, kind| read_profile(&dir.join(f), kind, &ProfileOptions::default()).unwrap();
-        let (wheel, rail) =
-            (read("MBench_S1002_coars.prw", ProfileKind::Wheel), read("MBench_UIC60_coars.prr", ProfileKind::Rail));
-        let track = Track {
-            placement: RailPlacement::Gauge { height_mm: 14.0, width_mm: 1435.0 },
-            cant_rad: 0.0,
-            deviation_mm_rad: [0.0; 3],
-            deviation_velocity: [0.0; 3],
-        };
-        let rail = PlacedRail::place(&rail, &track).unwrap();
-        let g = WheelsetGeometry {
-            flange_back_distance_mm: 1360.0,
-            flange_back_position_mm: -70.0,
-            nominal_radius_mm: 460.0,
-            deviation: WheelDeviation::NONE,
-        };
+        let (wheel, rail) = fixtures::profiles("MBench_S1002_coars.prw", "MBench_UIC60_coars.prr");
+        let rail = PlacedRail::place(&rail, &fixtures::track()).unwrap();
+        let g = fixtures::wheelset();
         let pose = Pose { y_mm: 6.2, z_mm: -0.2617, roll_rad: -0.00071622, yaw_rad: 0.0149 };
         let mut wheel = PlacedWheel::place(&wheel, &g, &pose);
         let samples = search::scan(&wheel, &search::RailMesh::new(&rail, 0.5));

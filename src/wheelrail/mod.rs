@@ -22,6 +22,8 @@ pub mod rail;
 pub mod search;
 pub mod shift;
 pub mod side;
+#[cfg(test)]
+mod test_fixtures;
 pub mod varrail;
 pub mod vertical;
 pub mod wheel;
