@@ -14,6 +14,7 @@ use super::rail::PlacedRail;
 use super::varrail::RailSlices;
 use super::wheel::PlacedWheel;
 use nalgebra::{Point3, Vector3};
+use std::sync::Arc;
 
 /// The gap mesh's lateral step over DS (`fac_dyds` 0.5 times 1.5).
 const STEP_OVER_DS: f64 = 0.75;
@@ -36,7 +37,7 @@ pub struct GapMesh {
     pub y0_mm: f64,
     pub dy_mm: f64,
     /// The rail's height, its inclination atan(dz/dy) and the gap (rail − wheel) per point.
-    pub z_rail_mm: Vec<f64>,
+    pub z_rail_mm: Arc<Vec<f64>>,
     pub angle_rad: Vec<f64>,
     pub gap_mm: Vec<f64>,
 }
@@ -121,6 +122,29 @@ fn rail_heights(
     slices: Option<&RailSlices>,
     (nx, x0, dx): (usize, f64, f64),
     ys: &[f64],
+) -> Arc<Vec<f64>> {
+    match slices {
+        // A variable rail's heights are the same for every case at this S_WS over this mesh
+        // (with the rail placed alike): made once per scene.
+        Some(v) => {
+            let key: Vec<u64> = [v.s_ws_mm, x0, dx, rail.origin_mm[0], rail.origin_mm[1], rail.angle_rad]
+                .iter()
+                .chain(ys)
+                .map(|x| x.to_bits())
+                .chain([nx as u64])
+                .collect();
+            v.slices.memo().get_or_make(&key, || column_heights(rail, slices, (nx, x0, dx), ys))
+        }
+        None => Arc::new(column_heights(rail, None, (nx, x0, dx), ys)),
+    }
+}
+
+/// [`rail_heights`] made.
+fn column_heights(
+    rail: &PlacedRail,
+    slices: Option<&RailSlices>,
+    (nx, x0, dx): (usize, f64, f64),
+    ys: &[f64],
 ) -> Vec<f64> {
     let ny = ys.len();
     let mut z = vec![NO_GAP_MM; nx * ny];
@@ -158,7 +182,7 @@ pub struct GapMeshKept {
     local_key: Option<[u64; 4]>,
     local: (usize, Vec<Vector3<f64>>),
     key: Option<[u64; 5]>,
-    z_mm: Vec<f64>,
+    z_mm: Arc<Vec<f64>>,
     wheel_xy: Vec<[u64; 2]>,
     wheel_cells: Located,
 }
@@ -192,7 +216,7 @@ pub fn gap_mesh(
             dx_mm: 0.0,
             y0_mm: 0.0,
             dy_mm: 0.0,
-            z_rail_mm: empty.clone(),
+            z_rail_mm: Arc::new(empty.clone()),
             angle_rad: empty.clone(),
             gap_mm: empty,
         };
@@ -210,7 +234,7 @@ pub fn gap_mesh(
         let z_mm = rail_heights(rail, slices, (nx, x_lo, dx), &ys);
         (kept.key, kept.z_mm, kept.wheel_xy, kept.wheel_cells) = (Some(key), z_mm, Vec::new(), Located::default());
     }
-    let z_rail_mm = kept.z_mm.clone();
+    let z_rail_mm = Arc::clone(&kept.z_mm);
     let mut angle_rad = vec![0.0; nx * ny];
     for (j, &y) in ys.iter().enumerate() {
         let a = rail.dz_dy(y).map_or(0.0, f64::atan);

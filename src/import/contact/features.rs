@@ -716,7 +716,7 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "the longitudinal moment prescribed instead of the pitch velocity",
         control: "F, MY_WS",
         supported: false,
-        reason: "supported: F = 0 (VPITCH given) and F = 1 (FX_WS given)",
+        reason: "supported: F = 0 (VPITCH given) and F = 1 (FX_WS given). CONTACT itself does not solve F = 2: its user guide lists the digit only in a comment, and its secant (wr_contact_fx_secant) then drives FX_WS to the last one an F = 1 case gave (zero if none), never MY_WS: its printed results are not those of a prescribed moment",
         used: |c| wr_digit("F", c.digits.f, c.digits.f == 2),
     },
     WheelRailRow {

@@ -16,6 +16,7 @@ mod foldback;
 mod index;
 pub mod lines;
 mod masked;
+pub mod memo;
 pub mod miniprof;
 mod notaknot;
 pub mod options;

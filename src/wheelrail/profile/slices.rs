@@ -24,6 +24,7 @@ use super::band::{first_root, Band};
 use super::error::ProfileError;
 use super::lines::{self, At, Line};
 use super::masked::Masked;
+use super::memo::Memo;
 use super::notaknot::{Curve, NotAKnot};
 use super::{read_profile, Profile, ProfileKind, ProfileOptions};
 use std::f64::consts::PI;
@@ -69,6 +70,8 @@ pub struct Slices {
     lambda: f64,
     /// With interruptions: CONTACT's masked surface, which then serves every evaluation.
     masked: Option<Masked>,
+    /// Results derived from the slices kept for the next case ([`Memo`]).
+    memo: Memo,
 }
 
 /// The spline along the track (or around the wheel) through the slices' samples.
@@ -131,7 +134,21 @@ pub fn read_slices(path: &Path, kind: ProfileKind, opts: &ProfileOptions) -> Res
     };
     // CONTACT fits the cross-section with λ = SMOOTH as given, unweighted, whatever ISMOOTH.
     let bands = if paths.is_some() { (1..u.len()).map(|_| OnceLock::new()).collect() } else { Vec::new() };
-    Ok(Slices { file, kind, u, profiles, y_mm, z_mm, spline, paths, bands, across, lambda: opts.smooth, masked })
+    Ok(Slices {
+        file,
+        kind,
+        u,
+        profiles,
+        y_mm,
+        z_mm,
+        spline,
+        paths,
+        bands,
+        across,
+        lambda: opts.smooth,
+        masked,
+        memo: Memo::default(),
+    })
 }
 
 /// With interruptions (a slice whose samples do not all exist), CONTACT's masked surface;
@@ -220,6 +237,11 @@ impl Slices {
     /// The slices file.
     pub fn file(&self) -> &str {
         &self.file
+    }
+
+    /// Results derived from these slices, kept for the next case of the scene.
+    pub fn memo(&self) -> &Memo {
+        &self.memo
     }
 
     pub fn kind(&self) -> ProfileKind {
