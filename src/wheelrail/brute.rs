@@ -7,7 +7,7 @@
 //! region of interpenetration grown to its bounding box plus one guard line
 //! (`find_bounding_box_2d`) and its centre weighted by the squared gap (`compute_wgt_center_2d`).
 
-use super::mesh_interp::{apply, locate, Located, Mesh, Scheme, Uniform};
+use super::mesh_interp::{apply, locate, Mesh, Scheme, Uniform};
 use super::oorwheel;
 use super::patch::Candidate;
 use super::rail::PlacedRail;
@@ -36,7 +36,8 @@ pub struct GapMesh {
     pub dx_mm: f64,
     pub y0_mm: f64,
     pub dy_mm: f64,
-    /// The rail's height, its inclination atan(dz/dy) and the gap (rail − wheel) per point.
+    /// The rail's height and the gap (rail − wheel) per point, the rail's inclination atan(dz/dy)
+    /// per y (the same along x).
     pub z_rail_mm: Arc<Vec<f64>>,
     pub angle_rad: Vec<f64>,
     pub gap_mm: Vec<f64>,
@@ -173,24 +174,32 @@ fn column_heights(
 }
 
 /// What a gap mesh keeps for the next trial height of the same case: the wheel's mesh in its own
-/// frame (it depends on DX, the radius, the lateral offset and the pitch alone), the rail's
-/// heights (they depend on the mesh alone: its (nx, x0, dx, ny, y0) bit for bit) and where the
-/// mesh's points lie in the wheel's mesh (they depend on its nodes' x and y alone, which a
-/// vertical shift of the wheelset leaves bit for bit).
+/// frame (it depends on DX, the radius, the lateral offset and the pitch alone) and turned by the
+/// wheel's rotation, the rail's heights (they depend on the mesh alone: its (nx, x0, dx, ny, y0)
+/// bit for bit), and the wheel's heights on the gap mesh relative to its centre: a vertical shift
+/// of the wheelset moves the turned mesh by the centre alone, so that x, y and the cells stay and
+/// the wheel's height is the kept one plus the centre's.
 #[derive(Debug, Clone, Default)]
 pub struct GapMeshKept {
     local_key: Option<[u64; 4]>,
     local: (usize, Vec<Vector3<f64>>),
+    /// The local mesh turned by the wheel's rotation (its bits the key).
+    turned_key: Option<[u64; 9]>,
+    turned: Vec<Vector3<f64>>,
     key: Option<[u64; 5]>,
     z_mm: Arc<Vec<f64>>,
-    wheel_xy: Vec<[u64; 2]>,
-    wheel_cells: Located,
+    /// The centre's x and y and the rows (y0, ny) the wheel was interpolated on, with the turned mesh.
+    wheel_key: Option<[u64; 4]>,
+    /// The gap mesh's x0 and dx, and the turned mesh's height interpolated at its points
+    /// (bilinear, `interp_cartz2unif`; none off the wheel's mesh).
+    x_mm: (f64, f64),
+    z_turned_mm: Vec<Option<f64>>,
 }
 
 /// The gap mesh of `wheel` (its mesh: [`wheel_mesh`]) over `rail` (`compute_wr_surfc`): x over
 /// the wheel mesh's range in as many steps as it has slices, y over the rail's lateral range
-/// (step 0.75 DS, centred); the rail's inclination that of `rail` (the rail at the wheelset); the
-/// rail's heights taken from `kept` where its mesh is this one (else made and kept there).
+/// (step 0.75 DS, centred); the rail's inclination that of `rail` (the rail at the wheelset); what
+/// does not change with the wheelset's height taken from `kept` ([`GapMeshKept`]).
 pub fn gap_mesh(
     wheel: &PlacedWheel,
     rail: &PlacedRail,
@@ -203,10 +212,15 @@ pub fn gap_mesh(
             .map(f64::to_bits);
     if kept.local_key != Some(local_key) {
         kept.local = local_mesh(wheel, dx_mm);
-        kept.local_key = Some(local_key);
+        (kept.local_key, kept.turned_key) = (Some(local_key), None);
     }
-    let mesh = placed(wheel, &kept.local);
-    if mesh.nodes.is_empty() {
+    let m = wheel.rotation.matrix();
+    let turned_key: [u64; 9] = std::array::from_fn(|k| m[(k / 3, k % 3)].to_bits());
+    if kept.turned_key != Some(turned_key) {
+        kept.turned = kept.local.1.iter().map(|&p| wheel.rotation * p).collect();
+        (kept.turned_key, kept.wheel_key) = (Some(turned_key), None);
+    }
+    if kept.turned.is_empty() {
         // A closed-form wheel has no points to revolve: no mesh, nothing found.
         let empty = Vec::new();
         return GapMesh {
@@ -221,70 +235,77 @@ pub fn gap_mesh(
             gap_mm: empty,
         };
     }
-    let nx = mesh.slices;
-    let (x_lo, x_hi) = mesh.nodes.iter().fold((f64::MAX, f64::MIN), |(lo, hi), p| (lo.min(p.x), hi.max(p.x)));
-    let dx = (x_hi - x_lo) / (nx as f64 - 1.0);
+    let nx = kept.local.0;
     let [y_lo, y_hi] = rail.mesh_y_range_mm();
     let dy = STEP_OVER_DS * ds_mm;
     let ny = ((y_hi - y_lo) / dy).floor() as usize + 1;
     let y0 = 0.5 * (y_lo + y_hi) - (ny as f64 - 1.0) * dy / 2.0;
     let ys: Vec<f64> = (0..ny).map(|j| y0 + j as f64 * dy).collect();
-    let key = [nx as u64, x_lo.to_bits(), dx.to_bits(), ny as u64, y0.to_bits()];
-    if kept.key != Some(key) {
-        let z_mm = rail_heights(rail, slices, (nx, x_lo, dx), &ys);
-        (kept.key, kept.z_mm, kept.wheel_xy, kept.wheel_cells) = (Some(key), z_mm, Vec::new(), Located::default());
+    let wheel_key = [wheel.centre.x.to_bits(), wheel.centre.y.to_bits(), y0.to_bits(), ny as u64];
+    if kept.wheel_key != Some(wheel_key) {
+        turned_heights(wheel, rail, slices, (nx, &ys, dy), kept);
+        kept.wheel_key = Some(wheel_key);
     }
+    let (x_lo, dx) = kept.x_mm;
     let z_rail_mm = Arc::clone(&kept.z_mm);
-    let mut angle_rad = vec![0.0; nx * ny];
-    for (j, &y) in ys.iter().enumerate() {
-        let a = rail.dz_dy(y).map_or(0.0, f64::atan);
-        angle_rad[j * nx..(j + 1) * nx].fill(a);
-    }
-    let nodes: Vec<[f64; 3]> = mesh.nodes.iter().map(|p| [p.x, p.y, p.z]).collect();
-    let uniform = Uniform { x0: x_lo, dx, nx, y0, dy, ny };
-    let mesh = Mesh { nodes: &nodes, n_u: nx };
-    let xy = |p: &[f64; 3]| [p[0].to_bits(), p[1].to_bits()];
-    let same_xy = kept.wheel_xy.len() == nodes.len() && kept.wheel_xy.iter().zip(&nodes).all(|(k, p)| *k == xy(p));
-    if !same_xy {
-        kept.wheel_cells = locate(mesh, &uniform);
-        kept.wheel_xy = nodes.iter().map(xy).collect();
-    }
-    let z_wheel = apply(mesh, &kept.wheel_cells, Scheme::Bilinear);
+    let angle_rad = ys.iter().map(|&y| rail.dz_dy(y).map_or(0.0, f64::atan)).collect();
+    let z_centre = wheel.centre.z;
     let gap_mm = z_rail_mm
         .iter()
-        .zip(&z_wheel)
+        .zip(&kept.z_turned_mm)
         .map(|(&zr, zw)| match zw {
-            Some(zw) if zr < 888.0 => zr - zw,
+            Some(zw) if zr < 888.0 => zr - (zw + z_centre),
             _ => NO_GAP_MM,
         })
         .collect();
     GapMesh { nx, ny, x0_mm: x_lo, dx_mm: dx, y0_mm: y0, dy_mm: dy, z_rail_mm, angle_rad, gap_mm }
 }
 
+/// The gap mesh's x range from the wheel's mesh placed at its centre's x and y, the rail's heights
+/// there (kept while the mesh is the same), and the turned mesh's heights interpolated on it.
+fn turned_heights(
+    wheel: &PlacedWheel,
+    rail: &PlacedRail,
+    slices: Option<&RailSlices>,
+    (nx, ys, dy): (usize, &[f64], f64),
+    kept: &mut GapMeshKept,
+) {
+    let c = wheel.centre;
+    // The nodes' x and y as `placed` puts them (centre + rotation · p), their height the turned one.
+    let nodes: Vec<[f64; 3]> = kept.turned.iter().map(|r| [c.x + r.x, c.y + r.y, r.z]).collect();
+    let (x_lo, x_hi) = nodes.iter().fold((f64::MAX, f64::MIN), |(lo, hi), p| (lo.min(p[0]), hi.max(p[0])));
+    let dx = (x_hi - x_lo) / (nx as f64 - 1.0);
+    let (ny, y0) = (ys.len(), ys[0]);
+    let key = [nx as u64, x_lo.to_bits(), dx.to_bits(), ny as u64, y0.to_bits()];
+    if kept.key != Some(key) {
+        (kept.key, kept.z_mm) = (Some(key), rail_heights(rail, slices, (nx, x_lo, dx), ys));
+    }
+    let uniform = Uniform { x0: x_lo, dx, nx, y0, dy, ny };
+    let mesh = Mesh { nodes: &nodes, n_u: nx };
+    kept.z_turned_mm = apply(mesh, &locate(mesh, &uniform), Scheme::Bilinear);
+    kept.x_mm = (x_lo, dx);
+}
+
 /// The local minima of the gap (`find_gap_locmin`): points below 777 mm no lower than any
 /// neighbour (lower or equal to the south and west, lower to the north and east), a neighbour
 /// on a plateau within 1e-6 mm extending the plateau instead; (i, j) in the order found (x outer).
 fn local_minima(g: &GapMesh) -> Vec<(usize, usize)> {
-    let (nx, ny) = (g.nx, g.ny);
-    // The gap column by column (the scan's order), so that the scan reads it in sequence.
-    let mut gap = vec![0.0; nx * ny];
-    for (j, row) in g.gap_mm.chunks(nx.max(1)).enumerate() {
-        for (i, &v) in row.iter().enumerate() {
-            gap[i * ny + j] = v;
-        }
-    }
+    let (nx, ny, gap) = (g.nx, g.ny, &g.gap_mm);
+    // CONTACT scans x outer, y inner. A point's verdict reads the gaps of its four neighbours and
+    // the marks of its south and west neighbours, which either order has made before it: the
+    // scan goes row by row in memory order and the minima are put in CONTACT's order after.
     let mut mask = vec![false; nx * ny];
     let mut out = Vec::new();
-    for i in 0..nx {
-        for j in 0..ny {
-            let k = i * ny + j;
+    for j in 0..ny {
+        for i in 0..nx {
+            let k = j * nx + i;
             let mut is_min = gap[k] < 777.0;
             // (neighbour, whether an equal gap there rules k out): south, north, west, east.
             let neighbours = [
-                (j > 0).then(|| (k - 1, true)),
-                (j + 1 < ny).then(|| (k + 1, false)),
-                (i > 0).then(|| (k - ny, true)),
-                (i + 1 < nx).then(|| (k + ny, false)),
+                (j > 0).then(|| (k - nx, true)),
+                (j + 1 < ny).then(|| (k + nx, false)),
+                (i > 0).then(|| (k - 1, true)),
+                (i + 1 < nx).then(|| (k + 1, false)),
             ];
             for (n, equal_out) in neighbours.into_iter().flatten() {
                 if !is_min {
@@ -303,6 +324,7 @@ fn local_minima(g: &GapMesh) -> Vec<(usize, usize)> {
             }
         }
     }
+    out.sort_unstable();
     out
 }
 
@@ -348,7 +370,7 @@ fn candidate(g: &GapMesh, (i, j): (usize, usize), [i0, i1, j0, j1]: [usize; 4]) 
                 let w = g.dx_mm * (g.gap_mm[k] * g.gap_mm[k]).max(1e-20);
                 px += g.x(ii) * w;
                 py += g.y(jj) * w;
-                pa += g.angle_rad[k] * w;
+                pa += g.angle_rad[jj] * w;
                 pt += w;
             }
         }
