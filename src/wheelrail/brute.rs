@@ -296,32 +296,44 @@ fn local_minima(g: &GapMesh) -> Vec<(usize, usize)> {
     // scan goes row by row in memory order and the minima are put in CONTACT's order after.
     let mut mask = vec![false; nx * ny];
     let mut out = Vec::new();
+    // A neighbour on a marked plateau marks the point; a lower one (or an equal one to the south
+    // or west) rules it out; the first neighbour that decides, in the order south, north, west,
+    // east, decides. The north and east neighbours are not marked yet.
     for j in 0..ny {
         for i in 0..nx {
             let k = j * nx + i;
-            let mut is_min = gap[k] < 777.0;
-            // (neighbour, whether an equal gap there rules k out): south, north, west, east.
-            let neighbours = [
-                (j > 0).then(|| (k - nx, true)),
-                (j + 1 < ny).then(|| (k + nx, false)),
-                (i > 0).then(|| (k - 1, true)),
-                (i + 1 < nx).then(|| (k + 1, false)),
-            ];
-            for (n, equal_out) in neighbours.into_iter().flatten() {
-                if !is_min {
-                    break;
-                }
-                if mask[n] && (gap[n] - gap[k]).abs() < PLATEAU_MM {
+            let gk = gap[k];
+            if !(gk < 777.0) {
+                continue;
+            }
+            if j > 0 {
+                let n = k - nx;
+                if mask[n] && (gap[n] - gk).abs() < PLATEAU_MM {
                     mask[k] = true;
-                    is_min = false;
-                } else if gap[n] < gap[k] || (equal_out && gap[n] == gap[k]) {
-                    is_min = false;
+                    continue;
+                }
+                if gap[n] <= gk {
+                    continue;
                 }
             }
-            if is_min {
-                mask[k] = true;
-                out.push((i, j));
+            if j + 1 < ny && gap[k + nx] < gk {
+                continue;
             }
+            if i > 0 {
+                let n = k - 1;
+                if mask[n] && (gap[n] - gk).abs() < PLATEAU_MM {
+                    mask[k] = true;
+                    continue;
+                }
+                if gap[n] <= gk {
+                    continue;
+                }
+            }
+            if i + 1 < nx && gap[k + 1] < gk {
+                continue;
+            }
+            mask[k] = true;
+            out.push((i, j));
         }
     }
     out.sort_unstable();
