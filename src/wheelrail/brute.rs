@@ -303,7 +303,8 @@ fn local_minima(g: &GapMesh) -> Vec<(usize, usize)> {
         for i in 0..nx {
             let k = j * nx + i;
             let gk = gap[k];
-            if !(gk < 777.0) {
+            // Not below 777 mm (no gap there), or not a number: never a minimum.
+            if gk.partial_cmp(&777.0) != Some(std::cmp::Ordering::Less) {
                 continue;
             }
             if j > 0 {

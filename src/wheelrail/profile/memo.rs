@@ -8,10 +8,13 @@ use std::sync::{Arc, Mutex};
 /// How many results are kept (the oldest goes first): a scene's cases at a few positions.
 const KEPT: usize = 4;
 
+/// A result and the bits of what it was made from.
+type Entry = (Vec<u64>, Arc<Vec<f64>>);
+
 /// Results keyed by the bits of what they were made from; a clone starts empty.
 #[derive(Debug, Default)]
 pub struct Memo {
-    kept: Mutex<Vec<(Vec<u64>, Arc<Vec<f64>>)>>,
+    kept: Mutex<Vec<Entry>>,
 }
 
 impl Clone for Memo {
@@ -40,7 +43,7 @@ impl Memo {
     }
 
     /// The kept results; a lock poisoned by a panic elsewhere still holds whole results.
-    fn lock(&self) -> std::sync::MutexGuard<'_, Vec<(Vec<u64>, Arc<Vec<f64>>)>> {
+    fn lock(&self) -> std::sync::MutexGuard<'_, Vec<Entry>> {
         self.kept.lock().unwrap_or_else(|e| e.into_inner())
     }
 }
