@@ -18,7 +18,9 @@ use crate::error::{Error, InputError};
 use crate::history::sample_loop::{run_with_fields, Field};
 use crate::physics::geometry::{Extent, GeometrySpec};
 use crate::problem::Problem;
+use crate::scene::wheelrail::{moving_allowed, SHIFT_MODELS, TRANSIENT_ROLLING_MODELS};
 use crate::scene::Scene;
+use crate::wheelrail::shift::Previous;
 use crate::solvers;
 use crate::wheelrail::friction::Friction;
 use crate::wheelrail::vertical::FORCE_TOL;
@@ -130,6 +132,19 @@ pub fn solve(case: &WheelRailCase, models: &[String], mu: f64) -> Result<CaseRes
 /// along the track where `mu` says so). The models that solve their own approximate normal problem
 /// (KPEC, ANALYN) take their own patches and height; every other model the exact theory's.
 pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Result<CaseResult, Error> {
+    solve_step(case, models, mu, &[])
+}
+
+/// [`solve_with`] in a sequence: each model other than the exact theory continues its own
+/// `histories` (the patches the case before left with its tractions, [`super::wheelrail_brush`]);
+/// in a shift or transient rolling a model without one starts from rest. The exact theory's are
+/// the case's `previous`.
+pub fn solve_step(
+    case: &WheelRailCase,
+    models: &[String],
+    mu: &Friction,
+    histories: &[(String, Previous)],
+) -> Result<CaseResult, Error> {
     refuse_in_shifts(case, models)?;
     let own = |m: &str| solvers::builtin(m).and_then(|d| d.own_normal);
     let mut exact_cache = ExactCache::default();
@@ -158,6 +173,12 @@ pub fn solve_with(case: &WheelRailCase, models: &[String], mu: &Friction) -> Res
                 let forces = match found.take_if(|_| model == EXACT) {
                     Some(exact) => exact,
                     None if model == EXACT => exact_forces(normal, mu, case, &mut exact_cache)?,
+                    None if case.motion != Motion::Rolling
+                        || (case.previous.is_some() && SHIFT_MODELS.contains(&model.as_str())) =>
+                    {
+                        let history = histories.iter().find(|(m, _)| m == model).map(|(_, h)| h);
+                        brush_forces(normal, model, mu, case, history)?
+                    }
                     None => patch_forces(normal, model, mu, case)?,
                 };
                 let totals = totals(normal, &forces, case);
@@ -221,16 +242,18 @@ fn balanced(
     Ok((normal, None))
 }
 
-/// A shift (CONTACT's T = 1) or a transient rolling step (T = 2) is solved by the exact theory
-/// alone, for bodies of one material.
+/// A shift (CONTACT's T = 1) or a transient rolling step (T = 2) is solved by the models that
+/// carry their history through it ([`SHIFT_MODELS`], [`TRANSIENT_ROLLING_MODELS`]), for bodies
+/// of one material.
 fn refuse_in_shifts(case: &WheelRailCase, models: &[String]) -> Result<(), Error> {
-    if case.motion == Motion::Rolling {
-        return Ok(());
-    }
-    if let Some(m) = models.iter().find(|m| m.as_str() != EXACT) {
-        let allowed =
-            "the exact theory alone (solvers = [\"contact\"]) in a shift or transient rolling ([wheelrail] motion)";
-        return Err(InputError::new("solvers", format!("{m:?}"), allowed).into());
+    let (able, motion) = match case.motion {
+        Motion::Rolling => return Ok(()),
+        Motion::Shift { .. } if case.previous.is_some() => (SHIFT_MODELS, "shift_sequence"),
+        Motion::Shift { .. } => (SHIFT_MODELS, "shift"),
+        Motion::Transient { .. } => (TRANSIENT_ROLLING_MODELS, "rolling_sequence"),
+    };
+    if let Some(m) = models.iter().find(|m| !able.contains(&m.as_str())) {
+        return Err(InputError::new("solvers", format!("{m:?}"), moving_allowed(able, motion)).into());
     }
     if case.material.coupled() {
         let value = format!("G {} MPa, nu {}", case.material.g_mpa, case.material.poisson);
@@ -294,6 +317,19 @@ pub(crate) fn patch_forces(
     case: &WheelRailCase,
 ) -> Result<Vec<PatchForces>, Error> {
     normal.patches.iter().map(|p| patch_solve(p, model, mu.of_patch(p, case), case)).collect()
+}
+
+/// A model that carries its history ([`super::wheelrail_brush`]) on every patch of a case that
+/// moves in time, or of the steady case that starts such a sequence.
+fn brush_forces(
+    normal: &NormalContact,
+    model: &str,
+    mu: &Friction,
+    case: &WheelRailCase,
+    history: Option<&Previous>,
+) -> Result<Vec<PatchForces>, Error> {
+    let solve = |p: &NormalPatch| super::wheelrail_brush::patch_forces(p, model, mu.of_patch(p, case), case, history);
+    normal.patches.iter().map(solve).collect()
 }
 
 /// The exact theory's forces on every patch, solved on the patches directly
@@ -380,7 +416,7 @@ fn ellipse_scene(
 
 /// The problem a model solves on a patch: the patch's own grid and undeformed distance where the
 /// model takes a contact given per element, else the equivalent ellipse.
-fn patch_problem(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> Result<Problem, Error> {
+pub(super) fn patch_problem(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> Result<Problem, Error> {
     // The patches of a model with its own normal problem carry that problem's pressure.
     let exact = solvers::builtin(model).is_none_or(|d| d.own_normal.is_none());
     let refused = match resolve(&field_scene(p, model, mu, case, exact)?) {
@@ -395,7 +431,7 @@ fn patch_problem(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) ->
 }
 
 /// One model on one patch, its forces turned to CONTACT's signs and the side's frame.
-fn patch_solve(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> Result<PatchForces, Error> {
+pub(super) fn patch_solve(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> Result<PatchForces, Error> {
     let result = run(patch_problem(p, model, mu, case)?)?;
     let h = &result.histories[0];
     let row = &h.rows[0];

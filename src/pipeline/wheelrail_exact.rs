@@ -156,7 +156,7 @@ pub fn patch_forces(
 
 /// The tractions a shift starts from on patch `p` (CONTACT's element order): zero from rest; in a
 /// sequence those of the old patches it connects to, on its grid ([`shift`]).
-fn previous_tractions(p: &NormalPatch, case: &WheelRailCase) -> (Vec<f64>, Vec<f64>) {
+pub(super) fn previous_tractions(p: &NormalPatch, case: &WheelRailCase) -> (Vec<f64>, Vec<f64>) {
     let g = &p.geometry.grid;
     let inherited =
         case.previous.and_then(|prev| shift::inherited(&shift::connections(&[p.geometry.extent], prev)[0], prev));
@@ -168,7 +168,7 @@ fn previous_tractions(p: &NormalPatch, case: &WheelRailCase) -> (Vec<f64>, Vec<f
 
 /// A field in the grid's flat order back in CONTACT's element order (the inverse of
 /// [`field_in_grid_order`]: x mirrored).
-fn in_contact_order(grid: &Grid, field: &[f64]) -> Vec<f64> {
+pub(super) fn in_contact_order(grid: &Grid, field: &[f64]) -> Vec<f64> {
     let mut out = vec![0.0; field.len()];
     for j in 0..grid.my {
         for i in 0..grid.mx {
@@ -182,7 +182,7 @@ fn in_contact_order(grid: &Grid, field: &[f64]) -> Vec<f64> {
 /// has its origin at the super-grid's `mpot` and the reference at (SPINXO, SPINYO) from it
 /// (`m_wr_solvecp`), and prints the patch's MN about that origin: MN + SPINXO FS − SPINYO FX in
 /// the right-side frame (the left side's values mirrored).
-fn about_anchor(f: PatchForces, p: &NormalPatch, case: &WheelRailCase) -> PatchForces {
+pub(super) fn about_anchor(f: PatchForces, p: &NormalPatch, case: &WheelRailCase) -> PatchForces {
     let m = case.side.sign();
     let [ax, as_] = p.geometry.grid.anchor_mm;
     let (spinxo, spinyo) = (-ax, -as_);

@@ -4,7 +4,7 @@
 //! before left ([`crate::wheelrail::shift`]: connected by overlap, merged, copied or kept, the grid widened
 //! to the contact of the time before) and the exact theory's tractions on them.
 
-use super::wheelrail::{solve_with, CaseResult, EXACT};
+use super::wheelrail::{solve_step, CaseResult, EXACT};
 use crate::error::Error;
 use crate::wheelrail::friction::Friction;
 use crate::wheelrail::shift::{self, IndexBox, OldPatch, Previous};
@@ -62,22 +62,40 @@ fn solve_in_order<'a>(
     mut on_error: impl FnMut(usize, Error) -> Error,
 ) -> Result<Vec<CaseResult>, Error> {
     let mut previous: Option<Previous> = None;
+    // The other models' own histories: the same patches with each one's tractions.
+    let others: Vec<&String> = models.iter().filter(|m| m.as_str() != EXACT).collect();
+    let mut histories: Vec<(String, Previous)> = Vec::new();
     let mut out = Vec::new();
     for (k, case) in cases.into_iter().enumerate() {
         let steady = case.motion == Motion::Rolling;
         if steady {
             previous = Some(Previous::default());
+            histories.clear();
         }
         if let Some(p) = previous.as_mut() {
             p.iterated = matches!(case.vertical, Vertical::Force { .. });
         }
+        for (_, h) in histories.iter_mut() {
+            h.iterated = matches!(case.vertical, Vertical::Force { .. });
+        }
         let case = WheelRailCase { previous: previous.as_ref(), ..case };
-        let result = solve_with(&case, models, friction).map_err(|e| on_error(k, e))?;
-        let mut left = left_for_next(&result, previous.as_ref());
+        let result = solve_step(&case, models, friction, &histories).map_err(|e| on_error(k, e))?;
+        let mut left = left_for_next(&result, previous.as_ref(), EXACT);
+        let mut next: Vec<(String, Previous)> = others
+            .iter()
+            .map(|m| {
+                let before = histories.iter().find(|(h, _)| h == *m).map(|(_, h)| h).or(previous.as_ref());
+                ((*m).clone(), left_for_next(&result, before, m))
+            })
+            .collect();
         if steady {
             on_super_grid(&mut left, &result, s_super_mm);
+            for (_, h) in next.iter_mut() {
+                on_super_grid(h, &result, s_super_mm);
+            }
         }
         previous = Some(left);
+        histories = next;
         out.push(result);
     }
     Ok(out)
@@ -99,15 +117,16 @@ fn on_super_grid(left: &mut Previous, result: &CaseResult, s_super_mm: f64) {
     }
 }
 
-/// The patches a solved case leaves for the next: each of its patches with the exact theory's
-/// tractions, its contact and the contact of the old patches it continued; then the old patches
-/// none of its patches connected to.
-fn left_for_next(result: &CaseResult, previous: Option<&Previous>) -> Previous {
+/// The patches a solved case leaves for the next: each of its patches with `model`'s tractions
+/// (zero where it keeps none), its contact and the contact of the old patches it continued; then
+/// the old patches none of its patches connected to (`previous`: those `model` had, with its
+/// tractions).
+fn left_for_next(result: &CaseResult, previous: Option<&Previous>, model: &str) -> Previous {
     let empty = Previous::default();
     let previous = previous.unwrap_or(&empty);
     let extents: Vec<_> = result.normal.patches.iter().map(|p| p.geometry.extent).collect();
     let links = shift::connections(&extents, previous);
-    let exact = result.models.iter().find(|(m, _, _)| m == EXACT).map(|(_, f, _)| f);
+    let theirs = result.models.iter().find(|(m, _, _)| m == model).map(|(_, f, _)| f);
     let new = result
         .normal
         .patches
@@ -115,7 +134,7 @@ fn left_for_next(result: &CaseResult, previous: Option<&Previous>) -> Previous {
         .enumerate()
         .map(|(k, p)| {
             let g = &p.geometry.grid;
-            let (px_mpa, py_mpa) = exact
+            let (px_mpa, py_mpa) = theirs
                 .and_then(|f| f[k].shift_tractions_mpa.clone())
                 .unwrap_or_else(|| (vec![0.0; g.len()], vec![0.0; g.len()]));
             // CONTACT's igv, the contact the next case widens its grid to: the contact of the old

@@ -164,6 +164,46 @@ pub enum MotionSpec {
     RollingSequence { dq_rel: f64, from_rest: bool },
 }
 
+/// The models that follow shifts (CONTACT's T = 1), each carrying its own tractions on the
+/// material-fixed grid from case to case: the exact theory, and FASTSIM and the UBA (one brush
+/// shift per element, `solvers::brush_shift`).
+pub const SHIFT_MODELS: &[&str] = &["contact", "fastsim", "uba"];
+/// The models that follow transient rolling (T = 2): the exact theory and the UBA (its explicit
+/// transport step from the tractions the case before left).
+pub const TRANSIENT_ROLLING_MODELS: &[&str] = &["contact", "uba"];
+
+impl MotionSpec {
+    /// The models that follow this motion and its `[wheelrail] motion` value; `None` in steady
+    /// rolling (every model).
+    pub fn models(&self) -> Option<(&'static [&'static str], &'static str)> {
+        match self {
+            MotionSpec::Rolling => None,
+            MotionSpec::Shift { sequence: false, .. } => Some((SHIFT_MODELS, "shift")),
+            MotionSpec::Shift { sequence: true, .. } => Some((SHIFT_MODELS, "shift_sequence")),
+            MotionSpec::RollingSequence { .. } => Some((TRANSIENT_ROLLING_MODELS, "rolling_sequence")),
+        }
+    }
+
+    /// Every model of `solvers` one that follows this motion, else the first that does not, named.
+    pub fn check_models(&self, solvers: &[String]) -> Result<(), InputError> {
+        let Some((able, motion)) = self.models() else { return Ok(()) };
+        match solvers.iter().find(|m| !able.contains(&m.as_str())) {
+            None => Ok(()),
+            Some(m) => Err(InputError::new("solvers", format!("{m:?}"), moving_allowed(able, motion))),
+        }
+    }
+}
+
+/// What a scene of `motion` may run: `able`, and why the others cannot follow it.
+pub fn moving_allowed(able: &[&str], motion: &str) -> String {
+    let why = if able.contains(&"fastsim") {
+        "the other models have no history of a shift"
+    } else {
+        "FASTSIM has no memory in rolling (it marches each step steady), the other models none either"
+    };
+    format!("models that carry their history through [wheelrail] motion = \"{motion}\": {} ({why})", able.join(", "))
+}
+
 /// A validated wheel–rail scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct WheelRailScene {
@@ -478,13 +518,7 @@ impl WheelRailScene {
             motion,
             s_ws_mm,
         } = super::wheelrail_section::read(top.table("wheelrail")?, rail_is_slices(doc))?;
-        if motion != MotionSpec::Rolling && solvers.iter().any(|m| m != "contact") {
-            return Err(InputError::new(
-                "solvers",
-                format!("{solvers:?}"),
-                "[\"contact\"]: a shift or transient rolling ([wheelrail] motion other than \"rolling\") is solved by the exact theory alone",
-            ));
-        }
+        motion.check_models(&solvers)?;
         let rail = super::wheelrail_profile::rail(&mut top, dir)?;
         let wheel = super::wheelrail_profile::wheel(&mut top, dir)?;
         let radius = wheel.nominal_radius_mm;

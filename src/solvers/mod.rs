@@ -6,6 +6,7 @@
 //! (`history::external`).
 
 pub mod brush;
+pub mod brush_shift;
 pub mod contact;
 pub mod fastrip;
 pub mod fastrip_contact;

@@ -406,7 +406,8 @@ fn a_sequence_of_shifts_exports_and_imports_back_with_its_positions_where_the_sh
 
 /// `m1_catt_shift`'s 81 cases (a shift of 4 mm from rest at S_WS = 0, then 80 shifts of 0.2 mm at
 /// S_WS = 0.2, 0.4, … 16.0: the Cattaneo → Carter transition) import as one sequence of shifts with
-/// each case's position; the shipped scene is that import (with CONTACT's meshed wheel surface).
+/// each case's position; the shipped scene is that import (with CONTACT's meshed wheel surface, and
+/// FASTSIM and the UBA beside the exact theory).
 #[test]
 fn the_cattaneo_to_carter_shifts_import_as_one_sequence_with_their_positions() {
     let dir = common::tempdir("m1_catt_shift");
@@ -419,7 +420,9 @@ fn the_cattaneo_to_carter_shifts_import_as_one_sequence_with_their_positions() {
     assert_eq!((positions[0], positions[1], positions[80]), (0.0, 0.2, 16.0));
     assert_eq!((s.cases[0].velocity[0], s.cases[1].velocity[0]), (4.0, 0.2));
     let shipped = WheelRailScene::from_file(&root().join("scenes/wheelrail/m1_catt_shift_1.toml")).unwrap();
-    assert_eq!(values(&WheelRailScene { wheel_mesh: true, ..s }), values(&shipped));
+    assert_eq!(s.solvers, ["contact"]);
+    let solvers = vec!["contact".to_string(), "fastsim".to_string(), "uba".to_string()];
+    assert_eq!(values(&WheelRailScene { wheel_mesh: true, solvers, ..s }), values(&shipped));
 }
 
 /// Friction varying across the rail (V = 1) and along the track (V = 2): mbench_a22_varfric's

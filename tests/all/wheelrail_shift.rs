@@ -68,8 +68,11 @@ fn a_shift_refuses_what_it_does_not_solve() {
     let text = std::fs::read_to_string(dir.join("t1_zws_1.toml")).unwrap();
     let read = |t: &str| WheelRailScene::from_toml(t, &dir);
     assert!(read(&text).is_ok());
-    let e = read(&text.replace("solvers = [\"contact\"]", "solvers = [\"contact\", \"fastsim\"]")).unwrap_err();
-    assert!(e.field == "solvers" && e.allowed.contains("exact theory alone"), "{e:?}");
+    // FASTSIM and the UBA follow a shift with their own tractions; a model without a history of
+    // one is refused, named with the motion.
+    assert!(read(&text.replace("solvers = [\"contact\"]", "solvers = [\"contact\", \"fastsim\", \"uba\"]")).is_ok());
+    let e = read(&text.replace("solvers = [\"contact\"]", "solvers = [\"contact\", \"linear\"]")).unwrap_err();
+    assert!(e.field == "solvers" && e.value.contains("linear") && e.allowed.contains("motion = \"shift\""), "{e:?}");
     let e = read(&text.replace("motion = \"shift\"", "motion = \"shift\"\nfrictionless = true")).unwrap_err();
     assert!(e.field.contains("motion") && e.allowed.contains("not frictionless"), "{e:?}");
     let e = read(&text.replace("motion = \"shift\"", "motion = \"slide\"")).unwrap_err();
@@ -113,8 +116,11 @@ fn transient_rolling_refuses_what_it_does_not_solve() {
     let text = std::fs::read_to_string(dir.join("t3_t2_force_1.toml")).unwrap();
     let read = |t: &str| WheelRailScene::from_toml(t, &dir);
     assert!(read(&text).is_ok());
+    // The UBA follows transient rolling with its own tractions; FASTSIM has no memory in rolling.
+    assert!(read(&text.replace("solvers = [\"contact\"]", "solvers = [\"contact\", \"uba\"]")).is_ok());
     let e = read(&text.replace("solvers = [\"contact\"]", "solvers = [\"contact\", \"fastsim\"]")).unwrap_err();
-    assert!(e.field == "solvers" && e.allowed.contains("exact theory alone"), "{e:?}");
+    assert!(e.field == "solvers" && e.value.contains("fastsim") && e.allowed.contains("no memory"), "{e:?}");
+    assert!(e.allowed.contains("rolling_sequence"), "{e:?}");
     let e = read(&text.replace("dq_rel = 1.0", "dq_rel = 1.0\nfrictionless = true")).unwrap_err();
     assert!(e.field.contains("motion") && e.allowed.contains("not frictionless"), "{e:?}");
     let e = read(&text.replace("motion = \"rolling_sequence\"", "motion = \"rolling\"")).unwrap_err();

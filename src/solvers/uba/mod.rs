@@ -37,7 +37,7 @@ pub const MODEL: ModelDef = grid_model(
 
 /// Largest Courant number the UBA accepts: it sub-steps (see [`substeps`]), and a scene asking
 /// for more than this many sub-steps per time step is almost certainly a unit mistake.
-const MAX_COURANT: f64 = 64.0;
+pub const MAX_COURANT: f64 = 64.0;
 
 /// The explicit scheme is stable only for a Courant number ≤ 1 (CFL); larger time steps are
 /// split into `ceil(courant)` equal sub-steps.
@@ -114,13 +114,20 @@ fn substeps(courant: f64) -> (usize, f64) {
 }
 
 fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
+    Ok(continuing(p, Tractions::zero(p.grid.len())))
+}
+
+/// The UBA from the tractions `t` (grid order) instead of rest: a wheel–rail transient rolling
+/// step continuing the case before (CONTACT's T = 2 with P = 0); elements without pressure carry
+/// nothing from the first step on (the bound μ p).
+pub fn continuing(p: &Problem, t: Tractions) -> Box<dyn Stepper + '_> {
     let n = p.grid.len();
     let first = p.loading.first();
     let local = p.local_contact(first.fn_n);
     let prep = Prepared::new(&p.grid, &local, first.mu);
     let fresh = vec![p.friction.mu_static(); n];
-    let (t, scratch) = (Tractions::zero(n), Tractions::zero(n));
-    Ok(Box::new(Uba { p, local, prep, prep_mu: first.mu, t, scratch, mu: (fresh.clone(), fresh) }))
+    let scratch = Tractions::zero(n);
+    Box::new(Uba { p, local, prep, prep_mu: first.mu, t, scratch, mu: (fresh.clone(), fresh) })
 }
 
 /// The UBA's state: the contact at the current load, the prepared step and the tractions.
