@@ -264,12 +264,19 @@ fn refuse_in_conformal(case: &WheelRailCase, models: &[String], mu: &Friction) -
         (case.heat.is_some(), "material", "no surface temperatures"),
         (case.tangential != Default::default(), "friction / contact_solver", "Coulomb's law, the solver's defaults"),
         (case.grid_search, "wheelrail.contact_search", "the contact locus (\"locus\")"),
-        (case.rail_slices.is_some() || case.wheel_slices.is_some(), "rail / wheel profile", "prismatic profiles (no slices files)"),
+        (
+            case.rail_slices.is_some() || case.wheel_slices.is_some(),
+            "rail / wheel profile",
+            "prismatic profiles (no slices files)",
+        ),
     ];
     match unsupported.iter().find(|(used, _, _)| *used) {
-        Some((_, field, allowed)) => {
-            Err(InputError::new(*field, "with approach = \"conformal\"", format!("{allowed} with the conformal approach")).into())
-        }
+        Some((_, field, allowed)) => Err(InputError::new(
+            *field,
+            "with approach = \"conformal\"",
+            format!("{allowed} with the conformal approach"),
+        )
+        .into()),
         None => Ok(()),
     }
 }

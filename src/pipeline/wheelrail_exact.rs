@@ -142,7 +142,8 @@ pub fn patch_forces(
     } else {
         let (_, solver, last) = cache.get(&grid, &case.material, (&x, &y))?;
         solver.set_pressure(&pn)?;
-        let extra = p.extra_slip.as_ref().map(|(wx, wy)| (field_in_grid_order(&grid, wx), field_in_grid_order(&grid, wy)));
+        let extra =
+            p.extra_slip.as_ref().map(|(wx, wy)| (field_in_grid_order(&grid, wx), field_in_grid_order(&grid, wy)));
         solver.set_extra_slip(extra.as_ref().map(|(wx, wy)| (wx.as_slice(), wy.as_slice())))?;
         if let Some(g) = bound(&p.pn_mpa) {
             solver.set_bound(&g)?;

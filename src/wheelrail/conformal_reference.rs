@@ -93,8 +93,7 @@ pub fn curved_reference(
     let sc_end = sr_end + WIDEN * (sr_end - sr_ref) - sr_ref;
     let (k0, k1) = ((sc_sta / ds_mm).round() as i64 - EXTRA_ROWS, (sc_end / ds_mm).round() as i64 + EXTRA_ROWS);
     let sc: Vec<f64> = (k0..=k1).map(|k| k as f64 * ds_mm).collect();
-    let rail_rows: Vec<([f64; 2], [f64; 2])> =
-        sc.iter().map(|s| rail.point_at_s(sr_ref + s)).collect::<Option<_>>()?;
+    let rail_rows: Vec<([f64; 2], [f64; 2])> = sc.iter().map(|s| rail.point_at_s(sr_ref + s)).collect::<Option<_>>()?;
     // The wheel: the reference's place in its frame, the arc length there, the opposite way.
     let q = wheel.to_wheel(&frame.origin);
     let sw_ref = wheel.curve.s_at_y(q.y - wheel.y_offset_mm)?;

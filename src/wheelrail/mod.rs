@@ -62,7 +62,9 @@ pub enum WheelRailError {
     Approximate { patch: usize, source: ApproximateError },
     #[error("a shift's material-fixed grid needs the rail profile's arc length (a profile file, not a closed form)")]
     NoRailArcLength,
-    #[error("the conformal approach's curved reference needs both profiles' splines (profile files) reaching its rows")]
+    #[error(
+        "the conformal approach's curved reference needs both profiles' splines (profile files) reaching its rows"
+    )]
     NoCurvedReference,
     #[error("the conformal approach takes one interpenetration region per patch: {parts} regions between D_COMB and D_SEP apart make one blended patch (CONTACT's curved sub-patches are not modelled)")]
     ConformalSubPatches { parts: usize },

@@ -585,7 +585,16 @@ pub fn build(
         Blend { part, factor: sub_patch_factors(&c.parts, sep), n: c.parts.len() }
     });
     let rail_s_mm = rail.s_mm(frame.origin.y);
-    Ok(PatchGeometry { frame, grid, h_mm, pen_max_mm: c.pen_max_mm, blend, extent: c.extent(), rail_s_mm, curved: None })
+    Ok(PatchGeometry {
+        frame,
+        grid,
+        h_mm,
+        pen_max_mm: c.pen_max_mm,
+        blend,
+        extent: c.extent(),
+        rail_s_mm,
+        curved: None,
+    })
 }
 
 /// The conformal patch of candidate `c` (CONTACT's D = 4, steady rolling, one region): its
@@ -601,8 +610,8 @@ fn build_conformal(
     if c.parts.len() > 1 {
         return Err(WheelRailError::ConformalSubPatches { parts: c.parts.len() });
     }
-    let reference =
-        conformal_reference::curved_reference(c, &frame, rail, wheel, ds_mm).ok_or(WheelRailError::NoCurvedReference)?;
+    let reference = conformal_reference::curved_reference(c, &frame, rail, wheel, ds_mm)
+        .ok_or(WheelRailError::NoCurvedReference)?;
     let grid = conformal_grid::grid(&planar, &reference);
     let patch = conformal_grid::surfaces(&frame, &grid, reference, (wheel, rail), surface);
     let h_mm = conformal_grid::undeformed_distance(&frame, &grid, &patch);
