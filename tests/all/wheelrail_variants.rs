@@ -100,7 +100,7 @@ fn import(deck: &str) -> (Vec<PathBuf>, String) {
 /// Where `deck` lies under reference/contact_wheelrail/ (without its extension).
 fn in_reference(deck: &str) -> String {
     match deck {
-        "iestim_site_b" => format!("testbank/examples_trans/{deck}"),
+        "iestim_site_b" | "t3_t1_conformal" => format!("testbank/examples_trans/{deck}"),
         _ => format!("examples/{deck}"),
     }
 }
@@ -193,6 +193,22 @@ fn friction_varying_across_the_rail_and_along_the_track_against_contact() {
     let ok = |d: &Deviation| if d.contact_case == 3 && d.patch == 0 { within(d, &limits) } else { within_mbench(d) };
     let failures: Vec<String> = devs.iter().filter(|d| !ok(d)).map(|d| format!("{d:?}")).collect();
     assert!(failures.is_empty(), "{} deviations beyond the tolerances:\n{}", failures.len(), failures.join("\n"));
+}
+
+/// The conformal approach with adhesion and two patches (`t3_t1_conformal` case 1: the worn
+/// site-B flange and tread at y = 14.74 mm, FZ = 137 kN, 321 elements in adhesion on the tread's
+/// patch of 124 rows): every printed value within its digits (worst FS 0.98, FY(WS) 0.96, CETA
+/// 0.94 half-units; NPOT, NCON, NADH, NSLIP exact); its 15 shifts continuing it refused, named.
+#[test]
+fn the_conformal_approach_with_adhesion_on_two_patches_against_contact() {
+    let (devs, cases, verdicts) = deviations("t3_t1_conformal");
+    assert_eq!(cases, [1]);
+    assert_eq!(verdicts.matches("D = 4 with T = 1").count(), 15, "{verdicts}");
+    worst(&devs);
+    let failures: Vec<String> =
+        devs.iter().filter(|d| !loose(d).unwrap_or(d.half_units <= 1.0)).map(|d| format!("{d:?}")).collect();
+    assert!(failures.is_empty(), "beyond CONTACT's printed digits:\n{}", failures.join("\n"));
+    assert!(devs.iter().any(|d| d.quantity == "nadh" && d.contact > 300.0), "{devs:?}");
 }
 
 /// The KPEC deck: cases 1–3 KPEC, 4–6 ANALYN (both with CONTACT's FASTSIM), 7–9 the exact theory,
