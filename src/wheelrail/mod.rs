@@ -432,9 +432,8 @@ fn geometry_at(
             rail,
             (case.dx_mm, case.ds_mm),
             &case.separation,
-            (case.wheel_surface, case.motion, case.previous),
+            (case.wheel_surface, case.motion, case.previous, case.conformal),
             case.rail_slices.as_ref(),
-            case.conformal,
         )?;
         if geometry.grid.len() > MAX_ELEMENTS {
             return Err(WheelRailError::GridTooLarge {

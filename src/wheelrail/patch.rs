@@ -528,16 +528,16 @@ fn beyond_the_wheel_surface(c: &Candidate, frame: &PatchFrame, grid: &PatchGrid,
 }
 
 /// The patch of one candidate; in a shift that continues a sequence its grid widened to the
-/// contact of the time before of the old patches it connects to ([`shift::widened`]).
+/// contact of the time before of the old patches it connects to ([`shift::widened`]); with the
+/// conformal approach on its curved reference ([`conformal_grid`]).
 pub fn build(
     c: &Candidate,
     wheel: &PlacedWheel,
     rail: &PlacedRail,
     size_mm: (f64, f64),
     sep: &Separation,
-    (surface, motion, previous): (WheelSurface, Motion, Option<&shift::Previous>),
+    (surface, motion, previous, conformal): (WheelSurface, Motion, Option<&shift::Previous>, bool),
     slices: Option<&RailSlices>,
-    conformal: bool,
 ) -> Result<PatchGeometry, WheelRailError> {
     // A variable rail: the cross-section at the reference's x (CONTACT's `complete_patches`).
     let section = match slices {
