@@ -170,8 +170,13 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
     // Friction of the temperature (L = 6) read by the first case, kept after it (L = 1); the
     // surface temperatures read (H = 3) by the first case, computed again (H = 1) by the later ones.
     let law = if first && s.tangential.temperature_law.is_some() { "6" } else { &ldcmze[..1] };
-    // The grid search (`contact_search = "grid"`) is D = 5, read by the first case, kept after it.
-    let d = if first && s.grid_search { "5" } else { &ldcmze[1..2] };
+    // The grid search (`contact_search = "grid"`) is D = 5, the conformal approach D = 4, read by
+    // the first case, kept after it.
+    let d = match (first, s.grid_search, s.conformal) {
+        (true, true, _) => "5",
+        (true, false, true) => "4",
+        _ => &ldcmze[1..2],
+    };
     let ldcmze = format!("{law}{d}{}", &ldcmze[2..]);
     let heat = match (s.material.heat.is_some(), first) {
         (true, true) => "3",

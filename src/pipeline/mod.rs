@@ -367,6 +367,7 @@ fn run_builtin(
 
 pub mod wheelrail;
 pub mod wheelrail_brush;
+pub mod wheelrail_conformal;
 pub mod wheelrail_exact;
 pub mod wheelrail_fx;
 pub mod wheelrail_scene;

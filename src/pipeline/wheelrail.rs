@@ -146,6 +146,7 @@ pub fn solve_step(
     histories: &[(String, Previous)],
 ) -> Result<CaseResult, Error> {
     refuse_in_shifts(case, models)?;
+    refuse_in_conformal(case, models, mu)?;
     let own = |m: &str| solvers::builtin(m).and_then(|d| d.own_normal);
     let mut exact_cache = ExactCache::default();
     let mut shared = None;
@@ -230,7 +231,11 @@ fn balanced(
             .patches
             .iter()
             .zip(&found)
-            .map(|(p, f)| case.side.sign() * f.fs_n * p.geometry.frame.delta_rad.sin())
+            .map(|(p, f)| {
+                // A conformal patch's FN holds the tractions' part besides the pressure's.
+                let delta = p.geometry.frame.delta_rad;
+                (f.fn_n - p.fn_n) * delta.cos() + case.side.sign() * f.fs_n * delta.sin()
+            })
             .sum();
         if (normal_z + tangential_z - fz_n).abs() <= 2.0 * FORCE_TOL * fz_n || normal_z <= 0.0 {
             return Ok((normal, Some(found)));
@@ -262,6 +267,41 @@ fn refuse_in_shifts(case: &WheelRailCase, models: &[String]) -> Result<(), Error
         );
     }
     Ok(())
+}
+
+/// The conformal approach (CONTACT's D = 4) is solved by the exact theory alone, in steady
+/// rolling with friction, for bodies of one material without surface temperatures, on the
+/// contact locus of prismatic profiles, with the solver's default options.
+fn refuse_in_conformal(case: &WheelRailCase, models: &[String], mu: &Friction) -> Result<(), Error> {
+    if !case.conformal {
+        return Ok(());
+    }
+    if let Some(m) = models.iter().find(|m| m.as_str() != EXACT) {
+        let allowed = "the exact theory alone (solvers = [\"contact\"]) with the conformal approach";
+        return Err(InputError::new("solvers", format!("{m:?}"), allowed).into());
+    }
+    let unsupported = [
+        (case.motion != Motion::Rolling, "wheelrail.motion", "steady rolling (\"rolling\")"),
+        (mu.frictionless, "wheelrail.frictionless", "friction (the tractions turn the pressure's force)"),
+        (case.material.coupled(), "material", "one material for both bodies"),
+        (case.heat.is_some(), "material", "no surface temperatures"),
+        (case.tangential != Default::default(), "friction / contact_solver", "Coulomb's law, the solver's defaults"),
+        (case.grid_search, "wheelrail.contact_search", "the contact locus (\"locus\")"),
+        (
+            case.rail_slices.is_some() || case.wheel_slices.is_some(),
+            "rail / wheel profile",
+            "prismatic profiles (no slices files)",
+        ),
+    ];
+    match unsupported.iter().find(|(used, _, _)| *used) {
+        Some((_, field, allowed)) => Err(InputError::new(
+            *field,
+            "with approach = \"conformal\"",
+            format!("{allowed} with the conformal approach"),
+        )
+        .into()),
+        None => Ok(()),
+    }
 }
 
 /// One model on the patches of `normal`: its forces per patch and their totals.
@@ -349,7 +389,10 @@ fn exact_forces(
     normal
         .patches
         .iter()
-        .map(|p| wheelrail_exact::patch_forces(p, mu.of_patch(p, case), case, cache).map_err(failed))
+        .map(|p| {
+            let mu = mu.of_rows(p).map_or(wheelrail_exact::Mu::Patch(mu.of_patch(p, case)), wheelrail_exact::Mu::Rows);
+            wheelrail_exact::patch_forces(p, mu, case, cache).map_err(failed)
+        })
         .collect()
 }
 

@@ -9,6 +9,7 @@
 //! (P = 0, [`crate::wheelrail::shift`]).
 
 use super::wheelrail::PatchForces;
+use super::wheelrail_conformal;
 use crate::physics::geometry::field_in_grid_order;
 use crate::physics::halfspace::influence::Kernel;
 use crate::physics::{moment_sum, Grid, Material};
@@ -106,7 +107,7 @@ fn patch_grid(p: &NormalPatch) -> Grid {
 /// from the last tractions found on a grid of the patch's size).
 pub fn patch_forces(
     p: &NormalPatch,
-    mu: f64,
+    mu: Mu,
     case: &WheelRailCase,
     cache: &mut ExactCache,
 ) -> Result<PatchForces, ContactError> {
@@ -121,7 +122,15 @@ pub fn patch_forces(
     let c = &p.creepages;
     let options = ContactSolverOptions::default();
     let dq_mm = if shift { 1.0 } else { rolling_dq_mm.unwrap_or(grid.dx_mm) };
-    let mut params = TangentialParams::new(mu, c.cksi, c.ceta, c.cphi_per_mm, dq_mm);
+    let bound = |pn_contact: &[f64]| match &mu {
+        Mu::Rows(rows) => Some(field_in_grid_order(&grid, &per_row(rows, pn_contact, p.geometry.grid.mx))),
+        Mu::Patch(_) => None,
+    };
+    let mu_solve = match mu {
+        Mu::Patch(mu) => mu,
+        Mu::Rows(_) => 1.0,
+    };
+    let mut params = TangentialParams::new(mu_solve, c.cksi, c.ceta, c.cphi_per_mm, dq_mm);
     params.tol = options.tolerance;
     params.max_iter = options.max_iterations;
     let r: StepResult = if shift || rolling_dq_mm.is_some() {
@@ -133,11 +142,27 @@ pub fn patch_forces(
     } else {
         let (_, solver, last) = cache.get(&grid, &case.material, (&x, &y))?;
         solver.set_pressure(&pn)?;
+        let extra =
+            p.extra_slip.as_ref().map(|(wx, wy)| (field_in_grid_order(&grid, wx), field_in_grid_order(&grid, wy)));
+        solver.set_extra_slip(extra.as_ref().map(|(wx, wy)| (wx.as_slice(), wy.as_slice())))?;
+        if let Some(g) = bound(&p.pn_mpa) {
+            solver.set_bound(&g)?;
+        }
         let start = last.as_ref().map(|(px, py)| (px.as_slice(), py.as_slice()));
         let r = solver.steady(&params, start)?;
         *last = Some((r.px.clone(), r.py.clone()));
         r
     };
+    if let Some(c) = &p.geometry.curved {
+        // CONTACT's tractions on the rail: its element order, the solver's negated.
+        let on_rail = |f: &[f64]| in_contact_order(&grid, f).into_iter().map(|v| -v).collect::<Vec<f64>>();
+        let forces = wheelrail_conformal::aggregate(&p.geometry, c, &on_rail(&r.px), &on_rail(&r.py), &p.pn_mpa);
+        return Ok(PatchForces {
+            n_adhesion: Some(r.n_adhesion),
+            n_slip: Some(r.n_slip),
+            ..forces.on_rail(case.side.sign())
+        });
+    }
     let pn_sum: f64 = pn.iter().sum();
     let (fx_over_fn, fy_over_fn) = (r.px.iter().sum::<f64>() / pn_sum, r.py.iter().sum::<f64>() / pn_sum);
     let mz_nmm = moment_sum(&grid, &r.px, &r.py) * grid.element_area_mm2();
@@ -152,6 +177,18 @@ pub fn patch_forces(
         ..PatchForces::on_rail(p, case, fx_over_fn, fy_over_fn, mz_nmm)
     };
     Ok(if case.motion.super_grid_s_mm().is_some() { about_anchor(forces, p, case) } else { forces })
+}
+
+/// Coulomb's μ of a patch: one value, or one per grid row (a conformal patch with V = 1).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Mu {
+    Patch(f64),
+    Rows(Vec<f64>),
+}
+
+/// The traction bound μ_j pn [MPa] of a field in CONTACT's element order, μ per row of `mx`.
+fn per_row(mu: &[f64], pn_mpa: &[f64], mx: usize) -> Vec<f64> {
+    pn_mpa.iter().enumerate().map(|(k, pn)| mu[k / mx] * pn).collect()
 }
 
 /// The tractions a shift starts from on patch `p` (CONTACT's element order): zero from rest; in a
@@ -216,7 +253,7 @@ mod tests {
             let scenes = through_scenes(&normal, EXACT, &friction, &case).unwrap();
             assert!(!normal.patches.is_empty());
             for (p, want) in normal.patches.iter().zip(&scenes) {
-                let got = patch_forces(p, scene.mu, &case, &mut cache).unwrap();
+                let got = patch_forces(p, Mu::Patch(scene.mu), &case, &mut cache).unwrap();
                 // The scenes take the patch's pressure; the tangential solve here starts warm.
                 let close = |a: f64, b: f64, scale: f64| (a - b).abs() <= 1e-7 * scale;
                 assert!(close(got.fx_n, want.fx_n, p.fn_n), "case {number}: FX {} vs {}", got.fx_n, want.fx_n);

@@ -247,6 +247,8 @@ pub struct WheelRailScene {
     /// The brute-force grid search instead of the contact locus (`contact_search = "grid"`,
     /// CONTACT's D = 5).
     pub grid_search: bool,
+    /// The conformal approach (`approach = "conformal"`, CONTACT's D = 4) instead of the planar one.
+    pub conformal: bool,
     /// Steady rolling, or a shift from rest (`motion`, `s_mm`; CONTACT's T = 3 or 1 with P = 2).
     pub motion: MotionSpec,
     /// S_WS [mm] (`[wheelrail] s_mm`, 0 if absent): where the wheelset stands along the track (on a
@@ -514,6 +516,7 @@ impl WheelRailScene {
             d_turn_mm,
             wheel_mesh,
             grid_search,
+            conformal,
             frictionless,
             motion,
             s_ws_mm,
@@ -592,6 +595,7 @@ impl WheelRailScene {
             d_turn_mm,
             wheel_mesh,
             grid_search,
+            conformal,
             motion,
             s_ws_mm,
             vertical,

@@ -142,6 +142,13 @@ pub const KEYS: Keys = Keys {
             r#"the wheel surface the undeformed distance is measured to: the profile's exact surface of revolution, or CONTACT's mesh of it (`wr_ud_planar`: profile points `ds_mm` apart in arc length from the patch's reference, revolved into slices `dx_mm` apart, bilinear between them; up to ~DS²/(8R) off the exact surface, inside a convex wheel and outside a concave flange root); every shipped scene of `scenes/wheelrail` takes the mesh (the gate: worst 0.939 of a bound; on the exact surface the worn flange root of `iestim_site_b` carries FN up to 1.8 % less than CONTACT's): `wheel_surface = "contact_mesh"`"#,
         ),
         key(
+            "approach",
+            "–",
+            Allowed::Choice(&["planar", "conformal"], ""),
+            Absent::Choice("planar"),
+            r#"the contact approach: planar (CONTACT's D = 2: each patch on its tangent plane) or conformal (D = 4, docs/wheelrail.md "The conformal approach": each patch on a curved reference surface midway between the rail and the wheel, rows `ds_mm` apart in its arc length, the gap turned by each row's inclination, the rigid slip of the actual surfaces, the tractions turned back to the tangent plane; steady rolling, one material, the exact theory alone, one region per patch, profile files): `approach = "conformal"`"#,
+        ),
+        key(
             "contact_search",
             "–",
             Allowed::Choice(&["locus", "grid"], ""),
@@ -165,6 +172,7 @@ pub struct WheelRailSection {
     pub wheel_mesh: bool,
     /// The brute-force grid search (`contact_search = "grid"`, CONTACT's D = 5).
     pub grid_search: bool,
+    pub conformal: bool,
     pub frictionless: bool,
     pub motion: MotionSpec,
     /// S_WS (`s_mm`, 0 if absent): the wheelset's position along the track.
@@ -214,6 +222,7 @@ pub fn read(w: Section, varying_rail: bool) -> Result<WheelRailSection, InputErr
     let d_turn_mm = w.opt_num("d_turn_mm")?.unwrap_or(2.0 * d_sep_mm - d_comb_mm);
     let wheel_mesh = w.pick_or_default("wheel_surface")? == "contact_mesh";
     let grid_search = w.pick_or_default("contact_search")? == "grid";
+    let conformal = w.pick_or_default("approach")? == "conformal";
     let frictionless = w.opt_bool("frictionless")?.unwrap_or(false);
     w.finish()?;
     Ok(WheelRailSection {
@@ -228,6 +237,7 @@ pub fn read(w: Section, varying_rail: bool) -> Result<WheelRailSection, InputErr
         d_turn_mm,
         wheel_mesh,
         grid_search,
+        conformal,
         frictionless,
         motion,
         s_ws_mm,

@@ -30,7 +30,7 @@ pub struct RailMotion {
 
 impl RailMotion {
     /// The velocity of the rail's material at `p`: v_O + ω × (p − O), ω = (VROLLR, 0, 0).
-    fn at(&self, p: &Point3<f64>) -> Vector3<f64> {
+    pub(super) fn at(&self, p: &Point3<f64>) -> Vector3<f64> {
         let [vy, vz, vroll] = self.velocity;
         let (ry, rz) = (p.y - self.origin_mm[0], p.z - self.origin_mm[1]);
         Vector3::new(0.0, vy - vroll * rz, vz + vroll * ry)

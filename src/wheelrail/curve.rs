@@ -32,6 +32,12 @@ pub trait Curve: Send + Sync + Debug {
     fn locus_nodes(&self) -> Option<Vec<super::locus::Node>> {
         None
     }
+    /// The spline's point at its parameter s [mm] with its derivatives, where the curve is a
+    /// profile's spline; `None` for a closed form or outside the spline (CONTACT's
+    /// `spline_get_xyz_at_s`, the conformal approach's curved reference).
+    fn spline_point(&self, _s_mm: f64) -> Option<super::profile::ProfilePoint> {
+        None
+    }
 }
 
 /// A circular arc `z = z0 ± (R − √(R² − (y − yc)²))` over `|y − yc| ≤ half_width`: convex (a rail
@@ -117,6 +123,9 @@ impl Curve for super::profile::Profile {
     }
     fn s_at_y(&self, y_mm: f64) -> Option<f64> {
         self.point_at_y(y_mm).map(|p| p.s_mm)
+    }
+    fn spline_point(&self, s_mm: f64) -> Option<super::profile::ProfilePoint> {
+        self.point_at_s(s_mm)
     }
     fn locus_nodes(&self) -> Option<Vec<super::locus::Node>> {
         self.kept_locus_nodes(|| {

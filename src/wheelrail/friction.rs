@@ -2,8 +2,9 @@
 //! rail (V = 0), μ at the wheelset's position along the track (V = 2: one value for the case), or
 //! μ at the patch's contact angle on the wheel (V = 1: the roll of the contact reference in the
 //! wheel's frame, the angle of the right-side frame less the wheelset's roll and the wheel's DROLLW), each interpolated
-//! linearly between the control points and constant beyond them (`fric_interp`). Planar contact
-//! only: with the conformal approach (D = 4) CONTACT varies μ per grid row.
+//! linearly between the control points and constant beyond them (`fric_interp`). With the
+//! conformal approach (D = 4) V = 1 gives μ per grid row, at the row's inclination in the track
+//! (`m_wr_solvecp`: `fric_interp` on `curv_incln`).
 
 use super::{NormalPatch, WheelRailCase};
 use crate::scene::wheelrail::{MuBy, MuVariation};
@@ -29,5 +30,15 @@ impl Friction<'_> {
             Some(v @ MuVariation { by: MuBy::TrackS { s_mm }, .. }) => v.at(*s_mm),
             None => self.mu,
         }
+    }
+}
+
+impl Friction<'_> {
+    /// μ per grid row of a conformal patch where it varies with the contact angle (V = 1 with
+    /// D = 4): at each row's inclination in the track; `None` for one μ per patch.
+    pub fn of_rows(&self, p: &NormalPatch) -> Option<Vec<f64>> {
+        let c = p.geometry.curved.as_ref()?;
+        let v = self.variation.filter(|v| v.by == MuBy::ContactAngle)?;
+        Some((0..c.reference.rows()).map(|j| v.at(c.reference.inclination_rad(j))).collect())
     }
 }

@@ -10,6 +10,9 @@
 //! right side; [`side`] mirrors a left wheel.
 
 pub mod brute;
+pub mod conformal_grid;
+pub mod conformal_reference;
+pub mod conformal_slip;
 pub mod creepage;
 pub mod curve;
 pub mod friction;
@@ -59,6 +62,12 @@ pub enum WheelRailError {
     Approximate { patch: usize, source: ApproximateError },
     #[error("a shift's material-fixed grid needs the rail profile's arc length (a profile file, not a closed form)")]
     NoRailArcLength,
+    #[error(
+        "the conformal approach's curved reference needs both profiles' splines (profile files) reaching its rows"
+    )]
+    NoCurvedReference,
+    #[error("the conformal approach takes one interpenetration region per patch: {parts} regions between D_COMB and D_SEP apart make one blended patch (CONTACT's curved sub-patches are not modelled)")]
+    ConformalSubPatches { parts: usize },
 }
 
 /// Largest potential contact of one patch [elements].
@@ -123,6 +132,10 @@ pub struct WheelRailCase<'a> {
     pub separation: patch::Separation,
     /// The wheel surface the undeformed distance is measured to.
     pub wheel_surface: wheel_mesh::WheelSurface,
+    /// The conformal approach (CONTACT's D = 4): each patch on a curved reference surface
+    /// ([`conformal_reference`], [`conformal_grid`]), its rigid slip on the actual surfaces
+    /// ([`conformal_slip`]); steady rolling of one material on prismatic profiles.
+    pub conformal: bool,
     /// The brute-force grid search ([`brute`], CONTACT's D = 5) instead of the contact locus; an
     /// out-of-round wheel takes it always.
     pub grid_search: bool,
@@ -155,6 +168,9 @@ pub struct NormalPatch {
     /// The approach: the deepest overlap of the undeformed surfaces [mm].
     pub pen_mm: f64,
     pub creepages: creepage::Creepages,
+    /// The conformal approach's extra rigid slip per element (wx, wy) [-], CONTACT's element order
+    /// ([`conformal_slip`]); `None` in planar contact.
+    pub extra_slip: Option<(Vec<f64>, Vec<f64>)>,
 }
 
 /// The normal contact of one case (right-side frame).
@@ -416,7 +432,7 @@ fn geometry_at(
             rail,
             (case.dx_mm, case.ds_mm),
             &case.separation,
-            (case.wheel_surface, case.motion, case.previous),
+            (case.wheel_surface, case.motion, case.previous, case.conformal),
             case.rail_slices.as_ref(),
         )?;
         if geometry.grid.len() > MAX_ELEMENTS {
@@ -454,8 +470,11 @@ fn patches_at(
         };
         let pen_mm = -geometry.h_mm.iter().copied().fold(f64::INFINITY, f64::min);
         let shift = matches!(case.motion, Motion::Shift { .. });
-        let creepages = creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm, &rail_motion, shift);
-        out.push(NormalPatch { geometry, fn_n, pn_mpa, pen_mm, creepages });
+        let (creepages, extra_slip) = match conformal_slip::rigid_slip(&geometry, &wheel, &velocity, &rail_motion) {
+            Some(slip) => (slip.creepages, Some(slip.extra)),
+            None => (creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm, &rail_motion, shift), None),
+        };
+        out.push(NormalPatch { geometry, fn_n, pn_mpa, pen_mm, creepages, extra_slip });
     }
     Ok(out)
 }
@@ -490,7 +509,10 @@ fn solve_normal(
     solver.set_blend(g.blend.clone())?;
     let start = Some(last.as_slice()).filter(|l| !l.is_empty());
     let sol = solver.solve_approach_from(&g.h_mm, 0.0, &NormalParams { tol, ..NormalParams::default() }, start)?;
-    let fn_n = sol.pn_mpa.iter().sum::<f64>() * g.grid.dx_mm * g.grid.ds_mm;
+    let fn_n = match &g.curved {
+        Some(c) => conformal_grid::normal_force_n(&g.frame, &g.grid, c, &sol.pn_mpa),
+        None => sol.pn_mpa.iter().sum::<f64>() * g.grid.dx_mm * g.grid.ds_mm,
+    };
     last.clone_from(&sol.pn_mpa);
     Ok((fn_n, sol.pn_mpa))
 }

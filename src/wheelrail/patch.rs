@@ -5,6 +5,8 @@
 //! the undeformed distance along the plane's normal between the surfaces (the wheel's exact or
 //! CONTACT's mesh of it).
 
+use super::conformal_grid::ConformalPatch;
+use super::conformal_reference;
 use super::oorwheel;
 use super::profile::Profile;
 use super::rail::PlacedRail;
@@ -12,7 +14,7 @@ use super::search::LocusSample;
 use super::varrail::RailSlices;
 use super::wheel::PlacedWheel;
 use super::wheel_mesh::{self, WheelSurface};
-use super::{shift, Motion, WheelRailError};
+use super::{conformal_grid, shift, Motion, WheelRailError};
 use crate::physics::halfspace::blend::Blend;
 use nalgebra::{Point3, Vector3};
 
@@ -90,6 +92,9 @@ pub struct PatchGeometry {
     /// The rail profile's arc length at the reference (CONTACT's `sr_ref`; `None` for a closed-form
     /// rail): where a steady grid lies on the super-grid when transient rolling follows it.
     pub rail_s_mm: Option<f64>,
+    /// The conformal approach's curved reference (CONTACT's D = 4), one point per grid row: the
+    /// grid's s is then its arc length; `None` in planar contact.
+    pub curved: Option<ConformalPatch>,
 }
 
 /// The weight of a mesh point: `∫ (pen − a x²)² dx` over the chord where the wheel, a circle
@@ -387,7 +392,7 @@ pub fn grid(
 
 /// Gap [mm] used where a normal line misses one of the surfaces (off the profiles' ends): far
 /// outside any contact.
-const MISSED_MM: f64 = 10.0;
+pub(super) const MISSED_MM: f64 = 10.0;
 
 /// How far beyond the grid's lateral range a column's cross-section is kept [mm]
 /// ([`grid_rail_y_range`]).
@@ -404,7 +409,10 @@ fn meshed_wheel(
 ) -> Option<Vec<Option<f64>>> {
     match &wheel.oor {
         Some(oor) => Some(oorwheel::wheel_n_mm(oor, wheel, frame, grid, y_mm)),
-        None => (surface == WheelSurface::ContactMesh).then(|| wheel_mesh::wheel_n_mm(frame, grid, wheel)),
+        None => (surface == WheelSurface::ContactMesh).then(|| {
+            let rows: Vec<f64> = (0..grid.ms).map(|j| grid.centre(0, j).1).collect();
+            wheel_mesh::wheel_n_mm(frame, grid, wheel, &rows)
+        }),
     }
 }
 
@@ -520,14 +528,15 @@ fn beyond_the_wheel_surface(c: &Candidate, frame: &PatchFrame, grid: &PatchGrid,
 }
 
 /// The patch of one candidate; in a shift that continues a sequence its grid widened to the
-/// contact of the time before of the old patches it connects to ([`shift::widened`]).
+/// contact of the time before of the old patches it connects to ([`shift::widened`]); with the
+/// conformal approach on its curved reference ([`conformal_grid`]).
 pub fn build(
     c: &Candidate,
     wheel: &PlacedWheel,
     rail: &PlacedRail,
     size_mm: (f64, f64),
     sep: &Separation,
-    (surface, motion, previous): (WheelSurface, Motion, Option<&shift::Previous>),
+    (surface, motion, previous, conformal): (WheelSurface, Motion, Option<&shift::Previous>, bool),
     slices: Option<&RailSlices>,
 ) -> Result<PatchGeometry, WheelRailError> {
     // A variable rail: the cross-section at the reference's x (CONTACT's `complete_patches`).
@@ -539,6 +548,9 @@ pub fn build(
     let rail = here.as_ref().unwrap_or(rail);
     let frame = frame(c, rail).ok_or(WheelRailError::NoContact)?;
     let mut grid = grid(c, &frame, rail, size_mm, motion)?;
+    if conformal {
+        return build_conformal(c, frame, grid, (wheel, rail), size_mm.1, surface);
+    }
     let mut widened = false;
     if let (Some(_), Some(previous)) = (motion.super_grid_s_mm(), previous) {
         let links = shift::connections(&[c.extent()], previous);
@@ -573,7 +585,47 @@ pub fn build(
         Blend { part, factor: sub_patch_factors(&c.parts, sep), n: c.parts.len() }
     });
     let rail_s_mm = rail.s_mm(frame.origin.y);
-    Ok(PatchGeometry { frame, grid, h_mm, pen_max_mm: c.pen_max_mm, blend, extent: c.extent(), rail_s_mm })
+    Ok(PatchGeometry {
+        frame,
+        grid,
+        h_mm,
+        pen_max_mm: c.pen_max_mm,
+        blend,
+        extent: c.extent(),
+        rail_s_mm,
+        curved: None,
+    })
+}
+
+/// The conformal patch of candidate `c` (CONTACT's D = 4, steady rolling, one region): its
+/// curved reference, the grid on it and the undeformed distance ([`conformal_grid`]).
+fn build_conformal(
+    c: &Candidate,
+    frame: PatchFrame,
+    planar: PatchGrid,
+    (wheel, rail): (&PlacedWheel, &PlacedRail),
+    ds_mm: f64,
+    surface: WheelSurface,
+) -> Result<PatchGeometry, WheelRailError> {
+    if c.parts.len() > 1 {
+        return Err(WheelRailError::ConformalSubPatches { parts: c.parts.len() });
+    }
+    let reference = conformal_reference::curved_reference(c, &frame, rail, wheel, ds_mm)
+        .ok_or(WheelRailError::NoCurvedReference)?;
+    let grid = conformal_grid::grid(&planar, &reference);
+    let patch = conformal_grid::surfaces(&frame, &grid, reference, (wheel, rail), surface);
+    let h_mm = conformal_grid::undeformed_distance(&frame, &grid, &patch);
+    let rail_s_mm = rail.s_mm(frame.origin.y);
+    Ok(PatchGeometry {
+        frame,
+        grid,
+        h_mm,
+        pen_max_mm: c.pen_max_mm,
+        blend: None,
+        extent: c.extent(),
+        rail_s_mm,
+        curved: Some(patch),
+    })
 }
 
 #[cfg(test)]

@@ -168,6 +168,16 @@ impl<'a> PlacedRail<'a> {
         self.curve.s_at_y(y_r)
     }
 
+    /// The rail's point at its profile's spline parameter s (CONTACT's `sr`) in track coordinates
+    /// (y, z) [mm], with its outward unit normal (n_y, n_z) there (the profile's (dz/ds, −dy/ds)
+    /// turned into the track: CONTACT's `spline_get_nvec_at_s`), where the rail is a profile file.
+    pub fn point_at_s(&self, s_mm: f64) -> Option<([f64; 2], [f64; 2])> {
+        let p = self.curve.spline_point(s_mm)?;
+        let [ty, tz] = p.tangent();
+        let (s, c) = self.angle_rad.sin_cos();
+        Some((self.to_track(p.y_mm, p.z_mm), [c * tz + s * ty, s * tz - c * ty]))
+    }
+
     /// Height z [mm] of the rail surface at track y [mm].
     pub fn z_mm(&self, y_mm: f64) -> Option<f64> {
         if self.angle_rad == 0.0 {

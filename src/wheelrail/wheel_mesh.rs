@@ -146,10 +146,12 @@ pub(super) fn logical_uv(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2], p: 
 
 /// The wheel's n (distance along the plane's normal from the plane) at every element centre,
 /// interpolated in CONTACT's mesh; `None` where no mesh cell covers the centre. The first cell
-/// (slices fastest) holding a centre on or inside its edges takes it.
-pub fn wheel_n_mm(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedWheel) -> Vec<Option<f64>> {
+/// (slices fastest) holding a centre on or inside its edges takes it. The rows lie at the plane's
+/// s `rows_s_mm` (ascending; the grid's own centres, or a conformal patch's rows,
+/// `curved_sc_to_planar_sp`); the grid gives the columns and the mesh's extent.
+pub fn wheel_n_mm(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedWheel, rows_s_mm: &[f64]) -> Vec<Option<f64>> {
     let m = mesh(frame, grid, wheel);
-    let mut out = vec![None; grid.len()];
+    let mut out = vec![None; grid.mx * rows_s_mm.len()];
     let rows = m.nodes.len() / m.slices.max(1);
     let xy = |k: usize| [m.nodes[k][0], m.nodes[k][1]];
     for r in 0..rows.saturating_sub(1) {
@@ -178,11 +180,12 @@ pub fn wheel_n_mm(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedWheel) -> 
                 continue;
             }
             let (i0, i1) = (lo(min(bx), grid.x0_mm, grid.dx_mm), lo(max(bx), grid.x0_mm, grid.dx_mm).min(grid.mx - 1));
-            let (j0, j1) = (lo(min(by), grid.s0_mm, grid.ds_mm), lo(max(by), grid.s0_mm, grid.ds_mm).min(grid.ms - 1));
-            for jj in j0..=j1 {
+            // The rows whose s lies in the cell's range (those beyond it lie outside the cell).
+            let (j0, j1) = (rows_s_mm.partition_point(|&s| s < min(by)), rows_s_mm.partition_point(|&s| s <= max(by)));
+            for (jj, &s) in rows_s_mm.iter().enumerate().take(j1).skip(j0) {
                 for ii in i0..=i1 {
                     let e = jj * grid.mx + ii;
-                    let (x, s) = grid.centre(ii, jj);
+                    let x = grid.centre(ii, jj).0;
                     if out[e].is_some() || !inside([x, s]) {
                         continue;
                     }

@@ -303,12 +303,19 @@ fn friction_varying_across_the_rail_or_along_the_track_is_read_and_named() {
     let f = cases[6].state.friction.as_ref().unwrap();
     assert_eq!((f.variation, f.sets[0].at, f.sets[1].at), (FrictionVariation::AlongTrack, Some(0.0), Some(100.0)));
     assert_eq!(f.sets[0].values, FrictionValues::Coulomb { fstat: 0.2, fkin: 0.2 });
-    // Carried (a note): the planar contact takes one mu per patch; cases 5 and 7 are conformal (D = 4).
+    // Carried (a note): the planar contact takes one mu per patch, the conformal one (cases 5
+    // and 7, D = 4) one per grid row.
     for c in &cases {
         let used: Vec<(WheelRailFeature, bool)> = c.features().iter().map(|u| (u.feature, u.supported)).collect();
         assert!(used.contains(&(WheelRailFeature::VaryingFriction, true)), "case {}: {used:?}", c.number);
-        let conformal = c.unsupported().iter().any(|u| u.feature == WheelRailFeature::ContactApproach);
+        let conformal = used.contains(&(WheelRailFeature::ContactApproach, true));
         assert_eq!(conformal, [5, 7].contains(&c.number), "case {}", c.number);
+        assert!(
+            c.unsupported().is_empty(),
+            "case {}: {:?}",
+            c.number,
+            c.unsupported().iter().map(|u| u.name).collect::<Vec<_>>()
+        );
     }
     assert_eq!((cases[0].digits.s, cases[0].state.subsurface_points), (3, true));
 }

@@ -188,13 +188,13 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
     };
     reason(20, "C = 5: a wheel on a roller rig");
     reason(21, "B = 1: a thin compressible elastic layer");
-    reason(35, "D (in force) = 4: contact approaches other than the planar one");
     reason(36, "F = 3: a massless rail");
     let note = |case: usize, start: &str| {
         let s = m1.iter().find(|s| s.case == case).unwrap();
         assert!(s.scene.is_some() && s.notes.iter().any(|r| r.starts_with(start)), "case {case}: {s:?}");
     };
     note(18, "DYRAIL, DZRAIL, DROLLR, VYRAIL, VZRAIL, VROLLR = 0, 5, 0.26179");
+    note(35, "D (in force) = 4: the conformal approach");
     note(19, "T = 0: frictionless compression");
     note(22, "SMOOTH = 10 (rail), 10 (wheel): profile smoothing");
     note(28, "PRFOPT = 1: ISMOOTH, ZIGTHRS, KINKHIGH, KINKLOW, KINKWID = 0, 2.61799");
@@ -204,11 +204,11 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
     let s39 = m1.iter().find(|s| s.case == 39).unwrap();
     assert_eq!(s39.scene.as_deref(), Some("testbank_38"));
     let scenes: Vec<&str> = imported.scenes.iter().map(|s| s.name.as_str()).collect();
-    // Module 1's steady cases import, one scene each; module 3's 24 (a per-element extra rigid
+    // Module 1's steady cases import, one scene each (35 conformal); module 3's 24 (a per-element extra rigid
     // slip) and 25, 26 (dissimilar bodies, one scene) are module-3 scenes (issue 46).
     let number = |s: &&str| s.split('_').nth(1).unwrap().parse::<usize>().unwrap();
     let module1: Vec<usize> = scenes.iter().map(number).filter(|&n| n >= 18 && n != 24 && n != 25).collect();
-    assert_eq!(module1, [18, 19, 22, 23, 27, 28, 29, 30, 31, 32, 33, 34, 38], "{scenes:?}");
+    assert_eq!(module1, [18, 19, 22, 23, 27, 28, 29, 30, 31, 32, 33, 34, 35, 38], "{scenes:?}");
     assert!(scenes.contains(&"testbank_1"), "{scenes:?}");
     // What the scenes carry: the rail's deviations, T = 0, SMOOTH, MIRRORZ, KINKWID; A_SEP = 90
     // (radians, `90d0`) as pi.
@@ -426,20 +426,22 @@ fn the_cattaneo_to_carter_shifts_import_as_one_sequence_with_their_positions() {
 }
 
 /// Friction varying across the rail (V = 1) and along the track (V = 2): mbench_a22_varfric's
-/// planar cases 1-4 and 6 imported, exported with `NVF` and their control points (and S_WS for
+/// cases imported (1-4 and 6 planar, 5 and 7 conformal), exported with `NVF` and their control points (and S_WS for
 /// V = 2), imported again as the same scenes. (Run by CONTACT, the exported decks print the totals
 /// of the deck they came from: FY(TR), FZ(TR) as printed, 2026-11-28.)
 #[test]
 fn a_friction_variation_exports_and_imports_back() {
     let dir = common::tempdir("m1_varfric_round_trip");
     let scenes = import(&examples().join("mbench_a22_varfric.inp"), &dir.join("scenes"), &["--supported-only"]);
-    assert_eq!(scenes.len(), 2, "{scenes:?}");
-    for (k, (scene, v, points)) in scenes
-        .iter()
-        .zip([("1", "ALPHA, FSTAT, FKIN"), ("2", "SVF, FSTAT, FKIN")])
-        .map(|(s, (v, p))| (s, v, p))
-        .enumerate()
-    {
+    assert_eq!(scenes.len(), 4, "{scenes:?}");
+    // Cases 1-4 and 6 planar, 5 and 7 conformal (D = 4, exported as D = 4).
+    let digits = [
+        ("1", "022033", "ALPHA, FSTAT, FKIN"),
+        ("1", "042033", "ALPHA, FSTAT, FKIN"),
+        ("2", "022033", "SVF, FSTAT, FKIN"),
+        ("2", "042033", "SVF, FSTAT, FKIN"),
+    ];
+    for (k, (scene, (v, ldcmze, points))) in scenes.iter().zip(digits).enumerate() {
         let (original, back) = round_trip(scene, &dir.join(format!("trip{k}")));
         assert!(original.mu_variation.is_some(), "{scene:?}");
         // The exported deck numbers its cases from 1.
@@ -451,7 +453,7 @@ fn a_friction_variation_exports_and_imports_back() {
         assert_eq!(renumbered(&back), renumbered(&original));
         let deck = std::fs::read_to_string(dir.join(format!("trip{k}/deck/{}.inp", original.name))).unwrap();
         let control = deck.lines().find(|l| l.contains("V-L-D-C-M-Z-E")).unwrap();
-        assert!(control.trim_start().starts_with(&format!("{v}022033")), "{control}");
+        assert!(control.trim_start().starts_with(&format!("{v}{ldcmze}")), "{control}");
         assert_eq!(deck.lines().filter(|l| l.ends_with(points)).count(), 2, "{deck}");
     }
 }

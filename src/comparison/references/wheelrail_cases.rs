@@ -98,7 +98,7 @@ const WORN_ROOT: &str = "the worn flange root's patch (blended and turned region
 /// "Agreement with CONTACT": each bounded at its measured gap by `tolerances.toml`). The
 /// benchmark's right case 11 (and case 9 of the KPEC deck), a gap until the rail was placed by its
 /// spline's gauge point and the gap mesh started at its lowest point, is reproduced.
-pub const KNOWN_GAPS: [KnownGap; 33] = [
+pub const KNOWN_GAPS: [KnownGap; 34] = [
     KnownGap {
         deck: "mbench_a22_kpec.inp",
         case: 1,
@@ -132,6 +132,11 @@ pub const KNOWN_GAPS: [KnownGap; 33] = [
         feature: "a guard rail against a wheel with measurement noise at the bottom of its flange: both patches CONTACT's since the contact locus is CONTACT's spline through the profile's points (before: the second patch not CONTACT's, FN 37 kN against 119 kN), the second patch's approach 8.7e-6 mm off (17.4 half-units), FY(WS) 1.77 and MN 1.25 half-units; cause not found",
     },
     KnownGap { deck: "testbank.inp", case: 34, feature: WORN_ROOT },
+    KnownGap {
+        deck: "testbank.inp",
+        case: 35,
+        feature: "the conformal approach (D = 4) on one patch over 173 rows from the worn flange to the tread (contact angles -72 to -2 deg, V = 1 per row, the height prescribed): forces, moments, positions, the approach and the counts CONTACT's, full slip; the least-squares split of the rigid slip into creepages not: CKSI -4.382e-3 against -4.336e-3, CPHI 1.1155e-3 against 1.117e-3 (the rest of the rigid slip per element, and so every traction, is the same); cause not found",
+    },
     KnownGap {
         deck: "mbench_a22_varfric.inp",
         case: 3,

@@ -732,7 +732,7 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "friction varying across the rail (contact angle) or along the track",
         control: "V, NVF, ALPHA/SVF",
         supported: true,
-        reason: "carried as [wheelrail] mu_by = \"contact_angle\" (V = 1: each patch's mu at its contact angle on the wheel) or \"track_s\" (V = 2: mu at S_WS), mu_at, mu_values = FSTAT, as CONTACT's planar contact takes them (one mu per patch); the conformal approach's mu per grid row (D = 4) is refused with D",
+        reason: "carried as [wheelrail] mu_by = \"contact_angle\" (V = 1: each patch's mu at its contact angle on the wheel; with the conformal approach, D = 4, each grid row's mu at the row's inclination) or \"track_s\" (V = 2: mu at S_WS), mu_at, mu_values = FSTAT, as CONTACT takes them",
         used: |c| {
             let f = c.state.friction.as_ref()?;
             (f.variation != FrictionVariation::Uniform).then(|| format!("V = {} with NVF = {}", c.digits.v, f.sets.len()))
@@ -751,10 +751,21 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "contact approaches other than the planar one with the contact locus",
         control: "D",
         supported: false,
-        reason: "supported: D = 2 (planar contact, contact locus, weighted reference), D = 5 (the same with the brute-force grid search, [wheelrail] contact_search = \"grid\") or D = 0, 1 keeping them; not 3 (rigid slip on the actual surfaces), 4 (conformal), 6 (the grid search's larger grid for steep slopes), 7-9 (the initial contact point, oblique views)",
+        reason: "supported: D = 2 (planar contact, contact locus, weighted reference), D = 4 (conformal), D = 5 (the planar one with the brute-force grid search, [wheelrail] contact_search = \"grid\") or D = 0, 1 keeping them; not 3 (rigid slip on the actual surfaces), 6 (the grid search's larger grid for steep slopes), 7-9 (the initial contact point, oblique views)",
         used: |c| {
             let m = c.state.discretisation.as_ref()?.method;
-            (m != 2 && m != 5).then(|| format!("D (in force) = {m}"))
+            (!matches!(m, 2 | 4 | 5)).then(|| format!("D (in force) = {m}"))
+        },
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::ContactApproach,
+        name: "the conformal approach",
+        control: "D",
+        supported: true,
+        reason: "carried as [wheelrail] approach = \"conformal\" (D = 4, docs/wheelrail.md \"The conformal approach\"): each patch on a curved reference midway between the surfaces, its rigid slip on the actual surfaces, the tractions turned back to the tangent plane; refused where a case also takes a shift or transient rolling, sub-patches, dissimilar bodies or a simplified model (named by the scene's reader)",
+        used: |c| {
+            let m = c.state.discretisation.as_ref()?.method;
+            (m == 4).then(|| format!("D (in force) = {m}"))
         },
     },
     WheelRailRow {

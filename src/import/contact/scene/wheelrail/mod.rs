@@ -380,6 +380,7 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         d_turn_mm: disc.d_turn_mm(),
         wheel_mesh: false,
         grid_search: disc.method == 5,
+        conformal: disc.method == 4,
         motion: match c.digits.t {
             1 => MotionSpec::Shift { s_ws_mm: s_ws, sequence: c.digits.p == 0, steady_start: false },
             2 => MotionSpec::RollingSequence { dq_rel: disc.dqrel, from_rest: c.digits.p == 2 },

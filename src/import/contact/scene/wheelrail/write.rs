@@ -57,6 +57,9 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
     if s.grid_search {
         wheelrail.push(("contact_search", Value::String("grid".into())));
     }
+    if s.conformal {
+        wheelrail.push(("approach", Value::String("conformal".into())));
+    }
     if s.frictionless {
         wheelrail.push(("frictionless", Value::Boolean(true)));
     }
