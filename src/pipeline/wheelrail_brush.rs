@@ -29,7 +29,8 @@ pub fn patch_forces(
 ) -> Result<PatchForces, Error> {
     let mut problem = patch_problem(p, model, mu, case)?;
     let (px0, py0) = previous_tractions(p, &WheelRailCase { previous: history, ..*case });
-    let start = Tractions { tx: field_in_grid_order(&problem.grid, &px0), ty: field_in_grid_order(&problem.grid, &py0) };
+    let start =
+        Tractions { tx: field_in_grid_order(&problem.grid, &px0), ty: field_in_grid_order(&problem.grid, &py0) };
     let failed = |e: SolveError| Error::Solve { scene: "patch".into(), solver: model.into(), source: Box::new(e) };
     let (step, t) = match case.motion {
         Motion::Shift { .. } => shift(&problem, &start),
