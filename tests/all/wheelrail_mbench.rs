@@ -60,7 +60,7 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
     // residue of a symmetric contact) and mbench_brute's case 30 (FN of a two-element patch,
     // CONTACT's stopping tolerance), each bounded at its measured gap (tolerances.toml).
     let all_gaps: Vec<&&Finding> = ours.iter().filter(|f| f.quantity.ends_with(wheelrail_cases::GAP_SUFFIX)).collect();
-    let testbank_gaps = [22, 27, 28, 29, 31, 34];
+    let testbank_gaps = [22, 27, 28, 29, 31, 34, 35];
     let in_testbank = |f: &&&Finding| f.scene.starts_with("testbank_") && testbank_gaps.contains(&f.step.unwrap_or(0));
     let kpec = |f: &&&Finding| f.scene.starts_with("mbench_a22_kpec_") && (1..=3).contains(&f.step.unwrap_or(0));
     let varfric = |f: &&&Finding| f.scene == "mbench_a22_varfric_1" && f.step == Some(3);
