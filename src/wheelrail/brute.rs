@@ -13,7 +13,7 @@ use super::patch::Candidate;
 use super::rail::PlacedRail;
 use super::varrail::RailSlices;
 use super::wheel::PlacedWheel;
-use nalgebra::{Point3, Vector3};
+use nalgebra::Vector3;
 use std::sync::Arc;
 
 /// The gap mesh's lateral step over DS (`fac_dyds` 0.5 times 1.5).
@@ -57,36 +57,12 @@ impl GapMesh {
     }
 }
 
-/// The wheel's surface the gap mesh is made over: CONTACT's mesh of it in track coordinates,
-/// `slices` nodes along x (fastest), then the profile's points or lateral samples.
-#[derive(Debug, Clone)]
-pub struct WheelMesh {
-    pub slices: usize,
-    pub nodes: Vec<Point3<f64>>,
-}
-
-/// The wheel's mesh the search takes: an out-of-round wheel's ([`oorwheel::mesh_local`]) or a
-/// round wheel's ([`round_local`]), placed in the track.
-pub fn wheel_mesh(wheel: &PlacedWheel, dx_mm: f64) -> WheelMesh {
-    placed(wheel, &local_mesh(wheel, dx_mm))
-}
-
 /// The wheel's mesh in its own frame (from its centre): the number of slices and the nodes.
 fn local_mesh(wheel: &PlacedWheel, dx_mm: f64) -> (usize, Vec<Vector3<f64>>) {
     match &wheel.oor {
         Some(oor) => oorwheel::mesh_local(oor, wheel, dx_mm),
         None => round_local(wheel, dx_mm),
     }
-}
-
-/// A mesh in the wheel's frame placed in the track.
-fn placed(wheel: &PlacedWheel, (slices, local): &(usize, Vec<Vector3<f64>>)) -> WheelMesh {
-    WheelMesh { slices: *slices, nodes: local.iter().map(|&p| wheel.to_track(p)).collect() }
-}
-
-/// A round wheel's mesh ([`round_local`]) placed in the track.
-pub fn round_mesh(wheel: &PlacedWheel, dx_mm: f64) -> WheelMesh {
-    placed(wheel, &round_local(wheel, dx_mm))
 }
 
 /// A round wheel's mesh in its frame (`compute_round_whl`, `grid_revolve_profile`): the profile's
@@ -196,7 +172,7 @@ pub struct GapMeshKept {
     z_turned_mm: Vec<Option<f64>>,
 }
 
-/// The gap mesh of `wheel` (its mesh: [`wheel_mesh`]) over `rail` (`compute_wr_surfc`): x over
+/// The gap mesh of `wheel` (its mesh: [`local_mesh`] turned and placed) over `rail` (`compute_wr_surfc`): x over
 /// the wheel mesh's range in as many steps as it has slices, y over the rail's lateral range
 /// (step 0.75 DS, centred); the rail's inclination that of `rail` (the rail at the wheelset); what
 /// does not change with the wheelset's height taken from `kept` ([`GapMeshKept`]).
@@ -448,12 +424,11 @@ mod tests {
         let pose = Pose { y_mm: 6.2, z_mm: -0.30, roll_rad: -0.00071622, yaw_rad: 0.0149 };
         let placed = PlacedWheel::place(&wheel, &g, &pose);
         // Every node at its profile point's radius R + z_w from the axle, x within ±R/8.
-        let mesh = round_mesh(&placed, 0.2);
-        assert_eq!(mesh.slices % 2, 1);
+        let (slices, nodes) = round_local(&placed, 0.2);
+        assert_eq!(slices % 2, 1);
         let points = wheel.points_mm().unwrap();
-        for (k, p) in mesh.nodes.iter().enumerate().step_by(97) {
-            let [_, z_w] = points[k / mesh.slices];
-            let q = placed.to_wheel(p);
+        for (k, q) in nodes.iter().enumerate().step_by(97) {
+            let [_, z_w] = points[k / slices];
             assert!((q.x.hypot(q.z) - (460.0 + z_w)).abs() < 1e-9, "{q:?}");
             assert!(q.x.abs() <= 460.0 / 8.0 + 1e-9, "{q:?}");
         }
