@@ -12,6 +12,17 @@ pub fn within_bound(tx: f64, ty: f64, g: f64) -> bool {
     tx * tx + ty * ty <= g * g
 }
 
+/// How close to the bound a traction counts as on it, relative: a projection onto the bound
+/// leaves |τ| = g to a few roundings.
+pub const ON_BOUND_REL: f64 = 1e-9;
+
+/// Whether the traction (τx, τy) sits on the bound `g > 0` (an element that slips in a model that
+/// projects onto the bound: |τ| ≥ (1 − [`ON_BOUND_REL`]) g).
+#[inline]
+pub fn on_bound(tx: f64, ty: f64, g: f64) -> bool {
+    g > 0.0 && !within_bound(tx, ty, g * (1.0 - ON_BOUND_REL))
+}
+
 /// Project the traction (τx, τy) onto the disk of radius `g = μ p` keeping its direction
 /// (thesis Eq. 2.29, written without the quadrant cases: τ ← g τ/|τ| when |τ| > g).
 /// Returns the projected traction and whether the bound was active (the element slips).

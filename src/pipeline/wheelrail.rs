@@ -12,8 +12,8 @@
 //! track, FS in its tangent plane (lateral), FN along its normal; totals in track and wheelset
 //! coordinates, y to the right on both sides.
 
+use super::resolve;
 use super::wheelrail_exact::{self, ExactCache};
-use super::{resolve, run};
 use crate::error::{Error, InputError};
 use crate::history::sample_loop::{run_with_fields, Field};
 use crate::physics::geometry::{Extent, GeometrySpec};
@@ -21,6 +21,7 @@ use crate::problem::Problem;
 use crate::scene::wheelrail::{moving_allowed, SHIFT_MODELS, TRANSIENT_ROLLING_MODELS};
 use crate::scene::Scene;
 use crate::solvers;
+use crate::solvers::brush::Tractions;
 use crate::wheelrail::friction::Friction;
 use crate::wheelrail::shift::Previous;
 use crate::wheelrail::vertical::FORCE_TOL;
@@ -52,6 +53,9 @@ pub struct PatchForces {
     /// In a shift, the exact theory's tractions `(px, py)` per element [MPa] (CONTACT's element
     /// order, the solver's frame): what the next case of a sequence of shifts continues from.
     pub shift_tractions_mpa: Option<(Vec<f64>, Vec<f64>)>,
+    /// Per element (CONTACT's element order) whether it slips, where the model tells adhesion
+    /// from slip on the patch's own grid: what the report's patch maps draw, from this solve.
+    pub slip: Option<Vec<bool>>,
     /// The largest surface temperature of both bodies on the patch [°C] (CONTACT's MAX(T1,T2)),
     /// where the scene computes them (`[material]`'s heat keys).
     pub temp_max_c: Option<f64>,
@@ -70,6 +74,7 @@ impl PatchForces {
             n_adhesion: None,
             n_slip: None,
             shift_tractions_mpa: None,
+            slip: None,
             temp_max_c: None,
         }
     }
@@ -345,6 +350,7 @@ fn frictionless(p: &NormalPatch) -> PatchForces {
         n_adhesion: Some(ncon),
         n_slip: Some(0),
         shift_tractions_mpa: None,
+        slip: Some(vec![false; p.pn_mpa.len()]),
         temp_max_c: None,
     }
 }
@@ -475,8 +481,10 @@ pub(super) fn patch_problem(p: &NormalPatch, model: &str, mu: f64, case: &WheelR
 
 /// One model on one patch, its forces turned to CONTACT's signs and the side's frame.
 pub(super) fn patch_solve(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> Result<PatchForces, Error> {
-    let result = run(patch_problem(p, model, mu, case)?)?;
-    let h = &result.histories[0];
+    let problem = patch_problem(p, model, mu, case)?;
+    let def = solvers::builtin(model).ok_or_else(|| InputError::new("solvers", model, "a built-in model"))?;
+    let failed = |e| Error::Solve { scene: "patch".into(), solver: model.into(), source: Box::new(e) };
+    let (h, fields) = run_with_fields(&problem, def, &|_| true).map_err(failed)?;
     let row = &h.rows[0];
     let count = |name: &str| h.column(name).map(|c| c[0] as usize);
     let mz_nmm = h.column(crate::history::MZ).map_or(f64::NAN, |c| c[0]);
@@ -486,22 +494,32 @@ pub(super) fn patch_solve(p: &NormalPatch, model: &str, mu: f64, case: &WheelRai
         n_adhesion: count("n_adhesion"),
         n_slip: count("n_slip"),
         temp_max_c: (!temperatures.is_empty()).then(|| temperatures.iter().copied().fold(f64::MIN, f64::max)),
+        slip: fields.last().and_then(|f| slip_on_patch(p, &problem, f, count("n_slip"))),
         ..PatchForces::on_rail(p, case, row.fx_over_fn, row.fy_over_fn, mz_nmm)
     })
 }
 
-/// One model's field on a patch (pressure, tractions, adhesion or slip per element, CONTACT's
-/// element order), if the model solves the patch on its own grid and tells adhesion from slip.
-pub fn patch_field(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> Result<Option<Field>, Error> {
-    let problem = patch_problem(p, model, mu, case)?;
-    let Some(def) = solvers::builtin(model) else { return Ok(None) };
-    let (_, fields) = run_with_fields(&problem, def, &|_| true).map_err(|e| Error::Solve {
-        scene: "patch".into(),
-        solver: model.into(),
-        source: Box::new(e),
-    })?;
-    let own_grid = |f: &Field| f.pn_mpa.len() == p.geometry.grid.len() && f.state.len() == f.pn_mpa.len();
-    Ok(fields.into_iter().last().filter(own_grid))
+/// A model's slip per element of patch `p` (CONTACT's element order) from its field on the
+/// patch's module-3 problem, if the model solves on the patch's grid and tells adhesion from slip:
+/// by its element states, or else by its traction on the bound where it counts `n_slip` so.
+fn slip_on_patch(p: &NormalPatch, problem: &Problem, f: &Field, n_slip: Option<usize>) -> Option<Vec<bool>> {
+    let n = p.geometry.grid.len();
+    if problem.grid.len() != n || f.pn_mpa.len() != n {
+        return None;
+    }
+    if f.state.len() == n {
+        return Some(wheelrail_exact::slip_of(&problem.grid, &f.state));
+    }
+    let t = Tractions { tx: f.px_mpa.clone(), ty: f.py_mpa.clone() };
+    let slip = on_bound_counted(&t, &f.pn_mpa, problem.loading.first().mu, n_slip?)?;
+    Some(wheelrail_exact::in_contact_order(&problem.grid, &slip))
+}
+
+/// Per element (grid order) whether a brush model's traction sits on its bound μ p, if exactly
+/// `n_slip` do (the model's own count of its slipping elements).
+pub(super) fn on_bound_counted(t: &Tractions, pressure_mpa: &[f64], mu: f64, n_slip: usize) -> Option<Vec<bool>> {
+    let slip = t.slipping(pressure_mpa, mu);
+    (slip.iter().filter(|&&s| s).count() == n_slip).then_some(slip)
 }
 
 /// The totals on the rail in track and wheelset coordinates (the side's frame).

@@ -7,7 +7,7 @@
 //! sub-stepped above 1), and in the steady case that starts a sequence the model's steady
 //! solution, kept for the next.
 
-use super::wheelrail::{patch_problem, PatchForces};
+use super::wheelrail::{on_bound_counted, patch_problem, PatchForces};
 use super::wheelrail_exact::{about_anchor, in_contact_order, previous_tractions};
 use crate::error::{Error, InputError};
 use crate::physics::geometry::field_in_grid_order;
@@ -32,7 +32,7 @@ pub fn patch_forces(
     let start =
         Tractions { tx: field_in_grid_order(&problem.grid, &px0), ty: field_in_grid_order(&problem.grid, &py0) };
     let failed = |e: SolveError| Error::Solve { scene: "patch".into(), solver: model.into(), source: Box::new(e) };
-    let (step, t) = match case.motion {
+    let (step, t, pressure_mpa) = match case.motion {
         Motion::Shift { .. } => shift(&problem, &start),
         Motion::Transient { dq_mm } => {
             problem.rolling.courant = courant(dq_mm, problem.grid.dx_mm)?;
@@ -45,10 +45,13 @@ pub fn patch_forces(
         }
     };
     let count = |k: usize| step.extra.get(k).map(|v| *v as usize);
+    let mu = problem.loading.first().mu;
+    let slip = count(1).and_then(|n| on_bound_counted(&t, &pressure_mpa, mu, n));
     let forces = PatchForces {
         n_adhesion: count(0),
         n_slip: count(1),
         shift_tractions_mpa: Some((in_contact_order(&problem.grid, &t.tx), in_contact_order(&problem.grid, &t.ty))),
+        slip: slip.map(|s| in_contact_order(&problem.grid, &s)),
         ..PatchForces::on_rail(p, case, step.fx_over_fn, step.fy_over_fn, step.mz_nmm)
     };
     Ok(if case.motion.super_grid_s_mm().is_some() { about_anchor(forces, p, case) } else { forces })
@@ -56,28 +59,28 @@ pub fn patch_forces(
 
 /// One brush shift of the problem's patch from `start`: the shifts are the sample's creepages
 /// (CONTACT's T = 1: dt = 1, the velocities one step's shifts).
-fn shift(problem: &Problem, start: &Tractions) -> (Step, Tractions) {
+fn shift(problem: &Problem, start: &Tractions) -> (Step, Tractions, Vec<f64>) {
     let at = problem.loading.first();
     let local = problem.local_contact(at.fn_n);
     let shift = brush::slip_rates(at, &local);
     let mut t = Tractions::zero(problem.grid.len());
     let n_slip = brush_shift::shift_step(&problem.grid, &local, at.mu, &shift, start, &mut t);
     let loaded = local.planform.pressure_mpa.iter().filter(|&&p| p > 0.0).count();
-    (brush::step(&local.planform, t.sums(&problem.grid), loaded, n_slip), t)
+    (brush::step(&local.planform, t.sums(&problem.grid), loaded, n_slip), t, local.planform.pressure_mpa)
 }
 
 /// `stepper` (on `problem`) through one solve `solve` (a transient step or steady rolling) of the
-/// problem's one sample: its result and tractions.
+/// problem's one sample: its result, tractions and the pressure that bounds them.
 fn solved<'a>(
     problem: &'a Problem,
     mut stepper: Box<dyn Stepper + 'a>,
     solve: impl FnOnce(&mut (dyn Stepper + 'a), &Sample) -> Result<Step, SolveError>,
-) -> Result<(Step, Tractions), SolveError> {
+) -> Result<(Step, Tractions, Vec<f64>), SolveError> {
     let at = problem.loading.first();
     stepper.load(at)?;
     let step = solve(stepper.as_mut(), at)?;
     let f = stepper.field().expect("FASTSIM and the UBA have a traction field");
-    Ok((step, Tractions { tx: f.tx_mpa.to_vec(), ty: f.ty_mpa.to_vec() }))
+    Ok((step, Tractions { tx: f.tx_mpa.to_vec(), ty: f.ty_mpa.to_vec() }, f.pressure_mpa.to_vec()))
 }
 
 /// The UBA's Courant number of a transient rolling step DQ on elements DX, within its limit

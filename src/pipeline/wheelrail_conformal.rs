@@ -57,6 +57,7 @@ impl ConformalForces {
             n_adhesion: None,
             n_slip: None,
             shift_tractions_mpa: None,
+            slip: None,
             temp_max_c: None,
         }
     }

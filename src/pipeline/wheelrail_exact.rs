@@ -16,6 +16,7 @@ use crate::physics::{moment_sum, Grid, Material};
 use crate::scene::ContactSolverOptions;
 use crate::solvers::contact::tangential::{StepResult, TangentialParams, TangentialSolver};
 use crate::solvers::contact::ContactError;
+use crate::solvers::stepper::ElementState;
 use crate::wheelrail::{shift, Motion, NormalPatch, WheelRailCase};
 
 /// Grids kept per case (the oldest dropped first).
@@ -160,6 +161,7 @@ pub fn patch_forces(
         return Ok(PatchForces {
             n_adhesion: Some(r.n_adhesion),
             n_slip: Some(r.n_slip),
+            slip: Some(slip_of(&grid, &r.state)),
             ..forces.on_rail(case.side.sign())
         });
     }
@@ -174,6 +176,7 @@ pub fn patch_forces(
         n_adhesion: Some(r.n_adhesion),
         n_slip: Some(r.n_slip),
         shift_tractions_mpa,
+        slip: Some(slip_of(&grid, &r.state)),
         ..PatchForces::on_rail(p, case, fx_over_fn, fy_over_fn, mz_nmm)
     };
     Ok(if case.motion.super_grid_s_mm().is_some() { about_anchor(forces, p, case) } else { forces })
@@ -203,10 +206,16 @@ pub(super) fn previous_tractions(p: &NormalPatch, case: &WheelRailCase) -> (Vec<
     }
 }
 
+/// Whether each element slips, from the solver's states (grid order) to CONTACT's element order.
+pub(super) fn slip_of(grid: &Grid, state: &[ElementState]) -> Vec<bool> {
+    let slips: Vec<bool> = state.iter().map(|s| *s == ElementState::Slip).collect();
+    in_contact_order(grid, &slips)
+}
+
 /// A field in the grid's flat order back in CONTACT's element order (the inverse of
 /// [`field_in_grid_order`]: x mirrored).
-pub(super) fn in_contact_order(grid: &Grid, field: &[f64]) -> Vec<f64> {
-    let mut out = vec![0.0; field.len()];
+pub(super) fn in_contact_order<T: Copy + Default>(grid: &Grid, field: &[T]) -> Vec<T> {
+    let mut out = vec![T::default(); field.len()];
     for j in 0..grid.my {
         for i in 0..grid.mx {
             out[j * grid.mx + (grid.mx - 1 - i)] = field[grid.index(i, j)];

@@ -4,12 +4,11 @@
 //! slip per element). Everything in CONTACT's printed frame: y to the right on both sides, z
 //! downwards.
 
-use super::wheelrail::patch_field;
+use super::wheelrail::CaseResult;
 use super::wheelrail_scene::{case_of, prepare, SceneRun};
 use crate::error::Error;
 use crate::problem::material_of_spec;
 use crate::scene::wheelrail::WheelRailScene;
-use crate::solvers::stepper::ElementState;
 use crate::wheelrail::rail::PlacedRail;
 use crate::wheelrail::wheel::{PlacedWheel, Pose};
 use crate::wheelrail::{NormalPatch, WheelRailError};
@@ -52,9 +51,9 @@ pub struct WheelRailView {
 }
 
 /// The view of `run`, the result of `scene`: the profiles read again, the cases of
-/// `patch_cases` placed, and every model with a field of its own solved again on their patches.
+/// `patch_cases` placed, with every model's patch maps as its solve left them.
 pub fn view(scene: &WheelRailScene, run: SceneRun) -> Result<WheelRailView, Error> {
-    let (rail, wheel, models) = prepare(scene)?;
+    let (rail, wheel, _) = prepare(scene)?;
     let material = material_of_spec(&scene.material)?;
     let geometry =
         |e: WheelRailError| Error::from(crate::error::InputError::new("wheelrail", "the case", e.to_string()));
@@ -72,22 +71,30 @@ pub fn view(scene: &WheelRailScene, run: SceneRun) -> Result<WheelRailView, Erro
         }
         let placed_rail = PlacedRail::place(case.rail, &case.track).map_err(geometry)?;
         outlines.push(outline(*number, m, &placed_rail, &placed, &result.normal.patches));
-        for (k, p) in result.normal.patches.iter().enumerate() {
-            for model in &models {
-                let Some(field) = patch_field(p, model, scene.mu, &case)? else { continue };
-                let g = &p.geometry.grid;
-                let cells = (0..g.len())
-                    .map(|e| {
-                        let (x, s) = g.centre(e % g.mx, e / g.mx);
-                        (x, m * s, field.pn_mpa[e], field.state[e] == ElementState::Slip)
-                    })
-                    .collect();
-                let element_mm = (g.dx_mm, g.ds_mm);
-                maps.push(PatchMap { contact_case: *number, patch: k + 1, model: model.clone(), cells, element_mm });
-            }
-        }
+        maps.extend(case_maps(*number, m, result));
     }
     Ok(WheelRailView { scene: scene.clone(), run, ycp_w_mm, outlines, maps })
+}
+
+/// The patch maps of one solved case: every model that kept its slip per element, on the patches
+/// its forces are on (`m`: y's sign in the side's printed frame).
+fn case_maps(case: u64, m: f64, result: &CaseResult) -> Vec<PatchMap> {
+    let mut maps = Vec::new();
+    for (model, forces, _) in &result.models {
+        for (k, (p, f)) in result.normal_of(model).patches.iter().zip(forces).enumerate() {
+            let Some(slip) = &f.slip else { continue };
+            let g = &p.geometry.grid;
+            let cells = (0..g.len())
+                .map(|e| {
+                    let (x, s) = g.centre(e % g.mx, e / g.mx);
+                    (x, m * s, p.pn_mpa[e], slip[e])
+                })
+                .collect();
+            let element_mm = (g.dx_mm, g.ds_mm);
+            maps.push(PatchMap { contact_case: case, patch: k + 1, model: model.clone(), cells, element_mm });
+        }
+    }
+    maps
 }
 
 /// The patch's reference point in the wheel profile's lateral coordinate (CONTACT's YCP(W): the

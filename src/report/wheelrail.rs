@@ -313,7 +313,7 @@ fn wheel(w: &Wheel, sec: &mut Section) {
         let file = format!("wheelrail_{name}_profiles_{}.svg", o.contact_case);
         figure(sec, file, profiles_figure(name, o), &format!("{name} case {} profiles", o.contact_case));
     }
-    let _ = writeln!(sec.body, "\n**Patch maps**: pressure (the exact normal solution) with each model's slipping elements struck through; x along the track, s along the rail profile (y's sense)\n");
+    let _ = writeln!(sec.body, "\n**Patch maps**: pressure (the normal solution the model's forces are on) with each model's slipping elements struck through, as its solve left them (in a sequence: the state its history reached); x along the track, s along the rail profile (y's sense)\n");
     for m in &view.maps {
         let title = format!("{name}, case {}, patch {}: {}", m.contact_case, m.patch, m.model);
         let file = format!("wheelrail_{name}_map_{}_{}_{}.svg", m.contact_case, m.patch, m.model);

@@ -97,6 +97,13 @@ impl Tractions {
         Tractions { tx: vec![0.0; n], ty: vec![0.0; n] }
     }
 
+    /// Per element (flat order) whether it slips: its traction on the bound μ p
+    /// ([`crate::physics::bound::on_bound`]), `pressure_mpa` the planform's.
+    pub fn slipping(&self, pressure_mpa: &[f64], mu: f64) -> Vec<bool> {
+        let on = |k: usize| crate::physics::bound::on_bound(self.tx[k], self.ty[k], mu * pressure_mpa[k]);
+        (0..self.tx.len()).map(on).collect()
+    }
+
     /// The field view of these tractions on the planform's pressure.
     pub fn view<'a>(&'a self, grid: &'a Grid, planform: &'a Planform) -> FieldView<'a> {
         FieldView {

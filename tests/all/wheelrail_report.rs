@@ -196,3 +196,61 @@ fn run_of_the_shipped_suite_draws_only_the_declared_scenes() {
     let fx = std::fs::read_to_string(rep.join("figures/wheelrail_m1_catt_shift_1_p1_fx_n.svg")).unwrap();
     assert!(fx.contains("wheelset position along the track S_WS [mm]") && fx.contains(">CONTACT<"), "{fx}");
 }
+
+/// The patch maps are the solve's own, not a steady solve again: in the Cattaneo shift
+/// sequence (`m1_catt_shift_1`, cases 1, 11, 81 drawn) every model's map slips in exactly as
+/// many elements as its solve counted, and the exact theory's in as many as CONTACT printed
+/// (NSLIP); FASTSIM and the UBA, whose elements slip where the traction sits on the bound,
+/// have maps too.
+#[test]
+fn patch_maps_in_a_shift_sequence_are_the_solves_own() {
+    let path = common::root().join("scenes/wheelrail/m1_catt_shift_1.toml");
+    let scene = WheelRailScene::from_file(&path).unwrap();
+    let run = wheelrail_scene::run_scene(&scene).unwrap();
+    let theirs = printed::read(
+        &common::root().join("reference/contact_wheelrail/testbank/examples_trans/m1_catt_shift.ref_out"),
+    )
+    .unwrap();
+    let view = wheelrail_view::view(&scene, run).unwrap();
+    let mut seen = std::collections::BTreeSet::new();
+    for map in &view.maps {
+        let (_, result) = view.run.cases.iter().find(|(c, _)| *c == map.contact_case).unwrap();
+        let (_, forces, _) = result.models.iter().find(|(m, _, _)| *m == map.model).unwrap();
+        let ours = map.cells.iter().filter(|c| c.3).count();
+        let counted = forces[map.patch - 1].n_slip.unwrap();
+        println!("case {} patch {} {}: {ours} slipping of {}", map.contact_case, map.patch, map.model, map.cells.len());
+        assert_eq!(ours, counted, "case {} {}: the map against the solve's count", map.contact_case, map.model);
+        if map.model == "contact" {
+            let t = theirs.iter().find(|c| u64::from(c.case) == map.contact_case).unwrap();
+            let printed = t.patches[map.patch - 1].statistics.as_ref().unwrap().nslip as usize;
+            assert_eq!(ours, printed, "case {}: the exact theory's map against CONTACT's NSLIP", map.contact_case);
+        }
+        seen.insert((map.contact_case, map.model.clone()));
+    }
+    for case in [1, 11, 81] {
+        for model in ["contact", "fastsim", "uba"] {
+            assert!(seen.contains(&(case, model.to_string())), "case {case}: no map of {model}");
+        }
+    }
+}
+
+/// The patch maps in CONTACT's element order: in steady rolling (Manchester left, case 1,
+/// the wheel rolling towards +x) the slip lies behind the adhesion, at the trailing edge, for the
+/// exact theory and FASTSIM alike.
+#[test]
+fn patch_maps_slip_at_the_trailing_edge_in_steady_rolling() {
+    let dir = common::tempdir("wheelrail_report_trailing");
+    let scene = WheelRailScene::from_file(&scene(&dir, "left", &[1], "[\"contact\", \"fastsim\"]")).unwrap();
+    let run = wheelrail_scene::run_scene(&scene).unwrap();
+    let view = wheelrail_view::view(&scene, run).unwrap();
+    assert_eq!(view.maps.len(), 2);
+    for map in &view.maps {
+        let mean_x = |slip: bool| {
+            let xs: Vec<f64> = map.cells.iter().filter(|c| c.2 > 0.0 && c.3 == slip).map(|c| c.0).collect();
+            xs.iter().sum::<f64>() / xs.len() as f64
+        };
+        let (slip_x, adhesion_x) = (mean_x(true), mean_x(false));
+        println!("{}: slip at x = {slip_x:.3} mm, adhesion at {adhesion_x:.3} mm", map.model);
+        assert!(slip_x < adhesion_x, "{}: slip {slip_x} not behind adhesion {adhesion_x}", map.model);
+    }
+}
