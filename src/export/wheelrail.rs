@@ -78,13 +78,13 @@ fn check_tangential(s: &WheelRailScene) -> Result<(), InputError> {
         veldep_solves: VeldepSolves::Tight,
         ..d
     };
-    match s.tangential.temperature_law {
-        None if o != d => Err(InputError::new(
+    match temperature_law(s) {
+        false if o != d => Err(InputError::new(
             "contact_solver",
             format!("{o:?}"),
             "left out: module 1's input carries the exact solver's options only for [friction] law = \"temperature\"",
         )),
-        Some(_) if o != contact || o.tempdep_max_iterations < 2 => Err(InputError::new(
+        true if o != contact || o.tempdep_max_iterations < 2 => Err(InputError::new(
             "contact_solver",
             format!("{o:?}"),
             "CONTACT's own stop of the temperature iteration: tempdep_tolerance = 1e-4, veldep_solves = \"tight\", tempdep_max_iterations of at least 2 (MAXIN = it + 9), no other key",
@@ -169,7 +169,7 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
     };
     // Friction of the temperature (L = 6) read by the first case, kept after it (L = 1); the
     // surface temperatures read (H = 3) by the first case, computed again (H = 1) by the later ones.
-    let law = if first && s.tangential.temperature_law.is_some() { "6" } else { &ldcmze[..1] };
+    let law = if first && temperature_law(s) { "6" } else { &ldcmze[..1] };
     // The grid search (`contact_search = "grid"`) is D = 5, the conformal approach D = 4, read by
     // the first case, kept after it.
     let d = match (first, s.grid_search, s.conformal) {
@@ -211,7 +211,7 @@ fn wheel_deviation(s: &WheelRailScene, out: &mut String) {
 /// The first case's groups: solver, friction, material, discretisation, track, rail, wheelset.
 fn setup(s: &WheelRailScene, (rail, wheel): (&str, &str), out: &mut String) {
     let (g, nu) = (shear_modulus(&s.material), s.material.poisson);
-    let maxin = s.tangential.temperature_law.map_or(MAXIN, |_| s.tangential.contact_solver.tempdep_max_iterations + 9);
+    let maxin = if temperature_law(s) { s.tangential.contact_solver.tempdep_max_iterations + 9 } else { MAXIN };
     let _ = writeln!(out, "    999     {maxin}    30    1     1e-5         MAXGS , MAXIN , MAXNR , MAXOUT, EPS");
     friction(s, out);
     let _ = writeln!(out, "  {nu:?}   {nu:?}   {g:?}   {g:?}                POISS 1,2,  GG 1,2");
@@ -254,14 +254,21 @@ fn setup(s: &WheelRailScene, (rail, wheel): (&str, &str), out: &mut String) {
     profile_line(wheel, &s.wheel, "WFNAME", out);
 }
 
-/// Friction of the temperature (L = 6): `FREF TREF DFHEAT DTHEAT` and `MEMDST MEM_S0`; Coulomb's law (L = 0): `FSTAT FKIN` with one μ, or with a variation (V = 1, 2) `NVF` and per
-/// control point `ALPHA (or SVF) FSTAT FKIN` (user guide, module 1, "VARFRC").
+/// Whether the scene's friction is the temperature law (L = 6): one law, or per control point.
+fn temperature_law(s: &WheelRailScene) -> bool {
+    s.tangential.temperature_law.is_some() || s.mu_variation.as_ref().is_some_and(|v| v.temperature.is_some())
+}
+
+/// Friction of the temperature (L = 6): `FREF TREF DFHEAT DTHEAT`, or with a variation (V = 1, 2)
+/// `NVF` and per control point `ALPHA (or SVF) FREF TREF DFHEAT DTHEAT`, then `MEMDST MEM_S0`;
+/// Coulomb's law (L = 0): `FSTAT FKIN` with one μ, or with a variation `NVF` and per control point
+/// `ALPHA (or SVF) FSTAT FKIN` (user guide, module 1, "VARFRC").
 fn friction(s: &WheelRailScene, out: &mut String) {
+    const NO_MEMORY: &str = "  0.0   1.0                                 MEMDST, MEM_S0";
     if let Some(t) = s.tangential.temperature_law {
-        // L = 6 (one set, V = 0), without a memory.
         let (fref, tref, dfheat, dtheat) = (t.fref, t.tref_c, t.dfheat, t.dtheat_c);
         let _ = writeln!(out, "  {fref:?}   {tref:?}   {dfheat:?}   {dtheat:?}          FREF, TREF, DFHEAT, DTHEAT");
-        let _ = writeln!(out, "  0.0   1.0                                 MEMDST, MEM_S0");
+        let _ = writeln!(out, "{NO_MEMORY}");
         return;
     }
     let Some(v) = &s.mu_variation else {
@@ -270,8 +277,20 @@ fn friction(s: &WheelRailScene, out: &mut String) {
     };
     let at = if v.by == MuBy::ContactAngle { "ALPHA" } else { "SVF" };
     let _ = writeln!(out, "  {}                                            NVF", v.at.len());
-    for (x, mu) in v.at.iter().zip(&v.values) {
-        let _ = writeln!(out, "  {x:?}   {mu:?}   {mu:?}                        {at}, FSTAT, FKIN");
+    match &v.temperature {
+        Some([tref, dfheat, dtheat]) => {
+            for k in 0..v.at.len() {
+                let (x, fref, t, df, dt) = (v.at[k], v.values[k], tref[k], dfheat[k], dtheat[k]);
+                let _ =
+                    writeln!(out, "  {x:?}   {fref:?}   {t:?}   {df:?}   {dt:?}     {at}, FREF, TREF, DFHEAT, DTHEAT");
+            }
+            let _ = writeln!(out, "{NO_MEMORY}");
+        }
+        None => {
+            for (x, mu) in v.at.iter().zip(&v.values) {
+                let _ = writeln!(out, "  {x:?}   {mu:?}   {mu:?}                        {at}, FSTAT, FKIN");
+            }
+        }
     }
 }
 

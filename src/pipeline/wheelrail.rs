@@ -19,6 +19,7 @@ use crate::history::sample_loop::{run_with_fields, Field};
 use crate::physics::geometry::{Extent, GeometrySpec};
 use crate::problem::Problem;
 use crate::scene::wheelrail::{moving_allowed, SHIFT_MODELS, TRANSIENT_ROLLING_MODELS};
+use crate::scene::wheelrail_tangential::Tangential;
 use crate::scene::Scene;
 use crate::solvers;
 use crate::solvers::brush::Tractions;
@@ -362,7 +363,14 @@ pub(crate) fn patch_forces(
     mu: &Friction,
     case: &WheelRailCase,
 ) -> Result<Vec<PatchForces>, Error> {
-    normal.patches.iter().map(|p| patch_solve(p, model, mu.of_patch(p, case), case)).collect()
+    let solve = |p: &NormalPatch| match mu.temperature_law_of(p, case) {
+        Some(law) => {
+            let tangential = Tangential { temperature_law: Some(law), ..case.tangential };
+            patch_solve(p, model, mu.of_patch(p, case), &WheelRailCase { tangential, ..*case })
+        }
+        None => patch_solve(p, model, mu.of_patch(p, case), case),
+    };
+    normal.patches.iter().map(solve).collect()
 }
 
 /// A model that carries its history ([`super::wheelrail_brush`]) on every patch of a case that
@@ -388,7 +396,11 @@ fn exact_forces(
     case: &WheelRailCase,
     cache: &mut ExactCache,
 ) -> Result<Vec<PatchForces>, Error> {
-    if case.material.coupled() || case.heat.is_some() || case.tangential != Default::default() {
+    if case.material.coupled()
+        || case.heat.is_some()
+        || case.tangential != Default::default()
+        || mu.temperature_varies()
+    {
         return patch_forces(normal, EXACT, mu, case);
     }
     let failed = |e| Error::Solve { scene: "patch".into(), solver: EXACT.into(), source: Box::new(e) };

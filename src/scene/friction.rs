@@ -18,7 +18,7 @@ const FALLING: Absent = Absent::Text("required for a falling law");
 /// Required by the temperature law.
 const TEMPERATURE: Absent = Absent::Text("required for law = \"temperature\"");
 /// A temperature [°C].
-const CELSIUS: Range = Range::new(-273.15, true, 1e5, true);
+pub(crate) const CELSIUS: Range = Range::new(-273.15, true, 1e5, true);
 /// The keys of the falling laws (L = 2, 3, 4).
 const FALLING_KEYS: [&str; 5] = ["fkin", "f1", "sabsh1_mm_s", "f2", "sabsh2_mm_s"];
 /// The keys of the temperature law (L = 6).

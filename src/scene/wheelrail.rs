@@ -8,6 +8,7 @@ use super::reader::{parse_toml, Range, Section};
 use super::top::table;
 use super::{is_valid_name, MaterialSpec, Origin};
 use crate::error::InputError;
+use crate::physics::TemperatureLaw;
 use std::path::{Path, PathBuf};
 
 /// Which side of the track the wheel runs on.
@@ -117,31 +118,51 @@ pub enum MuBy {
 }
 
 /// Coulomb's μ at control points (`[wheelrail] mu_by`, `mu_at`, `mu_values`): linear between
-/// them, constant beyond (CONTACT's `fric_interp`).
+/// them, constant beyond (CONTACT's `fric_interp`); with the temperature law each of its
+/// parameters so (`fric_interp_arr`, L = 6).
 #[derive(Debug, Clone, PartialEq)]
 pub struct MuVariation {
     pub by: MuBy,
     /// The control points, increasing: rad (contact angle) or mm (track position).
     pub at: Vec<f64>,
+    /// μ at each point; with the temperature law its FREF.
     pub values: Vec<f64>,
+    /// With `[friction] law = "temperature"`: TREF [°C], DFHEAT and DTHEAT [°C] at each point
+    /// (`tref_c_values`, `dfheat_values`, `dtheat_c_values`).
+    pub temperature: Option<[Vec<f64>; 3]>,
 }
 
 impl MuVariation {
     /// μ at `x` (rad or mm as [`MuBy`] says): linear between the control points, the end values
     /// beyond them.
     pub fn at(&self, x: f64) -> f64 {
-        let (a, v) = (&self.at, &self.values);
-        let n = a.len();
-        if x <= a[0] {
-            return v[0];
-        }
-        if x >= a[n - 1] {
-            return v[n - 1];
-        }
-        let k = a.partition_point(|&p| p <= x).min(n - 1);
-        let t = (x - a[k - 1]) / (a[k] - a[k - 1]);
-        v[k - 1] + t * (v[k] - v[k - 1])
+        interpolate(&self.at, &self.values, x)
     }
+
+    /// The temperature law at `x`, each parameter interpolated as μ is; `None` for Coulomb's law.
+    pub fn law_at(&self, x: f64) -> Option<TemperatureLaw> {
+        let [tref, dfheat, dtheat] = self.temperature.as_ref()?;
+        Some(TemperatureLaw {
+            fref: self.at(x),
+            tref_c: interpolate(&self.at, tref, x),
+            dfheat: interpolate(&self.at, dfheat, x),
+            dtheat_c: interpolate(&self.at, dtheat, x),
+        })
+    }
+}
+
+/// `v` given at the increasing points `a`, at `x`: linear between them, the end values beyond.
+fn interpolate(a: &[f64], v: &[f64], x: f64) -> f64 {
+    let n = a.len();
+    if x <= a[0] {
+        return v[0];
+    }
+    if x >= a[n - 1] {
+        return v[n - 1];
+    }
+    let k = a.partition_point(|&p| p <= x).min(n - 1);
+    let t = (x - a[k - 1]) / (a[k] - a[k - 1]);
+    v[k - 1] + t * (v[k] - v[k - 1])
 }
 
 /// How the wheel moves in every case (`[wheelrail] motion`).
@@ -542,7 +563,7 @@ impl WheelRailScene {
         }
         let context = super::wheelrail_tangential::Context {
             mu,
-            mu_varies: mu_variation.is_some(),
+            mu_variation: mu_variation.as_ref(),
             heat: material.heat.is_some(),
             solvers: &solvers,
             motion,

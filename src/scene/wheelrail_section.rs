@@ -12,6 +12,10 @@ use crate::error::InputError;
 const MU: Range = Range::new(0.0, false, 10.0, true);
 /// Largest number of friction control points (CONTACT's NVF).
 const MAX_MU_POINTS: usize = 1000;
+/// The temperature law's ranges per control point (`[friction]`'s `tref_c`, `dfheat`, `dtheat_c`).
+const CELSIUS: Range = crate::scene::friction::CELSIUS;
+const DFHEAT: Range = Range::new(-1e3, true, 1e3, true);
+const DTHEAT: Range = Range::new(0.0, false, 1e5, true);
 /// An element's size [mm].
 const ELEMENT: Allowed = Allowed::Number(Range::new(1e-3, true, 100.0, true), "");
 
@@ -54,6 +58,27 @@ pub const KEYS: Keys = Keys {
             Allowed::Numbers { range: MU, min_len: 1, max_len: MAX_MU_POINTS, note: "one per `mu_at`" },
             Absent::Text("required with `mu_by`, refused without"),
             r#"Coulomb's μ at each control point (FSTAT): `mu_values = [0.2, 0.3]`"#,
+        ),
+        key(
+            "tref_c_values",
+            "°C",
+            Allowed::Numbers { range: CELSIUS, min_len: 1, max_len: MAX_MU_POINTS, note: "one per `mu_at`" },
+            Absent::Text("required with `mu_by` and `[friction] law = \"temperature\"`, refused otherwise"),
+            r#"the temperature law's TREF at each control point (CONTACT's L = 6 with V = 1, 2: each parameter interpolated as μ is, `mu_values` its FREF; `[friction]` then gives only `law`): `tref_c_values = [0.0, 0.0]`"#,
+        ),
+        key(
+            "dfheat_values",
+            "–",
+            Allowed::Numbers { range: DFHEAT, min_len: 1, max_len: MAX_MU_POINTS, note: "one per `mu_at`; each mu_values + dfheat > 0" },
+            Absent::Text("required with `mu_by` and `[friction] law = \"temperature\"`, refused otherwise"),
+            r#"the temperature law's DFHEAT at each control point: `dfheat_values = [-0.12, -0.3]`"#,
+        ),
+        key(
+            "dtheat_c_values",
+            "°C",
+            Allowed::Numbers { range: DTHEAT, min_len: 1, max_len: MAX_MU_POINTS, note: "one per `mu_at`" },
+            Absent::Text("required with `mu_by` and `[friction] law = \"temperature\"`, refused otherwise"),
+            r#"the temperature law's DTHEAT at each control point: `dtheat_c_values = [300.0, 600.0]`"#,
         ),
         key(
             "s_mm",
@@ -244,12 +269,53 @@ pub fn read(w: Section, varying_rail: bool) -> Result<WheelRailSection, InputErr
     })
 }
 
+/// The temperature law's parameters per control point, besides FREF (`mu_values`).
+const TEMPERATURE_VALUES: [&str; 3] = ["tref_c_values", "dfheat_values", "dtheat_c_values"];
+
+/// `tref_c_values`, `dfheat_values`, `dtheat_c_values` (all or none), one per point of
+/// `fref` (`mu_values`), with FREF + DFHEAT > 0 at each (μ at high temperatures stays positive).
+fn temperature_values(w: &mut Section, fref: &[f64]) -> Result<Option<[Vec<f64>; 3]>, InputError> {
+    let lists = [
+        w.opt_f64_list("tref_c_values", CELSIUS, MAX_MU_POINTS)?,
+        w.opt_f64_list("dfheat_values", DFHEAT, MAX_MU_POINTS)?,
+        w.opt_f64_list("dtheat_c_values", DTHEAT, MAX_MU_POINTS)?,
+    ];
+    if lists.iter().all(Option::is_none) {
+        return Ok(None);
+    }
+    let mut out: [Vec<f64>; 3] = Default::default();
+    for ((key, list), slot) in TEMPERATURE_VALUES.into_iter().zip(lists).zip(out.iter_mut()) {
+        let field = w.field(key);
+        let Some(list) = list else {
+            return Err(InputError::new(
+                field,
+                "missing",
+                "all three of tref_c_values, dfheat_values, dtheat_c_values",
+            ));
+        };
+        if list.len() != fref.len() {
+            let given = format!("{} values", list.len());
+            return Err(InputError::new(field, given, format!("one per point of mu_at ({})", fref.len())));
+        }
+        *slot = list;
+    }
+    if let Some(k) = (0..fref.len()).find(|&k| fref[k] + out[1][k] <= 0.0) {
+        let given = format!("{} (mu_values + dfheat = {})", out[1][k], fref[k] + out[1][k]);
+        let field = format!("{}[{k}]", w.field("dfheat_values"));
+        return Err(InputError::new(field, given, "mu_values + dfheat > 0 at every point"));
+    }
+    Ok(Some(out))
+}
+
 /// `mu`, or `mu_by` with `mu_at`, `mu_values` (and `s_mm` for `mu_by = "track_s"`); `shift_s`:
 /// the position `s_mm` a shift or a rail slices file has read already.
 fn friction(w: &mut Section, shift_s: Option<f64>) -> Result<(f64, Option<MuVariation>), InputError> {
     let Some(by) = w.opt_pick("mu_by")? else {
         w.refuse("mu_at", "no mu_at without mu_by")?;
         w.refuse("mu_values", "no mu_values without mu_by")?;
+        for key in TEMPERATURE_VALUES {
+            w.refuse(key, "only with mu_by and [friction] law = \"temperature\"")?;
+        }
         if shift_s.is_none() {
             w.refuse("s_mm", "no s_mm without mu_by = \"track_s\" or motion = \"shift\"")?;
         }
@@ -292,7 +358,8 @@ fn friction(w: &mut Section, shift_s: Option<f64>) -> Result<(f64, Option<MuVari
             },
         },
     };
-    let v = MuVariation { by, at, values };
+    let temperature = temperature_values(w, &values)?;
+    let v = MuVariation { by, at, values, temperature };
     let mu = match by {
         MuBy::ContactAngle => v.values[0],
         MuBy::TrackS { s_mm } => v.at(s_mm),

@@ -7,6 +7,7 @@
 //! (`m_wr_solvecp`: `fric_interp` on `curv_incln`).
 
 use super::{NormalPatch, WheelRailCase};
+use crate::physics::TemperatureLaw;
 use crate::scene::wheelrail::{MuBy, MuVariation};
 
 /// A case's friction: its one μ, or the variation each patch takes its μ from.
@@ -22,13 +23,32 @@ impl Friction<'_> {
     /// μ of patch `p` of `case`.
     pub fn of_patch(&self, p: &NormalPatch, case: &WheelRailCase) -> f64 {
         match self.variation {
-            Some(v @ MuVariation { by: MuBy::ContactAngle, .. }) => {
-                // The contact angle on the wheel: less the wheelset's roll and the wheel's own.
-                let droll = case.side.wheelset(&case.wheelset).deviation.position[3];
-                v.at(p.geometry.frame.delta_rad - case.side.pose(&case.pose).roll_rad - droll)
-            }
-            Some(v @ MuVariation { by: MuBy::TrackS { s_mm }, .. }) => v.at(*s_mm),
+            Some(v) => v.at(self.abscissa(v, p, case)),
             None => self.mu,
+        }
+    }
+
+    /// The temperature law of patch `p` of `case` where its parameters vary (L = 6 with V = 1, 2:
+    /// each interpolated as μ is, `fric_interp_arr`); `None` for one law or Coulomb's.
+    pub fn temperature_law_of(&self, p: &NormalPatch, case: &WheelRailCase) -> Option<TemperatureLaw> {
+        let v = self.variation?;
+        v.law_at(self.abscissa(v, p, case))
+    }
+
+    /// Whether the temperature law's parameters vary between patches.
+    pub fn temperature_varies(&self) -> bool {
+        self.variation.is_some_and(|v| v.temperature.is_some())
+    }
+
+    /// Where patch `p` of `case` takes its friction on the variation `v`: its contact angle on
+    /// the wheel (less the wheelset's roll and the wheel's own) or the wheelset's S_WS.
+    fn abscissa(&self, v: &MuVariation, p: &NormalPatch, case: &WheelRailCase) -> f64 {
+        match v.by {
+            MuBy::ContactAngle => {
+                let droll = case.side.wheelset(&case.wheelset).deviation.position[3];
+                p.geometry.frame.delta_rad - case.side.pose(&case.pose).roll_rad - droll
+            }
+            MuBy::TrackS { s_mm } => s_mm,
         }
     }
 }

@@ -169,13 +169,11 @@ fn the_report_lists_every_case_of_every_deck() {
         assert!(worst <= 6.0 && line.contains("temperature_max_in_rounding"), "{line}");
     }
     // Module 1's temperatures and friction of the temperature are wheel–rail scenes
-    // (scenes/wheelrail/m1_tempdep_*, gated there); L = 6 varying across the rail is refused naming it.
-    for case in [1, 2] {
+    // (scenes/wheelrail/m1_tempdep_*, gated there), L = 6 varying across the rail too.
+    for case in [1, 2, 3] {
         let row = table.lines().find(|l| l.starts_with(&format!("| m1_tempdep.inp | {case} | "))).expect("row");
         assert!(!row.contains("not supported"), "{row}");
     }
-    let row = table.lines().find(|l| l.starts_with("| m1_tempdep.inp | 3 | ")).expect("row");
-    assert!(row.contains("L (in force) = 6, V = 1: friction laws other than Coulomb's"), "{row}");
     // The module-3 examples' other cases are refused naming what is missing.
     let (deck, case, missing) = ("conformal.inp", 3, "C = 9: influence functions other than the half-space's");
     let row = table.lines().find(|l| l.starts_with(&format!("| {deck} | {case} | "))).expect("row");

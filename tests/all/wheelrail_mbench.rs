@@ -131,9 +131,11 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         "mbench_wheel_deviation_left",
         "mbench_wheel_deviation_right",
         // Frictional heating (H = 3) and friction of the surface temperature (L = 6) on a
-        // circular wheel: each patch's MAX(T1,T2) among the gated quantities.
+        // circular wheel: each patch's MAX(T1,T2) among the gated quantities; the law across the
+        // rail (V = 1) in the third.
         "m1_tempdep_1",
         "m1_tempdep_2",
+        "m1_tempdep_3",
         // Out-of-round wheels (a measured wheel flat, wheel slices; CONTACT's grid search) and
         // rails with parts missing (interruptions: the nose absent on the first slices).
         "wheelflat_1",
@@ -150,7 +152,7 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         let of: Vec<_> = ours.iter().filter(|f| f.scene == scene).collect();
         assert!(of.len() >= 20 && of.iter().all(|f| f.gated && f.passed()), "{scene}: {of:?}");
     }
-    for scene in ["m1_tempdep_1", "m1_tempdep_2"] {
+    for scene in ["m1_tempdep_1", "m1_tempdep_2", "m1_tempdep_3"] {
         assert!(ours.iter().any(|f| f.scene == scene && f.quantity == "temp_max_c" && f.gated), "{scene}");
     }
     // FX_WS prescribed (F = 1): every quantity gated, VPITCH found among them (beyond CONTACT's

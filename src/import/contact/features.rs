@@ -592,12 +592,12 @@ pub fn wr_heat_carried(c: &WheelRailCase) -> bool {
     matches!(c.digits.h, 1 | 3) && c.digits.t == 3 && c.state.heat.is_some()
 }
 
-/// Whether a module-1 case's friction of the temperature is carried: L = 6 with one set (V = 0),
-/// no memory, its surface temperatures carried.
+/// Whether a module-1 case's friction of the temperature is carried: L = 6 with one set (V = 0)
+/// or sets across the rail or along the track (V = 1, 2), no memory, its surface temperatures
+/// carried.
 pub fn wr_temperature_law_carried(c: &WheelRailCase) -> bool {
     let Some(f) = c.state.friction.as_ref().filter(|f| f.law == 6) else { return false };
-    f.variation == FrictionVariation::Uniform
-        && f.sets.len() == 1
+    (f.variation != FrictionVariation::Uniform || f.sets.len() == 1)
         && f.memory.is_none_or(|m| m[0] == 0.0)
         && wr_heat_carried(c)
 }

@@ -3,7 +3,7 @@
 //! wheel–rail scene's `[material]` heat keys, `[friction]` and `[contact_solver]`, and those
 //! sections written back (module 3's keys: scene/material.rs, friction.rs, contact_solver.rs).
 
-use super::super::super::wheelrail_deck::{FrictionValues, WheelRailCase};
+use super::super::super::wheelrail_deck::{FrictionValues, FrictionVariation, WheelRailCase};
 use crate::physics::temperature::Thermal;
 use crate::physics::TemperatureLaw;
 use crate::scene::wheelrail::WheelRailScene;
@@ -27,7 +27,7 @@ pub(super) fn thermal(c: &WheelRailCase) -> Option<[Thermal; 2]> {
     }))
 }
 
-/// The case's friction of the temperature (L = 6 with one set, V = 0) and, with it, CONTACT's
+/// The case's friction of the temperature (L = 6: its one law with V = 0) and, with it, CONTACT's
 /// iteration as module 3's import carries it: stopped at 1e-4 or after max(1, MAXIN − 10) + 1
 /// iterations, each tangential solve tight, damped by OMGSLP (the last G = 2, 3, 4 read; else its default).
 pub(super) fn tangential(c: &WheelRailCase) -> Tangential {
@@ -35,6 +35,8 @@ pub(super) fn tangential(c: &WheelRailCase) -> Tangential {
     let Some(FrictionValues::Temperature { fref, tref_c, dfheat, dtheat_c }) = f.sets.first().map(|s| s.values) else {
         return Tangential::default();
     };
+    // Sets across the rail or along the track go to [wheelrail]'s control points (`mu_of`).
+    let one_law = f.variation == FrictionVariation::Uniform;
     let solver = c.state.solver.as_ref();
     let maxin = solver.map_or(CONTACT_MAXIN, |s| s.maxin);
     // The parameters the last G = 2, 3 (OMEGAH, OMEGAS, INISLP, OMGSLP) or 4 (INISLP, OMGSLP) read.
@@ -52,7 +54,8 @@ pub(super) fn tangential(c: &WheelRailCase) -> Tangential {
         omgslp,
         ..ContactSolverOptions::default()
     };
-    Tangential { temperature_law: Some(TemperatureLaw { fref, tref_c, dfheat, dtheat_c }), contact_solver }
+    let law = one_law.then_some(TemperatureLaw { fref, tref_c, dfheat, dtheat_c });
+    Tangential { temperature_law: law, contact_solver }
 }
 
 /// CONTACT's MAXIN before any is read (`m_hierarch_data.f90`).
@@ -73,6 +76,10 @@ pub(super) fn material_pairs(s: &WheelRailScene) -> Pairs {
 
 /// `[friction]` of the temperature law, where the scene has it.
 pub(super) fn friction_pairs(s: &WheelRailScene) -> Option<Pairs> {
+    if s.mu_variation.as_ref().is_some_and(|v| v.temperature.is_some()) {
+        // Its parameters per control point are [wheelrail]'s (`write::friction`).
+        return Some(vec![("law", Value::String("temperature".into()))]);
+    }
     let t = s.tangential.temperature_law?;
     Some(vec![
         ("law", Value::String("temperature".into())),

@@ -95,16 +95,16 @@ pub const SCENE_LIMITS: &[SceneLimit] = &[
     },
     SceneLimit {
         name: "friction of the surface temperature",
-        control: "L, FREF, TREF, DFHEAT, DTHEAT",
+        control: "L, V, FREF, TREF, DFHEAT, DTHEAT",
         accepted: true,
-        reason: "carried as [friction] law = \"temperature\", fref, tref_c, dfheat, dtheat_c with [contact_solver] tempdep_tolerance (CONTACT's fixed 1e-4), tempdep_max_iterations (max(1, MAXIN - 10) + 1) and omgslp: each patch's exact solve iterates tractions and surface temperatures as module 3's (docs/models.md, \"Temperature-dependent friction\")",
+        reason: "carried as [friction] law = \"temperature\", fref, tref_c, dfheat, dtheat_c (V = 0), or per control point as [wheelrail] mu_by, mu_at, mu_values (FREF), tref_c_values, dfheat_values, dtheat_c_values (V = 1, 2: each patch's parameters interpolated at its contact angle or S_WS, CONTACT's fric_interp_arr) with [contact_solver] tempdep_tolerance (CONTACT's fixed 1e-4), tempdep_max_iterations (max(1, MAXIN - 10) + 1) and omgslp: each patch's exact solve iterates tractions and surface temperatures as module 3's (docs/models.md, \"Temperature-dependent friction\")",
         used: |c| features::wr_temperature_law_carried(c).then(|| "L (in force) = 6".to_string()),
     },
     SceneLimit {
         name: "friction laws other than Coulomb's",
         control: "L, V, MEMDST, H",
         accepted: false,
-        reason: "supported: L = 0 (Coulomb) or L = 1 keeping it, and L = 6 with one set (V = 0), no memory (MEMDST = 0) and the surface temperatures (H = 1, 3 in steady rolling); not the falling laws (2, 3, 4), nor L = 6 varying across the rail or along the track",
+        reason: "supported: L = 0 (Coulomb) or L = 1 keeping it, and L = 6 (one set, V = 0, or sets across the rail or along the track, V = 1, 2), no memory (MEMDST = 0) and the surface temperatures (H = 1, 3 in steady rolling); not the falling laws (2, 3, 4)",
         used: |c| {
             let f = c.state.friction.as_ref().filter(|f| f.law != 0 && !features::wr_temperature_law_carried(c))?;
             Some(format!("L (in force) = {}, V = {}", f.law, c.digits.v))

@@ -18,8 +18,8 @@ pub use paths::ProfilePaths;
 
 use super::super::deck::{Case, CaseKind};
 use super::super::wheelrail_deck::{
-    Along, Forward, Friction, FrictionVariation, PitchInput, ProfileCuration, ProfileFormat, RailPlacement, Side,
-    TrackFourth, Vertical, WheelRailCase, WheelRailState,
+    Along, Forward, Friction, FrictionValues, FrictionVariation, PitchInput, ProfileCuration, ProfileFormat,
+    RailPlacement, Side, TrackFourth, Vertical, WheelRailCase, WheelRailState,
 };
 use super::super::CaseStatus;
 use super::{scene_name, SceneFiles};
@@ -428,12 +428,26 @@ fn mu_of(f: &Friction, s_ws_mm: f64) -> (f64, Option<MuVariation>) {
         by,
         at: f.sets.iter().map(|s| s.at.unwrap_or(0.0)).collect(),
         values: f.sets.iter().map(|s| s.values.fstat()).collect(),
+        temperature: temperature_values(f),
     };
     let mu = match by {
         MuBy::ContactAngle => v.values[0],
         MuBy::TrackS { s_mm } => v.at(s_mm),
     };
     (mu, Some(v))
+}
+
+/// TREF, DFHEAT and DTHEAT of every set of the temperature law (L = 6), the scene's
+/// `tref_c_values`, `dfheat_values`, `dtheat_c_values`; `None` for another law.
+fn temperature_values(f: &Friction) -> Option<[Vec<f64>; 3]> {
+    let mut out: [Vec<f64>; 3] = Default::default();
+    for s in &f.sets {
+        let FrictionValues::Temperature { tref_c, dfheat, dtheat_c, .. } = s.values else { return None };
+        for (list, v) in out.iter_mut().zip([tref_c, dfheat, dtheat_c]) {
+            list.push(v);
+        }
+    }
+    Some(out)
 }
 
 /// A profile as the scene takes it: the path from the scene's folder, MIRRORY = 1 as mirror_y,

@@ -130,7 +130,8 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
     Ok(out)
 }
 
-/// `mu`, or `mu_by`, `mu_at`, `mu_values` (and `s_mm`) of a variation.
+/// `mu`, or `mu_by`, `mu_at`, `mu_values` (the temperature law's parameters per point: the
+/// `*_values` keys; and `s_mm`) of a variation.
 fn friction(s: &WheelRailScene) -> Pairs {
     let Some(v) = &s.mu_variation else { return vec![("mu", Value::Float(s.mu))] };
     let floats = |x: &[f64]| Value::Array(x.iter().map(|&f| Value::Float(f)).collect());
@@ -139,6 +140,13 @@ fn friction(s: &WheelRailScene) -> Pairs {
         MuBy::TrackS { .. } => "track_s",
     };
     let mut out = vec![("mu_by", Value::String(by.into())), ("mu_at", floats(&v.at)), ("mu_values", floats(&v.values))];
+    if let Some([tref, dfheat, dtheat]) = &v.temperature {
+        out.extend([
+            ("tref_c_values", floats(tref)),
+            ("dfheat_values", floats(dfheat)),
+            ("dtheat_c_values", floats(dtheat)),
+        ]);
+    }
     if let MuBy::TrackS { s_mm } = v.by {
         out.push(("s_mm", Value::Float(s_mm)));
     }
