@@ -144,7 +144,13 @@ impl CurvedReference {
         let (down, up) = (step(0, 1), step(n - 1, n - 2));
         let row = |j: usize| {
             let k = j as i64 - before;
-            let (edge, d, m) = if k < 0 { (0, down, -k) } else if k >= n as i64 { (n - 1, up, k - n as i64 + 1) } else { (k as usize, [0.0; 2], 0) };
+            let (edge, d, m) = if k < 0 {
+                (0, down, -k)
+            } else if k >= n as i64 {
+                (n - 1, up, k - n as i64 + 1)
+            } else {
+                (k as usize, [0.0; 2], 0)
+            };
             let p = self.point_mm[edge];
             ([p[0] + m as f64 * d[0], p[1] + m as f64 * d[1]], self.normal[edge])
         };

@@ -226,11 +226,8 @@ fn the_conformal_approach_with_adhesion_on_two_patches_against_contact() {
     let counts = |d: &&Deviation| d.contact_case == 7 && matches!(d.quantity, "nadh" | "nslip");
     let gap: Vec<f64> = devs.iter().filter(counts).map(|d| (d.ours - d.contact).abs()).collect();
     assert!(gap.iter().all(|&e| e <= 1.0) && gap.contains(&1.0), "case 7's counts: {gap:?}");
-    let shifts: Vec<String> = devs
-        .iter()
-        .filter(|d| !steady(d) && !counts(d) && !within_mbench(d))
-        .map(|d| format!("{d:?}"))
-        .collect();
+    let shifts: Vec<String> =
+        devs.iter().filter(|d| !steady(d) && !counts(d) && !within_mbench(d)).map(|d| format!("{d:?}")).collect();
     assert!(shifts.is_empty(), "shifts beyond the gate's rules:\n{}", shifts.join("\n"));
 }
 
