@@ -276,7 +276,7 @@ fn refuse_in_shifts(case: &WheelRailCase, models: &[String]) -> Result<(), Error
 }
 
 /// The conformal approach (CONTACT's D = 4) is solved by the exact theory alone, in steady
-/// rolling with friction, for bodies of one material without surface temperatures, on the
+/// rolling or shifts with friction, for bodies of one material without surface temperatures, on the
 /// contact locus of prismatic profiles, with the solver's default options.
 fn refuse_in_conformal(case: &WheelRailCase, models: &[String], mu: &Friction) -> Result<(), Error> {
     if !case.conformal {
@@ -287,7 +287,11 @@ fn refuse_in_conformal(case: &WheelRailCase, models: &[String], mu: &Friction) -
         return Err(InputError::new("solvers", format!("{m:?}"), allowed).into());
     }
     let unsupported = [
-        (case.motion != Motion::Rolling, "wheelrail.motion", "steady rolling (\"rolling\")"),
+        (
+            matches!(case.motion, Motion::Transient { .. }),
+            "wheelrail.motion",
+            "steady rolling (\"rolling\") or shifts (\"shift_sequence\")",
+        ),
         (mu.frictionless, "wheelrail.frictionless", "friction (the tractions turn the pressure's force)"),
         (case.material.coupled(), "material", "one material for both bodies"),
         (case.heat.is_some(), "material", "no surface temperatures"),

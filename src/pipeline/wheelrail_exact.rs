@@ -134,18 +134,22 @@ pub fn patch_forces(
     let mut params = TangentialParams::new(mu_solve, c.cksi, c.ceta, c.cphi_per_mm, dq_mm);
     params.tol = options.tolerance;
     params.max_iter = options.max_iterations;
+    let extra = p.extra_slip.as_ref().map(|(wx, wy)| (field_in_grid_order(&grid, wx), field_in_grid_order(&grid, wy)));
+    let extra = extra.as_ref().map(|(wx, wy)| (wx.as_slice(), wy.as_slice()));
     let r: StepResult = if shift || rolling_dq_mm.is_some() {
         let solver = cache.step_solver(&grid, &case.material, (&x, &y), rolling_dq_mm)?;
         solver.set_pressure(&pn)?;
+        solver.set_extra_slip(extra)?;
+        if let Some(g) = bound(&p.pn_mpa) {
+            solver.set_bound(&g)?;
+        }
         let (px0, py0) = previous_tractions(p, case);
         let (px0, py0) = (field_in_grid_order(&grid, &px0), field_in_grid_order(&grid, &py0));
         solver.transient_step(&params, &px0, &py0, None)?
     } else {
         let (_, solver, last) = cache.get(&grid, &case.material, (&x, &y))?;
         solver.set_pressure(&pn)?;
-        let extra =
-            p.extra_slip.as_ref().map(|(wx, wy)| (field_in_grid_order(&grid, wx), field_in_grid_order(&grid, wy)));
-        solver.set_extra_slip(extra.as_ref().map(|(wx, wy)| (wx.as_slice(), wy.as_slice())))?;
+        solver.set_extra_slip(extra)?;
         if let Some(g) = bound(&p.pn_mpa) {
             solver.set_bound(&g)?;
         }
@@ -154,24 +158,26 @@ pub fn patch_forces(
         *last = Some((r.px.clone(), r.py.clone()));
         r
     };
-    if let Some(c) = &p.geometry.curved {
-        // CONTACT's tractions on the rail: its element order, the solver's negated.
-        let on_rail = |f: &[f64]| in_contact_order(&grid, f).into_iter().map(|v| -v).collect::<Vec<f64>>();
-        let forces = wheelrail_conformal::aggregate(&p.geometry, c, &on_rail(&r.px), &on_rail(&r.py), &p.pn_mpa);
-        return Ok(PatchForces {
-            n_adhesion: Some(r.n_adhesion),
-            n_slip: Some(r.n_slip),
-            slip: Some(slip_of(&grid, &r.state)),
-            ..forces.on_rail(case.side.sign())
-        });
-    }
-    let pn_sum: f64 = pn.iter().sum();
-    let (fx_over_fn, fy_over_fn) = (r.px.iter().sum::<f64>() / pn_sum, r.py.iter().sum::<f64>() / pn_sum);
-    let mz_nmm = moment_sum(&grid, &r.px, &r.py) * grid.element_area_mm2();
     // Kept for the case that continues this one: in a shift, a transient step, or the steady case
     // that starts a sequence (its `previous` empty).
     let kept = shift || rolling_dq_mm.is_some() || case.previous.is_some();
     let shift_tractions_mpa = kept.then(|| (in_contact_order(&grid, &r.px), in_contact_order(&grid, &r.py)));
+    if let Some(c) = &p.geometry.curved {
+        // CONTACT's tractions on the rail: its element order, the solver's negated.
+        let on_rail = |f: &[f64]| in_contact_order(&grid, f).into_iter().map(|v| -v).collect::<Vec<f64>>();
+        let forces = wheelrail_conformal::aggregate(&p.geometry, c, &on_rail(&r.px), &on_rail(&r.py), &p.pn_mpa);
+        let forces = PatchForces {
+            n_adhesion: Some(r.n_adhesion),
+            n_slip: Some(r.n_slip),
+            shift_tractions_mpa,
+            slip: Some(slip_of(&grid, &r.state)),
+            ..forces.on_rail(case.side.sign())
+        };
+        return Ok(if case.motion.super_grid_s_mm().is_some() { about_anchor_x(forces, p) } else { forces });
+    }
+    let pn_sum: f64 = pn.iter().sum();
+    let (fx_over_fn, fy_over_fn) = (r.px.iter().sum::<f64>() / pn_sum, r.py.iter().sum::<f64>() / pn_sum);
+    let mz_nmm = moment_sum(&grid, &r.px, &r.py) * grid.element_area_mm2();
     let forces = PatchForces {
         n_adhesion: Some(r.n_adhesion),
         n_slip: Some(r.n_slip),
@@ -233,6 +239,13 @@ pub(super) fn about_anchor(f: PatchForces, p: &NormalPatch, case: &WheelRailCase
     let [ax, as_] = p.geometry.grid.anchor_mm;
     let (spinxo, spinyo) = (-ax, -as_);
     PatchForces { mn_nmm: f.mn_nmm + spinxo * f.fs_n - m * spinyo * f.fx_n, ..f }
+}
+
+/// A conformal patch's MN on the super-grid: CONTACT's `aggregate_forces` takes the elements' x
+/// from the grid's anchor (`mpot`) and their sp from the reference, MN + SPINXO FS.
+fn about_anchor_x(f: PatchForces, p: &NormalPatch) -> PatchForces {
+    let spinxo = -p.geometry.grid.anchor_mm[0];
+    PatchForces { mn_nmm: f.mn_nmm + spinxo * f.fs_n, ..f }
 }
 
 #[cfg(test)]

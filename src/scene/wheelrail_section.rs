@@ -171,7 +171,7 @@ pub const KEYS: Keys = Keys {
             "–",
             Allowed::Choice(&["planar", "conformal"], ""),
             Absent::Choice("planar"),
-            r#"the contact approach: planar (CONTACT's D = 2: each patch on its tangent plane) or conformal (D = 4, docs/wheelrail.md "The conformal approach": each patch on a curved reference surface midway between the rail and the wheel, rows `ds_mm` apart in its arc length, the gap turned by each row's inclination, the rigid slip of the actual surfaces, the tractions turned back to the tangent plane; steady rolling, one material, the exact theory alone, one region per patch, profile files): `approach = "conformal"`"#,
+            r#"the contact approach: planar (CONTACT's D = 2: each patch on its tangent plane) or conformal (D = 4, docs/wheelrail.md "The conformal approach": each patch on a curved reference surface midway between the rail and the wheel, rows `ds_mm` apart in its arc length, the gap turned by each row's inclination, the rigid slip of the actual surfaces, the tractions turned back to the tangent plane; steady rolling or shifts (`motion = "shift_sequence"`), one material, the exact theory alone, one region per patch, profile files): `approach = "conformal"`"#,
         ),
         key(
             "contact_search",

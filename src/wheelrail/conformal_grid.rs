@@ -12,12 +12,13 @@ use super::wheel::PlacedWheel;
 use super::wheel_mesh::{self, WheelSurface};
 
 /// The conformal grid: the planar grid's columns, one row per point of the curved reference
-/// (its arc length sc from the reference in place of the plane's s).
+/// (its arc length sc from the reference in place of the plane's s; on the super-grid of shifts
+/// the rows' lattice is the rail's arc length from its origin, the anchor at −s_ref).
 pub fn grid(planar: &PatchGrid, reference: &CurvedReference) -> PatchGrid {
     let first = reference.first_row;
     PatchGrid {
         ms: reference.rows(),
-        s0_mm: (first as f64 - 0.5) * planar.ds_mm,
+        s0_mm: planar.anchor_mm[1] + (first as f64 - 0.5) * planar.ds_mm,
         first_index: [planar.first_index[0], first],
         ..planar.clone()
     }

@@ -76,23 +76,26 @@ fn wheel_point(wheel: &PlacedWheel, s_w_mm: f64, x_w: f64) -> Option<(nalgebra::
     Some((point, wheel.rotation * Vector3::new(0.0, tz, -ty)))
 }
 
-/// The curved reference of candidate `c` with frame `frame` (steady rolling: arc lengths from the
-/// reference), rows `ds_mm` apart; `None` where a profile has no spline (a closed form) or the
-/// rows leave a profile.
+/// The curved reference of candidate `c` with frame `frame`, rows `ds_mm` apart in the rail's arc
+/// length: from the reference in steady rolling, from the profile's arc-length origin on the
+/// super-grid of shifts (`super_grid`; `compute_curved_potcon` with `sr_pot` = 0); `None` where a
+/// profile has no spline (a closed form) or the rows leave a profile.
 pub fn curved_reference(
     c: &Candidate,
     frame: &PatchFrame,
-    rail: &PlacedRail,
-    wheel: &PlacedWheel,
+    (rail, wheel): (&PlacedRail, &PlacedWheel),
     ds_mm: f64,
+    super_grid: bool,
 ) -> Option<CurvedReference> {
     let sr_ref = rail.s_mm(frame.origin.y)?;
+    let sr_pot = if super_grid { 0.0 } else { sr_ref };
     let sr_sta = rail.s_mm(c.y_mm[0])?.min(sr_ref);
     let sr_end = rail.s_mm(c.y_mm[1])?.max(sr_ref);
-    let sc_sta = sr_sta + WIDEN * (sr_sta - sr_ref) - sr_ref;
-    let sc_end = sr_end + WIDEN * (sr_end - sr_ref) - sr_ref;
+    let sc_sta = sr_sta + WIDEN * (sr_sta - sr_ref) - sr_pot;
+    let sc_end = sr_end + WIDEN * (sr_end - sr_ref) - sr_pot;
     let (k0, k1) = ((sc_sta / ds_mm).round() as i64 - EXTRA_ROWS, (sc_end / ds_mm).round() as i64 + EXTRA_ROWS);
-    let sc: Vec<f64> = (k0..=k1).map(|k| k as f64 * ds_mm).collect();
+    // Each row's rail arc length from the reference.
+    let sc: Vec<f64> = (k0..=k1).map(|k| sr_pot + k as f64 * ds_mm - sr_ref).collect();
     let rail_rows: Vec<([f64; 2], [f64; 2])> = sc.iter().map(|s| rail.point_at_s(sr_ref + s)).collect::<Option<_>>()?;
     // The wheel: the reference's place in its frame, the arc length there, the opposite way.
     let q = wheel.to_wheel(&frame.origin);
@@ -125,4 +128,33 @@ pub fn curved_reference(
     let (lo, hi) = (lo.saturating_sub(KEPT_BEYOND), (hi + KEPT_BEYOND).min(sc.len() - 1));
     let (point_mm, normal) = (lo..=hi).map(mid).unzip();
     Some(CurvedReference { first_row: k0 + lo as i64, point_mm, normal })
+}
+
+impl CurvedReference {
+    /// The reference over rows `first_row ..= first_row + rows − 1` of its lattice, a superset of
+    /// its own (CONTACT's `extend_curv_ref`, a grid widened to the contact of the time before):
+    /// the points extended linearly from the two end rows, the normals constant.
+    pub fn extended(&self, first_row: i64, rows: usize) -> CurvedReference {
+        let (n, before) = (self.rows(), self.first_row - first_row);
+        debug_assert!(n >= 2 && before >= 0 && rows as i64 >= before + n as i64, "a superset of the rows");
+        let step = |a: usize, b: usize| {
+            let (p, q) = (self.point_mm[a], self.point_mm[b]);
+            [p[0] - q[0], p[1] - q[1]]
+        };
+        let (down, up) = (step(0, 1), step(n - 1, n - 2));
+        let row = |j: usize| {
+            let k = j as i64 - before;
+            let (edge, d, m) = if k < 0 {
+                (0, down, -k)
+            } else if k >= n as i64 {
+                (n - 1, up, k - n as i64 + 1)
+            } else {
+                (k as usize, [0.0; 2], 0)
+            };
+            let p = self.point_mm[edge];
+            ([p[0] + m as f64 * d[0], p[1] + m as f64 * d[1]], self.normal[edge])
+        };
+        let (point_mm, normal) = (0..rows).map(row).unzip();
+        CurvedReference { first_row, point_mm, normal }
+    }
 }

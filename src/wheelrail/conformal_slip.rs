@@ -14,7 +14,7 @@ use super::patch::PatchGeometry;
 use super::wheel::{PlacedWheel, Velocity};
 use nalgebra::Vector3;
 
-/// CONTACT's offset of the spin term, as a fraction of dq (FACPHI in rolling).
+/// CONTACT's offset of the spin term, as a fraction of dq (FACPHI in rolling; none in shifts).
 const FACPHI: f64 = 1.0 / 6.0;
 
 /// A conformal patch's creepages and the rest of its rigid slip.
@@ -38,11 +38,17 @@ fn in_row(g: &PatchGeometry, c: &ConformalPatch, j: usize, v: Vector3<f64>) -> [
 }
 
 /// The rigid slip of conformal patch `g` with the wheel `wheel` moving as `v`, the rail as
-/// `rail`; the rolling step dq = DX (`None` in planar contact).
-pub fn rigid_slip(g: &PatchGeometry, wheel: &PlacedWheel, v: &Velocity, rail: &RailMotion) -> Option<ConformalSlip> {
+/// `rail`; the rolling step dq = DX, or with `shift` (T = 1) one step's shifts: VELOC = 1, dt = 1,
+/// the spin about the reference itself (`None` in planar contact).
+pub fn rigid_slip(
+    g: &PatchGeometry,
+    wheel: &PlacedWheel,
+    (v, rail): (&Velocity, &RailMotion),
+    shift: bool,
+) -> Option<ConformalSlip> {
     let c = g.curved.as_ref()?;
     let grid = &g.grid;
-    let veloc = v.vs_mm_s;
+    let veloc = if shift { 1.0 } else { v.vs_mm_s };
     let n = g.frame.n();
     let mut w = Vec::with_capacity(grid.len());
     for j in 0..grid.ms {
@@ -62,10 +68,10 @@ pub fn rigid_slip(g: &PatchGeometry, wheel: &PlacedWheel, v: &Velocity, rail: &R
             w.push([(along(v_r) - along(v_w)) / veloc, (v_r[1] - v_w[1]) / veloc]);
         }
     }
-    let dq = grid.dx_mm;
+    let offset_mm = if shift { 0.0 } else { FACPHI * grid.dx_mm };
     let at = |k: usize| {
         let (x, s) = grid.centre(k % grid.mx, k / grid.mx);
-        (x + FACPHI * dq, s)
+        (x + offset_mm, s)
     };
     let inside: Vec<usize> = (0..grid.len()).filter(|&k| g.h_mm[k] < 0.0).collect();
     let (cksi, ceta, cphi_per_mm) = least_squares(&inside, &at, &w);

@@ -470,10 +470,11 @@ fn patches_at(
         };
         let pen_mm = -geometry.h_mm.iter().copied().fold(f64::INFINITY, f64::min);
         let shift = matches!(case.motion, Motion::Shift { .. });
-        let (creepages, extra_slip) = match conformal_slip::rigid_slip(&geometry, &wheel, &velocity, &rail_motion) {
-            Some(slip) => (slip.creepages, Some(slip.extra)),
-            None => (creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm, &rail_motion, shift), None),
-        };
+        let (creepages, extra_slip) =
+            match conformal_slip::rigid_slip(&geometry, &wheel, (&velocity, &rail_motion), shift) {
+                Some(slip) => (slip.creepages, Some(slip.extra)),
+                None => (creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm, &rail_motion, shift), None),
+            };
         out.push(NormalPatch { geometry, fn_n, pn_mpa, pen_mm, creepages, extra_slip });
     }
     Ok(out)

@@ -549,7 +549,7 @@ pub fn build(
     let frame = frame(c, rail).ok_or(WheelRailError::NoContact)?;
     let mut grid = grid(c, &frame, rail, size_mm, motion)?;
     if conformal {
-        return build_conformal(c, frame, grid, (wheel, rail), size_mm.1, surface);
+        return build_conformal(c, frame, grid, (wheel, rail), (surface, motion, previous));
     }
     let mut widened = false;
     if let (Some(_), Some(previous)) = (motion.super_grid_s_mm(), previous) {
@@ -597,22 +597,32 @@ pub fn build(
     })
 }
 
-/// The conformal patch of candidate `c` (CONTACT's D = 4, steady rolling, one region): its
-/// curved reference, the grid on it and the undeformed distance ([`conformal_grid`]).
+/// The conformal patch of candidate `c` (CONTACT's D = 4, one region): its curved reference, the
+/// grid on it and the undeformed distance ([`conformal_grid`]); in a shift that continues a
+/// sequence the grid widened to the contact of the time before and the reference extended to it
+/// (`merge_prev_potcon`, `extend_curv_ref`).
 fn build_conformal(
     c: &Candidate,
     frame: PatchFrame,
     planar: PatchGrid,
     (wheel, rail): (&PlacedWheel, &PlacedRail),
-    ds_mm: f64,
-    surface: WheelSurface,
+    (surface, motion, previous): (WheelSurface, Motion, Option<&shift::Previous>),
 ) -> Result<PatchGeometry, WheelRailError> {
     if c.parts.len() > 1 {
         return Err(WheelRailError::ConformalSubPatches { parts: c.parts.len() });
     }
-    let reference = conformal_reference::curved_reference(c, &frame, rail, wheel, ds_mm)
+    let super_grid = motion.super_grid_s_mm().is_some();
+    let mut reference = conformal_reference::curved_reference(c, &frame, (rail, wheel), planar.ds_mm, super_grid)
         .ok_or(WheelRailError::NoCurvedReference)?;
-    let grid = conformal_grid::grid(&planar, &reference);
+    let mut grid = conformal_grid::grid(&planar, &reference);
+    let inherited = previous.filter(|_| super_grid).and_then(|p| {
+        let links = shift::connections(&[c.extent()], p);
+        shift::inherited(&links[0], p).map(|old| (old, p.iterated))
+    });
+    if let Some((old, iterated)) = inherited {
+        grid = shift::widened(&grid, &old, iterated);
+        reference = reference.extended(grid.first_index[1], grid.ms);
+    }
     let patch = conformal_grid::surfaces(&frame, &grid, reference, (wheel, rail), surface);
     let h_mm = conformal_grid::undeformed_distance(&frame, &grid, &patch);
     let rail_s_mm = rail.s_mm(frame.origin.y);

@@ -198,17 +198,37 @@ fn friction_varying_across_the_rail_and_along_the_track_against_contact() {
 /// The conformal approach with adhesion and two patches (`t3_t1_conformal` case 1: the worn
 /// site-B flange and tread at y = 14.74 mm, FZ = 137 kN, 321 elements in adhesion on the tread's
 /// patch of 124 rows): every printed value within its digits (worst FS 0.98, FY(WS) 0.96, CETA
-/// 0.94 half-units; NPOT, NCON, NADH, NSLIP exact); its 15 shifts continuing it refused, named.
+/// 0.94 half-units; NPOT, NCON, NADH, NSLIP exact). Its 15 shifts of 0.4 mm continuing it (T = 1,
+/// P = 0, D = 4: the tractions carried on the super-grid, rows on the rail's arc length from its
+/// origin, the grid widened to the contact of the time before): every value within the gate's
+/// rules (CONTACT's printed digits, 1.5 half-units; worst FN 1.25 on the flange's patch), counts
+/// exact but case 7's NADH, NSLIP (one element, the declared gap).
 #[test]
 fn the_conformal_approach_with_adhesion_on_two_patches_against_contact() {
     let (devs, cases, verdicts) = deviations("t3_t1_conformal");
-    assert_eq!(cases, [1]);
-    assert_eq!(verdicts.matches("D = 4 with T = 1").count(), 15, "{verdicts}");
+    assert_eq!(cases, (1..=16).collect::<Vec<u64>>(), "{verdicts}");
     worst(&devs);
-    let failures: Vec<String> =
-        devs.iter().filter(|d| !loose(d).unwrap_or(d.half_units <= 1.0)).map(|d| format!("{d:?}")).collect();
+    for case in 1..=16 {
+        let of_case = devs.iter().filter(|d| d.contact_case == case);
+        let w = of_case.max_by(|a, b| a.half_units.total_cmp(&b.half_units)).unwrap();
+        println!("case {case:>2}: worst {} {:.2} half-units (patch {})", w.quantity, w.half_units, w.patch);
+    }
+    let steady = |d: &&Deviation| d.contact_case == 1;
+    let failures: Vec<String> = devs
+        .iter()
+        .filter(steady)
+        .filter(|d| !loose(d).unwrap_or(d.half_units <= 1.0))
+        .map(|d| format!("{d:?}"))
+        .collect();
     assert!(failures.is_empty(), "beyond CONTACT's printed digits:\n{}", failures.join("\n"));
     assert!(devs.iter().any(|d| d.quantity == "nadh" && d.contact > 300.0), "{devs:?}");
+    // The declared gap: case 7's adhesion and slip counts one element off.
+    let counts = |d: &&Deviation| d.contact_case == 7 && matches!(d.quantity, "nadh" | "nslip");
+    let gap: Vec<f64> = devs.iter().filter(counts).map(|d| (d.ours - d.contact).abs()).collect();
+    assert!(gap.iter().all(|&e| e <= 1.0) && gap.contains(&1.0), "case 7's counts: {gap:?}");
+    let shifts: Vec<String> =
+        devs.iter().filter(|d| !steady(d) && !counts(d) && !within_mbench(d)).map(|d| format!("{d:?}")).collect();
+    assert!(shifts.is_empty(), "shifts beyond the gate's rules:\n{}", shifts.join("\n"));
 }
 
 /// The KPEC deck: cases 1–3 KPEC, 4–6 ANALYN (both with CONTACT's FASTSIM), 7–9 the exact theory,
