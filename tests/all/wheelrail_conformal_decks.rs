@@ -31,10 +31,7 @@ fn import(deck: &str) -> (Option<i32>, Vec<String>, String) {
 
 /// The cases skipped, in the order the import names them.
 fn skipped(verdicts: &str) -> Vec<u32> {
-    verdicts
-        .lines()
-        .filter_map(|l| l.strip_prefix("skipped case ")?.split(' ').next()?.parse().ok())
-        .collect()
+    verdicts.lines().filter_map(|l| l.strip_prefix("skipped case ")?.split(' ').next()?.parse().ok()).collect()
 }
 
 #[test]
@@ -63,7 +60,10 @@ fn test_rollers2_and_mbench_conf_import_their_track_cases() {
     assert_eq!(code, Some(0), "{verdicts}");
     assert_eq!(scenes, ["test_rollers2_1", "test_rollers2_2", "test_rollers2_5"]);
     assert_eq!(skipped(&verdicts), (6..=12).collect::<Vec<_>>(), "{verdicts}");
-    assert!(verdicts.lines().filter(|l| l.starts_with("skipped")).all(|l| l.contains("C = 5: a wheel on a roller rig")));
+    assert!(verdicts
+        .lines()
+        .filter(|l| l.starts_with("skipped"))
+        .all(|l| l.contains("C = 5: a wheel on a roller rig")));
     // mbench_conf: the run ends after case 1 (`0 MODULE`); case 1 with the conformal approach.
     let (code, scenes, verdicts) = import("mbench_conf");
     assert_eq!((code, scenes), (Some(0), vec!["mbench_conf_1".to_string()]), "{verdicts}");
@@ -92,7 +92,9 @@ fn the_sphere_on_a_plane_against_contact_and_yawed() {
     let beyond: Vec<String> = case1.iter().filter(|d| d.half_units > 1.0).map(|d| format!("{d:?}")).collect();
     assert!(beyond.is_empty(), "{}", beyond.join("\n"));
     let fn_of = |devs: &[Deviation], case: u64| {
-        devs.iter().find(|d| d.contact_case == case && d.quantity == "fn_n" && d.patch == 1).map(|d| (d.ours, d.contact))
+        devs.iter()
+            .find(|d| d.contact_case == case && d.quantity == "fn_n" && d.patch == 1)
+            .map(|d| (d.ours, d.contact))
     };
     let (fn1, printed1) = fn_of(&case1, 1).unwrap();
     assert_eq!(printed1, 9.722e4);

@@ -70,8 +70,9 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
     let brute = |f: &&&Finding| f.scene == "mbench_brute_1" && f.step == Some(30);
     // examples_conformal: mbench_conf case 1 (D = 4 with yaw and cant), test-rollers2 cases 2-5
     // (the sphere yawed or rolled).
-    let conformal_decks =
-        |f: &&&Finding| ["mbench_conf_1", "test_rollers2_2", "test_rollers2_3", "test_rollers2_5"].contains(&f.scene.as_str());
+    let conformal_decks = |f: &&&Finding| {
+        ["mbench_conf_1", "test_rollers2_2", "test_rollers2_3", "test_rollers2_5"].contains(&f.scene.as_str())
+    };
     assert!(
         all_gaps.iter().all(|f| in_testbank(f)
             || kpec(f)
