@@ -198,7 +198,7 @@ fn the_right_wheel_prints_its_lateral_values_as_computed() {
 }
 
 /// Per deck: its module-1 case numbers are those of its `.ref_out`.
-const DECKS: [&str; 7] = [
+const DECKS: [&str; 11] = [
     "examples/mbench_a22_kpec",
     "examples/mbench_a22_left",
     "examples/mbench_a22_right",
@@ -206,6 +206,10 @@ const DECKS: [&str; 7] = [
     "testbank/examples_trans/force_site_b",
     "testbank/examples_trans/iestim_site_b",
     "testbank/testbank",
+    "testbank/examples_conformal/groove_li",
+    "testbank/examples_conformal/mbench_conf",
+    "testbank/examples_conformal/test-rollers2",
+    "testbank/examples_conformal/test-rollers3",
 ];
 
 #[test]

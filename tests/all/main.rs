@@ -69,6 +69,7 @@ mod tolerance_files;
 mod traction_bound;
 mod viscoelastic;
 mod wheelrail;
+mod wheelrail_conformal_decks;
 mod wheelrail_focus;
 mod wheelrail_mbench;
 mod wheelrail_profiles;
