@@ -82,27 +82,42 @@ fn rollers2(scene: &str) -> Vec<Deviation> {
 }
 
 /// Case 1, a sphere R = 100 mm pressed 0.16 mm into a flat plane placed at RAILY0 = 200 mm
-/// (planar contact, free rolling): every printed value within its digits (FN 97224 N against
-/// 9.722E+04, 0.68 half-units). Yawed 0.3 rad (cases 2-4, declared gaps) the sphere is the same
-/// sphere: this project's FN is case 1's within 1 N (0.41 N: the track-aligned grid samples the
-/// yawed wheel), CONTACT prints 9.716E+04 (64 N less, 12.8 half-units of its 10 N digit).
+/// (planar contact, free rolling), case 2 (yawed 0.3 rad by DYAWW) and case 5 (rolled
+/// 0.1 rad): every printed value within its digits on CONTACT's wheel mesh (FN 97224 N against
+/// 9.722E+04; yawed, the mesh's FN is CONTACT's 9.716E+04: 64 N less, which the exact surface of
+/// the same sphere does not lose). Cases 3 and 4 (yawed by the wheelset, rolling either way) are
+/// declared gaps: their FN is CONTACT's, their free-rolling residues FY(WS) 4.45 half-units off.
 #[test]
-fn the_sphere_on_a_plane_against_contact_and_yawed() {
+fn the_sphere_on_a_plane_against_contact_yawed_and_rolled() {
+    // Forces below 1e-9 FN (1e-4 N: case 5's printed FY of 2.7e-9 N) are the free-rolling
+    // iteration's residue, which the gate floors.
+    let residue = |d: &Deviation| d.quantity.ends_with("_n") && d.ours.abs().max(d.contact.abs()) < 1e-4;
+    let beyond = |devs: &[Deviation], rule: f64, skip: u64| -> Vec<String> {
+        let off = |d: &&Deviation| d.contact_case > skip && d.half_units > rule && !residue(d);
+        devs.iter().filter(off).map(|d| format!("{d:?}")).collect()
+    };
     let case1 = rollers2("test_rollers2_1");
-    let beyond: Vec<String> = case1.iter().filter(|d| d.half_units > 1.0).map(|d| format!("{d:?}")).collect();
-    assert!(beyond.is_empty(), "{}", beyond.join("\n"));
+    assert!(beyond(&case1, 1.0, 0).is_empty(), "{:?}", beyond(&case1, 1.0, 0));
     let fn_of = |devs: &[Deviation], case: u64| {
         devs.iter()
             .find(|d| d.contact_case == case && d.quantity == "fn_n" && d.patch == 1)
             .map(|d| (d.ours, d.contact))
+            .unwrap()
     };
-    let (fn1, printed1) = fn_of(&case1, 1).unwrap();
-    assert_eq!(printed1, 9.722e4);
-    let (yawed, third) = (rollers2("test_rollers2_2"), rollers2("test_rollers2_3"));
+    assert_eq!(fn_of(&case1, 1).1, 9.722e4);
+    let (yawed, third, rolled) =
+        (rollers2("test_rollers2_2"), rollers2("test_rollers2_3"), rollers2("test_rollers2_5"));
     for (devs, case) in [(&yawed, 2), (&third, 3), (&third, 4)] {
-        let (ours, contact) = fn_of(devs, case).unwrap();
-        println!("case {case}: FN {ours} N, case 1's {fn1} N, CONTACT's {contact} N");
-        assert!((ours - fn1).abs() <= 1.0, "case {case}: FN {ours} against case 1's {fn1}");
+        let (ours, contact) = fn_of(devs, case);
+        println!("case {case}: FN {ours} N, CONTACT's {contact} N");
         assert_eq!(contact, 9.716e4, "case {case}");
+        assert!((ours - contact).abs() <= 5.0, "case {case}: FN {ours} against CONTACT's {contact}");
+    }
+    for (devs, skip) in [(&yawed, 0), (&rolled, 0)] {
+        assert!(beyond(devs, 1.0, skip).is_empty(), "{:?}", beyond(devs, 1.0, skip));
+    }
+    for case in [3, 4] {
+        let fy_ws = third.iter().find(|d| d.contact_case == case && d.patch == 0 && d.quantity == "fy_ws_n").unwrap();
+        assert!(fy_ws.half_units > 1.5 && fy_ws.half_units <= 4.5, "case {case}: {fy_ws:?}");
     }
 }
