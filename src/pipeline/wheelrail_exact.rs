@@ -204,9 +204,7 @@ fn per_row(mu: &[f64], pn_mpa: &[f64], mx: usize) -> Vec<f64> {
 /// sequence those of the old patches it connects to, on its grid ([`shift`]).
 pub(super) fn previous_tractions(p: &NormalPatch, case: &WheelRailCase) -> (Vec<f64>, Vec<f64>) {
     let g = &p.geometry.grid;
-    let inherited =
-        case.previous.and_then(|prev| shift::inherited(&shift::connections(&[p.geometry.extent], prev)[0], prev));
-    match inherited {
+    match case.previous.and_then(|prev| shift::inherited_by(p.geometry.extent, prev)) {
         Some(old) => shift::on_grid(&old, g),
         None => (vec![0.0; g.len()], vec![0.0; g.len()]),
     }

@@ -553,8 +553,7 @@ pub fn build(
     }
     let mut widened = false;
     if let (Some(_), Some(previous)) = (motion.super_grid_s_mm(), previous) {
-        let links = shift::connections(&[c.extent()], previous);
-        if let Some(old) = shift::inherited(&links[0], previous) {
+        if let Some(old) = shift::inherited_by(c.extent(), previous) {
             widened = true;
             grid = shift::widened(&grid, &old, previous.iterated);
         }
@@ -615,10 +614,8 @@ fn build_conformal(
     let mut reference = conformal_reference::curved_reference(c, &frame, (rail, wheel), planar.ds_mm, super_grid)
         .ok_or(WheelRailError::NoCurvedReference)?;
     let mut grid = conformal_grid::grid(&planar, &reference);
-    let inherited = previous.filter(|_| super_grid).and_then(|p| {
-        let links = shift::connections(&[c.extent()], p);
-        shift::inherited(&links[0], p).map(|old| (old, p.iterated))
-    });
+    let inherited =
+        previous.filter(|_| super_grid).and_then(|p| shift::inherited_by(c.extent(), p).map(|old| (old, p.iterated)));
     if let Some((old, iterated)) = inherited {
         grid = shift::widened(&grid, &old, iterated);
         reference = reference.extended(grid.first_index[1], grid.ms);

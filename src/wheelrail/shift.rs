@@ -156,6 +156,12 @@ pub fn connections(new: &[Extent], previous: &Previous) -> Vec<Vec<usize>> {
         .collect()
 }
 
+/// What the one new patch of extent `extent` inherits from the time before: [`inherited`] of its
+/// [`connections`] (`merge_prev_potcon` for a single patch).
+pub fn inherited_by(extent: Extent, previous: &Previous) -> Option<OldPatch> {
+    inherited(&connections(&[extent], previous)[0], previous)
+}
+
 /// What a new patch connected to the old patches `links` inherits: the first of them with the
 /// others merged into it (`gd_merge`: the grids' union, each one's tractions on it — zero outside
 /// each one's contact, whose boxes do not overlap —, the contact boxes united); `None` when it
