@@ -107,10 +107,12 @@ pub struct CaseResult {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Pitch {
     Given(f64),
-    /// Found, with how far it moves per newton of FX(WS) [rad/s/N] (the secant's slope there).
+    /// Found, with how far it moves per newton of FX(WS) [rad/s/N] (the secant's slope there)
+    /// and μ of the patch of largest FN (CONTACT's stopping tolerance is EPS·μ·FZ).
     Found {
         rad_s: f64,
         per_fx_rad_s_n: f64,
+        mu: f64,
     },
 }
 

@@ -47,7 +47,10 @@ pub fn solve_fx(case: &WheelRailCase, models: &[String], mu: &Friction, fx_ws_n:
     for _ in 0..MAX_TRIALS {
         if g1.abs() <= tol {
             let per_fx = if g0.is_finite() && g1 != g0 { (x1 - x0) / (g1 - g0) } else { f64::NAN };
-            return finish(r1, Pitch::Found { rad_s: x1, per_fx_rad_s_n: per_fx.abs() }, case, models, mu);
+            let largest = r1.normal.patches.iter().max_by(|a, b| a.fn_n.total_cmp(&b.fn_n));
+            let mu_largest = largest.map_or(mu.mu, |p| mu.of_patch(p, case));
+            let pitch = Pitch::Found { rad_s: x1, per_fx_rad_s_n: per_fx.abs(), mu: mu_largest };
+            return finish(r1, pitch, case, models, mu);
         }
         let next = match (g0.is_finite(), bracket) {
             // The first step: a small creepage towards the force.

@@ -77,7 +77,9 @@ pub fn compare_case(case: u64, ours: &CaseResult, model: usize, theirs: &WheelRa
     }
     // VPITCH where the case found it (FX_WS prescribed, CONTACT's F = 1), beyond CONTACT's
     // stopping tolerance.
-    if let (Pitch::Found { rad_s, per_fx_rad_s_n }, Some(v), Some(mu)) = (ours.pitch, &theirs.velocity, mu_of(theirs)) {
+    // μ as CONTACT prints it, or where it prints FX = 0 (free rolling) the case's own.
+    if let (Pitch::Found { rad_s, per_fx_rad_s_n, mu }, Some(v)) = (ours.pitch, &theirs.velocity) {
+        let mu = mu_of(theirs).unwrap_or(mu);
         let fz = totals.track_n[2];
         // No slope (found at the first estimate): no tolerance.
         let tolerance = vpitch_tolerance(mu, fz, per_fx_rad_s_n).max(0.0);
