@@ -97,7 +97,7 @@ pub const PLASTIC_KEYS: Keys = Keys {
             "MPa",
             Allowed::Number(Range::new(0.0, false, 1e10, false), ""),
             Absent::Text("– (an elastic layer)"),
-            r#"the layer's yield limit τ_c0 (CONTACT's TAU_C0), with `layer_g_mpa` and `layer_thickness_mm` > 0: the traction bound is min(μ pn, τc), τc = τ_c0 unless the layer hardens; exact model only, not with falling friction or dissimilar bodies: `layer_yield_mpa = 560.0`"#,
+            r#"the layer's yield limit τ_c0 (CONTACT's TAU_C0), with `layer_g_mpa` and `layer_thickness_mm` (0: the bodies' surface yields without a layer's flexibility, CONTACT's LAYTHK = 0): the traction bound is min(μ pn, τc), τc = τ_c0 unless the layer hardens; exact model only, not with falling friction or dissimilar bodies: `layer_yield_mpa = 560.0`"#,
         ),
         key(
             "layer_hardening_mpa_per_mm",
@@ -292,8 +292,8 @@ fn visco(m: &mut Section) -> Result<Option<crate::physics::material::Visco>, Inp
 }
 
 /// An interface layer (CONTACT's M = 4: GG3, LAYTHK): both keys or neither. A thickness of 0 is
-/// no layer, as CONTACT's (`use_3bl` needs LAYTHK >= 1e-10); its yield limit (TAU_C0) only with
-/// a layer.
+/// no layer's flexibility, as CONTACT's (`use_3bl` needs LAYTHK >= 1e-10); with a yield limit
+/// (TAU_C0) it is the plasticity of the bodies' surface (LAYTHK = 0: the bound min(μ pn, τc) alone).
 fn layer(m: &mut Section) -> Result<Option<crate::physics::material::Layer>, InputError> {
     let yield_mpa = m.opt_num("layer_yield_mpa")?;
     let hardening_mpa_per_mm = m.opt_num("layer_hardening_mpa_per_mm")?;
@@ -310,21 +310,14 @@ fn layer(m: &mut Section) -> Result<Option<crate::physics::material::Layer>, Inp
             Some(v) => Err(InputError::new(
                 m.field("layer_yield_mpa"),
                 v,
-                "a yield limit with its layer: layer_g_mpa and layer_thickness_mm > 0",
+                "a yield limit with its layer: layer_g_mpa and layer_thickness_mm (0: the bodies' surface yields)",
             )),
             None => Ok(None),
         };
     }
     let g_mpa = m.num("layer_g_mpa")?;
     let thickness_mm = m.num("layer_thickness_mm")?;
-    if let (Some(v), true) = (yield_mpa, thickness_mm <= 0.0) {
-        return Err(InputError::new(
-            m.field("layer_yield_mpa"),
-            v,
-            "a yield limit with a layer of thickness > 0 (the plasticity of a body's surface without a layer, CONTACT's LAYTHK = 0, is not carried)",
-        ));
-    }
-    Ok((thickness_mm > 0.0).then_some(crate::physics::material::Layer {
+    Ok((thickness_mm > 0.0 || yield_mpa.is_some()).then_some(crate::physics::material::Layer {
         g_mpa,
         thickness_mm,
         yield_mpa,

@@ -285,7 +285,7 @@ fn check_model(problem: &Problem, m: &ModelDef, shifts: bool) -> Result<(), Inpu
             return Err(InputError::new(
                 "material.layer_hardening_mpa_per_mm",
                 format!("a yield limit moving at {k} MPa/mm with rolling"),
-                "a layer that hardens or softens with shifts only ([rolling] motion = \"shift\", CONTACT's T = 1): CONTACT refuses it in steady rolling (gdsteady: K_TAU != 0), and in transient rolling the limits would move with the material",
+                "a layer that hardens or softens with shifts only ([rolling] motion = \"shift\", CONTACT's T = 1): in rolling each element's limit moves with the material (CONTACT's SteadyGS and ConvexGS carry it from the element upstream, its GDsteady refuses K_TAU != 0), which the rolling solvers here do not carry",
             ));
         }
     }

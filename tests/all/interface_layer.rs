@@ -65,8 +65,9 @@ fn the_layer_exports_as_m4_and_imports_back_and_transient_rolling_is_refused() {
     assert!(!dir.join("back").exists());
 }
 
-/// The layer's yield limit (CONTACT's TAU_C0 with K_TAU = 0, issue 46): read with the layer only,
-/// refused with falling friction, and exported as TAU_C0 and imported back.
+/// The layer's yield limit (CONTACT's TAU_C0 with K_TAU = 0, issue 46): read with the layer only
+/// (of thickness 0 too: the surface yields), refused with falling friction, and exported as
+/// TAU_C0 and imported back.
 #[test]
 fn the_yield_limit_is_read_with_its_layer_and_exports_as_tau_c0() {
     let steady = "kind = \"sweep\"\nover = \"cx\"\nat = [0.001, 0.002]";
@@ -79,10 +80,20 @@ fn the_yield_limit_is_read_with_its_layer_and_exports_as_tau_c0() {
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("material.layer_yield_mpa") && err.contains("with its layer"), "{err}");
     assert!(!dir.join("out").exists());
+    // A thickness of 0 with a yield limit: the bodies' surface yields (CONTACT's LAYTHK = 0,
+    // testbank/examples_plast, tests/all/plastic_surface.rs), with no layer's flexibility; it
+    // exports as LAYTHK = 0 and imports back.
     let thin = plastic.replace("1.25", "0.0");
-    let (code, err, _) = run_scene("yield_thin", &text(&thin, "[\"contact\"]", steady), &simulate);
-    assert_eq!(code, Some(2), "{err}");
-    assert!(err.contains("material.layer_yield_mpa") && err.contains("thickness > 0"), "{err}");
+    let p = crate::common::problem(&text(&thin, "[\"contact\"]", steady));
+    let l = p.material.layer.expect("the surface's yield limit");
+    assert_eq!((l.yield_mpa, l.flexibility_mm_per_mpa()), (Some(560.0), 0.0));
+    let export = ["export", "contact", "s.toml", "--out", "back"];
+    let (code, err, dir) = run_scene("yield_thin", &text(&thin, "[\"contact\"]", steady), &export);
+    assert_eq!(code, Some(0), "{err}");
+    let deck = std::fs::read_to_string(dir.join("back/layer.inp")).unwrap();
+    assert!(deck.contains("  8200.0   0.0   560.0   0.0    GG3, LAYTHK, TAU_C0, K_TAU"), "{deck}");
+    let again = imported_again(&dir);
+    assert!(again.contains("layer_thickness_mm = 0.0") && again.contains("layer_yield_mpa = 560.0"), "{again}");
     let (code, err, _) =
         run_scene("yield_range", &text(&plastic.replace("560.0", "-1.0"), "[\"contact\"]", steady), &simulate);
     assert_eq!(code, Some(2), "{err}");

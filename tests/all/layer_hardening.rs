@@ -39,7 +39,8 @@ fn the_rate_is_read_with_its_yield_limit_in_shifts_and_exports_as_k_tau() {
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("material.layer_hardening_mpa_per_mm") && err.contains("with its yield limit"), "{err}");
     assert!(!dir.join("out").exists());
-    // In rolling: refused (CONTACT refuses K_TAU != 0 in steady rolling).
+    // In rolling: refused (the limits would move with the material: CONTACT's SteadyGS carries
+    // them from the element upstream; its GDsteady refuses K_TAU != 0).
     let (code, err, dir) = run_scene("hardening_rolling", &scene(HARDENING, true), &simulate);
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("material.layer_hardening_mpa_per_mm") && err.contains("shifts only"), "{err}");

@@ -41,6 +41,7 @@ mod linear_model;
 mod nonhertz;
 mod oracles;
 mod parser_fuzz;
+mod plastic_surface;
 mod polach_model;
 mod prescribed_force;
 mod properties;

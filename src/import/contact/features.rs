@@ -260,14 +260,14 @@ pub const FEATURES: &[Feature] = &[
         name: "an elasto-plastic interface layer",
         control: "M, TAU_C0, K_TAU",
         supported: true,
-        reason: "imported as [material] layer_yield_mpa = TAU_C0 and layer_hardening_mpa_per_mm = K_TAU (where not 0, in shifts): the traction bound min(mu pn, tau_c) per element, as CONTACT's `tangcg` and `gdsteady` set it, tau_c = TAU_C0 + K_TAU times the element's accumulated plastic slip, as its `plstrc` moves it (docs/models.md, \"Interface layer\")",
+        reason: "imported as [material] layer_yield_mpa = TAU_C0 and layer_hardening_mpa_per_mm = K_TAU (where not 0, in shifts), with layer_thickness_mm = 0 where LAYTHK = 0 (the bodies' surface yields): the traction bound min(mu pn, tau_c) per element, as CONTACT's `tangcg` and `gdsteady` set it, tau_c = TAU_C0 + K_TAU times the element's accumulated plastic slip, as its `plstrc` moves it (docs/models.md, \"Interface layer\")",
         used: |c| plastic_layer(c).map(|[_, _, tau_c0, k_tau]| format!("M = 4, TAU_C0 = {tau_c0}, K_TAU = {k_tau}")),
     },
     Feature {
-        name: "an elasto-plastic interface layer that hardens or softens in rolling, or without a layer, or with falling friction or dissimilar bodies",
+        name: "an elasto-plastic interface layer that hardens or softens in rolling, or with falling friction or dissimilar bodies",
         control: "M, TAU_C0, K_TAU, LAYTHK, T, L, GG 1, 2",
         supported: false,
-        reason: "supported: TAU_C0 = 0 (an elastic layer), or TAU_C0 > 0 on a layer (LAYTHK > 0) with Coulomb friction (L = 0) and quasi-identical bodies, K_TAU != 0 in shifts (T = 1); a yield limit that moves in rolling (CONTACT refuses K_TAU != 0 in steady rolling, `gdsteady`), the plasticity of a body's surface without a layer and its combinations with falling friction or K != 0 are not modelled",
+        reason: "supported: TAU_C0 = 0 (an elastic layer), or TAU_C0 > 0 (on a layer, or LAYTHK = 0: the bodies' surface) with Coulomb friction (L = 0) and quasi-identical bodies, K_TAU != 0 in shifts (T = 1); a yield limit that moves in steady rolling (CONTACT's `stdygs` and `cnvxgs` carry each element's limit TAUCS from the element upstream, a limit field that moves with the material, which this project's steady solver does not hold) and the combinations with falling friction or K != 0 are not modelled",
         used: |c| {
             let [_, laythk, tau_c0, k_tau] = layer_in_force(c)?;
             let other = plastic_layer(c).is_none();
@@ -281,7 +281,7 @@ pub const FEATURES: &[Feature] = &[
         name: "an interface layer in transient rolling",
         control: "M, T",
         supported: false,
-        reason: "supported: M = 4 in shifts (T = 1) and steady rolling (T = 3); in transient rolling CONTACT takes the layer's previous displacement at the element's own index on the moved grid (`m_stang.f90`: the shifted influence functions with the layer's FLX on the element itself), where this project carries it with the material",
+        reason: "supported: M = 4 in shifts (T = 1) and steady rolling (T = 3); in transient rolling CONTACT takes the layer's previous displacement at the element's own index on the moved grid (`m_stang.f90`: the shifted influence functions with the layer's FLX on the element itself), where this project carries it with the material; with a yield limit (TAU_C0 > 0, also at LAYTHK = 0) each element's plastic slip and limit TAUCS would move with the material too, which the transient solver does not carry",
         used: |c| layer_in_force(c).filter(|_| c.digits.t == 2).map(|_| "M = 4, T = 2".to_string()),
     },
     Feature {
@@ -456,13 +456,13 @@ pub fn contact_fastrip(c: &Case3) -> bool {
     c.digits.m == 5 && simplified_setting(c, 0) && c.state.friction_law == 0 && along_x
 }
 
-/// GG3, LAYTHK, TAU_C0, K_TAU of an elasto-plastic layer the import carries: TAU_C0 > 0,
-/// LAYTHK > 0, K_TAU = 0 or shifts (T = 1), Coulomb friction, K = 0.
+/// GG3, LAYTHK, TAU_C0, K_TAU of an elasto-plastic layer the import carries: TAU_C0 > 0 (on a
+/// layer, or LAYTHK = 0: the bodies' surface), K_TAU = 0 or shifts (T = 1), Coulomb friction, K = 0.
 pub fn plastic_layer(c: &Case3) -> Option<[f64; 4]> {
     let l = layer_in_force(c)?;
     let coupled = combine_bodies(c.state.poiss, c.state.gg_mpa).k != 0.0;
     let moving = l[3] != 0.0 && c.digits.t != 1;
-    let carried = l[2] > 1e-10 && !moving && l[1] >= 1e-10 && c.state.friction_law == 0 && !coupled;
+    let carried = l[2] > 1e-10 && !moving && c.state.friction_law == 0 && !coupled;
     carried.then_some(l)
 }
 

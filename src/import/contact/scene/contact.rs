@@ -68,8 +68,10 @@ pub(super) fn write(src: &Source, draft: &mut Draft) -> Result<(), InputError> {
         false => vec![("g_mpa", Value::Float(m.g_mpa)), ("poisson", Value::Float(m.poisson))],
     };
     let mut material = material;
-    // M = 4: the elastic interface layer (none where LAYTHK < 1e-10: CONTACT's `use_3bl`).
-    if let Some([gg3, laythk, tau_c0, k_tau]) = s.layer_in_force().filter(|l| l[1] >= 1e-10) {
+    // M = 4: the elastic interface layer (none where LAYTHK < 1e-10: CONTACT's `use_3bl`), or
+    // with TAU_C0 > 0 and LAYTHK = 0 the plasticity of the bodies' surface (thickness 0).
+    if let Some([gg3, laythk, tau_c0, k_tau]) = s.layer_in_force().filter(|l| l[1] >= 1e-10 || l[2] > 1e-10) {
+        let laythk = if laythk >= 1e-10 { laythk } else { 0.0 };
         material.extend([("layer_g_mpa", Value::Float(gg3)), ("layer_thickness_mm", Value::Float(laythk))]);
         // Its yield limit (TAU_C0 > 0) and the rate it moves at (K_TAU; features.rs takes it in
         // shifts only).
