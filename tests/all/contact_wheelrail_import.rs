@@ -171,7 +171,7 @@ fn the_decks_with_fx_ws_prescribed_import_as_the_gated_scenes() {
     }
 }
 
-/// The module-1 cases of CONTACT's test bank that need a roller rig, a thin layer, the conformal
+/// The module-1 cases of CONTACT's test bank that need a roller rig searched on the grid, a thin layer, the conformal
 /// approach or a massless rail are refused naming what the scene lacks; the others import (rail
 /// deviations, frictionless compression, smoothing, MIRRORZ, PRFOPT; case 39, a shift continuing
 /// case 38, in case 38's scene as a sequence of shifts); its module-3 cases import as before.
@@ -186,7 +186,8 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
         let s = m1.iter().find(|s| s.case == case).unwrap();
         assert!(s.scene.is_none() && s.refused.iter().any(|r| r.starts_with(start)), "case {case}: {s:?}");
     };
-    reason(20, "C = 5: a wheel on a roller rig");
+    // A roller rig is carried on the planar contact locus (D = 2) alone: case 20 searches the grid.
+    reason(20, "C = 5, T = 3, F = 0, D = 5: a wheel on a roller rig beyond steady rolling on the planar contact locus");
     reason(21, "B = 1: a thin compressible elastic layer");
     reason(36, "F = 3: a massless rail");
     let note = |case: usize, start: &str| {
@@ -233,7 +234,7 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
         creepbench(&["import", "contact", deck.to_str().unwrap(), "--out", out.to_str().unwrap(), "--supported-only"]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(0), "{err}");
-    assert!(err.contains("skipped case 20 (line 363): not supported: C = 5: a wheel on a roller rig"), "{err}");
+    assert!(err.contains("skipped case 20 (line 363): not supported: C = 5, T = 3, F = 0, D = 5: a wheel on a roller rig"), "{err}");
     assert!(out.join("testbank_1.toml").is_file());
 }
 

@@ -98,7 +98,7 @@ const WORN_ROOT: &str = "the worn flange root's patch (blended and turned region
 /// "Agreement with CONTACT": each bounded at its measured gap by `tolerances.toml`). The
 /// benchmark's right case 11 (and case 9 of the KPEC deck), a gap until the rail was placed by its
 /// spline's gauge point and the gap mesh started at its lowest point, is reproduced.
-pub const KNOWN_GAPS: [KnownGap; 37] = [
+pub const KNOWN_GAPS: [KnownGap; 40] = [
     KnownGap {
         deck: "mbench_a22_kpec.inp",
         case: 1,
@@ -176,7 +176,17 @@ pub const KNOWN_GAPS: [KnownGap; 37] = [
     KnownGap { deck: "rounded_flat_d09.inp", case: 15, feature: ROUNDED_FLAT_FY },
     KnownGap { deck: "test-rollers2.inp", case: 3, feature: ROLLERS_RESIDUE },
     KnownGap { deck: "test-rollers2.inp", case: 4, feature: ROLLERS_RESIDUE },
+    KnownGap { deck: "test-rollers2.inp", case: 7, feature: ROLLER_YAW_RESIDUE },
+    KnownGap { deck: "test-rollers2.inp", case: 8, feature: ROLLER_YAW_RESIDUE },
+    KnownGap { deck: "test-rollers2.inp", case: 9, feature: ROLLER_TILT_RESIDUE },
 ];
+
+/// `test-rollers2` cases 7, 8: the flat wheel yawed 0.3 rad on the ellipsoidal roller, rolling
+/// either way; free rolling, so their lateral forces are the iteration's residue.
+const ROLLER_YAW_RESIDUE: &str = "a flat wheel R = 133 mm yawed 0.3 rad on an ellipsoidal roller (R_x = 400, R_y = 100 mm), rolling either way, free rolling: FN, the reference and the creepages CONTACT's, FS and FY(TR) residues of 1.2e-7 FN (±0.011856 N against ±0.01184): 3.18 half-units of their printed digit, every other quantity within its rule; cause not found";
+
+/// `test-rollers2` case 9: the flat wheel on the roller tilted 0.1 rad by DROLLR; free rolling.
+const ROLLER_TILT_RESIDUE: &str = "a flat wheel R = 133 mm on an ellipsoidal roller tilted 0.1 rad (DROLLR), free rolling: FN, the reference and the creepages CONTACT's, FS 3.817e-3 N against 3.876e-3 and FY(TR) -8.95e-4 N against -8.354e-4 (residues of 4e-8 and 9e-9 FN): 119 and 89 half-units of their printed digits, every other quantity within its rule; cause not found (CONTACT revolves the profile about the track's y in the contact search and about the tilted rail's y in the undeformed distance, as this project does)";
 
 /// `test-rollers2` cases 3, 4: the sphere yawed by the wheelset, rolling one way and the other;
 /// free rolling, so their tangential forces are the iteration's residue.
