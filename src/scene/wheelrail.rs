@@ -660,13 +660,29 @@ fn check_roller(
     slices: bool,
 ) -> Result<(), InputError> {
     let (field, value, allowed) = if motion != MotionSpec::Rolling {
-        ("wheelrail.motion", format!("{motion:?}"), "\"rolling\" on a roller rig (shifts and transient rolling on a roller are not supported)")
+        (
+            "wheelrail.motion",
+            format!("{motion:?}"),
+            "\"rolling\" on a roller rig (shifts and transient rolling on a roller are not supported)",
+        )
     } else if longitudinal != LongitudinalSpec::Velocity {
-        ("cases.longitudinal", "\"force\"".into(), "\"velocity\" on a roller rig (FX_WS prescribed on a roller is not supported)")
+        (
+            "cases.longitudinal",
+            "\"force\"".into(),
+            "\"velocity\" on a roller rig (FX_WS prescribed on a roller is not supported)",
+        )
     } else if grid_search || conformal {
-        ("wheelrail.approach", "grid search or conformal".into(), "the planar approach on the contact locus on a roller rig")
+        (
+            "wheelrail.approach",
+            "grid search or conformal".into(),
+            "the planar approach on the contact locus on a roller rig",
+        )
     } else if slices {
-        ("rail.profile", "a slices file".into(), "a profile file on a roller rig (a roller of varying profile is not supported)")
+        (
+            "rail.profile",
+            "a slices file".into(),
+            "a profile file on a roller rig (a roller of varying profile is not supported)",
+        )
     } else if let Some(r) = cases.iter().find(|r| r.velocity[0] != 0.0) {
         return Err(InputError::new(
             format!("cases, case {} column vs_mm_s", r.contact_case),

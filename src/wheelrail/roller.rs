@@ -93,8 +93,8 @@ pub fn loci(roller: &Roller, rail: &PlacedRail, wheel: &PlacedWheel) -> Option<L
             let rnom_z = rw + z_lc[i];
             let a_y = ry * n.dz_dy;
             let denom = x[i] * r[(2, 0)] - a_y * r[(2, 1)] + rnom_z * r[(2, 2)];
-            let x_new = (-denom * dz_dx + denom * x[i] / rr + a_y * r[(0, 1)] - rnom_z * r[(0, 2)])
-                / (r[(0, 0)] + denom / rr);
+            let x_new =
+                (-denom * dz_dx + denom * x[i] / rr + a_y * r[(0, 1)] - rnom_z * r[(0, 2)]) / (r[(0, 0)] + denom / rr);
             x[i] = x_new.clamp(-0.5 * rw, 0.5 * rw);
         }
     }
@@ -136,7 +136,11 @@ pub fn rail_n_mm(roller: &Roller, rail: &PlacedRail, frame: &PatchFrame, grid: &
                 let rho = (z_r - rr).abs();
                 (rho * rho - x * x > 0.0).then(|| {
                     let z = rr - (rho * rho - x * x).sqrt();
-                    let p = Point3::new(x, rail.origin_mm[0] + cos * y_r - sin * z, rail.origin_mm[1] + sin * y_r + cos * z);
+                    let p = Point3::new(
+                        x,
+                        rail.origin_mm[0] + cos * y_r - sin * z,
+                        rail.origin_mm[1] + sin * y_r + cos * z,
+                    );
                     let d = p - frame.origin;
                     [d.dot(&e_s), d.dot(&n)]
                 })

@@ -52,7 +52,8 @@ fn groove_li_and_test_rollers3_are_refused_naming_their_features() {
     assert_eq!(skipped(&verdicts), (1..=12).collect::<Vec<_>>(), "{verdicts}");
     let lines: Vec<&str> = verdicts.lines().filter(|l| l.starts_with("skipped case")).collect();
     assert!(lines.iter().all(|l| l.contains("D (in force) = 3")), "{verdicts}");
-    let roller = |l: &&&str| l.contains("D = 3: a wheel on a roller rig beyond steady rolling on the planar contact locus");
+    let roller =
+        |l: &&&str| l.contains("D = 3: a wheel on a roller rig beyond steady rolling on the planar contact locus");
     assert_eq!(lines.iter().filter(roller).count(), 7, "{verdicts}");
 }
 
@@ -62,7 +63,8 @@ fn test_rollers2_and_mbench_conf_import_their_track_cases() {
     // scene each (cases 3, 4 share one).
     let (code, scenes, verdicts) = import("test-rollers2");
     assert_eq!(code, Some(0), "{verdicts}");
-    let expected: Vec<String> = [1, 2, 5, 6, 7, 8, 9, 10, 11, 12].iter().map(|n| format!("test_rollers2_{n}")).collect();
+    let expected: Vec<String> =
+        [1, 2, 5, 6, 7, 8, 9, 10, 11, 12].iter().map(|n| format!("test_rollers2_{n}")).collect();
     assert_eq!(scenes, expected);
     assert!(skipped(&verdicts).is_empty(), "{verdicts}");
     // mbench_conf: the run ends after case 1 (`0 MODULE`); case 1 with the conformal approach.
@@ -151,7 +153,8 @@ fn the_wheel_on_a_roller_rig_against_contact() {
         let kept = |d: &&Deviation| case < 7 || case > 9 || !residue(d);
         let worst = devs.iter().filter(kept).map(measure).fold(0.0, f64::max);
         println!("{scene}: worst {worst:.2} half-units");
-        let off: Vec<String> = devs.iter().filter(kept).filter(|d| measure(d) > 1.0).map(|d| format!("{d:?}")).collect();
+        let off: Vec<String> =
+            devs.iter().filter(kept).filter(|d| measure(d) > 1.0).map(|d| format!("{d:?}")).collect();
         assert!(off.is_empty(), "{scene}: {off:?}");
     }
 }

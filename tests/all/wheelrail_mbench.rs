@@ -72,8 +72,9 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
     let conformal_shift = |f: &&&Finding| f.scene == "t3_t1_conformal_1" && f.step == Some(7);
     // examples_conformal: test-rollers2 cases 3, 4 (the yawed sphere's free-rolling residues) and
     // 7, 8, 9 (the yawed and the tilted roller's).
-    let conformal_decks =
-        |f: &&&Finding| ["test_rollers2_3", "test_rollers2_7", "test_rollers2_8", "test_rollers2_9"].contains(&f.scene.as_str());
+    let conformal_decks = |f: &&&Finding| {
+        ["test_rollers2_3", "test_rollers2_7", "test_rollers2_8", "test_rollers2_9"].contains(&f.scene.as_str())
+    };
     assert!(
         all_gaps.iter().all(|f| in_testbank(f)
             || kpec(f)
