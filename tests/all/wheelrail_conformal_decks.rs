@@ -150,7 +150,7 @@ fn the_wheel_on_a_roller_rig_against_contact() {
         assert_eq!(fn_n.contact, fn_contact, "{scene}");
         assert!(fn_n.half_units <= 1.0, "{scene}: {fn_n:?}");
         // The gate's measure: half-units of the printed digit, FX and MN floored (1 N, 12 N·mm).
-        let kept = |d: &&Deviation| case < 7 || case > 9 || !residue(d);
+        let kept = |d: &&Deviation| !(7..=9).contains(&case) || !residue(d);
         let worst = devs.iter().filter(kept).map(measure).fold(0.0, f64::max);
         println!("{scene}: worst {worst:.2} half-units");
         let off: Vec<String> =
