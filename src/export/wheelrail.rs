@@ -7,7 +7,8 @@
 //! the scene's A_SEP, D_SEP, D_COMB, the track, the rail profile with its options (PRFOPT = 2) and
 //! the rail's deviations, the wheelset's dimensions, the wheel profile, the position and velocities,
 //! with E = 5 the wheel's deviations DXWHL … VPITCHW where the scene has any); each later case keeps all
-//! but its position and velocities (V111002, 0100321). C is the side (0 left, 1 right), N the
+//! but its position and velocities (V111002, 0100321). C is the side (0 left, 1 right; 4, 5 on a
+//! roller rig, `[rail] roller_radius_mm`, with NOMRAD_R in CANT's place and VPITCH_ROL in VS's), N the
 //! vertical problem (1: FZ prescribed, 0: the height Z_WS), F the longitudinal one (1: FX_WS in
 //! place of VPITCH, `[cases] longitudinal = "force"`); S_WS is the case's own (the cases' column
 //! `s_mm`), else the scene's track position (`[wheelrail] s_mm`: a shift's, where friction varies
@@ -136,7 +137,8 @@ fn profile_name(p: &ProfileSpec, key: &str, deck_dir: &Path) -> Result<String, I
 
 /// The three control words: the first case reads everything, the later ones position and velocity.
 fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
-    let c = u8::from(s.side == SideSpec::Right);
+    // C = 0, 1 a wheel on a track, 4, 5 on a roller rig.
+    let c = u8::from(s.side == SideSpec::Right) + if s.roller.is_some() { 4 } else { 0 };
     let n = u8::from(s.vertical == VerticalSpec::Force);
     let f = u8::from(s.longitudinal == LongitudinalSpec::Force);
     let t = match (s.frictionless, s.motion) {
@@ -238,9 +240,15 @@ fn setup(s: &WheelRailScene, (rail, wheel): (&str, &str), out: &mut String) {
         PlacementSpec::Gauge { height_mm, width_mm } => {
             writeln!(out, "  {height_mm:?}   0   {width_mm:?}   {:?}         GAUGHT, GAUGSQ, GAUGWD, CANT", s.cant_rad)
         }
-        PlacementSpec::Absolute { y_mm, z_mm } => {
-            writeln!(out, "  -1.0   {y_mm:?}   {z_mm:?}   {:?}         GAUGHT, RAILY0, RAILZ0, CANT", s.cant_rad)
-        }
+        PlacementSpec::Absolute { y_mm, z_mm } => match s.roller {
+            Some(r) => {
+                let radius = r.radius_mm;
+                writeln!(out, "  -1.0   {y_mm:?}   {z_mm:?}   {radius:?}         GAUGHT, RAILY0, RAILZ0, NOMRAD_R")
+            }
+            None => {
+                writeln!(out, "  -1.0   {y_mm:?}   {z_mm:?}   {:?}         GAUGHT, RAILY0, RAILZ0, CANT", s.cant_rad)
+            }
+        },
     };
     profile_line(rail, &s.rail, "RFNAME", out);
     let ([dy, dz, droll], [vy, vz, vroll]) = (s.rail_deviation.position, s.rail_deviation.velocity);
@@ -349,8 +357,13 @@ fn position_and_velocity(s: &WheelRailScene, r: &CaseRow, s_mm: f64, out: &mut S
     );
     let [vs, vy, vz, vroll, vyaw, sixth] = r.velocity;
     let last = if longitudinal == LongitudinalSpec::Force { "FX_WS" } else { "VPITCH" };
+    // On a roller rig the first value is the roller's VPITCH_ROL (CONTACT's VS is 0 there).
+    let (first, name) = match s.roller {
+        Some(roller) => (roller.vpitch_rad_s, "VPITCH_ROL"),
+        None => (vs, "VS"),
+    };
     let _ = writeln!(
         out,
-        "  {vs:?}   {vy:?}   {vz:?}   {vroll:?}   {vyaw:?}   {sixth:?}      VS, VY, VZ, VROLL, VYAW, {last}"
+        "  {first:?}   {vy:?}   {vz:?}   {vroll:?}   {vyaw:?}   {sixth:?}      {name}, VY, VZ, VROLL, VYAW, {last}"
     );
 }

@@ -17,6 +17,7 @@ use crate::wheelrail::patch::Separation;
 use crate::wheelrail::profile::slices::{read_slices, Slices};
 use crate::wheelrail::profile::{options::ProfileOptions, read::read_profile, Profile, ProfileKind};
 use crate::wheelrail::rail::{RailPlacement, Track};
+use crate::wheelrail::roller::Roller;
 use crate::wheelrail::side::Side;
 use crate::wheelrail::varrail::RailSlices;
 use crate::wheelrail::wheel::{Pose, Velocity, WheelDeviation, WheelsetGeometry};
@@ -281,5 +282,6 @@ pub fn case_of<'a>(
         previous: None,
         rail_slices: rail.slices.as_deref().map(|slices| RailSlices { slices, s_ws_mm: rail.s_ws_mm }),
         wheel_slices: wheel.slices.as_ref().map(|slices| WheelSlices { slices, pitch_rad: row.pitch_rad }),
+        roller: s.roller.map(|r| Roller { radius_mm: r.radius_mm, vpitch_rad_s: r.vpitch_rad_s }),
     }
 }

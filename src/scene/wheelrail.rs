@@ -235,6 +235,8 @@ pub struct WheelRailScene {
     pub wheel: ProfileSpec,
     pub placement: PlacementSpec,
     pub cant_rad: f64,
+    /// A roller rig's roller (`[rail] roller_radius_mm`, `roller_vpitch_rad_s`; CONTACT's C = 4, 5).
+    pub roller: Option<super::wheelrail_profile::RollerSpec>,
     /// The rail's deviation from its design position and its velocity (`[rail] deviation_*`).
     pub rail_deviation: RailDeviationSpec,
     /// CONTACT's T = 0 (`[wheelrail] frictionless`): the normal problem only, no tangential
@@ -586,6 +588,10 @@ impl WheelRailScene {
         }
         let given_s = doc.get("wheelrail").and_then(|w| w.get("s_mm")).is_some();
         super::wheelrail_cases::check_positions(&cases, motion, (given_s, rail_is_slices(doc)), mu_variation.as_ref())?;
+        match rail.roller {
+            Some(_) => check_roller(&cases, (motion, longitudinal), (grid_search, conformal), rail_is_slices(doc))?,
+            None => check_speeds(&cases)?,
+        }
         let origin = super::origin::read(&mut top)?;
         check_origin(origin.as_ref(), &cases)?;
         let report = report(&mut top, dir, &cases)?;
@@ -598,6 +604,7 @@ impl WheelRailScene {
             wheel: wheel.profile,
             placement: rail.placement,
             cant_rad: rail.cant_rad,
+            roller: rail.roller,
             rail_deviation: rail.deviation,
             frictionless,
             flange_back_distance_mm: wheel.flange_back_distance_mm,
@@ -629,6 +636,63 @@ impl WheelRailScene {
         check_figures(&scene)?;
         Ok(scene)
     }
+}
+
+/// On a track every case rolls or shifts: `vs_mm_s` other than 0 (the creepages are over it).
+fn check_speeds(cases: &[CaseRow]) -> Result<(), InputError> {
+    match cases.iter().find(|r| r.velocity[0] == 0.0) {
+        Some(r) => Err(InputError::new(
+            format!("cases, case {} column vs_mm_s", r.contact_case),
+            0,
+            "a rolling speed other than 0 (the creepages are over it; 0 only on a roller rig, [rail] roller_radius_mm)",
+        )),
+        None => Ok(()),
+    }
+}
+
+/// A roller rig (`[rail] roller_radius_mm`) in steady rolling with the pitch's velocity given, on
+/// the contact locus and the planar approach, on a profile file, the wheelset not moving forward
+/// (CONTACT reads VPITCH_ROL in VS_WS's place and takes VS = 0).
+fn check_roller(
+    cases: &[CaseRow],
+    (motion, longitudinal): (MotionSpec, LongitudinalSpec),
+    (grid_search, conformal): (bool, bool),
+    slices: bool,
+) -> Result<(), InputError> {
+    let (field, value, allowed) = if motion != MotionSpec::Rolling {
+        (
+            "wheelrail.motion",
+            format!("{motion:?}"),
+            "\"rolling\" on a roller rig (shifts and transient rolling on a roller are not supported)",
+        )
+    } else if longitudinal != LongitudinalSpec::Velocity {
+        (
+            "cases.longitudinal",
+            "\"force\"".into(),
+            "\"velocity\" on a roller rig (FX_WS prescribed on a roller is not supported)",
+        )
+    } else if grid_search || conformal {
+        (
+            "wheelrail.approach",
+            "grid search or conformal".into(),
+            "the planar approach on the contact locus on a roller rig",
+        )
+    } else if slices {
+        (
+            "rail.profile",
+            "a slices file".into(),
+            "a profile file on a roller rig (a roller of varying profile is not supported)",
+        )
+    } else if let Some(r) = cases.iter().find(|r| r.velocity[0] != 0.0) {
+        return Err(InputError::new(
+            format!("cases, case {} column vs_mm_s", r.contact_case),
+            r.velocity[0],
+            "0 on a roller rig (the roller turns, the wheelset stays: [rail] roller_vpitch_rad_s)",
+        ));
+    } else {
+        return Ok(());
+    };
+    Err(InputError::new(field, value, allowed))
 }
 
 /// `[origin] cases` = [first, last] are the smallest and largest `contact_case` of the table (an

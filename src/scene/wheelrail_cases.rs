@@ -174,9 +174,9 @@ pub const COLUMNS: Keys = Keys {
         key(
             "vs_mm_s",
             "mm/s",
-            Allowed::Number(SPEED, "not 0"),
+            Allowed::Number(SPEED, "not 0 on a track, 0 on a roller rig (`[rail] roller_radius_mm`)"),
             Absent::Required,
-            r#"the forward speed VS_WS (the creepages are over it); in a shift (`motion = "shift"` or `"shift_sequence"`) this and the other velocity columns are the step's shifts in mm and rad; in a sequence of shifts each case's position along the track is the one before plus this shift (× 1 s), unless the table has the column `s_mm`"#,
+            r#"the forward speed VS_WS (the creepages are over it; on a roller rig the roller turns instead, `[rail] roller_vpitch_rad_s`); in a shift (`motion = "shift"` or `"shift_sequence"`) this and the other velocity columns are the step's shifts in mm and rad; in a sequence of shifts each case's position along the track is the one before plus this shift (× 1 s), unless the table has the column `s_mm`"#,
         ),
         key("vy_mm_s", "mm/s", Allowed::Number(SPEED, ""), Absent::Required, "the lateral velocity VY_WS"),
         key("vz_mm_s", "mm/s", Allowed::Number(SPEED, ""), Absent::Required, "the vertical velocity VZ_WS"),
@@ -579,13 +579,6 @@ pub(super) fn row(v: &[f64], line: &str, spec: Spec) -> Result<CaseRow, InputErr
     let mut velocity = [0.0; 6];
     for (k, x) in velocity.iter_mut().enumerate() {
         *x = check(5 + k)?;
-    }
-    if velocity[0] == 0.0 {
-        return Err(InputError::new(
-            format!("{line} column vs_mm_s"),
-            0,
-            "a rolling speed other than 0 (the creepages are over it)",
-        ));
     }
     Ok(CaseRow {
         contact_case: case as u64,

@@ -156,6 +156,20 @@ pub const RAIL_KEYS: Keys = Keys {
             Absent::Num(0.0),
             r#"the rail's cant, a rotation towards the track centre (CANT), applied before the placement: `cant_rad = 0.025`"#,
         ),
+        key(
+            "roller_radius_mm",
+            "mm",
+            Allowed::Number(Range::new(0.0, false, 1e5, true), "not with `gauge_height_mm`, `cant_rad`, a slices file"),
+            Absent::Text("absent: a rail on a track"),
+            r#"a wheel on a roller rig (CONTACT's C = 4, 5; NOMRAD_R): the rail profile is the roller's, revolved about the roller's axis, the track's y at this depth below the profile's z = 0; the wheelset does not move forward (the cases' `vs_mm_s` 0), the roller turns at `roller_vpitch_rad_s` (docs/wheelrail.md, "A wheel on a roller rig"): `roller_radius_mm = 400.0`"#,
+        ),
+        key(
+            "roller_vpitch_rad_s",
+            "rad/s",
+            Allowed::Number(RAIL_SPEED, "only with `roller_radius_mm`"),
+            Absent::Text("required with `roller_radius_mm`"),
+            r#"the roller's angular velocity about its axis (VPITCH_ROL; positive with the wheel's negative `vpitch_rad_s` rolling the contact forward): `roller_vpitch_rad_s = 0.25`"#,
+        ),
         deviation(
             "deviation_y_mm",
             "mm",
@@ -212,9 +226,9 @@ pub const WHEEL_KEYS: Keys = Keys {
         key(
             "flange_back_distance_mm",
             "mm",
-            Allowed::Number(Range::new(0.0, true, 1e5, true), ""),
+            Allowed::Number(LENGTH, ""),
             Absent::Required,
-            r#"the distance between the wheels' flange backs (CONTACT's FBDIST; 0 puts the profile's flange back at the wheelset's centre, as CONTACT's decks of one wheel on a rail placed absolutely): `flange_back_distance_mm = 1360.0`"#,
+            r#"the distance between the wheels' flange backs (CONTACT's FBDIST; 0 puts the profile's flange back at the wheelset's centre, as CONTACT's decks of one wheel on a rail placed absolutely; CONTACT takes a negative one too, `test-rollers2` case 7's −100 mm): `flange_back_distance_mm = 1360.0`"#,
         ),
         key(
             "flange_back_position_mm",
@@ -334,6 +348,8 @@ fn rail_deviation(r: &mut Section) -> Result<RailDeviationSpec, InputError> {
 /// The rail read from `[rail]`: its profile, placement, cant and deviation.
 pub struct RailSection {
     pub profile: ProfileSpec,
+    /// A roller rig's roller (`roller_radius_mm`, `roller_vpitch_rad_s`), if the rail is one.
+    pub roller: Option<RollerSpec>,
     pub placement: PlacementSpec,
     pub cant_rad: f64,
     pub deviation: RailDeviationSpec,
@@ -352,8 +368,33 @@ pub fn rail(top: &mut Section, dir: &Path) -> Result<RailSection, InputError> {
     };
     let cant_rad = r.num_or_default("cant_rad")?;
     let deviation = rail_deviation(&mut r)?;
+    let roller = roller(&mut r, &placement, cant_rad)?;
     r.finish()?;
-    Ok(RailSection { profile, placement, cant_rad, deviation })
+    Ok(RailSection { profile, roller, placement, cant_rad, deviation })
+}
+
+/// A roller rig's roller: NOMRAD_R [mm] and VPITCH_ROL [rad/s] (CONTACT's C = 4, 5).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RollerSpec {
+    pub radius_mm: f64,
+    pub vpitch_rad_s: f64,
+}
+
+/// `roller_radius_mm` with `roller_vpitch_rad_s`, the rail placed absolutely and without cant (a
+/// roller rig has neither gauge point nor cant, CONTACT's `trackdata_input`).
+fn roller(r: &mut Section, placement: &PlacementSpec, cant_rad: f64) -> Result<Option<RollerSpec>, InputError> {
+    let Some(radius_mm) = r.opt_num("roller_radius_mm")? else {
+        r.refuse("roller_vpitch_rad_s", "no roller_vpitch_rad_s without roller_radius_mm (a rail on a track)")?;
+        return Ok(None);
+    };
+    let why = if matches!(placement, PlacementSpec::Gauge { .. }) {
+        "the rail placed by y_mm, z_mm (a roller rig has no gauge point)"
+    } else if cant_rad != 0.0 {
+        "cant_rad = 0 (a roller rig has no cant; tilt the roller by deviation_roll_rad)"
+    } else {
+        return Ok(Some(RollerSpec { radius_mm, vpitch_rad_s: r.num("roller_vpitch_rad_s")? }));
+    };
+    Err(InputError::new(r.field("roller_radius_mm"), radius_mm, format!("a roller only with {why}")))
 }
 
 /// The wheel read from `[wheel]`: its profile, the wheelset's FBDIST, FBPOS, NOMRAD and the

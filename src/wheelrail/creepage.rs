@@ -8,6 +8,7 @@
 //! profile's origin) adds its material's velocity at the reference P and its roll rate.
 
 use super::patch::PatchFrame;
+use super::roller::Roller;
 use super::wheel::{PlacedWheel, Velocity};
 use nalgebra::{Point3, Vector3};
 
@@ -40,23 +41,34 @@ impl RailMotion {
 /// The creepages at the patch's reference with the approach `pen_mm` (the deepest overlap):
 /// (v_rail(P) − v_wheel(Q)) / VELOC, the spin (ω_rail − ω_wheel) · n / VELOC. With `shift`
 /// (CONTACT's T = 1: dt = 1, VELOC = 1) the velocities are one step's shifts and so are the
-/// "creepages": CKSI, CETA [mm], CPHI [rad].
+/// "creepages": CKSI, CETA [mm], CPHI [rad]. On a roller rig the roller's material moves too, and
+/// the speed is the mean of the roller's and the wheel's at the contact ([`Roller`]).
 pub fn at_reference(
     frame: &PatchFrame,
     wheel: &PlacedWheel,
     v: &Velocity,
     pen_mm: f64,
-    rail: &RailMotion,
+    (rail, roller): (&RailMotion, Option<&Roller>),
     shift: bool,
 ) -> Creepages {
     let n = frame.n();
     let q = frame.origin + n * pen_mm;
     let v_q = wheel.material_velocity(&q, v);
-    let v_p = rail.at(&frame.origin);
+    let mut v_p = rail.at(&frame.origin);
+    let mut spin = Vector3::new(rail.velocity[2], 0.0, 0.0) - wheel.angular_velocity(v);
     let pitch_x = wheel.pitch_velocity(&q, v).x;
-    let veloc_mm_s = if shift { 1.0 } else { 0.5 * ((v_q.x - v_p.x - pitch_x).abs() + pitch_x.abs()) };
+    let veloc_mm_s = match roller {
+        _ if shift => 1.0,
+        // On a roller rig the mean of the roller's and the wheel's speeds at the contact
+        // (`wr_creep_cref`: |v_P,x + v_Q,x| / 2).
+        Some(r) => {
+            v_p += r.material_velocity(&frame.origin);
+            spin += r.angular_velocity();
+            0.5 * (v_p.x + v_q.x).abs()
+        }
+        None => 0.5 * ((v_q.x - v_p.x - pitch_x).abs() + pitch_x.abs()),
+    };
     let slip = v_p - v_q;
-    let spin = Vector3::new(rail.velocity[2], 0.0, 0.0) - wheel.angular_velocity(v);
     Creepages {
         cksi: slip.x / veloc_mm_s,
         ceta: slip.dot(&frame.e_s()) / veloc_mm_s,

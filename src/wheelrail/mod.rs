@@ -22,6 +22,7 @@ pub mod oorwheel;
 pub mod patch;
 pub mod profile;
 pub mod rail;
+pub mod roller;
 pub mod search;
 pub mod shift;
 pub mod side;
@@ -156,6 +157,9 @@ pub struct WheelRailCase<'a> {
     /// An out-of-round wheel (a wheel slices file with the wheelset's pitch); `wheel` is then its
     /// first slice (its surface is the slices'). Searched on CONTACT's gap mesh ([`brute`]).
     pub wheel_slices: Option<oorwheel::WheelSlices<'a>>,
+    /// A roller rig (CONTACT's C = 4, 5): the rail profile is the roller's, revolved about its
+    /// axis ([`roller`]); the wheelset does not move forward (VS = 0), the roller turns.
+    pub roller: Option<roller::Roller>,
 }
 
 /// A patch with its normal solution and creepages (right-side frame).
@@ -383,6 +387,16 @@ fn samples(
     mesh: &search::RailMesh,
     wheel: &mut PlacedWheel,
 ) -> Vec<search::LocusSample> {
+    if let Some(r) = &case.roller {
+        return match roller::loci(r, rail, wheel) {
+            Some(loci) => {
+                let out = search::scan_varying(&loci, mesh);
+                wheel.locus_spline = Some(loci.wheel);
+                out
+            }
+            None => Vec::new(),
+        };
+    }
     let Some(slices) = &case.rail_slices else { return search::scan(wheel, mesh) };
     let frame = varrail::RailFrame { origin_mm: rail.origin_mm, angle_rad: rail.angle_rad };
     match varrail::loci(slices, frame, wheel) {
@@ -420,7 +434,8 @@ fn geometry_at(
             if samples.is_empty() {
                 return Err(WheelRailError::NoOverlap);
             }
-            let radius = case.wheelset.nominal_radius_mm;
+            let wheel_mm = case.wheelset.nominal_radius_mm;
+            let radius = case.roller.map_or(wheel_mm, |r| r.gap_radius_mm(wheel_mm));
             search::regions(&samples).into_iter().filter_map(|r| patch::candidate(r, radius)).collect()
         }
     };
@@ -433,7 +448,7 @@ fn geometry_at(
             (case.dx_mm, case.ds_mm),
             &case.separation,
             (case.wheel_surface, case.motion, case.previous, case.conformal),
-            case.rail_slices.as_ref(),
+            (case.rail_slices.as_ref(), case.roller.as_ref()),
         )?;
         if geometry.grid.len() > MAX_ELEMENTS {
             return Err(WheelRailError::GridTooLarge {
@@ -473,7 +488,10 @@ fn patches_at(
         let (creepages, extra_slip) =
             match conformal_slip::rigid_slip(&geometry, &wheel, (&velocity, &rail_motion), shift) {
                 Some(slip) => (slip.creepages, Some(slip.extra)),
-                None => (creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm, &rail_motion, shift), None),
+                None => {
+                    let rail_motion = (&rail_motion, case.roller.as_ref());
+                    (creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm, rail_motion, shift), None)
+                }
             };
         out.push(NormalPatch { geometry, fn_n, pn_mpa, pen_mm, creepages, extra_slip });
     }

@@ -10,6 +10,7 @@ use super::conformal_reference;
 use super::oorwheel;
 use super::profile::Profile;
 use super::rail::PlacedRail;
+use super::roller::{self, Roller};
 use super::search::LocusSample;
 use super::varrail::RailSlices;
 use super::wheel::PlacedWheel;
@@ -509,6 +510,36 @@ fn undeformed_distance_varying(
     h
 }
 
+/// [`undeformed_distance`] on a roller: the roller's n at each element (its mesh,
+/// [`roller::rail_n_mm`]) less the wheel's; off the roller's mesh nothing touches.
+fn roller_distance(
+    frame: &PatchFrame,
+    grid: &PatchGrid,
+    wheel: &PlacedWheel,
+    on_roller: &[Option<f64>],
+    meshed: Option<Vec<Option<f64>>>,
+) -> Vec<f64> {
+    let n = frame.n();
+    let mut h = Vec::with_capacity(grid.len());
+    for j in 0..grid.ms {
+        for i in 0..grid.mx {
+            let e = j * grid.mx + i;
+            let t_w = match &meshed {
+                Some(m) => m[e],
+                None => {
+                    let (x, s) = grid.centre(i, j);
+                    wheel.along(&frame.at(x, s), &n)
+                }
+            };
+            h.push(match (on_roller[e], t_w) {
+                (Some(r), Some(w)) => r - w,
+                _ => MISSED_MM,
+            });
+        }
+    }
+    h
+}
+
 /// Where a widened grid reaches beyond the patch's own extent, no wheel surface: CONTACT meshes the
 /// wheel over the region's x and y ranges and two elements beyond (`wr_ud_planar`: `xmin` …
 /// `ymax`, the wheel's z −999 off the mesh), so an element whose point in the tangent plane lies
@@ -537,7 +568,7 @@ pub fn build(
     size_mm: (f64, f64),
     sep: &Separation,
     (surface, motion, previous, conformal): (WheelSurface, Motion, Option<&shift::Previous>, bool),
-    slices: Option<&RailSlices>,
+    (slices, roller): (Option<&RailSlices>, Option<&Roller>),
 ) -> Result<PatchGeometry, WheelRailError> {
     // A variable rail: the cross-section at the reference's x (CONTACT's `complete_patches`).
     let section = match slices {
@@ -546,7 +577,11 @@ pub fn build(
     };
     let here = section.as_ref().map(|p| PlacedRail { curve: p, origin_mm: rail.origin_mm, angle_rad: rail.angle_rad });
     let rail = here.as_ref().unwrap_or(rail);
-    let frame = frame(c, rail).ok_or(WheelRailError::NoContact)?;
+    let mut frame = frame(c, rail).ok_or(WheelRailError::NoContact)?;
+    if let Some(r) = roller {
+        // The reference on the roller at its x (`set_cpatch_reference`).
+        frame.origin.z = Roller::z_at_x(r.axis_z_mm(rail), frame.origin.z, frame.origin.x);
+    }
     let mut grid = grid(c, &frame, rail, size_mm, motion)?;
     if conformal {
         return build_conformal(c, frame, grid, (wheel, rail), (surface, motion, previous));
@@ -559,8 +594,12 @@ pub fn build(
         }
     }
     let meshed = meshed_wheel(&frame, &grid, wheel, surface, c.y_mm);
-    let mut h_mm = match slices {
-        Some(v) => {
+    let mut h_mm = match (slices, roller) {
+        (_, Some(r)) => {
+            let on_roller = roller::rail_n_mm(r, rail, &frame, &grid).ok_or(WheelRailError::NoContact)?;
+            roller_distance(&frame, &grid, wheel, &on_roller, meshed)
+        }
+        (Some(v), None) => {
             let columns = column_sections(v, &frame, &grid, rail)?;
             let placed: Vec<PlacedRail> = columns
                 .iter()
@@ -568,7 +607,7 @@ pub fn build(
                 .collect();
             undeformed_distance_varying(&frame, &grid, wheel, &placed, meshed)
         }
-        None => undeformed_distance(&frame, &grid, wheel, rail, meshed),
+        (None, None) => undeformed_distance(&frame, &grid, wheel, rail, meshed),
     };
     if widened {
         beyond_the_wheel_surface(c, &frame, &grid, &mut h_mm);

@@ -48,6 +48,7 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side, pose: Pose) -
         motion: Default::default(),
         previous: None,
         rail_slices: None,
+        roller: None,
         wheel_slices: None,
     }
 }

@@ -171,7 +171,7 @@ fn the_decks_with_fx_ws_prescribed_import_as_the_gated_scenes() {
     }
 }
 
-/// The module-1 cases of CONTACT's test bank that need a roller rig, a thin layer, the conformal
+/// The module-1 cases of CONTACT's test bank that need a roller rig searched on the grid, a thin layer, the conformal
 /// approach or a massless rail are refused naming what the scene lacks; the others import (rail
 /// deviations, frictionless compression, smoothing, MIRRORZ, PRFOPT; case 39, a shift continuing
 /// case 38, in case 38's scene as a sequence of shifts); its module-3 cases import as before.
@@ -186,7 +186,8 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
         let s = m1.iter().find(|s| s.case == case).unwrap();
         assert!(s.scene.is_none() && s.refused.iter().any(|r| r.starts_with(start)), "case {case}: {s:?}");
     };
-    reason(20, "C = 5: a wheel on a roller rig");
+    // A roller rig is carried on the planar contact locus (D = 2) alone: case 20 searches the grid.
+    reason(20, "C = 5, T = 3, F = 0, D = 5: a wheel on a roller rig beyond steady rolling on the planar contact locus");
     reason(21, "B = 1: a thin compressible elastic layer");
     reason(36, "F = 3: a massless rail");
     let note = |case: usize, start: &str| {
@@ -233,7 +234,10 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
         creepbench(&["import", "contact", deck.to_str().unwrap(), "--out", out.to_str().unwrap(), "--supported-only"]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(0), "{err}");
-    assert!(err.contains("skipped case 20 (line 363): not supported: C = 5: a wheel on a roller rig"), "{err}");
+    assert!(
+        err.contains("skipped case 20 (line 363): not supported: C = 5, T = 3, F = 0, D = 5: a wheel on a roller rig"),
+        "{err}"
+    );
     assert!(out.join("testbank_1.toml").is_file());
 }
 
@@ -624,4 +628,30 @@ fn the_grid_search_imports_and_exports_back() {
     assert_eq!(values(&back), WheelRailScene { wheel_mesh: false, ..values(&original) });
     let deck = std::fs::read_to_string(dir.join("back/deck/two_patches_1.inp")).unwrap();
     assert_eq!(deck.matches("0052033    V-L-D-C-M-Z-E").count(), 1, "{deck}");
+}
+
+/// A roller rig (C = 4, 5) imports as `[rail] roller_radius_mm`, `roller_vpitch_rad_s` with the
+/// cases' `vs_mm_s` 0, and exports back to C = 5 with NOMRAD_R and VPITCH_ROL in CANT's and VS's
+/// places: `test-rollers2` case 9 (the roller tilted by DROLLR) round-trips.
+#[test]
+fn a_roller_rig_imports_and_exports_back() {
+    let dir = common::tempdir("m1_roller_round_trip");
+    let deck = root().join("reference/contact_wheelrail/testbank/examples_conformal/test-rollers2.inp");
+    let written = import(&deck, &dir.join("scenes"), &["--supported-only"]);
+    let nine = written.iter().find(|p| p.ends_with("test_rollers2_9.toml")).unwrap().clone();
+    let s = WheelRailScene::from_file(&nine).unwrap();
+    let roller = s.roller.unwrap();
+    assert_eq!((roller.radius_mm, roller.vpitch_rad_s), (400.0, 0.25));
+    assert_eq!((s.cases[0].velocity[0], s.cases[0].velocity[5]), (0.0, -0.75));
+    assert_eq!(s.rail_deviation.position, [0.0, 0.4996, 0.1]);
+    let (original, mut back) = round_trip(&nine, &dir);
+    // The exported deck numbers its cases from 1.
+    back.cases[0].contact_case = original.cases[0].contact_case;
+    assert_eq!(values(&back), values(&original));
+    let text = std::fs::read_to_string(dir.join("deck/test_rollers2_9.inp")).unwrap();
+    assert!(
+        text.contains(" 5203000    C-P-B-T-N-F-S") && text.contains("400.0         GAUGHT, RAILY0, RAILZ0, NOMRAD_R"),
+        "{text}"
+    );
+    assert!(text.contains("  0.25   0.0   0.0   0.0   0.0   -0.75      VPITCH_ROL, VY, VZ"), "{text}");
 }

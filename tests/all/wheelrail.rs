@@ -49,6 +49,7 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side) -> WheelRailC
         motion: Default::default(),
         previous: None,
         rail_slices: None,
+        roller: None,
         wheel_slices: None,
     }
 }

@@ -98,7 +98,7 @@ const WORN_ROOT: &str = "the worn flange root's patch (blended and turned region
 /// "Agreement with CONTACT": each bounded at its measured gap by `tolerances.toml`). The
 /// benchmark's right case 11 (and case 9 of the KPEC deck), a gap until the rail was placed by its
 /// spline's gauge point and the gap mesh started at its lowest point, is reproduced.
-pub const KNOWN_GAPS: [KnownGap; 41] = [
+pub const KNOWN_GAPS: [KnownGap; 44] = [
     KnownGap {
         deck: "mbench_a22_kpec.inp",
         case: 1,
@@ -180,12 +180,22 @@ pub const KNOWN_GAPS: [KnownGap; 41] = [
     KnownGap { deck: "groove_li.inp", case: 2, feature: GROOVE_RESIDUE },
     KnownGap { deck: "groove_li.inp", case: 3, feature: GROOVE_RESIDUE },
     KnownGap { deck: "groove_li.inp", case: 4, feature: GROOVE_RESIDUE },
+    KnownGap { deck: "test-rollers2.inp", case: 7, feature: ROLLER_YAW_RESIDUE },
+    KnownGap { deck: "test-rollers2.inp", case: 8, feature: ROLLER_YAW_RESIDUE },
+    KnownGap { deck: "test-rollers2.inp", case: 9, feature: ROLLER_TILT_RESIDUE },
 ];
 
 /// `groove_li` cases 1-4: a circular wheel R = 10 mm centred in a groove of radius 10.25 to 10.02
 /// mm, free rolling (FX_WS = 0 prescribed): a contact symmetric about y = 0 whose lateral forces
 /// are residues of the curved reference's opposite tractions.
 const GROOVE_RESIDUE: &str = "a circular wheel R = 10 mm centred in a deep groove (R = 10.25, 10.10, 10.05, 10.02 mm; Li 2002), the conformal approach, free rolling found (FX_WS = 0, F = 1), FN = 10 kN: FN, the approach, VPITCH, the positions, creepages and counts CONTACT's; the lateral forces FS and FY, residues of 1e-9 to 2e-6 FN of a contact symmetric about y = 0, are not: case 4 FY(TR) 1.16670e-2 N against 1.147e-2 (39.4 half-units), FS 1.9105e-2 against 1.893e-2 (35.0); case 3 FS 3.699e-4 N against 3.600e-4 (197 half-units of its 5e-8 N digit; 1e-9 FN), FY 13.6; case 1 FS 6.2, case 2 FY 5.0. CONTACT run with EPS = 1e-9 instead of 1e-7 prints the same FY(TR) 1.147e-2 N in case 4 and FS 3.598e-4 N in case 3: not its stopping tolerance; cause not found";
+
+/// `test-rollers2` cases 7, 8: the flat wheel yawed 0.3 rad on the ellipsoidal roller, rolling
+/// either way; free rolling, so their lateral forces are the iteration's residue.
+const ROLLER_YAW_RESIDUE: &str = "a flat wheel R = 133 mm yawed 0.3 rad on an ellipsoidal roller (R_x = 400, R_y = 100 mm), rolling either way, free rolling: FN, the reference and the creepages CONTACT's, FS and FY(TR) residues of 1.2e-7 FN (±0.011856 N against ±0.01184): 3.18 half-units of their printed digit, every other quantity within its rule; cause not found";
+
+/// `test-rollers2` case 9: the flat wheel on the roller tilted 0.1 rad by DROLLR; free rolling.
+const ROLLER_TILT_RESIDUE: &str = "a flat wheel R = 133 mm on an ellipsoidal roller tilted 0.1 rad (DROLLR), free rolling: FN, the reference and the creepages CONTACT's, FS 3.817e-3 N against 3.876e-3 and FY(TR) -8.95e-4 N against -8.354e-4 (residues of 4e-8 and 9e-9 FN): 119 and 89 half-units of their printed digits, every other quantity within its rule; cause not found (CONTACT revolves the profile about the track's y in the contact search and about the tilted rail's y in the undeformed distance, as this project does)";
 
 /// `test-rollers2` cases 3, 4: the sphere yawed by the wheelset, rolling one way and the other;
 /// free rolling, so their tangential forces are the iteration's residue.

@@ -6,7 +6,9 @@
 //! cannot say besides is in `scene::wheelrail::SCENE_LIMITS`, which gives the import's verdict.
 
 use super::deck::{Case3, Potcon, SubsurfaceBlock};
-use super::wheelrail_deck::{FrictionVariation, MaterialModel, ProfileFormat, ProfileSpec, WheelRailCase};
+use super::wheelrail_deck::{
+    FrictionVariation, MaterialModel, ProfileFormat, ProfileSpec, RailPlacement, WheelRailCase,
+};
 use crate::physics::material::combine_bodies;
 
 /// One feature of a case.
@@ -602,6 +604,16 @@ pub fn wr_temperature_law_carried(c: &WheelRailCase) -> bool {
         && wr_heat_carried(c)
 }
 
+/// A roller rig as the wheel–rail scene carries it: steady rolling (T = 3) with VPITCH given
+/// (F = 0), the planar contact locus (D = 2), the rail placed absolutely, not a slices file.
+fn roller_supported(c: &WheelRailCase) -> bool {
+    let d = c.digits;
+    let planar = c.state.discretisation.as_ref().is_some_and(|disc| disc.method == 2);
+    let absolute = c.state.track.is_some_and(|t| matches!(t.placement, RailPlacement::Absolute { .. }));
+    let slices = c.state.rail_profile.as_ref().is_some_and(|p| p.format() == ProfileFormat::Slices);
+    d.t == 3 && d.f == 0 && planar && absolute && !slices
+}
+
 fn wr_digit(name: &str, v: u8, used: bool) -> Option<String> {
     used.then(|| format!("{name} = {v}"))
 }
@@ -613,9 +625,22 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         feature: WheelRailFeature::RollerRig,
         name: "a wheel on a roller rig",
         control: "C",
+        supported: true,
+        reason: "imported as [rail] roller_radius_mm = NOMRAD_R, roller_vpitch_rad_s = VPITCH_ROL, the cases' vs_mm_s 0: the rail profile revolved about the roller's axis (docs/wheelrail.md, \"A wheel on a roller rig\")",
+        used: |c| wr_digit("C", c.digits.c, c.digits.roller_rig() && roller_supported(c)),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::RollerRig,
+        name: "a wheel on a roller rig beyond steady rolling on the planar contact locus",
+        control: "C, T, F, D, GAUGHT",
         supported: false,
-        reason: "supported: C = 0, 1 (the left or right wheel of a wheelset on a track)",
-        used: |c| wr_digit("C", c.digits.c, c.digits.roller_rig()),
+        reason: "supported on a roller rig: steady rolling (T = 3) with VPITCH given (F = 0), the planar contact locus (D = 2), the rail placed absolutely (GAUGHT ≤ 0) by a profile file",
+        used: |c| {
+            (c.digits.roller_rig() && !roller_supported(c)).then(|| {
+                let d = c.state.discretisation.as_ref().map_or(0, |d| d.method);
+                format!("C = {}, T = {}, F = {}, D = {d}", c.digits.c, c.digits.t, c.digits.f)
+            })
+        },
     },
     WheelRailRow {
         feature: WheelRailFeature::TransientContact,

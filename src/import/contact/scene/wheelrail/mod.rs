@@ -28,7 +28,7 @@ use crate::scene::wheelrail::{
     CaseRow, LongitudinalSpec, MotionSpec, MuBy, MuVariation, PlacementSpec, ProfileSpec, RailDeviationSpec, SideSpec,
     VerticalSpec, WheelDeviationSpec, WheelRailScene,
 };
-use crate::scene::wheelrail_profile::PROFILE_DEFAULTS;
+use crate::scene::wheelrail_profile::{RollerSpec, PROFILE_DEFAULTS};
 use crate::scene::{MaterialSpec, Origin};
 use crate::wheelrail::profile::slices::check_slices_file;
 use crate::wheelrail::profile::ProfileKind;
@@ -342,8 +342,9 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         },
         cant_rad: match track.fourth {
             TrackFourth::CantRad(r) => r,
-            TrackFourth::RollerRadiusMm(_) => return Err("a roller rig (C = 4, 5)".into()),
+            TrackFourth::RollerRadiusMm(_) => 0.0,
         },
+        roller: roller_of(c)?,
         rail_deviation: {
             let d = s.rail_deviation;
             RailDeviationSpec {
@@ -402,6 +403,19 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         origin: None,
         dir: PathBuf::new(),
     })
+}
+
+/// The roller of a roller rig's case (C = 4, 5): NOMRAD_R and VPITCH_ROL; `None` on a track.
+fn roller_of(c: &WheelRailCase) -> Result<Option<RollerSpec>, String> {
+    let s = &c.state;
+    let (Some(track), Some(v)) = (s.track, s.velocity) else { return Ok(None) };
+    match (track.fourth, v.forward) {
+        (TrackFourth::RollerRadiusMm(radius_mm), Forward::RollerPitchRadS(vpitch_rad_s)) => {
+            Ok(Some(RollerSpec { radius_mm, vpitch_rad_s }))
+        }
+        (TrackFourth::CantRad(_), Forward::VsMmS(_)) => Ok(None),
+        _ => Err("a track's and a roller rig's inputs mixed".into()),
+    }
 }
 
 /// The model of the case's B, M and T digits: KPEC (B = 5) or ANALYN (B = 6) with FASTSIM or
@@ -492,8 +506,16 @@ fn snap(v: f64, default: f64) -> f64 {
 fn row(c: &WheelRailCase) -> Result<(VerticalSpec, LongitudinalSpec, CaseRow), String> {
     let p = c.state.position.ok_or("the wheelset position never given")?;
     let v = c.state.velocity.ok_or("the wheelset velocity never given")?;
-    let Along::SMm(_) = p.along else { return Err("a roller rig (C = 4, 5)".into()) };
-    let Forward::VsMmS(vs) = v.forward else { return Err("a roller rig (C = 4, 5)".into()) };
+    if let Along::XMm(x) = p.along {
+        if x != 0.0 {
+            return Err(format!("X_WS = {x} on a roller rig (the wheelset off the roller's top)"));
+        }
+    }
+    // On a roller rig the wheelset does not move forward (CONTACT's VS = 0): the roller turns.
+    let vs = match v.forward {
+        Forward::VsMmS(vs) => vs,
+        Forward::RollerPitchRadS(_) => 0.0,
+    };
     let (longitudinal, sixth) = match v.sixth {
         PitchInput::VpitchRadS(vpitch) => (LongitudinalSpec::Velocity, vpitch),
         PitchInput::FxWsN(fx) => (LongitudinalSpec::Force, fx),

@@ -100,7 +100,13 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
             rail.push(("z_mm", Value::Float(z_mm)));
         }
     }
-    rail.push(("cant_rad", Value::Float(s.cant_rad)));
+    match s.roller {
+        Some(r) => {
+            rail.push(("roller_radius_mm", Value::Float(r.radius_mm)));
+            rail.push(("roller_vpitch_rad_s", Value::Float(r.vpitch_rad_s)));
+        }
+        None => rail.push(("cant_rad", Value::Float(s.cant_rad))),
+    }
     rail.extend(rail_deviation(s));
     let mut wheel = profile(&s.wheel, &s.name)?;
     wheel.push(("flange_back_distance_mm", Value::Float(s.flange_back_distance_mm)));
