@@ -7,7 +7,6 @@
 //! the roller's surface meshed for the undeformed distance (`wr_ud_planar`, `grid_revolve_profile`)
 //! and its material's velocity in the creepages (`wr_creep_cref`).
 
-use super::locus::LocusSpline;
 use super::patch::{PatchFrame, PatchGrid};
 use super::rail::PlacedRail;
 use super::varrail::Loci;
@@ -100,16 +99,7 @@ pub fn loci(roller: &Roller, rail: &PlacedRail, wheel: &PlacedWheel) -> Option<L
     }
     let wheel_pts: Vec<Point3<f64>> = nodes.iter().enumerate().map(|(i, n)| at(x[i], n.y_mm, z_lc[i])).collect();
     let s_wheel: Vec<f64> = nodes.iter().map(|n| n.s_mm).collect();
-    let mut s_rail = Vec::with_capacity(rail_pts.len());
-    let mut s = 0.0;
-    for (k, p) in rail_pts.iter().enumerate() {
-        if k > 0 {
-            let q = &rail_pts[k - 1];
-            s += (p.y - q.y).hypot(p.z - q.z);
-        }
-        s_rail.push(s);
-    }
-    Some(Loci { wheel: LocusSpline::through(s_wheel, &wheel_pts), rail: LocusSpline::through(s_rail, &rail_pts) })
+    Some(Loci::through(s_wheel, &wheel_pts, &rail_pts))
 }
 
 /// The roller's n (distance along the plane's normal from the plane) at every element centre, on

@@ -136,6 +136,23 @@ pub struct Loci {
     pub rail: LocusSpline,
 }
 
+impl Loci {
+    /// The loci through the wheel's points (at the wheel profile's arc lengths `s_wheel`) and the
+    /// rail's points (parametrised by their own chord length in the track's (y, z)).
+    pub fn through(s_wheel: Vec<f64>, wheel_pts: &[Point3<f64>], rail_pts: &[Point3<f64>]) -> Loci {
+        let mut s_rail = Vec::with_capacity(rail_pts.len());
+        let mut s = 0.0;
+        for (k, p) in rail_pts.iter().enumerate() {
+            if k > 0 {
+                let q = &rail_pts[k - 1];
+                s += (p.y - q.y).hypot(p.z - q.z);
+            }
+            s_rail.push(s);
+        }
+        Loci { wheel: LocusSpline::through(s_wheel, wheel_pts), rail: LocusSpline::through(s_rail, rail_pts) }
+    }
+}
+
 /// One wheel profile point's state in the iteration: x on the wheel, its z (CONTACT's `prw_lc%z`,
 /// from the x before the last step), the bracket of x with the rail's dz/dx at its ends.
 #[derive(Debug, Clone, Copy)]
@@ -211,16 +228,7 @@ pub fn loci(rail: &RailSlices, frame: RailFrame, wheel: &PlacedWheel) -> Option<
     }
     let wheel_pts: Vec<Point3<f64>> = pts.iter().enumerate().map(|(i, p)| to_track(i, p)).collect();
     let s_wheel: Vec<f64> = nodes.iter().map(|n| n.s_mm).collect();
-    let mut s_rail = Vec::with_capacity(rail_pts.len());
-    let mut s = 0.0;
-    for (k, p) in rail_pts.iter().enumerate() {
-        if k > 0 {
-            let q = &rail_pts[k - 1];
-            s += (p.y - q.y).hypot(p.z - q.z);
-        }
-        s_rail.push(s);
-    }
-    Some(Loci { wheel: LocusSpline::through(s_wheel, &wheel_pts), rail: LocusSpline::through(s_rail, &rail_pts) })
+    Some(Loci::through(s_wheel, &wheel_pts, &rail_pts))
 }
 
 /// One point's step of the iteration (`locus_iterate_varprof`'s loop body): its z from the
