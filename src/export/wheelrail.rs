@@ -23,7 +23,7 @@
 use crate::error::InputError;
 use crate::safety::relative::relative;
 use crate::scene::wheelrail::{
-    CaseRow, LongitudinalSpec, MotionSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec,
+    Approach, CaseRow, LongitudinalSpec, MotionSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec,
     WheelDeviationSpec, WheelRailScene,
 };
 use crate::scene::{ContactSolverOptions, MaterialSpec, VeldepSolves};
@@ -174,9 +174,10 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
     let law = if first && temperature_law(s) { "6" } else { &ldcmze[..1] };
     // The grid search (`contact_search = "grid"`) is D = 5, the conformal approach D = 4, read by
     // the first case, kept after it.
-    let d = match (first, s.grid_search, s.conformal) {
+    let d = match (first, s.grid_search, s.approach) {
         (true, true, _) => "5",
-        (true, false, true) => "4",
+        (true, false, Approach::Conformal) => "4",
+        (true, false, Approach::PlanarSurfaceSlip) => "3",
         _ => &ldcmze[1..2],
     };
     let ldcmze = format!("{law}{d}{}", &ldcmze[2..]);

@@ -17,12 +17,14 @@ use super::wheelrail_exact::{self, ExactCache};
 use crate::error::{Error, InputError};
 use crate::history::sample_loop::{run_with_fields, Field};
 use crate::physics::geometry::{Extent, GeometrySpec};
+use crate::physics::halfspace::blend::Blend;
 use crate::problem::Problem;
-use crate::scene::wheelrail::{moving_allowed, SHIFT_MODELS, TRANSIENT_ROLLING_MODELS};
+use crate::scene::wheelrail::{moving_allowed, Approach, SHIFT_MODELS, TRANSIENT_ROLLING_MODELS};
 use crate::scene::wheelrail_tangential::Tangential;
 use crate::scene::Scene;
 use crate::solvers;
 use crate::solvers::brush::Tractions;
+use crate::solvers::contact::mirror;
 use crate::wheelrail::friction::Friction;
 use crate::wheelrail::shift::Previous;
 use crate::wheelrail::vertical::FORCE_TOL;
@@ -154,7 +156,7 @@ pub fn solve_step(
     histories: &[(String, Previous)],
 ) -> Result<CaseResult, Error> {
     refuse_in_shifts(case, models)?;
-    refuse_in_conformal(case, models, mu)?;
+    refuse_on_surfaces(case, models, mu)?;
     let own = |m: &str| solvers::builtin(m).and_then(|d| d.own_normal);
     let mut exact_cache = ExactCache::default();
     let mut shared = None;
@@ -277,15 +279,18 @@ fn refuse_in_shifts(case: &WheelRailCase, models: &[String]) -> Result<(), Error
     Ok(())
 }
 
-/// The conformal approach (CONTACT's D = 4) is solved by the exact theory alone, in steady
-/// rolling or shifts with friction, for bodies of one material without surface temperatures, on the
-/// contact locus of prismatic profiles, with the solver's default options.
-fn refuse_in_conformal(case: &WheelRailCase, models: &[String], mu: &Friction) -> Result<(), Error> {
-    if !case.conformal {
-        return Ok(());
-    }
+/// The rigid slip on the actual surfaces (CONTACT's D = 3 and the conformal approach, D = 4) is
+/// solved by the exact theory alone (the extra rigid slip per element), in steady rolling or
+/// shifts with friction, for bodies of one material without surface temperatures, on the contact
+/// locus of prismatic profiles, with the solver's default options.
+fn refuse_on_surfaces(case: &WheelRailCase, models: &[String], mu: &Friction) -> Result<(), Error> {
+    let name = match case.approach {
+        Approach::Planar => return Ok(()),
+        Approach::PlanarSurfaceSlip => "planar_surface_slip",
+        Approach::Conformal => "conformal",
+    };
     if let Some(m) = models.iter().find(|m| m.as_str() != EXACT) {
-        let allowed = "the exact theory alone (solvers = [\"contact\"]) with the conformal approach";
+        let allowed = format!("the exact theory alone (solvers = [\"contact\"]) with approach = {name:?}");
         return Err(InputError::new("solvers", format!("{m:?}"), allowed).into());
     }
     let unsupported = [
@@ -308,8 +313,8 @@ fn refuse_in_conformal(case: &WheelRailCase, models: &[String], mu: &Friction) -
     match unsupported.iter().find(|(used, _, _)| *used) {
         Some((_, field, allowed)) => Err(InputError::new(
             *field,
-            "with approach = \"conformal\"",
-            format!("{allowed} with the conformal approach"),
+            format!("with approach = {name:?}"),
+            format!("{allowed} with approach = {name:?}"),
         )
         .into()),
         None => Ok(()),
@@ -420,6 +425,25 @@ fn exact_forces(
         .collect()
 }
 
+/// The sign of x in the models' frame of patch `p`: a patch rolling towards −x (CONTACT's CHI =
+/// 180°) is given to the models mirrored about x = 0 ([`mirror`]: CKSI, CPHI and the x parts of
+/// the tractions negated, each row of its fields reversed), as module 3 solves `chi_deg = 180`.
+fn sign(p: &NormalPatch) -> f64 {
+    if p.creepages.reversed {
+        -1.0
+    } else {
+        1.0
+    }
+}
+
+/// A field of patch `p` (CONTACT's element order) in the models' frame, and back ([`sign`]).
+fn in_models_frame<T: Copy>(p: &NormalPatch, v: &[T]) -> Vec<T> {
+    match p.creepages.reversed {
+        true => mirror::field(p.geometry.grid.mx, v),
+        false => v.to_vec(),
+    }
+}
+
 /// The module-3 scene text of a patch with `contact` (its geometry's keys) and `grid` tables.
 fn scene_text(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase, contact: &str, grid: &str) -> String {
     let c = &p.creepages;
@@ -434,9 +458,9 @@ fn scene_text(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase, conta
         g = case.material.g_mpa,
         nu = case.material.poisson,
         v = c.veloc_mm_s,
-        cx = c.cksi,
+        cx = sign(p) * c.cksi,
         cy = c.ceta,
-        cs = c.cphi_per_mm,
+        cs = sign(p) * c.cphi_per_mm,
     )
 }
 
@@ -454,10 +478,12 @@ fn field_scene(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase, exac
         scene.friction = crate::physics::FrictionLaw::Temperature(law);
     }
     scene.contact_solver = case.tangential.contact_solver;
-    let (h_mm, blend) = (p.geometry.h_mm.clone(), p.geometry.blend.clone());
-    scene.geometry = GeometrySpec::Field { h_mm, blend, pn_mpa: exact.then(|| p.pn_mpa.clone()) };
+    let h_mm = in_models_frame(p, &p.geometry.h_mm);
+    let blend = p.geometry.blend.clone().map(|b| Blend { part: in_models_frame(p, &b.part), ..b });
+    scene.geometry = GeometrySpec::Field { h_mm, blend, pn_mpa: exact.then(|| in_models_frame(p, &p.pn_mpa)) };
+    let x_mm = [g.x0_mm, g.x0_mm + g.dx_mm * g.mx as f64];
     scene.extent = Extent::Edges {
-        x_mm: [g.x0_mm, g.x0_mm + g.dx_mm * g.mx as f64],
+        x_mm: if p.creepages.reversed { [-x_mm[1], -x_mm[0]] } else { x_mm },
         y_mm: [g.s0_mm, g.s0_mm + g.ds_mm * g.ms as f64],
     };
     Ok(scene)
@@ -512,8 +538,11 @@ pub(super) fn patch_solve(p: &NormalPatch, model: &str, mu: f64, case: &WheelRai
         n_adhesion: count("n_adhesion"),
         n_slip: count("n_slip"),
         temp_max_c: (!temperatures.is_empty()).then(|| temperatures.iter().copied().fold(f64::MIN, f64::max)),
-        slip: fields.last().and_then(|f| slip_on_patch(p, &problem, f, count("n_slip"))),
-        ..PatchForces::on_rail(p, case, row.fx_over_fn, row.fy_over_fn, mz_nmm)
+        slip: fields
+            .last()
+            .and_then(|f| slip_on_patch(p, &problem, f, count("n_slip")))
+            .map(|s| in_models_frame(p, &s)),
+        ..PatchForces::on_rail(p, case, sign(p) * row.fx_over_fn, row.fy_over_fn, sign(p) * mz_nmm)
     })
 }
 

@@ -27,6 +27,15 @@ pub fn patch_forces(
     case: &WheelRailCase,
     history: Option<&Previous>,
 ) -> Result<PatchForces, Error> {
+    if p.creepages.reversed {
+        let allowed = "a patch rolling along +x (CHI = 0): the models that carry their history do not roll it mirrored";
+        return Err(InputError::new(
+            "cases",
+            format!("{model} on a patch rolling towards -x (CHI = 180 deg)"),
+            allowed,
+        )
+        .into());
+    }
     let mut problem = patch_problem(p, model, mu, case)?;
     let (px0, py0) = previous_tractions(p, &WheelRailCase { previous: history, ..*case });
     let start =
@@ -187,6 +196,7 @@ mod tests {
             ceta: c.ceta / dq_mm,
             cphi_per_mm: c.cphi_per_mm / dq_mm,
             veloc_mm_s: 1.0,
+            reversed: false,
         };
         // Every patch solve starts from rest on the same grid: the brush's steady march.
         let steady = |model: &str| patch_solve(&p, model, s.mu, &case).unwrap();

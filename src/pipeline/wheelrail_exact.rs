@@ -15,7 +15,7 @@ use crate::physics::halfspace::influence::Kernel;
 use crate::physics::{moment_sum, Grid, Material};
 use crate::scene::ContactSolverOptions;
 use crate::solvers::contact::tangential::{StepResult, TangentialParams, TangentialSolver};
-use crate::solvers::contact::ContactError;
+use crate::solvers::contact::{mirror, ContactError};
 use crate::solvers::stepper::ElementState;
 use crate::wheelrail::{shift, Motion, NormalPatch, WheelRailCase};
 
@@ -118,23 +118,31 @@ pub fn patch_forces(
         _ => None,
     };
     let grid = patch_grid(p);
-    let pn = field_in_grid_order(&grid, &p.pn_mpa);
-    let (x, y) = grid.centres();
     let c = &p.creepages;
+    // Rolling towards −x: the solver takes the problem mirrored about x = 0.
+    let solver_frame = SolverFrame { mx: grid.mx, mirrored: c.reversed };
+    let pn = solver_frame.field(field_in_grid_order(&grid, &p.pn_mpa));
+    let (x, y) = grid.centres();
+    let x = solver_frame.field_x(x);
     let options = ContactSolverOptions::default();
     let dq_mm = if shift { 1.0 } else { rolling_dq_mm.unwrap_or(grid.dx_mm) };
     let bound = |pn_contact: &[f64]| match &mu {
-        Mu::Rows(rows) => Some(field_in_grid_order(&grid, &per_row(rows, pn_contact, p.geometry.grid.mx))),
+        Mu::Rows(rows) => {
+            Some(solver_frame.field(field_in_grid_order(&grid, &per_row(rows, pn_contact, p.geometry.grid.mx))))
+        }
         Mu::Patch(_) => None,
     };
     let mu_solve = match mu {
         Mu::Patch(mu) => mu,
         Mu::Rows(_) => 1.0,
     };
-    let mut params = TangentialParams::new(mu_solve, c.cksi, c.ceta, c.cphi_per_mm, dq_mm);
+    let sign = if c.reversed { -1.0 } else { 1.0 };
+    let mut params = TangentialParams::new(mu_solve, sign * c.cksi, c.ceta, sign * c.cphi_per_mm, dq_mm);
     params.tol = options.tolerance;
     params.max_iter = options.max_iterations;
-    let extra = p.extra_slip.as_ref().map(|(wx, wy)| (field_in_grid_order(&grid, wx), field_in_grid_order(&grid, wy)));
+    let extra = p.extra_slip.as_ref().map(|(wx, wy)| {
+        (solver_frame.field_x(field_in_grid_order(&grid, wx)), solver_frame.field(field_in_grid_order(&grid, wy)))
+    });
     let extra = extra.as_ref().map(|(wx, wy)| (wx.as_slice(), wy.as_slice()));
     let r: StepResult = if shift || rolling_dq_mm.is_some() {
         let solver = cache.step_solver(&grid, &case.material, (&x, &y), rolling_dq_mm)?;
@@ -144,7 +152,10 @@ pub fn patch_forces(
             solver.set_bound(&g)?;
         }
         let (px0, py0) = previous_tractions(p, case);
-        let (px0, py0) = (field_in_grid_order(&grid, &px0), field_in_grid_order(&grid, &py0));
+        let (px0, py0) = (
+            solver_frame.field_x(field_in_grid_order(&grid, &px0)),
+            solver_frame.field(field_in_grid_order(&grid, &py0)),
+        );
         solver.transient_step(&params, &px0, &py0, None)?
     } else {
         let (_, solver, last) = cache.get(&grid, &case.material, (&x, &y))?;
@@ -158,6 +169,7 @@ pub fn patch_forces(
         *last = Some((r.px.clone(), r.py.clone()));
         r
     };
+    let r = solver_frame.back(r);
     // Kept for the case that continues this one: in a shift, a transient step, or the steady case
     // that starts a sequence (its `previous` empty).
     let kept = shift || rolling_dq_mm.is_some() || case.previous.is_some();
@@ -186,6 +198,43 @@ pub fn patch_forces(
         ..PatchForces::on_rail(p, case, fx_over_fn, fy_over_fn, mz_nmm)
     };
     Ok(if case.motion.super_grid_s_mm().is_some() { about_anchor(forces, p, case) } else { forces })
+}
+
+/// The tangential solver's frame of a patch: its own, or rolling towards −x (CONTACT's CHI =
+/// 180°) the problem mirrored about x = 0 ([`mirror`]: x components negated, rows reversed).
+struct SolverFrame {
+    mx: usize,
+    mirrored: bool,
+}
+
+impl SolverFrame {
+    fn field<T: Copy>(&self, v: Vec<T>) -> Vec<T> {
+        if self.mirrored {
+            mirror::field(self.mx, &v)
+        } else {
+            v
+        }
+    }
+
+    fn field_x(&self, v: Vec<f64>) -> Vec<f64> {
+        if self.mirrored {
+            mirror::field_x(self.mx, &v)
+        } else {
+            v
+        }
+    }
+
+    /// The solution back in the patch's frame (the mirror undoes itself).
+    fn back(&self, r: StepResult) -> StepResult {
+        StepResult {
+            px: self.field_x(r.px),
+            py: self.field(r.py),
+            sx: self.field_x(r.sx),
+            sy: self.field(r.sy),
+            state: self.field(r.state),
+            ..r
+        }
+    }
 }
 
 /// Coulomb's μ of a patch: one value, or one per grid row (a conformal patch with V = 1).
@@ -281,6 +330,41 @@ mod tests {
                 assert!(close(got.mn_nmm, want.mn_nmm, p.fn_n), "case {number}: MN {} vs {}", got.mn_nmm, want.mn_nmm);
                 assert_eq!((got.fn_n, got.n_adhesion, got.n_slip), (want.fn_n, want.n_adhesion, want.n_slip));
             }
+        }
+    }
+
+    /// A patch rolling towards −x (CHI = 180°): the direct solve (its problem mirrored in the
+    /// solver, [`SolverFrame`]) and the models' patch scene (mirrored in the scene,
+    /// `pipeline::wheelrail::in_models_frame`) give the same forces and slip; and rolling the
+    /// other way changes them (the patch is not symmetric in x: right case 14's flange contact).
+    #[test]
+    fn a_patch_rolling_backwards_is_solved_mirrored_on_both_paths() {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/wheelrail/mbench_a22_right.toml");
+        let text = std::fs::read_to_string(&path).unwrap();
+        let scene = WheelRailScene::from_toml(&text, path.parent().unwrap()).unwrap();
+        let (rail, wheel, _) = prepare(&scene).unwrap();
+        let material = material_of_spec(&scene.material).unwrap();
+        let row = scene.cases.iter().find(|r| r.contact_case == 14).unwrap();
+        let case = case_of(&scene, row, &rail, &wheel, material);
+        let mut normal = crate::wheelrail::normal_contact(&case, None).unwrap();
+        let friction = Friction { mu: scene.mu, variation: None, frictionless: false };
+        let forward = through_scenes(&normal, EXACT, &friction, &case).unwrap();
+        for p in &mut normal.patches {
+            p.creepages.reversed = true;
+        }
+        let scenes = through_scenes(&normal, EXACT, &friction, &case).unwrap();
+        let mut cache = ExactCache::default();
+        for ((p, want), ahead) in normal.patches.iter().zip(&scenes).zip(&forward) {
+            let got = patch_forces(p, Mu::Patch(scene.mu), &case, &mut cache).unwrap();
+            let close = |a: f64, b: f64| (a - b).abs() <= 1e-7 * p.fn_n;
+            assert!(close(got.fx_n, want.fx_n) && close(got.fs_n, want.fs_n) && close(got.mn_nmm, want.mn_nmm));
+            assert_eq!((got.n_adhesion, got.n_slip, &got.slip), (want.n_adhesion, want.n_slip, &want.slip));
+            let moved = (got.fx_n - ahead.fx_n).abs().max((got.mn_nmm - ahead.mn_nmm).abs());
+            println!(
+                "FN {:.1} N: FX {:.3} / {:.3} N, MN {:.3} / {:.3} N mm",
+                p.fn_n, ahead.fx_n, got.fx_n, ahead.mn_nmm, got.mn_nmm
+            );
+            assert!(moved > 1e-3 * p.fn_n, "rolling backwards changed nothing: {moved}");
         }
     }
 }

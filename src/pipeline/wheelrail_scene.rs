@@ -271,7 +271,7 @@ pub fn case_of<'a>(
         },
         wheel_surface: if s.wheel_mesh { WheelSurface::ContactMesh } else { WheelSurface::Exact },
         grid_search: s.grid_search,
-        conformal: s.conformal,
+        approach: s.approach,
         material,
         heat: s.material.heat,
         tangential: s.tangential,

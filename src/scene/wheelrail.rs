@@ -165,6 +165,19 @@ fn interpolate(a: &[f64], v: &[f64], x: f64) -> f64 {
     v[k - 1] + t * (v[k] - v[k - 1])
 }
 
+/// The contact approach (`[wheelrail] approach`, CONTACT's D).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Approach {
+    /// Each patch on its tangent plane, its creepages those of its reference point (D = 2).
+    #[default]
+    Planar,
+    /// The tangent plane's grid with the rigid slip of the actual surfaces at every element
+    /// (D = 3, `wr_rigslip_wrsurf`).
+    PlanarSurfaceSlip,
+    /// Each patch on a curved reference surface midway between the rail and the wheel (D = 4).
+    Conformal,
+}
+
 /// How the wheel moves in every case (`[wheelrail] motion`).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum MotionSpec {
@@ -270,8 +283,8 @@ pub struct WheelRailScene {
     /// The brute-force grid search instead of the contact locus (`contact_search = "grid"`,
     /// CONTACT's D = 5).
     pub grid_search: bool,
-    /// The conformal approach (`approach = "conformal"`, CONTACT's D = 4) instead of the planar one.
-    pub conformal: bool,
+    /// The contact approach (`approach`, CONTACT's D = 2, 3 or 4).
+    pub approach: Approach,
     /// Steady rolling, or a shift from rest (`motion`, `s_mm`; CONTACT's T = 3 or 1 with P = 2).
     pub motion: MotionSpec,
     /// S_WS [mm] (`[wheelrail] s_mm`, 0 if absent): where the wheelset stands along the track (on a
@@ -539,7 +552,7 @@ impl WheelRailScene {
             d_turn_mm,
             wheel_mesh,
             grid_search,
-            conformal,
+            approach,
             frictionless,
             motion,
             s_ws_mm,
@@ -589,7 +602,7 @@ impl WheelRailScene {
         let given_s = doc.get("wheelrail").and_then(|w| w.get("s_mm")).is_some();
         super::wheelrail_cases::check_positions(&cases, motion, (given_s, rail_is_slices(doc)), mu_variation.as_ref())?;
         match rail.roller {
-            Some(_) => check_roller(&cases, (motion, longitudinal), (grid_search, conformal), rail_is_slices(doc))?,
+            Some(_) => check_roller(&cases, (motion, longitudinal), (grid_search, approach), rail_is_slices(doc))?,
             None => check_speeds(&cases)?,
         }
         let origin = super::origin::read(&mut top)?;
@@ -623,7 +636,7 @@ impl WheelRailScene {
             d_turn_mm,
             wheel_mesh,
             grid_search,
-            conformal,
+            approach,
             motion,
             s_ws_mm,
             vertical,
@@ -656,7 +669,7 @@ fn check_speeds(cases: &[CaseRow]) -> Result<(), InputError> {
 fn check_roller(
     cases: &[CaseRow],
     (motion, longitudinal): (MotionSpec, LongitudinalSpec),
-    (grid_search, conformal): (bool, bool),
+    (grid_search, approach): (bool, Approach),
     slices: bool,
 ) -> Result<(), InputError> {
     let (field, value, allowed) = if motion != MotionSpec::Rolling {
@@ -671,11 +684,11 @@ fn check_roller(
             "\"force\"".into(),
             "\"velocity\" on a roller rig (FX_WS prescribed on a roller is not supported)",
         )
-    } else if grid_search || conformal {
+    } else if grid_search || approach == Approach::Conformal {
         (
             "wheelrail.approach",
             "grid search or conformal".into(),
-            "the planar approach on the contact locus on a roller rig",
+            "the planar approach (\"planar\" or \"planar_surface_slip\") on the contact locus on a roller rig",
         )
     } else if slices {
         (

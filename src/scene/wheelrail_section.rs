@@ -4,7 +4,7 @@
 
 use super::keys::{key, Absent, Allowed, Keys};
 use super::reader::{Range, Section};
-use super::wheelrail::{MotionSpec, MuBy, MuVariation, SideSpec};
+use super::wheelrail::{Approach, MotionSpec, MuBy, MuVariation, SideSpec};
 use super::wheelrail_cases::LENGTH;
 use crate::error::InputError;
 
@@ -169,9 +169,9 @@ pub const KEYS: Keys = Keys {
         key(
             "approach",
             "–",
-            Allowed::Choice(&["planar", "conformal"], ""),
+            Allowed::Choice(&["planar", "planar_surface_slip", "conformal"], ""),
             Absent::Choice("planar"),
-            r#"the contact approach: planar (CONTACT's D = 2: each patch on its tangent plane) or conformal (D = 4, docs/wheelrail.md "The conformal approach": each patch on a curved reference surface midway between the rail and the wheel, rows `ds_mm` apart in its arc length, the gap turned by each row's inclination, the rigid slip of the actual surfaces, the tractions turned back to the tangent plane; steady rolling or shifts (`motion = "shift_sequence"`), one material, the exact theory alone, one region per patch, profile files): `approach = "conformal"`"#,
+            r#"the contact approach: planar (CONTACT's D = 2: each patch on its tangent plane, its creepages those of its reference point), planar with the rigid slip of the actual surfaces (`"planar_surface_slip"`, D = 3, docs/wheelrail.md "Rigid slip on the actual surfaces": the tangent plane's grid and gap, the rail's and the wheel's material velocities at every element's points of both surfaces, the printed creepages their least-squares part, the rest an extra rigid slip per element; steady rolling of one material with the exact theory) or conformal (D = 4, docs/wheelrail.md "The conformal approach": each patch on a curved reference surface midway between the rail and the wheel, rows `ds_mm` apart in its arc length, the gap turned by each row's inclination, the rigid slip of the actual surfaces, the tractions turned back to the tangent plane; steady rolling or shifts (`motion = "shift_sequence"`), one material, the exact theory alone, one region per patch, profile files): `approach = "conformal"`"#,
         ),
         key(
             "contact_search",
@@ -197,7 +197,7 @@ pub struct WheelRailSection {
     pub wheel_mesh: bool,
     /// The brute-force grid search (`contact_search = "grid"`, CONTACT's D = 5).
     pub grid_search: bool,
-    pub conformal: bool,
+    pub approach: Approach,
     pub frictionless: bool,
     pub motion: MotionSpec,
     /// S_WS (`s_mm`, 0 if absent): the wheelset's position along the track.
@@ -247,7 +247,11 @@ pub fn read(w: Section, varying_rail: bool) -> Result<WheelRailSection, InputErr
     let d_turn_mm = w.opt_num("d_turn_mm")?.unwrap_or(2.0 * d_sep_mm - d_comb_mm);
     let wheel_mesh = w.pick_or_default("wheel_surface")? == "contact_mesh";
     let grid_search = w.pick_or_default("contact_search")? == "grid";
-    let conformal = w.pick_or_default("approach")? == "conformal";
+    let approach = match w.pick_or_default("approach")? {
+        "conformal" => Approach::Conformal,
+        "planar_surface_slip" => Approach::PlanarSurfaceSlip,
+        _ => Approach::Planar,
+    };
     let frictionless = w.opt_bool("frictionless")?.unwrap_or(false);
     w.finish()?;
     Ok(WheelRailSection {
@@ -262,7 +266,7 @@ pub fn read(w: Section, varying_rail: bool) -> Result<WheelRailSection, InputErr
         d_turn_mm,
         wheel_mesh,
         grid_search,
-        conformal,
+        approach,
         frictionless,
         motion,
         s_ws_mm,

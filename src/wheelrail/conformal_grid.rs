@@ -6,7 +6,7 @@
 //! tangent plane (sp), and multiplied by the cosine between the reference's normal and the row's.
 
 use super::conformal_reference::CurvedReference;
-use super::patch::{PatchFrame, PatchGrid, MISSED_MM};
+use super::patch::{PatchFrame, PatchGrid, Surfaces};
 use super::rail::PlacedRail;
 use super::wheel::PlacedWheel;
 use super::wheel_mesh::{self, WheelSurface};
@@ -38,21 +38,17 @@ pub struct ConformalPatch {
     pub reference: CurvedReference,
     /// Each row's lateral place in the tangent plane, sp [mm].
     pub sp_mm: Vec<f64>,
-    /// The rail's and the wheel's surfaces at each element's (x_i, sp_j): their distance along
-    /// the reference's normal n from the plane [mm] (CONTACT's element order; `None` off a surface).
-    pub rail_n_mm: Vec<Option<f64>>,
-    pub wheel_n_mm: Vec<Option<f64>>,
 }
 
-/// The surfaces of the conformal `grid` along the reference's normal n at (x_i, sp_j): the rail's,
-/// and the wheel's exact surface or CONTACT's mesh of it (`surface`).
+/// The conformal patch on `grid` and its surfaces along the reference's normal n at each element's
+/// (x_i, sp_j): the rail's, and the wheel's exact surface or CONTACT's mesh of it (`surface`).
 pub fn surfaces(
     frame: &PatchFrame,
     grid: &PatchGrid,
     reference: CurvedReference,
     (wheel, rail): (&PlacedWheel, &PlacedRail),
     surface: WheelSurface,
-) -> ConformalPatch {
+) -> (ConformalPatch, Surfaces) {
     let n = frame.n();
     let sp: Vec<f64> = (0..grid.ms).map(|j| reference.sp_mm(frame, j)).collect();
     debug_assert!(sp.windows(2).all(|w| w[0] < w[1]), "the rows' sp ascend");
@@ -63,32 +59,29 @@ pub fn surfaces(
         let cover = PatchGrid { ms, s0_mm: lo - 0.5 * grid.ds_mm, ..grid.clone() };
         wheel_mesh::wheel_n_mm(frame, &cover, wheel, &sp)
     });
-    let (mut rail_n_mm, mut wheel_n_mm) = (Vec::with_capacity(grid.len()), Vec::with_capacity(grid.len()));
+    let mut surfaces = Surfaces::with_capacity(grid.len());
     for (j, &s) in sp.iter().enumerate() {
         let row = frame.at(0.0, s);
         let t_r = rail.along([row.y, row.z], [n.y, n.z]);
         for i in 0..grid.mx {
-            rail_n_mm.push(t_r);
-            wheel_n_mm.push(match &meshed {
+            let t_w = match &meshed {
                 Some(m) => m[j * grid.mx + i],
                 None => wheel.along(&frame.at(grid.centre(i, j).0, s), &n),
-            });
+            };
+            surfaces.push(t_r, t_w);
         }
     }
-    ConformalPatch { reference, sp_mm: sp, rail_n_mm, wheel_n_mm }
+    (ConformalPatch { reference, sp_mm: sp }, surfaces)
 }
 
 /// The undeformed distance at every element of the conformal `grid` (CONTACT's element order):
 /// the planar gap between the surfaces along n, times row j's factor.
-pub fn undeformed_distance(frame: &PatchFrame, grid: &PatchGrid, c: &ConformalPatch) -> Vec<f64> {
+pub fn undeformed_distance(frame: &PatchFrame, grid: &PatchGrid, c: &ConformalPatch, s: &Surfaces) -> Vec<f64> {
     let mut h = Vec::with_capacity(grid.len());
     for j in 0..grid.ms {
         let factor = row_factor(frame, &c.reference, j);
         for k in j * grid.mx..(j + 1) * grid.mx {
-            h.push(match (c.rail_n_mm[k], c.wheel_n_mm[k]) {
-                (Some(r), Some(w)) => (r - w) * factor,
-                _ => MISSED_MM,
-            });
+            h.push(s.gap_mm(k, factor));
         }
     }
     h

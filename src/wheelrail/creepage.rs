@@ -12,13 +12,27 @@ use super::roller::Roller;
 use super::wheel::{PlacedWheel, Velocity};
 use nalgebra::{Point3, Vector3};
 
-/// CKSI, CETA [-], CPHI [1/mm] and the rolling speed VELOC [mm/s] of one patch.
+/// CKSI, CETA [-], CPHI [1/mm], the rolling speed VELOC [mm/s] and direction of one patch.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Creepages {
     pub cksi: f64,
     pub ceta: f64,
     pub cphi_per_mm: f64,
     pub veloc_mm_s: f64,
+    /// The contact rolls towards −x (CONTACT's CHI = 180°: the wheel moving backwards, or a
+    /// roller rig turning the other way); the tangential problem is then solved mirrored.
+    pub reversed: bool,
+}
+
+impl Creepages {
+    /// CONTACT's rolling direction CHI [rad]: 0 or π.
+    pub fn chi_rad(&self) -> f64 {
+        if self.reversed {
+            std::f64::consts::PI
+        } else {
+            0.0
+        }
+    }
 }
 
 /// The rail's motion (right-side frame): its profile origin (y, z) in the track [mm] and the
@@ -57,16 +71,21 @@ pub fn at_reference(
     let mut v_p = rail.at(&frame.origin);
     let mut spin = Vector3::new(rail.velocity[2], 0.0, 0.0) - wheel.angular_velocity(v);
     let pitch_x = wheel.pitch_velocity(&q, v).x;
-    let veloc_mm_s = match roller {
-        _ if shift => 1.0,
+    let (veloc_mm_s, reversed) = match roller {
+        _ if shift => (1.0, false),
         // On a roller rig the mean of the roller's and the wheel's speeds at the contact
-        // (`wr_creep_cref`: |v_P,x + v_Q,x| / 2).
+        // (`wr_creep_cref`: |v_P,x + v_Q,x| / 2), towards −x when the faster one moves along +x.
         Some(r) => {
             v_p += r.material_velocity(&frame.origin);
             spin += r.angular_velocity();
-            0.5 * (v_p.x + v_q.x).abs()
+            (0.5 * (v_p.x + v_q.x).abs(), backwards(v_p.x, v_q.x))
         }
-        None => 0.5 * ((v_q.x - v_p.x - pitch_x).abs() + pitch_x.abs()),
+        None => {
+            // The wheelset's forward speed against the pitch's part (`wr_creep_cref`: sign(VS) or
+            // −sign(ω) of the larger one).
+            let vs_est = v_q.x - v_p.x - pitch_x;
+            (0.5 * (vs_est.abs() + pitch_x.abs()), backwards(-vs_est, pitch_x))
+        }
     };
     let slip = v_p - v_q;
     Creepages {
@@ -74,5 +93,14 @@ pub fn at_reference(
         ceta: slip.dot(&frame.e_s()) / veloc_mm_s,
         cphi_per_mm: spin.dot(&n) / veloc_mm_s,
         veloc_mm_s,
+        reversed,
     }
+}
+
+/// Whether the contact rolls towards −x, from the two surfaces' speeds along x: forwards when
+/// the faster one moves along −x (`wr_creep_cref`, `wr_rigslip_wrsurf`: CHI = 0 if the larger
+/// |v| has v ≤ 0, else 180°).
+pub fn backwards(a_mm_s: f64, b_mm_s: f64) -> bool {
+    let faster = if a_mm_s.abs() >= b_mm_s.abs() { a_mm_s } else { b_mm_s };
+    faster > 0.0
 }

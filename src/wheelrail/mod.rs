@@ -12,7 +12,6 @@
 pub mod brute;
 pub mod conformal_grid;
 pub mod conformal_reference;
-pub mod conformal_slip;
 pub mod creepage;
 pub mod curve;
 pub mod friction;
@@ -26,6 +25,7 @@ pub mod roller;
 pub mod search;
 pub mod shift;
 pub mod side;
+pub mod surface_slip;
 #[cfg(test)]
 mod test_fixtures;
 pub mod varrail;
@@ -38,6 +38,7 @@ use crate::physics::halfspace::influence::Kernel;
 use crate::physics::halfspace::normal::{NormalParams, NormalSolver};
 use crate::physics::halfspace::ContactError;
 use crate::physics::{Grid, Material};
+use crate::scene::wheelrail::Approach;
 use curve::Curve;
 use patch::PatchGeometry;
 use rail::{PlacedRail, Track};
@@ -133,10 +134,10 @@ pub struct WheelRailCase<'a> {
     pub separation: patch::Separation,
     /// The wheel surface the undeformed distance is measured to.
     pub wheel_surface: wheel_mesh::WheelSurface,
-    /// The conformal approach (CONTACT's D = 4): each patch on a curved reference surface
-    /// ([`conformal_reference`], [`conformal_grid`]), its rigid slip on the actual surfaces
-    /// ([`conformal_slip`]); steady rolling of one material on prismatic profiles.
-    pub conformal: bool,
+    /// The contact approach: planar (CONTACT's D = 2), planar with the rigid slip on the actual
+    /// surfaces ([`surface_slip`], D = 3) or conformal (D = 4: each patch on a curved reference
+    /// surface, [`conformal_reference`], [`conformal_grid`], its rigid slip on the surfaces).
+    pub approach: Approach,
     /// The brute-force grid search ([`brute`], CONTACT's D = 5) instead of the contact locus; an
     /// out-of-round wheel takes it always.
     pub grid_search: bool,
@@ -173,7 +174,7 @@ pub struct NormalPatch {
     pub pen_mm: f64,
     pub creepages: creepage::Creepages,
     /// The conformal approach's extra rigid slip per element (wx, wy) [-], CONTACT's element order
-    /// ([`conformal_slip`]); `None` in planar contact.
+    /// ([`surface_slip`]); `None` with the creepages at the reference (D = 2).
     pub extra_slip: Option<(Vec<f64>, Vec<f64>)>,
 }
 
@@ -447,7 +448,7 @@ fn geometry_at(
             rail,
             (case.dx_mm, case.ds_mm),
             &case.separation,
-            (case.wheel_surface, case.motion, case.previous, case.conformal),
+            (case.wheel_surface, case.motion, case.previous, case.approach),
             (case.rail_slices.as_ref(), case.roller.as_ref()),
         )?;
         if geometry.grid.len() > MAX_ELEMENTS {
@@ -485,13 +486,11 @@ fn patches_at(
         };
         let pen_mm = -geometry.h_mm.iter().copied().fold(f64::INFINITY, f64::min);
         let shift = matches!(case.motion, Motion::Shift { .. });
+        let rail_motion = (&rail_motion, case.roller.as_ref());
         let (creepages, extra_slip) =
-            match conformal_slip::rigid_slip(&geometry, &wheel, (&velocity, &rail_motion), shift) {
+            match surface_slip::rigid_slip(&geometry, &wheel, (&velocity, rail_motion.0, rail_motion.1), shift) {
                 Some(slip) => (slip.creepages, Some(slip.extra)),
-                None => {
-                    let rail_motion = (&rail_motion, case.roller.as_ref());
-                    (creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm, rail_motion, shift), None)
-                }
+                None => (creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm, rail_motion, shift), None),
             };
         out.push(NormalPatch { geometry, fn_n, pn_mpa, pen_mm, creepages, extra_slip });
     }

@@ -17,6 +17,7 @@ use super::wheel::PlacedWheel;
 use super::wheel_mesh::{self, WheelSurface};
 use super::{conformal_grid, shift, Motion, WheelRailError};
 use crate::physics::halfspace::blend::Blend;
+use crate::scene::wheelrail::Approach;
 use nalgebra::{Point3, Vector3};
 
 /// Elements added on every side of the interpenetration's extent (CONTACT's guard band).
@@ -96,6 +97,43 @@ pub struct PatchGeometry {
     /// The conformal approach's curved reference (CONTACT's D = 4), one point per grid row: the
     /// grid's s is then its arc length; `None` in planar contact.
     pub curved: Option<ConformalPatch>,
+    /// The surfaces the rigid slip is taken on, element by element (CONTACT's D = 3 and 4:
+    /// `wr_rigslip_wrsurf`); `None` where the creepages are the reference's (D = 2).
+    pub surfaces: Option<Surfaces>,
+}
+
+/// The rail's and the wheel's surfaces at each element: their distance along the patch's normal
+/// n from the plane [mm] (CONTACT's element order, its `rail_srfc`, `whl_srfc`; `None` off a
+/// surface).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Surfaces {
+    pub rail_n_mm: Vec<Option<f64>>,
+    pub wheel_n_mm: Vec<Option<f64>>,
+}
+
+impl Surfaces {
+    pub(super) fn with_capacity(n: usize) -> Self {
+        Surfaces { rail_n_mm: Vec::with_capacity(n), wheel_n_mm: Vec::with_capacity(n) }
+    }
+
+    pub(super) fn push(&mut self, rail_mm: Option<f64>, wheel_mm: Option<f64>) {
+        self.rail_n_mm.push(rail_mm);
+        self.wheel_n_mm.push(wheel_mm);
+    }
+
+    /// The undeformed distance at element `k` along n, the rail's less the wheel's (scaled by
+    /// `factor`); [`MISSED_MM`] off either surface.
+    pub fn gap_mm(&self, k: usize, factor: f64) -> f64 {
+        match (self.rail_n_mm[k], self.wheel_n_mm[k]) {
+            (Some(r), Some(w)) => (r - w) * factor,
+            _ => MISSED_MM,
+        }
+    }
+
+    /// The undeformed distance at every element ([`Surfaces::gap_mm`]).
+    pub fn gaps_mm(&self) -> Vec<f64> {
+        (0..self.rail_n_mm.len()).map(|k| self.gap_mm(k, 1.0)).collect()
+    }
 }
 
 /// The weight of a mesh point: `∫ (pen − a x²)² dx` over the chord where the wheel, a circle
@@ -417,17 +455,18 @@ fn meshed_wheel(
     }
 }
 
-/// The undeformed distance at every element: along n, from the wheel's surface to the rail's.
-/// The wheel's surface is the exact one or CONTACT's mesh of it (`meshed`, [`meshed_wheel`]).
+/// The surfaces at every element along n (the undeformed distance their difference,
+/// [`Surfaces::gap_mm`]). The wheel's surface is the exact one or CONTACT's mesh of it (`meshed`,
+/// [`meshed_wheel`]).
 pub fn undeformed_distance(
     frame: &PatchFrame,
     grid: &PatchGrid,
     wheel: &PlacedWheel,
     rail: &PlacedRail,
     meshed: Option<Vec<Option<f64>>>,
-) -> Vec<f64> {
+) -> Surfaces {
     let n = frame.n();
-    let mut h = Vec::with_capacity(grid.len());
+    let mut h = Surfaces::with_capacity(grid.len());
     for j in 0..grid.ms {
         // The plane's point (x, s) lies at the same track (y, z) for every x: the rail (a prism
         // along x) is met at the same distance along n by the whole row.
@@ -442,10 +481,7 @@ pub fn undeformed_distance(
                     wheel.along(&frame.at(x, s), &n)
                 }
             };
-            h.push(match (t_r, t_w) {
-                (Some(r), Some(w)) => r - w,
-                _ => MISSED_MM,
-            });
+            h.push(t_r, t_w);
         }
     }
     h
@@ -489,9 +525,9 @@ fn undeformed_distance_varying(
     wheel: &PlacedWheel,
     columns: &[PlacedRail],
     meshed: Option<Vec<Option<f64>>>,
-) -> Vec<f64> {
+) -> Surfaces {
     let n = frame.n();
-    let mut h = Vec::with_capacity(grid.len());
+    let mut h = Surfaces::with_capacity(grid.len());
     for j in 0..grid.ms {
         for (i, rail) in columns.iter().enumerate() {
             let (x, s) = grid.centre(i, j);
@@ -501,10 +537,7 @@ fn undeformed_distance_varying(
                 Some(m) => m[j * grid.mx + i],
                 None => wheel.along(&p, &n),
             };
-            h.push(match (t_r, t_w) {
-                (Some(r), Some(w)) => r - w,
-                _ => MISSED_MM,
-            });
+            h.push(t_r, t_w);
         }
     }
     h
@@ -518,9 +551,9 @@ fn roller_distance(
     wheel: &PlacedWheel,
     on_roller: &[Option<f64>],
     meshed: Option<Vec<Option<f64>>>,
-) -> Vec<f64> {
+) -> Surfaces {
     let n = frame.n();
-    let mut h = Vec::with_capacity(grid.len());
+    let mut h = Surfaces::with_capacity(grid.len());
     for j in 0..grid.ms {
         for i in 0..grid.mx {
             let e = j * grid.mx + i;
@@ -531,10 +564,7 @@ fn roller_distance(
                     wheel.along(&frame.at(x, s), &n)
                 }
             };
-            h.push(match (on_roller[e], t_w) {
-                (Some(r), Some(w)) => r - w,
-                _ => MISSED_MM,
-            });
+            h.push(on_roller[e], t_w);
         }
     }
     h
@@ -567,7 +597,7 @@ pub fn build(
     rail: &PlacedRail,
     size_mm: (f64, f64),
     sep: &Separation,
-    (surface, motion, previous, conformal): (WheelSurface, Motion, Option<&shift::Previous>, bool),
+    (surface, motion, previous, approach): (WheelSurface, Motion, Option<&shift::Previous>, Approach),
     (slices, roller): (Option<&RailSlices>, Option<&Roller>),
 ) -> Result<PatchGeometry, WheelRailError> {
     // A variable rail: the cross-section at the reference's x (CONTACT's `complete_patches`).
@@ -583,7 +613,7 @@ pub fn build(
         frame.origin.z = Roller::z_at_x(r.axis_z_mm(rail), frame.origin.z, frame.origin.x);
     }
     let mut grid = grid(c, &frame, rail, size_mm, motion)?;
-    if conformal {
+    if approach == Approach::Conformal {
         return build_conformal(c, frame, grid, (wheel, rail), (surface, motion, previous));
     }
     let mut widened = false;
@@ -594,7 +624,7 @@ pub fn build(
         }
     }
     let meshed = meshed_wheel(&frame, &grid, wheel, surface, c.y_mm);
-    let mut h_mm = match (slices, roller) {
+    let surfaces = match (slices, roller) {
         (_, Some(r)) => {
             let on_roller = roller::rail_n_mm(r, rail, &frame, &grid).ok_or(WheelRailError::NoContact)?;
             roller_distance(&frame, &grid, wheel, &on_roller, meshed)
@@ -609,6 +639,7 @@ pub fn build(
         }
         (None, None) => undeformed_distance(&frame, &grid, wheel, rail, meshed),
     };
+    let mut h_mm = surfaces.gaps_mm();
     if widened {
         beyond_the_wheel_surface(c, &frame, &grid, &mut h_mm);
     }
@@ -632,6 +663,7 @@ pub fn build(
         extent: c.extent(),
         rail_s_mm,
         curved: None,
+        surfaces: (approach == Approach::PlanarSurfaceSlip).then_some(surfaces),
     })
 }
 
@@ -659,8 +691,8 @@ fn build_conformal(
         grid = shift::widened(&grid, &old, iterated);
         reference = reference.extended(grid.first_index[1], grid.ms);
     }
-    let patch = conformal_grid::surfaces(&frame, &grid, reference, (wheel, rail), surface);
-    let h_mm = conformal_grid::undeformed_distance(&frame, &grid, &patch);
+    let (patch, surfaces) = conformal_grid::surfaces(&frame, &grid, reference, (wheel, rail), surface);
+    let h_mm = conformal_grid::undeformed_distance(&frame, &grid, &patch, &surfaces);
     let rail_s_mm = rail.s_mm(frame.origin.y);
     Ok(PatchGeometry {
         frame,
@@ -671,6 +703,7 @@ fn build_conformal(
         extent: c.extent(),
         rail_s_mm,
         curved: Some(patch),
+        surfaces: Some(surfaces),
     })
 }
 

@@ -41,7 +41,7 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side, pose: Pose) -
         },
         wheel_surface: Default::default(),
         grid_search: false,
-        conformal: false,
+        approach: Default::default(),
         material: Material::from_g(82000.0, 0.28),
         heat: None,
         tangential: Default::default(),

@@ -115,6 +115,8 @@ fn patch_deviations(
         add("zcp_r_mm", z_r, &r.zcp_r_mm);
     }
     if let Some(k) = &t.kinematics {
+        add("chi_rad", p.creepages.chi_rad(), &k.chi_rad);
+        add("veloc_mm_s", p.creepages.veloc_mm_s, &k.veloc_mm_s);
         add("cksi", p.creepages.cksi, &k.cksi);
         add("ceta", m * p.creepages.ceta, &k.ceta);
         add("cphi_per_mm", m * p.creepages.cphi_per_mm, &k.cphi_per_mm);

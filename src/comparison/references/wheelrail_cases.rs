@@ -98,7 +98,7 @@ const WORN_ROOT: &str = "the worn flange root's patch (blended and turned region
 /// "Agreement with CONTACT": each bounded at its measured gap by `tolerances.toml`). The
 /// benchmark's right case 11 (and case 9 of the KPEC deck), a gap until the rail was placed by its
 /// spline's gauge point and the gap mesh started at its lowest point, is reproduced.
-pub const KNOWN_GAPS: [KnownGap; 44] = [
+pub const KNOWN_GAPS: [KnownGap; 48] = [
     KnownGap {
         deck: "mbench_a22_kpec.inp",
         case: 1,
@@ -183,7 +183,15 @@ pub const KNOWN_GAPS: [KnownGap; 44] = [
     KnownGap { deck: "test-rollers2.inp", case: 7, feature: ROLLER_YAW_RESIDUE },
     KnownGap { deck: "test-rollers2.inp", case: 8, feature: ROLLER_YAW_RESIDUE },
     KnownGap { deck: "test-rollers2.inp", case: 9, feature: ROLLER_TILT_RESIDUE },
+    KnownGap { deck: "test-rollers3.inp", case: 1, feature: SURFACE_SLIP_RESIDUE },
+    KnownGap { deck: "test-rollers3.inp", case: 5, feature: SURFACE_SLIP_RESIDUE },
+    KnownGap { deck: "test-rollers3.inp", case: 6, feature: SURFACE_SLIP_RESIDUE },
+    KnownGap { deck: "test-rollers3.inp", case: 9, feature: SURFACE_SLIP_RESIDUE },
 ];
+
+/// `test-rollers3` cases 1, 5, 6, 9 (D = 3): contacts symmetric about their reference's plane in
+/// free rolling; their lateral forces are the iteration's residue.
+const SURFACE_SLIP_RESIDUE: &str = "the rigid slip on the actual surfaces (D = 3) in free rolling of a contact symmetric about y (the sphere on the plane, aligned or rolled 0.1 rad; the flat wheel on the roller, aligned or tilted 0.1 rad): FN, the reference, the approach and the creepages CONTACT's, the lateral forces residues of 1e-11 to 8e-10 FN: FY(TR) 1.32e-6 N against -2.218e-6 (case 1, 5.31 half-units of its 1e-6 N floor), 1.194e-4 N against 1.063e-4 (case 5, 19.6 half-units), -6.7e-7 N against 1.086e-6 (case 6, 2.63), FS 7.348e-3 N against 7.29e-3 and FY(TR) 2.637e-3 against 2.578e-3 (case 9, 116.6 and 88.1 half-units, the residue of test-rollers2 case 9 on the planar reference), every other quantity within its rule; cause not found";
 
 /// `groove_li` cases 1-4: a circular wheel R = 10 mm centred in a groove of radius 10.25 to 10.02
 /// mm, free rolling (FX_WS = 0 prescribed): a contact symmetric about y = 0 whose lateral forces

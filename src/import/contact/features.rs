@@ -605,10 +605,11 @@ pub fn wr_temperature_law_carried(c: &WheelRailCase) -> bool {
 }
 
 /// A roller rig as the wheel–rail scene carries it: steady rolling (T = 3) with VPITCH given
-/// (F = 0), the planar contact locus (D = 2), the rail placed absolutely, not a slices file.
+/// (F = 0), the planar contact locus (D = 2, or 3 with the rigid slip on the surfaces), the rail
+/// placed absolutely, not a slices file.
 fn roller_supported(c: &WheelRailCase) -> bool {
     let d = c.digits;
-    let planar = c.state.discretisation.as_ref().is_some_and(|disc| disc.method == 2);
+    let planar = c.state.discretisation.as_ref().is_some_and(|disc| matches!(disc.method, 2 | 3));
     let absolute = c.state.track.is_some_and(|t| matches!(t.placement, RailPlacement::Absolute { .. }));
     let slices = c.state.rail_profile.as_ref().is_some_and(|p| p.format() == ProfileFormat::Slices);
     d.t == 3 && d.f == 0 && planar && absolute && !slices
@@ -634,7 +635,7 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "a wheel on a roller rig beyond steady rolling on the planar contact locus",
         control: "C, T, F, D, GAUGHT",
         supported: false,
-        reason: "supported on a roller rig: steady rolling (T = 3) with VPITCH given (F = 0), the planar contact locus (D = 2), the rail placed absolutely (GAUGHT ≤ 0) by a profile file",
+        reason: "supported on a roller rig: steady rolling (T = 3) with VPITCH given (F = 0), the planar contact locus (D = 2, or 3 with the rigid slip on the actual surfaces), the rail placed absolutely (GAUGHT ≤ 0) by a profile file",
         used: |c| {
             (c.digits.roller_rig() && !roller_supported(c)).then(|| {
                 let d = c.state.discretisation.as_ref().map_or(0, |d| d.method);
@@ -776,10 +777,21 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "contact approaches other than the planar one with the contact locus",
         control: "D",
         supported: false,
-        reason: "supported: D = 2 (planar contact, contact locus, weighted reference), D = 4 (conformal), D = 5 (the planar one with the brute-force grid search, [wheelrail] contact_search = \"grid\") or D = 0, 1 keeping them; not 3 (rigid slip on the actual surfaces), 6 (the grid search's larger grid for steep slopes), 7-9 (the initial contact point, oblique views)",
+        reason: "supported: D = 2 (planar contact, contact locus, weighted reference), D = 3 (the same with the rigid slip on the actual surfaces), D = 4 (conformal), D = 5 (the planar one with the brute-force grid search, [wheelrail] contact_search = \"grid\") or D = 0, 1 keeping them; not 6 (the grid search's larger grid for steep slopes), 7-9 (the initial contact point, oblique views)",
         used: |c| {
             let m = c.state.discretisation.as_ref()?.method;
-            (!matches!(m, 2 | 4 | 5)).then(|| format!("D (in force) = {m}"))
+            (!matches!(m, 2..=5)).then(|| format!("D (in force) = {m}"))
+        },
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::ContactApproach,
+        name: "planar contact with the rigid slip on the actual surfaces",
+        control: "D",
+        supported: true,
+        reason: "carried as [wheelrail] approach = \"planar_surface_slip\" (D = 3, docs/wheelrail.md \"Rigid slip on the actual surfaces\"): the planar patch's grid and gap, the rigid slip of the rail's (or roller's) and the wheel's material velocities at every element's points of both surfaces, its least-squares creepages printed, the rest an extra rigid slip per element; refused where a case also takes transient rolling, sub-patches, dissimilar bodies or a simplified model (named by the scene's reader)",
+        used: |c| {
+            let m = c.state.discretisation.as_ref()?.method;
+            (m == 3).then(|| format!("D (in force) = {m}"))
         },
     },
     WheelRailRow {

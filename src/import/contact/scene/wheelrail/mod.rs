@@ -25,8 +25,8 @@ use super::super::CaseStatus;
 use super::{scene_name, SceneFiles};
 use crate::physics::material::combine_bodies;
 use crate::scene::wheelrail::{
-    CaseRow, LongitudinalSpec, MotionSpec, MuBy, MuVariation, PlacementSpec, ProfileSpec, RailDeviationSpec, SideSpec,
-    VerticalSpec, WheelDeviationSpec, WheelRailScene,
+    Approach, CaseRow, LongitudinalSpec, MotionSpec, MuBy, MuVariation, PlacementSpec, ProfileSpec, RailDeviationSpec,
+    SideSpec, VerticalSpec, WheelDeviationSpec, WheelRailScene,
 };
 use crate::scene::wheelrail_profile::{RollerSpec, PROFILE_DEFAULTS};
 use crate::scene::{MaterialSpec, Origin};
@@ -381,7 +381,11 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         d_turn_mm: disc.d_turn_mm(),
         wheel_mesh: false,
         grid_search: disc.method == 5,
-        conformal: disc.method == 4,
+        approach: match disc.method {
+            3 => Approach::PlanarSurfaceSlip,
+            4 => Approach::Conformal,
+            _ => Approach::Planar,
+        },
         motion: match c.digits.t {
             1 => MotionSpec::Shift { s_ws_mm: s_ws, sequence: c.digits.p == 0, steady_start: false },
             2 => MotionSpec::RollingSequence { dq_rel: disc.dqrel, from_rest: c.digits.p == 2 },

@@ -6,8 +6,8 @@
 use super::super::read_back::tempdir_for;
 use crate::error::InputError;
 use crate::scene::wheelrail::{
-    case_columns, case_columns_with_pitch, case_columns_with_positions, CaseRow, LongitudinalSpec, MotionSpec, MuBy,
-    PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
+    case_columns, case_columns_with_pitch, case_columns_with_positions, Approach, CaseRow, LongitudinalSpec,
+    MotionSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
 };
 use crate::scene::wheelrail_profile::{MIRROR_Z, PROFILE_DEFAULTS};
 use std::fmt::Write;
@@ -57,8 +57,10 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
     if s.grid_search {
         wheelrail.push(("contact_search", Value::String("grid".into())));
     }
-    if s.conformal {
-        wheelrail.push(("approach", Value::String("conformal".into())));
+    match s.approach {
+        Approach::Planar => {}
+        Approach::PlanarSurfaceSlip => wheelrail.push(("approach", Value::String("planar_surface_slip".into()))),
+        Approach::Conformal => wheelrail.push(("approach", Value::String("conformal".into()))),
     }
     if s.frictionless {
         wheelrail.push(("frictionless", Value::Boolean(true)));
