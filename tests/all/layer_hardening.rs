@@ -1,5 +1,5 @@
 //! The interface layer that hardens or softens (CONTACT's M = 4 with K_TAU ≠ 0, issue 46):
-//! `[material] layer_hardening_mpa_per_mm`, read with its yield limit and in shifts only,
+//! `[material] layer_hardening_mpa_per_mm`, read with its yield limit, in shifts and steady rolling,
 //! `export contact` (K_TAU) and `import contact` both ways, and plastic_3bl.inp's clay (K_TAU =
 //! 435), sand (−195) and MoS2 (20.4) series against the closed form of one element and against
 //! CONTACT's printed FX. The fixed point per step: `solvers/contact/hardening.rs` (its own tests).
@@ -39,11 +39,15 @@ fn the_rate_is_read_with_its_yield_limit_in_shifts_and_exports_as_k_tau() {
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("material.layer_hardening_mpa_per_mm") && err.contains("with its yield limit"), "{err}");
     assert!(!dir.join("out").exists());
-    // In rolling: refused (the limits would move with the material: CONTACT's SteadyGS carries
-    // them from the element upstream; its GDsteady refuses K_TAU != 0).
-    let (code, err, dir) = run_scene("hardening_rolling", &scene(HARDENING, true), &simulate);
+    // In steady rolling (a sweep): run, each limit carried from the element upstream (CONTACT's
+    // SteadyGS); in transient rolling refused (the limits and plastic slip would move with the
+    // material from step to step, CONTACT's ConvexGS).
+    let (code, err, _) = run_scene("hardening_steady", &scene(HARDENING, true), &simulate);
+    assert_eq!(code, Some(0), "{err}");
+    let transient = scene(HARDENING, false).replace("[rolling]\nmotion = \"shift\"\n", "");
+    let (code, err, dir) = run_scene("hardening_rolling", &transient, &simulate);
     assert_eq!(code, Some(2), "{err}");
-    assert!(err.contains("material.layer_hardening_mpa_per_mm") && err.contains("shifts only"), "{err}");
+    assert!(err.contains("material.layer_hardening_mpa_per_mm") && err.contains("transient rolling"), "{err}");
     assert!(!dir.join("out").exists());
     let (code, err, _) = run_scene("hardening_range", &scene(&HARDENING.replace("435.0", "1e11"), false), &simulate);
     assert_eq!(code, Some(2), "{err}");
