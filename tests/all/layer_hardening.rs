@@ -206,9 +206,9 @@ fn plastic_3bl_clay_sand_and_mos2_harden_and_soften_as_one_element() {
 /// w − C (p_k − p_(k−1)) (the layer's displacement carried with the material, p_(−1) = 0), so each
 /// element is the one-element problem of the trial traction t = |p_(k−1)| + w/C with the limit
 /// τc' carried from the element upstream (τ_c0 at the leading edge, CONTACT's `stdygs`): elastic
-/// within min(μ pn, τc'), slipping at μ pn where μ pn ≤ τc', else flowing to τc = (τc' + K C t)/(1
-/// + K C) (at most μ pn; a softened one's traction not floored, the limit it carries on at least
-/// 0.1 τ_c0). The steady fixed point gives each element's traction and limit within 1e-6 of μ pn,
+/// within min(μ pn, τc'), slipping at μ pn where μ pn ≤ τc', else flowing to
+/// τc = (τc' + K C t)/(1 + K C) (at most μ pn; a softened one's traction not floored, the limit it
+/// carries on at least 0.1 τ_c0). The steady fixed point gives each element's traction and limit within 1e-6 of μ pn,
 /// hardening to μ pn (K C = 1) and softening past the floor (K C = −0.2).
 #[test]
 fn a_layer_alone_in_steady_rolling_carries_its_limit_from_the_element_upstream() {
@@ -245,7 +245,7 @@ fn a_layer_alone_in_steady_rolling_carries_its_limit_from_the_element_upstream()
         let friction = mu * pn;
         let (mut p_up, mut carried) = (0.0, tau_c0);
         let (mut flowed, mut slipped) = (false, false);
-        for k in 0..mx {
+        for (k, &tau_k) in tau.iter().enumerate() {
             let t = p_up + w / flx;
             let (p, limit) = if t <= friction.min(carried) {
                 (t, carried)
@@ -258,7 +258,7 @@ fn a_layer_alone_in_steady_rolling_carries_its_limit_from_the_element_upstream()
                 (flow, flow)
             };
             assert!((r.px[k] - p).abs() <= 1e-6 * friction, "K C {kc}, {k}: p {} against {p}", r.px[k]);
-            assert!((tau[k] - limit).abs() <= 1e-6 * friction, "K C {kc}, {k}: τc {} against {limit}", tau[k]);
+            assert!((tau_k - limit).abs() <= 1e-6 * friction, "K C {kc}, {k}: τc {tau_k} against {limit}");
             (p_up, carried) = (p, limit.max(0.1 * tau_c0));
         }
         // Hardening: elements flow, then slip at μ pn; softening: they flow below the floor.
