@@ -281,11 +281,11 @@ fn check_model(problem: &Problem, m: &ModelDef, shifts: bool) -> Result<(), Inpu
         }
     }
     if let Some(k) = problem.material.layer.filter(|l| l.hardens()).map(|l| l.hardening_mpa_per_mm) {
-        if problem.rolling.motion != Motion::Shift {
+        if problem.rolling.motion != Motion::Shift && problem.loading.is_transient() {
             return Err(InputError::new(
                 "material.layer_hardening_mpa_per_mm",
-                format!("a yield limit moving at {k} MPa/mm with rolling"),
-                "a layer that hardens or softens with shifts only ([rolling] motion = \"shift\", CONTACT's T = 1): in rolling each element's limit moves with the material (CONTACT's SteadyGS and ConvexGS carry it from the element upstream, its GDsteady refuses K_TAU != 0), which the rolling solvers here do not carry",
+                format!("a yield limit moving at {k} MPa/mm in transient rolling"),
+                "a layer that hardens or softens with shifts ([rolling] motion = \"shift\", CONTACT's T = 1) or in steady rolling (a sweep, CONTACT's T = 3: each limit carried from the element upstream, as its SteadyGS); in transient rolling each element's limit and plastic slip would move with the material from step to step (CONTACT's ConvexGS), which the transient solver does not carry",
             ));
         }
     }

@@ -680,16 +680,20 @@ fn an_elasto_plastic_layer_and_a_layer_in_transient_rolling_are_refused() {
     };
     let import = |tang: &str, layer: &str| import_text("layer.inp", "layer", &deck(tang, layer)).unwrap();
     // Elastic-perfectly plastic (K_TAU = 0) imports as the layer's yield limit; a layer that
-    // hardens (K_TAU != 0) is refused.
+    // hardens (K_TAU != 0) imports in steady rolling (T = 3) and is refused in transient rolling.
     let plastic = import("3", "8200. 1.25 200. 0.");
     assert!(plastic.statuses[0].supported(), "{:?}", plastic.statuses[0]);
     assert!(plastic.scenes[0].files[0].1.contains("layer_yield_mpa = 200.0"), "{}", plastic.scenes[0].files[0].1);
     let hardening = import("3", "8200. 1.25 200. 435.");
+    assert!(hardening.statuses[0].supported(), "{:?}", hardening.statuses[0]);
+    let text = &hardening.scenes[0].files[0].1;
+    assert!(text.contains("layer_hardening_mpa_per_mm = 435.0") && text.contains("kind = \"sweep\""), "{text}");
+    let hardening = import("2", "8200. 1.25 200. 435.");
     assert!(!hardening.statuses[0].supported());
     let why = &hardening.statuses[0].refused;
     assert!(
         why.iter().any(|r| r.starts_with(
-            "M = 4, TAU_C0 = 200, K_TAU = 435, LAYTHK = 1.25, T = 3, L = 0: an elasto-plastic interface layer that hardens or softens in rolling"
+            "M = 4, TAU_C0 = 200, K_TAU = 435, LAYTHK = 1.25, T = 2, L = 0: an elasto-plastic interface layer that hardens or softens in transient rolling"
         )),
         "{why:?}"
     );

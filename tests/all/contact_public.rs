@@ -145,10 +145,14 @@ fn the_report_lists_every_case_of_every_deck() {
             // rolling on 2-D grids of DX 0.08, 0.04, 0.02 (carter_plast 3, 7, 11) and on Polach's
             // ellipse (tractcurve_plast 181-210, with its Coulomb series 1-30); hardening in shifts:
             // catt2d_plast's shift under FX (case 1, K_TAU = 123000) and plastic_one_shift's one
-            // element shifted forth, back, forth and round a corner (1-27, K_TAU = 0.42857).
-            .chain([3, 7, 11].map(|c| ("carter_plast.inp", c)))
-            .chain((1..=30).chain(181..=210).map(|c| ("tractcurve_plast.inp", c)))
-            .chain([("catt2d_plast.inp", 1)])
+            // element shifted forth, back, forth and round a corner (1-27, K_TAU = 0.42857). A
+            // yield limit that moves (K_TAU != 0) in steady rolling, each element's carried from
+            // the element upstream (CONTACT's SteadyGS): carter_plast's other nine cases, the
+            // traction curve's six hardening and softening series (31-180, 211-240) and
+            // catt3d_plast's steady start (1-2).
+            .chain((1..=12).map(|c| ("carter_plast.inp", c)))
+            .chain((1..=240).map(|c| ("tractcurve_plast.inp", c)))
+            .chain([("catt2d_plast.inp", 1), ("catt3d_plast.inp", 1), ("catt3d_plast.inp", 2)])
             .chain((1..=27).map(|c| ("plastic_one_shift.inp", c)))
     {
         let row = format!("| {deck} | {case} | reproduced: worst ");
@@ -166,9 +170,11 @@ fn the_report_lists_every_case_of_every_deck() {
     // per element), ertz_temperature.inp 1-4 (surface temperatures, H = 3 and 1),
     // euro_tractcurv.inp 2-30 and m3_tempdep.inp 1 (testbank/examples_temp, Coulomb with H = 3, 1),
     // 92 of friction of the surface temperature (L = 6: euro_tractcurv.inp 32-60, 62-90, 92-120,
-    // m3_tempdep.inp 2-3, conv_temp.inp 1-5), and 91 of testbank/examples_plast (carter_plast.inp
-    // 3, 7, 11, tractcurve_plast.inp 1-30, 181-210, catt2d_plast.inp 1, plastic_one_shift.inp 1-27).
-    assert_eq!(table.lines().filter(|l| l.contains(" | reproduced: ")).count(), 700);
+    // m3_tempdep.inp 2-3, conv_temp.inp 1-5), 91 of testbank/examples_plast (carter_plast.inp
+    // 3, 7, 11, tractcurve_plast.inp 1-30, 181-210, catt2d_plast.inp 1, plastic_one_shift.inp 1-27)
+    // and its 191 of a yield limit moving in steady rolling (carter_plast.inp 1-2, 4-6, 8-10, 12,
+    // tractcurve_plast.inp 31-180, 211-240, catt3d_plast.inp 1-2).
+    assert_eq!(table.lines().filter(|l| l.contains(" | reproduced: ")).count(), 891);
     // euro_tractcurv.inp case 1 (cx = 1e-5, two slip elements) differs: its MAX(T1,T2) 7.824e-5 is
     // CONTACT's at EPS = 1e-6; CONTACT run to EPS = 1e-12 prints 7.827e-5, ours 7.82674e-5
     // (tolerances.toml allows this case 6 half-units; the report shows it as it is); cases 31, 61,

@@ -1,5 +1,5 @@
 //! The interface layer that hardens or softens (CONTACT's M = 4 with K_TAU ≠ 0, issue 46):
-//! `[material] layer_hardening_mpa_per_mm`, read with its yield limit and in shifts only,
+//! `[material] layer_hardening_mpa_per_mm`, read with its yield limit, in shifts and steady rolling,
 //! `export contact` (K_TAU) and `import contact` both ways, and plastic_3bl.inp's clay (K_TAU =
 //! 435), sand (−195) and MoS2 (20.4) series against the closed form of one element and against
 //! CONTACT's printed FX. The fixed point per step: `solvers/contact/hardening.rs` (its own tests).
@@ -39,11 +39,15 @@ fn the_rate_is_read_with_its_yield_limit_in_shifts_and_exports_as_k_tau() {
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("material.layer_hardening_mpa_per_mm") && err.contains("with its yield limit"), "{err}");
     assert!(!dir.join("out").exists());
-    // In rolling: refused (the limits would move with the material: CONTACT's SteadyGS carries
-    // them from the element upstream; its GDsteady refuses K_TAU != 0).
-    let (code, err, dir) = run_scene("hardening_rolling", &scene(HARDENING, true), &simulate);
+    // In steady rolling (a sweep): run, each limit carried from the element upstream (CONTACT's
+    // SteadyGS); in transient rolling refused (the limits and plastic slip would move with the
+    // material from step to step, CONTACT's ConvexGS).
+    let (code, err, _) = run_scene("hardening_steady", &scene(HARDENING, true), &simulate);
+    assert_eq!(code, Some(0), "{err}");
+    let transient = scene(HARDENING, false).replace("[rolling]\nmotion = \"shift\"\n", "");
+    let (code, err, dir) = run_scene("hardening_rolling", &transient, &simulate);
     assert_eq!(code, Some(2), "{err}");
-    assert!(err.contains("material.layer_hardening_mpa_per_mm") && err.contains("shifts only"), "{err}");
+    assert!(err.contains("material.layer_hardening_mpa_per_mm") && err.contains("transient rolling"), "{err}");
     assert!(!dir.join("out").exists());
     let (code, err, _) = run_scene("hardening_range", &scene(&HARDENING.replace("435.0", "1e11"), false), &simulate);
     assert_eq!(code, Some(2), "{err}");
@@ -194,5 +198,71 @@ fn plastic_3bl_clay_sand_and_mos2_harden_and_soften_as_one_element() {
             let half_units = (fx - p.value).abs() / p.half_unit;
             assert!(half_units <= 1.0, "case {}: FX {fx} against printed {}", s.first + k as u32, p.value);
         }
+    }
+}
+
+/// A layer alone (half-spaces of G = 1e12 MPa, ~1e-9 of the layer's flexibility h3/G3 = C) in
+/// steady rolling along a row of 24 elements under one pressure: the steady slip of element k is
+/// w − C (p_k − p_(k−1)) (the layer's displacement carried with the material, p_(−1) = 0), so each
+/// element is the one-element problem of the trial traction t = |p_(k−1)| + w/C with the limit
+/// τc' carried from the element upstream (τ_c0 at the leading edge, CONTACT's `stdygs`): elastic
+/// within min(μ pn, τc'), slipping at μ pn where μ pn ≤ τc', else flowing to
+/// τc = (τc' + K C t)/(1 + K C) (at most μ pn; a softened one's traction not floored, the limit it
+/// carries on at least 0.1 τ_c0). The steady fixed point gives each element's traction and limit within 1e-6 of μ pn,
+/// hardening to μ pn (K C = 1) and softening past the floor (K C = −0.2).
+#[test]
+fn a_layer_alone_in_steady_rolling_carries_its_limit_from_the_element_upstream() {
+    use creepbench::physics::material::Layer;
+    use creepbench::solvers::contact::hardening::Hardening;
+    use creepbench::solvers::contact::influence::Kernel;
+    use creepbench::solvers::contact::tangential::{TangentialParams, TangentialSolver};
+    let (mx, dx, mu, pn, tau_c0) = (24, 1.0, 0.5, 400.0, 60.0);
+    let flx = 1.25 / 8200.0;
+    let grid = creepbench::physics::Grid::new(mx, 1, 0.5 * mx as f64 * dx, 0.5);
+    let (x, y) = grid.centres();
+    let kernel = |shift: f64| {
+        Kernel::new(mx, 1, grid.dx_mm, grid.dy_mm, 1e12, 0.28, shift).unwrap().with_layer(flx, [shift, 0.0]).unwrap()
+    };
+    // Rigid slip w = dq cx = 20 MPa of the layer per element.
+    let w = 20.0 * flx;
+    for kc in [1.0, -0.2] {
+        let layer =
+            Layer { g_mpa: 8200.0, thickness_mm: 1.25, yield_mpa: Some(tau_c0), hardening_mpa_per_mm: kc / flx };
+        let mut solver = TangentialSolver::new(&kernel(0.0), &kernel(grid.dx_mm), &x, &y).unwrap();
+        let pressure = vec![pn; mx];
+        solver.set_pressure(&pressure).unwrap();
+        let h = Hardening::new(layer, mx, flx, 1e-12).unwrap();
+        let mut params = TangentialParams::new(mu, w / grid.dx_mm, 0.0, 0.0, grid.dx_mm);
+        params.tol = 1e-13;
+        let c = solver.steady_self_flexibility_mm_per_mpa();
+        let (r, tau, o) = h
+            .steady(&pressure, mu, (mx, c), |bound, warm| {
+                solver.set_bound(bound)?;
+                solver.steady(&params, warm)
+            })
+            .unwrap();
+        assert!(o.converged, "K C {kc}: {o:?}");
+        let friction = mu * pn;
+        let (mut p_up, mut carried) = (0.0, tau_c0);
+        let (mut flowed, mut slipped) = (false, false);
+        for (k, &tau_k) in tau.iter().enumerate() {
+            let t = p_up + w / flx;
+            let (p, limit) = if t <= friction.min(carried) {
+                (t, carried)
+            } else if friction <= carried {
+                slipped = true;
+                (friction, carried)
+            } else {
+                flowed = true;
+                let flow = ((carried + kc * t) / (1.0 + kc)).min(friction);
+                (flow, flow)
+            };
+            assert!((r.px[k] - p).abs() <= 1e-6 * friction, "K C {kc}, {k}: p {} against {p}", r.px[k]);
+            assert!((tau_k - limit).abs() <= 1e-6 * friction, "K C {kc}, {k}: τc {tau_k} against {limit}");
+            (p_up, carried) = (p, limit.max(0.1 * tau_c0));
+        }
+        // Hardening: elements flow, then slip at μ pn; softening: they flow below the floor.
+        assert!(flowed && (kc < 0.0 || slipped), "K C {kc}");
+        assert!(kc > 0.0 || r.px[mx - 1] < 0.1 * tau_c0, "K C {kc}: {}", r.px[mx - 1]);
     }
 }

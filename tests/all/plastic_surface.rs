@@ -109,9 +109,45 @@ fn plastic_one_shift_hardens_round_a_corner_at_printed_digits() {
     }
 }
 
-/// The cases of these decks the import refuses name the feature: a yield limit that moves (K_TAU
-/// ≠ 0) in steady rolling (carter_plast 1, tractcurve_plast 31) and the surface's plasticity in
-/// transient rolling (catt2d_plast 2, catt3d_plast 4).
+/// A yield limit that moves (K_TAU ≠ 0) in steady rolling, each element's limit carried from the
+/// element upstream as CONTACT's SteadyGS (`stdygs`) carries it: carter_plast.inp's 2-D rolling at
+/// cx = −4e-4 with K_TAU = 123000 (case 2: FX/FSTAT/FN printed 0.6420) and −20500 (case 4:
+/// 0.5509), where the K_TAU = 0 case of the same grid printed 0.5959; tractcurve_plast.inp's
+/// traction curve hardening at K_TAU = 35143 (cases 31-60) and softening at −81.918 (211-240, to
+/// the floor 0.1 τ_c0 from cx = 0.175 on: FX/FSTAT/FN printed 0.5121 at cx = 0.25 against 0.8852
+/// at K_TAU = 0). Every case within one half-unit of its printed digits (measured worst 0.77,
+/// 0.02, 0.98, 0.95). Past the floor a flowing element's own bound is τc' + K_TAU |Δu_pl|, below
+/// 15 MPa, as CONTACT's `plstrc` leaves its traction (only the limit carried on is floored): with
+/// the bound floored too, cases 237-240 were 24 to 177 half-units off.
+#[test]
+fn moving_yield_limit_in_steady_rolling_at_printed_digits() {
+    let out = tempdir("plastic_surface_steady_hardening");
+    for (name, cases) in [
+        ("carter_plast_2", 2..=2),
+        ("carter_plast_4", 4..=4),
+        ("tractcurve_plast_31", 31..=60),
+        ("tractcurve_plast_211", 211..=240),
+    ] {
+        let d = diffs(&out, name);
+        let w = worst(&d, cases);
+        assert!(w <= 1.0, "{name}: worst {w} half-units");
+    }
+    let d = diffs(&out, "carter_plast_4");
+    let fx = d.iter().find(|r| r.quantity == FX).unwrap();
+    // Softening takes FX below the elastic-perfectly plastic 0.5959·μ (case 3).
+    assert!((fx.ours.abs() - 0.5509 * 0.5).abs() <= 0.5e-4 * 0.5 * 1.5, "fx/fn {}", fx.ours);
+    let stored = creepbench::suite::results::read_scene(&out, "tractcurve_plast_211").unwrap();
+    let h = &stored.histories["contact"];
+    let tau_min = h.column("tau_c_min_mpa").unwrap();
+    // The softened elements flow below the floor 0.1 τ_c0 = 15 MPa at the largest creepages.
+    let last = tau_min.last().copied().unwrap();
+    assert!(last > 0.0 && last < 15.0, "{tau_min:?}");
+    assert!(h.column("hardening_converged").unwrap().iter().all(|&c| c == 1.0));
+}
+
+/// The cases of these decks the import refuses name the feature: the surface's plasticity in
+/// transient rolling (catt2d_plast 2, catt3d_plast 4); carter_plast 1 and tractcurve_plast 31 (a
+/// yield limit that moves in steady rolling) are imported.
 #[test]
 fn the_refused_cases_name_what_is_missing() {
     let dir = tempdir("plastic_surface_refused");
@@ -132,16 +168,17 @@ fn the_refused_cases_name_what_is_missing() {
     };
     let line = |text: &str, case: usize| {
         let head = format!("skipped case {case} (");
-        text.lines().find(|l| l.starts_with(&head)).unwrap_or_else(|| panic!("case {case}: {text}")).to_string()
+        text.lines().find(|l| l.starts_with(&head)).map(str::to_string)
     };
-    let moving = "a yield limit that moves in steady rolling";
     let carter = import("carter_plast");
-    assert!(line(&carter, 1).contains("K_TAU = 4018000") && line(&carter, 1).contains(moving));
+    assert!(line(&carter, 1).is_none(), "{carter}");
     let tract = import("tractcurve_plast");
-    assert!(line(&tract, 31).contains("K_TAU = 35143") && line(&tract, 31).contains(moving));
+    assert!(line(&tract, 31).is_none(), "{tract}");
     let transient = "M = 4, T = 2: an interface layer in transient rolling";
-    assert!(line(&import("catt2d_plast"), 2).contains(transient));
+    let moving = "hardens or softens in transient rolling";
+    let catt2d = line(&import("catt2d_plast"), 2).expect("case 2 refused");
+    assert!(catt2d.contains(transient) && catt2d.contains(moving), "{catt2d}");
     let catt3d = import("catt3d_plast");
-    assert!(line(&catt3d, 4).contains(transient), "{}", line(&catt3d, 4));
-    assert!(catt3d.contains("none of 63 case(s) supported"), "{catt3d}");
+    assert!(line(&catt3d, 4).is_some_and(|l| l.contains(transient)), "{catt3d}");
+    assert!(line(&catt3d, 1).is_none() && line(&catt3d, 2).is_none(), "{catt3d}");
 }

@@ -262,14 +262,14 @@ pub const FEATURES: &[Feature] = &[
         name: "an elasto-plastic interface layer",
         control: "M, TAU_C0, K_TAU",
         supported: true,
-        reason: "imported as [material] layer_yield_mpa = TAU_C0 and layer_hardening_mpa_per_mm = K_TAU (where not 0, in shifts), with layer_thickness_mm = 0 where LAYTHK = 0 (the bodies' surface yields): the traction bound min(mu pn, tau_c) per element, as CONTACT's `tangcg` and `gdsteady` set it, tau_c = TAU_C0 + K_TAU times the element's accumulated plastic slip, as its `plstrc` moves it (docs/models.md, \"Interface layer\")",
+        reason: "imported as [material] layer_yield_mpa = TAU_C0 and layer_hardening_mpa_per_mm = K_TAU (where not 0: in shifts and steady rolling), with layer_thickness_mm = 0 where LAYTHK = 0 (the bodies' surface yields): the traction bound min(mu pn, tau_c) per element, as CONTACT's `tangcg` and `gdsteady` set it, tau_c = TAU_C0 + K_TAU times the element's accumulated plastic slip, as its `plstrc` moves it; in steady rolling each element's tau_c taken from the element upstream, as its `stdygs` carries it (docs/models.md, \"Interface layer\")",
         used: |c| plastic_layer(c).map(|[_, _, tau_c0, k_tau]| format!("M = 4, TAU_C0 = {tau_c0}, K_TAU = {k_tau}")),
     },
     Feature {
-        name: "an elasto-plastic interface layer that hardens or softens in rolling, or with falling friction or dissimilar bodies",
+        name: "an elasto-plastic interface layer that hardens or softens in transient rolling, or with falling friction or dissimilar bodies",
         control: "M, TAU_C0, K_TAU, LAYTHK, T, L, GG 1, 2",
         supported: false,
-        reason: "supported: TAU_C0 = 0 (an elastic layer), or TAU_C0 > 0 (on a layer, or LAYTHK = 0: the bodies' surface) with Coulomb friction (L = 0) and quasi-identical bodies, K_TAU != 0 in shifts (T = 1); a yield limit that moves in steady rolling (CONTACT's `stdygs` and `cnvxgs` carry each element's limit TAUCS from the element upstream, a limit field that moves with the material, which this project's steady solver does not hold) and the combinations with falling friction or K != 0 are not modelled",
+        reason: "supported: TAU_C0 = 0 (an elastic layer), or TAU_C0 > 0 (on a layer, or LAYTHK = 0: the bodies' surface) with Coulomb friction (L = 0) and quasi-identical bodies, K_TAU != 0 in shifts (T = 1) and steady rolling (T = 3, each limit carried from the element upstream as CONTACT's `stdygs`); a yield limit that moves in transient rolling (CONTACT's `cnvxgs` carries each element's limit TAUCS and plastic slip with the material from step to step, which this project's transient solver does not hold) and the combinations with falling friction or K != 0 are not modelled",
         used: |c| {
             let [_, laythk, tau_c0, k_tau] = layer_in_force(c)?;
             let other = plastic_layer(c).is_none();
@@ -459,11 +459,12 @@ pub fn contact_fastrip(c: &Case3) -> bool {
 }
 
 /// GG3, LAYTHK, TAU_C0, K_TAU of an elasto-plastic layer the import carries: TAU_C0 > 0 (on a
-/// layer, or LAYTHK = 0: the bodies' surface), K_TAU = 0 or shifts (T = 1), Coulomb friction, K = 0.
+/// layer, or LAYTHK = 0: the bodies' surface), K_TAU = 0 or not in transient rolling (T = 2),
+/// Coulomb friction, K = 0.
 pub fn plastic_layer(c: &Case3) -> Option<[f64; 4]> {
     let l = layer_in_force(c)?;
     let coupled = combine_bodies(c.state.poiss, c.state.gg_mpa).k != 0.0;
-    let moving = l[3] != 0.0 && c.digits.t != 1;
+    let moving = l[3] != 0.0 && c.digits.t == 2;
     let carried = l[2] > 1e-10 && !moving && c.state.friction_law == 0 && !coupled;
     carried.then_some(l)
 }

@@ -14,6 +14,7 @@
 //! are kept for the next step (as CONTACT's `taucs`), so that a change per step below the
 //! tolerance still accumulates.
 
+use super::steady_hardening::SteadyLimits;
 use super::tangential::{ElementState, StepResult};
 use super::ContactError;
 use crate::physics::material::Layer;
@@ -54,6 +55,26 @@ impl Hardening {
     /// The yield limits after the last step [MPa].
     pub fn tau_mpa(&self) -> &[f64] {
         &self.tau_mpa
+    }
+
+    /// Steady rolling on the friction bound's pressure `pn` [MPa] at μ `mu` on a grid of rows of
+    /// `mx` elements, the steady self-flexibility `c_mm_per_mpa` (A − A_s's diagonal): the limits
+    /// carried from the element upstream ([`super::steady_hardening`]), starting from the last
+    /// sample's. `solve` as for [`Hardening::step`]; nothing is kept here.
+    pub fn steady(
+        &self,
+        pn: &[f64],
+        mu: f64,
+        (mx, c_mm_per_mpa): (usize, f64),
+        solve: impl FnMut(&[f64], Option<(&[f64], &[f64])>) -> Result<StepResult, ContactError>,
+    ) -> Result<HardeningStep, ContactError> {
+        let limits = SteadyLimits {
+            layer: &self.layer,
+            mx,
+            self_flexibility_mm_per_mpa: c_mm_per_mpa,
+            tolerance: self.tolerance,
+        };
+        limits.solve(pn, mu, &self.tau_mpa, solve)
     }
 
     /// Keeps `tau_mpa` (a step's, [`Hardening::step`]) as the next step's previous limits.

@@ -15,7 +15,8 @@
 //! [`veldep`]: friction falling with the slip velocity, CONTACT's fixed point on the slip
 //! velocity around the tangential solve, with the friction memory; [`tempdep`]: friction of the
 //! surface temperature, the same fixed point on the temperature. [`hardening`]: an interface
-//! layer that hardens or softens, the fixed point per step on each element's yield limit.
+//! layer that hardens or softens, the fixed point per step on each element's yield limit;
+//! [`steady_hardening`]: the same in steady rolling, each limit carried from the element upstream.
 //!
 //! [`stepper`] maps a resolved problem onto them, one sample at a time; [`restart`] is CONTACT's
 //! first transient step after a steady start where μ or FN changed. The undeformed distance
@@ -31,6 +32,7 @@ pub mod hardening;
 pub mod heat;
 pub mod mirror;
 pub mod restart;
+pub mod steady_hardening;
 pub mod stepper;
 pub mod tangential;
 pub mod tempdep;

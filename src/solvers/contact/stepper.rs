@@ -822,10 +822,31 @@ impl Contact<'_> {
                 &mut self.tangential
             }
         };
-        let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.slope, l.pn_sum)).expect("loaded before a solve");
+        let l = self.loaded.as_ref().expect("loaded before a solve");
+        let (slope, pn_sum) = (l.slope, l.pn_sum);
         let start = start.map(|r| (r.px.as_slice(), r.py.as_slice()));
-        force::solve_sample(at, &params, slope, pn_sum, &mut self.outer, |q| solver.steady(q, start))
-            .map_err(|source| ContactRunError::Step { step: at.step, source }.into())
+        let Some(h) = self.hardening.as_ref() else {
+            return force::solve_sample(at, &params, slope, pn_sum, &mut self.outer, |q| solver.steady(q, start))
+                .map_err(|source| ContactRunError::Step { step: at.step, source }.into());
+        };
+        // A layer that hardens or softens: the limits carried from the element upstream.
+        let friction_pn = l.bound_pn.as_deref().unwrap_or(&l.pn);
+        let grid = (self.p.grid.mx, solver.steady_self_flexibility_mm_per_mpa());
+        let mut kept: Option<(Vec<f64>, HardeningOutcome)> = None;
+        let solved = force::solve_sample(at, &params, slope, pn_sum, &mut self.outer, |q| {
+            let (r, tau, outcome) = h.steady(friction_pn, q.mu, grid, |bound, warm| {
+                solver.set_bound(bound)?;
+                solver.steady(q, warm.or(start))
+            })?;
+            kept = Some((tau, outcome));
+            Ok(r)
+        })
+        .map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        if let (Some(h), Some((tau, outcome))) = (self.hardening.as_mut(), kept) {
+            h.keep(tau);
+            self.hardened = Some(outcome);
+        }
+        Ok(solved)
     }
 
     /// The shift from rest of a shift start.

@@ -74,7 +74,7 @@ pub(super) fn write(src: &Source, draft: &mut Draft) -> Result<(), InputError> {
         let laythk = if laythk >= 1e-10 { laythk } else { 0.0 };
         material.extend([("layer_g_mpa", Value::Float(gg3)), ("layer_thickness_mm", Value::Float(laythk))]);
         // Its yield limit (TAU_C0 > 0) and the rate it moves at (K_TAU; features.rs takes it in
-        // shifts only).
+        // shifts and steady rolling).
         if tau_c0 > 1e-10 {
             material.push(("layer_yield_mpa", Value::Float(tau_c0)));
             if k_tau != 0.0 {

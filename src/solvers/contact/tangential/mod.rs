@@ -668,6 +668,12 @@ impl TangentialSolver {
         self.layout.courant()
     }
 
+    /// The steady operator's self-flexibility [mm/MPa]: the mean of A − A_s's diagonal
+    /// (x and y), an element's slip per MPa of its own traction in steady rolling.
+    pub fn steady_self_flexibility_mm_per_mpa(&self) -> f64 {
+        0.5 * (self.plans.steady.diag.xx + self.plans.steady.diag.yy)
+    }
+
     fn check_params(&self, p: &TangentialParams) -> Result<(), ContactError> {
         p.validate()?;
         let shift = self.layout.shift_mm;
