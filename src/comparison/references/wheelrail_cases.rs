@@ -124,7 +124,7 @@ pub const KNOWN_GAPS: [KnownGap; 44] = [
     KnownGap {
         deck: "testbank.inp",
         case: 29,
-        feature: "contact at the rail profile's first point (bottom of the flange): the patch's reference 0.11 mm off laterally, FY(TR) 0.5 % and MN 56 % off",
+        feature: "contact at the rail profile's first point (bottom of the flange): the patch CONTACT's (NPOT, NCON, the reference, FY(TR), FN within their digits) since the rail past its profile's end keeps the end's n in the patch's plane (CONTACT's spline_eval extrapolates constantly; before: no rail there, the reference 0.11 mm off, MN 56 % off); the approach 5.1e-5 mm off (101.7 half-units), FS 1.7 N of 125 N (33.7), MN 3.0 half-units: CONTACT's wheel mesh (its profile points at spline parameters DS apart)",
     },
     KnownGap {
         deck: "testbank.inp",
