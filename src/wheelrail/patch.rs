@@ -365,7 +365,10 @@ pub fn grid(
 ) -> Result<PatchGrid, WheelRailError> {
     let ([xa, xb], [sa, sb], anchor_mm) = match motion {
         Motion::Rolling => {
-            let s_of = |y: f64| arc_length(rail, frame.origin.y, y);
+            // The rail spline's parameter from the reference (CONTACT's sr − sr_pot), else the
+            // arc length of the closed form.
+            let spline = |y: f64| Some(rail.s_mm(y)? - rail.s_mm(frame.origin.y)?);
+            let s_of = |y: f64| spline(y).unwrap_or_else(|| arc_length(rail, frame.origin.y, y));
             let x = [c.x_mm[0] - frame.origin.x, c.x_mm[1] - frame.origin.x];
             (x, [s_of(c.y_mm[0]), s_of(c.y_mm[1])], [0.0, 0.0])
         }
