@@ -403,7 +403,10 @@ pub fn grid(
 ) -> Result<PatchGrid, WheelRailError> {
     let ([xa, xb], [sa, sb], anchor_mm) = match motion {
         Motion::Rolling => {
-            let s_of = |y: f64| arc_length(rail, frame.origin.y, y);
+            // The rail spline's parameter from the reference (CONTACT's sr − sr_pot), else the
+            // arc length of the closed form.
+            let spline = |y: f64| Some(rail.s_mm(y)? - rail.s_mm(frame.origin.y)?);
+            let s_of = |y: f64| spline(y).unwrap_or_else(|| arc_length(rail, frame.origin.y, y));
             let x = [c.x_mm[0] - frame.origin.x, c.x_mm[1] - frame.origin.x];
             (x, [s_of(c.y_mm[0]), s_of(c.y_mm[1])], [0.0, 0.0])
         }
@@ -472,7 +475,7 @@ pub fn undeformed_distance(
         // along x) is met at the same distance along n by the whole row.
         let (x0, s0) = grid.centre(0, j);
         let row = frame.at(x0, s0);
-        let t_r = rail.along([row.y, row.z], [n.y, n.z]);
+        let t_r = rail.along([row.y, row.z], [n.y, n.z]).or_else(|| rail_n_past_end(frame, rail, s0));
         for i in 0..grid.mx {
             let t_w = match &meshed {
                 Some(m) => m[j * grid.mx + i],
@@ -485,6 +488,19 @@ pub fn undeformed_distance(
         }
     }
     h
+}
+
+/// The rail's n at plane coordinate `s_mm` past one of its profile's ends: the end's own n (CONTACT's
+/// `spline_get_loc_xz_at_y` evaluates the rail turned into the patch's plane, and `spline_eval`
+/// holds it constant beyond the spline's first and last points); `None` where `s_mm` lies past
+/// neither end.
+fn rail_n_past_end(frame: &PatchFrame, rail: &PlacedRail, s_mm: f64) -> Option<f64> {
+    let (e_s, n) = (frame.e_s(), frame.n());
+    let local = |[y, z]: [f64; 2], axis: Vector3<f64>| (y - frame.origin.y) * axis.y + (z - frame.origin.z) * axis.z;
+    rail.ends_mm()?.into_iter().find_map(|(end, inside)| {
+        let s_end = local(end, e_s);
+        ((s_mm - s_end) * (local(inside, e_s) - s_end) < 0.0).then(|| local(end, n))
+    })
 }
 
 /// Each grid column's cross-section of a variable rail, at track x = x_ref + x_i

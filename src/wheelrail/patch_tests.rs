@@ -55,3 +55,20 @@ fn regions_are_blended_or_turned_by_their_distance() {
     let apart = combine(vec![region([0.0, 1.0], -0.1, 1.0), region([14.0, 15.0], -0.3, 3.0)], &SEP);
     assert_eq!((apart[0].wgt_angle_rad, apart[1].wgt_angle_rad), (-0.3, -0.1));
 }
+
+/// Past its profile's end the rail keeps the end's n in the patch's plane (CONTACT's
+/// `spline_get_loc_xz_at_y` with `spline_eval`'s constant extrapolation, testbank case 29): a
+/// flat rail on y ∈ [0, 10], the plane turned by δ = 0.3 rad about its point (5, 0).
+#[test]
+fn past_its_end_the_rail_keeps_the_ends_n() {
+    let line = crate::wheelrail::curve::Line { z0_mm: 0.0, slope: 0.0, y_range_mm: [0.0, 10.0] };
+    let rail = PlacedRail { curve: &line, origin_mm: [0.0, 0.0], angle_rad: 0.0 };
+    let frame = PatchFrame { origin: Point3::new(0.0, 5.0, 0.0), delta_rad: 0.3 };
+    let (s, c) = 0.3f64.sin_cos();
+    // The end y = 10 lies at plane s = 5 cos δ, n = −5 sin δ; the end y = 0 at −5 cos δ, 5 sin δ.
+    let past_hi = rail_n_past_end(&frame, &rail, 5.0 * c + 0.7).unwrap();
+    assert!((past_hi + 5.0 * s).abs() < 1e-12, "{past_hi}");
+    let past_lo = rail_n_past_end(&frame, &rail, -5.0 * c - 2.0).unwrap();
+    assert!((past_lo - 5.0 * s).abs() < 1e-12, "{past_lo}");
+    assert_eq!(rail_n_past_end(&frame, &rail, 1.0), None);
+}

@@ -208,6 +208,14 @@ impl<'a> PlacedRail<'a> {
         Some((self.to_track(y_r, z)[1], slope(d)))
     }
 
+    /// The profile's two ends in track coordinates (y, z), each with a point 0.01 mm inside it
+    /// (which side of the end the profile lies on).
+    pub fn ends_mm(&self) -> Option<[([f64; 2], [f64; 2]); 2]> {
+        let [lo, hi] = self.curve.y_range_mm();
+        let inside = SCAN_MM.min(0.5 * (hi - lo));
+        Some([(self.track_at(lo)?, self.track_at(lo + inside)?), (self.track_at(hi)?, self.track_at(hi - inside)?)])
+    }
+
     /// Track y of the profile's lateral range ends (the rotated range's first and last points).
     pub fn y_range_mm(&self) -> [f64; 2] {
         let [lo, hi] = self.curve.y_range_mm();

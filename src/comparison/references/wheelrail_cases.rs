@@ -114,17 +114,17 @@ pub const KNOWN_GAPS: [KnownGap; 48] = [
     KnownGap {
         deck: "testbank.inp",
         case: 27,
-        feature: "a flange contact at 74 deg on smoothed measured profiles: the potential contact 2967 elements against CONTACT's 3354 (its longitudinal extent), the approach 2.6e-5 mm, ZCP 0.8 um off; forces within 3.3 half-units",
+        feature: "a flange contact at 74 deg on smoothed measured profiles: the potential contact CONTACT's 3354 elements since its lateral extent is the rail spline's parameter from the reference (CONTACT's sr - sr_pot; before: the arc length of z(y), 2967 elements); the approach 1.06e-5 mm off (21.1 half-units), MN 1.84: CONTACT meshes the wheel at its spline's parameter DS apart, not at arc-length steps (with that mesh, branch tb27-wheel-mesh: the approach 0.21, MN 0.95 half-units)",
     },
     KnownGap {
         deck: "testbank.inp",
         case: 28,
-        feature: "case 27 without kink detection (KINKWID = 0): the potential contact 2875 against 3125 elements, the approach 3.0e-4 mm, FN 0.13 % and FX 0.13 % off",
+        feature: "case 27 without kink detection (KINKWID = 0): the potential contact CONTACT's 3125 elements since its lateral extent is the rail spline's parameter (before 2875); the approach 5.8e-5 mm off (115.3 half-units), NCON and NSLIP 2 elements: CONTACT meshes the wheel at its spline's parameter DS apart, not at arc-length steps (with that mesh, branch tb27-wheel-mesh: the approach 0.22 half-units, the counts exact)",
     },
     KnownGap {
         deck: "testbank.inp",
         case: 29,
-        feature: "contact at the rail profile's first point (bottom of the flange): the patch's reference 0.11 mm off laterally, FY(TR) 0.5 % and MN 56 % off",
+        feature: "contact at the rail profile's first point (bottom of the flange): the patch CONTACT's (NPOT, NCON, the reference, FY(TR), FN within their digits) since the rail past its profile's end keeps the end's n in the patch's plane (CONTACT's spline_eval extrapolates constantly; before: no rail there, the reference 0.11 mm off, MN 56 % off); the approach 5.1e-5 mm off (101.7 half-units), FS 1.7 N of 125 N (33.7), MN 3.0 half-units: CONTACT's wheel mesh (its profile points at spline parameters DS apart)",
     },
     KnownGap {
         deck: "testbank.inp",
