@@ -57,13 +57,7 @@ fn groove_li_imports_its_half_space_cases_and_test_rollers3_every_case() {
 
 /// The deviations of the shipped scene `test_rollers3_{n}` from `test-rollers3.ref_out`.
 fn rollers3(n: u32) -> Vec<Deviation> {
-    let scene = WheelRailScene::from_file(&root().join(format!("scenes/wheelrail/test_rollers3_{n}.toml"))).unwrap();
-    let run = run_scene(&scene).unwrap();
-    let printed = read(&folder().join("test-rollers3.ref_out")).unwrap();
-    run.cases
-        .iter()
-        .flat_map(|(case, r)| compare_case(*case, r, 0, printed.iter().find(|p| u64::from(p.case) == *case).unwrap()))
-        .collect()
+    deviations(&format!("test_rollers3_{n}"), "test-rollers3")
 }
 
 /// test-rollers3: the cases of test-rollers2 with the rigid slip on the actual surfaces (D = 3:
@@ -153,9 +147,14 @@ fn test_rollers2_and_mbench_conf_import_their_track_cases() {
 
 /// The deviations of a shipped scene of scenes/wheelrail from `test-rollers2.ref_out`.
 fn rollers2(scene: &str) -> Vec<Deviation> {
+    deviations(scene, "test-rollers2")
+}
+
+/// The deviations of the shipped scene `scene` of scenes/wheelrail from `<deck>.ref_out`.
+fn deviations(scene: &str, deck: &str) -> Vec<Deviation> {
     let scene = WheelRailScene::from_file(&root().join(format!("scenes/wheelrail/{scene}.toml"))).unwrap();
     let run = run_scene(&scene).unwrap();
-    let printed = read(&folder().join("test-rollers2.ref_out")).unwrap();
+    let printed = read(&folder().join(format!("{deck}.ref_out"))).unwrap();
     run.cases
         .iter()
         .flat_map(|(case, r)| compare_case(*case, r, 0, printed.iter().find(|p| u64::from(p.case) == *case).unwrap()))

@@ -842,11 +842,17 @@ impl Contact<'_> {
             Ok(r)
         })
         .map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        self.keep_hardened(kept);
+        Ok(solved)
+    }
+
+    /// The yield limits of a solve's final iterate kept for the next step, with how its fixed
+    /// point ended ([`Hardening`]); nothing without a layer that hardens or softens.
+    fn keep_hardened(&mut self, kept: Option<(Vec<f64>, HardeningOutcome)>) {
         if let (Some(h), Some((tau, outcome))) = (self.hardening.as_mut(), kept) {
             h.keep(tau);
             self.hardened = Some(outcome);
         }
-        Ok(solved)
     }
 
     /// The shift from rest of a shift start.
@@ -891,10 +897,7 @@ impl Contact<'_> {
             }
         })
         .map_err(|source| ContactRunError::Step { step: at.step, source })?;
-        if let (Some(h), Some((tau, outcome))) = (self.hardening.as_mut(), kept) {
-            h.keep(tau);
-            self.hardened = Some(outcome);
-        }
+        self.keep_hardened(kept);
         Ok(solved)
     }
 
