@@ -72,9 +72,13 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
     let conformal_shift = |f: &&&Finding| f.scene == "t3_t1_conformal_1" && f.step == Some(7);
     // examples_conformal: test-rollers2 cases 3, 4 (the yawed sphere's free-rolling residues),
     // 7, 8, 9 (the yawed and the tilted roller's) and groove_li 1-4 (the lateral residues of a
-    // symmetric contact in a deep groove).
+    // symmetric contact in a deep groove); test-rollers3 cases 1, 5, 6, 9 (the rigid slip on the
+    // actual surfaces, D = 3: the free-rolling lateral residues of symmetric contacts).
     let conformal_decks = |f: &&&Finding| {
-        ["test_rollers2_3", "test_rollers2_7", "test_rollers2_8", "test_rollers2_9"].contains(&f.scene.as_str())
+        let residues = ["test_rollers2_3", "test_rollers2_7", "test_rollers2_8", "test_rollers2_9"];
+        let surface_slip = ["test_rollers3_1", "test_rollers3_5", "test_rollers3_6", "test_rollers3_9"];
+        residues.contains(&f.scene.as_str())
+            || surface_slip.contains(&f.scene.as_str())
             || f.scene.starts_with("groove_li_")
     };
     assert!(
