@@ -369,6 +369,7 @@ pub mod wheelrail;
 pub mod wheelrail_brush;
 pub mod wheelrail_conformal;
 pub mod wheelrail_exact;
+pub mod wheelrail_frame;
 pub mod wheelrail_fx;
 pub mod wheelrail_scene;
 pub mod wheelrail_shift;

@@ -14,6 +14,7 @@
 
 use super::resolve;
 use super::wheelrail_exact::{self, ExactCache};
+use super::wheelrail_frame::RollingFrame;
 use crate::error::{Error, InputError};
 use crate::history::sample_loop::{run_with_fields, Field};
 use crate::physics::geometry::{Extent, GeometrySpec};
@@ -24,7 +25,6 @@ use crate::scene::wheelrail_tangential::Tangential;
 use crate::scene::Scene;
 use crate::solvers;
 use crate::solvers::brush::Tractions;
-use crate::solvers::contact::mirror;
 use crate::wheelrail::friction::Friction;
 use crate::wheelrail::shift::Previous;
 use crate::wheelrail::vertical::FORCE_TOL;
@@ -425,28 +425,9 @@ fn exact_forces(
         .collect()
 }
 
-/// The sign of x in the models' frame of patch `p`: a patch rolling towards −x (CONTACT's CHI =
-/// 180°) is given to the models mirrored about x = 0 ([`mirror`]: CKSI, CPHI and the x parts of
-/// the tractions negated, each row of its fields reversed), as module 3 solves `chi_deg = 180`.
-fn sign(p: &NormalPatch) -> f64 {
-    if p.creepages.reversed {
-        -1.0
-    } else {
-        1.0
-    }
-}
-
-/// A field of patch `p` (CONTACT's element order) in the models' frame, and back ([`sign`]).
-fn in_models_frame<T: Copy>(p: &NormalPatch, v: &[T]) -> Vec<T> {
-    match p.creepages.reversed {
-        true => mirror::field(p.geometry.grid.mx, v),
-        false => v.to_vec(),
-    }
-}
-
 /// The module-3 scene text of a patch with `contact` (its geometry's keys) and `grid` tables.
 fn scene_text(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase, contact: &str, grid: &str) -> String {
-    let c = &p.creepages;
+    let (c, sign) = (&p.creepages, RollingFrame::of(p).sign());
     format!(
         "name = \"patch\"\nsolvers = [\"{model}\"]\n\
          [contact]\n{contact}\nfn_n = {fn_n}\nmu = {mu}\n\
@@ -458,9 +439,9 @@ fn scene_text(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase, conta
         g = case.material.g_mpa,
         nu = case.material.poisson,
         v = c.veloc_mm_s,
-        cx = sign(p) * c.cksi,
+        cx = sign * c.cksi,
         cy = c.ceta,
-        cs = sign(p) * c.cphi_per_mm,
+        cs = sign * c.cphi_per_mm,
     )
 }
 
@@ -478,14 +459,12 @@ fn field_scene(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase, exac
         scene.friction = crate::physics::FrictionLaw::Temperature(law);
     }
     scene.contact_solver = case.tangential.contact_solver;
-    let h_mm = in_models_frame(p, &p.geometry.h_mm);
-    let blend = p.geometry.blend.clone().map(|b| Blend { part: in_models_frame(p, &b.part), ..b });
-    scene.geometry = GeometrySpec::Field { h_mm, blend, pn_mpa: exact.then(|| in_models_frame(p, &p.pn_mpa)) };
+    let frame = RollingFrame::of(p);
+    let h_mm = frame.field(p.geometry.h_mm.to_vec());
+    let blend = p.geometry.blend.clone().map(|b| Blend { part: frame.field(b.part), ..b });
+    scene.geometry = GeometrySpec::Field { h_mm, blend, pn_mpa: exact.then(|| frame.field(p.pn_mpa.to_vec())) };
     let x_mm = [g.x0_mm, g.x0_mm + g.dx_mm * g.mx as f64];
-    scene.extent = Extent::Edges {
-        x_mm: if p.creepages.reversed { [-x_mm[1], -x_mm[0]] } else { x_mm },
-        y_mm: [g.s0_mm, g.s0_mm + g.ds_mm * g.ms as f64],
-    };
+    scene.extent = Extent::Edges { x_mm: frame.extent_x(x_mm), y_mm: [g.s0_mm, g.s0_mm + g.ds_mm * g.ms as f64] };
     Ok(scene)
 }
 
@@ -534,15 +513,13 @@ pub(super) fn patch_solve(p: &NormalPatch, model: &str, mu: f64, case: &WheelRai
     let mz_nmm = h.column(crate::history::MZ).map_or(f64::NAN, |c| c[0]);
     let temperatures: Vec<f64> =
         solvers::contact::heat::COLUMNS.iter().filter_map(|n| h.column(n).map(|c| c[0])).collect();
+    let frame = RollingFrame::of(p);
     Ok(PatchForces {
         n_adhesion: count("n_adhesion"),
         n_slip: count("n_slip"),
         temp_max_c: (!temperatures.is_empty()).then(|| temperatures.iter().copied().fold(f64::MIN, f64::max)),
-        slip: fields
-            .last()
-            .and_then(|f| slip_on_patch(p, &problem, f, count("n_slip")))
-            .map(|s| in_models_frame(p, &s)),
-        ..PatchForces::on_rail(p, case, sign(p) * row.fx_over_fn, row.fy_over_fn, sign(p) * mz_nmm)
+        slip: fields.last().and_then(|f| slip_on_patch(p, &problem, f, count("n_slip"))).map(|s| frame.field(s)),
+        ..PatchForces::on_rail(p, case, frame.sign() * row.fx_over_fn, row.fy_over_fn, frame.sign() * mz_nmm)
     })
 }
 

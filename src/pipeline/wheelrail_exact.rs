@@ -10,12 +10,13 @@
 
 use super::wheelrail::PatchForces;
 use super::wheelrail_conformal;
+use super::wheelrail_frame::RollingFrame;
 use crate::physics::geometry::field_in_grid_order;
 use crate::physics::halfspace::influence::Kernel;
 use crate::physics::{moment_sum, Grid, Material};
 use crate::scene::ContactSolverOptions;
 use crate::solvers::contact::tangential::{StepResult, TangentialParams, TangentialSolver};
-use crate::solvers::contact::{mirror, ContactError};
+use crate::solvers::contact::ContactError;
 use crate::solvers::stepper::ElementState;
 use crate::wheelrail::{shift, Motion, NormalPatch, WheelRailCase};
 
@@ -120,7 +121,7 @@ pub fn patch_forces(
     let grid = patch_grid(p);
     let c = &p.creepages;
     // Rolling towards −x: the solver takes the problem mirrored about x = 0.
-    let solver_frame = SolverFrame { mx: grid.mx, mirrored: c.reversed };
+    let solver_frame = RollingFrame::of(p);
     let pn = solver_frame.field(field_in_grid_order(&grid, &p.pn_mpa));
     let (x, y) = grid.centres();
     let x = solver_frame.field_x(x);
@@ -136,7 +137,7 @@ pub fn patch_forces(
         Mu::Patch(mu) => mu,
         Mu::Rows(_) => 1.0,
     };
-    let sign = if c.reversed { -1.0 } else { 1.0 };
+    let sign = solver_frame.sign();
     let mut params = TangentialParams::new(mu_solve, sign * c.cksi, c.ceta, sign * c.cphi_per_mm, dq_mm);
     params.tol = options.tolerance;
     params.max_iter = options.max_iterations;
@@ -198,43 +199,6 @@ pub fn patch_forces(
         ..PatchForces::on_rail(p, case, fx_over_fn, fy_over_fn, mz_nmm)
     };
     Ok(if case.motion.super_grid_s_mm().is_some() { about_anchor(forces, p, case) } else { forces })
-}
-
-/// The tangential solver's frame of a patch: its own, or rolling towards −x (CONTACT's CHI =
-/// 180°) the problem mirrored about x = 0 ([`mirror`]: x components negated, rows reversed).
-struct SolverFrame {
-    mx: usize,
-    mirrored: bool,
-}
-
-impl SolverFrame {
-    fn field<T: Copy>(&self, v: Vec<T>) -> Vec<T> {
-        if self.mirrored {
-            mirror::field(self.mx, &v)
-        } else {
-            v
-        }
-    }
-
-    fn field_x(&self, v: Vec<f64>) -> Vec<f64> {
-        if self.mirrored {
-            mirror::field_x(self.mx, &v)
-        } else {
-            v
-        }
-    }
-
-    /// The solution back in the patch's frame (the mirror undoes itself).
-    fn back(&self, r: StepResult) -> StepResult {
-        StepResult {
-            px: self.field_x(r.px),
-            py: self.field(r.py),
-            sx: self.field_x(r.sx),
-            sy: self.field(r.sy),
-            state: self.field(r.state),
-            ..r
-        }
-    }
 }
 
 /// Coulomb's μ of a patch: one value, or one per grid row (a conformal patch with V = 1).
@@ -334,8 +298,8 @@ mod tests {
     }
 
     /// A patch rolling towards −x (CHI = 180°): the direct solve (its problem mirrored in the
-    /// solver, [`SolverFrame`]) and the models' patch scene (mirrored in the scene,
-    /// `pipeline::wheelrail::in_models_frame`) give the same forces and slip; and rolling the
+    /// solver, [`RollingFrame`]) and the models' patch scene (mirrored in the scene,
+    /// `RollingFrame` too) give the same forces and slip; and rolling the
     /// other way changes them (the patch is not symmetric in x: right case 14's flange contact).
     #[test]
     fn a_patch_rolling_backwards_is_solved_mirrored_on_both_paths() {
