@@ -140,7 +140,8 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
     // C = 0, 1 a wheel on a track, 4, 5 on a roller rig.
     let c = u8::from(s.side == SideSpec::Right) + if s.roller.is_some() { 4 } else { 0 };
     let n = u8::from(s.vertical == VerticalSpec::Force);
-    let f = u8::from(s.longitudinal == LongitudinalSpec::Force);
+    // F = 1 FX_WS given, 3 a massless rail (read with the track by the first case, kept after it).
+    let f = if s.massless_rail.is_some() { 3 } else { u8::from(s.longitudinal == LongitudinalSpec::Force) };
     let t = match (s.frictionless, s.motion) {
         (true, _) => 0,
         (false, MotionSpec::Shift { steady_start: true, .. }) if first => 3,
@@ -255,6 +256,13 @@ fn setup(s: &WheelRailScene, (rail, wheel): (&str, &str), out: &mut String) {
     let ([dy, dz, droll], [vy, vz, vroll]) = (s.rail_deviation.position, s.rail_deviation.velocity);
     let _ =
         writeln!(out, "  {dy:?}   {dz:?}   {droll:?}   {vy:?}   {vz:?}   {vroll:?}     DY, DZ, ROLL, VY, VZ, VROLL");
+    if let Some(m) = &s.massless_rail {
+        let _ = writeln!(
+            out,
+            "  {:?}   {:?}   {:?}   {:?}   {:?}     KYRAIL, FYRAIL, KZRAIL, FZRAIL, DYSTEP0",
+            m.ky_n_per_mm, m.fy_n, m.kz_n_per_mm, m.fz_n, m.dy_step_mm
+        );
+    }
     let _ = writeln!(
         out,
         "  {:?}   {:?}   {:?}                         FBDIST, FBPOS, NOMRAD",

@@ -371,6 +371,7 @@ pub mod wheelrail_conformal;
 pub mod wheelrail_exact;
 pub mod wheelrail_frame;
 pub mod wheelrail_fx;
+pub mod wheelrail_massless;
 pub mod wheelrail_scene;
 pub mod wheelrail_shift;
 pub mod wheelrail_view;

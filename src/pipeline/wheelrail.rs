@@ -102,6 +102,9 @@ pub struct CaseResult {
     pub models: Vec<(String, Vec<PatchForces>, Totals)>,
     /// The pitch velocity the case was solved at.
     pub pitch: Pitch,
+    /// On a massless rail (CONTACT's F = 3), the rail's deflection found: DY_DEFL along the side's
+    /// own y, DZ_DEFL downwards [mm] ([`super::wheelrail_massless`]).
+    pub rail_deflection_mm: Option<[f64; 2]>,
 }
 
 /// The wheelset's pitch velocity VPITCH [rad/s]: given (CONTACT's F = 0), or found for a
@@ -202,7 +205,13 @@ pub fn solve_step(
         Some((n, _)) => n,
         None => own_normals[0].1.clone(),
     };
-    Ok(CaseResult { normal, own_normals, models: out, pitch: Pitch::Given(case.velocity.vpitch_rad_s) })
+    Ok(CaseResult {
+        normal,
+        own_normals,
+        models: out,
+        pitch: Pitch::Given(case.velocity.vpitch_rad_s),
+        rail_deflection_mm: None,
+    })
 }
 
 /// The normal contact of `case` with the normal problem of `cache` (exact or approximate): with FZ

@@ -122,5 +122,5 @@ fn finish(
             }
         }
     }
-    Ok(CaseResult { normal, own_normals, models: out, pitch })
+    Ok(CaseResult { normal, own_normals, models: out, pitch, rail_deflection_mm: None })
 }

@@ -4,6 +4,7 @@
 
 use super::wheelrail::{solve_with, CaseResult};
 use super::wheelrail_fx::solve_fx;
+use super::wheelrail_massless::solve_massless;
 use super::wheelrail_shift::{solve_rolling_sequence, solve_sequence};
 use crate::error::{Error, InputError};
 use crate::problem::material_of_spec;
@@ -182,9 +183,10 @@ pub fn run_scene(scene: &WheelRailScene) -> Result<SceneRun, Error> {
             let case = case_of(scene, row, &rail, &wheel, material);
             let friction =
                 Friction { mu: scene.mu, variation: scene.mu_variation.as_ref(), frictionless: scene.frictionless };
-            let solved = match scene.longitudinal {
-                LongitudinalSpec::Velocity => solve_with(&case, &models, &friction),
-                LongitudinalSpec::Force => solve_fx(&case, &models, &friction, row.velocity[5]),
+            let solved = match (scene.longitudinal, &scene.massless_rail) {
+                (_, Some(rail)) => solve_massless(&case, &models, &friction, rail),
+                (LongitudinalSpec::Velocity, None) => solve_with(&case, &models, &friction),
+                (LongitudinalSpec::Force, None) => solve_fx(&case, &models, &friction, row.velocity[5]),
             };
             solved.map(|r| (row.contact_case, r)).map_err(|e| in_case(&scene.name, row, e))
         })

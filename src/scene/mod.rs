@@ -27,6 +27,7 @@ pub mod table;
 pub mod top;
 pub mod wheelrail;
 pub mod wheelrail_cases;
+pub mod wheelrail_massless;
 pub mod wheelrail_profile;
 pub mod wheelrail_section;
 pub mod wheelrail_tangential;
@@ -532,6 +533,7 @@ pub const KEY_TABLES: &[&keys::Keys] = &[
     &wheelrail_cases::KEYS,
     &wheelrail_cases::AXIS_KEYS,
     &wheelrail_cases::STEP_KEYS,
+    &wheelrail_massless::KEYS,
     &wheelrail::REPORT_KEYS,
 ];
 

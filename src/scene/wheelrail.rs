@@ -252,6 +252,8 @@ pub struct WheelRailScene {
     pub roller: Option<super::wheelrail_profile::RollerSpec>,
     /// The rail's deviation from its design position and its velocity (`[rail] deviation_*`).
     pub rail_deviation: RailDeviationSpec,
+    /// A rail deflecting on springs under the contact forces (`[massless_rail]`, CONTACT's F = 3).
+    pub massless_rail: Option<super::wheelrail_massless::MasslessRailSpec>,
     /// CONTACT's T = 0 (`[wheelrail] frictionless`): the normal problem only, no tangential
     /// forces (every model's FX, FS, MN are 0).
     pub frictionless: bool,
@@ -367,6 +369,7 @@ pub const TOP_KEYS: Keys = Keys {
         table("friction"),
         table("contact_solver"),
         table("cases"),
+        table("massless_rail"),
         table("origin"),
         table("report"),
     ],
@@ -599,6 +602,10 @@ impl WheelRailScene {
                 "a shift or transient rolling with the pitch's shift or velocity given ([cases] longitudinal = \"velocity\") and friction (not frictionless)",
             ));
         }
+        let massless_rail = super::wheelrail_massless::read(&mut top, vertical == VerticalSpec::Position)?;
+        if massless_rail.is_some() {
+            check_massless(motion, longitudinal, frictionless, rail.roller.is_some())?;
+        }
         let given_s = doc.get("wheelrail").and_then(|w| w.get("s_mm")).is_some();
         super::wheelrail_cases::check_positions(&cases, motion, (given_s, rail_is_slices(doc)), mu_variation.as_ref())?;
         match rail.roller {
@@ -619,6 +626,7 @@ impl WheelRailScene {
             cant_rad: rail.cant_rad,
             roller: rail.roller,
             rail_deviation: rail.deviation,
+            massless_rail,
             frictionless,
             flange_back_distance_mm: wheel.flange_back_distance_mm,
             flange_back_position_mm: wheel.flange_back_position_mm,
@@ -649,6 +657,32 @@ impl WheelRailScene {
         check_figures(&scene)?;
         Ok(scene)
     }
+}
+
+/// A massless rail (CONTACT's F = 3) in steady rolling with the pitch's velocity given and
+/// friction, on a track: the rail's lateral spring balances the contact's lateral force.
+fn check_massless(
+    motion: MotionSpec,
+    longitudinal: LongitudinalSpec,
+    frictionless: bool,
+    roller: bool,
+) -> Result<(), InputError> {
+    let why = if motion != MotionSpec::Rolling {
+        format!("motion {motion:?}")
+    } else if longitudinal != LongitudinalSpec::Velocity {
+        "[cases] longitudinal = \"force\"".to_string()
+    } else if frictionless {
+        "frictionless = true".to_string()
+    } else if roller {
+        "a roller rig".to_string()
+    } else {
+        return Ok(());
+    };
+    Err(InputError::new(
+        "massless_rail",
+        why,
+        "steady rolling (motion = \"rolling\") with friction, the pitch's velocity given ([cases] longitudinal = \"velocity\"), on a track (CONTACT's F = 3 with T = 3)",
+    ))
 }
 
 /// On a track every case rolls or shifts: `vs_mm_s` other than 0 (the creepages are over it).

@@ -64,13 +64,20 @@ fn csv_text(header: &[&str], rows: &[Vec<String>]) -> Vec<u8> {
     w.into_inner().expect("writing to memory")
 }
 
-/// One model's totals row for a case.
-fn total_row(case: u64, r: &CaseResult, model: usize) -> Vec<String> {
+/// Columns of `<model>.csv` after [`TOTAL_COLUMNS`] on a massless rail (`[massless_rail]`): the
+/// rail's deflections found, DY_DEFL along the side's own y and DZ_DEFL downwards (CONTACT's).
+pub const DEFLECTION_COLUMNS: [&str; 2] = ["dy_defl_mm", "dz_defl_mm"];
+
+/// One model's totals row for a case (with the rail's deflections where `deflected`).
+fn total_row(case: u64, r: &CaseResult, model: usize, deflected: bool) -> Vec<String> {
     let (name, _, t) = &r.models[model];
     let normal = r.normal_of(name);
     let mut row = vec![case.to_string(), normal.patches.len().to_string(), normal.z_ws_mm.to_string()];
     row.extend(t.track_n.iter().chain(&t.wheelset_n).map(|v| number(*v)));
     row.push(number(r.pitch.rad_s()));
+    if deflected {
+        row.extend(r.rail_deflection_mm.unwrap_or([f64::NAN; 2]).map(number));
+    }
     row
 }
 
@@ -111,8 +118,13 @@ fn patch_row(case: u64, k: usize, r: &CaseResult, p: &NormalPatch, f: &PatchForc
 /// The files of the result folder: name and contents.
 pub fn files(run: &SceneRun) -> Vec<(String, Vec<u8>)> {
     let mut out = Vec::new();
+    let deflected = run.cases.iter().any(|(_, r)| r.rail_deflection_mm.is_some());
+    let mut header = TOTAL_COLUMNS.to_vec();
+    if deflected {
+        header.extend(DEFLECTION_COLUMNS);
+    }
     for (k, model) in run.models.iter().enumerate() {
-        let totals: Vec<_> = run.cases.iter().map(|(c, r)| total_row(*c, r, k)).collect();
+        let totals: Vec<_> = run.cases.iter().map(|(c, r)| total_row(*c, r, k, deflected)).collect();
         let patches: Vec<_> = run
             .cases
             .iter()
@@ -125,7 +137,7 @@ pub fn files(run: &SceneRun) -> Vec<(String, Vec<u8>)> {
                     .map(move |(j, (p, f))| patch_row(*c, j, r, p, f))
             })
             .collect();
-        out.push((format!("{model}.csv"), csv_text(&TOTAL_COLUMNS, &totals)));
+        out.push((format!("{model}.csv"), csv_text(&header, &totals)));
         out.push((format!("{model}_patches.csv"), csv_text(&PATCH_COLUMNS, &patches)));
     }
     out

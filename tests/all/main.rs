@@ -38,6 +38,7 @@ mod interface_layer;
 mod layer_hardening;
 mod layering;
 mod linear_model;
+mod massless_rail;
 mod nonhertz;
 mod oracles;
 mod parser_fuzz;

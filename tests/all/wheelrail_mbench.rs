@@ -70,6 +70,11 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
     let rounded_flat = |f: &&&Finding| f.scene == "rounded_flat_d09_1";
     let brute = |f: &&&Finding| f.scene == "mbench_brute_1" && f.step == Some(30);
     let conformal_shift = |f: &&&Finding| f.scene == "t3_t1_conformal_1" && f.step == Some(7);
+    // The massless rail (F = 3): CKSI at y = 0 to CONTACT's stopping tolerance (case 1), and with
+    // the height given every case (CONTACT moves that height).
+    let massless = |f: &&&Finding| {
+        (f.scene == "mbench_massless_right" && f.step == Some(1)) || f.scene == "mbench_massless_position_right"
+    };
     // examples_conformal: test-rollers2 cases 3, 4 (the yawed sphere's free-rolling residues),
     // 7, 8, 9 (the yawed and the tilted roller's) and groove_li 1-4 (the lateral residues of a
     // symmetric contact in a deep groove); test-rollers3 cases 1, 5, 6, 9 (the rigid slip on the
@@ -90,7 +95,8 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
             || rounded_flat(f)
             || brute(f)
             || conformal_shift(f)
-            || conformal_decks(f)),
+            || conformal_decks(f)
+            || massless(f)),
         "{all_gaps:?}"
     );
     assert!(
@@ -102,6 +108,10 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         "examples_conformal's gaps within their bounds"
     );
     assert!(all_gaps.iter().filter(|f| brute(f)).all(|f| f.gated && f.passed()), "mbench_brute 30 within its bound");
+    assert!(
+        all_gaps.iter().filter(|f| massless(f)).all(|f| f.gated && f.passed()),
+        "the massless rail's gaps within their bounds"
+    );
     assert!(
         all_gaps.iter().filter(|f| intrup(f)).all(|f| f.gated && f.passed()),
         "mbench_intrup 24, 28 within their bound"

@@ -62,7 +62,7 @@ fn deviation(case: u64, patch: usize, quantity: &'static str, ours: f64, p: &Pri
 
 /// Every compared quantity of one case of the model at index `model` of the run's models: the
 /// number of patches (`n_patches`, a count: any difference is 2 half-units or more), the totals
-/// on the rail, the pitch velocity where the case found it and, patch by patch in CONTACT's order, the patches both have.
+/// on the rail, the pitch velocity where the case found it, a massless rail's deflections and, patch by patch in CONTACT's order, the patches both have.
 pub fn compare_case(case: u64, ours: &CaseResult, model: usize, theirs: &WheelRailCase) -> Vec<Deviation> {
     let mut out = Vec::new();
     let count = Printed { value: theirs.patches.len() as f64, half_unit: 0.5 };
@@ -84,6 +84,11 @@ pub fn compare_case(case: u64, ours: &CaseResult, model: usize, theirs: &WheelRa
         // No slope (found at the first estimate): no tolerance.
         let tolerance = vpitch_tolerance(mu, fz, per_fx_rad_s_n).max(0.0);
         out.push(Deviation { tolerance, ..deviation(case, 0, "vpitch_rad_s", rad_s, &v.vpitch_rad_s) });
+    }
+    // The massless rail's deflections found (CONTACT's F = 3).
+    if let (Some([dy, dz]), Some(d)) = (ours.rail_deflection_mm, &theirs.rail_deflection) {
+        out.push(deviation(case, 0, "dy_defl_mm", dy, &d.dy_defl_mm));
+        out.push(deviation(case, 0, "dz_defl_mm", dz, &d.dz_defl_mm));
     }
     let m = normal.side.sign();
     for (k, (p, f)) in normal.patches.iter().zip(forces).enumerate() {

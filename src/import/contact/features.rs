@@ -750,8 +750,8 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         feature: WheelRailFeature::MasslessRail,
         name: "a massless rail deflecting under the contact forces",
         control: "F, KYRAIL..DYSTEP0",
-        supported: false,
-        reason: "supported: F = 0 (the rail at its given position)",
+        supported: true,
+        reason: "carried as [massless_rail] ky_n_per_mm = KYRAIL, fy_n = FYRAIL, kz_n_per_mm = KZRAIL, fz_n = FZRAIL, dy_step_mm = DYSTEP0: the rail's deflections DY_DEFL, DZ_DEFL found so that its springs balance the contact forces (docs/wheelrail.md \"A massless rail\"), in steady rolling with VPITCH given",
         used: |c| wr_digit("F", c.digits.f, c.digits.f == 3),
     },
     WheelRailRow {

@@ -28,6 +28,7 @@ use crate::scene::wheelrail::{
     Approach, CaseRow, LongitudinalSpec, MotionSpec, MuBy, MuVariation, PlacementSpec, ProfileSpec, RailDeviationSpec,
     SideSpec, VerticalSpec, WheelDeviationSpec, WheelRailScene,
 };
+use crate::scene::wheelrail_massless::MasslessRailSpec;
 use crate::scene::wheelrail_profile::{RollerSpec, PROFILE_DEFAULTS};
 use crate::scene::{MaterialSpec, Origin};
 use crate::wheelrail::profile::slices::check_slices_file;
@@ -297,6 +298,21 @@ fn s_ws_of(s: &WheelRailState) -> f64 {
 }
 
 /// A supported case as a scene of one row (no name, no folder; profile paths as `paths` gives
+/// The massless rail of a case with F = 3 (KYRAIL, FYRAIL, KZRAIL, FZRAIL, DYSTEP0 last read).
+fn massless_rail_of(c: &WheelRailCase) -> Result<Option<MasslessRailSpec>, String> {
+    if c.digits.f != 3 {
+        return Ok(None);
+    }
+    let m = c.state.massless_rail.ok_or_else(|| "F = 3 without KYRAIL, FYRAIL, KZRAIL, FZRAIL".to_string())?;
+    Ok(Some(MasslessRailSpec {
+        ky_n_per_mm: m.ky_n_mm,
+        fy_n: m.fy_n,
+        kz_n_per_mm: m.kz_n_mm,
+        fz_n: m.fz_n,
+        dy_step_mm: m.dystep0_mm,
+    }))
+}
+
 /// them), or why it has none.
 fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene, String> {
     let s = &c.state;
@@ -352,6 +368,7 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
                 velocity: [d.vy_mm_s, d.vz_mm_s, d.vroll_rad_s],
             }
         },
+        massless_rail: massless_rail_of(c)?,
         frictionless: c.digits.t == 0,
         flange_back_distance_mm: wheelset.fbdist_mm,
         flange_back_position_mm: wheelset.fbpos_mm,

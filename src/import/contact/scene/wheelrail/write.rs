@@ -131,6 +131,16 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
     out.extend(super::heat::friction_pairs(s).map(|p| (Some("friction"), p)));
     out.extend(super::heat::contact_solver_pairs(s).map(|p| (Some("contact_solver"), p)));
     out.push((Some("cases"), cases));
+    if let Some(m) = &s.massless_rail {
+        let massless = vec![
+            ("ky_n_per_mm", Value::Float(m.ky_n_per_mm)),
+            ("fy_n", Value::Float(m.fy_n)),
+            ("kz_n_per_mm", Value::Float(m.kz_n_per_mm)),
+            ("fz_n", Value::Float(m.fz_n)),
+            ("dy_step_mm", Value::Float(m.dy_step_mm)),
+        ];
+        out.push((Some("massless_rail"), massless));
+    }
     if let Some(o) = &s.origin {
         let numbers = Value::Array(o.cases.iter().map(|&n| Value::Integer(n as i64)).collect());
         out.push((Some("origin"), vec![("file", Value::String(o.file.clone())), ("cases", numbers)]));
