@@ -92,17 +92,18 @@ pub fn check(p: &Problem) -> Result<(), InputError> {
     }
 }
 
-/// An interface layer (M = 4) in shifts and steady rolling only: in transient rolling CONTACT
-/// takes the layer's previous displacement at the element's own index on the moved grid
-/// (`m_stang.f90`), not with the material as this project does, so the deck would compute another
-/// problem.
+/// An interface layer (M = 4) with a thickness in shifts and steady rolling only: in transient
+/// rolling CONTACT takes the layer's previous displacement at the element's own index on the
+/// moved grid (`m_stang.f90`), not with the material as this project does, so the deck would
+/// compute another problem. Without a thickness (the bodies' surface yielding) there is no
+/// layer's displacement: transient rolling is the same problem.
 fn check_layer(p: &Problem) -> Result<(), InputError> {
     let rolls_transient = p.rolling.motion == Motion::Rolling && p.loading.is_transient();
     match p.material.layer {
-        Some(l) if rolls_transient => Err(InputError::new(
+        Some(l) if rolls_transient && l.thickness_mm > 0.0 => Err(InputError::new(
             "material.layer_g_mpa",
-            format!("an interface layer (layer_g_mpa = {}) in transient rolling", l.g_mpa),
-            "an interface layer in steady rolling or shifts (CONTACT's transient rolling with M = 4 keeps the layer's displacement on the moved grid, not with the material)",
+            format!("an interface layer (layer_g_mpa = {}, layer_thickness_mm = {}) in transient rolling", l.g_mpa, l.thickness_mm),
+            "an interface layer in steady rolling or shifts, or without a thickness in transient rolling (CONTACT's transient rolling with M = 4 keeps the layer's displacement on the moved grid, not with the material)",
         )),
         _ => Ok(()),
     }

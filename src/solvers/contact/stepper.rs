@@ -806,6 +806,34 @@ impl Contact<'_> {
 /// A solve's tractions and the creepages found under prescribed forces.
 type Solved = (StepResult, Option<[f64; 2]>);
 
+/// A layer that hardens or softens, the friction bound's pressure [MPa] and where the step's
+/// limits and outcome are put ([`Hardening::step`]).
+type Limits<'h, 'k> = (&'h Hardening, &'h [f64], &'k mut Option<(Vec<f64>, HardeningOutcome)>);
+
+/// A transient step (rolling or a shift) after the tractions `(px, py)`; with `limits` the fixed
+/// point on the layer's yield limits around each solve ([`Hardening::step`], CONTACT's `plstrc`
+/// within its ConvexGS sweeps), the final solve's limits put in `limits`' slot.
+fn transient_with_limits(
+    solver: &mut TangentialSolver,
+    q: &TangentialParams,
+    (px, py): (&[f64], &[f64]),
+    older: Option<(&[f64], &[f64])>,
+    limits: Option<Limits<'_, '_>>,
+) -> Result<StepResult, ContactError> {
+    let Some((h, friction_pn, kept)) = limits else {
+        return solver.transient_step(q, px, py, older);
+    };
+    let (r, tau, outcome) = h.step(friction_pn, q.mu, |bound, start| {
+        solver.set_bound(bound)?;
+        match start {
+            Some(start) => solver.transient_resolve_from(q, start),
+            None => solver.transient_step(q, px, py, older),
+        }
+    })?;
+    *kept = Some((tau, outcome));
+    Ok(r)
+}
+
 impl Contact<'_> {
     /// A steady solve (prescribed forces: their creepages sought), warm started from `start`
     /// (the last outer iteration's tractions), else from the solver's previous steady solution.
@@ -861,10 +889,18 @@ impl Contact<'_> {
         let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.shift_slope, l.pn_sum)).expect("loaded before a solve");
         let solver = self.shift_start.as_mut().expect("built for a shift start");
         let zero = &self.zero;
-        force::solve_sample(at, &params, slope, pn_sum, &mut force::Memory::default(), |q| {
-            solver.transient_step(q, zero, zero, None)
+        // A layer that hardens or softens: the fixed point on its limits, as in a shift history.
+        let l = self.loaded.as_ref().expect("loaded before a solve");
+        let friction_pn = l.bound_pn.as_deref().unwrap_or(&l.pn);
+        let hardening = self.hardening.as_ref();
+        let mut kept: Option<(Vec<f64>, HardeningOutcome)> = None;
+        let solved = force::solve_sample(at, &params, slope, pn_sum, &mut force::Memory::default(), |q| {
+            let limits = hardening.map(|h| (h, friction_pn, &mut kept));
+            transient_with_limits(solver, q, (zero, zero), None, limits)
         })
-        .map_err(|source| ContactRunError::Step { step: at.step, source }.into())
+        .map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        self.keep_hardened(kept);
+        Ok(solved)
     }
 
     /// A transient step (rolling or a shift) after the last step's tractions; with a layer that
@@ -882,19 +918,9 @@ impl Contact<'_> {
         let tangential = solver_for(&mut self.tangential, &mut self.rolled, params.dq_mm);
         let hardening = self.hardening.as_ref();
         let mut kept: Option<(Vec<f64>, HardeningOutcome)> = None;
-        let solved = force::solve_sample(at, params, slope, pn_sum, &mut self.outer, |q| match hardening {
-            None => tangential.transient_step(q, px, py, older),
-            Some(h) => {
-                let (r, tau, outcome) = h.step(friction_pn, q.mu, |bound, start| {
-                    tangential.set_bound(bound)?;
-                    match start {
-                        Some(start) => tangential.transient_resolve_from(q, start),
-                        None => tangential.transient_step(q, px, py, older),
-                    }
-                })?;
-                kept = Some((tau, outcome));
-                Ok(r)
-            }
+        let solved = force::solve_sample(at, params, slope, pn_sum, &mut self.outer, |q| {
+            let limits = hardening.map(|h| (h, friction_pn, &mut kept));
+            transient_with_limits(tangential, q, (px, py), older, limits)
         })
         .map_err(|source| ContactRunError::Step { step: at.step, source })?;
         self.keep_hardened(kept);
@@ -1110,10 +1136,15 @@ impl Stepper for Contact<'_> {
         }
         let params = self.params(at);
         self.found = None;
+        // Rolling with a layer that hardens or softens: the limits move with the material first.
+        if let (Some(h), Motion::Rolling) = (self.hardening.as_mut(), self.p.rolling.motion) {
+            h.carry(self.p.grid.mx, params.dq_mm / self.p.grid.dx_mm);
+        }
         // Prescribed forces: the plain transient step, its creepages sought by the outer iteration.
         let start = self.after_steady.take().filter(|s| s.load_changed(at) && !at.prescribes_force());
-        // Dissimilar bodies: the outer iteration solves every step to its tolerance.
-        let start = start.filter(|_| self.coupling.is_none());
+        // Dissimilar bodies (the outer iteration solves every step to its tolerance) and a layer
+        // that hardens or softens (the fixed point on its limits) take the step in full.
+        let start = start.filter(|_| self.coupling.is_none() && self.hardening.is_none());
         if let (Some(start), Some(steady), SteadyRestart::Contact) =
             (start, &self.last, self.p.contact_solver.steady_restart)
         {
