@@ -82,7 +82,7 @@ pub const LAYER_KEYS: Keys = Keys {
             "mm",
             Allowed::Number(Range::new(0.0, true, 1e3, true), ""),
             Absent::Text("– (no layer; with `layer_g_mpa`)"),
-            r#"the layer's thickness h3 (LAYTHK); only h3/G3 matters: `layer_thickness_mm = 1.25`"#,
+            r#"the layer's thickness h3 (LAYTHK); only h3/G3 matters; its displacement moves with the material in steady rolling and stays in place in transient rolling, as CONTACT's: `layer_thickness_mm = 1.25`"#,
         ),
     ],
 };

@@ -282,8 +282,8 @@ pub const FEATURES: &[Feature] = &[
     Feature {
         name: "an interface layer in transient rolling",
         control: "M, LAYTHK, T",
-        supported: false,
-        reason: "supported: M = 4 with a layer's flexibility (LAYTHK >= 1e-10) in shifts (T = 1) and steady rolling (T = 3), and in transient rolling without one (LAYTHK = 0: the bodies' surface yielding, elastic-perfectly plastic or hardening); in transient rolling CONTACT takes the layer's previous displacement at the element's own index on the moved grid (`stang_rhs` in `m_stang.f90` computes it from the previous tractions PV with the shifted coefficients CV, whose `use_3bl` term `gf3_aijpj` in `m_aijpj.f90` adds as FLX times PV of the element itself), where this project's shifted kernel carries it with the material (`Kernel::with_layer`); the two differ by FLX (p(i) - p(i - dq)) per element, not measured against a printed case",
+        supported: true,
+        reason: "imported as the layer (above): in transient rolling the exact solver takes the layer's previous displacement at the element's own index on the moved grid, as CONTACT does (`stang_rhs` in `m_stang.f90` forms the previous displacement from the previous tractions PV with the shifted coefficients CV, whose layer term, `gf3_aijpj` in `m_aijpj.f90`, adds FLX times PV of the element itself), not with the material as in steady rolling (docs/models.md, \"Interface layer\")",
         used: |c| {
             let flexible = layer_in_force(c).filter(|l| l[1] >= 1e-10 && c.digits.t == 2);
             flexible.map(|[_, laythk, ..]| format!("M = 4, LAYTHK = {laythk}, T = 2"))

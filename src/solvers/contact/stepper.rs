@@ -214,14 +214,26 @@ fn tangential_at(
 ) -> Result<TangentialSolver, ContactError> {
     let (g, m, basis) = (&p.grid, &p.material, p.contact_solver.influence);
     let (dq, flx) = (p.rolling.dq_mm, m.layer_flexibility_mm_per_mpa());
+    let held = |offset: [f64; 2]| if layer_in_place(p) { [0.0, 0.0] } else { offset };
     if chi_deg == 0.0 {
-        let ks = kernel_along_x(p, dq)?.with_layer(flx, [dq, 0.0])?;
+        let ks = kernel_along_x(p, dq)?.with_layer(flx, held([dq, 0.0]))?;
         return TangentialSolver::new(k0, &ks, x, y);
     }
     let towards = direction::towards(chi_deg);
     let ks = Kernel::rolling(g.mx, g.my, (g.dx_mm, g.dy_mm), (m.g_mpa, m.poisson), (dq, towards), basis)?
-        .with_layer(flx, [dq * towards[0], dq * towards[1]])?;
+        .with_layer(flx, held([dq * towards[0], dq * towards[1]]))?;
     TangentialSolver::rolling_towards(k0, &ks, towards, x, y)
+}
+
+/// Whether the rolling solver takes an interface layer's previous displacement at the element's
+/// own index on the moved grid: in transient rolling with a layer's thickness, as CONTACT does
+/// (`stang_rhs` in `m_stang.f90` forms the previous displacement from the previous tractions with
+/// the shifted coefficients CV, whose layer term, `gf3_aijpj` in `m_aijpj.f90`, adds FLX times the
+/// previous traction of the element itself); steady rolling carries it with the material
+/// (its own solver, [`Contact::steady_dx`], as CONTACT's SteadyGS differences it along the rows).
+fn layer_in_place(p: &Problem) -> bool {
+    let rolls = p.rolling.motion == Motion::Rolling && p.loading.is_transient();
+    rolls && p.material.layer_flexibility_mm_per_mpa() > 0.0
 }
 
 /// The kernel of the grid with the field point shifted by `shift_mm` along x: elastic, or of
@@ -307,7 +319,8 @@ struct Contact<'a> {
     tangential: TangentialSolver,
     /// Steady rolling's solver where the rolling step `dq` is not the element length `dx`:
     /// CONTACT solves steady rolling with DQ = DX whatever DQ the input gives (SteadyGS;
-    /// `m_sdis.f90` warns "Using DQ = DX"), so does this solver; `None`: `tangential` serves.
+    /// `m_sdis.f90` warns "Using DQ = DX"), so does this solver; also where the history's
+    /// transient rolling takes a layer in place ([`layer_in_place`]); `None`: `tangential` serves.
     steady_dx: Option<TangentialSolver>,
     /// The solvers of the rows' own rolling distances (a table's `courant`: CONTACT's DQ changing
     /// within a history), one per distinct dq [mm] other than `[rolling]`'s.
@@ -422,7 +435,9 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     }
     .map_err(ContactRunError::Kernel)?;
     let solves_steady = !p.loading.is_transient() || p.loading.steady_start().is_some();
-    let mut steady_dx = if solves_steady && p.rolling.dq_mm != g.dx_mm {
+    // A steady start of a history whose rolling takes a layer in place solves with its own kernel.
+    let own_steady = p.rolling.dq_mm != g.dx_mm || layer_in_place(p);
+    let mut steady_dx = if solves_steady && own_steady {
         Some(TangentialSolver::new(&k0, &kernel(g.dx_mm)?, &x, &y).map_err(ContactRunError::Kernel)?)
     } else {
         None
@@ -432,7 +447,14 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
         for s in &p.loading.samples {
             let dq = row_dq_mm(p, s);
             if dq != p.rolling.dq_mm && !rolled.iter().any(|(d, _)| *d == dq) {
-                let solver = TangentialSolver::new(&k0, &kernel(dq)?, &x, &y).map_err(ContactRunError::Kernel)?;
+                // A transient step's kernel: a layer in place ([`layer_in_place`]).
+                let ks = match layer_in_place(p) {
+                    true => kernel_along_x(p, dq)
+                        .and_then(|k| k.with_layer(m.layer_flexibility_mm_per_mpa(), [0.0, 0.0]))
+                        .map_err(ContactRunError::Kernel)?,
+                    false => kernel(dq)?,
+                };
+                let solver = TangentialSolver::new(&k0, &ks, &x, &y).map_err(ContactRunError::Kernel)?;
                 rolled.push((dq, solver));
             }
         }
