@@ -252,7 +252,7 @@ pub const FEATURES: &[Feature] = &[
         name: "an elastic interface layer",
         control: "M, GG3, LAYTHK",
         supported: true,
-        reason: "imported as [material] layer_g_mpa = GG3, layer_thickness_mm = LAYTHK (none where LAYTHK < 1e-10, as CONTACT): the exact solver adds the layer's flexibility LAYTHK/GG3 to the half-spaces' tangential self-influence, carried with the material (docs/models.md, \"Interface layer\")",
+        reason: "imported as [material] layer_g_mpa = GG3, layer_thickness_mm = LAYTHK (none where LAYTHK < 1e-10, as CONTACT): the exact solver adds the layer's flexibility LAYTHK/GG3 to the half-spaces' tangential self-influence, carried with the material in steady rolling and in place in transient rolling, as CONTACT (docs/models.md, \"Interface layer\")",
         used: |c| {
             let [gg3, laythk, ..] = layer_in_force(c)?;
             Some(format!("M = 4, GG3 = {gg3}, LAYTHK = {laythk}"))
