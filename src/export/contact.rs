@@ -19,8 +19,8 @@
 //! Signs: cx, cy, cs are CKSI, CETA, CPHI as they are (this project uses CONTACT's convention).
 //!
 //! An interface layer (`[material] layer_g_mpa`, `layer_thickness_mm`) is CONTACT's M = 4 in every
-//! case, GG3, LAYTHK, TAU_C0 (the yield limit, 0 for none) and K_TAU (the rate it moves at) after the material's POISS, GG; refused in transient
-//! rolling ([`check`]).
+//! case, GG3, LAYTHK, TAU_C0 (the yield limit, 0 for none) and K_TAU (the rate it moves at) after the material's POISS, GG; in transient rolling
+//! both programs take the layer's previous displacement at the element's own index.
 //!
 //! Surface temperatures (`[material] bulk1_c` … `density2_kg_per_mm3`) are CONTACT's H = 3 in the
 //! first case, its BKTEMP, HEATCP, LAMBDA, DENS lines after the material, and H = 1 after.
@@ -79,7 +79,6 @@ const F_ABSENT: f64 = 1e-8;
 /// `m_friclaw.f90` lines 798-855): Coulomb's μ (FSTAT = FKIN, of every case and grid row) and a
 /// falling law's SABSH1, SABSH2 where their term is present. An error names the scene's key.
 pub fn check(p: &Problem) -> Result<(), InputError> {
-    check_layer(p)?;
     check_visco(p)?;
     match &p.friction {
         FrictionLaw::Coulomb { .. } => check_coulomb(p),
@@ -89,22 +88,6 @@ pub fn check(p: &Problem) -> Result<(), InputError> {
         }
         // FREF > 0, FREF + DFHEAT > 0 (the scene's reader): CONTACT's ranges (`fric_input`).
         FrictionLaw::Temperature(_) => Ok(()),
-    }
-}
-
-/// An interface layer (M = 4) in shifts and steady rolling only: in transient rolling CONTACT
-/// takes the layer's previous displacement at the element's own index on the moved grid
-/// (`m_stang.f90`), not with the material as this project does, so the deck would compute another
-/// problem.
-fn check_layer(p: &Problem) -> Result<(), InputError> {
-    let rolls_transient = p.rolling.motion == Motion::Rolling && p.loading.is_transient();
-    match p.material.layer {
-        Some(l) if rolls_transient => Err(InputError::new(
-            "material.layer_g_mpa",
-            format!("an interface layer (layer_g_mpa = {}) in transient rolling", l.g_mpa),
-            "an interface layer in steady rolling or shifts (CONTACT's transient rolling with M = 4 keeps the layer's displacement on the moved grid, not with the material)",
-        )),
-        _ => Ok(()),
     }
 }
 

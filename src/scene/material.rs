@@ -82,7 +82,7 @@ pub const LAYER_KEYS: Keys = Keys {
             "mm",
             Allowed::Number(Range::new(0.0, true, 1e3, true), ""),
             Absent::Text("– (no layer; with `layer_g_mpa`)"),
-            r#"the layer's thickness h3 (LAYTHK); only h3/G3 matters: `layer_thickness_mm = 1.25`"#,
+            r#"the layer's thickness h3 (LAYTHK); only h3/G3 matters; its displacement moves with the material in steady rolling and stays in place in transient rolling, as CONTACT's: `layer_thickness_mm = 1.25`"#,
         ),
     ],
 };
@@ -104,7 +104,7 @@ pub const PLASTIC_KEYS: Keys = Keys {
             "MPa/mm",
             Allowed::Number(Range::new(-1e10, false, 1e10, false), ""),
             Absent::Num(0.0),
-            r#"the rate K_TAU (CONTACT's K_TAU, N/mm³) at which each element's yield limit moves with its accumulated plastic slip, τc = τ_c0 + K_TAU Σ|Δu_pl|, not below 0.1 τ_c0 nor (hardening) above μ pn; > 0 hardens, < 0 softens, 0 elastic-perfectly plastic; with `layer_yield_mpa`, in shifts (`[rolling] motion = "shift"`) and steady rolling (a sweep: each element's limit taken from the element upstream), not in transient rolling: `layer_hardening_mpa_per_mm = 435.0`"#,
+            r#"the rate K_TAU (CONTACT's K_TAU, N/mm³) at which each element's yield limit moves with its accumulated plastic slip, τc = τ_c0 + K_TAU Σ|Δu_pl|, not below 0.1 τ_c0 nor (hardening) above μ pn; > 0 hardens, < 0 softens, 0 elastic-perfectly plastic; with `layer_yield_mpa`, in shifts (`[rolling] motion = "shift"`), steady rolling (a sweep: each element's limit taken from the element upstream) and transient rolling along x (`chi_deg` 0, or 180 for the whole history: each element's limit moved with the material by dq before the step): `layer_hardening_mpa_per_mm = 435.0`"#,
         ),
     ],
 };

@@ -281,11 +281,17 @@ fn check_model(problem: &Problem, m: &ModelDef, shifts: bool) -> Result<(), Inpu
         }
     }
     if let Some(k) = problem.material.layer.filter(|l| l.hardens()).map(|l| l.hardening_mpa_per_mm) {
-        if problem.rolling.motion != Motion::Shift && problem.loading.is_transient() {
+        let rolls = problem.rolling.motion != Motion::Shift && problem.loading.is_transient();
+        // Along +x in the solver's frame: CHI = 0 on every row, or 180 for the whole history
+        // (the solver's mirrored frame).
+        let chi = problem.rolling.chi_deg;
+        let mirrored = chi == 180.0 && problem.loading.rows().all(|s| s.chi_deg.is_none());
+        let turned = problem.loading.rows().map(|s| s.chi_deg_or(chi)).find(|&c| c != 0.0 && !mirrored);
+        if let Some(chi_deg) = turned.filter(|_| rolls) {
             return Err(InputError::new(
-                "material.layer_hardening_mpa_per_mm",
-                format!("a yield limit moving at {k} MPa/mm in transient rolling"),
-                "a layer that hardens or softens with shifts ([rolling] motion = \"shift\", CONTACT's T = 1) or in steady rolling (a sweep, CONTACT's T = 3: each limit carried from the element upstream, as its SteadyGS); in transient rolling each element's limit and plastic slip would move with the material from step to step (CONTACT's ConvexGS), which the transient solver does not carry",
+                "rolling.chi_deg",
+                format!("a yield limit moving at {k} MPa/mm in transient rolling at CHI = {chi_deg} deg"),
+                "a layer that hardens or softens in transient rolling along x (chi_deg = 0, or 180 for the whole history: each element's limit moved with the material by dq along the row, as CONTACT's set_prev_data shifts TAUCS); shifts and steady rolling take any layer that hardens or softens",
             ));
         }
     }

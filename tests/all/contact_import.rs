@@ -668,11 +668,11 @@ fn an_absent_falling_term_takes_contacts_smallest_sabsh() {
     }
 }
 
-/// The interface layer's refusals: a layer that hardens or softens (TAU_C0 > 0, K_TAU != 0) and transient rolling
-/// (T = 2, where CONTACT does not carry the layer's displacement with the material); the elastic
-/// layer in steady rolling imports, a LAYTHK below 1e-10 as no layer (CONTACT's `use_3bl`).
+/// The interface layer in the import: elastic, elasto-plastic and hardening in steady and
+/// transient rolling, a hardening one refused in transient rolling at another CHI; a LAYTHK below
+/// 1e-10 as no layer (CONTACT's `use_3bl`).
 #[test]
-fn an_elasto_plastic_layer_and_a_layer_in_transient_rolling_are_refused() {
+fn the_interface_layer_imports_in_steady_and_transient_rolling() {
     let deck = |tang: &str, layer: &str| {
         format!(
             " 3 MODULE\n  20{tang}100  P-B-T-N-F-S\n  022420  L-D-C-M-Z-E\n 0000341  H-G-I-A-O-W-R\n   80 200 5 1 1e-6  MAXGS\n 106700. 0.001 0.0 0.0  FN, CKSI, CETA, CPHI\n   0.33 0.33  FSTAT, FKIN\n   0.0 0.5 10000.  CHI, DQ, VELOC\n   0.28 0.28 82000. 82000.  POISS, GG\n   {layer}  GG3, LAYTHK, TAU_C0, K_TAU\n   -2  IPOTCN\n   48 44 0.0008 0.5 1.1  MX, MY, A1, AOB, SCALE\n 0 MODULE\n"
@@ -688,18 +688,24 @@ fn an_elasto_plastic_layer_and_a_layer_in_transient_rolling_are_refused() {
     assert!(hardening.statuses[0].supported(), "{:?}", hardening.statuses[0]);
     let text = &hardening.scenes[0].files[0].1;
     assert!(text.contains("layer_hardening_mpa_per_mm = 435.0") && text.contains("kind = \"sweep\""), "{text}");
-    let hardening = import("2", "8200. 1.25 200. 435.");
-    assert!(!hardening.statuses[0].supported());
-    let why = &hardening.statuses[0].refused;
-    assert!(
-        why.iter().any(|r| r.starts_with(
-            "M = 4, TAU_C0 = 200, K_TAU = 435, LAYTHK = 1.25, T = 2, L = 0: an elasto-plastic interface layer that hardens or softens in transient rolling"
-        )),
-        "{why:?}"
-    );
-    let transient = import("2", "8200. 1.25 0. 0.");
-    let why = &transient.statuses[0].refused;
-    assert!(why.iter().any(|r| r.starts_with("M = 4, T = 2: an interface layer in transient rolling")), "{why:?}");
+    // In transient rolling the layer imports (its previous displacement taken at the element's
+    // own index, as CONTACT), hardening or not, on a layer or on the surface (LAYTHK = 0), the
+    // limits moved with the material; at another CHI than 0 or 180 a moving limit is refused.
+    for layer in ["8200. 1.25 200. 435.", "8200. 0. 200. 435.", "8200. 1.25 0. 0."] {
+        let transient = import("2", layer);
+        assert!(transient.statuses[0].supported(), "{layer}: {:?}", transient.statuses[0]);
+    }
+    let surface = import("2", "8200. 0. 200. 435.");
+    let text = &surface.scenes[0].files[0].1;
+    assert!(text.contains("layer_hardening_mpa_per_mm = 435.0") && text.contains("layer_thickness_mm = 0.0"), "{text}");
+    let turned = import_text(
+        "layer.inp",
+        "layer",
+        &deck("2", "8200. 1.25 200. 435.").replace("   0.0 0.5 10000.", "   30.0 0.5 10000."),
+    )
+    .unwrap();
+    let why = &turned.statuses[0].refused;
+    assert!(why.iter().any(|r| r.contains("hardens or softens in transient rolling at another CHI")), "{why:?}");
     let elastic = import("3", "8200. 1.25 0. 0.");
     assert!(elastic.statuses[0].supported(), "{:?}", elastic.statuses[0]);
     assert!(elastic.scenes[0].files[0].1.contains("layer_thickness_mm = 1.25"), "{}", elastic.scenes[0].files[0].1);

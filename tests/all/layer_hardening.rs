@@ -40,14 +40,17 @@ fn the_rate_is_read_with_its_yield_limit_in_shifts_and_exports_as_k_tau() {
     assert!(err.contains("material.layer_hardening_mpa_per_mm") && err.contains("with its yield limit"), "{err}");
     assert!(!dir.join("out").exists());
     // In steady rolling (a sweep): run, each limit carried from the element upstream (CONTACT's
-    // SteadyGS); in transient rolling refused (the limits and plastic slip would move with the
-    // material from step to step, CONTACT's ConvexGS).
+    // SteadyGS); in transient rolling along x run, the limits moved with the material before each
+    // step (CONTACT's set_prev_data); at another rolling direction refused.
     let (code, err, _) = run_scene("hardening_steady", &scene(HARDENING, true), &simulate);
     assert_eq!(code, Some(0), "{err}");
     let transient = scene(HARDENING, false).replace("[rolling]\nmotion = \"shift\"\n", "");
-    let (code, err, dir) = run_scene("hardening_rolling", &transient, &simulate);
+    let (code, err, _) = run_scene("hardening_rolling", &transient, &simulate);
+    assert_eq!(code, Some(0), "{err}");
+    let turned = format!("{transient}\n[rolling]\nchi_deg = 90.0\n");
+    let (code, err, dir) = run_scene("hardening_turned", &turned, &simulate);
     assert_eq!(code, Some(2), "{err}");
-    assert!(err.contains("material.layer_hardening_mpa_per_mm") && err.contains("transient rolling"), "{err}");
+    assert!(err.contains("rolling.chi_deg") && err.contains("transient rolling"), "{err}");
     assert!(!dir.join("out").exists());
     let (code, err, _) = run_scene("hardening_range", &scene(&HARDENING.replace("435.0", "1e11"), false), &simulate);
     assert_eq!(code, Some(2), "{err}");

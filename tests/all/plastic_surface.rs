@@ -2,12 +2,13 @@
 //! (M = 4 with LAYTHK = 0 and TAU_C0 > 0, `[material] layer_thickness_mm = 0` with
 //! `layer_yield_mpa`): each deck's supported scene of `scenes/contact_public` simulated and
 //! compared with the totals CONTACT printed in its `.ref_out` (fx/fn, fy/fn and, under a
-//! prescribed force, the shift found), in half-units of the printed value's last digit; the
-//! cases the import refuses name what is missing (a yield limit that moves in rolling).
+//! prescribed force, the shift found), in half-units of the printed value's last digit; every
+//! case is imported, the hardening surface in transient rolling too (its limits moved with the
+//! material before each step).
 
 use crate::common::{root, tempdir};
 use creepbench::comparison::references::contact_output::printed::Printed;
-use creepbench::comparison::references::contact_public::{PublicCases, RowDiff, CX, FX, FX_NOISE, FY};
+use creepbench::comparison::references::contact_public::{PublicCases, RowDiff, CX, FX, FX_NOISE, FY, MZ_Q};
 use std::path::Path;
 use std::process::Command;
 
@@ -145,11 +146,12 @@ fn moving_yield_limit_in_steady_rolling_at_printed_digits() {
     assert!(h.column("hardening_converged").unwrap().iter().all(|&c| c == 1.0));
 }
 
-/// The cases of these decks the import refuses name the feature: the surface's plasticity in
-/// transient rolling (catt2d_plast 2, catt3d_plast 4); carter_plast 1 and tractcurve_plast 31 (a
-/// yield limit that moves in steady rolling) are imported.
+/// The import takes every case of these decks: carter_plast 1 and tractcurve_plast 31 (a yield
+/// limit that moves in steady rolling), catt2d_plast 2 and catt3d_plast 4 (the surface hardening
+/// in transient rolling); a layer with a thickness in transient rolling stays refused
+/// (tests/all/contact_import.rs).
 #[test]
-fn the_refused_cases_name_what_is_missing() {
+fn every_case_of_the_plasticity_decks_is_imported() {
     let dir = tempdir("plastic_surface_refused");
     let deck = |name: &str| root().join(format!("reference/contact_public/testbank/examples_plast/{name}.inp"));
     let import = |name: &str| {
@@ -166,19 +168,63 @@ fn the_refused_cases_name_what_is_missing() {
             .unwrap();
         String::from_utf8_lossy(&o.stderr).to_string() + &String::from_utf8_lossy(&o.stdout)
     };
-    let line = |text: &str, case: usize| {
-        let head = format!("skipped case {case} (");
-        text.lines().find(|l| l.starts_with(&head)).map(str::to_string)
-    };
-    let carter = import("carter_plast");
-    assert!(line(&carter, 1).is_none(), "{carter}");
-    let tract = import("tractcurve_plast");
-    assert!(line(&tract, 31).is_none(), "{tract}");
-    let transient = "M = 4, T = 2: an interface layer in transient rolling";
-    let moving = "hardens or softens in transient rolling";
-    let catt2d = line(&import("catt2d_plast"), 2).expect("case 2 refused");
-    assert!(catt2d.contains(transient) && catt2d.contains(moving), "{catt2d}");
-    let catt3d = import("catt3d_plast");
-    assert!(line(&catt3d, 4).is_some_and(|l| l.contains(transient)), "{catt3d}");
-    assert!(line(&catt3d, 1).is_none() && line(&catt3d, 2).is_none(), "{catt3d}");
+    for name in ["carter_plast", "tractcurve_plast", "catt2d_plast", "catt3d_plast", "plastic_one_shift"] {
+        let text = import(name);
+        assert!(!text.lines().any(|l| l.starts_with("skipped case ")), "{name}: {text}");
+    }
+}
+
+/// The scene `name`'s stored history column `column` (simulated into `out` by [`diffs`]).
+fn column(out: &Path, name: &str, column: &str) -> Vec<f64> {
+    let stored = creepbench::suite::results::read_scene(out, name).unwrap();
+    stored.histories["contact"].column(column).unwrap()
+}
+
+/// catt2d_plast.inp cases 1-50: the hardening surface (TAU_C0 = 35, K_TAU = 123000) shifted under
+/// FX/FSTAT/FN = 0.6 (case 1), then rolled at cx = -4e-4 for 49 steps of dq = dx (T = 2, P = 0),
+/// each element's yield limit moved with the material before the step (CONTACT's set_prev_data):
+/// every case within the gate's 2 half-units (measured worst 1.01, case 29). Case 2 as CONTACT
+/// prints it: FX/FSTAT/FN = 0.6051, 17 elements in adhesion and 4 + 5 slipping or flowing
+/// (NADH, NSLIP, NPLAST); case 50: 0.6379, 11 and 8 + 7. The limits rose above TAU_C0.
+#[test]
+fn catt2d_plast_hardening_in_transient_rolling_at_printed_digits() {
+    let out = tempdir("plastic_surface_catt2d_rolling");
+    let d = diffs(&out, "catt2d_plast_1");
+    let w = worst(&d, 1..=50);
+    assert!(w <= 2.0, "worst {w} half-units: {d:?}");
+    for (case, printed, adhesion, slip) in [(2, 0.6051, 17.0, 4.0 + 5.0), (50, 0.6379, 11.0, 8.0 + 7.0)] {
+        let fx = d.iter().find(|r| r.case == case && r.quantity == FX).unwrap();
+        assert!((fx.printed.value.abs() - 0.5 * printed).abs() < 1e-9, "case {case}: {fx:?}");
+        assert!(fx.half_units() <= 1.0, "case {case}: {fx:?}");
+        let row = case - 1;
+        assert_eq!(column(&out, "catt2d_plast_1", "n_adhesion")[row], adhesion, "case {case}");
+        assert_eq!(column(&out, "catt2d_plast_1", "n_slip")[row], slip, "case {case}");
+    }
+    let tau_max = column(&out, "catt2d_plast_1", "tau_c_max_mpa");
+    assert!(tau_max.last().is_some_and(|&t| t > 50.0), "{tau_max:?}");
+    assert!(column(&out, "catt2d_plast_1", "hardening_converged").iter().all(|&c| c == 1.0));
+}
+
+/// catt3d_plast.inp: the 3-D circle (34 x 33 elements, TAU_C0 = 0.005, K_TAU = 0.42857) rolled
+/// from rest under FX/FSTAT/FN = 0.6918 (case 3, CREEP X found), then at cx = -0.0034 for 56
+/// steps (4-59), and the elastic-perfectly plastic surface (K_TAU = 0) rolled from rest and one
+/// step on (60-61; 62-63 the same by CONTACT's other solver): every case within the gate's 2
+/// half-units (measured worst 1.02, case 9); case 59 with CONTACT's 282 elements in adhesion.
+#[test]
+fn catt3d_plast_transient_rolling_at_printed_digits() {
+    let out = tempdir("plastic_surface_catt3d_rolling");
+    let d = diffs(&out, "catt3d_plast_3");
+    assert!(d.iter().any(|r| r.quantity == CX && r.case == 3), "the creepage found is compared: {d:?}");
+    // MZ = 0 by symmetry; CONTACT prints its iteration's noise (up to 1.05e-6 N mm, cases 43-46
+    // and 54-56; tolerances.toml reports it, not gated): ours stays below 1e-9 N mm.
+    let (mz, d): (Vec<RowDiff>, Vec<RowDiff>) = d.into_iter().partition(|r| r.quantity == MZ_Q);
+    assert!(mz.iter().all(|r| r.ours.abs() < 1e-9 && r.printed.value.abs() < 1.1e-6), "{mz:?}");
+    let w = worst(&d, 3..=59);
+    assert!(w <= 2.0, "worst {w} half-units");
+    assert_eq!(column(&out, "catt3d_plast_3", "n_adhesion").last(), Some(&282.0));
+    for (name, cases) in [("catt3d_plast_60", 60..=61), ("catt3d_plast_62", 62..=63)] {
+        let d = diffs(&out, name);
+        let w = worst(&d, cases);
+        assert!(w <= 1.0, "{name}: worst {w} half-units: {d:?}");
+    }
 }

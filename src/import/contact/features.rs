@@ -252,7 +252,7 @@ pub const FEATURES: &[Feature] = &[
         name: "an elastic interface layer",
         control: "M, GG3, LAYTHK",
         supported: true,
-        reason: "imported as [material] layer_g_mpa = GG3, layer_thickness_mm = LAYTHK (none where LAYTHK < 1e-10, as CONTACT): the exact solver adds the layer's flexibility LAYTHK/GG3 to the half-spaces' tangential self-influence, carried with the material (docs/models.md, \"Interface layer\")",
+        reason: "imported as [material] layer_g_mpa = GG3, layer_thickness_mm = LAYTHK (none where LAYTHK < 1e-10, as CONTACT): the exact solver adds the layer's flexibility LAYTHK/GG3 to the half-spaces' tangential self-influence, carried with the material in steady rolling and in place in transient rolling, as CONTACT (docs/models.md, \"Interface layer\")",
         used: |c| {
             let [gg3, laythk, ..] = layer_in_force(c)?;
             Some(format!("M = 4, GG3 = {gg3}, LAYTHK = {laythk}"))
@@ -262,14 +262,14 @@ pub const FEATURES: &[Feature] = &[
         name: "an elasto-plastic interface layer",
         control: "M, TAU_C0, K_TAU",
         supported: true,
-        reason: "imported as [material] layer_yield_mpa = TAU_C0 and layer_hardening_mpa_per_mm = K_TAU (where not 0: in shifts and steady rolling), with layer_thickness_mm = 0 where LAYTHK = 0 (the bodies' surface yields): the traction bound min(mu pn, tau_c) per element, as CONTACT's `tangcg` and `gdsteady` set it, tau_c = TAU_C0 + K_TAU times the element's accumulated plastic slip, as its `plstrc` moves it; in steady rolling each element's tau_c taken from the element upstream, as its `stdygs` carries it (docs/models.md, \"Interface layer\")",
+        reason: "imported as [material] layer_yield_mpa = TAU_C0 and layer_hardening_mpa_per_mm = K_TAU (where not 0), with layer_thickness_mm = 0 where LAYTHK = 0 (the bodies' surface yields): the traction bound min(mu pn, tau_c) per element, as CONTACT's `tangcg` and `gdsteady` set it, tau_c = TAU_C0 + K_TAU times the element's accumulated plastic slip, as its `plstrc` moves it; in steady rolling each element's tau_c taken from the element upstream, as its `stdygs` carries it; in transient rolling moved with the material by DQ before each step, as its `set_prev_data` shifts TAUCS (docs/models.md, \"Interface layer\")",
         used: |c| plastic_layer(c).map(|[_, _, tau_c0, k_tau]| format!("M = 4, TAU_C0 = {tau_c0}, K_TAU = {k_tau}")),
     },
     Feature {
-        name: "an elasto-plastic interface layer that hardens or softens in transient rolling, or with falling friction or dissimilar bodies",
-        control: "M, TAU_C0, K_TAU, LAYTHK, T, L, GG 1, 2",
+        name: "an elasto-plastic interface layer that hardens or softens in transient rolling at another CHI, or with falling friction or dissimilar bodies",
+        control: "M, TAU_C0, K_TAU, LAYTHK, T, CHI, L, GG 1, 2",
         supported: false,
-        reason: "supported: TAU_C0 = 0 (an elastic layer), or TAU_C0 > 0 (on a layer, or LAYTHK = 0: the bodies' surface) with Coulomb friction (L = 0) and quasi-identical bodies, K_TAU != 0 in shifts (T = 1) and steady rolling (T = 3, each limit carried from the element upstream as CONTACT's `stdygs`); a yield limit that moves in transient rolling (CONTACT's `cnvxgs` carries each element's limit TAUCS and plastic slip with the material from step to step, which this project's transient solver does not hold) and the combinations with falling friction or K != 0 are not modelled",
+        reason: "supported: TAU_C0 = 0 (an elastic layer), or TAU_C0 > 0 (on a layer, or LAYTHK = 0: the bodies' surface) with Coulomb friction (L = 0) and quasi-identical bodies, K_TAU != 0 in shifts (T = 1), steady rolling (T = 3, each limit carried from the element upstream as CONTACT's `stdygs`) and transient rolling along x (T = 2 at CHI = 0 or 180: each element's limit moved with the material by DQ before the step, as CONTACT's `set_prev_data` shifts TAUCS with `gf3_dq_shift`, TAU_C0 entering at the leading edge); transient rolling with a moving limit at another CHI and the combinations with falling friction or K != 0 are not modelled",
         used: |c| {
             let [_, laythk, tau_c0, k_tau] = layer_in_force(c)?;
             let other = plastic_layer(c).is_none();
@@ -281,10 +281,13 @@ pub const FEATURES: &[Feature] = &[
     },
     Feature {
         name: "an interface layer in transient rolling",
-        control: "M, T",
-        supported: false,
-        reason: "supported: M = 4 in shifts (T = 1) and steady rolling (T = 3); in transient rolling CONTACT takes the layer's previous displacement at the element's own index on the moved grid (`m_stang.f90`: the shifted influence functions with the layer's FLX on the element itself), where this project carries it with the material; with a yield limit (TAU_C0 > 0, also at LAYTHK = 0) each element's plastic slip and limit TAUCS would move with the material too, which the transient solver does not carry",
-        used: |c| layer_in_force(c).filter(|_| c.digits.t == 2).map(|_| "M = 4, T = 2".to_string()),
+        control: "M, LAYTHK, T",
+        supported: true,
+        reason: "imported as the layer (above): in transient rolling the exact solver takes the layer's previous displacement at the element's own index on the moved grid, as CONTACT does (`stang_rhs` in `m_stang.f90` forms the previous displacement from the previous tractions PV with the shifted coefficients CV, whose layer term, `gf3_aijpj` in `m_aijpj.f90`, adds FLX times PV of the element itself), not with the material as in steady rolling (docs/models.md, \"Interface layer\")",
+        used: |c| {
+            let flexible = layer_in_force(c).filter(|l| l[1] >= 1e-10 && c.digits.t == 2);
+            flexible.map(|[_, laythk, ..]| format!("M = 4, LAYTHK = {laythk}, T = 2"))
+        },
     },
     Feature {
         name: "CONTACT's modified FaStrip (strip theory with the simplified theory)",
@@ -459,12 +462,13 @@ pub fn contact_fastrip(c: &Case3) -> bool {
 }
 
 /// GG3, LAYTHK, TAU_C0, K_TAU of an elasto-plastic layer the import carries: TAU_C0 > 0 (on a
-/// layer, or LAYTHK = 0: the bodies' surface), K_TAU = 0 or not in transient rolling (T = 2),
-/// Coulomb friction, K = 0.
+/// layer, or LAYTHK = 0: the bodies' surface), K_TAU ≠ 0 in transient rolling (T = 2) only along
+/// x (CHI = 0 or 180), Coulomb friction, K = 0.
 pub fn plastic_layer(c: &Case3) -> Option<[f64; 4]> {
     let l = layer_in_force(c)?;
     let coupled = combine_bodies(c.state.poiss, c.state.gg_mpa).k != 0.0;
-    let moving = l[3] != 0.0 && c.digits.t == 2;
+    let along_x = super::scene::along_x(c.state.chi_rad);
+    let moving = l[3] != 0.0 && c.digits.t == 2 && !along_x;
     let carried = l[2] > 1e-10 && !moving && c.state.friction_law == 0 && !coupled;
     carried.then_some(l)
 }

@@ -12,7 +12,9 @@
 //! (exact for one element): τc ← (τc_new + K_TAU C τc)/(1 + K_TAU C), kept where the slip can
 //! take it ([`Layer::reachable_mpa`]). The limits the last solve's slip gives, τc' + K_TAU |Δu_pl|,
 //! are kept for the next step (as CONTACT's `taucs`), so that a change per step below the
-//! tolerance still accumulates.
+//! tolerance still accumulates. In transient rolling the kept limits move with the material by
+//! dq before the step ([`Hardening::carry`]), τ_c0 entering at the leading edge, as CONTACT's
+//! `set_prev_data` (`m_sdis.f90`) shifts `taucs` to `taucv`.
 
 use super::steady_hardening::SteadyLimits;
 use super::tangential::{ElementState, StepResult};
@@ -82,6 +84,16 @@ impl Hardening {
         self.tau_mpa = tau_mpa;
     }
 
+    /// Moves the kept limits with the material before a transient rolling step of `courant` =
+    /// dq/dx elements along +x (the solver's frame, upstream at i − 1) on rows of `mx` elements:
+    /// each element takes the limit of the material that arrives there, linearly between the two
+    /// elements it came from, τ_c0 where it entered the grid, as CONTACT's `set_prev_data` moves
+    /// `taucs` to `taucv` (`m_sdis.f90`, `gf3_dq_shift` with TAU_C0 outside).
+    pub fn carry(&mut self, mx: usize, courant: f64) {
+        let tau_c0 = self.layer.yield_mpa.unwrap_or(f64::INFINITY);
+        self.tau_mpa = carried(&self.tau_mpa, mx, courant, tau_c0);
+    }
+
     /// One step on the friction bound's pressure `pn` [MPa] at μ `mu`: `solve(bound, start)`
     /// solves the step with the bound's pressure `bound` [MPa], warm started from the last
     /// iterate's tractions `start` when given. Returns the last solve, the limits its slip gives
@@ -134,6 +146,26 @@ impl Hardening {
         }
         unreachable!("the loop returns at its last iteration")
     }
+}
+
+/// `field` on rows of `mx` elements moved `courant` elements along +x: element i takes the value
+/// at i − courant, linear between the two elements around it, `outside` beyond the row's
+/// upstream edge (CONTACT's `gf3_dq_shift` at CHI = 0, `m_gridfunc.f90`).
+pub fn carried(field: &[f64], mx: usize, courant: f64, outside: f64) -> Vec<f64> {
+    let whole = courant.floor();
+    let (k, frac) = (whole as isize, courant - whole);
+    let at = |row: usize, i: isize| if (0..mx as isize).contains(&i) { field[row * mx + i as usize] } else { outside };
+    (0..field.len())
+        .map(|n| {
+            let (row, i) = (n / mx, (n % mx) as isize);
+            let near = at(row, i - k);
+            if frac == 0.0 {
+                near
+            } else {
+                (1.0 - frac) * near + frac * at(row, i - k - 1)
+            }
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -260,6 +292,17 @@ mod tests {
             // Both kinds happened: elements that flowed, and elements that slipped by friction.
             assert!(tau_closed.iter().any(|&t| t != 150.0) && pn.iter().any(|&p| mu * p < 150.0));
         }
+    }
+
+    /// The limits move with the material: one element per dq = dx, τ_c0 entering upstream; half
+    /// an element, halfway between the two.
+    #[test]
+    fn the_limits_move_with_the_material() {
+        let field = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0];
+        assert_eq!(carried(&field, 3, 1.0, 9.0), [9.0, 1.0, 2.0, 9.0, 4.0, 5.0]);
+        assert_eq!(carried(&field, 3, 0.0, 9.0), field);
+        assert_eq!(carried(&field, 3, 0.5, 9.0), [5.0, 1.5, 2.5, 6.5, 4.5, 5.5]);
+        assert_eq!(carried(&field, 3, 2.0, 9.0), [9.0, 9.0, 1.0, 9.0, 9.0, 4.0]);
     }
 
     /// A change of the limit below the fixed point's tolerance is kept all the same: the limit the

@@ -214,14 +214,26 @@ fn tangential_at(
 ) -> Result<TangentialSolver, ContactError> {
     let (g, m, basis) = (&p.grid, &p.material, p.contact_solver.influence);
     let (dq, flx) = (p.rolling.dq_mm, m.layer_flexibility_mm_per_mpa());
+    let held = |offset: [f64; 2]| if layer_in_place(p) { [0.0, 0.0] } else { offset };
     if chi_deg == 0.0 {
-        let ks = kernel_along_x(p, dq)?.with_layer(flx, [dq, 0.0])?;
+        let ks = kernel_along_x(p, dq)?.with_layer(flx, held([dq, 0.0]))?;
         return TangentialSolver::new(k0, &ks, x, y);
     }
     let towards = direction::towards(chi_deg);
     let ks = Kernel::rolling(g.mx, g.my, (g.dx_mm, g.dy_mm), (m.g_mpa, m.poisson), (dq, towards), basis)?
-        .with_layer(flx, [dq * towards[0], dq * towards[1]])?;
+        .with_layer(flx, held([dq * towards[0], dq * towards[1]]))?;
     TangentialSolver::rolling_towards(k0, &ks, towards, x, y)
+}
+
+/// Whether the rolling solver takes an interface layer's previous displacement at the element's
+/// own index on the moved grid: in transient rolling with a layer's thickness, as CONTACT does
+/// (`stang_rhs` in `m_stang.f90` forms the previous displacement from the previous tractions with
+/// the shifted coefficients CV, whose layer term, `gf3_aijpj` in `m_aijpj.f90`, adds FLX times the
+/// previous traction of the element itself); steady rolling carries it with the material
+/// (its own solver, [`Contact::steady_dx`], as CONTACT's SteadyGS differences it along the rows).
+fn layer_in_place(p: &Problem) -> bool {
+    let rolls = p.rolling.motion == Motion::Rolling && p.loading.is_transient();
+    rolls && p.material.layer_flexibility_mm_per_mpa() > 0.0
 }
 
 /// The kernel of the grid with the field point shifted by `shift_mm` along x: elastic, or of
@@ -307,7 +319,8 @@ struct Contact<'a> {
     tangential: TangentialSolver,
     /// Steady rolling's solver where the rolling step `dq` is not the element length `dx`:
     /// CONTACT solves steady rolling with DQ = DX whatever DQ the input gives (SteadyGS;
-    /// `m_sdis.f90` warns "Using DQ = DX"), so does this solver; `None`: `tangential` serves.
+    /// `m_sdis.f90` warns "Using DQ = DX"), so does this solver; also where the history's
+    /// transient rolling takes a layer in place ([`layer_in_place`]); `None`: `tangential` serves.
     steady_dx: Option<TangentialSolver>,
     /// The solvers of the rows' own rolling distances (a table's `courant`: CONTACT's DQ changing
     /// within a history), one per distinct dq [mm] other than `[rolling]`'s.
@@ -422,7 +435,9 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
     }
     .map_err(ContactRunError::Kernel)?;
     let solves_steady = !p.loading.is_transient() || p.loading.steady_start().is_some();
-    let mut steady_dx = if solves_steady && p.rolling.dq_mm != g.dx_mm {
+    // A steady start of a history whose rolling takes a layer in place solves with its own kernel.
+    let own_steady = p.rolling.dq_mm != g.dx_mm || layer_in_place(p);
+    let mut steady_dx = if solves_steady && own_steady {
         Some(TangentialSolver::new(&k0, &kernel(g.dx_mm)?, &x, &y).map_err(ContactRunError::Kernel)?)
     } else {
         None
@@ -432,7 +447,14 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
         for s in &p.loading.samples {
             let dq = row_dq_mm(p, s);
             if dq != p.rolling.dq_mm && !rolled.iter().any(|(d, _)| *d == dq) {
-                let solver = TangentialSolver::new(&k0, &kernel(dq)?, &x, &y).map_err(ContactRunError::Kernel)?;
+                // A transient step's kernel: a layer in place ([`layer_in_place`]).
+                let ks = match layer_in_place(p) {
+                    true => kernel_along_x(p, dq)
+                        .and_then(|k| k.with_layer(m.layer_flexibility_mm_per_mpa(), [0.0, 0.0]))
+                        .map_err(ContactRunError::Kernel)?,
+                    false => kernel(dq)?,
+                };
+                let solver = TangentialSolver::new(&k0, &ks, &x, &y).map_err(ContactRunError::Kernel)?;
                 rolled.push((dq, solver));
             }
         }
@@ -806,6 +828,34 @@ impl Contact<'_> {
 /// A solve's tractions and the creepages found under prescribed forces.
 type Solved = (StepResult, Option<[f64; 2]>);
 
+/// A layer that hardens or softens, the friction bound's pressure [MPa] and where the step's
+/// limits and outcome are put ([`Hardening::step`]).
+type Limits<'h, 'k> = (&'h Hardening, &'h [f64], &'k mut Option<(Vec<f64>, HardeningOutcome)>);
+
+/// A transient step (rolling or a shift) after the tractions `(px, py)`; with `limits` the fixed
+/// point on the layer's yield limits around each solve ([`Hardening::step`], CONTACT's `plstrc`
+/// within its ConvexGS sweeps), the final solve's limits put in `limits`' slot.
+fn transient_with_limits(
+    solver: &mut TangentialSolver,
+    q: &TangentialParams,
+    (px, py): (&[f64], &[f64]),
+    older: Option<(&[f64], &[f64])>,
+    limits: Option<Limits<'_, '_>>,
+) -> Result<StepResult, ContactError> {
+    let Some((h, friction_pn, kept)) = limits else {
+        return solver.transient_step(q, px, py, older);
+    };
+    let (r, tau, outcome) = h.step(friction_pn, q.mu, |bound, start| {
+        solver.set_bound(bound)?;
+        match start {
+            Some(start) => solver.transient_resolve_from(q, start),
+            None => solver.transient_step(q, px, py, older),
+        }
+    })?;
+    *kept = Some((tau, outcome));
+    Ok(r)
+}
+
 impl Contact<'_> {
     /// A steady solve (prescribed forces: their creepages sought), warm started from `start`
     /// (the last outer iteration's tractions), else from the solver's previous steady solution.
@@ -861,10 +911,18 @@ impl Contact<'_> {
         let (slope, pn_sum) = self.loaded.as_ref().map(|l| (l.shift_slope, l.pn_sum)).expect("loaded before a solve");
         let solver = self.shift_start.as_mut().expect("built for a shift start");
         let zero = &self.zero;
-        force::solve_sample(at, &params, slope, pn_sum, &mut force::Memory::default(), |q| {
-            solver.transient_step(q, zero, zero, None)
+        // A layer that hardens or softens: the fixed point on its limits, as in a shift history.
+        let l = self.loaded.as_ref().expect("loaded before a solve");
+        let friction_pn = l.bound_pn.as_deref().unwrap_or(&l.pn);
+        let hardening = self.hardening.as_ref();
+        let mut kept: Option<(Vec<f64>, HardeningOutcome)> = None;
+        let solved = force::solve_sample(at, &params, slope, pn_sum, &mut force::Memory::default(), |q| {
+            let limits = hardening.map(|h| (h, friction_pn, &mut kept));
+            transient_with_limits(solver, q, (zero, zero), None, limits)
         })
-        .map_err(|source| ContactRunError::Step { step: at.step, source }.into())
+        .map_err(|source| ContactRunError::Step { step: at.step, source })?;
+        self.keep_hardened(kept);
+        Ok(solved)
     }
 
     /// A transient step (rolling or a shift) after the last step's tractions; with a layer that
@@ -882,19 +940,9 @@ impl Contact<'_> {
         let tangential = solver_for(&mut self.tangential, &mut self.rolled, params.dq_mm);
         let hardening = self.hardening.as_ref();
         let mut kept: Option<(Vec<f64>, HardeningOutcome)> = None;
-        let solved = force::solve_sample(at, params, slope, pn_sum, &mut self.outer, |q| match hardening {
-            None => tangential.transient_step(q, px, py, older),
-            Some(h) => {
-                let (r, tau, outcome) = h.step(friction_pn, q.mu, |bound, start| {
-                    tangential.set_bound(bound)?;
-                    match start {
-                        Some(start) => tangential.transient_resolve_from(q, start),
-                        None => tangential.transient_step(q, px, py, older),
-                    }
-                })?;
-                kept = Some((tau, outcome));
-                Ok(r)
-            }
+        let solved = force::solve_sample(at, params, slope, pn_sum, &mut self.outer, |q| {
+            let limits = hardening.map(|h| (h, friction_pn, &mut kept));
+            transient_with_limits(tangential, q, (px, py), older, limits)
         })
         .map_err(|source| ContactRunError::Step { step: at.step, source })?;
         self.keep_hardened(kept);
@@ -1110,10 +1158,15 @@ impl Stepper for Contact<'_> {
         }
         let params = self.params(at);
         self.found = None;
+        // Rolling with a layer that hardens or softens: the limits move with the material first.
+        if let (Some(h), Motion::Rolling) = (self.hardening.as_mut(), self.p.rolling.motion) {
+            h.carry(self.p.grid.mx, params.dq_mm / self.p.grid.dx_mm);
+        }
         // Prescribed forces: the plain transient step, its creepages sought by the outer iteration.
         let start = self.after_steady.take().filter(|s| s.load_changed(at) && !at.prescribes_force());
-        // Dissimilar bodies: the outer iteration solves every step to its tolerance.
-        let start = start.filter(|_| self.coupling.is_none());
+        // Dissimilar bodies (the outer iteration solves every step to its tolerance) and a layer
+        // that hardens or softens (the fixed point on its limits) take the step in full.
+        let start = start.filter(|_| self.coupling.is_none() && self.hardening.is_none());
         if let (Some(start), Some(steady), SteadyRestart::Contact) =
             (start, &self.last, self.p.contact_solver.steady_restart)
         {
