@@ -289,9 +289,9 @@ fn refuse_in_shifts(case: &WheelRailCase, models: &[String]) -> Result<(), Error
 }
 
 /// The rigid slip on the actual surfaces (CONTACT's D = 3 and the conformal approach, D = 4) is
-/// solved by the exact theory alone (the extra rigid slip per element), in steady rolling or
-/// shifts with friction, for bodies of one material without surface temperatures, on the contact
-/// locus of prismatic profiles, with the solver's default options.
+/// solved by the exact theory alone (the extra rigid slip per element), in steady rolling, shifts
+/// or transient rolling with friction, for bodies of one material without surface temperatures,
+/// on the contact locus of prismatic profiles, with the solver's default options.
 fn refuse_on_surfaces(case: &WheelRailCase, models: &[String], mu: &Friction) -> Result<(), Error> {
     let name = match case.approach {
         Approach::Planar => return Ok(()),
@@ -303,11 +303,6 @@ fn refuse_on_surfaces(case: &WheelRailCase, models: &[String], mu: &Friction) ->
         return Err(InputError::new("solvers", format!("{m:?}"), allowed).into());
     }
     let unsupported = [
-        (
-            matches!(case.motion, Motion::Transient { .. }),
-            "wheelrail.motion",
-            "steady rolling (\"rolling\") or shifts (\"shift_sequence\")",
-        ),
         (mu.frictionless, "wheelrail.frictionless", "friction (the tractions turn the pressure's force)"),
         (case.material.coupled(), "material", "one material for both bodies"),
         (case.heat.is_some(), "material", "no surface temperatures"),

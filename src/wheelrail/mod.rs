@@ -68,8 +68,6 @@ pub enum WheelRailError {
         "the conformal approach's curved reference needs both profiles' splines (profile files) reaching its rows"
     )]
     NoCurvedReference,
-    #[error("the conformal approach takes one interpenetration region per patch: {parts} regions between D_COMB and D_SEP apart make one blended patch (CONTACT's curved sub-patches are not modelled)")]
-    ConformalSubPatches { parts: usize },
 }
 
 /// Largest potential contact of one patch [elements].
@@ -486,9 +484,14 @@ fn patches_at(
         };
         let pen_mm = -geometry.h_mm.iter().copied().fold(f64::INFINITY, f64::min);
         let shift = matches!(case.motion, Motion::Shift { .. });
+        let step = match case.motion {
+            Motion::Shift { .. } => surface_slip::SlipStep::Shift,
+            Motion::Transient { dq_mm } => surface_slip::SlipStep::Rolling { dq_mm },
+            Motion::Rolling => surface_slip::SlipStep::Rolling { dq_mm: case.dx_mm },
+        };
         let rail_motion = (&rail_motion, case.roller.as_ref());
         let (creepages, extra_slip) =
-            match surface_slip::rigid_slip(&geometry, &wheel, (&velocity, rail_motion.0, rail_motion.1), shift) {
+            match surface_slip::rigid_slip(&geometry, &wheel, (&velocity, rail_motion.0, rail_motion.1), step) {
                 Some(slip) => (slip.creepages, Some(slip.extra)),
                 None => (creepage::at_reference(&geometry.frame, &wheel, &velocity, pen_mm, rail_motion, shift), None),
             };

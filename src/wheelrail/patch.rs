@@ -337,14 +337,48 @@ pub fn sub_patch_factors(parts: &[Extent], sep: &Separation) -> Vec<f64> {
 /// ((y − y_ref) / cos δ), widened by 0.4 D_COMB, rounded to the nearest element centres; a later
 /// sub-patch takes elements an earlier one holds; 0 outside all.
 pub fn sub_patch_of_elements(parts: &[Extent], frame: &PatchFrame, grid: &PatchGrid, sep: &Separation) -> Vec<u16> {
+    let cos = frame.delta_rad.cos();
+    let lateral = |e: &Extent| [(e.y_mm[0] - frame.origin.y) / cos, (e.y_mm[1] - frame.origin.y) / cos];
+    elements_of_parts(parts, frame, grid, sep, lateral)
+}
+
+/// The sub-patch of every element of a conformal patch (CONTACT's `m_wr_solvecp` with
+/// `compute_sc_for_yz`): as [`sub_patch_of_elements`], each sub-patch's lateral range the rows
+/// whose reference points lie nearest (in y, z) to its ends, the first of equals.
+pub fn curved_sub_patch_of_elements(
+    parts: &[Extent],
+    frame: &PatchFrame,
+    grid: &PatchGrid,
+    reference: &super::conformal_reference::CurvedReference,
+    sep: &Separation,
+) -> Vec<u16> {
+    let nearest_row = |y: f64, z: f64| {
+        let d2 = |j: usize| (y - reference.point_mm[j][0]).powi(2) + (z - reference.point_mm[j][1]).powi(2);
+        (0..reference.rows()).fold(0, |best, j| if d2(j) < d2(best) { j } else { best })
+    };
+    let row_s = |y: f64, z: f64| grid.centre(0, nearest_row(y, z)).1;
+    let lateral = |e: &Extent| [row_s(e.y_mm[0], e.z_mm[0]), row_s(e.y_mm[1], e.z_mm[1])];
+    elements_of_parts(parts, frame, grid, sep, lateral)
+}
+
+/// The sub-patch of every element from each sub-patch's x range and its `lateral` range on the
+/// grid [mm], both widened by 0.4 D_COMB and rounded to the nearest element centres; a later
+/// sub-patch takes elements an earlier one holds; 0 outside all.
+fn elements_of_parts(
+    parts: &[Extent],
+    frame: &PatchFrame,
+    grid: &PatchGrid,
+    sep: &Separation,
+    lateral: impl Fn(&Extent) -> [f64; 2],
+) -> Vec<u16> {
     let widen = 0.4 * sep.combine_mm;
     let mut part = vec![0u16; grid.len()];
     let (xc0, sc0) = grid.centre(0, 0);
     let index = |v: f64, c0: f64, size: f64, n: usize| ((v - c0) / size).round().clamp(-1.0, n as f64) as i64;
-    let cos = frame.delta_rad.cos();
     for (p, e) in parts.iter().enumerate() {
         let x = [e.x_mm[0] - frame.origin.x - widen, e.x_mm[1] - frame.origin.x + widen];
-        let s = [(e.y_mm[0] - frame.origin.y) / cos - widen, (e.y_mm[1] - frame.origin.y) / cos + widen];
+        let [s0, s1] = lateral(e);
+        let s = [s0 - widen, s1 + widen];
         let (i0, i1) = (index(x[0], xc0, grid.dx_mm, grid.mx).max(0), index(x[1], xc0, grid.dx_mm, grid.mx));
         let (j0, j1) = (index(s[0], sc0, grid.ds_mm, grid.ms).max(0), index(s[1], sc0, grid.ds_mm, grid.ms));
         for j in j0..=j1.min(grid.ms as i64 - 1) {
@@ -589,13 +623,19 @@ fn roller_distance(
 /// Where a widened grid reaches beyond the patch's own extent, no wheel surface: CONTACT meshes the
 /// wheel over the region's x and y ranges and two elements beyond (`wr_ud_planar`: `xmin` …
 /// `ymax`, the wheel's z −999 off the mesh), so an element whose point in the tangent plane lies
-/// further out does not touch (another patch's interpenetration there is that patch's).
-fn beyond_the_wheel_surface(c: &Candidate, frame: &PatchFrame, grid: &PatchGrid, h_mm: &mut [f64]) {
+/// further out does not touch (another patch's interpenetration there is that patch's). Row j lies
+/// at `row_s(j)` in the tangent plane (its own s; a conformal patch's row at its sp).
+fn beyond_the_wheel_surface(
+    c: &Candidate,
+    frame: &PatchFrame,
+    grid: &PatchGrid,
+    row_s: impl Fn(usize) -> f64,
+    h_mm: &mut [f64],
+) {
     let (mx, my) = (2.0 * grid.dx_mm, 2.0 * grid.ds_mm);
     for j in 0..grid.ms {
         for i in 0..grid.mx {
-            let (x, s) = grid.centre(i, j);
-            let p = frame.at(x, s);
+            let p = frame.at(grid.centre(i, j).0, row_s(j));
             let off = p.x < c.x_mm[0] - mx || p.x > c.x_mm[1] + mx || p.y < c.y_mm[0] - my || p.y > c.y_mm[1] + my;
             if off {
                 h_mm[j * grid.mx + i] = MISSED_MM;
@@ -630,7 +670,7 @@ pub fn build(
     }
     let mut grid = grid(c, &frame, rail, size_mm, motion)?;
     if approach == Approach::Conformal {
-        return build_conformal(c, frame, grid, (wheel, rail), (surface, motion, previous));
+        return build_conformal(c, frame, grid, (wheel, rail), (surface, motion, previous), sep);
     }
     let mut widened = false;
     if let (Some(_), Some(previous)) = (motion.super_grid_s_mm(), previous) {
@@ -657,7 +697,7 @@ pub fn build(
     };
     let mut h_mm = surfaces.gaps_mm();
     if widened {
-        beyond_the_wheel_surface(c, &frame, &grid, &mut h_mm);
+        beyond_the_wheel_surface(c, &frame, &grid, |j| grid.centre(0, j).1, &mut h_mm);
     }
     let blend = (c.parts.len() > 1).then(|| {
         let part = sub_patch_of_elements(&c.parts, &frame, &grid, sep);
@@ -683,39 +723,52 @@ pub fn build(
     })
 }
 
-/// The conformal patch of candidate `c` (CONTACT's D = 4, one region): its curved reference, the
-/// grid on it and the undeformed distance ([`conformal_grid`]); in a shift that continues a
-/// sequence the grid widened to the contact of the time before and the reference extended to it
-/// (`merge_prev_potcon`, `extend_curv_ref`).
+/// The conformal patch of candidate `c` (CONTACT's D = 4): its curved reference, the grid on it
+/// and the undeformed distance ([`conformal_grid`]); in a shift or transient step that continues
+/// a sequence the grid widened to the contact of the time before and the reference extended to it
+/// (`merge_prev_potcon`, `extend_curv_ref`); regions combined between D_COMB and D_SEP apart its
+/// sub-patches on the curved rows ([`curved_sub_patch_of_elements`], blended as planar ones).
 fn build_conformal(
     c: &Candidate,
     frame: PatchFrame,
     planar: PatchGrid,
     (wheel, rail): (&PlacedWheel, &PlacedRail),
     (surface, motion, previous): (WheelSurface, Motion, Option<&shift::Previous>),
+    sep: &Separation,
 ) -> Result<PatchGeometry, WheelRailError> {
-    if c.parts.len() > 1 {
-        return Err(WheelRailError::ConformalSubPatches { parts: c.parts.len() });
-    }
     let super_grid = motion.super_grid_s_mm().is_some();
     let mut reference = conformal_reference::curved_reference(c, &frame, (rail, wheel), planar.ds_mm, super_grid)
         .ok_or(WheelRailError::NoCurvedReference)?;
     let mut grid = conformal_grid::grid(&planar, &reference);
     let inherited =
         previous.filter(|_| super_grid).and_then(|p| shift::inherited_by(c.extent(), p).map(|old| (old, p.iterated)));
+    let widened = inherited.is_some();
     if let Some((old, iterated)) = inherited {
         grid = shift::widened(&grid, &old, iterated);
         reference = reference.extended(grid.first_index[1], grid.ms);
     }
     let (patch, surfaces) = conformal_grid::surfaces(&frame, &grid, reference, (wheel, rail), surface);
-    let h_mm = conformal_grid::undeformed_distance(&frame, &grid, &patch, &surfaces);
+    let mut h_mm = conformal_grid::undeformed_distance(&frame, &grid, &patch, &surfaces);
+    if widened {
+        beyond_the_wheel_surface(c, &frame, &grid, |j| patch.sp_mm[j], &mut h_mm);
+    }
+    let blend = (c.parts.len() > 1).then(|| {
+        let part = curved_sub_patch_of_elements(&c.parts, &frame, &grid, &patch.reference, sep);
+        // Outside every sub-patch nothing touches (CONTACT's planform, IPLAN = 4).
+        for (h, p) in h_mm.iter_mut().zip(&part) {
+            if *p == 0 {
+                *h = MISSED_MM;
+            }
+        }
+        Blend { part, factor: sub_patch_factors(&c.parts, sep), n: c.parts.len() }
+    });
     let rail_s_mm = rail.s_mm(frame.origin.y);
     Ok(PatchGeometry {
         frame,
         grid,
         h_mm,
         pen_max_mm: c.pen_max_mm,
-        blend: None,
+        blend,
         extent: c.extent(),
         rail_s_mm,
         curved: Some(patch),

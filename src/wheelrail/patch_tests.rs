@@ -72,3 +72,41 @@ fn past_its_end_the_rail_keeps_the_ends_n() {
     assert!((past_lo - 5.0 * s).abs() < 1e-12, "{past_lo}");
     assert_eq!(rail_n_past_end(&frame, &rail, 1.0), None);
 }
+
+/// A conformal patch's sub-patches on its curved rows (CONTACT's `compute_sc_for_yz`): each
+/// sub-patch's lateral range runs between the rows whose reference points lie nearest its ends
+/// (in y, z), widened by 0.4 D_COMB; where the reference bends away from the tangent plane this
+/// differs from the planar rule's s = (y − y_ref) / cos δ.
+#[test]
+fn sub_patches_on_curved_rows_take_the_rows_nearest_their_ends() {
+    use super::super::conformal_reference::CurvedReference;
+    let frame = PatchFrame { origin: Point3::new(0.0, 0.0, 0.0), delta_rad: 0.0 };
+    // Eleven rows 1 mm apart along a circle of radius 5 mm touching the plane at the reference:
+    // row j at arc length j − 5, angle θ = (j − 5) / 5, point (y, z) = (5 sin θ, 5 (1 − cos θ)).
+    let rows = 11;
+    let at = |theta: f64| [5.0 * theta.sin(), 5.0 * (1.0 - theta.cos())];
+    let point_mm: Vec<[f64; 2]> = (0..rows).map(|j| at((j as f64 - 5.0) / 5.0)).collect();
+    let reference = CurvedReference { first_row: -5, point_mm, normal: vec![[0.0, 0.0, -1.0]; rows] };
+    let grid = PatchGrid {
+        mx: 3,
+        ms: rows,
+        dx_mm: 1.0,
+        ds_mm: 1.0,
+        x0_mm: -1.5,
+        s0_mm: -5.5,
+        anchor_mm: [0.0, 0.0],
+        first_index: [-1, -5],
+    };
+    let sep = Separation { combine_mm: 0.5, ..SEP };
+    // Sub-patch 1 between the points of rows 1 and 2 (arc length −4, −3), sub-patch 2 at row 9's
+    // (arc length 4, y = 3.59 mm).
+    let extent = |a: [f64; 2], b: [f64; 2]| Extent { x_mm: [-1.0, 1.0], y_mm: [a[0], b[0]], z_mm: [a[1], b[1]] };
+    let parts = [extent(at(-0.8), at(-0.6)), extent(at(0.8), at(0.8))];
+    let by_row = |part: &[u16]| (0..rows).map(|j| part[j * grid.mx + 1]).collect::<Vec<u16>>();
+    let curved = curved_sub_patch_of_elements(&parts, &frame, &grid, &reference, &sep);
+    // Widened by 0.2 mm: rows 1–2, and row 9 alone.
+    assert_eq!(by_row(&curved), [0, 1, 1, 0, 0, 0, 0, 0, 0, 2, 0]);
+    // The planar rule takes sub-patch 2 at s = y = 3.59 ± 0.2 mm: rows 8 and 9.
+    let planar = sub_patch_of_elements(&parts, &frame, &grid, &sep);
+    assert_eq!(by_row(&planar), [0, 1, 1, 0, 0, 0, 0, 0, 2, 2, 0]);
+}

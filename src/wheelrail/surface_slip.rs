@@ -68,16 +68,25 @@ impl Velocities<'_> {
     }
 }
 
+/// The step a patch's rigid slip is taken over (`wr_rigslip_wrsurf`: `dq`, VELOC).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SlipStep {
+    /// Rolling, steady or transient: the spin about the point cos CHI · dq/6 ahead of each
+    /// element's centre, dq = DQREL · DX (DX in steady rolling).
+    Rolling { dq_mm: f64 },
+    /// A shift (T = 1): one step's shifts, VELOC = 1, dt = 1, the spin about the element itself.
+    Shift,
+}
+
 /// The rigid slip of patch `g` on its surfaces (`None` where it has none: D = 2) with the wheel
-/// `wheel` moving as `v`, the rail as `rail` (on a roller rig the roller turning too); the rolling
-/// step dq = DX, or with `shift` (T = 1) one step's shifts: VELOC = 1, dt = 1, the spin about the
-/// reference itself.
+/// `wheel` moving as `v`, the rail as `rail` (on a roller rig the roller turning too), over `step`.
 pub fn rigid_slip(
     g: &PatchGeometry,
     wheel: &PlacedWheel,
     (v, rail, roller): (&Velocity, &RailMotion, Option<&Roller>),
-    shift: bool,
+    step: SlipStep,
 ) -> Option<SurfaceSlip> {
+    let shift = step == SlipStep::Shift;
     let s = g.surfaces.as_ref()?;
     let grid = &g.grid;
     let at = Velocities { g, s, wheel, v, rail, roller };
@@ -109,7 +118,10 @@ pub fn rigid_slip(
             [(along(v_r) - along(v_w)) / veloc, (v_r[1] - v_w[1]) / veloc]
         })
         .collect();
-    let offset_mm = if shift { 0.0 } else { sgn * FACPHI * grid.dx_mm };
+    let offset_mm = match step {
+        SlipStep::Shift => 0.0,
+        SlipStep::Rolling { dq_mm } => sgn * FACPHI * dq_mm,
+    };
     let centre = |k: usize| {
         let (x, s) = grid.centre(k % grid.mx, k / grid.mx);
         (x + offset_mm, s)

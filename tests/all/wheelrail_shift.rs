@@ -110,6 +110,31 @@ fn transient_rolling_is_anchored_where_contact_anchors_it() {
     assert!((fx(0) - fx(1)).abs() > 300.0, "{} vs {}", fx(0), fx(1));
 }
 
+/// The same on the conformal approach (`t3_t2_conformal`, D = 4): each transient step's grid on
+/// the super-grid, its rows at the rail profile's arc length, the anchor CONTACT prints as
+/// (SPINXO, SPINYO) in every patch of the five steps, case 3's three too.
+#[test]
+fn conformal_transient_rolling_is_anchored_where_contact_anchors_it() {
+    let printed = printed_spin_centres("t3_t2_conformal.ref_out");
+    let run = run_scene(&scene("t3_t2_conformal_1")).unwrap();
+    let mut checked = 0;
+    for (case, result) in &run.cases {
+        let theirs = &printed[*case as usize - 1];
+        for (k, p) in result.normal.patches.iter().enumerate() {
+            let [ax, as_] = p.geometry.grid.anchor_mm;
+            if *case == 1 {
+                assert!(theirs.is_empty() && [ax, as_] == [0.0, 0.0], "steady: the grid on the reference");
+                continue;
+            }
+            let [sx, sy] = theirs[k];
+            assert!((-ax - sx).abs() <= half_unit(sx), "case {case}: SPINXO {} vs {sx}", -ax);
+            assert!((-as_ - sy).abs() <= half_unit(sy), "case {case}: SPINYO {} vs {sy}", -as_);
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 11);
+}
+
 #[test]
 fn transient_rolling_refuses_what_it_does_not_solve() {
     let dir = root().join("scenes/wheelrail");

@@ -100,7 +100,7 @@ fn import(deck: &str) -> (Vec<PathBuf>, String) {
 /// Where `deck` lies under reference/contact_wheelrail/ (without its extension).
 fn in_reference(deck: &str) -> String {
     match deck {
-        "iestim_site_b" | "t3_t1_conformal" => format!("testbank/examples_trans/{deck}"),
+        "iestim_site_b" | "t3_t1_conformal" | "t3_t2_conformal" => format!("testbank/examples_trans/{deck}"),
         _ => format!("examples/{deck}"),
     }
 }
@@ -230,6 +230,36 @@ fn the_conformal_approach_with_adhesion_on_two_patches_against_contact() {
     let shifts: Vec<String> =
         devs.iter().filter(|d| !steady(d) && !counts(d) && !within_mbench(d)).map(|d| format!("{d:?}")).collect();
     assert!(shifts.is_empty(), "shifts beyond the gate's rules:\n{}", shifts.join("\n"));
+}
+
+/// Transient rolling on the conformal approach (`t3_t2_conformal`: the steady case of
+/// `t3_t1_conformal`, then five steps of DQ = 0.4 mm continuing it, T = 2 with P = 0 and D = 4, at
+/// FZ = 137, 117, 127, 137, 137 kN). At 117 kN (case 3) the tread's patch splits in two, 14 mm
+/// apart, both continuing it on its widened grid (117 and 116 rows), the flange's the third; at
+/// the trial heights between, the two touch as one patch with two sub-patches between D_COMB and
+/// D_SEP. Every printed value within the gate's rules (worst FX 1.08 half-units of its printed
+/// digit, 0.54 N on case 5's flange patch; FS 0.99, YCP 0.99, CETA 0.98), NPOT, NCON, NADH, NSLIP
+/// exact in every case.
+#[test]
+fn transient_rolling_on_the_conformal_approach_against_contact() {
+    let (devs, cases, verdicts) = deviations("t3_t2_conformal");
+    assert_eq!(cases, (1..=6).collect::<Vec<u64>>(), "{verdicts}");
+    assert!(!verdicts.contains("skipped case"), "{verdicts}");
+    worst(&devs);
+    for case in 1..=6 {
+        let of_case = devs.iter().filter(|d| d.contact_case == case);
+        let w = of_case.max_by(|a, b| a.half_units.total_cmp(&b.half_units)).unwrap();
+        println!("case {case}: worst {} {:.2} half-units (patch {})", w.quantity, w.half_units, w.patch);
+    }
+    // Case 3's three patches (the split), two in every other case.
+    let patches = |case: u64| devs.iter().filter(|d| d.contact_case == case && d.quantity == "npot").count();
+    assert_eq!((1..=6).map(patches).collect::<Vec<usize>>(), [2, 2, 3, 2, 2, 2]);
+    let counts = ["npot", "ncon", "nadh", "nslip"];
+    let counted: Vec<&Deviation> = devs.iter().filter(|d| counts.contains(&d.quantity)).collect();
+    assert!(counted.iter().any(|d| d.quantity == "nadh" && d.contact > 400.0), "{counted:?}");
+    assert!(counted.iter().all(|d| d.ours == d.contact), "{counted:?}");
+    let failures: Vec<String> = devs.iter().filter(|d| !within_mbench(d)).map(|d| format!("{d:?}")).collect();
+    assert!(failures.is_empty(), "beyond the gate's rules:\n{}", failures.join("\n"));
 }
 
 /// The KPEC deck: cases 1–3 KPEC, 4–6 ANALYN (both with CONTACT's FASTSIM), 7–9 the exact theory,

@@ -793,7 +793,7 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "planar contact with the rigid slip on the actual surfaces",
         control: "D",
         supported: true,
-        reason: "carried as [wheelrail] approach = \"planar_surface_slip\" (D = 3, docs/wheelrail.md \"Rigid slip on the actual surfaces\"): the planar patch's grid and gap, the rigid slip of the rail's (or roller's) and the wheel's material velocities at every element's points of both surfaces, its least-squares creepages printed, the rest an extra rigid slip per element; refused where a case also takes transient rolling, sub-patches, dissimilar bodies or a simplified model (named by the scene's reader)",
+        reason: "carried as [wheelrail] approach = \"planar_surface_slip\" (D = 3, docs/wheelrail.md \"Rigid slip on the actual surfaces\"): the planar patch's grid and gap, the rigid slip of the rail's (or roller's) and the wheel's material velocities at every element's points of both surfaces, its least-squares creepages printed, the rest an extra rigid slip per element (steady rolling, shifts and transient rolling); refused where a case also takes frictionless compression, dissimilar bodies or a simplified model (named by the scene's reader)",
         used: |c| {
             let m = c.state.discretisation.as_ref()?.method;
             (m == 3).then(|| format!("D (in force) = {m}"))
@@ -804,7 +804,7 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "the conformal approach",
         control: "D",
         supported: true,
-        reason: "carried as [wheelrail] approach = \"conformal\" (D = 4, docs/wheelrail.md \"The conformal approach\"): each patch on a curved reference midway between the surfaces, its rigid slip on the actual surfaces, the tractions turned back to the tangent plane; refused where a case also takes a shift or transient rolling, sub-patches, dissimilar bodies or a simplified model (named by the scene's reader)",
+        reason: "carried as [wheelrail] approach = \"conformal\" (D = 4, docs/wheelrail.md \"The conformal approach\"): each patch on a curved reference midway between the surfaces (regions between D_COMB and D_SEP apart its blended sub-patches), its rigid slip on the actual surfaces, the tractions turned back to the tangent plane, in steady rolling, shifts and transient rolling (the previous tractions on the super-grid's curved rows); refused where a case also takes frictionless compression, dissimilar bodies or a simplified model (named by the scene's reader)",
         used: |c| {
             let m = c.state.discretisation.as_ref()?.method;
             (m == 4).then(|| format!("D (in force) = {m}"))
