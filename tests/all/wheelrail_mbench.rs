@@ -61,7 +61,7 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
     // CONTACT's stopping tolerance) and t3_t1_conformal's case 7 (one element's adhesion, CONTACT's
     // stopping tolerance), each bounded at its measured gap (tolerances.toml).
     let all_gaps: Vec<&&Finding> = ours.iter().filter(|f| f.quantity.ends_with(wheelrail_cases::GAP_SUFFIX)).collect();
-    let testbank_gaps = [22, 27, 28, 29, 31, 34, 35];
+    let testbank_gaps = [22, 27, 28, 29, 31, 34, 35, 36, 37];
     let in_testbank = |f: &&&Finding| f.scene.starts_with("testbank_") && testbank_gaps.contains(&f.step.unwrap_or(0));
     let kpec = |f: &&&Finding| f.scene.starts_with("mbench_a22_kpec_") && (1..=3).contains(&f.step.unwrap_or(0));
     let varfric = |f: &&&Finding| f.scene == "mbench_a22_varfric_1" && f.step == Some(3);

@@ -79,16 +79,12 @@ fn a_shift_refuses_what_it_does_not_solve() {
     assert!(e.field.contains("motion"), "{e:?}");
 }
 
-/// Transient rolling after a steady case (CONTACT's T = 3 then T = 2, P = 0; `t3_t2_force`): the
-/// steady case's grid lies on its reference, each transient step's on CONTACT's super-grid (x from
-/// the wheelset, s the rail profile's arc length), whose anchor CONTACT prints as (SPINXO, SPINYO);
-/// the step carries the previous tractions (the forces move off the steady ones by many printed
-/// digits, as CONTACT's: the gate compares them, `scenes/wheelrail/t3_t2_force_1`).
-#[test]
-fn transient_rolling_is_anchored_where_contact_anchors_it() {
-    let printed = printed_spin_centres("t3_t2_force.ref_out");
-    let run = run_scene(&scene("t3_t2_force_1")).unwrap();
-    assert_eq!(run.cases.len(), 6);
+/// Runs the shipped scene `name` and checks each transient step's grid anchor against the
+/// (SPINXO, SPINYO) CONTACT printed in `ref_out` (a steady first case: the grid on the
+/// reference); the run and the number of patches checked.
+fn anchors_against_contact(name: &str, ref_out: &str) -> (creepbench::pipeline::wheelrail_scene::SceneRun, usize) {
+    let printed = printed_spin_centres(ref_out);
+    let run = run_scene(&scene(name)).unwrap();
     let mut checked = 0;
     for (case, result) in &run.cases {
         let theirs = &printed[*case as usize - 1];
@@ -104,6 +100,18 @@ fn transient_rolling_is_anchored_where_contact_anchors_it() {
             checked += 1;
         }
     }
+    (run, checked)
+}
+
+/// Transient rolling after a steady case (CONTACT's T = 3 then T = 2, P = 0; `t3_t2_force`): the
+/// steady case's grid lies on its reference, each transient step's on CONTACT's super-grid (x from
+/// the wheelset, s the rail profile's arc length), whose anchor CONTACT prints as (SPINXO, SPINYO);
+/// the step carries the previous tractions (the forces move off the steady ones by many printed
+/// digits, as CONTACT's: the gate compares them, `scenes/wheelrail/t3_t2_force_1`).
+#[test]
+fn transient_rolling_is_anchored_where_contact_anchors_it() {
+    let (run, checked) = anchors_against_contact("t3_t2_force_1", "t3_t2_force.ref_out");
+    assert_eq!(run.cases.len(), 6);
     assert_eq!(checked, 15);
     // Patch 1's FX: steady −40455 N (CONTACT −4.045e4), after one step −40070 N (−4.007e4).
     let fx = |case: usize| run.cases[case].1.models[0].1[0].fx_n;
@@ -115,23 +123,7 @@ fn transient_rolling_is_anchored_where_contact_anchors_it() {
 /// (SPINXO, SPINYO) in every patch of the five steps, case 3's three too.
 #[test]
 fn conformal_transient_rolling_is_anchored_where_contact_anchors_it() {
-    let printed = printed_spin_centres("t3_t2_conformal.ref_out");
-    let run = run_scene(&scene("t3_t2_conformal_1")).unwrap();
-    let mut checked = 0;
-    for (case, result) in &run.cases {
-        let theirs = &printed[*case as usize - 1];
-        for (k, p) in result.normal.patches.iter().enumerate() {
-            let [ax, as_] = p.geometry.grid.anchor_mm;
-            if *case == 1 {
-                assert!(theirs.is_empty() && [ax, as_] == [0.0, 0.0], "steady: the grid on the reference");
-                continue;
-            }
-            let [sx, sy] = theirs[k];
-            assert!((-ax - sx).abs() <= half_unit(sx), "case {case}: SPINXO {} vs {sx}", -ax);
-            assert!((-as_ - sy).abs() <= half_unit(sy), "case {case}: SPINYO {} vs {sy}", -as_);
-            checked += 1;
-        }
-    }
+    let (_, checked) = anchors_against_contact("t3_t2_conformal_1", "t3_t2_conformal.ref_out");
     assert_eq!(checked, 11);
 }
 

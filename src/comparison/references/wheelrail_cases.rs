@@ -98,7 +98,7 @@ const WORN_ROOT: &str = "the worn flange root's patch (blended and turned region
 /// "Agreement with CONTACT": each bounded at its measured gap by `tolerances.toml`). The
 /// benchmark's right case 11 (and case 9 of the KPEC deck), a gap until the rail was placed by its
 /// spline's gauge point and the gap mesh started at its lowest point, is reproduced.
-pub const KNOWN_GAPS: [KnownGap; 54] = [
+pub const KNOWN_GAPS: [KnownGap; 56] = [
     KnownGap {
         deck: "mbench_a22_kpec.inp",
         case: 1,
@@ -187,6 +187,8 @@ pub const KNOWN_GAPS: [KnownGap; 54] = [
     KnownGap { deck: "test-rollers3.inp", case: 5, feature: SURFACE_SLIP_RESIDUE },
     KnownGap { deck: "test-rollers3.inp", case: 6, feature: SURFACE_SLIP_RESIDUE },
     KnownGap { deck: "test-rollers3.inp", case: 9, feature: SURFACE_SLIP_RESIDUE },
+    KnownGap { deck: "testbank.inp", case: 36, feature: MASSLESS_CONFORMAL_HEIGHT },
+    KnownGap { deck: "testbank.inp", case: 37, feature: MASSLESS_CONFORMAL_HEIGHT },
     KnownGap { deck: "mbench_massless_right.inp", case: 1, feature: MASSLESS_LATERAL_TOL },
     KnownGap { deck: "mbench_massless_position_right.inp", case: 1, feature: MASSLESS_HEIGHT },
     KnownGap { deck: "mbench_massless_position_right.inp", case: 2, feature: MASSLESS_HEIGHT },
@@ -202,6 +204,10 @@ const SURFACE_SLIP_RESIDUE: &str = "the rigid slip on the actual surfaces (D = 3
 /// `mbench_massless_right` case 1: a massless rail (F = 3) at y = 0, CKSI of 1e-7 set by the rail's
 /// lateral deflection to CONTACT's stopping tolerance.
 const MASSLESS_LATERAL_TOL: &str = "a massless rail (F = 3) at y = 0 (CKSI -9.9e-8 from the rail's deflection DY_DEFL -0.0728 mm alone): CKSI 4.89 half-units of its 1e-10 floor (-9.910e-8 against -9.943e-8), CONTACT's own stopping tolerance on the lateral balance (`wr_contact_fy_brent`: |residual| < EPS |FYRAIL| = 0.015 N, about 7e-7 mm of deflection): the deck run by CONTACT with EPS = 1e-9 prints CKSI -9.910e-8, this project's; every other quantity within its rule";
+
+/// testbank cases 36, 37: a massless rail under the conformal approach with the height given;
+/// CONTACT moves that height (as `mbench_massless_position_right`).
+const MASSLESS_CONFORMAL_HEIGHT: &str = "a massless rail (F = 3) under the conformal approach (D = 4) on the worn flange at 72 deg with the wheelset's height given (N = 0): CONTACT's lateral iteration moves Z_WS itself (`wr_contact_fy_brent`: by sin(DELTCP) times each small lateral step) and keeps the moved height as the one prescribed: it prints Z_WS 2.0855 mm (case 36) and 2.0685 mm (case 37, I = 1) for the 2.0884 mm given, so its DZ_DEFL is 0.9987 and 0.9823 mm against this project's 1.0015 and 1.0012 mm (55.5 and 378.8 half-units), the forces and positions with it; solved at CONTACT's printed heights this project's every quantity, DY_DEFL, DZ_DEFL, CKSI and the counts with them, is CONTACT's within 1.34 half-units";
 
 /// `mbench_massless_position_right` cases 1-5: a massless rail (F = 3) with the wheelset's height
 /// given (N = 0); CONTACT moves that height during its lateral iteration.
