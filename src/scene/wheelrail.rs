@@ -718,11 +718,11 @@ fn check_roller(
             "\"force\"".into(),
             "\"velocity\" on a roller rig (FX_WS prescribed on a roller is not supported)",
         )
-    } else if grid_search || approach == Approach::Conformal {
+    } else if approach == Approach::Conformal || (grid_search && approach != Approach::Planar) {
         (
             "wheelrail.approach",
-            "grid search or conformal".into(),
-            "the planar approach (\"planar\" or \"planar_surface_slip\") on the contact locus on a roller rig",
+            format!("{approach:?}, grid search {grid_search}"),
+            "the planar approach (\"planar\" or \"planar_surface_slip\") on the contact locus, or \"planar\" with the grid search, on a roller rig",
         )
     } else if slices {
         (

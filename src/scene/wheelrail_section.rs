@@ -178,7 +178,7 @@ pub const KEYS: Keys = Keys {
             "–",
             Allowed::Choice(&["locus", "grid"], ""),
             Absent::Choice("locus"),
-            r#"how the interpenetration regions are found: on the contact locus (CONTACT's D = 2: the gap along the wheel's locus over a lateral mesh of step 0.3 `ds_mm`) or by CONTACT's brute-force grid search (D = 5, `m_wr_locatecp`: `compute_round_whl`, `compute_wr_surfc`, `locate_interpen_2d`; the wheel revolved over x in ±R/8 in slices about 1.5 `dx_mm` apart, a gap mesh of step 0.75 `ds_mm` across, the local minima of the gap grown to their bounding boxes; what an out-of-round wheel always takes): `contact_search = "grid"`"#,
+            r#"how the interpenetration regions are found: on the contact locus (CONTACT's D = 2: the gap along the wheel's locus over a lateral mesh of step 0.3 `ds_mm`) or by CONTACT's brute-force grid search (D = 5, `m_wr_locatecp`: `compute_round_whl`, `compute_wr_surfc`, `locate_interpen_2d`; the wheel revolved over x in ±R/8 (±0.242 R below R = 30.5 mm) in slices about 1.5 `dx_mm` apart, on a roller rig the roller revolved about its axis, a gap mesh of step 0.75 `ds_mm` across, the local minima of the gap grown to their bounding boxes; what an out-of-round wheel always takes): `contact_search = "grid"`"#,
         ),
     ],
 };

@@ -11,6 +11,7 @@ use super::mesh_interp::{apply, locate, Mesh, Scheme, Uniform};
 use super::oorwheel;
 use super::patch::Candidate;
 use super::rail::PlacedRail;
+use super::roller::Roller;
 use super::varrail::RailSlices;
 use super::wheel::PlacedWheel;
 use nalgebra::Vector3;
@@ -22,6 +23,12 @@ const STEP_OVER_DS: f64 = 0.75;
 const NO_GAP_MM: f64 = 999.0;
 /// A round wheel's mesh spans x = ±R/8 (`compute_round_whl`: an arc of ±7°).
 const ROUND_HALF_SPAN_OVER_R: f64 = 0.125;
+/// The same for a small wheel, nominal radius below [`SMALL_WHEEL_MM`] (`compute_round_whl`: 0.242 R,
+/// sin 14°).
+const SMALL_HALF_SPAN_OVER_R: f64 = 0.242;
+/// The nominal radius [mm] below which a wheel is meshed over the wider span (a roller rig's
+/// small wheels).
+const SMALL_WHEEL_MM: f64 = 30.5;
 /// A round wheel's mesh has slices about 1.5 DX apart (`compute_round_whl`).
 const ROUND_STEP_OVER_DX: f64 = 1.5;
 /// Neighbours whose gaps differ by less than this make a plateau (`find_gap_locmin`).
@@ -66,12 +73,12 @@ fn local_mesh(wheel: &PlacedWheel, dx_mm: f64) -> (usize, Vec<Vector3<f64>>) {
 }
 
 /// A round wheel's mesh in its frame (`compute_round_whl`, `grid_revolve_profile`): the profile's
-/// points revolved to x = −R/8 … R/8 (sin 7°, R the nominal radius) in
+/// points revolved to x = −R/8 … R/8 (sin 7°, R the nominal radius; ±0.242 R below R = 30.5 mm) in
 /// round(R / (4 · 1.5 DX) + 2) slices (odd), the point at x on the circle of radius
 /// ρ = R + z_w through the profile point; none where x ≥ ρ.
 fn round_local(wheel: &PlacedWheel, dx_mm: f64) -> (usize, Vec<Vector3<f64>>) {
     let radius = wheel.nominal_radius_mm;
-    let half = radius * ROUND_HALF_SPAN_OVER_R;
+    let half = radius * if radius < SMALL_WHEEL_MM { SMALL_HALF_SPAN_OVER_R } else { ROUND_HALF_SPAN_OVER_R };
     let mut n = (2.0 * half / (ROUND_STEP_OVER_DX * dx_mm) + 2.0).round() as usize;
     if n.is_multiple_of(2) {
         n += 1;
@@ -91,38 +98,39 @@ fn round_local(wheel: &PlacedWheel, dx_mm: f64) -> (usize, Vec<Vector3<f64>>) {
     (n, nodes)
 }
 
+/// The rail's surface the gap mesh is made over: a prismatic rail, a rail that varies along the
+/// track (its slices at S_WS), or a roller (its profile revolved about its axis).
+#[derive(Debug, Clone, Copy)]
+pub enum RailSurface<'a> {
+    Prismatic,
+    Varying(&'a RailSlices<'a>),
+    Roller(&'a Roller),
+}
+
 /// The rail's height on the gap mesh: the placed profile's at every mesh y, the same in every
 /// column; on a variable rail each column's own cross-section at u = S_WS + x_i, placed as the
-/// rail at S_WS (`varprof_intpol_grid_old`). 999 mm where the rail does not reach y.
-fn rail_heights(
-    rail: &PlacedRail,
-    slices: Option<&RailSlices>,
-    (nx, x0, dx): (usize, f64, f64),
-    ys: &[f64],
-) -> Arc<Vec<f64>> {
-    match slices {
+/// rail at S_WS (`varprof_intpol_grid_old`); on a roller the profile's height at y revolved about
+/// the roller's axis to each column's x (`grid_revolve_profile`). 999 mm where the rail does not
+/// reach y.
+fn rail_heights(rail: &PlacedRail, surface: RailSurface, (nx, x0, dx): (usize, f64, f64), ys: &[f64]) -> Arc<Vec<f64>> {
+    match surface {
         // A variable rail's heights are the same for every case at this S_WS over this mesh
         // (with the rail placed alike): made once per scene.
-        Some(v) => {
+        RailSurface::Varying(v) => {
             let key: Vec<u64> = [v.s_ws_mm, x0, dx, rail.origin_mm[0], rail.origin_mm[1], rail.angle_rad]
                 .iter()
                 .chain(ys)
                 .map(|x| x.to_bits())
                 .chain([nx as u64])
                 .collect();
-            v.slices.memo().get_or_make(&key, || column_heights(rail, slices, (nx, x0, dx), ys))
+            v.slices.memo().get_or_make(&key, || column_heights(rail, surface, (nx, x0, dx), ys))
         }
-        None => Arc::new(column_heights(rail, None, (nx, x0, dx), ys)),
+        _ => Arc::new(column_heights(rail, surface, (nx, x0, dx), ys)),
     }
 }
 
 /// [`rail_heights`] made.
-fn column_heights(
-    rail: &PlacedRail,
-    slices: Option<&RailSlices>,
-    (nx, x0, dx): (usize, f64, f64),
-    ys: &[f64],
-) -> Vec<f64> {
+fn column_heights(rail: &PlacedRail, surface: RailSurface, (nx, x0, dx): (usize, f64, f64), ys: &[f64]) -> Vec<f64> {
     let ny = ys.len();
     let mut z = vec![NO_GAP_MM; nx * ny];
     let mut fill = |i_cols: std::ops::Range<usize>, placed: &PlacedRail| {
@@ -133,15 +141,24 @@ fn column_heights(
             }
         }
     };
-    match slices {
-        None => fill(0..nx, rail),
-        Some(v) => {
+    match surface {
+        RailSurface::Prismatic => fill(0..nx, rail),
+        RailSurface::Varying(v) => {
             for i in 0..nx {
                 if let Some(section) = v.section_at_x(x0 + i as f64 * dx) {
                     fill(
                         i..i + 1,
                         &PlacedRail { curve: &section, origin_mm: rail.origin_mm, angle_rad: rail.angle_rad },
                     );
+                }
+            }
+        }
+        RailSurface::Roller(r) => {
+            let axis_z_mm = r.axis_z_mm(rail);
+            for (j, &y) in ys.iter().enumerate() {
+                let Some(zj) = rail.z_mm(y) else { continue };
+                for i in 0..nx {
+                    z[j * nx + i] = Roller::z_at_x(axis_z_mm, zj, x0 + i as f64 * dx);
                 }
             }
         }
@@ -179,7 +196,7 @@ pub struct GapMeshKept {
 pub fn gap_mesh(
     wheel: &PlacedWheel,
     rail: &PlacedRail,
-    slices: Option<&RailSlices>,
+    surface: RailSurface,
     (dx_mm, ds_mm): (f64, f64),
     kept: &mut GapMeshKept,
 ) -> GapMesh {
@@ -219,7 +236,7 @@ pub fn gap_mesh(
     let ys: Vec<f64> = (0..ny).map(|j| y0 + j as f64 * dy).collect();
     let wheel_key = [wheel.centre.x.to_bits(), wheel.centre.y.to_bits(), y0.to_bits(), ny as u64];
     if kept.wheel_key != Some(wheel_key) {
-        turned_heights(wheel, rail, slices, (nx, &ys, dy), kept);
+        turned_heights(wheel, rail, surface, (nx, &ys, dy), kept);
         kept.wheel_key = Some(wheel_key);
     }
     let (x_lo, dx) = kept.x_mm;
@@ -242,7 +259,7 @@ pub fn gap_mesh(
 fn turned_heights(
     wheel: &PlacedWheel,
     rail: &PlacedRail,
-    slices: Option<&RailSlices>,
+    surface: RailSurface,
     (nx, ys, dy): (usize, &[f64], f64),
     kept: &mut GapMeshKept,
 ) {
@@ -254,7 +271,7 @@ fn turned_heights(
     let (ny, y0) = (ys.len(), ys[0]);
     let key = [nx as u64, x_lo.to_bits(), dx.to_bits(), ny as u64, y0.to_bits()];
     if kept.key != Some(key) {
-        (kept.key, kept.z_mm) = (Some(key), rail_heights(rail, slices, (nx, x_lo, dx), ys));
+        (kept.key, kept.z_mm) = (Some(key), rail_heights(rail, surface, (nx, x_lo, dx), ys));
     }
     let uniform = Uniform { x0: x_lo, dx, nx, y0, dy, ny };
     let mesh = Mesh { nodes: &nodes, n_u: nx };
@@ -432,7 +449,7 @@ mod tests {
             assert!((q.x.hypot(q.z) - (460.0 + z_w)).abs() < 1e-9, "{q:?}");
             assert!(q.x.abs() <= 460.0 / 8.0 + 1e-9, "{q:?}");
         }
-        let grid = gap_mesh(&placed, &rail, None, (0.2, 0.2), &mut GapMeshKept::default());
+        let grid = gap_mesh(&placed, &rail, RailSurface::Prismatic, (0.2, 0.2), &mut GapMeshKept::default());
         let locus = search::deepest_mm(&search::scan(&placed, &search::RailMesh::new(&rail, 0.2))).unwrap();
         let (ours, locus_gap) = (grid.gap_min_mm(), -locus);
         // Measured 1.6e-4 mm apart (-0.028972 against -0.028809): the bilinear wheel between slices

@@ -52,6 +52,9 @@ impl RailMotion {
     }
 }
 
+/// The rolling speed [mm/s] below which the contact stands and its creepages are 0 (`wr_creep_cref`).
+const STANDING_MM_S: f64 = 1e-6;
+
 /// The creepages at the patch's reference with the approach `pen_mm` (the deepest overlap):
 /// (v_rail(P) − v_wheel(Q)) / VELOC, the spin (ω_rail − ω_wheel) · n / VELOC. With `shift`
 /// (CONTACT's T = 1: dt = 1, VELOC = 1) the velocities are one step's shifts and so are the
@@ -88,10 +91,13 @@ pub fn at_reference(
         }
     };
     let slip = v_p - v_q;
+    // Rolling at V = 0 (a wheel standing on a roller that does not turn): zero creepages, as
+    // `wr_creep_cref` sets them below 1e-6 mm/s.
+    let over_v = if veloc_mm_s.abs() < STANDING_MM_S { 0.0 } else { 1.0 / veloc_mm_s };
     Creepages {
-        cksi: slip.x / veloc_mm_s,
-        ceta: slip.dot(&frame.e_s()) / veloc_mm_s,
-        cphi_per_mm: spin.dot(&n) / veloc_mm_s,
+        cksi: slip.x * over_v,
+        ceta: slip.dot(&frame.e_s()) * over_v,
+        cphi_per_mm: spin.dot(&n) * over_v,
         veloc_mm_s,
         reversed,
     }

@@ -417,7 +417,12 @@ fn uses_grid(case: &WheelRailCase) -> bool {
 fn grid(case: &WheelRailCase, wheel: &PlacedWheel, rail: &PlacedRail, setup: &RailSetup) -> brute::GapMesh {
     // A poisoned lock held heights of a mesh made whole before the panic: still good.
     let mut kept = setup.grid_heights.lock().unwrap_or_else(|e| e.into_inner());
-    brute::gap_mesh(wheel, rail, case.rail_slices.as_ref(), (case.dx_mm, case.ds_mm), &mut kept)
+    let surface = match (&case.rail_slices, &case.roller) {
+        (Some(v), _) => brute::RailSurface::Varying(v),
+        (None, Some(r)) => brute::RailSurface::Roller(r),
+        (None, None) => brute::RailSurface::Prismatic,
+    };
+    brute::gap_mesh(wheel, rail, surface, (case.dx_mm, case.ds_mm), &mut kept)
 }
 
 /// The patches' geometry with the wheel placed as `wheel`.

@@ -614,7 +614,7 @@ pub fn wr_temperature_law_carried(c: &WheelRailCase) -> bool {
 /// placed absolutely, not a slices file.
 fn roller_supported(c: &WheelRailCase) -> bool {
     let d = c.digits;
-    let planar = c.state.discretisation.as_ref().is_some_and(|disc| matches!(disc.method, 2 | 3));
+    let planar = c.state.discretisation.as_ref().is_some_and(|disc| matches!(disc.method, 2 | 3 | 5));
     let absolute = c.state.track.is_some_and(|t| matches!(t.placement, RailPlacement::Absolute { .. }));
     let slices = c.state.rail_profile.as_ref().is_some_and(|p| p.format() == ProfileFormat::Slices);
     d.t == 3 && d.f == 0 && planar && absolute && !slices
@@ -640,7 +640,7 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "a wheel on a roller rig beyond steady rolling on the planar contact locus",
         control: "C, T, F, D, GAUGHT",
         supported: false,
-        reason: "supported on a roller rig: steady rolling (T = 3) with VPITCH given (F = 0), the planar contact locus (D = 2, or 3 with the rigid slip on the actual surfaces), the rail placed absolutely (GAUGHT ≤ 0) by a profile file",
+        reason: "supported on a roller rig: steady rolling (T = 3) with VPITCH given (F = 0), the planar contact locus (D = 2, or 3 with the rigid slip on the actual surfaces) or the grid search (D = 5), the rail placed absolutely (GAUGHT ≤ 0) by a profile file",
         used: |c| {
             (c.digits.roller_rig() && !roller_supported(c)).then(|| {
                 let d = c.state.discretisation.as_ref().map_or(0, |d| d.method);
