@@ -263,19 +263,25 @@ fn about_anchor_x(f: PatchForces, p: &NormalPatch) -> PatchForces {
 mod tests {
     use super::*;
     use crate::pipeline::wheelrail::{patch_forces as through_scenes, EXACT};
-    use crate::pipeline::wheelrail_scene::{case_of, prepare};
+    use crate::pipeline::wheelrail_scene::{case_of, prepare, RailProfile, WheelProfile};
     use crate::problem::material_of_spec;
     use crate::scene::wheelrail::WheelRailScene;
     use crate::wheelrail::friction::Friction;
     use std::path::Path;
 
-    #[test]
-    fn the_direct_solve_gives_the_contact_models_forces_on_the_patches_scenes() {
+    /// The Manchester benchmark's right-wheel scene with its profiles and material.
+    fn manchester_right() -> (WheelRailScene, RailProfile, WheelProfile, Material) {
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/wheelrail/mbench_a22_right.toml");
         let text = std::fs::read_to_string(&path).unwrap();
         let scene = WheelRailScene::from_toml(&text, path.parent().unwrap()).unwrap();
         let (rail, wheel, _) = prepare(&scene).unwrap();
         let material = material_of_spec(&scene.material).unwrap();
+        (scene, rail, wheel, material)
+    }
+
+    #[test]
+    fn the_direct_solve_gives_the_contact_models_forces_on_the_patches_scenes() {
+        let (scene, rail, wheel, material) = manchester_right();
         let mut cache = ExactCache::default();
         // Case 11: two patches (tread and flange), grids of two sizes; case 12 reuses them.
         for number in [11, 12] {
@@ -303,11 +309,7 @@ mod tests {
     /// other way changes them (the patch is not symmetric in x: right case 14's flange contact).
     #[test]
     fn a_patch_rolling_backwards_is_solved_mirrored_on_both_paths() {
-        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/wheelrail/mbench_a22_right.toml");
-        let text = std::fs::read_to_string(&path).unwrap();
-        let scene = WheelRailScene::from_toml(&text, path.parent().unwrap()).unwrap();
-        let (rail, wheel, _) = prepare(&scene).unwrap();
-        let material = material_of_spec(&scene.material).unwrap();
+        let (scene, rail, wheel, material) = manchester_right();
         let row = scene.cases.iter().find(|r| r.contact_case == 14).unwrap();
         let case = case_of(&scene, row, &rail, &wheel, material);
         let mut normal = crate::wheelrail::normal_contact(&case, None).unwrap();
