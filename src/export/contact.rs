@@ -354,6 +354,17 @@ fn subsurface_points(at: &crate::scene::stress::StressPoints, out: &mut String) 
     out.push_str("   0            ISUBS\n");
 }
 
+/// B: the row's pressure, solved (0; 1 with a compressible sheet) or Hertz's elliptical (2),
+/// parabolic (3).
+fn bound_digit(p: &Problem, h: &History, case: &Case) -> u8 {
+    match p.normal.of_row(case.first && (h.steady_start || h.shift_start)) {
+        NormalPressure::Solved if p.material.sheet_mm3_per_n > 0.0 => 1,
+        NormalPressure::Solved => 0,
+        NormalPressure::Elliptical => 2,
+        NormalPressure::Parabolic => 3,
+    }
+}
+
 /// The control digits P-B-T-N-F-S: a new sequence (P = 2) or its continuation (0), the row's
 /// pressure B, the kind of case T, the normal problem N, the forces prescribed F and the
 /// subsurface stresses S ([`stress_digit`]).
@@ -368,12 +379,7 @@ fn pbtnfs(p: &Problem, h: &History, case: &Case, s: &Sample, stress: u8, out: &m
     let f = usize::from(s.fx_target.is_some()) + usize::from(s.fy_target.is_some());
     // N = 0: the approach prescribed (PEN), N = 1: FN.
     let n_digit = u8::from(s.pen_mm.is_none());
-    // B: the row's pressure, solved (0) or Hertz's elliptical (2), parabolic (3).
-    let b = match p.normal.of_row(case.first && (h.steady_start || h.shift_start)) {
-        NormalPressure::Solved => 0,
-        NormalPressure::Elliptical => 2,
-        NormalPressure::Parabolic => 3,
-    };
+    let b = bound_digit(p, h, case);
     let _ = writeln!(
         out,
         "  {pv}{b}{t}{n_digit}{f}{stress}      P-B-T-N-F-S   PVTIME, BOUND , TANG  , NORM  , FORCE , STRESS"
@@ -472,11 +478,12 @@ fn case_inputs(p: &Problem, h: &History, case: &Case, s: &Sample, out: &mut Stri
         friction_lines(p, s.mu, out);
     }
     if case.first {
-        geometry(p, (!case.shift).then_some(case.rolling()), h.load_varies, s.h_coefficients, out);
+        let sheet = bound_digit(p, h, case) == 1;
+        geometry(p, (!case.shift).then_some(case.rolling()), (h.load_varies, sheet), s.h_coefficients, out);
         row_friction_lines(p, out);
         extra_slip_lines(p, out);
     } else if case.dq_again {
-        kinematics_and_material(p, Some(case.rolling()), out);
+        kinematics_and_material(p, Some(case.rolling()), bound_digit(p, h, case) == 1, out);
     }
     if let (false, Some(b)) = (case.first, s.h_coefficients.filter(|_| case.new_h)) {
         quadratic(b, out);
@@ -543,8 +550,8 @@ fn row_friction_lines(p: &Problem, out: &mut String) {
 }
 
 /// The kinematics (CHI, DQ, VELOC at the row's direction, rolling step and speed; `None`: a
-/// shift, which reads none) and material lines of a case with C = 2.
-fn kinematics_and_material(p: &Problem, rolling: Option<(f64, f64, f64)>, out: &mut String) {
+/// shift, which reads none) and material lines of a case with C = 2 (FLXZ where `sheet`: B = 1).
+fn kinematics_and_material(p: &Problem, rolling: Option<(f64, f64, f64)>, sheet: bool, out: &mut String) {
     let m = &p.material;
     if let Some((v_mm_s, dq_mm, chi_deg)) = rolling {
         let chi = match chi_deg {
@@ -560,6 +567,9 @@ fn kinematics_and_material(p: &Problem, rolling: Option<(f64, f64, f64)>, out: &
         None => ([m.poisson; 2], [m.g_mpa; 2]),
     };
     let _ = writeln!(out, "  {:?}   {:?}   {:?}   {:?}    POISS 1,2,  GG 1,2", poiss[0], poiss[1], gg[0], gg[1]);
+    if sheet {
+        let _ = writeln!(out, "  {:?}                             FLXZ", m.sheet_mm3_per_n);
+    }
     // M = 4: the layer, elastic (TAU_C0 = 0) or elasto-plastic (its yield limit and K_TAU).
     if let Some(l) = m.layer {
         let tau_c0 = l.yield_mpa.unwrap_or(0.0);
@@ -577,9 +587,15 @@ fn kinematics_and_material(p: &Problem, rolling: Option<(f64, f64, f64)>, out: &
 }
 
 /// The first case's kinematics, material and geometry lines.
-fn geometry(p: &Problem, rolling: Option<(f64, f64, f64)>, load_varies: bool, b: Option<[f64; 6]>, out: &mut String) {
+fn geometry(
+    p: &Problem,
+    rolling: Option<(f64, f64, f64)>,
+    (load_varies, sheet): (bool, bool),
+    b: Option<[f64; 6]>,
+    out: &mut String,
+) {
     let (m, g) = (&p.material, &p.grid);
-    kinematics_and_material(p, rolling, out);
+    kinematics_and_material(p, rolling, sheet, out);
     // H = 3: both bodies' BKTEMP, HEATCP, LAMBDA, DENS after the material.
     for (a, t) in m.heat.iter().flatten().enumerate() {
         let (c, l, d) = (t.heat_capacity_j_per_kg_c, t.conductivity_w_per_mm_c, t.density_kg_per_mm3);

@@ -1,7 +1,7 @@
 //! A wheel–rail scene as CONTACT module-1 input (issue 44; CONTACT's user guide, "Specification of
 //! the input file", module 1), one CONTACT case per row of its cases table, as
 //! reference/contact_wheelrail/examples/mbench_a22_left.inp forms its cases: the first case gives
-//! everything (C-P-B-T-N-F-S = C20TN00, T = 3, 0 when frictionless, 1 in a shift from rest (P = 2; in a sequence of shifts P = 0 after the first case, each case's S_WS the position its shifts reached), V-L-D-C-M-Z-E = V022033 (D = 5 with `contact_search = "grid"`; V the
+//! everything (C-P-B-T-N-F-S = C2BTN00 (B = 1 with `[material] sheet_flexibility_mm3_per_n`, its FLXZ after POISS, GG), T = 3, 0 when frictionless, 1 in a shift from rest (P = 2; in a sequence of shifts P = 0 after the first case, each case's S_WS the position its shifts reached), V-L-D-C-M-Z-E = V022033 (D = 5 with `contact_search = "grid"`; V the
 //! friction's variation: 0, 1 across the rail, 2 along the track), H-G-I-A-O-W-R = 0000321: the
 //! solver's limits, FSTAT = FKIN = mu or NVF control points, POISS and GG of both bodies the scene's, DX, DS with DQREL 1,
 //! the scene's A_SEP, D_SEP, D_COMB, the track, the rail profile with its options (PRFOPT = 2) and
@@ -188,8 +188,10 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
         (false, _) => &hgiaowr[..1],
     };
     let hgiaowr = format!("{heat}{}", &hgiaowr[1..]);
+    // B = 1: a compressible sheet (FLXZ read with the first case's material, kept after it).
+    let b = u8::from(s.material.sheet_mm3_per_n > 0.0);
     let _ =
-        writeln!(out, " {c}{p}0{t}{n}{f}0    C-P-B-T-N-F-S   CONFIG, PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS");
+        writeln!(out, " {c}{p}{b}{t}{n}{f}0    C-P-B-T-N-F-S   CONFIG, PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS");
     let _ = writeln!(out, " {v}{ldcmze}    V-L-D-C-M-Z-E   VARFRC, FRCLAW, DISCNS, INFLCF, MATER,  ZTRACK, EWHEEL");
     let _ = writeln!(out, " {hgiaowr}    H-G-I-A-O-W-R     HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW,   RETURN");
 }
@@ -219,6 +221,9 @@ fn setup(s: &WheelRailScene, (rail, wheel): (&str, &str), out: &mut String) {
     let _ = writeln!(out, "    999     {maxin}    30    1     1e-5         MAXGS , MAXIN , MAXNR , MAXOUT, EPS");
     friction(s, out);
     let _ = writeln!(out, "  {nu:?}   {nu:?}   {g:?}   {g:?}                POISS 1,2,  GG 1,2");
+    if s.material.sheet_mm3_per_n > 0.0 {
+        let _ = writeln!(out, "  {:?}                                FLXZ", s.material.sheet_mm3_per_n);
+    }
     for t in s.material.heat.iter().flatten() {
         let (t0, cp, lambda, rho) =
             (t.bulk_c, t.heat_capacity_j_per_kg_c, t.conductivity_w_per_mm_c, t.density_kg_per_mm3);

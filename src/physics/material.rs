@@ -29,6 +29,11 @@ pub struct Material {
     /// (`[material] bulk1_c` …; CONTACT's H = 3, [`super::temperature`]); `None`: none computed.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub heat: Option<[super::temperature::Thermal; 2]>,
+    /// A thin compressible sheet's flexibility L_z [mm³/N] (`[material]
+    /// sheet_flexibility_mm3_per_n`; CONTACT's B = 1, FLXZ), added to the normal self-influence
+    /// ([`super::halfspace::sheet`]); 0: none.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub sheet_mm3_per_n: f64,
 }
 
 /// A standard linear solid in its Kelvin–Voigt form (CONTACT's M = 1, user guide "Viscoelastic
@@ -141,6 +146,7 @@ impl Material {
             layer: None,
             visco: None,
             heat: None,
+            sheet_mm3_per_n: 0.0,
         }
     }
 
@@ -172,6 +178,7 @@ impl Material {
             layer: None,
             visco: None,
             heat: None,
+            sheet_mm3_per_n: 0.0,
         }
     }
 

@@ -146,7 +146,7 @@ pub fn material_of_spec(m: &crate::scene::MaterialSpec) -> Result<Material, Inpu
             (None, None) => return Err(InputError::new("material.g_mpa", "missing", "g_mpa or e_mpa")),
         }
     };
-    Ok(Material { layer: m.layer, visco: m.visco, heat: m.heat, ..elastic })
+    Ok(Material { layer: m.layer, visco: m.visco, heat: m.heat, sheet_mm3_per_n: m.sheet_mm3_per_n, ..elastic })
 }
 
 /// A material given both G and E: they must agree, E = 2G(1 + ν) within [`E_G_TOLERANCE`].

@@ -44,6 +44,13 @@ pub const KEYS: Keys = Keys {
             Absent::Required,
             r#"the combined Poisson's ratio ν: `poisson = 0.28`"#,
         ),
+        key(
+            "sheet_flexibility_mm3_per_n",
+            "mm³/N",
+            Allowed::Number(Range::new(1e-10, true, 1e20, true), ""),
+            Absent::Text("– (no sheet)"),
+            r#"a thin compressible sheet on the surface (pressure-sensitive paper; CONTACT's B = 1, FLXZ): the normal part of Kalker's first-order theory, u_z = L_z p_n in the element that carries the pressure, added to the half-spaces' normal displacement (L_z = h (1 + ν)(1 − 2ν)/((1 − ν) E) of the sheet); the normal problem only: `sheet_flexibility_mm3_per_n = 7.429e-5`"#,
+        ),
     ],
 };
 
@@ -253,6 +260,7 @@ pub fn read(top: &mut Section) -> Result<MaterialSpec, InputError> {
         .declare(&VISCO_KEYS)
         .declare(&HEAT_KEYS);
     let heat = heat(&mut m)?;
+    let sheet_mm3_per_n = m.opt_num("sheet_flexibility_mm3_per_n")?.unwrap_or(0.0);
     let layer = layer(&mut m)?;
     let visco = visco(&mut m)?;
     if let (Some(_), Some(_)) = (layer, visco) {
@@ -264,7 +272,7 @@ pub fn read(top: &mut Section) -> Result<MaterialSpec, InputError> {
     }
     if let Some(spec) = bodies(&mut m)? {
         m.finish()?;
-        return Ok(MaterialSpec { layer, visco, heat, ..spec });
+        return Ok(MaterialSpec { layer, visco, heat, sheet_mm3_per_n, ..spec });
     }
     let g_mpa = m.opt_num("g_mpa")?;
     let e_mpa = m.opt_num("e_mpa")?;
@@ -277,7 +285,7 @@ pub fn read(top: &mut Section) -> Result<MaterialSpec, InputError> {
         ));
     }
     m.finish()?;
-    Ok(MaterialSpec { g_mpa, e_mpa, poisson, bodies: None, layer, visco, heat })
+    Ok(MaterialSpec { g_mpa, e_mpa, poisson, bodies: None, layer, visco, heat, sheet_mm3_per_n })
 }
 
 /// Viscoelastic bodies (CONTACT's M = 1 with FG 1 = FG 2, TC 1 = TC 2): both keys or neither. A
@@ -357,5 +365,6 @@ fn bodies(m: &mut Section) -> Result<Option<MaterialSpec>, InputError> {
         layer: None,
         visco: None,
         heat: None,
+        sheet_mm3_per_n: 0.0,
     }))
 }

@@ -56,6 +56,9 @@ pub struct MaterialSpec {
     pub visco: Option<crate::physics::material::Visco>,
     /// Both bodies' thermal constants (`bulk1_c` … `density2_kg_per_mm3`; CONTACT's H = 3).
     pub heat: Option<[crate::physics::temperature::Thermal; 2]>,
+    /// A thin compressible sheet's flexibility L_z [mm³/N] (`sheet_flexibility_mm3_per_n`;
+    /// CONTACT's B = 1, FLXZ); 0: none.
+    pub sheet_mm3_per_n: f64,
 }
 
 /// The creepage history kinds, as the scene declares them (scene.json's `loading.creepage`,

@@ -340,7 +340,8 @@ impl NormalSolvers {
         let k = match self.solvers.iter().position(|(k, _, _)| *k == key) {
             Some(k) => k,
             None => {
-                let kernel = Kernel::new(g.mx, g.ms, g.dx_mm, g.ds_mm, m.g_mpa, m.poisson, 0.0)?;
+                let kernel = Kernel::new(g.mx, g.ms, g.dx_mm, g.ds_mm, m.g_mpa, m.poisson, 0.0)?
+                    .with_sheet(m.sheet_mm3_per_n)?;
                 if self.solvers.len() == KEPT_SOLVERS {
                     self.solvers.remove(0);
                 }

@@ -336,9 +336,9 @@ fn the_testbank_module1_cases_by_hand() {
     assert_eq!(t.placement, RailPlacement::Absolute { gaught_mm: -1.0, raily0_mm: 750.0, railz0_mm: 0.0 });
     // 20: a roller rig, NOMRADR in the track line, RPITCH first in the velocity line.
     assert_eq!(case(20).state.track.unwrap().fourth, TrackFourth::RollerRadiusMm(22.7020));
-    // The roller rig with the grid search (D = 5) is carried; case 21's (frictionless, T = 0) is not.
+    // The roller rig with the grid search (D = 5) is carried, and case 21's (frictionless, T = 0).
     assert!(!unsupported(20).contains(&WheelRailFeature::RollerRig));
-    assert!(unsupported(21).contains(&WheelRailFeature::RollerRig));
+    assert!(unsupported(21).is_empty());
     // 21: a compressible sheet, FLXZ after the material.
     assert_eq!(case(21).state.material.as_ref().unwrap().flxz, Some(0.00007429));
     // 22: friction across the rail, ALPHA given in radians (-0.5236, -0.3491).

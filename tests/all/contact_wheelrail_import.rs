@@ -171,24 +171,18 @@ fn the_decks_with_fx_ws_prescribed_import_as_the_gated_scenes() {
     }
 }
 
-/// The module-1 case of CONTACT's test bank that needs a frictionless roller rig with a thin layer
-/// is refused naming what the scene lacks; the others import (rail deviations,
-/// frictionless compression, smoothing, MIRRORZ, PRFOPT, the conformal approach, a massless rail; case 39, a shift continuing
+/// The module-1 cases of CONTACT's test bank import (rail deviations, frictionless compression,
+/// a frictionless roller rig with a compressible sheet, smoothing, MIRRORZ, PRFOPT, the conformal
+/// approach, a massless rail; case 39, a shift continuing
 /// case 38, in case 38's scene as a sequence of shifts); its module-3 cases import as before.
 #[test]
-fn the_testbank_module1_cases_are_refused_with_their_reasons() {
+fn the_testbank_module1_cases_import_with_their_notes() {
     let deck = root().join("reference/contact_wheelrail/testbank/testbank.inp");
     let imported = creepbench::import::contact::import(&deck).unwrap();
     let m1: Vec<_> = imported.statuses.iter().filter(|s| s.module == 1).collect();
     let numbers: Vec<usize> = m1.iter().map(|s| s.case).collect();
     assert_eq!(numbers, [18, 19, 20, 21, 22, 23, 27, 28, 29, 30, 31, 32, 33, 34, 35, 36, 37, 38, 39]);
-    let reason = |case: usize, start: &str| {
-        let s = m1.iter().find(|s| s.case == case).unwrap();
-        assert!(s.scene.is_none() && s.refused.iter().any(|r| r.starts_with(start)), "case {case}: {s:?}");
-    };
-    // A roller rig is carried with the grid search (case 20), not frictionless with a thin layer (21).
-    reason(21, "B = 1: a thin compressible elastic layer");
-
+    assert!(m1.iter().all(|s| s.refused.is_empty()), "{m1:?}");
     let note = |case: usize, start: &str| {
         let s = m1.iter().find(|s| s.case == case).unwrap();
         assert!(s.scene.is_some() && s.notes.iter().any(|r| r.starts_with(start)), "case {case}: {s:?}");
@@ -197,6 +191,8 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
     note(35, "D (in force) = 4: the conformal approach");
     note(36, "F = 3: a massless rail deflecting under the contact forces");
     note(19, "T = 0: frictionless compression");
+    note(21, "B = 1: a thin compressible elastic sheet");
+    note(21, "C = 5: a wheel on a roller rig");
     note(22, "SMOOTH = 10 (rail), 10 (wheel): profile smoothing");
     note(28, "PRFOPT = 1: ISMOOTH, ZIGTHRS, KINKHIGH, KINKLOW, KINKWID = 0, 2.61799");
     note(30, "MIRRORZ = 1 (rail): mirroring of a profile's z given");
@@ -209,7 +205,7 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
     // slip) and 25, 26 (dissimilar bodies, one scene) are module-3 scenes (issue 46).
     let number = |s: &&str| s.split('_').nth(1).unwrap().parse::<usize>().unwrap();
     let module1: Vec<usize> = scenes.iter().map(number).filter(|&n| n >= 18 && n != 24 && n != 25).collect();
-    assert_eq!(module1, [18, 19, 20, 22, 23, 27, 28, 29, 30, 31, 32, 33, 34, 35, 36, 37, 38], "{scenes:?}");
+    assert_eq!(module1, [18, 19, 20, 21, 22, 23, 27, 28, 29, 30, 31, 32, 33, 34, 35, 36, 37, 38], "{scenes:?}");
     assert!(scenes.contains(&"testbank_1"), "{scenes:?}");
     // What the scenes carry: the rail's deviations, T = 0, SMOOTH, MIRRORZ, KINKWID; A_SEP = 90
     // (radians, `90d0`) as pi.
@@ -223,22 +219,23 @@ fn the_testbank_module1_cases_are_refused_with_their_reasons() {
     };
     let s18 = scene(18);
     assert_eq!(s18.rail_deviation.position, [0.0, 5.0, 15f64.to_radians()]);
+    // 21: the sheet's FLXZ, frictionless on the roller.
+    let s21 = scene(21);
+    assert_eq!(s21.material.sheet_mm3_per_n, 0.00007429);
+    assert!(s21.frictionless && s21.roller.is_some());
     assert!(s18.frictionless && !scene(22).frictionless);
     assert_eq!((s18.a_sep_rad, s18.rail.kink_low_rad), (std::f64::consts::PI, PROFILE_DEFAULTS[2]));
     assert_eq!((scene(22).rail.smooth, scene(22).wheel.smooth, scene(27).rail.smooth), (10.0, 10.0, 0.1));
     assert_eq!((scene(30).rail.mirror_z, scene(30).wheel.mirror_z), (1, 0));
     assert_eq!((scene(28).rail.kink_width_mm, scene(27).rail.kink_width_mm), (0.0, 2.0));
-    // The command lists each with its reason and writes the module-3 scenes.
+    // The command writes every case's scene, the module-1 ones with theirs.
     let out = common::tempdir("m1_import_testbank").join("scenes");
     let o =
         creepbench(&["import", "contact", deck.to_str().unwrap(), "--out", out.to_str().unwrap(), "--supported-only"]);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(0), "{err}");
-    assert!(
-        err.contains("skipped case 21 (line 383): not supported: C = 5, T = 0, F = 0, D = 2: a wheel on a roller rig"),
-        "{err}"
-    );
-    assert!(out.join("testbank_1.toml").is_file());
+    assert!(!err.contains("skipped case 21"), "{err}");
+    assert!(out.join("testbank_1.toml").is_file() && out.join("testbank_21.toml").is_file());
 }
 
 #[test]

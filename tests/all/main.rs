@@ -4,6 +4,7 @@ mod approach;
 mod cli;
 mod cli_safety;
 mod common;
+mod compressible_sheet;
 mod console;
 mod contact_export;
 mod contact_import;

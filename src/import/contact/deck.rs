@@ -145,6 +145,10 @@ pub struct State {
     pub visco: Option<[f64; 4]>,
     /// Whether the case's M is 1 (its viscoelastic values persist).
     pub m1: bool,
+    /// FLXZ [mm³/N] of the compressible sheet (B = 1) as last read.
+    pub flxz: Option<f64>,
+    /// Whether the case's B is 1 (its FLXZ persists).
+    pub b1: bool,
     /// BKTEMP, HEATCP, LAMBDA, DENS of body 1 then body 2 as last read (H = 3).
     pub heat: Option<[f64; 8]>,
     /// Whether the case computes surface temperatures (H = 1 or 3; the values persist).
@@ -165,6 +169,11 @@ impl State {
     /// FG 1, FG 2, TC 1, TC 2 of the viscoelastic bodies in force: M = 1 with the values last read.
     pub fn visco_in_force(&self) -> Option<[f64; 4]> {
         self.visco.filter(|_| self.m1)
+    }
+
+    /// FLXZ if the case has a compressible sheet (B = 1, CONTACT's `bound_eff`).
+    pub fn sheet_in_force(&self) -> Option<f64> {
+        self.flxz.filter(|_| self.b1)
     }
 
     /// The outer iterations CONTACT makes for dissimilar bodies (K ≠ 0): MAXOUT as read, at least
@@ -389,6 +398,7 @@ impl CaseReader<'_> {
         let d = self.digits()?;
         state.m4 = d.m == 4;
         state.m1 = d.m == 1;
+        state.b1 = d.b == 1;
         if d.x == 1 {
             self.lx.group("debug output P-S-F-L-C-I-N", &[Kind::Int], (1, Kind::Int))?;
         }
@@ -580,7 +590,7 @@ impl CaseReader<'_> {
         let v = self.reals("POISS 1, 2, GG 1, 2", 4)?;
         (state.poiss, state.gg_mpa) = ([v[0], v[1]], [v[2], v[3]]);
         if d.b == 1 {
-            self.reals("FLXZ", 1)?;
+            state.flxz = Some(self.reals("FLXZ", 1)?[0]);
         }
         match d.m {
             1 => {

@@ -59,14 +59,21 @@ pub const FEATURES: &[Feature] = &[
         used: |c| digit("P", c.digits.p, matches!(c.digits.p, 1 | 3)),
     },
     Feature {
-        name: "approximate normal problems (SDEC, KPEC, ANALYN) or a thin elastic layer",
+        name: "approximate normal problems (SDEC, KPEC, ANALYN)",
         control: "B",
         supported: false,
-        reason: "supported: B = 0 (the full elastic normal problem), B = 2, 3 (Hertz's elliptical or parabolic pressure) on a Hertzian geometry (IPOTCN < 0)",
+        reason: "supported: B = 0 (the full elastic normal problem), B = 1 (with a compressible sheet), B = 2, 3 (Hertz's elliptical or parabolic pressure) on a Hertzian geometry (IPOTCN < 0)",
         used: |c| {
             let hertz = matches!(c.state.potcon, Some(Potcon::Hertz { .. }));
-            digit("B", c.digits.b, c.digits.b != 0 && !(matches!(c.digits.b, 2 | 3) && hertz))
+            digit("B", c.digits.b, c.digits.b > 1 && !(matches!(c.digits.b, 2 | 3) && hertz))
         },
+    },
+    Feature {
+        name: "a thin compressible elastic sheet",
+        control: "B, FLXZ",
+        supported: true,
+        reason: "imported as [material] sheet_flexibility_mm3_per_n = FLXZ: u_z = FLXZ p_n added to the normal self-influence (docs/scene-format.md)",
+        used: |c| digit("B", c.digits.b, c.digits.b == 1),
     },
     Feature {
         name: "traction bound from Hertz's pressure (elliptical or parabolic)",
@@ -609,15 +616,16 @@ pub fn wr_temperature_law_carried(c: &WheelRailCase) -> bool {
         && wr_heat_carried(c)
 }
 
-/// A roller rig as the wheel–rail scene carries it: steady rolling (T = 3) with VPITCH given
-/// (F = 0), the planar contact locus (D = 2, or 3 with the rigid slip on the surfaces), the rail
-/// placed absolutely, not a slices file.
+/// A roller rig as the wheel–rail scene carries it: steady rolling (T = 3) or frictionless
+/// compression (T = 0) with VPITCH given (F = 0), the planar contact locus (D = 2, or 3 with the
+/// rigid slip on the surfaces) or the grid search (D = 5), the rail placed absolutely, not a
+/// slices file.
 fn roller_supported(c: &WheelRailCase) -> bool {
     let d = c.digits;
     let planar = c.state.discretisation.as_ref().is_some_and(|disc| matches!(disc.method, 2 | 3 | 5));
     let absolute = c.state.track.is_some_and(|t| matches!(t.placement, RailPlacement::Absolute { .. }));
     let slices = c.state.rail_profile.as_ref().is_some_and(|p| p.format() == ProfileFormat::Slices);
-    d.t == 3 && d.f == 0 && planar && absolute && !slices
+    matches!(d.t, 0 | 3) && d.f == 0 && planar && absolute && !slices
 }
 
 fn wr_digit(name: &str, v: u8, used: bool) -> Option<String> {
@@ -640,7 +648,7 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "a wheel on a roller rig beyond steady rolling on the planar contact locus",
         control: "C, T, F, D, GAUGHT",
         supported: false,
-        reason: "supported on a roller rig: steady rolling (T = 3) with VPITCH given (F = 0), the planar contact locus (D = 2, or 3 with the rigid slip on the actual surfaces) or the grid search (D = 5), the rail placed absolutely (GAUGHT ≤ 0) by a profile file",
+        reason: "supported on a roller rig: steady rolling (T = 3) or frictionless compression (T = 0) with VPITCH given (F = 0), the planar contact locus (D = 2, or 3 with the rigid slip on the actual surfaces) or the grid search (D = 5), the rail placed absolutely (GAUGHT ≤ 0) by a profile file",
         used: |c| {
             (c.digits.roller_rig() && !roller_supported(c)).then(|| {
                 let d = c.state.discretisation.as_ref().map_or(0, |d| d.method);
@@ -690,10 +698,10 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
     },
     WheelRailRow {
         feature: WheelRailFeature::CompressibleLayer,
-        name: "a thin compressible elastic layer",
+        name: "a thin compressible elastic sheet",
         control: "B, FLXZ",
-        supported: false,
-        reason: "supported: B = 0 (the full elastic normal problem)",
+        supported: true,
+        reason: "imported as [material] sheet_flexibility_mm3_per_n = FLXZ: u_z = FLXZ p_n added to the normal self-influence (docs/scene-format.md)",
         used: |c| wr_digit("B", c.digits.b, c.digits.b == 1),
     },
     WheelRailRow {

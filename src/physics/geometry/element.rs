@@ -128,7 +128,8 @@ impl ElementGeometry {
 
 /// The normal solver of `grid`'s elements of `material`, with `blend`.
 fn normal_solver(grid: &Grid, material: &Material, blend: Option<Blend>) -> Result<NormalSolver, ContactError> {
-    let kernel = Kernel::new(grid.mx, grid.my, grid.dx_mm, grid.dy_mm, material.g_mpa, material.poisson, 0.0)?;
+    let kernel = Kernel::new(grid.mx, grid.my, grid.dx_mm, grid.dy_mm, material.g_mpa, material.poisson, 0.0)?
+        .with_sheet(material.sheet_mm3_per_n)?;
     let mut solver = NormalSolver::new(&kernel)?;
     solver.set_blend(blend)?;
     Ok(solver)

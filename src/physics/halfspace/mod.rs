@@ -16,6 +16,7 @@ pub mod layer;
 pub mod normal;
 mod normal_dense;
 mod real_fft;
+pub mod sheet;
 pub mod stress;
 mod table;
 pub mod visco;

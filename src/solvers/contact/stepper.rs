@@ -418,7 +418,9 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
             .map_err(ContactRunError::Kernel)
     };
     let k0 = kernel(0.0)?;
-    let normal = NormalSolver::new(&k0).map_err(ContactRunError::Kernel)?;
+    // A compressible sheet (B = 1) adds to the normal self-influence ([`Kernel::with_sheet`]).
+    let normal = k0.clone().with_sheet(m.sheet_mm3_per_n).and_then(|k| NormalSolver::new(&k));
+    let normal = normal.map_err(ContactRunError::Kernel)?;
     let (x, y) = g.centres();
     // CHI = 180°: the solver works on the grid mirrored about x = 0 ([`mirror`]).
     let mirrored = mirrored(p);

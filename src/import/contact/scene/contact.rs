@@ -86,6 +86,10 @@ pub(super) fn write(src: &Source, draft: &mut Draft) -> Result<(), InputError> {
     if let Some([fg, _, tc, _]) = s.visco_in_force().filter(|v| v[0] > 0.0) {
         material.extend([("visco_ratio", Value::Float(fg)), ("visco_time_s", Value::Float(tc))]);
     }
+    // B = 1: the compressible sheet's flexibility.
+    if let Some(flxz) = s.sheet_in_force() {
+        material.push(("sheet_flexibility_mm3_per_n", Value::Float(flxz)));
+    }
     // H = 1, 3: both bodies' thermal constants (features.rs takes them in steady rolling).
     if let Some(h) = s.heat_in_force() {
         let keys = crate::scene::material::HEAT_KEYS.keys.iter().map(|k| k.key);

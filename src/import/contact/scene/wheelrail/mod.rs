@@ -387,6 +387,8 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
             layer: None,
             visco: None,
             heat: heat::thermal(c),
+            // B = 1 switches the sheet on with the FLXZ last read (CONTACT's `bound_eff`).
+            sheet_mm3_per_n: if c.digits.b == 1 { material.flxz.unwrap_or(0.0) } else { 0.0 },
         },
         tangential: heat::tangential(c),
         dx_mm: disc.dx_mm,

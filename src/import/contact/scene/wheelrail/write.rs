@@ -240,6 +240,9 @@ fn profile(p: &ProfileSpec, scene: &str) -> Result<Pairs, InputError> {
 fn material(s: &WheelRailScene) -> Result<Pairs, InputError> {
     let g = s.material.g_mpa.ok_or_else(|| InputError::new(&s.name, "no g_mpa", "the combined shear modulus"))?;
     let mut out = vec![("g_mpa", Value::Float(g)), ("poisson", Value::Float(s.material.poisson))];
+    if s.material.sheet_mm3_per_n > 0.0 {
+        out.push(("sheet_flexibility_mm3_per_n", Value::Float(s.material.sheet_mm3_per_n)));
+    }
     out.extend(super::heat::material_pairs(s));
     Ok(out)
 }
