@@ -54,7 +54,8 @@ pub struct PatchForces {
     pub n_adhesion: Option<usize>,
     pub n_slip: Option<usize>,
     /// In a shift, the exact theory's tractions `(px, py)` per element [MPa] (CONTACT's element
-    /// order, the solver's frame): what the next case of a sequence of shifts continues from.
+    /// order, the solver's signs, the patch's own frame, never mirrored): what the next case of a
+    /// sequence of shifts continues from.
     pub shift_tractions_mpa: Option<(Vec<f64>, Vec<f64>)>,
     /// Per element (CONTACT's element order) whether it slips, where the model tells adhesion
     /// from slip on the patch's own grid: what the report's patch maps draw, from this solve.
@@ -491,7 +492,8 @@ fn ellipse_scene(
 }
 
 /// The problem a model solves on a patch: the patch's own grid and undeformed distance where the
-/// model takes a contact given per element, else the equivalent ellipse.
+/// model takes a contact given per element, else the equivalent ellipse; in the patch's rolling
+/// frame ([`RollingFrame`]: mirrored about x = 0 for a patch rolling towards −x).
 pub(super) fn patch_problem(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> Result<Problem, Error> {
     // The patches of a model with its own normal problem carry that problem's pressure.
     let exact = solvers::builtin(model).is_none_or(|d| d.own_normal.is_none());
@@ -517,13 +519,15 @@ pub(super) fn patch_solve(p: &NormalPatch, model: &str, mu: f64, case: &WheelRai
     let mz_nmm = h.column(crate::history::MZ).map_or(f64::NAN, |c| c[0]);
     let temperatures: Vec<f64> =
         solvers::contact::heat::COLUMNS.iter().filter_map(|n| h.column(n).map(|c| c[0])).collect();
+    // The problem is in the patch's rolling frame (`field_scene`): its solution mapped back.
     let frame = RollingFrame::of(p);
+    let (fx_over_fn, fy_over_fn, mz_nmm) = frame.totals((row.fx_over_fn, row.fy_over_fn, mz_nmm));
     Ok(PatchForces {
         n_adhesion: count("n_adhesion"),
         n_slip: count("n_slip"),
         temp_max_c: (!temperatures.is_empty()).then(|| temperatures.iter().copied().fold(f64::MIN, f64::max)),
         slip: fields.last().and_then(|f| slip_on_patch(p, &problem, f, count("n_slip"))).map(|s| frame.field(s)),
-        ..PatchForces::on_rail(p, case, frame.sign() * row.fx_over_fn, row.fy_over_fn, frame.sign() * mz_nmm)
+        ..PatchForces::on_rail(p, case, fx_over_fn, fy_over_fn, mz_nmm)
     })
 }
 

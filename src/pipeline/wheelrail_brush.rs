@@ -5,10 +5,12 @@
 //! ([`brush_shift::shift_step`], the step's rigid shift from the exact path's kinematics), in
 //! transient rolling (T = 2) one UBA time step of Courant number DQ / DX ([`uba::continuing`],
 //! sub-stepped above 1), and in the steady case that starts a sequence the model's steady
-//! solution, kept for the next.
+//! solution, kept for the next. A patch rolling towards −x (CHI = 180°) is solved mirrored about
+//! x = 0 as the exact solver solves it ([`RollingFrame`]), its history kept in its own frame.
 
 use super::wheelrail::{on_bound_counted, patch_problem, PatchForces};
 use super::wheelrail_exact::{about_anchor, in_contact_order, previous_tractions};
+use super::wheelrail_frame::RollingFrame;
 use crate::error::{Error, InputError};
 use crate::physics::geometry::field_in_grid_order;
 use crate::problem::{Problem, Sample};
@@ -27,19 +29,15 @@ pub fn patch_forces(
     case: &WheelRailCase,
     history: Option<&Previous>,
 ) -> Result<PatchForces, Error> {
-    if p.creepages.reversed {
-        let allowed = "a patch rolling along +x (CHI = 0): the models that carry their history do not roll it mirrored";
-        return Err(InputError::new(
-            "cases",
-            format!("{model} on a patch rolling towards -x (CHI = 180 deg)"),
-            allowed,
-        )
-        .into());
-    }
+    // The problem is in the patch's rolling frame (mirrored for a patch rolling towards −x, as
+    // the exact solver's): the history, kept in the patch's own frame, is mapped in, the
+    // solution back.
+    let frame = RollingFrame::of(p);
     let mut problem = patch_problem(p, model, mu, case)?;
     let (px0, py0) = previous_tractions(p, &WheelRailCase { previous: history, ..*case });
-    let start =
-        Tractions { tx: field_in_grid_order(&problem.grid, &px0), ty: field_in_grid_order(&problem.grid, &py0) };
+    let in_grid = |f: &[f64]| field_in_grid_order(&problem.grid, f);
+    let (tx, ty) = frame.pair((in_grid(&px0), in_grid(&py0)));
+    let start = Tractions { tx, ty };
     let failed = |e: SolveError| Error::Solve { scene: "patch".into(), solver: model.into(), source: Box::new(e) };
     let (step, t, pressure_mpa) = match case.motion {
         Motion::Shift { .. } => shift(&problem, &start),
@@ -56,12 +54,14 @@ pub fn patch_forces(
     let count = |k: usize| step.extra.get(k).map(|v| *v as usize);
     let mu = problem.loading.first().mu;
     let slip = count(1).and_then(|n| on_bound_counted(&t, &pressure_mpa, mu, n));
+    let in_patch = |f: &[f64]| in_contact_order(&problem.grid, f);
+    let (fx_over_fn, fy_over_fn, mz_nmm) = frame.totals((step.fx_over_fn, step.fy_over_fn, step.mz_nmm));
     let forces = PatchForces {
         n_adhesion: count(0),
         n_slip: count(1),
-        shift_tractions_mpa: Some((in_contact_order(&problem.grid, &t.tx), in_contact_order(&problem.grid, &t.ty))),
-        slip: slip.map(|s| in_contact_order(&problem.grid, &s)),
-        ..PatchForces::on_rail(p, case, step.fx_over_fn, step.fy_over_fn, step.mz_nmm)
+        shift_tractions_mpa: Some(frame.pair((in_patch(&t.tx), in_patch(&t.ty)))),
+        slip: slip.map(|s| frame.field(in_contact_order(&problem.grid, &s))),
+        ..PatchForces::on_rail(p, case, fx_over_fn, fy_over_fn, mz_nmm)
     };
     Ok(if case.motion.super_grid_s_mm().is_some() { about_anchor(forces, p, case) } else { forces })
 }
@@ -282,5 +282,211 @@ mod tests {
                 assert!(bound_ratio(r, "fastsim", 0.35) <= 1.0 + 1e-12, "{name}");
             }
         }
+    }
+
+    /// The Manchester right deck's scene and the patches of its case 14 (a flange contact, not
+    /// symmetric in x).
+    fn manchester_14() -> (WheelRailScene, Vec<NormalPatch>) {
+        let s = scene("mbench_a22_right", |t| t);
+        let (rail, wheel, _) = prepare(&s).unwrap();
+        let row = s.cases.iter().find(|r| r.contact_case == 14).unwrap();
+        let case = case_of(&s, row, &rail, &wheel, material_of_spec(&s.material).unwrap());
+        let normal = crate::wheelrail::normal_contact(&case, None).unwrap();
+        assert!(!normal.patches.is_empty());
+        (s, normal.patches)
+    }
+
+    /// Patch `p` mirrored about x = 0 and rolling the other way: its fields' rows reversed, its
+    /// grid and anchor at −x, CKSI and CPHI negated (the mirror image of the same problem).
+    fn mirrored(p: &NormalPatch) -> NormalPatch {
+        let mut q = p.clone();
+        let g = &mut q.geometry.grid;
+        let mirror = |v: &[f64]| crate::solvers::contact::mirror::field(g.mx, v);
+        q.geometry.h_mm = mirror(&p.geometry.h_mm);
+        q.pn_mpa = mirror(&p.pn_mpa);
+        if let Some(b) = &mut q.geometry.blend {
+            b.part = crate::solvers::contact::mirror::field(g.mx, &b.part);
+        }
+        g.x0_mm = -(g.x0_mm + g.dx_mm * g.mx as f64);
+        g.anchor_mm[0] = -g.anchor_mm[0];
+        let c = &mut q.creepages;
+        (c.cksi, c.cphi_per_mm, c.reversed) = (-c.cksi, -c.cphi_per_mm, !c.reversed);
+        q
+    }
+
+    /// A model's forces on a patch, without its fields.
+    fn brief(f: &PatchForces) -> String {
+        format!("FX {} FS {} MN {} N ({:?} adhering, {:?} slipping)", f.fx_n, f.fs_n, f.mn_nmm, f.n_adhesion, f.n_slip)
+    }
+
+    /// `f` on patch `p` mirrored: FX and MN negated, the tractions' x parts negated and each row of
+    /// every field reversed (what `g` on the mirrored patch must equal).
+    fn assert_mirrored(f: &PatchForces, g: &PatchForces, p: &NormalPatch, what: &str) {
+        let frame = RollingFrame::of(p);
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1e-9 * p.fn_n);
+        assert!(
+            close(f.fx_n, -g.fx_n) && close(f.fs_n, g.fs_n) && close(f.mn_nmm, -g.mn_nmm),
+            "{what}: {f:?} vs {g:?}"
+        );
+        assert_eq!((f.fn_n, f.n_adhesion, f.n_slip), (g.fn_n, g.n_adhesion, g.n_slip), "{what}");
+        assert_eq!(f.slip, g.slip.clone().map(|s| frame.field(s)), "{what}: slip");
+        let (fx, fy) = f.shift_tractions_mpa.clone().unwrap();
+        let (gx, gy) = frame.pair(g.shift_tractions_mpa.clone().unwrap());
+        let scale = fx.iter().chain(&fy).fold(0.0f64, |m, v| m.max(v.abs()));
+        for (k, (a, b)) in fx.iter().zip(&gx).chain(fy.iter().zip(&gy)).enumerate() {
+            assert!((a - b).abs() <= 1e-12 * scale, "{what}: element {k}: {a} vs {b} MPa");
+        }
+    }
+
+    /// The patch `p` left with the model's tractions `f` (what the case after it continues).
+    fn left_by(p: &NormalPatch, f: &PatchForces) -> Previous {
+        let (px_mpa, py_mpa) = f.shift_tractions_mpa.clone().unwrap();
+        let old = crate::wheelrail::shift::OldPatch {
+            extent: p.geometry.extent,
+            grid: crate::wheelrail::shift::IndexBox::of_grid(&p.geometry.grid),
+            px_mpa,
+            py_mpa,
+            contact: crate::wheelrail::shift::contact_of(&p.pn_mpa),
+            contact_before: None,
+        };
+        Previous { patches: vec![old], iterated: false }
+    }
+
+    #[test]
+    fn a_patch_rolling_backwards_is_the_mirror_of_the_mirrored_patch_for_the_brush_models() {
+        // Right case 14's patches rolling towards −x (CHI = 180°): each model, in a steady start,
+        // a shift and a transient step, from rest and continuing a history, equals the mirror
+        // image of the same model on the mirrored patch rolling along +x.
+        let (s, patches) = manchester_14();
+        let (rail, wheel, _) = prepare(&s).unwrap();
+        let row = s.cases.iter().find(|r| r.contact_case == 14).unwrap();
+        let case = case_of(&s, row, &rail, &wheel, material_of_spec(&s.material).unwrap());
+        let motions = [
+            ("uba", Motion::Rolling),
+            ("fastsim", Motion::Shift { s_ws_mm: 0.0 }),
+            ("uba", Motion::Transient { dq_mm: 0.4 }),
+        ];
+        for forward in &patches {
+            let mut p = forward.clone();
+            p.creepages.reversed = true;
+            let q = mirrored(&p);
+            assert!(!q.creepages.reversed);
+            for (model, motion) in motions {
+                let case = WheelRailCase { motion, ..case };
+                let what = format!("{model} {motion:?} FN {:.0} N", p.fn_n);
+                let (f, g) = (
+                    patch_forces(&p, model, s.mu, &case, None).unwrap(),
+                    patch_forces(&q, model, s.mu, &case, None).unwrap(),
+                );
+                assert_mirrored(&f, &g, &p, &format!("{what} from rest"));
+                // Rolling backwards matters (a shift has no direction): the same patch rolling
+                // along +x pulls otherwise.
+                let ahead = patch_forces(forward, model, s.mu, &case, None).unwrap();
+                let moved = (f.fx_n - ahead.fx_n).abs().max((f.mn_nmm - ahead.mn_nmm).abs());
+                let rolls = !matches!(motion, Motion::Shift { .. });
+                assert!(!rolls || moved > 1e-3 * p.fn_n, "{what}: rolling backwards changed nothing ({moved})");
+                // Continuing: each patch's history in its own frame, the mirror's mirrored.
+                let (hf, hg) = (left_by(&p, &f), left_by(&q, &g));
+                let (f2, g2) = (
+                    patch_forces(&p, model, s.mu, &case, Some(&hf)).unwrap(),
+                    patch_forces(&q, model, s.mu, &case, Some(&hg)).unwrap(),
+                );
+                assert_mirrored(&f2, &g2, &p, &format!("{what} continued"));
+            }
+        }
+    }
+
+    #[test]
+    fn a_patch_rolling_backwards_carries_its_history_through_transient_rolling() {
+        // The UBA rolling right case 14's patches towards −x step by step (DQ = 2 DX): each step
+        // continues the tractions the step before left (in the patch's own frame), so the second
+        // step differs from a step from rest, and the sequence is the mirror image of the
+        // mirrored patches' sequence along +x step for step.
+        let (s, patches) = manchester_14();
+        let (rail, wheel, _) = prepare(&s).unwrap();
+        let row = s.cases.iter().find(|r| r.contact_case == 14).unwrap();
+        let case = case_of(&s, row, &rail, &wheel, material_of_spec(&s.material).unwrap());
+        let case = WheelRailCase { motion: Motion::Transient { dq_mm: 2.0 * s.dx_mm }, ..case };
+        for forward in &patches {
+            let mut p = forward.clone();
+            p.creepages.reversed = true;
+            let q = mirrored(&p);
+            let (mut hp, mut hq) = (None, None);
+            let mut steps = Vec::new();
+            for step in 0..3 {
+                let f = patch_forces(&p, "uba", s.mu, &case, hp.as_ref()).unwrap();
+                let g = patch_forces(&q, "uba", s.mu, &case, hq.as_ref()).unwrap();
+                assert_mirrored(&f, &g, &p, &format!("step {step}, FN {:.0} N", p.fn_n));
+                (hp, hq) = (Some(left_by(&p, &f)), Some(left_by(&q, &g)));
+                steps.push(f);
+            }
+            // From rest the same patch gives the first step's forces again; continued it does not.
+            let rest = patch_forces(&p, "uba", s.mu, &case, None).unwrap();
+            assert_eq!(rest, steps[0]);
+            let moved = (steps[1].fx_n - rest.fx_n).abs().max((steps[1].fs_n - rest.fs_n).abs());
+            assert!(moved > 1e-4 * p.fn_n, "FN {:.0} N: the history carried nothing ({moved} N)", p.fn_n);
+            println!("FN {:.1} N: FX {:.3} {:.3} {:.3} N", p.fn_n, steps[0].fx_n, steps[1].fx_n, steps[2].fx_n);
+        }
+    }
+
+    #[test]
+    fn a_steady_start_rolling_backwards_is_the_models_steady_solve() {
+        // The steady case that starts a sequence (the brush models' own march) and the models'
+        // steady path (the patch's module-3 scene) take a patch rolling towards −x through the
+        // same frame: the same forces and slip.
+        let (s, patches) = manchester_14();
+        let (rail, wheel, _) = prepare(&s).unwrap();
+        let row = s.cases.iter().find(|r| r.contact_case == 14).unwrap();
+        let case = case_of(&s, row, &rail, &wheel, material_of_spec(&s.material).unwrap());
+        for forward in &patches {
+            let mut p = forward.clone();
+            p.creepages.reversed = true;
+            for model in ["fastsim", "uba"] {
+                let (f, g) =
+                    (patch_forces(&p, model, s.mu, &case, None).unwrap(), patch_solve(&p, model, s.mu, &case).unwrap());
+                let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * p.fn_n;
+                assert!(
+                    close(f.fx_n, g.fx_n) && close(f.fs_n, g.fs_n) && close(f.mn_nmm, g.mn_nmm),
+                    "{model}: {f:?} vs {g:?}"
+                );
+                assert_eq!((f.n_adhesion, f.n_slip, &f.slip), (g.n_adhesion, g.n_slip, &g.slip), "{model}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_wheel_rolling_backwards_carries_the_ubas_history_as_the_exact_theorys() {
+        // m1_trans_roll's first steps (transient rolling from rest, DQ = DX) and the same wheel
+        // rolling backwards on the mirrored track (VS, VPITCH and the yaw negated): its patch
+        // rolls towards −x (CHI = 180°), and the UBA, as the exact theory, carries its tractions
+        // from step to step and gives the mirror image of the forward run.
+        let uba = |t: String| t.replace("solvers = [\"contact\"]", "solvers = [\"contact\", \"uba\"]");
+        let mut ahead = scene("m1_trans_roll_1", uba);
+        ahead.cases.truncate(6);
+        let mut back = ahead.clone();
+        for row in &mut back.cases {
+            row.yaw_rad = -row.yaw_rad;
+            for k in [0, 4, 5] {
+                row.velocity[k] = -row.velocity[k];
+            }
+        }
+        let (ahead, back) = (run_scene(&ahead).unwrap(), run_scene(&back).unwrap());
+        let mut worst = 0.0f64;
+        for ((c, a), (_, b)) in ahead.cases.iter().zip(&back.cases) {
+            assert!(b.normal.patches.iter().all(|p| p.creepages.reversed), "case {c}");
+            assert!(a.normal.patches.iter().all(|p| !p.creepages.reversed), "case {c}");
+            for model in [EXACT, "uba"] {
+                let (f, g) = (of(a, model, 0), of(b, model, 0));
+                let gap = (f.fx_n + g.fx_n).abs().max((f.fs_n - g.fs_n).abs()).max((f.mn_nmm + g.mn_nmm).abs() / 100.0);
+                worst = worst.max(gap / f.fn_n);
+                assert!(gap <= 1e-12 * f.fn_n, "case {c} {model}: {} vs {}", brief(f), brief(g));
+            }
+        }
+        println!("worst mirror gap {worst:.2e} FN");
+        // The UBA's history carries: from rest on an unchanging patch each step would repeat the
+        // first; the force grows step by step instead.
+        let fx: Vec<f64> = back.cases.iter().map(|(_, r)| of(r, "uba", 0).fx_n).collect();
+        println!("UBA FX backwards {fx:?}");
+        assert!((fx[1] - fx[0]).abs() > 1e-3 * fx[0].abs(), "{fx:?}");
     }
 }

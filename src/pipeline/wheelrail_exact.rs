@@ -141,9 +141,10 @@ pub fn patch_forces(
     let mut params = TangentialParams::new(mu_solve, sign * c.cksi, c.ceta, sign * c.cphi_per_mm, dq_mm);
     params.tol = options.tolerance;
     params.max_iter = options.max_iterations;
-    let extra = p.extra_slip.as_ref().map(|(wx, wy)| {
-        (solver_frame.field_x(field_in_grid_order(&grid, wx)), solver_frame.field(field_in_grid_order(&grid, wy)))
-    });
+    let extra = p
+        .extra_slip
+        .as_ref()
+        .map(|(wx, wy)| solver_frame.pair((field_in_grid_order(&grid, wx), field_in_grid_order(&grid, wy))));
     let extra = extra.as_ref().map(|(wx, wy)| (wx.as_slice(), wy.as_slice()));
     let r: StepResult = if shift || rolling_dq_mm.is_some() {
         let solver = cache.step_solver(&grid, &case.material, (&x, &y), rolling_dq_mm)?;
@@ -153,10 +154,7 @@ pub fn patch_forces(
             solver.set_bound(&g)?;
         }
         let (px0, py0) = previous_tractions(p, case);
-        let (px0, py0) = (
-            solver_frame.field_x(field_in_grid_order(&grid, &px0)),
-            solver_frame.field(field_in_grid_order(&grid, &py0)),
-        );
+        let (px0, py0) = solver_frame.pair((field_in_grid_order(&grid, &px0), field_in_grid_order(&grid, &py0)));
         solver.transient_step(&params, &px0, &py0, None)?
     } else {
         let (_, solver, last) = cache.get(&grid, &case.material, (&x, &y))?;

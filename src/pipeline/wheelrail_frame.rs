@@ -1,7 +1,9 @@
 //! A wheel–rail patch's frame for the models and the exact solver: its own, or for a patch rolling
 //! towards −x (CONTACT's CHI = 180°, `wr_creep_cref`) the problem mirrored about x = 0, as module 3
 //! solves `chi_deg = 180` ([`mirror`]: CKSI, CPHI and the x parts of the tractions negated, each
-//! row of a field reversed; the mirror undoes itself).
+//! row of a field reversed; the mirror undoes itself). The exact solver, the models' patch scene
+//! and the models that carry their history (`wheelrail_brush`) all take it: a history is kept in
+//! the patch's own frame and mapped in on every step.
 
 use crate::solvers::contact::mirror;
 use crate::solvers::contact::tangential::StepResult;
@@ -45,6 +47,17 @@ impl RollingFrame {
         }
     }
 
+    /// A pair of per-element fields of (x, y) components (tractions, slips) in this frame, and back.
+    pub fn pair(&self, (x, y): (Vec<f64>, Vec<f64>)) -> (Vec<f64>, Vec<f64>) {
+        (self.field_x(x), self.field(y))
+    }
+
+    /// A module-3 solution's totals (Fx/FN, Fy/FN, MZ [N mm]) in this frame, and back: Fx and MZ
+    /// change sign with x.
+    pub fn totals(&self, (fx_over_fn, fy_over_fn, mz_nmm): (f64, f64, f64)) -> (f64, f64, f64) {
+        (self.sign() * fx_over_fn, fy_over_fn, self.sign() * mz_nmm)
+    }
+
     /// An interval of x [mm] in this frame.
     pub fn extent_x(&self, x_mm: [f64; 2]) -> [f64; 2] {
         match self.mirrored {
@@ -55,13 +68,8 @@ impl RollingFrame {
 
     /// A solution in this frame back in the patch's.
     pub fn back(&self, r: StepResult) -> StepResult {
-        StepResult {
-            px: self.field_x(r.px),
-            py: self.field(r.py),
-            sx: self.field_x(r.sx),
-            sy: self.field(r.sy),
-            state: self.field(r.state),
-            ..r
-        }
+        let (px, py) = self.pair((r.px, r.py));
+        let (sx, sy) = self.pair((r.sx, r.sy));
+        StepResult { px, py, sx, sy, state: self.field(r.state), ..r }
     }
 }
