@@ -3,14 +3,9 @@
 //! imported, solved and compared with CONTACT's printed output; exported back with B = 1 and
 //! FLXZ. Module 1's sheet is gated by `scenes/wheelrail/testbank_21`.
 
-use crate::common::root;
-use creepbench::comparison::references::contact_output::{self, printed::Printed, CaseBody};
+use crate::common::{half_units, root};
+use creepbench::comparison::references::contact_output::{self, CaseBody};
 use creepbench::import::contact::scene::import_text;
-
-/// |ours − theirs| in half-units of CONTACT's last printed digit.
-fn half_units(ours: f64, theirs: Printed) -> f64 {
-    (ours - theirs.value).abs() / theirs.half_unit
-}
 
 /// The deck's three cases (steady rolling with the sheet, frictionless compression with it, the
 /// same rolling without it) solved as imported: FY, MZ (as the reader gives them, in the

@@ -3,14 +3,9 @@
 //! D >= 1 case sized; the imported scene must solve the same problem. Reference: CONTACT's own
 //! output for a deck written by hand (reference/contact_handwritten/, its README).
 
-use crate::common::root;
+use crate::common::{half_units, root};
 use creepbench::comparison::references::contact_output::{self, CaseBody};
 use creepbench::import::contact::scene::import_text;
-
-/// |ours − theirs| in half-units of CONTACT's last printed digit.
-fn half_units(ours: f64, theirs: contact_output::printed::Printed) -> f64 {
-    (ours - theirs.value).abs() / theirs.half_unit
-}
 
 #[test]
 fn a_load_changed_without_a_new_grid_keeps_the_grid_and_follows_the_curvatures() {

@@ -225,3 +225,8 @@ pub fn wheelrail_suite_run() -> &'static WheelRailRun {
         WheelRailRun { dir, outcome }
     })
 }
+
+/// |ours − theirs| in half-units of CONTACT's last printed digit.
+pub fn half_units(ours: f64, theirs: creepbench::comparison::references::contact_output::printed::Printed) -> f64 {
+    (ours - theirs.value).abs() / theirs.half_unit
+}
