@@ -109,6 +109,19 @@ impl NormalSolver {
     /// contact set, negative pressures clipped, overlap elements re-entered, total force imposed
     /// by scaling after every step.
     pub fn solve(&mut self, h_mm: &[f64], fn_n: f64, params: &NormalParams) -> Result<NormalSolution, ContactError> {
+        self.solve_from(h_mm, fn_n, params, None)
+    }
+
+    /// [`NormalSolver::solve`] started from the pressure `start` [MPa] (a nearby problem's
+    /// solution: the same grid with a nearby undeformed distance) where it is given and carries a
+    /// load, scaled to carry FN; the same solution to the tolerance, in fewer iterations.
+    pub fn solve_from(
+        &mut self,
+        h_mm: &[f64],
+        fn_n: f64,
+        params: &NormalParams,
+        start: Option<&[f64]>,
+    ) -> Result<NormalSolution, ContactError> {
         self.check(h_mm, params)?;
         if !(fn_n.is_finite() && fn_n > 0.0) {
             return Err(ContactError::OutOfRange {
@@ -117,10 +130,22 @@ impl NormalSolver {
                 requirement: "finite and > 0",
             });
         }
-        // Start: uniform pressure carrying FN on all elements.
-        let allowed = (0..self.n).filter(|&k| self.allows(k)).count().max(1);
-        let p: Vec<f64> =
-            (0..self.n).map(|k| if self.allows(k) { fn_n / (self.area_mm2 * allowed as f64) } else { 0.0 }).collect();
+        // Start: the given pressure scaled to FN, else uniform pressure carrying FN on all elements.
+        let given = start.filter(|s| s.len() == self.n).map(|s| -> Vec<f64> {
+            (0..self.n).map(|k| if self.allows(k) && s[k].is_finite() { s[k].max(0.0) } else { 0.0 }).collect()
+        });
+        let p: Vec<f64> = match given.filter(|g| g.iter().sum::<f64>() > 0.0) {
+            Some(g) => {
+                let scale = fn_n / (self.area_mm2 * g.iter().sum::<f64>());
+                g.iter().map(|v| v * scale).collect()
+            }
+            None => {
+                let allowed = (0..self.n).filter(|&k| self.allows(k)).count().max(1);
+                (0..self.n)
+                    .map(|k| if self.allows(k) { fn_n / (self.area_mm2 * allowed as f64) } else { 0.0 })
+                    .collect()
+            }
+        };
         let (p, iterations, residual, converged) = self.iterate(h_mm, p, Some(fn_n), params)?;
         // Approach: mean of h + u over the final contact set.
         let mut u = vec![0.0; self.n];

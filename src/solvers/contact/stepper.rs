@@ -1025,14 +1025,16 @@ impl Contact<'_> {
         let un = c.normal_of(px, py).map_err(|source| ContactRunError::Step { step: at.step, source })?;
         let un = if self.mirrored { mirror::field(mx, &un) } else { un };
         let h: Vec<f64> = self.undeformed_mm(at).iter().zip(&un).map(|(h, u)| h + u).collect();
+        // The outer iteration's last pressure starts the next normal solve (a nearby problem).
+        let last = self.loaded.as_ref().map(|l| if self.mirrored { mirror::field(mx, &l.pn) } else { l.pn.clone() });
         let solved = match at.pen_mm {
             Some(pen_mm) => self
                 .normal
-                .solve_approach(&h, pen_mm, &NormalParams::default())
+                .solve_approach_from(&h, pen_mm, &NormalParams::default(), last.as_deref())
                 .map_err(|source| ContactRunError::Approach { pen_mm, source })?,
             None => self
                 .normal
-                .solve(&h, at.fn_n, &NormalParams::default())
+                .solve_from(&h, at.fn_n, &NormalParams::default(), last.as_deref())
                 .map_err(|source| ContactRunError::Normal { fn_n: at.fn_n, source })?,
         };
         if !solved.converged {
