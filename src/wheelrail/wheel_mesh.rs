@@ -1,8 +1,9 @@
 //! CONTACT's meshed wheel surface (`wr_ud_planar` in m_wr_undefdist, with `trim_wheel_profile`,
-//! `grid_revolve_profile` and `interp_cartz2unif`): the wheel profile sampled every DS of arc
-//! length from the patch's reference point, revolved into slices every DX along the track from
-//! it, placed in the patch's frame and interpolated bilinearly in each quadrilateral's logical
-//! (u, v) at the element centres. Between its nodes the mesh lies inside a concave profile.
+//! `grid_revolve_profile` and `interp_cartz2unif`): the wheel profile sampled every DS of its
+//! spline's parameter (the chord length of its points; a closed form: of arc length) from the
+//! patch's reference point, revolved into slices every DX along the track from it, placed in the
+//! patch's frame and interpolated bilinearly in each quadrilateral's logical (u, v) at the element
+//! centres. Between its nodes the mesh lies inside a concave profile.
 
 use super::curve::Curve;
 use super::patch::{PatchFrame, PatchGrid};
@@ -15,7 +16,7 @@ pub enum WheelSurface {
     /// The exact surface of revolution of the profile.
     #[default]
     Exact,
-    /// CONTACT's mesh: profile points DS apart in arc length, slices DX apart, bilinear.
+    /// CONTACT's mesh: profile points DS apart in the spline's parameter, slices DX apart, bilinear.
     ContactMesh,
 }
 
@@ -53,6 +54,27 @@ fn step_arc(curve: &dyn Curve, y0: f64, ds: f64) -> Option<f64> {
     (lo..=hi).contains(&(y0 + h)).then_some(y0 + h)
 }
 
+/// A profile node: its lateral place y_w and the wheel's radius there [mm].
+type ProfileNode = (f64, Option<f64>);
+
+/// The profile's node `k` steps of `ds` from the anchor (k signed), `prev_y` the node before it
+/// on the same side: on a profile's spline at its parameter `s_mid` + k ds (the chord length of
+/// its points; CONTACT's `trim_wheel_profile` samples `spline_get_xyz_at_s` from `sw_mid`), on a
+/// closed form one arc length ds on from `prev_y`; `None` past the profile's ends.
+fn profile_node(wheel: &PlacedWheel, s_mid: Option<f64>, prev_y: f64, k: i64, ds: f64) -> Option<ProfileNode> {
+    let radius = |z: f64| wheel.nominal_radius_mm + z;
+    match s_mid {
+        Some(s_mid) => {
+            let p = wheel.curve.spline_point(s_mid + k as f64 * ds)?;
+            Some((p.y_mm, Some(radius(p.z_mm))))
+        }
+        None => {
+            let y = step_arc(wheel.curve, prev_y, ds * k.signum() as f64)?;
+            Some((y, wheel.curve.z_mm(y).map(radius)))
+        }
+    }
+}
+
 /// The mesh's nodes in plane coordinates (x, s, n): `slices` fastest, then profile points.
 struct Mesh {
     slices: usize,
@@ -70,25 +92,23 @@ fn mesh(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedWheel) -> Mesh {
     let y_mid = q.y - wheel.y_offset_mm;
     let (s_lo, s_hi) = (grid.s0_mm - GUARD * grid.ds_mm, grid.s0_mm + (grid.ms as f64 + GUARD) * grid.ds_mm);
     let (x_lo, x_hi) = (grid.x0_mm - GUARD * grid.dx_mm, grid.x0_mm + (grid.mx as f64 + GUARD) * grid.dx_mm);
-    // The wheel's radius at profile position y_w, once per profile point (every slice shares it).
-    let radius = |y_w: f64| wheel.curve.z_mm(y_w).map(|z| wheel.nominal_radius_mm + z);
     let node = |x: f64, y_w: f64, rho: f64| -> [f64; 3] {
         let z = (rho * rho - x * x).max(0.0).sqrt();
         to_plane(wheel.to_track(Vector3::new(x, wheel.y_offset_mm + y_w, z)))
     };
     // Profile points each way from the anchor until their s has left the grid's extent (an
-    // anchor outside it: until they have crossed it), each with its radius.
+    // anchor outside it: until they have crossed it), each with its lateral place and radius.
     let outside = |s: f64| (s_lo - s).max(s - s_hi).max(0.0);
-    let mid = (y_mid, radius(y_mid));
+    let s_mid = wheel.curve.s_at_y(y_mid);
+    let mid = profile_node(wheel, s_mid, y_mid, 0, grid.ds_mm).unwrap_or((y_mid, None));
     let mut profile = vec![mid];
-    for dir in [-1.0, 1.0] {
-        let mut y = y_mid;
+    for dir in [-1, 1] {
         let mut side = Vec::new();
-        let mut last = mid.1.map_or(f64::INFINITY, |rho| outside(node(q.x, y, rho)[1]));
-        for _ in 0..MAX_NODES {
-            let Some(next) = step_arc(wheel.curve, y, dir * grid.ds_mm) else { break };
+        let mut last = mid.1.map_or(f64::INFINITY, |rho| outside(node(q.x, mid.0, rho)[1]));
+        let mut y = mid.0;
+        for k in 1..=MAX_NODES as i64 {
+            let Some((next, rho)) = profile_node(wheel, s_mid, y, dir * k, grid.ds_mm) else { break };
             y = next;
-            let rho = radius(y);
             side.push((y, rho));
             let Some([_, s, _]) = rho.map(|rho| node(q.x, y, rho)) else { break };
             let d = outside(s);
@@ -97,7 +117,7 @@ fn mesh(frame: &PatchFrame, grid: &PatchGrid, wheel: &PlacedWheel) -> Mesh {
             }
             last = d;
         }
-        if dir < 0.0 {
+        if dir < 0 {
             side.reverse();
             side.extend(profile);
             profile = side;
