@@ -8,7 +8,7 @@
 #
 # CONTACT: a CONTACT program (e.g. the gfortran build of ../shared/tools/build_contact.sh);
 # ROUNDS: alternated rounds, the median taken (default 3); CREEPBENCH: default
-# target/release/creepbench. Each deck is run whole by CONTACT (`CONTACT 2 NAME` in a scratch
+# target/release/creepbench; DECKS (environment): the decks to time, default all of them. Each deck is run whole by CONTACT (`CONTACT 2 NAME` in a scratch
 # folder); this project runs every scene of scenes/contact_public/ whose [origin] file is the deck
 # (`creepbench simulate`, one thread, the scene's own solvers), the CPU times (user + system, GNU
 # time) summed over its scenes. Prints a Markdown table; docs/models.md ("Speed against CONTACT")
@@ -26,9 +26,9 @@ trap 'rm -rf "$work"' EXIT
 export RAYON_NUM_THREADS=1
 
 # plastic_3bl (1 x 1 grids) runs below GNU time's 10 ms resolution in both programs.
-decks="examples/bentall examples/spence35 examples/visc_cylindr examples/tractcurv
+decks=${DECKS:-"examples/bentall examples/spence35 examples/visc_cylindr examples/tractcurv
 examples/fastsim examples/ertz_temperature testbank/examples_temp/euro_tractcurv
-testbank/examples_plast/tractcurve_plast testbank/examples_plast/catt3d_plast"
+testbank/examples_plast/tractcurve_plast testbank/examples_plast/catt3d_plast"}
 
 # CPU seconds (user + system) of a command, its output discarded; a command that fails stops
 # the script with its name.
