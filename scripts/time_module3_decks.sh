@@ -6,7 +6,7 @@
 #
 #   scripts/time_module3_decks.sh CONTACT [ROUNDS] [CREEPBENCH]
 #
-# CONTACT: a CONTACT program (e.g. the gfortran build of ../shared/tools/build_contact.sh);
+# CONTACT: a CONTACT program (e.g. a gfortran build, reference/README.md);
 # ROUNDS: alternated rounds, the median taken (default 3); CREEPBENCH: default
 # target/release/creepbench; DECKS (environment): the decks to time, default all of them. Each deck is run whole by CONTACT (`CONTACT 2 NAME` in a scratch
 # folder); this project runs every scene of scenes/contact_public/ whose [origin] file is the deck
