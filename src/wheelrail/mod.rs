@@ -485,8 +485,14 @@ fn patches_at(
         let (fn_n, pn_mpa) = match solvers.approximate {
             Some(method) => solve_approximate(method, &geometry, &case.material)
                 .map_err(|source| WheelRailError::Approximate { patch, source })?,
-            None => solve_normal(&geometry, &case.material, solvers, normal_tol)
-                .map_err(|source| WheelRailError::Normal { patch, source })?,
+            None => match solve_normal(&geometry, &case.material, solvers, normal_tol) {
+                Ok(solved) => solved,
+                // No element of its grid interpenetrates: the patch carries nothing and is left
+                // out (CONTACT's `wr_solve_cp`: "no actual contact in patch", ncon = 0, zero force;
+                // a trial height in a shift whose material-fixed grid misses a tiny overlap).
+                Err(ContactError::NoContact) if no_overlap_on_grid(&geometry) => continue,
+                Err(source) => return Err(WheelRailError::Normal { patch, source }),
+            },
         };
         let pen_mm = -geometry.h_mm.iter().copied().fold(f64::INFINITY, f64::min);
         let shift = matches!(case.motion, Motion::Shift { .. });
@@ -504,6 +510,11 @@ fn patches_at(
         out.push(NormalPatch { geometry, fn_n, pn_mpa, pen_mm, creepages, extra_slip });
     }
     Ok(out)
+}
+
+/// Whether no element of the patch's grid interpenetrates (every undeformed distance positive).
+fn no_overlap_on_grid(g: &PatchGeometry) -> bool {
+    g.h_mm.iter().all(|&h| h >= 0.0)
 }
 
 /// The normal problems of `patches` solved again to `tol` (their geometry kept); an approximate

@@ -89,6 +89,9 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
             || surface_slip.contains(&f.scene.as_str())
             || f.scene.starts_with("groove_li_")
     };
+    // The planar approach in a sequence of shifts (issue 45): d3_shift_site_b case 4, CONTACT's
+    // grid of its trial heights' patch links (D = 3; the same deck with D = 2 as far off).
+    let planar_sequence = |f: &&&Finding| f.scene == "d3_shift_site_b" && f.step == Some(4);
     assert!(
         all_gaps.iter().all(|f| in_testbank(f)
             || kpec(f)
@@ -100,9 +103,12 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
             || locus(f)
             || conformal_shift(f)
             || conformal_decks(f)
-            || massless(f)),
+            || massless(f)
+            || planar_sequence(f)),
         "{all_gaps:?}"
     );
+    let outside: Vec<_> = all_gaps.iter().filter(|f| planar_sequence(f) && !(f.gated && f.passed())).collect();
+    assert!(outside.is_empty(), "d3_shift_site_b 4 within its bound: {outside:?}");
     assert!(
         all_gaps.iter().filter(|f| conformal_shift(f)).all(|f| f.gated && f.passed()),
         "t3_t1_conformal 7 within its bound"

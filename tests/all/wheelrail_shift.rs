@@ -181,3 +181,25 @@ fn a_shift_continues_the_steady_case_before_it() {
     let (continued_n, rest_n) = (fx(result), fx(&from_rest.cases[0].1));
     assert!((continued_n - rest_n).abs() > 0.1 * continued_n.abs(), "{continued_n} vs {rest_n}");
 }
+
+/// A trial height of the height search may give a candidate patch whose material-fixed grid
+/// misses its tiny overlap (no element interpenetrates): that patch carries nothing and is left
+/// out, as CONTACT's `wr_solve_cp` ("no actual contact in patch", ncon = 0) gives it zero force,
+/// instead of ending the case. `d3_shift_site_b` (D = 3, FZ prescribed) met one on its first
+/// trial height after the yaw changes (case 3); the cases end with CONTACT's numbers of patches
+/// (2, 2, 3, 3: `examples/d3_shift_site_b.ref_out`).
+#[test]
+fn a_trial_height_whose_grid_misses_a_tiny_overlap_leaves_that_patch_out() {
+    let run = run_scene(&scene("d3_shift_site_b")).unwrap();
+    let path = root().join("reference/contact_wheelrail/examples/d3_shift_site_b.ref_out");
+    let text = std::fs::read_to_string(path).unwrap();
+    let printed: Vec<usize> = text
+        .lines()
+        .filter_map(|l| l.split_once("RIGHT WHEEL,").and_then(|(_, r)| r.split_whitespace().next()))
+        .map(|n| n.parse().unwrap())
+        .collect();
+    let ours: Vec<usize> = run.cases.iter().map(|(_, r)| r.normal.patches.len()).collect();
+    assert_eq!(printed, [2, 2, 3, 3]);
+    assert_eq!(ours, printed);
+    assert!(run.cases.iter().all(|(_, r)| r.normal.patches.iter().all(|p| p.fn_n > 0.0)));
+}

@@ -94,7 +94,7 @@ pub struct KnownGap {
 /// "Agreement with CONTACT": each bounded at its measured gap by `tolerances.toml`). The
 /// benchmark's right case 11 (and case 9 of the KPEC deck), a gap until the rail was placed by its
 /// spline's gauge point and the gap mesh started at its lowest point, is reproduced.
-pub const KNOWN_GAPS: [KnownGap; 52] = [
+pub const KNOWN_GAPS: [KnownGap; 53] = [
     KnownGap {
         deck: "mbench_a22_kpec.inp",
         case: 1,
@@ -175,7 +175,11 @@ pub const KNOWN_GAPS: [KnownGap; 52] = [
     KnownGap { deck: "mbench_massless_position_right.inp", case: 3, feature: MASSLESS_HEIGHT },
     KnownGap { deck: "mbench_massless_position_right.inp", case: 4, feature: MASSLESS_HEIGHT },
     KnownGap { deck: "mbench_massless_position_right.inp", case: 5, feature: MASSLESS_HEIGHT },
+    KnownGap { deck: "d3_shift_site_b.inp", case: 4, feature: PLANAR_SHIFT_GRID },
 ];
+
+/// `d3_shift_site_b` case 4: the third shift continuing the sequence on three patches.
+const PLANAR_SHIFT_GRID: &str = "the third shift of a sequence on the site-B flange (three patches, the planar approach, FZ prescribed): CONTACT's grid of patch 2 keeps 5405 elements (NPOT) where this project's is 1269 (8272 half-units of a count), its FX of patch 2 3897 N against 2802 N (1642 half-units), FX(TR) 2.536e4 N against 2.423e4 (226), the contact angle of patch 2 139 half-units: CONTACT connects each trial height's patches to the previous trial's (`wr_connect_cps`, \"prev iter\"), each carrying the contact of the time before; at its first trial height the tread is one patch connected to the two tread patches of the case before, so it carries their contacts' union (x -8.6..5.4, y -29.4..14.2 mm), and at the later heights both halves the tread splits into inherit that box (its debug output, X = 1, C = 1); this project connects each patch to the patches of the time before by overlap, so patch 2 (y -31.4..-23 mm) inherits that patch's contact alone. The grid depends on the path of CONTACT's Newton-Raphson heights; the same with D = 2, so not the surface slip; cases 1-3 within their rules";
 
 /// `test-rollers3` cases 1, 5, 6, 9 (D = 3): contacts symmetric about their reference's plane in
 /// free rolling; their lateral forces are the iteration's residue.
