@@ -131,10 +131,7 @@ impl NormalSolver {
             });
         }
         // Start: the given pressure scaled to FN, else uniform pressure carrying FN on all elements.
-        let given = start.filter(|s| s.len() == self.n).map(|s| -> Vec<f64> {
-            (0..self.n).map(|k| if self.allows(k) && s[k].is_finite() { s[k].max(0.0) } else { 0.0 }).collect()
-        });
-        let p: Vec<f64> = match given.filter(|g| g.iter().sum::<f64>() > 0.0) {
+        let p: Vec<f64> = match self.start_of(start).filter(|g| g.iter().sum::<f64>() > 0.0) {
             Some(g) => {
                 let scale = fn_n / (self.area_mm2 * g.iter().sum::<f64>());
                 g.iter().map(|v| v * scale).collect()
@@ -198,10 +195,7 @@ impl NormalSolver {
         let gap: Vec<f64> = h_mm.iter().map(|h| h - approach_mm).collect();
         let overlap: Vec<f64> =
             gap.iter().enumerate().map(|(k, g)| if self.allows(k) { (-g).max(0.0) } else { 0.0 }).collect();
-        let given = start.filter(|s| s.len() == self.n).map(|s| -> Vec<f64> {
-            (0..self.n).map(|k| if self.allows(k) && s[k].is_finite() { s[k].max(0.0) } else { 0.0 }).collect()
-        });
-        let guess: Vec<f64> = match given {
+        let guess: Vec<f64> = match self.start_of(start) {
             Some(g) if Self::loads(&g, &overlap) => g,
             _ => overlap,
         };
@@ -219,6 +213,14 @@ impl NormalSolver {
             return Err(ContactError::NonFinite("normal pressure"));
         }
         Ok(NormalSolution { pn_mpa: p, approach_mm, iterations, residual, converged })
+    }
+
+    /// A given start pressure of this grid's size, kept where an element may carry pressure
+    /// (non-negative, finite), zero elsewhere.
+    fn start_of(&self, start: Option<&[f64]>) -> Option<Vec<f64>> {
+        start.filter(|s| s.len() == self.n).map(|s| {
+            (0..self.n).map(|k| if self.allows(k) && s[k].is_finite() { s[k].max(0.0) } else { 0.0 }).collect()
+        })
     }
 
     /// Whether the pressure `p` loads an element of the overlap (a start the CG can go on from).
