@@ -485,14 +485,12 @@ fn patches_at(
         let (fn_n, pn_mpa) = match solvers.approximate {
             Some(method) => solve_approximate(method, &geometry, &case.material)
                 .map_err(|source| WheelRailError::Approximate { patch, source })?,
-            None => match solve_normal(&geometry, &case.material, solvers, normal_tol) {
-                Ok(solved) => solved,
-                // No element of its grid interpenetrates: the patch carries nothing and is left
-                // out (CONTACT's `wr_solve_cp`: "no actual contact in patch", ncon = 0, zero force;
-                // a trial height in a shift whose material-fixed grid misses a tiny overlap).
-                Err(ContactError::NoContact) if no_overlap_on_grid(&geometry) => continue,
-                Err(source) => return Err(WheelRailError::Normal { patch, source }),
-            },
+            // No element of its grid interpenetrates: the patch carries nothing and is left out
+            // before any solve (CONTACT's `wr_solve_cp`: "no actual contact in patch", ncon = 0,
+            // zero force; a trial height in a shift whose material-fixed grid misses a tiny overlap).
+            None if no_overlap_on_grid(&geometry) => continue,
+            None => solve_normal(&geometry, &case.material, solvers, normal_tol)
+                .map_err(|source| WheelRailError::Normal { patch, source })?,
         };
         let pen_mm = -geometry.h_mm.iter().copied().fold(f64::INFINITY, f64::min);
         let shift = matches!(case.motion, Motion::Shift { .. });
