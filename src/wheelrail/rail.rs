@@ -225,10 +225,29 @@ impl<'a> PlacedRail<'a> {
     }
 
     /// The point of the rail at track y where the line `(y, z) + t (ny, nz)` meets it: the
-    /// distance t [mm] along the unit direction, found by Newton from t = 0.
+    /// distance t [mm] along the unit direction, found by Newton from t = 0, or, where the line
+    /// starts beside the profile's lateral range or Newton leaves it, from the line's point over
+    /// the range's nearer end with each iterate held inside the range.
     pub fn along(&self, [y, z]: [f64; 2], [ny, nz]: [f64; 2]) -> Option<f64> {
-        let mut t = 0.0;
+        self.newton_along([y, z], [ny, nz], 0.0, None).or_else(|| {
+            let [lo, hi] = self.y_range_mm();
+            let ranged = lo < hi && ny.abs() >= 1e-12;
+            if !ranged {
+                return None;
+            }
+            let inside = [lo + 1e-9 * (hi - lo), hi - 1e-9 * (hi - lo)];
+            let t0 = (y.clamp(inside[0], inside[1]) - y) / ny;
+            self.newton_along([y, z], [ny, nz], t0, Some(inside))
+        })
+    }
+
+    /// Newton's iteration of [`Self::along`] from `t0`; with `held`, each iterate's y kept in it.
+    fn newton_along(&self, [y, z]: [f64; 2], [ny, nz]: [f64; 2], t0: f64, held: Option<[f64; 2]>) -> Option<f64> {
+        let mut t = t0;
         for _ in 0..50 {
+            if let Some([lo, hi]) = held {
+                t = ((y + t * ny).clamp(lo, hi) - y) / ny;
+            }
             let yt = y + t * ny;
             let (z_rail, dz_dy) = self.z_and_slope(yt)?;
             let g = z + t * nz - z_rail;
@@ -298,5 +317,29 @@ mod tests {
         assert!((r.dz_dy(y_top).unwrap() - (-cant)).abs() < 1e-12);
         let t = r.along([5.0, -1.0], [0.0, 1.0]).unwrap();
         assert!((t - (r.z_mm(5.0).unwrap() + 1.0)).abs() < 1e-10);
+    }
+
+    #[test]
+    fn a_line_starting_beside_the_profile_meets_it_inside() {
+        // The crown spans y in [-40, 40]; a line from beside it (y = -45) running in at
+        // 18 deg downwards meets it near y = -35 (testbank case 35's flange rows: their normals
+        // start beside the gauge face).
+        let track = Track {
+            placement: RailPlacement::Absolute { y_mm: 0.0, z_mm: 0.0 },
+            cant_rad: 0.0,
+            deviation_mm_rad: [0.0; 3],
+            deviation_velocity: [0.0; 3],
+        };
+        let c = crown();
+        let r = PlacedRail::place(&c, &track).unwrap();
+        let (y, z) = (-45.0, -1.0);
+        let n = [18f64.to_radians().cos(), 18f64.to_radians().sin()];
+        assert!(r.z_mm(y).is_none(), "the start lies beside the profile");
+        let t = r.along([y, z], n).expect("the line meets the crown");
+        let (yt, zt) = (y + t * n[0], z + t * n[1]);
+        assert!((-40.0..=40.0).contains(&yt), "{yt}");
+        assert!((zt - r.z_mm(yt).unwrap()).abs() < 1e-9, "{zt} against {:?}", r.z_mm(yt));
+        // A line that runs away from the profile meets nothing.
+        assert!(r.along([y, z], [-1.0, 0.0]).is_none());
     }
 }
