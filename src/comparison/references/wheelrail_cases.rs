@@ -110,7 +110,7 @@ pub const KNOWN_GAPS: [KnownGap; 52] = [
     KnownGap {
         deck: "mbench_a22_varfric.inp",
         case: 3,
-        feature: "two patches 6.9 mm apart whose reference angles CONTACT turns towards each other (D_TURN = 9 mm), friction by contact angle (V = 1): every patch quantity within its digits, the totals FY(TR) and FY(WS) 0.10 N and 0.15 N off (1.9 and 2.9 half-units; patch 2's 8.4 kN FN is printed to 10 N); cause not found",
+        feature: "two patches 6.9 mm apart whose reference angles CONTACT turns towards each other (D_TURN = 9 mm), friction by contact angle (V = 1): every patch quantity within its digits, the totals FY(TR) and FY(WS) 0.10 N and 0.15 N off (1.9 and 2.9 half-units; patch 2's 8.4 kN FN is printed to 10 N). CONTACT's unprinted patch forces (a debug build's print in cpatch_forces_moments): patch 2 FN 8244.003 N, FS -1804.830 N, FX -637.169 N, delttr -0.2930452 rad against this project's 8243.995, -1804.917, -637.199, -0.2930453; patch 1 FS -396.305 against -396.318: the tangential forces 5e-5 apart, the normal 1e-6; the deck run by CONTACT with EPS = 1e-9 prints the same (not its stopping tolerance); cause not found",
     },
     KnownGap { deck: "m1_totforce.inp", case: 66, feature: TOTFORCE_HEIGHT },
     KnownGap { deck: "m1_totforce.inp", case: 70, feature: TOTFORCE_HEIGHT },
