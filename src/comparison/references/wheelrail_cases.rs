@@ -98,7 +98,7 @@ pub const KNOWN_GAPS: [KnownGap; 52] = [
     KnownGap {
         deck: "mbench_a22_kpec.inp",
         case: 1,
-        feature: "KPEC at y = 0: CONTACT's Newton-Raphson iteration on the wheelset height stopped at FZ = 9982 N of the 10000 N prescribed (its printed FZ(TR), MAXNR reached), this project's carries 10000 N: FN 0.17 % and FY(TR) 2.5 % off",
+        feature: "KPEC at y = 0: CONTACT's Newton-Raphson iteration on the wheelset height stopped at FZ = 9982 N of the 10000 N prescribed (its printed FZ(TR), MAXNR reached), this project's carries 10000 N: FN 0.17 % and FY(TR) 2.5 % off; CONTACT's stopping tolerance: the case run with EPS = 1e-9 (scene mbench_a22_kpec_eps9_1) prints FZ = 10000 N and FY(TR) 46.14 N, this project's 46.148",
     },
     KnownGap { deck: "mbench_a22_kpec.inp", case: 2, feature: KPEC_DETAIL },
     KnownGap { deck: "mbench_a22_kpec.inp", case: 3, feature: KPEC_DETAIL },
@@ -224,7 +224,7 @@ const TOTFORCE_HEIGHT: &str = "a shift continuing others with FZ = 237 N prescri
 
 /// KPEC's contact (B = 5) one element larger or smaller than CONTACT's (ANALYN's cases of the same
 /// deck are reproduced).
-const KPEC_DETAIL: &str = "KPEC (B = 5) on the Manchester profiles: the contact one element off CONTACT's (case 2), FN within 3.1 half-units (1.5 N), the reference's YCP(R) within 4.3 (0.2 um), FX, FS and MN within 1.7; cause not found (ANALYN, B = 6, on the same profiles reproduces CONTACT's digits)";
+const KPEC_DETAIL: &str = "KPEC (B = 5) on the Manchester profiles: the contact one element off CONTACT's (case 2), FN within 3.1 half-units (1.5 N), the reference's YCP(R) within 4.3 (0.2 um), FX, FS and MN within 1.7: CONTACT's stopping tolerance (EPS = 1e-5): the cases run with EPS = 1e-9 (scene mbench_a22_kpec_eps9_1) print this project's NCON 938, NADH 383, YCP(TR) 744.6479 and 727.5826 mm, every quantity within 0.97 half-units";
 
 /// The suffix of a known gap's quantities.
 pub const GAP_SUFFIX: &str = "_known_gap";
