@@ -328,11 +328,12 @@ impl Kernel {
         };
         // The viscoelastic memory to 1e-13 of the self-coefficient (Azz of the element itself).
         let tol = 1e-13 * elastic(0.0, 0.0)[0];
-        let at = |di: isize, dj: isize| {
-            let (x, y) = (di as f64 * dx_mm - offset_mm[0], dj as f64 * dy_mm - offset_mm[1]);
+        // A row of offsets at once: a viscoelastic row shares its memory (`Relaxation::apply_row`).
+        let row = |dj: isize, dis: table::Offsets| -> Vec<[f64; 4]> {
+            let y = dj as f64 * dy_mm - offset_mm[1];
             match relax {
-                None => elastic(x, y),
-                Some(r) => r.apply(|x| elastic(x, y), x, dx_mm, tol),
+                None => dis.map(|di| elastic(di as f64 * dx_mm - offset_mm[0], y)).collect(),
+                Some(r) => r.apply_row(|x| elastic(x, y), dis, dx_mm, offset_mm[0], tol),
             }
         };
         let key = table::Key {
@@ -342,7 +343,7 @@ impl Kernel {
             basis: basis as u8,
             relax: relax.map_or([0, 0], |r| [r.ratio.to_bits(), r.distance_mm.to_bits()]),
         };
-        let [zz, xx, yy, xy] = table::kernel_parts(mx, my, key, at);
+        let [zz, xx, yy, xy] = table::kernel_parts(mx, my, key, row);
         if zz.iter().chain(xx.iter()).chain(yy.iter()).chain(xy.iter()).any(|v| !v.is_finite()) {
             return Err(ContactError::NonFinite("influence coefficients"));
         }
