@@ -8,7 +8,10 @@
 #
 # CONTACT: a CONTACT program (e.g. a gfortran build, reference/README.md);
 # ROUNDS: alternated rounds, the median taken (default 3); CREEPBENCH: default
-# target/release/creepbench; DECKS (environment): the decks to time, default all of them. Each deck is run whole by CONTACT (`CONTACT 2 NAME` in a scratch
+# target/release/creepbench; DECKS (environment): the decks to time, default all of them; REPEAT
+# (environment, default 1): each program's run repeated that many times under one GNU time and its
+# CPU time divided by it, for decks whose scenes run below the timer's 10 ms resolution (a run of a
+# few milliseconds reads 0.00). Each deck is run whole by CONTACT (`CONTACT 2 NAME` in a scratch
 # folder); this project runs every scene of scenes/contact_public/ whose [origin] file is the deck
 # (`creepbench simulate`, one thread, the scene's own solvers), the CPU times (user + system, GNU
 # time) summed over its scenes. Prints a Markdown table; docs/models.md ("Speed against CONTACT")
@@ -30,14 +33,17 @@ decks=${DECKS:-"examples/bentall examples/spence35 examples/visc_cylindr example
 examples/fastsim examples/ertz_temperature testbank/examples_temp/euro_tractcurv
 testbank/examples_plast/tractcurve_plast testbank/examples_plast/catt3d_plast"}
 
-# CPU seconds (user + system) of a command, its output discarded; a command that fails stops
+repeat=${REPEAT:-1}
+
+# CPU seconds (user + system) of a command, its output discarded, the mean of `repeat` runs timed
+# together (the shell's loop counted in: against the program timed); a command that fails stops
 # the script with its name.
 cpu() {
-  if ! /usr/bin/time -f "%U %S" -o "$work/t" "$@" >/dev/null 2>"$work/err"; then
+  if ! /usr/bin/time -f "%U %S" -o "$work/t" bash -c 'for _ in $(seq "$0"); do "$@" || exit 1; done' "$repeat" "$@" >/dev/null 2>"$work/err"; then
     echo "failed: $* ($(tail -1 "$work/err"))" >&2
     exit 1
   fi
-  awk '{ printf "%.3f", $1 + $2 }' "$work/t"
+  awk -v n="$repeat" '{ printf "%.4f", ($1 + $2) / n }' "$work/t"
 }
 
 median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
@@ -71,7 +77,7 @@ ours() {
   local dir=$1 total=0
   for s in "$dir"/*.toml; do
     t=$(cpu "$bin" simulate "$s" --out "$work/res")
-    total=$(awk -v a="$total" -v b="$t" 'BEGIN { printf "%.3f", a + b }')
+    total=$(awk -v a="$total" -v b="$t" 'BEGIN { printf "%.4f", a + b }')
   done
   echo "$total"
 }

@@ -83,9 +83,23 @@ pub struct RectIntegrals {
 /// (Kalker 1990, eq. 5.20: corner double differences of the antiderivatives).
 pub fn rect_integrals(x: f64, y: f64, dx: f64, dy: f64) -> RectIntegrals {
     let (hx, hy) = (0.5 * dx, 0.5 * dy);
+    if y == 0.0 {
+        return on_axis(x, hx, hy);
+    }
     let xx = double_diff(f_xx, x, y, hx, hy);
     let yy = double_diff(f_yy, x, y, hx, hy);
     RectIntegrals { one_over_r: xx + yy, xx, yy, xy: double_diff(f_xy, x, y, hx, hy) }
+}
+
+/// [`rect_integrals`] at `Y = 0` (the row of a one-row grid, the viscoelastic memory's integrand):
+/// at `Y − hy = −hy` the antiderivatives [`f_xx`] and [`f_yy`] are those at `+hy` negated (odd in
+/// their `Y`; `asinh` is odd to the bit) and [`f_xy`] is equal, so each double difference is twice
+/// one single difference (`D − (−D)`, exact) or zero: the same numbers at half the cost.
+fn on_axis(x: f64, hx: f64, hy: f64) -> RectIntegrals {
+    let single = |f: fn(f64, f64) -> f64| f(x + hx, hy) - f(x - hx, hy);
+    let (xx, yy) = (single(f_xx), single(f_yy));
+    let (xx, yy) = (xx + xx, yy + yy);
+    RectIntegrals { one_over_r: xx + yy, xx, yy, xy: 0.0 }
 }
 
 /// Translation-invariant influence kernel over the grid offsets `di = i - I` in
@@ -328,11 +342,12 @@ impl Kernel {
         };
         // The viscoelastic memory to 1e-13 of the self-coefficient (Azz of the element itself).
         let tol = 1e-13 * elastic(0.0, 0.0)[0];
-        let at = |di: isize, dj: isize| {
-            let (x, y) = (di as f64 * dx_mm - offset_mm[0], dj as f64 * dy_mm - offset_mm[1]);
+        // A row of offsets at once: a viscoelastic row shares its memory (`Relaxation::apply_row`).
+        let row = |dj: isize, dis: table::Offsets| -> Vec<[f64; 4]> {
+            let y = dj as f64 * dy_mm - offset_mm[1];
             match relax {
-                None => elastic(x, y),
-                Some(r) => r.apply(|x| elastic(x, y), x, dx_mm, tol),
+                None => dis.map(|di| elastic(di as f64 * dx_mm - offset_mm[0], y)).collect(),
+                Some(r) => r.apply_row(|x| elastic(x, y), dis, dx_mm, offset_mm[0], tol),
             }
         };
         let key = table::Key {
@@ -342,7 +357,7 @@ impl Kernel {
             basis: basis as u8,
             relax: relax.map_or([0, 0], |r| [r.ratio.to_bits(), r.distance_mm.to_bits()]),
         };
-        let [zz, xx, yy, xy] = table::kernel_parts(mx, my, key, at);
+        let [zz, xx, yy, xy] = table::kernel_parts(mx, my, key, row);
         if zz.iter().chain(xx.iter()).chain(yy.iter()).chain(xy.iter()).any(|v| !v.is_finite()) {
             return Err(ContactError::NonFinite("influence coefficients"));
         }
@@ -468,6 +483,28 @@ mod tests {
                     (got - want).abs() <= 1e-11 * scale,
                     "{what} at ({x}, {y}): closed form {got}, quadrature {want}"
                 );
+            }
+        }
+    }
+
+    #[test]
+    fn on_the_axis_the_integrals_are_the_double_differences_to_the_bit() {
+        // The shortcut at Y = 0 against the four-corner differences, across scales and signs.
+        let (dx, dy) = (0.16, 1000.0);
+        let (hx, hy) = (0.5 * dx, 0.5 * dy);
+        for k in -400..=400 {
+            for x in [k as f64 * dx, k as f64 * dx - 0.0731 * dx, k as f64 * 1.7e-3, k as f64 * 13.9] {
+                let r = rect_integrals(x, 0.0, dx, dy);
+                let full = RectIntegrals {
+                    one_over_r: double_diff(f_xx, x, 0.0, hx, hy) + double_diff(f_yy, x, 0.0, hx, hy),
+                    xx: double_diff(f_xx, x, 0.0, hx, hy),
+                    yy: double_diff(f_yy, x, 0.0, hx, hy),
+                    xy: double_diff(f_xy, x, 0.0, hx, hy),
+                };
+                for (a, b) in [(r.one_over_r, full.one_over_r), (r.xx, full.xx), (r.yy, full.yy), (r.xy, full.xy)] {
+                    assert_eq!(a.to_bits(), b.to_bits(), "x = {x}: {a} vs {b}");
+                }
+                assert_eq!(rect_integrals(x, -0.0, dx, dy), r);
             }
         }
     }

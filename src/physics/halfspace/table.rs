@@ -34,25 +34,35 @@ static TABLES: Mutex<Vec<Arc<Table>>> = Mutex::new(Vec::new());
 
 impl Table {
     /// The table at offsets `|di| ≤ hx`, `|dj| ≤ hy`: the offsets `kept` (of the same key) holds
-    /// copied from it, the others computed by `at`.
-    fn new(key: Key, hx: usize, hy: usize, kept: Option<&Table>, at: &impl Fn(isize, isize) -> [f64; 4]) -> Table {
+    /// copied from it, the others computed a row at a time by `row`.
+    fn new(
+        key: Key,
+        hx: usize,
+        hy: usize,
+        kept: Option<&Table>,
+        row: &impl Fn(isize, Offsets) -> Vec<[f64; 4]>,
+    ) -> Table {
         let n = (2 * hx + 1) * (2 * hy + 1);
         let mut parts: [Vec<f64>; 4] = std::array::from_fn(|_| Vec::with_capacity(n));
-        for dj in -(hy as isize)..=hy as isize {
-            for di in -(hx as isize)..=hx as isize {
-                let v = match kept.filter(|t| di.unsigned_abs() <= t.hx && dj.unsigned_abs() <= t.hy) {
-                    Some(t) => {
-                        let k = (dj + t.hy as isize) as usize * (2 * t.hx + 1) + (di + t.hx as isize) as usize;
-                        std::array::from_fn(|c| t.parts[c][k])
-                    }
-                    None => at(di, dj),
-                };
+        let (hx, hy) = (hx as isize, hy as isize);
+        for dj in -hy..=hy {
+            let held = kept.filter(|t| dj.unsigned_abs() <= t.hy).map_or(-1, |t| (t.hx as isize).min(hx));
+            let mut values = Vec::with_capacity(2 * hx as usize + 1);
+            if held < 0 {
+                values = row(dj, -hx..=hx);
+            } else if let Some(t) = kept {
+                values.extend(row(dj, -hx..=-held - 1));
+                let start = (dj + t.hy as isize) as usize * (2 * t.hx + 1) + (t.hx as isize - held) as usize;
+                values.extend((start..=start + 2 * held as usize).map(|k| std::array::from_fn(|c| t.parts[c][k])));
+                values.extend(row(dj, held + 1..=hx));
+            }
+            for v in values {
                 for (part, v) in parts.iter_mut().zip(v) {
                     part.push(v);
                 }
             }
         }
-        Table { key, hx, hy, parts }
+        Table { key, hx: hx as usize, hy: hy as usize, parts }
     }
 
     /// The kernel arrays of an `mx × my` grid (offsets `|di| < mx`, `|dj| < my`).
@@ -69,10 +79,19 @@ impl Table {
     }
 }
 
-/// The kernel arrays `[zz, xx, yy, xy]` of an `mx × my` grid, `at(di, dj)` the coefficients of
-/// one offset: from the kept table of `key` where it covers the grid, else computed (and kept,
-/// grown to cover the grids met so far, where it is not too large).
-pub(super) fn kernel_parts(mx: usize, my: usize, key: Key, at: impl Fn(isize, isize) -> [f64; 4]) -> [Vec<f64>; 4] {
+/// The offsets `di` of one row of a table, ascending.
+pub(super) type Offsets = std::ops::RangeInclusive<isize>;
+
+/// The kernel arrays `[zz, xx, yy, xy]` of an `mx × my` grid, `row(dj, dis)` the coefficients of
+/// the offsets `(di, dj)`, `di` in `dis` (each a function of its offset alone): from the kept table
+/// of `key` where it covers the grid, else computed (and kept, grown to cover the grids met so
+/// far, where it is not too large).
+pub(super) fn kernel_parts(
+    mx: usize,
+    my: usize,
+    key: Key,
+    row: impl Fn(isize, Offsets) -> Vec<[f64; 4]>,
+) -> [Vec<f64>; 4] {
     let kept = {
         let tables = TABLES.lock().unwrap_or_else(|e| e.into_inner());
         tables.iter().find(|t| t.key == key).cloned()
@@ -83,9 +102,9 @@ pub(super) fn kernel_parts(mx: usize, my: usize, key: Key, at: impl Fn(isize, is
     }
     let (hx, hy) = kept.as_ref().map_or((hx, hy), |t| (t.hx.max(hx), t.hy.max(hy)));
     if (2 * hx + 1) * (2 * hy + 1) > LARGEST {
-        return Table::new(key, mx - 1, my - 1, kept.as_deref(), &at).parts;
+        return Table::new(key, mx - 1, my - 1, kept.as_deref(), &row).parts;
     }
-    let table = Arc::new(Table::new(key, hx, hy, kept.as_deref(), &at));
+    let table = Arc::new(Table::new(key, hx, hy, kept.as_deref(), &row));
     let parts = table.cut(mx, my);
     let mut tables = TABLES.lock().unwrap_or_else(|e| e.into_inner());
     tables.retain(|t| t.key != key);
@@ -108,14 +127,17 @@ mod tests {
         let large = Kernel::new(20, 30, dx, dy, g, nu, shift).unwrap();
         let again = Kernel::new(5, 7, dx, dy, g, nu, shift).unwrap();
         assert_eq!(small, again);
-        // Each coefficient as the rectangle integrals give it, in both grids.
+        // Each coefficient as the rectangle integrals give it, in both grids: the large grid's
+        // rows partly copied from the small one's table, partly computed.
         let c = 1.0 / (std::f64::consts::PI * g);
-        for (k, (mx, my)) in [(&small, (5, 7)), (&large, (20, 30))] {
-            for (di, dj) in [(0isize, 0isize), (-4, 6), (3, -2), (4, -6)] {
-                let r = rect_integrals(di as f64 * dx - shift, dj as f64 * dy, dx, dy);
-                let at = k.index(di, dj);
-                assert_eq!(k.zz[at], c * (1.0 - nu) * r.one_over_r, "{mx}x{my} ({di}, {dj})");
-                assert_eq!(k.xy[at], -c * nu * r.xy);
+        for (k, (mx, my)) in [(&small, (5isize, 7isize)), (&large, (20, 30))] {
+            for dj in 1 - my..my {
+                for di in 1 - mx..mx {
+                    let r = rect_integrals(di as f64 * dx - shift, dj as f64 * dy, dx, dy);
+                    let at = k.index(di, dj);
+                    assert_eq!(k.zz[at], c * (1.0 - nu) * r.one_over_r, "{mx}x{my} ({di}, {dj})");
+                    assert_eq!(k.xy[at], -c * nu * r.xy);
+                }
             }
         }
     }

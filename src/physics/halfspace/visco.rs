@@ -12,6 +12,13 @@
 //! `f = 0` gives `A_g`. A kernel shifted by `dq` is the same function at `X − dq`, so steady
 //! rolling's `A − A_s` keeps its translation invariance. The integral is evaluated by adaptive
 //! Gauss–Kronrod quadrature, split where the field point crosses an element's edge or centre.
+//!
+//! A row of offsets `X_k = k dx − shift` shares its memory: with `M(X) = ∫_0^∞ e^(−s) A_g(X − d s)
+//! ds` and `h = X_k − X_(k−1)`, `M(X_k) = e^(−h/d) M(X_(k−1)) + ∫_0^(h/d) e^(−s) A_g(X_k − d s) ds`
+//! (the material at `X_k` passed `X_(k−1)` a time `h/V` ago), so along a row each offset adds one
+//! short integral over one element's length instead of the whole memory ([`Relaxation::apply_row`];
+//! CONTACT's `visccf` in m_visc.f90 integrates each offset's whole memory, QUADPACK's `dqagi` to a
+//! relative 1e-3).
 
 /// The relaxation of both bodies: `ratio` = C_v/C_g (FG) ≥ 0 and the relaxation distance
 /// `distance_mm` = V τ (VT) [mm] ≥ 0.
@@ -127,16 +134,46 @@ fn adaptive(g: &impl Fn(f64) -> Four, edges: &[f64], tol: f64) -> Four {
     total
 }
 
+/// Offsets per chain of the row recursion left of the source element (see [`Relaxation::apply_row`]).
+const CHAIN: isize = 32;
+
+/// The first offset of the chain that carries offset `k`: 0 for `k ≥ 0`, else the start of `k`'s
+/// block of [`CHAIN`] offsets (`−CHAIN..=−1`, `−2 CHAIN..=−CHAIN − 1`, ...). A coefficient thus
+/// depends on its offset alone, not on the grid it serves: the same numbers in every grid.
+fn chain_start(k: isize) -> isize {
+    if k >= 0 {
+        0
+    } else {
+        k.div_euclid(CHAIN) * CHAIN
+    }
+}
+
 impl Relaxation {
     /// Whether the material is elastic (no viscous compliance).
     pub fn is_elastic(&self) -> bool {
         self.ratio == 0.0
     }
 
+    /// `∫_0^s_end e^(−s) elastic(x_mm − d s) ds` to the absolute tolerance `tol`, split where
+    /// `x − d s` crosses an edge or centre of an element (`±dx`, `±dx/2`, 0): the integrand's kinks.
+    fn memory(&self, elastic: &impl Fn(f64) -> Four, x_mm: f64, dx_mm: f64, s_end: f64, tol: f64) -> Four {
+        let d = self.distance_mm;
+        let mut breaks: Vec<f64> = [-1.0, -0.5, 0.0, 0.5, 1.0]
+            .iter()
+            .map(|k| (x_mm - k * dx_mm) / d)
+            .filter(|s| *s > 0.0 && *s < s_end)
+            .collect();
+        breaks.push(0.0);
+        breaks.push(s_end);
+        breaks.sort_by(f64::total_cmp);
+        breaks.dedup();
+        let g = |s: f64| elastic(x_mm - d * s).map(|v| (-s).exp() * v);
+        adaptive(&g, &breaks, tol)
+    }
+
     /// The viscoelastic coefficients at the field offset `x_mm` from an elastic coefficient
     /// function `elastic(x)` (its `y` fixed) of elements `dx_mm` long, to the absolute tolerance
-    /// `tol` [mm/MPa] per component. The integrand's kinks are where `x − d s` crosses an edge or
-    /// centre of an element (`±dx`, `±dx/2`, 0): the integral is split there.
+    /// `tol` [mm/MPa] per component (the memory integrated whole, [`Relaxation::memory`]).
     pub fn apply(&self, elastic: impl Fn(f64) -> Four, x_mm: f64, dx_mm: f64, tol: f64) -> Four {
         let now = elastic(x_mm);
         if self.is_elastic() {
@@ -145,21 +182,61 @@ impl Relaxation {
         if self.distance_mm == 0.0 {
             return now.map(|v| (1.0 + self.ratio) * v);
         }
-        let d = self.distance_mm;
-        let mut breaks: Vec<f64> = [-1.0, -0.5, 0.0, 0.5, 1.0]
-            .iter()
-            .map(|k| (x_mm - k * dx_mm) / d)
-            .filter(|s| *s > 0.0 && *s < END)
-            .collect();
-        breaks.push(0.0);
-        breaks.push(END);
-        breaks.sort_by(f64::total_cmp);
-        breaks.dedup();
-        let g = |s: f64| elastic(x_mm - d * s).map(|v| (-s).exp() * v);
-        let memory = adaptive(&g, &breaks, tol);
+        let memory = self.memory(&elastic, x_mm, dx_mm, END, tol);
         let mut out = now;
         axpy(&mut out, self.ratio, memory);
         out
+    }
+
+    /// [`Relaxation::apply`] at the offsets `x_k = k dx_mm − shift_mm` of a row, `k` in `ks`, to the
+    /// same tolerance: the memory of each chain's first offset ([`chain_start`]) integrated whole
+    /// to `tol/2`, each further one by the recursion of the module's doc, `M_k = q_k M_(k−1) + L_k`
+    /// with `q_k = e^(−h_k/d)`, `L_k` the integral over `[0, h_k/d]` to `tol (1 − q_k)/2`: an error
+    /// `e_j` of `L_j` reaches `M_k` damped by `q_(j+1)…q_k`, and `Σ_j q_(j+1)…q_k (1 − q_j)` =
+    /// `1 − q_(first)…q_k` ≤ 1, so each coefficient is within `tol` as [`Relaxation::apply`]'s.
+    pub fn apply_row(
+        &self,
+        elastic: impl Fn(f64) -> Four,
+        ks: std::ops::RangeInclusive<isize>,
+        dx_mm: f64,
+        shift_mm: f64,
+        tol: f64,
+    ) -> Vec<Four> {
+        let x_of = |k: isize| k as f64 * dx_mm - shift_mm;
+        if self.is_elastic() || self.distance_mm == 0.0 {
+            return ks.map(|k| self.apply(&elastic, x_of(k), dx_mm, tol)).collect();
+        }
+        let (lo, hi) = (*ks.start(), *ks.end());
+        let mut out = Vec::with_capacity(ks.count());
+        let mut k = lo;
+        while k <= hi {
+            let first = chain_start(k);
+            let last = if first < 0 { hi.min(first + CHAIN - 1) } else { hi };
+            let mut memory = self.memory(&elastic, x_of(first), dx_mm, END, 0.5 * tol);
+            for j in first..=last {
+                if j > first {
+                    memory = self.step(&elastic, (x_of(j - 1), x_of(j)), dx_mm, memory, tol);
+                }
+                if j >= lo {
+                    let mut v = elastic(x_of(j));
+                    axpy(&mut v, self.ratio, memory);
+                    out.push(v);
+                }
+            }
+            k = last + 1;
+        }
+        out
+    }
+
+    /// One step of [`Relaxation::apply_row`]'s recursion: the memory at `x_mm.1` from the memory
+    /// `before` at `x_mm.0 < x_mm.1`.
+    fn step(&self, elastic: &impl Fn(f64) -> Four, x_mm: (f64, f64), dx_mm: f64, before: Four, tol: f64) -> Four {
+        let h_over_d = (x_mm.1 - x_mm.0) / self.distance_mm;
+        let q = (-h_over_d).exp();
+        let local = self.memory(elastic, x_mm.1, dx_mm, h_over_d.min(END), 0.5 * tol * -(-h_over_d).exp_m1());
+        let mut m = before.map(|v| q * v);
+        axpy(&mut m, 1.0, local);
+        m
     }
 }
 
@@ -193,6 +270,48 @@ mod tests {
         // |x − d s| with its kink at s = x/d: ∫ e^{-s} |x − d s| ds = x − d + 2 d e^{−x/d}.
         let want1 = x + 0.7 * (x - d + 2.0 * d * (-x / d).exp());
         assert!((got[1] - want1).abs() < 1e-12, "{} vs {want1}", got[1]);
+    }
+
+    /// A Boussinesq-like coefficient row of elements `dx` long: `I[1/r]` over `[x − dx/2, x + dx/2]`
+    /// at a distance `y` (its kinks where `x ± dx/2` crosses 0 for `y → 0`).
+    fn row_kernel(dx: f64, y: f64) -> impl Fn(f64) -> Four {
+        move |x: f64| {
+            let f = |u: f64| u * (y / u.abs().max(1e-300)).asinh() + y * (u / y).asinh();
+            let v = f(x + 0.5 * dx) - f(x - 0.5 * dx);
+            [v, 0.5 * v, x / (1.0 + x * x), 1.0]
+        }
+    }
+
+    #[test]
+    fn a_row_by_the_recursion_is_each_offset_integrated_whole() {
+        // Short and long memories, glassy, a shifted row; both sides of the source element and
+        // past several chains on its left.
+        let dx = 0.16;
+        for (d, shift, y) in
+            [(0.05, 0.0, 0.3), (9.0, 0.0, 500.0), (45.0, 0.16, 0.08), (2000.0, 0.0, 500.0), (1e15, 0.1, 2.0)]
+        {
+            let r = Relaxation { ratio: 1.0, distance_mm: d };
+            let el = row_kernel(dx, y);
+            let tol = 1e-13 * el(0.0)[0];
+            let row = r.apply_row(&el, -70..=40, dx, shift, tol);
+            for (v, k) in row.iter().zip(-70isize..) {
+                let whole = r.apply(&el, k as f64 * dx - shift, dx, 1e-3 * tol);
+                for c in 0..4 {
+                    assert!((v[c] - whole[c]).abs() <= tol, "d {d} k {k} c {c}: {} vs {}", v[c], whole[c]);
+                }
+            }
+            // Any part of the row gives the same numbers (a coefficient depends on its offset alone).
+            assert_eq!(r.apply_row(&el, -40..=-3, dx, shift, tol)[..], row[30..68]);
+            assert_eq!(r.apply_row(&el, 5..=9, dx, shift, tol)[..], row[75..80]);
+        }
+        // Elastic and relaxed rows: the point values.
+        let el = row_kernel(dx, 1.0);
+        for r in [Relaxation { ratio: 0.0, distance_mm: 3.0 }, Relaxation { ratio: 0.5, distance_mm: 0.0 }] {
+            let row = r.apply_row(&el, -2..=2, dx, 0.0, 1e-14);
+            for (v, k) in row.iter().zip(-2isize..) {
+                assert_eq!(*v, r.apply(&el, k as f64 * dx, dx, 1e-14));
+            }
+        }
     }
 
     #[test]

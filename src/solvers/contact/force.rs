@@ -147,30 +147,36 @@ pub fn solve<R>(
     let mut remade = false;
     let mut cap: Vec<f64> = dirs.iter().map(|&i| STEP_CAP * mu / slope[i]).collect();
     while norm(&r) > tol && solves < MAX_OUTER {
-        let step = solve_linear(&jac, &r, n).unwrap_or_else(|| vec![0.0; n]);
-        // The whole step shortened to the trust region (its direction kept).
-        let capped = step.iter().zip(&cap).fold(1.0f64, |l, (s, c)| if s.abs() > *c { l.min(c / s.abs()) } else { l });
-        let mut lambda = capped;
+        // A singular Jacobian (the force flat in the creepage: Broyden's update after steps in
+        // full slip) gives no step; a line search along it would solve the same creepages again
+        // (up to MAX_HALVINGS + 1 times): it is left out and the Jacobian remade or the root
+        // bracketed below.
         let mut best = None;
-        for _ in 0..=MAX_HALVINGS {
-            let u_new: Vec<f64> = u.iter().zip(&step).map(|(a, s)| a - lambda * s).collect();
-            let out = at(&u_new, &mut solves)?;
-            // Broyden's update: J += (Δr − J Δu) Δuᵀ / (Δuᵀ Δu).
-            broyden(&mut jac, &u_new, &u, &out.2, &r);
-            if norm(&out.2) < norm(&r) {
-                best = Some((u_new, out));
-                break;
+        if let Some(step) = solve_linear(&jac, &r, n) {
+            // The whole step shortened to the trust region (its direction kept).
+            let capped =
+                step.iter().zip(&cap).fold(1.0f64, |l, (s, c)| if s.abs() > *c { l.min(c / s.abs()) } else { l });
+            let mut lambda = capped;
+            for _ in 0..=MAX_HALVINGS {
+                let u_new: Vec<f64> = u.iter().zip(&step).map(|(a, s)| a - lambda * s).collect();
+                let out = at(&u_new, &mut solves)?;
+                // Broyden's update: J += (Δr − J Δu) Δuᵀ / (Δuᵀ Δu).
+                broyden(&mut jac, &u_new, &u, &out.2, &r);
+                if norm(&out.2) < norm(&r) {
+                    best = Some((u_new, out, capped < 1.0 && lambda == capped));
+                    break;
+                }
+                if solves >= MAX_OUTER {
+                    break;
+                }
+                lambda *= 0.5;
             }
-            if solves >= MAX_OUTER {
-                break;
-            }
-            lambda *= 0.5;
         }
         match best {
-            Some((u_new, out)) => {
+            Some((u_new, out, whole_capped_step)) => {
                 (u, result, f, r) = (u_new, out.0, out.1, out.2);
                 remade = false;
-                if capped < 1.0 && lambda == capped {
+                if whole_capped_step {
                     cap.iter_mut().for_each(|c| *c *= 2.0);
                 }
             }
@@ -393,6 +399,26 @@ mod tests {
             solve(t, [0.0, 0.0], [slope, slope], mu, &mut Memory::default(), |cx, _| Ok(((), [law(cx), 0.0]))).unwrap();
         assert!(found.met && law(found.cx).abs() <= FORCE_TOL * mu, "{found:?}");
         assert!((found.cx - c0).abs() < 1e-12 && found.solves <= MAX_OUTER, "{found:?}");
+    }
+
+    /// A Jacobian kept from full slip is zero (singular): no solve is repeated at the same
+    /// creepages (before, the line search solved the start again MAX_HALVINGS + 1 times, as in
+    /// bentall.inp case 6's second outer iteration); the Jacobian is remade and the force found.
+    #[test]
+    fn a_singular_jacobian_solves_no_creepage_twice() {
+        let (mu, slope) = (0.05, 300.0);
+        let law = |cx: f64| mu * (slope * (cx - 1e-4) / mu).tanh();
+        let mut memory = Memory { last: Some((vec![0], vec![2e-4], vec![0.0])) };
+        let mut seen: Vec<f64> = Vec::new();
+        let t = Targets { fx: Some(0.01), fy: None };
+        let found = solve(t, [0.0, 0.0], [slope, slope], mu, &mut memory, |cx, _| {
+            seen.push(cx);
+            Ok(((), [law(cx), 0.0]))
+        })
+        .unwrap();
+        assert!(found.met && (law(found.cx) - 0.01).abs() <= FORCE_TOL * mu, "{found:?}");
+        assert!(seen.windows(2).all(|w| w[0] != w[1]), "{seen:?}");
+        assert_eq!(found.solves, seen.len());
     }
 
     /// F = 1: only cx is sought; cy stays as given.
