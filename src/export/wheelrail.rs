@@ -181,7 +181,10 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
         (true, false, Approach::PlanarSurfaceSlip) => "3",
         _ => &ldcmze[1..2],
     };
-    let ldcmze = format!("{law}{d}{}", &ldcmze[2..]);
+    // Blanco's conformal correction: C3 = 4, read with the first case's material (IF_METH,
+    // VARIANT before POISS), kept after it.
+    let c3 = if first && s.material.blanco.is_some() { "4" } else { &ldcmze[2..3] };
+    let ldcmze = format!("{law}{d}{c3}{}", &ldcmze[3..]);
     let heat = match (s.material.heat.is_some(), first) {
         (true, true) => "3",
         (true, false) => "1",
@@ -218,8 +221,19 @@ fn wheel_deviation(s: &WheelRailScene, out: &mut String) {
 fn setup(s: &WheelRailScene, (rail, wheel): (&str, &str), out: &mut String) {
     let (g, nu) = (shear_modulus(&s.material), s.material.poisson);
     let maxin = if temperature_law(s) { s.tangential.contact_solver.tempdep_max_iterations + 9 } else { MAXIN };
-    let _ = writeln!(out, "    999     {maxin}    30    1     1e-5         MAXGS , MAXIN , MAXNR , MAXOUT, EPS");
+    // Blanco's correction couples the normal and tangential problems: CONTACT's Panagiotopoulos
+    // process, at most MAXOUT outer iterations (the scene's `max_outer`).
+    let maxout = if s.material.blanco.is_some() { s.tangential.contact_solver.max_outer } else { 1 };
+    let _ = writeln!(out, "    999     {maxin}    30    {maxout}     1e-5         MAXGS , MAXIN , MAXNR , MAXOUT, EPS");
     friction(s, out);
+    if let Some(b) = s.material.blanco {
+        let _ = writeln!(
+            out,
+            "      {}       {}                                 IF_METH, VARIANT",
+            b.inclination.if_meth(),
+            b.variant
+        );
+    }
     let _ = writeln!(out, "  {nu:?}   {nu:?}   {g:?}   {g:?}                POISS 1,2,  GG 1,2");
     if s.material.sheet_mm3_per_n > 0.0 {
         let _ = writeln!(out, "  {:?}                                FLXZ", s.material.sheet_mm3_per_n);

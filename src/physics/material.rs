@@ -34,6 +34,11 @@ pub struct Material {
     /// ([`super::halfspace::sheet`]); 0: none.
     #[serde(skip_serializing_if = "is_zero")]
     pub sheet_mm3_per_n: f64,
+    /// Blanco-Lorenzo's conformal correction of the influence coefficients on a curved reference
+    /// (`[material] blanco_inclination`, `blanco_variant`; CONTACT's C3 = 4,
+    /// [`super::halfspace::blanco`]); `None`: the half-space's.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub blanco: Option<super::halfspace::blanco::Blanco>,
 }
 
 /// A standard linear solid in its Kelvin–Voigt form (CONTACT's M = 1, user guide "Viscoelastic
@@ -147,6 +152,7 @@ impl Material {
             visco: None,
             heat: None,
             sheet_mm3_per_n: 0.0,
+            blanco: None,
         }
     }
 
@@ -179,6 +185,7 @@ impl Material {
             visco: None,
             heat: None,
             sheet_mm3_per_n: 0.0,
+            blanco: None,
         }
     }
 

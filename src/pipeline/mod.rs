@@ -366,6 +366,7 @@ fn run_builtin(
 }
 
 pub mod wheelrail;
+pub mod wheelrail_blanco;
 pub mod wheelrail_brush;
 pub mod wheelrail_conformal;
 pub mod wheelrail_exact;

@@ -41,6 +41,9 @@ const VERTICAL_ROUNDS: usize = 20;
 /// tangential forces' vertical part (0.07 to 0.5 % of FZ on the Manchester decks), so a miss of a
 /// fifth of that or less costs the later searches nothing that a tighter first search would not.
 const FIRST_SEARCH_TOL: f64 = 1e-3;
+/// Blanco's correction: the rounds end when the tangential tractions' normal displacement moved by
+/// at most this times the deepest approach since the normal solves took it.
+const BLANCO_UN_TOL: f64 = 1e-8;
 /// The least change of the normal forces between two rounds, relative to FZ, for a secant of the
 /// tangential ones (below it the tangential solves' tolerance would dominate their difference).
 const SECANT_SPAN: f64 = 1e-6;
@@ -65,6 +68,10 @@ pub struct PatchForces {
     /// The largest surface temperature of both bodies on the patch [°C] (CONTACT's MAX(T1,T2)),
     /// where the scene computes them (`[material]`'s heat keys).
     pub temp_max_c: Option<f64>,
+    /// Blanco's correction (`[material] blanco_variant`): the normal displacement `B_nt p_t` [mm]
+    /// of the exact theory's tangential tractions per element (CONTACT's element order), which
+    /// the next normal solve of the patch adds to its distance.
+    pub blanco_un_mm: Option<Vec<f64>>,
 }
 
 impl PatchForces {
@@ -82,6 +89,7 @@ impl PatchForces {
             shift_tractions_mpa: None,
             slip: None,
             temp_max_c: None,
+            blanco_un_mm: None,
         }
     }
 }
@@ -259,7 +267,10 @@ fn balanced(
                 (f.fn_n - p.fn_n) * delta.cos() + case.side.sign() * f.fs_n * delta.sin()
             })
             .sum();
-        if (normal_z + tangential_z - fz_n).abs() <= 2.0 * FORCE_TOL * fz_n || normal_z <= 0.0 {
+        // Blanco's correction: the tractions' normal displacement for the next normal solves, and
+        // whether it moved since the last (CONTACT's Panagiotopoulos process).
+        let coupled = blanco_coupled(&normal, &found, cache);
+        if coupled && (normal_z + tangential_z - fz_n).abs() <= 2.0 * FORCE_TOL * fz_n || normal_z <= 0.0 {
             return Ok((normal, Some(found)));
         }
         let target = normal_share(fz_n, (normal_z, tangential_z), last.take());
@@ -267,6 +278,24 @@ fn balanced(
         normal = wheelrail::normal_contact_with(case, Some(target), FORCE_TOL, cache).map_err(geometry)?;
     }
     Ok((normal, None))
+}
+
+/// Blanco's correction (the patches' forces carry `blanco_un_mm`): hands each patch's normal
+/// displacement of its tangential tractions to the next normal solves; whether the ones the last
+/// normal solves took moved by at most [`BLANCO_UN_TOL`] of the deepest approach (true without the
+/// correction).
+fn blanco_coupled(normal: &NormalContact, found: &[PatchForces], cache: &mut wheelrail::NormalCache) -> bool {
+    if found.iter().all(|f| f.blanco_un_mm.is_none()) {
+        return true;
+    }
+    let fields = normal
+        .patches
+        .iter()
+        .zip(found)
+        .filter_map(|(p, f)| Some((p.geometry.grid.clone(), f.blanco_un_mm.clone()?)))
+        .collect();
+    let pen_mm = normal.patches.iter().map(|p| p.pen_mm).fold(0.0, f64::max);
+    cache.set_blanco_coupling(fields) <= BLANCO_UN_TOL * pen_mm
 }
 
 /// A shift (CONTACT's T = 1) or a transient rolling step (T = 2) is solved by the models that
@@ -371,6 +400,7 @@ fn frictionless(p: &NormalPatch) -> PatchForces {
         shift_tractions_mpa: None,
         slip: Some(vec![false; p.pn_mpa.len()]),
         temp_max_c: None,
+        blanco_un_mm: None,
     }
 }
 

@@ -59,6 +59,7 @@ impl ConformalForces {
             shift_tractions_mpa: None,
             slip: None,
             temp_max_c: None,
+            blanco_un_mm: None,
         }
     }
 }

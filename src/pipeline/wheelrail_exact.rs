@@ -9,6 +9,7 @@
 //! (P = 0, [`crate::wheelrail::shift`]).
 
 use super::wheelrail::PatchForces;
+use super::wheelrail_blanco::{BlancoCache, SOLVER_TURN};
 use super::wheelrail_conformal;
 use super::wheelrail_frame::RollingFrame;
 use crate::physics::geometry::field_in_grid_order;
@@ -35,6 +36,8 @@ pub struct ExactCache {
     shifts: Vec<((usize, usize), TangentialSolver)>,
     /// The transient rolling solvers by grid size (their kernels shifted by the step's dq).
     transients: Vec<((usize, usize), TangentialSolver)>,
+    /// Blanco's correction's products by grid size (`[material] blanco_variant`).
+    blanco: BlancoCache,
 }
 
 impl ExactCache {
@@ -146,6 +149,7 @@ pub fn patch_forces(
         .as_ref()
         .map(|(wx, wy)| solver_frame.pair((field_in_grid_order(&grid, wx), field_in_grid_order(&grid, wy))));
     let extra = extra.as_ref().map(|(wx, wy)| (wx.as_slice(), wy.as_slice()));
+    let mut blanco_un_mm = None;
     let r: StepResult = if shift || rolling_dq_mm.is_some() {
         let solver = cache.step_solver(&grid, &case.material, (&x, &y), rolling_dq_mm)?;
         solver.set_pressure(&pn)?;
@@ -157,6 +161,10 @@ pub fn patch_forces(
         let (px0, py0) = solver_frame.pair((field_in_grid_order(&grid, &px0), field_in_grid_order(&grid, &py0)));
         solver.transient_step(&params, &px0, &py0, None)?
     } else {
+        let mut blanco = match blanco_rows(p, case)? {
+            Some(rows) => Some(cache.blanco.take(&grid, &case.material, &rows)?),
+            None => None,
+        };
         let (_, solver, last) = cache.get(&grid, &case.material, (&x, &y))?;
         solver.set_pressure(&pn)?;
         solver.set_extra_slip(extra)?;
@@ -164,8 +172,24 @@ pub fn patch_forces(
             solver.set_bound(&g)?;
         }
         let start = last.as_ref().map(|(px, py)| (px.as_slice(), py.as_slice()));
-        let r = solver.steady(&params, start)?;
-        *last = Some((r.px.clone(), r.py.clone()));
+        let r = match blanco.as_mut() {
+            Some(b) => b.steady(solver, &params, start, &pn),
+            None => solver.steady(&params, start),
+        };
+        let r = r.and_then(|r| {
+            *last = Some((r.px.clone(), r.py.clone()));
+            // The tractions' normal displacement, back in CONTACT's element order.
+            let un = match blanco.as_mut() {
+                Some(b) => Some(in_contact_order(&grid, &solver_frame.field(b.traction_un(&r.px, &r.py)?))),
+                None => None,
+            };
+            Ok((r, un))
+        });
+        if let Some(b) = blanco {
+            cache.blanco.put((grid.mx, grid.my), b);
+        }
+        let (r, un) = r?;
+        blanco_un_mm = un;
         r
     };
     let r = solver_frame.back(r);
@@ -182,6 +206,7 @@ pub fn patch_forces(
             n_slip: Some(r.n_slip),
             shift_tractions_mpa,
             slip: Some(slip_of(&grid, &r.state)),
+            blanco_un_mm,
             ..forces.on_rail(case.side.sign())
         };
         return Ok(if case.motion.super_grid_s_mm().is_some() { about_anchor_x(forces, p) } else { forces });
@@ -197,6 +222,14 @@ pub fn patch_forces(
         ..PatchForces::on_rail(p, case, fx_over_fn, fy_over_fn, mz_nmm)
     };
     Ok(if case.motion.super_grid_s_mm().is_some() { about_anchor(forces, p, case) } else { forces })
+}
+
+/// The rows' inclinations of a conformal patch in the solver's frame where the case takes
+/// Blanco's correction (CONTACT's times [`SOLVER_TURN`]); `None`: the half-space's coefficients.
+fn blanco_rows(p: &NormalPatch, case: &WheelRailCase) -> Result<Option<Vec<f64>>, ContactError> {
+    let (Some(b), Some(c)) = (case.material.blanco, &p.geometry.curved) else { return Ok(None) };
+    let rows = crate::wheelrail::conformal_grid::blanco_rows(&p.geometry.grid, c, b)?;
+    Ok(Some(rows.into_iter().map(|a| SOLVER_TURN * a).collect()))
 }
 
 /// Coulomb's μ of a patch: one value, or one per grid row (a conformal patch with V = 1).

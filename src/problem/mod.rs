@@ -131,6 +131,13 @@ impl Physics {
 
 /// The scene's material from G or E (or both, consistent within [`E_G_TOLERANCE`]) and ν.
 fn material_of(scene: &Scene) -> Result<Material, InputError> {
+    if let Some(b) = scene.material.blanco {
+        return Err(InputError::new(
+            "material.blanco_variant",
+            b.variant,
+            "absent in a contact-patch scene: Blanco's correction takes a wheel–rail scene's conformal rows (their inclinations)",
+        ));
+    }
     material_of_spec(&scene.material)
 }
 
@@ -146,7 +153,14 @@ pub fn material_of_spec(m: &crate::scene::MaterialSpec) -> Result<Material, Inpu
             (None, None) => return Err(InputError::new("material.g_mpa", "missing", "g_mpa or e_mpa")),
         }
     };
-    Ok(Material { layer: m.layer, visco: m.visco, heat: m.heat, sheet_mm3_per_n: m.sheet_mm3_per_n, ..elastic })
+    Ok(Material {
+        layer: m.layer,
+        visco: m.visco,
+        heat: m.heat,
+        sheet_mm3_per_n: m.sheet_mm3_per_n,
+        blanco: m.blanco,
+        ..elastic
+    })
 }
 
 /// A material given both G and E: they must agree, E = 2G(1 + ν) within [`E_G_TOLERANCE`].

@@ -6,6 +6,7 @@ use super::keys::{key, Absent, Allowed, Keys};
 use super::reader::{Range, Section};
 use super::MaterialSpec;
 use crate::error::InputError;
+use crate::physics::halfspace::blanco::Blanco;
 use crate::physics::temperature::Thermal;
 
 /// A combined modulus [MPa].
@@ -50,6 +51,28 @@ pub const KEYS: Keys = Keys {
             Allowed::Number(Range::new(1e-10, true, 1e20, true), ""),
             Absent::Text("– (no sheet)"),
             r#"a thin compressible sheet on the surface (pressure-sensitive paper; CONTACT's B = 1, FLXZ): the normal part of Kalker's first-order theory, u_z = L_z p_n in the element that carries the pressure, added to the half-spaces' normal displacement (L_z = h (1 + ν)(1 − 2ν)/((1 − ν) E) of the sheet); the normal problem only: `sheet_flexibility_mm3_per_n = 7.429e-5`"#,
+        ),
+    ],
+};
+
+/// `[material]`'s conformal correction of the influence coefficients (`<!-- keys:material_blanco -->`).
+pub const BLANCO_KEYS: Keys = Keys {
+    id: "material_blanco",
+    owner: file!(),
+    keys: &[
+        key(
+            "blanco_variant",
+            "–",
+            Allowed::Whole(3, 3, "CONTACT's VARIANT 3; its variants 1, 2 and 4 are not computed"),
+            Absent::Text("– (the half-space's coefficients)"),
+            r#"Blanco-Lorenzo's correction of the influence coefficients for conformal contact (CONTACT's C3 = 4 with its VARIANT): the half-space at the loaded element J, its displacement turned about x by the inclination difference α_J − α_I of the two rows into the displaced element's frame, which couples the normal and tangential problems (the exact solver iterates them, as CONTACT's Panagiotopoulos process); a wheel–rail scene with `approach = "conformal"` and one material only, the rows' inclinations its curved reference's: `blanco_variant = 3`"#,
+        ),
+        key(
+            "blanco_inclination",
+            "–",
+            Allowed::Choice(&["interpolated", "linear"], ""),
+            Absent::Choice("interpolated"),
+            r#"with `blanco_variant`: each grid row's inclination from the curved reference's table of (s, α), one entry per row: the table interpolated at the row, its own value (CONTACT's IF_METH = 1), or the least-squares line through it (IF_METH = 0): `blanco_inclination = "interpolated"`"#,
         ),
     ],
 };
@@ -258,8 +281,10 @@ pub fn read(top: &mut Section) -> Result<MaterialSpec, InputError> {
         .declare(&LAYER_KEYS)
         .declare(&PLASTIC_KEYS)
         .declare(&VISCO_KEYS)
-        .declare(&HEAT_KEYS);
+        .declare(&HEAT_KEYS)
+        .declare(&BLANCO_KEYS);
     let heat = heat(&mut m)?;
+    let blanco = blanco(&mut m)?;
     let sheet_mm3_per_n = m.opt_num("sheet_flexibility_mm3_per_n")?.unwrap_or(0.0);
     let layer = layer(&mut m)?;
     let visco = visco(&mut m)?;
@@ -272,7 +297,7 @@ pub fn read(top: &mut Section) -> Result<MaterialSpec, InputError> {
     }
     if let Some(spec) = bodies(&mut m)? {
         m.finish()?;
-        return Ok(MaterialSpec { layer, visco, heat, sheet_mm3_per_n, ..spec });
+        return Ok(MaterialSpec { layer, visco, heat, sheet_mm3_per_n, blanco, ..spec });
     }
     let g_mpa = m.opt_num("g_mpa")?;
     let e_mpa = m.opt_num("e_mpa")?;
@@ -285,7 +310,25 @@ pub fn read(top: &mut Section) -> Result<MaterialSpec, InputError> {
         ));
     }
     m.finish()?;
-    Ok(MaterialSpec { g_mpa, e_mpa, poisson, bodies: None, layer, visco, heat, sheet_mm3_per_n })
+    Ok(MaterialSpec { g_mpa, e_mpa, poisson, bodies: None, layer, visco, heat, sheet_mm3_per_n, blanco })
+}
+
+/// Blanco-Lorenzo's conformal correction ([`BLANCO_KEYS`]): `blanco_variant` asks for it,
+/// `blanco_inclination` (only with it) says how the rows' inclinations are taken.
+fn blanco(m: &mut Section) -> Result<Option<Blanco>, InputError> {
+    use crate::physics::halfspace::blanco::Inclination;
+    let variant = m.opt_whole("blanco_variant")?;
+    let inclination = m.opt_pick("blanco_inclination")?;
+    match (variant, inclination) {
+        (None, None) => Ok(None),
+        (None, Some(i)) => {
+            Err(InputError::new(m.field("blanco_inclination"), i, "with blanco_variant (the correction it shapes)"))
+        }
+        (Some(v), i) => {
+            let inclination = if i == Some("linear") { Inclination::Linear } else { Inclination::Interpolated };
+            Ok(Some(Blanco { inclination, variant: v as u8 }))
+        }
+    }
 }
 
 /// Viscoelastic bodies (CONTACT's M = 1 with FG 1 = FG 2, TC 1 = TC 2): both keys or neither. A
@@ -366,5 +409,6 @@ fn bodies(m: &mut Section) -> Result<Option<MaterialSpec>, InputError> {
         visco: None,
         heat: None,
         sheet_mm3_per_n: 0.0,
+        blanco: None,
     }))
 }

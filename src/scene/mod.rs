@@ -59,6 +59,9 @@ pub struct MaterialSpec {
     /// A thin compressible sheet's flexibility L_z [mm³/N] (`sheet_flexibility_mm3_per_n`;
     /// CONTACT's B = 1, FLXZ); 0: none.
     pub sheet_mm3_per_n: f64,
+    /// Blanco-Lorenzo's conformal correction (`blanco_variant`, `blanco_inclination`; CONTACT's
+    /// C3 = 4); `None`: the half-space's influence coefficients.
+    pub blanco: Option<crate::physics::halfspace::blanco::Blanco>,
 }
 
 /// The creepage history kinds, as the scene declares them (scene.json's `loading.creepage`,
@@ -516,6 +519,7 @@ pub const KEY_TABLES: &[&keys::Keys] = &[
     &material::PLASTIC_KEYS,
     &material::VISCO_KEYS,
     &material::HEAT_KEYS,
+    &material::BLANCO_KEYS,
     &grid::KEYS,
     &rolling::KEYS,
     &creepage::KEYS,

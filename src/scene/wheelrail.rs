@@ -579,6 +579,7 @@ impl WheelRailScene {
                 "no layer: the wheel–rail scene solves elastic bodies that touch (give the layer in a module-3 scene)",
             ));
         }
+        check_blanco(&material, approach, motion, &solvers)?;
         let context = super::wheelrail_tangential::Context {
             mu,
             mu_variation: mu_variation.as_ref(),
@@ -589,6 +590,14 @@ impl WheelRailScene {
         };
         let tangential = super::wheelrail_tangential::read(&mut top, &context)?;
         let (vertical, longitudinal, cases) = super::wheelrail_cases::read(&mut top, dir, radius)?;
+        if material.blanco.is_some() && vertical != VerticalSpec::Force {
+            // The rounds of the vertical balance are where the two problems alternate.
+            return Err(InputError::new(
+                "cases.vertical",
+                "\"position\"",
+                "\"force\" with [material] blanco_variant (the rounds with FZ prescribed alternate the normal and tangential problems)",
+            ));
+        }
         super::wheelrail_cases::check_longitudinal(
             longitudinal,
             frictionless,
@@ -695,6 +704,40 @@ fn check_speeds(cases: &[CaseRow]) -> Result<(), InputError> {
         )),
         None => Ok(()),
     }
+}
+
+/// Blanco's conformal correction (`[material] blanco_variant`) on the conformal approach's
+/// curved rows (their inclinations), in steady rolling, for one material, with the exact model:
+/// what the pipeline iterates (`pipeline::wheelrail_blanco`).
+fn check_blanco(
+    material: &super::MaterialSpec,
+    approach: Approach,
+    motion: MotionSpec,
+    solvers: &[String],
+) -> Result<(), InputError> {
+    if material.blanco.is_none() {
+        return Ok(());
+    }
+    let (field, value, allowed) = if approach != Approach::Conformal {
+        (
+            "wheelrail.approach",
+            format!("{approach:?}"),
+            "\"conformal\" with [material] blanco_variant (the rows' inclinations are the curved reference's)",
+        )
+    } else if motion != MotionSpec::Rolling {
+        ("wheelrail.motion", format!("{motion:?}"), "\"rolling\" (steady) with [material] blanco_variant")
+    } else if material.bodies.is_some() {
+        ("material.g1_mpa", "two bodies".to_string(), "one material (g_mpa, poisson) with [material] blanco_variant")
+    } else if solvers.iter().any(|m| m != "contact") {
+        (
+            "solvers",
+            solvers.join(", "),
+            "[\"contact\"] with [material] blanco_variant (the exact theory alone takes the corrected coefficients)",
+        )
+    } else {
+        return Ok(());
+    };
+    Err(InputError::new(field, value, allowed))
 }
 
 /// A roller rig (`[rail] roller_radius_mm`) in steady rolling with the pitch's velocity given, on

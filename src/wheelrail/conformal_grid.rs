@@ -93,3 +93,17 @@ pub fn normal_force_n(frame: &PatchFrame, grid: &PatchGrid, c: &ConformalPatch, 
     let row = |j: usize| pn_mpa[j * grid.mx..(j + 1) * grid.mx].iter().sum::<f64>();
     (0..grid.ms).map(|j| row_factor(frame, &c.reference, j) * row(j)).sum::<f64>() * grid.dx_mm * grid.ds_mm
 }
+
+/// Each grid row's inclination [rad] for Blanco's correction (CONTACT's `wr_setup_cp`: the table
+/// of the rows' sc and the curved reference's inclination, `curv_incln`, taken by `influe_blanco`
+/// at each row's sc: interpolated, its own value, or the least-squares line, [`Blanco`]).
+pub fn blanco_rows(
+    grid: &PatchGrid,
+    c: &ConformalPatch,
+    b: crate::physics::halfspace::blanco::Blanco,
+) -> Result<Vec<f64>, crate::physics::halfspace::ContactError> {
+    use crate::physics::halfspace::blanco::row_inclinations;
+    let sc: Vec<f64> = (0..grid.ms).map(|j| grid.centre(0, j).1).collect();
+    let table: Vec<[f64; 2]> = sc.iter().enumerate().map(|(j, &s)| [s, c.reference.inclination_rad(j)]).collect();
+    row_inclinations(b.inclination, &table, &sc)
+}

@@ -34,6 +34,7 @@ pub mod wheel;
 pub mod wheel_mesh;
 
 use crate::physics::approximate::{self, ApproximateError, Method};
+use crate::physics::halfspace::blanco::BlancoProduct;
 use crate::physics::halfspace::influence::Kernel;
 use crate::physics::halfspace::normal::{NormalParams, NormalSolver};
 use crate::physics::halfspace::ContactError;
@@ -328,10 +329,92 @@ struct NormalSolvers {
     solvers: Vec<((usize, usize), NormalSolver, Vec<f64>)>,
     /// The approximate normal problem the patches take instead, if any.
     approximate: Option<Method>,
+    /// Blanco's correction: its products by grid size, and each conformal patch's normal
+    /// displacement of its last tangential tractions by grid ([`NormalCache::set_blanco_coupling`]).
+    blanco: BlancoNormal,
 }
+
+/// What Blanco's correction keeps for the normal problems of one case.
+#[derive(Default)]
+struct BlancoNormal {
+    products: Vec<((usize, usize), BlancoProduct)>,
+    traction_un_mm: Vec<(patch::PatchGrid, Vec<f64>)>,
+}
+
+/// Passes of the fixed point on the pressure's correction `(B_nn − A_nn) pn` at most.
+const BLANCO_PASSES: usize = 200;
 
 /// Grids kept per case (the oldest dropped first).
 const KEPT_SOLVERS: usize = 8;
+
+impl BlancoNormal {
+    /// The product of grid `g`'s kernel with its rows inclined by `rows`.
+    fn product(
+        &mut self,
+        g: &patch::PatchGrid,
+        m: &Material,
+        rows: &[f64],
+    ) -> Result<&mut BlancoProduct, ContactError> {
+        let key = (g.mx, g.ms);
+        let k = match self.products.iter().position(|(k, _)| *k == key) {
+            Some(k) => k,
+            None => {
+                let kernel = Kernel::new(g.mx, g.ms, g.dx_mm, g.ds_mm, m.g_mpa, m.poisson, 0.0)?;
+                if self.products.len() == KEPT_SOLVERS {
+                    self.products.remove(0);
+                }
+                self.products.push((key, BlancoProduct::new(&kernel, rows)?));
+                self.products.len() - 1
+            }
+        };
+        let product = &mut self.products[k].1;
+        product.set_rows(rows)?;
+        Ok(product)
+    }
+
+    /// The normal displacement of the last tangential tractions [mm] on grid `g` (CONTACT's
+    /// element order): the field a tangential solve left on a grid of the same lattice (element
+    /// size and anchor) taken element by element where the grids overlap, zero elsewhere; `None`
+    /// where none was left on that lattice.
+    fn traction_un(&self, g: &patch::PatchGrid) -> Option<Vec<f64>> {
+        let same_lattice = |o: &patch::PatchGrid| (o.dx_mm, o.ds_mm, o.anchor_mm) == (g.dx_mm, g.ds_mm, g.anchor_mm);
+        let (old, un) = self.traction_un_mm.iter().find(|(o, _)| same_lattice(o))?;
+        let mut out = vec![0.0; g.len()];
+        for j in 0..g.ms {
+            for i in 0..g.mx {
+                let oi = g.first_index[0] + i as i64 - old.first_index[0];
+                let oj = g.first_index[1] + j as i64 - old.first_index[1];
+                if (0..old.mx as i64).contains(&oi) && (0..old.ms as i64).contains(&oj) {
+                    out[j * g.mx + i] = un[oj as usize * old.mx + oi as usize];
+                }
+            }
+        }
+        Some(out)
+    }
+}
+
+impl NormalCache {
+    /// Blanco's correction: the normal displacements `B_nt p_t` [mm] (CONTACT's element order) of
+    /// the tangential tractions each conformal patch's last solve found, by grid, for the next
+    /// normal solves (CONTACT's Panagiotopoulos process); returns the largest change [mm] from
+    /// those the last normal solves took (infinite where a grid had none).
+    pub fn set_blanco_coupling(&mut self, fields: Vec<(patch::PatchGrid, Vec<f64>)>) -> f64 {
+        let kept = &mut self.solvers.blanco;
+        let mut change: f64 = 0.0;
+        for (grid, un) in &fields {
+            change = change.max(match kept.traction_un(grid) {
+                Some(old) => old.iter().zip(un).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max),
+                None => f64::INFINITY,
+            });
+        }
+        kept.traction_un_mm = fields;
+        // The force at each height changed with the distance: the next search starts afresh.
+        if change > 0.0 {
+            self.heights = None;
+        }
+        change
+    }
+}
 
 impl NormalSolvers {
     /// The solver of grid `g` with material `m`.
@@ -541,16 +624,72 @@ fn solve_normal(
     solvers: &mut NormalSolvers,
     tol: f64,
 ) -> Result<(f64, Vec<f64>), ContactError> {
+    let blanco = match (m.blanco, &g.curved) {
+        (Some(b), Some(c)) => Some(conformal_grid::blanco_rows(&g.grid, c, b)?),
+        _ => None,
+    };
+    // Blanco's correction: the distance with the tangential tractions' normal displacement.
+    let coupled_h: Option<Vec<f64>> = blanco.as_ref().map(|_| match solvers.blanco.traction_un(&g.grid) {
+        Some(un) => g.h_mm.iter().zip(un).map(|(h, u)| h + u).collect(),
+        None => g.h_mm.clone(),
+    });
+    let h_mm = coupled_h.as_deref().unwrap_or(&g.h_mm);
+    let params = NormalParams { tol, ..NormalParams::default() };
     let (solver, last) = solvers.get(&g.grid, m)?;
     solver.set_blend(g.blend.clone())?;
     let start = Some(last.as_slice()).filter(|l| !l.is_empty());
-    let sol = solver.solve_approach_from(&g.h_mm, 0.0, &NormalParams { tol, ..NormalParams::default() }, start)?;
+    let mut sol = match (&blanco, start) {
+        // Blanco's fixed point starts from the last pressure on this grid size.
+        (Some(_), Some(pn)) => Pressure { pn_mpa: pn.to_vec() },
+        _ => Pressure { pn_mpa: solver.solve_approach_from(h_mm, 0.0, &params, start)?.pn_mpa },
+    };
+    if let Some(rows) = &blanco {
+        // The products held apart from the solvers while both are in use.
+        let mut kept = std::mem::take(&mut solvers.blanco);
+        let product = kept.product(&g.grid, m, rows);
+        let (solver, _) = solvers.get(&g.grid, m)?;
+        let pn = product.and_then(|product| blanco_pressure(solver, product, h_mm, &params, sol.pn_mpa));
+        solvers.blanco = kept;
+        sol.pn_mpa = pn?;
+    }
+    let (_, last) = solvers.get(&g.grid, m)?;
     let fn_n = match &g.curved {
         Some(c) => conformal_grid::normal_force_n(&g.frame, &g.grid, c, &sol.pn_mpa),
         None => sol.pn_mpa.iter().sum::<f64>() * g.grid.dx_mm * g.grid.ds_mm,
     };
     last.clone_from(&sol.pn_mpa);
     Ok((fn_n, sol.pn_mpa))
+}
+
+/// A patch's solved pressure [MPa] (CONTACT's element order).
+struct Pressure {
+    pn_mpa: Vec<f64>,
+}
+
+/// The pressure of Blanco's corrected normal problem on the distance `h_mm` (with the tangential
+/// tractions' part): the fixed point of the half-space's problem on `h_mm + (B_nn − A_nn) pn`
+/// from the half-space's pressure `pn_mpa`, until the pressure changes by at most the solve's
+/// tolerance relative to its largest value.
+fn blanco_pressure(
+    solver: &mut NormalSolver,
+    product: &mut BlancoProduct,
+    h_mm: &[f64],
+    params: &NormalParams,
+    mut pn_mpa: Vec<f64>,
+) -> Result<Vec<f64>, ContactError> {
+    let zero = vec![0.0; pn_mpa.len()];
+    for _ in 0..BLANCO_PASSES {
+        let [_, _, un] = product.correction([&zero, &zero, &pn_mpa])?;
+        let h: Vec<f64> = h_mm.iter().zip(&un).map(|(h, u)| h + u).collect();
+        let next = solver.solve_approach_from(&h, 0.0, params, Some(&pn_mpa))?.pn_mpa;
+        let change = next.iter().zip(&pn_mpa).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+        let size = next.iter().copied().fold(0.0, f64::max);
+        pn_mpa = next;
+        if change <= params.tol.max(1e-12) * size {
+            return Ok(pn_mpa);
+        }
+    }
+    Err(ContactError::NonFinite("Blanco's corrected pressure: no fixed point within 200 passes"))
 }
 
 /// The approximate normal problem `method` of one patch at the geometry's own approach (CONTACT's

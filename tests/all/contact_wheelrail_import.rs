@@ -652,3 +652,22 @@ fn a_roller_rig_imports_and_exports_back() {
     );
     assert!(text.contains("  0.25   0.0   0.0   0.0   0.0   -0.75      VPITCH_ROL, VY, VZ"), "{text}");
 }
+
+/// Blanco's conformal correction (`[material] blanco_variant = 3`) exported as CONTACT's C3 = 4
+/// with IF_METH, VARIANT before POISS (and MAXOUT for its Panagiotopoulos process), imported back
+/// as the same scene: groove_li case 5 as shipped.
+#[test]
+fn blancos_correction_is_exported_as_c3_4_and_imported_back() {
+    let dir = common::tempdir("m1_round_trip_blanco");
+    let scene = root().join("scenes/wheelrail/groove_li_5.toml");
+    let (original, back) = round_trip(&scene, &dir);
+    assert!(original.material.blanco.is_some());
+    assert_eq!(values(&back).material, values(&original).material);
+    let deck = std::fs::read_to_string(dir.join("deck/groove_li_5.inp")).unwrap();
+    let digits = deck.lines().find(|l| l.contains("V-L-D-C-M-Z-E")).unwrap();
+    assert_eq!(&digits.trim()[3..4], "4", "{digits}");
+    assert!(
+        deck.lines().any(|l| l.split_whitespace().take(2).collect::<Vec<_>>() == ["1", "3"] && l.contains("IF_METH")),
+        "{deck}"
+    );
+}

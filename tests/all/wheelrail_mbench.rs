@@ -79,8 +79,8 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         (f.scene == "mbench_massless_right" && f.step == Some(1)) || f.scene == "mbench_massless_position_right"
     };
     // examples_conformal: test-rollers2 cases 3, 4 (the yawed sphere's free-rolling residues),
-    // 7, 8, 9 (the yawed and the tilted roller's) and groove_li 1-4 (the lateral residues of a
-    // symmetric contact in a deep groove); test-rollers3 cases 1, 5, 6, 9 (the rigid slip on the
+    // 7, 8, 9 (the yawed and the tilted roller's) and groove_li 1-8 (the lateral residues of a
+    // symmetric contact in a deep groove, 5-8 with Blanco's correction); test-rollers3 cases 1, 5, 6, 9 (the rigid slip on the
     // actual surfaces, D = 3: the free-rolling lateral residues of symmetric contacts).
     let conformal_decks = |f: &&&Finding| {
         let residues = ["test_rollers2_3", "test_rollers2_7", "test_rollers2_8", "test_rollers2_9"];

@@ -831,11 +831,19 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
     },
     WheelRailRow {
         feature: WheelRailFeature::ConformalInfluence,
-        name: "influence functions corrected for conformal contact (Blanco)",
+        name: "influence functions corrected for conformal contact (Blanco), variant 3 on the conformal approach",
         control: "C3, IF_METH, VARIANT",
+        supported: true,
+        reason: "imported as [material] blanco_variant = 3 and blanco_inclination = \"interpolated\" (IF_METH = 1) or \"linear\" (IF_METH = 0): the half-space's coefficients turned by the curved reference's row inclinations (physics::halfspace::blanco, CONTACT's influe_blanco), the normal and tangential problems of each conformal patch iterated together (pipeline::wheelrail_blanco)",
+        used: |c| blanco_used(c, true),
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::ConformalInfluence,
+        name: "influence functions corrected for conformal contact (Blanco), other variants or planar patches",
+        control: "C3, IF_METH, VARIANT, D",
         supported: false,
-        reason: "supported: C3 = 2 (piecewise constant) or 3 (bilinear) half-space influence functions",
-        used: |c| c.state.material.as_ref().filter(|m| m.influence == 4).map(|_| "C3 (in force) = 4".to_string()),
+        reason: "supported: C3 = 4 with VARIANT 3 and IF_METH 0 or 1 on the conformal approach (D = 4); VARIANT 1, 2, 4 are not computed, and a planar patch (D = 2, 3, 5) has no row inclinations",
+        used: |c| blanco_used(c, false),
     },
     WheelRailRow {
         feature: WheelRailFeature::BilinearInfluence,
@@ -1033,4 +1041,14 @@ pub fn assess_wheelrail(case: &WheelRailCase) -> Vec<FeatureUse> {
             })
         })
         .collect()
+}
+
+/// C3 = 4 in force: with `supported`, the combination imported (VARIANT 3, IF_METH 0 or 1, D = 4),
+/// else any other.
+fn blanco_used(c: &WheelRailCase, supported: bool) -> Option<String> {
+    let m = c.state.material.as_ref().filter(|m| m.influence == 4)?;
+    let d = c.state.discretisation.as_ref().map_or(0, |d| d.method);
+    let [meth, var] = m.if_correction.unwrap_or([-1, -1]);
+    let ok = d == 4 && (0..=1).contains(&meth) && var == 3;
+    (ok == supported).then(|| format!("C3 (in force) = 4, IF_METH = {meth}, VARIANT = {var}, D = {d}"))
 }

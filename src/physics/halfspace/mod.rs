@@ -6,6 +6,7 @@
 //! whose pressure the exact solver uses and the simplified models take on non-Hertzian contacts.
 
 pub mod bilinear;
+pub mod blanco;
 pub mod blend;
 pub mod convolution;
 pub mod coupling;

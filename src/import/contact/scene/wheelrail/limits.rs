@@ -114,10 +114,18 @@ pub const SCENE_LIMITS: &[SceneLimit] = &[
         name: "influence functions other than the half-space's with piecewise constant tractions",
         control: "C3",
         accepted: false,
-        reason: "supported: C3 = 2 (piecewise constant) or 0, 1 keeping it; the wheel-rail scene has no choice of influence functions: not the bilinear (3) nor the conformal (4) ones",
+        reason: "supported: C3 = 2 (piecewise constant) or 0, 1 keeping it, and C3 = 4 (Blanco-Lorenzo's conformal correction, imported as [material] blanco_variant = 3, blanco_inclination = \"interpolated\" or \"linear\") with VARIANT 3 and IF_METH 0 or 1 on the conformal approach (D = 4); not the bilinear functions (3), nor VARIANT 1, 2, 4 (not computed), nor C3 = 4 on a planar patch (its rows have no inclinations)",
         used: |c| {
             let m = c.state.material.as_ref()?;
-            (m.influence != 2).then(|| format!("C3 (in force) = {}", m.influence))
+            let conformal = c.state.discretisation.as_ref().is_some_and(|d| d.method == 4);
+            let blanco = m.influence == 4 && conformal && m.if_correction.is_some_and(|[meth, var]| (0..=1).contains(&meth) && var == 3);
+            let [meth, var] = m.if_correction.unwrap_or([-1, -1]);
+            match m.influence {
+                2 => None,
+                4 if blanco => None,
+                4 => Some(format!("C3 (in force) = 4 with IF_METH = {meth}, VARIANT = {var}, D = {}", c.state.discretisation.as_ref().map_or(0, |d| d.method))),
+                other => Some(format!("C3 (in force) = {other}")),
+            }
         },
     },
     SceneLimit {

@@ -389,6 +389,7 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
             heat: heat::thermal(c),
             // B = 1 switches the sheet on with the FLXZ last read (CONTACT's `bound_eff`).
             sheet_mm3_per_n: if c.digits.b == 1 { material.flxz.unwrap_or(0.0) } else { 0.0 },
+            blanco: blanco_of(material),
         },
         tangential: heat::tangential(c),
         dx_mm: disc.dx_mm,
@@ -559,4 +560,15 @@ fn row(c: &WheelRailCase) -> Result<(VerticalSpec, LongitudinalSpec, CaseRow), S
         pitch_rad: 0.0,
     };
     Ok((vertical, longitudinal, row))
+}
+
+/// C3 = 4 with IF_METH 0 or 1 and VARIANT 3: Blanco-Lorenzo's conformal correction (`[material]
+/// blanco_variant`, `blanco_inclination`); other combinations are refused by the scene limits.
+fn blanco_of(
+    m: &crate::import::contact::wheelrail_deck::Material,
+) -> Option<crate::physics::halfspace::blanco::Blanco> {
+    use crate::physics::halfspace::blanco::{Blanco, Inclination, VARIANT};
+    let [if_meth, variant] = m.if_correction.filter(|_| m.influence == 4)?;
+    let inclination = if if_meth == 0 { Inclination::Linear } else { Inclination::Interpolated };
+    (variant == i64::from(VARIANT)).then_some(Blanco { inclination, variant: VARIANT })
 }

@@ -240,6 +240,14 @@ fn profile(p: &ProfileSpec, scene: &str) -> Result<Pairs, InputError> {
 fn material(s: &WheelRailScene) -> Result<Pairs, InputError> {
     let g = s.material.g_mpa.ok_or_else(|| InputError::new(&s.name, "no g_mpa", "the combined shear modulus"))?;
     let mut out = vec![("g_mpa", Value::Float(g)), ("poisson", Value::Float(s.material.poisson))];
+    if let Some(b) = s.material.blanco {
+        out.push(("blanco_variant", Value::Integer(i64::from(b.variant))));
+        let inclination = match b.inclination {
+            crate::physics::halfspace::blanco::Inclination::Linear => "linear",
+            crate::physics::halfspace::blanco::Inclination::Interpolated => "interpolated",
+        };
+        out.push(("blanco_inclination", Value::String(inclination.into())));
+    }
     if s.material.sheet_mm3_per_n > 0.0 {
         out.push(("sheet_flexibility_mm3_per_n", Value::Float(s.material.sheet_mm3_per_n)));
     }
