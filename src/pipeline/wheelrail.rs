@@ -270,7 +270,7 @@ fn balanced(
         // Blanco's correction: the tractions' normal displacement for the next normal solves, and
         // whether it moved since the last (CONTACT's Panagiotopoulos process).
         let coupled = blanco_coupled(&normal, &found, cache);
-        if coupled && (normal_z + tangential_z - fz_n).abs() <= 2.0 * FORCE_TOL * fz_n || normal_z <= 0.0 {
+        if (coupled && (normal_z + tangential_z - fz_n).abs() <= 2.0 * FORCE_TOL * fz_n) || normal_z <= 0.0 {
             return Ok((normal, Some(found)));
         }
         let target = normal_share(fz_n, (normal_z, tangential_z), last.take());

@@ -101,7 +101,7 @@ impl BlancoTangential {
             }
         }
         solver.set_coupled_slip(None)?;
-        Err(ContactError::NonFinite("Blanco's corrected tangential problem: no fixed point within 200 passes"))
+        Err(ContactError::NotConverged { what: "Blanco's corrected tangential problem (fixed point)", passes: PASSES })
     }
 
     /// The normal displacement `B_nt p_t` [mm] of the tangential tractions `(px, py)` [MPa] (the

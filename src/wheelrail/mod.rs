@@ -638,32 +638,28 @@ fn solve_normal(
     let (solver, last) = solvers.get(&g.grid, m)?;
     solver.set_blend(g.blend.clone())?;
     let start = Some(last.as_slice()).filter(|l| !l.is_empty());
-    let mut sol = match (&blanco, start) {
+    let mut pn_mpa = match (&blanco, start) {
         // Blanco's fixed point starts from the last pressure on this grid size.
-        (Some(_), Some(pn)) => Pressure { pn_mpa: pn.to_vec() },
-        _ => Pressure { pn_mpa: solver.solve_approach_from(h_mm, 0.0, &params, start)?.pn_mpa },
+        (Some(_), Some(pn)) => pn.to_vec(),
+        _ => solver.solve_approach_from(h_mm, 0.0, &params, start)?.pn_mpa,
     };
     if let Some(rows) = &blanco {
         // The products held apart from the solvers while both are in use.
         let mut kept = std::mem::take(&mut solvers.blanco);
-        let product = kept.product(&g.grid, m, rows);
-        let (solver, _) = solvers.get(&g.grid, m)?;
-        let pn = product.and_then(|product| blanco_pressure(solver, product, h_mm, &params, sol.pn_mpa));
+        let pn = kept.product(&g.grid, m, rows).and_then(|product| {
+            let (solver, _) = solvers.get(&g.grid, m)?;
+            blanco_pressure(solver, product, h_mm, &params, pn_mpa)
+        });
         solvers.blanco = kept;
-        sol.pn_mpa = pn?;
+        pn_mpa = pn?;
     }
     let (_, last) = solvers.get(&g.grid, m)?;
     let fn_n = match &g.curved {
-        Some(c) => conformal_grid::normal_force_n(&g.frame, &g.grid, c, &sol.pn_mpa),
-        None => sol.pn_mpa.iter().sum::<f64>() * g.grid.dx_mm * g.grid.ds_mm,
+        Some(c) => conformal_grid::normal_force_n(&g.frame, &g.grid, c, &pn_mpa),
+        None => pn_mpa.iter().sum::<f64>() * g.grid.dx_mm * g.grid.ds_mm,
     };
-    last.clone_from(&sol.pn_mpa);
-    Ok((fn_n, sol.pn_mpa))
-}
-
-/// A patch's solved pressure [MPa] (CONTACT's element order).
-struct Pressure {
-    pn_mpa: Vec<f64>,
+    last.clone_from(&pn_mpa);
+    Ok((fn_n, pn_mpa))
 }
 
 /// The pressure of Blanco's corrected normal problem on the distance `h_mm` (with the tangential
@@ -689,7 +685,7 @@ fn blanco_pressure(
             return Ok(pn_mpa);
         }
     }
-    Err(ContactError::NonFinite("Blanco's corrected pressure: no fixed point within 200 passes"))
+    Err(ContactError::NotConverged { what: "Blanco's corrected pressure (fixed point)", passes: BLANCO_PASSES })
 }
 
 /// The approximate normal problem `method` of one patch at the geometry's own approach (CONTACT's

@@ -139,7 +139,7 @@ fn normal_solver(grid: &Grid, material: &Material, blend: Option<Blend>) -> Resu
 fn solve(solver: &mut NormalSolver, grid: &Grid, h_mm: &[f64], fn_n: f64) -> Result<NormalContact, ContactError> {
     let s = solver.solve(h_mm, fn_n, &NormalParams::default())?;
     if !s.converged {
-        return Err(ContactError::NonFinite("normal problem (not converged)"));
+        return Err(ContactError::NotConverged { what: "normal problem", passes: s.iterations });
     }
     contact_of(grid, fn_n, s.pn_mpa)
 }

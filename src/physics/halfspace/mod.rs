@@ -49,6 +49,9 @@ pub enum ContactError {
     /// A computation produced a non-finite number (where).
     #[error("non-finite result: {0}")]
     NonFinite(&'static str),
+    /// An iteration ended without meeting its stopping test.
+    #[error("not converged: {what} after {passes} passes")]
+    NotConverged { what: &'static str, passes: usize },
     /// A convolver on the FFT path has no FFT data (an internal inconsistency).
     #[error("internal: FFT data missing for the FFT path")]
     MissingFft,
