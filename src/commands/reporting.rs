@@ -62,7 +62,7 @@ pub(super) fn report_with_findings(
         let after = if all.iter().any(|s| s.id == contact_wheelrail::ID) { contact_wheelrail::ID } else { ladder::ID };
         registry::insert_after(&mut all, after, Section { id: report::wheelrail::ID, ..w });
     }
-    let input = ReportInput { scenes, refs, findings: &findings, sections: all };
+    let input = ReportInput { scenes, refs, findings: &findings, suites, sections: all };
     let report = report::build(&input);
     std::fs::create_dir_all(out).map_err(Error::io(out))?;
     report.write(out)?;

@@ -305,3 +305,28 @@ fn a_perturbed_wheelrail_result_fails_the_gate() {
     let fails = failures(&judge(&short));
     assert!(fails.iter().any(|l| l.contains("case 14: printed in")), "{fails:?}");
 }
+
+/// The report of `run --suite scenes/wheelrail` counts its wheel–rail scenes in its head, names
+/// their suite in the verdict's table (the gated count is the gate's), says how many comparisons
+/// are declared gaps, and lists as closest to their tolerance only comparisons that are not.
+#[test]
+fn the_reports_verdict_names_the_wheelrail_suite_and_sets_declared_gaps_apart() {
+    let run = crate::common::wheelrail_suite_run();
+    let md = std::fs::read_to_string(run.report_dir().join("validation.md")).unwrap();
+    let scenes = std::fs::read_dir(root().join("scenes/wheelrail"))
+        .unwrap()
+        .flatten()
+        .filter(|e| e.path().extension().is_some_and(|x| x == "toml"))
+        .count();
+    assert!(md.contains(&format!("from {scenes} wheel–rail scene(s).")), "{}", &md[..600]);
+    let findings = &run.outcome.findings;
+    let gated = findings.iter().filter(|f| f.gated).count();
+    assert!(md.contains(&format!("| wheelrail | {gated} | 0 |")), "{}", &md[..1500]);
+    let gaps = findings.iter().filter(|f| f.gated && f.quantity.ends_with(wheelrail_cases::GAP_SUFFIX)).count();
+    assert!(gaps > 0);
+    assert!(md.contains(&format!("{gaps} of the gated comparisons are declared gaps")), "{}", &md[..1500]);
+    let verdict = md.split("## Contents").next().unwrap();
+    let closest = verdict.split("declared gaps aside:").nth(1).expect("a list of the closest comparisons");
+    assert_eq!(closest.lines().filter(|l| l.starts_with("- ")).count(), 5, "{closest}");
+    assert!(!closest.contains(wheelrail_cases::GAP_SUFFIX), "{closest}");
+}
