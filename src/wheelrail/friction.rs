@@ -82,6 +82,7 @@ impl Friction<'_> {
 #[cfg(test)]
 mod tests {
     use super::roll_in_wheel_frame;
+    use crate::scene::wheelrail::{MuBy, MuVariation};
     use crate::wheelrail::wheel::{wheel_rotation, Pose, WheelDeviation, WheelsetGeometry};
 
     fn geometry(droll_rad: f64) -> WheelsetGeometry {
@@ -113,5 +114,31 @@ mod tests {
         let closed = (a.sin() / (1.0 - (yaw.sin() * a.cos()).powi(2)).sqrt()).asin();
         assert!((r - closed).abs() < 1e-14, "{r} against {closed}");
         assert!((r - a + 1.99e-5).abs() < 1e-7, "{} rad beyond a", r - a);
+    }
+
+    /// CONTACT's own numbers at mbench_a22_varfric case 3's last height iterate (a debug build's
+    /// print after `fric_interp` in `wr_setup_cp`): patch 2's delttr −0.2930451903685212 rad in the
+    /// track, ROLL −0.00035540, YAW 0.012, gives `deltcp_w` −0.2927096820117159 and μ
+    /// 0.2322897059811229 (ALPHA −20°, −10° with μ 0.2, 0.3); patch 1's −0.2479701154893963 gives
+    /// −0.2476318248490664 and μ 0.2581174156302567.
+    #[test]
+    fn the_wheel_frame_roll_and_mu_are_contacts_at_varfric_case_3() {
+        let pose = Pose { roll_rad: -0.00035540, yaw_rad: 0.012, ..Pose::default() };
+        let wheel = wheel_rotation(&geometry(0.0), &pose);
+        let variation = MuVariation {
+            by: MuBy::ContactAngle,
+            at: vec![-20f64.to_radians(), -10f64.to_radians()],
+            values: vec![0.2, 0.3],
+            temperature: None,
+        };
+        let mu = |x: f64| variation.at(x);
+        for (delta, contact, contact_mu) in [
+            (-0.2930451903685212, -0.2927096820117159, 0.2322897059811229),
+            (-0.2479701154893963, -0.2476318248490664, 0.2581174156302567),
+        ] {
+            let r = roll_in_wheel_frame(delta, &wheel);
+            assert!((r - contact).abs() < 1e-15, "{r} against CONTACT's {contact}");
+            assert!((mu(r) - contact_mu).abs() < 1e-15, "{} against CONTACT's {contact_mu}", mu(r));
+        }
     }
 }
