@@ -102,12 +102,23 @@ pub struct PlacedWheel<'a> {
     pub oor: Option<WheelSlices<'a>>,
 }
 
+/// A rotation by roll about x, then yaw about the rolled z (CONTACT's roll-yaw-pitch convention
+/// without the pitch, `marker_rotate`: `rotmat_pure_roll * rotmat_pure_yaw`).
+fn roll_yaw(roll_rad: f64, yaw_rad: f64) -> Rotation3<f64> {
+    Rotation3::from_axis_angle(&Vector3::x_axis(), roll_rad) * Rotation3::from_axis_angle(&Vector3::z_axis(), yaw_rad)
+}
+
+/// Wheel → track orientation of wheelset geometry `g` (its deviation in this side's frame) at
+/// `pose`: the wheelset's roll and yaw, then the wheel's DROLLW and DYAWW (CONTACT's `whl_trk`,
+/// `wr_set_wheel_marker`: `m_ws` of the wheel on `m_trk` of the wheelset).
+pub fn wheel_rotation(g: &WheelsetGeometry, pose: &Pose) -> Rotation3<f64> {
+    let [_, _, _, droll, dyaw, _] = g.deviation.position;
+    roll_yaw(pose.roll_rad, pose.yaw_rad) * roll_yaw(droll, dyaw)
+}
+
 impl<'a> PlacedWheel<'a> {
     /// The wheel of wheelset geometry `g` (its deviation in this side's frame) at `pose`.
     pub fn place(curve: &'a dyn Curve, g: &WheelsetGeometry, pose: &Pose) -> PlacedWheel<'a> {
-        let roll_yaw = |roll: f64, yaw: f64| {
-            Rotation3::from_axis_angle(&Vector3::x_axis(), roll) * Rotation3::from_axis_angle(&Vector3::z_axis(), yaw)
-        };
         let wheelset_rotation = roll_yaw(pose.roll_rad, pose.yaw_rad);
         let wheelset_centre = Point3::new(0.0, pose.y_mm, pose.z_mm - g.nominal_radius_mm);
         let [dx, dy, dz, droll, dyaw, _] = g.deviation.position;
