@@ -319,12 +319,9 @@ fn the_reports_verdict_names_the_wheelrail_suite_and_sets_declared_gaps_apart() 
     let findings = &run.outcome.findings;
     let gated = findings.iter().filter(|f| f.gated).count();
     assert!(md.contains(&format!("| wheelrail | {gated} | 0 |")), "{}", &md[..1500]);
-    let gaps: Vec<&Finding> =
-        findings.iter().filter(|f| f.gated && f.quantity.ends_with(wheelrail_cases::GAP_SUFFIX)).collect();
-    let cases: std::collections::BTreeSet<(&str, Option<usize>)> =
-        gaps.iter().map(|f| (f.scene.as_str(), f.step)).collect();
-    assert!(!cases.is_empty());
-    let line = format!("{} of the gated comparisons belong to {} declared-gap cases", gaps.len(), cases.len());
+    let gaps = findings.iter().filter(|f| f.gated && f.quantity.ends_with(wheelrail_cases::GAP_SUFFIX)).count();
+    assert!(gaps > 0);
+    let line = format!("{gaps} of the gated comparisons are of declared-gap cases");
     assert!(md.contains(&line), "{line}\n{}", &md[..1500]);
     let verdict = md.split("## Contents").next().unwrap();
     let closest = verdict.split("declared gaps aside:").nth(1).expect("a list of the closest comparisons");
