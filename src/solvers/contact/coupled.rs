@@ -18,6 +18,19 @@ use super::ContactError;
 /// an outer change cannot go below.
 pub const OUTER_FACTOR: f64 = 5.0;
 
+/// The tolerance of an outer iteration's tangential solve: 1e-2 × the smallest relative change
+/// of the iterates so far (at most [`FIRST_INNER_TOLERANCE`], that the first solve takes), never
+/// below `tol`, as the falling-friction fixed point's adaptive solves: the early iterates are
+/// far from the fixed point by more than a tight solve's error; the iteration ends only on a
+/// solve at `tol`, so that its fixed point and stop are those of solves at `tol` throughout.
+pub fn inner_tolerance(tol: f64, relative_change: Option<f64>) -> f64 {
+    let loose = relative_change.map_or(FIRST_INNER_TOLERANCE, |c| (1e-2 * c).min(FIRST_INNER_TOLERANCE));
+    loose.max(tol)
+}
+
+/// The tolerance of an outer iteration's first tangential solve.
+pub const FIRST_INNER_TOLERANCE: f64 = 1e-3;
+
 /// Which kind of solve the slip is made for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Kind {

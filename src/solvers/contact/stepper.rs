@@ -334,6 +334,9 @@ struct Contact<'a> {
     /// The tractions of the step before the last (extrapolated warm start).
     older: Option<(Vec<f64>, Vec<f64>)>,
     zero: Vec<f64>,
+    /// The tolerance of the outer iteration's current tangential solve where it is looser than
+    /// `[contact_solver] tolerance` ([`coupled::inner_tolerance`]); `None` outside it.
+    outer_tol: Option<f64>,
     /// The steady start's loading, until the first transient step ([`super::restart`]).
     after_steady: Option<SteadyStart>,
     /// A falling friction law's fixed point on the slip velocity ([`super::veldep`]).
@@ -501,6 +504,7 @@ fn build(p: &Problem) -> Result<Box<dyn Stepper + '_>, SolveError> {
         last: None,
         older: None,
         zero: vec![0.0; g.len()],
+        outer_tol: None,
         after_steady: None,
         veldep: p.friction.is_falling().then(|| {
             let options = VelDepOptions {
@@ -551,7 +555,7 @@ impl Contact<'_> {
         let mu = if self.veldep.is_some() || self.tempdep.is_some() { 1.0 } else { s.mu };
         let mut t = TangentialParams::new(mu, s.cx, s.cy, s.cs, dq_mm);
         // With falling friction each solve's tolerance is the fixed point's (`veldep::inner_tolerance`).
-        t.tol = self.p.contact_solver.tolerance;
+        t.tol = self.outer_tol.unwrap_or(self.p.contact_solver.tolerance);
         t.max_iter = self.p.contact_solver.max_iterations;
         t
     }
@@ -842,10 +846,14 @@ fn transient_with_limits(
     q: &TangentialParams,
     (px, py): (&[f64], &[f64]),
     older: Option<(&[f64], &[f64])>,
+    start: Option<(&[f64], &[f64])>,
     limits: Option<Limits<'_, '_>>,
 ) -> Result<StepResult, ContactError> {
     let Some((h, friction_pn, kept)) = limits else {
-        return solver.transient_step(q, px, py, older);
+        return match start {
+            Some(start) => solver.transient_step_from(q, px, py, start),
+            None => solver.transient_step(q, px, py, older),
+        };
     };
     let (r, tau, outcome) = h.step(friction_pn, q.mu, |bound, start| {
         solver.set_bound(bound)?;
@@ -920,7 +928,7 @@ impl Contact<'_> {
         let mut kept: Option<(Vec<f64>, HardeningOutcome)> = None;
         let solved = force::solve_sample(at, &params, slope, pn_sum, &mut force::Memory::default(), |q| {
             let limits = hardening.map(|h| (h, friction_pn, &mut kept));
-            transient_with_limits(solver, q, (zero, zero), None, limits)
+            transient_with_limits(solver, q, (zero, zero), None, None, limits)
         })
         .map_err(|source| ContactRunError::Step { step: at.step, source })?;
         self.keep_hardened(kept);
@@ -930,7 +938,12 @@ impl Contact<'_> {
     /// A transient step (rolling or a shift) after the last step's tractions; with a layer that
     /// hardens or softens, the fixed point on its yield limits around each solve, the limits of
     /// the step's final solve kept ([`Hardening`]).
-    fn transient_solve(&mut self, at: &Sample, params: &TangentialParams) -> Result<Solved, SolveError> {
+    fn transient_solve(
+        &mut self,
+        at: &Sample,
+        params: &TangentialParams,
+        start: Option<&StepResult>,
+    ) -> Result<Solved, SolveError> {
         let (px, py) = match &self.last {
             Some(r) => (&r.px, &r.py),
             None => (&self.zero, &self.zero),
@@ -942,9 +955,11 @@ impl Contact<'_> {
         let tangential = solver_for(&mut self.tangential, &mut self.rolled, params.dq_mm);
         let hardening = self.hardening.as_ref();
         let mut kept: Option<(Vec<f64>, HardeningOutcome)> = None;
+        let start = start.map(|r| (r.px.as_slice(), r.py.as_slice()));
+        let params = &TangentialParams { tol: self.outer_tol.unwrap_or(params.tol), ..*params };
         let solved = force::solve_sample(at, params, slope, pn_sum, &mut self.outer, |q| {
             let limits = hardening.map(|h| (h, friction_pn, &mut kept));
-            transient_with_limits(tangential, q, (px, py), older, limits)
+            transient_with_limits(tangential, q, (px, py), older, start, limits)
         })
         .map_err(|source| ContactRunError::Step { step: at.step, source })?;
         self.keep_hardened(kept);
@@ -955,8 +970,9 @@ impl Contact<'_> {
     /// the tangential solve with the pressure's slip, then the normal problem with the traction's
     /// normal displacement (the traction extrapolated, [`coupled::Extrapolation`]) and the
     /// tangential solve again (warm started from the last), until the
-    /// change of (pn, px, py) is within the tolerance or `max_outer` solves were made (then the
-    /// step ends at the iteration limit).
+    /// change of (pn, px, py) is within the tolerance after a solve at the tolerance or
+    /// `max_outer` solves were made (then the step ends at the iteration limit); the earlier
+    /// solves at [`coupled::inner_tolerance`].
     fn solve_coupled(
         &mut self,
         at: &Sample,
@@ -974,18 +990,29 @@ impl Contact<'_> {
             done?;
         }
         self.coupled_slip(kind).map_err(|source| ContactRunError::Step { step: at.step, source })?;
-        let mut out = solve(self, None)?;
+        let tol = self.p.contact_solver.tolerance;
+        self.outer_tol = (max_outer > 1).then(|| coupled::inner_tolerance(tol, None));
+        let out = solve(self, None);
+        self.outer_tol = None;
+        let mut out = out?;
         let mut converged = true;
         let mut traction = coupled::Extrapolation::default();
-        for _ in 1..max_outer {
+        let mut relative = f64::INFINITY;
+        for i in 1..max_outer {
             let before = [self.loaded().pn.clone(), out.0.px.clone(), out.0.py.clone()];
             let (px, py) = traction.next(&out.0.px, &out.0.py);
             self.normal_with_traction(at, (&px, &py))?;
             self.coupled_slip(kind).map_err(|source| ContactRunError::Step { step: at.step, source })?;
-            out = solve(self, Some(&out.0))?;
+            // The last allowed solve is made at the tolerance.
+            let inner = if i + 1 == max_outer { tol } else { coupled::inner_tolerance(tol, Some(relative)) };
+            self.outer_tol = Some(inner);
+            let next = solve(self, Some(&out.0));
+            self.outer_tol = None;
+            out = next?;
             let (change, size) =
                 coupled::change([&before[0], &before[1], &before[2]], [&self.loaded().pn, &out.0.px, &out.0.py]);
-            converged = change <= coupled::OUTER_FACTOR * self.p.contact_solver.tolerance * size;
+            relative = relative.min(change / size);
+            converged = inner <= tol && change <= coupled::OUTER_FACTOR * tol * size;
             if converged {
                 break;
             }
@@ -1187,7 +1214,7 @@ impl Stepper for Contact<'_> {
             }
         }
         let kind = if self.p.rolling.motion == Motion::Shift { Kind::Shift } else { Kind::Rolling };
-        let (r, found) = self.solve_coupled(at, kind, |c, _| c.transient_solve(at, &params))?;
+        let (r, found) = self.solve_coupled(at, kind, |c, start| c.transient_solve(at, &params, start))?;
         self.found = self.unframe(found);
         if r.px.iter().chain(&r.py).any(|v| !v.is_finite()) {
             return Err(SolveError::NonFinite { step: at.step });
