@@ -128,7 +128,7 @@ impl<'a> PlacedWheel<'a> {
         // The profile origin at `origin_ws`; the wheel's centre y_offset along and NOMRAD above it.
         let centre = wheelset_centre
             + wheelset_rotation * (origin_ws - turn * Vector3::new(0.0, y_offset_mm, g.nominal_radius_mm));
-        let rotation = wheelset_rotation * turn;
+        let rotation = wheel_rotation(g, pose);
         let mut wheel = PlacedWheel {
             curve,
             y_offset_mm,
