@@ -37,9 +37,11 @@ pub fn pressure(grid: &Grid, gap: &[f64], material: &Material) -> Result<Vec<f64
         let r = (grid.y_mm[j] - e.y_mid) / e.bb;
         (e.a1 * e.aa * e.aa - (e.a1 * e.aa * e.aa - e.b1 * e.bb * e.bb) * r * r) / pentot
     };
+    // The contact set: per row the elements at or below the threshold, ε clamped to [0, 1].
+    let area_thr = |j: usize| -(1.0 - eps(j).clamp(0.0, 1.0)) * pentot;
     let rows: Vec<Option<(usize, usize, f64)>> = (0..my)
         .map(|j| {
-            let thr = -(1.0 - eps(j).clamp(0.0, 1.0)) * pentot;
+            let thr = area_thr(j);
             let row = &gap[j * mx..(j + 1) * mx];
             let first = row.iter().position(|&g| g <= thr)?;
             let last = row.iter().rposition(|&g| g <= thr)?;
@@ -73,7 +75,10 @@ pub fn pressure(grid: &Grid, gap: &[f64], material: &Material) -> Result<Vec<f64
     // Scale: the normal displacement of this shape at the deepest point equals its interpenetration.
     let un = displacement_at(grid, &p, deepest, material);
     let pmax = pentot / un;
-    Ok(p.iter().map(|v| v * pmax).collect())
+    // Between a row's first and last element of the set, an element above the threshold is
+    // outside the contact: its pressure is cleared after the scale is set (CONTACT's `panprc`,
+    // m_scontc.f90, clears the exterior of every normal solution, KPEC's included).
+    Ok(p.iter().enumerate().map(|(k, v)| if gap[k] <= area_thr(k / mx) { v * pmax } else { 0.0 }).collect())
 }
 
 /// The normal displacement [mm] at element `at` of the pressure `p` [MPa] on the half-space pair

@@ -60,3 +60,28 @@ fn kpec_ellipse_is_contacts_hzcalc3d() {
     assert!((aa - 10.40512318).abs() < 5e-6, "a {aa}");
     assert!((bb - 0.54757621).abs() < 5e-8, "b {bb}");
 }
+
+/// An element above its row's threshold between the row's first and last element in contact (a
+/// gap that is not convex along x, as on a wheel flat) carries no pressure, and every other
+/// element keeps the pressure of the same gap without it: CONTACT clears the exterior after KPEC
+/// has set the scale with the whole row (`panprc`, m_scontc.f90; `perfc_test/chalmers_flat` at
+/// θ = −29.4°: two such elements of 253 and 244 MPa).
+#[test]
+fn kpec_clears_an_element_above_its_rows_threshold_after_the_scale() {
+    let m = Material::from_g(82000.0, 0.28);
+    let grid = Grid::new(40, 30, 4.0, 3.0);
+    let (x, y) = grid.centres();
+    let smooth: Vec<f64> = x.iter().zip(&y).map(|(x, y)| 0.5 / 460.0 * x * x + 0.5 / 300.0 * y * y - 0.01).collect();
+    let deepest = super::first_min(&smooth);
+    // An element of the deepest row's neighbour, 4 elements from the centre, lifted out of contact.
+    let hump = deepest + grid.mx + 4;
+    let mut bumped = smooth.clone();
+    bumped[hump] = 0.0;
+    let p0 = super::kpec::pressure(&grid, &smooth, &m).unwrap();
+    let p1 = super::kpec::pressure(&grid, &bumped, &m).unwrap();
+    assert!(p0[hump] > 0.0 && p0[hump - 1] > 0.0 && p0[hump + 1] > 0.0, "the element is inside the row's contact");
+    assert_eq!(p1[hump], 0.0, "cleared");
+    for k in (0..grid.len()).filter(|&k| k != hump) {
+        assert_eq!(p1[k], p0[k], "element {k}: the scale is set before the clearing");
+    }
+}
