@@ -3,7 +3,7 @@
 
 use super::keys::{key, Absent, Allowed, Keys};
 use super::reader::{Range, Section};
-use super::MAX_ELEMENTS_PER_AXIS;
+use super::{MAX_ELEMENTS_PER_AXIS, MAX_GRID_ELEMENTS};
 use crate::error::InputError;
 use crate::physics::geometry::Extent;
 
@@ -18,14 +18,14 @@ pub const KEYS: Keys = Keys {
         key(
             "mx",
             "–",
-            Allowed::Whole(1, MAX_ELEMENTS_PER_AXIS, ""),
+            Allowed::Whole(1, MAX_ELEMENTS_PER_AXIS, "mx · my at most 524288"),
             Absent::Required,
             r#"elements along x; on an ellipse dx = 2·scale·a/mx and element centres at −scale·a + dx/2 + k·dx: `mx = 22`"#,
         ),
         key(
             "my",
             "–",
-            Allowed::Whole(1, MAX_ELEMENTS_PER_AXIS, ""),
+            Allowed::Whole(1, MAX_ELEMENTS_PER_AXIS, "mx · my at most 524288"),
             Absent::Required,
             r#"elements along y, dy = 2·scale·b/my: `my = 22`"#,
         ),
@@ -66,6 +66,13 @@ pub fn read(top: &mut Section) -> Result<GridSpec, InputError> {
     let mut g = top.table("grid")?.declare(&KEYS);
     let mx = g.whole("mx")?;
     let my = g.whole("my")?;
+    if mx * my > MAX_GRID_ELEMENTS {
+        return Err(InputError::new(
+            g.field("my"),
+            format!("{my} with mx = {mx} ({} elements)", mx * my),
+            format!("mx · my at most {MAX_GRID_ELEMENTS} elements"),
+        ));
+    }
     let scale = g.num_or_default("scale")?;
     let extent = grid_extent(&mut g, scale)?;
     g.finish()?;
@@ -96,6 +103,19 @@ fn grid_extent(g: &mut Section, scale: f64) -> Result<Extent, InputError> {
                 "missing",
                 "both edges x_mm = [x0, x1] and y_mm = [y0, y1], or neither",
             ))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The keys' table says the total the reader checks (a note is text, the limit a constant).
+    #[test]
+    fn the_documented_total_is_the_one_checked() {
+        for k in KEYS.keys.iter().filter(|k| k.key == "mx" || k.key == "my") {
+            assert!(k.allowed.cell().contains(&MAX_GRID_ELEMENTS.to_string()), "{}: {}", k.key, k.allowed.cell());
         }
     }
 }

@@ -38,8 +38,13 @@ use crate::physics::{CoefficientSource, FlexibilityModel, LeadingEdge, PatchFlex
 use reader::{Deferred, Range, Section};
 use std::path::{Path, PathBuf};
 
-/// Largest grid accepted along either axis.
-pub const MAX_ELEMENTS_PER_AXIS: usize = 512;
+/// Largest grid accepted along either axis (CONTACT's 2-D decks run 841 × 1: `perfc_test/carter2d_800`).
+pub const MAX_ELEMENTS_PER_AXIS: usize = 4096;
+
+/// Largest grid accepted in all, `mx · my`: the exact solver's FFT products hold about a dozen
+/// complex arrays of four times the grid (CONTACT's largest performance deck, `norm_problm_8p`,
+/// runs 575 × 575).
+pub const MAX_GRID_ELEMENTS: usize = 1 << 19;
 
 /// Elastic constants as given.
 #[derive(Debug, Clone, PartialEq)]

@@ -101,7 +101,8 @@ fn bad_input_exits_2_and_writes_nothing() {
         (base().replace("mu = 0.4", "mu = inf"), "contact.mu", "inf"),
         (base().replace("[grid]", "[grid]\nmz = 3"), "grid.mz", "no such key"),
         (base().replace("mx = 22", "mx = \"22\""), "grid.mx", "whole number"),
-        (base().replace("mx = 22", "mx = 0"), "grid.mx", "[1, 512]"),
+        (base().replace("mx = 22", "mx = 0"), "grid.mx", "[1, 4096]"),
+        (base().replace("mx = 22", "mx = 1024").replace("my = 22", "my = 1024"), "grid.my", "at most 524288 elements"),
         (base().replace("[\"uba\", \"fastsim\"]", "[\"uba\", \"brush\"]"), "solvers[1]", "\"brush\""),
         (base() + "[rolling]\ncourant = 80\n", "rolling.courant", "(0, 64]"),
         (
