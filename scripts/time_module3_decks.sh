@@ -13,9 +13,9 @@
 # CPU time divided by it, for decks whose scenes run below the timer's 10 ms resolution (a run of a
 # few milliseconds reads 0.00). Each deck is run whole by CONTACT (`CONTACT 2 NAME` in a scratch
 # folder); this project runs every scene of scenes/contact_public/ whose [origin] file is the deck
-# (`creepbench simulate`, one thread, the scene's own solvers), the CPU times (user + system, GNU
-# time) summed over its scenes. Prints a Markdown table; docs/models.md ("Speed against CONTACT")
-# has the measured one.
+# in one process (`creepbench simulate SCENE...`, one thread, the scene's own solvers), as CONTACT
+# runs the deck's cases in one; CPU time is user + system (GNU time). Prints a Markdown table;
+# docs/models.md ("Speed against CONTACT") has the measured one.
 set -euo pipefail
 
 contact=${1:?usage: $0 CONTACT [ROUNDS] [CREEPBENCH]}
@@ -73,13 +73,9 @@ PY
   done
 }
 
+# All of a deck's scenes in one `creepbench simulate` process, as CONTACT runs the deck's cases.
 ours() {
-  local dir=$1 total=0
-  for s in "$dir"/*.toml; do
-    t=$(cpu "$bin" simulate "$s" --out "$work/res")
-    total=$(awk -v a="$total" -v b="$t" 'BEGIN { printf "%.4f", a + b }')
-  done
-  echo "$total"
+  cpu "$bin" simulate "$1"/*.toml --out "$work/res"
 }
 
 echo "| deck | cases run by CONTACT | scenes | CONTACT s | creepbench s | factor |"

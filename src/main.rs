@@ -91,9 +91,9 @@ enum ImportWhat {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Run one scene and write OUT/<name>/{scene.json,<solver>.csv,metrics.csv} (a study file: each of its scenes).
+    /// Run scenes, in one process in the order given, and write OUT/<name>/{scene.json,<solver>.csv,metrics.csv} (a study file: each of its scenes).
     Simulate {
-        /// The scene file (TOML), or a study file; several with --report (wheel–rail scenes).
+        /// The scene files (TOML) or study files; with --report, wheel–rail scenes.
         #[arg(required = true)]
         scene: Vec<PathBuf>,
         /// Run only these of the scene's solvers (repeatable).
@@ -272,13 +272,7 @@ fn main() {
         }
         Command::Simulate { scene, solvers, out, golden, report } => match (report, scene.as_slice()) {
             (Some(dir), scenes) => commands::simulate_report(scenes, &solvers, &out, &dir, &golden),
-            (None, [one]) => commands::simulate(one, &solvers, &out, &golden),
-            (None, _) => Err(creepbench::error::InputError::new(
-                "SCENE",
-                format!("{} files", scene.len()),
-                "one scene file (several only with --report)",
-            )
-            .into()),
+            (None, scenes) => commands::simulate(scenes, &solvers, &out, &golden),
         }
         .map(|dirs| dirs.iter().for_each(|d| say(d.display()))),
         Command::Run { suite: s, results, report, fits, timing_repeats } => {

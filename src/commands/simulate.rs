@@ -1,63 +1,99 @@
-//! `creepbench simulate`: one scene (or a study) into result folders; wheel–rail scenes with
+//! `creepbench simulate`: scenes (or studies) into result folders, in one process; wheel–rail scenes with
 //! their report section (`--report`).
 
 use super::*;
 
-/// `creepbench simulate`: one scene into `out/<name>/` (a study file: each of its scenes).
-pub fn simulate(scene: &Path, solvers: &[String], out: &Path, golden: &Path) -> Result<Vec<PathBuf>, Error> {
-    if let Some(wr) = crate::scene::wheelrail::read_if_wheelrail(scene)? {
-        return simulate_wheelrail(wr, solvers, out, golden);
+/// What one scene file holds: a wheel–rail scene, or the problems of a scene (a study: each of
+/// its scenes).
+enum Loaded {
+    WheelRail(Box<WheelRailScene>),
+    Problems(Vec<crate::problem::Problem>),
+}
+
+impl Loaded {
+    /// The scene file at `path`, every scene in it validated (`solvers` narrowing its models).
+    fn read(path: &Path, solvers: &[String]) -> Result<Loaded, Error> {
+        if let Some(mut wr) = crate::scene::wheelrail::read_if_wheelrail(path)? {
+            narrow(&mut wr, solvers)?;
+            return Ok(Loaded::WheelRail(Box::new(wr)));
+        }
+        let sources = suite::sources_of_file(path)?;
+        let problems = sources.iter().map(|s| pipeline::load_source(s, solvers)).collect::<Result<Vec<_>, _>>()?;
+        Ok(Loaded::Problems(problems))
     }
-    let sources = suite::sources_of_file(scene)?;
-    // Every scene validated (and its folder checked) before any runs: bad input writes nothing.
-    let problems = sources.iter().map(|s| pipeline::load_source(s, solvers)).collect::<Result<Vec<_>, _>>()?;
+
+    /// The names of its scenes, each the folder `out/<name>` it writes.
+    fn names(&self) -> Vec<&str> {
+        match self {
+            Loaded::WheelRail(s) => vec![s.name.as_str()],
+            Loaded::Problems(ps) => ps.iter().map(|p| p.name.as_str()).collect(),
+        }
+    }
+}
+
+/// `creepbench simulate SCENE...`: each file's scenes (a study file: each of its scenes) into
+/// `out/<name>/`, in one process in the order given (kept influence tables serve the later
+/// scenes). Every file is read and validated and every folder checked before any runs: bad input,
+/// or two scenes of one name (one folder), writes nothing.
+pub fn simulate(scenes: &[PathBuf], solvers: &[String], out: &Path, golden: &Path) -> Result<Vec<PathBuf>, Error> {
+    let loaded = scenes.iter().map(|p| Loaded::read(p, solvers)).collect::<Result<Vec<_>, _>>()?;
     guard::guard_output_dir(out, golden)?;
-    for problem in &problems {
+    let mut seen = std::collections::BTreeSet::new();
+    for name in loaded.iter().flat_map(Loaded::names) {
+        if !seen.insert(name) {
+            return Err(InputError::new("SCENE", name, "scenes of distinct names (each writes OUT/<name>)").into());
+        }
         // The folder written is out/<name>: a scene named after a protected folder cannot reach it.
-        guard::guard_not_under(&out.join(&problem.name), golden)?;
+        guard::guard_not_under(&out.join(name), golden)?;
     }
     let mut dirs = Vec::new();
-    for problem in problems {
-        let before = problem.warnings.len();
-        for w in &problem.warnings {
-            errln!("warning: {w}");
-        }
-        let result = pipeline::run(problem)?;
-        for w in &result.problem.warnings[before..] {
-            errln!("warning: {w}");
-        }
-        let ran: Vec<String> = result
-            .histories
-            .iter()
-            .zip(&result.timing)
-            .map(|(h, t)| format!("{}: {} rows in {:.3} s", h.solver, h.rows.len(), t.wall_s))
-            .collect();
-        let stored = StoredScene::from_owned(result);
-        // Writers into one folder take turns (as `run` does), so two simulations both land.
-        let _lock = lock::lock_folder(out, lock::DEFAULT_LOCK_WAIT)?;
-        dirs.push(results::write_scenes(out, std::slice::from_ref(&stored), false)?.remove(0));
-        for line in ran {
-            errln!("{line}");
+    for file in loaded {
+        match file {
+            Loaded::WheelRail(scene) => dirs.push(simulate_wheelrail(&scene, out)?),
+            Loaded::Problems(problems) => {
+                for problem in problems {
+                    dirs.push(simulate_problem(problem, out)?);
+                }
+            }
         }
     }
     Ok(dirs)
 }
 
-/// `creepbench simulate` of a wheel–rail scene: its cases into `out/<name>/` (`<model>.csv`,
-/// `<model>_patches.csv`); `solvers` narrows its models.
-pub(super) fn simulate_wheelrail(
-    mut scene: crate::scene::wheelrail::WheelRailScene,
-    solvers: &[String],
-    out: &Path,
-    golden: &Path,
-) -> Result<Vec<PathBuf>, Error> {
-    narrow(&mut scene, solvers)?;
-    guard::guard_output_dir(out, golden)?;
-    guard::guard_not_under(&out.join(&scene.name), golden)?;
-    let run = run_wheelrail(&scene)?;
+/// One validated scene run and written into `out/<name>/`, its warnings and each solver's rows
+/// and wall time on stderr.
+fn simulate_problem(problem: crate::problem::Problem, out: &Path) -> Result<PathBuf, Error> {
+    let before = problem.warnings.len();
+    for w in &problem.warnings {
+        errln!("warning: {w}");
+    }
+    let result = pipeline::run(problem)?;
+    for w in &result.problem.warnings[before..] {
+        errln!("warning: {w}");
+    }
+    let ran: Vec<String> = result
+        .histories
+        .iter()
+        .zip(&result.timing)
+        .map(|(h, t)| format!("{}: {} rows in {:.3} s", h.solver, h.rows.len(), t.wall_s))
+        .collect();
+    let stored = StoredScene::from_owned(result);
+    // Writers into one folder take turns (as `run` does), so two simulations both land.
+    let _lock = lock::lock_folder(out, lock::DEFAULT_LOCK_WAIT)?;
+    let dir = results::write_scenes(out, std::slice::from_ref(&stored), false)?.remove(0);
+    for line in ran {
+        errln!("{line}");
+    }
+    Ok(dir)
+}
+
+/// `creepbench simulate` of a wheel–rail scene (its models narrowed, its folder checked): its
+/// cases into `out/<name>/` (`<model>.csv`, `<model>_patches.csv`).
+fn simulate_wheelrail(scene: &WheelRailScene, out: &Path) -> Result<PathBuf, Error> {
+    let run = run_wheelrail(scene)?;
     // Writers into one folder take turns.
     let _lock = lock::lock_folder(out, lock::DEFAULT_LOCK_WAIT)?;
-    Ok(vec![suite::wheelrail::write(out, &run)?])
+    suite::wheelrail::write(out, &run)
 }
 
 /// `creepbench simulate SCENE... --report DIR` of wheel–rail scenes: each into `out/<name>/`

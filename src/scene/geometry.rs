@@ -83,17 +83,18 @@ pub(crate) fn per_element(
     let mut out = vec![vec![f64::NAN; mx * my]; cols.len() - 2];
     let mut seen = vec![false; mx * my];
     for (r, (&ix, &iy)) in cols[0].iter().zip(&cols[1]).enumerate() {
-        let line = format!("{origin} line {}", lines[r]);
+        // The message's place, written only for a message (not per row).
+        let line = || format!("{origin} line {}", lines[r]);
         let index = |v: f64, n: usize| (v.fract() == 0.0 && v >= 1.0 && v <= n as f64).then(|| v as usize - 1);
         let (Some(i), Some(j)) = (index(ix, mx), index(iy, my)) else {
             return Err(InputError::new(
-                line,
+                line(),
                 format!("ix = {ix}, iy = {iy}"),
                 format!("whole numbers 1 ≤ ix ≤ {mx}, 1 ≤ iy ≤ {my} (the grid's elements)"),
             ));
         };
         if std::mem::replace(&mut seen[j * mx + i], true) {
-            return Err(InputError::new(line, format!("ix = {ix}, iy = {iy}"), "every element once"));
+            return Err(InputError::new(line(), format!("ix = {ix}, iy = {iy}"), "every element once"));
         }
         for (o, c) in out.iter_mut().zip(&cols[2..]) {
             o[j * mx + i] = c[r];
@@ -142,20 +143,22 @@ pub(crate) fn read_columns_of(path: &Path, field: &str, choices: &[Vec<&str>]) -
     let names = &choices[choice];
     let mut cols = vec![Vec::new(); names.len()];
     let mut lines = Vec::new();
-    for (r, rec) in rdr.records().enumerate() {
+    // Byte records (no UTF-8 check of the whole record); the message's place written only for a
+    // message (not per row).
+    for (r, rec) in rdr.byte_records().enumerate() {
         let row = super::table::line_of(&text, &rec).unwrap_or(r + 2);
-        let line = format!("{origin} line {row}");
-        let rec = rec.map_err(|e| InputError::new(&line, "malformed", format!("{} numbers ({e})", names.len())))?;
+        let line = || format!("{origin} line {row}");
+        let rec = rec.map_err(|e| InputError::new(line(), "malformed", format!("{} numbers ({e})", names.len())))?;
         if rec.len() != names.len() {
-            return Err(InputError::new(&line, rec.len(), format!("{} fields", names.len())));
+            return Err(InputError::new(line(), rec.len(), format!("{} fields", names.len())));
         }
         for (c, cell) in rec.iter().enumerate() {
-            match cell.parse::<f64>() {
-                Ok(v) if v.is_finite() => cols[c].push(v),
+            match std::str::from_utf8(cell).map(str::parse::<f64>) {
+                Ok(Ok(v)) if v.is_finite() => cols[c].push(v),
                 _ => {
                     return Err(InputError::new(
-                        format!("{line} column {}", names[c]),
-                        format!("{cell:?}"),
+                        format!("{} column {}", line(), names[c]),
+                        format!("{:?}", String::from_utf8_lossy(cell)),
                         "a finite number",
                     ))
                 }

@@ -372,14 +372,32 @@ fn read_rows(
 /// The 1-based line of `text` (the CSV read) a record starts on: the reader skips empty lines, so
 /// a record's index is not its line, and the position it gives a record after empty lines is that
 /// of the first of them (csv 1.4: its line and byte): the empty lines from there are counted too.
-pub(super) fn line_of(text: &str, rec: &csv::Result<csv::StringRecord>) -> Option<usize> {
+pub(super) fn line_of<R: Positioned>(text: &str, rec: &csv::Result<R>) -> Option<usize> {
     let position = match rec {
-        Ok(rec) => rec.position(),
+        Ok(rec) => rec.at(),
         Err(e) => e.position(),
     }?;
     let rest = text.as_bytes().get(usize::try_from(position.byte()).ok()?..)?;
     let empty_lines = rest.iter().take_while(|b| matches!(b, b'\r' | b'\n')).filter(|&&b| b == b'\n').count();
     Some(position.line() as usize + empty_lines)
+}
+
+/// A CSV record's position (string or byte record).
+pub(super) trait Positioned {
+    /// Where the record starts.
+    fn at(&self) -> Option<&csv::Position>;
+}
+
+impl Positioned for csv::StringRecord {
+    fn at(&self) -> Option<&csv::Position> {
+        self.position()
+    }
+}
+
+impl Positioned for csv::ByteRecord {
+    fn at(&self) -> Option<&csv::Position> {
+        self.position()
+    }
 }
 
 /// The record of line `row`: readable CSV of `fields` fields (the header's).

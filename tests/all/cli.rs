@@ -177,6 +177,35 @@ fn malformed_toml_names_line_and_column() {
     assert_eq!(far.excerpt, format!("{}\" x", "y".repeat(18)));
 }
 
+/// Several scene files run in one process, each into its own folder with the numbers it has run
+/// alone; two scenes of one name (one folder) are refused before any runs, nothing written.
+#[test]
+fn simulate_several_scenes_in_one_process() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a.toml"), dir.path().join("b.toml"));
+    std::fs::write(&a, base().replace("name = \"bad\"", "name = \"first\"")).unwrap();
+    std::fs::write(&b, base().replace("name = \"bad\"", "name = \"second\"").replace("mu = 0.4", "mu = 0.3")).unwrap();
+    let path = |p: &Path| p.to_str().unwrap().to_string();
+    let (both, alone) = (dir.path().join("both"), dir.path().join("alone"));
+    let o = creepbench(&["simulate", &path(&a), &path(&b), "--out", &path(&both)]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(String::from_utf8(o.stdout).unwrap().lines().count(), 2);
+    for (scene, name) in [(&b, "second"), (&a, "first")] {
+        let o = creepbench(&["simulate", &path(scene), "--out", &path(&alone)]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        for solver in ["uba.csv", "fastsim.csv"] {
+            let read = |d: &Path| std::fs::read_to_string(d.join(name).join(solver)).unwrap();
+            assert_eq!(read(&both), read(&alone), "{name}/{solver}");
+        }
+    }
+    let twice = dir.path().join("twice");
+    let o = creepbench(&["simulate", &path(&a), &path(&a), "--out", &path(&twice)]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("first") && err.contains("distinct names"), "{err}");
+    assert!(!twice.exists(), "nothing written");
+}
+
 /// `simulate DIR/s.toml --out DIR/o`.
 fn simulate_in(dir: &Path) -> std::process::Output {
     creepbench(&["simulate", dir.join("s.toml").to_str().unwrap(), "--out", dir.join("o").to_str().unwrap()])

@@ -79,6 +79,16 @@ impl ElementGeometry {
         let mut solver = None;
         let nominal = match solved {
             Some(pn_mpa) => contact_of(&grid, fn_n, pn_mpa)?,
+            None if blend.is_none() => match Kept::find(&grid, material, &h_mm, fn_n) {
+                Some(nominal) => nominal,
+                None => {
+                    let mut s = normal_solver(&grid, material, None)?;
+                    let nominal = solve(&mut s, &grid, &h_mm, fn_n)?;
+                    Kept::keep(&grid, material, &h_mm, nominal.clone());
+                    solver = Some(s);
+                    nominal
+                }
+            },
             None => {
                 let mut s = normal_solver(&grid, material, blend.clone())?;
                 let nominal = solve(&mut s, &grid, &h_mm, fn_n)?;
@@ -123,6 +133,54 @@ impl ElementGeometry {
                 edge_load_share: 0.0,
             })
         })
+    }
+}
+
+/// A nominal normal contact kept for the process with what it was solved of (grid, the
+/// material's elastic constants and sheet, the undeformed distance, the load; no blending): the
+/// scenes of one deck run in one process (`creepbench simulate SCENE...`) often share their
+/// geometry and load (ertz_temperature.inp's four cases), whose normal problem is then solved
+/// once; the same inputs bit for bit, the same pressure.
+struct Kept {
+    grid: Grid,
+    material_bits: [u64; 3],
+    h_mm: Vec<f64>,
+    contact: NormalContact,
+}
+
+/// The contacts [`Kept`] (the newest last) and how many.
+static KEPT: Mutex<Vec<Arc<Kept>>> = Mutex::new(Vec::new());
+const KEPT_CONTACTS: usize = 4;
+
+impl Kept {
+    /// The bits of the material's constants the normal problem reads.
+    fn material_bits(m: &Material) -> [u64; 3] {
+        [m.g_mpa, m.poisson, m.sheet_mm3_per_n].map(f64::to_bits)
+    }
+
+    /// Whether this contact was solved of these inputs, bit for bit.
+    fn is_of(&self, grid: &Grid, material: &Material, h_mm: &[f64], fn_n: f64) -> bool {
+        self.contact.fn_n.to_bits() == fn_n.to_bits()
+            && self.material_bits == Self::material_bits(material)
+            && self.grid == *grid
+            && self.h_mm.len() == h_mm.len()
+            && self.h_mm.iter().zip(h_mm).all(|(a, b)| a.to_bits() == b.to_bits())
+    }
+
+    /// The kept contact of these inputs, if any.
+    fn find(grid: &Grid, material: &Material, h_mm: &[f64], fn_n: f64) -> Option<NormalContact> {
+        let kept = KEPT.lock().unwrap_or_else(|e| e.into_inner());
+        kept.iter().rev().find(|k| k.is_of(grid, material, h_mm, fn_n)).map(|k| k.contact.clone())
+    }
+
+    /// Keep `contact`, solved of these inputs (the oldest dropped beyond [`KEPT_CONTACTS`]).
+    fn keep(grid: &Grid, material: &Material, h_mm: &[f64], contact: NormalContact) {
+        let k = Kept { grid: grid.clone(), material_bits: Self::material_bits(material), h_mm: h_mm.to_vec(), contact };
+        let mut kept = KEPT.lock().unwrap_or_else(|e| e.into_inner());
+        if kept.len() == KEPT_CONTACTS {
+            kept.remove(0);
+        }
+        kept.push(Arc::new(k));
     }
 }
 

@@ -209,6 +209,18 @@ impl FftData<f64> {
     }
 }
 
+/// The FFT length along y of an `my`-row grid: a single row (CONTACT's 2-D strips, `my = 1`)
+/// has no offset along y, its period one row (the transform along y the identity, no padded row
+/// transformed); more rows [`fft_len`] of `2my - 1`. (x keeps its even length: the real
+/// transforms along x want it.)
+fn fft_len_y(my: usize) -> usize {
+    if my == 1 {
+        1
+    } else {
+        fft_len(2 * my - 1)
+    }
+}
+
 impl<T: Real> FftData<T> {
     /// Plans and zeroed work buffers for `nx x ny` transforms; no spectra yet.
     fn empty(nx: usize, ny: usize) -> FftData<T> {
@@ -246,6 +258,11 @@ impl<T: Real> FftData<T> {
     fn forward(&mut self, my: usize) {
         let nx = self.nx;
         self.fwd_x.process_with_scratch(&mut self.buf[..my * nx], &mut self.scratch);
+        if self.ny == 1 {
+            // One row: its transposed layout is itself, the transform along y the identity.
+            self.buft.copy_from_slice(&self.buf);
+            return;
+        }
         transpose(&self.buf, &mut self.buft, nx, self.ny, my);
         self.fwd_y.process_with_scratch(&mut self.buft, &mut self.scratch);
     }
@@ -253,7 +270,9 @@ impl<T: Real> FftData<T> {
     /// Inverse transform of the spectrum in `buft` into the first `my` rows of `buf`.
     fn inverse(&mut self, my: usize) {
         let (nx, ny) = (self.nx, self.ny);
-        self.inv_y.process_with_scratch(&mut self.buft, &mut self.scratch);
+        if ny > 1 {
+            self.inv_y.process_with_scratch(&mut self.buft, &mut self.scratch);
+        }
         // Transpose back only the first my rows (x-major -> y-major).
         for j in 0..my {
             for i in 0..nx {
@@ -379,7 +398,7 @@ impl Convolver {
         check_kernel(kernel)?;
         let (mx, my) = (kernel.mx, kernel.my);
         let fft = match path {
-            ConvPath::Fft => Some(FftData::new(kernel, fft_len(2 * mx - 1), fft_len(2 * my - 1))),
+            ConvPath::Fft => Some(FftData::new(kernel, fft_len(2 * mx - 1), fft_len_y(my))),
             ConvPath::Direct => None,
         };
         Ok(Convolver {
@@ -453,7 +472,7 @@ impl Convolver {
         let mut c = Convolver::new(kernel, ConvPath::Direct)?;
         if path == ConvPath::Fft {
             c.path = ConvPath::Fft;
-            c.fft = Some(spectra(kernel, fft_len(2 * kernel.mx - 1), fft_len(2 * kernel.my - 1)));
+            c.fft = Some(spectra(kernel, fft_len(2 * kernel.mx - 1), fft_len_y(kernel.my)));
         }
         Ok(c)
     }

@@ -91,11 +91,16 @@ impl RealFft2 {
         for kx in 0..nh {
             self.cols[kx * ny + my..(kx + 1) * ny].iter_mut().for_each(|c| *c = zero);
         }
-        self.fwd_y.process_with_scratch(&mut self.cols, &mut self.scratch);
+        // One row (ny = 1): the transforms along y are the identity.
+        if ny > 1 {
+            self.fwd_y.process_with_scratch(&mut self.cols, &mut self.scratch);
+        }
         for (c, s) in self.cols.iter_mut().zip(s) {
             *c *= s;
         }
-        self.inv_y.process_with_scratch(&mut self.cols, &mut self.scratch);
+        if ny > 1 {
+            self.inv_y.process_with_scratch(&mut self.cols, &mut self.scratch);
+        }
         for j in 0..my {
             for (kx, c) in self.half.iter_mut().enumerate() {
                 *c = self.cols[kx * ny + j];

@@ -94,22 +94,28 @@ impl Hardening {
         self.tau_mpa = carried(&self.tau_mpa, mx, courant, tau_c0);
     }
 
-    /// One step on the friction bound's pressure `pn` [MPa] at μ `mu`: `solve(bound, start)`
-    /// solves the step with the bound's pressure `bound` [MPa], warm started from the last
-    /// iterate's tractions `start` when given. Returns the last solve, the limits its slip gives
-    /// (to [`Hardening::keep`] once the step is final) and the outcome; nothing is kept here.
+    /// One step on the friction bound's pressure `pn` [MPa] at μ `mu`: `solve(bound, start,
+    /// tol)` solves the step with the bound's pressure `bound` [MPa] to the tolerance `tol`, warm
+    /// started from the last iterate's tractions `start` when given. The early iterates' solves
+    /// are loose (as the falling-friction fixed point's adaptive solves,
+    /// [`super::veldep::inner_tolerance`] of the last relative change of the limits, never below
+    /// `solve_tol`): they are farther from the fixed point than a tight solve's error; the step
+    /// ends only on a solve at `solve_tol` (or whose residual is within it). Returns the last
+    /// solve, the limits its slip gives (to [`Hardening::keep`] once the step is final) and the
+    /// outcome; nothing is kept here.
     pub fn step(
         &self,
         pn: &[f64],
         mu: f64,
-        mut solve: impl FnMut(&[f64], Option<(&[f64], &[f64])>) -> Result<StepResult, ContactError>,
+        solve_tol: f64,
+        mut solve: impl FnMut(&[f64], Option<(&[f64], &[f64])>, f64) -> Result<StepResult, ContactError>,
     ) -> Result<HardeningStep, ContactError> {
         let n = pn.len();
         let previous = &self.tau_mpa;
         let mut tau = previous.clone();
         let mut bound = vec![0.0; n];
         let mut last: Option<StepResult> = None;
-        let mut inner = 0;
+        let (mut inner, mut last_change) = (0, None);
         let k_tau = self.layer.hardening_mpa_per_mm;
         let kc = k_tau * self.self_flexibility_mm_per_mpa;
         for it in 1..=MAX_ITERATIONS {
@@ -117,7 +123,8 @@ impl Hardening {
                 bound[k] = if pn[k] > 0.0 { pn[k].min(tau[k] / mu) } else { 0.0 };
             }
             let start = last.as_ref().map(|r| (r.px.as_slice(), r.py.as_slice()));
-            let r = solve(&bound, start)?;
+            let tol = super::veldep::inner_tolerance(solve_tol, last_change);
+            let r = solve(&bound, start, tol)?;
             inner += r.iterations;
             let mut next = tau.clone();
             let mut implied = previous.clone();
@@ -137,10 +144,12 @@ impl Hardening {
                 change = change.max((plain - tau[k]).abs());
                 size = size.max(plain.abs());
             }
-            let converged = change <= self.tolerance * size;
+            let tight = tol <= solve_tol || r.residual <= solve_tol;
+            let converged = tight && change <= self.tolerance * size;
             if converged || it == MAX_ITERATIONS {
                 return Ok((r, implied, HardeningOutcome { iterations: it, converged, inner_iterations: inner }));
             }
+            last_change = Some(if size > 0.0 { change / size } else { 0.0 });
             tau = next;
             last = Some(r);
         }
@@ -202,7 +211,7 @@ mod tests {
         let c = 2.0e-4;
         for (tau_c0, k, trial) in [(200.0, 435.0, 400.0), (400.0, -195.0, 800.0), (20.0, 20.4, 60.0)] {
             let h = Hardening::new(layer(tau_c0, k), 1, c, 1e-12).unwrap();
-            let (r, tau, o) = h.step(&[900.0], 0.7, |b, _| one_element(c, trial, b)).unwrap();
+            let (r, tau, o) = h.step(&[900.0], 0.7, 1e-9, |b, _, _| one_element(c, trial, b)).unwrap();
             let closed = (tau_c0 + k * c * trial) / (1.0 + k * c);
             assert!((tau[0] - closed).abs() <= 1e-12 * closed, "{tau:?} against {closed}");
             assert!((r.px[0] - closed).abs() <= 1e-12 * closed);
@@ -216,13 +225,13 @@ mod tests {
     fn the_limit_stays_between_the_floor_and_the_friction_bound() {
         let c = 2.0e-4;
         let h = Hardening::new(layer(200.0, 1e6), 1, c, 1e-12).unwrap();
-        let (_, tau, o) = h.step(&[900.0], 0.7, |b, _| one_element(c, 5000.0, b)).unwrap();
+        let (_, tau, o) = h.step(&[900.0], 0.7, 1e-9, |b, _, _| one_element(c, 5000.0, b)).unwrap();
         assert!(o.converged && (tau[0] - 630.0).abs() <= 1e-9, "{tau:?}");
         let h = Hardening::new(layer(400.0, -1e6), 1, c, 1e-12).unwrap();
-        let (_, tau, o) = h.step(&[900.0], 0.7, |b, _| one_element(c, 800.0, b)).unwrap();
+        let (_, tau, o) = h.step(&[900.0], 0.7, 1e-9, |b, _, _| one_element(c, 800.0, b)).unwrap();
         assert!(o.converged && (tau[0] - 40.0).abs() <= 1e-9, "{tau:?}");
         let h = Hardening::new(layer(200.0, 435.0), 1, c, 1e-12).unwrap();
-        let (_, tau, o) = h.step(&[900.0], 0.7, |b, _| one_element(c, 150.0, b)).unwrap();
+        let (_, tau, o) = h.step(&[900.0], 0.7, 1e-9, |b, _, _| one_element(c, 150.0, b)).unwrap();
         assert_eq!((tau[0], o.iterations), (200.0, 1));
     }
 
@@ -252,8 +261,9 @@ mod tests {
                 let mut params = TangentialParams::new(mu, shift_mm, 0.0, 0.0, 1.0);
                 params.tol = 1e-13;
                 let (r, tau, o) = h
-                    .step(&pn, mu, |bound, start| {
+                    .step(&pn, mu, params.tol, |bound, start, tol| {
                         solver.set_bound(bound)?;
+                        let params = TangentialParams { tol, ..params };
                         match start {
                             Some(start) => solver.transient_resolve_from(&params, start),
                             None => solver.transient_step(&params, &px, &py, None),
@@ -311,11 +321,11 @@ mod tests {
     fn a_change_below_the_tolerance_accumulates() {
         let (c, k, trial) = (2.0e-4, 1e-3, 400.0);
         let mut h = Hardening::new(layer(200.0, k), 1, c, 1e-6).unwrap();
-        let (_, tau, o) = h.step(&[900.0], 0.7, |b, _| one_element(c, trial, b)).unwrap();
+        let (_, tau, o) = h.step(&[900.0], 0.7, 1e-9, |b, _, _| one_element(c, trial, b)).unwrap();
         assert_eq!(o.iterations, 1, "{o:?}");
         assert_eq!(tau[0], 200.0 + k * (trial - 200.0) * c);
         h.keep(tau);
-        let (_, tau, _) = h.step(&[900.0], 0.7, |b, _| one_element(c, trial, b)).unwrap();
+        let (_, tau, _) = h.step(&[900.0], 0.7, 1e-9, |b, _, _| one_element(c, trial, b)).unwrap();
         assert!(tau[0] > h.tau_mpa()[0] && h.tau_mpa()[0] > 200.0, "{tau:?}");
     }
 }

@@ -855,8 +855,9 @@ fn transient_with_limits(
             None => solver.transient_step(q, px, py, older),
         };
     };
-    let (r, tau, outcome) = h.step(friction_pn, q.mu, |bound, start| {
+    let (r, tau, outcome) = h.step(friction_pn, q.mu, q.tol, |bound, start, tol| {
         solver.set_bound(bound)?;
+        let q = &TangentialParams { tol, ..*q };
         match start {
             Some(start) => solver.transient_resolve_from(q, start),
             None => solver.transient_step(q, px, py, older),

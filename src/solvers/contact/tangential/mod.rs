@@ -551,7 +551,7 @@ impl TangentialSolver {
         }
         check_grid_array("x", x_mm, n)?;
         check_grid_array("y", y_mm, n)?;
-        let plans = Plans::new(k0, ks)?;
+        let plans = Plans::of(k0, ks)?;
         let layout = Layout {
             mx,
             my,

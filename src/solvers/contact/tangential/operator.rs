@@ -8,9 +8,11 @@ use super::super::convolution::Convolver;
 use super::super::influence::Kernel;
 use super::super::ContactError;
 use super::element::Diag;
+use std::sync::{Arc, Mutex};
 
 /// Coefficients of one operator in kernel storage (transient: `A`; steady: `A - A_s`), with
 /// its diagonal, for the incremental slip update.
+#[derive(Clone)]
 pub(super) struct Operator {
     xx: Vec<f64>,
     xy: Vec<f64>,
@@ -97,6 +99,7 @@ unsafe fn update_slip_avx2(op: &Operator, sp: &Spans, sx: &mut [f64], sy: &mut [
 
 /// Everything built from the kernels, once per grid: the FFT products and the coefficient
 /// operators. Independent of the load.
+#[derive(Clone)]
 pub(super) struct Plans {
     /// `A`.
     pub conv0: Convolver,
@@ -114,9 +117,50 @@ pub(super) struct Plans {
     pub steady: Operator,
 }
 
+/// Plans kept for the process with the kernels they were built of (the newest last): the scenes
+/// of one deck run in one process (`creepbench simulate SCENE...`) and the cases of one scene
+/// often share their grid and kernels, whose plans are then copied, not transformed again.
+static KEPT: Mutex<Vec<Arc<(Kernel, Kernel, Plans)>>> = Mutex::new(Vec::new());
+
+/// How many plans [`KEPT`] holds (a few MB each on CONTACT's grids).
+const KEPT_PLANS: usize = 2;
+
+/// Whether two kernels are the same bit for bit (equal inputs, equal plans).
+fn same_bits(a: &Kernel, b: &Kernel) -> bool {
+    let bits = |x: &[f64], y: &[f64]| x.len() == y.len() && x.iter().zip(y).all(|(u, v)| u.to_bits() == v.to_bits());
+    (a.mx, a.my) == (b.mx, b.my)
+        && [a.dx_mm, a.dy_mm, a.shift_mm].map(f64::to_bits) == [b.dx_mm, b.dy_mm, b.shift_mm].map(f64::to_bits)
+        && bits(&a.zz, &b.zz)
+        && bits(&a.xx, &b.xx)
+        && bits(&a.yy, &b.yy)
+        && bits(&a.xy, &b.xy)
+}
+
 impl Plans {
+    /// [`Plans::new`] of `k0` and `ks`, a copy of the kept plans where they were built of the
+    /// same kernels (the same numbers as built afresh), else built and kept.
+    pub(super) fn of(k0: &Kernel, ks: &Kernel) -> Result<Plans, ContactError> {
+        let kept = KEPT
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .iter()
+            .rev()
+            .find(|e| same_bits(&e.0, k0) && same_bits(&e.1, ks))
+            .cloned();
+        if let Some(e) = kept {
+            return Ok(e.2.clone());
+        }
+        let plans = Plans::new(k0, ks)?;
+        let mut kept = KEPT.lock().unwrap_or_else(|e| e.into_inner());
+        if kept.len() == KEPT_PLANS {
+            kept.remove(0);
+        }
+        kept.push(Arc::new((k0.clone(), ks.clone(), plans.clone())));
+        Ok(plans)
+    }
+
     /// The plans for the unshifted kernel `k0` and the shifted kernel `ks`.
-    pub(super) fn new(k0: &Kernel, ks: &Kernel) -> Result<Plans, ContactError> {
+    fn new(k0: &Kernel, ks: &Kernel) -> Result<Plans, ContactError> {
         #[cfg(target_arch = "x86_64")]
         let avx2 = is_x86_feature_detected!("avx2") && is_x86_feature_detected!("fma");
         #[cfg(not(target_arch = "x86_64"))]
