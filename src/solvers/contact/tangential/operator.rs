@@ -125,6 +125,11 @@ static KEPT: Mutex<Vec<Arc<(Kernel, Kernel, Plans)>>> = Mutex::new(Vec::new());
 /// How many plans [`KEPT`] holds (a few MB each on CONTACT's grids).
 const KEPT_PLANS: usize = 2;
 
+/// The largest grid whose plans are kept (elements): a kept plan is copied for each solver, so
+/// that a large grid's would hold its memory twice (a dozen arrays of four times the grid), where
+/// building it is a small part of the solve.
+const KEPT_MAX_ELEMENTS: usize = 1 << 16;
+
 /// Whether two kernels are the same bit for bit (equal inputs, equal plans).
 fn same_bits(a: &Kernel, b: &Kernel) -> bool {
     let bits = |x: &[f64], y: &[f64]| x.len() == y.len() && x.iter().zip(y).all(|(u, v)| u.to_bits() == v.to_bits());
@@ -140,6 +145,9 @@ impl Plans {
     /// [`Plans::new`] of `k0` and `ks`, a copy of the kept plans where they were built of the
     /// same kernels (the same numbers as built afresh), else built and kept.
     pub(super) fn of(k0: &Kernel, ks: &Kernel) -> Result<Plans, ContactError> {
+        if k0.mx * k0.my > KEPT_MAX_ELEMENTS {
+            return Plans::new(k0, ks);
+        }
         let kept = KEPT
             .lock()
             .unwrap_or_else(|e| e.into_inner())
