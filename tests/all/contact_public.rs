@@ -304,3 +304,79 @@ fn force_floor_applies_only_to_spence35s_net_tractions(results: &std::path::Path
         .collect();
     assert_eq!(floored, expected);
 }
+
+/// Copies `from` into `to` (files and folders).
+fn copy_tree(from: &std::path::Path, to: &std::path::Path) {
+    std::fs::create_dir_all(to).unwrap();
+    for e in std::fs::read_dir(from).unwrap().flatten() {
+        let target = to.join(e.file_name());
+        if e.file_type().unwrap().is_dir() {
+            copy_tree(&e.path(), &target);
+        } else {
+            std::fs::copy(e.path(), target).unwrap();
+        }
+    }
+}
+
+/// A deck may print only some of its cases (its O digit 0 for the others: CONTACT's
+/// `perfc_test/carter2d_100` prints 2 of 1000): the rows of the printed ones are compared, the
+/// others left out; a range with none printed is a drift naming it.
+#[test]
+fn only_the_printed_cases_of_a_deck_are_compared() {
+    let dir = tempdir("contact_public_printed");
+    let reference = dir.join("reference");
+    copy_tree(&root().join("reference"), &reference);
+    // Named as the shipped suite, its golden data alone.
+    let suite = dir.join("contact_public");
+    let golden = dir.join("golden");
+    copy_tree(&root().join("golden/veldep_fric_1"), &golden.join("veldep_fric_1"));
+    std::fs::create_dir_all(&suite).unwrap();
+    for f in ["veldep_fric_1.toml", "veldep_fric_1_h.csv", "veldep_fric_1_table.csv"] {
+        std::fs::copy(root().join("scenes/contact_public").join(f), suite.join(f)).unwrap();
+    }
+    let out = reference.join("contact_public/examples/veldep_fric.ref_out");
+    let text = std::fs::read_to_string(&out).unwrap();
+    // The printed output without the blocks of the cases in `drop` (each from its "Case" line).
+    let without = |drop: &[usize]| -> String {
+        let mut kept = String::new();
+        let mut skipping = false;
+        for line in text.split_inclusive('\n') {
+            if let Some(n) = line.trim().strip_prefix("Case ").and_then(|n| n.trim().parse::<usize>().ok()) {
+                skipping = drop.contains(&n);
+            }
+            if !skipping {
+                kept.push_str(line);
+            }
+        }
+        kept
+    };
+    let check = |drop: &[usize]| {
+        std::fs::write(&out, without(drop)).unwrap();
+        let (ok, printed) = creepbench(&["manifest", reference.to_str().unwrap()]);
+        assert!(ok, "{printed}");
+        let json = dir.join("check.json");
+        let args =
+            ["check", "--suite", suite.to_str().unwrap(), "--reference", reference.to_str().unwrap(), "--golden"];
+        let args = [&args[..], &[golden.to_str().unwrap()]].concat();
+        let (ok, printed) = creepbench(&[&args[..], &["--quiet", "--json", json.to_str().unwrap()]].concat());
+        let findings: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+        let steps: Vec<u64> = findings["findings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|f| f["against"] == "CONTACT public")
+            .filter_map(|f| f["step"].as_u64())
+            .collect();
+        (ok, printed, steps)
+    };
+    // Both printed: case 2's row (step 1) is compared too.
+    let (ok, printed, steps) = check(&[]);
+    assert!(ok && steps.contains(&1), "{printed} {steps:?}");
+    // Case 2 not printed: case 1 alone is compared (its row is the steady start, step 0).
+    let (ok, printed, steps) = check(&[2]);
+    assert!(ok, "{printed}");
+    assert!(!steps.is_empty() && steps.iter().all(|&s| s == 0), "steps compared: {steps:?}");
+    // Neither printed: a drift that says so.
+    let (ok, printed, _) = check(&[1, 2]);
+    assert!(!ok && printed.contains("cases 1 to 2 of veldep_fric.inp (0 printed)"), "{printed}");
+}

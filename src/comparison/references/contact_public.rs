@@ -182,25 +182,27 @@ impl PublicCases {
         self.survey = self.inputs.iter().map(|(deck, inp)| (deck.clone(), survey(inp))).collect();
     }
 
-    /// Every comparison of a stored history with the printed cases of its origin (`None`: the
-    /// scene has no origin or its rows are not one printed case each, with why).
+    /// Every comparison of a stored history with the printed cases of its origin: one row per
+    /// case of the origin's range, compared where CONTACT printed the case (a deck may print only
+    /// some, its O digit 0 for the others: `perfc_test/carter2d_100` prints 2 of its 1000). `Err`
+    /// with why where the rows are not one case each or no case of the range is printed.
     pub fn row_diffs(&self, scene: &StoredScene, h: &History) -> Result<Vec<RowDiff>, String> {
         let Some(origin) = &scene.scene.origin else { return Ok(Vec::new()) };
         let [first, last] = origin.cases;
-        let cases: Option<Vec<&Totals>> = (first..=last).map(|c| self.totals(&origin.file, c)).collect();
+        let cases: Vec<Option<&Totals>> = (first..=last).map(|c| self.totals(&origin.file, c)).collect();
         // A transient history after a steady case starts from it: its step 0 is case `first`
         // (the importer writes one row per case, so it holds one row more than its steps ≥ 1).
         let stepped = h.rows.iter().filter(|r| r.sample.step >= 1).count();
-        let steady_start = cases.as_ref().is_some_and(|c| c.len() == stepped + 1)
-            && h.rows.first().is_some_and(|r| r.sample.step == 0);
+        let steady_start = cases.len() == stepped + 1 && h.rows.first().is_some_and(|r| r.sample.step == 0);
         let rows: Vec<_> = h.rows.iter().filter(|r| steady_start || r.sample.step >= 1).collect();
-        let Some(cases) = cases.filter(|c| c.len() == rows.len()) else {
+        if cases.len() != rows.len() || cases.iter().all(Option::is_none) {
+            let printed = cases.iter().flatten().count();
             return Err(format!(
-                "{} rows, cases {first} to {last} of {}: not one printed case per row",
+                "{} rows, cases {first} to {last} of {} ({printed} printed): not one case per row, or none printed",
                 rows.len(),
                 origin.file
             ));
-        };
+        }
         let mz: Option<BTreeMap<usize, f64>> =
             h.column(MZ).map(|v| h.rows.iter().map(|r| r.sample.step).zip(v).collect());
         let temperature: Option<BTreeMap<usize, f64>> = h.column(TEMP1).zip(h.column(TEMP2)).map(|(one, two)| {
@@ -212,6 +214,7 @@ impl PublicCases {
         let by_approach: Vec<usize> = loading.iter().filter(|s| s.pen_mm.is_some()).map(|s| s.step).collect();
         let mut out = Vec::new();
         for (k, (r, t)) in rows.iter().zip(&cases).enumerate() {
+            let Some(t) = t else { continue };
             let (step, case) = (r.sample.step, first + k);
             let d = |(quantity, printed), ours| RowDiff { step, case, quantity, ours, printed };
             let (sc, mu) = (&scene.scene, r.sample.mu);
