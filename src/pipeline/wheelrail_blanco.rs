@@ -10,7 +10,9 @@
 //!
 //! The solver's frame has CONTACT's x mirrored and its tangential tractions negated (those on the
 //! other body, `wheelrail_exact`): a lateral traction and displacement change sign against the
-//! normal ones, which turns the coupling's sign, the turn by −α ([`SOLVER_TURN`]).
+//! normal ones, which turns the coupling's sign, the turn by −α ([`SOLVER_TURN`]). In every
+//! variant: the half-space's kernel is the same in both frames, and each term of a corrected block
+//! that couples n with x or s carries the turn's sine (odd in α), the others its cosine.
 
 use crate::physics::halfspace::blanco::BlancoProduct;
 use crate::physics::halfspace::influence::Kernel;
@@ -44,9 +46,15 @@ pub struct BlancoCache {
 const KEPT: usize = 8;
 
 impl BlancoCache {
-    /// The products of `grid` (material `m`, rolling by dq = dx) with the rows inclined by
-    /// `rows_rad` (the solver's frame), taken out of the cache ([`BlancoCache::put`] returns them).
-    pub fn take(&mut self, grid: &Grid, m: &Material, rows_rad: &[f64]) -> Result<BlancoTangential, ContactError> {
+    /// The products of `variant` on `grid` (material `m`, rolling by dq = dx) with the rows
+    /// inclined by `rows_rad` (the solver's frame), taken out of the cache ([`BlancoCache::put`]
+    /// returns them).
+    pub fn take(
+        &mut self,
+        grid: &Grid,
+        m: &Material,
+        (rows_rad, variant): (&[f64], u8),
+    ) -> Result<BlancoTangential, ContactError> {
         let key = (grid.mx, grid.my);
         let mut b = match self.kept.iter().position(|(k, _)| *k == key) {
             Some(k) => self.kept.remove(k).1,
@@ -54,8 +62,8 @@ impl BlancoCache {
                 let kernel = |shift| Kernel::new(grid.mx, grid.my, grid.dx_mm, grid.dy_mm, m.g_mpa, m.poisson, shift);
                 let (k0, ks) = (kernel(0.0)?, kernel(grid.dx_mm)?);
                 BlancoTangential {
-                    steady: BlancoProduct::new(&k0.difference(&ks)?, rows_rad)?,
-                    plain: BlancoProduct::new(&k0, rows_rad)?,
+                    steady: BlancoProduct::new(&k0.difference(&ks)?, rows_rad, variant)?,
+                    plain: BlancoProduct::new(&k0, rows_rad, variant)?,
                 }
             }
         };

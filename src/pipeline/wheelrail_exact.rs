@@ -162,7 +162,7 @@ pub fn patch_forces(
         solver.transient_step(&params, &px0, &py0, None)?
     } else {
         let mut blanco = match blanco_rows(p, case)? {
-            Some(rows) => Some(cache.blanco.take(&grid, &case.material, &rows)?),
+            Some((rows, variant)) => Some(cache.blanco.take(&grid, &case.material, (&rows, variant))?),
             None => None,
         };
         let (_, solver, last) = cache.get(&grid, &case.material, (&x, &y))?;
@@ -225,11 +225,12 @@ pub fn patch_forces(
 }
 
 /// The rows' inclinations of a conformal patch in the solver's frame where the case takes
-/// Blanco's correction (CONTACT's times [`SOLVER_TURN`]); `None`: the half-space's coefficients.
-fn blanco_rows(p: &NormalPatch, case: &WheelRailCase) -> Result<Option<Vec<f64>>, ContactError> {
+/// Blanco's correction (CONTACT's times [`SOLVER_TURN`]) with its variant; `None`: the
+/// half-space's coefficients.
+fn blanco_rows(p: &NormalPatch, case: &WheelRailCase) -> Result<Option<(Vec<f64>, u8)>, ContactError> {
     let (Some(b), Some(c)) = (case.material.blanco, &p.geometry.curved) else { return Ok(None) };
     let rows = crate::wheelrail::conformal_grid::blanco_rows(&p.geometry.grid, c, b)?;
-    Ok(Some(rows.into_iter().map(|a| SOLVER_TURN * a).collect()))
+    Ok(Some((rows.into_iter().map(|a| SOLVER_TURN * a).collect(), b.variant)))
 }
 
 /// Coulomb's μ of a patch: one value, or one per grid row (a conformal patch with V = 1).

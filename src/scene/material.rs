@@ -63,9 +63,9 @@ pub const BLANCO_KEYS: Keys = Keys {
         key(
             "blanco_variant",
             "–",
-            Allowed::Whole(3, 3, "CONTACT's VARIANT 3; its variants 1, 2 and 4 are not computed"),
+            Allowed::Whole(1, 4, "CONTACT's VARIANT 1 to 4"),
             Absent::Text("– (the half-space's coefficients)"),
-            r#"Blanco-Lorenzo's correction of the influence coefficients for conformal contact (CONTACT's C3 = 4 with its VARIANT): the half-space at the loaded element J, its displacement turned about x by the inclination difference α_J − α_I of the two rows into the displaced element's frame, which couples the normal and tangential problems (the exact solver iterates them, as CONTACT's Panagiotopoulos process); a wheel–rail scene with `approach = "conformal"` and one material only, the rows' inclinations its curved reference's: `blanco_variant = 3`"#,
+            r#"Blanco-Lorenzo's correction of the influence coefficients for conformal contact (CONTACT's C3 = 4 with its VARIANT): the half-space's coefficients of the loaded element J turned about x by the inclination difference α = α_J − α_I of the two rows, 1 the traction turned (`B = A R(α)`, Blanco's formulas), 2 the same with the longitudinal displacement of a pressure kept (`B_xn = A_xn`), 3 the displacement turned into the displaced element's frame (`B = R(α) A`, the half-space at J), 4 both turned by half the angle (`B = R(α/2) A R(α/2)`), which couples the normal and tangential problems (the exact solver iterates them, as CONTACT's Panagiotopoulos process); a wheel–rail scene with `approach = "conformal"` and one material only, the rows' inclinations its curved reference's: `blanco_variant = 3`"#,
         ),
         key(
             "blanco_inclination",

@@ -348,12 +348,12 @@ const BLANCO_PASSES: usize = 200;
 const KEPT_SOLVERS: usize = 8;
 
 impl BlancoNormal {
-    /// The product of grid `g`'s kernel with its rows inclined by `rows`.
+    /// The product of `variant` on grid `g`'s kernel with its rows inclined by `rows`.
     fn product(
         &mut self,
         g: &patch::PatchGrid,
         m: &Material,
-        rows: &[f64],
+        (rows, variant): (&[f64], u8),
     ) -> Result<&mut BlancoProduct, ContactError> {
         let key = (g.mx, g.ms);
         let k = match self.products.iter().position(|(k, _)| *k == key) {
@@ -363,7 +363,7 @@ impl BlancoNormal {
                 if self.products.len() == KEPT_SOLVERS {
                     self.products.remove(0);
                 }
-                self.products.push((key, BlancoProduct::new(&kernel, rows)?));
+                self.products.push((key, BlancoProduct::new(&kernel, rows, variant)?));
                 self.products.len() - 1
             }
         };
@@ -625,7 +625,7 @@ fn solve_normal(
     tol: f64,
 ) -> Result<(f64, Vec<f64>), ContactError> {
     let blanco = match (m.blanco, &g.curved) {
-        (Some(b), Some(c)) => Some(conformal_grid::blanco_rows(&g.grid, c, b)?),
+        (Some(b), Some(c)) => Some((conformal_grid::blanco_rows(&g.grid, c, b)?, b.variant)),
         _ => None,
     };
     // Blanco's correction: the distance with the tangential tractions' normal displacement.
@@ -643,10 +643,10 @@ fn solve_normal(
         (Some(_), Some(pn)) => pn.to_vec(),
         _ => solver.solve_approach_from(h_mm, 0.0, &params, start)?.pn_mpa,
     };
-    if let Some(rows) = &blanco {
+    if let Some((rows, variant)) = &blanco {
         // The products held apart from the solvers while both are in use.
         let mut kept = std::mem::take(&mut solvers.blanco);
-        let pn = kept.product(&g.grid, m, rows).and_then(|product| {
+        let pn = kept.product(&g.grid, m, (rows, *variant)).and_then(|product| {
             let (solver, _) = solvers.get(&g.grid, m)?;
             blanco_pressure(solver, product, h_mm, &params, pn_mpa)
         });

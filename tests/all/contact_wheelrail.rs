@@ -198,7 +198,7 @@ fn the_right_wheel_prints_its_lateral_values_as_computed() {
 }
 
 /// Per deck: its module-1 case numbers are those of its `.ref_out`.
-const DECKS: [&str; 11] = [
+const DECKS: [&str; 14] = [
     "examples/mbench_a22_kpec",
     "examples/mbench_a22_left",
     "examples/mbench_a22_right",
@@ -210,6 +210,9 @@ const DECKS: [&str; 11] = [
     "testbank/examples_conformal/mbench_conf",
     "testbank/examples_conformal/test-rollers2",
     "testbank/examples_conformal/test-rollers3",
+    "testbank/generated_blanco_variants/groove_li_var1",
+    "testbank/generated_blanco_variants/groove_li_var2",
+    "testbank/generated_blanco_variants/groove_li_var4",
 ];
 
 #[test]

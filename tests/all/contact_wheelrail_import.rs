@@ -653,21 +653,27 @@ fn a_roller_rig_imports_and_exports_back() {
     assert!(text.contains("  0.25   0.0   0.0   0.0   0.0   -0.75      VPITCH_ROL, VY, VZ"), "{text}");
 }
 
-/// Blanco's conformal correction (`[material] blanco_variant = 3`) exported as CONTACT's C3 = 4
+/// Blanco's conformal correction (`[material] blanco_variant`) exported as CONTACT's C3 = 4
 /// with IF_METH, VARIANT before POISS (and MAXOUT for its Panagiotopoulos process), imported back
-/// as the same scene: groove_li case 5 as shipped.
+/// as the same scene: groove_li case 5 as shipped (VARIANT 3) and in the variants 1, 2, 4 of the
+/// decks generated with CONTACT.
 #[test]
 fn blancos_correction_is_exported_as_c3_4_and_imported_back() {
-    let dir = common::tempdir("m1_round_trip_blanco");
-    let scene = root().join("scenes/wheelrail/groove_li_5.toml");
-    let (original, back) = round_trip(&scene, &dir);
-    assert!(original.material.blanco.is_some());
-    assert_eq!(values(&back).material, values(&original).material);
-    let deck = std::fs::read_to_string(dir.join("deck/groove_li_5.inp")).unwrap();
-    let digits = deck.lines().find(|l| l.contains("V-L-D-C-M-Z-E")).unwrap();
-    assert_eq!(&digits.trim()[3..4], "4", "{digits}");
-    assert!(
-        deck.lines().any(|l| l.split_whitespace().take(2).collect::<Vec<_>>() == ["1", "3"] && l.contains("IF_METH")),
-        "{deck}"
-    );
+    for (name, variant) in
+        [("groove_li_5", "3"), ("groove_li_var1_5", "1"), ("groove_li_var2_5", "2"), ("groove_li_var4_5", "4")]
+    {
+        let dir = common::tempdir(&format!("m1_round_trip_blanco_{name}"));
+        let scene = root().join(format!("scenes/wheelrail/{name}.toml"));
+        let (original, back) = round_trip(&scene, &dir);
+        assert_eq!(original.material.blanco.map(|b| b.variant.to_string()).as_deref(), Some(variant), "{name}");
+        assert_eq!(values(&back).material, values(&original).material, "{name}");
+        let deck = std::fs::read_to_string(dir.join(format!("deck/{name}.inp"))).unwrap();
+        let digits = deck.lines().find(|l| l.contains("V-L-D-C-M-Z-E")).unwrap();
+        assert_eq!(&digits.trim()[3..4], "4", "{digits}");
+        assert!(
+            deck.lines()
+                .any(|l| l.split_whitespace().take(2).collect::<Vec<_>>() == ["1", variant] && l.contains("IF_METH")),
+            "{deck}"
+        );
+    }
 }

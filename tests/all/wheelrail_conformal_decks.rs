@@ -15,10 +15,20 @@ fn folder() -> PathBuf {
     root().join("reference/contact_wheelrail/testbank/examples_conformal")
 }
 
+/// The decks generated with CONTACT from groove_li in the VARIANTs 1, 2, 4 of Blanco's correction.
+fn variants_folder() -> PathBuf {
+    root().join("reference/contact_wheelrail/testbank/generated_blanco_variants")
+}
+
 /// `import contact DECK --supported-only`: exit code, the scenes written, the per-case verdicts.
 fn import(deck: &str) -> (Option<i32>, Vec<String>, String) {
+    import_from(&folder(), deck)
+}
+
+/// `import contact DIR/DECK.inp --supported-only`, as [`import`].
+fn import_from(dir: &std::path::Path, deck: &str) -> (Option<i32>, Vec<String>, String) {
     let out = common::tempdir(&format!("conformal_decks_{deck}"));
-    let path = folder().join(format!("{deck}.inp"));
+    let path = dir.join(format!("{deck}.inp"));
     let o = Command::new(env!("CARGO_BIN_EXE_creepbench"))
         .args(["import", "contact", path.to_str().unwrap(), "--out", out.to_str().unwrap(), "--supported-only"])
         .output()
@@ -114,16 +124,23 @@ fn the_rigid_slip_on_the_actual_surfaces_against_contact_either_way() {
 /// its bounds (case 4's FY(TR) 1.1667e-2 N against 1.147e-2).
 #[test]
 fn groove_li_free_rolling_in_a_deep_groove_against_contact() {
-    groove_li_against_contact(1..=4, &["fs_n", "fy_tr_n", "fy_ws_n"], 2.5e-4, false);
+    groove_li_against_contact(("groove_li", 1..=4), &["fs_n", "fy_tr_n", "fy_ws_n"], 2.5e-4, false);
 }
 
-/// groove_li's `cases` against its printed output: VPITCH, the approach, FN, the creepages and the
-/// element counts within CONTACT's printed digits; the `lateral` quantities (residues of a contact
-/// symmetric about y = 0) within `bound_n` of CONTACT's; `blanco`: the scenes use C3 = 4.
-fn groove_li_against_contact(cases: std::ops::RangeInclusive<u64>, lateral: &[&str], bound_n: f64, blanco: bool) {
-    let printed = read(&folder().join("groove_li.ref_out")).unwrap();
+/// The `cases` of a groove_li deck (`groove_li`, or a variant generated from it) against its printed
+/// output: VPITCH, the approach, FN, the creepages and the element counts within CONTACT's printed
+/// digits; the `lateral` quantities (residues of a contact symmetric about y = 0) within `bound_n`
+/// of CONTACT's; `blanco`: the scenes use C3 = 4.
+fn groove_li_against_contact(
+    (deck, cases): (&str, std::ops::RangeInclusive<u64>),
+    lateral: &[&str],
+    bound_n: f64,
+    blanco: bool,
+) {
+    let dir = if deck == "groove_li" { folder() } else { variants_folder() };
+    let printed = read(&dir.join(format!("{deck}.ref_out"))).unwrap();
     for case in cases {
-        let scene = format!("groove_li_{case}");
+        let scene = format!("{deck}_{case}");
         let scene = WheelRailScene::from_file(&root().join(format!("scenes/wheelrail/{scene}.toml"))).unwrap();
         assert_eq!(scene.material.blanco.is_some(), blanco, "case {case}");
         let run = run_scene(&scene).unwrap();
@@ -159,7 +176,42 @@ fn groove_li_against_contact(cases: std::ops::RangeInclusive<u64>, lateral: &[&s
 /// against 5.807e-3, FS 2.5436e-3 N against 2.484e-3; case 7's FS 235 half-units of its digit).
 #[test]
 fn groove_li_with_blancos_conformal_correction_against_contact() {
-    groove_li_against_contact(5..=8, &["fs_n", "fy_tr_n", "fy_ws_n", "mn_nmm"], 3.5e-4, true);
+    groove_li_against_contact(("groove_li", 5..=8), &["fs_n", "fy_tr_n", "fy_ws_n", "mn_nmm"], 3.5e-4, true);
+}
+
+/// groove_li with cases 5-8 in CONTACT's other VARIANTs of Blanco's correction (decks generated
+/// with CONTACT, reference/contact_wheelrail/testbank/generated_blanco_variants): every case
+/// imported, cases 5-8 with `blanco_variant` the deck's.
+#[test]
+fn groove_li_in_blancos_other_variants_imports_every_case() {
+    for variant in [1, 2, 4] {
+        let deck = format!("groove_li_var{variant}");
+        let (code, scenes, verdicts) = import_from(&variants_folder(), &deck);
+        assert_eq!(code, Some(0), "{verdicts}");
+        let expected: Vec<String> = (1..=8).map(|n| format!("{deck}_{n}")).collect();
+        assert_eq!(scenes, expected, "{verdicts}");
+        assert!(skipped(&verdicts).is_empty(), "{verdicts}");
+        let out = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("conformal_decks_{deck}"));
+        let blanco = std::fs::read_to_string(out.join(format!("{deck}_5.toml"))).unwrap();
+        let want = format!("blanco_variant = {variant}\nblanco_inclination = \"interpolated\"");
+        assert!(blanco.contains(&want), "{blanco}");
+    }
+}
+
+/// groove_li cases 5-8 in CONTACT's VARIANT 1 (Blanco's formulas: the traction turned, `B = A
+/// R(α)`), 2 (the same without the x-n term) and 4 (the split formula, `B = R(α/2) A R(α/2)`): each
+/// variant moves CONTACT's results (case 5 CKSI −3.254e-4, −2.758e-4, −2.991e-4 and NADH 970,
+/// 944, 952 against VARIANT 3's −2.744e-4, 928) and they are reproduced: VPITCH, the approach,
+/// FN, the creepages and the element counts within CONTACT's printed digits; the lateral forces,
+/// residues of a contact symmetric about y = 0, the declared gap as in VARIANT 3, within its bound of
+/// 3.5e-4 N (N·mm for MN): at worst 3.09e-4 (variant 1 case 8), 3.05e-4 (2, case 8), 2.71e-4
+/// (4, case 8); variant 1 case 7's FS −2.14e-4 N where CONTACT prints 0.000.
+#[test]
+fn groove_li_in_blancos_other_variants_against_contact() {
+    for variant in [1, 2, 4] {
+        let deck = format!("groove_li_var{variant}");
+        groove_li_against_contact((&deck, 5..=8), &["fs_n", "fy_tr_n", "fy_ws_n", "mn_nmm"], 3.5e-4, true);
+    }
 }
 
 #[test]

@@ -94,7 +94,7 @@ pub struct KnownGap {
 /// "Agreement with CONTACT": each bounded at its measured gap by `tolerances.toml`). The
 /// benchmark's right case 11 (and case 9 of the KPEC deck), a gap until the rail was placed by its
 /// spline's gauge point and the gap mesh started at its lowest point, is reproduced.
-pub const KNOWN_GAPS: [KnownGap; 55] = [
+pub const KNOWN_GAPS: [KnownGap; 67] = [
     KnownGap {
         deck: "mbench_a22_kpec.inp",
         case: 1,
@@ -154,6 +154,18 @@ pub const KNOWN_GAPS: [KnownGap; 55] = [
     KnownGap { deck: "groove_li.inp", case: 6, feature: GROOVE_BLANCO_RESIDUE },
     KnownGap { deck: "groove_li.inp", case: 7, feature: GROOVE_BLANCO_RESIDUE },
     KnownGap { deck: "groove_li.inp", case: 8, feature: GROOVE_BLANCO_RESIDUE },
+    KnownGap { deck: "groove_li_var1.inp", case: 5, feature: GROOVE_VARIANT_1_RESIDUE },
+    KnownGap { deck: "groove_li_var1.inp", case: 6, feature: GROOVE_VARIANT_1_RESIDUE },
+    KnownGap { deck: "groove_li_var1.inp", case: 7, feature: GROOVE_VARIANT_1_RESIDUE },
+    KnownGap { deck: "groove_li_var1.inp", case: 8, feature: GROOVE_VARIANT_1_RESIDUE },
+    KnownGap { deck: "groove_li_var2.inp", case: 5, feature: GROOVE_VARIANT_2_RESIDUE },
+    KnownGap { deck: "groove_li_var2.inp", case: 6, feature: GROOVE_VARIANT_2_RESIDUE },
+    KnownGap { deck: "groove_li_var2.inp", case: 7, feature: GROOVE_VARIANT_2_RESIDUE },
+    KnownGap { deck: "groove_li_var2.inp", case: 8, feature: GROOVE_VARIANT_2_RESIDUE },
+    KnownGap { deck: "groove_li_var4.inp", case: 5, feature: GROOVE_VARIANT_4_RESIDUE },
+    KnownGap { deck: "groove_li_var4.inp", case: 6, feature: GROOVE_VARIANT_4_RESIDUE },
+    KnownGap { deck: "groove_li_var4.inp", case: 7, feature: GROOVE_VARIANT_4_RESIDUE },
+    KnownGap { deck: "groove_li_var4.inp", case: 8, feature: GROOVE_VARIANT_4_RESIDUE },
     KnownGap { deck: "test-rollers2.inp", case: 7, feature: ROLLER_YAW_RESIDUE },
     KnownGap { deck: "test-rollers2.inp", case: 8, feature: ROLLER_YAW_RESIDUE },
     KnownGap { deck: "test-rollers2.inp", case: 9, feature: ROLLER_TILT_RESIDUE },
@@ -195,6 +207,13 @@ const MASSLESS_HEIGHT: &str = "a massless rail (F = 3) with the wheelset's heigh
 /// `groove_li` cases 5-8: cases 1-4 with Blanco's conformal correction (C3 = 4), the same
 /// symmetric contact's lateral residues.
 const GROOVE_BLANCO_RESIDUE: &str = "cases 1-4 of groove_li with CONTACT's conformal influence coefficients (Blanco's correction, C3 = 4, IF_METH = 1, VARIANT = 3; [material] blanco_variant): FN, the approach, VPITCH, the positions, creepages and counts CONTACT's (the correction moves them: case 5 NADH 928 against case 1's 862, CKSI -2.744e-4 against -2.809e-4, both reproduced); the lateral forces FS and FY, residues of 1e-10 to 6e-7 FN of a contact symmetric about y = 0, are not, as in cases 1-4: case 8 FY(TR) -5.7254e-3 N against -5.807e-3 (122.5 half-units), FS 2.5436e-3 against 2.484e-3 (119.2); case 7 FS -1.5963e-4 N against -1.714e-4 (235.4 half-units of its 5e-8 N digit; 1.2e-9 FN), FY 10.8; case 5 FS 43.7, FY 3.0; case 6 FY 1.7; cause not found (CONTACT's Panagiotopoulos process stops at 5 EPS, MAXOUT = 5)";
+
+/// `groove_li_var{1,2,4}` cases 5-8 (reference/contact_wheelrail/testbank/generated_blanco_variants:
+/// `groove_li` with cases 5-8 in CONTACT's VARIANT 1, 2, 4, printed by CONTACT here): the same
+/// symmetric contact's lateral residues in each variant.
+const GROOVE_VARIANT_1_RESIDUE: &str = "groove_li cases 5-8 in CONTACT's VARIANT 1 of the conformal influence coefficients (Blanco's formulas, the traction turned; C3 = 4, IF_METH = 1; [material] blanco_variant = 1; a deck generated with CONTACT): FN, the approach, VPITCH, the positions, creepages and counts CONTACT's within 0.95 half-units (the variant moves them: case 5 CKSI -3.254e-4, NADH 970 against VARIANT 3's -2.744e-4, 928, both reproduced); the lateral forces FS and FY, residues of at most 9e-9 FN of a contact symmetric about y = 0, are not, as in VARIANT 3: case 8 FY(TR) -2.0770e-2 N against -2.086e-2 (17.9 half-units), FS -1.2625e-2 against -1.269e-2 (13.0); case 7 FY 15.9 (-5.3e-6 N against 5.316e-6); case 6 FY 9.3 (-2e-11 N against -6.171e-6); case 5 FS 2.8; cause not found (CONTACT's Panagiotopoulos process stops at 5 EPS, MAXOUT = 5)";
+const GROOVE_VARIANT_2_RESIDUE: &str = "groove_li cases 5-8 in CONTACT's VARIANT 2 of the conformal influence coefficients (Blanco's formulas without the x-n correction; C3 = 4, IF_METH = 1; [material] blanco_variant = 2; a deck generated with CONTACT): FN, the approach, VPITCH, the positions, creepages and counts CONTACT's within 0.8 half-units (case 5 CKSI -2.758e-4, NADH 944); the lateral forces FS and FY, residues of at most 7e-9 FN of a contact symmetric about y = 0, are not, as in VARIANT 3: case 5 FS 4.6764e-4 N against 4.473e-4 (406.8 half-units of its 5e-8 N digit: 2e-9 FN), FY 30.2; case 8 FS -8.8821e-3 against -8.946e-3 (127.8), FY 17.9; case 7 FS 119.0, FY 19.5; case 6 FY 2.2; cause not found (CONTACT's Panagiotopoulos process stops at 5 EPS, MAXOUT = 5)";
+const GROOVE_VARIANT_4_RESIDUE: &str = "groove_li cases 5-8 in CONTACT's VARIANT 4 of the conformal influence coefficients (the split formula, both turned by half the angle; C3 = 4, IF_METH = 1; [material] blanco_variant = 4; a deck generated with CONTACT): FN, the approach, VPITCH, the positions, creepages and counts CONTACT's within 0.9 half-units (case 5 CKSI -2.991e-4, NADH 952); the lateral forces FS and FY, residues of at most 6e-9 FN of a contact symmetric about y = 0, are not, as in VARIANT 3: case 7 FS -2.3144e-4 N against -2.396e-4 (163.2 half-units), FY 16.0; case 8 FS -2.1792e-3 against -2.233e-3 (107.6), FY 14.0; case 6 FY 3.2; case 5 FS 5.5; cause not found (CONTACT's Panagiotopoulos process stops at 5 EPS, MAXOUT = 5)";
 
 /// `groove_li` cases 1-4: a circular wheel R = 10 mm centred in a groove of radius 10.25 to 10.02
 /// mm, free rolling (FX_WS = 0 prescribed): a contact symmetric about y = 0 whose lateral forces

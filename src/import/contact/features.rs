@@ -831,18 +831,18 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
     },
     WheelRailRow {
         feature: WheelRailFeature::ConformalInfluence,
-        name: "influence functions corrected for conformal contact (Blanco), variant 3 on the conformal approach",
+        name: "influence functions corrected for conformal contact (Blanco), variants 1-4 on the conformal approach",
         control: "C3, IF_METH, VARIANT",
         supported: true,
-        reason: "imported as [material] blanco_variant = 3 and blanco_inclination = \"interpolated\" (IF_METH = 1) or \"linear\" (IF_METH = 0): the half-space's coefficients turned by the curved reference's row inclinations (physics::halfspace::blanco, CONTACT's influe_blanco), the normal and tangential problems of each conformal patch iterated together (pipeline::wheelrail_blanco)",
+        reason: "imported as [material] blanco_variant = VARIANT (1-4) and blanco_inclination = \"interpolated\" (IF_METH = 1) or \"linear\" (IF_METH = 0): the half-space's coefficients turned by the curved reference's row inclinations as the variant says (1 the traction turned, 2 the same with B_xn kept, 3 the displacement turned, 4 both by half the angle; physics::halfspace::blanco, CONTACT's influe_blanco1), each variant's product by FFT, the normal and tangential problems of each conformal patch iterated together (pipeline::wheelrail_blanco)",
         used: |c| blanco_used(c, true),
     },
     WheelRailRow {
         feature: WheelRailFeature::ConformalInfluence,
-        name: "influence functions corrected for conformal contact (Blanco), other variants or planar patches",
+        name: "influence functions corrected for conformal contact (Blanco) on planar patches",
         control: "C3, IF_METH, VARIANT, D",
         supported: false,
-        reason: "supported: C3 = 4 with VARIANT 3 and IF_METH 0 or 1 on the conformal approach (D = 4); VARIANT 1, 2, 4 are not computed, and a planar patch (D = 2, 3, 5) has no row inclinations",
+        reason: "supported: C3 = 4 with VARIANT 1-4 and IF_METH 0 or 1 on the conformal approach (D = 4); a planar patch (D = 2, 3, 5) has no row inclinations (its rows are all in one tangent plane), and IF_METH or VARIANT outside CONTACT's ranges are refused by CONTACT itself",
         used: |c| blanco_used(c, false),
     },
     WheelRailRow {
@@ -1043,12 +1043,12 @@ pub fn assess_wheelrail(case: &WheelRailCase) -> Vec<FeatureUse> {
         .collect()
 }
 
-/// C3 = 4 in force: with `supported`, the combination imported (VARIANT 3, IF_METH 0 or 1, D = 4),
+/// C3 = 4 in force: with `supported`, the combination imported (VARIANT 1-4, IF_METH 0 or 1, D = 4),
 /// else any other.
 fn blanco_used(c: &WheelRailCase, supported: bool) -> Option<String> {
     let m = c.state.material.as_ref().filter(|m| m.influence == 4)?;
     let d = c.state.discretisation.as_ref().map_or(0, |d| d.method);
     let [meth, var] = m.if_correction.unwrap_or([-1, -1]);
-    let ok = d == 4 && (0..=1).contains(&meth) && var == 3;
+    let ok = d == 4 && (0..=1).contains(&meth) && (1..=4).contains(&var);
     (ok == supported).then(|| format!("C3 (in force) = 4, IF_METH = {meth}, VARIANT = {var}, D = {d}"))
 }

@@ -114,11 +114,11 @@ pub const SCENE_LIMITS: &[SceneLimit] = &[
         name: "influence functions other than the half-space's with piecewise constant tractions",
         control: "C3",
         accepted: false,
-        reason: "supported: C3 = 2 (piecewise constant) or 0, 1 keeping it, and C3 = 4 (Blanco-Lorenzo's conformal correction, imported as [material] blanco_variant = 3, blanco_inclination = \"interpolated\" or \"linear\") with VARIANT 3 and IF_METH 0 or 1 on the conformal approach (D = 4); not the bilinear functions (3), nor VARIANT 1, 2, 4 (not computed), nor C3 = 4 on a planar patch (its rows have no inclinations)",
+        reason: "supported: C3 = 2 (piecewise constant) or 0, 1 keeping it, and C3 = 4 (Blanco-Lorenzo's conformal correction, imported as [material] blanco_variant = VARIANT, blanco_inclination = \"interpolated\" or \"linear\") with VARIANT 1 to 4 and IF_METH 0 or 1 on the conformal approach (D = 4); not the bilinear functions (3), nor C3 = 4 on a planar patch (its rows have no inclinations)",
         used: |c| {
             let m = c.state.material.as_ref()?;
             let conformal = c.state.discretisation.as_ref().is_some_and(|d| d.method == 4);
-            let blanco = m.influence == 4 && conformal && m.if_correction.is_some_and(|[meth, var]| (0..=1).contains(&meth) && var == 3);
+            let blanco = m.influence == 4 && conformal && m.if_correction.is_some_and(|[meth, var]| (0..=1).contains(&meth) && (1..=4).contains(&var));
             let [meth, var] = m.if_correction.unwrap_or([-1, -1]);
             match m.influence {
                 2 => None,

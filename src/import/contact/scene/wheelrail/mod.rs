@@ -562,13 +562,15 @@ fn row(c: &WheelRailCase) -> Result<(VerticalSpec, LongitudinalSpec, CaseRow), S
     Ok((vertical, longitudinal, row))
 }
 
-/// C3 = 4 with IF_METH 0 or 1 and VARIANT 3: Blanco-Lorenzo's conformal correction (`[material]
-/// blanco_variant`, `blanco_inclination`); other combinations are refused by the scene limits.
+/// C3 = 4 with IF_METH 0 or 1 and VARIANT 1 to 4: Blanco-Lorenzo's conformal correction
+/// (`[material] blanco_variant`, `blanco_inclination`); other combinations are refused by the
+/// scene limits.
 fn blanco_of(
     m: &crate::import::contact::wheelrail_deck::Material,
 ) -> Option<crate::physics::halfspace::blanco::Blanco> {
-    use crate::physics::halfspace::blanco::{Blanco, Inclination, VARIANT};
+    use crate::physics::halfspace::blanco::{Blanco, Inclination, VARIANTS};
     let [if_meth, variant] = m.if_correction.filter(|_| m.influence == 4)?;
     let inclination = if if_meth == 0 { Inclination::Linear } else { Inclination::Interpolated };
-    (variant == i64::from(VARIANT)).then_some(Blanco { inclination, variant: VARIANT })
+    let variant = VARIANTS.into_iter().find(|v| i64::from(*v) == variant)?;
+    Some(Blanco { inclination, variant })
 }
