@@ -18,14 +18,14 @@ use super::ContactError;
 /// an outer change cannot go below.
 pub const OUTER_FACTOR: f64 = 5.0;
 
-/// The tolerance of an outer iteration's tangential solve: 1e-2 × the smallest relative change
-/// of the iterates so far (at most [`FIRST_INNER_TOLERANCE`], that the first solve takes), never
-/// below `tol`, as the falling-friction fixed point's adaptive solves: the early iterates are
-/// far from the fixed point by more than a tight solve's error; the iteration ends only on a
-/// solve at `tol`, so that its fixed point and stop are those of solves at `tol` throughout.
+/// The tolerance of an outer iteration's tangential solve: the falling-friction fixed point's
+/// adaptive rule ([`super::veldep::adaptive_tolerance`]: 1e-2 × the smallest relative change of
+/// the iterates so far, never below `tol`) at most [`FIRST_INNER_TOLERANCE`], that the first
+/// solve takes: the early iterates are far from the fixed point by more than a tight solve's
+/// error; the iteration ends only on a solve at `tol`, so that its fixed point and stop are those
+/// of solves at `tol` throughout.
 pub fn inner_tolerance(tol: f64, relative_change: Option<f64>) -> f64 {
-    let loose = relative_change.map_or(FIRST_INNER_TOLERANCE, |c| (1e-2 * c).min(FIRST_INNER_TOLERANCE));
-    loose.max(tol)
+    super::veldep::adaptive_tolerance(tol, relative_change, FIRST_INNER_TOLERANCE)
 }
 
 /// The tolerance of an outer iteration's first tangential solve.

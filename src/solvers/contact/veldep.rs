@@ -51,7 +51,13 @@ const INNER_LOOSEST: f64 = 1e-2;
 /// The tangential tolerance of the next solve after a relative change `change` (None: the
 /// first): `INNER_PER_CHANGE · change` within [`solve`, `INNER_LOOSEST`], `solve` the final one's.
 pub(super) fn inner_tolerance(solve: f64, change: Option<f64>) -> f64 {
-    let loose = change.map_or(INNER_LOOSEST, |c| (INNER_PER_CHANGE * c).min(INNER_LOOSEST));
+    adaptive_tolerance(solve, change, INNER_LOOSEST)
+}
+
+/// The rule of [`inner_tolerance`] with the loosest tolerance `loosest` (the coupled K ≠ 0
+/// iteration's is tighter): `INNER_PER_CHANGE · change` within [`solve`, `loosest`].
+pub(super) fn adaptive_tolerance(solve: f64, change: Option<f64>, loosest: f64) -> f64 {
+    let loose = change.map_or(loosest, |c| (INNER_PER_CHANGE * c).min(loosest));
     loose.max(solve)
 }
 
