@@ -23,8 +23,8 @@
 use crate::error::InputError;
 use crate::safety::relative::relative;
 use crate::scene::wheelrail::{
-    Approach, CaseRow, LongitudinalSpec, MotionSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec,
-    WheelDeviationSpec, WheelRailScene,
+    Approach, CaseRow, ContactSearch, LongitudinalSpec, MotionSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec,
+    VerticalSpec, WheelDeviationSpec, WheelRailScene,
 };
 use crate::scene::{ContactSolverOptions, MaterialSpec, VeldepSolves};
 use crate::wheelrail::profile::options::SCALE_MIN;
@@ -173,12 +173,13 @@ fn control_words(s: &WheelRailScene, first: bool, out: &mut String) {
     // Friction of the temperature (L = 6) read by the first case, kept after it (L = 1); the
     // surface temperatures read (H = 3) by the first case, computed again (H = 1) by the later ones.
     let law = if first && temperature_law(s) { "6" } else { &ldcmze[..1] };
-    // The grid search (`contact_search = "grid"`) is D = 5, the conformal approach D = 4, read by
-    // the first case, kept after it.
-    let d = match (first, s.grid_search, s.approach) {
-        (true, true, _) => "5",
-        (true, false, Approach::Conformal) => "4",
-        (true, false, Approach::PlanarSurfaceSlip) => "3",
+    // The grid search (`contact_search = "grid"`) is D = 5 (`"grid_steep"` 6), the conformal
+    // approach D = 4, read by the first case, kept after it.
+    let d = match (first, s.search, s.approach) {
+        (true, ContactSearch::Grid, _) => "5",
+        (true, ContactSearch::GridSteep, _) => "6",
+        (true, ContactSearch::Locus, Approach::Conformal) => "4",
+        (true, ContactSearch::Locus, Approach::PlanarSurfaceSlip) => "3",
         _ => &ldcmze[1..2],
     };
     // Blanco's conformal correction: C3 = 4, read with the first case's material (IF_METH,

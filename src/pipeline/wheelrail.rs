@@ -339,7 +339,7 @@ fn refuse_on_surfaces(case: &WheelRailCase, models: &[String], mu: &Friction) ->
         (case.material.coupled(), "material", "one material for both bodies"),
         (case.heat.is_some(), "material", "no surface temperatures"),
         (case.tangential != Default::default(), "friction / contact_solver", "Coulomb's law, the solver's defaults"),
-        (case.grid_search, "wheelrail.contact_search", "the contact locus (\"locus\")"),
+        (case.search.is_grid(), "wheelrail.contact_search", "the contact locus (\"locus\")"),
         (
             case.rail_slices.is_some() || case.wheel_slices.is_some(),
             "rail / wheel profile",

@@ -272,7 +272,7 @@ pub fn case_of<'a>(
             turn_mm: s.d_turn_mm,
         },
         wheel_surface: if s.wheel_mesh { WheelSurface::ContactMesh } else { WheelSurface::Exact },
-        grid_search: s.grid_search,
+        search: s.search,
         approach: s.approach,
         material,
         heat: s.material.heat,

@@ -178,6 +178,27 @@ pub enum Approach {
     Conformal,
 }
 
+/// How the interpenetration regions are found (`[wheelrail] contact_search`, CONTACT's D = 2
+/// against 5 and 6).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ContactSearch {
+    /// Along the wheel's contact locus (D = 2, 3, 4).
+    #[default]
+    Locus,
+    /// CONTACT's brute-force grid search (D = 5, `locate_interpen_2d`).
+    Grid,
+    /// The grid search on a finer lateral mesh and a wider arc of the wheel, for steep slopes such
+    /// as guard-rail contact (D = 6, `use_steep_slopes`: `fac_dyds` 0.2, the wheel's arc ±14°).
+    GridSteep,
+}
+
+impl ContactSearch {
+    /// Whether the regions come from the grid search (D = 5 or 6).
+    pub fn is_grid(self) -> bool {
+        self != Self::Locus
+    }
+}
+
 /// How the wheel moves in every case (`[wheelrail] motion`).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum MotionSpec {
@@ -282,9 +303,8 @@ pub struct WheelRailScene {
     /// The wheel surface of the undeformed distance (`wheel_surface`): `false` the exact one,
     /// `true` CONTACT's mesh of it (`"contact_mesh"`).
     pub wheel_mesh: bool,
-    /// The brute-force grid search instead of the contact locus (`contact_search = "grid"`,
-    /// CONTACT's D = 5).
-    pub grid_search: bool,
+    /// The contact locus or the brute-force grid search (`contact_search`, CONTACT's D = 5, 6).
+    pub search: ContactSearch,
     /// The contact approach (`approach`, CONTACT's D = 2, 3 or 4).
     pub approach: Approach,
     /// Steady rolling, or a shift from rest (`motion`, `s_mm`; CONTACT's T = 3 or 1 with P = 2).
@@ -554,7 +574,7 @@ impl WheelRailScene {
             d_comb_mm,
             d_turn_mm,
             wheel_mesh,
-            grid_search,
+            search,
             approach,
             frictionless,
             motion,
@@ -618,7 +638,7 @@ impl WheelRailScene {
         let given_s = doc.get("wheelrail").and_then(|w| w.get("s_mm")).is_some();
         super::wheelrail_cases::check_positions(&cases, motion, (given_s, rail_is_slices(doc)), mu_variation.as_ref())?;
         match rail.roller {
-            Some(_) => check_roller(&cases, (motion, longitudinal), (grid_search, approach), rail_is_slices(doc))?,
+            Some(_) => check_roller(&cases, (motion, longitudinal), (search, approach), rail_is_slices(doc))?,
             None => check_speeds(&cases)?,
         }
         let origin = super::origin::read(&mut top)?;
@@ -652,7 +672,7 @@ impl WheelRailScene {
             d_comb_mm,
             d_turn_mm,
             wheel_mesh,
-            grid_search,
+            search,
             approach,
             motion,
             s_ws_mm,
@@ -746,7 +766,7 @@ fn check_blanco(
 fn check_roller(
     cases: &[CaseRow],
     (motion, longitudinal): (MotionSpec, LongitudinalSpec),
-    (grid_search, approach): (bool, Approach),
+    (search, approach): (ContactSearch, Approach),
     slices: bool,
 ) -> Result<(), InputError> {
     let (field, value, allowed) = if motion != MotionSpec::Rolling {
@@ -761,10 +781,10 @@ fn check_roller(
             "\"force\"".into(),
             "\"velocity\" on a roller rig (FX_WS prescribed on a roller is not supported)",
         )
-    } else if approach == Approach::Conformal || (grid_search && approach != Approach::Planar) {
+    } else if approach == Approach::Conformal || (search.is_grid() && approach != Approach::Planar) {
         (
             "wheelrail.approach",
-            format!("{approach:?}, grid search {grid_search}"),
+            format!("{approach:?}, contact search {search:?}"),
             "the planar approach (\"planar\" or \"planar_surface_slip\") on the contact locus, or \"planar\" with the grid search, on a roller rig",
         )
     } else if slices {

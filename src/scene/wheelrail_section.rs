@@ -4,7 +4,7 @@
 
 use super::keys::{key, Absent, Allowed, Keys};
 use super::reader::{Range, Section};
-use super::wheelrail::{Approach, MotionSpec, MuBy, MuVariation, SideSpec};
+use super::wheelrail::{Approach, ContactSearch, MotionSpec, MuBy, MuVariation, SideSpec};
 use super::wheelrail_cases::LENGTH;
 use crate::error::InputError;
 
@@ -176,9 +176,9 @@ pub const KEYS: Keys = Keys {
         key(
             "contact_search",
             "–",
-            Allowed::Choice(&["locus", "grid"], ""),
+            Allowed::Choice(&["locus", "grid", "grid_steep"], ""),
             Absent::Choice("locus"),
-            r#"how the interpenetration regions are found: on the contact locus (CONTACT's D = 2: the gap along the wheel's locus over a lateral mesh of step 0.3 `ds_mm`) or by CONTACT's brute-force grid search (D = 5, `m_wr_locatecp`: `compute_round_whl`, `compute_wr_surfc`, `locate_interpen_2d`; the wheel revolved over x in ±R/8 (±0.242 R below R = 30.5 mm) in slices about 1.5 `dx_mm` apart, on a roller rig the roller revolved about its axis, a gap mesh of step 0.75 `ds_mm` across, the local minima of the gap grown to their bounding boxes; what an out-of-round wheel always takes): `contact_search = "grid"`"#,
+            r#"how the interpenetration regions are found: on the contact locus (CONTACT's D = 2: the gap along the wheel's locus over a lateral mesh of step 0.3 `ds_mm`) or by CONTACT's brute-force grid search (D = 5, `m_wr_locatecp`: `compute_round_whl`, `compute_wr_surfc`, `locate_interpen_2d`; the wheel revolved over x in ±R/8 (±0.242 R below R = 30.5 mm) in slices about 1.5 `dx_mm` apart, on a roller rig the roller revolved about its axis, a gap mesh of step 0.75 `ds_mm` across, the local minima of the gap grown to their bounding boxes; what an out-of-round wheel always takes), or that search made for steep slopes such as a guard rail's (`"grid_steep"`, D = 6, `use_steep_slopes`: the gap mesh's step 0.3 `ds_mm` across, a round wheel revolved over ±0.242 R): `contact_search = "grid"`"#,
         ),
     ],
 };
@@ -195,8 +195,8 @@ pub struct WheelRailSection {
     pub d_comb_mm: f64,
     pub d_turn_mm: f64,
     pub wheel_mesh: bool,
-    /// The brute-force grid search (`contact_search = "grid"`, CONTACT's D = 5).
-    pub grid_search: bool,
+    /// The contact locus or the grid search (`contact_search`, CONTACT's D = 5, 6).
+    pub search: ContactSearch,
     pub approach: Approach,
     pub frictionless: bool,
     pub motion: MotionSpec,
@@ -246,7 +246,11 @@ pub fn read(w: Section, varying_rail: bool) -> Result<WheelRailSection, InputErr
     }
     let d_turn_mm = w.opt_num("d_turn_mm")?.unwrap_or(2.0 * d_sep_mm - d_comb_mm);
     let wheel_mesh = w.pick_or_default("wheel_surface")? == "contact_mesh";
-    let grid_search = w.pick_or_default("contact_search")? == "grid";
+    let search = match w.pick_or_default("contact_search")? {
+        "grid" => ContactSearch::Grid,
+        "grid_steep" => ContactSearch::GridSteep,
+        _ => ContactSearch::Locus,
+    };
     let approach = match w.pick_or_default("approach")? {
         "conformal" => Approach::Conformal,
         "planar_surface_slip" => Approach::PlanarSurfaceSlip,
@@ -265,7 +269,7 @@ pub fn read(w: Section, varying_rail: bool) -> Result<WheelRailSection, InputErr
         d_comb_mm,
         d_turn_mm,
         wheel_mesh,
-        grid_search,
+        search,
         approach,
         frictionless,
         motion,

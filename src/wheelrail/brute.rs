@@ -19,12 +19,14 @@ use std::sync::Arc;
 
 /// The gap mesh's lateral step over DS (`fac_dyds` 0.5 times 1.5).
 const STEP_OVER_DS: f64 = 0.75;
+/// The same for steep slopes (D = 6, `use_steep_slopes`: `fac_dyds` 0.2 times 1.5).
+const STEEP_STEP_OVER_DS: f64 = 0.3;
 /// The gap where the rail or the wheel has no surface (CONTACT's 999).
 const NO_GAP_MM: f64 = 999.0;
 /// A round wheel's mesh spans x = ±R/8 (`compute_round_whl`: an arc of ±7°).
 const ROUND_HALF_SPAN_OVER_R: f64 = 0.125;
-/// The same for a small wheel, nominal radius below [`SMALL_WHEEL_MM`] (`compute_round_whl`: 0.242 R,
-/// sin 14°).
+/// The same for a small wheel, nominal radius below [`SMALL_WHEEL_MM`], and for steep slopes
+/// (`compute_round_whl`: 0.242 R, sin 14°).
 const SMALL_HALF_SPAN_OVER_R: f64 = 0.242;
 /// The nominal radius [mm] below which a wheel is meshed over the wider span (a roller rig's
 /// small wheels).
@@ -65,20 +67,21 @@ impl GapMesh {
 }
 
 /// The wheel's mesh in its own frame (from its centre): the number of slices and the nodes.
-fn local_mesh(wheel: &PlacedWheel, dx_mm: f64) -> (usize, Vec<Vector3<f64>>) {
+fn local_mesh(wheel: &PlacedWheel, dx_mm: f64, steep: bool) -> (usize, Vec<Vector3<f64>>) {
     match &wheel.oor {
         Some(oor) => oorwheel::mesh_local(oor, wheel, dx_mm),
-        None => round_local(wheel, dx_mm),
+        None => round_local(wheel, dx_mm, steep),
     }
 }
 
 /// A round wheel's mesh in its frame (`compute_round_whl`, `grid_revolve_profile`): the profile's
-/// points revolved to x = −R/8 … R/8 (sin 7°, R the nominal radius; ±0.242 R below R = 30.5 mm) in
-/// round(R / (4 · 1.5 DX) + 2) slices (odd), the point at x on the circle of radius
-/// ρ = R + z_w through the profile point; none where x ≥ ρ.
-fn round_local(wheel: &PlacedWheel, dx_mm: f64) -> (usize, Vec<Vector3<f64>>) {
+/// points revolved to x = −R/8 … R/8 (sin 7°, R the nominal radius; ±0.242 R below R = 30.5 mm or
+/// for steep slopes) in round(2 half-span / (1.5 DX) + 2) slices (odd), the point at x on the
+/// circle of radius ρ = R + z_w through the profile point; none where x ≥ ρ.
+fn round_local(wheel: &PlacedWheel, dx_mm: f64, steep: bool) -> (usize, Vec<Vector3<f64>>) {
     let radius = wheel.nominal_radius_mm;
-    let half = radius * if radius < SMALL_WHEEL_MM { SMALL_HALF_SPAN_OVER_R } else { ROUND_HALF_SPAN_OVER_R };
+    let wide = radius < SMALL_WHEEL_MM || steep;
+    let half = radius * if wide { SMALL_HALF_SPAN_OVER_R } else { ROUND_HALF_SPAN_OVER_R };
     let mut n = (2.0 * half / (ROUND_STEP_OVER_DX * dx_mm) + 2.0).round() as usize;
     if n.is_multiple_of(2) {
         n += 1;
@@ -174,7 +177,7 @@ fn column_heights(rail: &PlacedRail, surface: RailSurface, (nx, x0, dx): (usize,
 /// the wheel's height is the kept one plus the centre's.
 #[derive(Debug, Clone, Default)]
 pub struct GapMeshKept {
-    local_key: Option<[u64; 4]>,
+    local_key: Option<[u64; 5]>,
     local: (usize, Vec<Vector3<f64>>),
     /// The local mesh turned by the wheel's rotation (its bits the key).
     turned_key: Option<[u64; 9]>,
@@ -191,20 +194,26 @@ pub struct GapMeshKept {
 
 /// The gap mesh of `wheel` (its mesh: [`local_mesh`] turned and placed) over `rail` (`compute_wr_surfc`): x over
 /// the wheel mesh's range in as many steps as it has slices, y over the rail's lateral range
-/// (step 0.75 DS, centred); the rail's inclination that of `rail` (the rail at the wheelset); what
-/// does not change with the wheelset's height taken from `kept` ([`GapMeshKept`]).
+/// (step 0.75 DS, centred; 0.3 DS for steep slopes); the rail's inclination that of `rail` (the
+/// rail at the wheelset); what does not change with the wheelset's height taken from `kept`
+/// ([`GapMeshKept`]).
 pub fn gap_mesh(
     wheel: &PlacedWheel,
     rail: &PlacedRail,
     surface: RailSurface,
-    (dx_mm, ds_mm): (f64, f64),
+    (dx_mm, ds_mm, steep): (f64, f64, bool),
     kept: &mut GapMeshKept,
 ) -> GapMesh {
-    let local_key =
-        [dx_mm, wheel.nominal_radius_mm, wheel.y_offset_mm, wheel.oor.as_ref().map_or(0.0, |o| o.pitch_rad)]
-            .map(f64::to_bits);
+    let local_key = [
+        dx_mm,
+        wheel.nominal_radius_mm,
+        wheel.y_offset_mm,
+        wheel.oor.as_ref().map_or(0.0, |o| o.pitch_rad),
+        f64::from(u8::from(steep)),
+    ]
+    .map(f64::to_bits);
     if kept.local_key != Some(local_key) {
-        kept.local = local_mesh(wheel, dx_mm);
+        kept.local = local_mesh(wheel, dx_mm, steep);
         (kept.local_key, kept.turned_key) = (Some(local_key), None);
     }
     let m = wheel.rotation.matrix();
@@ -230,7 +239,7 @@ pub fn gap_mesh(
     }
     let nx = kept.local.0;
     let [y_lo, y_hi] = rail.mesh_y_range_mm();
-    let dy = STEP_OVER_DS * ds_mm;
+    let dy = if steep { STEEP_STEP_OVER_DS } else { STEP_OVER_DS } * ds_mm;
     let ny = ((y_hi - y_lo) / dy).floor() as usize + 1;
     let y0 = 0.5 * (y_lo + y_hi) - (ny as f64 - 1.0) * dy / 2.0;
     let ys: Vec<f64> = (0..ny).map(|j| y0 + j as f64 * dy).collect();
@@ -441,7 +450,7 @@ mod tests {
         let pose = Pose { y_mm: 6.2, z_mm: -0.30, roll_rad: -0.00071622, yaw_rad: 0.0149 };
         let placed = PlacedWheel::place(&wheel, &g, &pose);
         // Every node at its profile point's radius R + z_w from the axle, x within ±R/8.
-        let (slices, nodes) = round_local(&placed, 0.2);
+        let (slices, nodes) = round_local(&placed, 0.2, false);
         assert_eq!(slices % 2, 1);
         let points = wheel.points_mm().unwrap();
         for (k, q) in nodes.iter().enumerate().step_by(97) {
@@ -449,7 +458,7 @@ mod tests {
             assert!((q.x.hypot(q.z) - (460.0 + z_w)).abs() < 1e-9, "{q:?}");
             assert!(q.x.abs() <= 460.0 / 8.0 + 1e-9, "{q:?}");
         }
-        let grid = gap_mesh(&placed, &rail, RailSurface::Prismatic, (0.2, 0.2), &mut GapMeshKept::default());
+        let grid = gap_mesh(&placed, &rail, RailSurface::Prismatic, (0.2, 0.2, false), &mut GapMeshKept::default());
         let locus = search::deepest_mm(&search::scan(&placed, &search::RailMesh::new(&rail, 0.2))).unwrap();
         let (ours, locus_gap) = (grid.gap_min_mm(), -locus);
         // Measured 1.6e-4 mm apart (-0.028972 against -0.028809): the bilinear wheel between slices
@@ -457,5 +466,28 @@ mod tests {
         assert!(locus_gap < 0.0 && (ours - locus_gap).abs() < 3e-4, "grid {ours}, locus {locus_gap}");
         let found = candidates(&grid);
         assert!(!found.is_empty(), "{found:?}");
+    }
+
+    /// D = 6 (`use_steep_slopes`): the same wheel revolved over ±0.242 R instead of ±R/8 in
+    /// round(2 half / (1.5 DX) + 2) slices made odd (385 and 745 at R = 460 mm, DX = 0.2 mm), the
+    /// gap mesh 0.3 DS across instead of 0.75 DS; its deepest gap on the flange the locus's too.
+    #[test]
+    fn the_steep_grid_is_wider_along_and_finer_across() {
+        let (wheel, rail) = fixtures::profiles("MBench_S1002_v3.prw", "MBench_UIC60_v3.prr");
+        let rail = PlacedRail::place(&rail, &fixtures::track()).unwrap();
+        let pose = Pose { y_mm: 6.2, z_mm: -0.30, roll_rad: -0.00071622, yaw_rad: 0.0149 };
+        let placed = PlacedWheel::place(&wheel, &fixtures::wheelset(), &pose);
+        let reach = |nodes: &[Vector3<f64>]| nodes.iter().map(|q| q.x.abs()).fold(0.0, f64::max);
+        let (n5, nodes5) = round_local(&placed, 0.2, false);
+        let (n6, nodes6) = round_local(&placed, 0.2, true);
+        assert_eq!((n5, n6), (385, 745));
+        assert!((reach(&nodes5) - 460.0 / 8.0).abs() < 1e-9 && (reach(&nodes6) - 0.242 * 460.0).abs() < 1e-9);
+        let mesh =
+            |steep| gap_mesh(&placed, &rail, RailSurface::Prismatic, (0.2, 0.2, steep), &mut GapMeshKept::default());
+        let (coarse, steep) = (mesh(false), mesh(true));
+        assert!((coarse.dy_mm - 0.15).abs() < 1e-12 && (steep.dy_mm - 0.06).abs() < 1e-12);
+        assert_eq!(steep.nx, 745);
+        let locus = -search::deepest_mm(&search::scan(&placed, &search::RailMesh::new(&rail, 0.2))).unwrap();
+        assert!((steep.gap_min_mm() - locus).abs() < 3e-4, "steep {}, locus {locus}", steep.gap_min_mm());
     }
 }

@@ -39,7 +39,7 @@ use crate::physics::halfspace::influence::Kernel;
 use crate::physics::halfspace::normal::{NormalParams, NormalSolver};
 use crate::physics::halfspace::ContactError;
 use crate::physics::{Grid, Material};
-use crate::scene::wheelrail::Approach;
+use crate::scene::wheelrail::{Approach, ContactSearch};
 use curve::Curve;
 use patch::PatchGeometry;
 use rail::{PlacedRail, Track};
@@ -137,9 +137,9 @@ pub struct WheelRailCase<'a> {
     /// surfaces ([`surface_slip`], D = 3) or conformal (D = 4: each patch on a curved reference
     /// surface, [`conformal_reference`], [`conformal_grid`], its rigid slip on the surfaces).
     pub approach: Approach,
-    /// The brute-force grid search ([`brute`], CONTACT's D = 5) instead of the contact locus; an
-    /// out-of-round wheel takes it always.
-    pub grid_search: bool,
+    /// The contact locus or the brute-force grid search ([`brute`], CONTACT's D = 5; D = 6 on a
+    /// finer mesh for steep slopes); an out-of-round wheel takes the grid search always.
+    pub search: ContactSearch,
     pub material: Material,
     /// Both bodies' thermal constants where the surface temperatures are computed (CONTACT's H = 3).
     pub heat: Option<[crate::physics::temperature::Thermal; 2]>,
@@ -492,9 +492,9 @@ fn samples(
     }
 }
 
-/// Whether the case's search is the grid search (D = 5, or an out-of-round wheel).
+/// Whether the case's search is the grid search (D = 5, 6, or an out-of-round wheel).
 fn uses_grid(case: &WheelRailCase) -> bool {
-    case.grid_search || case.wheel_slices.is_some()
+    case.search.is_grid() || case.wheel_slices.is_some()
 }
 
 /// The grid search's gap mesh of the case with the wheel placed as `wheel` ([`brute::gap_mesh`]).
@@ -506,7 +506,8 @@ fn grid(case: &WheelRailCase, wheel: &PlacedWheel, rail: &PlacedRail, setup: &Ra
         (None, Some(r)) => brute::RailSurface::Roller(r),
         (None, None) => brute::RailSurface::Prismatic,
     };
-    brute::gap_mesh(wheel, rail, surface, (case.dx_mm, case.ds_mm), &mut kept)
+    let steep = case.search == ContactSearch::GridSteep;
+    brute::gap_mesh(wheel, rail, surface, (case.dx_mm, case.ds_mm, steep), &mut kept)
 }
 
 /// The patches' geometry with the wheel placed as `wheel`.

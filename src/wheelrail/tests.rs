@@ -40,7 +40,7 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side, pose: Pose) -
             turn_mm: 12.0,
         },
         wheel_surface: Default::default(),
-        grid_search: false,
+        search: ContactSearch::Locus,
         approach: Default::default(),
         material: Material::from_g(82000.0, 0.28),
         heat: None,

@@ -5,7 +5,7 @@
 
 use crate::common::{self, root};
 use creepbench::import::contact::wheelrail_deck::{self, PitchInput, Vertical};
-use creepbench::scene::wheelrail::{MotionSpec, PlacementSpec, SideSpec, VerticalSpec, WheelRailScene};
+use creepbench::scene::wheelrail::{ContactSearch, MotionSpec, PlacementSpec, SideSpec, VerticalSpec, WheelRailScene};
 use creepbench::scene::wheelrail_profile::PROFILE_DEFAULTS;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -618,13 +618,30 @@ fn the_grid_search_imports_and_exports_back() {
     let dir = common::tempdir("m1_grid_search");
     let deck = root().join("reference/contact_wheelrail/testbank/examples_s+c/cross_brute.inp");
     let scene = import(&deck, &dir.join("scenes"), &[]).remove(0);
-    assert!(WheelRailScene::from_file(&scene).unwrap().grid_search);
+    assert_eq!(WheelRailScene::from_file(&scene).unwrap().search, ContactSearch::Grid);
     let gated = root().join("scenes/wheelrail/two_patches_1.toml");
     let (original, back) = round_trip(&gated, &dir.join("back"));
-    assert!(original.grid_search);
+    assert_eq!(original.search, ContactSearch::Grid);
     assert_eq!(values(&back), WheelRailScene { wheel_mesh: false, ..values(&original) });
     let deck = std::fs::read_to_string(dir.join("back/deck/two_patches_1.inp")).unwrap();
     assert_eq!(deck.matches("0052033    V-L-D-C-M-Z-E").count(), 1, "{deck}");
+}
+
+/// The grid search for steep slopes (D = 6): `guard_rail_d6` imports with
+/// `contact_search = "grid_steep"`, and its gated scene exports with D = 6 on its first case and
+/// imports back as the same scene.
+#[test]
+fn the_steep_grid_search_imports_and_exports_back() {
+    let dir = common::tempdir("m1_steep_search");
+    let deck = root().join("reference/contact_wheelrail/testbank/generated_steep/guard_rail_d6.inp");
+    let scene = import(&deck, &dir.join("scenes"), &[]).remove(0);
+    assert_eq!(WheelRailScene::from_file(&scene).unwrap().search, ContactSearch::GridSteep);
+    let gated = root().join("scenes/wheelrail/guard_rail_d6_1.toml");
+    let (original, back) = round_trip(&gated, &dir.join("back"));
+    assert_eq!(original.search, ContactSearch::GridSteep);
+    assert_eq!(values(&back), WheelRailScene { wheel_mesh: false, ..values(&original) });
+    let deck = std::fs::read_to_string(dir.join("back/deck/guard_rail_d6_1.inp")).unwrap();
+    assert_eq!(deck.matches("1062033    V-L-D-C-M-Z-E").count(), 1, "{deck}");
 }
 
 /// A roller rig (C = 4, 5) imports as `[rail] roller_radius_mm`, `roller_vpitch_rad_s` with the

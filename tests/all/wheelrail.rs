@@ -41,7 +41,7 @@ fn case<'a>(rail: &'a dyn Curve, wheel: &'a dyn Curve, side: Side) -> WheelRailC
             turn_mm: 12.0,
         },
         wheel_surface: Default::default(),
-        grid_search: false,
+        search: creepbench::scene::wheelrail::ContactSearch::Locus,
         approach: Default::default(),
         material: Material::from_g(82000.0, 0.28),
         heat: None,

@@ -200,6 +200,12 @@ fn the_wheelrail_suite_passes_its_gate_against_contacts_printed_results() {
         "cross_brute_1",
         "two_patches_1",
         "cw_interrupt_2",
+        // The grid search for steep slopes (D = 6) on a guard rail and on the UK crossing, and the
+        // guard rail with D = 5, whose coarser mesh misses its contact in three cases (decks
+        // computed by CONTACT).
+        "guard_rail_d6_1",
+        "guard_rail_d5_1",
+        "mbench_steep_1",
         // A sphere on a flat plane placed absolutely (examples_conformal/test-rollers2 case 1),
         // yawed (case 2) and rolled (case 5) on CONTACT's wheel mesh; mbench_conf case 1 (the
         // conformal approach with the flange in contact, yaw and cant).

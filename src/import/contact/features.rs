@@ -790,10 +790,10 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "contact approaches other than the planar one with the contact locus",
         control: "D",
         supported: false,
-        reason: "supported: D = 2 (planar contact, contact locus, weighted reference), D = 3 (the same with the rigid slip on the actual surfaces), D = 4 (conformal), D = 5 (the planar one with the brute-force grid search, [wheelrail] contact_search = \"grid\") or D = 0, 1 keeping them; not 6 (the grid search's larger grid for steep slopes), 7-9 (the initial contact point, oblique views)",
+        reason: "supported: D = 2 (planar contact, contact locus, weighted reference), D = 3 (the same with the rigid slip on the actual surfaces), D = 4 (conformal), D = 5 (the planar one with the brute-force grid search, [wheelrail] contact_search = \"grid\"), D = 6 (that search on its finer mesh for steep slopes, \"grid_steep\") or D = 0, 1 keeping them; not 7 (the initial contact point as the reference) or 8 (oblique views on the contact locus), which stop CONTACT's own build with a segmentation fault (no result to match), nor 9 (the grid search in oblique views)",
         used: |c| {
             let m = c.state.discretisation.as_ref()?.method;
-            (!matches!(m, 2..=5)).then(|| format!("D (in force) = {m}"))
+            (!matches!(m, 2..=6)).then(|| format!("D (in force) = {m}"))
         },
     },
     WheelRailRow {
@@ -827,6 +827,17 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         used: |c| {
             let m = c.state.discretisation.as_ref()?.method;
             (m == 5).then(|| format!("D (in force) = {m}"))
+        },
+    },
+    WheelRailRow {
+        feature: WheelRailFeature::ContactApproach,
+        name: "the grid search for steep slopes",
+        control: "D",
+        supported: true,
+        reason: "carried as [wheelrail] contact_search = \"grid_steep\" (D = 6, use_steep_slopes): the grid search of D = 5 with the gap mesh's lateral step 0.3 DS instead of 0.75 DS and a round wheel revolved over x in +-0.242 R (sin 14 deg) instead of +-R/8",
+        used: |c| {
+            let m = c.state.discretisation.as_ref()?.method;
+            (m == 6).then(|| format!("D (in force) = {m}"))
         },
     },
     WheelRailRow {

@@ -25,8 +25,8 @@ use super::super::CaseStatus;
 use super::{scene_name, SceneFiles};
 use crate::physics::material::combine_bodies;
 use crate::scene::wheelrail::{
-    Approach, CaseRow, LongitudinalSpec, MotionSpec, MuBy, MuVariation, PlacementSpec, ProfileSpec, RailDeviationSpec,
-    SideSpec, VerticalSpec, WheelDeviationSpec, WheelRailScene,
+    Approach, CaseRow, ContactSearch, LongitudinalSpec, MotionSpec, MuBy, MuVariation, PlacementSpec, ProfileSpec,
+    RailDeviationSpec, SideSpec, VerticalSpec, WheelDeviationSpec, WheelRailScene,
 };
 use crate::scene::wheelrail_massless::MasslessRailSpec;
 use crate::scene::wheelrail_profile::{RollerSpec, PROFILE_DEFAULTS};
@@ -400,7 +400,11 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         d_comb_mm: disc.d_comb_mm,
         d_turn_mm: disc.d_turn_mm(),
         wheel_mesh: false,
-        grid_search: disc.method == 5,
+        search: match disc.method {
+            5 => ContactSearch::Grid,
+            6 => ContactSearch::GridSteep,
+            _ => ContactSearch::Locus,
+        },
         approach: match disc.method {
             3 => Approach::PlanarSurfaceSlip,
             4 => Approach::Conformal,

@@ -6,8 +6,8 @@
 use super::super::read_back::tempdir_for;
 use crate::error::InputError;
 use crate::scene::wheelrail::{
-    case_columns, case_columns_with_pitch, case_columns_with_positions, Approach, CaseRow, LongitudinalSpec,
-    MotionSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
+    case_columns, case_columns_with_pitch, case_columns_with_positions, Approach, CaseRow, ContactSearch,
+    LongitudinalSpec, MotionSpec, MuBy, PlacementSpec, ProfileSpec, SideSpec, VerticalSpec, WheelRailScene,
 };
 use crate::scene::wheelrail_profile::{MIRROR_Z, PROFILE_DEFAULTS};
 use std::fmt::Write;
@@ -54,8 +54,10 @@ fn document(s: &WheelRailScene, csv_name: &str) -> Result<Vec<(Option<&'static s
     if s.wheel_mesh {
         wheelrail.push(("wheel_surface", Value::String("contact_mesh".into())));
     }
-    if s.grid_search {
-        wheelrail.push(("contact_search", Value::String("grid".into())));
+    match s.search {
+        ContactSearch::Locus => {}
+        ContactSearch::Grid => wheelrail.push(("contact_search", Value::String("grid".into()))),
+        ContactSearch::GridSteep => wheelrail.push(("contact_search", Value::String("grid_steep".into()))),
     }
     match s.approach {
         Approach::Planar => {}
