@@ -17,6 +17,7 @@ mod contact_wheelrail;
 mod contact_wheelrail_import;
 mod dissimilar;
 mod docs;
+mod docs_features;
 mod docs_keys;
 mod envelope;
 mod external_and_gate;
