@@ -80,12 +80,7 @@ fn local_mesh(wheel: &PlacedWheel, dx_mm: f64, steep: bool) -> (usize, Vec<Vecto
 /// circle of radius ρ = R + z_w through the profile point; none where x ≥ ρ.
 fn round_local(wheel: &PlacedWheel, dx_mm: f64, steep: bool) -> (usize, Vec<Vector3<f64>>) {
     let radius = wheel.nominal_radius_mm;
-    let wide = radius < SMALL_WHEEL_MM || steep;
-    let half = radius * if wide { SMALL_HALF_SPAN_OVER_R } else { ROUND_HALF_SPAN_OVER_R };
-    let mut n = (2.0 * half / (ROUND_STEP_OVER_DX * dx_mm) + 2.0).round() as usize;
-    if n.is_multiple_of(2) {
-        n += 1;
-    }
+    let (n, half) = round_slices(radius, dx_mm, steep);
     let dx = 2.0 * half / (n as f64 - 1.0);
     let points = wheel.curve.points_mm().unwrap_or_default();
     let mut nodes = Vec::with_capacity(n * points.len());
@@ -99,6 +94,34 @@ fn round_local(wheel: &PlacedWheel, dx_mm: f64, steep: bool) -> (usize, Vec<Vect
         }
     }
     (n, nodes)
+}
+
+/// A round wheel's slices and the half span [mm] of its mesh ([`round_local`]).
+fn round_slices(radius_mm: f64, dx_mm: f64, steep: bool) -> (usize, f64) {
+    let wide = radius_mm < SMALL_WHEEL_MM || steep;
+    let half = radius_mm * if wide { SMALL_HALF_SPAN_OVER_R } else { ROUND_HALF_SPAN_OVER_R };
+    let n = (2.0 * half / (ROUND_STEP_OVER_DX * dx_mm) + 2.0).round() as usize;
+    (n + usize::from(n.is_multiple_of(2)), half)
+}
+
+/// The gap mesh's size, slices by lateral points, that [`gap_mesh`] makes of `wheel` over `rail`,
+/// without making it.
+pub fn mesh_size(wheel: &PlacedWheel, rail: &PlacedRail, (dx_mm, ds_mm, steep): (f64, f64, bool)) -> [usize; 2] {
+    let radius = wheel.nominal_radius_mm;
+    let nx = match wheel.oor {
+        Some(_) => oorwheel::mesh_angles(radius, dx_mm),
+        None => round_slices(radius, dx_mm, steep).0,
+    };
+    [nx, lateral_points(rail, ds_mm, steep).0]
+}
+
+/// The gap mesh's lateral points over `rail` (step 0.75 DS, 0.3 DS for steep slopes, centred on
+/// its lateral range): their number, the first y and the step [mm].
+fn lateral_points(rail: &PlacedRail, ds_mm: f64, steep: bool) -> (usize, f64, f64) {
+    let [y_lo, y_hi] = rail.mesh_y_range_mm();
+    let dy = if steep { STEEP_STEP_OVER_DS } else { STEP_OVER_DS } * ds_mm;
+    let ny = ((y_hi - y_lo) / dy).floor() as usize + 1;
+    (ny, 0.5 * (y_lo + y_hi) - (ny as f64 - 1.0) * dy / 2.0, dy)
 }
 
 /// The rail's surface the gap mesh is made over: a prismatic rail, a rail that varies along the
@@ -238,10 +261,7 @@ pub fn gap_mesh(
         };
     }
     let nx = kept.local.0;
-    let [y_lo, y_hi] = rail.mesh_y_range_mm();
-    let dy = if steep { STEEP_STEP_OVER_DS } else { STEP_OVER_DS } * ds_mm;
-    let ny = ((y_hi - y_lo) / dy).floor() as usize + 1;
-    let y0 = 0.5 * (y_lo + y_hi) - (ny as f64 - 1.0) * dy / 2.0;
+    let (ny, y0, dy) = lateral_points(rail, ds_mm, steep);
     let ys: Vec<f64> = (0..ny).map(|j| y0 + j as f64 * dy).collect();
     let wheel_key = [wheel.centre.x.to_bits(), wheel.centre.y.to_bits(), y0.to_bits(), ny as u64];
     if kept.wheel_key != Some(wheel_key) {

@@ -59,6 +59,10 @@ pub enum WheelRailError {
     VerticalNotConverged { fz_n: f64, z_mm: f64 },
     #[error("patch {patch}: the grid of {elements} elements exceeds the limit of {limit}")]
     GridTooLarge { patch: usize, elements: usize, limit: usize },
+    #[error(
+        "the grid search's gap mesh of {slices} x {lateral} points exceeds the limit of {limit} points (dx_mm, ds_mm too small for the wheel's arc and the rail's width)"
+    )]
+    GapMeshTooLarge { slices: usize, lateral: usize, limit: usize },
     #[error("patch {patch}: normal problem: {source}")]
     Normal { patch: usize, source: ContactError },
     #[error("patch {patch}: approximate normal problem: {source}")]
@@ -73,6 +77,10 @@ pub enum WheelRailError {
 
 /// Largest potential contact of one patch [elements].
 pub const MAX_ELEMENTS: usize = 250_000;
+
+/// Largest gap mesh of the grid search [points] (about 0.4 GB of arrays; the Manchester wheel on
+/// the UK crossing at DX = DS = 0.2 mm takes 0.37 million (385 × 968), with D = 6 1.8 million (745 × 2420)).
+pub const MAX_GAP_MESH_POINTS: usize = 12_000_000;
 
 /// The vertical problem (CONTACT's N digit).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -236,7 +244,7 @@ pub fn normal_contact_with(
                 None => {
                     let mut wheel = placed_wheel(case, &Pose { z_mm: 0.0, ..pose });
                     let deepest = if uses_grid(case) {
-                        Some(-grid(case, &wheel, &rail, setup).gap_min_mm()).filter(|d| *d > -500.0)
+                        Some(-grid(case, &wheel, &rail, setup)?.gap_min_mm()).filter(|d| *d > -500.0)
                     } else {
                         search::deepest_mm(&samples(case, &rail, &setup.mesh, &mut wheel))
                     }
@@ -497,8 +505,19 @@ fn uses_grid(case: &WheelRailCase) -> bool {
     case.search.is_grid() || case.wheel_slices.is_some()
 }
 
-/// The grid search's gap mesh of the case with the wheel placed as `wheel` ([`brute::gap_mesh`]).
-fn grid(case: &WheelRailCase, wheel: &PlacedWheel, rail: &PlacedRail, setup: &RailSetup) -> brute::GapMesh {
+/// The grid search's gap mesh of the case with the wheel placed as `wheel` ([`brute::gap_mesh`]),
+/// refused beyond [`MAX_GAP_MESH_POINTS`] before it is made.
+fn grid(
+    case: &WheelRailCase,
+    wheel: &PlacedWheel,
+    rail: &PlacedRail,
+    setup: &RailSetup,
+) -> Result<brute::GapMesh, WheelRailError> {
+    let steep = case.search == ContactSearch::GridSteep;
+    let [slices, lateral] = brute::mesh_size(wheel, rail, (case.dx_mm, case.ds_mm, steep));
+    if slices.saturating_mul(lateral) > MAX_GAP_MESH_POINTS {
+        return Err(WheelRailError::GapMeshTooLarge { slices, lateral, limit: MAX_GAP_MESH_POINTS });
+    }
     // A poisoned lock held heights of a mesh made whole before the panic: still good.
     let mut kept = setup.grid_heights.lock().unwrap_or_else(|e| e.into_inner());
     let surface = match (&case.rail_slices, &case.roller) {
@@ -506,8 +525,7 @@ fn grid(case: &WheelRailCase, wheel: &PlacedWheel, rail: &PlacedRail, setup: &Ra
         (None, Some(r)) => brute::RailSurface::Roller(r),
         (None, None) => brute::RailSurface::Prismatic,
     };
-    let steep = case.search == ContactSearch::GridSteep;
-    brute::gap_mesh(wheel, rail, surface, (case.dx_mm, case.ds_mm, steep), &mut kept)
+    Ok(brute::gap_mesh(wheel, rail, surface, (case.dx_mm, case.ds_mm, steep), &mut kept))
 }
 
 /// The patches' geometry with the wheel placed as `wheel`.
@@ -517,7 +535,7 @@ fn geometry_at(
     wheel: &mut PlacedWheel,
 ) -> Result<Vec<PatchGeometry>, WheelRailError> {
     let candidates: Vec<_> = match uses_grid(case) {
-        true => brute::candidates(&grid(case, wheel, rail, setup)),
+        true => brute::candidates(&grid(case, wheel, rail, setup)?),
         false => {
             let samples = samples(case, rail, &setup.mesh, wheel);
             if samples.is_empty() {

@@ -50,16 +50,20 @@ fn lateral_parameters(slices: &Slices) -> Vec<f64> {
     (0..slices.samples()).map(|k| k as f64).collect()
 }
 
+/// The number of angles of the mesh of a wheel of nominal radius `radius_mm` for elements of
+/// `dx_mm` (`compute_oor_whl`: round(0.4 R / (4 DX) + 2), odd).
+pub fn mesh_angles(radius_mm: f64, dx_mm: f64) -> usize {
+    let n = (2.0 * MESH_HALF_ANGLE_RAD * radius_mm / (MESH_STEP_OVER_DX * dx_mm) + 2.0).round() as usize;
+    n + usize::from(n.is_multiple_of(2))
+}
+
 /// CONTACT's mesh of the out-of-round wheel (`compute_oor_whl`) for elements of `dx_mm`, in the
 /// wheel's frame from its centre: angles θ = −PITCH − 0.2 + k dθ (fastest; nslc =
 /// round(0.4 R / (4 DX) + 2), odd), then the lateral parameters; the number of angles and the nodes.
 pub fn mesh_local(oor: &WheelSlices, wheel: &PlacedWheel, dx_mm: f64) -> (usize, Vec<Vector3<f64>>) {
     let radius = wheel.nominal_radius_mm;
     let span = 2.0 * MESH_HALF_ANGLE_RAD;
-    let mut n = (span * radius / (MESH_STEP_OVER_DX * dx_mm) + 2.0).round() as usize;
-    if n.is_multiple_of(2) {
-        n += 1;
-    }
+    let n = mesh_angles(radius, dx_mm);
     let d_theta = span / (n as f64 - 1.0).max(1.0);
     let theta_min = -oor.pitch_rad - MESH_HALF_ANGLE_RAD;
     let v = lateral_parameters(oor.slices);

@@ -7,7 +7,7 @@ use creepbench::wheelrail::curve::{Arc, Curve, Line};
 use creepbench::wheelrail::rail::{RailPlacement, Track};
 use creepbench::wheelrail::side::Side;
 use creepbench::wheelrail::wheel::{Pose, Velocity, WheelDeviation, WheelsetGeometry};
-use creepbench::wheelrail::{Vertical, WheelRailCase};
+use creepbench::wheelrail::{self, Vertical, WheelRailCase};
 
 const MODELS: [&str; 8] = ["contact", "fastsim", "uba", "linear", "she", "polach", "fastrip", "relaxation"];
 
@@ -130,6 +130,37 @@ fn a_case_without_a_solution_is_an_input_error_and_a_wheel_in_the_air_a_result()
     let (code, err, csv) = simulate_rows("position", &header, "1,0.0,-5.0,0,0,2000,0,0,0,0,-4.348");
     assert_eq!(code, Some(0), "{err}");
     assert_eq!(csv.unwrap().lines().nth(1), Some("1,0,-5,0,0,0,0,0,0,-4.348"));
+}
+
+/// The grid search's gap mesh is refused before it is made when DX and DS would make it beyond
+/// `MAX_GAP_MESH_POINTS` (the guard rail with D = 6 at DX = DS = 0.01 mm: 13935 slices by 65962
+/// lateral points, 7.4 GB for one array): exit 2 naming the scene, the case and the sizes,
+/// nothing written.
+#[test]
+fn a_grid_search_mesh_beyond_its_limit_is_refused_before_it_is_made() {
+    let root = crate::common::root();
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(root.join("scenes/wheelrail/guard_rail_d6_1.toml")).unwrap();
+    let text = text
+        .replace("../../reference", root.join("reference").to_str().unwrap())
+        .replace("dx_mm = 0.5", "dx_mm = 0.01")
+        .replace("ds_mm = 0.5", "ds_mm = 0.01");
+    std::fs::write(dir.path().join("s.toml"), text).unwrap();
+    std::fs::copy(
+        root.join("scenes/wheelrail/guard_rail_d6_1_cases.csv"),
+        dir.path().join("guard_rail_d6_1_cases.csv"),
+    )
+    .unwrap();
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_creepbench"))
+        .current_dir(dir.path())
+        .args(["simulate", "s.toml", "--out", "out"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    let says = format!("gap mesh of 13935 x 65962 points exceeds the limit of {}", wheelrail::MAX_GAP_MESH_POINTS);
+    assert!(err.contains("scene guard_rail_d6_1, case 1") && err.contains(&says), "{err}");
+    assert!(!dir.path().join("out").exists(), "written despite the error");
 }
 
 /// FX_WS prescribed (CONTACT's F = 1): the pitch velocity found gives the exact theory's FX(WS)
