@@ -78,8 +78,8 @@ pub enum WheelRailError {
 /// Largest potential contact of one patch [elements].
 pub const MAX_ELEMENTS: usize = 250_000;
 
-/// Largest gap mesh of the grid search [points] (about 0.4 GB of arrays; the Manchester wheel on
-/// the UK crossing at DX = DS = 0.2 mm takes 0.37 million (385 × 968), with D = 6 1.8 million (745 × 2420)).
+/// Largest gap mesh of the grid search [points] (the shipped scenes' sizes: docs/wheelrail.md,
+/// "Bad input").
 pub const MAX_GAP_MESH_POINTS: usize = 12_000_000;
 
 /// The vertical problem (CONTACT's N digit).
