@@ -22,6 +22,51 @@ pub(crate) fn files_under(dir: &Path, ext: &str, out: &mut Vec<PathBuf>) {
     }
 }
 
+/// `doc` with the text between each marker line (`<!-- KIND:ID -->`, a kind of `kinds`) and the
+/// next `close` line replaced by that kind's text of ID; the IDs found, in order.
+pub(crate) fn regenerate(doc: &str, close: &str, kinds: &[(&str, &dyn Fn(&str) -> String)]) -> (String, Vec<String>) {
+    let (mut out, mut ids, mut rest) = (String::new(), Vec::new(), doc);
+    while let Some((at, open, text)) =
+        kinds.iter().filter_map(|&(open, text)| rest.find(open).map(|at| (at, open, text))).min_by_key(|m| m.0)
+    {
+        let line_end = at + rest[at..].find('\n').expect("a marker line ends");
+        let id = rest[at + open.len()..line_end].trim_end_matches("-->").trim().to_string();
+        let end = line_end + rest[line_end..].find(close).unwrap_or_else(|| panic!("{open}{id} is not closed"));
+        out.push_str(&rest[..=line_end]);
+        out.push_str(&text(&id));
+        ids.push(id);
+        rest = &rest[end..];
+    }
+    out.push_str(rest);
+    (out, ids)
+}
+
+/// The lines of `got` and `want` that differ, as `-` (in the docs) and `+` (generated).
+fn diff(got: &str, want: &str) -> String {
+    let (g, w): (BTreeSet<&str>, BTreeSet<&str>) = (got.lines().collect(), want.lines().collect());
+    let gone = got.lines().filter(|l| !w.contains(l)).map(|l| format!("- {l}"));
+    let new = want.lines().filter(|l| !g.contains(l)).map(|l| format!("+ {l}"));
+    gone.chain(new).take(60).collect::<Vec<_>>().join("\n")
+}
+
+/// Passes when the document at `path` is `want`; with `CREEPBENCH_BLESS_DOCS=1` writes `want`
+/// there, else fails showing the difference and the command (`test`) that rewrites it.
+pub(crate) fn generated_or_blessed(path: &Path, doc: &str, want: &str, test: &str) {
+    if want == doc {
+        return;
+    }
+    if std::env::var("CREEPBENCH_BLESS_DOCS").is_ok_and(|v| v == "1") {
+        std::fs::write(path, want).unwrap();
+        return;
+    }
+    panic!(
+        "{}'s generated tables differ from their sources (rewrite them with CREEPBENCH_BLESS_DOCS=1 \
+         cargo test --release --test all {test}):\n{}",
+        path.display(),
+        diff(doc, want)
+    );
+}
+
 fn scene_format() -> String {
     read(&common::root().join("docs/scene-format.md"))
 }

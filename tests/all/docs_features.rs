@@ -4,7 +4,7 @@
 //! `CREEPBENCH_BLESS_DOCS=1 cargo test --release --test all docs_features` rewrites them.
 
 use crate::common;
-use crate::docs::read;
+use crate::docs::{generated_or_blessed, read, regenerate};
 use creepbench::import::contact::features::{FEATURES, WHEELRAIL_FEATURES};
 use creepbench::import::contact::scene::wheelrail::SCENE_LIMITS;
 
@@ -41,39 +41,11 @@ fn generated(id: &str) -> String {
 const OPEN: &str = "<!-- features:";
 const CLOSE: &str = "<!-- /features -->";
 
-/// `doc` with the text between each `<!-- features:ID -->` line and the next `<!-- /features -->`
-/// replaced by the table ID; the IDs found.
-fn generate(doc: &str) -> (String, Vec<String>) {
-    let (mut out, mut ids, mut rest) = (String::new(), Vec::new(), doc);
-    while let Some(at) = rest.find(OPEN) {
-        let line_end = at + rest[at..].find('\n').expect("a marker line ends");
-        let id = rest[at + OPEN.len()..line_end].trim_end_matches("-->").trim().to_string();
-        let close = line_end + rest[line_end..].find(CLOSE).unwrap_or_else(|| panic!("{OPEN}{id} is not closed"));
-        out.push_str(&rest[..=line_end]);
-        out.push_str(&generated(&id));
-        ids.push(id);
-        rest = &rest[close..];
-    }
-    out.push_str(rest);
-    (out, ids)
-}
-
 #[test]
 fn the_import_feature_tables_are_the_importers() {
     let path = common::root().join("docs/contact-import.md");
     let doc = read(&path);
-    let (want, ids) = generate(&doc);
+    let (want, ids) = regenerate(&doc, CLOSE, &[(OPEN, &generated)]);
     assert_eq!(ids, ["module3", "module1", "scene_limits"], "docs/contact-import.md's tables");
-    if want == doc {
-        return;
-    }
-    if std::env::var("CREEPBENCH_BLESS_DOCS").is_ok_and(|v| v == "1") {
-        std::fs::write(&path, want).unwrap();
-        return;
-    }
-    let first = want.lines().zip(doc.lines()).find(|(w, d)| w != d);
-    panic!(
-        "docs/contact-import.md's tables differ from the importer's (rewrite them with \
-         CREEPBENCH_BLESS_DOCS=1 cargo test --release --test all docs_features); first difference:\n{first:?}"
-    );
+    generated_or_blessed(&path, &doc, &want, "docs_features");
 }

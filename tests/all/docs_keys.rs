@@ -4,7 +4,7 @@
 //! declared key is read by the file that declares it, and every key that file reads is declared.
 
 use crate::common;
-use crate::docs::{files_under, keys_read, read};
+use crate::docs::{files_under, generated_or_blessed, keys_read, read, regenerate};
 use creepbench::scene::keys::{columns_markdown, markdown, Allowed, Keys};
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -33,37 +33,15 @@ const CLOSE: &str = "<!-- /keys -->";
 /// `doc` with the text between each `<!-- keys:ID -->` (`<!-- columns:ID -->`) line and the next
 /// `<!-- /keys -->` replaced by the Markdown of the key (column) declarations of ID; the IDs
 /// found, in order.
-fn generate(doc: &str, tables: &[&Keys], columns: &[&Keys]) -> (String, Vec<String>) {
-    let mut out = String::new();
-    let mut ids = Vec::new();
-    let mut rest = doc;
-    let next = |rest: &str| {
-        let keys = rest.find(OPEN).map(|at| (at, OPEN, tables, markdown as fn(&[&Keys]) -> String));
-        let cols =
-            rest.find(OPEN_COLUMNS).map(|at| (at, OPEN_COLUMNS, columns, columns_markdown as fn(&[&Keys]) -> String));
-        [keys, cols].into_iter().flatten().min_by_key(|m| m.0)
-    };
-    while let Some((at, open, of, table)) = next(rest) {
-        let line_end = at + rest[at..].find('\n').expect("a marker line ends");
-        let id = rest[at + open.len()..line_end].trim_end_matches("-->").trim().to_string();
-        let close = line_end + rest[line_end..].find(CLOSE).unwrap_or_else(|| panic!("{open}{id} is not closed"));
-        let of_id: Vec<&Keys> = of.iter().copied().filter(|t| t.id == id).collect();
-        assert!(!of_id.is_empty(), "docs/scene-format.md has {open}{id} --> but no reader declares {id:?}");
-        out.push_str(&rest[..=line_end]);
-        out.push_str(&table(&of_id));
-        ids.push(id);
-        rest = &rest[close..];
+fn generate(doc: &str, tables: &[&'static Keys], columns: &[&'static Keys]) -> (String, Vec<String>) {
+    fn of(declared: &[&'static Keys], id: &str) -> Vec<&'static Keys> {
+        let of_id: Vec<&Keys> = declared.iter().copied().filter(|t| t.id == id).collect();
+        assert!(!of_id.is_empty(), "docs/scene-format.md has a marker of {id:?} but no reader declares it");
+        of_id
     }
-    out.push_str(rest);
-    (out, ids)
-}
-
-/// The lines of `want` and `got` that differ, as `-` (in the docs) and `+` (generated).
-fn diff(got: &str, want: &str) -> String {
-    let (g, w): (BTreeSet<&str>, BTreeSet<&str>) = (got.lines().collect(), want.lines().collect());
-    let gone = got.lines().filter(|l| !w.contains(l)).map(|l| format!("- {l}"));
-    let new = want.lines().filter(|l| !g.contains(l)).map(|l| format!("+ {l}"));
-    gone.chain(new).take(60).collect::<Vec<_>>().join("\n")
+    let keys = |id: &str| markdown(&of(tables, id));
+    let cols = |id: &str| columns_markdown(&of(columns, id));
+    regenerate(doc, CLOSE, &[(OPEN, &keys), (OPEN_COLUMNS, &cols)])
 }
 
 #[test]
@@ -75,18 +53,7 @@ fn the_docs_key_tables_are_the_declarations() {
     for t in tables.iter().chain(&columns) {
         assert!(ids.contains(&t.id.to_string()), "no marker of {} in docs/scene-format.md", t.id);
     }
-    if want == doc {
-        return;
-    }
-    if std::env::var("CREEPBENCH_BLESS_DOCS").is_ok_and(|v| v == "1") {
-        std::fs::write(&path, want).unwrap();
-        return;
-    }
-    panic!(
-        "docs/scene-format.md's key tables differ from the declarations (rewrite them with \
-         CREEPBENCH_BLESS_DOCS=1 cargo test --release --test all docs_keys):\n{}",
-        diff(&doc, &want)
-    );
+    generated_or_blessed(&path, &doc, &want, "docs_keys");
 }
 
 /// What is wrong between the declarations and the sources that read them: a declared key its
