@@ -22,9 +22,12 @@ pub(crate) fn files_under(dir: &Path, ext: &str, out: &mut Vec<PathBuf>) {
     }
 }
 
+/// A kind of marker (`<!-- KIND:`) and the generated text of each of its IDs.
+pub(crate) type Marker<'a> = (&'a str, &'a dyn Fn(&str) -> String);
+
 /// `doc` with the text between each marker line (`<!-- KIND:ID -->`, a kind of `kinds`) and the
 /// next `close` line replaced by that kind's text of ID; the IDs found, in order.
-pub(crate) fn regenerate(doc: &str, close: &str, kinds: &[(&str, &dyn Fn(&str) -> String)]) -> (String, Vec<String>) {
+pub(crate) fn regenerate(doc: &str, close: &str, kinds: &[Marker]) -> (String, Vec<String>) {
     let (mut out, mut ids, mut rest) = (String::new(), Vec::new(), doc);
     while let Some((at, open, text)) =
         kinds.iter().filter_map(|&(open, text)| rest.find(open).map(|at| (at, open, text))).min_by_key(|m| m.0)
