@@ -26,6 +26,9 @@ pub struct RunOutcome {
     pub ignored_scenes: Vec<String>,
     /// The fit records of `<results>/fits/` this run did not write: left out of its report.
     pub ignored_fits: Vec<String>,
+    /// The wheel–rail scenes this run solved, with their runs (what its result folders and its
+    /// gate against CONTACT were made from; empty for a shard).
+    pub wheelrail: Vec<(WheelRailScene, SceneRun)>,
 }
 
 /// `creepbench run`: the suites → result folders, then the report from this run's results;
@@ -99,6 +102,7 @@ pub fn run_with(
         oscillating: Vec::new(),
         ignored_scenes: other_runs_scenes(results_dir, &ran, shard.is_some()),
         ignored_fits: Vec::new(),
+        wheelrail: Vec::new(),
     };
     if shard.is_some() {
         return Ok(outcome);
@@ -119,13 +123,14 @@ pub fn run_with(
     let wheelrail_found = wheelrail_findings(&refs, &wheelrail);
     attach_wheelrail(&mut refs, &wheelrail);
     let suites = suite_of(&stored, &wheelrail);
-    let drawn = Drawn { fits: &records, wheelrail: wheelrail_section(wheelrail, &printed)? };
+    let drawn = Drawn { fits: &records, wheelrail: wheelrail_section(&wheelrail, &printed)? };
     let judging = Judging { golden: Some(golden), rules: &rules, extra: wheelrail_found, suites: &suites };
     let (md, findings, loosened) = report_with_findings(&stored, &refs, report_dir, judging, drawn)?;
     outcome.report = Some(md);
     outcome.findings = findings;
     outcome.loosened = loosened;
     outcome.oscillating = console::oscillating(&stored, false);
+    outcome.wheelrail = wheelrail;
     Ok(outcome)
 }
 

@@ -178,9 +178,14 @@ pub fn is_wheelrail(f: &crate::suite::SceneSource) -> bool {
     f.study.is_none() && doc.is_some_and(|d| crate::scene::wheelrail::is_wheelrail(&d))
 }
 
-/// Run the wheel–rail scenes one after the other (each runs its cases in parallel).
+/// Run the wheel–rail scenes side by side (rayon; a scene's shift and rolling sequences are serial,
+/// so one after the other they left a core idle), their runs in the scenes' order; on failures,
+/// the first failing scene's error in that order.
 pub fn run_all(scenes: &[WheelRailScene]) -> Result<Vec<SceneRun>, Error> {
-    scenes.iter().map(crate::pipeline::wheelrail_scene::run_scene).collect()
+    use rayon::prelude::*;
+    let runs: Vec<Result<SceneRun, Error>> =
+        scenes.par_iter().map(crate::pipeline::wheelrail_scene::run_scene).collect();
+    runs.into_iter().collect()
 }
 
 /// The suite folder a wheel–rail scene belongs to (its file's folder name).

@@ -6,7 +6,6 @@ use crate::common::{self, root};
 use creepbench::comparison::references::contact_output::wheelrail::read;
 use creepbench::comparison::references::contact_wheelrail::{compare_case, Deviation};
 use creepbench::comparison::references::wheelrail_cases::measure;
-use creepbench::pipeline::wheelrail_scene::run_scene;
 use creepbench::scene::wheelrail::WheelRailScene;
 use std::path::PathBuf;
 use std::process::Command;
@@ -127,6 +126,18 @@ fn groove_li_free_rolling_in_a_deep_groove_against_contact() {
     groove_li_against_contact(("groove_li", 1..=4), &["fs_n", "fy_tr_n", "fy_ws_n"], 2.5e-4, false);
 }
 
+/// The shipped scene `name` of scenes/wheelrail as read from its file, with its run in the shared
+/// run of the suite ([`common::wheelrail_suite_run`]: `run_scene` of the same file, which this test
+/// would otherwise solve a second time).
+fn shipped_run(name: &str) -> (WheelRailScene, &'static creepbench::pipeline::wheelrail_scene::SceneRun) {
+    let scene = WheelRailScene::from_file(&root().join(format!("scenes/wheelrail/{name}.toml"))).unwrap();
+    let runs = &common::wheelrail_suite_run().outcome.wheelrail;
+    let (shared, run) =
+        runs.iter().find(|(s, _)| s.name == name).unwrap_or_else(|| panic!("{name} not in the suite's run"));
+    assert_eq!(shared, &scene, "{name}: the suite's scene is the file's");
+    (scene, run)
+}
+
 /// The `cases` of a groove_li deck (`groove_li`, or a variant generated from it) against its printed
 /// output: VPITCH, the approach, FN, the creepages and the element counts within CONTACT's printed
 /// digits; the `lateral` quantities (residues of a contact symmetric about y = 0) within `bound_n`
@@ -140,10 +151,8 @@ fn groove_li_against_contact(
     let dir = if deck == "groove_li" { folder() } else { variants_folder() };
     let printed = read(&dir.join(format!("{deck}.ref_out"))).unwrap();
     for case in cases {
-        let scene = format!("{deck}_{case}");
-        let scene = WheelRailScene::from_file(&root().join(format!("scenes/wheelrail/{scene}.toml"))).unwrap();
+        let (scene, run) = shipped_run(&format!("{deck}_{case}"));
         assert_eq!(scene.material.blanco.is_some(), blanco, "case {case}");
-        let run = run_scene(&scene).unwrap();
         let (_, r) = run.cases.iter().find(|(c, _)| *c == case).unwrap();
         let devs = compare_case(case, r, 0, printed.iter().find(|p| u64::from(p.case) == case).unwrap());
         for q in ["vpitch_rad_s", "pen_mm", "fn_n", "cksi", "npot", "ncon", "nadh", "nslip"] {
@@ -237,8 +246,7 @@ fn rollers2(scene: &str) -> Vec<Deviation> {
 
 /// The deviations of the shipped scene `scene` of scenes/wheelrail from `<deck>.ref_out`.
 fn deviations(scene: &str, deck: &str) -> Vec<Deviation> {
-    let scene = WheelRailScene::from_file(&root().join(format!("scenes/wheelrail/{scene}.toml"))).unwrap();
-    let run = run_scene(&scene).unwrap();
+    let (_, run) = shipped_run(scene);
     let printed = read(&folder().join(format!("{deck}.ref_out"))).unwrap();
     run.cases
         .iter()
