@@ -310,6 +310,15 @@ struct RailPlacement {
     mesh: search::RailMesh,
 }
 
+impl RailPlacement {
+    /// The rail of `case` placed in its track and its heights under the gap mesh of its DS.
+    fn of(case: &WheelRailCase) -> Result<RailPlacement, WheelRailError> {
+        let rail = PlacedRail::place(case.rail, &case.track)?;
+        let mesh = search::RailMesh::new(&rail, case.ds_mm);
+        Ok(RailPlacement { origin_mm: rail.origin_mm, angle_rad: rail.angle_rad, mesh })
+    }
+}
+
 /// The bits of what a [`RailPlacement`] depends on besides the profile: the track's placement
 /// (its kind and two values), cant and deviations, and DS.
 type PlacementKey = [u64; 8];
@@ -377,16 +386,17 @@ impl RailSetup {
     /// The rail of `case` placed ([`PlacedRail::place`]) and its gap mesh: kept with the rail's
     /// profile where it keeps placements ([`Curve::placements`]), else made.
     pub fn new(case: &WheelRailCase) -> Result<RailSetup, WheelRailError> {
-        let make = || {
-            let rail = PlacedRail::place(case.rail, &case.track)?;
-            let mesh = search::RailMesh::new(&rail, case.ds_mm);
-            Ok(RailPlacement { origin_mm: rail.origin_mm, angle_rad: rail.angle_rad, mesh })
-        };
         let placement = match case.rail.placements() {
-            Some(kept) => kept.get_or_make(placement_key(case), make)?,
-            None => Arc::new(make()?),
+            Some(kept) => kept.get_or_make(placement_key(case), || RailPlacement::of(case))?,
+            None => Arc::new(RailPlacement::of(case)?),
         };
         Ok(RailSetup { placement, grid_heights: Default::default() })
+    }
+
+    /// [`RailSetup::new`] made afresh whether or not the profile keeps the placement: what the
+    /// first case of a scene pays (the benchmark `rail_setup`).
+    pub fn afresh(case: &WheelRailCase) -> Result<RailSetup, WheelRailError> {
+        Ok(RailSetup { placement: Arc::new(RailPlacement::of(case)?), grid_heights: Default::default() })
     }
 
     /// The placed rail of profile `curve` (the case's).

@@ -170,9 +170,10 @@ fn a_rail_profile_keeps_its_placements_by_track_and_ds_and_they_are_the_placemen
     let other = RailSetup::new(&WheelRailCase { ds_mm: 0.1, ..at }).unwrap();
     assert!(!std::sync::Arc::ptr_eq(&first.placement, &other.placement));
     assert_eq!(other.placement.origin_mm, first.placement.origin_mm);
-    // A kept placement is the one made afresh, bit for bit (a curve that keeps none).
-    let fresh = PlacedRail::place(&rail as &dyn Curve, &at.track).unwrap();
-    assert_eq!(first.placement.origin_mm, fresh.origin_mm);
-    assert_eq!(first.placement.angle_rad, fresh.angle_rad);
-    assert_eq!(first.placement.mesh, search::RailMesh::new(&fresh, at.ds_mm));
+    // A kept placement is the one made afresh, bit for bit.
+    let fresh = RailSetup::afresh(&at).unwrap();
+    assert!(!std::sync::Arc::ptr_eq(&first.placement, &fresh.placement));
+    assert_eq!(first.placement.origin_mm, fresh.placement.origin_mm);
+    assert_eq!(first.placement.angle_rad, fresh.placement.angle_rad);
+    assert_eq!(first.placement.mesh, fresh.placement.mesh);
 }
