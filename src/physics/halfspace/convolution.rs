@@ -448,12 +448,25 @@ impl Convolver {
         Ok(c)
     }
 
-    /// [`Convolver::single_precision`] of this convolver's kernel (made by [`Convolver::auto`]),
-    /// its transforms copied, not made again.
+    /// [`Convolver::single_precision`] of this convolver's kernel for its tangential products
+    /// alone: on the FFT path its single-precision transforms made of this one's (not made
+    /// again), which the copy does not keep (its normal products are refused); on the direct
+    /// path a copy.
     pub fn to_single_precision(&self) -> Convolver {
-        let mut c = self.clone();
-        c.fft32 = c.fft.as_ref().map(FftData::to_f32);
-        c
+        Convolver {
+            mx: self.mx,
+            my: self.my,
+            path: self.path,
+            nkx: self.nkx,
+            kzz: self.kzz.clone(),
+            kxx: self.kxx.clone(),
+            kyy: self.kyy.clone(),
+            kxy: self.kxy.clone(),
+            active: self.active.clone(),
+            fft: None,
+            fft32: self.fft.as_ref().map(FftData::to_f32),
+            real: None,
+        }
     }
 
     /// Convolver with the path chosen by grid size ([`auto_path`]).
@@ -619,11 +632,13 @@ impl Convolver {
             }
             ConvPath::Fft => {
                 let (mx, my) = (self.mx, self.my);
-                let f = self.fft.as_mut().filter(|f| !f.salpha.is_empty()).ok_or(ContactError::MissingFft)?;
                 let io = PairIo { mx, my, px, py, mask, ux, uy };
-                match self.fft32.as_mut() {
-                    Some(f32data) => tangential_dispatch(f32data, io),
-                    None => tangential_dispatch(f, io),
+                // The single-precision transforms where there are any (a copy made by
+                // `to_single_precision` keeps no others).
+                match (self.fft32.as_mut(), self.fft.as_mut()) {
+                    (Some(f32data), _) if !f32data.salpha.is_empty() => tangential_dispatch(f32data, io),
+                    (None, Some(f)) if !f.salpha.is_empty() => tangential_dispatch(f, io),
+                    _ => return Err(ContactError::MissingFft),
                 }
             }
         }
