@@ -5,7 +5,8 @@
 //! gfortran build of CONTACT on the same case); `geometry` — the contact search, the patches'
 //! grids and the undeformed distance alone at that case's height, per wheel (target ≤ 1 ms), on
 //! the rail placed beforehand; `rail_setup` — placing the rail by its gauge point and its gap
-//! mesh, which depend on the track alone (once per case, not per position);
+//! mesh, which depend on the track alone (made afresh: a scene's profile keeps it for its other
+//! cases, once per scene);
 //! `all_models_21_positions` — the 21 cases of both wheels with every model of the scenes
 //! (target: seconds). Issue 45 item 5, each scene with the exact solver alone (target: at most
 //! 1/10 of CONTACT's time for the same deck): `crossing_35_positions/locus` (mbench_locus_1, the
@@ -56,7 +57,7 @@ fn bench_case(c: &mut Criterion) {
         g.bench_function(format!("geometry/{side}_11"), |b| {
             b.iter(|| geometry_with(black_box(&case), &setup, z_ws_mm).unwrap())
         });
-        g.bench_function(format!("rail_setup/{side}"), |b| b.iter(|| RailSetup::new(black_box(&case)).unwrap()));
+        g.bench_function(format!("rail_setup/{side}"), |b| b.iter(|| RailSetup::afresh(black_box(&case)).unwrap()));
     }
     g.finish();
 }

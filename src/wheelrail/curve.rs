@@ -21,6 +21,11 @@ pub trait Curve: Send + Sync + Debug {
     fn points_mm(&self) -> Option<Vec<[f64; 2]>> {
         None
     }
+    /// The placements of this curve as a rail made so far ([`super::RailPlacements`]), where the
+    /// curve keeps them (a profile, with its data); `None`: each case places it afresh.
+    fn placements(&self) -> Option<&super::RailPlacements> {
+        None
+    }
     /// The spline's parameter s [mm] (CONTACT's arc length along the profile) at y, where the
     /// curve is a profile's spline; `None` for a closed form.
     fn s_at_y(&self, _y_mm: f64) -> Option<f64> {
@@ -126,6 +131,9 @@ impl Curve for super::profile::Profile {
     }
     fn spline_point(&self, s_mm: f64) -> Option<super::profile::ProfilePoint> {
         self.point_at_s(s_mm)
+    }
+    fn placements(&self) -> Option<&super::RailPlacements> {
+        Some(self.kept_placements())
     }
     fn locus_nodes(&self) -> Option<Vec<super::locus::Node>> {
         self.kept_locus_nodes(|| {

@@ -33,6 +33,8 @@ pub mod vertical;
 pub mod wheel;
 pub mod wheel_mesh;
 
+use std::sync::Arc;
+
 use crate::physics::approximate::{self, ApproximateError, Method};
 use crate::physics::halfspace::blanco::BlancoProduct;
 use crate::physics::halfspace::influence::Kernel;
@@ -246,7 +248,7 @@ pub fn normal_contact_with(
                     let deepest = if uses_grid(case) {
                         Some(-grid(case, &wheel, &rail, setup)?.gap_min_mm()).filter(|d| *d > -500.0)
                     } else {
-                        search::deepest_mm(&samples(case, &rail, &setup.mesh, &mut wheel))
+                        search::deepest_mm(&samples(case, &rail, &setup.placement.mesh, &mut wheel))
                     }
                     .ok_or(WheelRailError::NoOverlap)?;
                     *touch_mm.insert(-deepest)
@@ -298,27 +300,116 @@ pub struct NormalCache {
 }
 
 /// The rail placed in the track and the rail under the gap mesh: what depends on the track and
-/// the grid's DS alone, made once per case and used at every trial height of the wheelset.
+/// the grid's DS alone, made once per case (or kept with the rail's profile, [`RailPlacements`])
+/// and used at every trial height of the wheelset.
 #[derive(Debug)]
 pub struct RailSetup {
-    origin_mm: [f64; 2],
-    angle_rad: f64,
-    mesh: search::RailMesh,
+    placement: Arc<RailPlacement>,
     /// What the grid search's last gap mesh keeps for the next trial height ([`brute::GapMeshKept`]).
     grid_heights: std::sync::Mutex<brute::GapMeshKept>,
 }
 
-impl RailSetup {
-    /// The rail of `case` placed ([`PlacedRail::place`]) and its gap mesh.
-    pub fn new(case: &WheelRailCase) -> Result<RailSetup, WheelRailError> {
+/// The rail placed in the track ([`PlacedRail::place`]) and its heights under the gap mesh
+/// ([`search::RailMesh`]).
+#[derive(Debug)]
+struct RailPlacement {
+    origin_mm: [f64; 2],
+    angle_rad: f64,
+    mesh: search::RailMesh,
+}
+
+impl RailPlacement {
+    /// The rail of `case` placed in its track and its heights under the gap mesh of its DS.
+    fn of(case: &WheelRailCase) -> Result<RailPlacement, WheelRailError> {
         let rail = PlacedRail::place(case.rail, &case.track)?;
         let mesh = search::RailMesh::new(&rail, case.ds_mm);
-        Ok(RailSetup { origin_mm: rail.origin_mm, angle_rad: rail.angle_rad, mesh, grid_heights: Default::default() })
+        Ok(RailPlacement { origin_mm: rail.origin_mm, angle_rad: rail.angle_rad, mesh })
+    }
+}
+
+/// The bits of what a [`RailPlacement`] depends on besides the profile: the track's placement
+/// (its kind and two values), cant and deviations, and DS.
+type PlacementKey = [u64; 8];
+
+/// How many placements a profile keeps (the oldest dropped first).
+const KEPT_PLACEMENTS: usize = 4;
+
+/// The placements of one rail profile made so far, kept with the profile (`profile::Profile`)
+/// by the bits of the track and DS they were made for: the cases of a scene place one rail in one
+/// track, and each placement (a scan of the profile every 0.01 mm for its gauge point, the rail's
+/// heights under the gap mesh) is made once, not once per case (the same numbers bit for bit).
+#[derive(Default)]
+pub struct RailPlacements(std::sync::Mutex<Vec<(PlacementKey, Arc<RailPlacement>)>>);
+
+/// A memo, not a part of the profile's value: any two are equal.
+impl PartialEq for RailPlacements {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl RailPlacements {
+    /// The placement of `key`: the kept one, else `make`'s (kept where it succeeds).
+    fn get_or_make(
+        &self,
+        key: PlacementKey,
+        make: impl FnOnce() -> Result<RailPlacement, WheelRailError>,
+    ) -> Result<Arc<RailPlacement>, WheelRailError> {
+        let kept =
+            self.0.lock().unwrap_or_else(|e| e.into_inner()).iter().find(|(k, _)| *k == key).map(|(_, p)| p.clone());
+        if let Some(p) = kept {
+            return Ok(p);
+        }
+        let made = Arc::new(make()?);
+        let mut kept = self.0.lock().unwrap_or_else(|e| e.into_inner());
+        if kept.len() == KEPT_PLACEMENTS {
+            kept.remove(0);
+        }
+        kept.push((key, made.clone()));
+        Ok(made)
+    }
+}
+
+/// The key of `case`'s placement ([`PlacementKey`]).
+fn placement_key(case: &WheelRailCase) -> PlacementKey {
+    let t = &case.track;
+    let (kind, [a, b]) = match t.placement {
+        rail::RailPlacement::Gauge { height_mm, width_mm } => (0, [height_mm, width_mm]),
+        rail::RailPlacement::Absolute { y_mm, z_mm } => (1, [y_mm, z_mm]),
+    };
+    let [dy, dz, droll] = t.deviation_mm_rad;
+    [
+        kind,
+        a.to_bits(),
+        b.to_bits(),
+        t.cant_rad.to_bits(),
+        dy.to_bits(),
+        dz.to_bits(),
+        droll.to_bits(),
+        case.ds_mm.to_bits(),
+    ]
+}
+
+impl RailSetup {
+    /// The rail of `case` placed ([`PlacedRail::place`]) and its gap mesh: kept with the rail's
+    /// profile where it keeps placements ([`Curve::placements`]), else made.
+    pub fn new(case: &WheelRailCase) -> Result<RailSetup, WheelRailError> {
+        let placement = match case.rail.placements() {
+            Some(kept) => kept.get_or_make(placement_key(case), || RailPlacement::of(case))?,
+            None => Arc::new(RailPlacement::of(case)?),
+        };
+        Ok(RailSetup { placement, grid_heights: Default::default() })
+    }
+
+    /// [`RailSetup::new`] made afresh whether or not the profile keeps the placement: what the
+    /// first case of a scene pays (the benchmark `rail_setup`).
+    pub fn afresh(case: &WheelRailCase) -> Result<RailSetup, WheelRailError> {
+        Ok(RailSetup { placement: Arc::new(RailPlacement::of(case)?), grid_heights: Default::default() })
     }
 
     /// The placed rail of profile `curve` (the case's).
     fn placed<'a>(&self, curve: &'a dyn Curve) -> PlacedRail<'a> {
-        PlacedRail { curve, origin_mm: self.origin_mm, angle_rad: self.angle_rad }
+        PlacedRail { curve, origin_mm: self.placement.origin_mm, angle_rad: self.placement.angle_rad }
     }
 }
 
@@ -537,7 +628,7 @@ fn geometry_at(
     let candidates: Vec<_> = match uses_grid(case) {
         true => brute::candidates(&grid(case, wheel, rail, setup)?),
         false => {
-            let samples = samples(case, rail, &setup.mesh, wheel);
+            let samples = samples(case, rail, &setup.placement.mesh, wheel);
             if samples.is_empty() {
                 return Err(WheelRailError::NoOverlap);
             }

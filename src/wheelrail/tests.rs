@@ -153,3 +153,27 @@ fn a_wheel_turned_on_its_wheelset_is_a_turned_wheelset() {
         assert!((rigid.z_ws_mm - a.z_ws_mm).abs() > 0.1, "{side:?}: {} {}", rigid.z_ws_mm, a.z_ws_mm);
     }
 }
+
+#[test]
+fn a_rail_profile_keeps_its_placements_by_track_and_ds_and_they_are_the_placements_made_afresh() {
+    use super::profile::{Profile, ProfileKind, ProfileOptions};
+    let arc = crown();
+    let y: Vec<f64> = (0..=140).map(|k| 0.5 * k as f64 - 35.0).collect();
+    let z: Vec<f64> = y.iter().map(|&y| arc.z_mm(y).unwrap()).collect();
+    let rail = Profile::from_points(&y, &z, ProfileKind::Rail, &ProfileOptions::default()).unwrap();
+    let wheel = Line { z0_mm: 0.0, slope: 0.0, y_range_mm: [-60.0, 60.0] };
+    let at = case(&rail, &wheel, Side::Right, Pose::default());
+    let first = RailSetup::new(&at).unwrap();
+    let again = RailSetup::new(&at).unwrap();
+    assert!(std::sync::Arc::ptr_eq(&first.placement, &again.placement));
+    // Another DS: another placement, the same rail placed.
+    let other = RailSetup::new(&WheelRailCase { ds_mm: 0.1, ..at }).unwrap();
+    assert!(!std::sync::Arc::ptr_eq(&first.placement, &other.placement));
+    assert_eq!(other.placement.origin_mm, first.placement.origin_mm);
+    // A kept placement is the one made afresh, bit for bit.
+    let fresh = RailSetup::afresh(&at).unwrap();
+    assert!(!std::sync::Arc::ptr_eq(&first.placement, &fresh.placement));
+    assert_eq!(first.placement.origin_mm, fresh.placement.origin_mm);
+    assert_eq!(first.placement.angle_rad, fresh.placement.angle_rad);
+    assert_eq!(first.placement.mesh, fresh.placement.mesh);
+}

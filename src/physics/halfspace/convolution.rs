@@ -401,20 +401,30 @@ impl Convolver {
             ConvPath::Fft => Some(FftData::new(kernel, fft_len(2 * mx - 1), fft_len_y(my))),
             ConvPath::Direct => None,
         };
-        Ok(Convolver {
+        Ok(Convolver::holding(kernel, fft))
+    }
+
+    /// The convolver of `kernel` (checked) on the FFT path with the transforms `fft` where given,
+    /// else on the direct path. The coefficients are kept for the direct path alone: the FFT
+    /// path's products read the spectra (and a copy of the convolver copies no coefficients).
+    fn holding(kernel: &Kernel, fft: Option<FftData<f64>>) -> Convolver {
+        let (mx, my) = (kernel.mx, kernel.my);
+        let direct = fft.is_none();
+        let coefficients = |k: &Vec<f64>| if direct { k.clone() } else { Vec::new() };
+        Convolver {
             mx,
             my,
-            path,
+            path: if direct { ConvPath::Direct } else { ConvPath::Fft },
             nkx: 2 * mx - 1,
-            kzz: kernel.zz.clone(),
-            kxx: kernel.xx.clone(),
-            kyy: kernel.yy.clone(),
-            kxy: kernel.xy.clone(),
-            active: Vec::with_capacity(mx * my),
+            kzz: coefficients(&kernel.zz),
+            kxx: coefficients(&kernel.xx),
+            kyy: coefficients(&kernel.yy),
+            kxy: coefficients(&kernel.xy),
+            active: Vec::with_capacity(if direct { mx * my } else { 0 }),
             fft,
             fft32: None,
             real: None,
-        })
+        }
     }
 
     /// FFT-path operator `M`, an approximate inverse of the tangential `A` used as preconditioner:
@@ -438,12 +448,25 @@ impl Convolver {
         Ok(c)
     }
 
-    /// [`Convolver::single_precision`] of this convolver's kernel (made by [`Convolver::auto`]),
-    /// its transforms copied, not made again.
+    /// [`Convolver::single_precision`] of this convolver's kernel for its tangential products
+    /// alone: on the FFT path its single-precision transforms made of this one's (not made
+    /// again), which the copy does not keep (its normal products are refused); on the direct
+    /// path a copy.
     pub fn to_single_precision(&self) -> Convolver {
-        let mut c = self.clone();
-        c.fft32 = c.fft.as_ref().map(FftData::to_f32);
-        c
+        Convolver {
+            mx: self.mx,
+            my: self.my,
+            path: self.path,
+            nkx: self.nkx,
+            kzz: self.kzz.clone(),
+            kxx: self.kxx.clone(),
+            kyy: self.kyy.clone(),
+            kxy: self.kxy.clone(),
+            active: self.active.clone(),
+            fft: None,
+            fft32: self.fft.as_ref().map(FftData::to_f32),
+            real: None,
+        }
     }
 
     /// Convolver with the path chosen by grid size ([`auto_path`]).
@@ -469,26 +492,25 @@ impl Convolver {
         path: ConvPath,
         spectra: fn(&Kernel, usize, usize) -> FftData<f64>,
     ) -> Result<Convolver, ContactError> {
-        let mut c = Convolver::new(kernel, ConvPath::Direct)?;
-        if path == ConvPath::Fft {
-            c.path = ConvPath::Fft;
-            c.fft = Some(spectra(kernel, fft_len(2 * kernel.mx - 1), fft_len_y(kernel.my)));
-        }
-        Ok(c)
+        check_kernel(kernel)?;
+        let fft = (path == ConvPath::Fft).then(|| spectra(kernel, fft_len(2 * kernel.mx - 1), fft_len_y(kernel.my)));
+        Ok(Convolver::holding(kernel, fft))
     }
 
     /// The convolver of `difference`, the kernel of this convolver less `other`'s (both of the
     /// same grid): on the FFT path its spectra are the differences of theirs, no transform made.
     pub fn minus(&self, other: &Convolver, difference: &Kernel) -> Result<Convolver, ContactError> {
-        let mut c = Convolver::new(difference, ConvPath::Direct)?;
-        if let (Some(a), Some(b)) = (&self.fft, &other.fft) {
-            if (a.nx, a.ny) != (b.nx, b.ny) || (c.mx, c.my) != (self.mx, self.my) {
-                return Err(ContactError::GridMismatch { expected: (self.mx, self.my), got: (c.mx, c.my) });
+        check_kernel(difference)?;
+        match (&self.fft, &other.fft) {
+            (Some(a), Some(b)) => {
+                let got = (difference.mx, difference.my);
+                if (a.nx, a.ny) != (b.nx, b.ny) || got != (self.mx, self.my) {
+                    return Err(ContactError::GridMismatch { expected: (self.mx, self.my), got });
+                }
+                Ok(Convolver::holding(difference, Some(a.minus(b))))
             }
-            c.path = ConvPath::Fft;
-            c.fft = Some(a.minus(b));
+            _ => Ok(Convolver::holding(difference, None)),
         }
-        Ok(c)
     }
 
     /// The path in use.
@@ -610,11 +632,13 @@ impl Convolver {
             }
             ConvPath::Fft => {
                 let (mx, my) = (self.mx, self.my);
-                let f = self.fft.as_mut().filter(|f| !f.salpha.is_empty()).ok_or(ContactError::MissingFft)?;
                 let io = PairIo { mx, my, px, py, mask, ux, uy };
-                match self.fft32.as_mut() {
-                    Some(f32data) => tangential_dispatch(f32data, io),
-                    None => tangential_dispatch(f, io),
+                // The single-precision transforms where there are any (a copy made by
+                // `to_single_precision` keeps no others).
+                match (self.fft32.as_mut(), self.fft.as_mut()) {
+                    (Some(f32data), _) if !f32data.salpha.is_empty() => tangential_dispatch(f32data, io),
+                    (None, Some(f)) if !f.salpha.is_empty() => tangential_dispatch(f, io),
+                    _ => return Err(ContactError::MissingFft),
                 }
             }
         }

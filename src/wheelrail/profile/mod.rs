@@ -129,6 +129,8 @@ struct Data {
     pieces: Vec<spline::Pieces>,
     /// The contact locus's profile nodes, made at the first call (the profile's alone).
     locus_nodes: OnceLock<Option<Vec<super::locus::Node>>>,
+    /// The profile's placements as a rail made so far ([`super::RailPlacements`]).
+    placements: super::RailPlacements,
     /// The segments by y, and the whole y-range (`segment_y`'s hull).
     index: index::SegmentIndex,
     y_range: (f64, f64),
@@ -297,6 +299,7 @@ impl Profile {
             segment_y,
             pieces,
             locus_nodes: OnceLock::new(),
+            placements: Default::default(),
             index,
             y_range,
         }))
@@ -420,6 +423,11 @@ impl Profile {
         make: impl FnOnce() -> Option<Vec<super::locus::Node>>,
     ) -> Option<Vec<super::locus::Node>> {
         self.0.locus_nodes.get_or_init(make).clone()
+    }
+
+    /// The profile's placements as a rail kept with it ([`super::RailPlacements`]).
+    pub fn kept_placements(&self) -> &super::RailPlacements {
+        &self.0.placements
     }
 
     /// z [mm] and the slope dz/dy at `y_mm` ([`Self::point_at_y`]'s, without its curvature).
