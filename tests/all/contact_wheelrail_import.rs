@@ -610,38 +610,33 @@ fn a_wheel_flat_exports_its_pitch_and_imports_back() {
     assert_eq!(original.cases[25].pitch_rad, -50f64.to_radians());
 }
 
+/// A deck of the grid search imports with `search`, and the gated scene `scene` exports with the
+/// control word `word` (its D) on its first case and imports back as the same scene.
+fn grid_search_round_trip(deck: &str, scene: &str, search: ContactSearch, word: &str) {
+    let dir = common::tempdir(&format!("m1_{scene}_search"));
+    let imported = import(&root().join("reference/contact_wheelrail").join(deck), &dir.join("scenes"), &[]).remove(0);
+    assert_eq!(WheelRailScene::from_file(&imported).unwrap().search, search);
+    let (original, back) = round_trip(&root().join(format!("scenes/wheelrail/{scene}.toml")), &dir.join("back"));
+    assert_eq!(original.search, search);
+    assert_eq!(values(&back), WheelRailScene { wheel_mesh: false, ..values(&original) });
+    let written = std::fs::read_to_string(dir.join(format!("back/deck/{scene}.inp"))).unwrap();
+    assert_eq!(written.matches(&format!("{word}    V-L-D-C-M-Z-E")).count(), 1, "{written}");
+}
+
 /// The brute-force grid search (D = 5): `cross_brute` imports with `contact_search = "grid"`, and
-/// the gated scene `two_patches_1` (rail slices with interruptions, FZ prescribed) exports with
-/// D = 5 on its first case and imports back as the same scene.
+/// the gated scene `two_patches_1` (rail slices with interruptions, FZ prescribed) round-trips
+/// with D = 5.
 #[test]
 fn the_grid_search_imports_and_exports_back() {
-    let dir = common::tempdir("m1_grid_search");
-    let deck = root().join("reference/contact_wheelrail/testbank/examples_s+c/cross_brute.inp");
-    let scene = import(&deck, &dir.join("scenes"), &[]).remove(0);
-    assert_eq!(WheelRailScene::from_file(&scene).unwrap().search, ContactSearch::Grid);
-    let gated = root().join("scenes/wheelrail/two_patches_1.toml");
-    let (original, back) = round_trip(&gated, &dir.join("back"));
-    assert_eq!(original.search, ContactSearch::Grid);
-    assert_eq!(values(&back), WheelRailScene { wheel_mesh: false, ..values(&original) });
-    let deck = std::fs::read_to_string(dir.join("back/deck/two_patches_1.inp")).unwrap();
-    assert_eq!(deck.matches("0052033    V-L-D-C-M-Z-E").count(), 1, "{deck}");
+    grid_search_round_trip("testbank/examples_s+c/cross_brute.inp", "two_patches_1", ContactSearch::Grid, "0052033");
 }
 
 /// The grid search for steep slopes (D = 6): `guard_rail_d6` imports with
-/// `contact_search = "grid_steep"`, and its gated scene exports with D = 6 on its first case and
-/// imports back as the same scene.
+/// `contact_search = "grid_steep"`, and its gated scene round-trips with D = 6.
 #[test]
 fn the_steep_grid_search_imports_and_exports_back() {
-    let dir = common::tempdir("m1_steep_search");
-    let deck = root().join("reference/contact_wheelrail/testbank/generated_steep/guard_rail_d6.inp");
-    let scene = import(&deck, &dir.join("scenes"), &[]).remove(0);
-    assert_eq!(WheelRailScene::from_file(&scene).unwrap().search, ContactSearch::GridSteep);
-    let gated = root().join("scenes/wheelrail/guard_rail_d6_1.toml");
-    let (original, back) = round_trip(&gated, &dir.join("back"));
-    assert_eq!(original.search, ContactSearch::GridSteep);
-    assert_eq!(values(&back), WheelRailScene { wheel_mesh: false, ..values(&original) });
-    let deck = std::fs::read_to_string(dir.join("back/deck/guard_rail_d6_1.inp")).unwrap();
-    assert_eq!(deck.matches("1062033    V-L-D-C-M-Z-E").count(), 1, "{deck}");
+    let deck = "testbank/generated_steep/guard_rail_d6.inp";
+    grid_search_round_trip(deck, "guard_rail_d6_1", ContactSearch::GridSteep, "1062033");
 }
 
 /// A roller rig (C = 4, 5) imports as `[rail] roller_radius_mm`, `roller_vpitch_rad_s` with the
