@@ -14,6 +14,7 @@ use super::rail::PlacedRail;
 use super::roller::Roller;
 use super::varrail::RailSlices;
 use super::wheel::PlacedWheel;
+use super::{WheelRailError, MAX_GAP_MESH_POINTS};
 use nalgebra::Vector3;
 use std::sync::Arc;
 
@@ -104,15 +105,12 @@ fn round_slices(radius_mm: f64, dx_mm: f64, steep: bool) -> (usize, f64) {
     (n + usize::from(n.is_multiple_of(2)), half)
 }
 
-/// The gap mesh's size, slices by lateral points, that [`gap_mesh`] makes of `wheel` over `rail`,
-/// without making it.
-pub fn mesh_size(wheel: &PlacedWheel, rail: &PlacedRail, (dx_mm, ds_mm, steep): (f64, f64, bool)) -> [usize; 2] {
-    let radius = wheel.nominal_radius_mm;
-    let nx = match wheel.oor {
-        Some(_) => oorwheel::mesh_angles(radius, dx_mm),
-        None => round_slices(radius, dx_mm, steep).0,
-    };
-    [nx, lateral_points(rail, ds_mm, steep).0]
+/// The number of slices of the wheel's mesh ([`local_mesh`]) without making it.
+fn slices(wheel: &PlacedWheel, dx_mm: f64, steep: bool) -> usize {
+    match wheel.oor {
+        Some(_) => oorwheel::mesh_angles(wheel.nominal_radius_mm, dx_mm),
+        None => round_slices(wheel.nominal_radius_mm, dx_mm, steep).0,
+    }
 }
 
 /// The gap mesh's lateral points over `rail` (step 0.75 DS, 0.3 DS for steep slopes, centred on
@@ -219,14 +217,19 @@ pub struct GapMeshKept {
 /// the wheel mesh's range in as many steps as it has slices, y over the rail's lateral range
 /// (step 0.75 DS, centred; 0.3 DS for steep slopes); the rail's inclination that of `rail` (the
 /// rail at the wheelset); what does not change with the wheelset's height taken from `kept`
-/// ([`GapMeshKept`]).
+/// ([`GapMeshKept`]); refused beyond [`MAX_GAP_MESH_POINTS`] before anything is made.
 pub fn gap_mesh(
     wheel: &PlacedWheel,
     rail: &PlacedRail,
     surface: RailSurface,
     (dx_mm, ds_mm, steep): (f64, f64, bool),
     kept: &mut GapMeshKept,
-) -> GapMesh {
+) -> Result<GapMesh, WheelRailError> {
+    let (ny, y0, dy) = lateral_points(rail, ds_mm, steep);
+    let nx = slices(wheel, dx_mm, steep);
+    if nx.saturating_mul(ny) > MAX_GAP_MESH_POINTS {
+        return Err(WheelRailError::GapMeshTooLarge { slices: nx, lateral: ny, limit: MAX_GAP_MESH_POINTS });
+    }
     let local_key = [
         dx_mm,
         wheel.nominal_radius_mm,
@@ -239,6 +242,7 @@ pub fn gap_mesh(
         kept.local = local_mesh(wheel, dx_mm, steep);
         (kept.local_key, kept.turned_key) = (Some(local_key), None);
     }
+    debug_assert_eq!(kept.local.0, nx, "the mesh has the slices its formula gives");
     let m = wheel.rotation.matrix();
     let turned_key: [u64; 9] = std::array::from_fn(|k| m[(k / 3, k % 3)].to_bits());
     if kept.turned_key != Some(turned_key) {
@@ -248,7 +252,7 @@ pub fn gap_mesh(
     if kept.turned.is_empty() {
         // A closed-form wheel has no points to revolve: no mesh, nothing found.
         let empty = Vec::new();
-        return GapMesh {
+        return Ok(GapMesh {
             nx: 0,
             ny: 0,
             x0_mm: 0.0,
@@ -258,10 +262,8 @@ pub fn gap_mesh(
             z_rail_mm: Arc::new(empty.clone()),
             angle_rad: empty.clone(),
             gap_mm: empty,
-        };
+        });
     }
-    let nx = kept.local.0;
-    let (ny, y0, dy) = lateral_points(rail, ds_mm, steep);
     let ys: Vec<f64> = (0..ny).map(|j| y0 + j as f64 * dy).collect();
     let wheel_key = [wheel.centre.x.to_bits(), wheel.centre.y.to_bits(), y0.to_bits(), ny as u64];
     if kept.wheel_key != Some(wheel_key) {
@@ -280,7 +282,7 @@ pub fn gap_mesh(
             _ => NO_GAP_MM,
         })
         .collect();
-    GapMesh { nx, ny, x0_mm: x_lo, dx_mm: dx, y0_mm: y0, dy_mm: dy, z_rail_mm, angle_rad, gap_mm }
+    Ok(GapMesh { nx, ny, x0_mm: x_lo, dx_mm: dx, y0_mm: y0, dy_mm: dy, z_rail_mm, angle_rad, gap_mm })
 }
 
 /// The gap mesh's x range from the wheel's mesh placed at its centre's x and y, the rail's heights
@@ -478,7 +480,8 @@ mod tests {
             assert!((q.x.hypot(q.z) - (460.0 + z_w)).abs() < 1e-9, "{q:?}");
             assert!(q.x.abs() <= 460.0 / 8.0 + 1e-9, "{q:?}");
         }
-        let grid = gap_mesh(&placed, &rail, RailSurface::Prismatic, (0.2, 0.2, false), &mut GapMeshKept::default());
+        let grid =
+            gap_mesh(&placed, &rail, RailSurface::Prismatic, (0.2, 0.2, false), &mut GapMeshKept::default()).unwrap();
         let locus = search::deepest_mm(&search::scan(&placed, &search::RailMesh::new(&rail, 0.2))).unwrap();
         let (ours, locus_gap) = (grid.gap_min_mm(), -locus);
         // Measured 1.6e-4 mm apart (-0.028972 against -0.028809): the bilinear wheel between slices
@@ -502,8 +505,9 @@ mod tests {
         let (n6, nodes6) = round_local(&placed, 0.2, true);
         assert_eq!((n5, n6), (385, 745));
         assert!((reach(&nodes5) - 460.0 / 8.0).abs() < 1e-9 && (reach(&nodes6) - 0.242 * 460.0).abs() < 1e-9);
-        let mesh =
-            |steep| gap_mesh(&placed, &rail, RailSurface::Prismatic, (0.2, 0.2, steep), &mut GapMeshKept::default());
+        let mesh = |steep| {
+            gap_mesh(&placed, &rail, RailSurface::Prismatic, (0.2, 0.2, steep), &mut GapMeshKept::default()).unwrap()
+        };
         let (coarse, steep) = (mesh(false), mesh(true));
         assert!((coarse.dy_mm - 0.15).abs() < 1e-12 && (steep.dy_mm - 0.06).abs() < 1e-12);
         assert_eq!(steep.nx, 745);

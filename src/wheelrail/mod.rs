@@ -596,8 +596,7 @@ fn uses_grid(case: &WheelRailCase) -> bool {
     case.search.is_grid() || case.wheel_slices.is_some()
 }
 
-/// The grid search's gap mesh of the case with the wheel placed as `wheel` ([`brute::gap_mesh`]),
-/// refused beyond [`MAX_GAP_MESH_POINTS`] before it is made.
+/// The grid search's gap mesh of the case with the wheel placed as `wheel` ([`brute::gap_mesh`]).
 fn grid(
     case: &WheelRailCase,
     wheel: &PlacedWheel,
@@ -605,10 +604,6 @@ fn grid(
     setup: &RailSetup,
 ) -> Result<brute::GapMesh, WheelRailError> {
     let steep = case.search == ContactSearch::GridSteep;
-    let [slices, lateral] = brute::mesh_size(wheel, rail, (case.dx_mm, case.ds_mm, steep));
-    if slices.saturating_mul(lateral) > MAX_GAP_MESH_POINTS {
-        return Err(WheelRailError::GapMeshTooLarge { slices, lateral, limit: MAX_GAP_MESH_POINTS });
-    }
     // A poisoned lock held heights of a mesh made whole before the panic: still good.
     let mut kept = setup.grid_heights.lock().unwrap_or_else(|e| e.into_inner());
     let surface = match (&case.rail_slices, &case.roller) {
@@ -616,7 +611,7 @@ fn grid(
         (None, Some(r)) => brute::RailSurface::Roller(r),
         (None, None) => brute::RailSurface::Prismatic,
     };
-    Ok(brute::gap_mesh(wheel, rail, surface, (case.dx_mm, case.ds_mm, steep), &mut kept))
+    brute::gap_mesh(wheel, rail, surface, (case.dx_mm, case.ds_mm, steep), &mut kept)
 }
 
 /// The patches' geometry with the wheel placed as `wheel`.
