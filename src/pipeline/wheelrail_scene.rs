@@ -175,7 +175,9 @@ pub fn run_scene(scene: &WheelRailScene) -> Result<SceneRun, Error> {
         let cases = scene.cases.iter().map(|r| r.contact_case).zip(results).collect();
         return Ok(SceneRun { name: scene.name.clone(), models, cases });
     }
-    let cases = scene
+    // Every case's outcome in the table's order, so that a failure names the first failing case
+    // whatever the threads' timing (rayon's collect into a Result keeps whichever failed first).
+    let outcomes: Vec<Result<_, Error>> = scene
         .cases
         .par_iter()
         .map(|row| {
@@ -190,7 +192,8 @@ pub fn run_scene(scene: &WheelRailScene) -> Result<SceneRun, Error> {
             };
             solved.map(|r| (row.contact_case, r)).map_err(|e| in_case(&scene.name, row, e))
         })
-        .collect::<Result<Vec<_>, _>>()?;
+        .collect();
+    let cases = outcomes.into_iter().collect::<Result<Vec<_>, _>>()?;
     Ok(SceneRun { name: scene.name.clone(), models, cases })
 }
 
