@@ -60,7 +60,7 @@ pub fn merge(
     extra.extend(owed_by_scenes(&scenes, &merged_suites)?);
     note_wheelrail_not_merged(suites_given)?;
     let fits = read_fit_records(dirs)?;
-    survey_decks(&mut refs);
+    survey_decks(&mut refs, DeckLists::of(&scenes, &[]));
     let judging = Judging { golden: Some(golden), rules: &rules, extra, suites: &suite_of(&scenes, &[]) };
     let (md, findings, _) =
         report_with_findings(&scenes, &refs, report_dir, judging, Drawn { fits: &fits, wheelrail: None })?;

@@ -60,8 +60,8 @@ use suite_run::{attach_wheelrail, run_suite, wheelrail_findings, SuiteFiles, Sui
 /// The importer's verdict on every case of CONTACT's public decks, attached to the sets
 /// `contact_public` and `contact_wheelrail` for the report's lists of them (the import stage sits
 /// above comparison and report, so the survey is made here and passed down). Only a command that
-/// writes a report asks for it: it imports every deck.
-fn survey_decks(refs: &mut References) {
+/// writes a report asks for it, and only for the lists its report shows: it imports every deck.
+fn survey_decks(refs: &mut References, lists: DeckLists) {
     use crate::comparison::references::contact_public::{CaseSurvey, PublicCases, Survey, AGAINST};
     let survey = |inp: &Path, modules: &[u8]| match crate::import::contact::survey(inp) {
         Ok(cases) => Survey::Cases(
@@ -73,12 +73,29 @@ fn survey_decks(refs: &mut References) {
         ),
         Err(e) => Survey::Unread(e.to_string()),
     };
-    if let Some(public) = refs.get_mut::<PublicCases>(AGAINST) {
+    if let (true, Some(public)) = (lists.public, refs.get_mut::<PublicCases>(AGAINST)) {
         public.attach_survey(|inp| survey(inp, &[1, 3]));
     }
     // The module-1 decks: their module-1 cases only.
-    if let Some(wr) = refs.get_mut::<WheelRailCases>(wheelrail_cases::AGAINST) {
+    if let (true, Some(wr)) = (lists.wheelrail, refs.get_mut::<WheelRailCases>(wheelrail_cases::AGAINST)) {
         wr.attach_survey(|inp| survey(inp, &[1]));
+    }
+}
+
+/// Which lists of CONTACT's decks a report shows: each only when the run holds a scene imported
+/// from a deck of its kind (`report::contact_public::applies`, `report::contact_wheelrail::applies`);
+/// the public list's module-1 rows read the wheel–rail survey, so that list needs both.
+#[derive(Clone, Copy)]
+struct DeckLists {
+    public: bool,
+    wheelrail: bool,
+}
+
+impl DeckLists {
+    /// The lists of a report of `stored` module-3 scenes and `wheelrail` scenes.
+    fn of(stored: &[StoredScene], wheelrail: &[(WheelRailScene, SceneRun)]) -> Self {
+        let public = report::contact_public::applies(stored);
+        DeckLists { public, wheelrail: public || wheelrail.iter().any(|(s, _)| s.origin.is_some()) }
     }
 }
 

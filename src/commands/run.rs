@@ -107,7 +107,6 @@ pub fn run_with(
     if shard.is_some() {
         return Ok(outcome);
     }
-    survey_decks(&mut refs);
     let fitted = match fit_specs {
         Some(specs) => {
             run_fits(&specs, &refs, results_dir, (&scenes, &suite::scene_files(suite_dir, None)?))?;
@@ -118,6 +117,7 @@ pub fn run_with(
     outcome.ignored_fits = other_runs_fits(results_dir, &fitted);
     // This run's scenes read back as stored (the numbers `merge` would show), and only those.
     let stored = ran.iter().map(|name| results::read_scene(results_dir, name)).collect::<Result<Vec<_>, _>>()?;
+    survey_decks(&mut refs, DeckLists::of(&stored, &wheelrail));
     let records = read_run_fits(results_dir, &fitted)?;
     let rules = file_rules(&[], suite_dir)?;
     let wheelrail_found = wheelrail_findings(&refs, &wheelrail);
