@@ -853,7 +853,7 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         name: "influence functions corrected for conformal contact (Blanco) on planar patches",
         control: "C3, IF_METH, VARIANT, D",
         supported: false,
-        reason: "supported: C3 = 4 with VARIANT 1-4 and IF_METH 0 or 1 on the conformal approach (D = 4); a planar patch (D = 2, 3, 5) has no row inclinations (its rows are all in one tangent plane), and IF_METH or VARIANT outside CONTACT's ranges are refused by CONTACT itself",
+        reason: "supported: C3 = 4 with VARIANT 1-4 and IF_METH 0 or 1 on the conformal approach (D = 4); a planar patch (D = 2, 3, 5) has no row inclinations (its rows are all in one tangent plane), and CONTACT has no result to match: its build (gfortran, d431cdb) stops with a segmentation fault in the first case of the Manchester deck `mbench_a22_left` with C3 = 4 (IF_METH 1, VARIANT 3) on D = 2, which it solves with C3 = 2; IF_METH or VARIANT outside CONTACT's ranges are refused by CONTACT itself",
         used: |c| blanco_used(c, false),
     },
     WheelRailRow {
