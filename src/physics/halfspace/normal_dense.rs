@@ -37,10 +37,21 @@ impl Dense {
         (!symmetric).then(|| Dense { mx: kernel.mx, zz: kernel.clone() })
     }
 
-    /// `A[a][b]` between flat elements `a` (field) and `b` (source).
-    fn at(&self, a: usize, b: usize) -> f64 {
-        let (ia, ja, ib, jb) = (a % self.mx, a / self.mx, b % self.mx, b / self.mx);
-        self.zz.zz[self.zz.index(ia as isize - ib as isize, ja as isize - jb as isize)]
+    /// The position of flat element `k` in the kernel's rows of `2 mx − 1` offsets: `A[a][b]` between
+    /// field `a` and source `b` is `zz[self.place(a) + self.centre() − self.place(b)]`.
+    fn place(&self, k: usize) -> usize {
+        (k / self.mx) * self.zz.nkx() + k % self.mx
+    }
+
+    /// The index of offset (0, 0) in the kernel.
+    fn centre(&self) -> usize {
+        self.zz.index(0, 0)
+    }
+
+    /// The row of `A` of field element `a` over the sources whose places ([`Dense::place`]) are `sources`.
+    fn row<'a>(&'a self, a: usize, sources: &'a [usize]) -> impl Iterator<Item = f64> + 'a {
+        let base = self.place(a) + self.centre();
+        sources.iter().map(move |&s| self.zz.zz[base - s])
     }
 
     /// The pressure [MPa] for the undeformed distance `h_mm` with the total force `fn_n` [N] on
@@ -73,11 +84,12 @@ impl Dense {
             // Overlap outside the set, relative to the undeformed distance's scale.
             let tol = 1e-12 * hscale.max(delta.abs());
             let mut worst = 0.0f64;
+            let places: Vec<usize> = idx.iter().map(|&b| self.place(b)).collect();
             for k in 0..n {
                 if set[k] {
                     continue;
                 }
-                let e = h_mm[k] - delta + idx.iter().map(|&b| self.at(k, b) * p[b]).sum::<f64>();
+                let e = h_mm[k] - delta + self.row(k, &places).zip(&idx).map(|(a, &b)| a * p[b]).sum::<f64>();
                 if e < -tol {
                     set[k] = true;
                 }
@@ -99,8 +111,11 @@ impl Dense {
         p: &mut [f64],
     ) -> Result<f64, ContactError> {
         let m = idx.len();
-        let mut a: Vec<f64> =
-            idx.iter().flat_map(|&r| idx.iter().map(move |&c| (r, c))).map(|(r, c)| self.at(r, c)).collect();
+        let places: Vec<usize> = idx.iter().map(|&c| self.place(c)).collect();
+        let mut a: Vec<f64> = Vec::with_capacity(m * m);
+        for &r in idx {
+            a.extend(self.row(r, &places));
+        }
         let lu = Lu::factor(&mut a, m).ok_or(ContactError::NonFinite("normal problem: singular influence matrix"))?;
         // p = v + δ u with A u = 1, A v = −h.
         let mut v: Vec<f64> = idx.iter().map(|&k| -h_mm[k]).collect();
