@@ -8,6 +8,7 @@
 //! (Press et al., "Numerical Recipes", sec. 13.1, convolution by FFT with zero padding).
 //! The tangential pair is transformed as one complex field `px + i py` (two real FFTs for one).
 
+use super::direct;
 use super::influence::Kernel;
 use super::real_fft::RealFft2;
 use super::ContactError;
@@ -384,6 +385,8 @@ pub struct Convolver {
     kxx: Vec<f64>,
     kyy: Vec<f64>,
     kxy: Vec<f64>,
+    /// Whether any `Axy` coefficient is nonzero (the direct path skips them otherwise).
+    xy_coupled: bool,
     active: Vec<usize>,
     fft: Option<FftData<f64>>,
     /// Single-precision copy used instead of `fft` by [`Convolver::tangential`] (preconditioner).
@@ -420,6 +423,7 @@ impl Convolver {
             kxx: coefficients(&kernel.xx),
             kyy: coefficients(&kernel.yy),
             kxy: coefficients(&kernel.xy),
+            xy_coupled: kernel.xy.iter().any(|&v| v != 0.0),
             active: Vec::with_capacity(if direct { mx * my } else { 0 }),
             fft,
             fft32: None,
@@ -462,6 +466,7 @@ impl Convolver {
             kxx: self.kxx.clone(),
             kyy: self.kyy.clone(),
             kxy: self.kxy.clone(),
+            xy_coupled: self.xy_coupled,
             active: self.active.clone(),
             fft: None,
             fft32: self.fft.as_ref().map(FftData::to_f32),
@@ -518,6 +523,11 @@ impl Convolver {
         self.path
     }
 
+    /// The grid shape of the direct path's products.
+    fn shape(&self) -> direct::Shape {
+        direct::Shape { mx: self.mx, my: self.my, nkx: self.nkx }
+    }
+
     /// Every array must have `mx*my` entries, and so must the mask if given.
     fn check(&self, arrays: &[(&'static str, &[f64])], mask: Option<&[bool]>) -> Result<(), ContactError> {
         let n = self.mx * self.my;
@@ -545,20 +555,7 @@ impl Convolver {
         match self.path {
             ConvPath::Direct => {
                 self.collect_active(mask, |k| p[k] != 0.0);
-                u.iter_mut().for_each(|v| *v = 0.0);
-                let (mx, my, nkx) = (self.mx, self.my, self.nkx);
-                for &k in &self.active {
-                    let (ii, jj) = (k % mx, k / mx);
-                    let pk = p[k];
-                    for j in 0..my {
-                        let base = (j + my - 1 - jj) * nkx + (mx - 1 - ii);
-                        let krow = &self.kzz[base..base + mx];
-                        let urow = &mut u[j * mx..(j + 1) * mx];
-                        for (uv, kv) in urow.iter_mut().zip(krow) {
-                            *uv += kv * pk;
-                        }
-                    }
-                }
+                direct::normal(self.shape(), &self.kzz, &self.active, p, u);
             }
             ConvPath::Fft => self.fft_normal(p, mask, u, false)?,
         }
@@ -610,25 +607,9 @@ impl Convolver {
         match self.path {
             ConvPath::Direct => {
                 self.collect_active(mask, |k| px[k] != 0.0 || py[k] != 0.0);
-                ux.iter_mut().for_each(|v| *v = 0.0);
-                uy.iter_mut().for_each(|v| *v = 0.0);
-                let (mx, my, nkx) = (self.mx, self.my, self.nkx);
-                for &k in &self.active {
-                    let (ii, jj) = (k % mx, k / mx);
-                    let (sx, sy) = (px[k], py[k]);
-                    for j in 0..my {
-                        let base = (j + my - 1 - jj) * nkx + (mx - 1 - ii);
-                        let kxx = &self.kxx[base..base + mx];
-                        let kxy = &self.kxy[base..base + mx];
-                        let kyy = &self.kyy[base..base + mx];
-                        let uxr = &mut ux[j * mx..(j + 1) * mx];
-                        let uyr = &mut uy[j * mx..(j + 1) * mx];
-                        for i in 0..mx {
-                            uxr[i] += kxx[i] * sx + kxy[i] * sy;
-                            uyr[i] += kxy[i] * sx + kyy[i] * sy;
-                        }
-                    }
-                }
+                let kxy = self.xy_coupled.then_some(&self.kxy[..]);
+                let pair = direct::Pair { kxx: &self.kxx, kyy: &self.kyy, kxy };
+                direct::tangential(self.shape(), &pair, &self.active, (px, py), (ux, uy));
             }
             ConvPath::Fft => {
                 let (mx, my) = (self.mx, self.my);

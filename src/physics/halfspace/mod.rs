@@ -1,6 +1,6 @@
 //! The elastic half-space on the element grid, shared by every solver: influence coefficients of
 //! uniformly loaded rectangles ([`influence`], kept per element size and material by offset in
-//! `table.rs`) or bilinear tractions ([`bilinear`]), an interface layer in series ([`layer`]), u = A p by direct sums or FFT ([`convolution`]),
+//! `table.rs`) or bilinear tractions ([`bilinear`]), an interface layer in series ([`layer`]), u = A p by direct sums (`direct.rs`) or FFT ([`convolution`]),
 //! viscoelastic bodies' memory in steady rolling ([`visco`]),
 //! and the normal contact problem for a prescribed FN or approach on any undeformed distance ([`normal`]),
 //! whose pressure the exact solver uses and the simplified models take on non-Hertzian contacts.
@@ -10,6 +10,7 @@ pub mod blanco;
 pub mod blend;
 pub mod convolution;
 pub mod coupling;
+mod direct;
 pub mod influence;
 pub mod invariants;
 pub mod jet;

@@ -8,6 +8,7 @@
 
 use super::influence::Kernel;
 use super::ContactError;
+use crate::simd::with_avx2;
 
 /// Most changes of the contact set.
 const MAX_SETS: usize = 500;
@@ -36,10 +37,21 @@ impl Dense {
         (!symmetric).then(|| Dense { mx: kernel.mx, zz: kernel.clone() })
     }
 
-    /// `A[a][b]` between flat elements `a` (field) and `b` (source).
-    fn at(&self, a: usize, b: usize) -> f64 {
-        let (ia, ja, ib, jb) = (a % self.mx, a / self.mx, b % self.mx, b / self.mx);
-        self.zz.zz[self.zz.index(ia as isize - ib as isize, ja as isize - jb as isize)]
+    /// The position of flat element `k` in the kernel's rows of `2 mx − 1` offsets: `A[a][b]` between
+    /// field `a` and source `b` is `zz[self.place(a) + self.centre() − self.place(b)]`.
+    fn place(&self, k: usize) -> usize {
+        (k / self.mx) * self.zz.nkx() + k % self.mx
+    }
+
+    /// The index of offset (0, 0) in the kernel.
+    fn centre(&self) -> usize {
+        self.zz.index(0, 0)
+    }
+
+    /// The row of `A` of field element `a` over the sources whose places ([`Dense::place`]) are `sources`.
+    fn row<'a>(&'a self, a: usize, sources: &'a [usize]) -> impl Iterator<Item = f64> + 'a {
+        let base = self.place(a) + self.centre();
+        sources.iter().map(move |&s| self.zz.zz[base - s])
     }
 
     /// The pressure [MPa] for the undeformed distance `h_mm` with the total force `fn_n` [N] on
@@ -72,11 +84,12 @@ impl Dense {
             // Overlap outside the set, relative to the undeformed distance's scale.
             let tol = 1e-12 * hscale.max(delta.abs());
             let mut worst = 0.0f64;
+            let places: Vec<usize> = idx.iter().map(|&b| self.place(b)).collect();
             for k in 0..n {
                 if set[k] {
                     continue;
                 }
-                let e = h_mm[k] - delta + idx.iter().map(|&b| self.at(k, b) * p[b]).sum::<f64>();
+                let e = h_mm[k] - delta + self.row(k, &places).zip(&idx).map(|(a, &b)| a * p[b]).sum::<f64>();
                 if e < -tol {
                     set[k] = true;
                 }
@@ -98,8 +111,11 @@ impl Dense {
         p: &mut [f64],
     ) -> Result<f64, ContactError> {
         let m = idx.len();
-        let mut a: Vec<f64> =
-            idx.iter().flat_map(|&r| idx.iter().map(move |&c| (r, c))).map(|(r, c)| self.at(r, c)).collect();
+        let places: Vec<usize> = idx.iter().map(|&c| self.place(c)).collect();
+        let mut a: Vec<f64> = Vec::with_capacity(m * m);
+        for &r in idx {
+            a.extend(self.row(r, &places));
+        }
         let lu = Lu::factor(&mut a, m).ok_or(ContactError::NonFinite("normal problem: singular influence matrix"))?;
         // p = v + δ u with A u = 1, A v = −h.
         let mut v: Vec<f64> = idx.iter().map(|&k| -h_mm[k]).collect();
@@ -133,7 +149,19 @@ struct Lu {
 }
 
 impl Lu {
+    /// The factors of `a` (overwritten), or `None` if a pivot is zero or not finite; compiled for
+    /// AVX2 where the CPU has it ([`with_avx2`]: the same operations in the same order, bit for bit
+    /// the same factors).
     fn factor(a: &mut [f64], m: usize) -> Option<Lu> {
+        with_avx2(
+            #[inline(always)]
+            || Lu::factor_in_place(a, m),
+        )
+    }
+
+    /// [`Lu::factor`]'s elimination (Doolittle, partial pivoting by rows).
+    #[inline(always)]
+    fn factor_in_place(a: &mut [f64], m: usize) -> Option<Lu> {
         let mut pivot = vec![0; m];
         for c in 0..m {
             let r = (c..m).max_by(|&x, &y| a[x * m + c].abs().total_cmp(&a[y * m + c].abs()))?;
@@ -147,12 +175,14 @@ impl Lu {
                 }
             }
             let d = a[c * m + c];
-            for r in c + 1..m {
-                let f = a[r * m + c] / d;
-                a[r * m + c] = f;
+            let (upper, lower) = a.split_at_mut((c + 1) * m);
+            let pivot_row = &upper[c * m + c + 1..(c + 1) * m];
+            for row in lower.chunks_exact_mut(m) {
+                let f = row[c] / d;
+                row[c] = f;
                 if f != 0.0 {
-                    for j in c + 1..m {
-                        a[r * m + j] -= f * a[c * m + j];
+                    for (x, p) in row[c + 1..].iter_mut().zip(pivot_row) {
+                        *x -= f * p;
                     }
                 }
             }

@@ -42,6 +42,10 @@ pub struct Hardening {
     self_flexibility_mm_per_mpa: f64,
     /// Stop when max|τc_new − τc| ≤ tolerance · max τc.
     tolerance: f64,
+    /// The last step's limits where they stood before [`Hardening::carry`] moved them with the
+    /// material: the next rolling step's first iterate in a hardening layer (the limits stand
+    /// still in the contact frame in steady state, so that near it they are close to its solution).
+    uncarried_mpa: Option<Vec<f64>>,
 }
 
 /// The step's tractions, the yield limits its slip gives, how the fixed point ended.
@@ -51,7 +55,7 @@ impl Hardening {
     /// A layer with a yield limit (τ_c0 on every element) on a grid of `n` elements.
     pub fn new(layer: Layer, n: usize, self_flexibility_mm_per_mpa: f64, tolerance: f64) -> Option<Hardening> {
         let tau_c0 = layer.yield_mpa.filter(|_| layer.hardens())?;
-        Some(Hardening { layer, tau_mpa: vec![tau_c0; n], self_flexibility_mm_per_mpa, tolerance })
+        Some(Hardening { layer, tau_mpa: vec![tau_c0; n], self_flexibility_mm_per_mpa, tolerance, uncarried_mpa: None })
     }
 
     /// The yield limits after the last step [MPa].
@@ -82,6 +86,7 @@ impl Hardening {
     /// Keeps `tau_mpa` (a step's, [`Hardening::step`]) as the next step's previous limits.
     pub fn keep(&mut self, tau_mpa: Vec<f64>) {
         self.tau_mpa = tau_mpa;
+        self.uncarried_mpa = None;
     }
 
     /// Moves the kept limits with the material before a transient rolling step of `courant` =
@@ -91,7 +96,27 @@ impl Hardening {
     /// `taucs` to `taucv` (`m_sdis.f90`, `gf3_dq_shift` with TAU_C0 outside).
     pub fn carry(&mut self, mx: usize, courant: f64) {
         let tau_c0 = self.layer.yield_mpa.unwrap_or(f64::INFINITY);
-        self.tau_mpa = carried(&self.tau_mpa, mx, courant, tau_c0);
+        let moved = carried(&self.tau_mpa, mx, courant, tau_c0);
+        self.uncarried_mpa = Some(std::mem::replace(&mut self.tau_mpa, moved));
+    }
+
+    /// The fixed point's first iterate of a step on the friction bound μ `pn`: in a hardening
+    /// layer after [`Hardening::carry`], the limits before they were carried, each kept where the
+    /// step's plastic slip can take it from its previous limit ([`Layer::reachable_mpa`]); else the
+    /// previous limits. The fixed point is the same from either start (a hardening layer's is
+    /// unique: the plastic slip falls as the limit rises); a rolling step near steady state starts
+    /// near it.
+    fn first_iterate(&self, pn: &[f64], mu: f64) -> Vec<f64> {
+        let previous = &self.tau_mpa;
+        match &self.uncarried_mpa {
+            Some(guess) if self.layer.hardening_mpa_per_mm > 0.0 => (0..pn.len())
+                .map(|k| match pn[k] > 0.0 {
+                    true => self.layer.reachable_mpa(previous[k], mu * pn[k], guess[k]),
+                    false => previous[k],
+                })
+                .collect(),
+            _ => previous.clone(),
+        }
     }
 
     /// One step on the friction bound's pressure `pn` [MPa] at μ `mu`: `solve(bound, start,
@@ -112,7 +137,7 @@ impl Hardening {
     ) -> Result<HardeningStep, ContactError> {
         let n = pn.len();
         let previous = &self.tau_mpa;
-        let mut tau = previous.clone();
+        let mut tau = self.first_iterate(pn, mu);
         let mut bound = vec![0.0; n];
         let mut last: Option<StepResult> = None;
         let (mut inner, mut last_change) = (0, None);
