@@ -119,8 +119,11 @@ struct FftData<T: Real> {
 
 impl FftData<f64> {
     fn new(kernel: &Kernel, nx: usize, ny: usize) -> FftData<f64> {
-        let mut d = FftData::new_tangential(kernel, nx, ny);
-        d.szz = d.kernel_spectrum(kernel, &kernel.zz, 1.0 / (nx * ny) as f64);
+        let mut d = FftData::<f64>::empty(nx, ny);
+        let scale = 1.0 / (nx * ny) as f64;
+        (d.sxx, d.syy) = d.kernel_spectra(kernel, (&kernel.xx, &kernel.yy), scale);
+        (d.sxy, d.szz) = d.kernel_spectra(kernel, (&kernel.xy, &kernel.zz), scale);
+        d.pack_pair();
         d
     }
 
@@ -128,11 +131,25 @@ impl FftData<f64> {
     fn new_tangential(kernel: &Kernel, nx: usize, ny: usize) -> FftData<f64> {
         let mut d = FftData::<f64>::empty(nx, ny);
         let scale = 1.0 / (nx * ny) as f64;
-        d.sxx = d.kernel_spectrum(kernel, &kernel.xx, scale);
-        d.syy = d.kernel_spectrum(kernel, &kernel.yy, scale);
+        (d.sxx, d.syy) = d.kernel_spectra(kernel, (&kernel.xx, &kernel.yy), scale);
         d.sxy = d.kernel_spectrum(kernel, &kernel.xy, scale);
         d.pack_pair();
         d
+    }
+
+    /// [`FftData::new_tangential`] of two kernels of one grid (`k0` and `ks`, checked by the
+    /// caller to share `mx`, `my`), each component's pair in one complex transform: three
+    /// transforms for the six real kernels.
+    fn new_tangential_pair(k0: &Kernel, ks: &Kernel, nx: usize, ny: usize) -> (FftData<f64>, FftData<f64>) {
+        let mut d0 = FftData::<f64>::empty(nx, ny);
+        let mut ds = d0.sibling();
+        let scale = 1.0 / (nx * ny) as f64;
+        (d0.sxx, d0.syy) = d0.kernel_spectra(k0, (&k0.xx, &k0.yy), scale);
+        (ds.sxx, ds.syy) = d0.kernel_spectra(k0, (&ks.xx, &ks.yy), scale);
+        (d0.sxy, ds.sxy) = d0.kernel_spectra(k0, (&k0.xy, &ks.xy), scale);
+        d0.pack_pair();
+        ds.pack_pair();
+        (d0, ds)
     }
 
     /// The spectra of the difference of this transform's kernel and `other`'s (the same lengths):
@@ -172,6 +189,28 @@ impl FftData<f64> {
 
     /// Spectrum of one kernel component placed circularly (offset `d` added at index `d mod n`).
     fn kernel_spectrum(&mut self, kernel: &Kernel, comp: &[f64], scale: f64) -> Vec<Complex<f64>> {
+        self.place(kernel, comp, None, scale);
+        self.transform_placed();
+        self.buft.clone()
+    }
+
+    /// The spectra of two real kernel components of `kernel`'s layout by one complex transform
+    /// (Press et al., "Numerical Recipes", 3rd ed., sec. 12.3.1): `Z = F(a + i b)`, then
+    /// `F(a)(k) = (Z(k) + conj Z(-k)) / 2` and `F(b)(k) = (Z(k) - conj Z(-k)) / (2i)`.
+    fn kernel_spectra(
+        &mut self,
+        kernel: &Kernel,
+        (a, b): (&[f64], &[f64]),
+        scale: f64,
+    ) -> (Vec<Complex<f64>>, Vec<Complex<f64>>) {
+        self.place(kernel, a, Some(b), scale);
+        self.transform_placed();
+        split_pair(&self.buft, self.nx, self.ny)
+    }
+
+    /// Places the components `re` (and `im`, the imaginary part, where given) of `kernel`'s
+    /// layout circularly into `buf`, scaled by `scale`.
+    fn place(&mut self, kernel: &Kernel, re: &[f64], im: Option<&[f64]>, scale: f64) {
         let (mx, my, nx, ny) = (kernel.mx, kernel.my, self.nx, self.ny);
         let zero = Complex::new(0.0, 0.0);
         self.buf.iter_mut().for_each(|c| *c = zero);
@@ -179,25 +218,44 @@ impl FftData<f64> {
             let row = dj.rem_euclid(ny as isize) as usize;
             for di in -(mx as isize - 1)..=(mx as isize - 1) {
                 let col = di.rem_euclid(nx as isize) as usize;
-                self.buf[row * nx + col] += Complex::new(comp[kernel.index(di, dj)] * scale, 0.0);
+                let k = kernel.index(di, dj);
+                let v = Complex::new(re[k] * scale, im.map_or(0.0, |im| im[k] * scale));
+                self.buf[row * nx + col] += v;
             }
         }
+    }
+
+    /// The forward 2-D transform of all of `buf` into `buft` (layout `[kx][ky]`).
+    fn transform_placed(&mut self) {
+        let (nx, ny) = (self.nx, self.ny);
         self.fwd_x.process_with_scratch(&mut self.buf, &mut self.scratch);
         transpose(&self.buf, &mut self.buft, nx, ny, ny);
         self.fwd_y.process_with_scratch(&mut self.buft, &mut self.scratch);
-        self.buft.clone()
     }
 
     /// The field at every offset of the period, row-major `[y][x]`, from a spectrum stored like
     /// the kernel spectra (layout `[kx][ky]`, scaled by `1/(nx*ny)`): the unnormalised inverse
     /// 2-D transform, real part.
     fn real_space(&mut self, spectrum: &[Complex<f64>]) -> Vec<f64> {
+        self.inverse_all(spectrum.iter().copied());
+        self.buf.iter().map(|c| c.re).collect()
+    }
+
+    /// [`FftData::real_space`] of two spectra whose fields are real (`a`, `b` Hermitian) by one
+    /// inverse transform of `a + i b`: the real part is `a`'s field, the imaginary part `b`'s.
+    fn real_space_pair(&mut self, a: &[Complex<f64>], b: &[Complex<f64>]) -> (Vec<f64>, Vec<f64>) {
+        let i = Complex::new(0.0, 1.0);
+        self.inverse_all(a.iter().zip(b).map(|(a, b)| a + i * b));
+        (self.buf.iter().map(|c| c.re).collect(), self.buf.iter().map(|c| c.im).collect())
+    }
+
+    /// The unnormalised inverse 2-D transform of `spectrum` (layout `[kx][ky]`) into `buf`.
+    fn inverse_all(&mut self, spectrum: impl Iterator<Item = Complex<f64>>) {
         let (nx, ny) = (self.nx, self.ny);
-        self.buft.copy_from_slice(spectrum);
+        self.buft.iter_mut().zip(spectrum).for_each(|(c, s)| *c = s);
         self.inv_y.process_with_scratch(&mut self.buft, &mut self.scratch);
         transpose(&self.buft, &mut self.buf, ny, nx, nx);
         self.inv_x.process_with_scratch(&mut self.buf, &mut self.scratch);
-        self.buf.iter().map(|c| c.re).collect()
     }
 
     /// The same operator in single precision (plans, spectra and buffers in `f32`).
@@ -223,6 +281,31 @@ fn fft_len_y(my: usize) -> usize {
 }
 
 impl<T: Real> FftData<T> {
+    /// An [`FftData::empty`] of the same lengths sharing this one's plans (not planned again).
+    fn sibling(&self) -> FftData<T> {
+        let zero = Complex::new(T::zero(), T::zero());
+        let n = self.nx * self.ny;
+        FftData {
+            szz: Vec::new(),
+            szz_inv: Vec::new(),
+            sxx: Vec::new(),
+            syy: Vec::new(),
+            sxy: Vec::new(),
+            salpha: Vec::new(),
+            sbeta: Vec::new(),
+            buf: vec![zero; n],
+            buft: vec![zero; n],
+            buft2: vec![zero; n],
+            scratch: vec![zero; self.scratch.len()],
+            nx: self.nx,
+            ny: self.ny,
+            fwd_x: Arc::clone(&self.fwd_x),
+            inv_x: Arc::clone(&self.inv_x),
+            fwd_y: Arc::clone(&self.fwd_y),
+            inv_y: Arc::clone(&self.inv_y),
+        }
+    }
+
     /// Plans and zeroed work buffers for `nx x ny` transforms; no spectra yet.
     fn empty(nx: usize, ny: usize) -> FftData<T> {
         let mut planner = FftPlanner::<T>::new();
@@ -325,8 +408,9 @@ fn periodic_inverse(kernel: &Kernel) -> Result<Kernel, ContactError> {
         f.sxy[idx] = Complex::new(-scale * scale * b / det, 0.0);
     }
     let (sxx, syy, sxy) = (std::mem::take(&mut f.sxx), std::mem::take(&mut f.syy), std::mem::take(&mut f.sxy));
-    let mut at_offsets = |spectrum: Vec<Complex<f64>>| {
-        let periodic = f.real_space(&spectrum);
+    let (xx, yy) = f.real_space_pair(&sxx, &syy);
+    let xy = f.real_space(&sxy);
+    let at_offsets = |periodic: Vec<f64>| {
         let mut out = vec![0.0; (2 * mx - 1) * (2 * my - 1)];
         for dj in -(my as isize - 1)..=(my as isize - 1) {
             let row = dj.rem_euclid(py as isize) as usize;
@@ -343,9 +427,9 @@ fn periodic_inverse(kernel: &Kernel) -> Result<Kernel, ContactError> {
         dy_mm: kernel.dy_mm,
         shift_mm: kernel.shift_mm,
         zz: vec![0.0; (2 * mx - 1) * (2 * my - 1)],
-        xx: at_offsets(sxx),
-        yy: at_offsets(syy),
-        xy: at_offsets(sxy),
+        xx: at_offsets(xx),
+        yy: at_offsets(yy),
+        xy: at_offsets(xy),
     })
 }
 
@@ -355,6 +439,23 @@ fn inverse_spectrum(s: &[Complex<f64>], n: usize) -> Vec<Complex<f64>> {
     let scale = 1.0 / n as f64;
     let floor = 1e-3 * s.iter().fold(0.0f64, |m, v| m.max(v.re));
     s.iter().map(|v| Complex::new(scale * scale / v.re.max(floor), 0.0)).collect()
+}
+
+/// The spectra `F(a)`, `F(b)` of two real fields from `Z = F(a + i b)` (layout `[kx][ky]`,
+/// `nx x ny`): `F(a)(k) = (Z(k) + conj Z(-k)) / 2`, `F(b)(k) = -i (Z(k) - conj Z(-k)) / 2`.
+fn split_pair(z: &[Complex<f64>], nx: usize, ny: usize) -> (Vec<Complex<f64>>, Vec<Complex<f64>>) {
+    let (mut a, mut b) = (Vec::with_capacity(nx * ny), Vec::with_capacity(nx * ny));
+    for kx in 0..nx {
+        let mkx = (nx - kx) % nx;
+        for ky in 0..ny {
+            let zk = z[kx * ny + ky];
+            let zm = z[mkx * ny + (ny - ky) % ny].conj();
+            a.push((zk + zm) * 0.5);
+            let d = (zk - zm) * 0.5;
+            b.push(Complex::new(d.im, -d.re));
+        }
+    }
+    (a, b)
 }
 
 /// Transposes the first `rows` rows of the row-major `[ny][nx]` array `src` into `dst` laid out
@@ -489,6 +590,23 @@ impl Convolver {
     /// tangential kernels are transformed ([`Convolver::normal`] is refused).
     pub fn tangential_only(kernel: &Kernel) -> Result<Convolver, ContactError> {
         Convolver::with_spectra(kernel, auto_path(kernel.mx, kernel.my), FftData::new_tangential)
+    }
+
+    /// [`Convolver::tangential_only`] of two kernels of one grid (the unshifted and the shifted
+    /// kernel of the tangential problem): on the FFT path each component's pair transformed
+    /// at once (three complex transforms for the six real kernels).
+    pub fn tangential_pair(k0: &Kernel, ks: &Kernel) -> Result<(Convolver, Convolver), ContactError> {
+        check_kernel(k0)?;
+        check_kernel(ks)?;
+        let (mx, my) = (k0.mx, k0.my);
+        if (ks.mx, ks.my) != (mx, my) {
+            return Err(ContactError::GridMismatch { expected: (mx, my), got: (ks.mx, ks.my) });
+        }
+        if auto_path(mx, my) == ConvPath::Direct {
+            return Ok((Convolver::holding(k0, None), Convolver::holding(ks, None)));
+        }
+        let (f0, fs) = FftData::new_tangential_pair(k0, ks, fft_len(2 * mx - 1), fft_len_y(my));
+        Ok((Convolver::holding(k0, Some(f0)), Convolver::holding(ks, Some(fs))))
     }
 
     /// Convolver for `kernel` on `path` whose FFT path holds the spectra `spectra` makes alone.
@@ -745,6 +863,31 @@ mod tests {
         compare(30, 17, 0.0);
         compare(22, 22, 0.7);
         compare(13, 29, 0.35);
+    }
+
+    #[test]
+    fn a_pair_of_kernels_transformed_at_once_is_each_transformed_alone() {
+        for (mx, my) in [(22, 22), (30, 17), (13, 1)] {
+            let k0 = Kernel::new(mx, my, 0.7, 0.4, 82000.0, 0.28, 0.0).unwrap();
+            let ks = Kernel::new(mx, my, 0.7, 0.4, 82000.0, 0.28, 0.35).unwrap();
+            let (mut p0, mut ps) = Convolver::tangential_pair(&k0, &ks).unwrap();
+            let n = mx * my;
+            let mut rng = Rng(5 + n as u64);
+            let px: Vec<f64> = (0..n).map(|_| 500.0 * rng.next()).collect();
+            let py: Vec<f64> = (0..n).map(|_| 500.0 * rng.next()).collect();
+            for (k, pair) in [(&k0, &mut p0), (&ks, &mut ps)] {
+                let mut alone = Convolver::new(k, ConvPath::Direct).unwrap();
+                let (mut ax, mut ay, mut bx, mut by) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+                alone.tangential(&px, &py, None, &mut ax, &mut ay).unwrap();
+                pair.tangential(&px, &py, None, &mut bx, &mut by).unwrap();
+                let scale = ax.iter().chain(&ay).fold(0.0f64, |s, v| s.max(v.abs()));
+                let err = ax.iter().zip(&bx).chain(ay.iter().zip(&by)).fold(0.0f64, |s, (x, y)| s.max((x - y).abs()));
+                assert!(err <= 1e-12 * scale, "pair {mx}x{my}: {err} vs {scale}");
+            }
+        }
+        let small = Kernel::new(3, 3, 0.7, 0.4, 82000.0, 0.28, 0.0).unwrap();
+        let other = Kernel::new(4, 3, 0.7, 0.4, 82000.0, 0.28, 0.0).unwrap();
+        assert!(Convolver::tangential_pair(&small, &other).is_err());
     }
 
     #[test]

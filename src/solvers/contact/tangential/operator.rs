@@ -187,8 +187,7 @@ impl Plans {
                 });
             }
         }
-        let conv0 = Convolver::tangential_only(k0)?;
-        let convs = Convolver::tangential_only(ks)?;
+        let (conv0, convs) = Convolver::tangential_pair(k0, ks)?;
         Ok(Plans {
             conv0_f32: conv0.to_single_precision(),
             convd: conv0.minus(&convs, &kd)?,
