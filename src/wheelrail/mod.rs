@@ -746,7 +746,15 @@ fn solve_normal(
     let mut pn_mpa = match (&blanco, start) {
         // Blanco's fixed point starts from the last pressure on this grid size.
         (Some(_), Some(pn)) => pn.to_vec(),
-        _ => solver.solve_approach_from(h_mm, 0.0, &params, start)?.pn_mpa,
+        // No pressure on this grid size yet: a trial height's loose solve of a plane patch of one
+        // region from Hertz's shape over the overlap; else from the overlap itself (the solver's
+        // own start: a full-tolerance solve, such as a prescribed position's, as before bit for bit).
+        _ => {
+            let plane = g.curved.is_none() && g.blend.is_none();
+            let loose = tol > NormalParams::default().tol;
+            let hertz = (start.is_none() && plane && loose).then(|| hertz_start_mpa(h_mm));
+            solver.solve_approach_from(h_mm, 0.0, &params, start.or(hertz.as_deref()))?.pn_mpa
+        }
     };
     if let Some((rows, variant)) = &blanco {
         // The products held apart from the solvers while both are in use.
@@ -765,6 +773,16 @@ fn solve_normal(
     };
     last.clone_from(&pn_mpa);
     Ok((fn_n, pn_mpa))
+}
+
+/// A cold start of the normal problem on the undeformed distance `h_mm` [mm]: Hertz's pressure
+/// shape `√(2 ov − δ)` of the overlap `ov = −h`, `δ` its largest (Johnson, "Contact Mechanics",
+/// sec. 4.2: the contact radius is `√(Rδ)`, the overlap's `√(2Rδ)`, so `1 − r²/a² = (2 ov − δ)/δ`);
+/// unscaled (the solver scales a start by its best factor). Its CG takes about a quarter fewer
+/// iterations than from the overlap itself.
+fn hertz_start_mpa(h_mm: &[f64]) -> Vec<f64> {
+    let pen_mm = h_mm.iter().fold(0.0f64, |m, h| m.max(-h));
+    h_mm.iter().map(|h| (2.0 * (-h).max(0.0) - pen_mm).max(0.0).sqrt()).collect()
 }
 
 /// The pressure of Blanco's corrected normal problem on the distance `h_mm` (with the tangential
