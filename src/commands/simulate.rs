@@ -13,12 +13,15 @@ enum Loaded {
 impl Loaded {
     /// The scene file at `path`, every scene in it validated (`solvers` narrowing its models).
     fn read(path: &Path, solvers: &[String]) -> Result<Loaded, Error> {
-        if let Some(mut wr) = crate::scene::wheelrail::read_if_wheelrail(path)? {
+        // The file read and parsed once for all three readers (wheel–rail, study, scene).
+        let doc = crate::scene::wheelrail::read_scene_doc(path)?;
+        if let Some(mut wr) = crate::scene::wheelrail::wheelrail_of(path, &doc)? {
             narrow(&mut wr, solvers)?;
             return Ok(Loaded::WheelRail(Box::new(wr)));
         }
-        let sources = suite::sources_of_file(path)?;
-        let problems = sources.iter().map(|s| pipeline::load_source(s, solvers)).collect::<Result<Vec<_>, _>>()?;
+        let sources = suite::sources_of_doc(path, Some(&doc))?;
+        let load = |s: &crate::scene::source::SceneSource| pipeline::load_parsed(s, Some(&doc), solvers, &[]);
+        let problems = sources.iter().map(load).collect::<Result<Vec<_>, _>>()?;
         Ok(Loaded::Problems(problems))
     }
 

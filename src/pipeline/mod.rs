@@ -53,11 +53,23 @@ pub fn load_source(source: &SceneSource, only: &[String]) -> Result<Problem, Err
 /// [`load_source`], where the scene may also name the models `in_process` (run in this process,
 /// [`InProcess`]) in its `solvers`.
 pub fn load_source_with(source: &SceneSource, only: &[String], in_process: &[String]) -> Result<Problem, Error> {
+    load_parsed(source, None, only, in_process)
+}
+
+/// [`load_source_with`], where `file` is the scene file already parsed (a source that is the
+/// file itself; `None`: read from its path).
+pub fn load_parsed(
+    source: &SceneSource,
+    file: Option<&toml::Table>,
+    only: &[String],
+    in_process: &[String],
+) -> Result<Problem, Error> {
     let path = &source.path;
     let in_file = |e: InputError| in_source(source, e);
-    let scene = match &source.study {
-        None => Scene::from_file(path),
-        Some((doc, points)) => {
+    let scene = match (&source.study, file) {
+        (None, Some(doc)) => Scene::from_table(doc, &path.parent().map(Path::to_path_buf).unwrap_or_default()),
+        (None, None) => Scene::from_file(path),
+        (Some((doc, points)), _) => {
             let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
             Scene::from_table(doc, &dir).map(|s| Scene { studies: points.clone(), ..s })
         }

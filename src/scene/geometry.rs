@@ -143,12 +143,20 @@ pub(crate) fn read_columns_of(path: &Path, field: &str, choices: &[Vec<&str>]) -
     let names = &choices[choice];
     let mut cols = vec![Vec::new(); names.len()];
     let mut lines = Vec::new();
-    // Byte records (no UTF-8 check of the whole record); the message's place written only for a
-    // message (not per row).
-    for (r, rec) in rdr.byte_records().enumerate() {
-        let row = super::table::line_of(&text, &rec).unwrap_or(r + 2);
+    // Byte records (no UTF-8 check of the whole record) read into one record (not a copy per
+    // row); the message's place written only for a message (not per row).
+    let mut rec = csv::ByteRecord::new();
+    for r in 0.. {
+        let read = rdr.read_byte_record(&mut rec);
+        let at = match &read {
+            Ok(_) => rec.position(),
+            Err(e) => e.position(),
+        };
+        let row = at.and_then(|p| super::table::line_at(&text, p)).unwrap_or(r + 2);
         let line = || format!("{origin} line {row}");
-        let rec = rec.map_err(|e| InputError::new(line(), "malformed", format!("{} numbers ({e})", names.len())))?;
+        if !read.map_err(|e| InputError::new(line(), "malformed", format!("{} numbers ({e})", names.len())))? {
+            break;
+        }
         if rec.len() != names.len() {
             return Err(InputError::new(line(), rec.len(), format!("{} fields", names.len())));
         }

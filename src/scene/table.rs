@@ -377,6 +377,11 @@ pub(super) fn line_of<R: Positioned>(text: &str, rec: &csv::Result<R>) -> Option
         Ok(rec) => rec.at(),
         Err(e) => e.position(),
     }?;
+    line_at(text, position)
+}
+
+/// The 1-based line of `text` a record at `position` starts on ([`line_of`]).
+pub(super) fn line_at(text: &str, position: &csv::Position) -> Option<usize> {
     let rest = text.as_bytes().get(usize::try_from(position.byte()).ok()?..)?;
     let empty_lines = rest.iter().take_while(|b| matches!(b, b'\r' | b'\n')).filter(|&&b| b == b'\n').count();
     Some(position.line() as usize + empty_lines)

@@ -473,14 +473,28 @@ pub fn is_wheelrail(doc: &toml::Table) -> bool {
 /// The wheel–rail scene in `path`, if the file is one (a TOML file with a `[wheelrail]` table);
 /// errors name the file.
 pub fn read_if_wheelrail(path: &Path) -> Result<Option<WheelRailScene>, InputError> {
+    wheelrail_of(path, &read_scene_doc(path)?)
+}
+
+/// The scene file at `path` parsed as TOML (not yet validated); errors name the file.
+pub fn read_scene_doc(path: &Path) -> Result<toml::Table, InputError> {
     let text = super::read_scene_text(path)?;
-    let in_file = |e: InputError| InputError { field: format!("{}: {}", path.display(), e.field), ..e };
-    let doc = parse_toml(&text, "scene").map_err(in_file)?;
-    if !is_wheelrail(&doc) {
+    parse_toml(&text, "scene").map_err(|e| in_file(path, e))
+}
+
+/// The wheel–rail scene of the parsed scene file `doc` read from `path`, if it is one (it has a
+/// `[wheelrail]` table); errors name the file.
+pub fn wheelrail_of(path: &Path, doc: &toml::Table) -> Result<Option<WheelRailScene>, InputError> {
+    if !is_wheelrail(doc) {
         return Ok(None);
     }
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-    WheelRailScene::from_table(&doc, &dir).map(Some).map_err(in_file)
+    WheelRailScene::from_table(doc, &dir).map(Some).map_err(|e| in_file(path, e))
+}
+
+/// `e`, naming the file `path` before its field.
+fn in_file(path: &Path, e: InputError) -> InputError {
+    InputError { field: format!("{}: {}", path.display(), e.field), ..e }
 }
 
 impl WheelRailReport {

@@ -119,17 +119,22 @@ pub fn scene_files(dirs: &[PathBuf], shard: Option<Shard>) -> Result<Vec<SceneSo
 
 /// The scenes of one file: the file itself, or the points of a study file.
 pub fn sources_of_file(path: &Path) -> Result<Vec<SceneSource>, Error> {
-    let stem = path.file_stem().and_then(|n| n.to_str()).unwrap_or("").to_string();
     // A file that does not parse is left to the scene reader, whose message names the place.
     let doc = crate::safety::read::read_text(path, crate::safety::read::SCENE_LIMIT_BYTES, "scene file")
         .ok()
         .and_then(|t| t.parse::<toml::Table>().ok());
+    sources_of_doc(path, doc.as_ref())
+}
+
+/// [`sources_of_file`] of the file at `path` already parsed (`doc`; `None`: it does not parse).
+pub fn sources_of_doc(path: &Path, doc: Option<&toml::Table>) -> Result<Vec<SceneSource>, Error> {
+    let stem = path.file_stem().and_then(|n| n.to_str()).unwrap_or("").to_string();
     let doc = match doc {
-        Some(doc) if study::is_study(&doc) => doc,
+        Some(doc) if study::is_study(doc) => doc,
         other => {
             // One identity for shards, bless and merge: the scene's `name` (its stem when it has
             // none, which the scene reader then refuses).
-            let name = other.as_ref().and_then(|d| d.get("name")).and_then(|v| v.as_str()).map_or(stem, str::to_string);
+            let name = other.and_then(|d| d.get("name")).and_then(|v| v.as_str()).map_or(stem, str::to_string);
             return Ok(vec![SceneSource { path: path.to_path_buf(), name, study: None }]);
         }
     };
@@ -137,7 +142,7 @@ pub fn sources_of_file(path: &Path) -> Result<Vec<SceneSource>, Error> {
         e.field = format!("{}: {}", path.display(), e.field);
         e
     };
-    Ok(pipeline::expand_study(&doc)
+    Ok(pipeline::expand_study(doc)
         .map_err(in_file)?
         .into_iter()
         .map(|p| SceneSource { path: path.to_path_buf(), name: p.name, study: Some((p.doc, vec![p.point])) })
