@@ -753,7 +753,7 @@ fn solve_normal(
             let plane = g.curved.is_none() && g.blend.is_none();
             let loose = tol > NormalParams::default().tol;
             let hertz = (start.is_none() && plane && loose).then(|| hertz_start_mpa(h_mm));
-            solver.solve_approach_from(h_mm, 0.0, &params, start.or(hertz.as_deref()))?.pn_mpa
+            solver.solve_approach_from(h_mm, 0.0, &params, start.or(hertz.as_deref()))?.converged_pn_mpa()?
         }
     };
     if let Some((rows, variant)) = &blanco {
@@ -800,7 +800,7 @@ fn blanco_pressure(
     for _ in 0..BLANCO_PASSES {
         let [_, _, un] = product.correction([&zero, &zero, &pn_mpa])?;
         let h: Vec<f64> = h_mm.iter().zip(&un).map(|(h, u)| h + u).collect();
-        let next = solver.solve_approach_from(&h, 0.0, params, Some(&pn_mpa))?.pn_mpa;
+        let next = solver.solve_approach_from(&h, 0.0, params, Some(&pn_mpa))?.converged_pn_mpa()?;
         let change = next.iter().zip(&pn_mpa).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
         let size = next.iter().copied().fold(0.0, f64::max);
         pn_mpa = next;

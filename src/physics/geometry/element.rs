@@ -195,11 +195,8 @@ fn normal_solver(grid: &Grid, material: &Material, blend: Option<Blend>) -> Resu
 
 /// The normal problem at `fn_n`, converged, with its equivalent ellipse.
 fn solve(solver: &mut NormalSolver, grid: &Grid, h_mm: &[f64], fn_n: f64) -> Result<NormalContact, ContactError> {
-    let s = solver.solve(h_mm, fn_n, &NormalParams::default())?;
-    if !s.converged {
-        return Err(ContactError::NotConverged { what: "normal problem", passes: s.iterations });
-    }
-    contact_of(grid, fn_n, s.pn_mpa)
+    let pn_mpa = solver.solve(h_mm, fn_n, &NormalParams::default())?.converged_pn_mpa()?;
+    contact_of(grid, fn_n, pn_mpa)
 }
 
 /// The normal contact of pressure `pn_mpa` (grid order) at `fn_n`: its equivalent ellipse and

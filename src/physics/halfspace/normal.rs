@@ -42,6 +42,17 @@ pub struct NormalSolution {
     pub converged: bool,
 }
 
+impl NormalSolution {
+    /// The pressures [MPa] of a converged solve; one that met its iteration limit first is an
+    /// error, never a pressure taken as solved.
+    pub fn converged_pn_mpa(self) -> Result<Vec<f64>, ContactError> {
+        match self.converged {
+            true => Ok(self.pn_mpa),
+            false => Err(ContactError::NotConverged { what: "normal problem", passes: self.iterations }),
+        }
+    }
+}
+
 /// The normal solver of one grid: the convolver of the unshifted kernel's `zz` part, built once
 /// and used for every load.
 pub struct NormalSolver {
@@ -494,6 +505,23 @@ mod tests {
         let by_force = solver.solve(&h, fn_n, &NormalParams::default()).unwrap();
         let hertz = 4.0 / 3.0 * g / (1.0 - nu) * r_mm.sqrt() * delta_mm.powf(1.5);
         (fn_n, hertz, by_force.approach_mm)
+    }
+
+    #[test]
+    fn a_solve_stopped_by_its_iteration_limit_gives_no_pressure() {
+        let (r_mm, m) = (300.0f64, 21);
+        let half_mm = 1.25 * (r_mm * 0.01).sqrt();
+        let grid = crate::physics::Grid::new(m, m, half_mm, half_mm);
+        let (x, y) = grid.centres();
+        let h: Vec<f64> = x.iter().zip(&y).map(|(x, y)| (x * x + y * y) / (2.0 * r_mm)).collect();
+        let k = Kernel::new(m, m, grid.dx_mm, grid.dy_mm, 82000.0, 0.28, 0.0).unwrap();
+        let mut solver = NormalSolver::new(&k).unwrap();
+        let cut = solver.solve_approach(&h, 0.01, &NormalParams { tol: 1e-10, max_iter: 2 }).unwrap();
+        assert!(!cut.converged);
+        let err = cut.converged_pn_mpa().unwrap_err();
+        assert!(matches!(err, ContactError::NotConverged { passes: 2, .. }), "{err}");
+        let full = solver.solve_approach(&h, 0.01, &NormalParams::default()).unwrap();
+        assert_eq!(full.clone().converged_pn_mpa().unwrap(), full.pn_mpa);
     }
 
     #[test]
