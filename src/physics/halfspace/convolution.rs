@@ -283,38 +283,26 @@ fn fft_len_y(my: usize) -> usize {
 impl<T: Real> FftData<T> {
     /// An [`FftData::empty`] of the same lengths sharing this one's plans (not planned again).
     fn sibling(&self) -> FftData<T> {
-        let zero = Complex::new(T::zero(), T::zero());
-        let n = self.nx * self.ny;
-        FftData {
-            szz: Vec::new(),
-            szz_inv: Vec::new(),
-            sxx: Vec::new(),
-            syy: Vec::new(),
-            sxy: Vec::new(),
-            salpha: Vec::new(),
-            sbeta: Vec::new(),
-            buf: vec![zero; n],
-            buft: vec![zero; n],
-            buft2: vec![zero; n],
-            scratch: vec![zero; self.scratch.len()],
-            nx: self.nx,
-            ny: self.ny,
-            fwd_x: Arc::clone(&self.fwd_x),
-            inv_x: Arc::clone(&self.inv_x),
-            fwd_y: Arc::clone(&self.fwd_y),
-            inv_y: Arc::clone(&self.inv_y),
-        }
+        let plans = [&self.fwd_x, &self.inv_x, &self.fwd_y, &self.inv_y].map(Arc::clone);
+        FftData::with_plans(self.nx, self.ny, plans, self.scratch.len())
     }
 
     /// Plans and zeroed work buffers for `nx x ny` transforms; no spectra yet.
     fn empty(nx: usize, ny: usize) -> FftData<T> {
         let mut planner = FftPlanner::<T>::new();
-        let fwd_x = planner.plan_fft_forward(nx);
-        let inv_x = planner.plan_fft_inverse(nx);
-        let fwd_y = planner.plan_fft_forward(ny);
-        let inv_y = planner.plan_fft_inverse(ny);
-        let scratch_len =
-            [&fwd_x, &inv_x, &fwd_y, &inv_y].iter().map(|f| f.get_inplace_scratch_len()).max().unwrap_or(0);
+        let plans = [
+            planner.plan_fft_forward(nx),
+            planner.plan_fft_inverse(nx),
+            planner.plan_fft_forward(ny),
+            planner.plan_fft_inverse(ny),
+        ];
+        let scratch_len = plans.iter().map(|f| f.get_inplace_scratch_len()).max().unwrap_or(0);
+        FftData::with_plans(nx, ny, plans, scratch_len)
+    }
+
+    /// Zeroed work buffers for `nx x ny` transforms by the plans `[fwd_x, inv_x, fwd_y, inv_y]`.
+    fn with_plans(nx: usize, ny: usize, plans: [Arc<dyn Fft<T>>; 4], scratch_len: usize) -> FftData<T> {
+        let [fwd_x, inv_x, fwd_y, inv_y] = plans;
         let zero = Complex::new(T::zero(), T::zero());
         FftData {
             nx,
@@ -847,13 +835,26 @@ mod tests {
             let scale = a.iter().fold(0.0f64, |s, v| s.max(v.abs()));
             let err = a.iter().zip(&b).fold(0.0f64, |s, (x, y)| s.max((x - y).abs()));
             assert!(err <= 1e-12 * scale, "normal {mx}x{my}: {err} vs {scale}");
-            let (mut ax, mut ay, mut bx, mut by) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
-            d.tangential(&px, &py, m, &mut ax, &mut ay).unwrap();
-            f.tangential(&px, &py, m, &mut bx, &mut by).unwrap();
-            let scale = ax.iter().chain(&ay).fold(0.0f64, |s, v| s.max(v.abs()));
-            let err = ax.iter().zip(&bx).chain(ay.iter().zip(&by)).fold(0.0f64, |s, (x, y)| s.max((x - y).abs()));
+            let (err, scale) = tangential_difference(&mut d, &mut f, (&px, &py), m);
             assert!(err <= 1e-12 * scale, "tangential {mx}x{my}: {err} vs {scale}");
         }
+    }
+
+    /// The largest difference of two convolvers' tangential products of `(px, py)` and the
+    /// first's largest value.
+    fn tangential_difference(
+        a: &mut Convolver,
+        b: &mut Convolver,
+        p: (&[f64], &[f64]),
+        m: Option<&[bool]>,
+    ) -> (f64, f64) {
+        let n = p.0.len();
+        let (mut ax, mut ay, mut bx, mut by) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        a.tangential(p.0, p.1, m, &mut ax, &mut ay).unwrap();
+        b.tangential(p.0, p.1, m, &mut bx, &mut by).unwrap();
+        let scale = ax.iter().chain(&ay).fold(0.0f64, |s, v| s.max(v.abs()));
+        let err = ax.iter().zip(&bx).chain(ay.iter().zip(&by)).fold(0.0f64, |s, (x, y)| s.max((x - y).abs()));
+        (err, scale)
     }
 
     #[test]
@@ -877,11 +878,7 @@ mod tests {
             let py: Vec<f64> = (0..n).map(|_| 500.0 * rng.next()).collect();
             for (k, pair) in [(&k0, &mut p0), (&ks, &mut ps)] {
                 let mut alone = Convolver::new(k, ConvPath::Direct).unwrap();
-                let (mut ax, mut ay, mut bx, mut by) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
-                alone.tangential(&px, &py, None, &mut ax, &mut ay).unwrap();
-                pair.tangential(&px, &py, None, &mut bx, &mut by).unwrap();
-                let scale = ax.iter().chain(&ay).fold(0.0f64, |s, v| s.max(v.abs()));
-                let err = ax.iter().zip(&bx).chain(ay.iter().zip(&by)).fold(0.0f64, |s, (x, y)| s.max((x - y).abs()));
+                let (err, scale) = tangential_difference(&mut alone, pair, (&px, &py), None);
                 assert!(err <= 1e-12 * scale, "pair {mx}x{my}: {err} vs {scale}");
             }
         }
