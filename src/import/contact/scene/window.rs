@@ -156,7 +156,8 @@ pub(super) fn quadratic_rows(cases: &[Case], h: &History) -> Option<Vec<[f64; 6]
 }
 
 /// The load of approach `pen_mm` on undeformed distance `h_mm` (CONTACT's element order) of a
-/// `mx × my` grid of `dx × dy` elements: the nominal `contact.fn_n` of a case with N = 0.
+/// `mx × my` grid of `dx × dy` elements: the nominal `contact.fn_n` of a case with N = 0 (`None`
+/// where the normal solver fails or does not converge).
 pub(super) fn load_of_approach(
     h_mm: &[f64],
     (mx, my, dx, dy): (usize, usize, f64, f64),
@@ -166,7 +167,7 @@ pub(super) fn load_of_approach(
     use crate::physics::halfspace::{influence::Kernel, normal};
     let kernel = Kernel::new(mx, my, dx, dy, g, nu, 0.0).ok()?;
     let s = normal::NormalSolver::new(&kernel).ok()?.solve_approach(h_mm, pen_mm, &Default::default()).ok()?;
-    Some(s.pn_mpa.iter().sum::<f64>() * dx * dy).filter(|f| f.is_finite() && *f > 0.0)
+    Some(s.converged_pn_mpa().ok()?.iter().sum::<f64>() * dx * dy).filter(|f| f.is_finite() && *f > 0.0)
 }
 
 /// The pressure on undeformed distance `h_mm` (CONTACT's element order) of a `mx × my` grid of
@@ -187,7 +188,7 @@ fn pressure_on(
     } else {
         solver.solve(h_mm, pen_or_fn, &Default::default()).ok()?
     };
-    s.converged.then_some(s.pn_mpa)
+    s.converged_pn_mpa().ok()
 }
 
 /// IBASE = 2 at an element centre (x, y): the NN heights linear in y between Y1 + (k−1) DY1
