@@ -551,6 +551,12 @@ pub enum WheelRailFeature {
     PatchCombination,
 }
 
+/// "D (in force) = d" when the case's contact approach (CONTACT's D) is `d`.
+fn approach_in_force(c: &WheelRailCase, d: u8) -> Option<String> {
+    let m = c.state.discretisation.as_ref()?.method;
+    (m == d).then(|| format!("D (in force) = {m}"))
+}
+
 /// One row of the module-1 table.
 pub struct WheelRailRow {
     pub feature: WheelRailFeature,
@@ -802,10 +808,7 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         control: "D",
         supported: true,
         reason: "carried as [wheelrail] approach = \"planar_surface_slip\" (D = 3, docs/wheelrail.md \"Rigid slip on the actual surfaces\"): the planar patch's grid and gap, the rigid slip of the rail's (or roller's) and the wheel's material velocities at every element's points of both surfaces, its least-squares creepages printed, the rest an extra rigid slip per element (steady rolling, shifts and transient rolling); refused where a case also takes frictionless compression, dissimilar bodies or a simplified model (named by the scene's reader)",
-        used: |c| {
-            let m = c.state.discretisation.as_ref()?.method;
-            (m == 3).then(|| format!("D (in force) = {m}"))
-        },
+        used: |c| approach_in_force(c, 3),
     },
     WheelRailRow {
         feature: WheelRailFeature::ContactApproach,
@@ -813,10 +816,7 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         control: "D",
         supported: true,
         reason: "carried as [wheelrail] approach = \"conformal\" (D = 4, docs/wheelrail.md \"The conformal approach\"): each patch on a curved reference midway between the surfaces (regions between D_COMB and D_SEP apart its blended sub-patches), its rigid slip on the actual surfaces, the tractions turned back to the tangent plane, in steady rolling, shifts and transient rolling (the previous tractions on the super-grid's curved rows); refused where a case also takes frictionless compression, dissimilar bodies or a simplified model (named by the scene's reader)",
-        used: |c| {
-            let m = c.state.discretisation.as_ref()?.method;
-            (m == 4).then(|| format!("D (in force) = {m}"))
-        },
+        used: |c| approach_in_force(c, 4),
     },
     WheelRailRow {
         feature: WheelRailFeature::ContactApproach,
@@ -824,10 +824,7 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         control: "D",
         supported: true,
         reason: "carried as [wheelrail] contact_search = \"grid\" (D = 5): the round wheel revolved over x in +-R/8 (compute_round_whl), the gap on CONTACT's uniform mesh over it and the rail (a rail slices file: each mesh column's own cross-section), its local minima grown to their bounding boxes (wheelrail::brute, the search of out-of-round wheels); the patches then as with D = 2",
-        used: |c| {
-            let m = c.state.discretisation.as_ref()?.method;
-            (m == 5).then(|| format!("D (in force) = {m}"))
-        },
+        used: |c| approach_in_force(c, 5),
     },
     WheelRailRow {
         feature: WheelRailFeature::ContactApproach,
@@ -835,10 +832,7 @@ pub const WHEELRAIL_FEATURES: &[WheelRailRow] = &[
         control: "D",
         supported: true,
         reason: "carried as [wheelrail] contact_search = \"grid_steep\" (D = 6, use_steep_slopes): the grid search of D = 5 with the gap mesh's lateral step 0.3 DS instead of 0.75 DS and a round wheel revolved over x in +-0.242 R (sin 14 deg) instead of +-R/8",
-        used: |c| {
-            let m = c.state.discretisation.as_ref()?.method;
-            (m == 6).then(|| format!("D (in force) = {m}"))
-        },
+        used: |c| approach_in_force(c, 6),
     },
     WheelRailRow {
         feature: WheelRailFeature::ConformalInfluence,
