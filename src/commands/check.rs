@@ -95,7 +95,7 @@ pub fn gate(
     let Baseline { golden, against } = baseline;
     let shard = runner.shard;
     files.check_paths(golden)?;
-    let refs = References::load(reference)?;
+    let refs = load_references(reference)?;
     let rules = file_rules(&files.tolerances, suite_dir)?;
     if files.strict {
         // Refused before any scene runs; the verdict's own check below covers what this cannot.

@@ -14,7 +14,7 @@ pub fn fit(file: &Path, out: Option<&Path>, reference: &Path, golden: &Path) -> 
             InputError::new("--out", out.display(), "a file that does not exist yet (fit replaces nothing)").into()
         );
     }
-    let refs = References::load(reference)?;
+    let refs = load_references(reference)?;
     let outcome = fit::fit(&spec, &refs)?;
     out!("{}", fit::record::FitRecord::of(&outcome).table());
     let text = fit::render(&outcome)?;

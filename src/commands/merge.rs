@@ -23,7 +23,7 @@ pub fn merge(
             }
         }
     }
-    let mut refs = References::load(reference)?;
+    let mut refs = load_references(reference)?;
     let scenes = read_results(dirs)?;
     for d in dirs {
         if guard::same_place(d, report_dir)? {

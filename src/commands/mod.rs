@@ -121,6 +121,16 @@ impl Runner<'_> {
 }
 
 /// Write `text` to `path` whole: a temporary file beside it, then one rename.
+/// The reference sets of the tree `dir`, a note on the console for each set it does not hold
+/// (a tree of one's own references may hold only some: their comparisons are not made).
+fn load_references(dir: &Path) -> Result<References, Error> {
+    let refs = References::load(dir)?;
+    for (folder, against) in refs.absent() {
+        errln!("note: {} holds no {folder}: no comparisons with \"{}\"", dir.display(), against.label());
+    }
+    Ok(refs)
+}
+
 fn write_whole(path: &Path, text: &str) -> Result<(), Error> {
     crate::safety::whole::write(path, text.as_bytes()).map_err(Error::io(path))
 }

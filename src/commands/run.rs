@@ -78,7 +78,7 @@ pub fn run_with(
     if guard::same_place(results_dir, report_dir)? && shard.is_none() {
         refuse_taken(&names, &REPORT_SUBDIRS, results_dir, "--report")?;
     }
-    let mut refs = References::load(reference)?;
+    let mut refs = load_references(reference)?;
     // Fit files validated before any scene runs: a bad --fits writes nothing.
     let fit_specs = fits.map(load_fit_specs).transpose()?;
     let files = SuiteFiles::read(suite_dir, shard)?;

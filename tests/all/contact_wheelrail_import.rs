@@ -689,3 +689,44 @@ fn blancos_correction_is_exported_as_c3_4_and_imported_back() {
         );
     }
 }
+
+/// A user's own CONTACT run gates its imported scene from a reference tree of their own that
+/// holds nothing else (only `contact_wheelrail/`: the other sets are absent, each named once):
+/// the Manchester deck, its printed output and profiles in `myref/`, its manifest written, the
+/// deck imported with CONTACT's wheel mesh, then `bless` and `check` against that tree.
+#[test]
+fn a_reference_tree_of_ones_own_gates_a_deck_it_holds_alone() {
+    let tmp = tempfile::tempdir().unwrap();
+    let refs = tmp.path().join("myref");
+    let decks = refs.join("contact_wheelrail");
+    std::fs::create_dir_all(&decks).unwrap();
+    for f in ["mbench_a22_left.inp", "mbench_a22_left.ref_out", "MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"] {
+        std::fs::copy(examples().join(f), decks.join(f)).unwrap();
+    }
+    let s = |p: &Path| p.to_str().unwrap().to_string();
+    assert_eq!(creepbench(&["manifest", &s(&refs)]).status.code(), Some(0));
+    let suite = tmp.path().join("suite");
+    let scenes = import(&decks.join("mbench_a22_left.inp"), &suite, &[]);
+    assert_eq!(scenes.len(), 1, "{scenes:?}");
+    let text = std::fs::read_to_string(&scenes[0]).unwrap();
+    let text = text.replace("[wheelrail]\n", "[wheelrail]\nwheel_surface = \"contact_mesh\"\n");
+    std::fs::write(&scenes[0], text).unwrap();
+    let golden = tmp.path().join("golden");
+    std::fs::create_dir_all(&golden).unwrap();
+    let common = ["--suite", &s(&suite), "--reference", &s(&refs), "--golden", &s(&golden)];
+    let bless = creepbench(&[&["bless", "--quiet"][..], &common[..]].concat());
+    assert_eq!(bless.status.code(), Some(0), "{}", String::from_utf8_lossy(&bless.stderr));
+    let check = creepbench(&[&["check", "--quiet"][..], &common[..]].concat());
+    let (out, err) = (String::from_utf8_lossy(&check.stdout), String::from_utf8_lossy(&check.stderr));
+    assert_eq!(check.status.code(), Some(0), "{out}{err}");
+    // Every case and patch compared with the printed output (21 cases: far more than one per quantity).
+    let gated: usize = out
+        .lines()
+        .find_map(|l| l.strip_prefix("PASS: ")?.split_whitespace().next()?.parse().ok())
+        .unwrap_or_else(|| panic!("{out}"));
+    assert!(gated >= 20, "{out}");
+    for absent in ["contact_public", "contact_friction", "thesis"] {
+        assert!(err.contains(&format!("holds no {absent}")), "{err}");
+    }
+    assert!(!err.contains("holds no contact_wheelrail"), "{err}");
+}

@@ -39,6 +39,7 @@ pub const SET: SetDef = SetDef {
         (FRICTION_TIGHT, "the fast models against the tightly converged exact theory: reported"),
         (FRICTION_UNGATED, "cases CONTACT's README does not gate (cases.csv gate = no, its note says why: two steady solutions, or the memoryless falling branch oscillating in time): reported"),
     ],
+    folder: FOLDER,
     load: |dir| Ok(Box::new(FrictionCases::load(dir, FOLDER, LABELS)?)),
     section: None,
 };
@@ -63,6 +64,7 @@ pub const VARIANTS_SET: SetDef = SetDef {
         (VARIANTS_TIGHT, "the fast models against the variants' tightly converged exact theory: reported"),
         (VARIANTS_UNGATED, "the variants' published values that cases.csv does not gate (gate = tight: CONTACT's own iteration error exceeds 2e-4 there, the tight values are gated; gate = no: two steady solutions; each note says why): reported"),
     ],
+    folder: VARIANTS_FOLDER,
     load: |dir| Ok(Box::new(FrictionCases::load(dir, VARIANTS_FOLDER, VARIANTS_LABELS)?)),
     section: None,
 };

@@ -41,6 +41,10 @@ pub struct SetDef {
     /// FASTSIM), each with the reason of its catch-all rule: what no rule of `tolerances.toml`
     /// covers is reported, with no tolerance ([`rule::catch_all`]).
     pub labels: &'static [(Against, &'static str)],
+    /// The folder (or file) of the reference tree the set reads: a tree without it holds none of
+    /// the set's data (a tree of one's own references, `--reference`, holds only what it has; the
+    /// project's `reference/` lists every file in its manifest, so a removed one fails there).
+    pub folder: &'static str,
     /// Read the set from the reference folder.
     pub load: fn(&Path) -> Result<Box<dyn ReferenceSet>, Error>,
     /// The id of the report section that draws its cases (`None`: the report's scene groups
@@ -56,6 +60,7 @@ pub const SETS: [SetDef; 9] = [
             (contact::EXACT, "simplified models differ from the exact theory by design; the report shows by how much"),
             (contact::FASTSIM, "reported"),
         ],
+        folder: "contact",
         load: |dir| Ok(Box::new(contact::ContactCases::load(dir)?)),
         section: None,
     },
@@ -64,6 +69,7 @@ pub const SETS: [SetDef; 9] = [
             envelope::ENVELOPE,
             "the fast models against the exact theory on the envelope: reported per case, not gated (issue 12)",
         )],
+        folder: "contact_envelope",
         load: |dir| Ok(Box::new(envelope::EnvelopeCases::load(dir, "contact_envelope", envelope::ENVELOPE)?)),
         section: Some(ENVELOPE_SECTION),
     },
@@ -72,6 +78,7 @@ pub const SETS: [SetDef; 9] = [
             envelope::NONHERTZ,
             "the fast models on non-Hertzian contacts: reported per case, not gated (issue 13)",
         )],
+        folder: "contact_nonhertz",
         load: |dir| Ok(Box::new(envelope::EnvelopeCases::load(dir, "contact_nonhertz", envelope::NONHERTZ)?)),
         section: Some(NONHERTZ_SECTION),
     },
@@ -80,6 +87,7 @@ pub const SETS: [SetDef; 9] = [
             table::TABLE,
             "the fast models against CONTACT on its test table: reported (the model ladder), not gated",
         )],
+        folder: table::FILE,
         load: |dir| Ok(Box::new(table::load(dir)?)),
         section: None,
     },
@@ -88,6 +96,7 @@ pub const SETS: [SetDef; 9] = [
             thesis::AGAINST,
             "the thesis's figures were read off its plots and used another grid treatment; reported beside ours",
         )],
+        folder: "thesis",
         load: |dir| Ok(Box::new(thesis::ThesisTables::load(dir)?)),
         section: None,
     },
@@ -98,6 +107,7 @@ pub const SETS: [SetDef; 9] = [
             contact_public::AGAINST,
             "CONTACT's printed totals of its public cases: a quantity no rule names is reported",
         )],
+        folder: contact_public::FOLDER,
         load: |dir| Ok(Box::new(contact_public::PublicCases::load(dir)?)),
         section: None,
     },
@@ -106,6 +116,7 @@ pub const SETS: [SetDef; 9] = [
             wheelrail_cases::AGAINST,
             "CONTACT's printed module-1 results: a quantity no rule names is reported",
         )],
+        folder: wheelrail_cases::FOLDER,
         load: |dir| Ok(Box::new(wheelrail_cases::WheelRailCases::load(dir)?)),
         section: None,
     },
@@ -130,6 +141,8 @@ pub fn catch_alls() -> impl Iterator<Item = Rule> {
 /// Every reference set the project holds, loaded, in the registry's order.
 pub struct References {
     sets: Vec<(&'static SetDef, Box<dyn ReferenceSet>)>,
+    /// The sets whose folder the tree does not have (loaded as holding nothing).
+    absent: Vec<&'static SetDef>,
 }
 
 impl References {
@@ -142,8 +155,15 @@ impl References {
         // Every file against the reviewed checksums: a changed, missing or extra reference file
         // fails until its manifest is updated in a reviewed commit.
         crate::safety::manifest::verify(dir).map_err(|source| Error::Manifest { dir: dir.to_path_buf(), source })?;
-        let sets = SETS.iter().map(|def| Ok((def, (def.load)(dir)?))).collect::<Result<_, Error>>()?;
-        Ok(References { sets })
+        let (present, absent): (Vec<&SetDef>, Vec<&SetDef>) = SETS.iter().partition(|d| dir.join(d.folder).exists());
+        let sets = present.into_iter().map(|def| Ok((def, (def.load)(dir)?))).collect::<Result<_, Error>>()?;
+        Ok(References { sets, absent })
+    }
+
+    /// The folders of the sets this tree does not have, with the label of each set's findings:
+    /// their comparisons are not made (the commands say so once).
+    pub fn absent(&self) -> impl Iterator<Item = (&'static str, Against)> + '_ {
+        self.absent.iter().filter_map(|d| d.labels.first().map(|(l, _)| (d.folder, *l)))
     }
 
     /// Every set, in the registry's order.
