@@ -53,6 +53,12 @@ use wheel::{PlacedWheel, Pose, Velocity, WheelsetGeometry};
 pub enum WheelRailError {
     #[error("the rail profile has no gauge face at depth {height_mm} mm below its top")]
     NoGaugeFace { height_mm: f64 },
+    #[error(
+        "the rail profile's gauge-side end (its smallest y, {y_mm} mm) lies {depth_mm} mm below its top, \
+         above the gauge point's depth {height_mm} mm: a profile of the other rail (`[rail] mirror_y = true` \
+         mirrors it) or one cut above the gauge point"
+    )]
+    GaugeSideTooShallow { height_mm: f64, y_mm: f64, depth_mm: f64 },
     #[error("the wheel does not touch the rail")]
     NoContact,
     #[error("the wheel and rail profiles do not overlap laterally")]

@@ -52,7 +52,7 @@ impl<'a> PlacedRail<'a> {
             RailPlacement::Gauge { height_mm, width_mm } => {
                 let (params, points) = design.sampled();
                 let top = design.top_z_mm(&params, &points);
-                let face = gauge_face_y(&points, top + height_mm).ok_or(WheelRailError::NoGaugeFace { height_mm })?;
+                let face = gauge_face_y(&points, top, height_mm)?;
                 let face = design.refine_face_y(&params, &points, face, top + height_mm);
                 [0.5 * width_mm - face, -top]
             }
@@ -262,16 +262,23 @@ impl<'a> PlacedRail<'a> {
     }
 }
 
-/// The smallest y where the profile, scanned from its inner (−y) end, first rises to depth z.
-fn gauge_face_y(points: &[[f64; 2]], z_mm: f64) -> Option<f64> {
+/// The smallest y where the profile, scanned from its gauge-side (−y) end, first rises to the gauge
+/// point's depth `height_mm` below its top `top_mm` (z downwards).
+fn gauge_face_y(points: &[[f64; 2]], top_mm: f64, height_mm: f64) -> Result<f64, WheelRailError> {
+    let z_mm = top_mm + height_mm;
     let mut sorted = points.to_vec();
     sorted.sort_by(|a, b| a[0].total_cmp(&b[0]));
-    let k = sorted.iter().position(|p| p[1] <= z_mm)?;
-    if k == 0 {
-        return None;
+    match sorted.iter().position(|p| p[1] <= z_mm) {
+        None => Err(WheelRailError::NoGaugeFace { height_mm }),
+        Some(0) => {
+            let [y_mm, z] = sorted[0];
+            Err(WheelRailError::GaugeSideTooShallow { height_mm, y_mm, depth_mm: z - top_mm })
+        }
+        Some(k) => {
+            let ([y0, z0], [y1, z1]) = (sorted[k - 1], sorted[k]);
+            Ok(y0 + (y1 - y0) * (z_mm - z0) / (z1 - z0))
+        }
     }
-    let ([y0, z0], [y1, z1]) = (sorted[k - 1], sorted[k]);
-    Some(y0 + (y1 - y0) * (z_mm - z0) / (z1 - z0))
 }
 
 #[cfg(test)]
@@ -299,6 +306,23 @@ mod tests {
         assert!((r.origin_mm[0] - (717.5 + u)).abs() < 1e-9, "{:?}", r.origin_mm);
         assert!(r.origin_mm[1].abs() < 1e-12);
         assert!((r.z_mm(717.5).unwrap() - 1.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_gauge_side_shallower_than_the_gauge_point_is_named_with_its_depth() {
+        // The crown's ends lie 300 − √(300² − 40²) = 2.6807 mm below its top: no face at 14 mm.
+        let track = Track {
+            placement: RailPlacement::Gauge { height_mm: 14.0, width_mm: 1435.0 },
+            cant_rad: 0.0,
+            deviation_mm_rad: [0.0; 3],
+            deviation_velocity: [0.0; 3],
+        };
+        let e = PlacedRail::place(&crown(), &track).unwrap_err();
+        let WheelRailError::GaugeSideTooShallow { height_mm, y_mm, depth_mm } = e else { panic!("{e:?}") };
+        assert_eq!(height_mm, 14.0);
+        assert!((y_mm + 40.0).abs() < 1e-9, "{y_mm}");
+        assert!((depth_mm - (300.0 - (300.0f64 * 300.0 - 1600.0).sqrt())).abs() < 1e-9, "{depth_mm}");
+        assert!(e.to_string().contains("mirror_y"), "{e}");
     }
 
     #[test]
