@@ -9,6 +9,8 @@ in 1/mm; forces come back as fx/fn, fy/fn (dimensionless) and the spin moment mz
   the resolved scene, each model's history and the metrics as polars DataFrames, the
   traction fields as numpy arrays; a Python callable runs as a model in-process.
   :func:`simulate_study` runs every point of a study file: a list of them.
+* :func:`simulate_wheelrail` runs a wheel–rail scene (wheel and rail profiles, track, wheelset
+  cases) and returns a :class:`WheelRailSimulation`: each model's totals and patches per case.
 * :func:`check` runs suites through the gate and returns a :class:`Verdict`; :func:`run`
   runs them as ``creepbench run`` does (result folders and the report) and returns a
   :class:`RunReport`. Python callables run in-process as models in both.
@@ -45,12 +47,14 @@ __all__ = [
     "Simulation",
     "Stepper",
     "Verdict",
+    "WheelRailSimulation",
     "check",
     "loading",
     "model_names",
     "run",
     "simulate",
     "simulate_study",
+    "simulate_wheelrail",
     "steady",
     "STEADY_CHUNK_ROWS",
 ]
@@ -386,6 +390,62 @@ def simulate_study(
     The other arguments as in :func:`simulate`; a scene file is refused."""
     raw = _cb.simulate("path", os.fspath(study), list(solvers or []), _models(models), fields, True)
     return [Simulation(r, pandas) for r in raw]
+
+
+class WheelRailSimulation:
+    """One wheel–rail scene's results, as ``creepbench simulate`` writes them to ``out/<name>/``.
+
+    ``totals[model]``: ``<model>.csv``, one row per case (``contact_case``, the wheelset's
+    position and velocity, the total forces on the rail in track and wheelset coordinates
+    ``fx_tr_n`` … ``fz_ws_n`` [N], the patch count); ``patches[model]``: ``<model>_patches.csv``,
+    one row per case and patch (``contact_case``, ``patch`` from 1 in CONTACT's order, the
+    reference point ``ycp_r_mm`` …, the contact angle ``deltcp_rad``, the creepages ``cksi``,
+    ``ceta``, ``cphi_per_mm`` [1/mm], ``fn_n``, ``fx_n``, ``fs_n`` [N], ``mn_nmm`` [N*mm] and the
+    element counts). Columns, signs and frames: docs/wheelrail.md and docs/scene-format.md.
+    """
+
+    def __init__(self, raw: Any, pandas: bool = False) -> None:
+        import io
+
+        self._raw = raw
+        self.name: str = raw.name
+        self.solvers: List[str] = list(raw.solvers)
+        files = dict(raw.files())
+
+        def frame(text: str) -> Any:
+            df = pl.read_csv(io.StringIO(text), infer_schema_length=None)
+            return _to_pandas(df) if pandas else df
+
+        self.totals: Dict[str, Any] = {s: frame(files[f"{s}.csv"]) for s in self.solvers}
+        self.patches: Dict[str, Any] = {s: frame(files[f"{s}_patches.csv"]) for s in self.solvers}
+
+    def files(self) -> Dict[str, str]:
+        """The result folder's files as the CLI writes them: ``{file name: text}``."""
+        return dict(self._raw.files())
+
+    def save(self, folder: Union[str, "os.PathLike[str]"]) -> str:
+        """Write the result folder ``folder/<name>/`` as ``creepbench simulate --out folder``
+        does; returns its path."""
+        return os.fspath(self._raw.save(os.fspath(folder)))
+
+    def __repr__(self) -> str:
+        return f"WheelRailSimulation({self.name!r}, solvers={self.solvers})"
+
+
+def simulate_wheelrail(
+    scene: Scene,
+    solvers: Optional[Sequence[str]] = None,
+    *,
+    pandas: bool = False,
+) -> WheelRailSimulation:
+    """Run a wheel–rail scene (a ``[wheelrail]`` table: profiles, track, wheelset cases;
+    docs/scene-format.md) as ``creepbench simulate`` does and return its
+    :class:`WheelRailSimulation`. ``scene``: a path, TOML text or a dict, as in :func:`simulate`
+    (the profile paths of a scene file are taken from its folder, those of TOML text or a dict
+    from the current folder). ``solvers`` narrows the scene's model list. Invalid input raises
+    :class:`SceneError`, a case without a solution too (its message names the case)."""
+    kind, value = _kind(scene)
+    return WheelRailSimulation(_cb.simulate_wheelrail(kind, value, list(solvers or [])), pandas)
 
 
 Suites = Union[Path, Sequence[Path]]

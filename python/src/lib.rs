@@ -10,6 +10,7 @@ mod scene;
 mod simulate;
 mod steady;
 mod stepper;
+mod wheelrail;
 
 use pyo3::prelude::*;
 
@@ -25,5 +26,7 @@ fn _creepbench(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(loading::loading, m)?)?;
     m.add_class::<simulate::Simulation>()?;
     m.add_class::<stepper::Stepper>()?;
+    m.add_function(wrap_pyfunction!(wheelrail::simulate_wheelrail, m)?)?;
+    m.add_class::<wheelrail::WheelRailRun>()?;
     Ok(())
 }

@@ -50,7 +50,7 @@ pub use manifest::manifest;
 pub use merge::merge;
 pub use reporting::build_report;
 pub use run::{run, run_with, RunOutcome, RunOutputs};
-pub use simulate::{simulate, simulate_report};
+pub use simulate::{narrow, simulate, simulate_report};
 // What the commands share, for their files (`use super::*`).
 use fit::{fit_record_paths, load_fit_specs, read_fit_records, read_run_fits, run_fits, FITS_SUBDIR};
 use reporting::{report_with_findings, Drawn, Judging};

@@ -164,7 +164,7 @@ pub fn simulate_report(
 }
 
 /// `--solver` narrows a wheel–rail scene's models (to none of them: an input error).
-pub(super) fn narrow(scene: &mut crate::scene::wheelrail::WheelRailScene, solvers: &[String]) -> Result<(), Error> {
+pub fn narrow(scene: &mut crate::scene::wheelrail::WheelRailScene, solvers: &[String]) -> Result<(), Error> {
     if !solvers.is_empty() {
         scene.solvers.retain(|m| solvers.contains(m));
         if scene.solvers.is_empty() {

@@ -622,7 +622,7 @@ impl Scene {
             return Err(InputError::new(
                 "wheelrail",
                 "a wheel–rail scene",
-                "a contact-patch scene here: a wheel–rail scene runs with `creepbench simulate` (run and check take suites of contact-patch scenes)",
+                "a contact-patch scene here: a wheel–rail scene runs with `creepbench simulate`, in the suites of `run` and `check`, and from Python with `simulate_wheelrail`",
             ));
         }
         let mut top = Section::new("", doc).declare(&top::KEYS);
