@@ -3,8 +3,10 @@
 //!
 //!   F_y − k_y δy + F*_y = 0,    F_z(tr) − k_z δz + F*_z = 0,
 //!
-//! F_y the contact force on the rail along the side's own y, δy along it, δz downwards, each added
-//! to the rail's deviation. δy is found by a secant ([`root`]), each trial a whole case. With FZ
+//! F_y the contact force on the rail as CONTACT prints it, FY(TR) in the track's y on either side
+//! (`get_f_toty`: sgn F_y of the side's mirrored frame), δy along the side's own y as the rail's DY,
+//! δz downwards, each added to the rail's deviation (`wr_set_rail_marker`): on the left wheel not
+//! the right one's mirror. δy is found by a secant ([`root`]), each trial a whole case. With FZ
 //! prescribed (N = 1) δz follows from the second equation at F_z(tr) = FZ. With the wheelset's
 //! height given (N = 0) δz is found inside each trial by a secant on F_z: the case solved for
 //! FZ = F_z on the rail at its design height gives the wheelset's height over it, z(F_z); only the
@@ -33,7 +35,9 @@ pub fn solve_massless(
     let mut fz_guess_n = None;
     let lateral = |dy_mm: f64| -> Result<Trial<f64>, Error> {
         let (dz_mm, r) = vertical_balance(&deflected(case, dy_mm, 0.0), rail, &mut fz_guess_n, mu)?;
-        let fy_n = case.side.sign() * r.models[0].2.track_n[1];
+        // FY(TR) as printed: on the left wheel not turned into the side's own y (CONTACT's
+        // `get_f_toty`; issue 45: the left massless rail deflected to the wrong side).
+        let fy_n = r.models[0].2.track_n[1];
         let residual = fy_n - rail.ky_n_per_mm * dy_mm + rail.fy_n;
         Ok(Trial { residual, tol: TOL * (fy_n.abs() + rail.fy_n.abs()).max(1.0), payload: dz_mm })
     };
@@ -45,10 +49,12 @@ pub fn solve_massless(
     Ok(result)
 }
 
-/// The case on the rail deflected further by `dy_mm` (the side's own y) and `dz_mm` (downwards).
+/// The case on the rail deflected further by `dy_mm` (the side's own y, as the rail's DY: CONTACT
+/// places the rail at sgn (DY + DY_DEFL), `wr_set_rail_marker`) and `dz_mm` (downwards).
 fn deflected<'a>(case: &WheelRailCase<'a>, dy_mm: f64, dz_mm: f64) -> WheelRailCase<'a> {
     let mut out = *case;
-    out.track.deviation_mm_rad[0] += dy_mm;
+    // The case's deviation is the right-side frame's (the scene's DY times the side's sign).
+    out.track.deviation_mm_rad[0] += case.side.sign() * dy_mm;
     out.track.deviation_mm_rad[1] += dz_mm;
     out
 }

@@ -244,7 +244,10 @@ pub fn case_of<'a>(
         track: Track {
             placement: match s.placement {
                 PlacementSpec::Gauge { height_mm, width_mm } => RailPlacement::Gauge { height_mm, width_mm },
-                PlacementSpec::Absolute { y_mm, z_mm } => RailPlacement::Absolute { y_mm, z_mm },
+                // RAILY0 is the track's y on either side (CONTACT's `wr_set_rail_marker`: the rail at
+                // sgn·RAILY0 in the side's frame), not the side's own: a left wheel meets a rail
+                // placed at RAILY0 < 0 (issue 45).
+                PlacementSpec::Absolute { y_mm, z_mm } => RailPlacement::Absolute { y_mm: m * y_mm, z_mm },
             },
             cant_rad: s.cant_rad,
             deviation_mm_rad: [m * dy, dz, m * droll],

@@ -21,7 +21,7 @@ pub const KEYS: Keys = Keys {
             "N/mm",
             Allowed::Number(Range::new(0.0, false, 1e12, true), ""),
             Absent::Required,
-            r#"the rail's effective lateral stiffness k*_y (CONTACT's KYRAIL): the rail's lateral deflection along the side's own y is (F_y + `fy_n`) / k*_y, F_y the contact force on the rail along that y (FY(TR) on the right wheel, −FY(TR) on the left): `ky_n_per_mm = 10000.0`"#,
+            r#"the rail's effective lateral stiffness k*_y (CONTACT's KYRAIL): the rail's lateral deflection along the side's own y (as `[rail] deviation_y_mm`) is (F_y + `fy_n`) / k*_y, F_y the contact force on the rail as CONTACT prints it, FY(TR) in track coordinates on either wheel (`get_f_toty`): `ky_n_per_mm = 10000.0`"#,
         ),
         key(
             "fy_n",

@@ -164,7 +164,7 @@ pub const KEYS: Keys = Keys {
             "–",
             Allowed::Choice(&["exact", "contact_mesh"], ""),
             Absent::Choice("exact"),
-            r#"the wheel surface the undeformed distance is measured to: the profile's exact surface of revolution, or CONTACT's mesh of it (`wr_ud_planar`: profile points `ds_mm` apart in its spline's parameter (the chord length of its points, `trim_wheel_profile`) from the patch's reference, revolved into slices `dx_mm` apart, bilinear between them; up to ~DS²/(8R) off the exact surface, inside a convex wheel and outside a concave flange root); every shipped scene of `scenes/wheelrail` takes the mesh (the gate: worst 0.939 of a bound; on the exact surface the worn flange root of `iestim_site_b` carries FN up to 1.8 % less than CONTACT's): `wheel_surface = "contact_mesh"`"#,
+            r#"the wheel surface the undeformed distance is measured to: the profile's exact surface of revolution, or CONTACT's mesh of it (`wr_ud_planar`: profile points `ds_mm` apart in its spline's parameter (the chord length of its points, `trim_wheel_profile`) from the patch's reference, revolved into slices `dx_mm` apart, bilinear between them; up to ~DS²/(8R) off the exact surface, inside a convex wheel and outside a concave flange root); `import contact` writes the mesh, CONTACT's own surface, and every shipped scene of `scenes/wheelrail` takes it (the gate: worst 0.939 of a bound; on the exact surface the worn flange root of `iestim_site_b` carries FN up to 1.8 % less than CONTACT's): `wheel_surface = "contact_mesh"`"#,
         ),
         key(
             "approach",

@@ -61,8 +61,6 @@ pub enum WheelRailError {
     GaugeSideTooShallow { height_mm: f64, y_mm: f64, depth_mm: f64 },
     #[error("the wheel does not touch the rail")]
     NoContact,
-    #[error("the wheel and rail profiles do not overlap laterally")]
-    NoOverlap,
     #[error("no wheelset height gives FZ = {fz_n} N (last height {z_mm} mm)")]
     VerticalNotConverged { fz_n: f64, z_mm: f64 },
     #[error("patch {patch}: the grid of {elements} elements exceeds the limit of {limit}")]
@@ -255,9 +253,11 @@ pub fn normal_contact_with(
                         Some(-grid(case, &wheel, &rail, setup)?.gap_min_mm()).filter(|d| *d > -500.0)
                     } else {
                         search::deepest_mm(&samples(case, &rail, &setup.placement.mesh, &mut wheel))
+                    };
+                    match deepest {
+                        Some(d) => *touch_mm.insert(-d),
+                        None => return Ok(apart(case, &rail)),
                     }
-                    .ok_or(WheelRailError::NoOverlap)?;
-                    *touch_mm.insert(-deepest)
                 }
             };
             let target = target.unwrap_or(fz_n);
@@ -290,6 +290,19 @@ pub fn normal_contact_with(
         rail_origin_mm: rail.origin_mm,
         rail_angle_rad: rail.angle_rad,
     })
+}
+
+/// The normal contact of a wheel and rail laterally apart with FZ prescribed: no patch, the
+/// wheelset at height 0, as CONTACT prints it ("NO CONTACT FOUND", zero forces; a left wheel on a
+/// rail placed at RAILY0 > 0, issue 45).
+fn apart(case: &WheelRailCase, rail: &PlacedRail) -> NormalContact {
+    NormalContact {
+        side: case.side,
+        z_ws_mm: 0.0,
+        patches: Vec::new(),
+        rail_origin_mm: rail.origin_mm,
+        rail_angle_rad: rail.angle_rad,
+    }
 }
 
 /// What the searches of one case keep for the next (a prescribed force's rounds): the normal
@@ -631,7 +644,9 @@ fn geometry_at(
         false => {
             let samples = samples(case, rail, &setup.placement.mesh, wheel);
             if samples.is_empty() {
-                return Err(WheelRailError::NoOverlap);
+                // Laterally apart: no patch, as CONTACT finds none ("the wheel and rail are
+                // LATERALLY in different places").
+                return Ok(Vec::new());
             }
             let wheel_mm = case.wheelset.nominal_radius_mm;
             let radius = case.roller.map_or(wheel_mm, |r| r.gap_radius_mm(wheel_mm));

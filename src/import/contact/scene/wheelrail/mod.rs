@@ -399,7 +399,10 @@ fn case_scene(c: &WheelRailCase, paths: &ProfilePaths) -> Result<WheelRailScene,
         d_sep_mm: disc.d_sep_mm,
         d_comb_mm: disc.d_comb_mm,
         d_turn_mm: disc.d_turn_mm(),
-        wheel_mesh: false,
+        // CONTACT measures the undeformed distance to its mesh of the wheel (`wr_ud_planar`), an
+        // imported deck does too: on the exact surface a coarse or flange patch moves by tens of
+        // half-units (docs/wheelrail.md "The wheel surface").
+        wheel_mesh: true,
         search: match disc.method {
             5 => ContactSearch::Grid,
             6 => ContactSearch::GridSteep,
