@@ -867,6 +867,27 @@ mod tests {
     }
 
     #[test]
+    fn a_load_on_a_band_of_rows_convolves_as_on_the_direct_path() {
+        // Rows before the first load and after the last are not transformed: the normal product
+        // of a load on rows 7 to 15 of 24 (and of none) as the direct path's.
+        let (mx, my) = (30, 24);
+        let k = Kernel::new(mx, my, 0.7, 0.4, 82000.0, 0.28, 0.0).unwrap();
+        let mut d = Convolver::new(&k, ConvPath::Direct).unwrap();
+        let mut f = Convolver::new(&k, ConvPath::Fft).unwrap();
+        let mut rng = Rng(11);
+        let band: Vec<f64> =
+            (0..mx * my).map(|k| if (7..16).contains(&(k / mx)) { 500.0 * rng.next().abs() } else { 0.0 }).collect();
+        for p in [band, vec![0.0; mx * my]] {
+            let (mut a, mut b) = (vec![0.0; mx * my], vec![0.0; mx * my]);
+            d.normal(&p, None, &mut a).unwrap();
+            f.normal(&p, None, &mut b).unwrap();
+            let scale = a.iter().fold(0.0f64, |s, v| s.max(v.abs()));
+            let err = a.iter().zip(&b).fold(0.0f64, |s, (x, y)| s.max((x - y).abs()));
+            assert!(err <= 1e-12 * scale, "{err} vs {scale}");
+        }
+    }
+
+    #[test]
     fn a_pair_of_kernels_transformed_at_once_is_each_transformed_alone() {
         for (mx, my) in [(22, 22), (30, 17), (13, 1)] {
             let k0 = Kernel::new(mx, my, 0.7, 0.4, 82000.0, 0.28, 0.0).unwrap();
