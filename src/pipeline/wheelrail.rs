@@ -27,7 +27,7 @@ use crate::solvers;
 use crate::solvers::brush::Tractions;
 use crate::wheelrail::friction::Friction;
 use crate::wheelrail::shift::Previous;
-use crate::wheelrail::vertical::FORCE_TOL;
+use crate::wheelrail::vertical::{Stop, FORCE_TOL};
 use crate::wheelrail::{self, Motion, NormalContact, NormalPatch, Vertical, WheelRailCase};
 use nalgebra::{Rotation3, Vector3};
 use std::path::Path;
@@ -40,6 +40,9 @@ const VERTICAL_ROUNDS: usize = 20;
 /// follow (each later search is made to [`FORCE_TOL`]): the rounds move its target by the
 /// tangential forces' vertical part (0.07 to 0.5 % of FZ on the Manchester decks), so a miss of a
 /// fifth of that or less costs the later searches nothing that a tighter first search would not.
+/// Nor need its height's normal problems be solved again to the full tolerance (a re-solve of 4 to
+/// 14 CG iterations per case on the Manchester decks): the first round's tangential forces take
+/// the pressure of the trial height that met it, solved loosely, and only set the next target.
 const FIRST_SEARCH_TOL: f64 = 1e-3;
 /// Blanco's correction: the rounds end when the tangential tractions' normal displacement moved by
 /// at most this times the deepest approach since the normal solves took it.
@@ -245,8 +248,11 @@ fn balanced(
     // With the tangential forces to balance, the first height search need not be tight: the
     // rounds move its target by their vertical part.
     let rounds = matches!(case.vertical, Vertical::Force { .. }) && !mu.frictionless;
-    let first_tol = if rounds { FIRST_SEARCH_TOL } else { FORCE_TOL };
-    let mut normal = wheelrail::normal_contact_with(case, None, first_tol, cache).map_err(geometry)?;
+    let first = match rounds {
+        true => Stop { tol: FIRST_SEARCH_TOL, exact: false },
+        false => Stop::exact(FORCE_TOL),
+    };
+    let mut normal = wheelrail::normal_contact_with(case, None, first, cache).map_err(geometry)?;
     if mu.frictionless {
         let forces = normal.patches.iter().map(frictionless).collect();
         return Ok((normal, Some(forces)));
@@ -254,6 +260,9 @@ fn balanced(
     let Vertical::Force { fz_n } = case.vertical else { return Ok((normal, None)) };
     // The last round's normal and tangential vertical forces (the secant's other point).
     let mut last: Option<(f64, f64)> = None;
+    // Whether the normal solution's height was solved to the full tolerance (not the first
+    // search's loose end): only such a one is an answer.
+    let mut exact = first.exact;
     for _ in 0..VERTICAL_ROUNDS {
         let found = forces(&normal)?;
         let normal_z = normal.fz_normal_n();
@@ -270,12 +279,14 @@ fn balanced(
         // Blanco's correction: the tractions' normal displacement for the next normal solves, and
         // whether it moved since the last (CONTACT's Panagiotopoulos process).
         let coupled = blanco_coupled(&normal, &found, cache);
-        if (coupled && (normal_z + tangential_z - fz_n).abs() <= 2.0 * FORCE_TOL * fz_n) || normal_z <= 0.0 {
+        let balanced = coupled && (normal_z + tangential_z - fz_n).abs() <= 2.0 * FORCE_TOL * fz_n;
+        if (exact && balanced) || normal_z <= 0.0 {
             return Ok((normal, Some(found)));
         }
         let target = normal_share(fz_n, (normal_z, tangential_z), last.take());
         last = Some((normal_z, tangential_z));
-        normal = wheelrail::normal_contact_with(case, Some(target), FORCE_TOL, cache).map_err(geometry)?;
+        normal = wheelrail::normal_contact_with(case, Some(target), Stop::exact(FORCE_TOL), cache).map_err(geometry)?;
+        exact = true;
     }
     Ok((normal, None))
 }

@@ -220,15 +220,15 @@ impl NormalContact {
 /// The normal contact of `case`; with a prescribed force, the height where the normal forces'
 /// vertical parts sum to `fz_normal_n` (the vertical force less the tangential forces' part).
 pub fn normal_contact(case: &WheelRailCase, fz_normal_n: Option<f64>) -> Result<NormalContact, WheelRailError> {
-    normal_contact_with(case, fz_normal_n, vertical::FORCE_TOL, &mut NormalCache::default())
+    normal_contact_with(case, fz_normal_n, vertical::Stop::exact(vertical::FORCE_TOL), &mut NormalCache::default())
 }
 
-/// [`normal_contact`] with the force found within `tol` (relative) and the normal solvers of
-/// earlier calls on the same case kept in `cache`.
+/// [`normal_contact`] with the height search ended by `stop` ([`vertical::Stop`]) and the normal
+/// solvers of earlier calls on the same case kept in `cache`.
 pub fn normal_contact_with(
     case: &WheelRailCase,
     fz_normal_n: Option<f64>,
-    tol: f64,
+    stop: vertical::Stop,
     cache: &mut NormalCache,
 ) -> Result<NormalContact, WheelRailError> {
     let NormalCache { solvers, touch_mm, heights, rail: kept } = cache;
@@ -263,7 +263,7 @@ pub fn normal_contact_with(
             let target = target.unwrap_or(fz_n);
             // The search ends on the height it evaluated last: its patches are the answer.
             let mut last: Option<(f64, Vec<NormalPatch>)> = None;
-            let (z, _, evaluations) = vertical::solve(z_touch_mm, target, tol, *heights, |z, normal_tol| {
+            let (z, _, evaluations) = vertical::solve(z_touch_mm, target, stop, *heights, |z, normal_tol| {
                 // The height evaluated last again (to a tighter tolerance): its patches re-solved.
                 let patches = match last.take() {
                     Some((z_last, mut patches)) if z_last == z => {

@@ -4,7 +4,8 @@
 //! Hertz's law makes nearly linear in the height. The normal problems of trial heights far from
 //! the target are solved to a looser tolerance (an inexact secant: their force need only be as
 //! accurate as the step they set, Dembo, Eisenstat & Steihaug 1982); the height accepted is one
-//! whose normal problem was solved to the full tolerance.
+//! whose normal problem was solved to the full tolerance, but in a search whose answer only sets
+//! the next round's target ([`Stop`]).
 
 use super::WheelRailError;
 use crate::physics::halfspace::normal::NormalParams;
@@ -34,21 +35,40 @@ fn normal_tol(miss: f64) -> f64 {
     (NORMAL_TOL_PER_MISS * miss).clamp(NormalParams::default().tol, LOOSEST_NORMAL_TOL)
 }
 
+/// How a height search ends.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Stop {
+    /// The relative force miss it accepts.
+    pub tol: f64,
+    /// Whether the height it accepts is evaluated to the full normal tolerance; else a trial
+    /// height solved loosely whose force is within `tol` ends it as it is (a search whose answer
+    /// only sets the next round's target: the first of a prescribed force's rounds).
+    pub exact: bool,
+}
+
+impl Stop {
+    /// Within `tol`, the height accepted evaluated to the full normal tolerance.
+    pub fn exact(tol: f64) -> Stop {
+        Stop { tol, exact: true }
+    }
+}
+
 /// The height z where `force(z, normal_tol)` (≥ 0, increasing in z; its normal problems solved to
-/// `normal_tol`) equals `target_n` within `tol` (relative), from the height of first touch
+/// `normal_tol`) equals `target_n` within `stop.tol` (relative), from the height of first touch
 /// `z_touch`, or from two earlier evaluations `start` (a search for a nearby target); returns the
 /// height, the number of evaluations and the last two. The height returned was evaluated last,
-/// to the full normal tolerance.
+/// to the full normal tolerance where `stop.exact`.
 pub fn solve<F>(
     z_touch_mm: f64,
     target_n: f64,
-    tol: f64,
+    stop: Stop,
     start: Option<Evaluations>,
     mut force: F,
 ) -> Result<(f64, usize, Evaluations), WheelRailError>
 where
     F: FnMut(f64, f64) -> Result<f64, WheelRailError>,
 {
+    let tol = stop.tol;
     let g = |f: f64| f.max(0.0).powf(2.0 / 3.0) - target_n.powf(2.0 / 3.0);
     let full = NormalParams::default().tol;
     let mut evaluations = 0;
@@ -91,7 +111,7 @@ where
         let step_tol = if loose { normal_tol(miss) } else { full };
         let mut f2 = force(z2, step_tol)?;
         evaluations += 1;
-        if step_tol > full && (f2 - target_n).abs() <= tol * target_n {
+        if stop.exact && step_tol > full && (f2 - target_n).abs() <= tol * target_n {
             // Met on a loose solve: the same height to the full tolerance decides.
             f2 = force(z2, full)?;
             evaluations += 1;
@@ -116,7 +136,8 @@ mod tests {
         // F = k (z − z0)^1.5: the secant on F^(2/3) is exact after one step.
         let (k, z_touch) = (2.0e6, 0.18);
         let (z, _, _) =
-            solve(z_touch, 10000.0, FORCE_TOL, None, |z, _| Ok(k * (z - z_touch).max(0.0).powf(1.5))).unwrap();
+            solve(z_touch, 10000.0, Stop::exact(FORCE_TOL), None, |z, _| Ok(k * (z - z_touch).max(0.0).powf(1.5)))
+                .unwrap();
         assert!((z - (z_touch + (10000.0f64 / k).powf(2.0 / 3.0))).abs() < 1e-12);
     }
 
@@ -124,11 +145,11 @@ mod tests {
     fn a_nearby_target_from_earlier_evaluations_takes_one_step_on_a_hertzian_law_confirmed_to_the_full_tolerance() {
         let (k, z_touch) = (2.0e6, 0.18);
         let law = |z: f64| k * (z - z_touch).max(0.0).powf(1.5);
-        let (_, _, last) = solve(z_touch, 10000.0, FORCE_TOL, None, |z, _| Ok(law(z))).unwrap();
+        let (_, _, last) = solve(z_touch, 10000.0, Stop::exact(FORCE_TOL), None, |z, _| Ok(law(z))).unwrap();
         // One step, solved loosely (the miss before it is 1e-3), then the same height solved to
         // the full normal tolerance, which accepts it.
         let mut calls = Vec::new();
-        let (z, n, _) = solve(z_touch, 9990.0, FORCE_TOL, Some(last), |z, tol| {
+        let (z, n, _) = solve(z_touch, 9990.0, Stop::exact(FORCE_TOL), Some(last), |z, tol| {
             calls.push((z, tol));
             Ok(law(z))
         })
@@ -139,5 +160,21 @@ mod tests {
         assert!(calls[0].1 > NormalParams::default().tol);
         assert_eq!(calls[1].1, NormalParams::default().tol);
         assert!((z - (z_touch + (9990.0f64 / k).powf(2.0 / 3.0))).abs() < 1e-12);
+    }
+
+    #[test]
+    fn an_inexact_stop_ends_on_the_loose_trial_that_meets_it() {
+        let (k, z_touch) = (2.0e6, 0.18);
+        let law = |z: f64| k * (z - z_touch).max(0.0).powf(1.5);
+        let (_, _, last) = solve(z_touch, 10000.0, Stop::exact(FORCE_TOL), None, |z, _| Ok(law(z))).unwrap();
+        let mut tols = Vec::new();
+        let (z, n, _) = solve(z_touch, 9990.0, Stop { tol: 1e-3, exact: false }, Some(last), |z, tol| {
+            tols.push(tol);
+            Ok(law(z))
+        })
+        .unwrap();
+        assert_eq!((n, tols.len()), (1, 1));
+        assert!(tols[0] > NormalParams::default().tol);
+        assert!((law(z) - 9990.0).abs() <= 1e-3 * 9990.0);
     }
 }

@@ -325,11 +325,14 @@ impl<T: Real> FftData<T> {
         }
     }
 
-    /// Forward transform of the field in `buf` (only its first `my` rows may be non-zero) into
-    /// `buft` (layout `[kx][ky]`).
-    fn forward(&mut self, my: usize) {
+    /// Forward transform of the field in `buf` (only its first `my` rows may be non-zero, and of
+    /// those only the rows `loaded`: the others, zero, are not transformed) into `buft` (layout
+    /// `[kx][ky]`).
+    fn forward(&mut self, my: usize, loaded: std::ops::Range<usize>) {
         let nx = self.nx;
-        self.fwd_x.process_with_scratch(&mut self.buf[..my * nx], &mut self.scratch);
+        if !loaded.is_empty() {
+            self.fwd_x.process_with_scratch(&mut self.buf[loaded.start * nx..loaded.end * nx], &mut self.scratch);
+        }
         if self.ny == 1 {
             // One row: its transposed layout is itself, the transform along y the identity.
             self.buft.copy_from_slice(&self.buf);
@@ -776,7 +779,12 @@ fn tangential_fft<T: Real>(f: &mut FftData<T>, io: PairIo) {
         }
         tail.fill(zero);
     }
-    f.forward(my);
+    // The rows before the first load and after the last (outside the contact) transform to zero:
+    // not transformed.
+    let loaded = |k: &usize| mask.is_none_or(|m| m[*k]) && (px[*k] != 0.0 || py[*k] != 0.0);
+    let first = (0..mx * my).find(loaded).map_or(my, |k| k / mx);
+    let last = (0..mx * my).rev().find(loaded).map_or(first, |k| k / mx + 1);
+    f.forward(my, first..last);
     // U(k) = alpha(k) Z(k) + beta(k) conj(Z(-k)) (see `salpha`, `sbeta`).
     for kx in 0..nx {
         let mkx = (nx - kx) % nx;
@@ -864,6 +872,30 @@ mod tests {
         compare(30, 17, 0.0);
         compare(22, 22, 0.7);
         compare(13, 29, 0.35);
+    }
+
+    #[test]
+    fn a_load_on_a_band_of_rows_convolves_as_on_the_direct_path() {
+        // Rows before the first load and after the last are not transformed: the normal and
+        // tangential products of a load on rows 7 to 15 of 24 (and of none) as the direct path's.
+        let (mx, my) = (30, 24);
+        let k = Kernel::new(mx, my, 0.7, 0.4, 82000.0, 0.28, 0.0).unwrap();
+        let mut d = Convolver::new(&k, ConvPath::Direct).unwrap();
+        let mut f = Convolver::new(&k, ConvPath::Fft).unwrap();
+        let mut rng = Rng(11);
+        let band: Vec<f64> =
+            (0..mx * my).map(|k| if (7..16).contains(&(k / mx)) { 500.0 * rng.next().abs() } else { 0.0 }).collect();
+        for p in [band, vec![0.0; mx * my]] {
+            let (mut a, mut b) = (vec![0.0; mx * my], vec![0.0; mx * my]);
+            d.normal(&p, None, &mut a).unwrap();
+            f.normal(&p, None, &mut b).unwrap();
+            let scale = a.iter().fold(0.0f64, |s, v| s.max(v.abs()));
+            let err = a.iter().zip(&b).fold(0.0f64, |s, (x, y)| s.max((x - y).abs()));
+            assert!(err <= 1e-12 * scale, "{err} vs {scale}");
+            let py: Vec<f64> = p.iter().map(|v| -0.3 * v).collect();
+            let (err, scale) = tangential_difference(&mut d, &mut f, (&p, &py), None);
+            assert!(err <= 1e-12 * scale, "tangential: {err} vs {scale}");
+        }
     }
 
     #[test]

@@ -354,29 +354,29 @@ impl NormalSolver {
             if !tau.is_finite() {
                 return Err(ContactError::NonFinite("normal CG step length"));
             }
-            p_old.copy_from_slice(&p);
-            let mut n_left = 0usize;
+            // The step on the contact set, then the overlapping elements outside it re-enter
+            // (Polonsky & Keer, step 9; an element the step just took out among them), in one pass.
+            let (mut n_left, mut n_overlap, mut sum) = (0usize, 0usize, 0.0);
             for k in 0..n {
+                p_old[k] = p[k];
                 if p[k] > 0.0 {
                     let step = p[k] - tau * t[k];
                     n_left += usize::from(step <= 0.0);
                     p[k] = step.max(0.0);
                 }
-            }
-            // Overlapping elements outside the contact set re-enter (Polonsky & Keer, step 9).
-            let mut n_overlap = 0usize;
-            for k in 0..n {
                 if p[k] <= 0.0 && g[k] < 0.0 && allowed(k) {
                     p[k] -= tau * g[k];
                     n_overlap += 1;
                 }
+                sum += p[k];
             }
             delta_flag = n_overlap == 0;
-            let total: f64 = p.iter().sum::<f64>() * area;
+            let total: f64 = sum * area;
             if !(total.is_finite() && total > 0.0) {
                 return Err(ContactError::NoContact);
             }
             let scale = fn_n.map_or(1.0, |f| f / total);
+            u_holds = n_left == 0 && n_overlap == 0;
             let mut dsum = 0.0;
             let mut psum = 0.0;
             for k in 0..n {
@@ -385,14 +385,11 @@ impl NormalSolver {
                 }
                 dsum += (p[k] - p_old[k]).abs();
                 psum += p[k];
-            }
-            residual = dsum / psum;
-            u_holds = n_left == 0 && n_overlap == 0;
-            if u_holds {
-                for k in 0..n {
+                if u_holds {
                     u[k] = scale * (u[k] - tau * r[k]);
                 }
             }
+            residual = dsum / psum;
             if residual < params.tol {
                 converged = true;
                 break;
@@ -420,14 +417,23 @@ fn precondition(
     if !conv.normal_inverse(gc, z)? {
         return Ok(false);
     }
-    let (mut sum, mut count) = (0.0, 0usize);
-    for k in 0..p.len() {
-        if p[k] > 0.0 {
-            sum += z[k];
-            count += 1;
+    let mean = match force {
+        true => {
+            let (mut sum, mut count) = (0.0, 0usize);
+            for k in 0..p.len() {
+                if p[k] > 0.0 {
+                    sum += z[k];
+                    count += 1;
+                }
+            }
+            if count > 0 {
+                sum / count as f64
+            } else {
+                0.0
+            }
         }
-    }
-    let mean = if force && count > 0 { sum / count as f64 } else { 0.0 };
+        false => 0.0,
+    };
     for k in 0..p.len() {
         z[k] = if p[k] > 0.0 { z[k] - mean } else { 0.0 };
     }

@@ -78,7 +78,18 @@ impl RealFft2 {
     ) -> Result<(), ContactError> {
         let (ny, nh) = (self.ny, self.nx / 2 + 1);
         let zero = Complex::new(0.0, 0.0);
-        for j in 0..my {
+        // The rows before the first load and after the last (outside the contact) transform to
+        // zero: not transformed.
+        let n = mx * my;
+        let loaded = |k: &usize| keep(*k) && p[*k] != 0.0;
+        let first = (0..n).find(loaded).map_or(my, |k| k / mx);
+        let last = (0..n).rev().find(loaded).map_or(0, |k| k / mx + 1);
+        for j in (0..first).chain(last.max(first)..my) {
+            for kx in 0..nh {
+                self.cols[kx * ny + j] = zero;
+            }
+        }
+        for j in first..last {
             for (i, v) in self.row.iter_mut().enumerate() {
                 let k = j * mx + i;
                 *v = if i < mx && keep(k) { p[k] } else { 0.0 };
