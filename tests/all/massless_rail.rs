@@ -24,6 +24,25 @@ fn run(text: &str) -> Vec<(u64, CaseResult)> {
 }
 
 /// DY_DEFL (the side's own y) and DZ_DEFL [mm].
+/// The scene's cases and their deviations from CONTACT's printed output `ref_out` (under
+/// reference/), each with the gate's bound (counts exact, 1.5 half-units otherwise).
+type Run = (Vec<(u64, CaseResult)>, Vec<(Deviation, f64)>);
+
+fn deviations(scene: &str, ref_out: &str) -> Run {
+    let cases = run(&scene_text(scene));
+    let printed = read(&root().join("reference").join(ref_out)).unwrap();
+    let counts = ["n_patches", "npot", "ncon", "nadh", "nslip"];
+    let devs = cases
+        .iter()
+        .flat_map(|(case, r)| compare_case(*case, r, 0, printed.iter().find(|p| u64::from(p.case) == *case).unwrap()))
+        .map(|d| {
+            let bound = if counts.contains(&d.quantity) { 0.0 } else { 1.5 };
+            (d, bound)
+        })
+        .collect();
+    (cases, devs)
+}
+
 fn deflection(r: &CaseResult) -> [f64; 2] {
     r.rail_deflection_mm.expect("a massless rail's deflection")
 }
@@ -35,24 +54,17 @@ fn deflection(r: &CaseResult) -> [f64; 2] {
 /// 1e-10 floor).
 #[test]
 fn the_massless_rail_with_fz_prescribed_against_contact() {
-    let cases = run(&scene_text("mbench_massless_right"));
-    let printed = read(&root().join("reference/contact_wheelrail/examples/mbench_massless_right.ref_out")).unwrap();
-    let devs: Vec<Deviation> = cases
-        .iter()
-        .flat_map(|(case, r)| compare_case(*case, r, 0, printed.iter().find(|p| u64::from(p.case) == *case).unwrap()))
-        .collect();
-    let counts = ["n_patches", "npot", "ncon", "nadh", "nslip"];
-    let bound = |d: &Deviation| if counts.contains(&d.quantity) { 0.0 } else { 1.5 };
+    let (cases, devs) = deviations("mbench_massless_right", "contact_wheelrail/examples/mbench_massless_right.ref_out");
     let off: Vec<String> = devs
         .iter()
-        .filter(|d| !(d.contact_case == 1 && d.quantity == "cksi"))
-        .filter(|d| measure(d) > bound(d))
-        .map(|d| format!("{d:?}"))
+        .filter(|(d, _)| !(d.contact_case == 1 && d.quantity == "cksi"))
+        .filter(|(d, bound)| measure(d) > *bound)
+        .map(|(d, _)| format!("{d:?}"))
         .collect();
     assert!(off.is_empty(), "{off:#?}");
-    let dy = devs.iter().find(|d| d.quantity == "dy_defl_mm").unwrap();
+    let (dy, _) = devs.iter().find(|(d, _)| d.quantity == "dy_defl_mm").unwrap();
     assert!((dy.contact + 0.0728).abs() < 1e-12 && (dy.ours - dy.contact).abs() <= 5e-5, "{dy:?}");
-    assert_eq!(devs.iter().filter(|d| d.quantity.ends_with("_defl_mm")).count(), 2);
+    assert_eq!(devs.iter().filter(|(d, _)| d.quantity.ends_with("_defl_mm")).count(), 2);
     // The flange (y = 8 mm): the rail pushed 0.36 mm to the field side by FY(TR) = 8750 N.
     let [dy4, dz4] = deflection(&cases[3].1);
     assert!((dy4 - (8750.3 - 1500.0) / 20000.0).abs() < 1e-4 && (dz4 - 0.1).abs() < 1e-12, "{dy4} {dz4}");
@@ -106,18 +118,12 @@ fn a_left_wheel_on_a_massless_rail_balances_fy_tr_as_contact_prints_it() {
 /// CONTACT's digits (counts exact), DY_DEFL 0.2251 mm as CONTACT prints it in case 1.
 #[test]
 fn the_left_wheels_massless_rail_against_contact() {
-    let cases = run(&scene_text("mbench_massless_left_1"));
-    let printed =
-        read(&root().join("reference/contact_wheelrail/testbank/generated_hunt/mbench_massless_left.ref_out")).unwrap();
-    let devs: Vec<Deviation> = cases
-        .iter()
-        .flat_map(|(case, r)| compare_case(*case, r, 0, printed.iter().find(|p| u64::from(p.case) == *case).unwrap()))
-        .collect();
-    let counts = ["n_patches", "npot", "ncon", "nadh", "nslip"];
-    let bound = |d: &Deviation| if counts.contains(&d.quantity) { 0.0 } else { 1.5 };
-    let off: Vec<String> = devs.iter().filter(|d| measure(d) > bound(d)).map(|d| format!("{d:?}")).collect();
+    let (_, devs) =
+        deviations("mbench_massless_left_1", "contact_wheelrail/testbank/generated_hunt/mbench_massless_left.ref_out");
+    let off: Vec<String> =
+        devs.iter().filter(|(d, bound)| measure(d) > *bound).map(|(d, _)| format!("{d:?}")).collect();
     assert!(off.is_empty(), "{off:#?}");
-    let dy = devs.iter().find(|d| d.quantity == "dy_defl_mm").unwrap();
+    let (dy, _) = devs.iter().find(|(d, _)| d.quantity == "dy_defl_mm").unwrap();
     assert!((dy.contact - 0.2251).abs() < 1e-12 && (dy.ours - dy.contact).abs() <= 5e-5, "{dy:?}");
 }
 
