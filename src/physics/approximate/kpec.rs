@@ -82,17 +82,71 @@ pub fn pressure(grid: &Grid, gap: &[f64], material: &Material) -> Result<Vec<f64
 }
 
 /// The normal displacement [mm] at element `at` of the pressure `p` [MPa] on the half-space pair
-/// (`Azz = (1 − ν)/(π G) I[1/r]`, [`rect_integrals`]).
+/// (`Azz = (1 − ν)/(π G) I[1/r]`, [`rect_integrals`]; `I[1/r]` of each offset computed once per
+/// thread and element size, [`OneOverR`]).
 fn displacement_at(grid: &Grid, p: &[f64], at: usize, material: &Material) -> f64 {
     let (i0, j0) = (at % grid.mx, at / grid.mx);
     let c = (1.0 - material.poisson) / (PI * material.g_mpa);
-    let mut u = 0.0;
-    for (k, &pk) in p.iter().enumerate().filter(|(_, &v)| v > 0.0) {
-        let x = (i0 as f64 - (k % grid.mx) as f64) * grid.dx_mm;
-        let y = (j0 as f64 - (k / grid.mx) as f64) * grid.dy_mm;
-        u += c * rect_integrals(x, y, grid.dx_mm, grid.dy_mm).one_over_r * pk;
+    ONE_OVER_R.with_borrow_mut(|kept| {
+        let table = kept.for_grid(grid);
+        let mut u = 0.0;
+        for (k, &pk) in p.iter().enumerate().filter(|(_, &v)| v > 0.0) {
+            let (di, dj) = (i0 as isize - (k % grid.mx) as isize, j0 as isize - (k / grid.mx) as isize);
+            u += c * table.at(di, dj) * pk;
+        }
+        u
+    })
+}
+
+/// `I[1/r]` of the element size `(dx, dy)` [mm] at offsets `|di| ≤ hx`, `|dj| ≤ hy` (NaN until
+/// asked for), index `(dj + hy)(2hx + 1) + di + hx`: a KPEC pressure's scale reads one element's
+/// displacement from every loaded element, at every trial height of a case.
+#[derive(Default)]
+struct OneOverR {
+    size_mm: [u64; 2],
+    hx: usize,
+    hy: usize,
+    values: Vec<f64>,
+}
+
+thread_local! {
+    static ONE_OVER_R: std::cell::RefCell<OneOverR> = std::cell::RefCell::new(OneOverR::default());
+}
+
+impl OneOverR {
+    /// This table made to serve `grid` (its element size; offsets up to its extent), keeping
+    /// what it holds of the same element size.
+    fn for_grid(&mut self, grid: &Grid) -> &mut OneOverR {
+        let size_mm = [grid.dx_mm.to_bits(), grid.dy_mm.to_bits()];
+        let (hx, hy) = (grid.mx.saturating_sub(1), grid.my.saturating_sub(1));
+        if size_mm != self.size_mm || self.values.is_empty() {
+            *self = OneOverR { size_mm, hx, hy, values: vec![f64::NAN; (2 * hx + 1) * (2 * hy + 1)] };
+        } else if hx > self.hx || hy > self.hy {
+            let (hx, hy) = (hx.max(self.hx), hy.max(self.hy));
+            let mut values = vec![f64::NAN; (2 * hx + 1) * (2 * hy + 1)];
+            for dj in -(self.hy as isize)..=self.hy as isize {
+                for di in -(self.hx as isize)..=self.hx as isize {
+                    values[Self::index(hx, hy, di, dj)] = self.values[Self::index(self.hx, self.hy, di, dj)];
+                }
+            }
+            (self.hx, self.hy, self.values) = (hx, hy, values);
+        }
+        self
     }
-    u
+
+    fn index(hx: usize, hy: usize, di: isize, dj: isize) -> usize {
+        (dj + hy as isize) as usize * (2 * hx + 1) + (di + hx as isize) as usize
+    }
+
+    /// `I[1/r]` at offset `(di, dj)` (computed on first use).
+    fn at(&mut self, di: isize, dj: isize) -> f64 {
+        let k = Self::index(self.hx, self.hy, di, dj);
+        if self.values[k].is_nan() {
+            let [dx, dy] = self.size_mm.map(f64::from_bits);
+            self.values[k] = rect_integrals(di as f64 * dx, dj as f64 * dy, dx, dy).one_over_r;
+        }
+        self.values[k]
+    }
 }
 
 /// The equivalent ellipse of the KP region (gap ≤ (1 − 0.5) × deepest): A from a parabola

@@ -85,8 +85,31 @@ pub fn hertz_of_curvatures_coarse(a1: f64, b1: f64, pen_mm: f64) -> Option<(f64,
 /// Hertz's shape of curvatures `a1`, `b1` [1/mm] and its approach under 1 N [mm]
 /// ([`hertz_of_curvatures`] at any approach from them: the eccentricity found once).
 pub fn shape_of_curvatures(a1: f64, b1: f64, material: &Material) -> Option<(HertzShape, f64)> {
-    let shape = HertzShape::of(&radii_of_curvatures(a1, b1)).ok()?;
-    Some((shape, shape.unit_approach_mm(material).ok()?))
+    let key = [a1, b1, material.g_mpa, material.poisson, material.e_mpa].map(f64::to_bits);
+    SHAPES.with_borrow_mut(|kept| {
+        if let Some(found) = kept.get(&key) {
+            return *found;
+        }
+        if kept.len() >= KEPT_SHAPES {
+            kept.clear();
+        }
+        let shape = HertzShape::of(&radii_of_curvatures(a1, b1)).ok();
+        let found = shape.and_then(|s| Some((s, s.unit_approach_mm(material).ok()?)));
+        kept.insert(key, found);
+        found
+    })
+}
+
+/// Shapes kept per thread before they are dropped: ANALYN's pressure asks for every row's shape
+/// at every approach of its bisection, and a row's curvatures do not depend on the approach.
+const KEPT_SHAPES: usize = 1 << 14;
+
+type ShapeKey = [u64; 5];
+
+thread_local! {
+    /// [`shape_of_curvatures`]'s results by their inputs' bits (the same numbers as computed afresh).
+    static SHAPES: std::cell::RefCell<std::collections::HashMap<ShapeKey, Option<(HertzShape, f64)>>> =
+        std::cell::RefCell::new(std::collections::HashMap::new());
 }
 
 /// Radii 1/(2A), 1/(2B), the rail straight across.
