@@ -69,10 +69,10 @@ impl WheelRailRun {
 
     /// Write the result folder `dir/<name>/` as `creepbench simulate --out dir` does.
     fn save(&self, py: Python<'_>, dir: PathBuf) -> PyResult<PathBuf> {
-        py.detach(|| {
+        py.detach(|| -> Result<PathBuf, Error> {
             let _lock = lock::lock_folder(&dir, lock::DEFAULT_LOCK_WAIT)?;
             suite::wheelrail::write(&dir, &self.run)
         })
-        .map_err(|e: Error| errors::to_py(e))
+        .map_err(errors::to_py)
     }
 }
