@@ -497,7 +497,7 @@ fn scene_text(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase, conta
 /// element order), FN, creepages and rolling speed, one steady sweep point; with `exact`, the
 /// patch's pressure the exact normal problem's (its geometry then takes it instead of solving
 /// the normal problem again at FN: the same pressure to the normal solver's tolerance).
-fn field_scene(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase, exact: bool) -> Result<Scene, InputError> {
+fn field_scene(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> Result<Scene, InputError> {
     let g = &p.geometry.grid;
     let text = scene_text(p, model, mu, case, "a_mm = 1.0\nb_mm = 1.0", &format!("mx = {}\nmy = {}", g.mx, g.ms));
     let mut scene = Scene::from_toml(&text, Path::new("."))?;
@@ -510,7 +510,9 @@ fn field_scene(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase, exac
     let frame = RollingFrame::of(p);
     let h_mm = frame.field(p.geometry.h_mm.to_vec());
     let blend = p.geometry.blend.clone().map(|b| Blend { part: frame.field(b.part), ..b });
-    scene.geometry = GeometrySpec::Field { h_mm, blend, pn_mpa: exact.then(|| frame.field(p.pn_mpa.to_vec())) };
+    // The patch's solved pressure (the exact one's, or the model's own normal problem's: KPEC,
+    // ANALYN) is the field's: the normal problem is not solved again for the module-3 problem.
+    scene.geometry = GeometrySpec::Field { h_mm, blend, pn_mpa: Some(frame.field(p.pn_mpa.to_vec())) };
     let x_mm = [g.x0_mm, g.x0_mm + g.dx_mm * g.mx as f64];
     scene.extent = Extent::Edges { x_mm: frame.extent_x(x_mm), y_mm: [g.s0_mm, g.s0_mm + g.ds_mm * g.ms as f64] };
     Ok(scene)
@@ -538,13 +540,11 @@ fn ellipse_scene(
 /// model takes a contact given per element, else the equivalent ellipse; in the patch's rolling
 /// frame ([`RollingFrame`]: mirrored about x = 0 for a patch rolling towards −x).
 pub(super) fn patch_problem(p: &NormalPatch, model: &str, mu: f64, case: &WheelRailCase) -> Result<Problem, Error> {
-    // The patches of a model with its own normal problem carry that problem's pressure.
-    let exact = solvers::builtin(model).is_none_or(|d| d.own_normal.is_none());
-    let refused = match resolve(&field_scene(p, model, mu, case, exact)?) {
+    let refused = match resolve(&field_scene(p, model, mu, case)?) {
         Ok(problem) => return Ok(problem),
         Err(e) => e,
     };
-    let exact = resolve(&field_scene(p, EXACT, mu, case, exact)?)?;
+    let exact = resolve(&field_scene(p, EXACT, mu, case)?)?;
     match solvers::builtin(model).map(|def| (def.check)(&exact)) {
         Some(Err(_)) => Ok(resolve(&ellipse_scene(&exact, p, model, mu, case)?)?),
         _ => Err(refused.into()),

@@ -33,7 +33,8 @@ pub enum GeometrySpec {
     /// `(iy − 1) mx + (ix − 1)`, ix along CONTACT's x; with the sub-patches of CONTACT's blending
     /// approach (same order) where a wheel–rail patch has them (never from a scene's keys); with
     /// the normal pressure [MPa] at the scene's FN (same order) where a wheel–rail patch has
-    /// solved it (never from a scene's keys: the geometry takes it instead of solving again).
+    /// solved it: the exact theory's, or the model's own approximate one's (KPEC, ANALYN); never
+    /// from a scene's keys: the geometry takes it instead of solving again.
     Field { h_mm: Vec<f64>, blend: Option<Blend>, pn_mpa: Option<Vec<f64>> },
 }
 
