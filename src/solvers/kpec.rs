@@ -59,21 +59,29 @@ fn method<const M: u8>() -> Method {
     }
 }
 
-/// The approximate contact at `fn_n` as FASTSIM's contact.
+/// The approximate contact at `fn_n` as FASTSIM's contact: the pressure handed in with the
+/// geometry at that load (a wheel–rail patch's, this model's own normal problem solved once), else
+/// the approximate normal problem solved here.
 fn contact<const M: u8>(p: &Problem, fn_n: f64) -> Result<LocalContact, SolveError> {
-    let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
-    let c = at_load(method::<M>(), p, &h, fn_n)?;
-    let ellipse = equivalent_ellipse(&p.grid, &c.pn_mpa, fn_n).unwrap_or(HertzContact { fn_n, ..p.hertz() });
-    Ok(p.local_contact_of(Planform::of_pressure(&p.grid, ellipse, c.pn_mpa)))
+    let pn_mpa = match p.geometry.given_pressure_mpa(fn_n) {
+        Some(given) => given.to_vec(),
+        None => {
+            let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
+            at_load(method::<M>(), p, &h, fn_n)?.pn_mpa
+        }
+    };
+    let ellipse = equivalent_ellipse(&p.grid, &pn_mpa, fn_n).unwrap_or(HertzContact { fn_n, ..p.hertz() });
+    Ok(p.local_contact_of(Planform::of_pressure(&p.grid, ellipse, pn_mpa)))
 }
 
 /// Any geometry (on Hertz's ellipse the undeformed distance on the grid gives Hertz's contact)
-/// whose normal problem the approximation solves at every load of the scene.
+/// whose normal problem the approximation solves at every load of the scene (a load whose
+/// pressure was handed in solved is carried).
 fn check<const M: u8>(p: &Problem) -> Result<(), InputError> {
     let mut loads: Vec<f64> = p.loading.rows().map(|s| s.fn_n).collect();
     loads.sort_by(f64::total_cmp);
     loads.dedup();
-    for fn_n in loads {
+    for fn_n in loads.into_iter().filter(|&f| p.geometry.given_pressure_mpa(f).is_none()) {
         let h = p.geometry.undeformed_distance_mm(&p.grid, fn_n, &p.material);
         at_load(method::<M>(), p, &h, fn_n).map_err(|e| {
             InputError::new(

@@ -40,6 +40,8 @@ pub struct ElementGeometry {
     solver: Mutex<Option<NormalSolver>>,
     material: Material,
     blend: Option<Blend>,
+    /// Whether the nominal load's pressure was handed in solved.
+    given: bool,
     /// Normal contacts solved so far (a history revisits its loads), by load.
     cache: Mutex<Vec<Arc<NormalContact>>>,
 }
@@ -76,7 +78,7 @@ impl ElementGeometry {
         blend: Option<Blend>,
         solved: Option<Vec<f64>>,
     ) -> Result<ElementGeometry, ContactError> {
-        let mut solver = None;
+        let (mut solver, given) = (None, solved.is_some());
         let nominal = match solved {
             Some(pn_mpa) => contact_of(&grid, fn_n, pn_mpa)?,
             None if blend.is_none() => match Kept::find(&grid, material, &h_mm, fn_n) {
@@ -98,7 +100,7 @@ impl ElementGeometry {
         };
         let cache = Mutex::new(vec![Arc::new(nominal.clone())]);
         let (solver, material) = (Mutex::new(solver), *material);
-        Ok(ElementGeometry { kind, h_mm, grid, nominal, solver, material, blend, cache })
+        Ok(ElementGeometry { kind, h_mm, grid, nominal, solver, material, blend, given, cache })
     }
 
     /// The normal contact at load `fn_n` [N] (solved once per load).
@@ -261,6 +263,10 @@ impl ContactGeometry for ElementGeometry {
 
     fn normal_pressure_mpa(&self, fn_n: f64) -> Option<Vec<f64>> {
         self.normal_at(fn_n).ok().map(|c| c.pn_mpa.clone())
+    }
+
+    fn given_pressure_mpa(&self, fn_n: f64) -> Option<&[f64]> {
+        (self.given && fn_n == self.nominal.fn_n).then_some(&self.nominal.pn_mpa)
     }
 
     fn planform_error(&self, fn_n: f64) -> Option<ContactError> {

@@ -245,6 +245,13 @@ pub trait ContactGeometry: Send + Sync + Debug {
     fn normal_pressure_mpa(&self, _fn_n: f64) -> Option<Vec<f64>> {
         None
     }
+    /// The normal pressure [MPa] per element at `fn_n` if it was handed in solved with the
+    /// geometry at that load (a wheel–rail patch's: the pressure of the normal problem of the
+    /// model the patch is made for, [`GeometrySpec::Field`]); a model with its own normal problem
+    /// (KPEC, ANALYN) takes it instead of solving that problem again.
+    fn given_pressure_mpa(&self, _fn_n: f64) -> Option<&[f64]> {
+        None
+    }
     /// Why the contact at `fn_n` cannot be formed (a normal problem that fails), if it cannot.
     fn planform_error(&self, _fn_n: f64) -> Option<ContactError> {
         None
