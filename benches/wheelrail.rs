@@ -7,8 +7,9 @@
 //! the rail placed beforehand; `rail_setup` — placing the rail by its gauge point and its gap
 //! mesh, which depend on the track alone (made afresh: a scene's profile keeps it for its other
 //! cases, once per scene);
-//! `all_models_21_positions` — the 21 cases of both wheels with every model of the scenes
-//! (target: seconds). Issue 45 item 5, each scene with the exact solver alone (target: at most
+//! `all_models_21_positions` — the 21 cases of both wheels with every model of the scenes;
+//! `all_models_200_positions` — the benchmark's path at 200 positions of both wheels
+//! (benches/scenes/mbench_200_{left,right}.toml) with every model (target: seconds). Issue 45 item 5, each scene with the exact solver alone (target: at most
 //! 1/10 of CONTACT's time for the same deck): `crossing_35_positions/locus` (mbench_locus_1, the
 //! S1002 wheel over the UK crossing's slices), `crossing_35_positions/grid` (mbench_brute_1, the
 //! same with the grid search) and `wheel_flat_26_positions` (wheelflat_1, the Chalmers wheel
@@ -34,7 +35,12 @@ fn scene(side: &str) -> WheelRailScene {
 
 /// The shipped wheel–rail scene `name`.
 fn shipped(name: &str) -> WheelRailScene {
-    let path = Path::new(creepbench_benches::ROOT).join(format!("scenes/wheelrail/{name}.toml"));
+    scene_file(&format!("scenes/wheelrail/{name}.toml"))
+}
+
+/// The wheel–rail scene at `path` (relative to the repository).
+fn scene_file(path: &str) -> WheelRailScene {
+    let path = Path::new(creepbench_benches::ROOT).join(path);
     let text = std::fs::read_to_string(&path).unwrap();
     WheelRailScene::from_toml(&text, path.parent().unwrap()).unwrap()
 }
@@ -67,6 +73,14 @@ fn bench_scenes(c: &mut Criterion) {
     g.sample_size(10).measurement_time(Duration::from_secs(30));
     let scenes = [scene("left"), scene("right")];
     g.bench_function("all_models_21_positions/both_wheels", |b| {
+        b.iter(|| scenes.iter().map(|s| run_scene(black_box(s)).unwrap().cases.len()).sum::<usize>())
+    });
+    g.finish();
+    // The path at 200 positions per wheel (benches/scenes/mbench_200_{left,right}.toml).
+    let mut g = c.benchmark_group("wheelrail");
+    g.sample_size(10).measurement_time(Duration::from_secs(150));
+    let scenes = ["left", "right"].map(|side| scene_file(&format!("benches/scenes/mbench_200_{side}.toml")));
+    g.bench_function("all_models_200_positions/both_wheels", |b| {
         b.iter(|| scenes.iter().map(|s| run_scene(black_box(s)).unwrap().cases.len()).sum::<usize>())
     });
     g.finish();

@@ -81,12 +81,13 @@ pub fn deepest_mm(samples: &[LocusSample]) -> Option<f64> {
 }
 
 /// The interpenetration regions: each maximal run of mesh points with pen ≥ 0, with one guard
-/// point on each side where the mesh has it (CONTACT's bounding box with `nguard = 1`).
+/// point on each side where the mesh has it (CONTACT's bounding box with `nguard = 1`); a point
+/// whose pen is not a number interpenetrates nowhere.
 pub fn regions(samples: &[LocusSample]) -> Vec<&[LocusSample]> {
     let mut out = Vec::new();
     let mut k = 0;
     while k < samples.len() {
-        if samples[k].pen_mm < 0.0 {
+        if !(samples[k].pen_mm >= 0.0) {
             k += 1;
             continue;
         }
@@ -97,4 +98,23 @@ pub fn regions(samples: &[LocusSample]) -> Vec<&[LocusSample]> {
         out.push(&samples[start.saturating_sub(1)..(k + 1).min(samples.len())]);
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn at(y_mm: f64, pen_mm: f64) -> LocusSample {
+        LocusSample { x_mm: 0.0, y_mm, z_mm: 0.0, z_rail_mm: 0.0, pen_mm, rail_angle_rad: 0.0 }
+    }
+
+    #[test]
+    fn a_point_whose_pen_is_not_a_number_interpenetrates_nowhere() {
+        // A NaN height once made every pen NaN and this scan push the same region forever.
+        let samples = [at(0.0, -1.0), at(1.0, f64::NAN), at(2.0, 0.5), at(3.0, f64::NAN), at(4.0, -1.0)];
+        let found = regions(&samples);
+        assert_eq!(found.len(), 1);
+        assert_eq!(found[0].iter().map(|s| s.y_mm).collect::<Vec<_>>(), [1.0, 2.0, 3.0]);
+        assert!(regions(&[at(0.0, f64::NAN); 3]).is_empty());
+    }
 }

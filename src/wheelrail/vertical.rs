@@ -104,10 +104,7 @@ where
             let f = force(z, full)?;
             return Ok((z, evaluations + 1, [(z1, f1), (z, f)]));
         }
-        let mut z2 = z1 - g1 * (z1 - z0) / (g1 - g0);
-        if !(z2 > below && z2 < above) && below.is_finite() && above.is_finite() {
-            z2 = 0.5 * (below + above);
-        }
+        let z2 = next_height(z1 - g1 * (z1 - z0) / (g1 - g0), below, above, z_touch_mm);
         let step_tol = if loose { normal_tol(miss) } else { full };
         let mut f2 = force(z2, step_tol)?;
         evaluations += 1;
@@ -127,6 +124,23 @@ where
     Err(WheelRailError::VerticalNotConverged { fz_n: target_n, z_mm: z1 })
 }
 
+/// The next trial height from the secant's `z_mm`: that where it falls strictly between the
+/// highest height known below the target (at least first touch `z_touch_mm`, where the force is
+/// zero) and the lowest known above it; else their midpoint, or, with none known above, the one
+/// below stepped twice as far from first touch. The secant leaves them where the force is flat or
+/// falls: an approximate normal problem's force stays level while its contact gains no element,
+/// and drops where two patches merge into one.
+fn next_height(z_mm: f64, below: f64, above: f64, z_touch_mm: f64) -> f64 {
+    let below = below.max(z_touch_mm);
+    if z_mm > below && z_mm < above {
+        z_mm
+    } else if above.is_finite() {
+        0.5 * (below + above)
+    } else {
+        below + 2.0 * (below - z_touch_mm).max(FIRST_STEP_MM)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -139,6 +153,41 @@ mod tests {
             solve(z_touch, 10000.0, Stop::exact(FORCE_TOL), None, |z, _| Ok(k * (z - z_touch).max(0.0).powf(1.5)))
                 .unwrap();
         assert!((z - (z_touch + (10000.0f64 / k).powf(2.0 / 3.0))).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_force_that_stays_zero_past_the_first_trial_is_stepped_through_not_extrapolated_to_infinity() {
+        // An approximate normal problem may carry nothing until the wheel is 0.03 mm below first
+        // touch: the first trial (0.01 mm) gives zero force, the secant through it and first
+        // touch is flat, and its step was infinite (a NaN height, the contact search then hung).
+        let (k, z_touch, dead) = (2.0e6, 0.18, 0.03);
+        let law = |z: f64| k * (z - z_touch - dead).max(0.0).powf(1.5);
+        let mut heights = Vec::new();
+        let (z, _, _) = solve(z_touch, 10000.0, Stop::exact(FORCE_TOL), None, |z, _| {
+            heights.push(z);
+            Ok(law(z))
+        })
+        .unwrap();
+        assert!(heights.iter().all(|z| z.is_finite()), "{heights:?}");
+        assert!((law(z) - 10000.0).abs() <= FORCE_TOL * 10000.0);
+    }
+
+    #[test]
+    fn a_secant_that_leaves_the_known_heights_is_not_followed() {
+        let (touch, inf) = (0.1, f64::INFINITY);
+        // Inside the heights known below and above the target: the secant's.
+        assert!((next_height(0.15, 0.12, 0.2, touch) - (0.15)).abs() < 1e-15);
+        // Bracketed, the secant outside: the midpoint.
+        assert!((next_height(0.25, 0.12, 0.2, touch) - (0.16)).abs() < 1e-15);
+        // Nothing known above, the secant stepping back below a height known to carry too little
+        // (KPEC where its patches merge, the force falling): twice as far from first touch.
+        assert!((next_height(0.11, 0.15, inf, touch) - (0.15 + 2.0 * 0.05)).abs() < 1e-15);
+        // Nothing known below but first touch, the secant stepping up past a height known to
+        // carry too much (the force falling as the wheel sinks): halfway down to first touch.
+        assert!((next_height(0.3, f64::NEG_INFINITY, 0.2, touch) - (0.15)).abs() < 1e-15);
+        // A flat secant (equal forces) has no step: on past the highest height known below.
+        assert!((next_height(f64::INFINITY, 0.105, inf, touch) - (0.105 + 2.0 * FIRST_STEP_MM)).abs() < 1e-15);
+        assert!((next_height(f64::NAN, 0.12, 0.2, touch) - (0.16)).abs() < 1e-15);
     }
 
     #[test]

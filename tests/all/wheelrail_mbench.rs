@@ -347,3 +347,28 @@ fn the_reports_verdict_names_the_wheelrail_suite_and_sets_declared_gaps_apart() 
     assert_eq!(closest.lines().filter(|l| l.starts_with("- ")).count(), 5, "{closest}");
     assert!(!closest.contains(wheelrail_cases::GAP_SUFFIX), "{closest}");
 }
+
+#[test]
+fn kpecs_height_search_finds_fz_where_its_force_falls_as_the_wheel_sinks() {
+    // The Manchester path at 200 positions (benches/scenes/mbench_200_right.toml), right wheel,
+    // KPEC: at y = 0.05 mm its force falls from 98 % to 60 % of FZ where its two patches merge,
+    // at y = 6.55 mm (flange) it falls as the wheel sinks near the final round's target. The
+    // height search once followed the secant back through the fall until its 100 iterations ran
+    // out ("no wheelset height gives FZ"), and a flat secant made a NaN height that hung the
+    // contact search.
+    let path = root().join("benches/scenes/mbench_200_right.toml");
+    let mut scene =
+        WheelRailScene::from_toml(&std::fs::read_to_string(&path).unwrap(), path.parent().unwrap()).unwrap();
+    scene.cases.retain(|c| [2, 132].contains(&c.contact_case));
+    let y_mm: Vec<f64> = scene.cases.iter().map(|c| c.y_mm).collect();
+    assert!(y_mm.len() == 2 && (y_mm[0] - 0.05).abs() < 1e-12 && (y_mm[1] - 6.55).abs() < 1e-12, "{y_mm:?}");
+    scene.solvers = vec!["kpec".into(), "analyn".into()];
+    let run = run_scene(&scene).expect("KPEC and ANALYN find the height at both positions");
+    for (case, result) in &run.cases {
+        for (model, _, totals) in &result.models {
+            let fz_n = totals.track_n[2];
+            // FZ = 10 kN prescribed (the search's tolerance 1e-9 of it; here 1e-6).
+            assert!((fz_n - 10000.0).abs() < 1e-2, "case {case} {model}: FZ(TR) {fz_n} N");
+        }
+    }
+}
