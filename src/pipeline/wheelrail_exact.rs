@@ -100,11 +100,15 @@ impl ExactCache {
     }
 }
 
-/// The grid of the patch's module-3 scene (`[grid]` edges, CONTACT's x mirrored).
+/// The grid of the patch's module-3 scene (`[grid]` edges, CONTACT's x mirrored) with the
+/// patch's own element size (CONTACT's DX, DS; the edges' span over the count may differ from it
+/// in the last bit): the kernels of every grid of the case, and of the normal solves, are then of
+/// one element size, whose coefficient tables are kept across grids (`halfspace::table`).
 fn patch_grid(p: &NormalPatch) -> Grid {
     let g = &p.geometry.grid;
     let (x0, x1) = (g.x0_mm, g.x0_mm + g.dx_mm * g.mx as f64);
-    Grid::from_edges(g.mx, g.ms, [-x1, -x0], [g.s0_mm, g.s0_mm + g.ds_mm * g.ms as f64])
+    let edges = Grid::from_edges(g.mx, g.ms, [-x1, -x0], [g.s0_mm, g.s0_mm + g.ds_mm * g.ms as f64]);
+    Grid { dx_mm: g.dx_mm, dy_mm: g.ds_mm, ..edges }
 }
 
 /// The exact theory's forces on patch `p` at Coulomb's `mu` (CONTACT's signs, the side's frame),
