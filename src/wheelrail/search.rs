@@ -87,7 +87,7 @@ pub fn regions(samples: &[LocusSample]) -> Vec<&[LocusSample]> {
     let mut out = Vec::new();
     let mut k = 0;
     while k < samples.len() {
-        if !(samples[k].pen_mm >= 0.0) {
+        if samples[k].pen_mm.is_nan() || samples[k].pen_mm < 0.0 {
             k += 1;
             continue;
         }
